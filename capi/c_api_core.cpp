@@ -1,0 +1,47 @@
+// Status names, the thread-local last error, version and tf_free.
+#include <cstdlib>
+
+#include "c_api_guard.hpp"
+#include "talkface/library.hpp"
+
+namespace talkface::capi {
+
+std::string& last_error() {
+    thread_local std::string message;
+    return message;
+}
+
+void give_document(std::string_view text, char** out, size_t* out_len) {
+    auto* copy = static_cast<char*>(std::malloc(text.size() + 1));
+    if (copy == nullptr) throw std::bad_alloc();
+    std::memcpy(copy, text.data(), text.size());
+    copy[text.size()] = '\0';
+    *out = copy;
+    if (out_len != nullptr) *out_len = text.size();
+}
+
+}  // namespace talkface::capi
+
+extern "C" {
+
+const char* tf_status_name(tf_status status) {
+    switch (status) {
+        case TF_OK: return "TF_OK";
+        case TF_ERR_INVALID_ARGUMENT: return "TF_ERR_INVALID_ARGUMENT";
+        case TF_ERR_FILE: return "TF_ERR_FILE";
+        case TF_ERR_PARSE: return "TF_ERR_PARSE";
+        case TF_ERR_ALIGNMENT: return "TF_ERR_ALIGNMENT";
+        case TF_ERR_CANCELLED: return "TF_ERR_CANCELLED";
+        case TF_ERR_OUT_OF_MEMORY: return "TF_ERR_OUT_OF_MEMORY";
+        case TF_ERR_INTERNAL: return "TF_ERR_INTERNAL";
+    }
+    return "TF_ERR_UNKNOWN";
+}
+
+const char* tf_last_error_message(void) { return talkface::capi::last_error().c_str(); }
+
+const char* tf_version(void) { return talkface::version(); }
+
+void tf_free(void* document) { std::free(document); }
+
+}  // extern "C"

@@ -1,0 +1,52 @@
+// The one place the C ABI turns C++ outcomes into tf_status: every tf_ body runs inside guard().
+#ifndef TALKFACE_CAPI_C_API_GUARD_HPP
+#define TALKFACE_CAPI_C_API_GUARD_HPP
+
+#include <cstring>
+#include <new>
+#include <string>
+#include <string_view>
+
+#include "talkface/errors.hpp"
+#include "talkface/talkface.h"
+
+namespace talkface::capi {
+
+// This thread's last error message (tf_last_error_message).
+std::string& last_error();
+
+// Runs `body` (which returns void); returns TF_OK, or records the message and returns the status of
+// the exception it threw. Never lets an exception out.
+template <typename Body>
+tf_status guard(Body&& body) noexcept {
+    try {
+        last_error().clear();
+        body();
+        return TF_OK;
+    } catch (const talkface::Error& error) {
+        last_error() = error.what();
+        return static_cast<tf_status>(error.code());
+    } catch (const std::bad_alloc&) {
+        last_error() = "out of memory";
+        return TF_ERR_OUT_OF_MEMORY;
+    } catch (const std::exception& error) {
+        last_error() = std::string("internal error (a bug in talkface): ") + error.what();
+        return TF_ERR_INTERNAL;
+    } catch (...) {
+        last_error() = "internal error (a bug in talkface): unknown exception";
+        return TF_ERR_INTERNAL;
+    }
+}
+
+// Throws InvalidArgument naming `parameter` if `pointer` is NULL.
+template <typename T>
+void require_non_null(const T* pointer, const char* parameter) {
+    if (pointer == nullptr) throw talkface::InvalidArgument(parameter, "must not be NULL");
+}
+
+// A malloc'd NUL-terminated copy of `text` for a (char **out, size_t *out_len) pair; tf_free frees it.
+void give_document(std::string_view text, char** out, size_t* out_len);
+
+}  // namespace talkface::capi
+
+#endif

@@ -1,0 +1,32 @@
+# Install rules, the exported CMake package (find_package(talkface)) and the pkg-config files.
+include(CMakePackageConfigHelpers)
+
+set(TALKFACE_CMAKE_DIR "${CMAKE_INSTALL_LIBDIR}/cmake/talkface")
+
+install(TARGETS libtalkface libtalkface_c
+  EXPORT talkfaceTargets
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/include/talkface" DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(FILES "${PROJECT_BINARY_DIR}/include/talkface/version.h"
+              "${PROJECT_BINARY_DIR}/include/talkface/export.h"
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/talkface)
+if(TARGET talkface)
+  install(TARGETS talkface RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
+
+install(EXPORT talkfaceTargets NAMESPACE talkface:: DESTINATION ${TALKFACE_CMAKE_DIR})
+configure_package_config_file("${PROJECT_SOURCE_DIR}/cmake/talkfaceConfig.cmake.in"
+  "${PROJECT_BINARY_DIR}/talkfaceConfig.cmake" INSTALL_DESTINATION ${TALKFACE_CMAKE_DIR})
+# SameMinorVersion while 0.x (any minor release may break the API), SameMajorVersion from 1.0.
+write_basic_package_version_file("${PROJECT_BINARY_DIR}/talkfaceConfigVersion.cmake"
+  COMPATIBILITY SameMinorVersion)
+install(FILES "${PROJECT_BINARY_DIR}/talkfaceConfig.cmake" "${PROJECT_BINARY_DIR}/talkfaceConfigVersion.cmake"
+        DESTINATION ${TALKFACE_CMAKE_DIR})
+
+foreach(pc_name talkface talkface_c)
+  configure_file("${PROJECT_SOURCE_DIR}/cmake/${pc_name}.pc.in" "${PROJECT_BINARY_DIR}/${pc_name}.pc" @ONLY)
+  install(FILES "${PROJECT_BINARY_DIR}/${pc_name}.pc" DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+endforeach()

@@ -1,0 +1,36 @@
+#!/bin/sh
+# Installs the Debian 12 packages talkface builds and tests with, only those that are missing.
+# Run as root (or through sudo). Every package here is from Debian main; licences are listed in
+# README.md ("Dependencies and licences").
+#
+# usage: cmake/install-deps.sh [build|test]
+#   build  what the library, the command and the Python module need (default)
+#   test   that, plus what the tests drive: pytest, numpy, headless Chromium, espeak-ng, sox
+set -eu
+
+build_packages="build-essential cmake pkg-config git libeigen3-dev libpugixml-dev libcli11-dev
+nlohmann-json3-dev doctest-dev pybind11-dev python3-dev python3-numpy"
+test_packages="python3-pytest python3-venv python3-pip python3-setuptools chromium fonts-dejavu-core"
+
+case "${1:-build}" in
+  build) wanted=$build_packages ;;
+  test) wanted="$build_packages $test_packages" ;;
+  *) echo "usage: $0 [build|test]" >&2; exit 2 ;;
+esac
+
+missing=""
+for package in $wanted; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "ok installed" || missing="$missing $package"
+done
+[ -z "$missing" ] && exit 0
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "talkface: these Debian packages are missing:$missing" >&2
+  echo "talkface: run this script as root (sudo $0 ${1:-build}) to install them" >&2
+  exit 1
+fi
+echo "talkface: installing$missing" >&2
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+# shellcheck disable=SC2086 # the list is meant to split into words
+apt-get install -y -qq --no-install-recommends $missing >/dev/null

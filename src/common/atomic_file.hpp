@@ -1,0 +1,19 @@
+// Output files are written whole or not at all: a temporary file beside the target, renamed over it.
+#ifndef TALKFACE_COMMON_ATOMIC_FILE_HPP
+#define TALKFACE_COMMON_ATOMIC_FILE_HPP
+
+#include <string>
+#include <string_view>
+
+namespace talkface::detail {
+
+// Writes `content` to `path` atomically. On failure the temporary file is removed, `path` is left
+// as it was, and talkface::FileError names the path and the OS reason.
+void write_file_atomically(const std::string& path, std::string_view content);
+
+// Reads a whole file. Throws talkface::FileError naming the path and the OS reason.
+std::string read_file(const std::string& path);
+
+}  // namespace talkface::detail
+
+#endif
