@@ -106,6 +106,11 @@ public:
     friend bool operator!=(const FaceModel& a, const FaceModel& b) { return !(a == b); }
 
 private:
+    // An all-zero face for default_face() and the file reader to fill in: the public default
+    // constructor delegates to default_face(), so that cannot use it.
+    struct Blank {};
+    explicit FaceModel(Blank) {}
+
     std::array<Point2, kPointCount> points_{};
     std::array<double, kFapuCount> fapus_{};
     FaceColors colors_{};

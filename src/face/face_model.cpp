@@ -96,6 +96,9 @@ bool operator==(const FaceModel& a, const FaceModel& b) {
     return a.points_ == b.points_ && a.fapus_ == b.fapus_ && a.colors_ == b.colors_ && a.name_ == b.name_;
 }
 
+}  // namespace v0
+
+// Declared in face/point_ids.hpp and face/fapu_measure.hpp, outside the inline namespace.
 namespace detail {
 
 std::optional<std::size_t> point_index(std::string_view id) {
@@ -128,5 +131,4 @@ double measured_fapu(const FaceModel& face, std::string_view name) {
 
 }  // namespace detail
 
-}  // namespace v0
 }  // namespace talkface

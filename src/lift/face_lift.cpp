@@ -1,0 +1,185 @@
+// The 3D lift (SPEC pipeline step 2): thesis Algorithm 2.1 and Table 2.1, with SPEC's corrections.
+#include "talkface/face_lift.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "common/number_format.hpp"
+#include "talkface/errors.hpp"
+
+namespace talkface {
+inline namespace v0 {
+
+namespace {
+
+// Table 2.1, in units of d, grouped as the thesis prints it; hair points are apart (all -0.58 d).
+// clang-format off
+const std::pair<const char*, double> kDepthTable[] = {
+    // eyes
+    {"3.2", 1.33}, {"3.4", 1.33}, {"3.1", 1.33}, {"3.3", 1.33}, {"EyeballLeft", 1.33}, {"EyeballRight", 1.33},
+    {"3.12", 1.19}, {"3.7", 1.19}, {"3.8", 1.25}, {"3.11", 1.25},
+    // eyebrows
+    {"4.6", 1.17}, {"4.5", 1.17}, {"4.4a", 1.30}, {"4.3a", 1.30}, {"F", 1.30}, {"I", 1.30},
+    {"4.4", 1.44}, {"4.3", 1.44}, {"G", 1.44}, {"H", 1.44}, {"4.2", 1.49}, {"4.1", 1.49},
+    // mouth
+    {"2.2", 1.55}, {"2.3", 1.55}, {"8.4", 1.40}, {"8.3", 1.40}, {"R", 1.40}, {"S", 1.40},
+    {"8.1", 1.60}, {"8.9", 1.60}, {"8.10", 1.60}, {"8.2", 1.56},
+    // jaw
+    {"2.14", 0.36}, {"2.13", 0.36}, {"2.1", 1.33}, {"J", 1.18}, {"K", 1.18},
+    // forehead
+    {"11.1", 1.37}, {"11.2a", 0.90}, {"11.3a", 0.90}, {"11.2", 0.42}, {"11.3", 0.42},
+    {"N", 0.85}, {"Q", 0.85},
+    // ears
+    {"10.2", -0.37}, {"10.1", -0.37}, {"10.8", 0.0}, {"10.7", 0.0}, {"A", 0.04}, {"B", 0.04},
+    // nose
+    {"9.6", 1.39}, {"9.7", 1.39}, {"9.2", 1.39}, {"9.1", 1.39}, {"9.14", 1.40}, {"9.13", 1.40},
+    {"9.4", 1.44}, {"9.5", 1.44}, {"9.15", 1.65}, {"C", 1.51}, {"D", 1.53}, {"E", 1.53},
+    // cheeks
+    {"10.9", 0.27}, {"10.10", 0.27}, {"L", 1.11}, {"M", 1.11}};
+// clang-format on
+
+constexpr double kHairDepthInD = -0.58;
+// Algorithm 2.1 step 3: the neck centre lies 1.3 d below EyeMid.
+constexpr double kOriginBelowEyeMidInD = 1.3;
+
+bool is_hair_id(std::string_view id) {
+    return id.substr(0, 5) == "hair." && FaceModel::is_point_id(id);
+}
+
+double checked_d(const FaceModel& face) {
+    const double d = face.fapu("d");
+    if (!(std::isfinite(d) && d > 0.0)) {
+        throw InvalidArgument(
+            "FAPU \"d\"", "must be finite and positive to lift a face, got " + detail::format_shortest(d));
+    }
+    return d;
+}
+
+Point2 eye_mid(const FaceModel& face) {
+    const Point2 left = face.point("EyeballLeft");
+    const Point2 right = face.point("EyeballRight");
+    return {(left.x + right.x) / 2.0, (left.y + right.y) / 2.0};
+}
+
+// Algorithm 2.1 step 4, in image pixels, in additional_point_ids() order.
+std::vector<Point2> additional_points_image(const FaceModel& face, Point2 eye_mid_xy) {
+    auto p = [&](const char* id) { return face.point(id); };
+    const double eyebrow_h = face.fapu("EyebrowH");
+    const double eyebrow_h2 = face.fapu("EyebrowH2");
+    // W_ear is "the distance between EyeMid and an ear". Table 2.1 puts A in front of the lobe's
+    // contact point 10.8 (0.04 d against 0) and far in front of the ear's top 10.2 (-0.37 d), so A is
+    // where the top of the ear meets the head: W_ear is measured horizontally to the contact points
+    // 10.8 / 10.7, per side, and arc(10.8, 10.2, A) then outlines the ear's rim. Measured to 10.2
+    // instead, A would sit right under the ear's top and the ear would be drawn as a sliver.
+    const double ear_left_w_px = eye_mid_xy.x - p("10.8").x;
+    const double ear_right_w_px = p("10.7").x - eye_mid_xy.x;
+    return {
+        {eye_mid_xy.x - ear_left_w_px, (4.0 * p("10.2").y + p("10.8").y) / 5.0},                 // A
+        {eye_mid_xy.x + ear_right_w_px, (4.0 * p("10.1").y + p("10.7").y) / 5.0},                // B
+        {(p("9.13").x + p("9.14").x) / 2.0, (p("9.14").y + eye_mid_xy.y) / 2.0},                 // C
+        {(5.0 * p("9.4").x + p("9.5").x) / 6.0, p("9.4").y - (p("9.4").y - p("9.14").y) / 3.0},  // D
+        {(5.0 * p("9.5").x + p("9.4").x) / 6.0, p("9.5").y - (p("9.5").y - p("9.13").y) / 3.0},  // E
+        {p("4.4a").x, p("4.4a").y + eyebrow_h2 / 1.3},                                           // F
+        {p("4.4").x, p("4.4").y + eyebrow_h / 1.3},                                              // G
+        {p("4.3").x, p("4.3").y + eyebrow_h / 1.3},                                              // H
+        {p("4.3a").x, p("4.3a").y + eyebrow_h2 / 1.3},                                           // I
+        {(5.0 * p("2.14").x + p("2.1").x) / 6.0, p("2.14").y},                                   // J
+        {(5.0 * p("2.13").x + p("2.1").x) / 6.0, p("2.13").y},                                   // K
+        {(p("3.12").x + p("10.10").x) / 2.0, p("10.10").y},                                      // L
+        {(p("3.7").x + p("10.9").x) / 2.0, p("10.9").y},                                         // M
+        p("11.2"),                                                                               // N
+        p("11.3"),                                                                               // Q
+        p("8.4"),                                                                                // R
+        // SPEC: S is 8.3; the thesis prints 8.5, which is not a point of the model.
+        p("8.3"),  // S
+    };
+}
+
+}  // namespace
+
+Point3 LiftedFace::local(std::string_view id) const {
+    const auto found = std::find(ids.begin(), ids.end(), id);
+    if (found == ids.end() || static_cast<std::size_t>(found - ids.begin()) >= local_xyz.size()) {
+        throw InvalidArgument("point \"" + std::string(id) + "\"",
+                              "not a point of the lifted face (the 72 model points and A .. S)");
+    }
+    return local_xyz[static_cast<std::size_t>(found - ids.begin())];
+}
+
+const std::vector<std::string>& additional_point_ids() {
+    static const std::vector<std::string> ids = {"A", "B", "C", "D", "E", "F", "G", "H", "I",
+                                                 "J", "K", "L", "M", "N", "Q", "R", "S"};
+    return ids;
+}
+
+double depth_in_d(std::string_view id) {
+    if (is_hair_id(id)) return kHairDepthInD;
+    for (const auto& [table_id, depth] : kDepthTable) {
+        if (id == table_id) return depth;
+    }
+    throw InvalidArgument("point \"" + std::string(id) + "\"",
+                          "no depth in Table 2.1: not one of the 72 model points or A .. S");
+}
+
+Point2 rotation_origin(const FaceModel& face) {
+    const double d = checked_d(face);
+    const Point2 mid = eye_mid(face);
+    return {mid.x, mid.y + d * kOriginBelowEyeMidInD};
+}
+
+Point3 to_local(Point2 image_xy, double z, Point2 origin) {
+    // SPEC: x' = x_o - x; the local x axis points to the image left.
+    return {origin.x - image_xy.x, origin.y - image_xy.y, z};
+}
+
+Point2 to_image(Point3 local_xyz, Point2 origin) {
+    // SPEC: the exact inverse of to_local(); the thesis's "x_p + x_o" would mirror the face.
+    return {origin.x - local_xyz.x, origin.y - local_xyz.y};
+}
+
+LiftedFace lift_face(const FaceModel& face) {
+    LiftedFace lifted;
+    lifted.d = checked_d(face);
+    lifted.origin = rotation_origin(face);
+    const auto& model_ids = FaceModel::point_ids();
+    const auto& extra_ids = additional_point_ids();
+    lifted.ids.reserve(model_ids.size() + extra_ids.size());
+    lifted.local_xyz.reserve(model_ids.size() + extra_ids.size());
+    for (std::size_t i = 0; i < model_ids.size(); ++i) {
+        lifted.ids.push_back(model_ids[i]);
+        lifted.local_xyz.push_back(
+            to_local(face.points()[i], depth_in_d(model_ids[i]) * lifted.d, lifted.origin));
+    }
+    const std::vector<Point2> extra_xy = additional_points_image(face, eye_mid(face));
+    for (std::size_t i = 0; i < extra_ids.size(); ++i) {
+        lifted.ids.push_back(extra_ids[i]);
+        lifted.local_xyz.push_back(to_local(extra_xy[i], depth_in_d(extra_ids[i]) * lifted.d, lifted.origin));
+    }
+    return lifted;
+}
+
+FaceModel place_face(const FaceModel& face, Point2 origin, double d_px) {
+    if (!(std::isfinite(d_px) && d_px > 0.0)) {
+        throw InvalidArgument("d_px", "must be finite and positive, got " + detail::format_shortest(d_px));
+    }
+    if (!(std::isfinite(origin.x) && std::isfinite(origin.y))) {
+        throw InvalidArgument("origin", "coordinates must be finite");
+    }
+    const Point2 old_origin = rotation_origin(face);
+    const double scale = d_px / face.fapu("d");
+    FaceModel placed = face;
+    const auto& ids = FaceModel::point_ids();
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        const Point2 p = face.points()[i];
+        placed.set_point(ids[i],
+                         {origin.x + (p.x - old_origin.x) * scale, origin.y + (p.y - old_origin.y) * scale});
+    }
+    for (const std::string& name : FaceModel::fapu_names()) {
+        placed.set_fapu(name, name == "d" ? d_px : face.fapu(name) * scale);
+    }
+    return placed;
+}
+
+}  // namespace v0
+}  // namespace talkface
