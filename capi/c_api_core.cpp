@@ -1,5 +1,7 @@
 // Status names, the thread-local last error, version and tf_free.
 #include <cstdlib>
+#include <exception>
+#include <iterator>
 
 #include "c_api_guard.hpp"
 #include "talkface/library.hpp"
@@ -8,6 +10,18 @@ namespace talkface::capi {
 
 std::string& last_error() {
     thread_local std::string message;
+    return message;
+}
+
+std::string joined_message(const std::exception& error) {
+    std::string message = error.what();
+    try {
+        std::rethrow_if_nested(error);
+    } catch (const std::exception& nested) {
+        message += '\n' + joined_message(nested);
+    } catch (...) {
+        message += "\n(an exception that is not a std::exception)";
+    }
     return message;
 }
 
@@ -25,23 +39,29 @@ void give_document(std::string_view text, char** out, size_t* out_len) {
 extern "C" {
 
 const char* tf_status_name(tf_status status) {
-    switch (status) {
-        case TF_OK: return "TF_OK";
-        case TF_ERR_INVALID_ARGUMENT: return "TF_ERR_INVALID_ARGUMENT";
-        case TF_ERR_FILE: return "TF_ERR_FILE";
-        case TF_ERR_PARSE: return "TF_ERR_PARSE";
-        case TF_ERR_ALIGNMENT: return "TF_ERR_ALIGNMENT";
-        case TF_ERR_CANCELLED: return "TF_ERR_CANCELLED";
-        case TF_ERR_OUT_OF_MEMORY: return "TF_ERR_OUT_OF_MEMORY";
-        case TF_ERR_INTERNAL: return "TF_ERR_INTERNAL";
-    }
-    return "TF_ERR_UNKNOWN";
+    static const char* const kNames[] = {"TF_OK",
+                                         "TF_ERR_INVALID_ARGUMENT",
+                                         "TF_ERR_FILE",
+                                         "TF_ERR_PARSE",
+                                         "TF_ERR_ALIGNMENT",
+                                         "TF_ERR_CANCELLED",
+                                         "TF_ERR_OUT_OF_MEMORY",
+                                         "TF_ERR_INTERNAL"};
+    const int value = talkface::capi::enum_value(status);
+    if (value < 0 || value >= static_cast<int>(std::size(kNames))) return "TF_ERR_UNKNOWN";
+    return kNames[value];
 }
 
-const char* tf_last_error_message(void) { return talkface::capi::last_error().c_str(); }
+const char* tf_last_error_message(void) {
+    return talkface::capi::last_error().c_str();
+}
 
-const char* tf_version(void) { return talkface::version(); }
+const char* tf_version(void) {
+    return talkface::version();
+}
 
-void tf_free(void* document) { std::free(document); }
+void tf_free(void* document) {
+    std::free(document);
+}
 
 }  // extern "C"

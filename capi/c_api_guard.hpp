@@ -3,6 +3,7 @@
 #define TALKFACE_CAPI_C_API_GUARD_HPP
 
 #include <cstring>
+#include <exception>
 #include <new>
 #include <string>
 #include <string_view>
@@ -15,6 +16,9 @@ namespace talkface::capi {
 // This thread's last error message (tf_last_error_message).
 std::string& last_error();
 
+// what() of `error` and of every exception nested in it (std::throw_with_nested), one per line.
+std::string joined_message(const std::exception& error);
+
 // Runs `body` (which returns void); returns TF_OK, or records the message and returns the status of
 // the exception it threw. Never lets an exception out.
 template <typename Body>
@@ -24,13 +28,13 @@ tf_status guard(Body&& body) noexcept {
         body();
         return TF_OK;
     } catch (const talkface::Error& error) {
-        last_error() = error.what();
+        last_error() = joined_message(error);
         return static_cast<tf_status>(error.code());
     } catch (const std::bad_alloc&) {
         last_error() = "out of memory";
         return TF_ERR_OUT_OF_MEMORY;
     } catch (const std::exception& error) {
-        last_error() = std::string("internal error (a bug in talkface): ") + error.what();
+        last_error() = "internal error (a bug in talkface): " + joined_message(error);
         return TF_ERR_INTERNAL;
     } catch (...) {
         last_error() = "internal error (a bug in talkface): unknown exception";
@@ -42,6 +46,17 @@ tf_status guard(Body&& body) noexcept {
 template <typename T>
 void require_non_null(const T* pointer, const char* parameter) {
     if (pointer == nullptr) throw talkface::InvalidArgument(parameter, "must not be NULL");
+}
+
+// The int a C caller passed for a C enum parameter. C allows any int there, but in C++ reading an
+// enum object outside its enumerators' range is undefined (UBSan: "load of value 42, which is not a
+// valid value for type"), so the bytes are copied, never read as the enum.
+template <typename Enum>
+int enum_value(const Enum& value) {
+    static_assert(sizeof(Enum) == sizeof(int), "C enums are int-sized on the platforms we build for");
+    int result = 0;
+    std::memcpy(&result, &value, sizeof result);
+    return result;
 }
 
 // A malloc'd NUL-terminated copy of `text` for a (char **out, size_t *out_len) pair; tf_free frees it.

@@ -26,6 +26,10 @@ write_basic_package_version_file("${PROJECT_BINARY_DIR}/talkfaceConfigVersion.cm
 install(FILES "${PROJECT_BINARY_DIR}/talkfaceConfig.cmake" "${PROJECT_BINARY_DIR}/talkfaceConfigVersion.cmake"
         DESTINATION ${TALKFACE_CMAKE_DIR})
 
+# The pc files find the prefix from their own folder: CMAKE_INSTALL_PREFIX at configure time is not
+# where `cmake --install --prefix DIR` puts them.
+file(RELATIVE_PATH TALKFACE_PC_PREFIX_FROM_PCFILEDIR "/prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/prefix")
+string(REGEX REPLACE "/$" "" TALKFACE_PC_PREFIX_FROM_PCFILEDIR "${TALKFACE_PC_PREFIX_FROM_PCFILEDIR}")
 foreach(pc_name talkface talkface_c)
   configure_file("${PROJECT_SOURCE_DIR}/cmake/${pc_name}.pc.in" "${PROJECT_BINARY_DIR}/${pc_name}.pc" @ONLY)
   install(FILES "${PROJECT_BINARY_DIR}/${pc_name}.pc" DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

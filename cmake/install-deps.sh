@@ -10,7 +10,7 @@ set -eu
 
 build_packages="build-essential cmake pkg-config git libeigen3-dev libpugixml-dev libcli11-dev
 nlohmann-json3-dev doctest-dev pybind11-dev python3-dev python3-numpy"
-test_packages="python3-pytest python3-venv python3-pip python3-setuptools chromium fonts-dejavu-core"
+test_packages="python3-pil python3-pytest python3-venv python3-pip python3-setuptools chromium fonts-dejavu-core"
 
 case "${1:-build}" in
   build) wanted=$build_packages ;;

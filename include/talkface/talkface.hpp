@@ -19,15 +19,20 @@
 #ifndef TALKFACE_TALKFACE_HPP
 #define TALKFACE_TALKFACE_HPP
 
+#include "talkface/animation.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/expression.hpp"
+#include "talkface/expression_simulator.hpp"
 #include "talkface/face_lift.hpp"
 #include "talkface/face_model.hpp"
 #include "talkface/face_pose.hpp"
 #include "talkface/library.hpp"
+#include "talkface/lip_sync.hpp"
 #include "talkface/mouth_shape.hpp"
 #include "talkface/rotation3d.hpp"
 #include "talkface/svg_animator.hpp"
+#include "talkface/timeline.hpp"
+#include "talkface/transcript.hpp"
 #include "talkface/types.hpp"
 #include "talkface/version.h"
 

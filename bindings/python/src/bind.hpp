@@ -1,0 +1,117 @@
+// Shared by the bind_*.cpp files of the _talkface module: one bind_ function per public object, and
+// the conversions every file must see identically (pybind11 requires a type caster to be visible in
+// every translation unit that binds the type).
+#ifndef TALKFACE_BINDINGS_PYTHON_BIND_HPP
+#define TALKFACE_BINDINGS_PYTHON_BIND_HPP
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <string>
+
+#include "talkface/talkface.hpp"
+
+namespace talkface::python {
+
+namespace py = pybind11;
+
+void bind_errors(py::module_& m);
+void bind_face_model(py::module_& m);
+void bind_face_lift(py::module_& m);
+void bind_rotation3d(py::module_& m);
+void bind_face_state(py::module_& m);
+void bind_svg_animator(py::module_& m);
+
+// A float64 array of `rows` x `columns`, C order (a copy the caller owns).
+inline py::array_t<double> new_matrix(py::ssize_t rows, py::ssize_t columns) {
+    return py::array_t<double>({rows, columns});
+}
+
+// "(70, 2)": an array's shape as numpy prints it, for error messages.
+std::string shape_text(const py::array& array);
+
+// Points as an (N, 2) array, in order.
+template <typename Points>
+py::array_t<double> points_to_array(const Points& points) {
+    auto array = new_matrix(static_cast<py::ssize_t>(points.size()), 2);
+    auto view = array.mutable_unchecked<2>();
+    py::ssize_t row = 0;
+    for (const Point2& point : points) {
+        view(row, 0) = point.x;
+        view(row, 1) = point.y;
+        ++row;
+    }
+    return array;
+}
+
+}  // namespace talkface::python
+
+namespace pybind11::detail {
+
+// Point2 crosses as a tuple (x, y): image pixels read as Python users expect ("face.point('3.2') ->
+// (x, y)"); any sequence of two numbers is accepted.
+template <>
+struct type_caster<talkface::Point2> {
+    PYBIND11_TYPE_CASTER(talkface::Point2, const_name("tuple[float, float]"));
+
+    bool load(handle source, bool convert) {
+        if (!isinstance<sequence>(source) || isinstance<str>(source)) return false;
+        const auto items = reinterpret_borrow<sequence>(source);
+        if (items.size() != 2) return false;
+        make_caster<double> x;
+        make_caster<double> y;
+        if (!x.load(items[0], convert) || !y.load(items[1], convert)) return false;
+        value = talkface::Point2{cast_op<double>(x), cast_op<double>(y)};
+        return true;
+    }
+
+    static handle cast(const talkface::Point2& point, return_value_policy, handle) {
+        return make_tuple(point.x, point.y).release();
+    }
+};
+
+// Point3 crosses as a tuple (x, y, z) in the local frame.
+template <>
+struct type_caster<talkface::Point3> {
+    PYBIND11_TYPE_CASTER(talkface::Point3, const_name("tuple[float, float, float]"));
+
+    bool load(handle source, bool convert) {
+        if (!isinstance<sequence>(source) || isinstance<str>(source)) return false;
+        const auto items = reinterpret_borrow<sequence>(source);
+        if (items.size() != 3) return false;
+        make_caster<double> x;
+        make_caster<double> y;
+        make_caster<double> z;
+        if (!x.load(items[0], convert) || !y.load(items[1], convert) || !z.load(items[2], convert)) {
+            return false;
+        }
+        value = talkface::Point3{cast_op<double>(x), cast_op<double>(y), cast_op<double>(z)};
+        return true;
+    }
+
+    static handle cast(const talkface::Point3& point, return_value_policy, handle) {
+        return make_tuple(point.x, point.y, point.z).release();
+    }
+};
+
+// Rgb crosses as "#rrggbb" (read: "#rrggbb" or "#rgb"), the form of the face file and of SVG.
+template <>
+struct type_caster<talkface::Rgb> {
+    PYBIND11_TYPE_CASTER(talkface::Rgb, const_name("str"));
+
+    bool load(handle source, bool) {
+        if (!isinstance<str>(source)) return false;
+        value = talkface::rgb_from_hex(source.cast<std::string>());
+        return true;
+    }
+
+    static handle cast(const talkface::Rgb& colour, return_value_policy, handle) {
+        return str(talkface::to_hex(colour)).release();
+    }
+};
+
+}  // namespace pybind11::detail
+
+#endif

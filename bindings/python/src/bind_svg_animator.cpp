@@ -1,0 +1,136 @@
+// SvgOptions and SvgAnimator in Python; rendering runs without the GIL.
+#include "bind.hpp"
+
+namespace talkface::python {
+
+void bind_svg_animator(py::module_& m) {
+    py::class_<SvgOptions>(m, "SvgOptions", R"doc(
+How a face is drawn; checked when an SvgAnimator is made. Colours are "#rrggbb" strings.
+
+Example:
+    >>> options = talkface.SvgOptions(background=None, draw_clothes=False)
+    >>> talkface.SvgAnimator(face, options)
+)doc")
+        .def(py::init([](std::optional<Rgb> background, bool draw_clothes, Rgb clothes,
+                         double stroke_width_in_d, int decimals, int width_px, int height_px) {
+                 SvgOptions options;
+                 options.background = background;
+                 options.draw_clothes = draw_clothes;
+                 options.clothes = clothes;
+                 options.stroke_width_in_d = stroke_width_in_d;
+                 options.decimals = decimals;
+                 options.width_px = width_px;
+                 options.height_px = height_px;
+                 return options;
+             }),
+             py::arg("background") = SvgOptions{}.background,
+             py::arg("draw_clothes") = SvgOptions{}.draw_clothes, py::arg("clothes") = SvgOptions{}.clothes,
+             py::arg("stroke_width_in_d") = SvgOptions{}.stroke_width_in_d,
+             py::arg("decimals") = SvgOptions{}.decimals, py::arg("width_px") = SvgOptions{}.width_px,
+             py::arg("height_px") = SvgOptions{}.height_px, R"doc(
+Args:
+    background (str | None): background colour "#rrggbb"; None leaves it transparent.
+    draw_clothes (bool): draw the clothes layer (neck and shoulders).
+    clothes (str): clothes colour "#rrggbb".
+    stroke_width_in_d (float): outline width, in units of d (eyeball distance).
+    decimals (int): digits after the point in coordinates, 0..6.
+    width_px, height_px (int): canvas size, pixels; 0 fits the face at any pose with a margin.
+
+Raises:
+    talkface.InvalidArgument: a colour is not "#rrggbb" or "#rgb".
+
+Example:
+    >>> talkface.SvgOptions(width_px=480, height_px=560)
+    >>> talkface.SvgOptions(background="#ffffff", decimals=1)
+)doc")
+        .def_readwrite("background", &SvgOptions::background, "\"#rrggbb\" or None (transparent)")
+        .def_readwrite("draw_clothes", &SvgOptions::draw_clothes, "draw the clothes layer")
+        .def_readwrite("clothes", &SvgOptions::clothes, "clothes colour, \"#rrggbb\"")
+        .def_readwrite("stroke_width_in_d", &SvgOptions::stroke_width_in_d, "outline width, units of d")
+        .def_readwrite("decimals", &SvgOptions::decimals, "digits after the point (0..6)")
+        .def_readwrite("width_px", &SvgOptions::width_px, "canvas width, pixels (0 = fit)")
+        .def_readwrite("height_px", &SvgOptions::height_px, "canvas height, pixels (0 = fit)")
+        .def("__repr__", [](const SvgOptions& o) {
+            return py::str(
+                       "talkface.SvgOptions(background={!r}, draw_clothes={!r}, clothes={!r}, "
+                       "stroke_width_in_d={!r}, decimals={!r}, width_px={!r}, height_px={!r})")
+                .format(o.background, o.draw_clothes, o.clothes, o.stroke_width_in_d, o.decimals, o.width_px,
+                        o.height_px);
+        });
+
+    py::class_<SvgAnimator>(m, "SvgAnimator", R"doc(
+Draws a face as SVG 1.1 in four layers (background, hair, clothes, face). Holds a copy of its face and
+options. render_svg() and write_svg() release the GIL, so threads may render in parallel.
+
+Example:
+    >>> animator = talkface.SvgAnimator(talkface.FaceModel.default())
+    >>> svg = animator.render_svg(talkface.FaceState())
+)doc")
+        .def(py::init<FaceModel, SvgOptions>(), py::arg("face"), py::arg("options") = SvgOptions{}, R"doc(
+Args:
+    face (FaceModel): the neutral face (copied).
+    options (SvgOptions): how to draw it (copied).
+
+Raises:
+    talkface.InvalidArgument: an option is out of range (the message names it).
+
+Example:
+    >>> animator = talkface.SvgAnimator(face, talkface.SvgOptions(background=None))
+    >>> animator.options.background is None
+)doc")
+        .def_property_readonly(
+            "face", [](const SvgAnimator& animator) { return animator.face(); }, "the neutral face (a copy)")
+        .def_property_readonly(
+            "options", [](const SvgAnimator& animator) { return animator.options(); },
+            "the drawing options (a copy)")
+        .def(
+            "render_svg",
+            [](const SvgAnimator& animator, const FaceState& state) {
+                const FaceState state_copy = state;  // the caller's object may change once the GIL is free
+                std::string svg;
+                {
+                    py::gil_scoped_release release;
+                    svg = animator.render_svg(state_copy);
+                }
+                return svg;
+            },
+            py::arg("state"), R"doc(
+A standalone SVG document (str) of the face at state. Releases the GIL while it works.
+
+Args:
+    state (FaceState): pose (degrees), expression, mouth.
+
+Raises:
+    talkface.InvalidArgument: as project_face() does (an angle outside +-15 degrees, say).
+
+Example:
+    >>> svg = animator.render_svg(talkface.FaceState(pose=talkface.Pose(beta_deg=10)))
+    >>> svg.startswith("<?xml")
+)doc")
+        .def(
+            "write_svg",
+            [](const SvgAnimator& animator, const std::filesystem::path& path, const FaceState& state) {
+                const std::string path_text = path.string();
+                const FaceState state_copy = state;
+                py::gil_scoped_release release;
+                animator.write_svg(path_text, state_copy);
+            },
+            py::arg("path"), py::arg("state"), R"doc(
+Writes render_svg(state) to path through a temporary file and a rename: a failure leaves no partial
+file. Releases the GIL while it works.
+
+Args:
+    path (str | os.PathLike): the SVG file to write.
+    state (FaceState): pose (degrees), expression, mouth.
+
+Raises:
+    talkface.FileError: it cannot be written (also an OSError; .filename is the path).
+    talkface.InvalidArgument: as render_svg().
+
+Example:
+    >>> animator.write_svg("face.svg", talkface.FaceState())
+    >>> open("face.svg").read(5)
+)doc");
+}
+
+}  // namespace talkface::python

@@ -1,0 +1,68 @@
+// The opaque handles of talkface.h: each wraps the C++ value it stands for. Shared by the capi/
+// files because rendering reads faces, states and options together.
+#ifndef TALKFACE_CAPI_C_API_HANDLES_HPP
+#define TALKFACE_CAPI_C_API_HANDLES_HPP
+
+#include <cmath>
+#include <string>
+
+#include "c_api_guard.hpp"
+#include "talkface/errors.hpp"
+#include "talkface/face_lift.hpp"
+#include "talkface/face_model.hpp"
+#include "talkface/face_pose.hpp"
+#include "talkface/mouth_shape.hpp"
+#include "talkface/svg_animator.hpp"
+#include "talkface/talkface.h"
+
+struct tf_face_model {
+    talkface::FaceModel model;
+};
+
+struct tf_lifted_face {
+    talkface::LiftedFace lifted;
+};
+
+struct tf_face_state {
+    talkface::FaceState state;
+};
+
+struct tf_projected_face {
+    talkface::ProjectedFace projected;
+};
+
+struct tf_svg_options {
+    talkface::SvgOptions options;
+};
+
+namespace talkface::capi {
+
+// A new handle owning `model`, for the (tf_face_model **out) of every call that makes a face.
+inline tf_face_model* new_face(FaceModel model) {
+    return new tf_face_model{std::move(model)};
+}
+
+inline Point2 to_point(const double xy[2]) {
+    return Point2{xy[0], xy[1]};
+}
+
+inline void from_point(Point2 point, double out_xy[2]) {
+    out_xy[0] = point.x;
+    out_xy[1] = point.y;
+}
+
+// Throws InvalidArgument naming `parameter` unless `shape` is one of the 12 tf_mouth_shape values
+// (a C enum may hold any int).
+inline MouthShape to_mouth_shape(const tf_mouth_shape& shape, const char* parameter) {
+    const int value = enum_value(shape);
+    if (value < 0 || value >= TF_MOUTH_SHAPE_COUNT) {
+        throw InvalidArgument(parameter, "expected a tf_mouth_shape (0.." +
+                                             std::to_string(TF_MOUTH_SHAPE_COUNT - 1) + "), got " +
+                                             std::to_string(value));
+    }
+    return static_cast<MouthShape>(value);
+}
+
+}  // namespace talkface::capi
+
+#endif

@@ -1,0 +1,96 @@
+// tf_svg_options, tf_render_svg and tf_write_svg: the C face of talkface::SvgAnimator.
+#include "c_api_guard.hpp"
+#include "c_api_handles.hpp"
+
+using talkface::Rgb;
+using talkface::SvgAnimator;
+using talkface::SvgOptions;
+using talkface::capi::guard;
+using talkface::capi::require_non_null;
+
+namespace {
+
+// An animator per call: it only holds a copy of the face and the options, so a C caller needs no
+// animator handle to keep in step with its face.
+SvgAnimator make_animator(const tf_face_model* face, const tf_svg_options* options) {
+    return SvgAnimator(face->model, options != nullptr ? options->options : SvgOptions{});
+}
+
+}  // namespace
+
+extern "C" {
+
+tf_status tf_svg_options_create(tf_svg_options** out) {
+    return guard([&] {
+        require_non_null(out, "out");
+        *out = new tf_svg_options{};
+    });
+}
+
+void tf_svg_options_destroy(tf_svg_options* options) {
+    delete options;
+}
+
+tf_status tf_svg_options_set_background(tf_svg_options* options, const tf_rgb* colour) {
+    return guard([&] {
+        require_non_null(options, "options");
+        if (colour == nullptr) {
+            options->options.background.reset();
+        } else {
+            options->options.background = Rgb{colour->r, colour->g, colour->b};
+        }
+    });
+}
+
+tf_status tf_svg_options_set_clothes(tf_svg_options* options, int draw_clothes, tf_rgb colour) {
+    return guard([&] {
+        require_non_null(options, "options");
+        options->options.draw_clothes = draw_clothes != 0;
+        options->options.clothes = Rgb{colour.r, colour.g, colour.b};
+    });
+}
+
+tf_status tf_svg_options_set_stroke_width_in_d(tf_svg_options* options, double stroke_width_in_d) {
+    return guard([&] {
+        require_non_null(options, "options");
+        options->options.stroke_width_in_d = stroke_width_in_d;
+    });
+}
+
+tf_status tf_svg_options_set_decimals(tf_svg_options* options, int decimals) {
+    return guard([&] {
+        require_non_null(options, "options");
+        options->options.decimals = decimals;
+    });
+}
+
+tf_status tf_svg_options_set_size_px(tf_svg_options* options, int width_px, int height_px) {
+    return guard([&] {
+        require_non_null(options, "options");
+        options->options.width_px = width_px;
+        options->options.height_px = height_px;
+    });
+}
+
+tf_status tf_render_svg(const tf_face_model* face, const tf_face_state* state, const tf_svg_options* options,
+                        char** out_svg, size_t* out_len) {
+    return guard([&] {
+        require_non_null(face, "face");
+        require_non_null(state, "state");
+        require_non_null(out_svg, "out_svg");
+        talkface::capi::give_document(make_animator(face, options).render_svg(state->state), out_svg,
+                                      out_len);
+    });
+}
+
+tf_status tf_write_svg(const tf_face_model* face, const tf_face_state* state, const tf_svg_options* options,
+                       const char* path) {
+    return guard([&] {
+        require_non_null(face, "face");
+        require_non_null(state, "state");
+        require_non_null(path, "path");
+        make_animator(face, options).write_svg(path, state->state);
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,37 @@
+#!/bin/sh
+# Regenerates the pictures in docs/ from a build directory (samples and the talkface command built):
+#   docs/make_pictures.sh BUILD_DIR
+# Each SVG is screenshot by headless Chromium at the SVG's own size.
+set -eu
+build_dir=$(cd "${1:?usage: docs/make_pictures.sh BUILD_DIR}" && pwd)
+docs_dir=$(cd "$(dirname "$0")" && pwd)
+source_dir=$(dirname "$docs_dir")
+work_dir=$(mktemp -d)
+trap 'rm -rf "$work_dir"' EXIT
+
+# screenshot SVG PNG: the window is the root element's width x height
+screenshot() {
+    size=$(sed -n 's/^<svg [^>]*width="\([0-9.]*\)" height="\([0-9.]*\)".*/\1 \2/p' "$1" | head -n 1)
+    width=$(echo "$size" | awk '{ printf "%d", $1 + 0.999 }')
+    height=$(echo "$size" | awk '{ printf "%d", $2 + 0.999 }')
+    profile=$(mktemp -d "$work_dir/profile.XXXXXX")
+    chromium --headless --no-sandbox --disable-gpu --disable-background-networking \
+        --disable-component-update --disable-sync --no-first-run --user-data-dir="$profile" \
+        --screenshot="$2" --window-size="$width,$height" "file://$1" >/dev/null 2>&1
+    echo "wrote $2 (${width}x${height})"
+}
+
+"$build_dir/bin/talkface" render -o "$work_dir/face.svg"
+screenshot "$work_dir/face.svg" "$docs_dir/face.png"
+
+"$build_dir/samples/pose_sheet/pose_sheet" "$work_dir/contact-sheet.svg"
+screenshot "$work_dir/contact-sheet.svg" "$docs_dir/contact-sheet.png"
+
+if [ -f "$source_dir/samples/faces/female.xml" ]; then
+    "$build_dir/samples/pose_sheet/pose_sheet" "$work_dir/contact-sheet-female.svg" \
+        "$source_dir/samples/faces/female.xml"
+    screenshot "$work_dir/contact-sheet-female.svg" "$docs_dir/contact-sheet-female.png"
+fi
+
+"$build_dir/samples/mouth_shapes/mouth_shapes" "$work_dir/mouth-shapes.svg"
+screenshot "$work_dir/mouth-shapes.svg" "$docs_dir/mouth-shapes.png"

@@ -1,0 +1,69 @@
+// talkface: reading a Mandarin transcript into sentences and syllables (SPEC "Transcript to
+// syllables"), the input of the aligner.
+//
+//   auto timeline = talkface::read_transcript("長期下來，傷害不斷累積。銀行{hang2}");
+//   for (const auto& syllable : timeline.syllables)   // 長 chang2, 期 qi1, ... 行 hang2
+//       std::cout << syllable.text << ' ' << syllable.pinyin << '\n';
+//   for (const auto& warning : timeline.warnings)     // what had no reading, and where
+//       std::cerr << warning << '\n';
+#ifndef TALKFACE_TRANSCRIPT_HPP
+#define TALKFACE_TRANSCRIPT_HPP
+
+#include <string>
+#include <string_view>
+
+#include "talkface/export.h"
+#include "talkface/timeline.hpp"
+
+namespace talkface {
+inline namespace v0 {
+
+/// How a transcript is read.
+struct TranscriptOptions {
+    /// Read runs of Latin letters that spell Mandarin syllables ("ni3 hao3", "ni3hao3", "nihao")
+    /// as syllables; when false they are reported like any other character without a reading.
+    bool read_pinyin = true;
+};
+
+/// Reads a transcript: UTF-8 text in Traditional or Simplified characters, or numbered pinyin.
+///
+/// - Sentences end at 。！？；… and . ! ? ; (closing quotes and brackets right after the mark
+///   stay with the sentence); text after the last mark is a sentence too. Line breaks, blank
+///   lines and spaces do not end a sentence.
+/// - ，、：and , : mark a pause after the syllable before them (Syllable::pause_after).
+/// - Each character with a reading is one syllable. A polyphonic character is read by the
+///   longest word of the built-in phrase table that covers it (首都 shou3 du1, 都是 dou1 shi4),
+///   otherwise by its most frequent reading. Tones are the most frequent tone for that toneless
+///   reading: a best guess (lips do not depend on tone), not tone sandhi.
+/// - A reading fix right after a character overrides it: 行{hang2}, 了{liao3}; the tone digit
+///   may be left out (tone 5).
+/// - A pinyin token gives one syllable per syllable it spells: text as written, pinyin
+///   normalised ("lü4", "lu:4" -> "lv4"; no tone -> 5); an apostrophe separates syllables (xi'an).
+/// - Characters without a reading (Latin letters that are not pinyin, digits, symbols, Han
+///   characters the table lacks) are not syllables: each adds a Timeline::warnings entry
+///   `source:line:column: "A" (U+0041) has no Mandarin reading; skipped`. Punctuation other
+///   than the marks above (quotes, brackets, dashes) stays in Sentence::text silently.
+/// Columns count characters (code points), not bytes; lines and columns are 1-based.
+/// Sentence::text is the sentence as written, fixes removed; times are all 0.
+///
+/// \param utf8_text the transcript; a leading byte order mark is skipped
+/// \param source_name names the text in messages (a path, or "<transcript>")
+/// \throws talkface::ParseError on invalid UTF-8 (naming the byte offset and its line:column),
+///         on a reading fix that is not a Mandarin syllable (行{hxng2}), on a fix with no
+///         character before it, or on an unclosed "{".
+/// Thread safety: may be called from several threads at once (the tables are read-only).
+TALKFACE_API Timeline read_transcript(std::string_view utf8_text, const TranscriptOptions& options = {},
+                                      const std::string& source_name = "<transcript>");
+
+/// Reads a transcript file; messages name `path`.
+/// \throws talkface::FileError if the file cannot be read, and what read_transcript() throws.
+TALKFACE_API Timeline load_transcript(const std::string& path, const TranscriptOptions& options = {});
+
+/// True if `syllable` is a legal Mandarin syllable in numbered pinyin: a toneless syllable of
+/// the built-in set (e.g. "zhuang", "lv", "ng") followed by a tone 1-5 ("hang2", "ma5").
+TALKFACE_API bool is_valid_pinyin(std::string_view syllable);
+
+}  // namespace v0
+}  // namespace talkface
+
+#endif

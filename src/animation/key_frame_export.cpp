@@ -1,0 +1,54 @@
+// Key frames as JSON and TSV, written by hand: the library has no JSON dependency, and a fixed
+// layout with millisecond numbers keeps the output byte-for-byte reproducible (golden tests).
+#include <string>
+
+#include "common/number_format.hpp"
+#include "talkface/animation.hpp"
+
+namespace talkface {
+inline namespace v0 {
+
+namespace {
+
+std::string number(double value) {
+    return detail::format_fixed(value, 3);
+}
+
+// Shape names are "m" .. "h'": nothing in them needs escaping in JSON.
+std::string quoted(const char* text) {
+    return std::string("\"") + text + "\"";
+}
+
+}  // namespace
+
+std::string key_frames_json(const std::vector<MouthKeyFrame>& mouth_key_frames,
+                            const std::vector<ExpressionEvent>& events) {
+    std::string json = "{\"mouth\":[";
+    for (std::size_t k = 0; k < mouth_key_frames.size(); ++k) {
+        const MouthKeyFrame& key = mouth_key_frames[k];
+        json += k == 0 ? "\n" : ",\n";
+        json += "{\"time\":" + number(key.time_s) + ",\"shape\":" + quoted(mouth_shape_name(key.shape)) +
+                ",\"syllable\":" + (key.syllable ? std::to_string(*key.syllable) : std::string("null")) + "}";
+    }
+    json += "\n],\n\"events\":[";
+    for (std::size_t k = 0; k < events.size(); ++k) {
+        const ExpressionEvent& event = events[k];
+        json += k == 0 ? "\n" : ",\n";
+        json += "{\"kind\":" + quoted(expression_event_kind_name(event.kind)) +
+                ",\"start\":" + number(event.start_s) + ",\"end\":" + number(event.end_s) +
+                ",\"amount\":" + number(event.amount) + "}";
+    }
+    json += "\n]}\n";
+    return json;
+}
+
+std::string key_frames_tsv(const std::vector<MouthKeyFrame>& mouth_key_frames) {
+    std::string tsv;
+    for (const MouthKeyFrame& key : mouth_key_frames) {
+        tsv += number(key.time_s) + "\t" + mouth_shape_name(key.shape) + "\n";
+    }
+    return tsv;
+}
+
+}  // namespace v0
+}  // namespace talkface

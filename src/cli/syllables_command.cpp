@@ -1,0 +1,82 @@
+// `talkface syllables`: the sentences of a transcript and each character's reading, so a user
+// can check them (and fix one in place, 行{hang2}) before aligning.
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <talkface/talkface.hpp>
+
+#include "commands.hpp"
+
+namespace talkface_cli {
+
+namespace {
+
+struct SyllablesOptions {
+    std::string transcript_path;
+    bool json = false;
+    bool no_pinyin_input = false;
+};
+
+// SPEC "Contracts": {"sentences":[{"text"}], "syllables":[{"text","pinyin","sentence"}],
+// "warnings":[...]}, keys in that order (ordered_json), characters as UTF-8, not \u escapes.
+std::string timeline_json(const talkface::Timeline& timeline) {
+    nlohmann::ordered_json document;
+    document["sentences"] = nlohmann::ordered_json::array();
+    for (const auto& sentence : timeline.sentences)
+        document["sentences"].push_back({{"text", sentence.text}});
+    document["syllables"] = nlohmann::ordered_json::array();
+    for (const auto& syllable : timeline.syllables) {
+        document["syllables"].push_back(
+            {{"text", syllable.text}, {"pinyin", syllable.pinyin}, {"sentence", syllable.sentence}});
+    }
+    document["warnings"] = timeline.warnings;
+    return document.dump(2);
+}
+
+void print_plain(const talkface::Timeline& timeline) {
+    std::size_t next = 0;
+    for (std::size_t index = 0; index < timeline.sentences.size(); ++index) {
+        std::cout << "sentence " << index + 1 << ": " << timeline.sentences[index].text << '\n';
+        for (; next < timeline.syllables.size() && timeline.syllables[next].sentence == index; ++next) {
+            const auto& syllable = timeline.syllables[next];
+            std::cout << "  " << syllable.text << '\t' << syllable.pinyin
+                      << (syllable.pause_after ? "\t(pause)" : "") << '\n';
+        }
+    }
+}
+
+void run_syllables(const SyllablesOptions& options) {
+    talkface::TranscriptOptions transcript_options;
+    transcript_options.read_pinyin = !options.no_pinyin_input;
+    const auto timeline = talkface::load_transcript(options.transcript_path, transcript_options);
+    if (options.json) {
+        std::cout << timeline_json(timeline) << '\n';
+        return;
+    }
+    print_plain(timeline);
+    for (const auto& warning : timeline.warnings) std::cerr << "talkface: warning: " << warning << '\n';
+}
+
+}  // namespace
+
+void setup_syllables_command(CLI::App& app) {
+    auto options = std::make_shared<SyllablesOptions>();
+    CLI::App* syllables = app.add_subcommand(
+        "syllables", "Show a transcript's sentences and each character's reading, to check before aligning");
+    syllables
+        ->add_option(
+            "TRANSCRIPT", options->transcript_path,
+            "UTF-8 text, Traditional or Simplified, or numbered pinyin; fix a reading in place: 行{hang2}")
+        ->required()
+        ->check(CLI::ExistingFile);
+    syllables->add_flag("--json", options->json,
+                        "Print JSON: {\"sentences\":[...], \"syllables\":[...], \"warnings\":[...]}");
+    syllables->add_flag("--no-pinyin-input", options->no_pinyin_input,
+                        "Report Latin letters as unreadable instead of reading them as pinyin");
+    syllables->callback([options] { run_syllables(*options); });
+}
+
+}  // namespace talkface_cli

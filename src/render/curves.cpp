@@ -1,0 +1,118 @@
+#include "render/curves.hpp"
+
+#include <cstddef>
+
+#include "common/number_format.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+Point2 operator+(Point2 a, Point2 b) { return {a.x + b.x, a.y + b.y}; }
+Point2 operator-(Point2 a, Point2 b) { return {a.x - b.x, a.y - b.y}; }
+Point2 operator*(double s, Point2 a) { return {s * a.x, s * a.y}; }
+
+// The Bezier form of the Catmull-Rom segment p1 -> p2 with outer neighbours p0 and p3.
+CubicSegment catmull_rom_segment(Point2 p0, Point2 p1, Point2 p2, Point2 p3) {
+    return {p1 + (1.0 / 6.0) * (p2 - p0), p2 - (1.0 / 6.0) * (p3 - p1), p2};
+}
+
+}  // namespace
+
+std::vector<CubicSegment> arc_segments(const std::vector<Point2>& points) {
+    std::vector<CubicSegment> segments;
+    const std::size_t n = points.size();
+    if (n < 2) return segments;
+    const Point2 before_first = 2.0 * points[0] - points[1];
+    const Point2 after_last = 2.0 * points[n - 1] - points[n - 2];
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+        const Point2 p0 = i == 0 ? before_first : points[i - 1];
+        const Point2 p3 = i + 2 < n ? points[i + 2] : after_last;
+        segments.push_back(catmull_rom_segment(p0, points[i], points[i + 1], p3));
+    }
+    return segments;
+}
+
+CubicSegment rim_segment(Point2 start, Point2 middle, Point2 end) {
+    // B(1/2) = (start + 3 c1 + 3 c2 + end) / 8 = middle with c1 = c2 = c.
+    const Point2 control{(8.0 * middle.x - start.x - end.x) / 6.0, (8.0 * middle.y - start.y - end.y) / 6.0};
+    return {control, control, end};
+}
+
+std::vector<CubicSegment> closed_curve_segments(const std::vector<Point2>& points) {
+    std::vector<CubicSegment> segments;
+    const std::size_t n = points.size();
+    if (n < 2) return segments;
+    for (std::size_t i = 0; i < n; ++i) {
+        segments.push_back(catmull_rom_segment(points[(i + n - 1) % n], points[i],
+                                               points[(i + 1) % n], points[(i + 2) % n]));
+    }
+    return segments;
+}
+
+std::vector<Point2> cut_corners(const std::vector<Point2>& points, int rounds) {
+    std::vector<Point2> polygon = points;
+    for (int round = 0; round < rounds && polygon.size() >= 3; ++round) {
+        std::vector<Point2> cut;
+        cut.reserve(2 * polygon.size());
+        for (std::size_t i = 0; i < polygon.size(); ++i) {
+            const Point2 a = polygon[i];
+            const Point2 b = polygon[(i + 1) % polygon.size()];
+            cut.push_back(0.75 * a + 0.25 * b);
+            cut.push_back(0.25 * a + 0.75 * b);
+        }
+        polygon = std::move(cut);
+    }
+    return polygon;
+}
+
+void PathData::append_point(Point2 point) {
+    text_ += format_fixed(point.x, decimals_);
+    text_ += ',';
+    text_ += format_fixed(point.y, decimals_);
+}
+
+PathData& PathData::move_to(Point2 point) {
+    if (!text_.empty()) text_ += ' ';
+    text_ += 'M';
+    append_point(point);
+    return *this;
+}
+
+PathData& PathData::line_to(Point2 point) {
+    text_ += " L";
+    append_point(point);
+    return *this;
+}
+
+PathData& PathData::curves(const std::vector<CubicSegment>& segments) {
+    for (const CubicSegment& segment : segments) {
+        text_ += " C";
+        append_point(segment.c1);
+        text_ += ' ';
+        append_point(segment.c2);
+        text_ += ' ';
+        append_point(segment.end);
+    }
+    return *this;
+}
+
+PathData& PathData::arc(const std::vector<Point2>& points) { return curves(arc_segments(points)); }
+
+PathData& PathData::close() {
+    text_ += " Z";
+    return *this;
+}
+
+std::string format_points(const std::vector<Point2>& points, int decimals) {
+    std::string text;
+    for (const Point2& point : points) {
+        if (!text.empty()) text += ' ';
+        text += format_fixed(point.x, decimals);
+        text += ',';
+        text += format_fixed(point.y, decimals);
+    }
+    return text;
+}
+
+}  // namespace talkface::detail

@@ -1,0 +1,62 @@
+// The two curve drawing methods of thesis 2.2: cubic Bezier curves through given points (the
+// thesis's arc(P1, ..., Pn)) and corner-cutting subdivision of a polygon (hair and eyebrows).
+#ifndef TALKFACE_RENDER_CURVES_HPP
+#define TALKFACE_RENDER_CURVES_HPP
+
+#include <string>
+#include <vector>
+
+#include "talkface/types.hpp"
+
+namespace talkface::detail {
+
+// One cubic Bezier segment: from the pen's position through control points c1, c2 to `end`.
+struct CubicSegment {
+    Point2 c1;
+    Point2 c2;
+    Point2 end;
+};
+
+// arc(P1, ..., Pn): Catmull-Rom through every point, as cubic Bezier segments starting at P1.
+// An end's tangent points at its neighbour (the missing outer point is P1 reflected through P2),
+// so several arcs joined at their ends meet in a corner, as the eye and lip corners should.
+std::vector<CubicSegment> arc_segments(const std::vector<Point2>& points);
+
+// One cubic Bezier segment from `start` to `end` that passes through `middle` at its half-way
+// parameter, with both inner control points at the same place. Where the middle point is the far end
+// of a rounded shape (the top of an ear's rim), a Catmull-Rom arc would make its tangent there
+// parallel to end - start and fold the curve into a spike; this one rounds over it instead.
+CubicSegment rim_segment(Point2 start, Point2 middle, Point2 end);
+
+// A closed Catmull-Rom curve through every point, smooth everywhere (the face contour, whose
+// four arcs meet without corners). Starts and ends at points.front().
+std::vector<CubicSegment> closed_curve_segments(const std::vector<Point2>& points);
+
+// Chaikin's corner cutting (each edge keeps its 1/4 and 3/4 points), `rounds` times, of the
+// closed polygon `points`. The result stays inside the polygon's convex hull.
+std::vector<Point2> cut_corners(const std::vector<Point2>& points, int rounds);
+
+// SVG path data, coordinates with `decimals` digits after the point.
+class PathData {
+public:
+    explicit PathData(int decimals) : decimals_(decimals) {}
+    PathData& move_to(Point2 point);
+    PathData& line_to(Point2 point);
+    PathData& curves(const std::vector<CubicSegment>& segments);
+    // arc(points) drawn from points.front(), which must be the pen's position (or a new move).
+    PathData& arc(const std::vector<Point2>& points);
+    PathData& close();
+    const std::string& str() const { return text_; }
+
+private:
+    void append_point(Point2 point);
+    int decimals_;
+    std::string text_;
+};
+
+// "x1,y1 x2,y2 ..." for a polyline or polygon's points attribute.
+std::string format_points(const std::vector<Point2>& points, int decimals);
+
+}  // namespace talkface::detail
+
+#endif

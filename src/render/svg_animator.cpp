@@ -1,0 +1,166 @@
+// SvgAnimator: the spatial half of thesis 6.3 (one state -> one SVG document) and the canvas that
+// every frame of one face shares.
+#include "talkface/svg_animator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/atomic_file.hpp"
+#include "common/number_format.hpp"
+#include "render/layers.hpp"
+#include "render/svg_text.hpp"
+#include "talkface/errors.hpp"
+#include "talkface/mouth_shape.hpp"
+
+namespace talkface {
+inline namespace v0 {
+
+namespace {
+
+constexpr int kMaxDecimals = 6;
+// Room around the outermost points for the curves' overshoot between points and the outline's
+// width: a Catmull-Rom control point lies at most 1/6 of a neighbour span outside.
+constexpr double kMarginInD = 0.35;
+// The clothes layer reaches this far from O (see clothes_svg.cpp), so the canvas shows them.
+constexpr double kMinHalfWidthInD = 2.2;
+constexpr double kMinBottomBelowOriginInD = 1.9;
+
+void validate(const SvgOptions& options) {
+    if (options.decimals < 0 || options.decimals > kMaxDecimals) {
+        throw InvalidArgument("decimals", "expected 0.." + std::to_string(kMaxDecimals) + ", found " +
+                                              std::to_string(options.decimals));
+    }
+    if (!std::isfinite(options.stroke_width_in_d) || options.stroke_width_in_d <= 0.0) {
+        throw InvalidArgument("stroke_width_in_d", "expected a finite number > 0, found " +
+                                                       detail::format_shortest(options.stroke_width_in_d));
+    }
+    if (options.width_px < 0) {
+        throw InvalidArgument("width_px", "expected >= 0 (0 fits the face), found " +
+                                              std::to_string(options.width_px));
+    }
+    if (options.height_px < 0) {
+        throw InvalidArgument("height_px", "expected >= 0 (0 fits the face), found " +
+                                               std::to_string(options.height_px));
+    }
+}
+
+// The canvas of a face: every point of the face at the extreme poses (each angle -15, 0 or 15
+// degrees), with the mouth wide open and the brows raised, plus a margin. Centred on O so that the
+// body below it is centred too. Whole pixels, so the viewBox reads cleanly.
+detail::CanvasBox fit_canvas(const FaceModel& face) {
+    double min_x = std::numeric_limits<double>::infinity();
+    double min_y = min_x;
+    double max_x = -min_x;
+    double max_y = -min_x;
+    std::vector<FaceState> states(3);
+    states[1].mouth = mouth_controls(face, MouthShape::a);
+    states[2].expression.brows = 1.0;
+    Point2 origin;
+    double d = 0.0;
+    const double angles[] = {-kMaxPoseAngleDeg, 0.0, kMaxPoseAngleDeg};
+    for (FaceState state : states) {
+        for (double alpha : angles) {
+            for (double beta : angles) {
+                for (double gamma : angles) {
+                    state.pose = {alpha, beta, gamma};
+                    const ProjectedFace projected = project_face(face, state);
+                    for (const Point2& p : projected.image_xy) {
+                        min_x = std::min(min_x, p.x);
+                        max_x = std::max(max_x, p.x);
+                        min_y = std::min(min_y, p.y);
+                        max_y = std::max(max_y, p.y);
+                    }
+                    origin = projected.origin;
+                    d = projected.d;
+                }
+            }
+        }
+    }
+    const double margin = kMarginInD * d;
+    const double half_width =
+        std::max({origin.x - min_x + margin, max_x - origin.x + margin, kMinHalfWidthInD * d});
+    const double top = std::floor(min_y - margin);
+    const double bottom = std::ceil(std::max(max_y + margin, origin.y + kMinBottomBelowOriginInD * d));
+    const double left = std::floor(origin.x - half_width);
+    const double right = std::ceil(origin.x + half_width);
+    return {left, top, right - left, bottom - top};
+}
+
+}  // namespace
+
+struct SvgAnimator::Impl {
+    FaceModel face;
+    SvgOptions options;
+    detail::CanvasBox canvas;
+    int width_px = 0;
+    int height_px = 0;
+};
+
+SvgAnimator::SvgAnimator(FaceModel face, SvgOptions options) {
+    validate(options);
+    impl_ = std::make_unique<Impl>();
+    impl_->canvas = fit_canvas(face);
+    const double aspect = impl_->canvas.width / impl_->canvas.height;
+    int width_px = options.width_px;
+    int height_px = options.height_px;
+    if (width_px == 0 && height_px == 0) {
+        width_px = static_cast<int>(impl_->canvas.width);
+        height_px = static_cast<int>(impl_->canvas.height);
+    } else if (height_px == 0) {
+        height_px = static_cast<int>(std::lround(width_px / aspect));
+    } else if (width_px == 0) {
+        width_px = static_cast<int>(std::lround(height_px * aspect));
+    }
+    impl_->width_px = width_px;
+    impl_->height_px = height_px;
+    impl_->face = std::move(face);
+    impl_->options = options;
+}
+
+SvgAnimator::~SvgAnimator() = default;
+SvgAnimator::SvgAnimator(SvgAnimator&&) noexcept = default;
+SvgAnimator& SvgAnimator::operator=(SvgAnimator&&) noexcept = default;
+
+const FaceModel& SvgAnimator::face() const { return impl_->face; }
+const SvgOptions& SvgAnimator::options() const { return impl_->options; }
+
+std::string SvgAnimator::render_svg(const FaceState& state) const {
+    const ProjectedFace projected = project_face(impl_->face, state);
+    const SvgOptions& options = impl_->options;
+    const detail::CanvasBox& canvas = impl_->canvas;
+    const detail::LayerStyle style{options.decimals, options.stroke_width_in_d * projected.d};
+    auto number = [&](double value) { return detail::format_fixed(value, options.decimals); };
+
+    // The user space is the face's own image space: a caller can crop or place a document with
+    // points from project_face() (the samples zoom on the mouth that way).
+    std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
+    svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\"";
+    svg += " version=\"1.1\"" + detail::attribute("width", std::to_string(impl_->width_px)) +
+           detail::attribute("height", std::to_string(impl_->height_px)) +
+           detail::attribute("viewBox", number(canvas.x) + " " + number(canvas.y) + " " +
+                                            number(canvas.width) + " " + number(canvas.height)) +
+           ">\n";
+    svg += "<g id=\"background\">\n";
+    if (options.background) {
+        svg += "<rect" + detail::attribute("x", number(canvas.x)) + detail::attribute("y", number(canvas.y)) +
+               detail::attribute("width", number(canvas.width)) +
+               detail::attribute("height", number(canvas.height)) +
+               detail::attribute("fill", to_hex(*options.background)) + "/>\n";
+    }
+    svg += "</g>\n<g id=\"hair\">\n" + detail::draw_hair_layer(projected, style);
+    svg += "</g>\n<g id=\"clothes\">\n";
+    if (options.draw_clothes) svg += detail::draw_clothes_layer(projected, canvas, options.clothes, style);
+    svg += "</g>\n<g id=\"face\">\n" + detail::draw_face_layer(projected, style) + "</g>\n</svg>\n";
+    return svg;
+}
+
+void SvgAnimator::write_svg(const std::string& path, const FaceState& state) const {
+    detail::write_file_atomically(path, render_svg(state));
+}
+
+}  // namespace v0
+}  // namespace talkface

@@ -1,0 +1,141 @@
+"""The talkface command: exit codes, messages, and outputs that are whole or absent."""
+import os
+import pathlib
+import subprocess
+import xml.etree.ElementTree as ET
+
+import pytest
+
+CLI = os.environ["TALKFACE_CLI"]
+SOURCE_DIR = pathlib.Path(os.environ.get("TALKFACE_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
+MALE_FACE = SOURCE_DIR / "samples" / "faces" / "male.xml"
+SVG_NS = "{http://www.w3.org/2000/svg}"
+
+
+def run(*args):
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=60)
+
+
+def layer_ids(svg_text):
+    root = ET.fromstring(svg_text.encode())
+    return [g.get("id") for g in root.findall(SVG_NS + "g")]
+
+
+def test_render_writes_a_valid_svg(tmp_path):
+    out = tmp_path / "face.svg"
+    result = run("render", "--pose", "5,-10,3", "--mouth", "a", "--blink", "0.5", "--smile", "0.3",
+                 "-o", out)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout == ""
+    assert layer_ids(out.read_text()) == ["background", "hair", "clothes", "face"]
+
+
+def test_render_to_stdout_prints_the_document_only():
+    result = run("render", "-o", "-")
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.startswith("<?xml")
+    assert layer_ids(result.stdout) == ["background", "hair", "clothes", "face"]
+
+
+def test_background_none_and_no_clothes_empty_those_layers():
+    result = run("render", "--background", "none", "--no-clothes", "-o", "-")
+    assert result.returncode == 0, result.stderr
+    root = ET.fromstring(result.stdout.encode())
+    groups = {g.get("id"): g for g in root.findall(SVG_NS + "g")}
+    assert len(groups["background"]) == 0
+    assert len(groups["clothes"]) == 0
+
+
+def test_help_exits_0_and_lists_exit_codes():
+    result = run("--help")
+    assert result.returncode == 0
+    for line in ("0    success", "1    the work failed", "2    usage error", "3    internal error",
+                 "130  interrupted"):
+        assert line in result.stdout
+    assert "render" in result.stdout
+
+
+def test_version_prints_the_version():
+    result = run("--version")
+    assert result.returncode == 0
+    assert result.stdout.strip().count(".") == 2
+
+
+@pytest.mark.parametrize("args", [
+    ["render"],                                        # -o is required
+    ["render", "--no-such-option", "-o", "-"],
+    ["render", "--pose", "1,2", "-o", "-"],
+    ["render", "--pose", "a,b,c", "-o", "-"],
+    ["render", "--mouth", "x", "-o", "-"],
+    ["render", "--blink", "1.5", "-o", "-"],
+    ["render", "--background", "blue", "-o", "-"],
+    [],                                                # a subcommand is required
+])
+def test_usage_errors_exit_2(args):
+    result = run(*args)
+    assert result.returncode == 2, result.stderr
+    assert result.stdout == ""
+    assert result.stderr
+
+
+def test_malformed_pose_is_explained():
+    result = run("render", "--pose", "1;2;3", "-o", "-")
+    assert result.returncode == 2
+    assert "--pose" in result.stderr
+    assert "ALPHA,BETA,GAMMA" in result.stderr
+
+
+def test_missing_face_file_is_named(tmp_path):
+    missing = tmp_path / "no-such-face.xml"
+    result = run("render", "--face", missing, "-o", tmp_path / "out.svg")
+    assert result.returncode in (1, 2)
+    assert str(missing) in result.stderr
+    assert not (tmp_path / "out.svg").exists()
+
+
+def assert_failed_without_output(result, out, *names):
+    assert result.returncode == 1, result.stderr
+    assert result.stderr.startswith("talkface: error: ")
+    for name in names:
+        assert name in result.stderr
+    assert result.stdout == ""
+    assert not out.exists()
+    assert list(out.parent.glob(out.name + "*")) == []
+
+
+@pytest.mark.skipif(not MALE_FACE.exists(), reason="samples/faces/male.xml is not there")
+def test_face_file_missing_a_point_exits_1_naming_file_and_line(tmp_path):
+    lines = MALE_FACE.read_text().splitlines(keepends=True)
+    dropped = next(i for i, line in enumerate(lines) if 'id="8.3"' in line)
+    broken = tmp_path / "broken.xml"
+    broken.write_text("".join(lines[:dropped] + lines[dropped + 1:]))
+    out = tmp_path / "out.svg"
+    result = run("render", "--face", broken, "-o", out)
+    assert_failed_without_output(result, out, str(broken) + ":", "8.3")
+
+
+def test_face_file_that_is_not_xml_exits_1_naming_file_and_line(tmp_path):
+    broken = tmp_path / "not-xml.xml"
+    broken.write_text("<talkface-face version=\"1\">\n  <points>\n    <point id=\"11.1\" x=\"1\"\n")
+    out = tmp_path / "out.svg"
+    result = run("render", "--face", broken, "-o", out)
+    assert_failed_without_output(result, out, str(broken) + ":")
+    assert any(ch.isdigit() for ch in result.stderr.split(str(broken) + ":")[1][:3])
+
+
+def test_existing_output_survives_a_failure(tmp_path):
+    out = tmp_path / "out.svg"
+    out.write_text("keep me")
+    result = run("render", "--pose", "0,20,0", "-o", out)
+    assert result.returncode == 1
+    assert out.read_text() == "keep me"
+
+
+@pytest.mark.parametrize("pose, angle", [("20,0,0", "alpha"), ("0,-16,0", "beta"), ("0,0,15.5", "gamma")])
+def test_pose_out_of_range_names_the_angle_and_writes_nothing(tmp_path, pose, angle):
+    out = tmp_path / "out.svg"
+    result = run("render", "--pose", pose, "-o", out)
+    assert result.returncode in (1, 2)
+    assert result.stderr.startswith("talkface: error: ")
+    assert angle in result.stderr
+    assert not out.exists()

@@ -1,0 +1,65 @@
+"""`talkface syllables`: the SPEC "Contracts" JSON, the plain listing, and errors."""
+import json
+import os
+import subprocess
+
+CLI = os.environ["TALKFACE_CLI"]
+
+
+def run(*args):
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=60)
+
+
+def write(tmp_path, text, name="transcript.txt"):
+    path = tmp_path / name
+    path.write_bytes(text.encode("utf-8") if isinstance(text, str) else text)
+    return path
+
+
+def test_json_has_exactly_the_contract_shape(tmp_path):
+    path = write(tmp_path, "長期下來，傷害不斷累積。\n銀行{hang2}很好 ABC")
+    result = run("syllables", path, "--json")
+    assert result.returncode == 0, result.stderr
+    assert result.stderr == ""
+    document = json.loads(result.stdout)
+    assert list(document) == ["sentences", "syllables", "warnings"]
+    assert document["sentences"] == [{"text": "長期下來，傷害不斷累積。"}, {"text": "銀行很好 ABC"}]
+    syllables = document["syllables"]
+    assert all(list(s) == ["text", "pinyin", "sentence"] for s in syllables)
+    assert [s["text"] for s in syllables] == list("長期下來傷害不斷累積銀行很好")
+    assert [s["pinyin"][:-1] for s in syllables[:4]] == ["chang", "qi", "xia", "lai"]
+    assert syllables[11] == {"text": "行", "pinyin": "hang2", "sentence": 1}
+    assert [s["sentence"] for s in syllables] == [0] * 10 + [1] * 4
+    assert len(document["warnings"]) == 3
+    assert document["warnings"][0].startswith(f'{path}:2:13: "A"')
+
+
+def test_json_writes_u_umlaut_as_v(tmp_path):
+    document = json.loads(run("syllables", write(tmp_path, "綠色 lü4"), "--json").stdout)
+    assert [s["pinyin"] for s in document["syllables"]] == ["lv4", "se4", "lv4"]
+
+
+def test_plain_output_lists_sentences_and_readings_and_warns_on_stderr(tmp_path):
+    result = run("syllables", write(tmp_path, "首都。都是 X"))
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.splitlines() == [
+        "sentence 1: 首都。", "  首\tshou3", "  都\tdu1",
+        "sentence 2: 都是 X", "  都\tdou1", "  是\tshi4"]
+    assert 'talkface: warning:' in result.stderr and '"X"' in result.stderr
+
+
+def test_invalid_utf8_fails_naming_the_byte_offset(tmp_path):
+    result = run("syllables", write(tmp_path, b"ab\n\xe4\xbd\xa0\xff"), "--json")
+    assert result.returncode == 1
+    assert result.stdout == ""
+    assert "transcript.txt:2:2: byte offset 6: invalid UTF-8" in result.stderr
+
+
+def test_an_invalid_reading_fix_fails_naming_it(tmp_path):
+    result = run("syllables", write(tmp_path, "行{hxng2}"))
+    assert result.returncode == 1
+    assert '"{hxng2}"' in result.stderr
+
+
+def test_a_missing_transcript_is_a_usage_error(tmp_path):
+    assert run("syllables", tmp_path / "missing.txt").returncode == 2

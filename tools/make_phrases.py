@@ -1,0 +1,155 @@
+#!/usr/bin/python3
+"""Generates src/speech/data/phrases.cpp: words that fix the reading of a polyphonic character
+(首都 shou3 du1, 都是 dou1 shi4), in Simplified and Traditional characters, for the transcript
+reader's longest-match lookup.
+
+Sources (licences in docs/data-licences.md):
+  /usr/share/pyzy/db/android.db  Debian libpyzy-1.0-0v5; the Android Open Source Project's
+                                  Pinyin IME phrase list, Apache 2.0. Simplified, toneless.
+  opencc (command, s2t and s2tw)  Debian opencc, Apache 2.0: Traditional forms of those phrases.
+  Unihan readings                 via make_readings.py: decoding the ids and choosing tones.
+Run: /usr/bin/python3 tools/make_phrases.py
+"""
+
+import collections
+import os
+import sqlite3
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import embed_text  # noqa: E402
+import make_readings  # noqa: E402
+import pinyin_rules  # noqa: E402
+
+ANDROID_DB = "/usr/share/pyzy/db/android.db"
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+OUTPUT = os.path.join(ROOT, "src", "speech", "data", "phrases.cpp")
+
+
+def read_android_db():
+    """[(phrase, [(initial_id, final_id), ...])] for every row of every py_phrase_N table."""
+    rows = []
+    with sqlite3.connect(f"file:{ANDROID_DB}?mode=ro", uri=True) as db:
+        tables = [name for (name,) in db.execute(
+            "SELECT name FROM sqlite_master WHERE type = 'table' AND name LIKE 'py_phrase_%'")]
+        for table in tables:
+            length = int(table.rsplit("_", 1)[1]) + 1
+            columns = ", ".join(f"s{i}, y{i}" for i in range(length))
+            for row in db.execute(f"SELECT phrase, {columns} FROM {table}"):
+                phrase, ids = row[0], row[1:]
+                if len(phrase) == length:
+                    rows.append((phrase, list(zip(ids[0::2], ids[1::2]))))
+    return rows
+
+
+def decode_ids(rows, unihan):
+    """Majority vote against Unihan: pyzy stores pinyin as ids of its own initial and final
+    tables. Each one-character row votes, for its (initial id, final id) pair and for each id
+    alone, with every toneless reading Unihan gives that character; the true spelling is the
+    one nearly every character agrees on, a polyphone's other readings scatter."""
+    pair_votes = collections.defaultdict(collections.Counter)
+    initial_votes = collections.defaultdict(collections.Counter)
+    final_votes = collections.defaultdict(collections.Counter)
+    for phrase, ids in rows:
+        if len(phrase) != 1 or phrase not in unihan:
+            continue
+        (initial_id, final_id), = ids
+        for toneless in make_readings.modern_toneless(unihan[phrase]):
+            initial, final = pinyin_rules.split_syllable(toneless)
+            pair_votes[(initial_id, final_id)][toneless] += 1
+            initial_votes[initial_id][initial] += 1
+            final_votes[final_id][final] += 1
+
+    pairs = {pair: votes.most_common(1)[0][0] for pair, votes in pair_votes.items()}
+    initials = {key: votes.most_common(1)[0][0] for key, votes in initial_votes.items()}
+    finals = {key: votes.most_common(1)[0][0] for key, votes in final_votes.items()}
+
+    def decode(pair):
+        if pair in pairs:
+            return pairs[pair]
+        syllable = initials.get(pair[0], "?") + finals.get(pair[1], "?")
+        # pyzy keeps u-umlaut as one final id whatever the initial; j q x y spell it u.
+        if syllable[:1] in "jqxy" and "v" in syllable:
+            syllable = syllable.replace("v", "u")
+        return syllable
+
+    return decode, initials, finals
+
+
+def to_traditional(phrases, config):
+    """OpenCC over the whole list at once, one phrase per line (phrase-level conversion)."""
+    result = subprocess.run(["opencc", "-c", config], input="\n".join(phrases) + "\n",
+                            capture_output=True, text=True, check=True)
+    converted = result.stdout.split("\n")[:len(phrases)]
+    if len(converted) != len(phrases):
+        sys.exit(f"make_phrases: opencc {config} returned {len(converted)} lines for {len(phrases)}")
+    return converted
+
+
+def numbered_reading(character, toneless, unihan, fallback_character):
+    """The character's most frequent reading with this toneless spelling (the tone is a guess
+    the lips never see); a Traditional form without readings borrows its Simplified form's."""
+    for source in (character, fallback_character):
+        if source in unihan:
+            for reading in make_readings.ordered_readings(unihan[source]):
+                if reading[:-1] == toneless:
+                    return reading
+    return None
+
+
+def main():
+    unihan = make_readings.load_unihan()
+    rows = read_android_db()
+    decode, initials, finals = decode_ids(rows, unihan)
+    print(f"make_phrases: decoded {len(initials)} initial ids, {len(finals)} final ids")
+
+    simplified = {}
+    for phrase, ids in rows:
+        if len(phrase) > 1 and phrase not in simplified:
+            simplified[phrase] = [decode(pair) for pair in ids]
+    bad = [p for p, syllables in simplified.items()
+           if not all(pinyin_rules.is_legal_toneless(s) for s in syllables)]
+    if bad:
+        sys.exit(f"make_phrases: {len(bad)} phrases decode to illegal syllables, e.g. {bad[:5]}")
+
+    phrases = list(simplified)
+    forms = [(phrase, phrase) for phrase in phrases]
+    for config in ("s2t.json", "s2tw.json"):
+        forms.extend(zip(to_traditional(phrases, config), phrases))
+
+    def first_toneless(character):
+        return make_readings.ordered_readings(unihan[character])[0][:-1]
+
+    table = {}
+    unreadable = 0
+    for form, source in forms:
+        if form in table or len(form) != len(source):
+            continue
+        syllables = simplified[source]
+        # Only phrases that settle a polyphonic character are kept: elsewhere the character
+        # table already gives the phrase's reading, and the table stays small.
+        if not any(c in unihan and (len(make_readings.modern_toneless(unihan[c])) > 1
+                                    or first_toneless(c) != s)
+                   for c, s in zip(form, syllables)):
+            continue
+        readings = [numbered_reading(c, s, unihan, f) for c, s, f in zip(form, syllables, source)]
+        if None in readings:
+            unreadable += 1  # pyzy reads a character in a way no Unihan field knows: not trusted
+            continue
+        table[form] = readings
+    lines = [f"{form}\t{' '.join(readings)}" for form, readings in sorted(table.items())]
+    embed_text.write_cpp(
+        OUTPUT, "tools/make_phrases.py",
+        ["Modified data derived from the Android Open Source Project's Pinyin IME phrase list as",
+         "shipped in Debian libpyzy-1.0-0v5 (android.db), Copyright 2008-2010 The Android Open",
+         "Source Project, Apache License 2.0: pinyin ids decoded, phrases filtered to those that",
+         "settle a polyphonic character, Traditional forms added with OpenCC (Apache License",
+         "2.0), tones chosen from Unihan (Copyright (c) 1991-2022 Unicode, Inc., Unicode License)."],
+        {"phrases_text": lines})
+    print(f"make_phrases: {len(simplified)} Simplified phrases, {len(lines)} kept with Traditional "
+          f"forms, {unreadable} dropped (reading not in Unihan) -> {os.path.relpath(OUTPUT, ROOT)}")
+
+
+if __name__ == "__main__":
+    main()
