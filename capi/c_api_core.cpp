@@ -13,17 +13,6 @@ std::string& last_error() {
     return message;
 }
 
-std::string joined_message(const std::exception& error) {
-    std::string message = error.what();
-    try {
-        std::rethrow_if_nested(error);
-    } catch (const std::exception& nested) {
-        message += '\n' + joined_message(nested);
-    } catch (...) {
-        message += "\n(an exception that is not a std::exception)";
-    }
-    return message;
-}
 
 void give_document(std::string_view text, char** out, size_t* out_len) {
     auto* copy = static_cast<char*>(std::malloc(text.size() + 1));

@@ -49,17 +49,6 @@ talkface::Rgb& color_member(FaceColors& colors, const tf_face_color& which) {
     }
 }
 
-// Member by member because FaceModel's and FaceColors' operator== are in-class friends, which
-// TALKFACE_API does not reach: libtalkface.so does not export them (face_model.hpp should declare
-// them `friend TALKFACE_API bool operator==`).
-bool same_face(const FaceModel& a, const FaceModel& b) {
-    const FaceColors& x = a.colors();
-    const FaceColors& y = b.colors();
-    const bool same_colors = x.skin == y.skin && x.hair == y.hair && x.brows == y.brows &&
-                             x.eye_white == y.eye_white && x.iris == y.iris && x.lips == y.lips &&
-                             x.mouth_inside == y.mouth_inside && x.outline == y.outline;
-    return a.points() == b.points() && a.fapus() == b.fapus() && same_colors && a.name() == b.name();
-}
 
 }  // namespace
 
@@ -157,7 +146,7 @@ tf_status tf_face_model_equal(const tf_face_model* a, const tf_face_model* b, in
         require_non_null(a, "a");
         require_non_null(b, "b");
         require_non_null(out_equal, "out_equal");
-        *out_equal = same_face(a->model, b->model) ? 1 : 0;
+        *out_equal = a->model == b->model ? 1 : 0;
     });
 }
 

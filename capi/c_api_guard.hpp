@@ -16,9 +16,6 @@ namespace talkface::capi {
 // This thread's last error message (tf_last_error_message).
 std::string& last_error();
 
-// what() of `error` and of every exception nested in it (std::throw_with_nested), one per line.
-std::string joined_message(const std::exception& error);
-
 // Runs `body` (which returns void); returns TF_OK, or records the message and returns the status of
 // the exception it threw. Never lets an exception out.
 template <typename Body>
@@ -28,13 +25,13 @@ tf_status guard(Body&& body) noexcept {
         body();
         return TF_OK;
     } catch (const talkface::Error& error) {
-        last_error() = joined_message(error);
+        last_error() = talkface::full_message(error);
         return static_cast<tf_status>(error.code());
     } catch (const std::bad_alloc&) {
         last_error() = "out of memory";
         return TF_ERR_OUT_OF_MEMORY;
     } catch (const std::exception& error) {
-        last_error() = "internal error (a bug in talkface): " + joined_message(error);
+        last_error() = "internal error (a bug in talkface): " + talkface::full_message(error);
         return TF_ERR_INTERNAL;
     } catch (...) {
         last_error() = "internal error (a bug in talkface): unknown exception";

@@ -89,6 +89,10 @@ public:
     explicit Cancelled(const std::string& message);
 };
 
+/// what() of `error` and of every exception nested in it (std::throw_with_nested), outermost first,
+/// one per line: the text the C ABI and Python report.
+TALKFACE_API std::string full_message(const std::exception& error);
+
 }  // namespace v0
 }  // namespace talkface
 

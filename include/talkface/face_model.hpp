@@ -24,7 +24,7 @@ struct FaceColors {
     Rgb lips{0xc8, 0x5a, 0x5a};
     Rgb mouth_inside{0x6a, 0x1e, 0x22};
     Rgb outline{0x5a, 0x3c, 0x2e};
-    friend bool operator==(const FaceColors& a, const FaceColors& b);
+    friend TALKFACE_API bool operator==(const FaceColors& a, const FaceColors& b);
     friend bool operator!=(const FaceColors& a, const FaceColors& b) { return !(a == b); }
 };
 
@@ -102,7 +102,7 @@ public:
     const std::string& name() const { return name_; }         ///< a label, e.g. "default"
     void set_name(std::string name) { name_ = std::move(name); }
 
-    friend bool operator==(const FaceModel& a, const FaceModel& b);
+    friend TALKFACE_API bool operator==(const FaceModel& a, const FaceModel& b);
     friend bool operator!=(const FaceModel& a, const FaceModel& b) { return !(a == b); }
 
 private:

@@ -1,5 +1,6 @@
 #include "talkface/errors.hpp"
 
+#include <exception>
 #include <sstream>
 
 namespace talkface {
@@ -22,6 +23,18 @@ std::string parse_message(const std::string& path, int line, int column, const s
 }
 
 }  // namespace
+
+std::string full_message(const std::exception& error) {
+    std::string message = error.what();
+    try {
+        std::rethrow_if_nested(error);
+    } catch (const std::exception& nested) {
+        message += '\n' + full_message(nested);
+    } catch (...) {
+        message += "\n(an exception that is not a std::exception)";
+    }
+    return message;
+}
 
 Error::Error(ErrorCode code, const std::string& message) : std::runtime_error(message), code_(code) {}
 

@@ -23,18 +23,6 @@ ErrorClasses& error_classes() {
     return classes;
 }
 
-// what() and every nested exception's what() (std::throw_with_nested), one per line, as in the C ABI.
-std::string joined_message(const std::exception& error) {
-    std::string message = error.what();
-    try {
-        std::rethrow_if_nested(error);
-    } catch (const std::exception& nested) {
-        message += '\n' + joined_message(nested);
-    } catch (...) {
-        message += "\n(an exception that is not a std::exception)";
-    }
-    return message;
-}
 
 py::handle new_error_class(py::module_& m, const char* name, const char* doc, py::tuple bases, ErrorCode code,
                            py::dict extra = py::dict()) {
@@ -47,7 +35,7 @@ py::handle new_error_class(py::module_& m, const char* name, const char* doc, py
 }
 
 void raise(py::handle type, const Error& error, const py::dict& fields = py::dict()) {
-    py::object instance = type(joined_message(error));
+    py::object instance = type(talkface::full_message(error));
     instance.attr("code") = py::cast(error.code());
     for (const auto& field : fields) instance.attr(field.first) = field.second;
     PyErr_SetObject(type.ptr(), instance.ptr());

@@ -9,15 +9,6 @@ namespace {
 // Member by member because FaceModel's and FaceColors' operator== are in-class friends, which
 // TALKFACE_API does not reach: the shared libtalkface does not export them (face_model.hpp should
 // declare them `friend TALKFACE_API bool operator==`).
-bool same_colors(const FaceColors& x, const FaceColors& y) {
-    return x.skin == y.skin && x.hair == y.hair && x.brows == y.brows && x.eye_white == y.eye_white &&
-           x.iris == y.iris && x.lips == y.lips && x.mouth_inside == y.mouth_inside && x.outline == y.outline;
-}
-
-bool same_face(const FaceModel& a, const FaceModel& b) {
-    return a.points() == b.points() && a.fapus() == b.fapus() && same_colors(a.colors(), b.colors()) &&
-           a.name() == b.name();
-}
 
 void set_points(FaceModel& face,
                 const py::array_t<double, py::array::c_style | py::array::forcecast>& points) {
@@ -66,7 +57,7 @@ Example:
         .def_readwrite("mouth_inside", &FaceColors::mouth_inside, "inside of the open mouth, \"#rrggbb\"")
         .def_readwrite("outline", &FaceColors::outline, "outlines, \"#rrggbb\"")
         .def(
-            "__eq__", [](const FaceColors& a, const FaceColors& b) { return same_colors(a, b); },
+            "__eq__", [](const FaceColors& a, const FaceColors& b) { return a == b; },
             py::is_operator())
         .def("__repr__", [](const FaceColors& colors) {
             return "talkface.FaceColors(skin='" + to_hex(colors.skin) + "', hair='" + to_hex(colors.hair) +
@@ -290,7 +281,7 @@ Example:
     >>> face.name
 )doc")
         .def(
-            "__eq__", [](const FaceModel& a, const FaceModel& b) { return same_face(a, b); },
+            "__eq__", [](const FaceModel& a, const FaceModel& b) { return a == b; },
             py::is_operator())
         .def("__copy__", [](const FaceModel& face) { return FaceModel(face); })
         .def(
