@@ -7,13 +7,17 @@
 #include <string>
 
 #include "c_api_guard.hpp"
+#include "talkface/animation.hpp"
 #include "talkface/errors.hpp"
+#include "talkface/expression_simulator.hpp"
 #include "talkface/face_lift.hpp"
 #include "talkface/face_model.hpp"
 #include "talkface/face_pose.hpp"
+#include "talkface/lip_sync.hpp"
 #include "talkface/mouth_shape.hpp"
 #include "talkface/svg_animator.hpp"
 #include "talkface/talkface.h"
+#include "talkface/timeline.hpp"
 
 struct tf_face_model {
     talkface::FaceModel model;
@@ -33,6 +37,22 @@ struct tf_projected_face {
 
 struct tf_svg_options {
     talkface::SvgOptions options;
+};
+
+struct tf_timeline {
+    talkface::Timeline timeline;
+};
+
+struct tf_expression_simulator {
+    talkface::ExpressionSimulator simulator;
+};
+
+struct tf_lip_sync_options {
+    talkface::LipSyncOptions options;
+};
+
+struct tf_animation {
+    talkface::Animation animation;
 };
 
 namespace talkface::capi {

@@ -3,19 +3,24 @@
 # Run as root (or through sudo). Every package here is from Debian main; licences are listed in
 # README.md ("Dependencies and licences").
 #
-# usage: cmake/install-deps.sh [build|test]
+# usage: cmake/install-deps.sh [build|test|bench]
 #   build  what the library, the command and the Python module need (default)
-#   test   that, plus what the tests drive: pytest, numpy, headless Chromium, espeak-ng, sox
+#   test   that, plus what the tests drive: pytest, Pillow, headless Chromium, a venv for pip
+#   bench  that, plus what bench/ needs: espeak-ng (corpus), sox (conditions), GNU time (memory)
 set -eu
 
 build_packages="build-essential cmake pkg-config git libeigen3-dev libpugixml-dev libcli11-dev
-nlohmann-json3-dev doctest-dev pybind11-dev python3-dev python3-numpy"
-test_packages="python3-pil python3-pytest python3-venv python3-pip python3-setuptools chromium fonts-dejavu-core"
+nlohmann-json3-dev doctest-dev pybind11-dev python3-dev python3-numpy libsndfile1-dev libsamplerate0-dev
+libopencv-dev opencv-data libdlib-dev libdlib-data"
+test_packages="python3-pil python3-pytest python3-venv python3-pip python3-setuptools chromium fonts-dejavu-core
+python3-skimage librsvg2-bin"
+bench_packages="espeak-ng libespeak-ng-dev sox libsox-fmt-all time"
 
 case "${1:-build}" in
   build) wanted=$build_packages ;;
   test) wanted="$build_packages $test_packages" ;;
-  *) echo "usage: $0 [build|test]" >&2; exit 2 ;;
+  bench) wanted="$build_packages $test_packages $bench_packages" ;;
+  *) echo "usage: $0 [build|test|bench]" >&2; exit 2 ;;
 esac
 
 missing=""

@@ -35,3 +35,7 @@ fi
 
 "$build_dir/samples/mouth_shapes/mouth_shapes" "$work_dir/mouth-shapes.svg"
 screenshot "$work_dir/mouth-shapes.svg" "$docs_dir/mouth-shapes.png"
+
+# The words as pinyin (the sample's default is 願望 and 波濤): a headless machine may have no CJK font.
+"$build_dir/samples/syllable_strip/syllable_strip" "$work_dir/syllable-strip.svg" "yuan4 wang4" "bo1 tao1"
+screenshot "$work_dir/syllable-strip.svg" "$docs_dir/syllable-strip.png"

@@ -1,11 +1,18 @@
-// talkface: SvgAnimator, which draws faces as SVG (thesis 6.3).
+// talkface: SvgAnimator, which draws faces as SVG (thesis 6.3): one face state (the spatial half,
+// 6.3.1) or a whole animation (the temporal half, 6.3.2).
+//
+//   talkface::SvgAnimator animator(face);
+//   std::string svg = animator.render_animation_svg(animation);   // plays in any browser
 #ifndef TALKFACE_SVG_ANIMATOR_HPP
 #define TALKFACE_SVG_ANIMATOR_HPP
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
+#include "talkface/animation.hpp"
 #include "talkface/export.h"
 #include "talkface/face_model.hpp"
 #include "talkface/face_pose.hpp"
@@ -25,6 +32,38 @@ struct SvgOptions {
     /// Canvas size in pixels; 0 fits the face at any pose with a margin (about 4.4 d by 5.2 d).
     int width_px = 0;
     int height_px = 0;
+};
+
+/// Reports progress (fraction 0..1 and the stage, here "frames" and "encoding"); return false to
+/// cancel, which makes the call throw talkface::Cancelled. The same type as speech_aligner.hpp's.
+using ProgressCallback = std::function<bool(double fraction, const std::string& stage)>;
+
+/// How an animation becomes SVG. Both play in any browser that runs SMIL (Chromium, Firefox,
+/// Safari), alone or driven by a page's audio clock (web_page.hpp).
+enum class AnimationEncoding : int {
+    /// The default: the face drawn once, each moving element animated by SMIL <animate> between
+    /// key frames that the browser interpolates linearly. Key frames are chosen per element from
+    /// every frame of the animation so that the drawn face never strays from the frame it stands
+    /// for by more than SvgAnimationOptions::tolerance_px: small files.
+    keyframes = 0,
+    /// Thesis 6.3.2: one <g> per frame, hidden except while its <set> shows it. Identical
+    /// consecutive frames share one group. Exact at every frame, but large.
+    frames = 1,
+};
+
+/// "keyframes" or "frames".
+TALKFACE_API const char* animation_encoding_name(AnimationEncoding encoding);
+/// Parses a name as animation_encoding_name() writes it.
+/// \throws talkface::InvalidArgument listing the valid names.
+TALKFACE_API AnimationEncoding animation_encoding_from_name(std::string_view name);
+
+/// How an animation is written.
+struct SvgAnimationOptions {
+    AnimationEncoding encoding = AnimationEncoding::keyframes;
+    /// keyframes: the largest distance, in the face's pixels, between a coordinate the browser
+    /// interpolates and the same coordinate of the frame at that time (> 0). 0.3 px is below what
+    /// an eye sees at the face's own size.
+    double tolerance_px = 0.3;
 };
 
 /// Draws a face as SVG 1.1 in four layers (background, hair, clothes, face): cubic Bezier paths for
@@ -53,6 +92,21 @@ public:
     /// Writes render_svg(state) to `path` through a temporary file and a rename: a failure leaves
     /// no partial file. \throws talkface::FileError if it cannot be written.
     void write_svg(const std::string& path, const FaceState& state) const;
+
+    /// A standalone SVG document that plays `animation` (its frames, at its fps) from document
+    /// time 0, on the same canvas as render_svg(). The root <svg> has class "tf-animation"; the
+    /// animation ends on its last frame (fill="freeze"). A page can pause the document's timeline
+    /// and set its time from an audio clock (SVGSVGElement.setCurrentTime), as web_page.hpp does.
+    /// \throws talkface::InvalidArgument if the animation has no frames, a frame's state is out of
+    ///         range (as project_face()), or an option is out of range;
+    ///         talkface::Cancelled if `progress` returned false.
+    std::string render_animation_svg(const Animation& animation, const SvgAnimationOptions& options = {},
+                                     const ProgressCallback& progress = {}) const;
+
+    /// Writes render_animation_svg() to `path` through a temporary file and a rename.
+    /// \throws talkface::FileError if it cannot be written, and as render_animation_svg().
+    void write_animation_svg(const std::string& path, const Animation& animation,
+                             const SvgAnimationOptions& options = {}, const ProgressCallback& progress = {}) const;
 
 private:
     struct Impl;

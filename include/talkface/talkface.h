@@ -462,6 +462,346 @@ TF_API tf_status tf_render_svg(const tf_face_model *face, const tf_face_state *s
 TF_API tf_status tf_write_svg(const tf_face_model *face, const tf_face_state *state,
                               const tf_svg_options *options, const char *path);
 
+/* ---------------------------------------------------------------------------------------------
+ * Transcripts and timelines (SPEC step 4): sentences and syllables in transcript order, with their
+ * times once aligned. The JSON form is the SPEC "Contracts" `align` document.
+ * ------------------------------------------------------------------------------------------- */
+
+/* Sentences, syllables and the reader's warnings. Created by tf_read_transcript,
+ * tf_load_transcript or tf_timeline_create; released by tf_timeline_destroy. Indices are 0-based. */
+typedef struct tf_timeline tf_timeline;
+
+/* Reads a transcript (UTF-8 Traditional or Simplified characters, or numbered pinyin; reading fixes
+ * such as 行{hang2}) from the `length` bytes at `text` (need not be NUL-terminated) into a new
+ * timeline *out, times all 0. Characters without a reading become warnings, not errors.
+ * `source_name` names the text in messages; NULL means "<transcript>".
+ * Errors: TF_ERR_PARSE naming source:line:column (invalid UTF-8, a bad reading fix);
+ *         TF_ERR_INVALID_ARGUMENT if text or out is NULL. */
+TF_API tf_status tf_read_transcript(const char *text, size_t length, const char *source_name,
+                                    tf_timeline **out);
+
+/* Reads a transcript file as tf_read_transcript does; messages name `path`.
+ * Errors: TF_ERR_FILE if it cannot be read; TF_ERR_PARSE as tf_read_transcript;
+ *         TF_ERR_INVALID_ARGUMENT if path or out is NULL. */
+TF_API tf_status tf_load_transcript(const char *path, tf_timeline **out);
+
+/* A new empty timeline, to fill with tf_timeline_add_sentence / _add_syllable (a timeline read
+ * from an `align` JSON document, say). Errors: TF_ERR_INVALID_ARGUMENT if out is NULL. */
+TF_API tf_status tf_timeline_create(tf_timeline **out);
+
+/* Releases a timeline. Accepts NULL. */
+TF_API void tf_timeline_destroy(tf_timeline *timeline);
+
+/* Appends a sentence: its text (UTF-8, copied) and times, seconds. Times are checked when the
+ * timeline is used (simulation, animation), which names the sentence.
+ * Errors: TF_ERR_INVALID_ARGUMENT if timeline or text is NULL. */
+TF_API tf_status tf_timeline_add_sentence(tf_timeline *timeline, const char *text, double start_s,
+                                          double end_s);
+
+/* Appends a syllable of sentence `sentence_index`: its character and numbered pinyin (copied),
+ * start and end, seconds; confidence 1, no final start, no pause after (see the setters below).
+ * Errors: TF_ERR_INVALID_ARGUMENT if sentence_index names no sentence added so far, or an argument
+ * is NULL. */
+TF_API tf_status tf_timeline_add_syllable(tf_timeline *timeline, const char *text, const char *pinyin,
+                                          size_t sentence_index, double start_s, double end_s);
+
+/* Sets where syllable `index`'s final (vowel) starts, seconds; key frames use it.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or timeline is NULL. */
+TF_API tf_status tf_timeline_set_syllable_final_start_s(tf_timeline *timeline, size_t index,
+                                                        double final_start_s);
+
+/* Sets syllable `index`'s confidence, 0..1.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range, the value is outside 0..1, or timeline
+ * is NULL. */
+TF_API tf_status tf_timeline_set_syllable_confidence(tf_timeline *timeline, size_t index,
+                                                     double confidence);
+
+/* Marks (non-zero) or clears (0) a pause the transcript marks after syllable `index` (，、：).
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or timeline is NULL. */
+TF_API tf_status tf_timeline_set_syllable_pause_after(tf_timeline *timeline, size_t index,
+                                                      int pause_after);
+
+/* Sets the length of the audio, seconds. Errors: TF_ERR_INVALID_ARGUMENT if timeline is NULL. */
+TF_API tf_status tf_timeline_set_duration_s(tf_timeline *timeline, double duration_s);
+
+/* The length of the audio, seconds (0 before alignment).
+ * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_timeline_duration_s(const tf_timeline *timeline, double *out_duration_s);
+
+/* The number of sentences. Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_timeline_sentence_count(const tf_timeline *timeline, size_t *out_count);
+
+/* Sentence `index`: its text (borrowed: valid while the timeline lives unmodified), start and end,
+ * seconds. Any of out_text, out_start_s, out_end_s may be NULL.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or timeline is NULL. */
+TF_API tf_status tf_timeline_sentence(const tf_timeline *timeline, size_t index, const char **out_text,
+                                      double *out_start_s, double *out_end_s);
+
+/* The number of syllables. Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_timeline_syllable_count(const tf_timeline *timeline, size_t *out_count);
+
+/* Syllable `index`: its character and numbered pinyin (u-umlaut written v: "lv4"), both borrowed
+ * (valid while the timeline lives unmodified), and the index of its sentence. Any out pointer may
+ * be NULL. Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or timeline is NULL. */
+TF_API tf_status tf_timeline_syllable(const tf_timeline *timeline, size_t index, const char **out_text,
+                                      const char **out_pinyin, size_t *out_sentence_index);
+
+/* Syllable `index`'s times, seconds: start (its initial consonant), end, and its final's start
+ * when known (*out_has_final_start = 1; else 0 and *out_final_start_s is left unchanged). Any out
+ * pointer may be NULL. Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or timeline is
+ * NULL. */
+TF_API tf_status tf_timeline_syllable_times(const tf_timeline *timeline, size_t index,
+                                            double *out_start_s, double *out_end_s,
+                                            int *out_has_final_start, double *out_final_start_s);
+
+/* Syllable `index`'s confidence (0..1) and whether the transcript marks a pause after it (1 or 0).
+ * Any out pointer may be NULL.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or timeline is NULL. */
+TF_API tf_status tf_timeline_syllable_confidence(const tf_timeline *timeline, size_t index,
+                                                 double *out_confidence, int *out_pause_after);
+
+/* The number of warnings (what the reader skipped, each naming source:line:column).
+ * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_timeline_warning_count(const tf_timeline *timeline, size_t *out_count);
+
+/* Warning `index`, borrowed: valid while the timeline lives unmodified.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or an argument is NULL. */
+TF_API tf_status tf_timeline_warning(const tf_timeline *timeline, size_t index, const char **out_warning);
+
+/* The timeline as the `align` JSON document (SPEC "Contracts"), UTF-8:
+ * {"sentences":[{"text","start","end"}], "syllables":[{"text","pinyin","start","end","sentence",
+ * "final_start" (only when known),"confidence","pause_after"}], "duration":s, "warnings":[...]},
+ * numbers in shortest round-trip form. Release *out_json with tf_free; *out_len (if not NULL) is
+ * its length in bytes without the NUL. talkface reads no JSON in C: parse the document with your
+ * JSON library and rebuild it with tf_timeline_create and the add functions.
+ * Errors: TF_ERR_INVALID_ARGUMENT if timeline or out_json is NULL. */
+TF_API tf_status tf_timeline_to_json(const tf_timeline *timeline, char **out_json, size_t *out_len);
+
+/* 1 if `syllable` is a legal Mandarin syllable in numbered pinyin ("hang2", "lv4", "ma5"), else 0
+ * (also for NULL). */
+TF_API int tf_is_valid_pinyin(const char *syllable);
+
+/* The most mouth shapes one syllable has. */
+#define TF_MAX_SYLLABLE_SHAPES 4
+
+/* The mouth shapes of one Mandarin syllable, in the order shown ("bo" -> m u o, "hao" -> h a u):
+ * numbered or toneless pinyin, u-umlaut as v, "u:" or "ü". Writes the shapes into out[0 .. n-1] and
+ * n (1..TF_MAX_SYLLABLE_SHAPES) into *out_count. With out NULL and capacity 0, only *out_count is
+ * set (size first, then data).
+ * Errors: TF_ERR_INVALID_ARGUMENT naming the syllable if it is not Mandarin, naming capacity if it
+ * is below n (nothing is written then), or if pinyin or out_count is NULL. */
+TF_API tf_status tf_syllable_mouth_shapes(const char *pinyin, tf_mouth_shape *out, size_t capacity,
+                                          size_t *out_count);
+
+/* ---------------------------------------------------------------------------------------------
+ * Expression simulation (SPEC step 5): blinks, eyebrow raises, head tilts, turns and nods drawn
+ * from a seed (the same seed gives the same events on every platform), plus the caller's own.
+ * ------------------------------------------------------------------------------------------- */
+
+/* What an expression event does; values equal talkface::ExpressionEventKind. */
+typedef enum tf_expression_event_kind {
+    TF_EVENT_BLINK = 0,
+    TF_EVENT_BROWS = 1,
+    TF_EVENT_TILT = 2,
+    TF_EVENT_TURN = 3,
+    TF_EVENT_NOD = 4
+} tf_expression_event_kind;
+
+/* "blink", "brows", "tilt", "turn", "nod": a static string; NULL for a value outside the enum. */
+TF_API const char *tf_expression_event_kind_name(tf_expression_event_kind kind);
+
+/* Parses a name as tf_expression_event_kind_name writes it.
+ * Errors: TF_ERR_INVALID_ARGUMENT listing the valid names, or for a NULL argument. */
+TF_API tf_status tf_expression_event_kind_from_name(const char *name, tf_expression_event_kind *out);
+
+/* One blink, eyebrow raise or head movement over [start_s, end_s], seconds from the start of the
+ * audio. amount: blink, how far the lids close, 0..1; brows, the raise at its peak, 0..1; tilt
+ * (gamma), turn (beta), nod (alpha, > 0 down): the angle reached, degrees, within
+ * +-TF_MAX_POSE_ANGLE_DEG. A plain value: fixed for the major version. */
+typedef struct tf_expression_event {
+    tf_expression_event_kind kind;
+    double start_s;
+    double end_s;
+    double amount;
+} tf_expression_event;
+
+/* How a caller's events combine with the simulated ones. */
+typedef enum tf_user_event_mode {
+    TF_EVENTS_ADD = 0,    /* simulated events overlapping a caller's event of their kind are dropped */
+    TF_EVENTS_REPLACE = 1 /* every simulated event of a kind the caller gives is dropped */
+} tf_user_event_mode;
+
+/* The simulated events of a timeline and the caller's. Created by tf_expression_simulator_create,
+ * released by tf_expression_simulator_destroy. */
+typedef struct tf_expression_simulator tf_expression_simulator;
+
+/* Simulates the events of `timeline` from `seed` in a style: "normal" (the thesis's numbers for a
+ * normal pace; NULL means this) or "announcer" (TV news announcers: faster head movements).
+ * The simulator keeps no reference to the timeline.
+ * Errors: TF_ERR_INVALID_ARGUMENT for an unknown style (listing the valid names), a syllable whose
+ * times are not finite or end before they start (named), or a NULL timeline or out. */
+TF_API tf_status tf_expression_simulator_create(const tf_timeline *timeline, uint64_t seed,
+                                                const char *style_name, tf_expression_simulator **out);
+
+/* Releases a simulator. Accepts NULL. */
+TF_API void tf_expression_simulator_destroy(tf_expression_simulator *simulator);
+
+/* The end of the simulated time, seconds (the later of the timeline's duration and its last end).
+ * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_expression_simulator_duration_s(const tf_expression_simulator *simulator,
+                                                    double *out_duration_s);
+
+/* The number of events in effect (simulated and the caller's), sorted by start time, then kind.
+ * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_expression_simulator_event_count(const tf_expression_simulator *simulator,
+                                                     size_t *out_count);
+
+/* Event `index` in effect, copied into *out.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or an argument is NULL. */
+TF_API tf_status tf_expression_simulator_event(const tf_expression_simulator *simulator, size_t index,
+                                               tf_expression_event *out);
+
+/* Sets the caller's `count` events (copied; any order; replacing any set before) and combines them
+ * with the simulated ones as `mode` says. count 0 (events may then be NULL) restores the simulated
+ * events.
+ * Errors: TF_ERR_INVALID_ARGUMENT naming the event (index, kind, times) if a time is not finite or
+ * negative, it ends before it starts, an amount is out of range, or two events of one kind overlap
+ * (both named); for a bad mode or a NULL argument. The simulator is then unchanged. */
+TF_API tf_status tf_expression_simulator_set_user_events(tf_expression_simulator *simulator,
+                                                         const tf_expression_event *events, size_t count,
+                                                         tf_user_event_mode mode);
+
+/* The head pose at a time, degrees (0 before the first event).
+ * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_expression_simulator_pose_at(const tf_expression_simulator *simulator, double time_s,
+                                                 double *out_alpha_deg, double *out_beta_deg,
+                                                 double *out_gamma_deg);
+
+/* Blinks (image-left and image-right eye) and eyebrow raise at a time, 0..1; smile stays 0.
+ * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_expression_simulator_expression_at(const tf_expression_simulator *simulator,
+                                                       double time_s, double *out_blink_left,
+                                                       double *out_blink_right, double *out_smile,
+                                                       double *out_brows);
+
+/* ---------------------------------------------------------------------------------------------
+ * Animation (SPEC steps 6 and 7, thesis 5.4): a timeline, a face and a simulator become every
+ * frame, and the key frames export as JSON and TSV for other animation tools.
+ * ------------------------------------------------------------------------------------------- */
+
+/* How the lips move. Created by tf_lip_sync_options_create with the defaults (25 fps, rest in pauses
+ * of 0.3 s or more, 0.1 s rest transitions, linear interpolation, at most 8.75 MNS0 per second);
+ * released by tf_lip_sync_options_destroy. Values are checked when animating, which names them. */
+typedef struct tf_lip_sync_options tf_lip_sync_options;
+
+/* How the mouth moves between two key frames. */
+typedef enum tf_mouth_interpolation {
+    TF_INTERPOLATION_LINEAR = 0, /* straight lines, as the thesis (5.4) */
+    TF_INTERPOLATION_SMOOTH = 1  /* cosine ease in and out */
+} tf_mouth_interpolation;
+
+/* New options with the defaults. Errors: TF_ERR_INVALID_ARGUMENT if out is NULL. */
+TF_API tf_status tf_lip_sync_options_create(tf_lip_sync_options **out);
+
+/* Releases options. Accepts NULL. */
+TF_API void tf_lip_sync_options_destroy(tf_lip_sync_options *options);
+
+/* Sets the frames per second. Errors: TF_ERR_INVALID_ARGUMENT if options is NULL. */
+TF_API tf_status tf_lip_sync_options_set_fps(tf_lip_sync_options *options, double fps);
+
+/* Sets the shortest gap between syllables in which the mouth rests, and how long it takes to reach
+ * and leave the rest, seconds. Errors: TF_ERR_INVALID_ARGUMENT if options is NULL. */
+TF_API tf_status tf_lip_sync_options_set_rest(tf_lip_sync_options *options, double rest_min_pause_s,
+                                              double rest_transition_s);
+
+/* Sets how the mouth moves between key frames.
+ * Errors: TF_ERR_INVALID_ARGUMENT for a value outside tf_mouth_interpolation or a NULL options. */
+TF_API tf_status tf_lip_sync_options_set_interpolation(tf_lip_sync_options *options,
+                                                       tf_mouth_interpolation interpolation);
+
+/* Sets the speed limit of the mouth control points, MNS0 (mouth-nose separation) per second.
+ * Errors: TF_ERR_INVALID_ARGUMENT if options is NULL. */
+TF_API tf_status tf_lip_sync_options_set_max_speed_mns0_per_s(tf_lip_sync_options *options,
+                                                             double max_speed_mns0_per_s);
+
+/* A finished animation: mouth key frames, the events in effect and every frame's state. Created by
+ * tf_animate, released by tf_animation_destroy. */
+typedef struct tf_animation tf_animation;
+
+/* Builds every frame of `timeline` for the neutral `face`: lips from the syllables, pose, blinks
+ * and brows from `simulator` (its events in effect now; later changes to it do not reach the
+ * animation). `options` NULL means the defaults. Frame i shows time i / fps.
+ * Errors: TF_ERR_INVALID_ARGUMENT naming the syllable (index, pinyin, times) whose pinyin is not
+ * Mandarin or whose times are wrong, or the option that is out of range, or for a NULL face,
+ * timeline, simulator or out. */
+TF_API tf_status tf_animate(const tf_face_model *face, const tf_timeline *timeline,
+                            const tf_expression_simulator *simulator, const tf_lip_sync_options *options,
+                            tf_animation **out);
+
+/* Releases an animation. Accepts NULL. */
+TF_API void tf_animation_destroy(tf_animation *animation);
+
+/* Frames per second and length, seconds. Either out pointer may be NULL.
+ * Errors: TF_ERR_INVALID_ARGUMENT if animation is NULL. */
+TF_API tf_status tf_animation_timing(const tf_animation *animation, double *out_fps, double *out_duration_s);
+
+/* The number of frames. Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_animation_frame_count(const tf_animation *animation, size_t *out_count);
+
+/* Frame `index`'s head pose, degrees.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or an argument is NULL. */
+TF_API tf_status tf_animation_frame_pose(const tf_animation *animation, size_t index, double *out_alpha_deg,
+                                         double *out_beta_deg, double *out_gamma_deg);
+
+/* Frame `index`'s expression amounts, 0..1.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or an argument is NULL. */
+TF_API tf_status tf_animation_frame_expression(const tf_animation *animation, size_t index,
+                                               double *out_blink_left, double *out_blink_right,
+                                               double *out_smile, double *out_brows);
+
+/* Frame `index`'s mouth control points (up 8.9, down 8.2, left 8.4, right 8.3), image pixels.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or an argument is NULL. */
+TF_API tf_status tf_animation_frame_mouth_controls(const tf_animation *animation, size_t index,
+                                                   double out_up[2], double out_down[2], double out_left[2],
+                                                   double out_right[2]);
+
+/* Frame `index` as a new face state: pass it with the animation's face to tf_project_face for the
+ * frame's points, or to tf_render_svg for its picture.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or an argument is NULL. */
+TF_API tf_status tf_animation_frame_state(const tf_animation *animation, size_t index, tf_face_state **out);
+
+/* The number of mouth key frames. Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_animation_mouth_key_frame_count(const tf_animation *animation, size_t *out_count);
+
+/* Mouth key frame `index`: the time the mouth reaches `shape`, seconds, and the index of the
+ * syllable it belongs to (*out_has_syllable = 1), or a rest (*out_has_syllable = 0 and
+ * *out_syllable_index left unchanged). Any out pointer may be NULL.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or animation is NULL. */
+TF_API tf_status tf_animation_mouth_key_frame(const tf_animation *animation, size_t index, double *out_time_s,
+                                              tf_mouth_shape *out_shape, int *out_has_syllable,
+                                              size_t *out_syllable_index);
+
+/* The number of expression events the animation was made with.
+ * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_animation_event_count(const tf_animation *animation, size_t *out_count);
+
+/* Event `index` of the animation, copied into *out.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or an argument is NULL. */
+TF_API tf_status tf_animation_event(const tf_animation *animation, size_t index, tf_expression_event *out);
+
+/* The key frames as JSON, one item per line, times in seconds with at most 3 decimals:
+ * {"mouth":[{"time":s,"shape":"a","syllable":k}], "events":[{"kind":"blink","start":s,"end":s,
+ * "amount":x}]} ("syllable":null for a rest). The same animation always gives the same bytes.
+ * Release *out_json with tf_free; *out_len (if not NULL) is its length without the NUL.
+ * Errors: TF_ERR_INVALID_ARGUMENT if animation or out_json is NULL. */
+TF_API tf_status tf_animation_key_frames_json(const tf_animation *animation, char **out_json,
+                                              size_t *out_len);
+
+/* The mouth key frames as "time<TAB>shape" lines (no header). Release *out_tsv with tf_free.
+ * Errors: TF_ERR_INVALID_ARGUMENT if animation or out_tsv is NULL. */
+TF_API tf_status tf_animation_key_frames_tsv(const tf_animation *animation, char **out_tsv,
+                                             size_t *out_len);
+
 #ifdef __cplusplus
 }
 #endif

@@ -23,6 +23,7 @@
 #include "talkface/errors.hpp"
 #include "talkface/expression.hpp"
 #include "talkface/expression_simulator.hpp"
+#include "talkface/face_from_photo.hpp"
 #include "talkface/face_lift.hpp"
 #include "talkface/face_model.hpp"
 #include "talkface/face_pose.hpp"
@@ -30,10 +31,12 @@
 #include "talkface/lip_sync.hpp"
 #include "talkface/mouth_shape.hpp"
 #include "talkface/rotation3d.hpp"
+#include "talkface/speech_aligner.hpp"
 #include "talkface/svg_animator.hpp"
 #include "talkface/timeline.hpp"
 #include "talkface/transcript.hpp"
 #include "talkface/types.hpp"
 #include "talkface/version.h"
+#include "talkface/web_page.hpp"
 
 #endif

@@ -13,6 +13,18 @@ void setup_render_command(CLI::App& app);
 // `talkface syllables`: a transcript's sentences and readings, plain or JSON (syllables_command.cpp).
 void setup_syllables_command(CLI::App& app);
 
+// `talkface keyframes`: mouth key frames and expression events as JSON or TSV (keyframes_command.cpp).
+void setup_keyframes_command(CLI::App& app);
+
+// `talkface align`: sentence and syllable times of a speech, as a table or JSON, and a plot (align_command.cpp).
+void setup_align_command(CLI::App& app);
+
+// `talkface animate`: a speech and its transcript as a web page where the face talks (animate_command.cpp).
+void setup_animate_command(CLI::App& app);
+
+// `talkface demo`: animate on the built-in face and the bundled speech (demo_command.cpp).
+void setup_demo_command(CLI::App& app);
+
 }  // namespace talkface_cli
 
 #endif

@@ -29,6 +29,10 @@ int main(int argc, char** argv) {
 
     talkface_cli::setup_render_command(app);
     talkface_cli::setup_syllables_command(app);
+    talkface_cli::setup_keyframes_command(app);
+    talkface_cli::setup_align_command(app);
+    talkface_cli::setup_animate_command(app);
+    talkface_cli::setup_demo_command(app);
 
     try {
         app.parse(argc, argv);

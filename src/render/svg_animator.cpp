@@ -12,6 +12,7 @@
 #include "common/atomic_file.hpp"
 #include "common/number_format.hpp"
 #include "render/layers.hpp"
+#include "render/svg_animation.hpp"
 #include "render/svg_text.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/mouth_shape.hpp"
@@ -92,31 +93,42 @@ detail::CanvasBox fit_canvas(const FaceModel& face) {
 
 }  // namespace
 
+const char* animation_encoding_name(AnimationEncoding encoding) {
+    switch (encoding) {
+        case AnimationEncoding::keyframes: return "keyframes";
+        case AnimationEncoding::frames: return "frames";
+    }
+    return "unknown";
+}
+
+AnimationEncoding animation_encoding_from_name(std::string_view name) {
+    if (name == "keyframes") return AnimationEncoding::keyframes;
+    if (name == "frames") return AnimationEncoding::frames;
+    throw InvalidArgument("encoding", "expected keyframes or frames, found \"" + std::string(name) + "\"");
+}
+
 struct SvgAnimator::Impl {
     FaceModel face;
     SvgOptions options;
-    detail::CanvasBox canvas;
-    int width_px = 0;
-    int height_px = 0;
+    detail::SvgCanvas canvas;
 };
 
 SvgAnimator::SvgAnimator(FaceModel face, SvgOptions options) {
     validate(options);
     impl_ = std::make_unique<Impl>();
-    impl_->canvas = fit_canvas(face);
-    const double aspect = impl_->canvas.width / impl_->canvas.height;
+    const detail::CanvasBox box = fit_canvas(face);
+    const double aspect = box.width / box.height;
     int width_px = options.width_px;
     int height_px = options.height_px;
     if (width_px == 0 && height_px == 0) {
-        width_px = static_cast<int>(impl_->canvas.width);
-        height_px = static_cast<int>(impl_->canvas.height);
+        width_px = static_cast<int>(box.width);
+        height_px = static_cast<int>(box.height);
     } else if (height_px == 0) {
         height_px = static_cast<int>(std::lround(width_px / aspect));
     } else if (width_px == 0) {
         width_px = static_cast<int>(std::lround(height_px * aspect));
     }
-    impl_->width_px = width_px;
-    impl_->height_px = height_px;
+    impl_->canvas = {box, width_px, height_px};
     impl_->face = std::move(face);
     impl_->options = options;
 }
@@ -131,35 +143,33 @@ const SvgOptions& SvgAnimator::options() const { return impl_->options; }
 std::string SvgAnimator::render_svg(const FaceState& state) const {
     const ProjectedFace projected = project_face(impl_->face, state);
     const SvgOptions& options = impl_->options;
-    const detail::CanvasBox& canvas = impl_->canvas;
     const detail::LayerStyle style{options.decimals, options.stroke_width_in_d * projected.d};
-    auto number = [&](double value) { return detail::format_fixed(value, options.decimals); };
-
     // The user space is the face's own image space: a caller can crop or place a document with
     // points from project_face() (the samples zoom on the mouth that way).
     std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
-    svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\"";
-    svg += " version=\"1.1\"" + detail::attribute("width", std::to_string(impl_->width_px)) +
-           detail::attribute("height", std::to_string(impl_->height_px)) +
-           detail::attribute("viewBox", number(canvas.x) + " " + number(canvas.y) + " " +
-                                            number(canvas.width) + " " + number(canvas.height)) +
-           ">\n";
-    svg += "<g id=\"background\">\n";
-    if (options.background) {
-        svg += "<rect" + detail::attribute("x", number(canvas.x)) + detail::attribute("y", number(canvas.y)) +
-               detail::attribute("width", number(canvas.width)) +
-               detail::attribute("height", number(canvas.height)) +
-               detail::attribute("fill", to_hex(*options.background)) + "/>\n";
-    }
-    svg += "</g>\n<g id=\"hair\">\n" + detail::draw_hair_layer(projected, style);
+    svg += detail::open_svg_root(impl_->canvas, options.decimals, "");
+    svg += detail::draw_background_layer(impl_->canvas, options.background, options.decimals);
+    svg += "<g id=\"hair\">\n" + detail::draw_hair_layer(projected, style);
     svg += "</g>\n<g id=\"clothes\">\n";
-    if (options.draw_clothes) svg += detail::draw_clothes_layer(projected, canvas, options.clothes, style);
+    if (options.draw_clothes) {
+        svg += detail::draw_clothes_layer(projected, impl_->canvas.box, options.clothes, style);
+    }
     svg += "</g>\n<g id=\"face\">\n" + detail::draw_face_layer(projected, style) + "</g>\n</svg>\n";
     return svg;
 }
 
 void SvgAnimator::write_svg(const std::string& path, const FaceState& state) const {
     detail::write_file_atomically(path, render_svg(state));
+}
+
+std::string SvgAnimator::render_animation_svg(const Animation& animation, const SvgAnimationOptions& options,
+                                              const ProgressCallback& progress) const {
+    return detail::render_animation(impl_->face, impl_->options, impl_->canvas, animation, options, progress);
+}
+
+void SvgAnimator::write_animation_svg(const std::string& path, const Animation& animation,
+                                      const SvgAnimationOptions& options, const ProgressCallback& progress) const {
+    detail::write_file_atomically(path, render_animation_svg(animation, options, progress));
 }
 
 }  // namespace v0

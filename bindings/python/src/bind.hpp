@@ -23,6 +23,10 @@ void bind_face_lift(py::module_& m);
 void bind_rotation3d(py::module_& m);
 void bind_face_state(py::module_& m);
 void bind_svg_animator(py::module_& m);
+void bind_transcript(py::module_& m);
+void bind_lip_sync(py::module_& m);
+void bind_expression_simulator(py::module_& m);
+void bind_animation(py::module_& m);
 
 // A float64 array of `rows` x `columns`, C order (a copy the caller owns).
 inline py::array_t<double> new_matrix(py::ssize_t rows, py::ssize_t columns) {

@@ -25,4 +25,8 @@ Example:
     bind_rotation3d(m);
     bind_face_state(m);
     bind_svg_animator(m);
+    bind_transcript(m);
+    bind_lip_sync(m);
+    bind_expression_simulator(m);
+    bind_animation(m);
 }

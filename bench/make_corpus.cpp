@@ -1,0 +1,500 @@
+// make_corpus: the aligner benchmark's corpus. Mandarin passages spoken by espeak-ng with the
+// start of every syllable known, in the recording conditions of bench/README.md (made with sox).
+//
+//   make_corpus OUT [--seed N] [--repeats N] [--sentences FILE] [--conditions clean,white10,...]
+//   make_corpus --clip STEM [--seed N] [--rate-wpm N] [--pitch N] [--pause-s S] TEXT
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <talkface/talkface.hpp>
+
+#include "espeak_speech.hpp"
+#include "wav_file.hpp"
+
+namespace fs = std::filesystem;
+using talkface_bench::MonoAudio;
+
+namespace {
+
+enum class Noise { none, white, pink, brown };
+
+struct Condition {
+    const char* name;
+    const char* description;
+    double rate_factor;       ///< speaking rate against the corpus's drawn rate
+    Noise noise;              ///< added to the clean recording at snr_db
+    double snr_db;
+    const char* sox_effects;  ///< applied to espeak-ng's 22.05 kHz output when noise is none
+    const char* sox_output_options;
+    const char* extension;
+};
+
+// Every output is 16-bit except OGG; resampling is sox's linear-phase "rate -v", which keeps times.
+const Condition all_conditions[] = {
+    {"clean", "16 kHz mono 16-bit", 1.0, Noise::none, 0, "rate -v 16k", "-b 16", "wav"},
+    {"white30", "white noise, SNR 30 dB", 1.0, Noise::white, 30, "", "", "wav"},
+    {"white20", "white noise, SNR 20 dB", 1.0, Noise::white, 20, "", "", "wav"},
+    {"white10", "white noise, SNR 10 dB", 1.0, Noise::white, 10, "", "", "wav"},
+    {"pink20", "pink noise, SNR 20 dB", 1.0, Noise::pink, 20, "", "", "wav"},
+    {"brown20", "brown noise, SNR 20 dB", 1.0, Noise::brown, 20, "", "", "wav"},
+    {"reverb", "room reverb (sox reverb 40 50 60)", 1.0, Noise::none, 0, "rate -v 16k reverb 40 50 60 gain -n -3",
+     "-b 16", "wav"},
+    {"telephone", "300-3400 Hz band, 8 kHz", 1.0, Noise::none, 0, "sinc 300-3400 rate -v 8k", "-b 16", "wav"},
+    {"ogg", "Ogg Vorbis quality 2, 16 kHz", 1.0, Noise::none, 0, "rate -v 16k", "-C 2", "ogg"},
+    {"quiet", "peak at -30 dBFS", 1.0, Noise::none, 0, "rate -v 16k gain -n -30", "-b 16", "wav"},
+    {"loud", "peak at -0.1 dBFS", 1.0, Noise::none, 0, "rate -v 16k gain -n -0.1", "-b 16", "wav"},
+    {"stereo44", "stereo 44.1 kHz, right channel 2 dB lower", 1.0, Noise::none, 0, "remix 1 1v0.8 rate -v 44100",
+     "-b 16", "wav"},
+    {"fast", "speaking rate +40%", 1.4, Noise::none, 0, "rate -v 16k", "-b 16", "wav"},
+    {"slow", "speaking rate -30%", 0.7, Noise::none, 0, "rate -v 16k", "-b 16", "wav"},
+};
+
+struct BenchSentence {
+    std::string text;  ///< as written in sentences.txt, reading fixes kept
+    std::string set;   ///< "tuning" or "held-out"
+};
+
+/// How one passage is spoken: drawn once, shared by every condition.
+struct Delivery {
+    std::vector<int> rate_wpm;  ///< per sentence
+    std::vector<int> pitch;     ///< per sentence, espeak-ng's 0..100
+    std::vector<double> gaps_s;  ///< silence before the first sentence, between sentences, after the last
+};
+
+struct Passage {
+    std::string name;
+    std::string set;
+    std::string transcript;  ///< one sentence a line
+    Delivery delivery;
+};
+
+/// A spoken passage and its ground truth (Timeline times in seconds).
+struct Recording {
+    MonoAudio audio;
+    talkface::Timeline truth;
+    std::vector<bool> after_pause;  ///< per syllable
+};
+
+double uniform(std::mt19937_64& rng, double low, double high) {
+    // Not std::uniform_real_distribution, whose output differs between standard libraries.
+    const double unit = static_cast<double>(rng() >> 11) * 0x1.0p-53;
+    return low + (high - low) * unit;
+}
+
+int uniform_int(std::mt19937_64& rng, int low, int high) {
+    return low + static_cast<int>(std::floor(uniform(rng, 0.0, 1.0) * (high - low + 1)));
+}
+
+double gaussian(std::mt19937_64& rng) {
+    const double u1 = 1.0 - uniform(rng, 0.0, 1.0);
+    const double u2 = uniform(rng, 0.0, 1.0);
+    constexpr double two_pi = 6.283185307179586;
+    return std::sqrt(-2.0 * std::log(u1)) * std::cos(two_pi * u2);
+}
+
+std::string quoted(const std::string& text) {
+    std::string out = "'";
+    for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+void run_sox(const std::string& input, const std::string& output, const Condition& condition) {
+    // -R: sox's dither and any other randomness repeat from run to run.
+    const std::string command = std::string("sox -R -V1 ") + quoted(input) + " " + condition.sox_output_options + " " +
+                                quoted(output) + " " + condition.sox_effects;
+    if (std::system(command.c_str()) != 0) throw std::runtime_error("sox failed: " + command);
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+    std::ofstream file(path, std::ios::binary);
+    file << text;
+    if (!file) throw std::runtime_error(path.string() + ": cannot write");
+}
+
+std::string read_text(const fs::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw std::runtime_error(path.string() + ": cannot read");
+    std::ostringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+std::vector<BenchSentence> load_sentences(const std::string& path) {
+    std::istringstream lines(read_text(path));
+    std::vector<BenchSentence> sentences;
+    std::string line;
+    for (int number = 1; std::getline(lines, line); ++number) {
+        if (line.empty() || line[0] == '#') continue;
+        const std::string where = path + ":" + std::to_string(number);
+        const auto tab = line.find('\t');
+        if (tab == std::string::npos) throw std::runtime_error(where + ": expected SET<TAB>SENTENCE");
+        BenchSentence sentence{line.substr(tab + 1), line.substr(0, tab)};
+        if (sentence.set != "tuning" && sentence.set != "held-out")
+            throw std::runtime_error(where + ": set \"" + sentence.set + "\" is neither tuning nor held-out");
+        const auto timeline = talkface::read_transcript(sentence.text, {}, where);
+        if (timeline.sentences.size() != 1 || !timeline.warnings.empty())
+            throw std::runtime_error(where + ": expected one sentence of characters with readings");
+        sentences.push_back(std::move(sentence));
+    }
+    if (sentences.empty()) throw std::runtime_error(path + ": no sentences");
+    return sentences;
+}
+
+Delivery draw_delivery(std::size_t sentence_count, std::mt19937_64& rng) {
+    Delivery delivery;
+    for (std::size_t i = 0; i < sentence_count; ++i) {
+        delivery.rate_wpm.push_back(uniform_int(rng, 170, 230));
+        delivery.pitch.push_back(uniform_int(rng, 35, 65));
+    }
+    delivery.gaps_s.push_back(uniform(rng, 0.3, 0.6));
+    for (std::size_t i = 1; i < sentence_count; ++i) delivery.gaps_s.push_back(uniform(rng, 0.4, 1.2));
+    delivery.gaps_s.push_back(uniform(rng, 0.4, 0.8));
+    return delivery;
+}
+
+// Each repeat shuffles each set and splits it into passages of about five sentences, so that a
+// sentence is heard in different neighbours, rates and pitches.
+std::vector<Passage> plan_passages(const std::vector<BenchSentence>& sentences, int repeats, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::vector<Passage> passages;
+    for (const std::string set : {"tuning", "held-out"}) {
+        std::vector<std::string> texts;
+        for (const auto& sentence : sentences)
+            if (sentence.set == set) texts.push_back(sentence.text);
+        if (texts.empty()) continue;
+        const std::size_t per_repeat = std::max<std::size_t>(1, (texts.size() + 2) / 5);
+        int number = 1;
+        for (int repeat = 0; repeat < repeats; ++repeat) {
+            for (std::size_t i = texts.size(); i > 1; --i)
+                std::swap(texts[i - 1], texts[static_cast<std::size_t>(uniform_int(rng, 0, static_cast<int>(i) - 1))]);
+            for (std::size_t part = 0; part < per_repeat; ++part) {
+                const std::size_t begin = part * texts.size() / per_repeat;
+                const std::size_t end = (part + 1) * texts.size() / per_repeat;
+                Passage passage;
+                char name[32];
+                std::snprintf(name, sizeof name, "%s-%03d", set.c_str(), number++);
+                passage.name = name;
+                passage.set = set;
+                for (std::size_t i = begin; i < end; ++i) passage.transcript += texts[i] + "\n";
+                passage.delivery = draw_delivery(end - begin, rng);
+                passages.push_back(std::move(passage));
+            }
+        }
+    }
+    return passages;
+}
+
+Recording speak_passage(const talkface_bench::EspeakVoice& voice, const std::string& transcript,
+                        const Delivery& delivery, double rate_factor, const std::string& where) {
+    Recording recording;
+    recording.truth = talkface::read_transcript(transcript, {}, where);
+    if (!recording.truth.warnings.empty()) throw std::runtime_error(recording.truth.warnings.front());
+    const std::size_t sentence_count = recording.truth.sentences.size();
+    if (delivery.rate_wpm.size() != sentence_count)
+        throw std::runtime_error(where + ": " + std::to_string(sentence_count) + " sentences, expected " +
+                                 std::to_string(delivery.rate_wpm.size()));
+    const double rate = voice.sample_rate_hz();
+    auto& samples = recording.audio.samples;
+    recording.audio.sample_rate_hz = voice.sample_rate_hz();
+    recording.after_pause.resize(recording.truth.syllables.size());
+    for (std::size_t k = 0; k < sentence_count; ++k) {
+        samples.resize(samples.size() + static_cast<std::size_t>(std::lround(delivery.gaps_s[k] * rate)), 0.0f);
+        std::vector<talkface::Syllable> syllables;
+        std::vector<std::size_t> indices;
+        for (std::size_t i = 0; i < recording.truth.syllables.size(); ++i) {
+            if (recording.truth.syllables[i].sentence == k) {
+                syllables.push_back(recording.truth.syllables[i]);
+                indices.push_back(i);
+            }
+        }
+        const auto rate_wpm = static_cast<int>(std::lround(delivery.rate_wpm[k] * rate_factor));
+        const auto spoken = voice.speak(syllables, rate_wpm, delivery.pitch[k],
+                                        where + " sentence " + std::to_string(k + 1));
+        const double offset_s = static_cast<double>(samples.size()) / rate;
+        for (std::size_t j = 0; j < indices.size(); ++j) {
+            auto& syllable = recording.truth.syllables[indices[j]];
+            syllable.start_s = offset_s + static_cast<double>(spoken.syllables[j].start) / rate;
+            syllable.end_s = offset_s + static_cast<double>(spoken.syllables[j].end) / rate;
+            recording.after_pause[indices[j]] = spoken.syllables[j].after_pause;
+        }
+        auto& sentence = recording.truth.sentences[k];
+        sentence.start_s = offset_s;
+        sentence.end_s = offset_s + static_cast<double>(spoken.samples.size()) / rate;
+        samples.insert(samples.end(), spoken.samples.begin(), spoken.samples.end());
+    }
+    samples.resize(samples.size() + static_cast<std::size_t>(std::lround(delivery.gaps_s.back() * rate)), 0.0f);
+    recording.truth.duration_s = static_cast<double>(samples.size()) / rate;
+    return recording;
+}
+
+double rounded(double seconds) { return std::round(seconds * 1e5) / 1e5; }
+
+std::string truth_json(const Recording& recording, const Delivery& delivery, double rate_factor,
+                       const std::string& condition, const std::string& set) {
+    nlohmann::ordered_json document;
+    document["generator"] = "talkface bench/make_corpus, espeak-ng voice cmn-latn-pinyin";
+    document["condition"] = condition;
+    document["set"] = set;
+    document["duration"] = rounded(recording.truth.duration_s);
+    document["sentences"] = nlohmann::ordered_json::array();
+    for (std::size_t k = 0; k < recording.truth.sentences.size(); ++k) {
+        const auto& sentence = recording.truth.sentences[k];
+        document["sentences"].push_back({{"text", sentence.text},
+                                         {"start", rounded(sentence.start_s)},
+                                         {"end", rounded(sentence.end_s)},
+                                         {"rate_wpm", std::lround(delivery.rate_wpm[k] * rate_factor)},
+                                         {"pitch", delivery.pitch[k]}});
+    }
+    document["syllables"] = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < recording.truth.syllables.size(); ++i) {
+        const auto& syllable = recording.truth.syllables[i];
+        document["syllables"].push_back({{"text", syllable.text},
+                                         {"pinyin", syllable.pinyin},
+                                         {"start", rounded(syllable.start_s)},
+                                         {"end", rounded(syllable.end_s)},
+                                         {"sentence", syllable.sentence},
+                                         {"after_pause", static_cast<bool>(recording.after_pause[i])}});
+    }
+    return document.dump(1) + "\n";
+}
+
+// Paul Kellet's pink filter (within 0.05 dB of -3 dB/octave above 10 Hz at these rates) and a
+// leaky integrator for brown (-6 dB/octave); the SNR is set from the measured power afterwards.
+std::vector<float> make_noise(Noise colour, std::size_t count, std::mt19937_64& rng) {
+    std::vector<float> noise(count);
+    double b0 = 0, b1 = 0, b2 = 0, integrated = 0;
+    for (auto& sample : noise) {
+        const double white = gaussian(rng);
+        double value = white;
+        if (colour == Noise::pink) {
+            b0 = 0.99765 * b0 + white * 0.0990460;
+            b1 = 0.96300 * b1 + white * 0.2965164;
+            b2 = 0.57000 * b2 + white * 1.0526913;
+            value = b0 + b1 + b2 + white * 0.1848;
+        } else if (colour == Noise::brown) {
+            integrated = 0.995 * integrated + white;
+            value = integrated;
+        }
+        sample = static_cast<float>(value);
+    }
+    return noise;
+}
+
+// SNR against the speech's active level: mean power inside the sentences, pauses left out.
+MonoAudio add_noise(const MonoAudio& clean, const talkface::Timeline& truth, Noise colour, double snr_db,
+                    std::mt19937_64& rng) {
+    double speech_power = 0;
+    std::size_t speech_count = 0;
+    for (const auto& sentence : truth.sentences) {
+        const auto begin = static_cast<std::size_t>(sentence.start_s * clean.sample_rate_hz);
+        const auto end = std::min(clean.samples.size(), static_cast<std::size_t>(sentence.end_s * clean.sample_rate_hz));
+        for (std::size_t i = begin; i < end; ++i) speech_power += double(clean.samples[i]) * clean.samples[i];
+        speech_count += end > begin ? end - begin : 0;
+    }
+    speech_power /= static_cast<double>(std::max<std::size_t>(speech_count, 1));
+    const auto noise = make_noise(colour, clean.samples.size(), rng);
+    double noise_power = 0;
+    for (float sample : noise) noise_power += double(sample) * sample;
+    noise_power /= static_cast<double>(std::max<std::size_t>(noise.size(), 1));
+    const double gain = std::sqrt(speech_power / (noise_power * std::pow(10.0, snr_db / 10.0)));
+    MonoAudio mixed = clean;
+    float peak = 0;
+    for (std::size_t i = 0; i < mixed.samples.size(); ++i) {
+        mixed.samples[i] += static_cast<float>(gain * noise[i]);
+        peak = std::max(peak, std::fabs(mixed.samples[i]));
+    }
+    // Scaling speech and noise together keeps the SNR and avoids clipping.
+    if (peak > 0.98f)
+        for (auto& sample : mixed.samples) sample *= 0.98f / peak;
+    return mixed;
+}
+
+struct CorpusOptions {
+    std::string out_dir;
+    std::uint64_t seed = 1;
+    int repeats = 3;
+    std::string sentences_path = TALKFACE_BENCH_SENTENCES;
+    std::vector<const Condition*> conditions;
+};
+
+void make_corpus(const CorpusOptions& options) {
+    const auto sentences = load_sentences(options.sentences_path);
+    const auto passages = plan_passages(sentences, options.repeats, options.seed);
+    const fs::path out = options.out_dir;
+    const fs::path work = out / ".work";
+    fs::create_directories(work);
+    talkface_bench::EspeakVoice voice;
+
+    std::string listing;
+    for (const Condition* condition : options.conditions) {
+        fs::create_directories(out / condition->name);
+        listing += std::string(condition->name) + "\t" + condition->description + "\n";
+    }
+    write_text(out / "conditions.txt", listing);
+
+    double seconds = 0;
+    for (std::size_t p = 0; p < passages.size(); ++p) {
+        const Passage& passage = passages[p];
+        std::map<double, Recording> spoken;  // by rate factor: fast and slow are spoken again
+        const fs::path clean_wav = work / (passage.name + "-clean.wav");
+        const auto master_wav = [&](double rate_factor) {
+            return (work / (passage.name + "-x" + std::to_string(std::lround(rate_factor * 100)) + ".wav")).string();
+        };
+        for (std::size_t c = 0; c < options.conditions.size(); ++c) {
+            const Condition& condition = *options.conditions[c];
+            auto found = spoken.find(condition.rate_factor);
+            if (found == spoken.end()) {
+                found = spoken.emplace(condition.rate_factor,
+                                       speak_passage(voice, passage.transcript, passage.delivery, condition.rate_factor,
+                                                     passage.name))
+                            .first;
+                talkface_bench::write_wav(master_wav(condition.rate_factor), found->second.audio);
+            }
+            const Recording& recording = found->second;
+            const fs::path stem = out / condition.name / passage.name;
+            const std::string audio_path = stem.string() + "." + condition.extension;
+            if (condition.noise == Noise::none) {
+                run_sox(master_wav(condition.rate_factor), audio_path, condition);
+            } else {
+                if (!fs::exists(clean_wav)) run_sox(master_wav(condition.rate_factor), clean_wav.string(), all_conditions[0]);
+                const auto condition_index = static_cast<std::uint64_t>(&condition - all_conditions);
+                std::seed_seq noise_seed{options.seed, static_cast<std::uint64_t>(p), condition_index};
+                std::mt19937_64 rng(noise_seed);
+                talkface_bench::write_wav(audio_path, add_noise(talkface_bench::read_wav(clean_wav.string()),
+                                                                recording.truth, condition.noise, condition.snr_db, rng));
+            }
+            write_text(stem.string() + ".txt", passage.transcript);
+            write_text(stem.string() + ".json", truth_json(recording, passage.delivery, condition.rate_factor,
+                                                           condition.name, passage.set));
+        }
+        seconds += spoken.count(1.0) ? spoken.at(1.0).truth.duration_s : 0.0;
+        std::cout << passage.name << " (" << p + 1 << "/" << passages.size() << ")\n" << std::flush;
+    }
+    fs::remove_all(work);
+    std::cout << passages.size() << " passages, " << std::lround(seconds) << " s of speech per condition, "
+              << options.conditions.size() << " conditions in " << out.string() << "\n";
+}
+
+struct ClipOptions {
+    std::string stem;
+    std::string text;
+    std::uint64_t seed = 1;
+    int rate_wpm = 200;
+    int pitch = 50;
+    double pause_s = 0.8;
+};
+
+void make_clip(const ClipOptions& options) {
+    const auto timeline = talkface::read_transcript(options.text, {}, "<clip text>");
+    const std::size_t count = timeline.sentences.size();
+    Delivery delivery;
+    delivery.rate_wpm.assign(count, options.rate_wpm);
+    delivery.pitch.assign(count, options.pitch);
+    delivery.gaps_s.push_back(0.3);
+    for (std::size_t i = 1; i < count; ++i) delivery.gaps_s.push_back(options.pause_s);
+    delivery.gaps_s.push_back(0.3);
+    talkface_bench::EspeakVoice voice;
+    const auto recording = speak_passage(voice, options.text, delivery, 1.0, options.stem);
+    const std::string master = options.stem + ".master.wav";
+    talkface_bench::write_wav(master, recording.audio);
+    run_sox(master, options.stem + ".wav", all_conditions[0]);
+    fs::remove(master);
+    write_text(options.stem + ".txt", options.text + "\n");
+    write_text(options.stem + ".json", truth_json(recording, delivery, 1.0, "clip", "test"));
+}
+
+[[noreturn]] void usage(const std::string& problem) {
+    std::cerr << "make_corpus: " << problem << "\n"
+              << "usage: make_corpus OUT [--seed N] [--repeats N] [--sentences FILE] [--conditions A,B,...]\n"
+              << "       make_corpus --clip STEM [--seed N] [--rate-wpm N] [--pitch N] [--pause-s S] TEXT\n"
+              << "conditions:";
+    for (const auto& condition : all_conditions) std::cerr << " " << condition.name;
+    std::cerr << "\n";
+    std::exit(2);
+}
+
+template <typename Number>
+Number number_arg(const std::string& name, const std::string& value) {
+    std::istringstream in(value);
+    Number number{};
+    if (!(in >> number) || !in.eof()) usage(name + " expects a number, got \"" + value + "\"");
+    return number;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        CorpusOptions corpus;
+        ClipOptions clip;
+        bool clip_mode = false;
+        std::vector<std::string> positional;
+        std::string condition_list;
+        for (int i = 1; i < argc; ++i) {
+            const std::string arg = argv[i];
+            const auto value = [&]() -> std::string {
+                if (i + 1 >= argc) usage(arg + " needs a value");
+                return argv[++i];
+            };
+            if (arg == "--clip") {
+                clip_mode = true;
+                clip.stem = value();
+            } else if (arg == "--seed") {
+                corpus.seed = clip.seed = number_arg<std::uint64_t>(arg, value());
+            } else if (arg == "--repeats") {
+                corpus.repeats = number_arg<int>(arg, value());
+            } else if (arg == "--sentences") {
+                corpus.sentences_path = value();
+            } else if (arg == "--conditions") {
+                condition_list = value();
+            } else if (arg == "--rate-wpm") {
+                clip.rate_wpm = number_arg<int>(arg, value());
+            } else if (arg == "--pitch") {
+                clip.pitch = number_arg<int>(arg, value());
+            } else if (arg == "--pause-s") {
+                clip.pause_s = number_arg<double>(arg, value());
+            } else if (arg == "-h" || arg == "--help") {
+                usage("help");
+            } else if (!arg.empty() && arg[0] == '-') {
+                usage("unknown option " + arg);
+            } else {
+                positional.push_back(arg);
+            }
+        }
+        if (positional.size() != 1) usage(clip_mode ? "give the clip's TEXT" : "give the output directory OUT");
+        if (clip_mode) {
+            clip.text = positional[0];
+            make_clip(clip);
+            return 0;
+        }
+        corpus.out_dir = positional[0];
+        if (corpus.repeats < 1) usage("--repeats must be at least 1");
+        std::istringstream names(condition_list);
+        for (std::string name; std::getline(names, name, ',');) {
+            const auto found = std::find_if(std::begin(all_conditions), std::end(all_conditions),
+                                            [&](const Condition& condition) { return name == condition.name; });
+            if (found == std::end(all_conditions)) usage("unknown condition \"" + name + "\"");
+            corpus.conditions.push_back(found);
+        }
+        if (corpus.conditions.empty())
+            for (const auto& condition : all_conditions) corpus.conditions.push_back(&condition);
+        make_corpus(corpus);
+        return 0;
+    } catch (const std::exception& error) {
+        std::cerr << "make_corpus: " << error.what() << "\n";
+        return 1;
+    }
+}

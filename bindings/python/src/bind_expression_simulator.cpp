@@ -1,0 +1,198 @@
+// The expression simulator in Python: ExpressionEventKind, ExpressionEvent, UserEventMode and
+// ExpressionSimulator; the simulation runs without the GIL.
+#include "bind.hpp"
+
+namespace talkface::python {
+
+void bind_expression_simulator(py::module_& m) {
+    py::enum_<ExpressionEventKind>(m, "ExpressionEventKind", R"doc(
+What an expression event does: blink, brows, tilt, turn, nod. The values equal the C ABI's
+tf_expression_event_kind.
+
+Example:
+    >>> talkface.ExpressionEventKind.nod
+    >>> talkface.expression_event_kind_name(talkface.ExpressionEventKind.nod)
+)doc")
+        .value("blink", ExpressionEventKind::blink)
+        .value("brows", ExpressionEventKind::brows)
+        .value("tilt", ExpressionEventKind::tilt)
+        .value("turn", ExpressionEventKind::turn)
+        .value("nod", ExpressionEventKind::nod);
+
+    m.def("expression_event_kind_name", &expression_event_kind_name, py::arg("kind"), R"doc(
+"blink", "brows", "tilt", "turn" or "nod".
+
+Example:
+    >>> talkface.expression_event_kind_name(talkface.ExpressionEventKind.tilt)
+    'tilt'
+)doc");
+    m.def("expression_event_kind_from_name", &expression_event_kind_from_name, py::arg("name"), R"doc(
+Parses a name as expression_event_kind_name() writes it.
+
+Raises:
+    talkface.InvalidArgument: an unknown name (the message lists the valid ones).
+
+Example:
+    >>> talkface.expression_event_kind_from_name("nod")
+    >>> talkface.expression_event_kind_from_name("blink") == talkface.ExpressionEventKind.blink
+)doc");
+
+    py::class_<ExpressionEvent>(m, "ExpressionEvent", R"doc(
+One blink, eyebrow raise or head movement over [start_s, end_s], seconds from the start of the audio.
+amount: blink, how far the lids close (0..1); brows, the raise at its peak (0..1); tilt (gamma), turn
+(beta), nod (alpha, > 0 down): the angle reached, degrees, within +-15. Blink and brows come back to
+neutral by end_s; head movements stay at the angle until the next event of their kind.
+
+Example:
+    >>> talkface.ExpressionEvent(talkface.ExpressionEventKind.nod, 1.0, 1.4, 5.0)
+    >>> talkface.ExpressionEvent("blink", 2.0, 2.2, 1.0)
+)doc")
+        .def(py::init([](ExpressionEventKind kind, double start_s, double end_s, double amount) {
+                 return ExpressionEvent{kind, start_s, end_s, amount};
+             }),
+             py::arg("kind"), py::arg("start_s"), py::arg("end_s"), py::arg("amount"), R"doc(
+Args:
+    kind (ExpressionEventKind | str): blink, brows, tilt, turn or nod.
+    start_s, end_s (float): seconds.
+    amount (float): 0..1 for blink and brows; degrees for tilt, turn and nod.
+
+Raises:
+    talkface.InvalidArgument: kind is a name that is not one of the five.
+
+Example:
+    >>> talkface.ExpressionEvent(talkface.ExpressionEventKind.turn, 3.0, 3.5, -6.0)
+    >>> talkface.ExpressionEvent("brows", 0.5, 1.2, 0.8)
+)doc")
+        .def(py::init([](std::string_view kind, double start_s, double end_s, double amount) {
+                 return ExpressionEvent{expression_event_kind_from_name(kind), start_s, end_s, amount};
+             }),
+             py::arg("kind"), py::arg("start_s"), py::arg("end_s"), py::arg("amount"))
+        .def_readwrite("kind", &ExpressionEvent::kind, "ExpressionEventKind")
+        .def_readwrite("start_s", &ExpressionEvent::start_s, "seconds")
+        .def_readwrite("end_s", &ExpressionEvent::end_s, "seconds")
+        .def_readwrite("amount", &ExpressionEvent::amount, "0..1 (blink, brows) or degrees (tilt, turn, nod)")
+        .def("__eq__", [](const ExpressionEvent& a, const ExpressionEvent& b) { return a == b; })
+        .def("__repr__", [](const ExpressionEvent& e) {
+            return py::str("talkface.ExpressionEvent({!r}, {!r}, {!r}, {!r})")
+                .format(expression_event_kind_name(e.kind), e.start_s, e.end_s, e.amount);
+        });
+
+    py::enum_<UserEventMode>(m, "UserEventMode", R"doc(
+How a caller's events combine with the simulated ones: add (simulated events overlapping a caller's
+event of their kind are dropped) or replace (every simulated event of a kind the caller gives is
+dropped).
+
+Example:
+    >>> simulator.set_user_events(events, talkface.UserEventMode.replace)
+    >>> talkface.UserEventMode.add
+)doc")
+        .value("add", UserEventMode::add)
+        .value("replace", UserEventMode::replace);
+
+    m.def("validate_expression_events", &validate_expression_events, py::arg("events"), R"doc(
+Checks a caller's events (any order).
+
+Raises:
+    talkface.InvalidArgument: naming the event (index, kind, times): a time not finite or negative,
+        an end before its start, an amount out of range, or two events of one kind overlapping.
+
+Example:
+    >>> talkface.validate_expression_events([talkface.ExpressionEvent("nod", 1.0, 1.4, 5.0)])
+    >>> talkface.validate_expression_events([])
+)doc");
+    m.def("timeline_end_s", &timeline_end_s, py::arg("timeline"), R"doc(
+The end of a timeline, seconds: its duration_s, or the end of its last syllable or sentence if later.
+
+Example:
+    >>> talkface.timeline_end_s(timeline)
+    >>> talkface.timeline_end_s(talkface.Timeline(duration_s=3.0))
+)doc");
+
+    py::class_<ExpressionSimulator>(m, "ExpressionSimulator", R"doc(
+Simulates blinks, eyebrow raises, head tilts, turns and nods over a timeline from a seed (thesis
+chapter 4): the same seed gives the same events on every platform. Evaluate it at any time with
+pose_at() and expression_at(). set_user_events() must not run while another thread uses the same
+simulator (animate() included).
+
+Example:
+    >>> simulator = talkface.ExpressionSimulator(timeline, seed=42)
+    >>> [(talkface.expression_event_kind_name(e.kind), e.start_s) for e in simulator.events()]
+)doc")
+        .def(py::init([](const Timeline& timeline, std::uint64_t seed, std::string_view style) {
+                 const ExpressionStyle chosen = ExpressionStyle::from_name(style);
+                 // A copy: another Python thread may change the caller's timeline once the GIL is free.
+                 const Timeline timeline_copy = timeline;
+                 py::gil_scoped_release release;
+                 return ExpressionSimulator(timeline_copy, seed, chosen);
+             }),
+             py::arg("timeline"), py::arg("seed") = 0, py::arg("style") = "normal", R"doc(
+Simulates the events of a timeline; releases the GIL while it works. The simulator keeps no reference
+to the timeline.
+
+Args:
+    timeline (Timeline): aligned sentences and syllables (pauses after sentences get nods).
+    seed (int): 0 .. 2**64 - 1.
+    style (str): "normal" (the thesis's numbers for a normal pace) or "announcer" (TV news
+        announcers: faster head movements).
+
+Raises:
+    talkface.InvalidArgument: an unknown style (the message lists the valid ones), or a syllable whose
+        times are not finite or end before they start (named).
+
+Example:
+    >>> talkface.ExpressionSimulator(timeline, 7)
+    >>> talkface.ExpressionSimulator(timeline, 7, style="announcer")
+)doc")
+        .def_property_readonly("seed", &ExpressionSimulator::seed, "the seed")
+        .def_property_readonly(
+            "style", [](const ExpressionSimulator& s) { return s.style().name; }, "the style's name")
+        .def_property_readonly("duration_s", &ExpressionSimulator::duration_s,
+                               "timeline_end_s of the timeline, seconds")
+        .def("simulated_events", &ExpressionSimulator::simulated_events, R"doc(
+The simulated events, by start time then kind (a new list), whatever the caller's events are.
+
+Example:
+    >>> len(simulator.simulated_events())
+    >>> simulator.simulated_events()[0]
+)doc")
+        .def("events", &ExpressionSimulator::events, R"doc(
+The events in effect: the simulated ones combined with the caller's, by start time then kind (a new
+list).
+
+Example:
+    >>> simulator.set_user_events([talkface.ExpressionEvent("nod", 1.0, 1.4, 5.0)])
+    >>> [e for e in simulator.events() if e.kind == talkface.ExpressionEventKind.nod]
+)doc")
+        .def("set_user_events", &ExpressionSimulator::set_user_events, py::arg("events"),
+             py::arg("mode") = UserEventMode::add, R"doc(
+Sets the caller's events (replacing any set before) and combines them with the simulated ones as
+mode says. An empty list restores the simulated events.
+
+Args:
+    events (list[ExpressionEvent]): any order; events of one kind must not overlap.
+    mode (UserEventMode): add or replace.
+
+Raises:
+    talkface.InvalidArgument: naming the event (index, kind, times) that is wrong; nothing changes.
+
+Example:
+    >>> simulator.set_user_events([talkface.ExpressionEvent("blink", 0.5, 0.7, 1.0)])
+    >>> simulator.set_user_events(events, talkface.UserEventMode.replace)
+)doc")
+        .def("pose_at", &ExpressionSimulator::pose_at, py::arg("time_s"), R"doc(
+The head pose at a time, seconds (a Pose in degrees; 0 before the first event).
+
+Example:
+    >>> simulator.pose_at(2.5).alpha_deg
+    >>> talkface.FaceState(pose=simulator.pose_at(2.5))
+)doc")
+        .def("expression_at", &ExpressionSimulator::expression_at, py::arg("time_s"), R"doc(
+Blinks (both eyes) and eyebrow raise at a time, seconds (an Expression; smile stays 0).
+
+Example:
+    >>> simulator.expression_at(2.5).blink_left
+    >>> simulator.expression_at(0.0) == talkface.Expression()
+)doc");
+}
+
+}  // namespace talkface::python

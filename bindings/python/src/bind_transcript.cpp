@@ -1,0 +1,182 @@
+// Timelines and transcripts in Python: Sentence, Syllable, Timeline, read_transcript(),
+// load_transcript(), is_valid_pinyin().
+#include "bind.hpp"
+
+namespace talkface::python {
+
+namespace {
+
+TranscriptOptions transcript_options(bool read_pinyin) {
+    TranscriptOptions options;
+    options.read_pinyin = read_pinyin;
+    return options;
+}
+
+}  // namespace
+
+void bind_transcript(py::module_& m) {
+    py::class_<Sentence>(m, "Sentence", R"doc(
+A sentence of the transcript and, once aligned, when it is spoken (seconds).
+
+Example:
+    >>> s = talkface.Sentence("你好。", start_s=0.5, end_s=1.2)
+    >>> s.end_s - s.start_s
+)doc")
+        .def(py::init([](std::string text, double start_s, double end_s) {
+                 return Sentence{std::move(text), start_s, end_s};
+             }),
+             py::arg("text") = "", py::arg("start_s") = 0.0, py::arg("end_s") = 0.0, R"doc(
+Args:
+    text (str): the sentence as written, punctuation included.
+    start_s, end_s (float): seconds from the start of the audio (0 before alignment).
+
+Example:
+    >>> talkface.Sentence("你好。")
+    >>> talkface.Sentence("你好。", 0.5, 1.2)
+)doc")
+        .def_readwrite("text", &Sentence::text, "the sentence as written, UTF-8")
+        .def_readwrite("start_s", &Sentence::start_s, "seconds from the start of the audio")
+        .def_readwrite("end_s", &Sentence::end_s, "seconds; end_s >= start_s")
+        .def("__eq__",
+             [](const Sentence& a, const Sentence& b) {
+                 return a.text == b.text && a.start_s == b.start_s && a.end_s == b.end_s;
+             })
+        .def("__repr__", [](const Sentence& s) {
+            return py::str("talkface.Sentence({!r}, start_s={!r}, end_s={!r})").format(s.text, s.start_s, s.end_s);
+        });
+
+    py::class_<Syllable>(m, "Syllable", R"doc(
+One syllable: one character of the transcript that has a reading, with its times once aligned.
+
+Example:
+    >>> s = talkface.Syllable("好", "hao3", sentence=0, start_s=0.5, end_s=0.8)
+    >>> talkface.syllable_mouth_shapes(s.pinyin)
+)doc")
+        .def(py::init([](std::string text, std::string pinyin, std::size_t sentence, double start_s, double end_s,
+                         std::optional<double> final_start_s, double confidence, bool pause_after) {
+                 return Syllable{std::move(text), std::move(pinyin), sentence,   start_s,
+                                 end_s,           final_start_s,     confidence, pause_after};
+             }),
+             py::arg("text") = "", py::arg("pinyin") = "", py::arg("sentence") = 0, py::arg("start_s") = 0.0,
+             py::arg("end_s") = 0.0, py::arg("final_start_s") = py::none(), py::arg("confidence") = 1.0,
+             py::arg("pause_after") = false, R"doc(
+Args:
+    text (str): the character (or the pinyin syllable when the transcript is pinyin).
+    pinyin (str): numbered pinyin, u-umlaut written v: "lv4", "hang2".
+    sentence (int): index into Timeline.sentences.
+    start_s, end_s (float): seconds; start_s is where the initial consonant starts.
+    final_start_s (float | None): where the final (vowel) starts, when measured.
+    confidence (float): 0..1, how sure the aligner is of the times.
+    pause_after (bool): the transcript marks a pause after it (，、：).
+
+Example:
+    >>> talkface.Syllable("行", "hang2")
+    >>> talkface.Syllable("媽", "ma1", 0, 0.5, 0.8, final_start_s=0.58)
+)doc")
+        .def_readwrite("text", &Syllable::text, "the character, UTF-8")
+        .def_readwrite("pinyin", &Syllable::pinyin, "numbered pinyin, u-umlaut written v")
+        .def_readwrite("sentence", &Syllable::sentence, "index into Timeline.sentences")
+        .def_readwrite("start_s", &Syllable::start_s, "where its initial consonant starts, seconds")
+        .def_readwrite("end_s", &Syllable::end_s, "seconds")
+        .def_readwrite("final_start_s", &Syllable::final_start_s, "where its final starts, seconds, or None")
+        .def_readwrite("confidence", &Syllable::confidence, "0..1")
+        .def_readwrite("pause_after", &Syllable::pause_after, "a pause the transcript marks after it")
+        .def("__eq__",
+             [](const Syllable& a, const Syllable& b) {
+                 return a.text == b.text && a.pinyin == b.pinyin && a.sentence == b.sentence &&
+                        a.start_s == b.start_s && a.end_s == b.end_s && a.final_start_s == b.final_start_s &&
+                        a.confidence == b.confidence && a.pause_after == b.pause_after;
+             })
+        .def("__repr__", [](const Syllable& s) {
+            return py::str("talkface.Syllable({!r}, {!r}, sentence={!r}, start_s={!r}, end_s={!r}, "
+                           "final_start_s={!r}, confidence={!r}, pause_after={!r})")
+                .format(s.text, s.pinyin, s.sentence, s.start_s, s.end_s, s.final_start_s, s.confidence,
+                        s.pause_after);
+        });
+
+    py::class_<Timeline>(m, "Timeline", R"doc(
+Sentences and syllables in transcript order, with what the reader skipped (warnings) and the length of
+the audio. The list attributes are copies: change one and assign it back
+(timeline.syllables = syllables), as for any list of C++ values.
+
+Example:
+    >>> timeline = talkface.read_transcript("你好。")
+    >>> [s.pinyin for s in timeline.syllables]
+    ['ni3', 'hao3']
+)doc")
+        .def(py::init([](std::vector<Sentence> sentences, std::vector<Syllable> syllables,
+                         std::vector<std::string> warnings, double duration_s) {
+                 return Timeline{std::move(sentences), std::move(syllables), std::move(warnings), duration_s};
+             }),
+             py::arg("sentences") = std::vector<Sentence>{}, py::arg("syllables") = std::vector<Syllable>{},
+             py::arg("warnings") = std::vector<std::string>{}, py::arg("duration_s") = 0.0, R"doc(
+Args:
+    sentences (list[Sentence]): in transcript order.
+    syllables (list[Syllable]): in transcript order, each naming its sentence.
+    warnings (list[str]): what the transcript reader skipped.
+    duration_s (float): length of the audio, seconds.
+
+Example:
+    >>> talkface.Timeline([talkface.Sentence("好。", 0.2, 0.6)],
+    ...                   [talkface.Syllable("好", "hao3", 0, 0.2, 0.6)], duration_s=1.0)
+)doc")
+        .def_readwrite("sentences", &Timeline::sentences, "list[Sentence] (a copy)")
+        .def_readwrite("syllables", &Timeline::syllables, "list[Syllable] (a copy)")
+        .def_readwrite("warnings", &Timeline::warnings, "list[str]: what the reader skipped, and where")
+        .def_readwrite("duration_s", &Timeline::duration_s, "length of the audio, seconds (0 before alignment)")
+        .def("__repr__", [](const Timeline& t) {
+            return py::str("<talkface.Timeline: {} sentences, {} syllables, {} warnings, duration_s={!r}>")
+                .format(t.sentences.size(), t.syllables.size(), t.warnings.size(), t.duration_s);
+        });
+
+    m.def(
+        "read_transcript",
+        [](std::string_view text, const std::string& source_name, bool read_pinyin) {
+            return read_transcript(text, transcript_options(read_pinyin), source_name);
+        },
+        py::arg("text"), py::arg("source_name") = "<transcript>", py::arg("read_pinyin") = true, R"doc(
+Reads a transcript (Traditional or Simplified characters, or numbered pinyin) into sentences and
+syllables, times all 0. Sentences end at 。！？；… and . ! ? ;. A polyphonic character is read by the
+built-in phrase table; fix a reading in place: 行{hang2}. Characters without a reading are skipped and
+reported in Timeline.warnings ("source:line:column: ...").
+
+Args:
+    text (str): the transcript.
+    source_name (str): names the text in messages.
+    read_pinyin (bool): read runs of Latin letters that spell Mandarin syllables as syllables.
+
+Raises:
+    talkface.ParseError: a reading fix that is not Mandarin (行{hxng2}), an unclosed "{" (names
+        source:line:column).
+
+Example:
+    >>> timeline = talkface.read_transcript("長期下來，傷害不斷累積。")
+    >>> timeline.syllables[0].pinyin
+    'chang2'
+)doc");
+    m.def(
+        "load_transcript",
+        [](const std::filesystem::path& path, bool read_pinyin) {
+            return load_transcript(path.string(), transcript_options(read_pinyin));
+        },
+        py::arg("path"), py::arg("read_pinyin") = true, R"doc(
+Reads a UTF-8 transcript file as read_transcript() does; messages name the path.
+
+Raises:
+    talkface.FileError: the file cannot be read (also an OSError).
+    talkface.ParseError: as read_transcript().
+
+Example:
+    >>> timeline = talkface.load_transcript("story.txt")
+    >>> timeline.warnings
+)doc");
+    m.def("is_valid_pinyin", &is_valid_pinyin, py::arg("syllable"), R"doc(
+True if syllable is a legal Mandarin syllable in numbered pinyin ("hang2", "lv4", "ma5").
+
+Example:
+    >>> talkface.is_valid_pinyin("hang2")
+    True
+)doc");
+}
+
+}  // namespace talkface::python

@@ -1,0 +1,309 @@
+// tf_timeline, transcripts and syllable shapes: the C face of transcript.hpp, timeline.hpp and
+// syllable_mouth_shapes() in lip_sync.hpp.
+#include <charconv>
+#include <cmath>
+#include <string>
+#include <string_view>
+
+#include "c_api_guard.hpp"
+#include "c_api_handles.hpp"
+#include "talkface/lip_sync.hpp"
+#include "talkface/transcript.hpp"
+
+using talkface::InvalidArgument;
+using talkface::Sentence;
+using talkface::Syllable;
+using talkface::Timeline;
+using talkface::capi::guard;
+using talkface::capi::require_non_null;
+
+namespace {
+
+// items[index], const or not as `items` is.
+template <typename Items>
+auto& item_at(Items& items, size_t index, const char* what) {
+    if (index >= items.size()) {
+        throw InvalidArgument("index", std::string("expected a ") + what + " index below " +
+                                           std::to_string(items.size()) + ", got " + std::to_string(index));
+    }
+    return items[index];
+}
+
+Syllable& syllable_at(tf_timeline* timeline, size_t index) {
+    return item_at(timeline->timeline.syllables, index, "syllable");
+}
+
+// Shortest text that reads back as the same double, whatever the C locale (printf's "%g" would
+// write "0,5" under a German locale, and lose digits).
+std::string json_number(double value) {
+    if (!std::isfinite(value)) return "null";
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, result.ptr);
+}
+
+std::string json_string(std::string_view text) {
+    std::string quoted = "\"";
+    for (const char c : text) {
+        switch (c) {
+            case '"': quoted += "\\\""; break;
+            case '\\': quoted += "\\\\"; break;
+            case '\n': quoted += "\\n"; break;
+            case '\r': quoted += "\\r"; break;
+            case '\t': quoted += "\\t"; break;
+            default:
+                if (static_cast<unsigned char>(c) < 0x20) {
+                    static const char kHex[] = "0123456789abcdef";
+                    quoted += "\\u00";
+                    quoted += kHex[(c >> 4) & 0xf];
+                    quoted += kHex[c & 0xf];
+                } else {
+                    quoted += c;  // UTF-8 passes through: readers see the characters, not \u escapes
+                }
+        }
+    }
+    return quoted + "\"";
+}
+
+// SPEC "Contracts" `align` shape, keys in the contract's order, then the extras a timeline carries
+// (final_start only when measured), so that a document read back makes the same animation.
+std::string timeline_json(const Timeline& timeline) {
+    std::string json = "{\"sentences\":[";
+    for (size_t k = 0; k < timeline.sentences.size(); ++k) {
+        const Sentence& sentence = timeline.sentences[k];
+        json += k == 0 ? "\n" : ",\n";
+        json += "{\"text\":" + json_string(sentence.text) + ",\"start\":" + json_number(sentence.start_s) +
+                ",\"end\":" + json_number(sentence.end_s) + "}";
+    }
+    json += "\n],\n\"syllables\":[";
+    for (size_t k = 0; k < timeline.syllables.size(); ++k) {
+        const Syllable& syllable = timeline.syllables[k];
+        json += k == 0 ? "\n" : ",\n";
+        json += "{\"text\":" + json_string(syllable.text) + ",\"pinyin\":" + json_string(syllable.pinyin) +
+                ",\"start\":" + json_number(syllable.start_s) + ",\"end\":" + json_number(syllable.end_s) +
+                ",\"sentence\":" + std::to_string(syllable.sentence);
+        if (syllable.final_start_s) json += ",\"final_start\":" + json_number(*syllable.final_start_s);
+        json += ",\"confidence\":" + json_number(syllable.confidence) +
+                ",\"pause_after\":" + (syllable.pause_after ? "true" : "false") + "}";
+    }
+    json += "\n],\n\"duration\":" + json_number(timeline.duration_s) + ",\n\"warnings\":[";
+    for (size_t k = 0; k < timeline.warnings.size(); ++k) {
+        json += k == 0 ? "\n" : ",\n";
+        json += json_string(timeline.warnings[k]);
+    }
+    json += timeline.warnings.empty() ? "]}\n" : "\n]}\n";
+    return json;
+}
+
+}  // namespace
+
+extern "C" {
+
+tf_status tf_read_transcript(const char* text, size_t length, const char* source_name, tf_timeline** out) {
+    return guard([&] {
+        require_non_null(text, "text");
+        require_non_null(out, "out");
+        *out = new tf_timeline{talkface::read_transcript(std::string_view(text, length), {},
+                                                         source_name != nullptr ? source_name : "<transcript>")};
+    });
+}
+
+tf_status tf_load_transcript(const char* path, tf_timeline** out) {
+    return guard([&] {
+        require_non_null(path, "path");
+        require_non_null(out, "out");
+        *out = new tf_timeline{talkface::load_transcript(path)};
+    });
+}
+
+tf_status tf_timeline_create(tf_timeline** out) {
+    return guard([&] {
+        require_non_null(out, "out");
+        *out = new tf_timeline{};
+    });
+}
+
+void tf_timeline_destroy(tf_timeline* timeline) {
+    delete timeline;
+}
+
+tf_status tf_timeline_add_sentence(tf_timeline* timeline, const char* text, double start_s, double end_s) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        require_non_null(text, "text");
+        timeline->timeline.sentences.push_back(Sentence{text, start_s, end_s});
+    });
+}
+
+tf_status tf_timeline_add_syllable(tf_timeline* timeline, const char* text, const char* pinyin,
+                                   size_t sentence_index, double start_s, double end_s) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        require_non_null(text, "text");
+        require_non_null(pinyin, "pinyin");
+        const size_t sentence_count = timeline->timeline.sentences.size();
+        if (sentence_index >= sentence_count) {
+            throw InvalidArgument("sentence_index", "expected an index below " + std::to_string(sentence_count) +
+                                                        " (the sentences added so far), got " +
+                                                        std::to_string(sentence_index));
+        }
+        Syllable syllable;
+        syllable.text = text;
+        syllable.pinyin = pinyin;
+        syllable.sentence = sentence_index;
+        syllable.start_s = start_s;
+        syllable.end_s = end_s;
+        timeline->timeline.syllables.push_back(std::move(syllable));
+    });
+}
+
+tf_status tf_timeline_set_syllable_final_start_s(tf_timeline* timeline, size_t index, double final_start_s) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        syllable_at(timeline, index).final_start_s = final_start_s;
+    });
+}
+
+tf_status tf_timeline_set_syllable_confidence(tf_timeline* timeline, size_t index, double confidence) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        Syllable& syllable = syllable_at(timeline, index);
+        if (!(confidence >= 0.0 && confidence <= 1.0)) {
+            throw InvalidArgument("confidence", "expected 0..1, got " + json_number(confidence));
+        }
+        syllable.confidence = confidence;
+    });
+}
+
+tf_status tf_timeline_set_syllable_pause_after(tf_timeline* timeline, size_t index, int pause_after) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        syllable_at(timeline, index).pause_after = pause_after != 0;
+    });
+}
+
+tf_status tf_timeline_set_duration_s(tf_timeline* timeline, double duration_s) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        timeline->timeline.duration_s = duration_s;
+    });
+}
+
+tf_status tf_timeline_duration_s(const tf_timeline* timeline, double* out_duration_s) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        require_non_null(out_duration_s, "out_duration_s");
+        *out_duration_s = timeline->timeline.duration_s;
+    });
+}
+
+tf_status tf_timeline_sentence_count(const tf_timeline* timeline, size_t* out_count) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        require_non_null(out_count, "out_count");
+        *out_count = timeline->timeline.sentences.size();
+    });
+}
+
+tf_status tf_timeline_sentence(const tf_timeline* timeline, size_t index, const char** out_text,
+                               double* out_start_s, double* out_end_s) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        const Sentence& sentence = item_at(timeline->timeline.sentences, index, "sentence");
+        if (out_text != nullptr) *out_text = sentence.text.c_str();
+        if (out_start_s != nullptr) *out_start_s = sentence.start_s;
+        if (out_end_s != nullptr) *out_end_s = sentence.end_s;
+    });
+}
+
+tf_status tf_timeline_syllable_count(const tf_timeline* timeline, size_t* out_count) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        require_non_null(out_count, "out_count");
+        *out_count = timeline->timeline.syllables.size();
+    });
+}
+
+tf_status tf_timeline_syllable(const tf_timeline* timeline, size_t index, const char** out_text,
+                               const char** out_pinyin, size_t* out_sentence_index) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        const Syllable& syllable = item_at(timeline->timeline.syllables, index, "syllable");
+        if (out_text != nullptr) *out_text = syllable.text.c_str();
+        if (out_pinyin != nullptr) *out_pinyin = syllable.pinyin.c_str();
+        if (out_sentence_index != nullptr) *out_sentence_index = syllable.sentence;
+    });
+}
+
+tf_status tf_timeline_syllable_times(const tf_timeline* timeline, size_t index, double* out_start_s,
+                                     double* out_end_s, int* out_has_final_start, double* out_final_start_s) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        const Syllable& syllable = item_at(timeline->timeline.syllables, index, "syllable");
+        if (out_start_s != nullptr) *out_start_s = syllable.start_s;
+        if (out_end_s != nullptr) *out_end_s = syllable.end_s;
+        if (out_has_final_start != nullptr) *out_has_final_start = syllable.final_start_s ? 1 : 0;
+        if (out_final_start_s != nullptr && syllable.final_start_s) *out_final_start_s = *syllable.final_start_s;
+    });
+}
+
+tf_status tf_timeline_syllable_confidence(const tf_timeline* timeline, size_t index, double* out_confidence,
+                                          int* out_pause_after) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        const Syllable& syllable = item_at(timeline->timeline.syllables, index, "syllable");
+        if (out_confidence != nullptr) *out_confidence = syllable.confidence;
+        if (out_pause_after != nullptr) *out_pause_after = syllable.pause_after ? 1 : 0;
+    });
+}
+
+tf_status tf_timeline_warning_count(const tf_timeline* timeline, size_t* out_count) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        require_non_null(out_count, "out_count");
+        *out_count = timeline->timeline.warnings.size();
+    });
+}
+
+tf_status tf_timeline_warning(const tf_timeline* timeline, size_t index, const char** out_warning) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        require_non_null(out_warning, "out_warning");
+        *out_warning = item_at(timeline->timeline.warnings, index, "warning").c_str();
+    });
+}
+
+tf_status tf_timeline_to_json(const tf_timeline* timeline, char** out_json, size_t* out_len) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        require_non_null(out_json, "out_json");
+        talkface::capi::give_document(timeline_json(timeline->timeline), out_json, out_len);
+    });
+}
+
+int tf_is_valid_pinyin(const char* syllable) {
+    return syllable != nullptr && talkface::is_valid_pinyin(syllable) ? 1 : 0;
+}
+
+tf_status tf_syllable_mouth_shapes(const char* pinyin, tf_mouth_shape* out, size_t capacity,
+                                   size_t* out_count) {
+    return guard([&] {
+        require_non_null(pinyin, "pinyin");
+        require_non_null(out_count, "out_count");
+        const std::vector<talkface::MouthShape> shapes = talkface::syllable_mouth_shapes(pinyin);
+        if (out == nullptr && capacity == 0) {
+            *out_count = shapes.size();
+            return;
+        }
+        require_non_null(out, "out");
+        if (capacity < shapes.size()) {
+            throw InvalidArgument("capacity", "\"" + std::string(pinyin) + "\" has " +
+                                                  std::to_string(shapes.size()) + " shapes, capacity is " +
+                                                  std::to_string(capacity));
+        }
+        for (size_t k = 0; k < shapes.size(); ++k) out[k] = static_cast<tf_mouth_shape>(shapes[k]);
+        *out_count = shapes.size();
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,93 @@
+// talkface: SpeechAligner, the speech analyzer of thesis chapter 3: audio and transcript in,
+// sentences and syllables with their times out (SPEC "Alignment").
+#ifndef TALKFACE_SPEECH_ALIGNER_HPP
+#define TALKFACE_SPEECH_ALIGNER_HPP
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "talkface/export.h"
+#include "talkface/timeline.hpp"
+
+namespace talkface {
+inline namespace v0 {
+
+/// Audio samples the caller owns: `frame_count` frames of `channel_count` interleaved float samples
+/// in -1..1 at `sample_rate_hz`. Channels are mixed down to mono.
+struct AudioView {
+    const float* samples = nullptr;
+    std::size_t frame_count = 0;
+    int channel_count = 1;
+    int sample_rate_hz = 0;
+};
+
+/// Reports progress (fraction 0..1 of the whole job, and the stage: "reading", "sentences",
+/// "syllables"); return false to cancel, which makes the call throw talkface::Cancelled.
+/// Called from the thread that called the aligner.
+using ProgressCallback = std::function<bool(double fraction, const std::string& stage)>;
+
+/// How the audio is cut into sentence utterances.
+enum class SentenceCutMode : int {
+    /// The default: the noise level and pause lengths are learned from the audio itself, and the
+    /// transcript's number of sentences picks the pauses.
+    automatic = 0,
+    /// Algorithm 3.1 as the thesis writes it: the caller gives the first pause between sentences
+    /// (first_pause_start_s .. first_pause_end_s); silences are parts quieter than c2 times that
+    /// pause's loudest sample and longer than c1 times its length.
+    first_pause = 1,
+};
+
+/// Options of SpeechAligner. Defaults suit ordinary recordings.
+struct AlignOptions {
+    SentenceCutMode sentence_cut = SentenceCutMode::automatic;
+    double first_pause_start_s = 0.0;  ///< first_pause mode: the selected pause (seconds)
+    double first_pause_end_s = 0.0;
+    double c1 = 0.95;                  ///< Algorithm 3.1 step 3, in 0.5..1
+    double c2 = 1.45;                  ///< Algorithm 3.1 step 4, in 1..1.5
+};
+
+/// Aligns a recorded speech with its transcript (a Timeline from read_transcript()).
+///
+/// Each syllable gets start_s (where its initial consonant starts), end_s, final_start_s (where its
+/// vowel starts) and a confidence; each sentence gets start_s and end_s; duration_s is the audio's
+/// length. Audio is read in blocks: an hour of speech aligns in bounded memory.
+///
+/// Movable, not copyable. Thread safety: const members may be called from several threads at once.
+class TALKFACE_API SpeechAligner {
+public:
+    /// \throws talkface::InvalidArgument naming the option if one is out of range.
+    explicit SpeechAligner(AlignOptions options = {});
+    ~SpeechAligner();
+    SpeechAligner(SpeechAligner&&) noexcept;
+    SpeechAligner& operator=(SpeechAligner&&) noexcept;
+    SpeechAligner(const SpeechAligner&) = delete;
+    SpeechAligner& operator=(const SpeechAligner&) = delete;
+
+    const AlignOptions& options() const;
+
+    /// Aligns samples in memory.
+    /// \throws talkface::InvalidArgument for an empty or malformed view or an empty transcript.
+    /// \throws talkface::AlignmentError when audio and transcript do not match (a missing or extra
+    ///         sentence, the wrong text), naming the sentence and the time where it was noticed.
+    /// \throws talkface::Cancelled if `progress` returned false.
+    Timeline align(const AudioView& audio, const Timeline& transcript,
+                   const ProgressCallback& progress = {}) const;
+
+    /// Aligns an audio file (WAV, FLAC, OGG, any sample rate, 8 to 32 bit or float, mono or stereo).
+    /// \throws talkface::FileError if it cannot be opened or read (truncated); talkface::ParseError
+    ///         if it is not audio talkface can read; talkface::InvalidArgument if it is empty or
+    ///         silent; and as align().
+    Timeline align_file(const std::string& audio_path, const Timeline& transcript,
+                        const ProgressCallback& progress = {}) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace v0
+}  // namespace talkface
+
+#endif

@@ -1,0 +1,110 @@
+// talkface: the web page around a talking face (thesis 6.3.2 and chapter 7): the animation inline,
+// an <audio> element whose clock drives it, and the two applications, the virtual announcer and
+// the audio book.
+//
+//   talkface::WebPageOptions page;
+//   page.app = talkface::WebPageApp::audiobook;
+//   page.title = "春曉";
+//   talkface::write_web_page("book.html", talkface::SvgAnimator(face), animation, timeline,
+//                            "speech.ogg", page);
+//
+// The page is one self-contained HTML file that works from a file:// URL with no network: the SVG,
+// the style and the script are inline, the audio is embedded as a data: URI (or linked). The
+// script pauses the SVG's own timeline and sets its time from audio.currentTime on every animation
+// frame, so play, pause, seek, playback rate and the end keep face and voice together. A URL
+// fragment "#t=SECONDS" seeks there once the audio is ready; "#t=SECONDS&pause" also stays paused.
+//
+// Every text that comes from the caller (title, transcript, links) is escaped: no input can add
+// markup or script to the page. Functions here are pure and may be called from several threads.
+#ifndef TALKFACE_WEB_PAGE_HPP
+#define TALKFACE_WEB_PAGE_HPP
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "talkface/animation.hpp"
+#include "talkface/export.h"
+#include "talkface/svg_animator.hpp"
+#include "talkface/timeline.hpp"
+#include "talkface/types.hpp"
+
+namespace talkface {
+inline namespace v0 {
+
+/// What the page is for. The numeric values are stable within a major version.
+enum class WebPageApp : int {
+    plain = 0,      ///< the talking face and the audio controls
+    announcer = 1,  ///< thesis 7.2: the face placed on a stage with a background (colour or image)
+    audiobook = 2,  ///< thesis 7.3: title, the text with the spoken sentence highlighted, links, the face
+};
+
+/// "plain", "announcer", "audiobook".
+TALKFACE_API const char* web_page_app_name(WebPageApp app);
+/// Parses a name as web_page_app_name() writes it.
+/// \throws talkface::InvalidArgument listing the valid names.
+TALKFACE_API WebPageApp web_page_app_from_name(std::string_view name);
+
+/// A link of the audio book's page.
+struct WebLink {
+    std::string text;  ///< what the reader sees
+    std::string url;   ///< http:, https:, mailto: or a relative URL; other schemes are refused
+};
+
+/// How the page is built. Sizes are CSS pixels.
+struct WebPageOptions {
+    WebPageApp app = WebPageApp::plain;
+    /// The page's title (and the audio book's heading); empty: the first sentence of the timeline.
+    std::string title;
+    std::vector<WebLink> links;  ///< audio book: listed under the text
+    SvgAnimationOptions animation;  ///< the encoding of the face's animation
+
+    /// False (the default): the audio is embedded in the page as a data: URI. True: the page
+    /// links to audio_url, and the audio file must stay beside the page.
+    bool link_audio = false;
+    /// The link written when link_audio is true, relative to the page (e.g. "speech.ogg"); empty:
+    /// the audio file's name. Percent-encoded as needed.
+    std::string audio_url;
+
+    /// Announcer: the stage's size, and what is behind the face: a colour, or an image file (PNG,
+    /// JPEG, GIF, WebP or SVG, embedded) scaled to cover the stage.
+    int stage_width_px = 800;
+    int stage_height_px = 450;
+    Rgb stage_colour{0x1d, 0x3b, 0x5c};
+    std::string background_image_path;
+    /// Announcer: where the face's rotation origin O (the neck) stands on the stage, and its eye
+    /// distance d there; the face is moved and scaled with them (thesis 7.2.3). Unset: the face
+    /// stands at the stage's bottom centre, as large as fits its height.
+    std::optional<Point2> face_origin_px;
+    double face_d_px = 0.0;  ///< 0: as large as fits the stage's height
+};
+
+/// The page, as a UTF-8 HTML document. `audio_path` is read (and embedded unless
+/// options.link_audio); its type is told by its extension (.ogg .oga .opus .wav .flac .mp3 .m4a).
+/// `timeline` gives the sentences and their times (the audio book's text); `animation` was made
+/// from it with `animator`'s face.
+/// \throws talkface::FileError if the audio or the background image cannot be read;
+///         talkface::InvalidArgument naming the option that is out of range, a link whose URL has a
+///         refused scheme, or an audio file of unknown type; and as render_animation_svg().
+TALKFACE_API std::string build_web_page(const SvgAnimator& animator, const Animation& animation,
+                                        const Timeline& timeline, const std::string& audio_path,
+                                        const WebPageOptions& options = {},
+                                        const ProgressCallback& progress = {});
+
+/// Writes build_web_page() to `path` through a temporary file and a rename: a failure never leaves
+/// half a page, and an existing file at `path` is kept until the new page is whole.
+/// \throws talkface::FileError if it cannot be written, and as build_web_page().
+TALKFACE_API void write_web_page(const std::string& path, const SvgAnimator& animator,
+                                 const Animation& animation, const Timeline& timeline,
+                                 const std::string& audio_path, const WebPageOptions& options = {},
+                                 const ProgressCallback& progress = {});
+
+/// `text` with & < > " ' replaced by character references, safe inside HTML or XML text and
+/// quoted attribute values.
+TALKFACE_API std::string escape_html(std::string_view text);
+
+}  // namespace v0
+}  // namespace talkface
+
+#endif

@@ -1,0 +1,185 @@
+// `talkface align`: a speech and its transcript in, each sentence's and syllable's times out
+// (SPEC "Contracts"), with an optional picture of the result (thesis Figures 3.5 and 3.8).
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <talkface/talkface.hpp>
+
+#include "alignment_plot.hpp"
+#include "commands.hpp"
+#include "common/atomic_file.hpp"
+
+namespace talkface_cli {
+
+namespace {
+
+struct AlignCommandOptions {
+    std::string audio_path;
+    std::string transcript_path;
+    bool json = false;
+    std::string plot_path;
+    std::string first_pause_text;
+    double c1 = talkface::AlignOptions{}.c1;
+    double c2 = talkface::AlignOptions{}.c2;
+    std::string output_path = "-";
+    bool quiet = false;
+};
+
+// "START,END" in seconds; nullopt unless it is exactly two numbers.
+std::optional<std::pair<double, double>> parse_pause(const std::string& text) {
+    std::istringstream in(text);
+    in.imbue(std::locale::classic());
+    double start = 0.0, end = 0.0;
+    if (!(in >> start) || in.get() != ',' || !(in >> end)) return std::nullopt;
+    in >> std::ws;
+    if (!in.eof()) return std::nullopt;
+    return std::make_pair(start, end);
+}
+
+const CLI::Validator& pause_validator() {
+    static const CLI::Validator validator(
+        [](std::string& text) -> std::string {
+            const auto pause = parse_pause(text);
+            if (pause && pause->first >= 0.0 && pause->second > pause->first) return {};
+            return "expected START,END in seconds with 0 <= START < END (e.g. 2.1,2.9), found \"" + text + "\"";
+        },
+        "START,END");
+    return validator;
+}
+
+// Milliseconds are the aligner's resolution; more digits would only be noise in the file.
+double rounded(double seconds) { return std::round(seconds * 1000.0) / 1000.0; }
+
+std::string timeline_json(const talkface::Timeline& timeline) {
+    nlohmann::ordered_json document;
+    document["sentences"] = nlohmann::ordered_json::array();
+    for (const auto& sentence : timeline.sentences)
+        document["sentences"].push_back(
+            {{"text", sentence.text}, {"start", rounded(sentence.start_s)}, {"end", rounded(sentence.end_s)}});
+    document["syllables"] = nlohmann::ordered_json::array();
+    for (const auto& syllable : timeline.syllables) {
+        nlohmann::ordered_json entry{{"text", syllable.text},          {"pinyin", syllable.pinyin},
+                                     {"start", rounded(syllable.start_s)}, {"end", rounded(syllable.end_s)},
+                                     {"sentence", syllable.sentence}};
+        if (syllable.final_start_s) entry["final_start"] = rounded(*syllable.final_start_s);
+        entry["confidence"] = std::round(syllable.confidence * 100.0) / 100.0;
+        document["syllables"].push_back(entry);
+    }
+    document["warnings"] = timeline.warnings;
+    return document.dump(2) + "\n";
+}
+
+std::string timeline_table(const talkface::Timeline& timeline) {
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(3);
+    std::size_t next = 0;
+    for (std::size_t k = 0; k < timeline.sentences.size(); ++k) {
+        const auto& sentence = timeline.sentences[k];
+        out << "sentence " << k + 1 << "  " << sentence.start_s << " - " << sentence.end_s << " s  " << sentence.text << '\n';
+        for (; next < timeline.syllables.size() && timeline.syllables[next].sentence == k; ++next) {
+            const auto& syllable = timeline.syllables[next];
+            out << "  " << syllable.text << '\t' << std::left << std::setw(8) << syllable.pinyin << std::right << ' '
+                << syllable.start_s << ' ' << syllable.final_start_s.value_or(syllable.start_s) << ' ' << syllable.end_s
+                << "  " << std::setprecision(2) << syllable.confidence << std::setprecision(3) << '\n';
+        }
+    }
+    return out.str();
+}
+
+// A one-line bar redrawn in place; only on a terminal (STYLE.md section 8).
+class ProgressBar {
+public:
+    bool update(double fraction, const std::string& stage) {
+        const int percent = static_cast<int>(fraction * 100.0);
+        if (percent == last_percent_ && stage == last_stage_) return true;
+        last_percent_ = percent;
+        last_stage_ = stage;
+        const int filled = percent * 30 / 100;
+        std::fprintf(stderr, "\r%-9s [%-30s] %3d%%", stage.c_str(), std::string(static_cast<std::size_t>(filled), '#').c_str(),
+                     percent);
+        std::fflush(stderr);
+        return true;
+    }
+    ~ProgressBar() {
+        if (last_percent_ >= 0) std::fputs("\r\033[K", stderr);
+    }
+
+private:
+    int last_percent_ = -1;
+    std::string last_stage_;
+};
+
+void run_align(const AlignCommandOptions& options) {
+    talkface::AlignOptions align_options;
+    align_options.c1 = options.c1;
+    align_options.c2 = options.c2;
+    if (!options.first_pause_text.empty()) {
+        const auto pause = parse_pause(options.first_pause_text).value_or(std::make_pair(0.0, 0.0));
+        align_options.sentence_cut = talkface::SentenceCutMode::first_pause;
+        align_options.first_pause_start_s = pause.first;
+        align_options.first_pause_end_s = pause.second;
+    }
+    const talkface::Timeline transcript = talkface::load_transcript(options.transcript_path);
+    const talkface::SpeechAligner aligner(align_options);
+    talkface::Timeline timeline;
+    {
+        std::optional<ProgressBar> bar;
+        if (!options.quiet && ::isatty(::fileno(stderr)) != 0) bar.emplace();
+        timeline = aligner.align_file(options.audio_path, transcript,
+                                      bar ? talkface::ProgressCallback([&](double fraction, const std::string& stage) {
+                                          return bar->update(fraction, stage);
+                                      })
+                                          : talkface::ProgressCallback{});
+    }
+    // Everything is computed before any output is written: a failure leaves no file behind.
+    const std::string result = options.json ? timeline_json(timeline) : timeline_table(timeline);
+    const std::string plot = options.plot_path.empty() ? std::string() : alignment_plot_svg(options.audio_path, timeline);
+    if (!options.plot_path.empty()) talkface::detail::write_file_atomically(options.plot_path, plot);
+    if (options.output_path == "-") std::cout << result << std::flush;
+    else talkface::detail::write_file_atomically(options.output_path, result);
+    if (!options.json)
+        for (const auto& warning : timeline.warnings) std::cerr << "talkface: warning: " << warning << '\n';
+}
+
+}  // namespace
+
+void setup_align_command(CLI::App& app) {
+    auto options = std::make_shared<AlignCommandOptions>();
+    CLI::App* align = app.add_subcommand("align", "Find when each sentence and syllable of a transcript is spoken");
+    align->add_option("AUDIO", options->audio_path, "Speech: WAV, FLAC or OGG, any rate, mono or stereo")
+        ->required()
+        ->check(CLI::ExistingFile);
+    align->add_option("TRANSCRIPT", options->transcript_path,
+                      "UTF-8 text, Traditional or Simplified, or numbered pinyin; fix a reading in place: 行{hang2}")
+        ->required()
+        ->check(CLI::ExistingFile);
+    align->add_flag("--json", options->json,
+                    "Print JSON: {\"sentences\":[{text,start,end}], \"syllables\":[{text,pinyin,start,end,sentence,"
+                    "final_start,confidence}], \"warnings\":[...]}, times in seconds");
+    align->add_option("--plot", options->plot_path, "Also draw the waveform, sentences and syllables as an SVG file");
+    align->add_option("--first-pause", options->first_pause_text,
+                      "Cut sentences by thesis Algorithm 3.1 from this pause between the first two sentences, in "
+                      "seconds; default: learn the pauses from the audio")
+        ->check(pause_validator());
+    align->add_option("--c1", options->c1, "Algorithm 3.1: shortest pause, as a share of the first one")
+        ->check(CLI::Range(0.5, 1.0))
+        ->capture_default_str();
+    align->add_option("--c2", options->c2, "Algorithm 3.1: loudest silence, as a multiple of the first pause's peak")
+        ->check(CLI::Range(1.0, 1.5))
+        ->capture_default_str();
+    align->add_option("-o,--output", options->output_path, "Write the result here instead of stdout (- is stdout)");
+    align->add_flag("-q,--quiet", options->quiet, "No progress bar");
+    align->callback([options] { run_align(*options); });
+}
+
+}  // namespace talkface_cli

@@ -1,0 +1,183 @@
+// `talkface animate`: a speech, its transcript and a face in, a web page where the face talks in
+// sync with the voice out (issue #6; thesis 6.3.2 and chapter 7), or the bare SVG animation.
+#include "animate_command.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <locale>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include "commands.hpp"
+#include "progress_bar.hpp"
+
+namespace talkface_cli {
+
+namespace {
+
+// Shares of the whole job in the progress bar: alignment is most of it.
+constexpr double kAlignedAt = 0.55;
+constexpr double kAnimatedAt = 0.6;
+
+std::optional<std::pair<double, double>> parse_pair(const std::string& text, char separator) {
+    std::istringstream in(text);
+    in.imbue(std::locale::classic());
+    double first = 0.0, second = 0.0;
+    if (!(in >> first) || in.get() != separator || !(in >> second)) return std::nullopt;
+    in >> std::ws;
+    if (!in.eof()) return std::nullopt;
+    return std::make_pair(first, second);
+}
+
+CLI::Validator pair_validator(char separator, const std::string& form, const std::string& example) {
+    return CLI::Validator(
+        [separator, form, example](std::string& text) -> std::string {
+            if (parse_pair(text, separator)) return {};
+            return "expected " + form + " (e.g. " + example + "), found \"" + text + "\"";
+        },
+        form);
+}
+
+bool is_svg_output(const std::string& path) {
+    const std::filesystem::path extension = std::filesystem::path(path).extension();
+    return extension == ".svg" || extension == ".SVG";
+}
+
+talkface::WebPageOptions page_options(const AnimateOptions& options) {
+    talkface::WebPageOptions page;
+    page.app = talkface::web_page_app_from_name(options.app);
+    page.title = options.title;
+    page.animation.encoding = talkface::animation_encoding_from_name(options.encoding);
+    page.link_audio = options.link_audio;
+    for (const std::string& link : options.links) {
+        const std::size_t equals = link.find('=');
+        // "TEXT=URL"; an absolute URL may hold '=' in its query, after its "://".
+        if (equals != std::string::npos && link.find("://") > equals) {
+            page.links.push_back({link.substr(0, equals), link.substr(equals + 1)});
+        } else {
+            page.links.push_back({link, link});
+        }
+    }
+    if (!options.background.empty()) {
+        if (options.background.front() == '#') {
+            page.stage_colour = talkface::rgb_from_hex(options.background, "--background");
+        } else {
+            page.background_image_path = options.background;
+        }
+    }
+    if (!options.face_origin.empty()) {
+        const auto origin = parse_pair(options.face_origin, ',').value_or(std::make_pair(0.0, 0.0));
+        page.face_origin_px = talkface::Point2{origin.first, origin.second};
+    }
+    page.face_d_px = options.face_d;
+    const auto stage = parse_pair(options.stage, 'x').value_or(std::make_pair(800.0, 450.0));
+    page.stage_width_px = static_cast<int>(stage.first);
+    page.stage_height_px = static_cast<int>(stage.second);
+    return page;
+}
+
+void run_animate(const AnimateOptions& options, const std::string& audio_path, const std::string& transcript_path) {
+    std::string linked_url;
+    if (options.link_audio) {
+        // The page links the audio where it lies, relative to the page's folder.
+        const std::filesystem::path page_folder =
+            std::filesystem::absolute(options.output_path).parent_path();
+        linked_url = std::filesystem::relative(std::filesystem::absolute(audio_path), page_folder).generic_string();
+    }
+    make_talking_face(options, audio_path, talkface::load_transcript(transcript_path), linked_url);
+}
+
+}  // namespace
+
+void add_page_options(CLI::App& command, AnimateOptions& options) {
+    command.add_option("--face", options.face_path, "Face model file (default: the built-in face)")
+        ->check(CLI::ExistingFile);
+    command.add_option("--fps", options.fps, "Frames per second of the animation")
+        ->check(CLI::Range(1.0, 120.0))
+        ->capture_default_str();
+    command.add_option("--seed", options.seed, "Seed of the simulated blinks and head moves")->capture_default_str();
+    command.add_option("--style", options.style, "Simulated behaviour: normal or announcer (faster head moves)")
+        ->check(CLI::IsMember({"normal", "announcer"}))
+        ->capture_default_str();
+    command
+        .add_option("--encoding", options.encoding,
+                    "keyframes: the face animated between key frames (small); frames: one group per frame")
+        ->check(CLI::IsMember({"keyframes", "frames"}))
+        ->capture_default_str();
+    command.add_flag("--link-audio", options.link_audio,
+                     "Link the audio file from the page instead of embedding it (keep it beside the page)");
+    command
+        .add_option("--app", options.app,
+                    "plain; announcer: the face on a stage with a background; audiobook: title, text with the "
+                    "spoken sentence highlighted, links, the face beside them")
+        ->check(CLI::IsMember({"plain", "announcer", "audiobook"}))
+        ->capture_default_str();
+    command.add_option("--title", options.title, "Title of the page (default: the first sentence)");
+    command.add_option("--link", options.links, "audiobook: a link under the text, TEXT=URL or URL (repeatable)");
+    command.add_option("--background", options.background,
+                       "announcer: the stage's background, a colour #rrggbb or an image file (PNG, JPEG, SVG ...)");
+    command
+        .add_option("--face-origin", options.face_origin,
+                    "announcer: where the face's neck (rotation origin O) stands on the stage, X,Y in pixels")
+        ->check(pair_validator(',', "X,Y", "600,420"));
+    command.add_option("--face-d", options.face_d, "announcer: the face's eye distance d on the stage, pixels")
+        ->check(CLI::PositiveNumber);
+    command.add_option("--stage", options.stage, "announcer: the stage's size, WIDTHxHEIGHT in pixels")
+        ->check(pair_validator('x', "WIDTHxHEIGHT", "800x450"))
+        ->capture_default_str();
+    command.add_option("-o,--output", options.output_path, "OUT.html for a web page, OUT.svg for the bare animation")
+        ->required();
+    command.add_flag("-q,--quiet", options.quiet, "No progress bar");
+}
+
+void make_talking_face(const AnimateOptions& options, const std::string& audio_path,
+                       const talkface::Timeline& transcript, const std::string& linked_audio_url) {
+    const bool is_svg = is_svg_output(options.output_path);
+    if (is_svg && (options.app != "plain" || options.link_audio)) {
+        throw CLI::ValidationError("--output", "an .svg output is the bare animation: --app and --link-audio need .html");
+    }
+    talkface::WebPageOptions page = page_options(options);
+    page.audio_url = linked_audio_url;
+    const talkface::FaceModel face =
+        options.face_path.empty() ? talkface::FaceModel::default_face() : talkface::FaceModel::load(options.face_path);
+
+    const std::unique_ptr<ProgressBar> bar = make_progress_bar(options.quiet);
+    const talkface::Timeline timeline =
+        talkface::SpeechAligner().align_file(audio_path, transcript, progress_part(bar.get(), 0.0, kAlignedAt));
+    const talkface::ExpressionSimulator simulator(timeline, options.seed,
+                                                  talkface::ExpressionStyle::from_name(options.style));
+    talkface::LipSyncOptions lip_sync;
+    lip_sync.fps = options.fps;
+    const talkface::Animation animation = talkface::animate(face, timeline, simulator, lip_sync);
+    if (bar) bar->update(kAnimatedAt, "animating");
+    const talkface::SvgAnimator animator(face);
+    // The output is written whole at the end (a temporary file renamed): a failure leaves no page.
+    if (is_svg) {
+        animator.write_animation_svg(options.output_path, animation, page.animation,
+                                     progress_part(bar.get(), kAnimatedAt, 1.0));
+    } else {
+        talkface::write_web_page(options.output_path, animator, animation, timeline, audio_path, page,
+                                 progress_part(bar.get(), kAnimatedAt, 1.0));
+    }
+    for (const std::string& warning : timeline.warnings) std::cerr << "talkface: warning: " << warning << '\n';
+}
+
+void setup_animate_command(CLI::App& app) {
+    auto options = std::make_shared<AnimateOptions>();
+    auto audio_path = std::make_shared<std::string>();
+    auto transcript_path = std::make_shared<std::string>();
+    CLI::App* animate = app.add_subcommand(
+        "animate", "Make a web page where the face talks in sync with a speech (or the bare SVG animation)");
+    animate->add_option("AUDIO", *audio_path, "Speech: WAV, FLAC or OGG, any rate, mono or stereo")
+        ->required()
+        ->check(CLI::ExistingFile);
+    animate->add_option("TRANSCRIPT", *transcript_path, "Its transcript, UTF-8 (as `talkface align` reads it)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    add_page_options(*animate, *options);
+    animate->callback([options, audio_path, transcript_path] { run_animate(*options, *audio_path, *transcript_path); });
+}
+
+}  // namespace talkface_cli

@@ -1,0 +1,43 @@
+// What `talkface animate` and `talkface demo` share: a speech, its transcript and a face in, a
+// talking face out, as a web page or a bare SVG animation (animate_command.cpp).
+#ifndef TALKFACE_CLI_ANIMATE_COMMAND_HPP
+#define TALKFACE_CLI_ANIMATE_COMMAND_HPP
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <talkface/talkface.hpp>
+
+namespace talkface_cli {
+
+struct AnimateOptions {
+    std::string face_path;  // empty: the built-in face
+    double fps = talkface::LipSyncOptions{}.fps;
+    std::uint64_t seed = 0;
+    std::string style = "normal";
+    std::string encoding = "keyframes";
+    bool link_audio = false;
+    std::string app = "plain";
+    std::string title;
+    std::vector<std::string> links;  // "TEXT=URL" or "URL"
+    std::string background;          // "#rrggbb" or an image file
+    std::string face_origin;         // "X,Y"
+    double face_d = 0.0;
+    std::string stage = "800x450";
+    std::string output_path;
+    bool quiet = false;
+};
+
+// Adds the options both commands take (all but the inputs) to `command`.
+void add_page_options(CLI::App& command, AnimateOptions& options);
+
+// Aligns `audio_path` with `transcript`, animates the face and writes options.output_path: a page
+// (.html), or the bare animation (.svg). A linked page links `linked_audio_url`.
+void make_talking_face(const AnimateOptions& options, const std::string& audio_path,
+                       const talkface::Timeline& transcript, const std::string& linked_audio_url);
+
+}  // namespace talkface_cli
+
+#endif

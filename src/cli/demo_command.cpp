@@ -1,0 +1,76 @@
+// `talkface demo`: `talkface animate` on the built-in face and the bundled Mandarin speech
+// (samples/speech/, compiled into the command), so one command shows what talkface does.
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include <CLI/CLI.hpp>
+#include <talkface/talkface.hpp>
+
+#include "animate_command.hpp"
+#include "commands.hpp"
+#include "common/atomic_file.hpp"
+#include "embedded_demo.hpp"
+
+namespace talkface_cli {
+
+namespace {
+
+std::string_view view_of(EmbeddedFile file) {
+    return {reinterpret_cast<const char*>(file.bytes), file.size};
+}
+
+// The speech as a temporary file for the aligner, which reads files; removed when done.
+class TemporarySpeech {
+public:
+    TemporarySpeech() {
+        std::string pattern = (std::filesystem::temp_directory_path() / "talkface-demo-XXXXXX.ogg").string();
+        const int fd = ::mkstemps(pattern.data(), 4);
+        if (fd < 0) throw talkface::FileError(pattern, std::strerror(errno));
+        ::close(fd);
+        path_ = pattern;
+        talkface::detail::write_file_atomically(path_, view_of(demo_speech()));
+    }
+    ~TemporarySpeech() {
+        std::error_code ignored;
+        std::filesystem::remove(path_, ignored);
+    }
+    TemporarySpeech(const TemporarySpeech&) = delete;
+    TemporarySpeech& operator=(const TemporarySpeech&) = delete;
+    const std::string& path() const { return path_; }
+
+private:
+    std::string path_;
+};
+
+void run_demo(const AnimateOptions& options) {
+    const TemporarySpeech speech;
+    const talkface::Timeline transcript =
+        talkface::read_transcript(view_of(demo_transcript()), {}, "samples/speech/demo.txt");
+    std::string linked_url;
+    if (options.link_audio) {
+        // A linked page needs the speech beside it: written there as OUT.ogg.
+        const std::filesystem::path audio = std::filesystem::path(options.output_path).replace_extension(".ogg");
+        talkface::detail::write_file_atomically(audio.string(), view_of(demo_speech()));
+        linked_url = audio.filename().generic_string();
+    }
+    make_talking_face(options, speech.path(), transcript, linked_url);
+}
+
+}  // namespace
+
+void setup_demo_command(CLI::App& app) {
+    auto options = std::make_shared<AnimateOptions>();
+    CLI::App* demo = app.add_subcommand(
+        "demo", "Make the web page of the built-in face saying a short bundled Mandarin speech (open it in a browser)");
+    add_page_options(*demo, *options);
+    demo->callback([options] { run_demo(*options); });
+}
+
+}  // namespace talkface_cli

@@ -1,0 +1,258 @@
+// `talkface keyframes`: the key frames of an animation (mouth shapes per time, expression events) as
+// JSON or TSV for other animation tools (issue #5), from audio and transcript or from a timeline.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <talkface/talkface.hpp>
+
+#include "commands.hpp"
+#include "common/atomic_file.hpp"
+
+namespace talkface_cli {
+
+namespace {
+
+using Json = nlohmann::json;
+
+struct KeyframesOptions {
+    std::string audio_path;
+    std::string transcript_path;
+    std::string timeline_path;
+    std::uint64_t seed = 0;
+    std::string style = "normal";
+    std::string events_path;
+    std::string events_mode = "add";
+    double fps = talkface::LipSyncOptions{}.fps;
+    bool tsv = false;
+    std::string output_path;
+};
+
+// nlohmann reports a byte offset; messages give line:column (columns count bytes here).
+Json parse_json(const std::string& path) {
+    const std::string text = talkface::detail::read_file(path);
+    try {
+        return Json::parse(text);
+    } catch (const Json::parse_error& error) {
+        std::size_t offset = std::min<std::size_t>(error.byte > 0 ? error.byte - 1 : 0, text.size());
+        int line = 1;
+        int column = 1;
+        for (std::size_t k = 0; k < offset; ++k) {
+            if (text[k] == '\n') {
+                ++line;
+                column = 1;
+            } else {
+                ++column;
+            }
+        }
+        std::string problem = error.what();
+        // "[json.exception.parse_error.101] parse error at line 1, column 16: syntax error ..." -> the reason.
+        const std::size_t reason = problem.find(": ");
+        if (reason != std::string::npos) problem = problem.substr(reason + 2);
+        throw talkface::ParseError(path, line, column, "", "not JSON: " + problem);
+    }
+}
+
+// Reads the items of a document the way bindings/python/talkface/timeline_json.py does, with the same
+// item names ("syllables[3].start") in messages.
+class DocumentReader {
+public:
+    explicit DocumentReader(std::string path) : path_(std::move(path)) {}
+
+    [[noreturn]] void fail(const std::string& item, const std::string& problem) const {
+        throw talkface::ParseError(path_, 0, 0, item, problem);
+    }
+
+    const Json& object(const Json& value, const std::string& item) const {
+        if (!value.is_object()) fail(item, "expected an object, found " + found(value));
+        return value;
+    }
+
+    const Json& list(const Json& value, const std::string& item) const {
+        if (!value.is_array()) fail(item, "expected a list, found " + found(value));
+        return value;
+    }
+
+    const Json& member(const Json& owner, const char* key, const std::string& item) const {
+        if (!owner.contains(key)) fail(item, "\"" + std::string(key) + "\" is missing");
+        return owner.at(key);
+    }
+
+    std::string text(const Json& owner, const char* key, const std::string& item) const {
+        const Json& value = member(owner, key, item);
+        if (!value.is_string()) fail(item + "." + key, "expected a string, found " + found(value));
+        return value.get<std::string>();
+    }
+
+    double number(const Json& owner, const char* key, const std::string& item,
+                  std::optional<double> default_value) const {
+        if (!owner.contains(key) && default_value) return *default_value;
+        const Json& value = member(owner, key, item);
+        if (!value.is_number() || !std::isfinite(value.get<double>())) {
+            fail(item + "." + key, "expected a number, found " + found(value));
+        }
+        return value.get<double>();
+    }
+
+private:
+    static std::string found(const Json& value) {
+        std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
+        return text.size() > 40 ? text.substr(0, 40) + "..." : text;
+    }
+
+    std::string path_;
+};
+
+// The `align` JSON (SPEC "Contracts"), plus the optional keys timeline_to_json writes.
+talkface::Timeline read_timeline(const std::string& path) {
+    const Json document = parse_json(path);
+    const DocumentReader reader(path);
+    reader.object(document, "document");
+    talkface::Timeline timeline;
+    const Json& sentences = reader.list(reader.member(document, "sentences", "document"), "sentences");
+    const Json& syllables = reader.list(reader.member(document, "syllables", "document"), "syllables");
+    for (std::size_t k = 0; k < sentences.size(); ++k) {
+        const std::string item = "sentences[" + std::to_string(k) + "]";
+        const Json& entry = reader.object(sentences[k], item);
+        timeline.sentences.push_back({reader.text(entry, "text", item), reader.number(entry, "start", item, 0.0),
+                                      reader.number(entry, "end", item, 0.0)});
+    }
+    for (std::size_t k = 0; k < syllables.size(); ++k) {
+        const std::string item = "syllables[" + std::to_string(k) + "]";
+        const Json& entry = reader.object(syllables[k], item);
+        talkface::Syllable syllable;
+        syllable.text = reader.text(entry, "text", item);
+        syllable.pinyin = reader.text(entry, "pinyin", item);
+        const Json& sentence = reader.member(entry, "sentence", item);
+        if (!sentence.is_number_unsigned() || sentence.get<std::size_t>() >= timeline.sentences.size()) {
+            reader.fail(item + ".sentence", "expected a sentence index 0.." +
+                                                std::to_string(static_cast<long>(timeline.sentences.size()) - 1) +
+                                                ", found " + sentence.dump());
+        }
+        syllable.sentence = sentence.get<std::size_t>();
+        syllable.start_s = reader.number(entry, "start", item, 0.0);
+        syllable.end_s = reader.number(entry, "end", item, 0.0);
+        if (entry.contains("final_start") && !entry.at("final_start").is_null()) {
+            syllable.final_start_s = reader.number(entry, "final_start", item, std::nullopt);
+        }
+        syllable.confidence = reader.number(entry, "confidence", item, 1.0);
+        if (syllable.confidence < 0.0 || syllable.confidence > 1.0) {
+            reader.fail(item + ".confidence", "expected 0..1, found " + entry.at("confidence").dump());
+        }
+        if (entry.contains("pause_after")) {
+            if (!entry.at("pause_after").is_boolean()) {
+                reader.fail(item + ".pause_after", "expected true or false, found " + entry.at("pause_after").dump());
+            }
+            syllable.pause_after = entry.at("pause_after").get<bool>();
+        }
+        timeline.syllables.push_back(std::move(syllable));
+    }
+    timeline.duration_s = reader.number(document, "duration", "document", 0.0);
+    return timeline;
+}
+
+// docs/events-format.md: the "events" list of the keyframes JSON, alone or inside a document.
+std::vector<talkface::ExpressionEvent> read_events(const std::string& path) {
+    const Json document = parse_json(path);
+    const DocumentReader reader(path);
+    const Json& events = reader.list(document.is_object() ? reader.member(document, "events", "document") : document,
+                                     "events");
+    std::vector<talkface::ExpressionEvent> result;
+    for (std::size_t k = 0; k < events.size(); ++k) {
+        const std::string item = "events[" + std::to_string(k) + "]";
+        const Json& entry = reader.object(events[k], item);
+        talkface::ExpressionEvent event;
+        try {
+            event.kind = talkface::expression_event_kind_from_name(reader.text(entry, "kind", item));
+        } catch (const talkface::InvalidArgument& error) {
+            reader.fail(item + ".kind", error.what());
+        }
+        event.start_s = reader.number(entry, "start", item, std::nullopt);
+        event.end_s = reader.number(entry, "end", item, std::nullopt);
+        event.amount = reader.number(entry, "amount", item, std::nullopt);
+        result.push_back(event);
+    }
+    return result;
+}
+
+talkface::Timeline timeline_for(const KeyframesOptions& options) {
+    if (!options.timeline_path.empty()) return read_timeline(options.timeline_path);
+    const talkface::Timeline transcript = talkface::load_transcript(options.transcript_path);
+    return talkface::SpeechAligner().align_file(options.audio_path, transcript);
+}
+
+void run_keyframes(const KeyframesOptions& options) {
+    const bool has_audio_form = !options.audio_path.empty() && !options.transcript_path.empty();
+    if (has_audio_form == !options.timeline_path.empty()) {
+        throw CLI::ValidationError("keyframes", "give either AUDIO TRANSCRIPT or --timeline TIMELINE.json");
+    }
+    // Everything is computed before the output is opened: a bad input leaves no file.
+    const talkface::Timeline timeline = timeline_for(options);
+    talkface::ExpressionSimulator simulator(timeline, options.seed, talkface::ExpressionStyle::from_name(options.style));
+    if (!options.events_path.empty()) {
+        const auto events = read_events(options.events_path);
+        const auto mode =
+            options.events_mode == "replace" ? talkface::UserEventMode::replace : talkface::UserEventMode::add;
+        try {
+            simulator.set_user_events(events, mode);
+        } catch (const talkface::Error& error) {
+            std::throw_with_nested(talkface::Error(error.code(), options.events_path + ": the events are refused"));
+        }
+    }
+    talkface::LipSyncOptions lip_sync;
+    lip_sync.fps = options.fps;
+    const auto key_frames = talkface::mouth_key_frames(timeline, lip_sync);
+    const std::string document = options.tsv ? talkface::key_frames_tsv(key_frames)
+                                             : talkface::key_frames_json(key_frames, simulator.events());
+    if (options.output_path == "-") {
+        std::cout << document << std::flush;
+    } else {
+        talkface::detail::write_file_atomically(options.output_path, document);
+    }
+}
+
+}  // namespace
+
+void setup_keyframes_command(CLI::App& app) {
+    auto options = std::make_shared<KeyframesOptions>();
+    CLI::App* keyframes = app.add_subcommand(
+        "keyframes", "Export the key frames (mouth shapes per time, blinks, brows, head moves) as JSON or TSV");
+    keyframes->add_option("AUDIO", options->audio_path, "Recorded speech (WAV, FLAC, OGG)")
+        ->check(CLI::ExistingFile);
+    keyframes->add_option("TRANSCRIPT", options->transcript_path, "Its transcript, UTF-8")->check(CLI::ExistingFile);
+    keyframes
+        ->add_option("--timeline", options->timeline_path,
+                     "An aligned timeline (the JSON of `talkface align`) instead of AUDIO TRANSCRIPT")
+        ->check(CLI::ExistingFile);
+    keyframes->add_option("--seed", options->seed, "Seed of the simulated events; the same seed, the same events")
+        ->capture_default_str();
+    keyframes->add_option("--style", options->style, "Simulated behaviour: normal or announcer (faster head moves)")
+        ->check(CLI::IsMember({"normal", "announcer"}))
+        ->capture_default_str();
+    keyframes
+        ->add_option("--events", options->events_path,
+                     "Your own events, JSON (docs/events-format.md): "
+                     "[{\"kind\":\"nod\",\"start\":s,\"end\":s,\"amount\":x}, ...]")
+        ->check(CLI::ExistingFile);
+    keyframes
+        ->add_option("--events-mode", options->events_mode,
+                     "add: your events drop only the simulated ones they overlap; "
+                     "replace: your events replace every simulated one of their kinds")
+        ->check(CLI::IsMember({"add", "replace"}))
+        ->capture_default_str();
+    keyframes->add_option("--fps", options->fps, "Frames per second; key frames sit on frames")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    keyframes->add_flag("--tsv", options->tsv, "Write the mouth key frames as time<TAB>shape lines instead of JSON");
+    keyframes->add_option("-o,--output", options->output_path, "Output file; - writes to stdout")->required();
+    keyframes->callback([options] { run_keyframes(*options); });
+}
+
+}  // namespace talkface_cli

@@ -1,0 +1,207 @@
+// The web page of thesis 6.3.2 and chapter 7, as a single HTML file: the animation inline, the
+// audio embedded or linked, and a script that makes the audio element the animation's clock.
+//
+// The thesis played its audio through a plug-in's extension element that no browser has now, and
+// let audio and animation run on separate clocks. Here the SVG's own timeline is paused for good
+// and set from audio.currentTime on every animation frame (and on seek, pause, rate change and
+// end), so the face can never drift from the voice, whatever the user does with the controls.
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "apps/apps.hpp"
+#include "common/atomic_file.hpp"
+#include "common/number_format.hpp"
+#include "render/html_text.hpp"
+#include "talkface/errors.hpp"
+#include "talkface/web_page.hpp"
+
+namespace talkface {
+inline namespace v0 {
+
+namespace {
+
+// Also reads the page's "#t=SECONDS[&pause]" fragment, once the audio knows its length, and writes
+// what it shows into data- attributes of <body> (data-tf-time, data-tf-sentence, data-tf-ready)
+// for tests and for pages that embed this one.
+constexpr const char* kScript = R"js((function () {
+  "use strict";
+  var audio = document.getElementById("tf-audio");
+  var clock = document.querySelector("svg.tf-animation");
+  while (clock.ownerSVGElement) clock = clock.ownerSVGElement;
+  var sentences = Array.prototype.slice.call(document.querySelectorAll(".tf-sentence"));
+  var current = -1;
+  clock.pauseAnimations();
+  function show() {
+    var t = audio.currentTime || 0;
+    clock.setCurrentTime(t);
+    var index = -1;
+    for (var k = 0; k < sentences.length; ++k) {
+      if (parseFloat(sentences[k].getAttribute("data-start")) <= t) index = k;
+    }
+    if (index !== current) {
+      if (current >= 0) sentences[current].classList.remove("tf-current");
+      if (index >= 0) sentences[index].classList.add("tf-current");
+      current = index;
+    }
+    document.body.setAttribute("data-tf-time", t.toFixed(3));
+    document.body.setAttribute("data-tf-sentence", String(index));
+  }
+  function tick() {
+    show();
+    if (!audio.paused && !audio.ended) window.requestAnimationFrame(tick);
+  }
+  audio.addEventListener("play", function () { window.requestAnimationFrame(tick); });
+  ["pause", "seeking", "seeked", "timeupdate", "ended", "ratechange", "loadedmetadata"].forEach(function (name) {
+    audio.addEventListener(name, show);
+  });
+  function play() {
+    var started = audio.play();
+    if (started && started.catch) started.catch(function () {});
+  }
+  sentences.forEach(function (sentence) {
+    function seek() {
+      audio.currentTime = parseFloat(sentence.getAttribute("data-start"));
+      play();
+    }
+    sentence.addEventListener("click", seek);
+    sentence.addEventListener("keydown", function (event) {
+      if (event.key === "Enter" || event.key === " ") { event.preventDefault(); seek(); }
+    });
+  });
+  var wanted = /(?:^#|&)t=([0-9]+(?:\.[0-9]+)?)/.exec(window.location.hash);
+  var stays = /(?:^#|&)pause(?:&|$)/.test(window.location.hash);
+  function ready() {
+    show();
+    document.body.setAttribute("data-tf-ready", "1");
+  }
+  function start() {
+    if (!wanted) { ready(); return; }
+    audio.addEventListener("seeked", ready, { once: true });
+    audio.currentTime = parseFloat(wanted[1]);
+    if (!stays) play();
+  }
+  if (audio.readyState >= 1) start(); else audio.addEventListener("loadedmetadata", start, { once: true });
+  show();
+})();
+)js";
+
+constexpr const char* kCommonStyle = "*{box-sizing:border-box}";
+
+void validate(const WebPageOptions& options) {
+    const int app = static_cast<int>(options.app);
+    if (app < 0 || app > static_cast<int>(WebPageApp::audiobook)) {
+        throw InvalidArgument("app", "expected plain, announcer or audiobook, found " + std::to_string(app));
+    }
+    if (options.stage_width_px <= 0 || options.stage_height_px <= 0) {
+        throw InvalidArgument("stage_width_px", "the stage must be at least 1 x 1 px, found " +
+                                                    std::to_string(options.stage_width_px) + " x " +
+                                                    std::to_string(options.stage_height_px));
+    }
+    if (!std::isfinite(options.face_d_px) || options.face_d_px < 0.0) {
+        throw InvalidArgument("face_d_px", "expected a finite number >= 0 (0: fit the stage), found " +
+                                               detail::format_shortest(options.face_d_px));
+    }
+    if (options.face_origin_px &&
+        (!std::isfinite(options.face_origin_px->x) || !std::isfinite(options.face_origin_px->y))) {
+        throw InvalidArgument("face_origin_px", "expected finite coordinates");
+    }
+    for (std::size_t k = 0; k < options.links.size(); ++k) {
+        detail::require_safe_link(options.links[k].url, "links[" + std::to_string(k) + "].url");
+    }
+}
+
+std::string file_name_of(const std::string& path) {
+    const std::size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+std::string audio_element(const std::string& audio_path, const WebPageOptions& options) {
+    const std::string mime = detail::audio_mime_type(audio_path);
+    if (mime.empty()) {
+        throw InvalidArgument("audio_path", "expected a .ogg, .oga, .opus, .wav, .flac, .mp3 or .m4a file, found \"" +
+                                                audio_path + "\"");
+    }
+    std::string source;
+    if (options.link_audio) {
+        if (!std::ifstream(audio_path, std::ios::binary)) throw FileError(audio_path, "cannot be opened");
+        const std::string url = options.audio_url.empty() ? file_name_of(audio_path) : options.audio_url;
+        detail::require_safe_link(url, "audio_url");
+        source = detail::percent_encode_url(url);
+    } else {
+        source = detail::data_uri(mime, detail::read_file(audio_path));
+    }
+    return "<audio id=\"tf-audio\" controls preload=\"auto\" src=\"" + escape_html(source) + "\"></audio>\n";
+}
+
+std::string without_prolog(std::string svg) {
+    if (svg.compare(0, 5, "<?xml") == 0) svg.erase(0, svg.find('\n') + 1);
+    return svg;
+}
+
+}  // namespace
+
+const char* web_page_app_name(WebPageApp app) {
+    switch (app) {
+        case WebPageApp::plain: return "plain";
+        case WebPageApp::announcer: return "announcer";
+        case WebPageApp::audiobook: return "audiobook";
+    }
+    return "unknown";
+}
+
+WebPageApp web_page_app_from_name(std::string_view name) {
+    if (name == "plain") return WebPageApp::plain;
+    if (name == "announcer") return WebPageApp::announcer;
+    if (name == "audiobook") return WebPageApp::audiobook;
+    throw InvalidArgument("app", "expected plain, announcer or audiobook, found \"" + std::string(name) + "\"");
+}
+
+std::string build_web_page(const SvgAnimator& animator, const Animation& animation, const Timeline& timeline,
+                           const std::string& audio_path, const WebPageOptions& options,
+                           const ProgressCallback& progress) {
+    validate(options);
+    const std::string audio = audio_element(audio_path, options);
+    const std::string title =
+        !options.title.empty() ? options.title
+                               : (!timeline.sentences.empty() ? timeline.sentences.front().text : std::string("talkface"));
+
+    detail::PageParts parts;
+    if (options.app == WebPageApp::announcer) {
+        // The stage is the background: the face is drawn without its own.
+        SvgOptions svg_options = animator.options();
+        svg_options.background.reset();
+        const SvgAnimator stage_animator(animator.face(), svg_options);
+        parts = detail::announcer_page(
+            without_prolog(stage_animator.render_animation_svg(animation, options.animation, progress)),
+            animator.face(), options, title, audio);
+    } else {
+        const std::string svg = without_prolog(animator.render_animation_svg(animation, options.animation, progress));
+        if (options.app == WebPageApp::audiobook) {
+            parts = detail::audiobook_page(svg, timeline, options, title, audio);
+        } else {
+            parts.style =
+                "body{margin:0;background:#eef2f6;font-family:sans-serif}"
+                ".tf-plain{max-width:520px;margin:24px auto;padding:0 16px}"
+                ".tf-plain h1{font-size:1.2rem;color:#334155}"
+                "svg.tf-animation{display:block;width:100%;height:auto;border-radius:8px;background:#fff}"
+                "audio{display:block;width:100%;margin-top:12px}";
+            parts.body = "<main class=\"tf-plain\">\n<h1>" + escape_html(title) + "</h1>\n" + svg + audio + "</main>\n";
+        }
+    }
+    return "<!DOCTYPE html>\n<html lang=\"zh\">\n<head>\n<meta charset=\"utf-8\">\n"
+           "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+           "<meta name=\"generator\" content=\"talkface\">\n<title>" +
+           escape_html(title) + "</title>\n<style>" + kCommonStyle + parts.style + "</style>\n</head>\n<body class=\"tf-" +
+           web_page_app_name(options.app) + "-page\">\n" + parts.body + "<script>\n" + kScript + "</script>\n</body>\n</html>\n";
+}
+
+void write_web_page(const std::string& path, const SvgAnimator& animator, const Animation& animation,
+                    const Timeline& timeline, const std::string& audio_path, const WebPageOptions& options,
+                    const ProgressCallback& progress) {
+    detail::write_file_atomically(path,
+                                  build_web_page(animator, animation, timeline, audio_path, options, progress));
+}
+
+}  // namespace v0
+}  // namespace talkface

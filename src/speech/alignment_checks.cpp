@@ -1,0 +1,150 @@
+#include "speech/alignment_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "common/number_format.hpp"
+#include "talkface/errors.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+// Read speech runs at 3-8 syllables per second; a sentence below 1.4 or above 14 per second of
+// speech is not the text it was given. Against the recording's own median a sentence may differ
+// by a factor of 2 (emphasis, lists, a hurried aside) but not more.
+constexpr double kFastestFramesPerSyllable = 7.0;
+constexpr double kSlowestFramesPerSyllable = 70.0;
+constexpr double kMaxRateRatio = 2.0;
+// A sentence fits worse than the others' median by this many robust standard deviations, and by
+// at least this much log-likelihood per frame, before it is called the wrong text.
+constexpr double kFitOutlierSpread = 4.0;
+constexpr double kFitOutlierMinimum = 1.5;
+// No syllable holds 0.45 s of silence (a stop closure lasts under 0.2 s), and no pause hides 0.4 s
+// of speech: either means the text and the audio part ways there.
+constexpr double kMaxSilenceInSyllableFrames = 45.0;
+constexpr double kMaxUnspokenSpeechFrames = 40.0;
+// A syllable lasts 0.1-0.6 s in read speech, up to ~1 s drawn out before a pause. Longer, the
+// audio has speech the text lacks; several in a row under 60 ms, the text has syllables the audio
+// lacks.
+constexpr std::size_t kLongestSyllableFrames = 120;
+constexpr std::size_t kShortestSyllableFrames = 6;
+constexpr std::size_t kMaxShortSyllablesInRow = 3;
+
+std::string describe(std::size_t sentence, const FrameSpan& span, const Timeline& transcript) {
+    return "sentence " + std::to_string(sentence + 1) + " (" + format_fixed(static_cast<double>(span.first_frame) * kFrameStepS, 2) +
+           "-" + format_fixed(static_cast<double>(span.end_frame) * kFrameStepS, 2) + " s, \"" +
+           transcript.sentences[sentence].text + "\")";
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+}  // namespace
+
+void check_sentence_lengths(const std::vector<FrameSpan>& spans, const LoudnessProfile& loudness,
+                            const Timeline& transcript) {
+    std::vector<std::size_t> syllables(transcript.sentences.size(), 0);
+    for (const auto& syllable : transcript.syllables) ++syllables[syllable.sentence];
+    std::vector<double> rates(spans.size(), 0.0);
+    std::vector<double> spoken_rates;
+    for (std::size_t k = 0; k < spans.size(); ++k) {
+        if (syllables[k] == 0) continue;
+        double speech = static_cast<double>(spans[k].length());
+        for (const auto& pause : loudness.pauses) {
+            if (pause.first_frame >= spans[k].first_frame && pause.end_frame <= spans[k].end_frame)
+                speech -= static_cast<double>(pause.length());
+        }
+        rates[k] = speech / static_cast<double>(syllables[k]);
+        spoken_rates.push_back(rates[k]);
+    }
+    const double typical = spoken_rates.size() >= 3 ? median(spoken_rates) : 0.0;
+    for (std::size_t k = 0; k < spans.size(); ++k) {
+        if (syllables[k] == 0) continue;
+        const double seconds_per_syllable = rates[k] * kFrameStepS;
+        const std::string heard = std::to_string(syllables[k]) + " syllables in " +
+                                  format_fixed(rates[k] * static_cast<double>(syllables[k]) * kFrameStepS, 2) +
+                                  " s of speech (" + format_fixed(seconds_per_syllable, 2) + " s each";
+        const std::string advice = "; is a sentence missing from the transcript or from the audio, or is its text wrong?";
+        if (rates[k] < kFastestFramesPerSyllable || rates[k] > kSlowestFramesPerSyllable) {
+            throw AlignmentError(describe(k, spans[k], transcript) + ": " + heard + ", outside what people say)" + advice);
+        }
+        if (typical > 0.0 && (rates[k] > kMaxRateRatio * typical || rates[k] < typical / kMaxRateRatio)) {
+            throw AlignmentError(describe(k, spans[k], transcript) + ": " + heard + ", while the other sentences take " +
+                                 format_fixed(typical * kFrameStepS, 2) + " s per syllable)" + advice);
+        }
+    }
+}
+
+void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProfile& loudness, std::size_t sentence,
+                const FrameSpan& span, const Timeline& transcript) {
+    const auto is_speech = [&](std::size_t t) { return loudness.activity_db[t] >= loudness.activity_threshold_db; };
+    const auto frames_text = [](std::size_t first, std::size_t end) {
+        return format_fixed(static_cast<double>(first) * kFrameStepS, 2) + "-" +
+               format_fixed(static_cast<double>(end) * kFrameStepS, 2) + " s";
+    };
+    const auto syllable_text = [&](std::size_t index) {
+        return "\"" + transcript.syllables[index].text + "\" (" + transcript.syllables[index].pinyin + ")";
+    };
+    std::size_t short_in_row = 0;
+    for (const auto& stretch : stretches) {
+        if (stretch.is_pause) continue;
+        const std::size_t length = stretch.end_frame - stretch.first_frame;
+        if (length > kLongestSyllableFrames) {
+            throw AlignmentError(describe(sentence, span, transcript) + ": the syllable " + syllable_text(stretch.syllable) +
+                                 " would last " + frames_text(stretch.first_frame, stretch.end_frame) +
+                                 ", longer than any syllable; the audio has speech the transcript lacks here (a missing sentence?)");
+        }
+        short_in_row = length < kShortestSyllableFrames ? short_in_row + 1 : 0;
+        if (short_in_row >= kMaxShortSyllablesInRow) {
+            throw AlignmentError(describe(sentence, span, transcript) + ": the syllables up to " +
+                                 syllable_text(stretch.syllable) + " are squeezed into under 60 ms each (the last at " +
+                                 frames_text(stretch.first_frame, stretch.end_frame) +
+                                 "); the transcript has syllables the audio lacks here (the wrong text?)");
+        }
+    }
+    for (const auto& stretch : stretches) {
+        std::size_t run = 0, longest = 0, longest_end = 0;
+        for (std::size_t t = stretch.first_frame; t < stretch.end_frame; ++t) {
+            run = is_speech(t) == stretch.is_pause ? run + 1 : 0;
+            if (run > longest) { longest = run; longest_end = t + 1; }
+        }
+        const double limit_frames = stretch.is_pause ? kMaxUnspokenSpeechFrames : kMaxSilenceInSyllableFrames;
+        if (static_cast<double>(longest) < limit_frames) continue;
+        const std::string where = format_fixed(static_cast<double>(longest_end - longest) * kFrameStepS, 2) + "-" +
+                                  format_fixed(static_cast<double>(longest_end) * kFrameStepS, 2) + " s";
+        const Syllable& syllable = transcript.syllables[stretch.syllable];
+        const std::string near = "\"" + syllable.text + "\" (" + syllable.pinyin + ")";
+        if (stretch.is_pause) {
+            throw AlignmentError(describe(sentence, span, transcript) + ": speech at " + where + ", after " + near +
+                                 ", has no syllable of the transcript; is a sentence or a phrase missing from it?");
+        }
+        throw AlignmentError(describe(sentence, span, transcript) + ": the syllable " + near + " would span a silence at " +
+                             where + "; the transcript does not match the audio here (a missing sentence, or the wrong text?)");
+    }
+}
+
+void check_fit(const std::vector<double>& fit_per_frame, const std::vector<FrameSpan>& spans,
+               const Timeline& transcript) {
+    std::vector<double> fits;
+    for (double fit : fit_per_frame)
+        if (std::isfinite(fit)) fits.push_back(fit);
+    if (fits.size() < 4) return;
+    const double typical = median(fits);
+    std::vector<double> deviations;
+    for (double fit : fits) deviations.push_back(std::fabs(fit - typical));
+    const double spread = 1.4826 * median(deviations);
+    const double limit = typical - std::max(kFitOutlierSpread * spread, kFitOutlierMinimum);
+    for (std::size_t k = 0; k < fit_per_frame.size(); ++k) {
+        if (!std::isfinite(fit_per_frame[k]) || fit_per_frame[k] >= limit) continue;
+        throw AlignmentError(describe(k, spans[k], transcript) + ": the audio does not sound like its text (fit " +
+                             format_fixed(fit_per_frame[k], 2) + " per frame against " + format_fixed(typical, 2) +
+                             " for the other sentences); check the transcript");
+    }
+}
+
+}  // namespace talkface::detail

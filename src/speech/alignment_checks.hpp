@@ -1,0 +1,42 @@
+// Whether audio and transcript belong together (issue #4: a missing or extra sentence, or the
+// wrong text, is reported with where, instead of a confident wrong timeline).
+#ifndef TALKFACE_SPEECH_ALIGNMENT_CHECKS_HPP
+#define TALKFACE_SPEECH_ALIGNMENT_CHECKS_HPP
+
+#include <cstddef>
+#include <vector>
+
+#include "speech/sentence_cutter.hpp"
+#include "talkface/timeline.hpp"
+
+namespace talkface::detail {
+
+// Each sentence's speaking rate (speech frames per syllable, pauses inside left out) against the
+// others' and against what people can say.
+// \throws talkface::AlignmentError naming the first sentence that does not fit, its text and times.
+void check_sentence_lengths(const std::vector<FrameSpan>& spans, const LoudnessProfile& loudness,
+                            const Timeline& transcript);
+
+// One stretch of an aligned sentence, in frames of the whole recording.
+struct AlignedStretch {
+    std::size_t first_frame = 0;
+    std::size_t end_frame = 0;
+    bool is_pause = false;       // a pause or the silence around the sentence
+    std::size_t syllable = 0;    // index into Timeline::syllables (pauses: the one before)
+};
+
+// Speech the transcript has no syllable for (a long run of speech inside a pause of the path) or
+// a syllable stretched over a long silence: what a missing sentence or a wrong text leaves behind.
+// \throws talkface::AlignmentError naming the sentence, the syllable and the time.
+void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProfile& loudness, std::size_t sentence,
+                const FrameSpan& span, const Timeline& transcript);
+
+// How well each aligned sentence's frames fit the models of the sounds its text says, per frame,
+// against the other sentences of the same recording.
+// \throws talkface::AlignmentError naming the sentence that fits far worse than the rest.
+void check_fit(const std::vector<double>& fit_per_frame, const std::vector<FrameSpan>& spans,
+               const Timeline& transcript);
+
+}  // namespace talkface::detail
+
+#endif

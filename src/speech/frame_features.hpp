@@ -1,0 +1,49 @@
+// Per-frame features of the speech (10 ms hop, 25 ms window at 16 kHz), computed while the audio
+// streams in, so that samples are never all held: an hour is 360 000 frames of floats.
+#ifndef TALKFACE_SPEECH_FRAME_FEATURES_HPP
+#define TALKFACE_SPEECH_FRAME_FEATURES_HPP
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace talkface::detail {
+
+class AudioSource;
+
+constexpr int kAnalysisRateHz = 16000;
+constexpr double kFrameStepS = 0.010;
+
+// Columns of a feature frame.
+enum FeatureColumn : int {
+    kCepstrum0 = 0,                 // MFCC c0..c12
+    kCepstrumCount = 13,
+    kEnergyDb = kCepstrumCount,     // whole band, dB re full scale
+    kLowBandDb,                     // 80-900 Hz: voicing, nasals
+    kMidBandDb,                     // 900-2500 Hz
+    kHighBandDb,                    // 2500-8000 Hz: frication (2500-3400 survives a telephone band)
+    kPeakAmplitude,                 // largest |sample| of the frame's 10 ms: Algorithm 3.1's "volume"
+    kFeatureCount,
+};
+
+// Frame t covers [t, t + 1) * kFrameStepS of the audio; its analysis window is centred there.
+struct FeatureTrack {
+    std::vector<float> values;  // frame-major, kFeatureCount per frame
+    std::size_t frame_count = 0;
+    double duration_s = 0.0;
+    float peak_amplitude = 0.0f;  // of the whole input, before resampling
+
+    float at(std::size_t frame, int column) const {
+        return values[frame * kFeatureCount + static_cast<std::size_t>(column)];
+    }
+};
+
+// Reads `source` to the end in blocks, resamples to kAnalysisRateHz and computes the features.
+// `on_progress(fraction)` is called after each block (it may throw to cancel).
+// \throws talkface::InvalidArgument naming the audio if it is silent; what the source throws.
+FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)>& on_progress);
+
+}  // namespace talkface::detail
+
+#endif

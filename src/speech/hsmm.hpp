@@ -1,0 +1,36 @@
+// Viterbi search of a hidden semi-Markov model: a left-to-right chain of states, each held for an
+// explicit number of frames drawn from its duration prior (thesis 3.3 names an HMM with Viterbi
+// search; SPEC "Alignment": explicit durations are what keeps a slow sentence's consonants short).
+#ifndef TALKFACE_SPEECH_HSMM_HPP
+#define TALKFACE_SPEECH_HSMM_HPP
+
+#include <cstddef>
+#include <vector>
+
+#include "speech/phone_chain.hpp"
+
+namespace talkface::detail {
+
+// Per-frame log-likelihood of each phone class, frame-major (kPhoneClassCount per frame).
+struct EmissionScores {
+    std::vector<float> values;
+    std::size_t frame_count = 0;
+    float at(std::size_t frame, int phone_class) const {
+        return values[frame * kPhoneClassCount + static_cast<std::size_t>(phone_class)];
+    }
+};
+
+// Frames [first_frame, end_frame) held by `state`; optional states the path skipped have none.
+struct StateSegment {
+    std::size_t state = 0;
+    std::size_t first_frame = 0;
+    std::size_t end_frame = 0;
+};
+
+// The best path through all of `states` over all frames of `emissions` (each non-optional state
+// at least its min_frames). Empty if no path fits (too few frames for the chain).
+std::vector<StateSegment> viterbi_align(const std::vector<PhoneState>& states, const EmissionScores& emissions);
+
+}  // namespace talkface::detail
+
+#endif

@@ -1,0 +1,243 @@
+#include "speech/phone_chain.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "talkface/errors.hpp"
+#include "talkface/transcript.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+// Typical durations of Mandarin segments in 10 ms frames (read speech, phonetic literature:
+// unaspirated bursts ~15-20 ms, aspiration ~70-90 ms, sibilants ~100-130 ms, closures ~50 ms);
+// the rate scaling of vowels fits the rest to the sentence.
+PhoneState consonant(PhoneClass phone_class, double median_frames, double log_sigma, std::size_t max_frames) {
+    PhoneState state;
+    state.phone_class = phone_class;
+    state.role = StateRole::initial;
+    state.median_frames = median_frames;
+    state.log_sigma = log_sigma;
+    state.max_frames = max_frames;
+    return state;
+}
+
+PhoneState vowel(PhoneClass phone_class, double median_frames) {
+    PhoneState state;
+    state.phone_class = phone_class;
+    state.role = StateRole::final;
+    state.median_frames = median_frames;
+    state.log_sigma = 0.5;
+    state.stretches = true;
+    return state;
+}
+
+PhoneClass vowel_class(char letter) {
+    switch (letter) {
+        case 'a': return kVowelA;
+        case 'e': return kVowelE;
+        case 'i': return kVowelI;
+        case 'o': return kVowelO;
+        case 'u': return kVowelU;
+        default: return kVowelV;
+    }
+}
+
+bool is_vowel_letter(char letter) { return std::string_view("aeiouv").find(letter) != std::string_view::npos; }
+
+struct SplitSyllable {
+    std::string initial;
+    std::string final;  // u-umlaut as v, y- and w- spelled out as medials
+};
+
+SplitSyllable split(std::string toneless) {
+    for (auto& c : toneless) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::size_t colon = toneless.find("u:");
+    if (colon != std::string::npos) toneless.replace(colon, 2, "v");
+    const std::size_t umlaut = toneless.find("\xC3\xBC");  // ü
+    if (umlaut != std::string::npos) toneless.replace(umlaut, 2, "v");
+    SplitSyllable result;
+    static const char* const kInitials[] = {"zh", "ch", "sh", "b", "p", "m", "f", "d", "t", "n", "l", "g",
+                                            "k", "h", "j", "q", "x", "r", "z", "c", "s", "y", "w"};
+    // The bare nasal interjections m, n, ng, hm, hng are not initial + final.
+    if (toneless == "m" || toneless == "n" || toneless == "ng" || toneless == "hm" || toneless == "hng" ||
+        toneless == "r") {
+        result.final = toneless;
+        return result;
+    }
+    for (const char* initial : kInitials) {
+        const std::string_view candidate(initial);
+        if (toneless.size() > candidate.size() && toneless.compare(0, candidate.size(), candidate) == 0) {
+            result.initial = std::string(candidate);
+            result.final = toneless.substr(candidate.size());
+            break;
+        }
+    }
+    if (result.initial.empty()) result.final = toneless;
+    // After j q x y, u is u-umlaut; y and w are the medials i, u, u-umlaut.
+    if ((result.initial == "j" || result.initial == "q" || result.initial == "x" || result.initial == "y") &&
+        !result.final.empty() && result.final[0] == 'u')
+        result.final[0] = 'v';
+    if (result.initial == "y") {
+        if (result.final[0] != 'i' && result.final[0] != 'v') result.final = "i" + result.final;
+        result.initial.clear();
+    } else if (result.initial == "w") {
+        if (result.final[0] != 'u') result.final = "u" + result.final;
+        result.initial.clear();
+    }
+    return result;
+}
+
+// States of the initial; a stop or affricate after speech begins with its closure.
+void add_initial(const std::string& initial, bool after_speech, std::vector<PhoneState>& states) {
+    auto closure = [&] {
+        if (!after_speech) return;
+        PhoneState state = consonant(kSilence, 5.0, 0.5, 20);
+        state.role = StateRole::closure;
+        states.push_back(state);
+    };
+    if (initial == "b" || initial == "d" || initial == "g") {
+        closure();
+        states.push_back(consonant(kBurst, 2.0, 0.5, 6));
+    } else if (initial == "p" || initial == "t" || initial == "k") {
+        closure();
+        states.push_back(consonant(kBurst, 2.0, 0.5, 6));
+        states.push_back(consonant(kAspiration, 6.0, 0.4, 16));
+    } else if (initial == "j" || initial == "zh" || initial == "z") {
+        closure();
+        states.push_back(consonant(kSibilant, 5.0, 0.45, 14));
+    } else if (initial == "q" || initial == "ch" || initial == "c") {
+        closure();
+        states.push_back(consonant(kSibilant, 9.0, 0.4, 22));
+    } else if (initial == "s" || initial == "sh" || initial == "x") {
+        states.push_back(consonant(kSibilant, 11.0, 0.35, 28));
+    } else if (initial == "f") {
+        states.push_back(consonant(kAspiration, 9.0, 0.4, 22));
+    } else if (initial == "h") {
+        states.push_back(consonant(kAspiration, 7.0, 0.45, 20));
+    } else if (initial == "m" || initial == "n") {
+        states.push_back(consonant(kNasal, 6.0, 0.45, 16));
+    } else if (initial == "l" || initial == "r") {
+        states.push_back(consonant(kLiquid, 5.0, 0.45, 16));
+    }
+}
+
+void add_final(const std::string& initial, const std::string& final, std::vector<PhoneState>& states) {
+    if (final == "m" || final == "n" || final == "ng" || final == "hm" || final == "hng") {
+        if (final[0] == 'h') states.push_back(consonant(kAspiration, 7.0, 0.45, 20));
+        PhoneState nasal = vowel(kNasal, 14.0);
+        states.push_back(nasal);
+        return;
+    }
+    if (final == "r") {
+        states.push_back(vowel(kLiquid, 12.0));
+        return;
+    }
+    const bool is_apical = final == "i" && (initial == "z" || initial == "c" || initial == "s" || initial == "zh" ||
+                                            initial == "ch" || initial == "sh" || initial == "r");
+    if (is_apical) {
+        states.push_back(vowel(kVowelApical, 14.0));
+        return;
+    }
+    if (final == "er") {
+        states.push_back(vowel(kVowelE, 10.0));
+        states.push_back(vowel(kLiquid, 6.0));
+        return;
+    }
+    std::string letters = final;
+    bool has_nasal_coda = false;
+    if (letters.size() >= 3 && letters.compare(letters.size() - 2, 2, "ng") == 0) {
+        letters.resize(letters.size() - 2);
+        has_nasal_coda = true;
+    } else if (letters.size() >= 2 && letters.back() == 'n') {
+        letters.pop_back();
+        has_nasal_coda = true;
+    }
+    // ong and iong are [ʊŋ], ao ends in [u]; ê is e.
+    for (std::size_t i = 0; i < letters.size(); ++i) {
+        if (letters[i] == 'o' && (has_nasal_coda || (i > 0 && letters[i - 1] == 'a'))) letters[i] = 'u';
+        if (!is_vowel_letter(letters[i])) letters[i] = 'e';
+    }
+    const std::size_t count = letters.size();
+    const bool has_medial = count > 1 && (letters[0] == 'i' || letters[0] == 'u' || letters[0] == 'v');
+    for (std::size_t i = 0; i < count; ++i) {
+        const bool is_medial = has_medial && i == 0;
+        const bool is_offglide = i + 1 == count && i >= 1 && !(i == 1 && has_medial) &&
+                                 (letters[i] == 'i' || letters[i] == 'u');
+        states.push_back(vowel(vowel_class(letters[i]), is_medial ? 4.0 : is_offglide ? 6.0 : 14.0));
+    }
+    if (has_nasal_coda) {
+        PhoneState coda = vowel(kNasal, 6.0);
+        coda.log_sigma = 0.55;
+        states.push_back(coda);
+    }
+}
+
+PhoneState pause_state(StateRole role, std::size_t syllable, double median_frames, std::size_t max_frames,
+                       double entry_log_penalty) {
+    PhoneState state;
+    state.phone_class = kSilence;
+    state.role = role;
+    state.syllable = syllable;
+    state.median_frames = median_frames;
+    state.log_sigma = 0.7;
+    state.max_frames = max_frames;
+    state.is_optional = true;
+    state.entry_log_penalty = entry_log_penalty;
+    return state;
+}
+
+}  // namespace
+
+std::vector<PhoneState> build_phone_chain(const std::vector<const Syllable*>& syllables, std::size_t frames,
+                                          std::size_t speech_frames) {
+    std::vector<PhoneState> states;
+    // The cutter leaves at most ~0.3 s of pause on each side; 1.1 s covers a cut that is off by
+    // a weak first or last sound, and bounds the search (the edge states would otherwise be the
+    // costliest, quadratic in the sentence's length).
+    const std::size_t edge_max_frames = std::min<std::size_t>(std::max<std::size_t>(frames, 1), 110);
+    PhoneState leading = pause_state(StateRole::edge_silence, 0, 1.0, edge_max_frames, 0.0);
+    states.push_back(leading);
+    for (std::size_t index = 0; index < syllables.size(); ++index) {
+        const Syllable& syllable = *syllables[index];
+        std::string_view toneless = syllable.pinyin;
+        if (!toneless.empty() && toneless.back() >= '0' && toneless.back() <= '5') toneless.remove_suffix(1);
+        if (toneless.empty()) throw InvalidArgument("syllable " + std::to_string(index) + " (\"" + syllable.text + "\")",
+                                                    "empty pinyin \"" + syllable.pinyin + "\"");
+        const SplitSyllable parts = split(std::string(toneless));
+        if (index > 0) {
+            const bool has_comma = syllables[index - 1]->pause_after;
+            states.push_back(has_comma ? pause_state(StateRole::comma_pause, index - 1, 20.0, 200, 0.0)
+                                       : pause_state(StateRole::short_pause, index - 1, 6.0, 60, -3.0));
+        }
+        const std::size_t first_state = states.size();
+        add_initial(parts.initial, index > 0, states);
+        add_final(parts.initial, parts.final, states);
+        if (states.size() == first_state) throw InvalidArgument("syllable " + std::to_string(index) + " (\"" + syllable.text + "\")",
+                                                                "\"" + syllable.pinyin + "\" is not a Mandarin syllable");
+        for (std::size_t s = first_state; s < states.size(); ++s) states[s].syllable = index;
+    }
+    states.push_back(pause_state(StateRole::edge_silence, syllables.size() - 1, 1.0, edge_max_frames, 0.0));
+
+    // Consonants keep their durations; vowels share what the speech leaves them.
+    double fixed_frames = 0.0;
+    double stretch_frames = 0.0;
+    for (const auto& state : states) {
+        if (state.role == StateRole::edge_silence || state.is_optional) continue;
+        (state.stretches ? stretch_frames : fixed_frames) += state.median_frames;
+    }
+    const double scale = std::clamp((static_cast<double>(speech_frames) - fixed_frames) / std::max(stretch_frames, 1.0), 0.35, 4.0);
+    for (auto& state : states) {
+        if (state.stretches) {
+            state.median_frames *= scale;
+            state.max_frames = static_cast<std::size_t>(std::ceil(state.median_frames * 3.5)) + 4;
+        }
+        if (state.role == StateRole::edge_silence) continue;
+        state.max_frames = std::min(state.max_frames, std::max<std::size_t>(frames, 1));
+    }
+    return states;
+}
+
+}  // namespace talkface::detail

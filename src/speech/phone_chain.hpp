@@ -1,0 +1,65 @@
+// A sentence's syllables as a left-to-right chain of broad phone-class states with duration
+// priors (SPEC "Alignment": a hidden semi-Markov model; consonants do not stretch with the
+// speaking rate, vowels do).
+#ifndef TALKFACE_SPEECH_PHONE_CHAIN_HPP
+#define TALKFACE_SPEECH_PHONE_CHAIN_HPP
+
+#include <cstddef>
+#include <string_view>
+#include <vector>
+
+#include "talkface/timeline.hpp"
+
+namespace talkface::detail {
+
+// Broad classes of Mandarin sounds; each has one emission model. Stop and affricate closures
+// share silence's.
+enum PhoneClass : int {
+    kSilence = 0,
+    kBurst,        // release of b p d t g k
+    kAspiration,   // aspiration of p t k, and the weak fricatives f h
+    kSibilant,     // s sh x, and the frication of z c zh ch j q
+    kNasal,        // m n, and the codas n ng
+    kLiquid,       // l r
+    kVowelA,
+    kVowelE,
+    kVowelI,
+    kVowelO,
+    kVowelU,
+    kVowelV,       // u-umlaut
+    kVowelApical,  // the empty rime of zi ci si zhi chi shi ri
+    kPhoneClassCount,
+};
+
+enum class StateRole : int {
+    edge_silence,   // before the first and after the last syllable of a sentence
+    short_pause,    // optional, between syllables
+    comma_pause,    // optional, where the transcript has ，、：
+    closure,        // of a stop or affricate after speech: the syllable starts here (SPEC)
+    initial,
+    final,
+};
+
+struct PhoneState {
+    PhoneClass phone_class = kSilence;
+    StateRole role = StateRole::initial;
+    std::size_t syllable = 0;       // index into the sentence's syllables (pauses: the one before)
+    double median_frames = 1.0;     // log-normal duration prior; vowels are scaled to the rate
+    double log_sigma = 0.5;
+    std::size_t min_frames = 1;
+    std::size_t max_frames = 1;
+    bool is_optional = false;       // the path may skip it
+    bool stretches = false;         // scaled with the speaking rate (vowels)
+    double entry_log_penalty = 0.0; // added when the state is used (a cheap short pause)
+};
+
+// The chain of one sentence: edge silence, syllables (with optional pauses between them), edge
+// silence. `frames` is the sentence's length including the edge silences, `speech_frames` the
+// part that is speech; vowel durations are scaled to fill it.
+// \throws talkface::InvalidArgument naming the syllable if its pinyin is not Mandarin.
+std::vector<PhoneState> build_phone_chain(const std::vector<const Syllable*>& syllables, std::size_t frames,
+                                          std::size_t speech_frames);
+
+}  // namespace talkface::detail
+
+#endif

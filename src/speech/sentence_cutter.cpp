@@ -1,0 +1,270 @@
+#include "speech/sentence_cutter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "common/number_format.hpp"
+#include "talkface/errors.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+// Shorter quiet runs are stop closures and the gaps of a phrase, never a sentence's end.
+constexpr double kMinPauseS = 0.12;
+constexpr std::size_t kSmoothingFrames = 5;
+// Noise floors are a low percentile of each band: the quietest 5% of any recording with pauses
+// is noise, whatever its level (learned from the audio, not set by hand as in Lai and Tsai).
+constexpr double kFloorPercentile = 0.05;
+constexpr double kSpeechPercentile = 0.95;
+// Sentence-cut score: the log duration of a sentence against its syllable count (sd of the log),
+// and the reward for ending a sentence at a long pause.
+constexpr double kSentenceDurationSigma = 0.35;
+constexpr double kPauseWeight = 1.5;
+constexpr double kNegativeInfinity = -std::numeric_limits<double>::infinity();
+
+float percentile(std::vector<float> values, double fraction) {
+    const auto index = static_cast<std::size_t>(fraction * static_cast<double>(values.size() - 1));
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(index), values.end());
+    return values[index];
+}
+
+float column_percentile(const FeatureTrack& track, int column, double fraction) {
+    std::vector<float> values(track.frame_count);
+    for (std::size_t t = 0; t < track.frame_count; ++t) values[t] = track.at(t, column);
+    return percentile(std::move(values), fraction);
+}
+
+std::string seconds(std::size_t frame) { return format_fixed(static_cast<double>(frame) * kFrameStepS, 2); }
+
+std::string span_text(const FrameSpan& span) { return seconds(span.first_frame) + "-" + seconds(span.end_frame) + " s"; }
+
+std::vector<std::size_t> syllables_per_sentence(const Timeline& transcript) {
+    std::vector<std::size_t> counts(transcript.sentences.size(), 0);
+    for (const auto& syllable : transcript.syllables) ++counts.at(syllable.sentence);
+    return counts;
+}
+
+// Algorithm 3.1, steps 2-8, literally: V = the loudest sample of the selected pause, silences are
+// runs quieter than c2 V lasting longer than c1 times the pause, speaking parts are what is left.
+std::vector<FrameSpan> speaking_parts_from_first_pause(const FeatureTrack& track, const AlignOptions& options) {
+    const double duration_s = static_cast<double>(track.frame_count) * kFrameStepS;
+    if (!(options.first_pause_start_s >= 0.0 && options.first_pause_end_s > options.first_pause_start_s &&
+          options.first_pause_end_s <= duration_s + kFrameStepS)) {
+        throw InvalidArgument("first_pause", "expected 0 <= start < end <= " + format_fixed(duration_s, 3) +
+                                                 " s (the audio's length), found " +
+                                                 format_fixed(options.first_pause_start_s, 3) + "-" +
+                                                 format_fixed(options.first_pause_end_s, 3) + " s");
+    }
+    const auto pause_first = static_cast<std::size_t>(options.first_pause_start_s / kFrameStepS);
+    const auto pause_end = std::min(track.frame_count,
+                                    std::max(pause_first + 1, static_cast<std::size_t>(std::ceil(options.first_pause_end_s / kFrameStepS))));
+    float loudest = 0.0f;
+    for (std::size_t t = pause_first; t < pause_end; ++t) loudest = std::max(loudest, track.at(t, kPeakAmplitude));
+    const double min_pause_frames = (options.first_pause_end_s - options.first_pause_start_s) * options.c1 / kFrameStepS;
+    const double noise_level = loudest * options.c2;
+    auto is_quiet = [&](std::size_t t) { return track.at(t, kPeakAmplitude) < noise_level; };
+
+    // Step 5 starts from t_s: what precedes it is the first speaking part.
+    std::vector<FrameSpan> silences;
+    for (std::size_t t = pause_first; t < track.frame_count;) {
+        if (!is_quiet(t)) { ++t; continue; }
+        std::size_t end = t;
+        while (end < track.frame_count && is_quiet(end)) ++end;
+        if (static_cast<double>(end - t) > min_pause_frames) silences.push_back({t, end});
+        t = end;
+    }
+    std::vector<FrameSpan> parts;
+    std::size_t part_first = 0;
+    auto add_part = [&](std::size_t first, std::size_t end) {
+        // Quiet edges (the leading silence of the file, a short quiet tail) are not speech.
+        while (first < end && is_quiet(first)) ++first;
+        while (end > first && is_quiet(end - 1)) --end;
+        // A lone click a few milliseconds long is not a sentence.
+        if (end - first >= 3) parts.push_back({first, end});
+    };
+    for (const auto& silence : silences) {
+        add_part(part_first, silence.first_frame);
+        part_first = silence.end_frame;
+    }
+    add_part(part_first, track.frame_count);
+    return parts;
+}
+
+std::vector<FrameSpan> choose_sentence_pauses(const LoudnessProfile& loudness, const std::vector<std::size_t>& syllables,
+                                              const Timeline& transcript) {
+    const std::size_t sentence_count = syllables.size();
+    const auto& pauses = loudness.pauses;
+    const std::size_t boundary_count = sentence_count - 1;
+    if (pauses.size() < boundary_count) {
+        throw AlignmentError("the transcript has " + std::to_string(sentence_count) +
+                             " spoken sentences but the audio has only " + std::to_string(pauses.size() + 1) +
+                             " stretches of speech between pauses (" +
+                             span_text({loudness.speech_first_frame, loudness.speech_end_frame}) +
+                             "); is a sentence missing from the audio or added to the transcript?");
+    }
+    std::size_t total_syllables = 0;
+    for (std::size_t count : syllables) total_syllables += count;
+    std::vector<std::size_t> lengths;
+    for (const auto& pause : pauses) lengths.push_back(pause.length());
+    std::sort(lengths.rbegin(), lengths.rend());
+    double speech_frames = static_cast<double>(loudness.speech_end_frame - loudness.speech_first_frame);
+    for (std::size_t i = 0; i < boundary_count; ++i) speech_frames -= static_cast<double>(lengths[i]);
+    const double frames_per_syllable = std::max(5.0, speech_frames / static_cast<double>(total_syllables));
+
+    auto sentence_score = [&](std::size_t first, std::size_t end, std::size_t sentence) {
+        if (end <= first) return kNegativeInfinity;
+        const double expected = frames_per_syllable * static_cast<double>(syllables[sentence]);
+        const double z = std::log(static_cast<double>(end - first) / expected) / kSentenceDurationSigma;
+        return -0.5 * z * z;
+    };
+    auto pause_score = [&](std::size_t pause) {
+        return kPauseWeight * std::log(static_cast<double>(pauses[pause].length()) * kFrameStepS / kMinPauseS);
+    };
+    auto too_long = [&](std::size_t first, std::size_t end, std::size_t sentence) {
+        return static_cast<double>(end - first) > 6.0 * frames_per_syllable * static_cast<double>(syllables[sentence]) + 300.0;
+    };
+
+    // Dynamic programming over (boundary k, pause c): the best cut of sentences 0..k with sentence
+    // k ending at pause c.
+    const std::size_t pause_count = pauses.size();
+    std::vector<double> score(boundary_count * pause_count, kNegativeInfinity);
+    std::vector<std::size_t> previous(boundary_count * pause_count, 0);
+    for (std::size_t c = 0; c + boundary_count <= pause_count; ++c)
+        score[c] = sentence_score(loudness.speech_first_frame, pauses[c].first_frame, 0) + pause_score(c);
+    for (std::size_t k = 1; k < boundary_count; ++k) {
+        for (std::size_t c = k; c + boundary_count - k <= pause_count; ++c) {
+            double best = kNegativeInfinity;
+            std::size_t best_previous = 0;
+            for (std::size_t p = c; p-- > k - 1;) {
+                if (too_long(pauses[p].end_frame, pauses[c].first_frame, k)) break;
+                const double candidate = score[(k - 1) * pause_count + p];
+                if (candidate == kNegativeInfinity) continue;
+                const double total = candidate + sentence_score(pauses[p].end_frame, pauses[c].first_frame, k);
+                if (total > best) { best = total; best_previous = p; }
+            }
+            if (best == kNegativeInfinity) continue;
+            score[k * pause_count + c] = best + pause_score(c);
+            previous[k * pause_count + c] = best_previous;
+        }
+    }
+    double best = kNegativeInfinity;
+    std::size_t last = 0;
+    for (std::size_t c = boundary_count - 1; c < pause_count; ++c) {
+        const double candidate = score[(boundary_count - 1) * pause_count + c];
+        if (candidate == kNegativeInfinity) continue;
+        const double total = candidate + sentence_score(pauses[c].end_frame, loudness.speech_end_frame, boundary_count);
+        if (total > best) { best = total; last = c; }
+    }
+    if (best == kNegativeInfinity) {
+        throw AlignmentError("the " + std::to_string(sentence_count) + " sentences of the transcript (" +
+                             transcript.sentences.front().text + " ...) cannot be matched to the pauses of the audio (" +
+                             span_text({loudness.speech_first_frame, loudness.speech_end_frame}) +
+                             "): their lengths disagree; check the transcript");
+    }
+    std::vector<std::size_t> chosen(boundary_count);
+    for (std::size_t k = boundary_count; k-- > 0;) {
+        chosen[k] = last;
+        last = previous[k * pause_count + last];
+    }
+    std::vector<FrameSpan> spans;
+    std::size_t first = loudness.speech_first_frame;
+    for (std::size_t k = 0; k < boundary_count; ++k) {
+        spans.push_back({first, pauses[chosen[k]].first_frame});
+        first = pauses[chosen[k]].end_frame;
+    }
+    spans.push_back({first, loudness.speech_end_frame});
+    return spans;
+}
+
+}  // namespace
+
+LoudnessProfile measure_loudness(const FeatureTrack& track) {
+    LoudnessProfile profile;
+    profile.energy_floor_db = column_percentile(track, kEnergyDb, kFloorPercentile);
+    profile.low_floor_db = column_percentile(track, kLowBandDb, kFloorPercentile);
+    profile.mid_floor_db = column_percentile(track, kMidBandDb, kFloorPercentile);
+    profile.high_floor_db = column_percentile(track, kHighBandDb, kFloorPercentile);
+    const std::size_t frames = track.frame_count;
+    std::vector<float> raw(frames);
+    for (std::size_t t = 0; t < frames; ++t) {
+        raw[t] = std::max({track.at(t, kLowBandDb) - profile.low_floor_db, track.at(t, kMidBandDb) - profile.mid_floor_db,
+                           track.at(t, kHighBandDb) - profile.high_floor_db, 0.0f});
+    }
+    profile.activity_db.resize(frames);
+    for (std::size_t t = 0; t < frames; ++t) {
+        const std::size_t first = t >= kSmoothingFrames / 2 ? t - kSmoothingFrames / 2 : 0;
+        const std::size_t end = std::min(frames, t + kSmoothingFrames / 2 + 1);
+        float sum = 0.0f;
+        for (std::size_t i = first; i < end; ++i) sum += raw[i];
+        profile.activity_db[t] = sum / static_cast<float>(end - first);
+    }
+    // Between the noise and the speech: a quarter of the way up in dB, and at most 35 dB below
+    // the loud frames (a room's reverberation fills the pauses of a clean recording to there),
+    // never less than 6 dB above the floor (noise wanders by a few dB).
+    const float speech_level_db = percentile(profile.activity_db, kSpeechPercentile);
+    profile.activity_threshold_db = std::max({0.25f * speech_level_db, speech_level_db - 35.0f, 6.0f});
+    auto is_speech = [&](std::size_t t) { return profile.activity_db[t] >= profile.activity_threshold_db; };
+    std::size_t first_speech = 0;
+    while (first_speech < frames && !is_speech(first_speech)) ++first_speech;
+    std::size_t end_speech = frames;
+    while (end_speech > first_speech && !is_speech(end_speech - 1)) --end_speech;
+    profile.speech_first_frame = first_speech;
+    profile.speech_end_frame = end_speech;
+    const auto min_pause_frames = static_cast<std::size_t>(std::lround(kMinPauseS / kFrameStepS));
+    for (std::size_t t = first_speech; t < end_speech;) {
+        if (is_speech(t)) { ++t; continue; }
+        std::size_t end = t;
+        while (end < end_speech && !is_speech(end)) ++end;
+        if (end - t >= min_pause_frames) profile.pauses.push_back({t, end});
+        t = end;
+    }
+    return profile;
+}
+
+std::vector<FrameSpan> cut_sentences(const FeatureTrack& track, const LoudnessProfile& loudness,
+                                     const Timeline& transcript, const AlignOptions& options) {
+    const std::vector<std::size_t> all_counts = syllables_per_sentence(transcript);
+    // Sentences without a syllable (only symbols) take no time: they sit at the next one's start.
+    std::vector<std::size_t> spoken;
+    std::vector<std::size_t> spoken_counts;
+    for (std::size_t k = 0; k < all_counts.size(); ++k) {
+        if (all_counts[k] == 0) continue;
+        spoken.push_back(k);
+        spoken_counts.push_back(all_counts[k]);
+    }
+    std::vector<FrameSpan> spoken_spans;
+    if (options.sentence_cut == SentenceCutMode::first_pause) {
+        spoken_spans = speaking_parts_from_first_pause(track, options);
+        if (spoken_spans.size() != spoken.size()) {
+            std::string found;
+            for (const auto& span : spoken_spans) found += (found.empty() ? "" : ", ") + span_text(span);
+            throw AlignmentError("Algorithm 3.1 with the first pause " + format_fixed(options.first_pause_start_s, 2) +
+                                 "-" + format_fixed(options.first_pause_end_s, 2) + " s found " +
+                                 std::to_string(spoken_spans.size()) + " speaking parts (" + found +
+                                 ") but the transcript has " + std::to_string(spoken.size()) +
+                                 " spoken sentences; select another pause, or use the automatic mode");
+        }
+    } else if (spoken.size() == 1) {
+        spoken_spans.push_back({loudness.speech_first_frame, loudness.speech_end_frame});
+    } else {
+        spoken_spans = choose_sentence_pauses(loudness, spoken_counts, transcript);
+    }
+    std::vector<FrameSpan> spans(all_counts.size());
+    std::size_t next_spoken = 0;
+    for (std::size_t k = 0; k < all_counts.size(); ++k) {
+        if (next_spoken < spoken.size() && spoken[next_spoken] == k) {
+            spans[k] = spoken_spans[next_spoken++];
+        } else {
+            const std::size_t at = next_spoken < spoken_spans.size() ? spoken_spans[next_spoken].first_frame
+                                   : spoken_spans.empty()           ? 0
+                                                                    : spoken_spans.back().end_frame;
+            spans[k] = {at, at};
+        }
+    }
+    return spans;
+}
+
+}  // namespace talkface::detail

@@ -1,0 +1,49 @@
+// Sentence utterances: where each sentence of the transcript is spoken (thesis 3.2). Two ways:
+// Algorithm 3.1 from a pause the caller selects, and an automatic one that learns the noise level
+// and the pauses from the audio and lets the transcript's sentences choose among them (SPEC
+// "Alignment": noise-adjusted loudness per band, a duration prior from each sentence's syllables).
+#ifndef TALKFACE_SPEECH_SENTENCE_CUTTER_HPP
+#define TALKFACE_SPEECH_SENTENCE_CUTTER_HPP
+
+#include <cstddef>
+#include <vector>
+
+#include "speech/frame_features.hpp"
+#include "talkface/speech_aligner.hpp"
+#include "talkface/timeline.hpp"
+
+namespace talkface::detail {
+
+// Frames [first_frame, end_frame) of one sentence utterance.
+struct FrameSpan {
+    std::size_t first_frame = 0;
+    std::size_t end_frame = 0;
+    std::size_t length() const { return end_frame - first_frame; }
+};
+
+// What the whole recording says about its noise: per-band floors and a speech/pause decision per
+// frame. Computed once, shared by the cutter, the aligner and the checks.
+struct LoudnessProfile {
+    float energy_floor_db = 0.0f;
+    float low_floor_db = 0.0f;
+    float mid_floor_db = 0.0f;
+    float high_floor_db = 0.0f;
+    float activity_threshold_db = 0.0f;     // a frame is speech when its activity is above this
+    std::vector<float> activity_db;         // per frame: the loudest band above its floor, smoothed
+    std::vector<FrameSpan> pauses;          // runs of non-speech, at least kMinPauseS, in order
+    std::size_t speech_first_frame = 0;     // first and one past the last speech frame
+    std::size_t speech_end_frame = 0;
+};
+
+LoudnessProfile measure_loudness(const FeatureTrack& track);
+
+// One span per sentence of `transcript`, in order, covering its speech only.
+// \throws talkface::AlignmentError when the pauses cannot be matched to the sentences (too few
+//         pauses; in first_pause mode, a different number of speaking parts), naming the times.
+// \throws talkface::InvalidArgument if the first pause lies outside the audio.
+std::vector<FrameSpan> cut_sentences(const FeatureTrack& track, const LoudnessProfile& loudness,
+                                     const Timeline& transcript, const AlignOptions& options);
+
+}  // namespace talkface::detail
+
+#endif

@@ -1,0 +1,299 @@
+// SpeechAligner: audio -> features (streamed) -> sentence utterances -> per-sentence HSMM
+// alignment, re-estimated on the recording (thesis chapter 3, SPEC "Alignment").
+#include "talkface/speech_aligner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "common/number_format.hpp"
+#include "speech/acoustic_model.hpp"
+#include "speech/alignment_checks.hpp"
+#include "speech/audio_source.hpp"
+#include "speech/frame_features.hpp"
+#include "speech/hsmm.hpp"
+#include "speech/phone_chain.hpp"
+#include "speech/sentence_cutter.hpp"
+#include "talkface/errors.hpp"
+
+namespace talkface {
+inline namespace v0 {
+
+namespace {
+
+using namespace detail;
+
+// SPEC "Alignment": a first pass on hand-set models, then three rounds re-estimated on the audio.
+constexpr int kReestimationRounds = 3;
+// Acoustic scale of the re-estimated 28-dimensional model against the duration priors: its
+// log-likelihoods are ~10 times those of the three-feature model for the same evidence.
+constexpr double kReestimatedWeight = 0.2;
+// Each sentence is searched with this much of the pauses around it, so that its first and last
+// sounds are free to start and end where the audio says.
+constexpr std::size_t kEdgeFrames = 30;
+// Shares of the job's progress: reading and features, cutting, the alignment passes.
+constexpr double kReadingShare = 0.45;
+constexpr double kCuttingShare = 0.05;
+constexpr double kProgressStep = 0.002;
+
+class ProgressReporter {
+public:
+    explicit ProgressReporter(const ProgressCallback& callback) : callback_(callback) {}
+    void report(double fraction, const char* stage) {
+        if (!callback_) return;
+        if (stage == last_stage_ && fraction < last_fraction_ + kProgressStep && fraction < 1.0) return;
+        last_stage_ = stage;
+        last_fraction_ = fraction;
+        if (!callback_(std::clamp(fraction, 0.0, 1.0), stage))
+            throw Cancelled(std::string("alignment cancelled by the progress callback while ") + stage + " at " +
+                            format_fixed(100.0 * fraction, 1) + "%");
+    }
+
+private:
+    const ProgressCallback& callback_;
+    const char* last_stage_ = nullptr;
+    double last_fraction_ = -1.0;
+};
+
+std::string seconds(std::size_t frame) { return format_fixed(static_cast<double>(frame) * kFrameStepS, 2); }
+
+void validate_transcript(const Timeline& transcript) {
+    if (transcript.syllables.empty())
+        throw InvalidArgument("transcript", "no syllables to align (" + std::to_string(transcript.sentences.size()) +
+                                                " sentences, none with a Mandarin reading)");
+    std::size_t previous = 0;
+    for (std::size_t i = 0; i < transcript.syllables.size(); ++i) {
+        const std::size_t sentence = transcript.syllables[i].sentence;
+        if (sentence >= transcript.sentences.size() || sentence < previous)
+            throw InvalidArgument("transcript", "syllable " + std::to_string(i) + " (\"" + transcript.syllables[i].text +
+                                                    "\") names sentence " + std::to_string(sentence) + " of " +
+                                                    std::to_string(transcript.sentences.size()) + " out of order");
+        previous = sentence;
+    }
+}
+
+struct SentenceWork {
+    std::size_t sentence = 0;
+    FrameSpan speech;   // from the cutter
+    FrameSpan searched; // with the edges
+    std::vector<const Syllable*> syllables;
+    std::vector<std::size_t> syllable_indices;
+    std::vector<PhoneState> states;
+};
+
+bool is_pause(StateRole role) {
+    return role == StateRole::edge_silence || role == StateRole::short_pause || role == StateRole::comma_pause;
+}
+
+double log_sum_exp(const float* values, int count) {
+    float largest = values[0];
+    for (int i = 1; i < count; ++i) largest = std::max(largest, values[i]);
+    double sum = 0.0;
+    for (int i = 0; i < count; ++i) sum += std::exp(static_cast<double>(values[i] - largest));
+    return largest + std::log(sum);
+}
+
+// Writes the syllables of one aligned sentence into `result`; returns its fit per speech frame.
+double place_syllables(const SentenceWork& work, const std::vector<StateSegment>& path, const EmissionScores& scores,
+                       Timeline& result) {
+    const double offset_s = static_cast<double>(work.searched.first_frame) * kFrameStepS;
+    auto time_s = [&](std::size_t frame) { return offset_s + static_cast<double>(frame) * kFrameStepS; };
+    double fit_sum = 0.0;
+    std::size_t fit_frames = 0;
+    for (std::size_t local = 0; local < work.syllables.size(); ++local) {
+        Syllable& syllable = result.syllables[work.syllable_indices[local]];
+        std::size_t first = 0, end = 0;
+        std::optional<std::size_t> final_first;
+        bool has_start = false;
+        double posterior_sum = 0.0;
+        std::size_t frames = 0;
+        for (std::size_t p = 0; p < path.size(); ++p) {
+            const PhoneState& state = work.states[path[p].state];
+            if (state.syllable != local || is_pause(state.role)) continue;
+            std::size_t segment_first = path[p].first_frame;
+            // SPEC: after a pause the closure cannot be told from the pause; the syllable starts
+            // at the burst.
+            if (state.role == StateRole::closure && p > 0 && work.states[path[p - 1].state].role == StateRole::comma_pause)
+                segment_first = path[p].end_frame;
+            if (!has_start) {
+                first = segment_first;
+                has_start = true;
+            }
+            end = path[p].end_frame;
+            if (state.role == StateRole::final && !final_first) final_first = path[p].first_frame;
+            for (std::size_t t = path[p].first_frame; t < path[p].end_frame; ++t) {
+                const float* row = &scores.values[t * kPhoneClassCount];
+                const double total = log_sum_exp(row, kPhoneClassCount);
+                posterior_sum += std::exp(static_cast<double>(row[state.phone_class]) - total);
+                fit_sum += row[state.phone_class];
+                ++frames;
+            }
+        }
+        syllable.start_s = time_s(first);
+        syllable.end_s = time_s(std::max(end, first + 1));
+        syllable.final_start_s = time_s(final_first.value_or(first));
+        syllable.confidence = frames > 0 ? posterior_sum / static_cast<double>(frames) : 0.0;
+        fit_frames += frames;
+    }
+    return fit_frames > 0 ? fit_sum / static_cast<double>(fit_frames) : -std::numeric_limits<double>::infinity();
+}
+
+std::vector<AlignedStretch> stretches_of(const SentenceWork& work, const std::vector<StateSegment>& path) {
+    std::vector<AlignedStretch> stretches;
+    for (const auto& segment : path) {
+        const PhoneState& state = work.states[segment.state];
+        const bool is_pause_state = is_pause(state.role);
+        const std::size_t syllable = work.syllable_indices[state.syllable];
+        const std::size_t first = work.searched.first_frame + segment.first_frame;
+        const std::size_t end = work.searched.first_frame + segment.end_frame;
+        if (!stretches.empty() && stretches.back().is_pause == is_pause_state && stretches.back().syllable == syllable) {
+            stretches.back().end_frame = end;
+        } else {
+            stretches.push_back({first, end, is_pause_state, syllable});
+        }
+    }
+    return stretches;
+}
+
+Timeline align_track(const FeatureTrack& track, const Timeline& transcript, const AlignOptions& options,
+                     ProgressReporter& progress) {
+    const LoudnessProfile loudness = measure_loudness(track);
+    if (loudness.speech_end_frame <= loudness.speech_first_frame)
+        throw AlignmentError("no speech found in the " + format_fixed(track.duration_s, 2) +
+                             " s of audio: nothing rises above its noise floor");
+    const std::vector<FrameSpan> spans = cut_sentences(track, loudness, transcript, options);
+    progress.report(kReadingShare + kCuttingShare, "sentences");
+    check_sentence_lengths(spans, loudness, transcript);
+
+    std::vector<SentenceWork> work;
+    for (std::size_t k = 0; k < spans.size(); ++k) {
+        SentenceWork sentence;
+        sentence.sentence = k;
+        sentence.speech = spans[k];
+        for (std::size_t i = 0; i < transcript.syllables.size(); ++i) {
+            if (transcript.syllables[i].sentence != k) continue;
+            sentence.syllables.push_back(&transcript.syllables[i]);
+            sentence.syllable_indices.push_back(i);
+        }
+        if (!sentence.syllables.empty()) work.push_back(std::move(sentence));
+    }
+    // Edges reach into the pauses around the sentence, at most halfway to its neighbours.
+    for (std::size_t w = 0; w < work.size(); ++w) {
+        const FrameSpan& speech = work[w].speech;
+        const std::size_t lower = w == 0 ? 0 : (work[w - 1].speech.end_frame + speech.first_frame) / 2;
+        const std::size_t upper =
+            w + 1 == work.size() ? track.frame_count : (speech.end_frame + work[w + 1].speech.first_frame + 1) / 2;
+        work[w].searched.first_frame = std::max(lower, speech.first_frame > kEdgeFrames ? speech.first_frame - kEdgeFrames : 0);
+        work[w].searched.end_frame = std::min(upper, speech.end_frame + kEdgeFrames);
+        work[w].states = build_phone_chain(work[w].syllables, work[w].searched.length(), speech.length());
+    }
+
+    Timeline result = transcript;
+    result.duration_s = track.duration_s;
+    std::vector<double> fits(spans.size(), std::numeric_limits<double>::quiet_NaN());
+    AcousticModel model = AcousticModel::hand_set();
+    const int passes = 1 + kReestimationRounds;
+    const double alignment_share = 1.0 - kReadingShare - kCuttingShare;
+    for (int pass = 0; pass < passes; ++pass) {
+        const bool is_last = pass + 1 == passes;
+        ModelEstimator estimator;
+        for (std::size_t w = 0; w < work.size(); ++w) {
+            const SentenceWork& sentence = work[w];
+            const std::vector<float> observations = observe(track, loudness, sentence.searched);
+            const EmissionScores scores = model.score(observations, sentence.searched.length());
+            const std::vector<StateSegment> path = viterbi_align(sentence.states, scores);
+            if (path.empty()) {
+                throw AlignmentError("sentence " + std::to_string(sentence.sentence + 1) + " (" +
+                                     seconds(sentence.speech.first_frame) + "-" + seconds(sentence.speech.end_frame) +
+                                     " s, \"" + transcript.sentences[sentence.sentence].text + "\"): its " +
+                                     std::to_string(sentence.syllables.size()) +
+                                     " syllables do not fit in so short a stretch of speech; check the transcript");
+            }
+            if (is_last) {
+                fits[sentence.sentence] = place_syllables(sentence, path, scores, result);
+                check_path(stretches_of(sentence, path), loudness, sentence.sentence, sentence.speech, transcript);
+            }
+            else estimator.add(observations, sentence.states, path);
+            progress.report(kReadingShare + kCuttingShare +
+                                alignment_share * (pass + static_cast<double>(w + 1) / static_cast<double>(work.size())) / passes,
+                            "syllables");
+        }
+        if (!is_last) model = estimator.estimate(kReestimatedWeight);
+    }
+    check_fit(fits, spans, transcript);
+
+    for (std::size_t k = 0; k < result.sentences.size(); ++k) {
+        const auto first = std::find_if(result.syllables.begin(), result.syllables.end(),
+                                        [&](const Syllable& s) { return s.sentence == k; });
+        if (first == result.syllables.end()) {
+            const double at = static_cast<double>(spans[k].first_frame) * kFrameStepS;
+            result.sentences[k].start_s = result.sentences[k].end_s = at;
+            continue;
+        }
+        const auto last = std::find_if(result.syllables.rbegin(), result.syllables.rend(),
+                                       [&](const Syllable& s) { return s.sentence == k; });
+        result.sentences[k].start_s = first->start_s;
+        result.sentences[k].end_s = last->end_s;
+    }
+    progress.report(1.0, "syllables");
+    return result;
+}
+
+Timeline align_source(AudioSource& source, const Timeline& transcript, const AlignOptions& options,
+                      const ProgressCallback& callback) {
+    validate_transcript(transcript);
+    ProgressReporter progress(callback);
+    progress.report(0.0, "reading");
+    const FeatureTrack track =
+        analyze_audio(source, [&](double fraction) { progress.report(kReadingShare * fraction, "reading"); });
+    return align_track(track, transcript, options, progress);
+}
+
+}  // namespace
+
+struct SpeechAligner::Impl {
+    AlignOptions options;
+};
+
+SpeechAligner::SpeechAligner(AlignOptions options) : impl_(std::make_unique<Impl>()) {
+    if (!(options.c1 >= 0.5 && options.c1 <= 1.0))
+        throw InvalidArgument("c1", "expected 0.5..1 (Algorithm 3.1 step 3), found " + format_shortest(options.c1));
+    if (!(options.c2 >= 1.0 && options.c2 <= 1.5))
+        throw InvalidArgument("c2", "expected 1..1.5 (Algorithm 3.1 step 4), found " + format_shortest(options.c2));
+    if (options.sentence_cut != SentenceCutMode::automatic && options.sentence_cut != SentenceCutMode::first_pause)
+        throw InvalidArgument("sentence_cut", "unknown mode " + std::to_string(static_cast<int>(options.sentence_cut)));
+    if (options.sentence_cut == SentenceCutMode::first_pause &&
+        !(std::isfinite(options.first_pause_start_s) && std::isfinite(options.first_pause_end_s) &&
+          options.first_pause_start_s >= 0.0 && options.first_pause_end_s > options.first_pause_start_s))
+        throw InvalidArgument("first_pause", "expected 0 <= start < end in seconds, found " +
+                                                 format_shortest(options.first_pause_start_s) + ".." +
+                                                 format_shortest(options.first_pause_end_s));
+    impl_->options = options;
+}
+
+SpeechAligner::~SpeechAligner() = default;
+SpeechAligner::SpeechAligner(SpeechAligner&&) noexcept = default;
+SpeechAligner& SpeechAligner::operator=(SpeechAligner&&) noexcept = default;
+
+const AlignOptions& SpeechAligner::options() const { return impl_->options; }
+
+Timeline SpeechAligner::align(const AudioView& audio, const Timeline& transcript, const ProgressCallback& progress) const {
+    const auto source = open_audio_view(audio);
+    return align_source(*source, transcript, impl_->options, progress);
+}
+
+Timeline SpeechAligner::align_file(const std::string& audio_path, const Timeline& transcript,
+                                   const ProgressCallback& progress) const {
+    validate_transcript(transcript);
+    const auto source = open_audio_file(audio_path);
+    try {
+        return align_source(*source, transcript, impl_->options, progress);
+    } catch (const AlignmentError& error) {
+        // Name the audio: the times in the message are in this file.
+        throw AlignmentError(audio_path + ": " + error.what());
+    }
+}
+
+}  // namespace v0
+}  // namespace talkface

@@ -1,0 +1,396 @@
+/* The C ABI of transcripts, expression simulation and animation, driven from C: timelines read and
+ * built, syllable shapes, seeded events and the caller's own, frames and key-frame documents. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "talkface/talkface.h"
+
+/* Counts into the enclosing function's `failures`; prints where and this thread's last error. */
+#define CHECK(condition)                                                                            \
+    do {                                                                                            \
+        if (!(condition)) {                                                                         \
+            ++failures;                                                                             \
+            fprintf(stderr, "%s:%d: CHECK(%s) failed; tf_last_error_message: \"%s\"\n", __FILE__,   \
+                    __LINE__, #condition, tf_last_error_message());                                 \
+        }                                                                                           \
+    } while (0)
+
+#define CHECK_OK(call) CHECK((call) == TF_OK)
+
+/* status == expected and the message contains `needle`. */
+#define CHECK_FAILS_WITH(call, expected, needle)                                                    \
+    do {                                                                                            \
+        tf_status status_ = (call);                                                                 \
+        CHECK(status_ == (expected));                                                               \
+        CHECK(strstr(tf_last_error_message(), (needle)) != NULL);                                   \
+    } while (0)
+
+/* "媽媽好，你好。" spoken from 0.5 s: ma1 ma1 hao3 (pause) ni3 hao3, 3 s of audio. */
+static tf_timeline *new_spoken_timeline(void) {
+    static const char *const kTexts[] = {"\xe5\xaa\xbd", "\xe5\xaa\xbd", "\xe5\xa5\xbd", "\xe4\xbd\xa0",
+                                         "\xe5\xa5\xbd"};
+    static const char *const kPinyin[] = {"ma1", "ma1", "hao3", "ni3", "hao3"};
+    static const double kStarts[] = {0.5, 0.75, 1.0, 1.75, 2.0};
+    tf_timeline *timeline = NULL;
+    size_t k;
+    if (tf_timeline_create(&timeline) != TF_OK) return NULL;
+    tf_timeline_add_sentence(timeline, "\xe5\xaa\xbd\xe5\xaa\xbd\xe5\xa5\xbd\xef\xbc\x8c\xe4\xbd\xa0\xe5\xa5\xbd"
+                                       "\xe3\x80\x82",
+                             0.5, 2.5);
+    for (k = 0; k < 5; ++k) {
+        tf_timeline_add_syllable(timeline, kTexts[k], kPinyin[k], 0, kStarts[k], kStarts[k] + 0.25);
+    }
+    tf_timeline_set_syllable_pause_after(timeline, 2, 1);
+    tf_timeline_set_duration_s(timeline, 3.0);
+    return timeline;
+}
+
+static int test_transcript_is_read_into_sentences_and_syllables(void) {
+    int failures = 0;
+    /* 長期下來，傷害不斷累積。銀行{hang2} ABC */
+    const char *text = "\xe9\x95\xb7\xe6\x9c\x9f\xe4\xb8\x8b\xe4\xbe\x86\xef\xbc\x8c\xe5\x82\xb7\xe5\xae\xb3"
+                       "\xe4\xb8\x8d\xe6\x96\xb7\xe7\xb4\xaf\xe7\xa9\x8d\xe3\x80\x82\xe9\x8a\x80\xe8\xa1\x8c"
+                       "{hang2} ABC";
+    tf_timeline *timeline = NULL;
+    size_t count = 0;
+    size_t sentence_index = 99;
+    const char *pinyin = NULL;
+    const char *warning = NULL;
+    double confidence = 0.0;
+    int pause_after = 0;
+    int has_final_start = -1;
+    CHECK_OK(tf_read_transcript(text, strlen(text), "story.txt", &timeline));
+    CHECK_OK(tf_timeline_sentence_count(timeline, &count));
+    CHECK(count == 2);
+    CHECK_OK(tf_timeline_syllable_count(timeline, &count));
+    CHECK(count == 12);
+    CHECK_OK(tf_timeline_syllable(timeline, 11, NULL, &pinyin, &sentence_index));
+    CHECK(strcmp(pinyin, "hang2") == 0);
+    CHECK(sentence_index == 1);
+    CHECK_OK(tf_timeline_syllable_confidence(timeline, 3, &confidence, &pause_after));
+    CHECK(pause_after == 1); /* 來 before ， */
+    CHECK(confidence == 1.0);
+    CHECK_OK(tf_timeline_syllable_times(timeline, 0, NULL, NULL, &has_final_start, NULL));
+    CHECK(has_final_start == 0);
+    CHECK_OK(tf_timeline_warning_count(timeline, &count));
+    CHECK(count == 3);
+    CHECK_OK(tf_timeline_warning(timeline, 0, &warning));
+    CHECK(strncmp(warning, "story.txt:1:23: \"A\"", 19) == 0);
+    CHECK_FAILS_WITH(tf_timeline_syllable(timeline, 12, NULL, NULL, NULL), TF_ERR_INVALID_ARGUMENT, "12");
+    tf_timeline_destroy(timeline);
+    return failures;
+}
+
+static int test_transcript_errors_name_where(void) {
+    int failures = 0;
+    tf_timeline *timeline = NULL;
+    const char *bad_fix = "\xe9\x8a\x80\xe8\xa1\x8c{hxng2}";
+    CHECK_FAILS_WITH(tf_read_transcript(bad_fix, strlen(bad_fix), NULL, &timeline), TF_ERR_PARSE,
+                     "<transcript>:1:");
+    CHECK(timeline == NULL);
+    CHECK_FAILS_WITH(tf_load_transcript("/no/such/dir/transcript.txt", &timeline), TF_ERR_FILE,
+                     "/no/such/dir/transcript.txt");
+    CHECK(timeline == NULL);
+    CHECK_FAILS_WITH(tf_read_transcript(NULL, 0, NULL, &timeline), TF_ERR_INVALID_ARGUMENT, "text");
+    return failures;
+}
+
+static int test_built_timeline_reads_back_and_writes_align_json(void) {
+    int failures = 0;
+    tf_timeline *timeline = new_spoken_timeline();
+    char *json = NULL;
+    size_t length = 0;
+    double start_s = 0.0;
+    double end_s = 0.0;
+    double final_start_s = 0.0;
+    int has_final_start = 0;
+    CHECK(timeline != NULL);
+    CHECK_OK(tf_timeline_set_syllable_final_start_s(timeline, 0, 0.58));
+    CHECK_OK(tf_timeline_syllable_times(timeline, 0, &start_s, &end_s, &has_final_start, &final_start_s));
+    CHECK(start_s == 0.5 && end_s == 0.75 && has_final_start == 1 && final_start_s == 0.58);
+    CHECK_FAILS_WITH(tf_timeline_add_syllable(timeline, "x", "a1", 1, 0.0, 0.1), TF_ERR_INVALID_ARGUMENT,
+                     "sentence_index");
+    CHECK_FAILS_WITH(tf_timeline_set_syllable_confidence(timeline, 0, 1.5), TF_ERR_INVALID_ARGUMENT,
+                     "confidence");
+    CHECK_OK(tf_timeline_to_json(timeline, &json, &length));
+    CHECK(json != NULL && strlen(json) == length);
+    CHECK(strncmp(json, "{\"sentences\":[\n{\"text\":\"", 24) == 0);
+    CHECK(strstr(json, "\"start\":0.5,\"end\":2.5}") != NULL);
+    CHECK(strstr(json, "{\"text\":\"\xe5\xaa\xbd\",\"pinyin\":\"ma1\",\"start\":0.5,\"end\":0.75,\"sentence\":0,"
+                       "\"final_start\":0.58,\"confidence\":1,\"pause_after\":false}") != NULL);
+    CHECK(strstr(json, "\"pinyin\":\"hao3\",\"start\":1,\"end\":1.25,\"sentence\":0,\"confidence\":1,"
+                       "\"pause_after\":true}") != NULL);
+    CHECK(strstr(json, "\"duration\":3,\n\"warnings\":[]}") != NULL);
+    tf_free(json);
+    tf_timeline_destroy(timeline);
+    return failures;
+}
+
+static int test_syllable_shapes_size_then_data(void) {
+    int failures = 0;
+    tf_mouth_shape shapes[TF_MAX_SYLLABLE_SHAPES];
+    tf_mouth_shape too_small[2];
+    size_t count = 0;
+    CHECK(tf_is_valid_pinyin("hang2") == 1);
+    CHECK(tf_is_valid_pinyin("hxng2") == 0);
+    CHECK(tf_is_valid_pinyin(NULL) == 0);
+    CHECK_OK(tf_syllable_mouth_shapes("bo1", NULL, 0, &count));
+    CHECK(count == 3);
+    CHECK_OK(tf_syllable_mouth_shapes("bo1", shapes, TF_MAX_SYLLABLE_SHAPES, &count));
+    CHECK(count == 3);
+    CHECK(shapes[0] == TF_MOUTH_M && shapes[1] == TF_MOUTH_U && shapes[2] == TF_MOUTH_O);
+    count = 42;
+    CHECK_FAILS_WITH(tf_syllable_mouth_shapes("bo1", too_small, 2, &count), TF_ERR_INVALID_ARGUMENT,
+                     "capacity");
+    CHECK(count == 42);
+    CHECK_FAILS_WITH(tf_syllable_mouth_shapes("xx", shapes, TF_MAX_SYLLABLE_SHAPES, &count),
+                     TF_ERR_INVALID_ARGUMENT, "xx");
+    return failures;
+}
+
+static int events_equal(const tf_expression_event *a, const tf_expression_event *b) {
+    return a->kind == b->kind && a->start_s == b->start_s && a->end_s == b->end_s && a->amount == b->amount;
+}
+
+static int test_event_kind_names_round_trip(void) {
+    int failures = 0;
+    tf_expression_event_kind kind = TF_EVENT_BLINK;
+    CHECK_OK(tf_expression_event_kind_from_name("tilt", &kind));
+    CHECK(kind == TF_EVENT_TILT);
+    CHECK(strcmp(tf_expression_event_kind_name(TF_EVENT_NOD), "nod") == 0);
+    CHECK(tf_expression_event_kind_name((tf_expression_event_kind)9) == NULL);
+    CHECK_FAILS_WITH(tf_expression_event_kind_from_name("wink", &kind), TF_ERR_INVALID_ARGUMENT, "blink, brows");
+    return failures;
+}
+
+static int test_same_seed_gives_the_same_events(void) {
+    int failures = 0;
+    tf_timeline *timeline = new_spoken_timeline();
+    tf_expression_simulator *first = NULL;
+    tf_expression_simulator *second = NULL;
+    tf_expression_simulator *announcer = NULL;
+    size_t count = 0;
+    size_t other_count = 0;
+    size_t k;
+    double duration_s = 0.0;
+    CHECK_OK(tf_expression_simulator_create(timeline, 7, NULL, &first));
+    CHECK_OK(tf_expression_simulator_create(timeline, 7, "normal", &second));
+    CHECK_OK(tf_expression_simulator_create(timeline, 7, "announcer", &announcer));
+    CHECK_OK(tf_expression_simulator_duration_s(first, &duration_s));
+    CHECK(duration_s == 3.0);
+    CHECK_OK(tf_expression_simulator_event_count(first, &count));
+    CHECK_OK(tf_expression_simulator_event_count(second, &other_count));
+    CHECK(count > 0 && count == other_count);
+    for (k = 0; k < count; ++k) {
+        tf_expression_event a;
+        tf_expression_event b;
+        CHECK_OK(tf_expression_simulator_event(first, k, &a));
+        CHECK_OK(tf_expression_simulator_event(second, k, &b));
+        CHECK(events_equal(&a, &b));
+        CHECK(tf_expression_event_kind_name(a.kind) != NULL);
+        CHECK(a.start_s <= a.end_s);
+    }
+    {
+        tf_expression_event past_the_end;
+        CHECK_FAILS_WITH(tf_expression_simulator_event(first, count, &past_the_end), TF_ERR_INVALID_ARGUMENT,
+                         "index");
+    }
+    tf_expression_simulator_destroy(announcer);
+    announcer = NULL;
+    CHECK_FAILS_WITH(tf_expression_simulator_create(timeline, 7, "shouty", &announcer), TF_ERR_INVALID_ARGUMENT,
+                     "announcer");
+    CHECK(announcer == NULL);
+    tf_expression_simulator_destroy(second);
+    tf_expression_simulator_destroy(first);
+    tf_timeline_destroy(timeline);
+    return failures;
+}
+
+static int test_user_events_add_to_or_replace_the_simulated(void) {
+    int failures = 0;
+    tf_timeline *timeline = new_spoken_timeline();
+    tf_expression_simulator *simulator = NULL;
+    const tf_expression_event nod = {TF_EVENT_NOD, 1.0, 1.4, 6.0};
+    tf_expression_event bad[2] = {{TF_EVENT_BLINK, 0.2, 0.4, 1.0}, {TF_EVENT_TURN, 2.0, 1.5, 3.0}};
+    size_t count = 0;
+    size_t k;
+    double alpha_deg = 0.0;
+    double beta_deg = 0.0;
+    double gamma_deg = 0.0;
+    int nods = 0;
+    CHECK_OK(tf_expression_simulator_create(timeline, 3, NULL, &simulator));
+    CHECK_OK(tf_expression_simulator_set_user_events(simulator, &nod, 1, TF_EVENTS_REPLACE));
+    CHECK_OK(tf_expression_simulator_event_count(simulator, &count));
+    for (k = 0; k < count; ++k) {
+        tf_expression_event event;
+        CHECK_OK(tf_expression_simulator_event(simulator, k, &event));
+        if (event.kind == TF_EVENT_NOD) {
+            ++nods;
+            CHECK(events_equal(&event, &nod));
+        }
+    }
+    CHECK(nods == 1);
+    CHECK_OK(tf_expression_simulator_pose_at(simulator, 1.4, &alpha_deg, &beta_deg, &gamma_deg));
+    CHECK(fabs(alpha_deg - 6.0) < 1e-9);
+    CHECK_FAILS_WITH(tf_expression_simulator_set_user_events(simulator, bad, 2, TF_EVENTS_ADD),
+                     TF_ERR_INVALID_ARGUMENT, "event 1 (turn, 2");
+    CHECK_FAILS_WITH(tf_expression_simulator_set_user_events(simulator, &nod, 1, (tf_user_event_mode)7),
+                     TF_ERR_INVALID_ARGUMENT, "mode");
+    /* A failed call leaves the caller's nod in effect. */
+    CHECK_OK(tf_expression_simulator_pose_at(simulator, 1.4, &alpha_deg, &beta_deg, &gamma_deg));
+    CHECK(fabs(alpha_deg - 6.0) < 1e-9);
+    CHECK_OK(tf_expression_simulator_set_user_events(simulator, NULL, 0, TF_EVENTS_ADD));
+    tf_expression_simulator_destroy(simulator);
+    tf_timeline_destroy(timeline);
+    return failures;
+}
+
+static int test_animation_frames_and_key_frames(void) {
+    int failures = 0;
+    tf_face_model *face = NULL;
+    tf_timeline *timeline = new_spoken_timeline();
+    tf_expression_simulator *simulator = NULL;
+    tf_lip_sync_options *options = NULL;
+    tf_animation *animation = NULL;
+    tf_face_state *state = NULL;
+    tf_projected_face *projected = NULL;
+    char *json = NULL;
+    char *tsv = NULL;
+    size_t length = 0;
+    size_t count = 0;
+    size_t key_count = 0;
+    size_t k;
+    double fps = 0.0;
+    double duration_s = 0.0;
+    double up[2], down[2], left[2], right[2];
+    double widest_opening = 0.0;
+    double closed_opening = 1e9;
+    double x = 0.0, y = 0.0;
+    double alpha_deg, beta_deg, gamma_deg;
+    double blink_left, blink_right, smile, brows;
+    CHECK_OK(tf_face_model_default(&face));
+    CHECK_OK(tf_expression_simulator_create(timeline, 11, NULL, &simulator));
+    CHECK_OK(tf_lip_sync_options_create(&options));
+    CHECK_OK(tf_lip_sync_options_set_fps(options, 30.0));
+    CHECK_OK(tf_lip_sync_options_set_interpolation(options, TF_INTERPOLATION_SMOOTH));
+    CHECK_OK(tf_animate(face, timeline, simulator, options, &animation));
+    CHECK_OK(tf_animation_timing(animation, &fps, &duration_s));
+    CHECK(fps == 30.0 && duration_s == 3.0);
+    CHECK_OK(tf_animation_frame_count(animation, &count));
+    CHECK(count == 91); /* frames 0 .. 3.0 s * 30 */
+    for (k = 0; k < count; ++k) {
+        double opening;
+        CHECK_OK(tf_animation_frame_mouth_controls(animation, k, up, down, left, right));
+        opening = down[1] - up[1];
+        if (opening > widest_opening) widest_opening = opening;
+        if (opening < closed_opening) closed_opening = opening;
+        CHECK_OK(tf_animation_frame_pose(animation, k, &alpha_deg, &beta_deg, &gamma_deg));
+        CHECK(fabs(alpha_deg) <= TF_MAX_POSE_ANGLE_DEG && fabs(beta_deg) <= TF_MAX_POSE_ANGLE_DEG);
+        CHECK_OK(tf_animation_frame_expression(animation, k, &blink_left, &blink_right, &smile, &brows));
+        CHECK(blink_left >= 0.0 && blink_left <= 1.0 && smile == 0.0);
+    }
+    CHECK(widest_opening > closed_opening + 1.0); /* the mouth opens on "a" and closes on "m" */
+    CHECK_FAILS_WITH(tf_animation_frame_pose(animation, count, &alpha_deg, &beta_deg, &gamma_deg),
+                     TF_ERR_INVALID_ARGUMENT, "frame index");
+
+    CHECK_OK(tf_animation_frame_state(animation, 20, &state));
+    CHECK_OK(tf_project_face(face, state, &projected));
+    CHECK_OK(tf_projected_face_point(projected, "8.2", &x, &y));
+    CHECK_OK(tf_animation_frame_mouth_controls(animation, 20, up, down, left, right));
+    CHECK(fabs(x - down[0]) < 40.0 && y > 0.0);
+
+    CHECK_OK(tf_animation_mouth_key_frame_count(animation, &key_count));
+    CHECK(key_count > 5);
+    {
+        double time_s = -1.0;
+        tf_mouth_shape shape = TF_MOUTH_A;
+        int has_syllable = 1;
+        size_t syllable_index = 99;
+        CHECK_OK(tf_animation_mouth_key_frame(animation, 0, &time_s, &shape, &has_syllable, &syllable_index));
+        CHECK(time_s == 0.0 && shape == TF_MOUTH_M && has_syllable == 0 && syllable_index == 99);
+        /* 0.4 s: leaving the rest; 0.5 s: the m of ma1 */
+        CHECK_OK(tf_animation_mouth_key_frame(animation, 2, &time_s, &shape, &has_syllable, &syllable_index));
+        CHECK(fabs(time_s - 0.5) < 1e-9 && shape == TF_MOUTH_M && has_syllable == 1 && syllable_index == 0);
+        CHECK_OK(tf_animation_mouth_key_frame(animation, 3, NULL, &shape, NULL, NULL));
+        CHECK(shape == TF_MOUTH_A);
+    }
+    CHECK_OK(tf_animation_event_count(animation, &count));
+    CHECK_OK(tf_expression_simulator_event_count(simulator, &k));
+    CHECK(count == k);
+
+    CHECK_OK(tf_animation_key_frames_json(animation, &json, &length));
+    CHECK(strlen(json) == length);
+    CHECK(strncmp(json, "{\"mouth\":[\n{\"time\":0,\"shape\":\"m\",\"syllable\":null},\n{\"time\":0.4,", 58) == 0);
+    CHECK(strstr(json, "\n\"events\":[") != NULL);
+    CHECK_OK(tf_animation_key_frames_tsv(animation, &tsv, &length));
+    CHECK(strncmp(tsv, "0\tm\n0.4\tm\n0.5\tm\n0.533\ta\n", 24) == 0);
+    CHECK(strlen(tsv) == length);
+
+    tf_free(tsv);
+    tf_free(json);
+    tf_projected_face_destroy(projected);
+    tf_face_state_destroy(state);
+    tf_animation_destroy(animation);
+    tf_lip_sync_options_destroy(options);
+    tf_expression_simulator_destroy(simulator);
+    tf_timeline_destroy(timeline);
+    tf_face_model_destroy(face);
+    return failures;
+}
+
+static int test_bad_pinyin_and_options_are_named(void) {
+    int failures = 0;
+    tf_face_model *face = NULL;
+    tf_timeline *timeline = NULL;
+    tf_expression_simulator *simulator = NULL;
+    tf_lip_sync_options *options = NULL;
+    tf_animation *animation = NULL;
+    CHECK_OK(tf_face_model_default(&face));
+    CHECK_OK(tf_timeline_create(&timeline));
+    CHECK_OK(tf_timeline_add_sentence(timeline, "xx", 0.0, 1.0));
+    CHECK_OK(tf_timeline_add_syllable(timeline, "x", "xx1", 0, 0.2, 0.5));
+    CHECK_OK(tf_expression_simulator_create(timeline, 1, NULL, &simulator));
+    CHECK_FAILS_WITH(tf_animate(face, timeline, simulator, NULL, &animation), TF_ERR_INVALID_ARGUMENT, "xx1");
+    CHECK(animation == NULL);
+    CHECK_OK(tf_lip_sync_options_create(&options));
+    CHECK_OK(tf_lip_sync_options_set_fps(options, -1.0));
+    CHECK_FAILS_WITH(tf_animate(face, timeline, simulator, options, &animation), TF_ERR_INVALID_ARGUMENT, "fps");
+    CHECK_FAILS_WITH(tf_lip_sync_options_set_interpolation(options, (tf_mouth_interpolation)5),
+                     TF_ERR_INVALID_ARGUMENT, "interpolation");
+    CHECK_FAILS_WITH(tf_animate(face, timeline, NULL, options, &animation), TF_ERR_INVALID_ARGUMENT, "simulator");
+    tf_lip_sync_options_destroy(options);
+    tf_expression_simulator_destroy(simulator);
+    tf_timeline_destroy(timeline);
+    tf_face_model_destroy(face);
+    return failures;
+}
+
+static int test_destroy_accepts_null(void) {
+    tf_timeline_destroy(NULL);
+    tf_expression_simulator_destroy(NULL);
+    tf_lip_sync_options_destroy(NULL);
+    tf_animation_destroy(NULL);
+    return 0;
+}
+
+int main(void) {
+    int failures = 0;
+    failures += test_transcript_is_read_into_sentences_and_syllables();
+    failures += test_transcript_errors_name_where();
+    failures += test_built_timeline_reads_back_and_writes_align_json();
+    failures += test_syllable_shapes_size_then_data();
+    failures += test_event_kind_names_round_trip();
+    failures += test_same_seed_gives_the_same_events();
+    failures += test_user_events_add_to_or_replace_the_simulated();
+    failures += test_animation_frames_and_key_frames();
+    failures += test_bad_pinyin_and_options_are_named();
+    failures += test_destroy_accepts_null();
+    if (failures != 0) {
+        fprintf(stderr, "c_api_animation_test: %d check(s) failed\n", failures);
+        return EXIT_FAILURE;
+    }
+    printf("c_api_animation_test: all checks passed\n");
+    return EXIT_SUCCESS;
+}

@@ -1,0 +1,18 @@
+#!/bin/sh
+# Remakes the aligner's test clips with the benchmark's generator (bench/README.md):
+#   tests/data/speech/make_clips.sh build-bench/bin/make_corpus
+# Needs espeak-ng and sox with libsox-fmt-all. The output is the same on every run.
+set -eu
+make_corpus=$(realpath "$1")
+cd "$(dirname "$0")"
+
+"$make_corpus" --clip one_sentence --rate-wpm 200 --pitch 50 "小朋友們在公園裡放風箏。"
+"$make_corpus" --clip two_sentences --rate-wpm 190 --pitch 45 --pause-s 0.9 "今天下午有雨。我们明天再去吧。"
+
+"$make_corpus" --clip comma_pause --rate-wpm 210 --pitch 55 "请把桌子上的杯子拿给我，谢谢。"
+sox -R -V1 comma_pause.wav comma_pause.flac
+rm comma_pause.wav
+
+"$make_corpus" --clip stereo_44k --rate-wpm 180 --pitch 60 "這條路晚上很安靜。"
+sox -R -V1 stereo_44k.wav -C 4 stereo_44k.ogg remix 1 1v0.8 rate -v 44100
+rm stereo_44k.wav

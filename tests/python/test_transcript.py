@@ -1,0 +1,118 @@
+"""Transcripts and timelines in Python: read_transcript, load_transcript, is_valid_pinyin,
+syllable_mouth_shapes, and the align JSON helpers timeline_from_json / timeline_to_json."""
+import pytest
+
+import talkface
+
+
+def spoken_timeline():
+    """你好，世界。 spoken from 0.5 s, one syllable every 0.25 s, 2 s of audio."""
+    timeline = talkface.read_transcript("你好，世界。")
+    syllables = timeline.syllables
+    for index, syllable in enumerate(syllables):
+        syllable.start_s = 0.5 + 0.25 * index
+        syllable.end_s = syllable.start_s + 0.25
+    syllables[0].final_start_s = 0.58
+    syllables[1].confidence = 0.75
+    timeline.syllables = syllables
+    sentences = timeline.sentences
+    sentences[0].start_s, sentences[0].end_s = 0.5, 1.5
+    timeline.sentences = sentences
+    timeline.duration_s = 2.0
+    return timeline
+
+
+def test_read_transcript_gives_sentences_syllables_and_warnings():
+    timeline = talkface.read_transcript("長期下來，傷害不斷累積。\n銀行{hang2}很好 ABC", source_name="story.txt")
+    assert [s.text for s in timeline.sentences] == ["長期下來，傷害不斷累積。", "銀行很好 ABC"]
+    assert "".join(s.text for s in timeline.syllables) == "長期下來傷害不斷累積銀行很好"
+    assert timeline.syllables[11].pinyin == "hang2"
+    assert timeline.syllables[11].sentence == 1
+    assert timeline.syllables[3].pause_after
+    assert len(timeline.warnings) == 3
+    assert timeline.warnings[0].startswith('story.txt:2:13: "A"')
+    assert all(s.start_s == 0.0 and s.final_start_s is None for s in timeline.syllables)
+
+
+def test_pinyin_input_can_be_turned_off():
+    assert [s.pinyin for s in talkface.read_transcript("ni3 hao3").syllables] == ["ni3", "hao3"]
+    off = talkface.read_transcript("ni3 hao3", read_pinyin=False)
+    assert off.syllables == []
+    assert len(off.warnings) > 0
+
+
+def test_bad_reading_fix_is_a_parse_error_naming_where():
+    with pytest.raises(talkface.ParseError, match=r"<transcript>:1:") as caught:
+        talkface.read_transcript("銀行{hxng2}")
+    assert caught.value.line == 1
+
+
+def test_load_transcript_reads_a_file_and_names_a_missing_one(tmp_path):
+    path = tmp_path / "story.txt"
+    path.write_text("你好。", encoding="utf-8")
+    assert [s.pinyin for s in talkface.load_transcript(path).syllables] == ["ni3", "hao3"]
+    with pytest.raises(talkface.FileError, match="missing.txt") as caught:
+        talkface.load_transcript(tmp_path / "missing.txt")
+    assert isinstance(caught.value, OSError)
+    assert caught.value.filename == str(tmp_path / "missing.txt")
+
+
+def test_is_valid_pinyin_and_syllable_mouth_shapes():
+    assert talkface.is_valid_pinyin("hang2")
+    assert not talkface.is_valid_pinyin("hxng2")
+    names = [talkface.mouth_shape_name(s) for s in talkface.syllable_mouth_shapes("bo1")]
+    assert names == ["m", "u", "o"]
+    assert [talkface.mouth_shape_name(s) for s in talkface.syllable_mouth_shapes("hao")] == ["h", "a", "u"]
+    assert "zhuang" in talkface.mandarin_syllables()
+    with pytest.raises(talkface.InvalidArgument, match="xx"):
+        talkface.syllable_mouth_shapes("xx")
+
+
+def test_timeline_json_round_trips_every_field():
+    timeline = spoken_timeline()
+    text = talkface.timeline_to_json(timeline)
+    back = talkface.timeline_from_json(text)
+    assert back.sentences == timeline.sentences
+    assert back.syllables == timeline.syllables
+    assert back.warnings == timeline.warnings
+    assert back.duration_s == 2.0
+    assert back.syllables[0].final_start_s == 0.58
+    assert back.syllables[1].pause_after
+
+
+def test_timeline_json_has_the_align_contract_shape():
+    import json
+
+    document = json.loads(talkface.timeline_to_json(spoken_timeline()))
+    assert list(document) == ["sentences", "syllables", "duration", "warnings"]
+    assert document["sentences"] == [{"text": "你好，世界。", "start": 0.5, "end": 1.5}]
+    first = document["syllables"][0]
+    assert list(first)[:5] == ["text", "pinyin", "start", "end", "sentence"]
+    assert first["final_start"] == 0.58
+    assert "final_start" not in document["syllables"][1]
+
+
+def test_timeline_json_reads_the_syllables_contract_without_times():
+    text = '{"sentences":[{"text":"你好。"}], "syllables":[{"text":"你","pinyin":"ni3","sentence":0}]}'
+    timeline = talkface.timeline_from_json(text)
+    assert timeline.syllables[0].pinyin == "ni3"
+    assert timeline.syllables[0].end_s == 0.0
+
+
+@pytest.mark.parametrize(
+    "text, match, item",
+    [
+        ('{"sentences": [}', r"aligned\.json:1:16: ", ""),
+        ('{"sentences": []}', r'"syllables" is missing', "document"),
+        ('{"sentences":[{"text":"a"}],"syllables":[{"text":"a","pinyin":"a1","sentence":0,"start":"x"}]}',
+         r'syllables\[0\]\.start: expected a number', "syllables[0].start"),
+        ('{"sentences":[{"text":"a"}],"syllables":[{"text":"a","pinyin":"a1","sentence":1}]}',
+         r"syllables\[0\]\.sentence: expected a sentence index 0\.\.0, found 1", "syllables[0].sentence"),
+        ('{"sentences":[{"start":0}],"syllables":[]}', r'sentences\[0\]: "text" is missing', "sentences[0]"),
+    ],
+)
+def test_timeline_json_errors_name_where(text, match, item):
+    with pytest.raises(talkface.ParseError, match=match) as caught:
+        talkface.timeline_from_json(text, "aligned.json")
+    assert caught.value.path == "aligned.json"
+    assert caught.value.item == item

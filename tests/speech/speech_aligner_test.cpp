@@ -1,0 +1,340 @@
+#include <doctest/doctest.h>
+
+#include <sndfile.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "common/test_paths.hpp"
+#include "talkface/errors.hpp"
+#include "talkface/speech_aligner.hpp"
+#include "talkface/transcript.hpp"
+
+using namespace talkface;
+
+namespace {
+
+struct Clip {
+    std::string audio;
+    std::string name;
+};
+
+std::string clip_path(const std::string& file) { return test::source_path("tests/data/speech/" + file); }
+
+Timeline clip_transcript(const std::string& name) { return load_transcript(clip_path(name + ".txt")); }
+
+// The true onsets of tests/data/speech/NAME.json (its "start" values, syllables after sentences).
+std::vector<double> true_starts(const std::string& name) {
+    std::ifstream in(clip_path(name + ".json"));
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<double> starts;
+    const std::size_t syllables = text.find("\"syllables\"");
+    for (std::size_t at = text.find("\"start\":", syllables); at != std::string::npos; at = text.find("\"start\":", at + 1))
+        starts.push_back(std::stod(text.substr(at + 8)));
+    return starts;
+}
+
+std::vector<double> sentence_truth(const std::string& name, const char* key) {
+    std::ifstream in(clip_path(name + ".json"));
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<double> values;
+    const std::size_t end = text.find("\"syllables\"");
+    const std::string pattern = std::string("\"") + key + "\":";
+    for (std::size_t at = text.find(pattern); at != std::string::npos && at < end; at = text.find(pattern, at + 1))
+        values.push_back(std::stod(text.substr(at + pattern.size())));
+    return values;
+}
+
+std::vector<float> read_mono(const std::string& path, int& rate_hz) {
+    SF_INFO info{};
+    SNDFILE* file = sf_open(path.c_str(), SFM_READ, &info);
+    REQUIRE(file != nullptr);
+    std::vector<float> samples(static_cast<std::size_t>(info.frames * info.channels));
+    sf_readf_float(file, samples.data(), info.frames);
+    sf_close(file);
+    rate_hz = info.samplerate;
+    return samples;
+}
+
+void write_wav(const std::string& path, const std::vector<float>& samples, int rate_hz, int format = SF_FORMAT_PCM_16) {
+    SF_INFO info{};
+    info.samplerate = rate_hz;
+    info.channels = 1;
+    info.format = SF_FORMAT_WAV | format;
+    SNDFILE* file = sf_open(path.c_str(), SFM_WRITE, &info);
+    REQUIRE(file != nullptr);
+    sf_writef_float(file, samples.data(), static_cast<sf_count_t>(samples.size()));
+    sf_close(file);
+}
+
+void write_bytes(const std::string& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary) << bytes;
+}
+
+// Properties every aligned timeline has, whatever the audio.
+void check_well_formed(const Timeline& timeline, const Timeline& transcript) {
+    REQUIRE(timeline.syllables.size() == transcript.syllables.size());
+    REQUIRE(timeline.sentences.size() == transcript.sentences.size());
+    double previous_end = 0.0;
+    for (std::size_t i = 0; i < timeline.syllables.size(); ++i) {
+        const auto& syllable = timeline.syllables[i];
+        CAPTURE(i);
+        CAPTURE(syllable.pinyin);
+        CHECK(syllable.pinyin == transcript.syllables[i].pinyin);
+        CHECK(syllable.start_s >= previous_end - 1e-9);
+        CHECK(syllable.start_s < syllable.end_s);
+        REQUIRE(syllable.final_start_s.has_value());
+        CHECK(*syllable.final_start_s >= syllable.start_s);
+        CHECK(*syllable.final_start_s < syllable.end_s);
+        const char initial = syllable.pinyin[0];
+        if (initial != 'y' && initial != 'w' && std::string("aeo").find(initial) == std::string::npos)
+            CHECK(*syllable.final_start_s > syllable.start_s);
+        CHECK(syllable.confidence >= 0.0);
+        CHECK(syllable.confidence <= 1.0);
+        CHECK(syllable.end_s <= timeline.duration_s + 1e-9);
+        previous_end = syllable.end_s;
+    }
+    for (std::size_t k = 0; k < timeline.sentences.size(); ++k) {
+        CHECK(timeline.sentences[k].start_s <= timeline.sentences[k].end_s);
+        if (k > 0) CHECK(timeline.sentences[k].start_s >= timeline.sentences[k - 1].end_s);
+    }
+}
+
+double share_within(const Timeline& timeline, const std::vector<double>& truth, double tolerance_s) {
+    REQUIRE(truth.size() == timeline.syllables.size());
+    std::size_t within = 0;
+    for (std::size_t i = 0; i < truth.size(); ++i)
+        if (std::fabs(timeline.syllables[i].start_s - truth[i]) <= tolerance_s) ++within;
+    return static_cast<double>(within) / static_cast<double>(truth.size());
+}
+
+// Vowel-like bursts (a 150 Hz buzz with formant-ish harmonics), 0.2 s each with 0.05 s gaps,
+// one group per sentence, groups 0.7 s apart, in faint noise.
+std::vector<float> synthetic_speech(const std::vector<int>& syllables_per_sentence, int rate_hz,
+                                    std::vector<double>& pause_midpoints_s) {
+    std::vector<float> samples(static_cast<std::size_t>(0.4 * rate_hz), 0.0f);
+    for (std::size_t k = 0; k < syllables_per_sentence.size(); ++k) {
+        if (k > 0) {
+            pause_midpoints_s.push_back((static_cast<double>(samples.size()) + 0.35 * rate_hz) / rate_hz);
+            samples.resize(samples.size() + static_cast<std::size_t>(0.7 * rate_hz), 0.0f);
+        }
+        for (int s = 0; s < syllables_per_sentence[k]; ++s) {
+            const auto length = static_cast<std::size_t>(0.2 * rate_hz);
+            for (std::size_t i = 0; i < length; ++i) {
+                const double t = static_cast<double>(i) / rate_hz;
+                const double envelope = std::sin(M_PI * static_cast<double>(i) / static_cast<double>(length));
+                double value = 0.0;
+                for (int h = 1; h <= 20; ++h) value += std::sin(2.0 * M_PI * 150.0 * h * t) / h * (h >= 4 && h <= 6 ? 3.0 : 1.0);
+                samples.push_back(static_cast<float>(0.1 * envelope * value));
+            }
+            samples.resize(samples.size() + static_cast<std::size_t>(0.05 * rate_hz), 0.0f);
+        }
+    }
+    samples.resize(samples.size() + static_cast<std::size_t>(0.4 * rate_hz), 0.0f);
+    std::mt19937 random(7);
+    std::normal_distribution<float> noise(0.0f, 0.001f);
+    for (auto& sample : samples) sample += noise(random);
+    return samples;
+}
+
+}  // namespace
+
+TEST_SUITE("SpeechAligner") {
+    TEST_CASE("every clip format aligns: ordered syllables inside the audio, onsets near the truth") {
+        const std::vector<Clip> clips = {{"one_sentence.wav", "one_sentence"},
+                                         {"two_sentences.wav", "two_sentences"},
+                                         {"comma_pause.flac", "comma_pause"},
+                                         {"stereo_44k.ogg", "stereo_44k"}};
+        for (const auto& clip : clips) {
+            CAPTURE(clip.audio);
+            const Timeline transcript = clip_transcript(clip.name);
+            const Timeline timeline = SpeechAligner().align_file(clip_path(clip.audio), transcript);
+            check_well_formed(timeline, transcript);
+            // An even split of each sentence puts about a third of onsets within 50 ms; the
+            // aligner must do far better (the benchmark measures the real targets).
+            CHECK(share_within(timeline, true_starts(clip.name), 0.05) >= 0.75);
+            CHECK(share_within(timeline, true_starts(clip.name), 0.10) >= 0.85);
+        }
+    }
+
+    TEST_CASE("sentence boundaries are found at the pause between sentences") {
+        const Timeline timeline = SpeechAligner().align_file(clip_path("two_sentences.wav"), clip_transcript("two_sentences"));
+        const auto starts = sentence_truth("two_sentences", "start");
+        const auto ends = sentence_truth("two_sentences", "end");
+        REQUIRE(starts.size() == 2);
+        for (std::size_t k = 0; k < 2; ++k) {
+            CAPTURE(k);
+            CHECK(std::fabs(timeline.sentences[k].start_s - starts[k]) < 0.05);
+            CHECK(std::fabs(timeline.sentences[k].end_s - ends[k]) < 0.08);
+        }
+    }
+
+    TEST_CASE("the automatic cut finds synthetic sentences between tone bursts in noise") {
+        const int rate_hz = 22050;
+        std::vector<double> pauses_s;
+        const auto samples = synthetic_speech({3, 5, 2}, rate_hz, pauses_s);
+        const Timeline transcript = read_transcript("a1 a1 a1. a1 a1 a1 a1 a1. a1 a1.");
+        AudioView view{samples.data(), samples.size(), 1, rate_hz};
+        const Timeline timeline = SpeechAligner().align(view, transcript);
+        REQUIRE(timeline.sentences.size() == 3);
+        for (std::size_t k = 0; k + 1 < 3; ++k) {
+            CAPTURE(k);
+            CHECK(timeline.sentences[k].end_s < pauses_s[k]);
+            CHECK(timeline.sentences[k + 1].start_s > pauses_s[k]);
+            CHECK(pauses_s[k] - timeline.sentences[k].end_s < 0.45);
+            CHECK(timeline.sentences[k + 1].start_s - pauses_s[k] < 0.45);
+        }
+    }
+
+    TEST_CASE("Algorithm 3.1 cuts sentences from the first pause the caller selects") {
+        AlignOptions options;
+        options.sentence_cut = SentenceCutMode::first_pause;
+        options.first_pause_start_s = 1.8;
+        options.first_pause_end_s = 2.4;
+        const Timeline transcript = clip_transcript("two_sentences");
+        const Timeline timeline = SpeechAligner(options).align_file(clip_path("two_sentences.wav"), transcript);
+        check_well_formed(timeline, transcript);
+        const auto starts = sentence_truth("two_sentences", "start");
+        CHECK(std::fabs(timeline.sentences[1].start_s - starts[1]) < 0.06);
+
+        options.first_pause_start_s = 0.9;  // inside the first sentence: the gaps between syllables
+        options.first_pause_end_s = 0.92;
+        CHECK_THROWS_WITH_AS(SpeechAligner(options).align_file(clip_path("two_sentences.wav"), transcript),
+                             doctest::Contains("speaking parts"), AlignmentError);
+        options.first_pause_start_s = 9.0;
+        options.first_pause_end_s = 9.5;
+        CHECK_THROWS_WITH_AS(SpeechAligner(options).align_file(clip_path("two_sentences.wav"), transcript),
+                             doctest::Contains("first_pause"), InvalidArgument);
+    }
+
+    TEST_CASE("options out of range are named") {
+        AlignOptions options;
+        options.c1 = 0.3;
+        CHECK_THROWS_WITH_AS(SpeechAligner{options}, doctest::Contains("c1"), InvalidArgument);
+        options.c1 = 0.95;
+        options.c2 = 2.0;
+        CHECK_THROWS_WITH_AS(SpeechAligner{options}, doctest::Contains("c2"), InvalidArgument);
+        options.c2 = 1.45;
+        options.sentence_cut = SentenceCutMode::first_pause;
+        options.first_pause_start_s = 2.0;
+        options.first_pause_end_s = 1.0;
+        CHECK_THROWS_WITH_AS(SpeechAligner{options}, doctest::Contains("first_pause"), InvalidArgument);
+    }
+
+    TEST_CASE("a transcript that does not match the audio is an AlignmentError naming where") {
+        const SpeechAligner aligner;
+        SUBCASE("an extra sentence") {
+            CHECK_THROWS_WITH_AS(aligner.align_file(clip_path("two_sentences.wav"),
+                                                    read_transcript("今天下午有雨。我们明天再去吧。他们都很好。")),
+                                 doctest::Contains("3 spoken sentences"), AlignmentError);
+        }
+        SUBCASE("a missing sentence") {
+            CHECK_THROWS_WITH_AS(aligner.align_file(clip_path("two_sentences.wav"), read_transcript("今天下午有雨。")),
+                                 doctest::Contains("sentence 1 (0."), AlignmentError);
+        }
+        SUBCASE("the wrong text: far too few syllables") {
+            CHECK_THROWS_WITH_AS(aligner.align_file(clip_path("one_sentence.wav"), read_transcript("我很好。")),
+                                 doctest::Contains("\"我很好。\""), AlignmentError);
+        }
+        SUBCASE("the wrong text: far too many syllables") {
+            CHECK_THROWS_WITH_AS(aligner.align_file(clip_path("two_sentences.wav"),
+                                                    read_transcript("今天下午有雨。我们明天再去吧吗吗吗吗吗吗。")),
+                                 doctest::Contains("sentence 2"), AlignmentError);
+        }
+    }
+
+    TEST_CASE("unreadable, empty, silent and truncated audio name the file and what is wrong") {
+        const SpeechAligner aligner;
+        const Timeline transcript = read_transcript("ni3 hao3.");
+        const std::string missing = test::output_path("no_such_audio.wav");
+        CHECK_THROWS_WITH_AS(aligner.align_file(missing, transcript), doctest::Contains(missing.c_str()), FileError);
+
+        const std::string text = test::output_path("not_audio.wav");
+        write_bytes(text, "this is not a sound file, only text.\n");
+        CHECK_THROWS_WITH_AS(aligner.align_file(text, transcript), doctest::Contains((text + ": not audio").c_str()), ParseError);
+
+        const std::string empty = test::output_path("empty.wav");
+        write_bytes(empty, "");
+        CHECK_THROWS_WITH_AS(aligner.align_file(empty, transcript), doctest::Contains("empty"), InvalidArgument);
+
+        const std::string no_frames = test::output_path("no_frames.wav");
+        write_wav(no_frames, {}, 16000);
+        CHECK_THROWS_WITH_AS(aligner.align_file(no_frames, transcript), doctest::Contains((no_frames + ": empty").c_str()),
+                             InvalidArgument);
+
+        const std::string silent = test::output_path("silent.wav");
+        write_wav(silent, std::vector<float>(16000, 0.0f), 16000);
+        CHECK_THROWS_WITH_AS(aligner.align_file(silent, transcript), doctest::Contains((silent + ": silent").c_str()), InvalidArgument);
+
+        int rate_hz = 0;
+        const auto samples = read_mono(clip_path("one_sentence.wav"), rate_hz);
+        const std::string whole = test::output_path("whole.wav");
+        write_wav(whole, samples, rate_hz);
+        const std::string bytes = [&] {
+            std::ifstream in(whole, std::ios::binary);
+            return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        }();
+        const std::string truncated = test::output_path("truncated.wav");
+        write_bytes(truncated, bytes.substr(0, 44 + 2 * 20000));
+        CHECK_THROWS_WITH_AS(aligner.align_file(truncated, transcript),
+                             doctest::Contains((truncated + ": truncated: the header promises " +
+                                                                std::to_string(samples.size()) + " frames")
+                                                                   .c_str()),
+                             FileError);
+        CHECK_THROWS_WITH_AS(aligner.align_file(truncated, transcript), doctest::Contains("ends at frame 20000 (1.25 s)"),
+                             FileError);
+    }
+
+    TEST_CASE("samples in memory align like the file they came from, and twice the same") {
+        int rate_hz = 0;
+        const auto samples = read_mono(clip_path("comma_pause.flac"), rate_hz);
+        const Timeline transcript = clip_transcript("comma_pause");
+        const SpeechAligner aligner;
+        const Timeline from_file = aligner.align_file(clip_path("comma_pause.flac"), transcript);
+        const Timeline from_memory = aligner.align(AudioView{samples.data(), samples.size(), 1, rate_hz}, transcript);
+        const Timeline again = aligner.align(AudioView{samples.data(), samples.size(), 1, rate_hz}, transcript);
+        for (std::size_t i = 0; i < transcript.syllables.size(); ++i) {
+            CAPTURE(i);
+            CHECK(from_memory.syllables[i].start_s == from_file.syllables[i].start_s);
+            CHECK(from_memory.syllables[i].end_s == from_file.syllables[i].end_s);
+            CHECK(again.syllables[i].start_s == from_memory.syllables[i].start_s);
+            CHECK(again.syllables[i].final_start_s == from_memory.syllables[i].final_start_s);
+            CHECK(again.syllables[i].confidence == from_memory.syllables[i].confidence);
+        }
+        CHECK_THROWS_WITH_AS(aligner.align(AudioView{nullptr, 10, 1, 16000}, transcript), doctest::Contains("audio.samples"),
+                             InvalidArgument);
+        CHECK_THROWS_WITH_AS(aligner.align(AudioView{samples.data(), samples.size(), 1, rate_hz}, read_transcript("ABC.")),
+                             doctest::Contains("transcript"), InvalidArgument);
+    }
+
+    TEST_CASE("progress rises through the stages, and returning false cancels") {
+        const Timeline transcript = clip_transcript("two_sentences");
+        std::vector<std::pair<double, std::string>> reports;
+        SpeechAligner().align_file(clip_path("two_sentences.wav"), transcript, [&](double fraction, const std::string& stage) {
+            reports.emplace_back(fraction, stage);
+            return true;
+        });
+        REQUIRE(reports.size() >= 5);
+        CHECK(reports.front().second == "reading");
+        CHECK(reports.back().first == 1.0);
+        CHECK(reports.back().second == "syllables");
+        for (std::size_t i = 1; i < reports.size(); ++i) {
+            CAPTURE(i);
+            CHECK(reports[i].first >= reports[i - 1].first);
+        }
+        CHECK(std::any_of(reports.begin(), reports.end(), [](const auto& r) { return r.second == "sentences"; }));
+
+        int calls = 0;
+        CHECK_THROWS_AS(SpeechAligner().align_file(clip_path("two_sentences.wav"), transcript,
+                                                   [&](double fraction, const std::string&) {
+                                                       ++calls;
+                                                       return fraction < 0.6;
+                                                   }),
+                        Cancelled);
+        CHECK(calls >= 2);
+    }
+}
