@@ -15,6 +15,7 @@
 #include "talkface/face_pose.hpp"
 #include "talkface/lip_sync.hpp"
 #include "talkface/mouth_shape.hpp"
+#include "talkface/speech_aligner.hpp"
 #include "talkface/svg_animator.hpp"
 #include "talkface/talkface.h"
 #include "talkface/timeline.hpp"
@@ -53,6 +54,10 @@ struct tf_lip_sync_options {
 
 struct tf_animation {
     talkface::Animation animation;
+};
+
+struct tf_align_options {
+    talkface::AlignOptions options;
 };
 
 namespace talkface::capi {

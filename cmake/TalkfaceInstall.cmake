@@ -13,9 +13,6 @@ install(DIRECTORY "${PROJECT_SOURCE_DIR}/include/talkface" DESTINATION ${CMAKE_I
 install(FILES "${PROJECT_BINARY_DIR}/include/talkface/version.h"
               "${PROJECT_BINARY_DIR}/include/talkface/export.h"
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/talkface)
-if(TARGET talkface)
-  install(TARGETS talkface RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-endif()
 
 install(EXPORT talkfaceTargets NAMESPACE talkface:: DESTINATION ${TALKFACE_CMAKE_DIR})
 configure_package_config_file("${PROJECT_SOURCE_DIR}/cmake/talkfaceConfig.cmake.in"

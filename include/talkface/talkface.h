@@ -594,6 +594,85 @@ TF_API tf_status tf_syllable_mouth_shapes(const char *pinyin, tf_mouth_shape *ou
                                           size_t *out_count);
 
 /* ---------------------------------------------------------------------------------------------
+ * Speech alignment (SPEC step 4, thesis chapter 3): a recorded speech and its transcript become a
+ * timeline with every sentence's and syllable's times (the `align` JSON of SPEC "Contracts").
+ * ------------------------------------------------------------------------------------------- */
+
+/* Reports progress: `fraction` of the whole job, 0..1 and never decreasing, and the stage
+ * ("reading", "sentences", "syllables"; a static string). Return 0 to go on, non-zero to cancel:
+ * the call then fails with TF_ERR_CANCELLED and writes nothing. Called on the thread that called
+ * tf_align_file / tf_align_samples, often enough to draw a progress bar. */
+typedef int (*tf_progress_fn)(double fraction, const char *stage, void *user_data);
+
+/* How the audio is cut into sentence utterances; values equal talkface::SentenceCutMode. */
+typedef enum tf_sentence_cut_mode {
+    /* The default: noise level and pause lengths are learned from the audio, and the transcript's
+     * number of sentences picks the pauses. */
+    TF_SENTENCE_CUT_AUTOMATIC = 0,
+    /* Thesis Algorithm 3.1 from a pause the caller gives (tf_align_options_set_first_pause). */
+    TF_SENTENCE_CUT_FIRST_PAUSE = 1
+} tf_sentence_cut_mode;
+
+/* Options of the aligner. Created by tf_align_options_create with the defaults (automatic sentence
+ * cuts, c1 = 0.95, c2 = 1.45), released by tf_align_options_destroy. Each setter checks its value at
+ * once and leaves the options unchanged on failure, so a tf_align_options is always valid. */
+typedef struct tf_align_options tf_align_options;
+
+/* New options with the defaults. Errors: TF_ERR_INVALID_ARGUMENT if out is NULL. */
+TF_API tf_status tf_align_options_create(tf_align_options **out);
+
+/* Releases options. Accepts NULL. */
+TF_API void tf_align_options_destroy(tf_align_options *options);
+
+/* Sets how sentences are cut. TF_SENTENCE_CUT_FIRST_PAUSE needs a pause set first; setting one with
+ * tf_align_options_set_first_pause selects that mode by itself.
+ * Errors: TF_ERR_INVALID_ARGUMENT naming sentence_cut for a value outside tf_sentence_cut_mode,
+ * naming first_pause for TF_SENTENCE_CUT_FIRST_PAUSE before a pause is set, or for a NULL options. */
+TF_API tf_status tf_align_options_set_sentence_cut(tf_align_options *options, tf_sentence_cut_mode mode);
+
+/* Selects TF_SENTENCE_CUT_FIRST_PAUSE with the pause between the first two sentences, seconds from
+ * the start of the audio (thesis Algorithm 3.1 step 1).
+ * Errors: TF_ERR_INVALID_ARGUMENT naming first_pause unless 0 <= start_s < end_s (finite), or for a
+ * NULL options. */
+TF_API tf_status tf_align_options_set_first_pause(tf_align_options *options, double start_s, double end_s);
+
+/* Sets c1 of Algorithm 3.1 step 3 (shortest pause, as a share of the first pause), 0.5..1.
+ * Errors: TF_ERR_INVALID_ARGUMENT naming c1 if out of range, or for a NULL options. */
+TF_API tf_status tf_align_options_set_c1(tf_align_options *options, double c1);
+
+/* Sets c2 of Algorithm 3.1 step 4 (loudest silence, as a multiple of the first pause's peak), 1..1.5.
+ * Errors: TF_ERR_INVALID_ARGUMENT naming c2 if out of range, or for a NULL options. */
+TF_API tf_status tf_align_options_set_c2(tf_align_options *options, double c2);
+
+/* Aligns an audio file (WAV, FLAC, OGG; any rate, 8 to 32 bit or float, mono or stereo) with
+ * `transcript` (from tf_read_transcript / tf_load_transcript) into a new timeline *out: the
+ * transcript's sentences and syllables with their times, seconds (syllable start = where its initial
+ * consonant starts; final start and confidence set), and the audio's duration. The audio is read in
+ * blocks: an hour of speech aligns in bounded memory. `options` NULL means the defaults; `progress`
+ * may be NULL (user_data is passed to it untouched). *out is left unchanged on failure.
+ * Thread safety: several alignments may run at once, also sharing transcript and options.
+ * Errors: TF_ERR_FILE naming the path if it cannot be opened or read (truncated);
+ *         TF_ERR_PARSE if it is not audio talkface reads; TF_ERR_INVALID_ARGUMENT if it is empty,
+ *         the transcript has no syllables, or audio_path, transcript or out is NULL (named);
+ *         TF_ERR_ALIGNMENT naming the file, the sentence and its times when audio and transcript do
+ *         not match (a missing or extra sentence, the wrong text);
+ *         TF_ERR_CANCELLED if progress returned non-zero. */
+TF_API tf_status tf_align_file(const char *audio_path, const tf_timeline *transcript,
+                               const tf_align_options *options, tf_progress_fn progress, void *user_data,
+                               tf_timeline **out);
+
+/* Aligns samples in memory as tf_align_file does: `frame_count` frames of `channel_count`
+ * interleaved floats in -1..1 at `sample_rate_hz` (channels are mixed down to mono), borrowed for
+ * the call only. The same audio gives the same timeline as tf_align_file.
+ * Errors: TF_ERR_INVALID_ARGUMENT naming the argument: audio.frame_count if 0, audio.channel_count
+ * or audio.sample_rate_hz if out of range (the message gives the range), samples, transcript or out
+ * if NULL; otherwise as tf_align_file. */
+TF_API tf_status tf_align_samples(const float *samples, size_t frame_count, int channel_count,
+                                  int sample_rate_hz, const tf_timeline *transcript,
+                                  const tf_align_options *options, tf_progress_fn progress,
+                                  void *user_data, tf_timeline **out);
+
+/* ---------------------------------------------------------------------------------------------
  * Expression simulation (SPEC step 5): blinks, eyebrow raises, head tilts, turns and nods drawn
  * from a seed (the same seed gives the same events on every platform), plus the caller's own.
  * ------------------------------------------------------------------------------------------- */
@@ -801,6 +880,177 @@ TF_API tf_status tf_animation_key_frames_json(const tf_animation *animation, cha
  * Errors: TF_ERR_INVALID_ARGUMENT if animation or out_tsv is NULL. */
 TF_API tf_status tf_animation_key_frames_tsv(const tf_animation *animation, char **out_tsv,
                                              size_t *out_len);
+
+/* ---------------------------------------------------------------------------------------------
+ * The animation as SVG and the web page around it (SPEC step 7-8, thesis 6.3.2 and chapter 7).
+ * ------------------------------------------------------------------------------------------- */
+
+/* How an animation becomes SVG; values equal talkface::AnimationEncoding. */
+typedef enum tf_animation_encoding {
+    /* The default: the face drawn once, each moving element animated by SMIL <animate> between
+     * key frames (within 0.3 px of every frame): small files. */
+    TF_ENCODING_KEYFRAMES = 0,
+    /* Thesis 6.3.2: one group per frame, shown in turn by <set>. Exact, large. */
+    TF_ENCODING_FRAMES = 1
+} tf_animation_encoding;
+
+/* A standalone SVG document that plays `animation` of `face` from document time 0 (root class
+ * "tf-animation"). `options` NULL means the default drawing; `progress` may be NULL.
+ * Release *out_svg with tf_free; *out_len (if not NULL) is its length without the NUL.
+ * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL, the encoding is unknown or a frame
+ * cannot be drawn; TF_ERR_CANCELLED if progress returned non-zero. */
+TF_API tf_status tf_render_animation_svg(const tf_face_model *face, const tf_animation *animation,
+                                         const tf_svg_options *options, tf_animation_encoding encoding,
+                                         tf_progress_fn progress, void *user_data, char **out_svg,
+                                         size_t *out_len);
+
+/* tf_render_animation_svg written to `path` through a temporary file and a rename.
+ * Errors: as tf_render_animation_svg; TF_ERR_FILE if the file cannot be written. */
+TF_API tf_status tf_write_animation_svg(const tf_face_model *face, const tf_animation *animation,
+                                        const tf_svg_options *options, tf_animation_encoding encoding,
+                                        const char *path);
+
+/* What a web page is for; values equal talkface::WebPageApp. */
+typedef enum tf_web_page_app {
+    TF_PAGE_PLAIN = 0,      /* the talking face and the audio controls */
+    TF_PAGE_ANNOUNCER = 1,  /* the face placed on a stage over a colour or an image (thesis 7.2) */
+    TF_PAGE_AUDIOBOOK = 2   /* title, text with the spoken sentence highlighted, links, face (7.3) */
+} tf_web_page_app;
+
+/* Options of a web page. Created by tf_web_page_options_create with the defaults (plain page,
+ * key frames, audio embedded, an 800 x 450 stage), released by tf_web_page_options_destroy. */
+typedef struct tf_web_page_options tf_web_page_options;
+
+TF_API tf_status tf_web_page_options_create(tf_web_page_options **out);
+/* Releases the options; NULL is allowed. */
+TF_API void tf_web_page_options_destroy(tf_web_page_options *options);
+/* Errors: TF_ERR_INVALID_ARGUMENT if options is NULL or app is not a tf_web_page_app. */
+TF_API tf_status tf_web_page_options_set_app(tf_web_page_options *options, tf_web_page_app app);
+/* The page's title, UTF-8 (NULL or "": the first sentence). Escaped in the page. */
+TF_API tf_status tf_web_page_options_set_title(tf_web_page_options *options, const char *title);
+/* Appends a link of the audio book: its text and URL (http:, https:, mailto: or relative; other
+ * schemes fail when the page is built). Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_web_page_options_add_link(tf_web_page_options *options, const char *text, const char *url);
+/* Errors: TF_ERR_INVALID_ARGUMENT if options is NULL or the encoding is unknown. */
+TF_API tf_status tf_web_page_options_set_encoding(tf_web_page_options *options, tf_animation_encoding encoding);
+/* link_audio 0 embeds the audio in the page (the default); non-zero links `url` (relative to the
+ * page; NULL: the audio file's name) and the audio must stay beside the page. */
+TF_API tf_status tf_web_page_options_set_link_audio(tf_web_page_options *options, int link_audio, const char *url);
+/* Announcer: the stage's size in CSS pixels, its colour, and a background image file (PNG, JPEG,
+ * GIF, WebP or SVG, embedded; NULL for none). */
+TF_API tf_status tf_web_page_options_set_stage(tf_web_page_options *options, int width_px, int height_px,
+                                               tf_rgb colour, const char *image_path);
+/* Announcer: where the face's rotation origin O (the neck) stands on the stage, pixels (origin_xy
+ * NULL: the bottom centre), and its eye distance d there (0: as large as fits the stage). */
+TF_API tf_status tf_web_page_options_set_face_placement(tf_web_page_options *options, const double origin_xy[2],
+                                                        double d_px);
+
+/* The web page, one self-contained UTF-8 HTML file: the animation of `face` inline, the audio at
+ * `audio_path` (.ogg .wav .flac .mp3 ...) embedded or linked, and a script that makes the audio's
+ * clock drive the face. `timeline` gives the sentences (the aligned one the animation was made
+ * from). `svg_options` and `page_options` may be NULL (defaults); `progress` may be NULL.
+ * Release *out_html with tf_free.
+ * Errors: TF_ERR_INVALID_ARGUMENT for a NULL argument, an option out of range, a refused link;
+ * TF_ERR_FILE if the audio or the image cannot be read; TF_ERR_CANCELLED. */
+TF_API tf_status tf_build_web_page(const tf_face_model *face, const tf_svg_options *svg_options,
+                                   const tf_animation *animation, const tf_timeline *timeline,
+                                   const char *audio_path, const tf_web_page_options *page_options,
+                                   tf_progress_fn progress, void *user_data, char **out_html, size_t *out_len);
+
+/* tf_build_web_page written to `path` through a temporary file and a rename: a failure never leaves
+ * half a page. Errors: as tf_build_web_page; TF_ERR_FILE if the page cannot be written. */
+TF_API tf_status tf_write_web_page(const tf_face_model *face, const tf_svg_options *svg_options,
+                                   const tf_animation *animation, const tf_timeline *timeline,
+                                   const char *audio_path, const tf_web_page_options *page_options,
+                                   const char *path);
+
+/* ---------------------------------------------------------------------------------------------
+ * Face from a photo (SPEC step 1; thesis 2.2, Chen and Tsai's method; talkface/face_from_photo.hpp).
+ * The points are in the photo's pixels. Photo errors are TF_ERR_INVALID_ARGUMENT with a message that
+ * names the photo and what was wrong: no face, several faces (set a face index), face too small, too
+ * dark, not frontal enough. A missing Haar cascade or dlib model is TF_ERR_FILE.
+ * ------------------------------------------------------------------------------------------- */
+
+/* How the bytes of one pixel are laid out (8 bits per channel). */
+typedef enum tf_pixel_format {
+    TF_PIXEL_FORMAT_GRAY8 = 0,
+    TF_PIXEL_FORMAT_RGB8 = 1,
+    TF_PIXEL_FORMAT_BGR8 = 2,
+    TF_PIXEL_FORMAT_RGBA8 = 3
+} tf_pixel_format;
+
+/* Which locator finds eyes, brows, nose, mouth and jaw. */
+typedef enum tf_photo_locator {
+    TF_PHOTO_LOCATOR_THESIS = 0,    /* knowledge-based edge detection, OpenCV only */
+    TF_PHOTO_LOCATOR_DLIB = 1,      /* dlib's 68-point shape predictor */
+    TF_PHOTO_LOCATOR_AUTOMATIC = 2  /* dlib where built in and installed, else thesis */
+} tf_photo_locator;
+
+/* 1 if this build has the dlib locator, else 0. */
+TF_API int tf_has_dlib_locator(void);
+
+/* Options for reading a photo; NULL everywhere means the defaults (automatic locator, refuse a
+ * photo with several faces, opencv-data's cascades, libdlib-data's model). Created by
+ * tf_photo_options_create, released by tf_photo_options_destroy. */
+typedef struct tf_photo_options tf_photo_options;
+
+/* Errors: TF_ERR_INVALID_ARGUMENT if out is NULL. */
+TF_API tf_status tf_photo_options_create(tf_photo_options **out);
+/* Releases options. Accepts NULL. */
+TF_API void tf_photo_options_destroy(tf_photo_options *options);
+/* Errors: TF_ERR_INVALID_ARGUMENT for a value outside tf_photo_locator or a NULL options. */
+TF_API tf_status tf_photo_options_set_locator(tf_photo_options *options, tf_photo_locator locator);
+/* Which face to use when the photo shows several, 0 = leftmost; -1 refuses such a photo.
+ * Errors: TF_ERR_INVALID_ARGUMENT if face_index < -1 or options is NULL. */
+TF_API tf_status tf_photo_options_set_face_index(tf_photo_options *options, int face_index);
+/* Folder holding OpenCV's Haar cascades (copied). Errors: TF_ERR_INVALID_ARGUMENT for NULL. */
+TF_API tf_status tf_photo_options_set_cascade_dir(tf_photo_options *options, const char *folder);
+/* dlib's shape_predictor_68_face_landmarks.dat (copied). Errors: TF_ERR_INVALID_ARGUMENT for NULL. */
+TF_API tf_status tf_photo_options_set_dlib_model_path(tf_photo_options *options, const char *path);
+
+/* What a photo gave: the face and the confidence of every located feature. Created by
+ * tf_photo_result_from_file / _from_pixels, released by tf_photo_result_destroy. */
+typedef struct tf_photo_result tf_photo_result;
+
+/* Reads a PNG, JPEG, BMP, TIFF or WebP photo and extracts its face. options may be NULL.
+ * Errors: TF_ERR_FILE if the photo cannot be read; TF_ERR_INVALID_ARGUMENT as described above. */
+TF_API tf_status tf_photo_result_from_file(const char *path, const tf_photo_options *options,
+                                           tf_photo_result **out);
+/* The same from pixels the caller owns (row y at pixels + y * stride_bytes), read during the call.
+ * Errors: TF_ERR_INVALID_ARGUMENT for a malformed image or as described above. */
+TF_API tf_status tf_photo_result_from_pixels(const uint8_t *pixels, int width, int height, int stride_bytes,
+                                             tf_pixel_format format, const tf_photo_options *options,
+                                             tf_photo_result **out);
+/* Releases a result. Accepts NULL. */
+TF_API void tf_photo_result_destroy(tf_photo_result *result);
+/* A copy of the extracted face; release it with tf_face_model_destroy.
+ * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_photo_result_face(const tf_photo_result *result, tf_face_model **out);
+/* The number of located features. Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_photo_result_feature_count(const tf_photo_result *result, size_t *out_count);
+/* Feature `index`: its name (borrowed, valid while the result lives), confidence 0..1, and whether
+ * its points come from the default face's proportions because it was not found (1) or not (0).
+ * Any out pointer may be NULL. Errors: TF_ERR_INVALID_ARGUMENT if index is out of range. */
+TF_API tf_status tf_photo_result_feature(const tf_photo_result *result, size_t index, const char **out_name,
+                                         double *out_confidence, int *out_from_prior);
+/* The confidence of the named feature ("left_eye", "mouth", "hair", ...).
+ * Errors: TF_ERR_INVALID_ARGUMENT for an unknown name or a NULL argument. */
+TF_API tf_status tf_photo_result_confidence(const tf_photo_result *result, const char *feature_name,
+                                            double *out_confidence);
+/* The locator that was used (never TF_PHOTO_LOCATOR_AUTOMATIC).
+ * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_photo_result_locator(const tf_photo_result *result, tf_photo_locator *out_locator);
+/* Writes the photo at photo_path with the extracted points drawn on it as a PNG, atomically.
+ * Errors: TF_ERR_FILE if the photo cannot be read or the PNG written. */
+TF_API tf_status tf_photo_result_write_overlay(const tf_photo_result *result, const char *photo_path,
+                                               const char *output_png_path);
+
+/* Shortcuts that keep only the face. options may be NULL. Errors as tf_photo_result_from_*. */
+TF_API tf_status tf_face_model_from_photo_file(const char *path, const tf_photo_options *options,
+                                               tf_face_model **out);
+TF_API tf_status tf_face_model_from_photo_pixels(const uint8_t *pixels, int width, int height, int stride_bytes,
+                                                 tf_pixel_format format, const tf_photo_options *options,
+                                                 tf_face_model **out);
 
 #ifdef __cplusplus
 }

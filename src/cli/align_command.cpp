@@ -1,9 +1,6 @@
 // `talkface align`: a speech and its transcript in, each sentence's and syllable's times out
 // (SPEC "Contracts"), with an optional picture of the result (thesis Figures 3.5 and 3.8).
-#include <unistd.h>
-
 #include <cmath>
-#include <cstdio>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -17,6 +14,7 @@
 
 #include "alignment_plot.hpp"
 #include "commands.hpp"
+#include "progress_bar.hpp"
 #include "common/atomic_file.hpp"
 
 namespace talkface_cli {
@@ -96,29 +94,6 @@ std::string timeline_table(const talkface::Timeline& timeline) {
     return out.str();
 }
 
-// A one-line bar redrawn in place; only on a terminal (STYLE.md section 8).
-class ProgressBar {
-public:
-    bool update(double fraction, const std::string& stage) {
-        const int percent = static_cast<int>(fraction * 100.0);
-        if (percent == last_percent_ && stage == last_stage_) return true;
-        last_percent_ = percent;
-        last_stage_ = stage;
-        const int filled = percent * 30 / 100;
-        std::fprintf(stderr, "\r%-9s [%-30s] %3d%%", stage.c_str(), std::string(static_cast<std::size_t>(filled), '#').c_str(),
-                     percent);
-        std::fflush(stderr);
-        return true;
-    }
-    ~ProgressBar() {
-        if (last_percent_ >= 0) std::fputs("\r\033[K", stderr);
-    }
-
-private:
-    int last_percent_ = -1;
-    std::string last_stage_;
-};
-
 void run_align(const AlignCommandOptions& options) {
     talkface::AlignOptions align_options;
     align_options.c1 = options.c1;
@@ -133,13 +108,8 @@ void run_align(const AlignCommandOptions& options) {
     const talkface::SpeechAligner aligner(align_options);
     talkface::Timeline timeline;
     {
-        std::optional<ProgressBar> bar;
-        if (!options.quiet && ::isatty(::fileno(stderr)) != 0) bar.emplace();
-        timeline = aligner.align_file(options.audio_path, transcript,
-                                      bar ? talkface::ProgressCallback([&](double fraction, const std::string& stage) {
-                                          return bar->update(fraction, stage);
-                                      })
-                                          : talkface::ProgressCallback{});
+        const std::unique_ptr<ProgressBar> bar = make_progress_bar(options.quiet);
+        timeline = aligner.align_file(options.audio_path, transcript, progress_part(bar.get(), 0.0, 1.0));
     }
     // Everything is computed before any output is written: a failure leaves no file behind.
     const std::string result = options.json ? timeline_json(timeline) : timeline_table(timeline);

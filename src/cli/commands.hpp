@@ -25,6 +25,9 @@ void setup_animate_command(CLI::App& app);
 // `talkface demo`: animate on the built-in face and the bundled speech (demo_command.cpp).
 void setup_demo_command(CLI::App& app);
 
+// `talkface face-from-photo`: a face file from a frontal photo, with a debug overlay (face_from_photo_command.cpp).
+void setup_face_from_photo_command(CLI::App& app);
+
 }  // namespace talkface_cli
 
 #endif

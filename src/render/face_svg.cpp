@@ -118,6 +118,7 @@ std::string eye_outline_data(const ProjectedFace& face, const EyeParts& eye, int
 }
 
 std::string eye_clip_id(const EyeParts& eye) { return std::string("tf-eye-") + eye.side + "-clip"; }
+std::string eye_outline_id(const EyeParts& eye) { return std::string("tf-eye-") + eye.side; }
 std::string iris_gradient_id(const EyeParts& eye) {
     return std::string("tf-iris-") + eye.side + "-gradient";
 }
@@ -126,7 +127,9 @@ std::string draw_eye_defs(const ProjectedFace& face, const LayerStyle& style) {
     const Rgb iris = face.face.colors().iris;
     std::string svg;
     for (const EyeParts& eye : eye_parts()) {
-        svg += "<clipPath" + attribute("id", eye_clip_id(eye)) + ">\n<path" +
+        // The outline is written once, here, and <use>d for the white and the stroke: an animation
+        // then moves one path per eye instead of three.
+        svg += "<clipPath" + attribute("id", eye_clip_id(eye)) + ">\n<path" + attribute("id", eye_outline_id(eye)) +
                attribute("d", eye_outline_data(face, eye, style.decimals)) + "/>\n</clipPath>\n";
         // Light from the upper left, darker rim: the eyes of thesis Figure 6.5.
         svg += "<radialGradient" + attribute("id", iris_gradient_id(eye)) +
@@ -149,9 +152,9 @@ std::string draw_eyes(const ProjectedFace& face, const LayerStyle& style) {
     const FaceColors& colors = face.face.colors();
     std::string svg;
     for (const EyeParts& eye : eye_parts()) {
-        const std::string outline = eye_outline_data(face, eye, style.decimals);
-        svg += path_element(outline, paint(to_hex(colors.eye_white), "none", 0.0, style.decimals),
-                            std::string("eye-") + eye.side + "-white");
+        const std::string outline = attribute("xlink:href", "#" + eye_outline_id(eye));
+        svg += "<use" + attribute("class", std::string("eye-") + eye.side + "-white") + outline +
+               paint(to_hex(colors.eye_white), "none", 0.0, style.decimals) + "/>\n";
         // Clipped by the eye outline, so a closing lid hides iris and pupil (thesis 6.3.1).
         const Point2 pupil = face.point(eye.eyeball);
         const double iris_radius = face.face.fapu(eye.radius_fapu);
@@ -162,8 +165,8 @@ std::string draw_eyes(const ProjectedFace& face, const LayerStyle& style) {
                circle(pupil, iris_radius, "url(#" + iris_gradient_id(eye) + ")", style.decimals) +
                circle(pupil, pupil_radius, "#111111", style.decimals) +
                circle(highlight, 0.5 * pupil_radius, "#ffffff", style.decimals) + "</g>\n";
-        svg += path_element(outline, paint("none", to_hex(colors.outline), style.stroke_px, style.decimals),
-                            std::string("eye-") + eye.side + "-outline");
+        svg += "<use" + attribute("class", std::string("eye-") + eye.side + "-outline") + outline +
+               paint("none", to_hex(colors.outline), style.stroke_px, style.decimals) + "/>\n";
     }
     return svg;
 }

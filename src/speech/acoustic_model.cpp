@@ -29,7 +29,8 @@ int broad_group(int phone_class) {
 
 }  // namespace
 
-std::vector<float> observe(const FeatureTrack& track, const LoudnessProfile& loudness, const FrameSpan& span) {
+void observe(const FeatureTrack& track, const LoudnessProfile& loudness, const FrameSpan& span,
+             std::vector<float>& result) {
     const std::size_t frames = span.length();
     std::vector<float> energy(frames), low(frames), high(frames);
     for (std::size_t i = 0; i < frames; ++i) {
@@ -42,7 +43,7 @@ std::vector<float> observe(const FeatureTrack& track, const LoudnessProfile& lou
     // and any noise level (SPEC "Alignment": loudness above the noise floor).
     const float speech_level = std::max(10.0f, level_percentile(energy, 0.95));
     const float low_level = std::max(10.0f, level_percentile(low, 0.95));
-    std::vector<float> result(frames * kObservationCount, 0.0f);
+    result.assign(frames * kObservationCount, 0.0f);
     for (std::size_t i = 0; i < frames; ++i) {
         float* row = &result[i * kObservationCount];
         const std::size_t t = span.first_frame + i;
@@ -64,7 +65,6 @@ std::vector<float> observe(const FeatureTrack& track, const LoudnessProfile& lou
         row[kDeltaLoudness] = (at(i + 1, kLoudness) - at(i - 1, kLoudness) +
                                2.0f * (at(i + 2, kLoudness) - at(i - 2, kLoudness))) / 10.0f;
     }
-    return result;
 }
 
 AcousticModel AcousticModel::hand_set() {
@@ -105,8 +105,7 @@ AcousticModel AcousticModel::hand_set() {
     return model;
 }
 
-EmissionScores AcousticModel::score(const std::vector<float>& observations, std::size_t frame_count) const {
-    EmissionScores scores;
+void AcousticModel::score(const std::vector<float>& observations, std::size_t frame_count, EmissionScores& scores) const {
     scores.frame_count = frame_count;
     scores.values.resize(frame_count * kPhoneClassCount);
     const std::size_t dims = columns_.size();
@@ -123,7 +122,6 @@ EmissionScores AcousticModel::score(const std::vector<float>& observations, std:
             scores.values[t * kPhoneClassCount + c] = static_cast<float>(weight_ * (log_norm_[c] - 0.5 * sum));
         }
     }
-    return scores;
 }
 
 ModelEstimator::ModelEstimator()

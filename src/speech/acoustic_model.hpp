@@ -25,15 +25,17 @@ enum ObservationColumn : int {
     kObservationCount = 28,
 };
 
-// Observations of frames [span.first_frame, span.end_frame), frame-major.
-std::vector<float> observe(const FeatureTrack& track, const LoudnessProfile& loudness, const FrameSpan& span);
+// Observations of frames [span.first_frame, span.end_frame), frame-major, into `observations`
+// (its capacity is reused from sentence to sentence).
+void observe(const FeatureTrack& track, const LoudnessProfile& loudness, const FrameSpan& span,
+             std::vector<float>& observations);
 
 class AcousticModel {
 public:
     // The first pass's model: hand-set Gaussians on loudness, tilt and low band only.
     static AcousticModel hand_set();
 
-    EmissionScores score(const std::vector<float>& observations, std::size_t frame_count) const;
+    void score(const std::vector<float>& observations, std::size_t frame_count, EmissionScores& scores) const;
 
 private:
     std::vector<int> columns_;  // which observation columns the model uses

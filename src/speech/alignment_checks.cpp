@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "common/number_format.hpp"
@@ -21,6 +22,13 @@ constexpr double kMaxRateRatio = 2.0;
 // at least this much log-likelihood per frame, before it is called the wrong text.
 constexpr double kFitOutlierSpread = 4.0;
 constexpr double kFitOutlierMinimum = 1.5;
+// A right text's speech fits a free sequence of sounds at most ~0.07 per frame better than its own
+// in a passage of five sentences (bench/ tuning passages, every condition, slow speech the
+// highest), up to 0.11 in an hour of them (the models, fitted to more voices, fit each less
+// closely); a swapped or replaced sentence of the same length 0.12-0.6 better (one in the 2200
+// tuning cases under 0.15), and at least 0.17 more than the recording's typical sentence.
+constexpr double kMaxTextFitGap = 0.15;
+constexpr double kMaxTextFitGapAboveTypical = 0.15;
 // No syllable holds 0.45 s of silence (a stop closure lasts under 0.2 s), and no pause hides 0.4 s
 // of speech: either means the text and the audio part ways there.
 constexpr double kMaxSilenceInSyllableFrames = 45.0;
@@ -125,6 +133,21 @@ void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProf
         }
         throw AlignmentError(describe(sentence, span, transcript) + ": the syllable " + near + " would span a silence at " +
                              where + "; the transcript does not match the audio here (a missing sentence, or the wrong text?)");
+    }
+}
+
+void check_text_fit(const std::vector<double>& gap_per_frame, const std::vector<FrameSpan>& spans,
+                    const Timeline& transcript) {
+    std::vector<double> gaps;
+    for (std::size_t k = 0; k < gap_per_frame.size(); ++k)
+        if (spans[k].length() > 0) gaps.push_back(gap_per_frame[k]);
+    const double typical = gaps.size() >= 3 ? median(gaps) : -std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < gap_per_frame.size(); ++k) {
+        const double gap = gap_per_frame[k];
+        if (!(gap > kMaxTextFitGap && gap - typical > kMaxTextFitGapAboveTypical)) continue;
+        throw AlignmentError(describe(k, spans[k], transcript) + ": the audio does not sound like its text (other sounds fit its " +
+                             "speech " + format_fixed(gap, 2) + " per frame better than the text's, at most " +
+                             format_fixed(kMaxTextFitGap, 2) + " for the right text); is it another sentence, or are two sentences swapped?");
     }
 }
 

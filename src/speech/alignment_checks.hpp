@@ -31,6 +31,12 @@ struct AlignedStretch {
 void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProfile& loudness, std::size_t sentence,
                 const FrameSpan& span, const Timeline& transcript);
 
+// How much better each sentence's speech fits a free sequence of sounds than its text's (per frame,
+// from the aligner), against what a right text gives.
+// \throws talkface::AlignmentError naming the first sentence whose text does not fit its speech.
+void check_text_fit(const std::vector<double>& gap_per_frame, const std::vector<FrameSpan>& spans,
+                    const Timeline& transcript);
+
 // How well each aligned sentence's frames fit the models of the sounds its text says, per frame,
 // against the other sentences of the same recording.
 // \throws talkface::AlignmentError naming the sentence that fits far worse than the rest.

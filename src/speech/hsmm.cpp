@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 
 namespace talkface::detail {
@@ -10,6 +9,13 @@ namespace talkface::detail {
 namespace {
 
 constexpr float kImpossible = -std::numeric_limits<float>::infinity();
+// A sentence too long for one search is searched in windows of this many frames, each over the
+// states its speech could hold (half as many again as the duration priors expect); only the
+// window's first two thirds are kept, up to a syllable's start, where the next window begins.
+// The rest is searched again with what follows it, so a window's forced end does not bend the path.
+constexpr std::size_t kWindowFrames = 1500;
+constexpr double kWindowStateShare = 1.5;
+constexpr std::size_t kKeptWindowFrames = 1000;
 
 // log of a log-normal density at d frames, up to a constant shared by every path.
 double log_normal_duration(double frames, double median_frames, double log_sigma) {
@@ -17,87 +23,189 @@ double log_normal_duration(double frames, double median_frames, double log_sigma
     return -std::log(frames) - 0.5 * z * z - std::log(log_sigma);
 }
 
-}  // namespace
+// Fills `reversed` with the duration scores of `state` for d = longest down to shortest, the
+// order in which the search reads the entries before a frame. Returns the longest duration.
+std::size_t fill_duration_scores(const PhoneState& state, std::size_t frames, std::vector<float>& reversed) {
+    const std::size_t longest = std::min(state.max_frames, frames);
+    const std::size_t shortest = std::max<std::size_t>(state.min_frames, 1);
+    reversed.clear();
+    const bool is_flat = state.role == StateRole::edge_silence;
+    for (std::size_t d = longest; d >= shortest && d > 0; --d) {
+        const double score = is_flat ? 0.0 : log_normal_duration(static_cast<double>(d), state.median_frames, state.log_sigma);
+        reversed.push_back(static_cast<float>(score + state.entry_log_penalty));
+    }
+    return longest;
+}
 
-std::vector<StateSegment> viterbi_align(const std::vector<PhoneState>& states, const EmissionScores& emissions) {
-    const std::size_t frames = emissions.frame_count;
-    const std::size_t state_count = states.size();
+// max over i < count of a[i] + b[i]; eight independent lanes, so that the compiler vectorizes it.
+float max_of_sums(const float* a, const float* b, std::size_t count) {
+    float lanes[8] = {kImpossible, kImpossible, kImpossible, kImpossible,
+                      kImpossible, kImpossible, kImpossible, kImpossible};
+    std::size_t i = 0;
+    for (; i + 8 <= count; i += 8)
+        for (std::size_t k = 0; k < 8; ++k) lanes[k] = std::max(lanes[k], a[i + k] + b[i + k]);
+    float best = kImpossible;
+    for (; i < count; ++i) best = std::max(best, a[i] + b[i]);
+    for (float lane : lanes) best = std::max(best, lane);
+    return best;
+}
+
+// One search of states [first_state, end_state) over frames [first_frame, end_frame), starting in
+// first_state at first_frame. With `is_open_end` the path may stop in any state at end_frame (a
+// window of a longer search); otherwise it ends after the last state. Segments are in the frames
+// of `emissions`; empty if no path fits.
+std::vector<StateSegment> search(const std::vector<PhoneState>& states, std::size_t first_state, std::size_t end_state,
+                                 const EmissionScores& emissions, std::size_t first_frame, std::size_t end_frame,
+                                 bool is_open_end, ViterbiWorkspace& workspace) {
+    const std::size_t frames = end_frame - first_frame;
+    const std::size_t state_count = end_state - first_state;
     const std::size_t width = frames + 1;
-    // Prefix sums per class: the emission of any span is one subtraction.
-    std::vector<double> prefix(static_cast<std::size_t>(kPhoneClassCount) * width, 0.0);
-    for (int c = 0; c < kPhoneClassCount; ++c) {
-        double* row = &prefix[static_cast<std::size_t>(c) * width];
-        for (std::size_t t = 0; t < frames; ++t) row[t + 1] = row[t] + emissions.at(t, c);
+    // Prefix sums per class: the emission of any span is one subtraction. Each frame's best class
+    // is subtracted first (every path pays one emission per frame, so no decision changes): the
+    // sums along good paths then stay small, where float keeps its resolution.
+    auto& prefix = workspace.prefix;
+    prefix.assign(static_cast<std::size_t>(kPhoneClassCount) * width, 0.0);
+    for (std::size_t t = 0; t < frames; ++t) {
+        const float* row = &emissions.values[(first_frame + t) * kPhoneClassCount];
+        const float best = *std::max_element(row, row + kPhoneClassCount);
+        for (std::size_t c = 0; c < kPhoneClassCount; ++c)
+            prefix[c * width + t + 1] = prefix[c * width + t] + static_cast<double>(row[c] - best);
     }
     // entry[j][t]: best score of a path whose state j starts at frame t; finish[j][t]: of one whose
-    // state j ends just before frame t. Float: scores stay within a few 1e5, where float
-    // resolution (~0.01) cannot change a decision that matters, and halves the memory.
-    std::vector<float> entry(state_count * width, kImpossible);
-    std::vector<float> finish(state_count * width, kImpossible);
-    std::vector<std::uint16_t> held_frames(state_count * width, 0);
-    std::vector<std::uint8_t> entered_by_skip(state_count * width, 0);
-    std::vector<double> duration_score;
+    // state j ends just before frame t. Which duration and which skip won is found again on the
+    // way back, so only these two tables are kept.
+    auto& entry = workspace.entry;
+    auto& finish = workspace.finish;
+    auto& entry_minus_prefix = workspace.entry_minus_prefix;
+    auto& duration_score = workspace.duration_score;
+    entry.resize(state_count * width);
+    finish.resize(state_count * width);
+    entry_minus_prefix.resize(width);
+    std::fill(entry.begin(), entry.begin() + static_cast<std::ptrdiff_t>(width), kImpossible);
     entry[0] = 0.0f;
+
+    // Fills entry_minus_prefix for state j and the duration table; returns the longest duration.
+    auto prepare_state = [&](std::size_t j) {
+        const PhoneState& state = states[first_state + j];
+        const double* class_prefix = &prefix[static_cast<std::size_t>(state.phone_class) * width];
+        const float* entry_row = &entry[j * width];
+        for (std::size_t t = 0; t <= frames; ++t)
+            entry_minus_prefix[t] = entry_row[t] == kImpossible ? kImpossible : static_cast<float>(entry_row[t] - class_prefix[t]);
+        return fill_duration_scores(state, frames, duration_score);
+    };
     for (std::size_t j = 0; j < state_count; ++j) {
-        const PhoneState& state = states[j];
+        const PhoneState& state = states[first_state + j];
         float* entry_row = &entry[j * width];
         if (j > 0) {
             const float* previous_finish = &finish[(j - 1) * width];
             const float* previous_entry = &entry[(j - 1) * width];
-            for (std::size_t t = 0; t <= frames; ++t) {
-                entry_row[t] = previous_finish[t];
-                if (states[j - 1].is_optional && previous_entry[t] > entry_row[t]) {
-                    entry_row[t] = previous_entry[t];
-                    entered_by_skip[j * width + t] = 1;
-                }
-            }
+            const bool may_skip = states[first_state + j - 1].is_optional;
+            for (std::size_t t = 0; t <= frames; ++t)
+                entry_row[t] = may_skip ? std::max(previous_finish[t], previous_entry[t]) : previous_finish[t];
         }
-        const std::size_t max_frames = std::min<std::size_t>(std::min(state.max_frames, frames), 65535);
-        const std::size_t min_frames = std::max<std::size_t>(state.min_frames, 1);
-        duration_score.assign(max_frames + 1, 0.0);
-        const bool is_flat = state.role == StateRole::edge_silence;
-        for (std::size_t d = min_frames; d <= max_frames; ++d)
-            duration_score[d] = (is_flat ? 0.0 : log_normal_duration(static_cast<double>(d), state.median_frames, state.log_sigma)) +
-                                state.entry_log_penalty;
+        const std::size_t longest = prepare_state(j);
+        const std::size_t shortest = longest + 1 - duration_score.size();
         const double* class_prefix = &prefix[static_cast<std::size_t>(state.phone_class) * width];
         float* finish_row = &finish[j * width];
-        std::uint16_t* held_row = &held_frames[j * width];
-        for (std::size_t t = min_frames; t <= frames; ++t) {
-            double best = kImpossible;
-            std::size_t best_frames = 0;
-            const std::size_t longest = std::min(max_frames, t);
-            for (std::size_t d = min_frames; d <= longest; ++d) {
-                const float start_score = entry_row[t - d];
-                if (start_score == kImpossible) continue;
-                const double total = start_score + (class_prefix[t] - class_prefix[t - d]) + duration_score[d];
+        const std::size_t first_entry =
+            static_cast<std::size_t>(std::find_if(entry_row, entry_row + width, [](float v) { return v != kImpossible; }) - entry_row);
+        const std::size_t first_finish = duration_score.empty() ? width : std::min(width, first_entry + shortest);
+        std::fill(finish_row, finish_row + first_finish, kImpossible);
+        for (std::size_t t = first_finish; t <= frames; ++t) {
+            // d runs from min(longest, t) down to shortest: entries t - d, durations reversed.
+            const std::size_t skipped = t >= longest ? 0 : longest - t;
+            const float best = max_of_sums(&entry_minus_prefix[t + skipped - longest], &duration_score[skipped],
+                                           duration_score.size() - skipped);
+            finish_row[t] = best == kImpossible ? kImpossible : static_cast<float>(class_prefix[t] + best);
+        }
+    }
+
+    std::size_t j = state_count - 1;
+    std::size_t t = frames;
+    bool is_skipped = false;
+    if (is_open_end) {
+        for (std::size_t k = 0; k < state_count; ++k)
+            if (finish[k * width + t] > finish[j * width + t]) j = k;
+        if (finish[j * width + t] == kImpossible) return {};
+    } else {
+        is_skipped = states[first_state + j].is_optional && entry[j * width + t] > finish[j * width + t];
+        if (!is_skipped && finish[j * width + t] == kImpossible) return {};
+    }
+    std::vector<StateSegment> segments;
+    for (;;) {
+        if (!is_skipped) {
+            const std::size_t longest = prepare_state(j);
+            const std::size_t shortest = longest + 1 - duration_score.size();
+            float best = kImpossible;
+            std::size_t best_frames = shortest;
+            for (std::size_t d = shortest; d <= std::min(longest, t); ++d) {
+                const float total = entry_minus_prefix[t - d] + duration_score[longest - d];
                 if (total > best) {
                     best = total;
                     best_frames = d;
                 }
             }
-            finish_row[t] = static_cast<float>(best);
-            held_row[t] = static_cast<std::uint16_t>(best_frames);
-        }
-    }
-    // The path ends after the last state, or skips it if it is optional.
-    std::size_t j = state_count - 1;
-    std::size_t t = frames;
-    bool skips_last = states[j].is_optional && entry[j * width + t] > finish[j * width + t];
-    if (!skips_last && finish[j * width + t] == kImpossible) return {};
-    std::vector<StateSegment> segments;
-    bool is_skipped = skips_last;
-    for (;;) {
-        if (!is_skipped) {
-            const std::size_t d = held_frames[j * width + t];
-            segments.push_back({j, t - d, t});
-            t -= d;
+            segments.push_back({first_state + j, first_frame + t - best_frames, first_frame + t});
+            t -= best_frames;
         }
         if (j == 0) break;
-        is_skipped = entered_by_skip[j * width + t] != 0;
+        is_skipped = states[first_state + j - 1].is_optional && entry[(j - 1) * width + t] > finish[(j - 1) * width + t];
         --j;
     }
     std::reverse(segments.begin(), segments.end());
     return segments;
+}
+
+bool is_pause(StateRole role) {
+    return role == StateRole::edge_silence || role == StateRole::short_pause || role == StateRole::comma_pause;
+}
+
+}  // namespace
+
+std::vector<StateSegment> viterbi_align(const std::vector<PhoneState>& states, const EmissionScores& emissions,
+                                        ViterbiWorkspace& workspace) {
+    const std::size_t frames = emissions.frame_count;
+    std::vector<StateSegment> path;
+    std::size_t first_state = 0;
+    std::size_t first_frame = 0;
+    for (;;) {
+        const std::size_t remaining_frames = frames - first_frame;
+        if ((states.size() - first_state) * (remaining_frames + 1) <= kMaxSearchCells) {
+            const auto rest = search(states, first_state, states.size(), emissions, first_frame, frames, false, workspace);
+            if (rest.empty()) return {};
+            path.insert(path.end(), rest.begin(), rest.end());
+            return path;
+        }
+        std::size_t end_state = first_state;
+        double expected_frames = 0.0;
+        while (end_state < states.size() && expected_frames < kWindowStateShare * kWindowFrames) {
+            if (!states[end_state].is_optional) expected_frames += states[end_state].median_frames;
+            ++end_state;
+        }
+        const bool reaches_end = end_state == states.size();
+        // Speech far longer than the rest of the text cannot be aligned to it: no window needed.
+        if (reaches_end && remaining_frames > 4 * kWindowFrames) return {};
+        const std::size_t end_frame = reaches_end ? frames : std::min(frames, first_frame + kWindowFrames);
+        const auto window = search(states, first_state, end_state, emissions, first_frame, end_frame, !reaches_end, workspace);
+        if (window.empty()) return {};
+        if (reaches_end) {
+            path.insert(path.end(), window.begin(), window.end());
+            return path;
+        }
+        // Keep the window up to the last syllable that starts in its kept part.
+        std::size_t kept = 0;
+        std::size_t previous_syllable = states[window.front().state].syllable;
+        for (std::size_t k = 1; k < window.size() && window[k].first_frame <= first_frame + kKeptWindowFrames; ++k) {
+            const PhoneState& state = states[window[k].state];
+            if (is_pause(state.role)) continue;
+            if (state.syllable != previous_syllable) kept = k;
+            previous_syllable = state.syllable;
+        }
+        if (kept == 0) return {};
+        path.insert(path.end(), window.begin(), window.begin() + static_cast<std::ptrdiff_t>(kept));
+        first_state = window[kept].state;
+        first_frame = window[kept].first_frame;
+    }
 }
 
 }  // namespace talkface::detail

@@ -3,6 +3,7 @@
 #include "talkface/speech_aligner.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -32,6 +33,18 @@ constexpr double kReestimatedWeight = 0.2;
 // Each sentence is searched with this much of the pauses around it, so that its first and last
 // sounds are free to start and end where the audio says.
 constexpr std::size_t kEdgeFrames = 30;
+// How far below the loudest frame of the end of a sentence its last sound ends (end_before_tail):
+// a room's tail starts 13-20 dB below the last vowel, which may itself be 10 dB below the louder
+// syllables before it; the last 0.6 s always hold a syllable's vowel. (bench/ reverb: 15-20 dB
+// find every sentence end, 25 dB leaves a tenth of them in the tail.)
+constexpr float kTailFallDb = 18.0f;
+constexpr std::size_t kTailReferenceFrames = 60;
+// Past the end of a voice in a room, the search reaches only this far into the tail.
+constexpr std::size_t kTailEdgeFrames = 5;
+// What the phone loop of text_fit_gap pays for a change of sound, in the re-estimated model's
+// log-likelihood (bench/ tuning passages: at 2 right and wrong texts lie furthest apart in every
+// condition; at 5 they overlap).
+constexpr double kLoopSwitchPenalty = 2.0;
 // Shares of the job's progress: reading and features, cutting, the alignment passes.
 constexpr double kReadingShare = 0.45;
 constexpr double kCuttingShare = 0.05;
@@ -94,9 +107,27 @@ double log_sum_exp(const float* values, int count) {
     return largest + std::log(sum);
 }
 
+// SPEC: a sentence ends with its last sound. In a reverberant room that sound rings on for a few
+// hundred ms after the voice stops, and the tail looks like the vowel: it lengthens the sentence
+// the cutter finds (so every vowel is stretched to fill it) and the search gives it to the last
+// vowel. Where the voice stops the level falls at once far below the vowel's, and the tail only
+// decays from there: speech in [first, end) ends after its last frame less than kTailFallDb below
+// the loudest frame of its last kTailReferenceFrames. In noise the floor stays above that mark and
+// nothing moves.
+std::size_t end_before_tail(const FeatureTrack& track, std::size_t first, std::size_t end) {
+    if (end <= first + 1) return end;
+    std::size_t loudest = end - 1;
+    for (std::size_t t = end > first + kTailReferenceFrames ? end - kTailReferenceFrames : first; t < end; ++t)
+        if (track.at(t, kEnergyDb) > track.at(loudest, kEnergyDb)) loudest = t;
+    const float mark_db = track.at(loudest, kEnergyDb) - kTailFallDb;
+    std::size_t trimmed = end;
+    while (trimmed > loudest + 1 && track.at(trimmed - 1, kEnergyDb) < mark_db) --trimmed;
+    return trimmed;
+}
+
 // Writes the syllables of one aligned sentence into `result`; returns its fit per speech frame.
 double place_syllables(const SentenceWork& work, const std::vector<StateSegment>& path, const EmissionScores& scores,
-                       Timeline& result) {
+                       const FeatureTrack& track, Timeline& result) {
     const double offset_s = static_cast<double>(work.searched.first_frame) * kFrameStepS;
     auto time_s = [&](std::size_t frame) { return offset_s + static_cast<double>(frame) * kFrameStepS; };
     double fit_sum = 0.0;
@@ -130,6 +161,11 @@ double place_syllables(const SentenceWork& work, const std::vector<StateSegment>
                 ++frames;
             }
         }
+        if (local + 1 == work.syllables.size()) {
+            const std::size_t offset = work.searched.first_frame;
+            const std::size_t trimmed = end_before_tail(track, offset + first, offset + end) - offset;
+            end = std::max(trimmed, final_first.value_or(first) + 1);
+        }
         syllable.start_s = time_s(first);
         syllable.end_s = time_s(std::max(end, first + 1));
         syllable.final_start_s = time_s(final_first.value_or(first));
@@ -137,6 +173,38 @@ double place_syllables(const SentenceWork& work, const std::vector<StateSegment>
         fit_frames += frames;
     }
     return fit_frames > 0 ? fit_sum / static_cast<double>(fit_frames) : -std::numeric_limits<double>::infinity();
+}
+
+// How much better, per frame, the sentence's speech fits the best sequence of sounds than the
+// sequence its text says: a phone loop against the forced path, on the same re-estimated models.
+// The loop pays for each change of sound, so on the right text it gains little over the path; on
+// a wrong text of the same length (two sentences swapped, another sentence) the path is forced
+// through sounds that are not there. Unlike the fit against the other sentences, this needs none.
+double text_fit_gap(const SentenceWork& work, const std::vector<StateSegment>& path, const EmissionScores& scores) {
+    std::size_t first = 0, end = 0;
+    bool has_speech = false;
+    for (const auto& segment : path) {
+        if (is_pause(work.states[segment.state].role)) continue;
+        if (!has_speech) first = segment.first_frame;
+        has_speech = true;
+        end = segment.end_frame;
+    }
+    if (!has_speech || end <= first) return 0.0;
+    double forced = 0.0;
+    for (const auto& segment : path) {
+        const int phone_class = work.states[segment.state].phone_class;
+        const std::size_t segment_first = std::max(segment.first_frame, first);
+        const std::size_t segment_end = std::min(segment.end_frame, end);
+        for (std::size_t t = segment_first; t < segment_end; ++t) forced += scores.at(t, phone_class);
+    }
+    std::array<double, kPhoneClassCount> best{};
+    for (std::size_t t = first; t < end; ++t) {
+        const double leader = *std::max_element(best.begin(), best.end());
+        for (int c = 0; c < kPhoneClassCount; ++c)
+            best[static_cast<std::size_t>(c)] = std::max(best[static_cast<std::size_t>(c)], leader - kLoopSwitchPenalty) + scores.at(t, c);
+    }
+    const double free = *std::max_element(best.begin(), best.end());
+    return (free - forced) / static_cast<double>(end - first);
 }
 
 std::vector<AlignedStretch> stretches_of(const SentenceWork& work, const std::vector<StateSegment>& path) {
@@ -185,24 +253,32 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
         const std::size_t upper =
             w + 1 == work.size() ? track.frame_count : (speech.end_frame + work[w + 1].speech.first_frame + 1) / 2;
         work[w].searched.first_frame = std::max(lower, speech.first_frame > kEdgeFrames ? speech.first_frame - kEdgeFrames : 0);
-        work[w].searched.end_frame = std::min(upper, speech.end_frame + kEdgeFrames);
-        work[w].states = build_phone_chain(work[w].syllables, work[w].searched.length(), speech.length());
+        // A sentence that ends in a room's tail is searched only a little past the voice's end, and
+        // its vowels are scaled to the voiced part: the tail is not speech to spread them over.
+        const std::size_t voiced_end = end_before_tail(track, speech.first_frame, speech.end_frame);
+        work[w].searched.end_frame =
+            std::min(upper, voiced_end < speech.end_frame ? voiced_end + kTailEdgeFrames : speech.end_frame + kEdgeFrames);
+        work[w].states = build_phone_chain(work[w].syllables, work[w].searched.length(), voiced_end - speech.first_frame);
     }
 
     Timeline result = transcript;
     result.duration_s = track.duration_s;
     std::vector<double> fits(spans.size(), std::numeric_limits<double>::quiet_NaN());
+    std::vector<double> fit_gaps(spans.size(), 0.0);
     AcousticModel model = AcousticModel::hand_set();
     const int passes = 1 + kReestimationRounds;
     const double alignment_share = 1.0 - kReadingShare - kCuttingShare;
+    std::vector<float> observations;
+    EmissionScores scores;
+    ViterbiWorkspace workspace;
     for (int pass = 0; pass < passes; ++pass) {
         const bool is_last = pass + 1 == passes;
         ModelEstimator estimator;
         for (std::size_t w = 0; w < work.size(); ++w) {
             const SentenceWork& sentence = work[w];
-            const std::vector<float> observations = observe(track, loudness, sentence.searched);
-            const EmissionScores scores = model.score(observations, sentence.searched.length());
-            const std::vector<StateSegment> path = viterbi_align(sentence.states, scores);
+            observe(track, loudness, sentence.searched, observations);
+            model.score(observations, sentence.searched.length(), scores);
+            const std::vector<StateSegment> path = viterbi_align(sentence.states, scores, workspace);
             if (path.empty()) {
                 throw AlignmentError("sentence " + std::to_string(sentence.sentence + 1) + " (" +
                                      seconds(sentence.speech.first_frame) + "-" + seconds(sentence.speech.end_frame) +
@@ -211,7 +287,8 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
                                      " syllables do not fit in so short a stretch of speech; check the transcript");
             }
             if (is_last) {
-                fits[sentence.sentence] = place_syllables(sentence, path, scores, result);
+                fits[sentence.sentence] = place_syllables(sentence, path, scores, track, result);
+                fit_gaps[sentence.sentence] = text_fit_gap(sentence, path, scores);
                 check_path(stretches_of(sentence, path), loudness, sentence.sentence, sentence.speech, transcript);
             }
             else estimator.add(observations, sentence.states, path);
@@ -221,6 +298,7 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
         }
         if (!is_last) model = estimator.estimate(kReestimatedWeight);
     }
+    check_text_fit(fit_gaps, spans, transcript);
     check_fit(fits, spans, transcript);
 
     for (std::size_t k = 0; k < result.sentences.size(); ++k) {

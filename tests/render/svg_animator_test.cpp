@@ -141,7 +141,7 @@ TEST_CASE("the document is XML with the four layers in thesis order") {
     for (pugi::xml_node group : root.children("g")) layers.push_back(group.attribute("id").value());
     CHECK(layers == std::vector<std::string>{"background", "hair", "clothes", "face"});
     CHECK(root.find_child_by_attribute("g", "id", "hair").child("polygon"));
-    CHECK(node_with_id(document, "face").select_nodes(".//path").size() >= 10);
+    CHECK(node_with_id(document, "face").select_nodes(".//path | .//use").size() >= 10);
 }
 
 TEST_CASE("every url(#id) reference names an id that exists, and ids are unique") {
@@ -156,6 +156,8 @@ TEST_CASE("every url(#id) reference names an id that exists, and ids are unique"
         for (pugi::xml_attribute attribute : found.node().attributes()) {
             const std::string value = attribute.value();
             if (std::string(attribute.name()) == "id") ids.insert(value);
+            // The eye outline is drawn once and <use>d for its white and its stroke.
+            if (std::string(attribute.name()) == "xlink:href" && value.rfind('#', 0) == 0) references.push_back(value.substr(1));
             for (auto it = std::sregex_iterator(value.begin(), value.end(), url); it != std::sregex_iterator(); ++it) {
                 references.push_back((*it)[1]);
             }
@@ -165,7 +167,7 @@ TEST_CASE("every url(#id) reference names an id that exists, and ids are unique"
         CAPTURE(id);
         CHECK(ids.count(id) == 1);
     }
-    CHECK(references.size() >= 4);  // two clip paths, two gradients
+    CHECK(references.size() >= 8);  // two clip paths, two gradients, each eye outline used twice
     for (const std::string& reference : references) {
         CAPTURE(reference);
         CHECK(ids.count(reference) == 1);

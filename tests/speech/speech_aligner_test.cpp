@@ -240,6 +240,17 @@ TEST_SUITE("SpeechAligner") {
             CHECK_THROWS_WITH_AS(aligner.align_file(clip_path("one_sentence.wav"), read_transcript("我很好。")),
                                  doctest::Contains("\"我很好。\""), AlignmentError);
         }
+        SUBCASE("the wrong text of the same length: two sentences swapped") {
+            CHECK_THROWS_WITH_AS(aligner.align_file(clip_path("two_sentences.wav"), read_transcript("我们明天再去吧。今天下午有雨。")),
+                                 doctest::Contains("does not sound like its text"), AlignmentError);
+        }
+        SUBCASE("the wrong text of the same length: another sentence of as many syllables") {
+            const Timeline replaced = read_transcript("今天下午有雨。四十四只石狮子。");
+            CHECK_THROWS_WITH_AS(aligner.align_file(clip_path("two_sentences.wav"), replaced),
+                                 doctest::Contains("sentence 2 (2."), AlignmentError);
+            CHECK_THROWS_WITH_AS(aligner.align_file(clip_path("two_sentences.wav"), replaced),
+                                 doctest::Contains("\"四十四只石狮子。\""), AlignmentError);
+        }
         SUBCASE("the wrong text: far too many syllables") {
             CHECK_THROWS_WITH_AS(aligner.align_file(clip_path("two_sentences.wav"),
                                                     read_transcript("今天下午有雨。我们明天再去吧吗吗吗吗吗吗。")),

@@ -1,4 +1,4 @@
-// SvgOptions and SvgAnimator in Python; rendering runs without the GIL.
+// SvgOptions, SvgAnimationOptions and SvgAnimator in Python; rendering runs without the GIL.
 #include "bind.hpp"
 
 namespace talkface::python {
@@ -56,6 +56,36 @@ Example:
                        "stroke_width_in_d={!r}, decimals={!r}, width_px={!r}, height_px={!r})")
                 .format(o.background, o.draw_clothes, o.clothes, o.stroke_width_in_d, o.decimals, o.width_px,
                         o.height_px);
+        });
+
+    py::enum_<AnimationEncoding>(m, "AnimationEncoding", R"doc(
+How an animation becomes SVG: keyframes (the default; each moving element animated between key
+frames by SMIL, small files) or frames (thesis 6.3.2: one group per frame shown in turn).
+)doc")
+        .value("keyframes", AnimationEncoding::keyframes)
+        .value("frames", AnimationEncoding::frames);
+
+    py::class_<SvgAnimationOptions>(m, "SvgAnimationOptions", R"doc(
+How an animation is written: the encoding, and for key frames the largest distance in pixels between
+what the browser interpolates and the frame at that time.
+
+Example:
+    >>> options = talkface.SvgAnimationOptions(encoding=talkface.AnimationEncoding.frames)
+)doc")
+        .def(py::init([](AnimationEncoding encoding, double tolerance_px) {
+                 SvgAnimationOptions options;
+                 options.encoding = encoding;
+                 options.tolerance_px = tolerance_px;
+                 return options;
+             }),
+             py::arg("encoding") = SvgAnimationOptions{}.encoding,
+             py::arg("tolerance_px") = SvgAnimationOptions{}.tolerance_px)
+        .def_readwrite("encoding", &SvgAnimationOptions::encoding)
+        .def_readwrite("tolerance_px", &SvgAnimationOptions::tolerance_px)
+        .def("__repr__", [](const SvgAnimationOptions& options) {
+            return std::string("talkface.SvgAnimationOptions(encoding=") +
+                   animation_encoding_name(options.encoding) + ", tolerance_px=" +
+                   std::to_string(options.tolerance_px) + ")";
         });
 
     py::class_<SvgAnimator>(m, "SvgAnimator", R"doc(
@@ -130,6 +160,52 @@ Raises:
 Example:
     >>> animator.write_svg("face.svg", talkface.FaceState())
     >>> open("face.svg").read(5)
+)doc")
+        .def(
+            "render_animation_svg",
+            [](const SvgAnimator& animator, const Animation& animation, const SvgAnimationOptions& options) {
+                const Animation animation_copy = animation;
+                py::gil_scoped_release release;
+                return animator.render_animation_svg(animation_copy, options);
+            },
+            py::arg("animation"), py::arg("options") = SvgAnimationOptions{}, R"doc(
+A standalone SVG document (str) that plays the animation from document time 0 (root class
+"tf-animation"), on the same canvas as render_svg(). Releases the GIL while it works.
+
+Args:
+    animation (Animation): from talkface.animate().
+    options (SvgAnimationOptions): the encoding (key frames by default).
+
+Raises:
+    talkface.InvalidArgument: the animation has no frames, or an option is out of range.
+
+Example:
+    >>> svg = animator.render_animation_svg(talkface.animate(face, timeline, simulator))
+    >>> "<animate" in svg
+)doc")
+        .def(
+            "write_animation_svg",
+            [](const SvgAnimator& animator, const std::filesystem::path& path, const Animation& animation,
+               const SvgAnimationOptions& options) {
+                const std::string path_text = path.string();
+                const Animation animation_copy = animation;
+                py::gil_scoped_release release;
+                animator.write_animation_svg(path_text, animation_copy, options);
+            },
+            py::arg("path"), py::arg("animation"), py::arg("options") = SvgAnimationOptions{}, R"doc(
+Writes render_animation_svg() to path through a temporary file and a rename. Releases the GIL.
+
+Args:
+    path (str | os.PathLike): the SVG file to write.
+    animation (Animation): from talkface.animate().
+    options (SvgAnimationOptions): the encoding.
+
+Raises:
+    talkface.FileError: it cannot be written; talkface.InvalidArgument: as render_animation_svg().
+
+Example:
+    >>> animator.write_animation_svg("talk.svg", animation)
+    >>> open("talk.svg").read(5)
 )doc");
 }
 

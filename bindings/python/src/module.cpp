@@ -29,4 +29,7 @@ Example:
     bind_lip_sync(m);
     bind_expression_simulator(m);
     bind_animation(m);
+    bind_speech_aligner(m);
+    bind_web_page(m);
+    bind_photo(m);
 }

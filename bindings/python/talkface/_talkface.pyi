@@ -1,7 +1,7 @@
 # Type stubs for the compiled talkface._talkface module (kept by hand next to bindings/python/src/).
 import enum
 import os
-from typing import ClassVar
+from typing import Callable, ClassVar
 
 import numpy
 import numpy.typing
@@ -70,6 +70,9 @@ class FaceModel:
     def load(path: _PathLike) -> FaceModel: ...
     @staticmethod
     def from_xml(xml: str, source_name: str = "<string>") -> FaceModel: ...
+    @staticmethod
+    def from_photo(photo: _PathLike | numpy.typing.NDArray[numpy.uint8], *, locator: str = "automatic",
+                   face_index: int = -1, cascade_dir: str = "", dlib_model_path: str = "") -> FaceModel: ...
     def save(self, path: _PathLike) -> None: ...
     def to_xml(self) -> str: ...
     @staticmethod
@@ -237,6 +240,53 @@ class SvgAnimator:
     def options(self) -> SvgOptions: ...
     def render_svg(self, state: FaceState) -> str: ...
     def write_svg(self, path: _PathLike, state: FaceState) -> None: ...
+    def render_animation_svg(self, animation: Animation, options: SvgAnimationOptions = ...) -> str: ...
+    def write_animation_svg(self, path: _PathLike, animation: Animation,
+                            options: SvgAnimationOptions = ...) -> None: ...
+
+class AnimationEncoding(enum.Enum):
+    keyframes = 0
+    frames = 1
+
+class SvgAnimationOptions:
+    encoding: AnimationEncoding
+    tolerance_px: float
+    def __init__(self, encoding: AnimationEncoding = ..., tolerance_px: float = ...) -> None: ...
+
+class WebPageApp(enum.Enum):
+    plain = 0
+    announcer = 1
+    audiobook = 2
+
+class WebLink:
+    text: str
+    url: str
+    def __init__(self, text: str, url: str) -> None: ...
+
+class WebPageOptions:
+    app: WebPageApp
+    title: str
+    links: list[WebLink]
+    animation: SvgAnimationOptions
+    link_audio: bool
+    audio_url: str
+    stage_width_px: int
+    stage_height_px: int
+    stage_colour: str
+    background_image_path: str
+    face_origin_px: tuple[float, float] | None
+    face_d_px: float
+    def __init__(self, app: WebPageApp = ..., title: str = "", links: list[WebLink] = ...,
+                 animation: SvgAnimationOptions = ..., link_audio: bool = False, audio_url: str = "",
+                 stage_width_px: int = 800, stage_height_px: int = 450, stage_colour: str = "#1d3b5c",
+                 background_image_path: str = "", face_origin_px: tuple[float, float] | None = None,
+                 face_d_px: float = 0.0) -> None: ...
+
+def build_web_page(animator: SvgAnimator, animation: Animation, timeline: Timeline, audio_path: _PathLike,
+                   options: WebPageOptions = ...) -> str: ...
+def write_web_page(path: _PathLike, animator: SvgAnimator, animation: Animation, timeline: Timeline,
+                   audio_path: _PathLike, options: WebPageOptions = ...) -> None: ...
+def escape_html(text: str) -> str: ...
 
 class Sentence:
     text: str
@@ -285,6 +335,40 @@ def load_transcript(path: _PathLike, read_pinyin: bool = True) -> Timeline: ...
 def is_valid_pinyin(syllable: str) -> bool: ...
 def syllable_mouth_shapes(pinyin: str) -> list[MouthShape]: ...
 def mandarin_syllables() -> list[str]: ...
+
+class SentenceCutMode(enum.Enum):
+    automatic = 0
+    first_pause = 1
+
+class AlignOptions:
+    sentence_cut: SentenceCutMode
+    first_pause_start_s: float
+    first_pause_end_s: float
+    c1: float
+    c2: float
+    def __init__(
+        self,
+        sentence_cut: SentenceCutMode = ...,
+        first_pause_start_s: float = 0.0,
+        first_pause_end_s: float = 0.0,
+        c1: float = 0.95,
+        c2: float = 1.45,
+    ) -> None: ...
+
+_Progress = Callable[[float, str], bool | None]
+
+class SpeechAligner:
+    def __init__(self, options: AlignOptions = ...) -> None: ...
+    @property
+    def options(self) -> AlignOptions: ...
+    def align_file(self, path: _PathLike, transcript: Timeline, progress: _Progress | None = None) -> Timeline: ...
+    def align(
+        self,
+        samples: numpy.typing.ArrayLike,
+        sample_rate_hz: int,
+        transcript: Timeline,
+        progress: _Progress | None = None,
+    ) -> Timeline: ...
 
 class MouthKeyFrame:
     time_s: float
@@ -379,3 +463,22 @@ def animate(
 ) -> Animation: ...
 def key_frames_json(mouth_key_frames: list[MouthKeyFrame], events: list[ExpressionEvent]) -> str: ...
 def key_frames_tsv(mouth_key_frames: list[MouthKeyFrame]) -> str: ...
+
+class PhotoFeature:
+    name: str
+    confidence: float
+    from_prior: bool
+    source: str
+
+class PhotoFaceResult:
+    face: FaceModel
+    features: list[PhotoFeature]
+    locator: str
+    face_box: tuple[int, int, int, int]
+    faces_found: int
+    def confidence(self, feature_name: str) -> float: ...
+    def write_overlay(self, photo: _PathLike, output_png: _PathLike) -> None: ...
+
+def has_dlib_locator() -> bool: ...
+def face_from_photo(photo: _PathLike | numpy.typing.NDArray[numpy.uint8], *, locator: str = "automatic",
+                    face_index: int = -1, cascade_dir: str = "", dlib_model_path: str = "") -> PhotoFaceResult: ...

@@ -107,9 +107,30 @@ double percentile(const cv::Mat& gray, double fraction) {
     return 255.0;
 }
 
+// The share of a box's middle whose chroma is skin's (YCrCb, Chai and Ngan's ranges); 1 for a grey
+// photo, where chroma tells nothing.
+double skin_share(const cv::Mat& bgr, const cv::Rect& box) {
+    const cv::Rect middle = cv::Rect(box.x + box.width / 4, box.y + box.height / 4, box.width / 2, box.height / 2) &
+                            cv::Rect(0, 0, bgr.cols, bgr.rows);
+    if (middle.area() == 0) return 0.0;
+    cv::Mat ycrcb;
+    cv::cvtColor(bgr(middle), ycrcb, cv::COLOR_BGR2YCrCb);
+    int skin = 0, grey = 0;
+    for (int y = 0; y < ycrcb.rows; ++y) {
+        for (int x = 0; x < ycrcb.cols; ++x) {
+            const cv::Vec3b v = ycrcb.at<cv::Vec3b>(y, x);
+            if (v[1] >= 133 && v[1] <= 173 && v[2] >= 77 && v[2] <= 127) ++skin;
+            if (std::abs(v[1] - 128) < 3 && std::abs(v[2] - 128) < 3) ++grey;
+        }
+    }
+    if (grey == middle.area()) return 1.0;
+    return static_cast<double>(skin) / middle.area();
+}
+
 }  // namespace
 
-DetectedFace detect_face(const cv::Mat& gray, const PhotoOptions& options, const std::string& source) {
+DetectedFace detect_face(const cv::Mat& bgr, const cv::Mat& gray, const PhotoOptions& options,
+                         const std::string& source) {
     const double bright = percentile(gray, 0.95);
     if (bright < kMinPhotoBrightness) {
         fail(source, "too dark: the brightest 5% of the pixels reach only " + std::to_string(static_cast<int>(bright)) +
@@ -137,6 +158,18 @@ DetectedFace detect_face(const cv::Mat& gray, const PhotoOptions& options, const
         }
         fail(source, "no face found; use a frontal photo of one face, lit evenly, at least " +
                          std::to_string(options.min_face_width_px) + " px wide");
+    }
+    // Thesis 2.2 looks for the face among skin-coloured regions: a window with hardly any skin in
+    // its middle (a badge, a pattern) or with far fewer detector votes than the best is not a face.
+    int most_votes = 0;
+    for (const Candidate& c : faces) most_votes = std::max(most_votes, c.votes);
+    faces.erase(std::remove_if(faces.begin(), faces.end(),
+                               [&](const Candidate& c) {
+                                   return skin_share(bgr, c.box) < 0.25 || c.votes * 4 < most_votes;
+                               }),
+                faces.end());
+    if (faces.empty()) {
+        fail(source, "no face found: the face-like windows hold no skin colour; use a frontal colour photo of one face, lit evenly");
     }
     std::sort(faces.begin(), faces.end(), [](const Candidate& a, const Candidate& b) { return a.box.x < b.box.x; });
 

@@ -108,7 +108,7 @@ FaceModel fit_face(const FaceFrame& frame, const Regions& regions, Located& loca
     for (const std::string& id : FaceModel::point_ids()) p[id] = prior(default_face, id);
     const double d = kFrameD;
 
-    auto take = [&](const std::string& feature, std::initializer_list<const char*> ids) {
+    auto take = [&](const std::string& feature, const std::vector<const char*>& ids) {
         if (!usable(located, feature)) return false;
         for (const char* id : ids) {
             if (located.points.count(id)) p[id] = located.points[id];
@@ -116,7 +116,7 @@ FaceModel fit_face(const FaceFrame& frame, const Regions& regions, Located& loca
         return true;
     };
     // A prior feature moves with the feature it hangs from: `shift` is added to its prior points.
-    auto shift_prior = [&](std::initializer_list<const char*> ids, const cv::Point2d& shift) {
+    auto shift_prior = [&](const std::vector<const char*>& ids, const cv::Point2d& shift) {
         for (const char* id : ids) p[id] += shift;
     };
 
@@ -127,8 +127,8 @@ FaceModel fit_face(const FaceFrame& frame, const Regions& regions, Located& loca
         const char* ball = left ? "EyeballLeft" : "EyeballRight";
         const cv::Point2d centre = located.points.count(ball) ? located.points[ball] : p[ball];
         const cv::Point2d prior_centre = p[ball];
-        const auto ids = left ? std::initializer_list<const char*>{"3.2", "3.4", "3.8", "3.12"}
-                              : std::initializer_list<const char*>{"3.1", "3.3", "3.7", "3.11"};
+        const std::vector<const char*> ids = left ? std::vector<const char*>{"3.2", "3.4", "3.8", "3.12"}
+                                                  : std::vector<const char*>{"3.1", "3.3", "3.7", "3.11"};
         p[ball] = centre;
         if (!take(feature, ids)) {
             shift_prior(ids, centre - prior_centre);
@@ -173,7 +173,7 @@ FaceModel fit_face(const FaceFrame& frame, const Regions& regions, Located& loca
     const cv::Point2d nose_shift = p["9.15"] - prior_tip;
 
     // Mouth, closed (2.2 and 2.3 on one row): a neutral face.
-    const auto mouth_ids = {"8.1", "8.9", "8.10", "8.2", "8.4", "8.3", "2.2", "2.3"};
+    const std::vector<const char*> mouth_ids = {"8.1", "8.9", "8.10", "8.2", "8.4", "8.3", "2.2", "2.3"};
     const cv::Point2d prior_lip = p["8.2"];
     if (!take("mouth", mouth_ids)) {
         shift_prior(mouth_ids, nose_shift);
@@ -264,7 +264,8 @@ FaceModel fit_face(const FaceFrame& frame, const Regions& regions, Located& loca
     // Hairline: where the skin ends going up the forehead at the middle and at +-0.68 d.
     {
         const int from = static_cast<int>(kFrameEyeMid.y - 0.6 * d);
-        const double lowest = kFrameEyeMid.y - 0.75 * d, highest = kFrameEyeMid.y - 1.9 * d;
+        // A fringe may come down to just above the brows.
+        const double lowest = kFrameEyeMid.y - 0.45 * d, highest = kFrameEyeMid.y - 1.9 * d;
         const double top_mid = skin_top(regions.skin, static_cast<int>(kFrameEyeMid.x), from);
         const double top_left = skin_top(regions.skin, static_cast<int>(kFrameEyeMid.x - 0.68 * d), from);
         const double top_right = skin_top(regions.skin, static_cast<int>(kFrameEyeMid.x + 0.68 * d), from);
@@ -283,6 +284,11 @@ FaceModel fit_face(const FaceFrame& frame, const Regions& regions, Located& loca
             p[id].y = std::clamp(p[id].y, p["11.1"].y, p["11.2"].y - 0.1 * d);
         }
         p["11.2"].y = p["11.3"].y = std::max(temple_y, std::max(p["11.2a"].y, p["11.3a"].y) + 0.1 * d);
+    }
+
+    // Brows stay below the hairline.
+    for (const char* id : {"4.6", "4.4a", "4.4", "4.2", "4.5", "4.3a", "4.3", "4.1"}) {
+        p[id].y = std::max(p[id].y, p["11.1"].y + 0.08 * d);
     }
 
     // Ears are rarely separable from the cheek and the hair in a frontal photo: placed from the

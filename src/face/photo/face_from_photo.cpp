@@ -5,7 +5,10 @@
 //   4. the face model               face_fitting.cpp
 #include "talkface/face_from_photo.hpp"
 
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <fstream>
 
 #include <opencv2/imgcodecs.hpp>
@@ -107,6 +110,14 @@ inline namespace v0 {
 
 namespace {
 
+// Throws FileError with the OS's reason (which the C ABI and Python map, e.g. to FileNotFoundError)
+// unless `path` can be opened for reading.
+void require_readable(const std::string& path) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (file == nullptr) throw FileError(path, std::strerror(errno));
+    std::fclose(file);
+}
+
 PhotoLocator choose_locator(const PhotoOptions& options, std::string& model_path) {
     model_path = options.dlib_model_path.empty() ? photo::default_dlib_model_path() : options.dlib_model_path;
     switch (options.locator) {
@@ -202,7 +213,7 @@ PhotoFaceResult face_from_photo(const ImageView& view, const PhotoOptions& optio
     cv::Mat gray;
     cv::cvtColor(bgr, gray, cv::COLOR_BGR2GRAY);
 
-    const photo::DetectedFace detected = photo::detect_face(gray, options, source);
+    const photo::DetectedFace detected = photo::detect_face(bgr, gray, options, source);
     photo::Located located;
     photo::EyePair eyes;
 #ifdef TALKFACE_WITH_DLIB
@@ -224,14 +235,20 @@ PhotoFaceResult face_from_photo(const ImageView& view, const PhotoOptions& optio
     photo::FaceFrame frame = photo::make_frame(bgr, eyes.left, eyes.right);
     if (locator == PhotoLocator::thesis) {
         // Thesis 2.2 finds the pair from regions; the iris centres inside them fix the frame.
-        const photo::EyePair refined = photo::refine_eye_centres(frame);
-        const double moved = std::max(cv::norm(refined.left - photo::in_d(-0.5, 0)), cv::norm(refined.right - photo::in_d(0.5, 0)));
-        if (refined.confidence >= photo::kUsableConfidence && moved < 0.2 * photo::kFrameD) {
+        // Twice, the second time in a narrower window: the first pass may start from a brow or a
+        // lash line beside the iris, and dark outer corners pull a wide window's centre outwards.
+        double refined_confidence = 0.0;
+        for (int pass = 0; pass < 2; ++pass) {
+            const photo::EyePair refined = photo::refine_eye_centres(frame, pass == 0 ? 0.28 : 0.17);
+            const double moved = std::max(cv::norm(refined.left - photo::in_d(-0.5, 0)),
+                                          cv::norm(refined.right - photo::in_d(0.5, 0)));
+            refined_confidence = refined.confidence;
+            if (refined.confidence < photo::kUsableConfidence || moved > 0.2 * photo::kFrameD) break;
             eyes.left = photo::apply(frame.to_photo, refined.left);
             eyes.right = photo::apply(frame.to_photo, refined.right);
             frame = photo::make_frame(bgr, eyes.left, eyes.right);
         }
-        eyes.confidence = 0.5 * (eyes.confidence + refined.confidence);
+        eyes.confidence = 0.5 * (eyes.confidence + refined_confidence);
     }
     located.add_feature("face", detected.confidence, "haar");
     located.add_feature("eye_pair", eyes.confidence, locator == PhotoLocator::dlib ? "dlib" : "thesis");
@@ -256,7 +273,7 @@ PhotoFaceResult face_from_photo(const ImageView& view, const PhotoOptions& optio
 }
 
 PhotoFaceResult face_from_photo_file(const std::string& path, const PhotoOptions& options) {
-    if (!std::ifstream(path, std::ios::binary).good()) throw FileError(path, "cannot open the photo (no such file, or not readable)");
+    require_readable(path);
     const cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
     if (bgr.empty()) throw FileError(path, "not an image OpenCV can decode (PNG, JPEG, BMP, TIFF or WebP)");
     PhotoOptions named = options;
@@ -275,9 +292,7 @@ void write_photo_overlay(const ImageView& view, const PhotoFaceResult& result, c
 }
 
 void write_photo_overlay(const std::string& photo_path, const PhotoFaceResult& result, const std::string& output_png_path) {
-    if (!std::ifstream(photo_path, std::ios::binary).good()) {
-        throw FileError(photo_path, "cannot open the photo (no such file, or not readable)");
-    }
+    require_readable(photo_path);
     const cv::Mat bgr = cv::imread(photo_path, cv::IMREAD_COLOR);
     if (bgr.empty()) throw FileError(photo_path, "not an image OpenCV can decode (PNG, JPEG, BMP, TIFF or WebP)");
     const ImageView view{bgr.data, bgr.cols, bgr.rows, static_cast<int>(bgr.step[0]), PixelFormat::bgr8};

@@ -81,7 +81,8 @@ DlibShape locate_landmarks_dlib(const cv::Mat& bgr, const cv::Rect& face, const 
     DlibShape result;
     result.confidence = confidence;
     for (unsigned long k = 0; k < shape.num_parts(); ++k) {
-        result.points.emplace_back(area.x + shape.part(k).x() / scale, area.y + shape.part(k).y() / scale);
+        result.points.emplace_back(area.x + static_cast<double>(shape.part(k).x()) / scale,
+                                   area.y + static_cast<double>(shape.part(k).y()) / scale);
     }
     return result;
 }

@@ -182,19 +182,32 @@ void locate_eye(const FaceFrame& frame, const cv::Point2d& centre, bool image_le
 
 void locate_brow(const FaceFrame& frame, const cv::Point2d& eye, bool image_left, double skin, Located& located) {
     const double outward = image_left ? -1.0 : 1.0;
-    // Knowledge: a brow lies 0.2 to 0.75 d above its eye and spans about the eye's width.
+    // Knowledge: a brow lies 0.18 to 0.75 d above its eye and spans about the eye's width.
     const cv::Rect area = clip(cv::Rect(cv::Point(static_cast<int>(eye.x - 0.5 * kFrameD), static_cast<int>(eye.y - 0.75 * kFrameD)),
-                                        cv::Point(static_cast<int>(eye.x + 0.5 * kFrameD), static_cast<int>(eye.y - 0.2 * kFrameD))),
+                                        cv::Point(static_cast<int>(eye.x + 0.5 * kFrameD), static_cast<int>(eye.y - 0.18 * kFrameD))),
                                frame.gray);
     cv::Mat patch;
     cv::GaussianBlur(frame.gray(area), patch, cv::Size(5, 5), 0.0);
     const std::vector<double> rows = smooth(row_darkness(patch, cv::Rect(0, 0, patch.cols, patch.rows), skin), 2);
-    const int brow_row = static_cast<int>(argmax(rows));
+    // Knowledge: the brow is the first dark band above the eye; a fringe of hair higher up may be
+    // darker still. Going up from the eye, take the first peak that reaches 30 % of the window's darkest.
+    const double darkest_row = *std::max_element(rows.begin(), rows.end());
+    std::size_t peak = argmax(rows);
+    for (std::size_t r = rows.size() - 2; r >= 1; --r) {
+        if (rows[r] >= 0.3 * darkest_row && rows[r] >= rows[r - 1] && rows[r] >= rows[r + 1]) {
+            peak = r;
+            break;
+        }
+    }
+    const int brow_row = static_cast<int>(peak);
     cv::Mat dark;
     cv::threshold(patch, dark, 0, 255, cv::THRESH_BINARY_INV | cv::THRESH_OTSU);
+    // Only the brow's rows: the threshold also takes fringe and lashes above and below it.
+    const int half_band = static_cast<int>(0.12 * kFrameD);
+    dark.rowRange(0, std::max(0, brow_row - half_band)).setTo(0);
+    dark.rowRange(std::min(dark.rows, brow_row + half_band), dark.rows).setTo(0);
     const cv::Mat brow = largest_near(dark, cv::Point2d(0.5 * patch.cols, brow_row), 0.45 * kFrameD);
     const cv::Point2d origin(area.tl());
-    const std::vector<cv::Point> none;
     std::vector<cv::Point> pixels;
     cv::findNonZero(brow, pixels);
     const char* ids_outer_to_inner[4] = {image_left ? "4.6" : "4.5", image_left ? "4.4a" : "4.3a",
@@ -220,23 +233,33 @@ void locate_brow(const FaceFrame& frame, const cv::Point2d& eye, bool image_left
         located.points[ids_outer_to_inner[k]] = origin + cv::Point2d(x, y);
     }
     const double darkness = skin - median_of(patch, brow);
-    const double shape = (span > 0.35 * kFrameD && span < 1.0 * kFrameD) ? 1.0 : 0.4;
+    const double shape = (span > 0.35 * kFrameD && span < 1.0 * kFrameD) ? 1.0 : 0.3;
     located.brow_bgr = median_colour(frame.bgr(area), brow);
     located.has_brow_colour = true;
     located.add_feature(image_left ? "left_brow" : "right_brow", std::clamp(darkness / 45.0, 0.0, 1.0) * shape, "thesis");
 }
 
-// The nose: nostrils are the darkest row below the eyes (0.5 to 0.95 d); the wings are the strongest
+// The nose: nostrils are the first dark row below the eyes (0.45 to 0.9 d); the wings are the strongest
 // vertical edges beside them.
 void locate_nose(const FaceFrame& frame, double skin, Located& located) {
-    const cv::Rect area = clip(cv::Rect(cv::Point(col_of(-0.3), row_of(0.5)), cv::Point(col_of(0.3), row_of(0.98))), frame.gray);
+    const cv::Rect area = clip(cv::Rect(cv::Point(col_of(-0.3), row_of(0.45)), cv::Point(col_of(0.3), row_of(0.9))), frame.gray);
     cv::Mat patch;
     cv::GaussianBlur(frame.gray(area), patch, cv::Size(5, 5), 0.0);
     const std::vector<double> rows = smooth(row_darkness(patch, cv::Rect(0, 0, patch.cols, patch.rows), skin), 1);
-    const int nostril_row = area.y + static_cast<int>(argmax(rows));
+    // Going down from the eyes the nostrils come before the lips, which may be darker: the first
+    // peak that reaches half the window's darkest row.
+    const double darkest_row = *std::max_element(rows.begin(), rows.end());
+    std::size_t peak = argmax(rows);
+    for (std::size_t r = 1; r + 1 < rows.size(); ++r) {
+        if (rows[r] >= 0.5 * darkest_row && rows[r] >= rows[r - 1] && rows[r] >= rows[r + 1]) {
+            peak = r;
+            break;
+        }
+    }
+    const int nostril_row = area.y + static_cast<int>(peak);
     // Nostril centres: the darkest columns on each side in that row band.
     const int band = static_cast<int>(0.05 * kFrameD);
-    double nostril_x[2] = {col_of(-0.12), col_of(0.12)};
+    double nostril_x[2] = {in_d(-0.12, 0).x, in_d(0.12, 0).x};
     double nostril_dark[2] = {0.0, 0.0};
     for (int side = 0; side < 2; ++side) {
         const int from = side == 0 ? col_of(-0.32) : col_of(0.04);
@@ -288,7 +311,7 @@ void locate_nose(const FaceFrame& frame, double skin, Located& located) {
 
 // The mouth: the lips are redder than the skin (L*a*b* a*); Otsu's threshold on a* in the window
 // below the nose gives the lip region, the darkest row inside it the line where the lips meet.
-void locate_mouth(const FaceFrame& frame, double skin, Located& located) {
+void locate_mouth(const FaceFrame& frame, Located& located) {
     const double nose_y = located.points.count("9.15") ? located.points["9.15"].y : in_d(0, 0.8).y;
     const cv::Rect area = clip(cv::Rect(cv::Point(col_of(-0.7), static_cast<int>(nose_y + 0.12 * kFrameD)),
                                         cv::Point(col_of(0.7), static_cast<int>(nose_y + 0.8 * kFrameD))),
@@ -365,7 +388,6 @@ void locate_mouth(const FaceFrame& frame, double skin, Located& located) {
     const double plausible = (width_d > 0.45 && width_d < 1.35) ? 1.0 : 0.3;
     located.lip_bgr = median_colour(frame.bgr(area), lips);
     located.has_lip_colour = true;
-    (void)skin;
     located.add_feature("mouth", std::clamp((lip_a - skin_a) / 10.0, 0.0, 1.0) * plausible, "thesis");
 }
 
@@ -399,13 +421,13 @@ void locate_chin(const FaceFrame& frame, const Regions& regions, Located& locate
 
 }  // namespace
 
-EyePair refine_eye_centres(const FaceFrame& frame) {
+EyePair refine_eye_centres(const FaceFrame& frame, double half_width_d) {
     EyePair eyes;
     double contrast[2] = {0.0, 0.0};
     const double skin = skin_gray(frame);
     for (int side = 0; side < 2; ++side) {
         const cv::Point2d guess = in_d(side == 0 ? -0.5 : 0.5, 0.0);
-        const cv::Rect area = clip(window(guess, 0.28, 0.2), frame.gray);
+        const cv::Rect area = clip(window(guess, half_width_d, 0.7 * half_width_d), frame.gray);
         cv::Mat patch;
         cv::GaussianBlur(frame.gray(area), patch, cv::Size(5, 5), 0.0);
         // The iris: the darkest 12 % of the window, the region nearest the guess.
@@ -430,7 +452,7 @@ void locate_features_thesis(const FaceFrame& frame, const Regions& regions, Loca
     locate_brow(frame, in_d(-0.5, 0.0), true, skin, located);
     locate_brow(frame, in_d(0.5, 0.0), false, skin, located);
     locate_nose(frame, skin, located);
-    locate_mouth(frame, skin, located);
+    locate_mouth(frame, located);
     locate_chin(frame, regions, located);
 }
 

@@ -30,7 +30,8 @@ struct DetectedFace {
 
 // The Haar frontal face the caller asked for. Throws (InvalidArgument, "photo") for no face, too
 // many faces without face_index, a face too small, a photo or face too dark, a profile face.
-DetectedFace detect_face(const cv::Mat& gray, const PhotoOptions& options, const std::string& source);
+DetectedFace detect_face(const cv::Mat& bgr, const cv::Mat& gray, const PhotoOptions& options,
+                         const std::string& source);
 
 struct EyePair {
     cv::Point2d left;   // image-left eye centre, photo pixels
@@ -110,8 +111,9 @@ inline constexpr double kUsableConfidence = 0.35;
 // windows placed from the eye pair (thesis 2.2).
 void locate_features_thesis(const FaceFrame& frame, const Regions& regions, Located& located);
 
-// Refines the eyeball centres: the darkest blob (the iris) near each eye. Frame coordinates.
-EyePair refine_eye_centres(const FaceFrame& frame);
+// Refines the eyeball centres: the darkest blob (the iris) within half_width_d of each eye's place
+// in the frame. Frame coordinates.
+EyePair refine_eye_centres(const FaceFrame& frame, double half_width_d);
 
 #ifdef TALKFACE_WITH_DLIB
 // feature_locator_dlib.cpp: dlib's 68 landmarks in the photo, the eye centres they imply.

@@ -143,8 +143,9 @@ Regions separate_regions(const FaceFrame& frame) {
     const cv::Rect head_area = around(in_d(0.0, 0.0), 2.2, 2.4) & cv::Rect(0, 0, lab.cols, lab.rows);
     cv::Mat unused;
     const double otsu = cv::threshold(skin_distance(head_area), unused, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
-    // Keep Otsu's split between 2 and 5 robust deviations: a uniform backdrop would otherwise pull it.
-    const double limit = std::clamp(otsu, 64.0, 160.0);
+    // Keep Otsu's split between 1.75 and 2.75 robust deviations: a backdrop far from skin would pull
+    // it out so far that fair hair next to the forehead counts as skin.
+    const double limit = std::clamp(otsu, 56.0, 88.0);
     cv::Mat skin_mask = skin_distance <= limit;
     skin_mask &= valid;
     cv::morphologyEx(skin_mask, skin_mask, cv::MORPH_OPEN, cv::getStructuringElement(cv::MORPH_ELLIPSE, {3, 3}));

@@ -1,0 +1,128 @@
+// tf_align_options, tf_align_file and tf_align_samples: the C face of speech_aligner.hpp.
+#include <string>
+
+#include "c_api_guard.hpp"
+#include "c_api_handles.hpp"
+
+using talkface::AlignOptions;
+using talkface::InvalidArgument;
+using talkface::SentenceCutMode;
+using talkface::SpeechAligner;
+using talkface::capi::enum_value;
+using talkface::capi::guard;
+using talkface::capi::require_non_null;
+
+namespace {
+
+// Throws what SpeechAligner's constructor throws for `candidate` (InvalidArgument naming the
+// option), so the ranges live in one place and a tf_align_options never holds a value the aligner
+// would refuse later.
+void validate(const AlignOptions& candidate) {
+    static_cast<void>(SpeechAligner(candidate));
+}
+
+SpeechAligner aligner_for(const tf_align_options* options) {
+    return SpeechAligner(options != nullptr ? options->options : AlignOptions{});
+}
+
+// Adapts a C callback; an empty ProgressCallback when there is none, so the aligner skips reporting.
+talkface::ProgressCallback progress_for(tf_progress_fn progress, void* user_data) {
+    if (progress == nullptr) return {};
+    return [progress, user_data](double fraction, const std::string& stage) {
+        return progress(fraction, stage.c_str(), user_data) == 0;
+    };
+}
+
+}  // namespace
+
+extern "C" {
+
+tf_status tf_align_options_create(tf_align_options** out) {
+    return guard([&] {
+        require_non_null(out, "out");
+        *out = new tf_align_options{};
+    });
+}
+
+void tf_align_options_destroy(tf_align_options* options) {
+    delete options;
+}
+
+tf_status tf_align_options_set_sentence_cut(tf_align_options* options, tf_sentence_cut_mode mode) {
+    return guard([&] {
+        require_non_null(options, "options");
+        const int value = enum_value(mode);
+        if (value != TF_SENTENCE_CUT_AUTOMATIC && value != TF_SENTENCE_CUT_FIRST_PAUSE) {
+            throw InvalidArgument("sentence_cut", "expected a tf_sentence_cut_mode (0..1), got " +
+                                                      std::to_string(value));
+        }
+        AlignOptions candidate = options->options;
+        candidate.sentence_cut = static_cast<SentenceCutMode>(value);
+        validate(candidate);
+        options->options = candidate;
+    });
+}
+
+tf_status tf_align_options_set_first_pause(tf_align_options* options, double start_s, double end_s) {
+    return guard([&] {
+        require_non_null(options, "options");
+        AlignOptions candidate = options->options;
+        candidate.sentence_cut = SentenceCutMode::first_pause;
+        candidate.first_pause_start_s = start_s;
+        candidate.first_pause_end_s = end_s;
+        validate(candidate);
+        options->options = candidate;
+    });
+}
+
+tf_status tf_align_options_set_c1(tf_align_options* options, double c1) {
+    return guard([&] {
+        require_non_null(options, "options");
+        AlignOptions candidate = options->options;
+        candidate.c1 = c1;
+        validate(candidate);
+        options->options = candidate;
+    });
+}
+
+tf_status tf_align_options_set_c2(tf_align_options* options, double c2) {
+    return guard([&] {
+        require_non_null(options, "options");
+        AlignOptions candidate = options->options;
+        candidate.c2 = c2;
+        validate(candidate);
+        options->options = candidate;
+    });
+}
+
+tf_status tf_align_file(const char* audio_path, const tf_timeline* transcript, const tf_align_options* options,
+                        tf_progress_fn progress, void* user_data, tf_timeline** out) {
+    return guard([&] {
+        require_non_null(audio_path, "audio_path");
+        require_non_null(transcript, "transcript");
+        require_non_null(out, "out");
+        talkface::Timeline aligned =
+            aligner_for(options).align_file(audio_path, transcript->timeline, progress_for(progress, user_data));
+        *out = new tf_timeline{std::move(aligned)};
+    });
+}
+
+tf_status tf_align_samples(const float* samples, size_t frame_count, int channel_count, int sample_rate_hz,
+                           const tf_timeline* transcript, const tf_align_options* options, tf_progress_fn progress,
+                           void* user_data, tf_timeline** out) {
+    return guard([&] {
+        require_non_null(samples, "samples");
+        require_non_null(transcript, "transcript");
+        require_non_null(out, "out");
+        talkface::AudioView audio;
+        audio.samples = samples;
+        audio.frame_count = frame_count;
+        audio.channel_count = channel_count;
+        audio.sample_rate_hz = sample_rate_hz;
+        talkface::Timeline aligned =
+            aligner_for(options).align(audio, transcript->timeline, progress_for(progress, user_data));
+        *out = new tf_timeline{std::move(aligned)};
+    });
+}
+
+}  // extern "C"

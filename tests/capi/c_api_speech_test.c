@@ -1,0 +1,311 @@
+/* The C ABI of the speech aligner, driven from C: a clip aligned from its file and from samples read
+ * here, options and their checks, progress and cancellation, and errors that name what was wrong. */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "talkface/talkface.h"
+
+/* Counts into the enclosing function's `failures`; prints where and this thread's last error. */
+#define CHECK(condition)                                                                            \
+    do {                                                                                            \
+        if (!(condition)) {                                                                         \
+            ++failures;                                                                             \
+            fprintf(stderr, "%s:%d: CHECK(%s) failed; tf_last_error_message: \"%s\"\n", __FILE__,   \
+                    __LINE__, #condition, tf_last_error_message());                                 \
+        }                                                                                           \
+    } while (0)
+
+#define CHECK_OK(call) CHECK((call) == TF_OK)
+
+/* status == expected and the message contains `needle`. */
+#define CHECK_FAILS_WITH(call, expected, needle)                                                    \
+    do {                                                                                            \
+        tf_status status_ = (call);                                                                 \
+        CHECK(status_ == (expected));                                                               \
+        CHECK(strstr(tf_last_error_message(), (needle)) != NULL);                                   \
+    } while (0)
+
+#define CLIP_DIR TALKFACE_SOURCE_DIR "/tests/data/speech/"
+
+/* 3.09 s, 16 kHz mono 16-bit: 小朋友們在公園裡放風箏。 (tests/data/speech/README.md) */
+static const char kClipPath[] = CLIP_DIR "one_sentence.wav";
+static const char kTranscriptPath[] = CLIP_DIR "one_sentence.txt";
+static const double kClipDurationS = 3.09052;
+static const size_t kClipSyllables = 11;
+
+/* A 16-bit PCM WAV file's samples as floats in -1..1 (libsndfile's scaling: x / 32768), or NULL
+ * for anything else. The caller frees *out. Enough for the test clips, not a general reader. */
+static float *read_wav_16(const char *path, size_t *out_frame_count, int *out_channel_count,
+                          int *out_sample_rate_hz) {
+    unsigned char header[12];
+    unsigned char chunk[8];
+    unsigned char format[16];
+    int has_format = 0;
+    float *samples = NULL;
+    FILE *file = fopen(path, "rb");
+    if (file == NULL) return NULL;
+    if (fread(header, 1, 12, file) != 12 || memcmp(header, "RIFF", 4) != 0 || memcmp(header + 8, "WAVE", 4) != 0) {
+        fclose(file);
+        return NULL;
+    }
+    while (samples == NULL && fread(chunk, 1, 8, file) == 8) {
+        const unsigned long size = (unsigned long)chunk[4] | (unsigned long)chunk[5] << 8 |
+                                   (unsigned long)chunk[6] << 16 | (unsigned long)chunk[7] << 24;
+        if (memcmp(chunk, "fmt ", 4) == 0 && size >= 16) {
+            if (fread(format, 1, 16, file) != 16 || fseek(file, (long)(size - 16 + (size & 1)), SEEK_CUR) != 0) break;
+            has_format = format[0] == 1 && format[1] == 0 && format[14] == 16 && format[15] == 0;
+            *out_channel_count = format[2] | format[3] << 8;
+            *out_sample_rate_hz = (int)((unsigned long)format[4] | (unsigned long)format[5] << 8 |
+                                        (unsigned long)format[6] << 16 | (unsigned long)format[7] << 24);
+        } else if (memcmp(chunk, "data", 4) == 0 && has_format && *out_channel_count > 0) {
+            const size_t count = size / 2;
+            size_t k;
+            unsigned char *bytes = malloc(size);
+            samples = malloc(count * sizeof *samples);
+            if (bytes == NULL || samples == NULL || fread(bytes, 1, size, file) != size) {
+                free(bytes);
+                free(samples);
+                samples = NULL;
+                break;
+            }
+            for (k = 0; k < count; ++k) {
+                const int16_t value = (int16_t)(uint16_t)(bytes[2 * k] | bytes[2 * k + 1] << 8);
+                samples[k] = (float)value / 32768.0f;
+            }
+            free(bytes);
+            *out_frame_count = count / (size_t)*out_channel_count;
+        } else if (fseek(file, (long)(size + (size & 1)), SEEK_CUR) != 0) {
+            break;
+        }
+    }
+    fclose(file);
+    return samples;
+}
+
+/* Every syllable inside the audio, ordered, each ending after it starts and no later than the next
+ * one starts; the sentence spans its syllables. */
+static int check_well_formed(const tf_timeline *timeline) {
+    int failures = 0;
+    size_t count = 0;
+    size_t k;
+    double duration_s = 0.0;
+    double sentence_start_s = -1.0;
+    double sentence_end_s = -1.0;
+    double previous_end_s = 0.0;
+    double first_start_s = 0.0;
+    double last_end_s = 0.0;
+    CHECK_OK(tf_timeline_duration_s(timeline, &duration_s));
+    CHECK(duration_s > kClipDurationS - 0.01 && duration_s < kClipDurationS + 0.01);
+    CHECK_OK(tf_timeline_sentence_count(timeline, &count));
+    CHECK(count == 1);
+    CHECK_OK(tf_timeline_sentence(timeline, 0, NULL, &sentence_start_s, &sentence_end_s));
+    CHECK_OK(tf_timeline_syllable_count(timeline, &count));
+    CHECK(count == kClipSyllables);
+    for (k = 0; k < count; ++k) {
+        double start_s = -1.0;
+        double end_s = -1.0;
+        size_t sentence_index = 99;
+        CHECK_OK(tf_timeline_syllable_times(timeline, k, &start_s, &end_s, NULL, NULL));
+        CHECK_OK(tf_timeline_syllable(timeline, k, NULL, NULL, &sentence_index));
+        CHECK(sentence_index == 0);
+        CHECK(start_s >= previous_end_s - 1e-9);
+        CHECK(end_s > start_s);
+        CHECK(end_s <= duration_s);
+        if (k == 0) first_start_s = start_s;
+        previous_end_s = end_s;
+        last_end_s = end_s;
+    }
+    CHECK(sentence_start_s == first_start_s);
+    CHECK(sentence_end_s == last_end_s);
+    return failures;
+}
+
+/* Whether two timelines give every syllable the same times, bit for bit. */
+static int same_syllable_times(const tf_timeline *a, const tf_timeline *b) {
+    size_t count_a = 0;
+    size_t count_b = 0;
+    size_t k;
+    if (tf_timeline_syllable_count(a, &count_a) != TF_OK || tf_timeline_syllable_count(b, &count_b) != TF_OK ||
+        count_a != count_b) {
+        return 0;
+    }
+    for (k = 0; k < count_a; ++k) {
+        double start_a = 0.0, end_a = 0.0, final_a = 0.0, start_b = 0.0, end_b = 0.0, final_b = 0.0;
+        int has_final_a = 0, has_final_b = 0;
+        tf_timeline_syllable_times(a, k, &start_a, &end_a, &has_final_a, &final_a);
+        tf_timeline_syllable_times(b, k, &start_b, &end_b, &has_final_b, &final_b);
+        if (start_a != start_b || end_a != end_b || has_final_a != has_final_b || final_a != final_b) return 0;
+    }
+    return 1;
+}
+
+/* What the progress callback saw; cancel_after_calls > 0 makes it cancel on that call. */
+typedef struct progress_log {
+    int calls;
+    int cancel_after_calls;
+    int is_decreasing;
+    int has_unknown_stage;
+    double first_fraction;
+    double last_fraction;
+} progress_log;
+
+static int log_progress(double fraction, const char *stage, void *user_data) {
+    progress_log *log = user_data;
+    if (log->calls == 0) log->first_fraction = fraction;
+    else if (fraction < log->last_fraction) log->is_decreasing = 1;
+    if (strcmp(stage, "reading") != 0 && strcmp(stage, "sentences") != 0 && strcmp(stage, "syllables") != 0) {
+        log->has_unknown_stage = 1;
+    }
+    log->last_fraction = fraction;
+    ++log->calls;
+    return log->cancel_after_calls > 0 && log->calls >= log->cancel_after_calls;
+}
+
+static tf_timeline *clip_transcript(void) {
+    tf_timeline *transcript = NULL;
+    return tf_load_transcript(kTranscriptPath, &transcript) == TF_OK ? transcript : NULL;
+}
+
+static int test_file_and_its_samples_align_alike(void) {
+    int failures = 0;
+    tf_timeline *transcript = clip_transcript();
+    tf_timeline *from_file = NULL;
+    tf_timeline *from_samples = NULL;
+    size_t frame_count = 0;
+    int channel_count = 0;
+    int sample_rate_hz = 0;
+    float *samples = read_wav_16(kClipPath, &frame_count, &channel_count, &sample_rate_hz);
+    CHECK(transcript != NULL);
+    CHECK(samples != NULL && channel_count == 1 && sample_rate_hz == 16000);
+    CHECK_OK(tf_align_file(kClipPath, transcript, NULL, NULL, NULL, &from_file));
+    CHECK(from_file != NULL);
+    if (from_file != NULL) failures += check_well_formed(from_file);
+    CHECK_OK(tf_align_samples(samples, frame_count, channel_count, sample_rate_hz, transcript, NULL, NULL, NULL,
+                              &from_samples));
+    CHECK(from_samples != NULL);
+    if (from_file != NULL && from_samples != NULL) CHECK(same_syllable_times(from_file, from_samples));
+    tf_timeline_destroy(from_samples);
+    tf_timeline_destroy(from_file);
+    tf_timeline_destroy(transcript);
+    free(samples);
+    return failures;
+}
+
+static int test_progress_rises_and_a_non_zero_return_cancels(void) {
+    int failures = 0;
+    tf_timeline *transcript = clip_transcript();
+    tf_timeline *aligned = NULL;
+    tf_timeline *const untouched = (tf_timeline *)&failures; /* never dereferenced */
+    progress_log log = {0, 0, 0, 0, -1.0, -1.0};
+    progress_log cancelling = {0, 3, 0, 0, -1.0, -1.0};
+    CHECK_OK(tf_align_file(kClipPath, transcript, NULL, log_progress, &log, &aligned));
+    CHECK(log.calls >= 5);
+    CHECK(log.first_fraction == 0.0);
+    CHECK(log.last_fraction == 1.0);
+    CHECK(log.is_decreasing == 0);
+    CHECK(log.has_unknown_stage == 0);
+    tf_timeline_destroy(aligned);
+
+    aligned = untouched;
+    CHECK_FAILS_WITH(tf_align_file(kClipPath, transcript, NULL, log_progress, &cancelling, &aligned),
+                     TF_ERR_CANCELLED, "cancelled");
+    CHECK(cancelling.calls == 3);
+    CHECK(aligned == untouched);
+    tf_timeline_destroy(transcript);
+    return failures;
+}
+
+static int test_options_are_checked_and_reach_the_aligner(void) {
+    int failures = 0;
+    tf_align_options *options = NULL;
+    tf_timeline *transcript = NULL;
+    tf_timeline *aligned = NULL;
+    size_t count = 0;
+    double start_s = 0.0;
+    CHECK_OK(tf_align_options_create(&options));
+    CHECK_FAILS_WITH(tf_align_options_set_c1(options, 0.3), TF_ERR_INVALID_ARGUMENT, "c1");
+    CHECK_FAILS_WITH(tf_align_options_set_c2(options, 2.0), TF_ERR_INVALID_ARGUMENT, "c2");
+    CHECK_FAILS_WITH(tf_align_options_set_first_pause(options, 2.0, 1.0), TF_ERR_INVALID_ARGUMENT, "first_pause");
+    CHECK_FAILS_WITH(tf_align_options_set_sentence_cut(options, TF_SENTENCE_CUT_FIRST_PAUSE),
+                     TF_ERR_INVALID_ARGUMENT, "first_pause");
+    CHECK_FAILS_WITH(tf_align_options_set_sentence_cut(options, (tf_sentence_cut_mode)7), TF_ERR_INVALID_ARGUMENT,
+                     "sentence_cut");
+    CHECK_OK(tf_align_options_set_c1(options, 0.9));
+    CHECK_OK(tf_align_options_set_c2(options, 1.4));
+    CHECK_OK(tf_align_options_set_sentence_cut(options, TF_SENTENCE_CUT_AUTOMATIC));
+
+    /* two_sentences: 今天下午有雨。我们明天再去吧。 with the pause between them at 1.69-2.59 s. */
+    CHECK_OK(tf_align_options_set_first_pause(options, 1.8, 2.4));
+    CHECK_OK(tf_load_transcript(CLIP_DIR "two_sentences.txt", &transcript));
+    CHECK_OK(tf_align_file(CLIP_DIR "two_sentences.wav", transcript, options, NULL, NULL, &aligned));
+    CHECK_OK(tf_timeline_sentence_count(aligned, &count));
+    CHECK(count == 2);
+    CHECK_OK(tf_timeline_sentence(aligned, 1, NULL, &start_s, NULL));
+    CHECK(start_s > 2.4 && start_s < 2.7);
+    tf_timeline_destroy(aligned);
+    aligned = NULL;
+
+    /* A pause inside the first sentence makes Algorithm 3.1 cut where no sentence ends. */
+    CHECK_OK(tf_align_options_set_first_pause(options, 0.9, 0.92));
+    CHECK(tf_align_file(CLIP_DIR "two_sentences.wav", transcript, options, NULL, NULL, &aligned) ==
+          TF_ERR_ALIGNMENT);
+    CHECK(aligned == NULL);
+    CHECK_FAILS_WITH(tf_align_options_set_c1(NULL, 0.9), TF_ERR_INVALID_ARGUMENT, "options");
+    CHECK_FAILS_WITH(tf_align_options_create(NULL), TF_ERR_INVALID_ARGUMENT, "out");
+    tf_align_options_destroy(options);
+    tf_align_options_destroy(NULL);
+    tf_timeline_destroy(transcript);
+    return failures;
+}
+
+static int test_errors_name_the_file_the_sentence_and_the_argument(void) {
+    int failures = 0;
+    tf_timeline *transcript = clip_transcript();
+    tf_timeline *extra = NULL;
+    tf_timeline *aligned = NULL;
+    const float silence[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    /* 小朋友們在公園裡放風箏。今天下午有雨。: one sentence more than the clip speaks. */
+    const char *extra_text = "\xe5\xb0\x8f\xe6\x9c\x8b\xe5\x8f\x8b\xe5\x80\x91\xe5\x9c\xa8\xe5\x85\xac\xe5\x9c\x92"
+                             "\xe8\xa3\xa1\xe6\x94\xbe\xe9\xa2\xa8\xe7\xae\x8f\xe3\x80\x82\xe4\xbb\x8a\xe5\xa4\xa9"
+                             "\xe4\xb8\x8b\xe5\x8d\x88\xe6\x9c\x89\xe9\x9b\xa8\xe3\x80\x82";
+    CHECK_FAILS_WITH(tf_align_file("/no/such/dir/speech.wav", transcript, NULL, NULL, NULL, &aligned), TF_ERR_FILE,
+                     "/no/such/dir/speech.wav");
+    CHECK(aligned == NULL);
+
+    CHECK_OK(tf_read_transcript(extra_text, strlen(extra_text), "extra.txt", &extra));
+    CHECK_FAILS_WITH(tf_align_file(kClipPath, extra, NULL, NULL, NULL, &aligned), TF_ERR_ALIGNMENT, kClipPath);
+    CHECK(strstr(tf_last_error_message(), "sentence") != NULL);
+    CHECK(aligned == NULL);
+
+    CHECK_FAILS_WITH(tf_align_file(NULL, transcript, NULL, NULL, NULL, &aligned), TF_ERR_INVALID_ARGUMENT,
+                     "audio_path");
+    CHECK_FAILS_WITH(tf_align_file(kClipPath, NULL, NULL, NULL, NULL, &aligned), TF_ERR_INVALID_ARGUMENT,
+                     "transcript");
+    CHECK_FAILS_WITH(tf_align_file(kClipPath, transcript, NULL, NULL, NULL, NULL), TF_ERR_INVALID_ARGUMENT, "out");
+    CHECK_FAILS_WITH(tf_align_samples(NULL, 4, 1, 16000, transcript, NULL, NULL, NULL, &aligned),
+                     TF_ERR_INVALID_ARGUMENT, "samples");
+    CHECK_FAILS_WITH(tf_align_samples(silence, 0, 1, 16000, transcript, NULL, NULL, NULL, &aligned),
+                     TF_ERR_INVALID_ARGUMENT, "frame_count");
+    CHECK_FAILS_WITH(tf_align_samples(silence, 4, 0, 16000, transcript, NULL, NULL, NULL, &aligned),
+                     TF_ERR_INVALID_ARGUMENT, "channel_count");
+    CHECK_FAILS_WITH(tf_align_samples(silence, 4, 1, 100, transcript, NULL, NULL, NULL, &aligned),
+                     TF_ERR_INVALID_ARGUMENT, "sample_rate_hz");
+    CHECK_FAILS_WITH(tf_align_samples(silence, 4, 1, 16000, NULL, NULL, NULL, NULL, &aligned),
+                     TF_ERR_INVALID_ARGUMENT, "transcript");
+    CHECK(aligned == NULL);
+    tf_timeline_destroy(extra);
+    tf_timeline_destroy(transcript);
+    return failures;
+}
+
+int main(void) {
+    int failures = 0;
+    failures += test_file_and_its_samples_align_alike();
+    failures += test_progress_rises_and_a_non_zero_return_cancels();
+    failures += test_options_are_checked_and_reach_the_aligner();
+    failures += test_errors_name_the_file_the_sentence_and_the_argument();
+    if (failures != 0) fprintf(stderr, "%d check(s) failed\n", failures);
+    return failures == 0 ? 0 : 1;
+}

@@ -1,0 +1,145 @@
+/* The C ABI of the animation as SVG and of the web page, driven from C: both encodings, a page
+ * whose hostile texts stay text, refused links, and all-or-nothing writes. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "talkface/talkface.h"
+
+#define CHECK(condition)                                                                            \
+    do {                                                                                            \
+        if (!(condition)) {                                                                         \
+            ++failures;                                                                             \
+            fprintf(stderr, "%s:%d: CHECK(%s) failed; tf_last_error_message: \"%s\"\n", __FILE__,   \
+                    __LINE__, #condition, tf_last_error_message());                                 \
+        }                                                                                           \
+    } while (0)
+
+#define CHECK_OK(call) CHECK((call) == TF_OK)
+
+#define CHECK_FAILS_WITH(call, expected, needle)                                                    \
+    do {                                                                                            \
+        tf_status status_ = (call);                                                                 \
+        CHECK(status_ == (expected));                                                               \
+        CHECK(strstr(tf_last_error_message(), (needle)) != NULL);                                   \
+    } while (0)
+
+static const char *const kSpeech = TALKFACE_SOURCE_DIR "/samples/speech/demo.ogg";
+static const char *const kHostile = "</script><img src=x onerror=alert(1)>\"'&";
+
+/* One sentence with a hostile text, "ma1 ma1 hao3" spoken from 0.5 s, 2 s long. */
+static tf_timeline *new_timeline(void) {
+    tf_timeline *timeline = NULL;
+    if (tf_timeline_create(&timeline) != TF_OK) return NULL;
+    tf_timeline_add_sentence(timeline, kHostile, 0.5, 1.25);
+    tf_timeline_add_syllable(timeline, "\xe5\xaa\xbd", "ma1", 0, 0.5, 0.75);
+    tf_timeline_add_syllable(timeline, "\xe5\xaa\xbd", "ma1", 0, 0.75, 1.0);
+    tf_timeline_add_syllable(timeline, "\xe5\xa5\xbd", "hao3", 0, 1.0, 1.25);
+    tf_timeline_set_duration_s(timeline, 2.0);
+    return timeline;
+}
+
+static int test_animation_svg(const tf_face_model *face, const tf_animation *animation) {
+    int failures = 0;
+    char *svg = NULL;
+    size_t length = 0;
+    CHECK_OK(tf_render_animation_svg(face, animation, NULL, TF_ENCODING_KEYFRAMES, NULL, NULL, &svg, &length));
+    CHECK(svg != NULL && strlen(svg) == length);
+    CHECK(svg != NULL && strstr(svg, "<animate attributeName=\"d\"") != NULL);
+    CHECK(svg != NULL && strstr(svg, "class=\"tf-animation\"") != NULL);
+    tf_free(svg);
+    svg = NULL;
+    CHECK_OK(tf_render_animation_svg(face, animation, NULL, TF_ENCODING_FRAMES, NULL, NULL, &svg, NULL));
+    CHECK(svg != NULL && strstr(svg, "<set attributeName=\"visibility\"") != NULL);
+    tf_free(svg);
+    CHECK_FAILS_WITH(tf_render_animation_svg(face, animation, NULL, (tf_animation_encoding)7, NULL, NULL, &svg, NULL),
+                     TF_ERR_INVALID_ARGUMENT, "encoding");
+    CHECK_FAILS_WITH(tf_write_animation_svg(face, animation, NULL, TF_ENCODING_KEYFRAMES, "/nonexistent/dir/a.svg"),
+                     TF_ERR_FILE, "/nonexistent/dir/a.svg");
+    return failures;
+}
+
+static int test_web_page(const tf_face_model *face, const tf_animation *animation, const tf_timeline *timeline) {
+    int failures = 0;
+    tf_web_page_options *options = NULL;
+    char *html = NULL;
+    size_t length = 0;
+    double origin[2] = {600.0, 330.0};
+    tf_rgb stage = {0x20, 0x30, 0x40};
+    char path[512];
+    FILE *file = NULL;
+    CHECK_OK(tf_web_page_options_create(&options));
+    CHECK_OK(tf_web_page_options_set_app(options, TF_PAGE_AUDIOBOOK));
+    CHECK_OK(tf_web_page_options_set_title(options, kHostile));
+    CHECK_OK(tf_web_page_options_add_link(options, kHostile, "https://example.org/a?b=1&c=2"));
+    CHECK_OK(tf_build_web_page(face, NULL, animation, timeline, kSpeech, options, NULL, NULL, &html, &length));
+    CHECK(html != NULL && strlen(html) == length);
+    CHECK(html != NULL && strstr(html, "<img") == NULL);
+    CHECK(html != NULL && strstr(html, "&lt;/script&gt;&lt;img src=x onerror=alert(1)&gt;&quot;&#39;&amp;") != NULL);
+    CHECK(html != NULL && strstr(html, "data:audio/ogg;base64,") != NULL);
+    tf_free(html);
+
+    CHECK_OK(tf_web_page_options_set_app(options, TF_PAGE_ANNOUNCER));
+    CHECK_OK(tf_web_page_options_set_stage(options, 800, 450, stage, NULL));
+    CHECK_OK(tf_web_page_options_set_face_placement(options, origin, 60.0));
+    CHECK_OK(tf_web_page_options_set_encoding(options, TF_ENCODING_FRAMES));
+    CHECK_OK(tf_web_page_options_set_link_audio(options, 1, "speech.ogg"));
+    html = NULL;
+    CHECK_OK(tf_build_web_page(face, NULL, animation, timeline, kSpeech, options, NULL, NULL, &html, NULL));
+    CHECK(html != NULL && strstr(html, "src=\"speech.ogg\"") != NULL);
+    CHECK(html != NULL && strstr(html, "class=\"tf-stage\"") != NULL);
+    tf_free(html);
+
+    CHECK_FAILS_WITH(tf_web_page_options_set_app(options, (tf_web_page_app)9), TF_ERR_INVALID_ARGUMENT, "app");
+    CHECK_OK(tf_web_page_options_add_link(options, "run", "javascript:alert(1)"));
+    html = NULL;
+    CHECK_FAILS_WITH(tf_build_web_page(face, NULL, animation, timeline, kSpeech, options, NULL, NULL, &html, NULL),
+                     TF_ERR_INVALID_ARGUMENT, "links[1].url");
+    CHECK(html == NULL);
+
+    /* A failed write leaves an earlier page as it was. */
+    snprintf(path, sizeof path, "%s/c_api_page.html", TF_TEST_OUTPUT_DIR);
+    file = fopen(path, "w");
+    if (file != NULL) {
+        fputs("old", file);
+        fclose(file);
+    }
+    CHECK_FAILS_WITH(tf_write_web_page(face, NULL, animation, timeline, kSpeech, options, path),
+                     TF_ERR_INVALID_ARGUMENT, "javascript");
+    file = fopen(path, "r");
+    CHECK(file != NULL);
+    if (file != NULL) {
+        char content[8] = {0};
+        CHECK(fread(content, 1, sizeof content - 1, file) == 3 && strcmp(content, "old") == 0);
+        fclose(file);
+    }
+    CHECK_FAILS_WITH(tf_write_web_page(face, NULL, animation, timeline, "/nonexistent/speech.ogg", NULL, path),
+                     TF_ERR_FILE, "/nonexistent/speech.ogg");
+    CHECK_FAILS_WITH(tf_build_web_page(face, NULL, animation, NULL, kSpeech, NULL, NULL, NULL, &html, NULL),
+                     TF_ERR_INVALID_ARGUMENT, "timeline");
+    tf_web_page_options_destroy(options);
+    tf_web_page_options_destroy(NULL);
+    return failures;
+}
+
+int main(void) {
+    int failures = 0;
+    tf_face_model *face = NULL;
+    tf_timeline *timeline = new_timeline();
+    tf_expression_simulator *simulator = NULL;
+    tf_animation *animation = NULL;
+    CHECK(timeline != NULL);
+    CHECK_OK(tf_face_model_default(&face));
+    CHECK_OK(tf_expression_simulator_create(timeline, 7, NULL, &simulator));
+    CHECK_OK(tf_animate(face, timeline, simulator, NULL, &animation));
+    if (face != NULL && animation != NULL) {
+        failures += test_animation_svg(face, animation);
+        failures += test_web_page(face, animation, timeline);
+    }
+    tf_animation_destroy(animation);
+    tf_expression_simulator_destroy(simulator);
+    tf_timeline_destroy(timeline);
+    tf_face_model_destroy(face);
+    if (failures == 0) printf("c_api_web_page_test: all checks passed\n");
+    return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

@@ -1,0 +1,160 @@
+"""`talkface align AUDIO TRANSCRIPT`: the --json contract of SPEC "Contracts" on every test clip,
+onsets against the clips' truth (and against a naive baseline), --plot, and failures that name
+what was wrong and leave no file behind."""
+import json
+import os
+import pathlib
+import subprocess
+import xml.etree.ElementTree as ET
+
+import pytest
+
+CLI = os.environ["TALKFACE_CLI"]
+SOURCE_DIR = pathlib.Path(os.environ.get("TALKFACE_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
+CLIPS_DIR = SOURCE_DIR / "tests" / "data" / "speech"
+CLIPS = {"one_sentence": "wav", "two_sentences": "wav", "comma_pause": "flac", "stereo_44k": "ogg"}
+SVG_NS = "{http://www.w3.org/2000/svg}"
+
+# SPEC "Contracts"; `talkface align --help` documents the extra keys a syllable may carry.
+CONTRACT_SYLLABLE_KEYS = ["text", "pinyin", "start", "end", "sentence"]
+DOCUMENTED_EXTRA_SYLLABLE_KEYS = {"final_start", "confidence"}
+ONSET_TOLERANCE_S = 0.100
+ONSET_FLOOR = 0.80
+
+
+def run(*args):
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=120)
+
+
+def clip(name):
+    return CLIPS_DIR / f"{name}.{CLIPS[name]}", CLIPS_DIR / f"{name}.txt"
+
+
+def truth(name):
+    return json.loads((CLIPS_DIR / f"{name}.json").read_text(encoding="utf-8"))
+
+
+@pytest.fixture(scope="module")
+def aligned():
+    """Each clip's `align --json` document, aligned once for the module."""
+    documents = {}
+    for name in CLIPS:
+        audio, transcript = clip(name)
+        result = run("align", audio, transcript, "--json", "--quiet")
+        assert result.returncode == 0, result.stderr
+        documents[name] = json.loads(result.stdout)
+    return documents
+
+
+@pytest.mark.parametrize("name", list(CLIPS))
+def test_json_has_the_contract_keys_and_ordered_times_inside_the_audio(aligned, name):
+    document = aligned[name]
+    expected = truth(name)
+    assert list(document) == ["sentences", "syllables", "warnings"]
+    assert document["warnings"] == []
+    assert [s["text"] for s in document["sentences"]] == [s["text"] for s in expected["sentences"]]
+    assert [(s["text"], s["pinyin"], s["sentence"]) for s in document["syllables"]] == [
+        (s["text"], s["pinyin"], s["sentence"]) for s in expected["syllables"]]
+    for sentence in document["sentences"]:
+        assert list(sentence) == ["text", "start", "end"]
+        assert 0 <= sentence["start"] < sentence["end"] <= expected["duration"] + 0.001
+    previous_end = 0.0
+    for index, syllable in enumerate(document["syllables"]):
+        assert list(syllable)[:5] == CONTRACT_SYLLABLE_KEYS, index
+        assert set(list(syllable)[5:]) <= DOCUMENTED_EXTRA_SYLLABLE_KEYS, index
+        assert previous_end - 0.001 <= syllable["start"] < syllable["end"], index
+        assert syllable["end"] <= expected["duration"] + 0.001, index
+        sentence = document["sentences"][syllable["sentence"]]
+        assert sentence["start"] - 0.001 <= syllable["start"] and syllable["end"] <= sentence["end"] + 0.001, index
+        previous_end = syllable["end"]
+
+
+def evenly_spread_onsets(syllable_count, duration_s):
+    """The naive baseline: the syllables spread evenly over the whole audio, no listening at all."""
+    return [duration_s * k / syllable_count for k in range(syllable_count)]
+
+
+def share_within_tolerance(onsets, true_onsets):
+    hits = sum(1 for onset, true_onset in zip(onsets, true_onsets) if abs(onset - true_onset) <= ONSET_TOLERANCE_S)
+    return hits / len(true_onsets)
+
+
+def test_onsets_are_near_the_truth_and_beat_an_even_spread(aligned):
+    found, baseline, true_onsets = [], [], []
+    for name, document in aligned.items():
+        found += [s["start"] for s in document["syllables"]]
+        baseline += evenly_spread_onsets(len(document["syllables"]), truth(name)["duration"])
+        true_onsets += [s["start"] for s in truth(name)["syllables"]]
+    share = share_within_tolerance(found, true_onsets)
+    baseline_share = share_within_tolerance(baseline, true_onsets)
+    assert baseline_share < ONSET_FLOOR, "the floor no longer tells the aligner from the naive baseline"
+    assert share >= ONSET_FLOOR, f"{share:.0%} of {len(true_onsets)} onsets within 100 ms"
+    assert share > baseline_share
+
+
+def test_output_file_equals_stdout_and_plot_is_an_svg(tmp_path, aligned):
+    audio, transcript = clip("two_sentences")
+    out, plot = tmp_path / "aligned.json", tmp_path / "aligned.svg"
+    result = run("align", audio, transcript, "--json", "--quiet", "-o", out, "--plot", plot)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout == ""
+    assert json.loads(out.read_text(encoding="utf-8")) == aligned["two_sentences"]
+    root = ET.parse(plot).getroot()
+    assert root.tag == SVG_NS + "svg"
+    assert len(list(root.iter())) > 10
+
+
+def test_table_form_lists_every_sentence():
+    audio, transcript = clip("two_sentences")
+    result = run("align", audio, transcript, "--quiet")
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert [line.split()[:2] for line in lines if line.startswith("sentence")] == [["sentence", "1"],
+                                                                                 ["sentence", "2"]]
+
+
+def assert_nothing_written(tmp_path, *inputs):
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(p.name for p in inputs)
+
+
+def test_missing_audio_names_it_and_writes_nothing(tmp_path):
+    _, transcript = clip("one_sentence")
+    missing = tmp_path / "no_such_speech.wav"
+    result = run("align", missing, transcript, "--json", "-o", tmp_path / "out.json", "--plot", tmp_path / "p.svg")
+    assert result.returncode in (1, 2)  # 2 when the ExistingFile validator catches it first
+    assert str(missing) in result.stderr
+    assert result.stdout == ""
+    assert_nothing_written(tmp_path)
+
+
+def test_unreadable_audio_exits_1_naming_it(tmp_path):
+    _, transcript = clip("one_sentence")
+    not_audio = tmp_path / "notes.wav"
+    not_audio.write_text("not a sound file\n")
+    result = run("align", not_audio, transcript, "--json", "-o", tmp_path / "out.json")
+    assert result.returncode == 1
+    assert result.stderr.startswith(f"talkface: error: {not_audio}")
+    assert_nothing_written(tmp_path, not_audio)
+
+
+@pytest.mark.parametrize("clip_name,text,named", [
+    ("one_sentence", "我很好。", '"我很好。"'),                           # the wrong text: the sentence is named
+    ("two_sentences", "今天下午有雨。我们明天再去吧。他们都很好。", "sentence"),  # an extra sentence
+])
+def test_mismatched_transcript_exits_1_naming_the_sentence_and_writes_nothing(tmp_path, clip_name, text, named):
+    audio, _ = clip(clip_name)
+    transcript = tmp_path / "wrong.txt"
+    transcript.write_text(text, encoding="utf-8")
+    result = run("align", audio, transcript, "--json", "-o", tmp_path / "out.json", "--plot", tmp_path / "p.svg")
+    assert result.returncode == 1
+    assert result.stderr.startswith(f"talkface: error: {audio}: ")
+    assert named in result.stderr
+    assert result.stdout == ""
+    assert_nothing_written(tmp_path, transcript)
+
+
+def test_option_out_of_range_is_a_usage_error():
+    audio, transcript = clip("one_sentence")
+    result = run("align", audio, transcript, "--c1", "0.2")
+    assert result.returncode == 2
+    assert "--c1" in result.stderr

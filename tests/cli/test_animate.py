@@ -1,0 +1,75 @@
+"""`talkface animate` and `talkface demo`: pages and bare animations from a speech, the audio
+embedded or linked, usage errors, and failures that leave no file behind."""
+import os
+import pathlib
+import subprocess
+import xml.dom.minidom
+
+CLI = os.environ["TALKFACE_CLI"]
+SPEECH = pathlib.Path(os.environ["TALKFACE_SOURCE_DIR"]) / "samples" / "speech"
+
+
+def run(*args):
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=120)
+
+
+def test_demo_makes_a_self_contained_page(tmp_path):
+    page = tmp_path / "demo.html"
+    result = run("demo", "-o", page)
+    assert result.returncode == 0, result.stderr
+    html = page.read_text(encoding="utf-8")
+    assert html.startswith("<!DOCTYPE html>")
+    assert "data:audio/ogg;base64," in html
+    assert "<animate " in html
+    assert "大家好" in html
+    assert result.stderr == ""  # no bar when stderr is not a terminal
+
+
+def test_demo_links_its_audio_beside_the_page(tmp_path):
+    page = tmp_path / "linked.html"
+    assert run("demo", "--link-audio", "-o", page).returncode == 0
+    assert 'src="linked.ogg"' in page.read_text(encoding="utf-8")
+    assert (tmp_path / "linked.ogg").read_bytes() == (SPEECH / "demo.ogg").read_bytes()
+
+
+def test_animate_writes_the_bare_animation_as_svg(tmp_path):
+    svg = tmp_path / "talk.svg"
+    result = run("animate", SPEECH / "demo.ogg", SPEECH / "demo.txt", "--encoding", "frames", "-o", svg)
+    assert result.returncode == 0, result.stderr
+    root = xml.dom.minidom.parse(str(svg)).documentElement
+    assert root.getAttribute("class") == "tf-animation"
+    assert "<set " in svg.read_text()
+
+
+def test_animate_links_the_audio_by_a_relative_path(tmp_path):
+    page = tmp_path / "sub" / "page.html"
+    page.parent.mkdir()
+    assert run("animate", SPEECH / "demo.ogg", SPEECH / "demo.txt", "--link-audio", "-o", page).returncode == 0
+    html = page.read_text(encoding="utf-8")
+    src = html.split('<audio id="tf-audio" controls preload="auto" src="')[1].split('"')[0]
+    assert (page.parent / src).resolve() == (SPEECH / "demo.ogg").resolve()
+
+
+def test_an_svg_output_refuses_page_options(tmp_path):
+    result = run("demo", "--app", "audiobook", "-o", tmp_path / "x.svg")
+    assert result.returncode == 2
+    assert "--app" in result.stderr
+
+
+def test_a_script_link_fails_and_keeps_the_old_page(tmp_path):
+    page = tmp_path / "book.html"
+    page.write_text("old")
+    result = run("demo", "--app", "audiobook", "--link", "x=javascript:alert(1)", "-o", page)
+    assert result.returncode == 1
+    assert "links[0].url" in result.stderr
+    assert page.read_text() == "old"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["book.html"]
+
+
+def test_a_bad_background_image_is_named(tmp_path):
+    image = tmp_path / "back.txt"
+    image.write_text("not an image")
+    result = run("demo", "--app", "announcer", "--background", image, "-o", tmp_path / "news.html")
+    assert result.returncode == 1
+    assert "background_image_path" in result.stderr
+    assert not (tmp_path / "news.html").exists()

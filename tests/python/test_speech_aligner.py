@@ -1,0 +1,214 @@
+"""The speech aligner in Python: SpeechAligner.align_file and .align on the test clips, AlignOptions and
+their checks, progress and cancellation, the callback's own exceptions, numpy shapes, and two
+alignments at once on two threads (the GIL is released while aligning)."""
+import pathlib
+import subprocess
+import sys
+import threading
+import wave
+
+import numpy
+import pytest
+
+import talkface
+
+CLIPS_DIR = pathlib.Path(__file__).parents[2] / "tests" / "data" / "speech"
+CLIP = CLIPS_DIR / "one_sentence.wav"  # 3.09 s, 16 kHz mono 16-bit: 小朋友們在公園裡放風箏。
+DURATION_S = 3.09052
+
+
+def clip_transcript(name="one_sentence"):
+    return talkface.load_transcript(CLIPS_DIR / f"{name}.txt")
+
+
+def read_wav(path):
+    """(samples as float32 in -1..1, shape (frames,) or (frames, channels), rate) of a 16-bit PCM WAV,
+    scaled as libsndfile scales it (x / 32768)."""
+    with wave.open(str(path), "rb") as file:
+        assert file.getsampwidth() == 2
+        frames = numpy.frombuffer(file.readframes(file.getnframes()), dtype="<i2")
+        channels, rate_hz = file.getnchannels(), file.getframerate()
+    samples = frames.astype(numpy.float32) / numpy.float32(32768)
+    return (samples if channels == 1 else samples.reshape(-1, channels)), rate_hz
+
+
+def times(timeline):
+    return [(s.start_s, s.end_s, s.final_start_s, s.confidence) for s in timeline.syllables]
+
+
+@pytest.fixture(scope="module")
+def from_file():
+    return talkface.SpeechAligner().align_file(CLIP, clip_transcript())
+
+
+def test_align_file_gives_ordered_times_inside_the_audio(from_file):
+    transcript = clip_transcript()
+    assert [s.text for s in from_file.sentences] == [s.text for s in transcript.sentences]
+    assert [(s.text, s.pinyin, s.sentence) for s in from_file.syllables] == [
+        (s.text, s.pinyin, s.sentence) for s in transcript.syllables]
+    assert len(from_file.syllables) == 11
+    assert from_file.duration_s == pytest.approx(DURATION_S, abs=0.01)
+    previous_end = 0.0
+    for syllable in from_file.syllables:
+        assert previous_end <= syllable.start_s < syllable.end_s <= from_file.duration_s
+        assert syllable.final_start_s is None or syllable.start_s <= syllable.final_start_s <= syllable.end_s
+        assert 0.0 <= syllable.confidence <= 1.0
+        previous_end = syllable.end_s
+    sentence = from_file.sentences[0]
+    assert (sentence.start_s, sentence.end_s) == (from_file.syllables[0].start_s, from_file.syllables[-1].end_s)
+
+
+def test_align_on_samples_gives_the_file_timeline(from_file):
+    samples, rate_hz = read_wav(CLIP)
+    aligner = talkface.SpeechAligner()
+    assert times(aligner.align(samples, rate_hz, clip_transcript())) == times(from_file)
+    # A float64 array is converted; two equal channels mix down to the same mono samples.
+    assert times(aligner.align(samples.astype(numpy.float64), rate_hz, clip_transcript())) == times(from_file)
+    stereo = numpy.ascontiguousarray(numpy.stack([samples, samples], axis=1))
+    assert times(aligner.align(stereo, rate_hz, clip_transcript())) == times(from_file)
+
+
+def test_two_threads_align_at_once_and_agree(from_file):
+    aligner = talkface.SpeechAligner()
+    transcript = clip_transcript()
+    samples, rate_hz = read_wav(CLIP)
+    results = [None, None]
+    start = threading.Barrier(2)
+
+    def align(slot, call):
+        start.wait()
+        results[slot] = call()
+
+    threads = [
+        threading.Thread(target=align, args=(0, lambda: aligner.align_file(CLIP, transcript))),
+        threading.Thread(target=align, args=(1, lambda: aligner.align(samples, rate_hz, transcript,
+                                                                        progress=lambda f, s: True))),
+    ]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join(timeout=300)
+    assert times(results[0]) == times(from_file)
+    assert times(results[1]) == times(from_file)
+
+
+def test_progress_rises_through_the_stages():
+    reports = []
+    talkface.SpeechAligner().align_file(CLIP, clip_transcript(), progress=lambda f, s: reports.append((f, s)))
+    fractions = [fraction for fraction, _ in reports]
+    assert len(reports) >= 5
+    assert fractions == sorted(fractions)
+    assert fractions[0] == 0.0 and fractions[-1] == 1.0
+    assert reports[0][1] == "reading" and reports[-1][1] == "syllables"
+    assert {stage for _, stage in reports} <= {"reading", "sentences", "syllables"}
+
+
+def test_returning_false_cancels():
+    calls = []
+
+    def progress(fraction, stage):
+        calls.append(fraction)
+        return fraction < 0.5
+
+    with pytest.raises(talkface.Cancelled, match="cancelled") as caught:
+        talkface.SpeechAligner().align_file(CLIP, clip_transcript(), progress=progress)
+    assert caught.value.code == talkface.ErrorCode.cancelled
+    assert calls[-1] >= 0.5 and all(fraction < 0.5 for fraction in calls[:-1])
+
+
+def test_an_exception_in_progress_propagates_as_it_is():
+    class Stop(Exception):
+        pass
+
+    def progress(fraction, stage):
+        if stage == "sentences":
+            raise Stop(f"stopped at {fraction:.2f}")
+        return True
+
+    with pytest.raises(Stop, match="stopped at"):
+        talkface.SpeechAligner().align_file(CLIP, clip_transcript(), progress=progress)
+
+    def interrupt(fraction, stage):
+        raise KeyboardInterrupt
+
+    samples, rate_hz = read_wav(CLIP)
+    with pytest.raises(KeyboardInterrupt):
+        talkface.SpeechAligner().align(samples, rate_hz, clip_transcript(), progress=interrupt)
+
+
+def test_without_a_callable_an_interrupt_still_stops_the_alignment():
+    # In a child process: a KeyboardInterrupt that came too late would otherwise hit pytest itself.
+    script = f"""
+import _thread, threading, wave, numpy, talkface
+with wave.open({str(CLIP)!r}, "rb") as file:
+    frames = numpy.frombuffer(file.readframes(file.getnframes()), dtype="<i2")
+twenty_minutes = numpy.tile(frames.astype(numpy.float32) / 32768, 400)  # over a second of reading
+threading.Timer(0.2, _thread.interrupt_main).start()
+try:
+    talkface.SpeechAligner().align(twenty_minutes, 16000, talkface.load_transcript({str(CLIPS_DIR / "one_sentence.txt")!r}))
+except KeyboardInterrupt:
+    print("KeyboardInterrupt")
+"""
+    result = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
+    assert result.stdout == "KeyboardInterrupt\n", result.stderr
+
+
+def test_options_are_checked_and_reach_the_aligner():
+    options = talkface.AlignOptions(c1=0.3)
+    with pytest.raises(talkface.InvalidArgument, match="c1") as caught:
+        talkface.SpeechAligner(options)
+    assert caught.value.parameter == "c1"
+    with pytest.raises(talkface.InvalidArgument, match="c2"):
+        talkface.SpeechAligner(talkface.AlignOptions(c2=2.0))
+    with pytest.raises(talkface.InvalidArgument, match="first_pause"):
+        talkface.SpeechAligner(talkface.AlignOptions(sentence_cut=talkface.SentenceCutMode.first_pause))
+
+    # two_sentences: 今天下午有雨。我们明天再去吧。 with the pause between them at 1.69-2.59 s.
+    options = talkface.AlignOptions(talkface.SentenceCutMode.first_pause, 1.8, 2.4)
+    aligner = talkface.SpeechAligner(options)
+    assert aligner.options.sentence_cut == talkface.SentenceCutMode.first_pause
+    assert aligner.options.first_pause_end_s == 2.4
+    timeline = aligner.align_file(CLIPS_DIR / "two_sentences.wav", clip_transcript("two_sentences"))
+    assert len(timeline.sentences) == 2
+    assert 2.4 < timeline.sentences[1].start_s < 2.7
+    inside_a_sentence = talkface.SpeechAligner(talkface.AlignOptions(talkface.SentenceCutMode.first_pause, 0.9, 0.92))
+    with pytest.raises(talkface.AlignmentError):
+        inside_a_sentence.align_file(CLIPS_DIR / "two_sentences.wav", clip_transcript("two_sentences"))
+
+
+def test_mismatched_transcript_is_an_alignment_error_naming_where():
+    aligner = talkface.SpeechAligner()
+    extra = talkface.read_transcript("小朋友們在公園裡放風箏。今天下午有雨。")
+    with pytest.raises(talkface.AlignmentError, match="one_sentence.wav: .*sentence") as caught:
+        aligner.align_file(CLIP, extra)
+    assert caught.value.code == talkface.ErrorCode.alignment
+    with pytest.raises(talkface.AlignmentError, match='"我很好。"'):
+        aligner.align_file(CLIP, talkface.read_transcript("我很好。"))
+
+
+def test_bad_audio_and_transcript_are_named(tmp_path):
+    aligner = talkface.SpeechAligner()
+    missing = tmp_path / "no_such_speech.wav"
+    with pytest.raises(talkface.FileError, match="no_such_speech.wav") as caught:
+        aligner.align_file(missing, clip_transcript())
+    assert isinstance(caught.value, OSError) and caught.value.filename == str(missing)
+    with pytest.raises(talkface.InvalidArgument, match="transcript"):
+        aligner.align_file(CLIP, talkface.read_transcript("ABC."))
+
+
+def test_numpy_shapes_are_checked_and_named():
+    aligner = talkface.SpeechAligner()
+    transcript = clip_transcript()
+    samples, rate_hz = read_wav(CLIP)
+    with pytest.raises(talkface.InvalidArgument, match=r"samples: expected shape \(frames,\) or \(frames, channels\), "
+                                                       r"got \(2, 3, 4\)") as caught:
+        aligner.align(numpy.zeros((2, 3, 4), dtype=numpy.float32), rate_hz, transcript)
+    assert caught.value.parameter == "samples"
+    with pytest.raises(talkface.InvalidArgument, match=r"got \(2, \d+\).*samples\.T"):
+        aligner.align(numpy.stack([samples, samples]), rate_hz, transcript)
+    with pytest.raises(talkface.InvalidArgument, match=r"samples: empty"):
+        aligner.align(numpy.zeros(0, dtype=numpy.float32), rate_hz, transcript)
+    with pytest.raises(talkface.InvalidArgument, match="sample_rate_hz"):
+        aligner.align(samples, 100, transcript)
+    with pytest.raises(TypeError):
+        aligner.align("not samples", rate_hz, transcript)

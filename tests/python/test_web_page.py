@@ -1,0 +1,80 @@
+import pathlib
+import xml.dom.minidom
+
+import pytest
+
+import talkface
+
+SPEECH = pathlib.Path(__file__).resolve().parents[2] / "samples" / "speech" / "demo.ogg"
+HOSTILE = "</script><img src=x onerror=alert(1)>\"'&"
+
+
+@pytest.fixture
+def timeline():
+    timeline = talkface.read_transcript("媽媽好。")
+    for k, syllable in enumerate(timeline.syllables):
+        syllable.start_s = 0.5 + 0.25 * k
+        syllable.end_s = syllable.start_s + 0.25
+    timeline.syllables = list(timeline.syllables)
+    sentence = timeline.sentences[0]
+    sentence.text = HOSTILE
+    sentence.start_s, sentence.end_s = 0.5, 1.25
+    timeline.sentences = [sentence]
+    timeline.duration_s = 2.0
+    return timeline
+
+
+@pytest.fixture
+def animation(face, timeline):
+    return talkface.animate(face, timeline, talkface.ExpressionSimulator(timeline, 3))
+
+
+@pytest.mark.parametrize("encoding, marker", [(talkface.AnimationEncoding.keyframes, "<animate "),
+                                              (talkface.AnimationEncoding.frames, "<set ")])
+def test_render_animation_svg_writes_each_encoding(face, animation, encoding, marker):
+    svg = talkface.SvgAnimator(face).render_animation_svg(animation, talkface.SvgAnimationOptions(encoding=encoding))
+    root = xml.dom.minidom.parseString(svg).documentElement
+    assert root.getAttribute("class") == "tf-animation"
+    assert marker in svg
+
+
+def test_write_animation_svg_writes_the_file(face, animation, tmp_path):
+    path = tmp_path / "talk.svg"
+    talkface.SvgAnimator(face).write_animation_svg(path, animation)
+    assert path.read_text().startswith("<?xml")
+
+
+def test_audiobook_page_escapes_every_caller_text(face, animation, timeline):
+    options = talkface.WebPageOptions(app=talkface.WebPageApp.audiobook, title=HOSTILE,
+                                      links=[talkface.WebLink(HOSTILE, "https://example.org/?a=1&b=2")])
+    html = talkface.build_web_page(talkface.SvgAnimator(face), animation, timeline, SPEECH, options)
+    assert html.startswith("<!DOCTYPE html>")
+    assert "<img" not in html
+    assert html.count("</script>") == 1
+    assert talkface.escape_html(HOSTILE) in html
+    assert "data:audio/ogg;base64," in html
+
+
+def test_announcer_page_links_the_audio_when_asked(face, animation, timeline):
+    options = talkface.WebPageOptions(app=talkface.WebPageApp.announcer, link_audio=True, audio_url="my speech.ogg",
+                                      face_origin_px=(600.0, 330.0), face_d_px=60.0, stage_colour="#203040")
+    html = talkface.build_web_page(talkface.SvgAnimator(face), animation, timeline, SPEECH, options)
+    assert 'src="my%20speech.ogg"' in html
+    assert 'fill="#203040"' in html
+
+
+def test_a_script_link_is_refused_and_no_page_is_left(face, animation, timeline, tmp_path):
+    page = tmp_path / "page.html"
+    options = talkface.WebPageOptions(links=[talkface.WebLink("run", "JavaScript:alert(1)")])
+    with pytest.raises(talkface.InvalidArgument, match=r"links\[0\]\.url"):
+        talkface.write_web_page(page, talkface.SvgAnimator(face), animation, timeline, SPEECH, options)
+    assert not page.exists()
+
+
+def test_a_missing_audio_file_is_named(face, animation, timeline, tmp_path):
+    with pytest.raises(talkface.FileError, match="nowhere.ogg"):
+        talkface.build_web_page(talkface.SvgAnimator(face), animation, timeline, tmp_path / "nowhere.ogg")
+
+
+def test_escape_html_replaces_the_five_characters():
+    assert talkface.escape_html("<a href=\"x\">'&'</a>") == "&lt;a href=&quot;x&quot;&gt;&#39;&amp;&#39;&lt;/a&gt;"

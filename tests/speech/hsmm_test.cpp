@@ -1,0 +1,88 @@
+#include <doctest/doctest.h>
+
+#include <vector>
+
+#include "speech/hsmm.hpp"
+
+using namespace talkface::detail;
+
+namespace {
+
+PhoneState chain_state(PhoneClass phone_class, StateRole role, std::size_t syllable, double median_frames,
+                       std::size_t max_frames, bool is_optional) {
+    PhoneState state;
+    state.phone_class = phone_class;
+    state.role = role;
+    state.syllable = syllable;
+    state.median_frames = median_frames;
+    state.log_sigma = 0.4;
+    state.max_frames = max_frames;
+    state.is_optional = is_optional;
+    return state;
+}
+
+// A sentence of `syllables` sibilant + vowel syllables between edge silences, and emissions that
+// favour each planted segment's class by 5 per frame: the search must find exactly the plant.
+struct PlantedSentence {
+    std::vector<PhoneState> states;
+    std::vector<StateSegment> truth;
+    EmissionScores emissions;
+};
+
+PlantedSentence plant(std::size_t syllables) {
+    PlantedSentence sentence;
+    std::size_t frame = 0;
+    auto add = [&](const PhoneState& state, std::size_t frames) {
+        sentence.truth.push_back({sentence.states.size(), frame, frame + frames});
+        sentence.states.push_back(state);
+        for (std::size_t t = 0; t < frames; ++t, ++frame)
+            for (int c = 0; c < kPhoneClassCount; ++c) sentence.emissions.values.push_back(c == state.phone_class ? 0.0f : -5.0f);
+    };
+    add(chain_state(kSilence, StateRole::edge_silence, 0, 1.0, 110, true), 20);
+    for (std::size_t s = 0; s < syllables; ++s) {
+        add(chain_state(kSibilant, StateRole::initial, s, 4.0, 12, false), 3 + s % 3);
+        add(chain_state(kVowelA, StateRole::final, s, 8.0, 30, false), 6 + 2 * (s % 4));
+    }
+    add(chain_state(kSilence, StateRole::edge_silence, syllables - 1, 1.0, 110, true), 20);
+    sentence.emissions.frame_count = frame;
+    return sentence;
+}
+
+void check_same_path(const std::vector<StateSegment>& path, const std::vector<StateSegment>& truth) {
+    REQUIRE(path.size() == truth.size());
+    for (std::size_t i = 0; i < truth.size(); ++i) {
+        CAPTURE(i);
+        CHECK(path[i].state == truth[i].state);
+        CHECK(path[i].first_frame == truth[i].first_frame);
+        CHECK(path[i].end_frame == truth[i].end_frame);
+    }
+}
+
+}  // namespace
+
+TEST_SUITE("HSMM search") {
+    TEST_CASE("a sentence finds the planted durations of its states") {
+        const PlantedSentence sentence = plant(20);
+        ViterbiWorkspace workspace;
+        check_same_path(viterbi_align(sentence.states, sentence.emissions, workspace), sentence.truth);
+    }
+
+    TEST_CASE("a sentence of hundreds of syllables is searched in windows of bounded memory") {
+        // 600 syllables with no punctuation: 1202 states over 7840 frames, more cells than one
+        // search may hold.
+        const PlantedSentence sentence = plant(600);
+        REQUIRE(sentence.states.size() * (sentence.emissions.frame_count + 1) > kMaxSearchCells);
+        ViterbiWorkspace workspace;
+        check_same_path(viterbi_align(sentence.states, sentence.emissions, workspace), sentence.truth);
+        CHECK(workspace.entry.size() <= kMaxSearchCells);
+        CHECK(workspace.finish.size() <= kMaxSearchCells);
+    }
+
+    TEST_CASE("a chain longer than its frames has no path") {
+        PlantedSentence sentence = plant(10);
+        sentence.emissions.frame_count = 15;
+        sentence.emissions.values.resize(15 * kPhoneClassCount);
+        ViterbiWorkspace workspace;
+        CHECK(viterbi_align(sentence.states, sentence.emissions, workspace).empty());
+    }
+}
