@@ -7,25 +7,7 @@
 
 #include "talkface/talkface.h"
 
-/* Counts into the enclosing function's `failures`; prints where and this thread's last error. */
-#define CHECK(condition)                                                                            \
-    do {                                                                                            \
-        if (!(condition)) {                                                                         \
-            ++failures;                                                                             \
-            fprintf(stderr, "%s:%d: CHECK(%s) failed; tf_last_error_message: \"%s\"\n", __FILE__,   \
-                    __LINE__, #condition, tf_last_error_message());                                 \
-        }                                                                                           \
-    } while (0)
-
-#define CHECK_OK(call) CHECK((call) == TF_OK)
-
-/* status == expected and the message contains `needle`. */
-#define CHECK_FAILS_WITH(call, expected, needle)                                                    \
-    do {                                                                                            \
-        tf_status status_ = (call);                                                                 \
-        CHECK(status_ == (expected));                                                               \
-        CHECK(strstr(tf_last_error_message(), (needle)) != NULL);                                   \
-    } while (0)
+#include "c_check.h"
 
 /* "媽媽好，你好。" spoken from 0.5 s: ma1 ma1 hao3 (pause) ni3 hao3, 3 s of audio. */
 static tf_timeline *new_spoken_timeline(void) {

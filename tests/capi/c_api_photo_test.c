@@ -6,23 +6,7 @@
 
 #include "talkface/talkface.h"
 
-#define CHECK(condition)                                                                            \
-    do {                                                                                            \
-        if (!(condition)) {                                                                         \
-            ++failures;                                                                             \
-            fprintf(stderr, "%s:%d: CHECK(%s) failed; tf_last_error_message: \"%s\"\n", __FILE__,   \
-                    __LINE__, #condition, tf_last_error_message());                                 \
-        }                                                                                           \
-    } while (0)
-
-#define CHECK_OK(call) CHECK((call) == TF_OK)
-
-#define CHECK_FAILS_WITH(call, expected, needle)                                                    \
-    do {                                                                                            \
-        tf_status status_ = (call);                                                                 \
-        CHECK(status_ == (expected));                                                               \
-        CHECK(strstr(tf_last_error_message(), (needle)) != NULL);                                   \
-    } while (0)
+#include "c_check.h"
 
 static const char *const kAstronaut = "/usr/lib/python3/dist-packages/skimage/data/astronaut.png";
 
