@@ -3,7 +3,12 @@
 // the truth and how fast it ran, beside the naive baseline and the targets of issue #4.
 //
 //   align_bench CORPUS [--conditions clean,white10,...]
-//   align_bench --file AUDIO TRANSCRIPT      (one file, for memory_bench.sh)
+//   align_bench --file AUDIO TRANSCRIPT [--truth LIST]   (one file, for memory_bench.sh)
+//   align_bench --mismatch CORPUS [--conditions ...]      (wrong transcripts: detected, and false alarms)
+//
+// LIST names the truths of the passages joined into AUDIO, one "OFFSET_S<TAB>TRUTH.json" a line:
+// the onsets are then scored against them (the transcript may have lost its punctuation, so only
+// the syllables, in order, are compared).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +24,7 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+#include <sndfile.h>
 #include <talkface/talkface.hpp>
 
 namespace fs = std::filesystem;
@@ -189,28 +195,39 @@ std::vector<std::string> corpus_conditions(const fs::path& corpus, const std::st
     return names;
 }
 
+// The truths of one condition's passages, in order.
+std::vector<fs::path> truth_files(const fs::path& directory) {
+    std::vector<fs::path> truths;
+    for (const auto& entry : fs::directory_iterator(directory))
+        if (entry.path().extension() == ".json") truths.push_back(entry.path());
+    std::sort(truths.begin(), truths.end());
+    return truths;
+}
+
+fs::path transcript_beside(const fs::path& truth_path) {
+    fs::path transcript_path = truth_path;
+    return transcript_path.replace_extension(".txt");
+}
+
+fs::path audio_beside(const fs::path& truth_path) {
+    for (const char* extension : {".wav", ".ogg", ".flac"}) {
+        fs::path candidate = truth_path;
+        candidate.replace_extension(extension);
+        if (fs::exists(candidate)) return candidate;
+    }
+    throw std::runtime_error(truth_path.string() + ": no audio beside it");
+}
+
 int run_corpus(const fs::path& corpus, const std::string& only) {
     const auto conditions = corpus_conditions(corpus, only);
     const talkface::SpeechAligner aligner;
     // scores[set][condition] for the aligner and the baseline.
     std::map<std::string, std::map<std::string, Score>> aligner_scores, baseline_scores;
     for (const auto& condition : conditions) {
-        std::vector<fs::path> truths;
-        for (const auto& entry : fs::directory_iterator(corpus / condition))
-            if (entry.path().extension() == ".json") truths.push_back(entry.path());
-        std::sort(truths.begin(), truths.end());
-        for (const auto& truth_path : truths) {
+        for (const auto& truth_path : truth_files(corpus / condition)) {
             const Truth truth = load_truth(truth_path);
-            fs::path audio_path;
-            for (const char* extension : {".wav", ".ogg", ".flac"}) {
-                fs::path candidate = truth_path;
-                candidate.replace_extension(extension);
-                if (fs::exists(candidate)) audio_path = candidate;
-            }
-            if (audio_path.empty()) throw std::runtime_error(truth_path.string() + ": no audio beside it");
-            fs::path transcript_path = truth_path;
-            transcript_path.replace_extension(".txt");
-            const auto transcript = talkface::load_transcript(transcript_path.string());
+            const fs::path audio_path = audio_beside(truth_path);
+            const auto transcript = talkface::load_transcript(transcript_beside(truth_path).string());
 
             Score& mine = aligner_scores[truth.set][condition];
             ++mine.passages;
@@ -275,7 +292,24 @@ int run_corpus(const fs::path& corpus, const std::string& only) {
     return 0;
 }
 
-int run_file(const std::string& audio_path, const std::string& transcript_path) {
+// The syllables of joined passages, each truth moved to where its passage starts in the audio.
+std::vector<talkface::Syllable> joined_truth(const std::string& list_path) {
+    std::istringstream lines(read_text(list_path));
+    std::vector<talkface::Syllable> syllables;
+    for (std::string line; std::getline(lines, line);) {
+        const auto tab = line.find('\t');
+        if (tab == std::string::npos) throw std::runtime_error(list_path + ": expected OFFSET_S<TAB>TRUTH.json, found " + line);
+        const double offset_s = std::stod(line.substr(0, tab));
+        for (auto syllable : load_truth(line.substr(tab + 1)).timeline.syllables) {
+            syllable.start_s += offset_s;
+            syllable.end_s += offset_s;
+            syllables.push_back(syllable);
+        }
+    }
+    return syllables;
+}
+
+int run_file(const std::string& audio_path, const std::string& transcript_path, const std::string& truth_list) {
     const auto transcript = talkface::load_transcript(transcript_path);
     const talkface::SpeechAligner aligner;
     const std::clock_t begin = std::clock();
@@ -284,13 +318,188 @@ int run_file(const std::string& audio_path, const std::string& transcript_path) 
     std::printf("%s: %.1f s of audio, %zu sentences, %zu syllables aligned in %.2f s of CPU = %.0fx real time\n",
                 audio_path.c_str(), aligned.duration_s, aligned.sentences.size(), aligned.syllables.size(), cpu_s,
                 cpu_s > 0 ? aligned.duration_s / cpu_s : 0.0);
+    if (truth_list.empty()) return 0;
+    const auto truth = joined_truth(truth_list);
+    if (truth.size() != aligned.syllables.size())
+        throw std::runtime_error(truth_list + ": " + std::to_string(truth.size()) + " syllables, the transcript has " +
+                                 std::to_string(aligned.syllables.size()));
+    Score score;
+    for (std::size_t i = 0; i < truth.size(); ++i) {
+        if (truth[i].pinyin != aligned.syllables[i].pinyin)
+            throw std::runtime_error(truth_list + ": syllable " + std::to_string(i) + " is " + truth[i].pinyin +
+                                     ", the transcript's is " + aligned.syllables[i].pinyin);
+        score.errors_s.push_back(std::fabs(aligned.syllables[i].start_s - truth[i].start_s));
+    }
+    std::printf("onsets: median %s ms, %s%% within 50 ms, %s%% within 100 ms\n", format_fixed(score.median_ms(), 1).c_str(),
+                format_fixed(score.within_percent(0.050), 1).c_str(), format_fixed(score.within_percent(0.100), 1).c_str());
+    return 0;
+}
+
+// --mismatch: how often a wrong transcript is reported (AlignmentError) and how often a right one
+// is refused, on clips of one and two sentences cut from each passage at the middle of the pauses
+// around them, and on whole passages. Wrong texts: another sentence of the passage of the nearest
+// syllable count in place of one, or two sentences swapped.
+struct Audio {
+    std::vector<float> samples;  ///< interleaved
+    int channels = 1;
+    int rate_hz = 0;
+};
+
+Audio read_audio(const fs::path& path) {
+    SF_INFO info{};
+    SNDFILE* file = sf_open(path.string().c_str(), SFM_READ, &info);
+    if (!file) throw std::runtime_error(path.string() + ": " + sf_strerror(nullptr));
+    Audio audio;
+    audio.channels = info.channels;
+    audio.rate_hz = info.samplerate;
+    audio.samples.resize(static_cast<std::size_t>(info.frames * info.channels));
+    sf_readf_float(file, audio.samples.data(), info.frames);
+    sf_close(file);
+    return audio;
+}
+
+struct MismatchCount {
+    int right = 0, refused = 0;    ///< right transcripts, and those the aligner threw on
+    int wrong = 0, detected = 0;   ///< wrong transcripts, and those it threw on
+    void add(const MismatchCount& other) {
+        right += other.right;
+        refused += other.refused;
+        wrong += other.wrong;
+        detected += other.detected;
+    }
+};
+
+bool throws_alignment_error(const talkface::SpeechAligner& aligner, const Audio& audio, std::size_t first_frame,
+                            std::size_t end_frame, const std::string& text, const std::string& where, bool is_right) {
+    const talkface::AudioView view{audio.samples.data() + first_frame * static_cast<std::size_t>(audio.channels),
+                                   end_frame - first_frame, audio.channels, audio.rate_hz};
+    try {
+        aligner.align(view, talkface::read_transcript(text));
+        return false;
+    } catch (const talkface::AlignmentError& error) {
+        if (is_right) std::cerr << "align_bench: false alarm: " << where << ": " << error.what() << "\n";
+        return true;
+    }
+}
+
+int run_mismatch(const fs::path& corpus, const std::string& only) {
+    const auto conditions = corpus_conditions(corpus, only);
+    const talkface::SpeechAligner aligner;
+    const char* const groups[] = {"1 sentence", "2 sentences", "passage"};
+    // counts[set][condition][group]
+    std::map<std::string, std::map<std::string, std::map<std::string, MismatchCount>>> counts;
+    for (const auto& condition : conditions) {
+        for (const auto& truth_path : truth_files(corpus / condition)) {
+            const Truth truth = load_truth(truth_path);
+            const fs::path audio_path = audio_beside(truth_path);
+            const fs::path transcript_path = transcript_beside(truth_path);
+            const Audio audio = read_audio(audio_path);
+            std::vector<std::string> lines;
+            {
+                std::istringstream text(read_text(transcript_path));
+                for (std::string line; std::getline(text, line);)
+                    if (!line.empty()) lines.push_back(line);
+            }
+            const auto& sentences = truth.timeline.sentences;
+            const std::size_t n = sentences.size();
+            if (lines.size() != n) throw std::runtime_error(transcript_path.string() + ": not one sentence a line");
+            std::vector<std::size_t> syllable_counts(n, 0);
+            for (const auto& syllable : truth.timeline.syllables) ++syllable_counts[syllable.sentence];
+            const auto total_frames = audio.samples.size() / static_cast<std::size_t>(audio.channels);
+            auto frame_at = [&](double seconds) {
+                return std::min(total_frames, static_cast<std::size_t>(std::max(0.0, seconds) * audio.rate_hz));
+            };
+            // Clip k..last: from the middle of the pause before sentence k to the middle of the one after.
+            auto clip_first = [&](std::size_t k) { return frame_at(k == 0 ? 0.0 : 0.5 * (sentences[k - 1].end_s + sentences[k].start_s)); };
+            auto clip_end = [&](std::size_t k) {
+                return k + 1 == n ? total_frames : frame_at(0.5 * (sentences[k].end_s + sentences[k + 1].start_s));
+            };
+            // Another sentence of the passage, outside [first, last], of the nearest syllable count.
+            auto replacement = [&](std::size_t k, std::size_t first, std::size_t last) {
+                std::size_t best = n;
+                for (std::size_t j = 0; j < n; ++j) {
+                    if ((j >= first && j <= last) || lines[j] == lines[k]) continue;
+                    const auto difference = [&](std::size_t i) {
+                        return std::abs(static_cast<long>(syllable_counts[i]) - static_cast<long>(syllable_counts[k]));
+                    };
+                    if (best == n || difference(j) < difference(best)) best = j;
+                }
+                return best;
+            };
+            auto& by_group = counts[truth.set][condition];
+            const std::string name = audio_path.string();
+            auto run = [&](const char* group, std::size_t first, std::size_t end, const std::string& text, bool is_right,
+                           const std::string& what) {
+                MismatchCount& count = by_group[group];
+                const bool thrown = throws_alignment_error(aligner, audio, first, end, text, name + " " + what, is_right);
+                if (is_right) {
+                    ++count.right;
+                    count.refused += thrown;
+                } else {
+                    ++count.wrong;
+                    count.detected += thrown;
+                }
+            };
+            for (std::size_t k = 0; k < n; ++k) {
+                run("1 sentence", clip_first(k), clip_end(k), lines[k], true, "sentence " + std::to_string(k + 1));
+                const std::size_t other = replacement(k, k, k);
+                if (other < n)
+                    run("1 sentence", clip_first(k), clip_end(k), lines[other], false, "sentence " + std::to_string(k + 1));
+            }
+            for (std::size_t k = 0; k + 1 < n; ++k) {
+                const std::string what = "sentences " + std::to_string(k + 1) + "-" + std::to_string(k + 2);
+                run("2 sentences", clip_first(k), clip_end(k + 1), lines[k] + "\n" + lines[k + 1], true, what);
+                run("2 sentences", clip_first(k), clip_end(k + 1), lines[k + 1] + "\n" + lines[k], false, what);
+                const std::size_t other = replacement(k + 1, k, k + 1);
+                if (other < n) run("2 sentences", clip_first(k), clip_end(k + 1), lines[k] + "\n" + lines[other], false, what);
+            }
+            std::string whole, swapped, replaced;
+            const std::size_t middle = n / 2;
+            const std::size_t other = replacement(middle, middle, middle);
+            for (std::size_t k = 0; k < n; ++k) {
+                whole += lines[k] + "\n";
+                swapped += lines[k == 0 ? 1 : k == 1 ? 0 : k] + "\n";
+                replaced += lines[k == middle && other < n ? other : k] + "\n";
+            }
+            run("passage", 0, total_frames, whole, true, "passage");
+            if (n >= 2) run("passage", 0, total_frames, swapped, false, "passage");
+            if (other < n) run("passage", 0, total_frames, replaced, false, "passage");
+        }
+        std::cerr << "align_bench: " << condition << " done\n";
+    }
+
+    std::printf("wrong transcripts on %s: detected = the aligner threw AlignmentError on a wrong text (another\n"
+                "sentence of the passage, of the nearest syllable count, in place of one; or two sentences swapped);\n"
+                "false alarm = it threw on the right text. Clips are cut at the middle of the pauses around them.\n",
+                corpus.string().c_str());
+    for (const char* set : sets) {
+        if (counts.find(set) == counts.end()) continue;
+        std::printf("\n%s sentences\n%-10s %-12s %16s %16s\n", set, "condition", "clip", "detected", "false alarms");
+        std::map<std::string, MismatchCount> totals;
+        for (const auto& condition : conditions) {
+            for (const char* group : groups) {
+                const MismatchCount& count = counts[set][condition][group];
+                totals[group].add(count);
+                std::printf("%-10s %-12s %9d/%-6d %9d/%-6d\n", condition.c_str(), group, count.detected, count.wrong,
+                            count.refused, count.right);
+            }
+        }
+        for (const char* group : groups) {
+            const MismatchCount& count = totals[group];
+            std::printf("%-10s %-12s %9d/%-6d %9d/%-6d  (%s%% detected, %s%% false alarms)\n", "all", group, count.detected,
+                        count.wrong, count.refused, count.right,
+                        format_fixed(100.0 * count.detected / std::max(count.wrong, 1), 1).c_str(),
+                        format_fixed(100.0 * count.refused / std::max(count.right, 1), 1).c_str());
+        }
+    }
     return 0;
 }
 
 [[noreturn]] void usage(const std::string& problem) {
     std::cerr << "align_bench: " << problem << "\n"
               << "usage: align_bench CORPUS [--conditions A,B,...]\n"
-              << "       align_bench --file AUDIO TRANSCRIPT\n";
+              << "       align_bench --file AUDIO TRANSCRIPT [--truth LIST]\n"
+              << "       align_bench --mismatch CORPUS [--conditions A,B,...]\n";
     std::exit(2);
 }
 
@@ -300,12 +509,19 @@ int main(int argc, char** argv) {
     try {
         std::vector<std::string> positional;
         std::string only;
+        std::string truth_list;
         bool file_mode = false;
+        bool mismatch_mode = false;
         for (int i = 1; i < argc; ++i) {
             const std::string arg = argv[i];
             if (arg == "--conditions") {
                 if (i + 1 >= argc) usage("--conditions needs a value");
                 only = argv[++i];
+            } else if (arg == "--truth") {
+                if (i + 1 >= argc) usage("--truth needs a value");
+                truth_list = argv[++i];
+            } else if (arg == "--mismatch") {
+                mismatch_mode = true;
             } else if (arg == "--file") {
                 file_mode = true;
             } else if (arg == "-h" || arg == "--help") {
@@ -318,10 +534,11 @@ int main(int argc, char** argv) {
         }
         if (file_mode) {
             if (positional.size() != 2) usage("--file takes AUDIO and TRANSCRIPT");
-            return run_file(positional[0], positional[1]);
+            return run_file(positional[0], positional[1], truth_list);
         }
+        if (!truth_list.empty()) usage("--truth goes with --file");
         if (positional.size() != 1) usage("give the corpus directory that make_corpus wrote");
-        return run_corpus(positional[0], only);
+        return mismatch_mode ? run_mismatch(positional[0], only) : run_corpus(positional[0], only);
     } catch (const std::exception& error) {
         std::cerr << "align_bench: " << error.what() << "\n";
         return 1;

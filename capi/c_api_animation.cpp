@@ -1,5 +1,6 @@
 // tf_expression_simulator, tf_lip_sync_options and tf_animation: the C face of
 // expression_simulator.hpp and animation.hpp.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,19 @@ const auto& item_at(const Items& items, size_t index, const char* what) {
                                            std::to_string(items.size()) + ", got " + std::to_string(index));
     }
     return items[index];
+}
+
+// The row of the onset table for syllables of `shape_count` shapes, which holds shape_count - 1
+// fractions.
+template <typename Table>
+auto* onset_row(Table& table, size_t shape_count) {
+    if (shape_count < 2 || shape_count > 4) {
+        throw InvalidArgument("shape_count",
+                              "expected 2, 3 or 4 (a syllable of one shape has no onsets to set), got " +
+                                  std::to_string(shape_count));
+    }
+    return shape_count == 2 ? table.two_shapes.data() : shape_count == 3 ? table.three_shapes.data()
+                                                                         : table.four_shapes.data();
 }
 
 const FaceState& frame_at(const tf_animation* animation, size_t index) {
@@ -187,6 +201,26 @@ tf_status tf_lip_sync_options_set_rest(tf_lip_sync_options* options, double rest
         require_non_null(options, "options");
         options->options.rest_min_pause_s = rest_min_pause_s;
         options->options.rest_transition_s = rest_transition_s;
+    });
+}
+
+tf_status tf_lip_sync_options_set_onsets(tf_lip_sync_options* options, size_t shape_count,
+                                         const double* fractions) {
+    return guard([&] {
+        require_non_null(options, "options");
+        require_non_null(fractions, "fractions");
+        double* row = onset_row(options->options.onsets, shape_count);
+        std::copy(fractions, fractions + (shape_count - 1), row);
+    });
+}
+
+tf_status tf_lip_sync_options_get_onsets(const tf_lip_sync_options* options, size_t shape_count,
+                                         double* out_fractions) {
+    return guard([&] {
+        require_non_null(options, "options");
+        require_non_null(out_fractions, "out_fractions");
+        const double* row = onset_row(options->options.onsets, shape_count);
+        std::copy(row, row + (shape_count - 1), out_fractions);
     });
 }
 

@@ -44,6 +44,10 @@ struct tf_timeline {
     talkface::Timeline timeline;
 };
 
+struct tf_expression_style {
+    talkface::ExpressionStyle style;
+};
+
 struct tf_expression_simulator {
     talkface::ExpressionSimulator simulator;
 };

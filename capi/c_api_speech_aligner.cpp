@@ -1,8 +1,10 @@
-// tf_align_options, tf_align_file and tf_align_samples: the C face of speech_aligner.hpp.
+// tf_align_options, tf_align_file, tf_align_samples and the alignment plot: the C face of
+// speech_aligner.hpp and alignment_plot.hpp.
 #include <string>
 
 #include "c_api_guard.hpp"
 #include "c_api_handles.hpp"
+#include "talkface/alignment_plot.hpp"
 
 using talkface::AlignOptions;
 using talkface::InvalidArgument;
@@ -122,6 +124,24 @@ tf_status tf_align_samples(const float* samples, size_t frame_count, int channel
         talkface::Timeline aligned =
             aligner_for(options).align(audio, transcript->timeline, progress_for(progress, user_data));
         *out = new tf_timeline{std::move(aligned)};
+    });
+}
+
+tf_status tf_alignment_plot_svg(const char* audio_path, const tf_timeline* timeline, char** out_svg, size_t* out_len) {
+    return guard([&] {
+        require_non_null(audio_path, "audio_path");
+        require_non_null(timeline, "timeline");
+        require_non_null(out_svg, "out_svg");
+        talkface::capi::give_document(talkface::alignment_plot_svg(audio_path, timeline->timeline), out_svg, out_len);
+    });
+}
+
+tf_status tf_write_alignment_plot_svg(const char* svg_path, const char* audio_path, const tf_timeline* timeline) {
+    return guard([&] {
+        require_non_null(svg_path, "svg_path");
+        require_non_null(audio_path, "audio_path");
+        require_non_null(timeline, "timeline");
+        talkface::write_alignment_plot_svg(svg_path, audio_path, timeline->timeline);
     });
 }
 

@@ -2,6 +2,9 @@
 // SPEC "Statistics"), reproducible from a seed on every platform.
 //
 //   talkface::ExpressionSimulator simulator(timeline, /*seed=*/42);          // style "normal"
+//   talkface::ExpressionStyle calm = talkface::ExpressionStyle::load("calm.json");  // or set fields
+//   calm.is_nod_simulated = false;
+//   talkface::ExpressionSimulator calm_simulator(timeline, 42, calm);
 //   simulator.set_user_events({{talkface::ExpressionEventKind::nod, 1.0, 1.4, 5.0}});
 //   talkface::Pose pose = simulator.pose_at(2.5);
 //   talkface::Expression expression = simulator.expression_at(2.5);
@@ -64,11 +67,32 @@ struct ExpressionEvent {
 struct UniformRange {
     double min = 0.0;
     double max = 0.0;
+    friend bool operator==(const UniformRange& a, const UniformRange& b) {
+        return a.min == b.min && a.max == b.max;
+    }
+    friend bool operator!=(const UniformRange& a, const UniformRange& b) { return !(a == b); }
 };
 
-/// The distributions of the simulation. Times are seconds; a "time between" events runs from the
-/// end of one to the start of the next (thesis 4.2). normal() and announcer() are the thesis's;
-/// any field may be changed.
+/// What an ExpressionStyle field holds, for reading and writing fields by name (the C ABI, Python,
+/// the style JSON of docs/style-format.md).
+enum class StyleFieldType : int {
+    number = 0,   ///< a double: seconds
+    integer = 1,  ///< an int: blink_interval_shape
+    range = 2,    ///< a UniformRange: seconds, 0..1 or degrees
+    flag = 3,     ///< a bool: is_<kind>_simulated
+};
+
+/// One ExpressionStyle field as the C ABI, Python and the style JSON name it.
+struct StyleField {
+    const char* name;  ///< the C++ member's name, e.g. "tilt_angle_deg"
+    StyleFieldType type;
+};
+
+/// The distributions of the simulation, and which kinds of event are simulated at all. Times are
+/// seconds; a "time between" events runs from the end of one to the start of the next (thesis
+/// 4.2). normal() and announcer() are the thesis's; any field may be changed, directly or by name
+/// (set_number(), set_range() ...: these check the value at once and name the field). The
+/// simulator checks every field again and names the first one out of range.
 struct TALKFACE_API ExpressionStyle {
     std::string name = "normal";  ///< a label; "custom" for caller-built styles
 
@@ -104,6 +128,15 @@ struct TALKFACE_API ExpressionStyle {
     /// shortest pause Algorithm 3.1 cuts sentences at).
     double nod_min_pause_s = 0.2;
 
+    /// Whether each kind is simulated at all. A kind switched off has no simulated events (a
+    /// caller's events of that kind still apply, see set_user_events()); the other kinds' events
+    /// stay exactly what they are for the same seed, since every kind draws from its own stream.
+    bool is_blink_simulated = true;
+    bool is_brows_simulated = true;
+    bool is_tilt_simulated = true;
+    bool is_turn_simulated = true;
+    bool is_nod_simulated = true;
+
     /// The thesis's numbers for speech at a normal pace (the default).
     static ExpressionStyle normal();
     /// The unadjusted numbers measured on TV news announcers (Tables 4.7, 4.12, section 4.5.1):
@@ -111,7 +144,52 @@ struct TALKFACE_API ExpressionStyle {
     static ExpressionStyle announcer();
     /// "normal" or "announcer". \throws talkface::InvalidArgument listing the valid names.
     static ExpressionStyle from_name(std::string_view name);
+
+    /// Reads a style from the JSON of docs/style-format.md: an object whose keys are field names
+    /// (all optional, ranges as [min, max], flags as true / false), starting from "normal" or from
+    /// the style named by a "base" key; "name" sets the label, which is "custom" otherwise.
+    /// `source` names the text in messages (a file name, or "<string>").
+    /// \throws talkface::ParseError at source:line:column naming the key: text that is not JSON,
+    ///         an unknown key (the message lists the valid ones), a value of the wrong type, a value
+    ///         out of range, a key given twice.
+    static ExpressionStyle from_json(std::string_view text, const std::string& source = "<string>");
+    /// from_json() of a file's content. \throws talkface::FileError if it cannot be read; as
+    /// from_json() otherwise, naming the file.
+    static ExpressionStyle load(const std::string& path);
+    /// The style as from_json() reads it back (every field, one per line, numbers in their shortest
+    /// exact form): the same style always gives the same bytes.
+    std::string to_json() const;
+
+    /// Every field but name, in declaration order, with its type.
+    static const std::vector<StyleField>& fields();
+    /// The value of a number field. \throws talkface::InvalidArgument for a name that is not a
+    ///         number field (the message lists the number fields).
+    double number(std::string_view field) const;
+    /// Sets a number field. \throws talkface::InvalidArgument naming the field if it is not a
+    ///         number field or the value is out of range; the style is then unchanged.
+    void set_number(std::string_view field, double value);
+    /// The value of an integer field (blink_interval_shape). \throws as number().
+    int integer(std::string_view field) const;
+    /// Sets an integer field. \throws as set_number().
+    void set_integer(std::string_view field, int value);
+    /// The value of a range field. \throws as number().
+    UniformRange range(std::string_view field) const;
+    /// Sets a range field. \throws as set_number(), also for min > max.
+    void set_range(std::string_view field, UniformRange value);
+    /// The value of a flag field (is_blink_simulated ...). \throws as number().
+    bool flag(std::string_view field) const;
+    /// Sets a flag field. \throws as number().
+    void set_flag(std::string_view field, bool value);
+    /// Whether events of `kind` are simulated (its is_<kind>_simulated field).
+    bool is_simulated(ExpressionEventKind kind) const;
+    /// Switches the simulation of a kind on or off. \throws talkface::InvalidArgument for a value
+    ///         outside ExpressionEventKind.
+    void set_simulated(ExpressionEventKind kind, bool is_simulated);
 };
+
+/// Every field equal, name included.
+TALKFACE_API bool operator==(const ExpressionStyle& a, const ExpressionStyle& b);
+TALKFACE_API bool operator!=(const ExpressionStyle& a, const ExpressionStyle& b);
 
 /// How caller-given events combine with the simulated ones.
 enum class UserEventMode : int {
@@ -147,6 +225,7 @@ TALKFACE_API double timeline_end_s(const Timeline& timeline);
 class TALKFACE_API ExpressionSimulator {
 public:
     /// Simulates the events for `timeline`.
+    /// Kinds the style switches off get no simulated events.
     /// \throws talkface::InvalidArgument naming the style field that is out of range (a range with
     ///         min > max, negative times, zero durations, an angle beyond +-kMaxPoseAngleDeg), or
     ///         the syllable whose times are not finite or end before they start.

@@ -123,9 +123,12 @@ struct PhotoFaceResult {
 /// \throws talkface::FileError if a Haar cascade or the dlib model cannot be found or read.
 TALKFACE_API PhotoFaceResult face_from_photo(const ImageView& photo, const PhotoOptions& options = {});
 
-/// Reads a PNG, JPEG, BMP, TIFF or WebP file and calls face_from_photo(); error messages name the
-/// path (options.source_name is ignored).
-/// \throws talkface::FileError if the file cannot be read or decoded; otherwise as face_from_photo().
+/// Reads a PNG (any bit depth; transparency shown on white) or JPEG (RGB or greyscale, EXIF
+/// orientation applied) of at most 100 megapixels and calls face_from_photo(); error messages name
+/// the path (options.source_name is ignored).
+/// \throws talkface::FileError naming the path and what is wrong if the file cannot be opened, is
+///         empty, is not a PNG or JPEG (other formats are named), is broken or truncated, is a CMYK
+///         JPEG, or is larger than 100 megapixels; otherwise as face_from_photo().
 TALKFACE_API PhotoFaceResult face_from_photo_file(const std::string& path, const PhotoOptions& options = {});
 
 /// The photo with the extracted points drawn on it (points coloured by feature, the hair polygon,
@@ -133,7 +136,8 @@ TALKFACE_API PhotoFaceResult face_from_photo_file(const std::string& path, const
 /// \throws talkface::InvalidArgument for a malformed view; talkface::FileError if it cannot write.
 TALKFACE_API void write_photo_overlay(const ImageView& photo, const PhotoFaceResult& result,
                                       const std::string& output_png_path);
-/// As above, reading the photo from a file. \throws talkface::FileError if it cannot be read.
+/// As above, reading the photo (PNG or JPEG) from a file. \throws talkface::FileError if it cannot be
+/// read, as face_from_photo_file() says.
 TALKFACE_API void write_photo_overlay(const std::string& photo_path, const PhotoFaceResult& result,
                                       const std::string& output_png_path);
 

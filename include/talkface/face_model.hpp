@@ -47,6 +47,11 @@ class TALKFACE_API FaceModel {
 public:
     static constexpr std::size_t kPointCount = 72;
     static constexpr std::size_t kFapuCount = 12;
+    /// Every coordinate lies within +-kMaxCoordinatePx: a million pixels is far beyond any image,
+    /// and the bound keeps every later computation (projection, canvas size) finite.
+    static constexpr double kMaxCoordinatePx = 1e6;
+    /// Every FAPU is at most this (a measured FAPU of points within +-kMaxCoordinatePx is less).
+    static constexpr double kMaxFapuPx = 1e7;
     /// The newest face file format version this library reads and the one it writes.
     static constexpr int kFileFormatVersion = 1;
 
@@ -60,7 +65,8 @@ public:
     /// points (d, eye, lip, mouth, jaw sizes, r1, r2) or set from d (EyebrowH, EyebrowH2).
     /// \throws talkface::FileError if the file cannot be read.
     /// \throws talkface::ParseError naming file:line:column and the point or attribute: not XML, empty,
-    ///         unknown version, a missing, duplicate or unknown point, a non-numeric or non-finite value.
+    ///         unknown version, a missing, duplicate or unknown point, a non-numeric or non-finite value,
+    ///         or one beyond kMaxCoordinatePx / kMaxFapuPx.
     static FaceModel load(const std::string& path);
 
     /// Parses the text of a face file; `source_name` stands for the path in error messages.
@@ -84,7 +90,8 @@ public:
 
     /// A point's image position. \throws talkface::InvalidArgument for an unknown id.
     Point2 point(std::string_view id) const;
-    /// Moves a point. \throws talkface::InvalidArgument for an unknown id or a non-finite value.
+    /// Moves a point. \throws talkface::InvalidArgument for an unknown id or a coordinate that is not
+    /// finite or lies beyond +-kMaxCoordinatePx.
     void set_point(std::string_view id, Point2 image_xy);
     /// All 72 points, in point_ids() order.
     const std::array<Point2, kPointCount>& points() const { return points_; }
@@ -92,7 +99,7 @@ public:
     /// A FAPU in pixels. \throws talkface::InvalidArgument for an unknown name.
     double fapu(std::string_view name) const;
     /// Sets a FAPU. \throws talkface::InvalidArgument for an unknown name or a value that is not
-    /// finite and positive.
+    /// finite and positive, or exceeds kMaxFapuPx.
     void set_fapu(std::string_view name, double value_px);
     /// All 12 FAPUs, in fapu_names() order.
     const std::array<double, kFapuCount>& fapus() const { return fapus_; }

@@ -672,6 +672,20 @@ TF_API tf_status tf_align_samples(const float *samples, size_t frame_count, int 
                                   const tf_align_options *options, tf_progress_fn progress,
                                   void *user_data, tf_timeline **out);
 
+/* The picture of an alignment (thesis Figures 3.5 and 3.8) as a standalone SVG document: the audio
+ * file's waveform (read again, in blocks), each sentence of `timeline` in one of two alternating
+ * colours, each syllable's start marked and labelled with its text and pinyin. Release *out_svg with
+ * tf_free; *out_len (if not NULL) is its length without the NUL.
+ * Errors: TF_ERR_FILE or TF_ERR_PARSE naming the path if it cannot be read as audio;
+ *         TF_ERR_INVALID_ARGUMENT if it has no frames or audio_path, timeline or out_svg is NULL. */
+TF_API tf_status tf_alignment_plot_svg(const char *audio_path, const tf_timeline *timeline, char **out_svg,
+                                       size_t *out_len);
+
+/* Writes that picture to `svg_path` through a temporary file that is renamed: a failure leaves no
+ * file behind. Errors: as tf_alignment_plot_svg, or TF_ERR_FILE naming svg_path. */
+TF_API tf_status tf_write_alignment_plot_svg(const char *svg_path, const char *audio_path,
+                                             const tf_timeline *timeline);
+
 /* ---------------------------------------------------------------------------------------------
  * Expression simulation (SPEC step 5): blinks, eyebrow raises, head tilts, turns and nods drawn
  * from a seed (the same seed gives the same events on every platform), plus the caller's own.
@@ -710,8 +724,8 @@ typedef enum tf_user_event_mode {
     TF_EVENTS_REPLACE = 1 /* every simulated event of a kind the caller gives is dropped */
 } tf_user_event_mode;
 
-/* The simulated events of a timeline and the caller's. Created by tf_expression_simulator_create,
- * released by tf_expression_simulator_destroy. */
+/* The simulated events of a timeline and the caller's. Created by tf_expression_simulator_create
+ * or tf_expression_simulator_create_with_style, released by tf_expression_simulator_destroy. */
 typedef struct tf_expression_simulator tf_expression_simulator;
 
 /* Simulates the events of `timeline` from `seed` in a style: "normal" (the thesis's numbers for a
@@ -724,6 +738,91 @@ TF_API tf_status tf_expression_simulator_create(const tf_timeline *timeline, uin
 
 /* Releases a simulator. Accepts NULL. */
 TF_API void tf_expression_simulator_destroy(tf_expression_simulator *simulator);
+
+/* The distributions of the simulation and which kinds are simulated at all
+ * (talkface::ExpressionStyle; the JSON of docs/style-format.md). Created by
+ * tf_expression_style_create, _load or _from_json, released by tf_expression_style_destroy.
+ *
+ * Fields are read and written by name (the C++ member's name), so that new fields never change
+ * this ABI:
+ *   integer: blink_interval_shape (1..16)
+ *   number (seconds): blink_interval_scale_s (> 0), nod_min_pause_s (>= 0)
+ *   range (min, max): blink_duration_s, brows_interval_s, brows_duration_s, brows_amount (0..1),
+ *     tilt_interval_s, tilt_duration_s, tilt_angle_deg, turn_interval_s, turn_duration_s,
+ *     turn_angle_deg, nod_lead_s, nod_down_s, nod_up_s, nod_angle_deg; seconds (durations > 0) or
+ *     degrees (0..TF_MAX_POSE_ANGLE_DEG)
+ *   flag: is_blink_simulated, is_brows_simulated, is_tilt_simulated, is_turn_simulated,
+ *     is_nod_simulated (also set by kind with tf_expression_style_set_simulated)
+ * A setter checks the value at once: TF_ERR_INVALID_ARGUMENT naming the field if it is out of
+ * range (the style is then unchanged), if the name is unknown (the message lists the fields of that
+ * type) or names a field of another type. */
+typedef struct tf_expression_style tf_expression_style;
+
+/* A named style: "normal" (NULL means this) or "announcer".
+ * Errors: TF_ERR_INVALID_ARGUMENT for an unknown name (listing the valid ones) or a NULL out. */
+TF_API tf_status tf_expression_style_create(const char *base_name, tf_expression_style **out);
+
+/* Reads a style JSON file (docs/style-format.md).
+ * Errors: TF_ERR_FILE if it cannot be read; TF_ERR_PARSE naming file:line:column and the key for
+ * text that is not JSON, an unknown key, a wrong type or a value out of range. */
+TF_API tf_status tf_expression_style_load(const char *path, tf_expression_style **out);
+
+/* The same from UTF-8 text; `source_name` names it in messages (NULL: "<string>"). */
+TF_API tf_status tf_expression_style_from_json(const char *json, const char *source_name,
+                                               tf_expression_style **out);
+
+/* The style as JSON that tf_expression_style_from_json reads back: every field, one per line. The
+ * same style always gives the same bytes. Release *out_json with tf_free; *out_len (if not NULL)
+ * is its length without the NUL. Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_expression_style_to_json(const tf_expression_style *style, char **out_json,
+                                             size_t *out_len);
+
+/* Releases a style. Accepts NULL. */
+TF_API void tf_expression_style_destroy(tf_expression_style *style);
+
+/* The style's label ("normal", "announcer", "custom" ...), borrowed: valid while the style lives
+ * unmodified. Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_expression_style_name(const tf_expression_style *style, const char **out_name);
+
+/* Number fields. */
+TF_API tf_status tf_expression_style_get_number(const tf_expression_style *style, const char *field,
+                                                double *out_value);
+TF_API tf_status tf_expression_style_set_number(tf_expression_style *style, const char *field, double value);
+
+/* Integer fields. */
+TF_API tf_status tf_expression_style_get_integer(const tf_expression_style *style, const char *field,
+                                                 int *out_value);
+TF_API tf_status tf_expression_style_set_integer(tf_expression_style *style, const char *field, int value);
+
+/* Range fields: a uniform variable drawn from [min, max]. */
+TF_API tf_status tf_expression_style_get_range(const tf_expression_style *style, const char *field,
+                                               double *out_min, double *out_max);
+TF_API tf_status tf_expression_style_set_range(tf_expression_style *style, const char *field, double min,
+                                               double max);
+
+/* Flag fields: 1 or 0 (any non-zero value sets the flag). */
+TF_API tf_status tf_expression_style_get_flag(const tf_expression_style *style, const char *field,
+                                              int *out_value);
+TF_API tf_status tf_expression_style_set_flag(tf_expression_style *style, const char *field, int value);
+
+/* Switches the simulation of one kind on (non-zero) or off (0): a kind switched off gets no
+ * simulated events, and the other kinds' events stay the same for the same seed.
+ * Errors: TF_ERR_INVALID_ARGUMENT for a kind outside tf_expression_event_kind or a NULL style. */
+TF_API tf_status tf_expression_style_set_simulated(tf_expression_style *style, tf_expression_event_kind kind,
+                                                   int is_simulated);
+
+/* Simulates the events of `timeline` from `seed` in a style of the caller's (copied: later changes
+ * to it do not reach the simulator). The simulator keeps no reference to the timeline.
+ * Errors: TF_ERR_INVALID_ARGUMENT naming a style field out of range, a syllable whose times are
+ * not finite or end before they start, or for a NULL argument. */
+TF_API tf_status tf_expression_simulator_create_with_style(const tf_timeline *timeline, uint64_t seed,
+                                                           const tf_expression_style *style,
+                                                           tf_expression_simulator **out);
+
+/* A copy of the style a simulator was made with; release it with tf_expression_style_destroy.
+ * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_expression_simulator_style(const tf_expression_simulator *simulator,
+                                               tf_expression_style **out);
 
 /* The end of the simulated time, seconds (the later of the timeline's duration and its last end).
  * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
@@ -769,7 +868,8 @@ TF_API tf_status tf_expression_simulator_expression_at(const tf_expression_simul
  * ------------------------------------------------------------------------------------------- */
 
 /* How the lips move. Created by tf_lip_sync_options_create with the defaults (25 fps, rest in pauses
- * of 0.3 s or more, 0.1 s rest transitions, linear interpolation, at most 8.75 MNS0 per second);
+ * of 0.3 s or more, 0.1 s rest transitions, linear interpolation, at most 8.75 MNS0 per second,
+ * the thesis's onset table);
  * released by tf_lip_sync_options_destroy. Values are checked when animating, which names them. */
 typedef struct tf_lip_sync_options tf_lip_sync_options;
 
@@ -792,6 +892,20 @@ TF_API tf_status tf_lip_sync_options_set_fps(tf_lip_sync_options *options, doubl
  * and leave the rest, seconds. Errors: TF_ERR_INVALID_ARGUMENT if options is NULL. */
 TF_API tf_status tf_lip_sync_options_set_rest(tf_lip_sync_options *options, double rest_min_pause_s,
                                               double rest_transition_s);
+
+/* Sets one row of the onset table (thesis 5.3): when the later shapes of a syllable of
+ * `shape_count` shapes (2, 3 or 4) start, as fractions of the syllable's duration; `fractions`
+ * holds shape_count - 1 values (copied) that must rise strictly inside (0, 1), which animating
+ * checks and names (e.g. "ShapeOnsetTable::three_shapes"). The defaults: 2 shapes 0.1905;
+ * 3 shapes 0.1688, 0.6025; 4 shapes 0.2847, 0.5297, 0.7412.
+ * Errors: TF_ERR_INVALID_ARGUMENT if shape_count is not 2, 3 or 4, or an argument is NULL. */
+TF_API tf_status tf_lip_sync_options_set_onsets(tf_lip_sync_options *options, size_t shape_count,
+                                                const double *fractions);
+
+/* Copies one row of the onset table (shape_count - 1 values) into out_fractions.
+ * Errors: TF_ERR_INVALID_ARGUMENT if shape_count is not 2, 3 or 4, or an argument is NULL. */
+TF_API tf_status tf_lip_sync_options_get_onsets(const tf_lip_sync_options *options, size_t shape_count,
+                                                double *out_fractions);
 
 /* Sets how the mouth moves between key frames.
  * Errors: TF_ERR_INVALID_ARGUMENT for a value outside tf_mouth_interpolation or a NULL options. */
@@ -1012,8 +1126,9 @@ TF_API tf_status tf_photo_options_set_dlib_model_path(tf_photo_options *options,
  * tf_photo_result_from_file / _from_pixels, released by tf_photo_result_destroy. */
 typedef struct tf_photo_result tf_photo_result;
 
-/* Reads a PNG, JPEG, BMP, TIFF or WebP photo and extracts its face. options may be NULL.
- * Errors: TF_ERR_FILE if the photo cannot be read; TF_ERR_INVALID_ARGUMENT as described above. */
+/* Reads a PNG or JPEG photo (at most 100 megapixels) and extracts its face. options may be NULL.
+ * Errors: TF_ERR_FILE if the photo cannot be read or decoded (the message names the path and why:
+ * missing, another format, broken, truncated, too large); TF_ERR_INVALID_ARGUMENT as described above. */
 TF_API tf_status tf_photo_result_from_file(const char *path, const tf_photo_options *options,
                                            tf_photo_result **out);
 /* The same from pixels the caller owns (row y at pixels + y * stride_bytes), read during the call.

@@ -19,6 +19,7 @@
 #ifndef TALKFACE_TALKFACE_HPP
 #define TALKFACE_TALKFACE_HPP
 
+#include "talkface/alignment_plot.hpp"
 #include "talkface/animation.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/expression.hpp"

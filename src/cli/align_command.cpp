@@ -12,7 +12,6 @@
 #include <nlohmann/json.hpp>
 #include <talkface/talkface.hpp>
 
-#include "alignment_plot.hpp"
 #include "commands.hpp"
 #include "progress_bar.hpp"
 #include "common/atomic_file.hpp"
@@ -113,7 +112,7 @@ void run_align(const AlignCommandOptions& options) {
     }
     // Everything is computed before any output is written: a failure leaves no file behind.
     const std::string result = options.json ? timeline_json(timeline) : timeline_table(timeline);
-    const std::string plot = options.plot_path.empty() ? std::string() : alignment_plot_svg(options.audio_path, timeline);
+    const std::string plot = options.plot_path.empty() ? std::string() : talkface::alignment_plot_svg(options.audio_path, timeline);
     if (!options.plot_path.empty()) talkface::detail::write_file_atomically(options.plot_path, plot);
     if (options.output_path == "-") std::cout << result << std::flush;
     else talkface::detail::write_file_atomically(options.output_path, result);

@@ -91,6 +91,31 @@ void run_animate(const AnimateOptions& options, const std::string& audio_path, c
 
 }  // namespace
 
+void add_style_options(CLI::App& command, StyleOptions& options) {
+    command
+        .add_option("--style", options.style,
+                    "Simulated behaviour: normal, announcer (faster head moves), or a style file "
+                    "(JSON, docs/style-format.md)")
+        ->check(CLI::IsMember({"normal", "announcer"}) | CLI::ExistingFile)
+        ->capture_default_str();
+    command
+        .add_option("--without", options.without,
+                    "Event kinds not to simulate, comma-separated: blink, brows, tilt, turn, nod")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"blink", "brows", "tilt", "turn", "nod"}));
+}
+
+talkface::ExpressionStyle expression_style(const StyleOptions& options) {
+    // A name wins over a file of that name in the working folder.
+    talkface::ExpressionStyle style = options.style == "normal" || options.style == "announcer"
+                                          ? talkface::ExpressionStyle::from_name(options.style)
+                                          : talkface::ExpressionStyle::load(options.style);
+    for (const std::string& kind : options.without) {
+        style.set_simulated(talkface::expression_event_kind_from_name(kind), false);
+    }
+    return style;
+}
+
 void add_page_options(CLI::App& command, AnimateOptions& options) {
     command.add_option("--face", options.face_path, "Face model file (default: the built-in face)")
         ->check(CLI::ExistingFile);
@@ -98,9 +123,7 @@ void add_page_options(CLI::App& command, AnimateOptions& options) {
         ->check(CLI::Range(1.0, 120.0))
         ->capture_default_str();
     command.add_option("--seed", options.seed, "Seed of the simulated blinks and head moves")->capture_default_str();
-    command.add_option("--style", options.style, "Simulated behaviour: normal or announcer (faster head moves)")
-        ->check(CLI::IsMember({"normal", "announcer"}))
-        ->capture_default_str();
+    add_style_options(command, options.expression);
     command
         .add_option("--encoding", options.encoding,
                     "keyframes: the face animated between key frames (small); frames: one group per frame")
@@ -138,6 +161,8 @@ void make_talking_face(const AnimateOptions& options, const std::string& audio_p
     if (is_svg && (options.app != "plain" || options.link_audio)) {
         throw CLI::ValidationError("--output", "an .svg output is the bare animation: --app and --link-audio need .html");
     }
+    // Read before the alignment, the slow part: a bad style file fails at once.
+    const talkface::ExpressionStyle style = expression_style(options.expression);
     talkface::WebPageOptions page = page_options(options);
     page.audio_url = linked_audio_url;
     const talkface::FaceModel face =
@@ -146,8 +171,7 @@ void make_talking_face(const AnimateOptions& options, const std::string& audio_p
     const std::unique_ptr<ProgressBar> bar = make_progress_bar(options.quiet);
     const talkface::Timeline timeline =
         talkface::SpeechAligner().align_file(audio_path, transcript, progress_part(bar.get(), 0.0, kAlignedAt));
-    const talkface::ExpressionSimulator simulator(timeline, options.seed,
-                                                  talkface::ExpressionStyle::from_name(options.style));
+    const talkface::ExpressionSimulator simulator(timeline, options.seed, style);
     talkface::LipSyncOptions lip_sync;
     lip_sync.fps = options.fps;
     const talkface::Animation animation = talkface::animate(face, timeline, simulator, lip_sync);

@@ -1,5 +1,6 @@
 // What `talkface animate` and `talkface demo` share: a speech, its transcript and a face in, a
-// talking face out, as a web page or a bare SVG animation (animate_command.cpp).
+// talking face out, as a web page or a bare SVG animation (animate_command.cpp); and the options
+// of the simulated expressions, which `talkface keyframes` takes too.
 #ifndef TALKFACE_CLI_ANIMATE_COMMAND_HPP
 #define TALKFACE_CLI_ANIMATE_COMMAND_HPP
 
@@ -12,11 +13,24 @@
 
 namespace talkface_cli {
 
+// --style NAME|FILE.json and --without KIND,...
+struct StyleOptions {
+    std::string style = "normal";      // a named style, or a style JSON file (docs/style-format.md)
+    std::vector<std::string> without;  // event kinds not simulated
+};
+
+// Adds --style and --without to `command`.
+void add_style_options(CLI::App& command, StyleOptions& options);
+
+// The style the options give: the named or read style with the kinds of --without switched off.
+// Throws talkface::ParseError / FileError naming the style file.
+talkface::ExpressionStyle expression_style(const StyleOptions& options);
+
 struct AnimateOptions {
     std::string face_path;  // empty: the built-in face
     double fps = talkface::LipSyncOptions{}.fps;
     std::uint64_t seed = 0;
-    std::string style = "normal";
+    StyleOptions expression;
     std::string encoding = "keyframes";
     bool link_audio = false;
     std::string app = "plain";

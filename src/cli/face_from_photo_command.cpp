@@ -55,7 +55,7 @@ void run_face_from_photo(const FaceFromPhotoOptions& options) {
 void setup_face_from_photo_command(CLI::App& app) {
     auto options = std::make_shared<FaceFromPhotoOptions>();
     CLI::App* command = app.add_subcommand("face-from-photo", "Make a face file from a frontal photo of a neutral face");
-    command->add_option("photo", options->photo_path, "Photo: PNG, JPEG, BMP, TIFF or WebP")
+    command->add_option("photo", options->photo_path, "Photo: PNG or JPEG")
         ->required()
         ->check(CLI::ExistingFile);
     command->add_option("-o,--output", options->output_path, "Output face file (docs/face-format.md); - writes to stdout")

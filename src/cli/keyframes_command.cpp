@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <talkface/talkface.hpp>
 
+#include "animate_command.hpp"
 #include "commands.hpp"
 #include "common/atomic_file.hpp"
 
@@ -27,7 +28,7 @@ struct KeyframesOptions {
     std::string transcript_path;
     std::string timeline_path;
     std::uint64_t seed = 0;
-    std::string style = "normal";
+    StyleOptions expression;
     std::string events_path;
     std::string events_mode = "add";
     double fps = talkface::LipSyncOptions{}.fps;
@@ -195,7 +196,7 @@ void run_keyframes(const KeyframesOptions& options) {
     }
     // Everything is computed before the output is opened: a bad input leaves no file.
     const talkface::Timeline timeline = timeline_for(options);
-    talkface::ExpressionSimulator simulator(timeline, options.seed, talkface::ExpressionStyle::from_name(options.style));
+    talkface::ExpressionSimulator simulator(timeline, options.seed, expression_style(options.expression));
     if (!options.events_path.empty()) {
         const auto events = read_events(options.events_path);
         const auto mode =
@@ -233,9 +234,7 @@ void setup_keyframes_command(CLI::App& app) {
         ->check(CLI::ExistingFile);
     keyframes->add_option("--seed", options->seed, "Seed of the simulated events; the same seed, the same events")
         ->capture_default_str();
-    keyframes->add_option("--style", options->style, "Simulated behaviour: normal or announcer (faster head moves)")
-        ->check(CLI::IsMember({"normal", "announcer"}))
-        ->capture_default_str();
+    add_style_options(*keyframes, options->expression);
     keyframes
         ->add_option("--events", options->events_path,
                      "Your own events, JSON (docs/events-format.md): "
@@ -244,7 +243,8 @@ void setup_keyframes_command(CLI::App& app) {
     keyframes
         ->add_option("--events-mode", options->events_mode,
                      "add: your events drop only the simulated ones they overlap; "
-                     "replace: your events replace every simulated one of their kinds")
+                     "replace: your events replace every simulated one of their kinds (--without switches a "
+                     "kind off with no events of your own)")
         ->check(CLI::IsMember({"add", "replace"}))
         ->capture_default_str();
     keyframes->add_option("--fps", options->fps, "Frames per second; key frames sit on frames")

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <string>
 
-#include "common/number_format.hpp"
 #include "expression/envelopes.hpp"
 #include "expression/random.hpp"
+#include "expression/style_fields.hpp"
 #include "expression/timeline_checks.hpp"
 #include "talkface/errors.hpp"
 
@@ -22,53 +22,6 @@ constexpr std::size_t kKindCount = 5;
 
 std::size_t kind_index(ExpressionEventKind kind) {
     return static_cast<std::size_t>(kind);
-}
-
-void check_range(const std::string& field, UniformRange range, double lowest, double highest) {
-    if (!std::isfinite(range.min) || !std::isfinite(range.max) || range.min > range.max ||
-        range.min < lowest || range.max > highest) {
-        throw InvalidArgument("ExpressionStyle::" + field,
-                              "expected a range with " + detail::format_shortest(lowest) +
-                                  " <= min <= max <= " + detail::format_shortest(highest) + ", got [" +
-                                  detail::format_shortest(range.min) + ", " +
-                                  detail::format_shortest(range.max) + "]");
-    }
-}
-
-void check_duration(const std::string& field, UniformRange range) {
-    check_range(field, range, 0.0, 3600.0);
-    // A zero duration could stall the simulation loop with zero intervals.
-    if (range.min <= 0.0) {
-        throw InvalidArgument("ExpressionStyle::" + field, "durations must be longer than 0 s");
-    }
-}
-
-void check_style(const ExpressionStyle& style) {
-    if (style.blink_interval_shape < 1 || style.blink_interval_shape > 16) {
-        throw InvalidArgument(
-            "ExpressionStyle::blink_interval_shape",
-            "expected an integer from 1 to 16, got " + std::to_string(style.blink_interval_shape));
-    }
-    if (!std::isfinite(style.blink_interval_scale_s) || style.blink_interval_scale_s <= 0.0) {
-        throw InvalidArgument("ExpressionStyle::blink_interval_scale_s", "expected seconds > 0");
-    }
-    check_duration("blink_duration_s", style.blink_duration_s);
-    check_range("brows_interval_s", style.brows_interval_s, 0.0, 3600.0);
-    check_duration("brows_duration_s", style.brows_duration_s);
-    check_range("brows_amount", style.brows_amount, 0.0, 1.0);
-    check_range("tilt_interval_s", style.tilt_interval_s, 0.0, 3600.0);
-    check_duration("tilt_duration_s", style.tilt_duration_s);
-    check_range("tilt_angle_deg", style.tilt_angle_deg, 0.0, kMaxPoseAngleDeg);
-    check_range("turn_interval_s", style.turn_interval_s, 0.0, 3600.0);
-    check_duration("turn_duration_s", style.turn_duration_s);
-    check_range("turn_angle_deg", style.turn_angle_deg, 0.0, kMaxPoseAngleDeg);
-    check_range("nod_lead_s", style.nod_lead_s, 0.0, 3600.0);
-    check_duration("nod_down_s", style.nod_down_s);
-    check_duration("nod_up_s", style.nod_up_s);
-    check_range("nod_angle_deg", style.nod_angle_deg, 0.0, kMaxPoseAngleDeg);
-    if (!std::isfinite(style.nod_min_pause_s) || style.nod_min_pause_s < 0.0) {
-        throw InvalidArgument("ExpressionStyle::nod_min_pause_s", "expected seconds >= 0");
-    }
 }
 
 // Events of one kind at random intervals (end of one to start of the next, thesis 4.2) until
@@ -89,6 +42,20 @@ void simulate_intervals(ExpressionEventKind kind, detail::Xoshiro256& random, do
     }
 }
 
+// Tilts and turns: a random interval and duration, then an angle of random size and sign.
+void simulate_head_turns(ExpressionEventKind kind, std::uint64_t seed, double end_s, UniformRange interval_s,
+                         UniformRange duration_s, UniformRange angle_deg,
+                         std::vector<ExpressionEvent>& events) {
+    detail::Xoshiro256 random(seed, kind_index(kind));
+    simulate_intervals(
+        kind, random, end_s, [&] { return random.uniform(interval_s.min, interval_s.max); }, duration_s,
+        [&] {
+            const double size = random.uniform(angle_deg.min, angle_deg.max);
+            return random.sign() * size;
+        },
+        events);
+}
+
 bool overlaps(const ExpressionEvent& a, const ExpressionEvent& b) {
     return a.start_s < b.end_s && b.start_s < a.end_s;
 }
@@ -101,29 +68,6 @@ void sort_events(std::vector<ExpressionEvent>& events) {
 }
 
 }  // namespace
-
-ExpressionStyle ExpressionStyle::normal() {
-    return ExpressionStyle{};
-}
-
-ExpressionStyle ExpressionStyle::announcer() {
-    ExpressionStyle style;
-    style.name = "announcer";
-    style.tilt_interval_s = {0.0, 3.32};   // thesis 4.5.1: mean 1.60 +- sd 1.72
-    style.tilt_duration_s = {0.2, 0.5};    // thesis 4.5.1: mean 0.35 +- sd 0.15
-    style.turn_interval_s = {0.04, 3.96};  // thesis Table 4.7
-    style.turn_duration_s = {0.2, 0.46};   // thesis Table 4.7
-    style.nod_down_s = {0.17, 0.47};       // thesis Table 4.12
-    style.nod_up_s = {0.17, 0.35};         // thesis Table 4.12
-    return style;
-}
-
-ExpressionStyle ExpressionStyle::from_name(std::string_view name) {
-    if (name == "normal") return normal();
-    if (name == "announcer") return announcer();
-    throw InvalidArgument("expression style \"" + std::string(name) + "\"",
-                          "expected \"normal\" or \"announcer\"");
-}
 
 struct ExpressionSimulator::Impl {
     std::uint64_t seed = 0;
@@ -182,7 +126,7 @@ struct ExpressionSimulator::Impl {
 ExpressionSimulator::ExpressionSimulator(const Timeline& timeline, std::uint64_t seed,
                                          const ExpressionStyle& style)
     : impl_(std::make_unique<Impl>()) {
-    check_style(style);
+    detail::check_style(style);
     detail::check_timeline(timeline);
     impl_->seed = seed;
     impl_->style = style;
@@ -190,47 +134,36 @@ ExpressionSimulator::ExpressionSimulator(const Timeline& timeline, std::uint64_t
     const double end_s = impl_->duration_s;
     auto& events = impl_->simulated;
 
-    detail::Xoshiro256 blink_random(seed, kind_index(ExpressionEventKind::blink));
-    simulate_intervals(
-        ExpressionEventKind::blink, blink_random, end_s,
-        [&] { return blink_random.gamma(style.blink_interval_shape, style.blink_interval_scale_s); },
-        style.blink_duration_s, [] { return 1.0; }, events);
-
-    detail::Xoshiro256 brows_random(seed, kind_index(ExpressionEventKind::brows));
-    simulate_intervals(
-        ExpressionEventKind::brows, brows_random, end_s,
-        [&] { return brows_random.uniform(style.brows_interval_s.min, style.brows_interval_s.max); },
-        style.brows_duration_s,
-        [&] { return brows_random.uniform(style.brows_amount.min, style.brows_amount.max); }, events);
-
-    detail::Xoshiro256 tilt_random(seed, kind_index(ExpressionEventKind::tilt));
-    simulate_intervals(
-        ExpressionEventKind::tilt, tilt_random, end_s,
-        [&] { return tilt_random.uniform(style.tilt_interval_s.min, style.tilt_interval_s.max); },
-        style.tilt_duration_s,
-        [&] {
-            const double size = tilt_random.uniform(style.tilt_angle_deg.min, style.tilt_angle_deg.max);
-            return tilt_random.sign() * size;
-        },
-        events);
-
-    detail::Xoshiro256 turn_random(seed, kind_index(ExpressionEventKind::turn));
-    simulate_intervals(
-        ExpressionEventKind::turn, turn_random, end_s,
-        [&] { return turn_random.uniform(style.turn_interval_s.min, style.turn_interval_s.max); },
-        style.turn_duration_s,
-        [&] {
-            const double size = turn_random.uniform(style.turn_angle_deg.min, style.turn_angle_deg.max);
-            return turn_random.sign() * size;
-        },
-        events);
+    // A kind switched off is skipped, not drawn and dropped: each kind has its own stream, so the
+    // others come out the same either way.
+    if (style.is_blink_simulated) {
+        detail::Xoshiro256 blink_random(seed, kind_index(ExpressionEventKind::blink));
+        simulate_intervals(
+            ExpressionEventKind::blink, blink_random, end_s,
+            [&] { return blink_random.gamma(style.blink_interval_shape, style.blink_interval_scale_s); },
+            style.blink_duration_s, [] { return 1.0; }, events);
+    }
+    if (style.is_brows_simulated) {
+        detail::Xoshiro256 brows_random(seed, kind_index(ExpressionEventKind::brows));
+        simulate_intervals(
+            ExpressionEventKind::brows, brows_random, end_s,
+            [&] { return brows_random.uniform(style.brows_interval_s.min, style.brows_interval_s.max); },
+            style.brows_duration_s,
+            [&] { return brows_random.uniform(style.brows_amount.min, style.brows_amount.max); }, events);
+    }
+    if (style.is_tilt_simulated) simulate_head_turns(ExpressionEventKind::tilt, seed, end_s, style.tilt_interval_s,
+                                                     style.tilt_duration_s, style.tilt_angle_deg, events);
+    if (style.is_turn_simulated) simulate_head_turns(ExpressionEventKind::turn, seed, end_s, style.turn_interval_s,
+                                                     style.turn_duration_s, style.turn_angle_deg, events);
 
     // Thesis 4.5.3: the head goes down before each pause and comes up as it starts. A nod that
     // would start before 0 or before the last nod is up again is left out: pauses that close
     // together get one nod, as a speaker would.
     detail::Xoshiro256 nod_random(seed, kind_index(ExpressionEventKind::nod));
     double nod_free_s = 0.0;
-    for (const double pause_s : pause_starts_s(timeline, style.nod_min_pause_s)) {
+    const std::vector<double> pauses_s =
+        style.is_nod_simulated ? pause_starts_s(timeline, style.nod_min_pause_s) : std::vector<double>{};
+    for (const double pause_s : pauses_s) {
         const double lead_s = nod_random.uniform(style.nod_lead_s.min, style.nod_lead_s.max);
         const double down_s = nod_random.uniform(style.nod_down_s.min, style.nod_down_s.max);
         const double up_s = nod_random.uniform(style.nod_up_s.min, style.nod_up_s.max);

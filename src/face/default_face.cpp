@@ -68,17 +68,22 @@ static_assert(std::size(kDefaultPoints) == FaceModel::kPointCount);
 }  // namespace
 
 FaceModel FaceModel::default_face() {
-    FaceModel face{Blank{}};
-    for (const NamedPoint& named : kDefaultPoints) face.set_point(named.id, named.image_xy);
-    // All twelve FAPUs are set, so a caller never sees a value it did not expect. The measurable ones
-    // equal detail::measured_fapu(); EyebrowH and EyebrowH2 are its 0.12 d and 0.09 d.
-    const std::pair<const char*, double> fapus_px[] = {
-        {"d", 65.0},         {"EyebrowH", 7.8},  {"EyebrowH2", 5.85}, {"LeftEyeH", 22.0},
-        {"RightEyeH", 22.0}, {"UpperLipH", 5.0}, {"LowerLipH", 9.0},  {"MNS0", 17.0},
-        {"MW0", 46.0},       {"JawH", 38.0},     {"r1", 11.0},        {"r2", 11.0}};
-    for (const auto& [name, value_px] : fapus_px) face.set_fapu(name, value_px);
-    face.set_name("default");
-    return face;
+    // Built once and copied: FaceModel() starts from it, and project_face() default-constructs a
+    // ProjectedFace (and so a FaceModel) every frame.
+    static const FaceModel built = [] {
+        FaceModel face{Blank{}};
+        for (const NamedPoint& named : kDefaultPoints) face.set_point(named.id, named.image_xy);
+        // All twelve FAPUs are set, so a caller never sees a value it did not expect. The measurable
+        // ones equal detail::measured_fapu(); EyebrowH and EyebrowH2 are its 0.12 d and 0.09 d.
+        const std::pair<const char*, double> fapus_px[] = {
+            {"d", 65.0},         {"EyebrowH", 7.8},  {"EyebrowH2", 5.85}, {"LeftEyeH", 22.0},
+            {"RightEyeH", 22.0}, {"UpperLipH", 5.0}, {"LowerLipH", 9.0},  {"MNS0", 17.0},
+            {"MW0", 46.0},       {"JawH", 38.0},     {"r1", 11.0},        {"r2", 11.0}};
+        for (const auto& [name, value_px] : fapus_px) face.set_fapu(name, value_px);
+        face.set_name("default");
+        return face;
+    }();
+    return built;
 }
 
 }  // namespace v0

@@ -248,6 +248,9 @@ private:
         if (!std::isfinite(*value)) {
             fail(attribute, item, what + ": expected a finite number, found " + quoted(attribute.value()));
         }
+        if (std::abs(*value) > FaceModel::kMaxCoordinatePx) {
+            fail(attribute, item, what + ": " + quoted(attribute.value()) + " is beyond +-1e6 px");
+        }
         return *value;
     }
 

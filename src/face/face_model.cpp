@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 #include "face/fapu_measure.hpp"
+#include "common/number_format.hpp"
 #include "face/point_ids.hpp"
 #include "talkface/errors.hpp"
 
@@ -75,8 +77,11 @@ Point2 FaceModel::point(std::string_view id) const { return points_[require_poin
 
 void FaceModel::set_point(std::string_view id, Point2 image_xy) {
     const std::size_t index = require_point(id);
-    if (!std::isfinite(image_xy.x) || !std::isfinite(image_xy.y)) {
-        throw InvalidArgument("point \"" + std::string(id) + "\"", "coordinates must be finite");
+    const auto within = [](double value) { return std::isfinite(value) && std::abs(value) <= kMaxCoordinatePx; };
+    if (!within(image_xy.x) || !within(image_xy.y)) {
+        throw InvalidArgument("point \"" + std::string(id) + "\"",
+                              "coordinates must be finite and within +-1e6 px, got (" + detail::format_shortest(image_xy.x) +
+                                  ", " + detail::format_shortest(image_xy.y) + ")");
     }
     points_[index] = image_xy;
 }
@@ -85,9 +90,9 @@ double FaceModel::fapu(std::string_view name) const { return fapus_[require_fapu
 
 void FaceModel::set_fapu(std::string_view name, double value_px) {
     const std::size_t index = require_fapu(name);
-    if (!std::isfinite(value_px) || value_px <= 0.0) {
+    if (!std::isfinite(value_px) || value_px <= 0.0 || value_px > kMaxFapuPx) {
         throw InvalidArgument("FAPU \"" + std::string(name) + "\"",
-                              "must be finite and positive, got " + std::to_string(value_px));
+                              "must be finite, positive and at most 1e7 px, got " + detail::format_shortest(value_px));
     }
     fapus_[index] = value_px;
 }
@@ -102,7 +107,17 @@ bool operator==(const FaceModel& a, const FaceModel& b) {
 namespace detail {
 
 std::optional<std::size_t> point_index(std::string_view id) {
-    return find_index(FaceModel::point_ids(), id);
+    // Hashed rather than a scan of the 72 ids: posing a face looks points up by id many times a frame.
+    // The views point into point_ids(), which lives as long as the program.
+    static const std::unordered_map<std::string_view, std::size_t> indices = [] {
+        std::unordered_map<std::string_view, std::size_t> map;
+        const auto& ids = FaceModel::point_ids();
+        for (std::size_t i = 0; i < ids.size(); ++i) map.emplace(ids[i], i);
+        return map;
+    }();
+    const auto found = indices.find(id);
+    if (found == indices.end()) return std::nullopt;
+    return found->second;
 }
 
 std::optional<std::size_t> fapu_index(std::string_view name) {

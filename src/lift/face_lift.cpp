@@ -139,6 +139,14 @@ Point2 to_image(Point3 local_xyz, Point2 origin) {
 }
 
 LiftedFace lift_face(const FaceModel& face) {
+    // Table 2.1 in lifted order (the 72 model ids, then A .. S), looked up once rather than by id for
+    // every point of every frame.
+    static const std::vector<double> depths = [] {
+        std::vector<double> table;
+        for (const std::string& id : FaceModel::point_ids()) table.push_back(depth_in_d(id));
+        for (const std::string& id : additional_point_ids()) table.push_back(depth_in_d(id));
+        return table;
+    }();
     LiftedFace lifted;
     lifted.d = checked_d(face);
     lifted.origin = rotation_origin(face);
@@ -149,12 +157,12 @@ LiftedFace lift_face(const FaceModel& face) {
     for (std::size_t i = 0; i < model_ids.size(); ++i) {
         lifted.ids.push_back(model_ids[i]);
         lifted.local_xyz.push_back(
-            to_local(face.points()[i], depth_in_d(model_ids[i]) * lifted.d, lifted.origin));
+            to_local(face.points()[i], depths[i] * lifted.d, lifted.origin));
     }
     const std::vector<Point2> extra_xy = additional_points_image(face, eye_mid(face));
     for (std::size_t i = 0; i < extra_ids.size(); ++i) {
         lifted.ids.push_back(extra_ids[i]);
-        lifted.local_xyz.push_back(to_local(extra_xy[i], depth_in_d(extra_ids[i]) * lifted.d, lifted.origin));
+        lifted.local_xyz.push_back(to_local(extra_xy[i], depths[model_ids.size() + i] * lifted.d, lifted.origin));
     }
     return lifted;
 }

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "common/number_format.hpp"
+#include "face/point_ids.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/face_lift.hpp"
 #include "talkface/rotation3d.hpp"
@@ -122,29 +124,29 @@ ProjectedFace project_face(const FaceModel& neutral, const FaceState& state) {
     require_pose_angle(pose.gamma_deg, "pose.gamma_deg");
     const Rotation3D rotation(pose.alpha_deg, pose.beta_deg, pose.gamma_deg);
 
-    const FaceModel face2d = apply_expression(
+    FaceModel face2d = apply_expression(
         apply_mouth(neutral, state.mouth.value_or(neutral_mouth_controls(neutral))), state.expression);
-    const LiftedFace lifted = lift_face(face2d);
+    LiftedFace lifted = lift_face(face2d);
     const double d = lifted.d;
 
+    // Points are told apart by index, not id, as this runs once a frame: FaceModel order puts the hair
+    // first (face/point_ids.hpp), and lift_face() keeps that order.
     double hair_half_width = 0.0;
-    for (std::size_t i = 0; i < lifted.ids.size(); ++i) {
-        if (is_hair_id(lifted.ids[i])) {
-            hair_half_width = std::max(hair_half_width, std::abs(lifted.local_xyz[i].x));
-        }
+    for (std::size_t i = 0; i < detail::kHairPointCount; ++i) {
+        hair_half_width = std::max(hair_half_width, std::abs(lifted.local_xyz[i].x));
     }
+    static const std::size_t eyeball_left_index = *detail::point_index("EyeballLeft");
+    static const std::size_t eyeball_right_index = *detail::point_index("EyeballRight");
 
-    const Point2 eyeball_left = face2d.point("EyeballLeft");
-    const Point2 eyeball_right = face2d.point("EyeballRight");
+    const Point2 eyeball_left = face2d.points()[eyeball_left_index];
+    const Point2 eyeball_right = face2d.points()[eyeball_right_index];
     const Point2 eye_mid{(eyeball_left.x + eyeball_right.x) / 2.0, (eyeball_left.y + eyeball_right.y) / 2.0};
     const Vec3 focus = to_vec(to_local(eye_mid, kFocusDepthD * d, lifted.origin));
     const Rotation3D identity;
 
     ProjectedFace projected;
-    projected.ids = lifted.ids;
     projected.image_xy.reserve(lifted.ids.size());
     for (std::size_t i = 0; i < lifted.ids.size(); ++i) {
-        const std::string& id = lifted.ids[i];
         const Vec3 local = to_vec(lifted.local_xyz[i]);
         // Each point moves by (where the pose puts it) - (where the frontal face has it), added to its
         // frontal image position. At zero angles the rotation is the identity bit for bit and both gaze
@@ -152,13 +154,13 @@ ProjectedFace project_face(const FaceModel& neutral, const FaceState& state) {
         // out exactly as Algorithm 2.2 draws it, whatever rounding the local frame's round trip or
         // the gaze's unit vectors carry.
         Vec3 move_local{0.0, 0.0, 0.0};
-        if (id == "EyeballLeft" || id == "EyeballRight") {
+        if (i == eyeball_left_index || i == eyeball_right_index) {
             const double radius = kEyeballRadiusD * d;
             move_local =
                 gazing_pupil(local, focus, rotation, radius) - gazing_pupil(local, focus, identity, radius);
         } else {
             Vec3 shifted = local;
-            if (is_hair_id(id)) shifted.z += hair_depth_shift(local.x, hair_half_width, pose.beta_deg, d);
+            if (i < detail::kHairPointCount) shifted.z += hair_depth_shift(local.x, hair_half_width, pose.beta_deg, d);
             move_local = to_vec(rotation.rotate(to_point(shifted))) - local;
         }
         // lift_face() lists the 72 model points first, in FaceModel order.
@@ -179,7 +181,8 @@ ProjectedFace project_face(const FaceModel& neutral, const FaceState& state) {
     projected.nose_bridge = pose.beta_deg < 0.0 ? NoseBridgeSide::right : NoseBridgeSide::left;
     projected.origin = lifted.origin;
     projected.d = d;
-    projected.face = face2d;
+    projected.ids = std::move(lifted.ids);
+    projected.face = std::move(face2d);
     return projected;
 }
 

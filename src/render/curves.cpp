@@ -2,7 +2,7 @@
 
 #include <cstddef>
 
-#include "common/number_format.hpp"
+#include "render/svg_text.hpp"
 
 namespace talkface::detail {
 
@@ -50,26 +50,10 @@ std::vector<CubicSegment> closed_curve_segments(const std::vector<Point2>& point
     return segments;
 }
 
-std::vector<Point2> cut_corners(const std::vector<Point2>& points, int rounds) {
-    std::vector<Point2> polygon = points;
-    for (int round = 0; round < rounds && polygon.size() >= 3; ++round) {
-        std::vector<Point2> cut;
-        cut.reserve(2 * polygon.size());
-        for (std::size_t i = 0; i < polygon.size(); ++i) {
-            const Point2 a = polygon[i];
-            const Point2 b = polygon[(i + 1) % polygon.size()];
-            cut.push_back(0.75 * a + 0.25 * b);
-            cut.push_back(0.25 * a + 0.75 * b);
-        }
-        polygon = std::move(cut);
-    }
-    return polygon;
-}
-
 void PathData::append_point(Point2 point) {
-    text_ += format_fixed(point.x, decimals_);
+    append_fixed(text_, point.x, decimals_);
     text_ += ',';
-    text_ += format_fixed(point.y, decimals_);
+    append_fixed(text_, point.y, decimals_);
 }
 
 PathData& PathData::move_to(Point2 point) {
@@ -99,20 +83,23 @@ PathData& PathData::curves(const std::vector<CubicSegment>& segments) {
 
 PathData& PathData::arc(const std::vector<Point2>& points) { return curves(arc_segments(points)); }
 
+PathData& PathData::corner_cut_closed(const std::vector<Point2>& corners) {
+    const std::size_t n = corners.size();
+    if (n < 3) return *this;
+    auto middle = [&](std::size_t i) { return 0.5 * (corners[i % n] + corners[(i + 1) % n]); };
+    move_to(middle(n - 1));
+    for (std::size_t i = 0; i < n; ++i) {
+        text_ += " Q";
+        append_point(corners[i]);
+        text_ += ' ';
+        append_point(middle(i));
+    }
+    return close();
+}
+
 PathData& PathData::close() {
     text_ += " Z";
     return *this;
-}
-
-std::string format_points(const std::vector<Point2>& points, int decimals) {
-    std::string text;
-    for (const Point2& point : points) {
-        if (!text.empty()) text += ' ';
-        text += format_fixed(point.x, decimals);
-        text += ',';
-        text += format_fixed(point.y, decimals);
-    }
-    return text;
 }
 
 }  // namespace talkface::detail

@@ -32,10 +32,6 @@ CubicSegment rim_segment(Point2 start, Point2 middle, Point2 end);
 // four arcs meet without corners). Starts and ends at points.front().
 std::vector<CubicSegment> closed_curve_segments(const std::vector<Point2>& points);
 
-// Chaikin's corner cutting (each edge keeps its 1/4 and 3/4 points), `rounds` times, of the
-// closed polygon `points`. The result stays inside the polygon's convex hull.
-std::vector<Point2> cut_corners(const std::vector<Point2>& points, int rounds);
-
 // SVG path data, coordinates with `decimals` digits after the point.
 class PathData {
 public:
@@ -43,6 +39,12 @@ public:
     PathData& move_to(Point2 point);
     PathData& line_to(Point2 point);
     PathData& curves(const std::vector<CubicSegment>& segments);
+    // The closed polygon `corners` cut at its corners without end (Chaikin's corner cutting: each
+    // edge keeps its 1/4 and 3/4 points, round after round): the limit is the quadratic B-spline
+    // of the polygon, one quadratic Bezier segment per corner, from the middle of the edge before
+    // it to the middle of the edge after it, with the corner as its control point. Inside the
+    // polygon's convex hull. Starts with a move.
+    PathData& corner_cut_closed(const std::vector<Point2>& corners);
     // arc(points) drawn from points.front(), which must be the pen's position (or a new move).
     PathData& arc(const std::vector<Point2>& points);
     PathData& close();
@@ -53,9 +55,6 @@ private:
     int decimals_;
     std::string text_;
 };
-
-// "x1,y1 x2,y2 ..." for a polyline or polygon's points attribute.
-std::string format_points(const std::vector<Point2>& points, int decimals);
 
 }  // namespace talkface::detail
 

@@ -3,7 +3,10 @@
 #ifndef TALKFACE_RENDER_LAYERS_HPP
 #define TALKFACE_RENDER_LAYERS_HPP
 
+#include <array>
 #include <string>
+#include <string_view>
+#include <unordered_map>
 
 #include "talkface/face_pose.hpp"
 #include "talkface/types.hpp"
@@ -24,8 +27,23 @@ struct CanvasBox {
     double height = 0.0;
 };
 
-// The hair contour: the 23 hair points, corner-cut, filled with the hair colour.
-std::string draw_hair_layer(const ProjectedFace& face, const LayerStyle& style);
+// What every state of one face is drawn with: the style, the paint attributes and gradients, and
+// where each point id stands in ProjectedFace::image_xy (the same for every state of a face). An
+// animation builds it once instead of once a frame.
+struct FaceLook {
+    LayerStyle style;
+    std::string skin, hair, nose, brows, eye_white, eye_outline, lips, mouth_opening;
+    std::array<std::string, 2> iris_gradients;  // <radialGradient> of the image-left, right iris
+    std::unordered_map<std::string, std::size_t> point_index;
+    // A point of `face` by id. \throws talkface::InvalidArgument for an unknown id.
+    Point2 point(const ProjectedFace& face, std::string_view id) const;
+};
+
+// The look of `face`, at any state of it.
+FaceLook make_face_look(const ProjectedFace& face, const LayerStyle& style);
+
+// The hair contour: the 23 hair points, corner-cut (curves.hpp), filled with the hair colour.
+std::string draw_hair_layer(const ProjectedFace& face, const FaceLook& look);
 
 // Neck and shoulders, placed from O and d of the face. They do not turn with the head.
 std::string draw_clothes_layer(const ProjectedFace& face, const CanvasBox& canvas, Rgb clothes,
@@ -33,7 +51,7 @@ std::string draw_clothes_layer(const ProjectedFace& face, const CanvasBox& canva
 
 // Ears, face contour, nose, eyebrows, eyes with clipped eyeballs, mouth (Algorithm 2.2), with the
 // clip paths and gradients they use in a <defs> of their own. Ids start with "tf-".
-std::string draw_face_layer(const ProjectedFace& face, const LayerStyle& style);
+std::string draw_face_layer(const ProjectedFace& face, const FaceLook& look);
 
 }  // namespace talkface::detail
 

@@ -157,6 +157,31 @@ bool starts_number(std::string_view text, std::size_t i) {
     return false;
 }
 
+// Reads the number at `begin`, as append_fixed() writes them (-12.34): a third of the time of
+// std::from_chars, which reads any form; it takes over if an exponent follows.
+const char* read_number(const char* begin, const char* end, double& value) {
+    const char* p = begin;
+    const bool is_negative = p < end && *p == '-';
+    if (is_negative) ++p;
+    long long whole = 0;
+    for (; p < end && *p >= '0' && *p <= '9'; ++p) whole = whole * 10 + (*p - '0');
+    double result = static_cast<double>(whole);
+    if (p < end && *p == '.') {
+        long long fraction = 0;
+        long long scale = 1;
+        for (++p; p < end && *p >= '0' && *p <= '9' && scale < 1000000000; ++p) {
+            fraction = fraction * 10 + (*p - '0');
+            scale *= 10;
+        }
+        result += static_cast<double>(fraction) / static_cast<double>(scale);
+    }
+    if (p < end && (*p == 'e' || *p == 'E' || (*p >= '0' && *p <= '9'))) {
+        return std::from_chars(begin, end, value).ptr;
+    }
+    value = is_negative ? -result : result;
+    return p;
+}
+
 // The numbers of an attribute value and the text between them ("M1,2 C3,4" -> 1 2 3 4 and
 // "M" "," " C" "," ""). Only attributes that change are read this way, and they hold coordinates.
 void read_numbers(std::string_view text, std::vector<float>& numbers, std::vector<std::string>* pieces) {
@@ -167,10 +192,10 @@ void read_numbers(std::string_view text, std::vector<float>& numbers, std::vecto
             continue;
         }
         double value = 0.0;
-        const auto result = std::from_chars(text.data() + i, text.data() + text.size(), value);
+        const char* after = read_number(text.data() + i, text.data() + text.size(), value);
         if (pieces != nullptr) pieces->emplace_back(text.substr(piece_start, i - piece_start));
         numbers.push_back(static_cast<float>(value));
-        i = static_cast<std::size_t>(result.ptr - text.data());
+        i = static_cast<std::size_t>(after - text.data());
         piece_start = i;
     }
     if (pieces != nullptr) pieces->emplace_back(text.substr(piece_start));
@@ -187,9 +212,9 @@ bool read_matching_numbers(std::string_view text, const std::vector<std::string>
         if (k + 1 == pieces.size()) break;
         if (i >= text.size() || !starts_number(text, i)) return false;
         double value = 0.0;
-        const auto result = std::from_chars(text.data() + i, text.data() + text.size(), value);
+        const char* after = read_number(text.data() + i, text.data() + text.size(), value);
         numbers.push_back(static_cast<float>(value));
-        i = static_cast<std::size_t>(result.ptr - text.data());
+        i = static_cast<std::size_t>(after - text.data());
     }
     return i == text.size();
 }
@@ -202,47 +227,96 @@ struct Track {
     bool varies = false;
 };
 
-// Frames where the attribute is a key frame: the first, the last, and in between each frame where
-// going straight on to the next frame would let some earlier frame stray beyond the tolerance.
-// For each number the admissible slopes from the segment's start form an interval that every frame
+// The key frames of one attribute: where they stand on the frame axis, and their numbers.
+struct KeyFrames {
+    std::vector<double> positions;  // in frames, rising from 0 to the last frame
+    Track values;                   // one row of the track's width per key, with the track's pieces
+};
+
+// Weights below this (px per frame of change in slope) say nothing about where a bend lies.
+constexpr double kBendWeightFloor = 1e-3;
+// A key stays clear of the frame after it, which the next segment must still reach within the
+// tolerance: at that frame itself the next segment would have no span to do it in.
+constexpr double kLatestBend = 0.9;
+
+// Key frames for linear interpolation within `tolerances` of every frame, chosen greedily. For
+// each number the admissible slopes from the segment's start form an interval that every frame
 // inside the segment narrows; a frame can end the segment while its own slope stays inside every
-// interval. Linear in the frames.
-std::vector<std::size_t> choose_key_frames(const Track& track, std::size_t frame_count,
-                                           const std::vector<double>& tolerances) {
-    std::vector<std::size_t> keys{0};
+// interval. When a frame cannot, the segment ends where the motion bent: lips move straight from
+// one mouth key frame to the next, and a mouth key frame falls between two drawn frames. Each
+// number's line so far and its line through the two frames after the bend cross there; one key
+// at their weighted mean crossing, on the lines so far, stands for the two frames on either side
+// of the bend (the frames before it lie on those lines, as their slopes showed). Linear in the
+// frames.
+KeyFrames choose_key_frames(const Track& track, std::size_t frame_count,
+                            const std::vector<double>& tolerances) {
     const std::size_t width = track.width;
-    std::vector<double> low(width);
-    std::vector<double> high(width);
     auto value = [&](std::size_t frame, std::size_t k) {
         return static_cast<double>(track.numbers[frame * width + k]);
     };
-    std::size_t start = 0;
+    KeyFrames keys;
+    keys.values.width = width;
+    keys.values.pieces = track.pieces;
+    double start = 0.0;
+    std::vector<double> start_values(width);
+    for (std::size_t k = 0; k < width; ++k) start_values[k] = value(0, k);
+    auto add_key = [&] {
+        keys.positions.push_back(start);
+        for (const double number : start_values) keys.values.numbers.push_back(static_cast<float>(number));
+    };
+    add_key();
+    std::vector<double> low(width);
+    std::vector<double> high(width);
     auto reset = [&] {
         std::fill(low.begin(), low.end(), -std::numeric_limits<double>::infinity());
         std::fill(high.begin(), high.end(), std::numeric_limits<double>::infinity());
     };
     reset();
     for (std::size_t frame = 1; frame < frame_count; ++frame) {
-        const double span = static_cast<double>(frame - start);
         bool fits = true;
         for (std::size_t k = 0; k < width && fits; ++k) {
-            const double slope = (value(frame, k) - value(start, k)) / span;
+            const double slope = (value(frame, k) - start_values[k]) / (static_cast<double>(frame) - start);
             fits = slope >= low[k] && slope <= high[k];
         }
         if (!fits) {
-            // The segment ends at the frame before; this frame opens the constraints of the next.
-            start = frame - 1;
-            keys.push_back(start);
+            const std::size_t before = frame - 1;
+            const double span = static_cast<double>(before) - start;
+            double bend = 0.0;  // after `before`, in frames
+            if (frame + 1 < frame_count && span > 0.0) {
+                double weighted = 0.0, weights = 0.0;
+                for (std::size_t k = 0; k < width; ++k) {
+                    const double slope_so_far = (value(before, k) - start_values[k]) / span;
+                    const double slope_after = value(frame + 1, k) - value(frame, k);
+                    const double weight = std::abs(slope_so_far - slope_after);
+                    if (weight < kBendWeightFloor) continue;
+                    const double crossing =
+                        (value(frame, k) - value(before, k) - slope_after) / (slope_so_far - slope_after);
+                    weighted += weight * std::clamp(crossing, 0.0, 1.0);
+                    weights += weight;
+                }
+                if (weights > 0.0) bend = std::min(weighted / weights, kLatestBend);
+            }
+            for (std::size_t k = 0; k < width; ++k) {
+                const double slope_so_far = span > 0.0 ? (value(before, k) - start_values[k]) / span : 0.0;
+                start_values[k] = value(before, k) + slope_so_far * bend;
+            }
+            start = static_cast<double>(before) + bend;
+            add_key();
             reset();
         }
-        const double new_span = static_cast<double>(frame - start);
+        const double span = static_cast<double>(frame) - start;
         for (std::size_t k = 0; k < width; ++k) {
-            const double offset = value(frame, k) - value(start, k);
-            low[k] = std::max(low[k], (offset - tolerances[k]) / new_span);
-            high[k] = std::min(high[k], (offset + tolerances[k]) / new_span);
+            const double offset = value(frame, k) - start_values[k];
+            low[k] = std::max(low[k], (offset - tolerances[k]) / span);
+            high[k] = std::min(high[k], (offset + tolerances[k]) / span);
         }
     }
-    if (keys.back() != frame_count - 1) keys.push_back(frame_count - 1);
+    const std::size_t last = frame_count - 1;
+    if (keys.positions.back() != static_cast<double>(last)) {
+        start = static_cast<double>(last);
+        for (std::size_t k = 0; k < width; ++k) start_values[k] = value(last, k);
+        add_key();
+    }
     return keys;
 }
 
@@ -294,43 +368,95 @@ std::string track_value(const Track& track, std::size_t frame) {
     return text;
 }
 
+// Where each point of a path track stands: its command and its place in the command's segment.
+// Our paths use M, L, C, Q and Z only, each command letter written before its points.
+struct PathPoint {
+    char command = 'M';
+    int place = 0;               // 0 .. 2 in a C segment (c1, c2, end), 0 .. 1 in a Q, else 0
+    bool is_implied_c1 = false;  // written as part of an S: the previous c2 reflected through the pen
+    bool closes_before = false;  // a Z comes before this point
+};
+
+int points_per_segment(char command) {
+    return command == 'C' ? 3 : command == 'Q' ? 2 : 1;
+}
+
+// The largest gap between a c1 and the reflection of the previous c2 for which the c1 is left to an
+// S command: the frames' own rounding (three coordinates at 0.005 px), no more.
+constexpr double kReflectionGapPx = 0.02;
+
+// The layout of a path track, with every c1 that is the previous c2 reflected through the pen in
+// every frame (the joins of a Catmull-Rom arc are) marked to be written as S: a third fewer numbers.
+std::vector<PathPoint> path_layout(const Track& track, std::size_t frame_count) {
+    std::vector<PathPoint> layout(track.width / 2);
+    char command = 'M';
+    int place = 0;
+    for (std::size_t j = 0; j < layout.size(); ++j) {
+        for (const char c : track.pieces[2 * j]) {
+            if (c == 'Z') layout[j].closes_before = true;
+            if (c == 'M' || c == 'L' || c == 'C' || c == 'Q') {
+                command = c;
+                place = 0;
+            }
+        }
+        layout[j].command = command;
+        layout[j].place = place % points_per_segment(command);
+        ++place;
+    }
+    for (std::size_t j = 2; j < layout.size(); ++j) {
+        const bool follows_cubic_end = layout[j - 1].command == 'C' && layout[j - 1].place == 2;
+        if (layout[j].command != 'C' || layout[j].place != 0 || !follows_cubic_end || layout[j].closes_before)
+            continue;
+        bool is_reflection = true;
+        for (std::size_t frame = 0; frame < frame_count && is_reflection; ++frame) {
+            const float* n = track.numbers.data() + frame * track.width;
+            for (std::size_t axis = 0; axis < 2; ++axis) {
+                const double reflected = 2.0 * n[2 * (j - 1) + axis] - n[2 * (j - 2) + axis];
+                is_reflection = is_reflection && std::abs(n[2 * j + axis] - reflected) <= kReflectionGapPx;
+            }
+        }
+        layout[j].is_implied_c1 = is_reflection;
+    }
+    return layout;
+}
+
 // Path data with relative commands: the same shape in fewer bytes (small offsets instead of full
 // coordinates), and interpolating offsets is interpolating coordinates, since the map between them
 // is linear. Offsets are taken between rounded coordinates, so rounding never accumulates along the
-// path. Our paths use M, L, C and Z only, each command letter written before its points.
-std::string relative_path_value(const Track& track, std::size_t frame) {
+// path. A c1 left to an S is interpolated as the reflection of interpolated points, which is the
+// interpolated reflection: it strays no further than the points it is made of (three of them, so
+// three times their rounding).
+std::string relative_path_value(const Track& track, const std::vector<PathPoint>& layout, std::size_t frame) {
     const std::vector<long> tenths = rounded_tenths(track, frame);
     std::string text;
     long current_x = 0, current_y = 0, start_x = 0, start_y = 0;
     long reference_x = 0, reference_y = 0;
-    char command = 'M';
-    int pair_in_command = 0;
-    for (std::size_t k = 0; k + 1 < track.width; k += 2) {
-        for (const char c : track.pieces[k]) {
-            if (c == 'Z') {
-                text += 'z';
-                current_x = start_x;
-                current_y = start_y;
-            } else if (c == 'M' || c == 'L' || c == 'C') {
-                command = c;
-                pair_in_command = 0;
-                text += k == 0 ? 'M' : static_cast<char>(c - 'A' + 'a');
-            }
+    for (std::size_t j = 0; j < layout.size(); ++j) {
+        const PathPoint& point = layout[j];
+        if (point.closes_before) {
+            text += 'z';
+            current_x = start_x;
+            current_y = start_y;
         }
-        // Every point of a cubic segment is relative to where the segment starts (SVG "c").
-        if (command != 'C' || pair_in_command == 0) {
-            reference_x = k == 0 ? 0 : current_x;
-            reference_y = k == 0 ? 0 : current_y;
+        if (point.is_implied_c1) {
+            text += 's';
+            continue;
         }
-        const long x = tenths[k];
-        const long y = tenths[k + 1];
+        const bool starts_command = point.place == 0 && !(j > 0 && layout[j - 1].is_implied_c1);
+        if (starts_command) text += j == 0 ? 'M' : static_cast<char>(point.command - 'A' + 'a');
+        // Every point of a curve segment is relative to where the segment starts (SVG "c", "s", "q").
+        if (point.place == 0 || (point.place == 1 && layout[j - 1].is_implied_c1)) {
+            reference_x = j == 0 ? 0 : current_x;
+            reference_y = j == 0 ? 0 : current_y;
+        }
+        const long x = tenths[2 * j];
+        const long y = tenths[2 * j + 1];
         append_separated(text, x - reference_x);
         append_separated(text, y - reference_y);
-        ++pair_in_command;
-        if (command != 'C' || pair_in_command % 3 == 0) {
+        if (point.place + 1 == points_per_segment(point.command)) {
             current_x = x;
             current_y = y;
-            if (command == 'M') {
+            if (point.command == 'M') {
                 start_x = x;
                 start_y = y;
             }
@@ -340,100 +466,47 @@ std::string relative_path_value(const Track& track, std::size_t frame) {
     return text;
 }
 
-std::string key_times_of(const std::vector<std::size_t>& keys, std::size_t frame_count) {
+std::string key_times_of(const KeyFrames& keys, std::size_t frame_count) {
     const double last = static_cast<double>(frame_count - 1);
     std::string key_times;
-    for (std::size_t i = 0; i < keys.size(); ++i) {
+    for (std::size_t i = 0; i < keys.positions.size(); ++i) {
         if (i > 0) key_times += ';';
         // Six digits place a key time within 1 ms on an animation of 15 minutes.
-        key_times += format_fixed(static_cast<double>(keys[i]) / last, 6);
+        key_times += format_fixed(keys.positions[i] / last, 6);
     }
     return key_times;
 }
 
-std::string animate_element(std::string_view attribute_name, const Track& track, std::size_t frame_count,
-                            double duration_s, const SvgAnimationOptions& options) {
-    const bool is_path = attribute_name == "d";
-    const std::vector<std::size_t> keys =
-        choose_key_frames(track, frame_count, std::vector<double>(track.width, options.tolerance_px));
-    std::string values;
-    for (std::size_t i = 0; i < keys.size(); ++i) {
-        if (i > 0) values += ';';
-        values += is_path ? relative_path_value(track, keys[i]) : track_value(track, keys[i]);
-    }
-    return "<animate attributeName=\"" + std::string(attribute_name) + "\"" +
-           attribute("dur", clock_value(duration_s)) + attribute("values", values) +
-           attribute("keyTimes", key_times_of(keys, frame_count)) + " fill=\"freeze\"/>";
-}
-
-// --- point lists that move as a whole ----------------------------------------------------------
+// --- outlines that move as a whole -------------------------------------------------------------
 //
-// Under a head pose the hair polygon is close to an affine map of its first frame (SPEC "Pose":
-// rotation and orthographic projection, plus a hair shift that is smooth in x). So a point list
-// can be written as its first frame, centred, under an animated map: six numbers a key frame in
-// place of every point's two. Where the map alone strays (a strong turn bends the hair a little
-// more than an affine map does, a brow rises), the points themselves are animated as well, as what the map must be given to land on the frame (its pre-image): constant
-// within their share of the tolerance wherever the map fits, so key frames only where it does not.
-// The encoder keeps this or the plain animation, whichever is shorter. (Paths were tried too: the
-// nose, eyes and face outline change shape with the pose and the jaw, and never came out shorter.)
-//
-// SMIL has no matrix animation, so the map is written as translate, rotate, skewX and scale
-// (M = R(angle) * [[1, tan(skew)], [0, 1]] * diag(sx, sy), a QR decomposition), each an
-// <animateTransform additive="sum"> after the static translate to the centre. The stroke scales
-// with the map, by the few percent a pose shrinks or stretches the hair: not visible.
+// A head pose moves each feature mostly as a whole: its points rotate about O and shift with their
+// depth (SPEC "Pose": rotation and orthographic projection), and a small feature far from O turns
+// little about its own centre. So an outline can be written as its points about their mean, under
+// an animated translate that carries the mean: two numbers a key frame for the motion, and the
+// outline's own key frames only where its shape changes beyond its share of the tolerance (the jaw
+// opens, a lid closes, a brow rises, the turn or tilt bends it). The encoder keeps this or the plain
+// animation, whichever is shorter. (A full affine map per outline was tried before: its four
+// transform animations, each with its own key times, cost more than they saved.)
 
-// Parameters of one frame's map, in the order they are animated.
-enum RigidParameter : std::size_t { kTx, kTy, kAngle, kSkew, kScaleX, kScaleY, kRigidWidth };
-
-struct RigidMotion {
-    double centre_x = 0.0, centre_y = 0.0;
-    Track parameters;                // kRigidWidth numbers a frame (degrees for the angles)
-    std::vector<double> tolerances;  // per parameter, so that their errors add up within the map's share
-    Track preimage;                  // the points each frame's map takes onto that frame, centred
-    double preimage_tolerance = 0.0;
+struct MovedOutline {
+    double centre_x = 0.0, centre_y = 0.0;  // the mean of the first frame's points
+    Track offset;                           // the mean of each frame's points less the centre
+    Track outline;                          // each frame's points less their mean
 };
 
-constexpr double kDegreesPerRadian = 57.29577951308232;
-// Digits of the animated map: together they move a point by less than 0.02 px at 300 px.
-constexpr int kTranslateDecimals = 2;
-constexpr int kAngleDecimals = 3;
-constexpr int kScaleDecimals = 4;
-// Rounding of the written map, kept out of its share of the tolerance.
-constexpr double kMapRoundingPx = 0.02;
-// The map's share of the tolerance; the pre-image has the rest. The map's key frames are short.
-constexpr double kMapShare = 0.25;
-// An affine map needs three points that are not on one line; fewer than six rarely pay for it.
-constexpr std::size_t kMinRigidNumbers = 12;
+// The translate's share of the tolerance; the outline has the rest, less the rounding of both.
+constexpr double kOffsetShare = 1.0 / 3.0;
+constexpr int kOffsetDecimals = 2;
+constexpr double kOffsetRoundingPx = 0.005;
 
-std::optional<RigidMotion> fit_rigid_motion(const Track& track, std::size_t frame_count, double tolerance) {
+MovedOutline split_motion(const Track& track, std::size_t frame_count) {
     const std::size_t points = track.width / 2;
-    if (track.width < kMinRigidNumbers || track.width % 2 != 0) return std::nullopt;
-    RigidMotion motion;
-    for (std::size_t i = 0; i < points; ++i) {
-        motion.centre_x += static_cast<double>(track.numbers[2 * i]);
-        motion.centre_y += static_cast<double>(track.numbers[2 * i + 1]);
-    }
-    motion.centre_x /= static_cast<double>(points);
-    motion.centre_y /= static_cast<double>(points);
-    std::vector<double> centred(track.width);
-    double qxx = 0.0, qxy = 0.0, qyy = 0.0, radius = 0.0;
-    for (std::size_t i = 0; i < points; ++i) {
-        const double x = static_cast<double>(track.numbers[2 * i]) - motion.centre_x;
-        const double y = static_cast<double>(track.numbers[2 * i + 1]) - motion.centre_y;
-        centred[2 * i] = x;
-        centred[2 * i + 1] = y;
-        qxx += x * x;
-        qxy += x * y;
-        qyy += y * y;
-        radius = std::max(radius, std::hypot(x, y));
-    }
-    const double determinant = qxx * qyy - qxy * qxy;
-    if (!(determinant > 0.0)) return std::nullopt;
-    motion.parameters.width = kRigidWidth;
-    motion.parameters.numbers.reserve(frame_count * kRigidWidth);
-    motion.preimage.width = track.width;
-    motion.preimage.numbers.reserve(track.numbers.size());
-    double gain = 1.0;  // how much the maps can enlarge an error of the pre-image, per coordinate
+    MovedOutline moved;
+    moved.offset.width = 2;
+    moved.offset.numbers.reserve(2 * frame_count);
+    moved.outline.width = track.width;
+    moved.outline.pieces = track.pieces;
+    moved.outline.numbers.reserve(track.numbers.size());
     for (std::size_t frame = 0; frame < frame_count; ++frame) {
         const float* p = track.numbers.data() + frame * track.width;
         double mean_x = 0.0, mean_y = 0.0;
@@ -443,111 +516,95 @@ std::optional<RigidMotion> fit_rigid_motion(const Track& track, std::size_t fram
         }
         mean_x /= static_cast<double>(points);
         mean_y /= static_cast<double>(points);
-        // Least squares M = (sum p q^T)(sum q q^T)^-1, with p and q both centred.
-        double sxx = 0.0, sxy = 0.0, syx = 0.0, syy = 0.0;
-        for (std::size_t i = 0; i < points; ++i) {
-            const double px = static_cast<double>(p[2 * i]) - mean_x;
-            const double py = static_cast<double>(p[2 * i + 1]) - mean_y;
-            sxx += px * centred[2 * i];
-            sxy += px * centred[2 * i + 1];
-            syx += py * centred[2 * i];
-            syy += py * centred[2 * i + 1];
+        if (frame == 0) {
+            moved.centre_x = mean_x;
+            moved.centre_y = mean_y;
         }
-        const double m00 = (sxx * qyy - sxy * qxy) / determinant;
-        const double m01 = (sxy * qxx - sxx * qxy) / determinant;
-        const double m10 = (syx * qyy - syy * qxy) / determinant;
-        const double m11 = (syy * qxx - syx * qxy) / determinant;
-        const double map_determinant = m00 * m11 - m01 * m10;
-        const double angle = std::atan2(m10, m00);
-        const double scale_x = std::hypot(m00, m10);
-        const double shear = std::cos(angle) * m01 + std::sin(angle) * m11;
-        const double scale_y = -std::sin(angle) * m01 + std::cos(angle) * m11;
-        if (!(scale_x > 0.0) || !(scale_y > 0.0) || !(map_determinant > 0.0)) return std::nullopt;
-        gain = std::max({gain, std::abs(m00) + std::abs(m01), std::abs(m10) + std::abs(m11)});
-        for (const double value : {mean_x - motion.centre_x, mean_y - motion.centre_y, angle * kDegreesPerRadian,
-                                   std::atan(shear / scale_y) * kDegreesPerRadian, scale_x, scale_y}) {
-            motion.parameters.numbers.push_back(static_cast<float>(value));
-        }
+        moved.offset.numbers.push_back(static_cast<float>(mean_x - moved.centre_x));
+        moved.offset.numbers.push_back(static_cast<float>(mean_y - moved.centre_y));
         for (std::size_t i = 0; i < points; ++i) {
-            const double px = static_cast<double>(p[2 * i]) - mean_x;
-            const double py = static_cast<double>(p[2 * i + 1]) - mean_y;
-            motion.preimage.numbers.push_back(static_cast<float>((m11 * px - m01 * py) / map_determinant));
-            motion.preimage.numbers.push_back(static_cast<float>((m00 * py - m10 * px) / map_determinant));
+            moved.outline.numbers.push_back(static_cast<float>(static_cast<double>(p[2 * i]) - mean_x));
+            moved.outline.numbers.push_back(static_cast<float>(static_cast<double>(p[2 * i + 1]) - mean_y));
         }
     }
-    // A point at `radius` moves by the translation error plus radius times each other error (in
-    // radians or relative scale), to first order: five equal parts of the map's share. The
-    // pre-image is written in tenths of a pixel, as other animated values.
-    const double share = (kMapShare * tolerance - kMapRoundingPx) / 5.0;
-    const double preimage_share = (1.0 - kMapShare) * tolerance - 0.5 / kValueScale;
-    if (!(share > 0.0) || !(preimage_share > 0.0)) return std::nullopt;
-    const double angular = share / radius * kDegreesPerRadian;
-    motion.tolerances = {share, share, angular, angular, share / radius, share / radius};
-    motion.preimage_tolerance = preimage_share / gain;
-    return motion;
+    return moved;
 }
 
-// Numbers `first` .. `first + count` of a frame, separated by spaces.
-std::string fixed_value(const Track& track, std::size_t frame, std::size_t first, std::size_t count,
-                        int decimals) {
-    std::string text;
-    for (std::size_t k = first; k < first + count; ++k) {
-        if (k > first) text += ' ';
-        text += format_fixed(static_cast<double>(track.numbers[frame * track.width + k]), decimals);
+// The values of an attribute over its key frames: path data relative, other point lists as they are.
+// `track` is what the key frames were chosen from (its frames say which c1s an S can leave out).
+std::string key_values(std::string_view attribute_name, const Track& track, const KeyFrames& keys,
+                       std::size_t frame_count) {
+    const bool is_path = attribute_name == "d";
+    const std::vector<PathPoint> layout =
+        is_path ? path_layout(track, frame_count) : std::vector<PathPoint>();
+    std::string values;
+    for (std::size_t i = 0; i < keys.positions.size(); ++i) {
+        if (i > 0) values += ';';
+        values += is_path ? relative_path_value(keys.values, layout, i) : track_value(keys.values, i);
     }
-    return text;
+    return values;
 }
 
-// The pre-image of frame 0 as the attribute's value, the static translate to the centre, and the
-// animations that follow the map (and the pre-image, where it moves).
-struct RigidText {
+std::string animate_element(std::string_view attribute_name, const Track& track, std::size_t frame_count,
+                            double duration_s, const SvgAnimationOptions& options) {
+    const KeyFrames keys =
+        choose_key_frames(track, frame_count, std::vector<double>(track.width, options.tolerance_px));
+    return "<animate attributeName=\"" + std::string(attribute_name) + "\"" +
+           attribute("dur", clock_value(duration_s)) +
+           attribute("values", key_values(attribute_name, track, keys, frame_count)) +
+           attribute("keyTimes", key_times_of(keys, frame_count)) + " fill=\"freeze\"/>";
+}
+
+// The outline of the first frame about its mean as the attribute's value, the static translate to
+// the mean, and the animations of the translate and (where its shape changes) of the outline.
+struct MovedText {
     std::string value;
     std::string animations;
 };
 
-RigidText rigid_motion_text(RigidMotion motion, const Track& track, std::size_t frame_count, double duration_s) {
-    motion.preimage.pieces = track.pieces;
-    RigidText text;
-    text.value = track_value(motion.preimage, 0) +
-                 "\" transform=\"translate(" + format_fixed(motion.centre_x, 2) + " " +
-                 format_fixed(motion.centre_y, 2) + ")";
-    const std::vector<double> preimage_tolerances(track.width, motion.preimage_tolerance);
-    const std::vector<std::size_t> preimage_keys = choose_key_frames(motion.preimage, frame_count, preimage_tolerances);
-    // Two key frames within the tolerance of every frame, and equal within it: the map alone suffices.
-    bool preimage_moves = preimage_keys.size() > 2;
-    for (std::size_t k = 0; k < track.width && !preimage_moves; ++k) {
-        preimage_moves = std::abs(motion.preimage.numbers[k] -
-                                  motion.preimage.numbers[(frame_count - 1) * track.width + k]) >
-                         motion.preimage_tolerance;
+MovedText moved_outline_text(const MovedOutline& moved, std::string_view attribute_name,
+                             std::size_t frame_count, double duration_s, double tolerance) {
+    const std::string dur = attribute("dur", clock_value(duration_s));
+    KeyFrames first_frame;
+    first_frame.positions = {0.0};
+    first_frame.values.width = moved.outline.width;
+    first_frame.values.pieces = moved.outline.pieces;
+    first_frame.values.numbers.assign(
+        moved.outline.numbers.begin(),
+        moved.outline.numbers.begin() + static_cast<std::ptrdiff_t>(moved.outline.width));
+    MovedText text;
+    text.value = key_values(attribute_name, moved.outline, first_frame, frame_count) +
+                 "\" transform=\"translate(" + format_fixed(moved.centre_x, kOffsetDecimals) + " " +
+                 format_fixed(moved.centre_y, kOffsetDecimals) + ")";
+    const double outline_tolerance = (1.0 - kOffsetShare) * tolerance - 0.5 / kValueScale;
+    const KeyFrames outline_keys = choose_key_frames(
+        moved.outline, frame_count, std::vector<double>(moved.outline.width, outline_tolerance));
+    // Two key frames that agree within the tolerance: the outline holds its shape.
+    bool is_reshaped = outline_keys.positions.size() > 2;
+    for (std::size_t k = 0; k < moved.outline.width && !is_reshaped; ++k) {
+        is_reshaped =
+            std::abs(moved.outline.numbers[k] -
+                     moved.outline.numbers[(frame_count - 1) * moved.outline.width + k]) > outline_tolerance;
     }
-    if (preimage_moves) {
-        std::string values;
-        for (std::size_t i = 0; i < preimage_keys.size(); ++i) {
-            if (i > 0) values += ';';
-            values += track_value(motion.preimage, preimage_keys[i]);
+    if (is_reshaped) {
+        text.animations +=
+            "<animate attributeName=\"" + std::string(attribute_name) + "\"" + dur +
+            attribute("values", key_values(attribute_name, moved.outline, outline_keys, frame_count)) +
+            attribute("keyTimes", key_times_of(outline_keys, frame_count)) + " fill=\"freeze\"/>";
+    }
+    const double offset_tolerance = kOffsetShare * tolerance - kOffsetRoundingPx;
+    const KeyFrames keys = choose_key_frames(moved.offset, frame_count, {offset_tolerance, offset_tolerance});
+    std::string values;
+    for (std::size_t i = 0; i < keys.positions.size(); ++i) {
+        if (i > 0) values += ';';
+        for (std::size_t k = 0; k < 2; ++k) {
+            if (k > 0) values += ' ';
+            values += format_fixed(static_cast<double>(keys.values.numbers[i * 2 + k]), kOffsetDecimals);
         }
-        text.animations += "<animate attributeName=\"points\"" + attribute("dur", clock_value(duration_s)) +
-                           attribute("values", values) +
-                           attribute("keyTimes", key_times_of(preimage_keys, frame_count)) + " fill=\"freeze\"/>";
     }
-    const std::vector<std::size_t> keys = choose_key_frames(motion.parameters, frame_count, motion.tolerances);
-    const std::string key_times = key_times_of(keys, frame_count);
-    struct Part {
-        const char* type;
-        std::size_t first, count;
-        int decimals;
-    };
-    for (const Part& part : {Part{"translate", kTx, 2, kTranslateDecimals}, Part{"rotate", kAngle, 1, kAngleDecimals},
-                             Part{"skewX", kSkew, 1, kAngleDecimals}, Part{"scale", kScaleX, 2, kScaleDecimals}}) {
-        std::string values;
-        for (std::size_t i = 0; i < keys.size(); ++i) {
-            if (i > 0) values += ';';
-            values += fixed_value(motion.parameters, keys[i], part.first, part.count, part.decimals);
-        }
-        text.animations += "<animateTransform attributeName=\"transform\"" + attribute("type", part.type) +
-                           " additive=\"sum\"" + attribute("dur", clock_value(duration_s)) +
-                           attribute("values", values) + attribute("keyTimes", key_times) + " fill=\"freeze\"/>";
-    }
+    text.animations += "<animateTransform attributeName=\"transform\" type=\"translate\" additive=\"sum\"" +
+                       dur + attribute("values", values) +
+                       attribute("keyTimes", key_times_of(keys, frame_count)) + " fill=\"freeze\"/>";
     return text;
 }
 
@@ -617,7 +674,8 @@ public:
         }
     }
 
-    std::string finish(const ProgressCallback& progress) const {
+    // The layer's text; progress goes from `from` to `to` as the attributes are written.
+    std::string finish(const ProgressCallback& progress, double from, double to) const {
         const double duration_s = static_cast<double>(frame_count_ - 1) / fps_;
         std::string svg;
         svg.reserve(first_text_.size() * 4);
@@ -642,17 +700,16 @@ public:
             if (!opened.empty()) tag = opened;
             if (slot == tracks_.size()) break;
             const std::string_view name = attribute_name(first_.literals[slot]);
-            std::optional<RigidMotion> rigid;
-            if (tracks_[slot].varies && name == "points") {
-                rigid = fit_rigid_motion(tracks_[slot], frame_count_, options_.tolerance_px);
-            }
+            const Track& track = tracks_[slot];
             std::string animation;
-            if (tracks_[slot].varies) {
-                animation = animate_element(name, tracks_[slot], frame_count_, duration_s, options_);
-            }
-            std::optional<RigidText> moved;
-            if (rigid) {
-                moved = rigid_motion_text(std::move(*rigid), tracks_[slot], frame_count_, duration_s);
+            std::optional<MovedText> moved;
+            if (track.varies) {
+                animation = animate_element(name, track, frame_count_, duration_s, options_);
+                // Outlines only: their numbers are points, and the element takes a transform.
+                if ((name == "points" || name == "d") && track.width % 2 == 0) {
+                    moved = moved_outline_text(split_motion(track, frame_count_), name, frame_count_,
+                                               duration_s, options_.tolerance_px);
+                }
             }
             if (moved && moved->value.size() + moved->animations.size() <
                              first_.values[slot].size() + animation.size()) {
@@ -663,8 +720,8 @@ public:
                 pending += animation;
             }
             if (slot % 16 == 0) {
-                report(progress, kFramesShare + (1.0 - kFramesShare) * static_cast<double>(slot) /
-                                                    static_cast<double>(tracks_.size()),
+                report(progress,
+                       from + (to - from) * static_cast<double>(slot) / static_cast<double>(tracks_.size()),
                        "encoding", frame_count_);
             }
         }
@@ -732,12 +789,16 @@ std::string render_animation(const FaceModel& face, const SvgOptions& svg_option
     std::size_t group_counter = 0;
     FramesEncoder hair_frames("hair", animation.fps, group_counter);
     FramesEncoder face_frames("face", animation.fps, group_counter);
-    KeyframesEncoder keyframes(animation.fps, options,
-                               options.encoding == AnimationEncoding::frames ? 0 : frame_count);
     const bool is_frames = options.encoding == AnimationEncoding::frames;
+    const std::size_t expected_frames = is_frames ? 0 : frame_count;
+    KeyframesEncoder hair_keyframes(animation.fps, options, expected_frames);
+    KeyframesEncoder face_keyframes(animation.fps, options, expected_frames);
     std::string clothes_layer;
     std::string hair;
     std::string face_layer;
+    std::vector<Point2> hair_points;
+    // The look of the face: its d, hence the stroke, is the same at every state.
+    FaceLook look;
     const FaceState* previous = nullptr;
     for (std::size_t frame = 0; frame < frame_count; ++frame) {
         if (frame % kProgressEveryFrames == 0) {
@@ -748,38 +809,53 @@ std::string render_animation(const FaceModel& face, const SvgOptions& svg_option
         // Holds (pauses, a held head) repeat a frame exactly: draw it once.
         const bool is_repeat = previous != nullptr && state.pose == previous->pose &&
                                state.expression == previous->expression && state.mouth == previous->mouth;
+        // The hair holds still whenever its points do (the mouth and the eyes move without it).
+        bool is_hair_repeat = is_repeat;
         if (!is_repeat) {
             previous = &state;
-            ProjectedFace projected;
-            try {
-                projected = project_face(face, state);
-            } catch (const Error&) {
-                std::throw_with_nested(InvalidArgument(
-                    "animation.frames[" + std::to_string(frame) + "]",
-                    "the face cannot be drawn at " + format_fixed(static_cast<double>(frame) / animation.fps, 3) +
-                        " s"));
-            }
-            const LayerStyle style{svg_options.decimals, svg_options.stroke_width_in_d * projected.d};
+            // Built in place: a default ProjectedFace would build the default face first.
+            const ProjectedFace projected = [&] {
+                try {
+                    return project_face(face, state);
+                } catch (const Error&) {
+                    std::throw_with_nested(InvalidArgument(
+                        "animation.frames[" + std::to_string(frame) + "]",
+                        "the face cannot be drawn at " +
+                            format_fixed(static_cast<double>(frame) / animation.fps, 3) + " s"));
+                }
+            }();
             if (frame == 0) {
-                // The clothes hang from O and d, which no state moves (the body does not turn with
-                // the head): drawn once, between hair and face as in render_svg() (thesis 6.3.1).
-                clothes_layer = "<g id=\"clothes\">\n" +
-                                (svg_options.draw_clothes
-                                     ? draw_clothes_layer(projected, canvas.box, svg_options.clothes, style)
-                                     : std::string()) +
-                                "</g>\n";
+                const LayerStyle style{svg_options.decimals, svg_options.stroke_width_in_d * projected.d};
+                look = make_face_look(projected, style);
+                clothes_layer =
+                    "<g id=\"clothes\">\n" +
+                    (svg_options.draw_clothes
+                         ? draw_clothes_layer(projected, canvas.box, svg_options.clothes, look.style)
+                         : std::string()) +
+                    "</g>\n";
             }
-            hair = draw_hair_layer(projected, style);
-            face_layer = draw_face_layer(projected, style);
+            std::vector<Point2> new_hair_points = projected.hair_polygon();
+            is_hair_repeat = frame > 0 && new_hair_points == hair_points;
+            if (!is_hair_repeat) {
+                hair_points = std::move(new_hair_points);
+                hair = draw_hair_layer(projected, look);
+            }
+            face_layer = draw_face_layer(projected, look);
         }
         if (is_frames) {
             hair_frames.add(hair);
             face_frames.add(face_layer);
-        } else if (is_repeat) {
-            keyframes.add_repeat();
+            continue;
+        }
+        if (is_hair_repeat) {
+            hair_keyframes.add_repeat();
         } else {
-            keyframes.add("<g id=\"hair\">\n" + hair + "</g>\n" + clothes_layer + "<g id=\"face\">\n" + face_layer +
-                          "</g>\n");
+            hair_keyframes.add(hair);
+        }
+        if (is_repeat) {
+            face_keyframes.add_repeat();
+        } else {
+            face_keyframes.add(face_layer);
         }
     }
     report(progress, kFramesShare, "encoding", frame_count);
@@ -790,7 +866,10 @@ std::string render_animation(const FaceModel& face, const SvgOptions& svg_option
     if (is_frames) {
         svg += hair_frames.finish() + clothes_layer + face_frames.finish();
     } else {
-        svg += keyframes.finish(progress);
+        const double hair_done = kFramesShare + 0.3 * (1.0 - kFramesShare);
+        svg += "<g id=\"hair\">\n" + hair_keyframes.finish(progress, kFramesShare, hair_done) + "</g>\n" +
+               clothes_layer + "<g id=\"face\">\n" + face_keyframes.finish(progress, hair_done, 1.0) +
+               "</g>\n";
     }
     svg += "</svg>\n";
     report(progress, 1.0, "encoding", frame_count);

@@ -149,12 +149,13 @@ std::string SvgAnimator::render_svg(const FaceState& state) const {
     std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
     svg += detail::open_svg_root(impl_->canvas, options.decimals, "");
     svg += detail::draw_background_layer(impl_->canvas, options.background, options.decimals);
-    svg += "<g id=\"hair\">\n" + detail::draw_hair_layer(projected, style);
+    const detail::FaceLook look = detail::make_face_look(projected, style);
+    svg += "<g id=\"hair\">\n" + detail::draw_hair_layer(projected, look);
     svg += "</g>\n<g id=\"clothes\">\n";
     if (options.draw_clothes) {
         svg += detail::draw_clothes_layer(projected, impl_->canvas.box, options.clothes, style);
     }
-    svg += "</g>\n<g id=\"face\">\n" + detail::draw_face_layer(projected, style) + "</g>\n</svg>\n";
+    svg += "</g>\n<g id=\"face\">\n" + detail::draw_face_layer(projected, look) + "</g>\n</svg>\n";
     return svg;
 }
 

@@ -11,6 +11,10 @@ namespace talkface::detail {
 // `a` moved towards `b` by `amount` (0..1), rounded per channel.
 Rgb blend(Rgb a, Rgb b, double amount);
 
+// Appends format_fixed(value, decimals) (common/number_format.hpp), the same text, without its
+// general-purpose conversion: an animation writes millions of coordinates.
+void append_fixed(std::string& text, double value, int decimals);
+
 // An attribute ` name="value"` (value written as given; callers pass numbers, ids, colours).
 std::string attribute(const char* name, const std::string& value);
 

@@ -143,6 +143,14 @@ void ModelEstimator::add(const std::vector<float>& observations, const std::vect
     }
 }
 
+void ModelEstimator::subtract(const ModelEstimator& part) {
+    for (std::size_t c = 0; c < count_.size(); ++c) count_[c] -= part.count_[c];
+    for (std::size_t i = 0; i < sum_.size(); ++i) {
+        sum_[i] -= part.sum_[i];
+        sum_squares_[i] -= part.sum_squares_[i];
+    }
+}
+
 AcousticModel ModelEstimator::estimate(double weight) const {
     constexpr std::size_t dims = kObservationCount;
     std::array<double, 3> group_count{};

@@ -52,6 +52,8 @@ public:
     ModelEstimator();
     void add(const std::vector<float>& observations, const std::vector<PhoneState>& states,
              const std::vector<StateSegment>& path);
+    // Takes out what `part` added (its frames were added here too).
+    void subtract(const ModelEstimator& part);
     // Diagonal Gaussians on all columns; a class with few frames leans on its broad group
     // (silence, obstruents, sonorants), and a class never seen takes the group's.
     AcousticModel estimate(double weight) const;

@@ -4,12 +4,21 @@
 #define TALKFACE_SPEECH_ALIGNMENT_CHECKS_HPP
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "speech/sentence_cutter.hpp"
 #include "talkface/timeline.hpp"
 
 namespace talkface::detail {
+
+// A sentence's text in quotes, cut after its first 20 characters with an ellipsis: a transcript
+// without punctuation is one sentence of an hour, and quoting it whole would bury the message.
+std::string quote_start(const std::string& text);
+
+// How messages name a sentence: its number, its time span and quote_start of its text, e.g.
+// `sentence 3 (12.40-15.20 s, "今天天氣很好，我們去公園散步吧。我們…")`.
+std::string describe_sentence(std::size_t sentence, const FrameSpan& span, const Timeline& transcript);
 
 // Each sentence's speaking rate (speech frames per syllable, pauses inside left out) against the
 // others' and against what people can say.
@@ -36,6 +45,13 @@ void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProf
 // \throws talkface::AlignmentError naming the first sentence whose text does not fit its speech.
 void check_text_fit(const std::vector<double>& gap_per_frame, const std::vector<FrameSpan>& spans,
                     const Timeline& transcript);
+
+// The same gap for each sentence, its halves scored with models learned from the rest of the
+// recording (leave one out), against what a right text gives anywhere: this holds for a file of one
+// or two sentences, where the models re-estimated on the recording fit any text.
+// \throws talkface::AlignmentError naming the first sentence whose text does not fit its speech.
+void check_held_out_fit(const std::vector<double>& gap_per_frame, const std::vector<FrameSpan>& spans,
+                        const Timeline& transcript);
 
 // How well each aligned sentence's frames fit the models of the sounds its text says, per frame,
 // against the other sentences of the same recording.

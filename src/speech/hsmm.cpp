@@ -16,12 +16,27 @@ constexpr float kImpossible = -std::numeric_limits<float>::infinity();
 constexpr std::size_t kWindowFrames = 1500;
 constexpr double kWindowStateShare = 1.5;
 constexpr std::size_t kKeptWindowFrames = 1000;
+// How far a window's vowels may be scaled to catch up with the speech (or let it catch up).
+constexpr double kMinPace = 0.5;
+constexpr double kMaxPace = 2.0;
 
-// log of a log-normal density at d frames, up to a constant shared by every path.
-double log_normal_duration(double frames, double median_frames, double log_sigma) {
-    const double z = (std::log(frames) - std::log(median_frames)) / log_sigma;
-    return -std::log(frames) - 0.5 * z * z - std::log(log_sigma);
-}
+// A state's log-normal duration prior, with the logs that do not depend on the duration taken once:
+// the search scores every duration of every state, several times per sentence.
+struct LogNormalDuration {
+    double log_median;
+    double log_sigma;
+    double log_of_log_sigma;
+
+    LogNormalDuration(double median_frames, double sigma)
+        : log_median(std::log(median_frames)), log_sigma(sigma), log_of_log_sigma(std::log(sigma)) {}
+
+    // log of the density at d frames, up to a constant shared by every path.
+    double at(double frames) const {
+        const double log_frames = std::log(frames);
+        const double z = (log_frames - log_median) / log_sigma;
+        return -log_frames - 0.5 * z * z - log_of_log_sigma;
+    }
+};
 
 // Fills `reversed` with the duration scores of `state` for d = longest down to shortest, the
 // order in which the search reads the entries before a frame. Returns the longest duration.
@@ -30,11 +45,26 @@ std::size_t fill_duration_scores(const PhoneState& state, std::size_t frames, st
     const std::size_t shortest = std::max<std::size_t>(state.min_frames, 1);
     reversed.clear();
     const bool is_flat = state.role == StateRole::edge_silence;
+    // A state every path passes is scored against its prior's value at the median: the same for
+    // every path of a whole sentence, so nothing there changes, but an open-ended window compares
+    // paths through different numbers of states, and would otherwise favour the one that passed
+    // fewer (each pays -log(median) more) and fall behind the speech, window after window.
+    const LogNormalDuration prior(state.median_frames, state.log_sigma);
+    const double reference = state.is_optional ? 0.0 : prior.at(state.median_frames);
     for (std::size_t d = longest; d >= shortest && d > 0; --d) {
-        const double score = is_flat ? 0.0 : log_normal_duration(static_cast<double>(d), state.median_frames, state.log_sigma);
+        const double score = is_flat ? 0.0 : prior.at(static_cast<double>(d)) - reference;
         reversed.push_back(static_cast<float>(score + state.entry_log_penalty));
     }
     return longest;
+}
+
+// Per frame past its longest explicit duration, what a state with a tail pays: the slope of its
+// log-normal prior there, so that the density goes on smoothly as a geometric tail, heavier than
+// the log-normal's own (pauses have a long tail).
+float tail_step(const PhoneState& state, std::size_t longest) {
+    const double frames = static_cast<double>(longest);
+    const double z = (std::log(frames) - std::log(state.median_frames)) / state.log_sigma;
+    return static_cast<float>(-(1.0 + z / state.log_sigma) / frames);
 }
 
 // max over i < count of a[i] + b[i]; eight independent lanes, so that the compiler vectorizes it.
@@ -46,7 +76,10 @@ float max_of_sums(const float* a, const float* b, std::size_t count) {
         for (std::size_t k = 0; k < 8; ++k) lanes[k] = std::max(lanes[k], a[i + k] + b[i + k]);
     float best = kImpossible;
     for (; i < count; ++i) best = std::max(best, a[i] + b[i]);
-    for (float lane : lanes) best = std::max(best, lane);
+    // Under eight durations (a short state's range) no lane was written, and their reduction would
+    // cost as much again as the sums.
+    if (count >= 8)
+        for (float lane : lanes) best = std::max(best, lane);
     return best;
 }
 
@@ -111,11 +144,19 @@ std::vector<StateSegment> search(const std::vector<PhoneState>& states, std::siz
             static_cast<std::size_t>(std::find_if(entry_row, entry_row + width, [](float v) { return v != kImpossible; }) - entry_row);
         const std::size_t first_finish = duration_score.empty() ? width : std::min(width, first_entry + shortest);
         std::fill(finish_row, finish_row + first_finish, kImpossible);
+        // tail: the best entry_minus_prefix[t - d] + (d - longest) * step over d > longest.
+        const bool has_tail = state.has_tail && !duration_score.empty();
+        const float step = has_tail ? tail_step(state, longest) : 0.0f;
+        float tail = kImpossible;
         for (std::size_t t = first_finish; t <= frames; ++t) {
             // d runs from min(longest, t) down to shortest: entries t - d, durations reversed.
             const std::size_t skipped = t >= longest ? 0 : longest - t;
-            const float best = max_of_sums(&entry_minus_prefix[t + skipped - longest], &duration_score[skipped],
-                                           duration_score.size() - skipped);
+            float best = max_of_sums(&entry_minus_prefix[t + skipped - longest], &duration_score[skipped],
+                                     duration_score.size() - skipped);
+            if (has_tail && t > longest) {
+                tail = std::max(tail, entry_minus_prefix[t - longest - 1]) + step;
+                best = std::max(best, tail + duration_score[0]);
+            }
             finish_row[t] = best == kImpossible ? kImpossible : static_cast<float>(class_prefix[t] + best);
         }
     }
@@ -145,6 +186,16 @@ std::vector<StateSegment> search(const std::vector<PhoneState>& states, std::siz
                     best_frames = d;
                 }
             }
+            if (states[first_state + j].has_tail && !duration_score.empty()) {
+                const float step = tail_step(states[first_state + j], longest);
+                for (std::size_t d = longest + 1; d <= t; ++d) {
+                    const float total = entry_minus_prefix[t - d] + duration_score[0] + static_cast<float>(d - longest) * step;
+                    if (total > best) {
+                        best = total;
+                        best_frames = d;
+                    }
+                }
+            }
             segments.push_back({first_state + j, first_frame + t - best_frames, first_frame + t});
             t -= best_frames;
         }
@@ -160,15 +211,35 @@ bool is_pause(StateRole role) {
     return role == StateRole::edge_silence || role == StateRole::short_pause || role == StateRole::comma_pause;
 }
 
+// Frames the priors expect of states [first, end): the sum of the medians of those a path must
+// pass, consonants and vowels apart.
+struct ExpectedFrames {
+    double fixed = 0.0;
+    double stretching = 0.0;
+};
+
+ExpectedFrames expected_frames(const std::vector<PhoneState>& states, std::size_t first, std::size_t end) {
+    ExpectedFrames expected;
+    for (std::size_t s = first; s < end; ++s) {
+        if (states[s].is_optional) continue;
+        (states[s].stretches ? expected.stretching : expected.fixed) += states[s].median_frames;
+    }
+    return expected;
+}
+
 }  // namespace
 
 std::vector<StateSegment> viterbi_align(const std::vector<PhoneState>& states, const EmissionScores& emissions,
-                                        ViterbiWorkspace& workspace) {
+                                        ViterbiWorkspace& workspace, std::size_t stop_frame) {
     const std::size_t frames = emissions.frame_count;
+    // Frames of audio per frame the priors expect, over the whole sentence (above 1 by its pauses).
+    const ExpectedFrames whole = expected_frames(states, 0, states.size());
+    const double frames_per_expected = static_cast<double>(frames) / std::max(whole.fixed + whole.stretching, 1.0);
     std::vector<StateSegment> path;
+    std::vector<PhoneState> window_states;
     std::size_t first_state = 0;
     std::size_t first_frame = 0;
-    for (;;) {
+    while (first_frame < stop_frame) {
         const std::size_t remaining_frames = frames - first_frame;
         if ((states.size() - first_state) * (remaining_frames + 1) <= kMaxSearchCells) {
             const auto rest = search(states, first_state, states.size(), emissions, first_frame, frames, false, workspace);
@@ -176,18 +247,31 @@ std::vector<StateSegment> viterbi_align(const std::vector<PhoneState>& states, c
             path.insert(path.end(), rest.begin(), rest.end());
             return path;
         }
+        // The window keeps pace with the speech: its vowels are scaled so that the rest of the text
+        // would fill the rest of the audio at the sentence's share of pauses. A window whose open
+        // end lags or leads by a syllable is thus pulled back by the next, and small errors do not
+        // add up over an hour.
+        const ExpectedFrames rest = expected_frames(states, first_state, states.size());
+        const double pace = std::clamp(
+            (static_cast<double>(remaining_frames) / frames_per_expected - rest.fixed) / std::max(rest.stretching, 1.0),
+            kMinPace, kMaxPace);
         std::size_t end_state = first_state;
-        double expected_frames = 0.0;
-        while (end_state < states.size() && expected_frames < kWindowStateShare * kWindowFrames) {
-            if (!states[end_state].is_optional) expected_frames += states[end_state].median_frames;
+        double window_expected = 0.0;
+        while (end_state < states.size() && window_expected < kWindowStateShare * kWindowFrames) {
+            const PhoneState& state = states[end_state];
+            if (!state.is_optional) window_expected += state.median_frames * (state.stretches ? pace : 1.0);
             ++end_state;
         }
         const bool reaches_end = end_state == states.size();
         // Speech far longer than the rest of the text cannot be aligned to it: no window needed.
         if (reaches_end && remaining_frames > 4 * kWindowFrames) return {};
         const std::size_t end_frame = reaches_end ? frames : std::min(frames, first_frame + kWindowFrames);
-        const auto window = search(states, first_state, end_state, emissions, first_frame, end_frame, !reaches_end, workspace);
+        window_states.assign(states.begin() + static_cast<std::ptrdiff_t>(first_state),
+                             states.begin() + static_cast<std::ptrdiff_t>(end_state));
+        scale_vowels(window_states, pace);
+        auto window = search(window_states, 0, window_states.size(), emissions, first_frame, end_frame, !reaches_end, workspace);
         if (window.empty()) return {};
+        for (auto& segment : window) segment.state += first_state;
         if (reaches_end) {
             path.insert(path.end(), window.begin(), window.end());
             return path;
@@ -206,6 +290,7 @@ std::vector<StateSegment> viterbi_align(const std::vector<PhoneState>& states, c
         first_state = window[kept].state;
         first_frame = window[kept].first_frame;
     }
+    return path;
 }
 
 }  // namespace talkface::detail

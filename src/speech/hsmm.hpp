@@ -5,6 +5,7 @@
 #define TALKFACE_SPEECH_HSMM_HPP
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "speech/phone_chain.hpp"
@@ -37,15 +38,18 @@ struct ViterbiWorkspace {
     std::vector<double> prefix;
 };
 
-// At most this many (state, frame) cells are searched at once (8 bytes each): a longer sentence is
-// searched in overlapping windows, so that an hour with no punctuation stays within the memory
-// target.
-constexpr std::size_t kMaxSearchCells = std::size_t{6} << 20;
+// At most this many (state, frame) cells are searched at once (8 bytes each, 16 MB): a longer
+// sentence (over half a minute) is searched in overlapping windows, so that an hour with no
+// punctuation stays within the memory target beside its features and emission scores.
+constexpr std::size_t kMaxSearchCells = std::size_t{2} << 20;
 
 // The best path through all of `states` over all frames of `emissions` (each non-optional state
 // at least its min_frames). Empty if no path fits (too few frames for the chain).
+// A sentence searched in windows may stop early: once the path it keeps reaches `stop_frame`, it
+// returns that path, which ends inside the chain.
 std::vector<StateSegment> viterbi_align(const std::vector<PhoneState>& states, const EmissionScores& emissions,
-                                        ViterbiWorkspace& workspace);
+                                        ViterbiWorkspace& workspace,
+                                        std::size_t stop_frame = std::numeric_limits<std::size_t>::max());
 
 }  // namespace talkface::detail
 

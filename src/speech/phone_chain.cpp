@@ -186,6 +186,9 @@ PhoneState pause_state(StateRole role, std::size_t syllable, double median_frame
     state.max_frames = max_frames;
     state.is_optional = true;
     state.entry_log_penalty = entry_log_penalty;
+    // A speaker may stop for any time between two syllables: where the transcript marks no sentence
+    // end (a transcript without punctuation), the pause between two sentences is one of these.
+    state.has_tail = role != StateRole::edge_silence;
     return state;
 }
 
@@ -228,16 +231,20 @@ std::vector<PhoneState> build_phone_chain(const std::vector<const Syllable*>& sy
         if (state.role == StateRole::edge_silence || state.is_optional) continue;
         (state.stretches ? stretch_frames : fixed_frames) += state.median_frames;
     }
-    const double scale = std::clamp((static_cast<double>(speech_frames) - fixed_frames) / std::max(stretch_frames, 1.0), 0.35, 4.0);
+    scale_vowels(states, std::clamp((static_cast<double>(speech_frames) - fixed_frames) / std::max(stretch_frames, 1.0), 0.35, 4.0));
     for (auto& state : states) {
-        if (state.stretches) {
-            state.median_frames *= scale;
-            state.max_frames = static_cast<std::size_t>(std::ceil(state.median_frames * 3.5)) + 4;
-        }
         if (state.role == StateRole::edge_silence) continue;
         state.max_frames = std::min(state.max_frames, std::max<std::size_t>(frames, 1));
     }
     return states;
+}
+
+void scale_vowels(std::vector<PhoneState>& states, double factor) {
+    for (auto& state : states) {
+        if (!state.stretches) continue;
+        state.median_frames *= factor;
+        state.max_frames = static_cast<std::size_t>(std::ceil(state.median_frames * 3.5)) + 4;
+    }
 }
 
 }  // namespace talkface::detail

@@ -51,6 +51,7 @@ struct PhoneState {
     bool is_optional = false;       // the path may skip it
     bool stretches = false;         // scaled with the speaking rate (vowels)
     double entry_log_penalty = 0.0; // added when the state is used (a cheap short pause)
+    bool has_tail = false;          // may last past max_frames, paying the prior's slope there per frame
 };
 
 // The chain of one sentence: edge silence, syllables (with optional pauses between them), edge
@@ -59,6 +60,9 @@ struct PhoneState {
 // \throws talkface::InvalidArgument naming the syllable if its pinyin is not Mandarin.
 std::vector<PhoneState> build_phone_chain(const std::vector<const Syllable*>& syllables, std::size_t frames,
                                           std::size_t speech_frames);
+
+// Multiplies the duration priors of the vowels (the states that stretch with the speaking rate).
+void scale_vowels(std::vector<PhoneState>& states, double factor);
 
 }  // namespace talkface::detail
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/number_format.hpp"
+#include "speech/alignment_checks.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
@@ -159,8 +160,8 @@ std::vector<FrameSpan> choose_sentence_pauses(const LoudnessProfile& loudness, c
         if (total > best) { best = total; last = c; }
     }
     if (best == kNegativeInfinity) {
-        throw AlignmentError("the " + std::to_string(sentence_count) + " sentences of the transcript (" +
-                             transcript.sentences.front().text + " ...) cannot be matched to the pauses of the audio (" +
+        throw AlignmentError("the " + std::to_string(sentence_count) + " sentences of the transcript (the first " +
+                             quote_start(transcript.sentences.front().text) + ") cannot be matched to the pauses of the audio (" +
                              span_text({loudness.speech_first_frame, loudness.speech_end_frame}) +
                              "): their lengths disagree; check the transcript");
     }

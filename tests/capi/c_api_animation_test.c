@@ -1,5 +1,6 @@
 /* The C ABI of transcripts, expression simulation and animation, driven from C: timelines read and
- * built, syllable shapes, seeded events and the caller's own, frames and key-frame documents. */
+ * built, syllable shapes, seeded events and the caller's own, styles by field name and as JSON,
+ * kinds switched off, the onset table, frames and key-frame documents. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -229,6 +230,232 @@ static int test_user_events_add_to_or_replace_the_simulated(void) {
     return failures;
 }
 
+static int test_style_fields_by_name(void) {
+    int failures = 0;
+    tf_expression_style *style = NULL;
+    double value = 0.0;
+    double min = 0.0;
+    double max = 0.0;
+    int integer = 0;
+    int flag = 0;
+    const char *name = NULL;
+    CHECK_OK(tf_expression_style_create(NULL, &style));
+    CHECK_OK(tf_expression_style_name(style, &name));
+    CHECK(strcmp(name, "normal") == 0);
+    CHECK_OK(tf_expression_style_get_number(style, "blink_interval_scale_s", &value));
+    CHECK(value == 1.48);
+    CHECK_OK(tf_expression_style_set_number(style, "blink_interval_scale_s", 3.0));
+    CHECK_OK(tf_expression_style_get_number(style, "blink_interval_scale_s", &value));
+    CHECK(value == 3.0);
+    CHECK_OK(tf_expression_style_get_range(style, "tilt_angle_deg", &min, &max));
+    CHECK(min == 1.5 && max == 5.0);
+    CHECK_OK(tf_expression_style_set_range(style, "tilt_angle_deg", 9.0, 10.0));
+    CHECK_OK(tf_expression_style_get_range(style, "tilt_angle_deg", &min, &max));
+    CHECK(min == 9.0 && max == 10.0);
+    CHECK_OK(tf_expression_style_get_integer(style, "blink_interval_shape", &integer));
+    CHECK(integer == 2);
+    CHECK_OK(tf_expression_style_set_integer(style, "blink_interval_shape", 4));
+    CHECK_OK(tf_expression_style_get_integer(style, "blink_interval_shape", &integer));
+    CHECK(integer == 4);
+    CHECK_OK(tf_expression_style_get_flag(style, "is_nod_simulated", &flag));
+    CHECK(flag == 1);
+    CHECK_OK(tf_expression_style_set_simulated(style, TF_EVENT_NOD, 0));
+    CHECK_OK(tf_expression_style_get_flag(style, "is_nod_simulated", &flag));
+    CHECK(flag == 0);
+    CHECK_OK(tf_expression_style_set_flag(style, "is_nod_simulated", 7));
+    CHECK_OK(tf_expression_style_get_flag(style, "is_nod_simulated", &flag));
+    CHECK(flag == 1);
+
+    CHECK_FAILS_WITH(tf_expression_style_set_number(style, "blink_scale", 1.0), TF_ERR_INVALID_ARGUMENT,
+                     "\"blink_scale\": unknown; the number fields are blink_interval_scale_s, nod_min_pause_s");
+    CHECK_FAILS_WITH(tf_expression_style_get_number(style, "tilt_angle_deg", &value), TF_ERR_INVALID_ARGUMENT,
+                     "tilt_angle_deg: is a range field, not a number field");
+    CHECK_FAILS_WITH(tf_expression_style_set_range(style, "turn_angle_deg", 2.0, 20.0), TF_ERR_INVALID_ARGUMENT,
+                     "turn_angle_deg: expected a range with 0 <= min <= max <= 15, got [2, 20]");
+    CHECK_FAILS_WITH(tf_expression_style_set_integer(style, "blink_interval_shape", 0), TF_ERR_INVALID_ARGUMENT,
+                     "blink_interval_shape: expected an integer from 1 to 16, got 0");
+    CHECK_FAILS_WITH(tf_expression_style_set_simulated(style, (tf_expression_event_kind)9, 0),
+                     TF_ERR_INVALID_ARGUMENT, "kind");
+    CHECK_FAILS_WITH(tf_expression_style_set_number(style, NULL, 1.0), TF_ERR_INVALID_ARGUMENT, "field");
+    /* A refused value leaves the field as it was. */
+    CHECK_OK(tf_expression_style_get_integer(style, "blink_interval_shape", &integer));
+    CHECK(integer == 4);
+    tf_expression_style_destroy(style);
+    style = NULL;
+    CHECK_FAILS_WITH(tf_expression_style_create("shouty", &style), TF_ERR_INVALID_ARGUMENT, "announcer");
+    CHECK(style == NULL);
+    return failures;
+}
+
+static int test_style_json_round_trip_and_errors(void) {
+    int failures = 0;
+    tf_expression_style *style = NULL;
+    tf_expression_style *read_back = NULL;
+    char *json = NULL;
+    char *json_again = NULL;
+    size_t length = 0;
+    const char *name = NULL;
+    double min = 0.0;
+    double max = 0.0;
+    CHECK_OK(tf_expression_style_create("announcer", &style));
+    CHECK_OK(tf_expression_style_set_range(style, "brows_amount", 0.25, 0.75));
+    CHECK_OK(tf_expression_style_set_simulated(style, TF_EVENT_BLINK, 0));
+    CHECK_OK(tf_expression_style_to_json(style, &json, &length));
+    CHECK(strlen(json) == length);
+    CHECK(strstr(json, "\"brows_amount\": [0.25, 0.75],\n") != NULL);
+    CHECK(strstr(json, "\"is_blink_simulated\": false,\n") != NULL);
+    CHECK_OK(tf_expression_style_from_json(json, NULL, &read_back));
+    CHECK_OK(tf_expression_style_to_json(read_back, &json_again, NULL));
+    CHECK(strcmp(json, json_again) == 0);
+    tf_expression_style_destroy(read_back);
+    read_back = NULL;
+
+    CHECK_OK(tf_expression_style_from_json("{\"base\": \"announcer\", \"nod_up_s\": [0.2, 0.3]}", NULL, &read_back));
+    CHECK_OK(tf_expression_style_name(read_back, &name));
+    CHECK(strcmp(name, "custom") == 0);
+    CHECK_OK(tf_expression_style_get_range(read_back, "nod_up_s", &min, &max));
+    CHECK(min == 0.2 && max == 0.3);
+    CHECK_OK(tf_expression_style_get_range(read_back, "turn_duration_s", &min, &max));
+    CHECK(min == 0.2 && max == 0.46); /* from the announcer */
+    tf_expression_style_destroy(read_back);
+    read_back = NULL;
+
+    CHECK_FAILS_WITH(tf_expression_style_from_json("{\n \"wink_s\": 1}", "mine.json", &read_back), TF_ERR_PARSE,
+                     "mine.json:2:2: key \"wink_s\": unknown key; the keys are base, name, blink_interval_shape");
+    CHECK_FAILS_WITH(tf_expression_style_from_json("{\"nod_up_s\": 0.3}", NULL, &read_back), TF_ERR_PARSE,
+                     "<string>:1:14: key \"nod_up_s\": expected [min, max]");
+    CHECK(read_back == NULL);
+    CHECK_FAILS_WITH(tf_expression_style_load("/nonexistent/style.json", &read_back), TF_ERR_FILE,
+                     "/nonexistent/style.json");
+    tf_free(json_again);
+    tf_free(json);
+    tf_expression_style_destroy(style);
+    return failures;
+}
+
+/* Events of every kind but `left_out`, in order, must be the same in both simulators. */
+static int same_events_but(const tf_expression_simulator *all, const tf_expression_simulator *fewer,
+                           tf_expression_event_kind left_out) {
+    size_t all_count = 0;
+    size_t fewer_count = 0;
+    size_t k;
+    size_t j = 0;
+    tf_expression_event a;
+    tf_expression_event b;
+    if (tf_expression_simulator_event_count(all, &all_count) != TF_OK) return 0;
+    if (tf_expression_simulator_event_count(fewer, &fewer_count) != TF_OK) return 0;
+    for (k = 0; k < all_count; ++k) {
+        if (tf_expression_simulator_event(all, k, &a) != TF_OK) return 0;
+        if (a.kind == left_out) continue;
+        if (j >= fewer_count || tf_expression_simulator_event(fewer, j, &b) != TF_OK) return 0;
+        if (!events_equal(&a, &b)) return 0;
+        ++j;
+    }
+    return j == fewer_count;
+}
+
+static int test_simulator_with_a_style_switches_kinds_off(void) {
+    int failures = 0;
+    tf_timeline *timeline = NULL;
+    tf_expression_style *style = NULL;
+    tf_expression_style *copy = NULL;
+    tf_expression_simulator *all = NULL;
+    tf_expression_simulator *without_blinks = NULL;
+    size_t count = 0;
+    size_t k;
+    size_t blinks = 0;
+    int flag = 1;
+    CHECK_OK(tf_timeline_create(&timeline));
+    CHECK_OK(tf_timeline_set_duration_s(timeline, 60.0));
+    CHECK_OK(tf_timeline_add_sentence(timeline, "\xe5\xaa\xbd", 1.0, 1.3));
+    CHECK_OK(tf_timeline_add_syllable(timeline, "\xe5\xaa\xbd", "ma1", 0, 1.0, 1.3));
+    CHECK_OK(tf_expression_style_create(NULL, &style));
+    CHECK_OK(tf_expression_simulator_create_with_style(timeline, 21, style, &all));
+    CHECK_OK(tf_expression_simulator_event_count(all, &count));
+    for (k = 0; k < count; ++k) {
+        tf_expression_event event;
+        CHECK_OK(tf_expression_simulator_event(all, k, &event));
+        if (event.kind == TF_EVENT_BLINK) ++blinks;
+    }
+    CHECK(blinks > 5);
+    CHECK_OK(tf_expression_style_set_simulated(style, TF_EVENT_BLINK, 0));
+    CHECK_OK(tf_expression_simulator_create_with_style(timeline, 21, style, &without_blinks));
+    CHECK_OK(tf_expression_simulator_event_count(without_blinks, &count));
+    CHECK(count > 0);
+    CHECK(same_events_but(all, without_blinks, TF_EVENT_BLINK));
+    CHECK_OK(tf_expression_simulator_style(without_blinks, &copy));
+    CHECK_OK(tf_expression_style_get_flag(copy, "is_blink_simulated", &flag));
+    CHECK(flag == 0);
+    tf_expression_style_destroy(copy);
+    copy = NULL;
+    CHECK_FAILS_WITH(tf_expression_simulator_create_with_style(timeline, 21, NULL, &all), TF_ERR_INVALID_ARGUMENT,
+                     "style");
+    tf_expression_simulator_destroy(without_blinks);
+    tf_expression_simulator_destroy(all);
+    tf_expression_style_destroy(style);
+    tf_timeline_destroy(timeline);
+    return failures;
+}
+
+/* The time of the first key frame that shows shape `shape` for syllable 0, or -1. */
+static double first_key_time(const tf_animation *animation, tf_mouth_shape shape) {
+    size_t count = 0;
+    size_t k;
+    if (tf_animation_mouth_key_frame_count(animation, &count) != TF_OK) return -1.0;
+    for (k = 0; k < count; ++k) {
+        double time_s = 0.0;
+        tf_mouth_shape key_shape = TF_MOUTH_M;
+        int has_syllable = 0;
+        size_t syllable = 0;
+        if (tf_animation_mouth_key_frame(animation, k, &time_s, &key_shape, &has_syllable, &syllable) != TF_OK) {
+            return -1.0;
+        }
+        if (key_shape == shape && has_syllable && syllable == 0) return time_s;
+    }
+    return -1.0;
+}
+
+static int test_onset_table_is_settable(void) {
+    int failures = 0;
+    tf_face_model *face = NULL;
+    tf_timeline *timeline = new_spoken_timeline();
+    tf_expression_simulator *simulator = NULL;
+    tf_lip_sync_options *options = NULL;
+    tf_animation *animation = NULL;
+    const double late[1] = {0.6};
+    const double bad[2] = {0.5, 0.4};
+    double row[3] = {0.0, 0.0, 0.0};
+    CHECK_OK(tf_face_model_default(&face));
+    CHECK_OK(tf_expression_simulator_create(timeline, 1, NULL, &simulator));
+    CHECK_OK(tf_lip_sync_options_create(&options));
+    CHECK_OK(tf_lip_sync_options_set_fps(options, 100.0));
+    CHECK_OK(tf_lip_sync_options_get_onsets(options, 4, row));
+    CHECK(row[0] == 0.2847 && row[1] == 0.5297 && row[2] == 0.7412);
+    /* ma1 (0.5-0.75 s) is m a: the a starts at 0.1905 of it by default, at 0.6 of it after. */
+    CHECK_OK(tf_animate(face, timeline, simulator, options, &animation));
+    CHECK(fabs(first_key_time(animation, TF_MOUTH_A) - 0.55) < 1e-9);
+    tf_animation_destroy(animation);
+    animation = NULL;
+    CHECK_OK(tf_lip_sync_options_set_onsets(options, 2, late));
+    CHECK_OK(tf_lip_sync_options_get_onsets(options, 2, row));
+    CHECK(row[0] == 0.6);
+    CHECK_OK(tf_animate(face, timeline, simulator, options, &animation));
+    CHECK(fabs(first_key_time(animation, TF_MOUTH_A) - 0.65) < 1e-9);
+    tf_animation_destroy(animation);
+    animation = NULL;
+    CHECK_OK(tf_lip_sync_options_set_onsets(options, 3, bad));
+    CHECK_FAILS_WITH(tf_animate(face, timeline, simulator, options, &animation), TF_ERR_INVALID_ARGUMENT,
+                     "ShapeOnsetTable::three_shapes");
+    CHECK_FAILS_WITH(tf_lip_sync_options_set_onsets(options, 5, late), TF_ERR_INVALID_ARGUMENT, "shape_count");
+    CHECK_FAILS_WITH(tf_lip_sync_options_get_onsets(options, 1, row), TF_ERR_INVALID_ARGUMENT, "shape_count");
+    CHECK_FAILS_WITH(tf_lip_sync_options_set_onsets(options, 2, NULL), TF_ERR_INVALID_ARGUMENT, "fractions");
+    tf_lip_sync_options_destroy(options);
+    tf_expression_simulator_destroy(simulator);
+    tf_timeline_destroy(timeline);
+    tf_face_model_destroy(face);
+    return failures;
+}
+
 static int test_animation_frames_and_key_frames(void) {
     int failures = 0;
     tf_face_model *face = NULL;
@@ -352,6 +579,7 @@ static int test_bad_pinyin_and_options_are_named(void) {
 static int test_destroy_accepts_null(void) {
     tf_timeline_destroy(NULL);
     tf_expression_simulator_destroy(NULL);
+    tf_expression_style_destroy(NULL);
     tf_lip_sync_options_destroy(NULL);
     tf_animation_destroy(NULL);
     return 0;
@@ -366,6 +594,10 @@ int main(void) {
     failures += test_event_kind_names_round_trip();
     failures += test_same_seed_gives_the_same_events();
     failures += test_user_events_add_to_or_replace_the_simulated();
+    failures += test_style_fields_by_name();
+    failures += test_style_json_round_trip_and_errors();
+    failures += test_simulator_with_a_style_switches_kinds_off();
+    failures += test_onset_table_is_settable();
     failures += test_animation_frames_and_key_frames();
     failures += test_bad_pinyin_and_options_are_named();
     failures += test_destroy_accepts_null();

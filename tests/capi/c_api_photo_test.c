@@ -59,12 +59,24 @@ static int photo_file(void) {
 static int photo_errors(void) {
     int failures = 0;
     static uint8_t grey[120 * 100 * 3];
+    static uint8_t black[120 * 100];
     tf_face_model *face = NULL;
     tf_photo_options *options = NULL;
+    FILE *text = NULL;
     memset(grey, 180, sizeof grey);
     CHECK_FAILS_WITH(tf_face_model_from_photo_pixels(grey, 120, 100, 360, TF_PIXEL_FORMAT_RGB8, NULL, &face),
                      TF_ERR_INVALID_ARGUMENT, "no face found");
     CHECK(face == NULL);
+    CHECK_FAILS_WITH(tf_face_model_from_photo_pixels(black, 120, 100, 120, TF_PIXEL_FORMAT_GRAY8, NULL, &face),
+                     TF_ERR_INVALID_ARGUMENT, "too dark");
+    text = fopen(TF_TEST_OUTPUT_DIR "/c_photo_text.jpg", "wb");
+    CHECK(text != NULL);
+    if (text != NULL) {
+        fputs("not a photo\n", text);
+        fclose(text);
+        CHECK_FAILS_WITH(tf_face_model_from_photo_file(TF_TEST_OUTPUT_DIR "/c_photo_text.jpg", NULL, &face),
+                         TF_ERR_FILE, "c_photo_text.jpg: not a PNG or JPEG photo");
+    }
     CHECK_FAILS_WITH(tf_face_model_from_photo_pixels(grey, 120, 100, 100, TF_PIXEL_FORMAT_RGB8, NULL, &face),
                      TF_ERR_INVALID_ARGUMENT, "stride_bytes");
     CHECK_FAILS_WITH(tf_face_model_from_photo_pixels(NULL, 120, 100, 360, TF_PIXEL_FORMAT_RGB8, NULL, &face),

@@ -282,8 +282,30 @@ static int test_errors_name_the_file_the_sentence_and_the_argument(void) {
     return failures;
 }
 
+static int test_the_alignment_plot_is_an_svg_of_the_clip(void) {
+    int failures = 0;
+    tf_timeline *transcript = clip_transcript();
+    tf_timeline *aligned = NULL;
+    char *svg = NULL;
+    size_t length = 0;
+    CHECK_OK(tf_align_file(kClipPath, transcript, NULL, NULL, NULL, &aligned));
+    CHECK_OK(tf_alignment_plot_svg(kClipPath, aligned, &svg, &length));
+    CHECK(svg != NULL && strncmp(svg, "<svg ", 5) == 0 && strlen(svg) == length);
+    CHECK(svg != NULL && strstr(svg, "放 fang4") != NULL);
+    tf_free(svg);
+    svg = NULL;
+    CHECK_FAILS_WITH(tf_alignment_plot_svg("no_such_speech.wav", aligned, &svg, NULL), TF_ERR_FILE,
+                     "no_such_speech.wav");
+    CHECK(svg == NULL);
+    CHECK_FAILS_WITH(tf_write_alignment_plot_svg(NULL, kClipPath, aligned), TF_ERR_INVALID_ARGUMENT, "svg_path");
+    tf_timeline_destroy(aligned);
+    tf_timeline_destroy(transcript);
+    return failures;
+}
+
 int main(void) {
     int failures = 0;
+    failures += test_the_alignment_plot_is_an_svg_of_the_clip();
     failures += test_file_and_its_samples_align_alike();
     failures += test_progress_rises_and_a_non_zero_return_cancels();
     failures += test_options_are_checked_and_reach_the_aligner();

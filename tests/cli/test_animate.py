@@ -73,3 +73,25 @@ def test_a_bad_background_image_is_named(tmp_path):
     assert result.returncode == 1
     assert "background_image_path" in result.stderr
     assert not (tmp_path / "news.html").exists()
+
+
+def test_demo_takes_a_style_file_and_kinds_switched_off(tmp_path):
+    style = tmp_path / "calm.json"
+    style.write_text('{"base": "announcer", "blink_interval_scale_s": 3.0}', encoding="utf-8")
+    page = tmp_path / "calm.html"
+    result = run("demo", "--style", style, "--without", "tilt,turn,nod", "-o", page)
+    assert result.returncode == 0, result.stderr
+    assert page.read_text(encoding="utf-8").startswith("<!DOCTYPE html>")
+
+
+def test_a_bad_style_file_fails_before_the_alignment_and_writes_nothing(tmp_path):
+    style = tmp_path / "loud.json"
+    style.write_text('{\n  "turn_angle_deg": [5, 25]\n}', encoding="utf-8")
+    page = tmp_path / "page.html"
+    for command in (["demo"], ["animate", SPEECH / "demo.ogg", SPEECH / "demo.txt"]):
+        result = run(*command, "--style", style, "-o", page)
+        assert result.returncode == 1
+        assert result.stderr.startswith(f'talkface: error: {style}:2:21: key "turn_angle_deg": expected a range'), \
+            result.stderr
+        assert not page.exists()
+    assert run("demo", "--without", "wink", "-o", page).returncode == 2

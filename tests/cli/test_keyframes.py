@@ -163,3 +163,73 @@ def test_usage_errors_exit_2(timeline):
     assert run("keyframes", "--timeline", timeline, "--style", "shouty", "-o", "-").returncode == 2
     assert run("keyframes", "--timeline", timeline, "--events-mode", "merge", "-o", "-").returncode == 2
     assert run("keyframes", "--timeline", timeline).returncode == 2
+
+
+def long_timeline(tmp_path, seconds=300.0):
+    document = json.loads(json.dumps(TIMELINE))
+    document["duration"] = seconds
+    return write_json(tmp_path, "long.json", document)
+
+
+def test_a_style_file_changes_the_simulated_events(tmp_path):
+    timeline = long_timeline(tmp_path)
+    style = write_json(tmp_path, "style.json", {"blink_duration_s": [0.5, 0.5], "tilt_angle_deg": [9, 10]})
+    document = json.loads(keyframes("--timeline", timeline, "--seed", 5, "--style", style, "-o", "-").stdout)
+    blinks, tilts = events_of(document, "blink"), events_of(document, "tilt")
+    assert len(blinks) > 20 and len(tilts) > 20
+    assert all(abs(e["end"] - e["start"] - 0.5) < 0.0015 for e in blinks)
+    assert all(9 <= abs(e["amount"]) <= 10 for e in tilts)
+    default = json.loads(keyframes("--timeline", timeline, "--seed", 5, "-o", "-").stdout)
+    assert events_of(default, "blink") != blinks
+    # Kinds the file leaves alone draw from their own streams: unchanged.
+    assert events_of(default, "turn") == events_of(document, "turn")
+
+
+def test_a_style_file_with_a_base_equals_the_named_style(tmp_path):
+    timeline = long_timeline(tmp_path, 60.0)
+    style = write_json(tmp_path, "style.json", {"base": "announcer"})
+    named = keyframes("--timeline", timeline, "--seed", 9, "--style", "announcer", "-o", "-").stdout
+    assert keyframes("--timeline", timeline, "--seed", 9, "--style", style, "-o", "-").stdout == named
+    assert keyframes("--timeline", timeline, "--seed", 9, "-o", "-").stdout != named
+
+
+def test_without_switches_kinds_off_and_leaves_the_others_alone(tmp_path):
+    timeline = long_timeline(tmp_path, 60.0)
+    default = json.loads(keyframes("--timeline", timeline, "--seed", 2, "-o", "-").stdout)
+    fewer = json.loads(keyframes("--timeline", timeline, "--seed", 2, "--without", "blink,nod", "-o", "-").stdout)
+    assert events_of(default, "blink") and events_of(default, "nod")
+    assert not events_of(fewer, "blink") and not events_of(fewer, "nod")
+    assert fewer["events"] == [e for e in default["events"] if e["kind"] not in ("blink", "nod")]
+    # The file's switches and --without add up; the caller's own events of a kind switched off stay.
+    style = write_json(tmp_path, "style.json", {"is_turn_simulated": False})
+    blink = {"kind": "blink", "start": 1.0, "end": 1.2, "amount": 1}
+    events = write_json(tmp_path, "events.json", [blink])
+    both = json.loads(keyframes("--timeline", timeline, "--seed", 2, "--style", style, "--without", "blink",
+                                "--events", events, "-o", "-").stdout)
+    assert {e["kind"] for e in both["events"]} == {"blink", "brows", "tilt", "nod"}
+    assert events_of(both, "blink") == [blink]
+
+
+@pytest.mark.parametrize(
+    "text, where",
+    [
+        ('{\n  "blink_scale": 2\n}', ':2:3: key "blink_scale": unknown key; the keys are base, name, '),
+        ('{"tilt_angle_deg": [2, 20]}', ':1:20: key "tilt_angle_deg": expected a range with 0 <= min <= max <= 15'),
+        ('{"is_nod_simulated": "no"}', ':1:22: key "is_nod_simulated": expected true or false, found "no"'),
+        ('{"base": "loud"}', ':1:10: key "base": expression style "loud"'),
+        ('{"nod_up_s": [0.3, 0.5],}', ":1:25: expected a key in quotes"),
+    ],
+)
+def test_a_bad_style_file_exits_1_naming_the_file_line_and_key(tmp_path, timeline, text, where):
+    style = write_json(tmp_path, "style.json", text)
+    out = tmp_path / "keys.json"
+    result = run("keyframes", "--timeline", timeline, "--style", style, "-o", out)
+    assert result.returncode == 1
+    assert result.stderr.startswith(f"talkface: error: {style}{where}"), result.stderr
+    assert not out.exists()
+
+
+def test_style_usage_errors_exit_2(tmp_path, timeline):
+    assert run("keyframes", "--timeline", timeline, "--style", tmp_path / "missing.json", "-o", "-").returncode == 2
+    assert run("keyframes", "--timeline", timeline, "--without", "wink", "-o", "-").returncode == 2
+    assert run("keyframes", "--timeline", timeline, "--without", "blink,wink", "-o", "-").returncode == 2

@@ -72,6 +72,26 @@ std::vector<double> intervals_of(const std::vector<ExpressionEvent>& events) {
     return result;
 }
 
+std::vector<ExpressionEvent> without_kind(const std::vector<ExpressionEvent>& events,
+                                          ExpressionEventKind kind) {
+    std::vector<ExpressionEvent> result;
+    for (const auto& event : events) {
+        if (event.kind != kind) result.push_back(event);
+    }
+    return result;
+}
+
+double mean_interval_s(const std::vector<ExpressionEvent>& events) {
+    const std::vector<double> intervals = intervals_of(events);
+    double sum_s = 0.0;
+    for (const double interval_s : intervals) sum_s += interval_s;
+    return sum_s / static_cast<double>(intervals.size());
+}
+
+constexpr ExpressionEventKind kKinds[] = {ExpressionEventKind::blink, ExpressionEventKind::brows,
+                                          ExpressionEventKind::tilt, ExpressionEventKind::turn,
+                                          ExpressionEventKind::nod};
+
 std::vector<double> durations_of(const std::vector<ExpressionEvent>& events) {
     std::vector<double> result;
     for (const auto& event : events) {
@@ -328,5 +348,78 @@ TEST_SUITE("ExpressionSimulator") {
         CHECK(pauses[1] == doctest::Approx(6.5));
         CHECK(pauses[2] == doctest::Approx(9.5));
         CHECK(pause_starts_s(timeline, 0.6).size() == 2);
+    }
+
+    TEST_CASE("a kind switched off has no events and the others stay exactly the same") {
+        const Timeline timeline = long_timeline(15);
+        const ExpressionSimulator all(timeline, 2024);
+        for (const ExpressionEventKind kind : kKinds) {
+            CAPTURE(expression_event_kind_name(kind));
+            ExpressionStyle style;
+            style.set_simulated(kind, false);
+            CHECK(!style.is_simulated(kind));
+            const ExpressionSimulator without(timeline, 2024, style);
+            CHECK(!of_kind(all.simulated_events(), kind).empty());
+            CHECK(of_kind(without.simulated_events(), kind).empty());
+            CHECK(without.simulated_events() == without_kind(all.simulated_events(), kind));
+        }
+        ExpressionStyle none;
+        for (const ExpressionEventKind kind : kKinds) none.set_simulated(kind, false);
+        const ExpressionSimulator still(timeline, 2024, none);
+        CHECK(still.simulated_events().empty());
+        CHECK(still.pose_at(30.0) == Pose{});
+    }
+
+    TEST_CASE("a caller's events of a kind switched off are kept") {
+        ExpressionStyle style;
+        style.is_nod_simulated = false;
+        ExpressionSimulator simulator(short_timeline(), 5, style);
+        const ExpressionEvent nod{ExpressionEventKind::nod, 5.0, 5.4, 5.0};
+        simulator.set_user_events({nod});
+        CHECK(of_kind(simulator.events(), ExpressionEventKind::nod) == std::vector<ExpressionEvent>{nod});
+    }
+
+    TEST_CASE("the mean time between blinks follows a changed scale") {
+        // Gamma(shape k, scale theta) has mean k theta: 2.96 s by default, 6 s with theta = 3.
+        const Timeline timeline = long_timeline(2500);
+        ExpressionStyle slow;
+        slow.set_number("blink_interval_scale_s", 3.0);
+        ExpressionStyle rare_shape;
+        rare_shape.set_integer("blink_interval_shape", 4);
+        const double normal_mean = mean_interval_s(of_kind(ExpressionSimulator(timeline, 3).simulated_events(),
+                                                           ExpressionEventKind::blink));
+        const double slow_mean = mean_interval_s(of_kind(ExpressionSimulator(timeline, 3, slow).simulated_events(),
+                                                         ExpressionEventKind::blink));
+        const double shape_mean = mean_interval_s(
+            of_kind(ExpressionSimulator(timeline, 3, rare_shape).simulated_events(), ExpressionEventKind::blink));
+        // The sample mean of ~6000 draws is within 3% of the expectation (sd / mean = 1 / sqrt(2 n)).
+        CHECK(normal_mean == doctest::Approx(2.96).epsilon(0.03));
+        CHECK(slow_mean == doctest::Approx(6.0).epsilon(0.03));
+        CHECK(shape_mean == doctest::Approx(5.92).epsilon(0.03));
+    }
+
+    TEST_CASE("a custom angle range bounds the simulated tilts") {
+        ExpressionStyle style;
+        style.tilt_angle_deg = {9.0, 10.0};
+        const ExpressionSimulator simulator(long_timeline(75), 8, style);
+        const auto tilts = of_kind(simulator.simulated_events(), ExpressionEventKind::tilt);
+        REQUIRE(tilts.size() > 50);
+        for (const auto& tilt : tilts) {
+            CAPTURE(tilt.amount);
+            CHECK(std::abs(tilt.amount) >= 9.0);
+            CHECK(std::abs(tilt.amount) <= 10.0);
+        }
+        CHECK(simulator.style() == style);
+    }
+
+    TEST_CASE("a style read from JSON simulates the same events as the same style built in C++") {
+        ExpressionStyle built = ExpressionStyle::announcer();
+        built.blink_duration_s = {0.2, 0.25};
+        built.is_tilt_simulated = false;
+        const ExpressionStyle read = ExpressionStyle::from_json(
+            "{\"base\": \"announcer\", \"blink_duration_s\": [0.2, 0.25], \"is_tilt_simulated\": false}");
+        const Timeline timeline = long_timeline(8);
+        CHECK(ExpressionSimulator(timeline, 11, read).simulated_events() ==
+              ExpressionSimulator(timeline, 11, built).simulated_events());
     }
 }

@@ -144,6 +144,8 @@ TEST_SUITE("FaceModel") {
              "non_numeric.xml:67:21: ", "point \"8.3\": attribute x: expected a number, found \"22e3x\""},
             {"non_finite.xml",
              "non_finite.xml:67:29: ", "point \"8.3\": attribute y: expected a finite number, found \"inf\""},
+            {"huge_coordinate.xml",
+             "huge_coordinate.xml:67:29: ", "point \"8.3\": attribute y: \"5.2e81\" is beyond +-1e6 px"},
             {"bad_colour.xml", "bad_colour.xml:4:11: ", "colour \"skin\": expected #rrggbb or #rgb"},
             {"non_positive_fapu.xml", "non_positive_fapu.xml:5:", "FAPU \"MW0\": must be positive"},
             {"same_eyeballs.xml",

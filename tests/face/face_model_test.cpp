@@ -204,9 +204,13 @@ TEST_SUITE("FaceModel") {
         FaceModel face;
         CHECK_THROWS_WITH_AS(face.point("8.5"), doctest::Contains("point \"8.5\""), InvalidArgument);
         CHECK_THROWS_AS(face.set_point("2.2", {NAN, 1.0}), InvalidArgument);
+        CHECK_THROWS_WITH_AS(face.set_point("2.2", {1.0, -1.5e6}), doctest::Contains("-1500000"), InvalidArgument);
+        face.set_point("2.2", {FaceModel::kMaxCoordinatePx, -FaceModel::kMaxCoordinatePx});
+        face.set_point("2.2", FaceModel::default_face().point("2.2"));
         CHECK_THROWS_WITH_AS(face.fapu("MW1"), doctest::Contains("FAPU \"MW1\""), InvalidArgument);
         CHECK_THROWS_AS(face.set_fapu("MW0", 0.0), InvalidArgument);
         CHECK_THROWS_AS(face.set_fapu("MW0", INFINITY), InvalidArgument);
+        CHECK_THROWS_WITH_AS(face.set_fapu("MW0", 2e7), doctest::Contains("at most 1e7"), InvalidArgument);
         CHECK(face == FaceModel::default_face());
         CHECK(FaceModel::is_point_id("hair.23"));
         CHECK_FALSE(FaceModel::is_point_id("hair.24"));

@@ -160,47 +160,33 @@ TEST_SUITE("face pose") {
         const FaceModel neutral = FaceModel::default_face();
         const auto partner = mirror_partners();
         const double axis_x = rotation_origin(neutral).x;
-        for (double alpha_deg : test::pose_angles_deg()) {
-            for (double beta_deg : test::pose_angles_deg()) {
-                for (double gamma_deg : test::pose_angles_deg()) {
-                    CAPTURE(alpha_deg);
-                    CAPTURE(beta_deg);
-                    CAPTURE(gamma_deg);
-                    const ProjectedFace face = project_face(neutral, posed(alpha_deg, beta_deg, gamma_deg));
-                    const ProjectedFace mirror =
-                        project_face(neutral, posed(alpha_deg, -beta_deg, -gamma_deg));
-                    for (const std::string& id : face.ids) {
-                        CAPTURE(id);
-                        REQUIRE(partner.count(id) == 1);
-                        const Point2 p = face.point(id);
-                        const Point2 q = mirror.point(partner.at(id));
-                        CHECK(std::abs(p.x - (2.0 * axis_x - q.x)) <= 1e-9);
-                        CHECK(std::abs(p.y - q.y) <= 1e-9);
-                    }
-                    for (std::size_t k = 0; k < 3; ++k) {
-                        CHECK(face.left_contour[k] == partner.at(mirror.right_contour[k]));
-                    }
-                    if (beta_deg != 0.0) CHECK(face.nose_bridge != mirror.nose_bridge);
-                }
+        test::for_each_grid_pose([&](double alpha_deg, double beta_deg, double gamma_deg) {
+            const ProjectedFace face = project_face(neutral, posed(alpha_deg, beta_deg, gamma_deg));
+            const ProjectedFace mirror =
+                project_face(neutral, posed(alpha_deg, -beta_deg, -gamma_deg));
+            for (const std::string& id : face.ids) {
+                CAPTURE(id);
+                REQUIRE(partner.count(id) == 1);
+                const Point2 p = face.point(id);
+                const Point2 q = mirror.point(partner.at(id));
+                CHECK(std::abs(p.x - (2.0 * axis_x - q.x)) <= 1e-9);
+                CHECK(std::abs(p.y - q.y) <= 1e-9);
             }
-        }
+            for (std::size_t k = 0; k < 3; ++k) {
+                CHECK(face.left_contour[k] == partner.at(mirror.right_contour[k]));
+            }
+            if (beta_deg != 0.0) CHECK(face.nose_bridge != mirror.nose_bridge);
+        });
     }
 
     TEST_CASE("the hair polygon stays simple at every pose of the grid") {
         for (const auto& [name, neutral] : test::test_faces()) {
             CAPTURE(name);
             REQUIRE(is_simple(project_face(neutral, {}).hair_polygon()));
-            for (double alpha_deg : test::pose_angles_deg()) {
-                for (double beta_deg : test::pose_angles_deg()) {
-                    for (double gamma_deg : test::pose_angles_deg()) {
-                        CAPTURE(alpha_deg);
-                        CAPTURE(beta_deg);
-                        CAPTURE(gamma_deg);
-                        CHECK(is_simple(
-                            project_face(neutral, posed(alpha_deg, beta_deg, gamma_deg)).hair_polygon()));
-                    }
-                }
-            }
+            test::for_each_grid_pose([&](double alpha_deg, double beta_deg, double gamma_deg) {
+                CHECK(is_simple(
+                    project_face(neutral, posed(alpha_deg, beta_deg, gamma_deg)).hair_polygon()));
+            });
         }
     }
 
@@ -209,24 +195,17 @@ TEST_SUITE("face pose") {
         // face turns towards, the flat hair must not slide inside the face's outline.
         for (const auto& [name, neutral] : test::test_faces()) {
             CAPTURE(name);
-            for (double alpha_deg : test::pose_angles_deg()) {
-                for (double beta_deg : test::pose_angles_deg()) {
-                    for (double gamma_deg : test::pose_angles_deg()) {
-                        CAPTURE(alpha_deg);
-                        CAPTURE(beta_deg);
-                        CAPTURE(gamma_deg);
-                        const ProjectedFace face =
-                            project_face(neutral, posed(alpha_deg, beta_deg, gamma_deg));
-                        const std::vector<Point2> hair = face.hair_polygon();
-                        for (const std::string& id :
-                             {face.left_contour[0], std::string("11.2a"), std::string("11.1"),
-                              std::string("11.3a"), face.right_contour[0]}) {
-                            CAPTURE(id);
-                            CHECK(is_inside(face.point(id), hair));
-                        }
-                    }
+            test::for_each_grid_pose([&](double alpha_deg, double beta_deg, double gamma_deg) {
+                const ProjectedFace face =
+                    project_face(neutral, posed(alpha_deg, beta_deg, gamma_deg));
+                const std::vector<Point2> hair = face.hair_polygon();
+                for (const std::string& id :
+                     {face.left_contour[0], std::string("11.2a"), std::string("11.1"),
+                      std::string("11.3a"), face.right_contour[0]}) {
+                    CAPTURE(id);
+                    CHECK(is_inside(face.point(id), hair));
                 }
-            }
+            });
         }
     }
 

@@ -40,67 +40,46 @@ Point3 thesis_rotation(Point3 p, double alpha_deg, double beta_deg, double gamma
 
 TEST_SUITE("Rotation3D") {
     TEST_CASE("every pose of the grid is a proper rotation: R R^T = I and det R = 1") {
-        for (double alpha_deg : test::pose_angles_deg()) {
-            for (double beta_deg : test::pose_angles_deg()) {
-                for (double gamma_deg : test::pose_angles_deg()) {
-                    CAPTURE(alpha_deg);
-                    CAPTURE(beta_deg);
-                    CAPTURE(gamma_deg);
-                    const Rotation3D r(alpha_deg, beta_deg, gamma_deg);
-                    for (int i = 0; i < 3; ++i) {
-                        for (int j = 0; j < 3; ++j) {
-                            double dot = 0.0;
-                            for (int k = 0; k < 3; ++k) dot += entry(r, i, k) * entry(r, j, k);
-                            CHECK(std::abs(dot - (i == j ? 1.0 : 0.0)) <= 1e-12);
-                        }
-                    }
-                    CHECK(std::abs(determinant(r) - 1.0) <= 1e-12);
+        test::for_each_grid_pose([&](double alpha_deg, double beta_deg, double gamma_deg) {
+            const Rotation3D r(alpha_deg, beta_deg, gamma_deg);
+            for (int i = 0; i < 3; ++i) {
+                for (int j = 0; j < 3; ++j) {
+                    double dot = 0.0;
+                    for (int k = 0; k < 3; ++k) dot += entry(r, i, k) * entry(r, j, k);
+                    CHECK(std::abs(dot - (i == j ? 1.0 : 0.0)) <= 1e-12);
                 }
             }
-        }
+            CHECK(std::abs(determinant(r) - 1.0) <= 1e-12);
+        });
     }
 
     TEST_CASE("rotate then unrotate gives the point back") {
         const Point3 points[] = {
             {0, 0, 0}, {120.5, -33.25, 90.0}, {-200.0, 180.0, -40.0}, {1e-3, 2e-3, 3e-3}};
-        for (double alpha_deg : test::pose_angles_deg()) {
-            for (double beta_deg : test::pose_angles_deg()) {
-                for (double gamma_deg : test::pose_angles_deg()) {
-                    CAPTURE(alpha_deg);
-                    CAPTURE(beta_deg);
-                    CAPTURE(gamma_deg);
-                    const Rotation3D r(alpha_deg, beta_deg, gamma_deg);
-                    for (const Point3& p : points) {
-                        const Point3 there = r.rotate(p);
-                        const Point3 back = r.unrotate(there);
-                        CHECK(std::abs(back.x - p.x) <= 1e-12 * 300.0);
-                        CHECK(std::abs(back.y - p.y) <= 1e-12 * 300.0);
-                        CHECK(std::abs(back.z - p.z) <= 1e-12 * 300.0);
-                        // A rotation keeps lengths.
-                        CHECK(std::hypot(there.x, there.y, there.z) ==
-                              doctest::Approx(std::hypot(p.x, p.y, p.z)).epsilon(1e-12));
-                    }
-                }
+        test::for_each_grid_pose([&](double alpha_deg, double beta_deg, double gamma_deg) {
+            const Rotation3D r(alpha_deg, beta_deg, gamma_deg);
+            for (const Point3& p : points) {
+                const Point3 there = r.rotate(p);
+                const Point3 back = r.unrotate(there);
+                CHECK(std::abs(back.x - p.x) <= 1e-12 * 300.0);
+                CHECK(std::abs(back.y - p.y) <= 1e-12 * 300.0);
+                CHECK(std::abs(back.z - p.z) <= 1e-12 * 300.0);
+                // A rotation keeps lengths.
+                CHECK(std::hypot(there.x, there.y, there.z) ==
+                      doctest::Approx(std::hypot(p.x, p.y, p.z)).epsilon(1e-12));
             }
-        }
+        });
     }
 
     TEST_CASE("the matrix is the thesis's Y, X, Z formulas with SPEC's sign in z2") {
         const Point3 p{37.0, -52.5, 81.25};
-        for (double alpha_deg : test::pose_angles_deg()) {
-            for (double beta_deg : test::pose_angles_deg()) {
-                for (double gamma_deg : test::pose_angles_deg()) {
-                    CAPTURE(alpha_deg);
-                    CAPTURE(beta_deg);
-                    CAPTURE(gamma_deg);
-                    const Point3 got = Rotation3D(alpha_deg, beta_deg, gamma_deg).rotate(p);
-                    const Point3 want = thesis_rotation(p, alpha_deg, beta_deg, gamma_deg);
-                    CHECK(std::abs(got.x - want.x) <= 1e-12);
-                    CHECK(std::abs(got.y - want.y) <= 1e-12);
-                    CHECK(std::abs(got.z - want.z) <= 1e-12);
-                }
-            }
-        }
+        test::for_each_grid_pose([&](double alpha_deg, double beta_deg, double gamma_deg) {
+            const Point3 got = Rotation3D(alpha_deg, beta_deg, gamma_deg).rotate(p);
+            const Point3 want = thesis_rotation(p, alpha_deg, beta_deg, gamma_deg);
+            CHECK(std::abs(got.x - want.x) <= 1e-12);
+            CHECK(std::abs(got.y - want.y) <= 1e-12);
+            CHECK(std::abs(got.z - want.z) <= 1e-12);
+        });
     }
 
     TEST_CASE("zero angles are the identity, bit for bit") {

@@ -33,9 +33,21 @@ inline std::vector<NamedFace> test_faces() {
     return faces;
 }
 
-// -15, -10, ..., 15: the pose grid of STYLE.md section 6.
-inline std::vector<double> pose_angles_deg() {
-    return {-15.0, -10.0, -5.0, 0.0, 5.0, 10.0, 15.0};
+// Calls `check(alpha_deg, beta_deg, gamma_deg)` for every pose of the grid of STYLE.md section 6
+// (-15, -10, ..., 15 degrees on each axis), with the angles captured for any failure's message.
+template <typename Check>
+void for_each_grid_pose(Check&& check) {
+    constexpr double kAnglesDeg[] = {-15.0, -10.0, -5.0, 0.0, 5.0, 10.0, 15.0};
+    for (const double alpha_deg : kAnglesDeg) {
+        for (const double beta_deg : kAnglesDeg) {
+            for (const double gamma_deg : kAnglesDeg) {
+                CAPTURE(alpha_deg);
+                CAPTURE(beta_deg);
+                CAPTURE(gamma_deg);
+                check(alpha_deg, beta_deg, gamma_deg);
+            }
+        }
+    }
 }
 
 }  // namespace talkface::test

@@ -33,7 +33,8 @@ def test_same_seed_gives_the_same_events_and_another_seed_others():
 def test_styles_are_named_and_an_unknown_one_is_refused():
     timeline = long_timeline()
     announcer = talkface.ExpressionSimulator(timeline, 1, style="announcer")
-    assert announcer.style == "announcer"
+    assert announcer.style == talkface.ExpressionStyle.announcer()
+    assert announcer.style.name == "announcer"
     assert announcer.seed == 1
     assert announcer.duration_s == 60.0
     with pytest.raises(talkface.InvalidArgument, match="announcer"):

@@ -212,3 +212,18 @@ def test_numpy_shapes_are_checked_and_named():
         aligner.align(samples, 100, transcript)
     with pytest.raises(TypeError):
         aligner.align("not samples", rate_hz, transcript)
+
+
+def test_alignment_plot_marks_every_syllable_and_is_written_whole(tmp_path, from_file):
+    import xml.etree.ElementTree as ET
+
+    svg = talkface.alignment_plot_svg(CLIP, from_file)
+    root = ET.fromstring(svg)
+    labels = [t.text for t in root.iter("{http://www.w3.org/2000/svg}text") if t.text and not t.text.endswith(" s")]
+    assert labels == [f"{s.text} {s.pinyin}" for s in from_file.syllables]
+    out = tmp_path / "plot.svg"
+    talkface.write_alignment_plot_svg(out, CLIP, from_file)
+    assert out.read_text(encoding="utf-8") == svg
+    with pytest.raises(talkface.FileError, match="no_such_speech.wav"):
+        talkface.write_alignment_plot_svg(tmp_path / "never.svg", tmp_path / "no_such_speech.wav", from_file)
+    assert not (tmp_path / "never.svg").exists()

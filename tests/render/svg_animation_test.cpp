@@ -3,8 +3,9 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <array>
+#include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -14,7 +15,9 @@
 
 #include <pugixml.hpp>
 
+#include "common/number_format.hpp"
 #include "common/test_paths.hpp"
+#include "render/svg_text.hpp"
 #include "talkface/animation.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/expression_simulator.hpp"
@@ -93,48 +96,139 @@ std::vector<double> animated_numbers(const pugi::xml_node& animate, double t) {
     return result;
 }
 
-// A 2D affine map [a c e; b d f] as (a, b, c, d, e, f), the order of SVG's matrix().
-using Affine = std::array<double, 6>;
+// Path data as commands, each with its numbers ("M1,2 c3-4 5 6 7 8" -> M{1,2} c{3,-4,5,6,7,8}).
+struct PathCommand {
+    char letter;
+    std::vector<double> numbers;
+};
 
-Affine multiply(const Affine& m, const Affine& n) {
-    return {m[0] * n[0] + m[2] * n[1], m[1] * n[0] + m[3] * n[1], m[0] * n[2] + m[2] * n[3],
-            m[1] * n[2] + m[3] * n[3], m[0] * n[4] + m[2] * n[5] + m[4], m[1] * n[4] + m[3] * n[5] + m[5]};
+std::vector<PathCommand> path_commands(const std::string& data) {
+    std::vector<PathCommand> commands;
+    std::size_t i = 0;
+    while (i < data.size()) {
+        if (std::isalpha(static_cast<unsigned char>(data[i]))) {
+            commands.push_back({data[i], {}});
+            ++i;
+            continue;
+        }
+        std::size_t end = data.find_first_of("MmLlCcSsQqZz", i);
+        if (end == std::string::npos) end = data.size();
+        REQUIRE(!commands.empty());
+        const std::vector<double> numbers = numbers_of(data.substr(i, end - i));
+        commands.back().numbers.insert(commands.back().numbers.end(), numbers.begin(), numbers.end());
+        i = end;
+    }
+    return commands;
 }
 
-Affine transform_of(const std::string& type, const std::vector<double>& v) {
-    const double radians = 3.14159265358979323846 / 180.0;
-    if (type == "translate") return {1, 0, 0, 1, v[0], v.size() > 1 ? v[1] : 0.0};
-    if (type == "rotate") return {std::cos(v[0] * radians), std::sin(v[0] * radians), -std::sin(v[0] * radians),
-                                  std::cos(v[0] * radians), 0, 0};
-    if (type == "skewX") return {1, 0, std::tan(v[0] * radians), 1, 0, 0};
-    if (type == "scale") return {v[0], 0, 0, v.size() > 1 ? v[1] : v[0], 0, 0};
-    FAIL("unexpected transform " << type);
-    return {};
-}
-
-// The points a polygon shows at key time `t`: its points (or their <animate> interpolated) under its
-// transform and every <animateTransform> (additive="sum": each multiplies on the right).
-std::vector<double> polygon_points_at(const pugi::xml_node& polygon, double t) {
-    const pugi::xml_node animate = polygon.child("animate");
-    std::vector<double> points =
-        animate ? animated_numbers(animate, t) : numbers_of(polygon.attribute("points").value());
-    Affine map{1, 0, 0, 1, 0, 0};
-    const std::string base = polygon.attribute("transform").value();
-    if (!base.empty()) {
-        REQUIRE(base.rfind("translate(", 0) == 0);
-        map = transform_of("translate", numbers_of(base));
-    }
-    for (const pugi::xml_node animation : polygon.children("animateTransform")) {
-        CHECK(std::string(animation.attribute("additive").value()) == "sum");
-        map = multiply(map, transform_of(animation.attribute("type").value(), animated_numbers(animation, t)));
-    }
-    for (std::size_t k = 0; k + 1 < points.size(); k += 2) {
-        const double x = points[k];
-        const double y = points[k + 1];
-        points[k] = map[0] * x + map[2] * y + map[4];
-        points[k + 1] = map[1] * x + map[3] * y + map[5];
+// The control points a path draws, absolute, as x y x y ...: every point of M, L, C and Q, and
+// for an S the reflected c1 it leaves implicit, so that an S segment lists what a C would.
+std::vector<double> control_points(const std::vector<PathCommand>& commands) {
+    std::vector<double> points;
+    double x = 0.0, y = 0.0, start_x = 0.0, start_y = 0.0, c2_x = 0.0, c2_y = 0.0;
+    for (const PathCommand& command : commands) {
+        const char upper = static_cast<char>(std::toupper(static_cast<unsigned char>(command.letter)));
+        const bool is_relative = command.letter != upper;
+        if (upper == 'Z') {
+            x = start_x;
+            y = start_y;
+            continue;
+        }
+        const std::size_t pairs = upper == 'C' ? 3 : upper == 'S' || upper == 'Q' ? 2 : 1;
+        const std::vector<double>& n = command.numbers;
+        REQUIRE(n.size() % (2 * pairs) == 0);
+        for (std::size_t k = 0; k < n.size(); k += 2 * pairs) {
+            const double base_x = is_relative ? x : 0.0;
+            const double base_y = is_relative ? y : 0.0;
+            if (upper == 'S') {
+                points.push_back(2.0 * x - c2_x);
+                points.push_back(2.0 * y - c2_y);
+            }
+            for (std::size_t p = 0; p < pairs; ++p) {
+                points.push_back(base_x + n[k + 2 * p]);
+                points.push_back(base_y + n[k + 2 * p + 1]);
+            }
+            c2_x = points[points.size() - 4 + (pairs == 1 ? 2 : 0)];
+            c2_y = points[points.size() - 3 + (pairs == 1 ? 2 : 0)];
+            x = points[points.size() - 2];
+            y = points.back();
+            if (upper == 'M' && k == 0) {
+                start_x = x;
+                start_y = y;
+            }
+        }
     }
     return points;
+}
+
+// The value an <animate> of path data gives at key time `t`: its numbers interpolated, in the
+// commands of its first value.
+std::vector<PathCommand> animated_path(const pugi::xml_node& animate, double t) {
+    std::vector<PathCommand> commands =
+        path_commands(split(animate.attribute("values").value(), ';').front());
+    const std::vector<double> numbers = animated_numbers(animate, t);
+    std::size_t next = 0;
+    for (PathCommand& command : commands) {
+        for (double& number : command.numbers) number = numbers.at(next++);
+    }
+    REQUIRE(next == numbers.size());
+    return commands;
+}
+
+// The control points an element shows at key time `t` (x y x y ...): its outline (animated or
+// not) moved by its translate and every <animateTransform type="translate" additive="sum">.
+std::vector<double> shown_points(const pugi::xml_node& element, double t) {
+    std::vector<double> points;
+    if (element.attribute("d")) {
+        const pugi::xml_node animate = element.find_child_by_attribute("animate", "attributeName", "d");
+        points = control_points(animate ? animated_path(animate, t)
+                                        : path_commands(element.attribute("d").value()));
+    } else {
+        for (const char* coordinate : {"cx", "cy"}) {
+            const pugi::xml_node animate =
+                element.find_child_by_attribute("animate", "attributeName", coordinate);
+            points.push_back(animate ? animated_numbers(animate, t).at(0)
+                                     : element.attribute(coordinate).as_double());
+        }
+    }
+    double dx = 0.0, dy = 0.0;
+    const std::string base = element.attribute("transform").value();
+    if (!base.empty()) {
+        REQUIRE(base.rfind("translate(", 0) == 0);
+        const std::vector<double> offset = numbers_of(base);
+        dx += offset.at(0);
+        dy += offset.at(1);
+    }
+    for (const pugi::xml_node animation : element.children("animateTransform")) {
+        REQUIRE(std::string(animation.attribute("type").value()) == "translate");
+        REQUIRE(std::string(animation.attribute("additive").value()) == "sum");
+        const std::vector<double> offset = animated_numbers(animation, t);
+        dx += offset.at(0);
+        dy += offset.at(1);
+    }
+    for (std::size_t k = 0; k + 1 < points.size(); k += 2) {
+        points[k] += dx;
+        points[k + 1] += dy;
+    }
+    return points;
+}
+
+// Where each drawn element of a frame is found by the same XPath in both documents.
+std::vector<std::string> drawn_elements() {
+    std::vector<std::string> paths;
+    for (const char* name : {"hair", "ear-left", "ear-right", "face-contour", "jaw", "nose", "eyebrow-left",
+                             "eyebrow-right", "lips", "mouth-opening"}) {
+        paths.push_back(std::string("//path[@class='") + name + "']");
+    }
+    for (const char* id : {"tf-eye-left", "tf-eye-right"})
+        paths.push_back(std::string("//path[@id='") + id + "']");
+    for (const char* side : {"left", "right"}) {
+        for (int circle = 1; circle <= 3; ++circle) {
+            paths.push_back(std::string("//g[@class='eyeball-") + side + "']/circle[" +
+                            std::to_string(circle) + "]");
+        }
+    }
+    return paths;
 }
 
 }  // namespace
@@ -162,33 +256,117 @@ TEST_SUITE("SvgAnimator animation") {
         CHECK(document.select_node("//path[@class='lips']/animate[@attributeName='d']"));
     }
 
-    TEST_CASE("the interpolated hair and eyebrows stay within the tolerance of every frame") {
+    TEST_CASE("every drawn point stays within the tolerance of every frame") {
         const FaceModel face = FaceModel::default_face();
         const Timeline timeline = spoken_timeline();
         const Animation animation = spoken_animation(face, timeline);
         const SvgAnimator animator(face);
-        const pugi::xml_document document = parse(animator.render_animation_svg(animation));
-        // The head turns in this animation, and the hair follows as one affine map, not point by point.
-        CHECK(document.select_node("//polygon[@class='hair']/animateTransform[@type='rotate']"));
-        const double last_frame = static_cast<double>(animation.frames.size() - 1);
-        // 0.3 px tolerance plus the 0.05 px of writing values in tenths and 0.005 of the frames' decimals.
-        const double allowed = SvgAnimationOptions{}.tolerance_px + 0.06;
-        for (std::size_t frame = 0; frame < animation.frames.size(); frame += 3) {
-            CAPTURE(frame);
-            const pugi::xml_document expected = parse(animator.render_svg(animation.frames[frame]));
-            const double t = static_cast<double>(frame) / last_frame;
-            for (const std::string name : {"hair", "eyebrow-left", "eyebrow-right"}) {
-                CAPTURE(name);
-                const std::string path = "//polygon[@class='" + name + "']";
-                const std::vector<double> shown = polygon_points_at(document.select_node(path.c_str()).node(), t);
-                const std::vector<double> want =
-                    numbers_of(expected.select_node(path.c_str()).node().attribute("points").value());
-                REQUIRE(shown.size() == want.size());
-                double worst = 0.0;
-                for (std::size_t k = 0; k < want.size(); ++k) worst = std::max(worst, std::abs(shown[k] - want[k]));
-                CHECK(worst <= allowed);
+        for (const double tolerance_px : {0.3, 1.0}) {
+            CAPTURE(tolerance_px);
+            SvgAnimationOptions options;
+            options.tolerance_px = tolerance_px;
+            const pugi::xml_document document = parse(animator.render_animation_svg(animation, options));
+            // The head turns, and outlines move under a translate of their own.
+            CHECK(document.select_node("//path[@class='nose']/animateTransform[@type='translate']"));
+            // The tolerance, plus the rounding of values written in tenths (0.05 px), of the
+            // translates (0.01 px) and of the frames' own two decimals (0.005 px); a c1 that an S
+            // leaves implicit is made of three rounded points and the frame's own rounding (0.17 px).
+            const double allowed = tolerance_px + 0.07;
+            const double allowed_implicit = tolerance_px + 0.19;
+            const double last_frame = static_cast<double>(animation.frames.size() - 1);
+            for (std::size_t frame = 0; frame < animation.frames.size(); frame += 2) {
+                CAPTURE(frame);
+                const pugi::xml_document expected = parse(animator.render_svg(animation.frames[frame]));
+                const double t = static_cast<double>(frame) / last_frame;
+                for (const std::string& path : drawn_elements()) {
+                    CAPTURE(path);
+                    const pugi::xml_node shown_node = document.select_node(path.c_str()).node();
+                    const pugi::xml_node want_node = expected.select_node(path.c_str()).node();
+                    REQUIRE(shown_node);
+                    REQUIRE(want_node);
+                    const std::vector<double> shown = shown_points(shown_node, t);
+                    const std::vector<double> want = shown_points(want_node, 0.0);
+                    REQUIRE(shown.size() == want.size());
+                    // Implicit c1s: where the animated path writes S and the frame writes C.
+                    std::vector<bool> is_implicit(want.size() / 2, false);
+                    if (const pugi::xml_node animate =
+                            shown_node.find_child_by_attribute("animate", "attributeName", "d")) {
+                        std::size_t point = 0;
+                        for (const PathCommand& command : animated_path(animate, t)) {
+                            const char upper =
+                                static_cast<char>(std::toupper(static_cast<unsigned char>(command.letter)));
+                            if (upper == 'Z') continue;
+                            const std::size_t pairs = upper == 'C' ? 3 : upper == 'S' || upper == 'Q' ? 2 : 1;
+                            for (std::size_t k = 0; k < command.numbers.size(); k += 2 * pairs) {
+                                if (upper == 'S') is_implicit.at(point++) = true;
+                                point += pairs;
+                            }
+                        }
+                    }
+                    double worst = 0.0, worst_implicit = 0.0;
+                    for (std::size_t k = 0; k < want.size(); ++k) {
+                        const double gap = std::abs(shown[k] - want[k]);
+                        (is_implicit[k / 2] ? worst_implicit : worst) =
+                            std::max(is_implicit[k / 2] ? worst_implicit : worst, gap);
+                    }
+                    CHECK(worst <= allowed);
+                    CHECK(worst_implicit <= allowed_implicit);
+                }
             }
         }
+    }
+
+    TEST_CASE("the same animation gives the same bytes") {
+        const FaceModel face = FaceModel::default_face();
+        const Timeline timeline = spoken_timeline();
+        const Animation animation = spoken_animation(face, timeline);
+        for (AnimationEncoding encoding : {AnimationEncoding::keyframes, AnimationEncoding::frames}) {
+            SvgAnimationOptions options;
+            options.encoding = encoding;
+            CHECK(SvgAnimator(face).render_animation_svg(animation, options) ==
+                  SvgAnimator(face).render_animation_svg(animation, options));
+        }
+    }
+
+    TEST_CASE("a minute of speech takes less than the stated bytes in the keyframes encoding") {
+        // Issue #6 asks for less than 300 KB a minute; this bound keeps what was reached from
+        // growing back (bench/README.md has the figures on 3 minutes of speech).
+        constexpr double kMaxKibPerMinute = 440.0;
+        const FaceModel face = FaceModel::default_face();
+        Timeline timeline;
+        std::string text;
+        for (int sentence = 0; sentence < 20; ++sentence) text += "我們下個星期要去北京開會。";
+        timeline = read_transcript(text);
+        // Four syllables a second, a pause of 0.6 s after each sentence, as a speaker reads.
+        double time_s = 0.5;
+        for (std::size_t k = 0; k < timeline.syllables.size(); ++k) {
+            Syllable& syllable = timeline.syllables[k];
+            syllable.start_s = time_s;
+            syllable.end_s = time_s + 0.25;
+            time_s = syllable.end_s;
+            const bool ends_sentence =
+                k + 1 == timeline.syllables.size() || timeline.syllables[k + 1].sentence != syllable.sentence;
+            if (ends_sentence) time_s += 0.6;
+        }
+        for (std::size_t s = 0; s < timeline.sentences.size(); ++s) {
+            double start = 1e9, end = 0.0;
+            for (const Syllable& syllable : timeline.syllables) {
+                if (syllable.sentence != s) continue;
+                start = std::min(start, syllable.start_s);
+                end = std::max(end, syllable.end_s);
+            }
+            timeline.sentences[s].start_s = start;
+            timeline.sentences[s].end_s = end;
+        }
+        timeline.duration_s = time_s + 0.5;
+        const Animation animation = spoken_animation(face, timeline);
+        const std::string svg = SvgAnimator(face).render_animation_svg(animation);
+        const double kib_per_minute =
+            static_cast<double>(svg.size()) / 1024.0 / (animation.duration_s / 60.0);
+        CAPTURE(animation.duration_s);
+        CHECK(animation.duration_s > 60.0);
+        CHECK(kib_per_minute < kMaxKibPerMinute);
+        MESSAGE("keyframes: " << kib_per_minute << " KiB per minute");
     }
 
     TEST_CASE("the frames encoding shows one group per run of equal frames, ids unique") {
@@ -205,6 +383,26 @@ TEST_SUITE("SvgAnimator animation") {
         for (const pugi::xpath_node& node : document.select_nodes("//*[@id]")) ids.push_back(node.node().attribute("id").value());
         std::sort(ids.begin(), ids.end());
         CHECK(std::adjacent_find(ids.begin(), ids.end()) == ids.end());
+    }
+
+    TEST_CASE("coordinates are written as format_fixed writes them") {
+        std::uint64_t state = 12345;
+        auto next_unit = [&] {
+            state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+            return static_cast<double>(state >> 11) / 9007199254740992.0;
+        };
+        std::vector<double> values{0.0, -0.0, 0.125, -0.125, 2.5, 0.005, -0.004, 1e16, -3e20};
+        for (int i = 0; i < 20000; ++i)
+            values.push_back((next_unit() - 0.5) * std::pow(10.0, 6.0 * next_unit()));
+        for (const double value : values) {
+            for (int decimals = 0; decimals <= 6; ++decimals) {
+                CAPTURE(value);
+                CAPTURE(decimals);
+                std::string text = "x";
+                detail::append_fixed(text, value, decimals);
+                CHECK(text == "x" + detail::format_fixed(value, decimals));
+            }
+        }
     }
 
     TEST_CASE("an animation without frames is refused") {

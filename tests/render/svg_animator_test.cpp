@@ -140,7 +140,7 @@ TEST_CASE("the document is XML with the four layers in thesis order") {
     std::vector<std::string> layers;
     for (pugi::xml_node group : root.children("g")) layers.push_back(group.attribute("id").value());
     CHECK(layers == std::vector<std::string>{"background", "hair", "clothes", "face"});
-    CHECK(root.find_child_by_attribute("g", "id", "hair").child("polygon"));
+    CHECK(root.find_child_by_attribute("g", "id", "hair").find_child_by_attribute("path", "class", "hair"));
     CHECK(node_with_id(document, "face").select_nodes(".//path | .//use").size() >= 10);
 }
 

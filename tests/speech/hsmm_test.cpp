@@ -78,6 +78,32 @@ TEST_SUITE("HSMM search") {
         CHECK(workspace.finish.size() <= kMaxSearchCells);
     }
 
+    TEST_CASE("a pause with a tail holds a silence far longer than its longest explicit duration") {
+        // Two syllables with 1.5 s of silence between them and no sentence mark (a transcript
+        // without punctuation): the pause between them must take it all.
+        PlantedSentence sentence;
+        std::size_t frame = 0;
+        auto add = [&](PhoneState state, std::size_t frames) {
+            sentence.truth.push_back({sentence.states.size(), frame, frame + frames});
+            sentence.states.push_back(state);
+            for (std::size_t t = 0; t < frames; ++t, ++frame)
+                for (int c = 0; c < kPhoneClassCount; ++c) sentence.emissions.values.push_back(c == state.phone_class ? 0.0f : -5.0f);
+        };
+        PhoneState pause = chain_state(kSilence, StateRole::short_pause, 0, 6.0, 60, true);
+        pause.log_sigma = 0.7;
+        pause.has_tail = true;
+        add(chain_state(kSilence, StateRole::edge_silence, 0, 1.0, 110, true), 20);
+        add(chain_state(kSibilant, StateRole::initial, 0, 4.0, 12, false), 4);
+        add(chain_state(kVowelA, StateRole::final, 0, 10.0, 30, false), 10);
+        add(pause, 150);
+        add(chain_state(kSibilant, StateRole::initial, 1, 4.0, 12, false), 4);
+        add(chain_state(kVowelA, StateRole::final, 1, 10.0, 30, false), 10);
+        add(chain_state(kSilence, StateRole::edge_silence, 1, 1.0, 110, true), 20);
+        sentence.emissions.frame_count = frame;
+        ViterbiWorkspace workspace;
+        check_same_path(viterbi_align(sentence.states, sentence.emissions, workspace), sentence.truth);
+    }
+
     TEST_CASE("a chain longer than its frames has no path") {
         PlantedSentence sentence = plant(10);
         sentence.emissions.frame_count = 15;

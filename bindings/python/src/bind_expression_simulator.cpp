@@ -1,5 +1,9 @@
-// The expression simulator in Python: ExpressionEventKind, ExpressionEvent, UserEventMode and
-// ExpressionSimulator; the simulation runs without the GIL.
+// The expression simulator in Python: ExpressionEventKind, ExpressionEvent, ExpressionStyle,
+// UserEventMode and ExpressionSimulator; the simulation runs without the GIL.
+#include <pybind11/operators.h>
+
+#include <utility>
+
 #include "bind.hpp"
 
 namespace talkface::python {
@@ -77,6 +81,18 @@ Example:
                 .format(expression_event_kind_name(e.kind), e.start_s, e.end_s, e.amount);
         });
 
+    py::enum_<StyleFieldType>(m, "StyleFieldType", R"doc(
+What an ExpressionStyle field holds: number, integer, range or flag.
+
+Example:
+    >>> talkface.StyleFieldType.range
+    >>> talkface.StyleFieldType.flag.name
+)doc")
+        .value("number", StyleFieldType::number)
+        .value("integer", StyleFieldType::integer)
+        .value("range", StyleFieldType::range)
+        .value("flag", StyleFieldType::flag);
+
     py::enum_<UserEventMode>(m, "UserEventMode", R"doc(
 How a caller's events combine with the simulated ones: add (simulated events overlapping a caller's
 event of their kind are dropped) or replace (every simulated event of a kind the caller gives is
@@ -108,6 +124,165 @@ Example:
     >>> talkface.timeline_end_s(talkface.Timeline(duration_s=3.0))
 )doc");
 
+    py::class_<ExpressionStyle> style_class(m, "ExpressionStyle", R"doc(
+The distributions of the simulation and which kinds of event are simulated at all (thesis chapter 4).
+Every field is a property: numbers (seconds), blink_interval_shape (an int, 1..16), ranges as
+(min, max) tuples, flags is_<kind>_simulated. Setting a property checks the value at once. The JSON
+form (docs/style-format.md) is read by from_json() and load(), written by to_json().
+
+Example:
+    >>> style = talkface.ExpressionStyle.announcer()
+    >>> style.blink_interval_scale_s = 3.0; style.is_nod_simulated = False
+)doc");
+    style_class
+        .def(py::init([](std::string_view base) { return ExpressionStyle::from_name(base); }),
+             py::arg("base") = "normal", R"doc(
+A copy of a named style, to change.
+
+Args:
+    base (str): "normal" (the thesis's numbers for a normal pace) or "announcer" (TV news announcers).
+
+Raises:
+    talkface.InvalidArgument: an unknown name (the message lists the valid ones).
+
+Example:
+    >>> talkface.ExpressionStyle()
+    >>> talkface.ExpressionStyle("announcer")
+)doc")
+        .def_static("normal", &ExpressionStyle::normal, R"doc(
+The thesis's numbers for speech at a normal pace (the default).
+
+Example:
+    >>> talkface.ExpressionStyle.normal().blink_interval_scale_s
+    1.48
+)doc")
+        .def_static("announcer", &ExpressionStyle::announcer, R"doc(
+The unadjusted numbers measured on TV news announcers: faster head movements.
+
+Example:
+    >>> talkface.ExpressionStyle.announcer().tilt_duration_s
+    (0.2, 0.5)
+)doc")
+        .def_static("from_name", &ExpressionStyle::from_name, py::arg("name"), R"doc(
+"normal" or "announcer".
+
+Raises:
+    talkface.InvalidArgument: an unknown name (the message lists the valid ones).
+
+Example:
+    >>> talkface.ExpressionStyle.from_name("announcer").name
+    'announcer'
+)doc")
+        .def_static("from_json", &ExpressionStyle::from_json, py::arg("text"), py::arg("source") = "<string>",
+                    R"doc(
+Reads a style from its JSON (docs/style-format.md): keys are field names, all optional, starting from
+"normal" or from a "base" key's style; "name" sets the label ("custom" otherwise).
+
+Args:
+    text (str): the JSON.
+    source (str): what messages call the text.
+
+Raises:
+    talkface.ParseError: source:line:column and the key: not JSON, an unknown key (the valid ones are
+        listed), a wrong type, a value out of range.
+
+Example:
+    >>> talkface.ExpressionStyle.from_json('{"base": "announcer", "is_blink_simulated": false}')
+    >>> talkface.ExpressionStyle.from_json(style.to_json()) == style
+)doc")
+        .def_static("load", &ExpressionStyle::load, py::arg("path"), R"doc(
+from_json() of a file.
+
+Raises:
+    talkface.FileError (an OSError): the file cannot be read.
+    talkface.ParseError: as from_json(), naming the file.
+
+Example:
+    >>> style = talkface.ExpressionStyle.load("calm.json")
+    >>> talkface.ExpressionSimulator(timeline, 7, style)
+)doc")
+        .def("to_json", &ExpressionStyle::to_json, R"doc(
+The style as JSON that from_json() reads back: every field, one per line; the same style always gives
+the same text.
+
+Example:
+    >>> pathlib.Path("calm.json").write_text(style.to_json())
+    >>> talkface.ExpressionStyle.from_json(style.to_json()) == style
+)doc")
+        .def_static(
+            "fields",
+            [] {
+                std::vector<std::pair<std::string, std::string>> result;
+                for (const StyleField& field : ExpressionStyle::fields()) {
+                    result.emplace_back(field.name, py::str(py::cast(field.type).attr("name")));
+                }
+                return result;
+            },
+            R"doc(
+Every field but name, in declaration order, as (name, type) with type "number", "integer", "range"
+or "flag": the keys of the style JSON.
+
+Example:
+    >>> dict(talkface.ExpressionStyle.fields())["tilt_angle_deg"]
+    'range'
+)doc")
+        .def("is_simulated", &ExpressionStyle::is_simulated, py::arg("kind"), R"doc(
+Whether events of a kind are simulated (its is_<kind>_simulated field).
+
+Example:
+    >>> talkface.ExpressionStyle().is_simulated(talkface.ExpressionEventKind.nod)
+    True
+)doc")
+        .def("set_simulated", &ExpressionStyle::set_simulated, py::arg("kind"), py::arg("is_simulated"), R"doc(
+Switches the simulation of a kind on or off. A kind switched off gets no simulated events; the other
+kinds' events stay the same for the same seed.
+
+Example:
+    >>> style.set_simulated(talkface.ExpressionEventKind.blink, False)
+    >>> talkface.ExpressionSimulator(timeline, 7, style)
+)doc")
+        .def_readwrite("name", &ExpressionStyle::name, "a label; \"custom\" for caller-built styles")
+        .def(py::self == py::self)
+        .def(py::self != py::self)
+        .def("__repr__", [](const ExpressionStyle& style) {
+            return py::str("<talkface.ExpressionStyle {!r}>").format(style.name);
+        });
+    // One property per field, generated from the field list so that Python can never miss one.
+    for (const StyleField& field : ExpressionStyle::fields()) {
+        const std::string name = field.name;
+        switch (field.type) {
+            case StyleFieldType::number:
+                style_class.def_property(
+                    field.name, [name](const ExpressionStyle& s) { return s.number(name); },
+                    [name](ExpressionStyle& s, double value) { s.set_number(name, value); }, "seconds");
+                break;
+            case StyleFieldType::integer:
+                style_class.def_property(
+                    field.name, [name](const ExpressionStyle& s) { return s.integer(name); },
+                    [name](ExpressionStyle& s, int value) { s.set_integer(name, value); },
+                    "the Gamma distribution's integer shape, 1..16");
+                break;
+            case StyleFieldType::range:
+                style_class.def_property(
+                    field.name,
+                    [name](const ExpressionStyle& s) {
+                        const UniformRange range = s.range(name);
+                        return std::make_pair(range.min, range.max);
+                    },
+                    [name](ExpressionStyle& s, std::pair<double, double> value) {
+                        s.set_range(name, {value.first, value.second});
+                    },
+                    "(min, max) of a uniform variable: seconds, 0..1 or degrees");
+                break;
+            case StyleFieldType::flag:
+                style_class.def_property(
+                    field.name, [name](const ExpressionStyle& s) { return s.flag(name); },
+                    [name](ExpressionStyle& s, bool value) { s.set_flag(name, value); },
+                    "whether this kind of event is simulated");
+                break;
+        }
+    }
+
     py::class_<ExpressionSimulator>(m, "ExpressionSimulator", R"doc(
 Simulates blinks, eyebrow raises, head tilts, turns and nods over a timeline from a seed (thesis
 chapter 4): the same seed gives the same events on every platform. Evaluate it at any time with
@@ -118,34 +293,41 @@ Example:
     >>> simulator = talkface.ExpressionSimulator(timeline, seed=42)
     >>> [(talkface.expression_event_kind_name(e.kind), e.start_s) for e in simulator.events()]
 )doc")
-        .def(py::init([](const Timeline& timeline, std::uint64_t seed, std::string_view style) {
-                 const ExpressionStyle chosen = ExpressionStyle::from_name(style);
-                 // A copy: another Python thread may change the caller's timeline once the GIL is free.
+        .def(py::init([](const Timeline& timeline, std::uint64_t seed, const ExpressionStyle& style) {
+                 // Copies: another Python thread may change the caller's objects once the GIL is free.
                  const Timeline timeline_copy = timeline;
+                 const ExpressionStyle style_copy = style;
                  py::gil_scoped_release release;
-                 return ExpressionSimulator(timeline_copy, seed, chosen);
+                 return ExpressionSimulator(timeline_copy, seed, style_copy);
              }),
-             py::arg("timeline"), py::arg("seed") = 0, py::arg("style") = "normal", R"doc(
+             py::arg("timeline"), py::arg("seed") = 0, py::arg("style") = ExpressionStyle::normal(), R"doc(
 Simulates the events of a timeline; releases the GIL while it works. The simulator keeps no reference
-to the timeline.
+to the timeline or the style.
 
 Args:
     timeline (Timeline): aligned sentences and syllables (pauses after sentences get nods).
     seed (int): 0 .. 2**64 - 1.
-    style (str): "normal" (the thesis's numbers for a normal pace) or "announcer" (TV news
-        announcers: faster head movements).
+    style (str | ExpressionStyle): "normal" (the thesis's numbers for a normal pace), "announcer" (TV
+        news announcers: faster head movements), or a style of your own.
 
 Raises:
-    talkface.InvalidArgument: an unknown style (the message lists the valid ones), or a syllable whose
-        times are not finite or end before they start (named).
+    talkface.InvalidArgument: an unknown style name (the message lists the valid ones), a style field
+        out of range (named), or a syllable whose times are not finite or end before they start.
 
 Example:
-    >>> talkface.ExpressionSimulator(timeline, 7)
     >>> talkface.ExpressionSimulator(timeline, 7, style="announcer")
+    >>> talkface.ExpressionSimulator(timeline, 7, talkface.ExpressionStyle.load("calm.json"))
 )doc")
+        .def(py::init([](const Timeline& timeline, std::uint64_t seed, std::string_view style) {
+                 const ExpressionStyle chosen = ExpressionStyle::from_name(style);
+                 const Timeline timeline_copy = timeline;
+                 py::gil_scoped_release release;
+                 return ExpressionSimulator(timeline_copy, seed, chosen);
+             }),
+             py::arg("timeline"), py::arg("seed") = 0, py::arg("style") = "normal")
         .def_property_readonly("seed", &ExpressionSimulator::seed, "the seed")
-        .def_property_readonly(
-            "style", [](const ExpressionSimulator& s) { return s.style().name; }, "the style's name")
+        .def_property_readonly("style", &ExpressionSimulator::style,
+                               "a copy of the ExpressionStyle the events were simulated in")
         .def_property_readonly("duration_s", &ExpressionSimulator::duration_s,
                                "timeline_end_s of the timeline, seconds")
         .def("simulated_events", &ExpressionSimulator::simulated_events, R"doc(

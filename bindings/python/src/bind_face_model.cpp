@@ -203,7 +203,7 @@ Args:
     image_xy (tuple[float, float]): the new (x, y), image pixels.
 
 Raises:
-    talkface.InvalidArgument: an unknown id or a non-finite coordinate.
+    talkface.InvalidArgument: an unknown id, or a coordinate not finite or beyond +-1e6.
 
 Example:
     >>> face.set_point("8.3", (140.0, 212.5))
@@ -225,7 +225,7 @@ Args:
 
 Raises:
     talkface.InvalidArgument: the shape is wrong ("points: expected shape (72, 2), got (70, 2)") or a
-        value is not finite.
+        value is not finite or lies beyond +-1e6.
 
 Example:
     >>> xy = face.points(); xy[:, 0] += 10.0
@@ -249,10 +249,10 @@ Sets a FAPU.
 
 Args:
     name (str): one of FaceModel.fapu_names().
-    value_px (float): pixels, finite and positive.
+    value_px (float): pixels, finite, positive and at most 1e7.
 
 Raises:
-    talkface.InvalidArgument: an unknown name or a value that is not finite and positive.
+    talkface.InvalidArgument: an unknown name or a value out of that range.
 
 Example:
     >>> face.set_fapu("JawH", 20.0)

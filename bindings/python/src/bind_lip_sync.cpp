@@ -1,4 +1,7 @@
-// Lip movement in Python: a syllable's mouth shapes, mouth key frames and the mouth of every frame.
+// Lip movement in Python: a syllable's mouth shapes, the onset table, mouth key frames and the mouth
+// of every frame.
+#include <array>
+
 #include "bind.hpp"
 
 namespace talkface::python {
@@ -63,17 +66,59 @@ Example:
         .value("linear", MouthInterpolation::linear)
         .value("smooth", MouthInterpolation::smooth);
 
+    py::class_<ShapeOnsetTable>(m, "ShapeOnsetTable", R"doc(
+When the later shapes of a syllable start, as fractions of its duration (thesis 5.3): two_shapes
+holds 1 value, three_shapes 2, four_shapes 3; each row must rise strictly inside (0, 1), which
+mouth_key_frames() and animate() check and name ("ShapeOnsetTable::three_shapes").
+
+Example:
+    >>> table = talkface.ShapeOnsetTable(two_shapes=[0.3])
+    >>> talkface.LipSyncOptions(onsets=table)
+)doc")
+        .def(py::init([](std::array<double, 1> two_shapes, std::array<double, 2> three_shapes,
+                         std::array<double, 3> four_shapes) {
+                 return ShapeOnsetTable{two_shapes, three_shapes, four_shapes};
+             }),
+             py::arg("two_shapes") = ShapeOnsetTable{}.two_shapes,
+             py::arg("three_shapes") = ShapeOnsetTable{}.three_shapes,
+             py::arg("four_shapes") = ShapeOnsetTable{}.four_shapes, R"doc(
+Args:
+    two_shapes (list[float]): 1 onset; the thesis's 0.1905.
+    three_shapes (list[float]): 2 onsets; 0.1688, 0.6025.
+    four_shapes (list[float]): 3 onsets; 0.2847, 0.5297, 0.7412.
+
+Raises:
+    TypeError: a row of the wrong length.
+
+Example:
+    >>> talkface.ShapeOnsetTable()
+    >>> talkface.ShapeOnsetTable(three_shapes=[0.2, 0.6])
+)doc")
+        .def_readwrite("two_shapes", &ShapeOnsetTable::two_shapes, "1 fraction of the syllable")
+        .def_readwrite("three_shapes", &ShapeOnsetTable::three_shapes, "2 fractions of the syllable, rising")
+        .def_readwrite("four_shapes", &ShapeOnsetTable::four_shapes, "3 fractions of the syllable, rising")
+        .def("__eq__",
+             [](const ShapeOnsetTable& a, const ShapeOnsetTable& b) {
+                 return a.two_shapes == b.two_shapes && a.three_shapes == b.three_shapes &&
+                        a.four_shapes == b.four_shapes;
+             })
+        .def("__repr__", [](const ShapeOnsetTable& t) {
+            return py::str("talkface.ShapeOnsetTable(two_shapes={!r}, three_shapes={!r}, four_shapes={!r})")
+                .format(t.two_shapes, t.three_shapes, t.four_shapes);
+        });
+
     py::class_<LipSyncOptions>(m, "LipSyncOptions", R"doc(
 Options of the lip movement; checked when used (mouth_key_frames, animate), which names the one out of
-range. The onset table inside a syllable is the thesis's (5.3).
+range. The onset table inside a syllable is the thesis's (5.3) unless onsets is set.
 
 Example:
     >>> options = talkface.LipSyncOptions(fps=30.0)
     >>> talkface.animate(face, timeline, simulator, options)
 )doc")
         .def(py::init([](double fps, double rest_min_pause_s, double rest_transition_s,
-                         MouthInterpolation interpolation, double max_speed_mns0_per_s) {
+                         MouthInterpolation interpolation, double max_speed_mns0_per_s, const ShapeOnsetTable& onsets) {
                  LipSyncOptions options;
+                 options.onsets = onsets;
                  options.fps = fps;
                  options.rest_min_pause_s = rest_min_pause_s;
                  options.rest_transition_s = rest_transition_s;
@@ -84,13 +129,15 @@ Example:
              py::arg("fps") = LipSyncOptions{}.fps, py::arg("rest_min_pause_s") = LipSyncOptions{}.rest_min_pause_s,
              py::arg("rest_transition_s") = LipSyncOptions{}.rest_transition_s,
              py::arg("interpolation") = LipSyncOptions{}.interpolation,
-             py::arg("max_speed_mns0_per_s") = LipSyncOptions{}.max_speed_mns0_per_s, R"doc(
+             py::arg("max_speed_mns0_per_s") = LipSyncOptions{}.max_speed_mns0_per_s,
+             py::arg("onsets") = ShapeOnsetTable{}, R"doc(
 Args:
     fps (float): frames per second; key frames sit on frames.
     rest_min_pause_s (float): a gap between syllables at least this long is a pause (mouth at rest).
     rest_transition_s (float): time to reach and to leave the rest, seconds.
     interpolation (MouthInterpolation): linear or smooth.
     max_speed_mns0_per_s (float): speed limit of the mouth control points, MNS0 per second.
+    onsets (ShapeOnsetTable): when the later shapes of a syllable start (thesis 5.3).
 
 Example:
     >>> talkface.LipSyncOptions()
@@ -101,6 +148,8 @@ Example:
         .def_readwrite("rest_transition_s", &LipSyncOptions::rest_transition_s, "seconds")
         .def_readwrite("interpolation", &LipSyncOptions::interpolation, "MouthInterpolation")
         .def_readwrite("max_speed_mns0_per_s", &LipSyncOptions::max_speed_mns0_per_s, "MNS0 per second")
+        .def_readwrite("onsets", &LipSyncOptions::onsets,
+                       "ShapeOnsetTable (a copy: assign a changed table back to change the options)")
         .def("__repr__", [](const LipSyncOptions& o) {
             return py::str("talkface.LipSyncOptions(fps={!r}, rest_min_pause_s={!r}, rest_transition_s={!r}, "
                            "interpolation={!r}, max_speed_mns0_per_s={!r})")

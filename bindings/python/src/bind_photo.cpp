@@ -58,7 +58,7 @@ PhotoFaceResult extract(const Photo& photo, const PhotoOptions& options) {
 
 constexpr const char* kPhotoArguments = R"doc(
 Args:
-    photo: a path (PNG, JPEG, BMP, TIFF, WebP) or a numpy uint8 array (H, W), (H, W, 3) RGB or
+    photo: a path (PNG or JPEG) or a numpy uint8 array (H, W), (H, W, 3) RGB or
         (H, W, 4) RGBA.
     locator: "thesis" (OpenCV only), "dlib" (68-point model) or "automatic" (dlib where installed).
     face_index: which face when the photo shows several, 0 = leftmost; -1 refuses such a photo.
@@ -68,7 +68,8 @@ Args:
 Raises:
     talkface.InvalidArgument (a ValueError) naming the photo: no face, several faces, face too small,
         too dark, not frontal enough; a malformed array.
-    FileNotFoundError / OSError: the photo, a Haar cascade or the dlib model cannot be read.
+    FileNotFoundError / OSError: the photo, a Haar cascade or the dlib model cannot be read; the
+        photo is not a PNG or JPEG, is broken or truncated, or is over 100 megapixels.
 
 The GIL is released while the photo is read.
 )doc";

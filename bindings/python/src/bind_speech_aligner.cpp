@@ -1,4 +1,5 @@
-// The speech aligner in Python: SentenceCutMode, AlignOptions, SpeechAligner (align_file, align).
+// The speech aligner in Python: SentenceCutMode, AlignOptions, SpeechAligner (align_file, align),
+// and the picture of an alignment.
 #include <optional>
 #include <utility>
 
@@ -242,6 +243,42 @@ Example:
         .def("__repr__", [](const SpeechAligner& aligner) {
             return py::str("<talkface.SpeechAligner: {!r}>").format(aligner.options());
         });
+
+    m.def(
+        "alignment_plot_svg",
+        [](const std::filesystem::path& audio_path, const Timeline& timeline) {
+            return alignment_plot_svg(audio_path.string(), timeline);
+        },
+        py::arg("audio_path"), py::arg("timeline"), R"doc(
+The picture of an alignment (thesis Figures 3.5 and 3.8) as an SVG document: the audio's waveform,
+each sentence in one of two alternating colours, each syllable's start marked and labelled.
+
+Args:
+    audio_path (str | os.PathLike): the audio file that was aligned (read again, in blocks).
+    timeline (Timeline): what SpeechAligner.align_file() returned for it.
+
+Raises:
+    talkface.FileError, talkface.ParseError: the audio cannot be read.
+
+Example:
+    >>> svg = talkface.alignment_plot_svg("speech.wav", timeline)
+)doc");
+    m.def(
+        "write_alignment_plot_svg",
+        [](const std::filesystem::path& svg_path, const std::filesystem::path& audio_path, const Timeline& timeline) {
+            write_alignment_plot_svg(svg_path.string(), audio_path.string(), timeline);
+        },
+        py::arg("svg_path"), py::arg("audio_path"), py::arg("timeline"), R"doc(
+Writes alignment_plot_svg(audio_path, timeline) to svg_path through a temporary file that is
+renamed: a failure leaves no file behind.
+
+Raises:
+    talkface.FileError: the audio cannot be read or svg_path cannot be written.
+    talkface.ParseError: the audio is not audio talkface reads.
+
+Example:
+    >>> talkface.write_alignment_plot_svg("speech.svg", "speech.wav", timeline)
+)doc");
 }
 
 }  // namespace talkface::python

@@ -1,7 +1,7 @@
 # Type stubs for the compiled talkface._talkface module (kept by hand next to bindings/python/src/).
 import enum
 import os
-from typing import Callable, ClassVar
+from typing import Callable, ClassVar, Sequence
 
 import numpy
 import numpy.typing
@@ -370,6 +370,9 @@ class SpeechAligner:
         progress: _Progress | None = None,
     ) -> Timeline: ...
 
+def alignment_plot_svg(audio_path: _PathLike, timeline: Timeline) -> str: ...
+def write_alignment_plot_svg(svg_path: _PathLike, audio_path: _PathLike, timeline: Timeline) -> None: ...
+
 class MouthKeyFrame:
     time_s: float
     shape: MouthShape
@@ -381,12 +384,25 @@ class MouthInterpolation(enum.Enum):
     linear = 0
     smooth = 1
 
+class ShapeOnsetTable:
+    two_shapes: list[float]
+    three_shapes: list[float]
+    four_shapes: list[float]
+    def __init__(
+        self,
+        two_shapes: Sequence[float] = ...,
+        three_shapes: Sequence[float] = ...,
+        four_shapes: Sequence[float] = ...,
+    ) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+
 class LipSyncOptions:
     fps: float
     rest_min_pause_s: float
     rest_transition_s: float
     interpolation: MouthInterpolation
     max_speed_mns0_per_s: float
+    onsets: ShapeOnsetTable
     def __init__(
         self,
         fps: float = 25.0,
@@ -394,6 +410,7 @@ class LipSyncOptions:
         rest_transition_s: float = 0.1,
         interpolation: MouthInterpolation = ...,
         max_speed_mns0_per_s: float = 8.75,
+        onsets: ShapeOnsetTable = ...,
     ) -> None: ...
 
 def mouth_key_frames(timeline: Timeline, options: LipSyncOptions = ...) -> list[MouthKeyFrame]: ...
@@ -419,6 +436,55 @@ class ExpressionEvent:
     def __init__(self, kind: ExpressionEventKind | str, start_s: float, end_s: float, amount: float) -> None: ...
     def __eq__(self, other: object) -> bool: ...
 
+class StyleFieldType(enum.Enum):
+    number = 0
+    integer = 1
+    range = 2
+    flag = 3
+
+class ExpressionStyle:
+    name: str
+    blink_interval_shape: int
+    blink_interval_scale_s: float
+    blink_duration_s: tuple[float, float]
+    brows_interval_s: tuple[float, float]
+    brows_duration_s: tuple[float, float]
+    brows_amount: tuple[float, float]
+    tilt_interval_s: tuple[float, float]
+    tilt_duration_s: tuple[float, float]
+    tilt_angle_deg: tuple[float, float]
+    turn_interval_s: tuple[float, float]
+    turn_duration_s: tuple[float, float]
+    turn_angle_deg: tuple[float, float]
+    nod_lead_s: tuple[float, float]
+    nod_down_s: tuple[float, float]
+    nod_up_s: tuple[float, float]
+    nod_angle_deg: tuple[float, float]
+    nod_min_pause_s: float
+    is_blink_simulated: bool
+    is_brows_simulated: bool
+    is_tilt_simulated: bool
+    is_turn_simulated: bool
+    is_nod_simulated: bool
+    def __init__(self, base: str = "normal") -> None: ...
+    @staticmethod
+    def normal() -> ExpressionStyle: ...
+    @staticmethod
+    def announcer() -> ExpressionStyle: ...
+    @staticmethod
+    def from_name(name: str) -> ExpressionStyle: ...
+    @staticmethod
+    def from_json(text: str, source: str = "<string>") -> ExpressionStyle: ...
+    @staticmethod
+    def load(path: str) -> ExpressionStyle: ...
+    def to_json(self) -> str: ...
+    @staticmethod
+    def fields() -> list[tuple[str, str]]: ...
+    def is_simulated(self, kind: ExpressionEventKind) -> bool: ...
+    def set_simulated(self, kind: ExpressionEventKind, is_simulated: bool) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __ne__(self, other: object) -> bool: ...
+
 class UserEventMode(enum.Enum):
     add = 0
     replace = 1
@@ -427,11 +493,11 @@ def validate_expression_events(events: list[ExpressionEvent]) -> None: ...
 def timeline_end_s(timeline: Timeline) -> float: ...
 
 class ExpressionSimulator:
-    def __init__(self, timeline: Timeline, seed: int = 0, style: str = "normal") -> None: ...
+    def __init__(self, timeline: Timeline, seed: int = 0, style: str | ExpressionStyle = "normal") -> None: ...
     @property
     def seed(self) -> int: ...
     @property
-    def style(self) -> str: ...
+    def style(self) -> ExpressionStyle: ...
     @property
     def duration_s(self) -> float: ...
     def simulated_events(self) -> list[ExpressionEvent]: ...

@@ -5,13 +5,9 @@
 //   4. the face model               face_fitting.cpp
 #include "talkface/face_from_photo.hpp"
 
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <fstream>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "common/atomic_file.hpp"
@@ -110,14 +106,6 @@ inline namespace v0 {
 
 namespace {
 
-// Throws FileError with the OS's reason (which the C ABI and Python map, e.g. to FileNotFoundError)
-// unless `path` can be opened for reading.
-void require_readable(const std::string& path) {
-    std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (file == nullptr) throw FileError(path, std::strerror(errno));
-    std::fclose(file);
-}
-
 PhotoLocator choose_locator(const PhotoOptions& options, std::string& model_path) {
     model_path = options.dlib_model_path.empty() ? photo::default_dlib_model_path() : options.dlib_model_path;
     switch (options.locator) {
@@ -164,41 +152,8 @@ void check_cheeks_frontal(const photo::Regions& regions, const std::string& sour
     }
 }
 
-}  // namespace
-
-const char* photo_locator_name(PhotoLocator locator) {
-    switch (locator) {
-        case PhotoLocator::thesis: return "thesis";
-        case PhotoLocator::dlib: return "dlib";
-        case PhotoLocator::automatic: return "automatic";
-    }
-    return "unknown";
-}
-
-PhotoLocator photo_locator_from_name(std::string_view name) {
-    for (PhotoLocator locator : {PhotoLocator::thesis, PhotoLocator::dlib, PhotoLocator::automatic}) {
-        if (name == photo_locator_name(locator)) return locator;
-    }
-    throw InvalidArgument("locator", "expected thesis, dlib or automatic, found \"" + std::string(name) + "\"");
-}
-
-bool has_dlib_locator() {
-#ifdef TALKFACE_WITH_DLIB
-    return true;
-#else
-    return false;
-#endif
-}
-
-double PhotoFaceResult::confidence(std::string_view feature_name) const {
-    for (const PhotoFeature& feature : features) {
-        if (feature.name == feature_name) return feature.confidence;
-    }
-    throw InvalidArgument("feature_name", "no feature \"" + std::string(feature_name) +
-                                              "\"; see PhotoFeature::name for the list");
-}
-
-PhotoFaceResult face_from_photo(const ImageView& view, const PhotoOptions& options) {
+// Steps 1-4 on the photo as 8-bit BGR; source_name names it in errors.
+PhotoFaceResult extract_face(const cv::Mat& bgr, const PhotoOptions& options) {
     const std::string& source = options.source_name;
     if (options.face_index < -1) {
         throw InvalidArgument("face_index", "expected -1 (one face only) or a face's index, found " +
@@ -209,7 +164,6 @@ PhotoFaceResult face_from_photo(const ImageView& view, const PhotoOptions& optio
     }
     std::string model_path;
     const PhotoLocator locator = choose_locator(options, model_path);
-    const cv::Mat bgr = photo::to_bgr(view, source);
     cv::Mat gray;
     cv::cvtColor(bgr, gray, cv::COLOR_BGR2GRAY);
 
@@ -272,31 +226,61 @@ PhotoFaceResult face_from_photo(const ImageView& view, const PhotoOptions& optio
     return result;
 }
 
+void write_overlay(cv::Mat bgr, const PhotoFaceResult& result, const std::string& output_png_path) {
+    photo::draw_overlay(bgr, result);
+    detail::write_file_atomically(output_png_path, photo::encode_png(bgr));
+}
+
+}  // namespace
+
+const char* photo_locator_name(PhotoLocator locator) {
+    switch (locator) {
+        case PhotoLocator::thesis: return "thesis";
+        case PhotoLocator::dlib: return "dlib";
+        case PhotoLocator::automatic: return "automatic";
+    }
+    return "unknown";
+}
+
+PhotoLocator photo_locator_from_name(std::string_view name) {
+    for (PhotoLocator locator : {PhotoLocator::thesis, PhotoLocator::dlib, PhotoLocator::automatic}) {
+        if (name == photo_locator_name(locator)) return locator;
+    }
+    throw InvalidArgument("locator", "expected thesis, dlib or automatic, found \"" + std::string(name) + "\"");
+}
+
+bool has_dlib_locator() {
+#ifdef TALKFACE_WITH_DLIB
+    return true;
+#else
+    return false;
+#endif
+}
+
+double PhotoFaceResult::confidence(std::string_view feature_name) const {
+    for (const PhotoFeature& feature : features) {
+        if (feature.name == feature_name) return feature.confidence;
+    }
+    throw InvalidArgument("feature_name", "no feature \"" + std::string(feature_name) +
+                                              "\"; see PhotoFeature::name for the list");
+}
+
+PhotoFaceResult face_from_photo(const ImageView& view, const PhotoOptions& options) {
+    return extract_face(photo::to_bgr(view, options.source_name), options);
+}
+
 PhotoFaceResult face_from_photo_file(const std::string& path, const PhotoOptions& options) {
-    require_readable(path);
-    const cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
-    if (bgr.empty()) throw FileError(path, "not an image OpenCV can decode (PNG, JPEG, BMP, TIFF or WebP)");
     PhotoOptions named = options;
     named.source_name = path;
-    const ImageView view{bgr.data, bgr.cols, bgr.rows, static_cast<int>(bgr.step[0]), PixelFormat::bgr8};
-    return face_from_photo(view, named);
+    return extract_face(photo::read_photo_file(path), named);
 }
 
 void write_photo_overlay(const ImageView& view, const PhotoFaceResult& result, const std::string& output_png_path) {
-    cv::Mat bgr = photo::to_bgr(view, "photo");
-    photo::draw_overlay(bgr, result);
-    std::vector<std::uint8_t> png;
-    if (!cv::imencode(".png", bgr, png)) throw FileError(output_png_path, "OpenCV could not encode the overlay as PNG");
-    detail::write_file_atomically(output_png_path,
-                                  std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+    write_overlay(photo::to_bgr(view, "photo"), result, output_png_path);
 }
 
 void write_photo_overlay(const std::string& photo_path, const PhotoFaceResult& result, const std::string& output_png_path) {
-    require_readable(photo_path);
-    const cv::Mat bgr = cv::imread(photo_path, cv::IMREAD_COLOR);
-    if (bgr.empty()) throw FileError(photo_path, "not an image OpenCV can decode (PNG, JPEG, BMP, TIFF or WebP)");
-    const ImageView view{bgr.data, bgr.cols, bgr.rows, static_cast<int>(bgr.step[0]), PixelFormat::bgr8};
-    write_photo_overlay(view, result, output_png_path);
+    write_overlay(photo::read_photo_file(photo_path), result, output_png_path);
 }
 
 }  // namespace v0

@@ -3,6 +3,7 @@
 #ifndef TALKFACE_FACE_PHOTO_PHOTO_INTERNAL_HPP
 #define TALKFACE_FACE_PHOTO_PHOTO_INTERNAL_HPP
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -19,6 +20,20 @@ namespace talkface::photo {
 
 // The caller's view copied into an 8-bit BGR image. Throws for a malformed view.
 cv::Mat to_bgr(const ImageView& photo, const std::string& source);
+
+// --- image_file.cpp -----------------------------------------------------------------------------
+
+// The largest photo read from a file. A 24-megapixel camera's photo is 6000 x 4000; a larger one
+// finds no better face and would make the decoder allocate gigabytes.
+inline constexpr std::uint64_t kMaxPhotoPixels = 100'000'000;
+
+// A PNG or JPEG file (EXIF orientation applied, transparency on white) as 8-bit BGR. Throws FileError
+// naming the path and what is wrong: unreadable, empty, another format, broken or truncated, larger
+// than kMaxPhotoPixels.
+cv::Mat read_photo_file(const std::string& path);
+
+// An 8-bit BGR image as the bytes of a PNG file.
+std::string encode_png(const cv::Mat& bgr);
 
 // --- face_detector.cpp ------------------------------------------------------------------------
 
