@@ -16,11 +16,16 @@ using talkface::capi::require_non_null;
 
 namespace {
 
-// Throws what SpeechAligner's constructor throws for `candidate` (InvalidArgument naming the
-// option), so the ranges live in one place and a tf_align_options never holds a value the aligner
-// would refuse later.
-void validate(const AlignOptions& candidate) {
+// Applies `change` to a copy of the options and keeps it only if SpeechAligner's constructor
+// accepts it (else its InvalidArgument, naming the option, propagates): the ranges live in one
+// place, and a tf_align_options never holds a value the aligner would refuse later.
+template <typename Change>
+void update(tf_align_options* options, Change&& change) {
+    require_non_null(options, "options");
+    AlignOptions candidate = options->options;
+    change(candidate);
     static_cast<void>(SpeechAligner(candidate));
+    options->options = candidate;
 }
 
 SpeechAligner aligner_for(const tf_align_options* options) {
@@ -58,43 +63,26 @@ tf_status tf_align_options_set_sentence_cut(tf_align_options* options, tf_senten
             throw InvalidArgument("sentence_cut", "expected a tf_sentence_cut_mode (0..1), got " +
                                                       std::to_string(value));
         }
-        AlignOptions candidate = options->options;
-        candidate.sentence_cut = static_cast<SentenceCutMode>(value);
-        validate(candidate);
-        options->options = candidate;
+        update(options, [&](AlignOptions& o) { o.sentence_cut = static_cast<SentenceCutMode>(value); });
     });
 }
 
 tf_status tf_align_options_set_first_pause(tf_align_options* options, double start_s, double end_s) {
     return guard([&] {
-        require_non_null(options, "options");
-        AlignOptions candidate = options->options;
-        candidate.sentence_cut = SentenceCutMode::first_pause;
-        candidate.first_pause_start_s = start_s;
-        candidate.first_pause_end_s = end_s;
-        validate(candidate);
-        options->options = candidate;
+        update(options, [&](AlignOptions& o) {
+            o.sentence_cut = SentenceCutMode::first_pause;
+            o.first_pause_start_s = start_s;
+            o.first_pause_end_s = end_s;
+        });
     });
 }
 
 tf_status tf_align_options_set_c1(tf_align_options* options, double c1) {
-    return guard([&] {
-        require_non_null(options, "options");
-        AlignOptions candidate = options->options;
-        candidate.c1 = c1;
-        validate(candidate);
-        options->options = candidate;
-    });
+    return guard([&] { update(options, [&](AlignOptions& o) { o.c1 = c1; }); });
 }
 
 tf_status tf_align_options_set_c2(tf_align_options* options, double c2) {
-    return guard([&] {
-        require_non_null(options, "options");
-        AlignOptions candidate = options->options;
-        candidate.c2 = c2;
-        validate(candidate);
-        options->options = candidate;
-    });
+    return guard([&] { update(options, [&](AlignOptions& o) { o.c2 = c2; }); });
 }
 
 tf_status tf_align_file(const char* audio_path, const tf_timeline* transcript, const tf_align_options* options,
