@@ -40,26 +40,32 @@ struct Condition {
     const char* sox_effects;  ///< applied to espeak-ng's 22.05 kHz output when noise is none
     const char* sox_output_options;
     const char* extension;
+    bool runs_together;       ///< sentences 0-kMaxJointGapS apart instead of the passage's pauses
 };
+
+// A speaker who runs sentences together leaves at most a breath's catch between them: shorter than
+// the 0.12 s that talkface's cutter takes for a pause, so that no sentence end can be cut at one.
+constexpr double kMaxJointGapS = 0.12;
 
 // Every output is 16-bit except OGG; resampling is sox's linear-phase "rate -v", which keeps times.
 const Condition all_conditions[] = {
-    {"clean", "16 kHz mono 16-bit", 1.0, Noise::none, 0, "rate -v 16k", "-b 16", "wav"},
-    {"white30", "white noise, SNR 30 dB", 1.0, Noise::white, 30, "", "", "wav"},
-    {"white20", "white noise, SNR 20 dB", 1.0, Noise::white, 20, "", "", "wav"},
-    {"white10", "white noise, SNR 10 dB", 1.0, Noise::white, 10, "", "", "wav"},
-    {"pink20", "pink noise, SNR 20 dB", 1.0, Noise::pink, 20, "", "", "wav"},
-    {"brown20", "brown noise, SNR 20 dB", 1.0, Noise::brown, 20, "", "", "wav"},
+    {"clean", "16 kHz mono 16-bit", 1.0, Noise::none, 0, "rate -v 16k", "-b 16", "wav", false},
+    {"white30", "white noise, SNR 30 dB", 1.0, Noise::white, 30, "", "", "wav", false},
+    {"white20", "white noise, SNR 20 dB", 1.0, Noise::white, 20, "", "", "wav", false},
+    {"white10", "white noise, SNR 10 dB", 1.0, Noise::white, 10, "", "", "wav", false},
+    {"pink20", "pink noise, SNR 20 dB", 1.0, Noise::pink, 20, "", "", "wav", false},
+    {"brown20", "brown noise, SNR 20 dB", 1.0, Noise::brown, 20, "", "", "wav", false},
     {"reverb", "room reverb (sox reverb 40 50 60)", 1.0, Noise::none, 0, "rate -v 16k reverb 40 50 60 gain -n -3",
-     "-b 16", "wav"},
-    {"telephone", "300-3400 Hz band, 8 kHz", 1.0, Noise::none, 0, "sinc 300-3400 rate -v 8k", "-b 16", "wav"},
-    {"ogg", "Ogg Vorbis quality 2, 16 kHz", 1.0, Noise::none, 0, "rate -v 16k", "-C 2", "ogg"},
-    {"quiet", "peak at -30 dBFS", 1.0, Noise::none, 0, "rate -v 16k gain -n -30", "-b 16", "wav"},
-    {"loud", "peak at -0.1 dBFS", 1.0, Noise::none, 0, "rate -v 16k gain -n -0.1", "-b 16", "wav"},
+     "-b 16", "wav", false},
+    {"telephone", "300-3400 Hz band, 8 kHz", 1.0, Noise::none, 0, "sinc 300-3400 rate -v 8k", "-b 16", "wav", false},
+    {"ogg", "Ogg Vorbis quality 2, 16 kHz", 1.0, Noise::none, 0, "rate -v 16k", "-C 2", "ogg", false},
+    {"quiet", "peak at -30 dBFS", 1.0, Noise::none, 0, "rate -v 16k gain -n -30", "-b 16", "wav", false},
+    {"loud", "peak at -0.1 dBFS", 1.0, Noise::none, 0, "rate -v 16k gain -n -0.1", "-b 16", "wav", false},
     {"stereo44", "stereo 44.1 kHz, right channel 2 dB lower", 1.0, Noise::none, 0, "remix 1 1v0.8 rate -v 44100",
-     "-b 16", "wav"},
-    {"fast", "speaking rate +40%", 1.4, Noise::none, 0, "rate -v 16k", "-b 16", "wav"},
-    {"slow", "speaking rate -30%", 0.7, Noise::none, 0, "rate -v 16k", "-b 16", "wav"},
+     "-b 16", "wav", false},
+    {"fast", "speaking rate +40%", 1.4, Noise::none, 0, "rate -v 16k", "-b 16", "wav", false},
+    {"slow", "speaking rate -30%", 0.7, Noise::none, 0, "rate -v 16k", "-b 16", "wav", false},
+    {"joined", "sentences run together, 0-0.12 s apart", 1.0, Noise::none, 0, "rate -v 16k", "-b 16", "wav", true},
 };
 
 struct BenchSentence {
@@ -165,6 +171,15 @@ Delivery draw_delivery(std::size_t sentence_count, std::mt19937_64& rng) {
     return delivery;
 }
 
+// The passage's delivery with every pause between two sentences replaced by 0-kMaxJointGapS, drawn
+// per joint from a stream seeded by the corpus seed, the passage and the condition.
+Delivery join_sentences(Delivery delivery, std::uint64_t seed, std::size_t passage, std::uint64_t condition_index) {
+    std::seed_seq joint_seed{seed, static_cast<std::uint64_t>(passage), condition_index};
+    std::mt19937_64 rng(joint_seed);
+    for (std::size_t i = 1; i + 1 < delivery.gaps_s.size(); ++i) delivery.gaps_s[i] = uniform(rng, 0.0, kMaxJointGapS);
+    return delivery;
+}
+
 // Each repeat shuffles each set and splits it into passages of about five sentences, so that a
 // sentence is heard in different neighbours, rates and pitches.
 std::vector<Passage> plan_passages(const std::vector<BenchSentence>& sentences, int repeats, std::uint64_t seed) {
@@ -197,45 +212,61 @@ std::vector<Passage> plan_passages(const std::vector<BenchSentence>& sentences, 
     return passages;
 }
 
-Recording speak_passage(const talkface_bench::EspeakVoice& voice, const std::string& transcript,
-                        const Delivery& delivery, double rate_factor, const std::string& where) {
-    Recording recording;
-    recording.truth = talkface::read_transcript(transcript, {}, where);
-    if (!recording.truth.warnings.empty()) throw std::runtime_error(recording.truth.warnings.front());
-    const std::size_t sentence_count = recording.truth.sentences.size();
+/// A passage's sentences as espeak-ng spoke them, each trimmed to its sounds, before they are joined.
+struct SpokenPassage {
+    talkface::Timeline transcript;
+    std::vector<talkface_bench::SpokenSentence> sentences;
+    int sample_rate_hz = 0;
+};
+
+SpokenPassage speak_passage(const talkface_bench::EspeakVoice& voice, const std::string& transcript,
+                            const Delivery& delivery, double rate_factor, const std::string& where) {
+    SpokenPassage passage;
+    passage.transcript = talkface::read_transcript(transcript, {}, where);
+    if (!passage.transcript.warnings.empty()) throw std::runtime_error(passage.transcript.warnings.front());
+    const std::size_t sentence_count = passage.transcript.sentences.size();
     if (delivery.rate_wpm.size() != sentence_count)
         throw std::runtime_error(where + ": " + std::to_string(sentence_count) + " sentences, expected " +
                                  std::to_string(delivery.rate_wpm.size()));
-    const double rate = voice.sample_rate_hz();
-    auto& samples = recording.audio.samples;
-    recording.audio.sample_rate_hz = voice.sample_rate_hz();
-    recording.after_pause.resize(recording.truth.syllables.size());
+    passage.sample_rate_hz = voice.sample_rate_hz();
     for (std::size_t k = 0; k < sentence_count; ++k) {
-        samples.resize(samples.size() + static_cast<std::size_t>(std::lround(delivery.gaps_s[k] * rate)), 0.0f);
         std::vector<talkface::Syllable> syllables;
-        std::vector<std::size_t> indices;
-        for (std::size_t i = 0; i < recording.truth.syllables.size(); ++i) {
-            if (recording.truth.syllables[i].sentence == k) {
-                syllables.push_back(recording.truth.syllables[i]);
-                indices.push_back(i);
-            }
-        }
+        for (const auto& syllable : passage.transcript.syllables)
+            if (syllable.sentence == k) syllables.push_back(syllable);
         const auto rate_wpm = static_cast<int>(std::lround(delivery.rate_wpm[k] * rate_factor));
-        const auto spoken = voice.speak(syllables, rate_wpm, delivery.pitch[k],
-                                        where + " sentence " + std::to_string(k + 1));
+        passage.sentences.push_back(
+            voice.speak(syllables, rate_wpm, delivery.pitch[k], where + " sentence " + std::to_string(k + 1)));
+    }
+    return passage;
+}
+
+// The spoken sentences one after the other with gaps_s of silence before, between and after them.
+Recording join_passage(const SpokenPassage& passage, const std::vector<double>& gaps_s) {
+    Recording recording;
+    recording.truth = passage.transcript;
+    const double rate = passage.sample_rate_hz;
+    auto& samples = recording.audio.samples;
+    recording.audio.sample_rate_hz = passage.sample_rate_hz;
+    recording.after_pause.resize(recording.truth.syllables.size());
+    for (std::size_t k = 0; k < passage.sentences.size(); ++k) {
+        samples.resize(samples.size() + static_cast<std::size_t>(std::lround(gaps_s[k] * rate)), 0.0f);
+        const auto& spoken = passage.sentences[k];
         const double offset_s = static_cast<double>(samples.size()) / rate;
-        for (std::size_t j = 0; j < indices.size(); ++j) {
-            auto& syllable = recording.truth.syllables[indices[j]];
+        std::size_t j = 0;
+        for (std::size_t i = 0; i < recording.truth.syllables.size(); ++i) {
+            auto& syllable = recording.truth.syllables[i];
+            if (syllable.sentence != k) continue;
             syllable.start_s = offset_s + static_cast<double>(spoken.syllables[j].start) / rate;
             syllable.end_s = offset_s + static_cast<double>(spoken.syllables[j].end) / rate;
-            recording.after_pause[indices[j]] = spoken.syllables[j].after_pause;
+            recording.after_pause[i] = spoken.syllables[j].after_pause;
+            ++j;
         }
         auto& sentence = recording.truth.sentences[k];
         sentence.start_s = offset_s;
         sentence.end_s = offset_s + static_cast<double>(spoken.samples.size()) / rate;
         samples.insert(samples.end(), spoken.samples.begin(), spoken.samples.end());
     }
-    samples.resize(samples.size() + static_cast<std::size_t>(std::lround(delivery.gaps_s.back() * rate)), 0.0f);
+    samples.resize(samples.size() + static_cast<std::size_t>(std::lround(gaps_s.back() * rate)), 0.0f);
     recording.truth.duration_s = static_cast<double>(samples.size()) / rate;
     return recording;
 }
@@ -348,29 +379,43 @@ void make_corpus(const CorpusOptions& options) {
     double seconds = 0;
     for (std::size_t p = 0; p < passages.size(); ++p) {
         const Passage& passage = passages[p];
-        std::map<double, Recording> spoken;  // by rate factor: fast and slow are spoken again
+        // espeak-ng speaks each passage once per rate (fast and slow again); the sentences it
+        // spoke are joined once per kind of pause between them. Joining, not speaking again, keeps
+        // espeak-ng's calls, and so every other condition's files, what they were for the same seed.
+        std::map<double, SpokenPassage> spoken;
+        std::map<std::pair<double, bool>, Recording> joined;
         const fs::path clean_wav = work / (passage.name + "-clean.wav");
-        const auto master_wav = [&](double rate_factor) {
-            return (work / (passage.name + "-x" + std::to_string(std::lround(rate_factor * 100)) + ".wav")).string();
+        const auto master_wav = [&](const Condition& condition) {
+            return (work / (passage.name + "-x" + std::to_string(std::lround(condition.rate_factor * 100)) +
+                            (condition.runs_together ? "-joined" : "") + ".wav"))
+                .string();
         };
         for (std::size_t c = 0; c < options.conditions.size(); ++c) {
             const Condition& condition = *options.conditions[c];
-            auto found = spoken.find(condition.rate_factor);
-            if (found == spoken.end()) {
-                found = spoken.emplace(condition.rate_factor,
-                                       speak_passage(voice, passage.transcript, passage.delivery, condition.rate_factor,
-                                                     passage.name))
-                            .first;
-                talkface_bench::write_wav(master_wav(condition.rate_factor), found->second.audio);
+            const auto condition_index = static_cast<std::uint64_t>(&condition - all_conditions);
+            auto voice_found = spoken.find(condition.rate_factor);
+            if (voice_found == spoken.end()) {
+                voice_found = spoken.emplace(condition.rate_factor, speak_passage(voice, passage.transcript, passage.delivery,
+                                                                                  condition.rate_factor, passage.name))
+                                  .first;
+            }
+            const auto key = std::make_pair(condition.rate_factor, condition.runs_together);
+            auto found = joined.find(key);
+            if (found == joined.end()) {
+                // The joints come from a stream of their own: the passage's draws stay as they were.
+                const Delivery delivery = condition.runs_together
+                                              ? join_sentences(passage.delivery, options.seed, p, condition_index)
+                                              : passage.delivery;
+                found = joined.emplace(key, join_passage(voice_found->second, delivery.gaps_s)).first;
+                talkface_bench::write_wav(master_wav(condition), found->second.audio);
             }
             const Recording& recording = found->second;
             const fs::path stem = out / condition.name / passage.name;
             const std::string audio_path = stem.string() + "." + condition.extension;
             if (condition.noise == Noise::none) {
-                run_sox(master_wav(condition.rate_factor), audio_path, condition);
+                run_sox(master_wav(condition), audio_path, condition);
             } else {
-                if (!fs::exists(clean_wav)) run_sox(master_wav(condition.rate_factor), clean_wav.string(), all_conditions[0]);
-                const auto condition_index = static_cast<std::uint64_t>(&condition - all_conditions);
+                if (!fs::exists(clean_wav)) run_sox(master_wav(condition), clean_wav.string(), all_conditions[0]);
                 std::seed_seq noise_seed{options.seed, static_cast<std::uint64_t>(p), condition_index};
                 std::mt19937_64 rng(noise_seed);
                 talkface_bench::write_wav(audio_path, add_noise(talkface_bench::read_wav(clean_wav.string()),
@@ -380,7 +425,8 @@ void make_corpus(const CorpusOptions& options) {
             write_text(stem.string() + ".json", truth_json(recording, passage.delivery, condition.rate_factor,
                                                            condition.name, passage.set));
         }
-        seconds += spoken.count(1.0) ? spoken.at(1.0).truth.duration_s : 0.0;
+        const auto normal = joined.find({1.0, false});
+        seconds += normal != joined.end() ? normal->second.truth.duration_s : 0.0;
         std::cout << passage.name << " (" << p + 1 << "/" << passages.size() << ")\n" << std::flush;
     }
     fs::remove_all(work);
@@ -407,7 +453,7 @@ void make_clip(const ClipOptions& options) {
     for (std::size_t i = 1; i < count; ++i) delivery.gaps_s.push_back(options.pause_s);
     delivery.gaps_s.push_back(0.3);
     talkface_bench::EspeakVoice voice;
-    const auto recording = speak_passage(voice, options.text, delivery, 1.0, options.stem);
+    const auto recording = join_passage(speak_passage(voice, options.text, delivery, 1.0, options.stem), delivery.gaps_s);
     const std::string master = options.stem + ".master.wav";
     talkface_bench::write_wav(master, recording.audio);
     run_sox(master, options.stem + ".wav", all_conditions[0]);

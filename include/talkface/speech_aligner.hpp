@@ -31,7 +31,9 @@ using ProgressCallback = std::function<bool(double fraction, const std::string& 
 /// How the audio is cut into sentence utterances.
 enum class SentenceCutMode : int {
     /// The default: the noise level and pause lengths are learned from the audio itself, and the
-    /// transcript's number of sentences picks the pauses.
+    /// transcript's number of sentences picks the pauses. Where a sentence end has no pause of its
+    /// own (sentences run together, or only a comma's pause to take for it), the neighbouring
+    /// sentences are aligned as one and their syllables place the end.
     automatic = 0,
     /// Algorithm 3.1 as the thesis writes it: the caller gives the first pause between sentences
     /// (first_pause_start_s .. first_pause_end_s); silences are parts quieter than c2 times that

@@ -42,11 +42,11 @@ using ProgressCallback = std::function<bool(double fraction, const std::string& 
 /// Safari), alone or driven by a page's audio clock (web_page.hpp).
 enum class AnimationEncoding : int {
     /// The default: the face drawn once, each moving element animated by SMIL <animate> between
-    /// key frames that the browser interpolates linearly (an outline may move under an animated
-    /// translate of its own). Key frames are chosen per element from every frame of the animation
-    /// so that no drawn point strays from the frame it stands for by more than
-    /// SvgAnimationOptions::tolerance_px, plus 0.06 px of rounding (0.19 px for a Bezier control
-    /// point that an S command leaves implicit): small files.
+    /// key frames that the browser interpolates linearly (the head's groups turn with its tilt, and
+    /// an outline may move under an animated translate of its own). Key frames are chosen per
+    /// element from every frame of the animation so that no drawn point strays from the frame it
+    /// stands for by more than SvgAnimationOptions::tolerance_px, plus 0.06 px of rounding (0.19 px
+    /// for a Bezier control point that an S or T command leaves implicit): small files.
     keyframes = 0,
     /// Thesis 6.3.2: one <g> per frame, hidden except while its <set> shows it. Identical
     /// consecutive frames share one group. Exact at every frame, but large.

@@ -1,5 +1,6 @@
 // The hair and face layers: thesis Algorithm 2.2 steps 2-14, with Algorithm 2.3's substitutions
 // (contour points past 10 degrees, the nose bridge side) already chosen by project_face().
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -162,9 +163,12 @@ std::string draw_eyes(const ProjectedFace& face, const FaceLook& look) {
                look.eye_white + "/>\n";
         // Clipped by the eye outline, so a closing lid hides iris and pupil (thesis 6.3.1).
         const Point2 pupil = look.point(face, eye.eyeball);
-        const double iris_radius = face.face.fapu(eye.radius_fapu);
+        const double iris_radius_px = face.face.fapu(eye.radius_fapu);
+        const double iris_radius = look.view.scale() * iris_radius_px;
         const double pupil_radius = kPupilToIrisRadius * iris_radius;
-        const Point2 highlight{pupil.x - 0.35 * iris_radius, pupil.y - 0.35 * iris_radius};
+        // The light comes from the upper left of the image, whatever the view turns.
+        const Point2 light = look.view.apply_to_offset({-0.35 * iris_radius_px, -0.35 * iris_radius_px});
+        const Point2 highlight{pupil.x + light.x, pupil.y + light.y};
         const int decimals = look.style.decimals;
         svg += "<g" + attribute("class", std::string("eyeball-") + eye.side) +
                attribute("clip-path", "url(#" + eye_clip_id(eye) + ")") + ">\n" +
@@ -198,9 +202,34 @@ std::string draw_mouth(const ProjectedFace& face, const FaceLook& look) {
 
 }  // namespace
 
+ViewMap::ViewMap(Point2 origin, double angle_deg, double scale)
+    : is_identity_(false), origin_(origin), scale_(scale) {
+    const double angle_rad = angle_deg * (3.14159265358979323846 / 180.0);
+    cos_ = std::cos(angle_rad);
+    sin_ = std::sin(angle_rad);
+}
+
+Point2 ViewMap::apply_to_offset(Point2 offset_px) const {
+    if (is_identity_) return offset_px;
+    return {scale_ * (cos_ * offset_px.x + sin_ * offset_px.y),
+            scale_ * (cos_ * offset_px.y - sin_ * offset_px.x)};
+}
+
+Point2 ViewMap::apply(Point2 image_xy) const {
+    // The identity leaves the numbers as they are, bit for bit: a single frame is drawn this way.
+    if (is_identity_) return image_xy;
+    return apply_to_offset({image_xy.x - origin_.x, image_xy.y - origin_.y});
+}
+
 Point2 FaceLook::point(const ProjectedFace& face, std::string_view id) const {
     const auto found = point_index.find(std::string(id));
-    return found == point_index.end() ? face.point(id) : face.image_xy[found->second];
+    return view.apply(found == point_index.end() ? face.point(id) : face.image_xy[found->second]);
+}
+
+std::vector<Point2> hair_polygon_in_view(const ProjectedFace& face, const FaceLook& look) {
+    std::vector<Point2> polygon = face.hair_polygon();
+    for (Point2& point : polygon) point = look.view.apply(point);
+    return polygon;
 }
 
 FaceLook make_face_look(const ProjectedFace& face, const LayerStyle& style) {
@@ -226,7 +255,7 @@ FaceLook make_face_look(const ProjectedFace& face, const LayerStyle& style) {
 
 std::string draw_hair_layer(const ProjectedFace& face, const FaceLook& look) {
     PathData outline(look.style.decimals);
-    outline.corner_cut_closed(face.hair_polygon());
+    outline.corner_cut_closed(hair_polygon_in_view(face, look));
     return "<path" + attribute("class", "hair") + attribute("d", outline.str()) + look.hair + "/>\n";
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <vector>
 
 #include "talkface/face_pose.hpp"
 #include "talkface/types.hpp"
@@ -27,20 +28,46 @@ struct CanvasBox {
     double height = 0.0;
 };
 
+// Where the layers are drawn: image pixels p as scale * Rotation(-angle) (p - origin). A single
+// frame is drawn in image pixels (the identity). The keyframes encoding draws the head in the
+// frame of a group that its SVG turns by the tilt and scales by 1 / scale (head_tilt.hpp):
+// the layers are drawn with points, so mapping the points maps the drawing (Catmull-Rom and
+// corner cutting take affine combinations of them), and a rotation with a uniform scale keeps
+// the eyeballs round.
+class ViewMap {
+public:
+    ViewMap() = default;
+    ViewMap(Point2 origin, double angle_deg, double scale);
+    Point2 apply(Point2 image_xy) const;
+    // A displacement in image pixels, in the drawing's units and directions.
+    Point2 apply_to_offset(Point2 offset_px) const;
+    double scale() const { return scale_; }
+
+private:
+    bool is_identity_ = true;
+    Point2 origin_{0.0, 0.0};
+    double scale_ = 1.0;
+    double cos_ = 1.0, sin_ = 0.0;
+};
+
 // What every state of one face is drawn with: the style, the paint attributes and gradients, and
 // where each point id stands in ProjectedFace::image_xy (the same for every state of a face). An
-// animation builds it once instead of once a frame.
+// animation builds it once instead of once a frame, and sets its view per frame.
 struct FaceLook {
-    LayerStyle style;
+    LayerStyle style;  // in the view's units
+    ViewMap view;
     std::string skin, hair, nose, brows, eye_white, eye_outline, lips, mouth_opening;
     std::array<std::string, 2> iris_gradients;  // <radialGradient> of the image-left, right iris
     std::unordered_map<std::string, std::size_t> point_index;
-    // A point of `face` by id. \throws talkface::InvalidArgument for an unknown id.
+    // A point of `face` by id, in the view. \throws talkface::InvalidArgument for an unknown id.
     Point2 point(const ProjectedFace& face, std::string_view id) const;
 };
 
 // The look of `face`, at any state of it.
 FaceLook make_face_look(const ProjectedFace& face, const LayerStyle& style);
+
+// The hair polygon of `face` in the look's view: what draw_hair_layer() draws from.
+std::vector<Point2> hair_polygon_in_view(const ProjectedFace& face, const FaceLook& look);
 
 // The hair contour: the 23 hair points, corner-cut (curves.hpp), filled with the hair colour.
 std::string draw_hair_layer(const ProjectedFace& face, const FaceLook& look);

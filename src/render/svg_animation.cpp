@@ -5,23 +5,25 @@
 // The key frames come from the drawn frames themselves, not from the mouth key frames and events:
 // whatever moves (lips, jaw, lids, eyeballs, the whole head) gets exactly the key frames it needs
 // for linear interpolation to stay within the tolerance of every frame, and whatever holds still
-// gets none. This relies on each frame's document having the same elements and the same path
-// commands, only other numbers: the layers draw a fixed number of points at every pose (contour
-// substitution changes which points, not how many). A frame that breaks this is a bug, reported
-// as one.
+// gets none. The head's tilt is taken out first: one rotate of the head's groups (head_tilt.hpp),
+// the layers drawn in the groups' frame. This relies on each frame's document having the same
+// elements and the same path commands, only other numbers: the layers draw a fixed number of
+// points at every pose (contour substitution changes which points, not how many). A frame that
+// breaks this is a bug, reported as one.
 #include "render/svg_animation.hpp"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "common/number_format.hpp"
+#include "render/head_tilt.hpp"
+#include "render/key_frames.hpp"
 #include "render/svg_text.hpp"
 #include "talkface/errors.hpp"
 
@@ -55,9 +57,6 @@ void validate(const Animation& animation, const SvgAnimationOptions& options) {
         throw InvalidArgument("encoding", "expected keyframes or frames, found " + std::to_string(encoding));
     }
 }
-
-// Seconds as SMIL clock values: milliseconds are finer than any frame.
-std::string clock_value(double seconds) { return format_fixed(seconds, 3) + "s"; }
 
 // --- frames ----------------------------------------------------------------------------------
 
@@ -219,150 +218,35 @@ bool read_matching_numbers(std::string_view text, const std::vector<std::string>
     return i == text.size();
 }
 
-// One attribute of the first frame's document, followed through every frame.
-struct Track {
-    std::vector<std::string> pieces;  // the text around its numbers
-    std::size_t width = 0;            // numbers per frame
-    std::vector<float> numbers;       // width numbers per frame, frame after frame
-    bool varies = false;
-};
+// The head's layers are drawn in tenths of a pixel (head_tilt.hpp), and animated values are written
+// rounded to whole tenths: 0.05 px of rounding on top of the tolerance, far below what shows. Every
+// length below is in these units.
+constexpr double kUnitsPerPx = kHeadUnitsPerPx;
 
-// The key frames of one attribute: where they stand on the frame axis, and their numbers.
-struct KeyFrames {
-    std::vector<double> positions;  // in frames, rising from 0 to the last frame
-    Track values;                   // one row of the track's width per key, with the track's pieces
-};
-
-// Weights below this (px per frame of change in slope) say nothing about where a bend lies.
-constexpr double kBendWeightFloor = 1e-3;
-// A key stays clear of the frame after it, which the next segment must still reach within the
-// tolerance: at that frame itself the next segment would have no span to do it in.
-constexpr double kLatestBend = 0.9;
-
-// Key frames for linear interpolation within `tolerances` of every frame, chosen greedily. For
-// each number the admissible slopes from the segment's start form an interval that every frame
-// inside the segment narrows; a frame can end the segment while its own slope stays inside every
-// interval. When a frame cannot, the segment ends where the motion bent: lips move straight from
-// one mouth key frame to the next, and a mouth key frame falls between two drawn frames. Each
-// number's line so far and its line through the two frames after the bend cross there; one key
-// at their weighted mean crossing, on the lines so far, stands for the two frames on either side
-// of the bend (the frames before it lie on those lines, as their slopes showed). Linear in the
-// frames.
-KeyFrames choose_key_frames(const Track& track, std::size_t frame_count,
-                            const std::vector<double>& tolerances) {
-    const std::size_t width = track.width;
-    auto value = [&](std::size_t frame, std::size_t k) {
-        return static_cast<double>(track.numbers[frame * width + k]);
-    };
-    KeyFrames keys;
-    keys.values.width = width;
-    keys.values.pieces = track.pieces;
-    double start = 0.0;
-    std::vector<double> start_values(width);
-    for (std::size_t k = 0; k < width; ++k) start_values[k] = value(0, k);
-    auto add_key = [&] {
-        keys.positions.push_back(start);
-        for (const double number : start_values) keys.values.numbers.push_back(static_cast<float>(number));
-    };
-    add_key();
-    std::vector<double> low(width);
-    std::vector<double> high(width);
-    auto reset = [&] {
-        std::fill(low.begin(), low.end(), -std::numeric_limits<double>::infinity());
-        std::fill(high.begin(), high.end(), std::numeric_limits<double>::infinity());
-    };
-    reset();
-    for (std::size_t frame = 1; frame < frame_count; ++frame) {
-        bool fits = true;
-        for (std::size_t k = 0; k < width && fits; ++k) {
-            const double slope = (value(frame, k) - start_values[k]) / (static_cast<double>(frame) - start);
-            fits = slope >= low[k] && slope <= high[k];
-        }
-        if (!fits) {
-            const std::size_t before = frame - 1;
-            const double span = static_cast<double>(before) - start;
-            double bend = 0.0;  // after `before`, in frames
-            if (frame + 1 < frame_count && span > 0.0) {
-                double weighted = 0.0, weights = 0.0;
-                for (std::size_t k = 0; k < width; ++k) {
-                    const double slope_so_far = (value(before, k) - start_values[k]) / span;
-                    const double slope_after = value(frame + 1, k) - value(frame, k);
-                    const double weight = std::abs(slope_so_far - slope_after);
-                    if (weight < kBendWeightFloor) continue;
-                    const double crossing =
-                        (value(frame, k) - value(before, k) - slope_after) / (slope_so_far - slope_after);
-                    weighted += weight * std::clamp(crossing, 0.0, 1.0);
-                    weights += weight;
-                }
-                if (weights > 0.0) bend = std::min(weighted / weights, kLatestBend);
-            }
-            for (std::size_t k = 0; k < width; ++k) {
-                const double slope_so_far = span > 0.0 ? (value(before, k) - start_values[k]) / span : 0.0;
-                start_values[k] = value(before, k) + slope_so_far * bend;
-            }
-            start = static_cast<double>(before) + bend;
-            add_key();
-            reset();
-        }
-        const double span = static_cast<double>(frame) - start;
-        for (std::size_t k = 0; k < width; ++k) {
-            const double offset = value(frame, k) - start_values[k];
-            low[k] = std::max(low[k], (offset - tolerances[k]) / span);
-            high[k] = std::min(high[k], (offset + tolerances[k]) / span);
-        }
-    }
-    const std::size_t last = frame_count - 1;
-    if (keys.positions.back() != static_cast<double>(last)) {
-        start = static_cast<double>(last);
-        for (std::size_t k = 0; k < width; ++k) start_values[k] = value(last, k);
-        add_key();
-    }
-    return keys;
-}
-
-// Animated values are written in tenths of a pixel: 0.05 px of rounding on top of the tolerance,
-// far below what shows, and a third fewer bytes than the frames' own two decimals.
-constexpr double kValueScale = 10.0;
-
-// A number in tenths as short as SVG allows: "12.3", "-.5", "7".
-void append_tenths(std::string& text, long tenths) {
-    if (tenths < 0) {
-        text += '-';
-        tenths = -tenths;
-    }
-    const long whole = tenths / 10;
-    const long tenth = tenths % 10;
-    if (whole != 0 || tenth == 0) text += std::to_string(whole);
-    if (tenth != 0) {
-        text += '.';
-        text += static_cast<char>('0' + tenth);
-    }
-}
-
-void append_separated(std::string& text, long tenths) {
+void append_whole(std::string& text, long value) {
     // A minus sign separates numbers by itself in SVG's number lists and path data.
-    if (!text.empty() && tenths >= 0) {
+    if (!text.empty() && value >= 0) {
         const char last = text.back();
-        if ((last >= '0' && last <= '9') || last == '.') text += ' ';
+        if (last >= '0' && last <= '9') text += ' ';
     }
-    append_tenths(text, tenths);
+    text += std::to_string(value);
 }
 
-std::vector<long> rounded_tenths(const Track& track, std::size_t frame) {
-    std::vector<long> tenths(track.width);
+std::vector<long> rounded_values(const Track& track, std::size_t frame) {
+    std::vector<long> values(track.width);
     for (std::size_t k = 0; k < track.width; ++k) {
-        tenths[k] = std::lround(static_cast<double>(track.numbers[frame * track.width + k]) * kValueScale);
+        values[k] = std::lround(static_cast<double>(track.numbers[frame * track.width + k]));
     }
-    return tenths;
+    return values;
 }
 
 // A value with the frame's numbers, in the text of frame 0 (a point list, a coordinate).
 std::string track_value(const Track& track, std::size_t frame) {
-    const std::vector<long> tenths = rounded_tenths(track, frame);
+    const std::vector<long> values = rounded_values(track, frame);
     std::string text;
     for (std::size_t k = 0; k < track.width; ++k) {
         text += track.pieces[k];
-        append_tenths(text, tenths[k]);
+        text += std::to_string(values[k]);
     }
     text += track.pieces[track.width];
     return text;
@@ -372,8 +256,10 @@ std::string track_value(const Track& track, std::size_t frame) {
 // Our paths use M, L, C, Q and Z only, each command letter written before its points.
 struct PathPoint {
     char command = 'M';
-    int place = 0;               // 0 .. 2 in a C segment (c1, c2, end), 0 .. 1 in a Q, else 0
-    bool is_implied_c1 = false;  // written as part of an S: the previous c2 reflected through the pen
+    int place = 0;  // 0 .. 2 in a C segment (c1, c2, end), 0 .. 1 in a Q, else 0
+    // The first control point of a segment that is the previous one's last control point reflected
+    // through the pen, left to an S (after a C) or a T (after a Q).
+    bool is_implied_control = false;
     bool closes_before = false;  // a Z comes before this point
 };
 
@@ -381,12 +267,14 @@ int points_per_segment(char command) {
     return command == 'C' ? 3 : command == 'Q' ? 2 : 1;
 }
 
-// The largest gap between a c1 and the reflection of the previous c2 for which the c1 is left to an
-// S command: the frames' own rounding (three coordinates at 0.005 px), no more.
-constexpr double kReflectionGapPx = 0.02;
+// The largest gap between a control point and the reflection of the previous one for which it is
+// left to an S or T command: the frames' own rounding (three coordinates at 0.005 px), no more.
+constexpr double kReflectionGap = 0.02 * kUnitsPerPx;
 
-// The layout of a path track, with every c1 that is the previous c2 reflected through the pen in
-// every frame (the joins of a Catmull-Rom arc are) marked to be written as S: a third fewer numbers.
+// The layout of a path track, with every control point that is the previous one reflected through
+// the pen in every frame marked to be left implicit. The joins of a Catmull-Rom arc are such (S: a
+// third fewer numbers), and so is every join of a corner-cut outline, the quadratic B-spline of a
+// polygon (T: half the numbers): the pen is the middle of an edge, the controls its two corners.
 std::vector<PathPoint> path_layout(const Track& track, std::size_t frame_count) {
     std::vector<PathPoint> layout(track.width / 2);
     char command = 'M';
@@ -404,20 +292,36 @@ std::vector<PathPoint> path_layout(const Track& track, std::size_t frame_count) 
         ++place;
     }
     for (std::size_t j = 2; j < layout.size(); ++j) {
-        const bool follows_cubic_end = layout[j - 1].command == 'C' && layout[j - 1].place == 2;
-        if (layout[j].command != 'C' || layout[j].place != 0 || !follows_cubic_end || layout[j].closes_before)
-            continue;
+        const char segment_command = layout[j].command;
+        const bool is_curve = segment_command == 'C' || segment_command == 'Q';
+        const bool follows_same_curve = layout[j - 1].command == segment_command &&
+                                        layout[j - 1].place + 1 == points_per_segment(segment_command);
+        if (!is_curve || layout[j].place != 0 || !follows_same_curve || layout[j].closes_before) continue;
         bool is_reflection = true;
         for (std::size_t frame = 0; frame < frame_count && is_reflection; ++frame) {
             const float* n = track.numbers.data() + frame * track.width;
             for (std::size_t axis = 0; axis < 2; ++axis) {
                 const double reflected = 2.0 * n[2 * (j - 1) + axis] - n[2 * (j - 2) + axis];
-                is_reflection = is_reflection && std::abs(n[2 * j + axis] - reflected) <= kReflectionGapPx;
+                is_reflection = is_reflection && std::abs(n[2 * j + axis] - reflected) <= kReflectionGap;
             }
         }
-        layout[j].is_implied_c1 = is_reflection;
+        layout[j].is_implied_control = is_reflection;
     }
     return layout;
+}
+
+// A T's control point is the previous control reflected through the pen, and that one may be a T's
+// too: rounding would add up along the chain. So the end point before a T is rounded to where it
+// makes the T's control nearest to the frame's, which keeps that control within 0.1 px (a grid step)
+// of the interpolated frame's, and the end point itself within 0.11 px: 0.06 px more than rounding to
+// the nearest tenth, which the key frames of such a path leave over from the tolerance.
+constexpr double kChainRounding = 0.06 * kUnitsPerPx;
+
+double chain_rounding(const std::vector<PathPoint>& layout) {
+    for (const PathPoint& point : layout) {
+        if (point.is_implied_control && point.command == 'Q') return kChainRounding;
+    }
+    return 0.0;
 }
 
 // Path data with relative commands: the same shape in fewer bytes (small offsets instead of full
@@ -425,34 +329,54 @@ std::vector<PathPoint> path_layout(const Track& track, std::size_t frame_count) 
 // is linear. Offsets are taken between rounded coordinates, so rounding never accumulates along the
 // path. A c1 left to an S is interpolated as the reflection of interpolated points, which is the
 // interpolated reflection: it strays no further than the points it is made of (three of them, so
-// three times their rounding).
+// three times their rounding), or for a T, than the chain's rounding allows (kChainRounding).
 std::string relative_path_value(const Track& track, const std::vector<PathPoint>& layout, std::size_t frame) {
-    const std::vector<long> tenths = rounded_tenths(track, frame);
+    std::vector<long> rounded = rounded_values(track, frame);
+    const float* exact = track.numbers.data() + frame * track.width;
     std::string text;
     long current_x = 0, current_y = 0, start_x = 0, start_y = 0;
     long reference_x = 0, reference_y = 0;
+    long control_x = 0, control_y = 0;  // the last quadratic control point, as drawn
+    // SVG repeats a command for as many numbers as follow it: a letter like the one before (other
+    // than a move, whose repeats draw lines) is left out.
+    char last_command = 'z';
+    auto write_command = [&](char command) {
+        if (command != last_command || command == 'M' || command == 'm' || command == 'z') text += command;
+        last_command = command;
+    };
     for (std::size_t j = 0; j < layout.size(); ++j) {
         const PathPoint& point = layout[j];
         if (point.closes_before) {
-            text += 'z';
+            write_command('z');
             current_x = start_x;
             current_y = start_y;
         }
-        if (point.is_implied_c1) {
-            text += 's';
+        if (point.is_implied_control) {
+            write_command(point.command == 'C' ? 's' : 't');
+            control_x = 2 * current_x - control_x;
+            control_y = 2 * current_y - control_y;
             continue;
         }
-        const bool starts_command = point.place == 0 && !(j > 0 && layout[j - 1].is_implied_c1);
-        if (starts_command) text += j == 0 ? 'M' : static_cast<char>(point.command - 'A' + 'a');
-        // Every point of a curve segment is relative to where the segment starts (SVG "c", "s", "q").
-        if (point.place == 0 || (point.place == 1 && layout[j - 1].is_implied_c1)) {
+        const bool starts_command = point.place == 0 && !(j > 0 && layout[j - 1].is_implied_control);
+        if (starts_command) write_command(j == 0 ? 'M' : static_cast<char>(point.command - 'A' + 'a'));
+        // Every point of a curve segment is relative to where the segment starts (SVG "c", "s", "q", "t").
+        if (point.place == 0 || (point.place == 1 && layout[j - 1].is_implied_control)) {
             reference_x = j == 0 ? 0 : current_x;
             reference_y = j == 0 ? 0 : current_y;
         }
-        const long x = tenths[2 * j];
-        const long y = tenths[2 * j + 1];
-        append_separated(text, x - reference_x);
-        append_separated(text, y - reference_y);
+        if (point.command == 'Q' && point.place == 0) {
+            control_x = rounded[2 * j];
+            control_y = rounded[2 * j + 1];
+        }
+        if (point.command == 'Q' && point.place == 1 && j + 1 < layout.size() &&
+            layout[j + 1].is_implied_control) {
+            rounded[2 * j] = std::lround((static_cast<double>(control_x) + exact[2 * j + 2]) / 2.0);
+            rounded[2 * j + 1] = std::lround((static_cast<double>(control_y) + exact[2 * j + 3]) / 2.0);
+        }
+        const long x = rounded[2 * j];
+        const long y = rounded[2 * j + 1];
+        append_whole(text, x - reference_x);
+        append_whole(text, y - reference_y);
         if (point.place + 1 == points_per_segment(point.command)) {
             current_x = x;
             current_y = y;
@@ -466,27 +390,17 @@ std::string relative_path_value(const Track& track, const std::vector<PathPoint>
     return text;
 }
 
-std::string key_times_of(const KeyFrames& keys, std::size_t frame_count) {
-    const double last = static_cast<double>(frame_count - 1);
-    std::string key_times;
-    for (std::size_t i = 0; i < keys.positions.size(); ++i) {
-        if (i > 0) key_times += ';';
-        // Six digits place a key time within 1 ms on an animation of 15 minutes.
-        key_times += format_fixed(keys.positions[i] / last, 6);
-    }
-    return key_times;
-}
-
 // --- outlines that move as a whole -------------------------------------------------------------
 //
-// A head pose moves each feature mostly as a whole: its points rotate about O and shift with their
-// depth (SPEC "Pose": rotation and orthographic projection), and a small feature far from O turns
-// little about its own centre. So an outline can be written as its points about their mean, under
-// an animated translate that carries the mean: two numbers a key frame for the motion, and the
-// outline's own key frames only where its shape changes beyond its share of the tolerance (the jaw
-// opens, a lid closes, a brow rises, the turn or tilt bends it). The encoder keeps this or the plain
-// animation, whichever is shorter. (A full affine map per outline was tried before: its four
-// transform animations, each with its own key times, cost more than they saved.)
+// A turn or a nod moves each feature mostly as a whole: its points shift with their depth (SPEC
+// "Pose": rotation and orthographic projection; the tilt is the head groups' own). So an outline can
+// be written as its points about their mean, under an animated translate that carries the mean: two
+// numbers a key frame for the motion, and the outline's own key frames only where its shape changes
+// beyond its share of the tolerance (the jaw opens, a lid closes, a brow rises, the turn bends it).
+// The encoder keeps this or the plain animation, whichever is shorter. (A full affine map per
+// outline was tried before: its four transform animations, each with its own key times, cost more
+// than they saved. One affine map for the whole head, the turn's and nod's linear part, saves
+// nothing either: what is left is each point's own depth.)
 
 struct MovedOutline {
     double centre_x = 0.0, centre_y = 0.0;  // the mean of the first frame's points
@@ -496,8 +410,8 @@ struct MovedOutline {
 
 // The translate's share of the tolerance; the outline has the rest, less the rounding of both.
 constexpr double kOffsetShare = 1.0 / 3.0;
-constexpr int kOffsetDecimals = 2;
-constexpr double kOffsetRoundingPx = 0.005;
+constexpr int kOffsetDecimals = 1;
+constexpr double kOffsetRounding = 0.05;
 
 MovedOutline split_motion(const Track& track, std::size_t frame_count) {
     const std::size_t points = track.width / 2;
@@ -530,13 +444,17 @@ MovedOutline split_motion(const Track& track, std::size_t frame_count) {
     return moved;
 }
 
-// The values of an attribute over its key frames: path data relative, other point lists as they are.
-// `track` is what the key frames were chosen from (its frames say which c1s an S can leave out).
-std::string key_values(std::string_view attribute_name, const Track& track, const KeyFrames& keys,
-                       std::size_t frame_count) {
+// The layout of an attribute's track: a path's (path_layout()), none for other point lists.
+std::vector<PathPoint> layout_of(std::string_view attribute_name, const Track& track,
+                                 std::size_t frame_count) {
+    return attribute_name == "d" ? path_layout(track, frame_count) : std::vector<PathPoint>();
+}
+
+// The values of an attribute over its key frames: path data relative (with `layout`, which says
+// which control points are left implicit), other point lists as they are.
+std::string key_values(std::string_view attribute_name, const std::vector<PathPoint>& layout,
+                       const KeyFrames& keys) {
     const bool is_path = attribute_name == "d";
-    const std::vector<PathPoint> layout =
-        is_path ? path_layout(track, frame_count) : std::vector<PathPoint>();
     std::string values;
     for (std::size_t i = 0; i < keys.positions.size(); ++i) {
         if (i > 0) values += ';';
@@ -546,12 +464,13 @@ std::string key_values(std::string_view attribute_name, const Track& track, cons
 }
 
 std::string animate_element(std::string_view attribute_name, const Track& track, std::size_t frame_count,
-                            double duration_s, const SvgAnimationOptions& options) {
-    const KeyFrames keys =
-        choose_key_frames(track, frame_count, std::vector<double>(track.width, options.tolerance_px));
+                            double duration_s, double tolerance) {
+    const std::vector<PathPoint> layout = layout_of(attribute_name, track, frame_count);
+    const KeyFrames keys = choose_key_frames(
+        track, frame_count, std::vector<double>(track.width, tolerance - chain_rounding(layout)));
     return "<animate attributeName=\"" + std::string(attribute_name) + "\"" +
            attribute("dur", clock_value(duration_s)) +
-           attribute("values", key_values(attribute_name, track, keys, frame_count)) +
+           attribute("values", key_values(attribute_name, layout, keys)) +
            attribute("keyTimes", key_times_of(keys, frame_count)) + " fill=\"freeze\"/>";
 }
 
@@ -573,10 +492,11 @@ MovedText moved_outline_text(const MovedOutline& moved, std::string_view attribu
         moved.outline.numbers.begin(),
         moved.outline.numbers.begin() + static_cast<std::ptrdiff_t>(moved.outline.width));
     MovedText text;
-    text.value = key_values(attribute_name, moved.outline, first_frame, frame_count) +
-                 "\" transform=\"translate(" + format_fixed(moved.centre_x, kOffsetDecimals) + " " +
+    const std::vector<PathPoint> layout = layout_of(attribute_name, moved.outline, frame_count);
+    text.value = key_values(attribute_name, layout, first_frame) + "\" transform=\"translate(" +
+                 format_fixed(moved.centre_x, kOffsetDecimals) + " " +
                  format_fixed(moved.centre_y, kOffsetDecimals) + ")";
-    const double outline_tolerance = (1.0 - kOffsetShare) * tolerance - 0.5 / kValueScale;
+    const double outline_tolerance = (1.0 - kOffsetShare) * tolerance - 0.5 - chain_rounding(layout);
     const KeyFrames outline_keys = choose_key_frames(
         moved.outline, frame_count, std::vector<double>(moved.outline.width, outline_tolerance));
     // Two key frames that agree within the tolerance: the outline holds its shape.
@@ -587,12 +507,12 @@ MovedText moved_outline_text(const MovedOutline& moved, std::string_view attribu
                      moved.outline.numbers[(frame_count - 1) * moved.outline.width + k]) > outline_tolerance;
     }
     if (is_reshaped) {
-        text.animations +=
-            "<animate attributeName=\"" + std::string(attribute_name) + "\"" + dur +
-            attribute("values", key_values(attribute_name, moved.outline, outline_keys, frame_count)) +
-            attribute("keyTimes", key_times_of(outline_keys, frame_count)) + " fill=\"freeze\"/>";
+        text.animations += "<animate attributeName=\"" + std::string(attribute_name) + "\"" + dur +
+                           attribute("values", key_values(attribute_name, layout, outline_keys)) +
+                           attribute("keyTimes", key_times_of(outline_keys, frame_count)) +
+                           " fill=\"freeze\"/>";
     }
-    const double offset_tolerance = kOffsetShare * tolerance - kOffsetRoundingPx;
+    const double offset_tolerance = kOffsetShare * tolerance - kOffsetRounding;
     const KeyFrames keys = choose_key_frames(moved.offset, frame_count, {offset_tolerance, offset_tolerance});
     std::string values;
     for (std::size_t i = 0; i < keys.positions.size(); ++i) {
@@ -631,8 +551,9 @@ class KeyframesEncoder {
 public:
     // `expected_frames`: how many frames will come, so that each moving attribute's numbers are
     // allocated once instead of copied as they grow.
-    KeyframesEncoder(double fps, const SvgAnimationOptions& options, std::size_t expected_frames)
-        : fps_(fps), options_(options), expected_frames_(expected_frames) {}
+    // `tolerance`: SvgAnimationOptions::tolerance_px in the drawing's units.
+    KeyframesEncoder(double fps, double tolerance, std::size_t expected_frames)
+        : fps_(fps), tolerance_(tolerance), expected_frames_(expected_frames) {}
 
     void add(std::string frame_text) {
         if (frame_count_++ == 0) {
@@ -704,11 +625,11 @@ public:
             std::string animation;
             std::optional<MovedText> moved;
             if (track.varies) {
-                animation = animate_element(name, track, frame_count_, duration_s, options_);
+                animation = animate_element(name, track, frame_count_, duration_s, tolerance_);
                 // Outlines only: their numbers are points, and the element takes a transform.
                 if ((name == "points" || name == "d") && track.width % 2 == 0) {
                     moved = moved_outline_text(split_motion(track, frame_count_), name, frame_count_,
-                                               duration_s, options_.tolerance_px);
+                                               duration_s, tolerance_);
                 }
             }
             if (moved && moved->value.size() + moved->animations.size() <
@@ -744,13 +665,29 @@ private:
     }
 
     double fps_;
-    SvgAnimationOptions options_;
+    double tolerance_;
     std::size_t expected_frames_;
     std::size_t frame_count_ = 0;
     std::string first_text_;
     AttributeSplit first_;
     std::vector<Track> tracks_;
 };
+
+// The tilt's share of the tolerance at the farthest point from O: what its key frames leave over is
+// left to the layers' own key frames (head_tilt.hpp), so it is kept small enough that outlines
+// which only the tilt moves still hold still.
+constexpr double kTiltShare = 1.0 / 6.0;
+
+// The farthest any drawn point can be from `origin`: a corner of the canvas, which holds the face
+// at every pose.
+double reach_px(const CanvasBox& box, Point2 origin) {
+    double reach = 0.0;
+    for (const double x : {box.x, box.x + box.width}) {
+        for (const double y : {box.y, box.y + box.height})
+            reach = std::max(reach, std::hypot(x - origin.x, y - origin.y));
+    }
+    return reach;
+}
 
 }  // namespace
 
@@ -791,24 +728,28 @@ std::string render_animation(const FaceModel& face, const SvgOptions& svg_option
     FramesEncoder face_frames("face", animation.fps, group_counter);
     const bool is_frames = options.encoding == AnimationEncoding::frames;
     const std::size_t expected_frames = is_frames ? 0 : frame_count;
-    KeyframesEncoder hair_keyframes(animation.fps, options, expected_frames);
-    KeyframesEncoder face_keyframes(animation.fps, options, expected_frames);
+    KeyframesEncoder hair_keyframes(animation.fps, options.tolerance_px * kUnitsPerPx, expected_frames);
+    KeyframesEncoder face_keyframes(animation.fps, options.tolerance_px * kUnitsPerPx, expected_frames);
     std::string clothes_layer;
     std::string hair;
     std::string face_layer;
     std::vector<Point2> hair_points;
     // The look of the face: its d, hence the stroke, is the same at every state.
     FaceLook look;
+    HeadTilt tilt;
     const FaceState* previous = nullptr;
+    double previous_angle_deg = 0.0;
     for (std::size_t frame = 0; frame < frame_count; ++frame) {
         if (frame % kProgressEveryFrames == 0) {
             report(progress, kFramesShare * static_cast<double>(frame) / static_cast<double>(frame_count), "frames",
                    frame);
         }
         const FaceState& state = animation.frames[frame];
+        const double angle_deg = tilt.angle_deg.empty() ? 0.0 : tilt.angle_deg[frame];
         // Holds (pauses, a held head) repeat a frame exactly: draw it once.
         const bool is_repeat = previous != nullptr && state.pose == previous->pose &&
-                               state.expression == previous->expression && state.mouth == previous->mouth;
+                               state.expression == previous->expression && state.mouth == previous->mouth &&
+                               angle_deg == previous_angle_deg;
         // The hair holds still whenever its points do (the mouth and the eyes move without it).
         bool is_hair_repeat = is_repeat;
         if (!is_repeat) {
@@ -826,15 +767,26 @@ std::string render_animation(const FaceModel& face, const SvgOptions& svg_option
             }();
             if (frame == 0) {
                 const LayerStyle style{svg_options.decimals, svg_options.stroke_width_in_d * projected.d};
-                look = make_face_look(projected, style);
-                clothes_layer =
-                    "<g id=\"clothes\">\n" +
-                    (svg_options.draw_clothes
-                         ? draw_clothes_layer(projected, canvas.box, svg_options.clothes, look.style)
-                         : std::string()) +
-                    "</g>\n";
+                if (is_frames) {
+                    look = make_face_look(projected, style);
+                } else {
+                    // A decimal less in tenths of a pixel is the same precision.
+                    look = make_face_look(projected, LayerStyle{std::max(0, style.decimals - 1),
+                                                                style.stroke_px * kUnitsPerPx});
+                    tilt = plan_head_tilt(animation, projected.origin, reach_px(canvas.box, projected.origin),
+                                          kTiltShare * options.tolerance_px);
+                }
+                clothes_layer = "<g id=\"clothes\">\n" +
+                                (svg_options.draw_clothes
+                                     ? draw_clothes_layer(projected, canvas.box, svg_options.clothes, style)
+                                     : std::string()) +
+                                "</g>\n";
             }
-            std::vector<Point2> new_hair_points = projected.hair_polygon();
+            if (!is_frames) {
+                previous_angle_deg = tilt.angle_deg[frame];
+                look.view = ViewMap(tilt.origin, previous_angle_deg, kUnitsPerPx);
+            }
+            std::vector<Point2> new_hair_points = hair_polygon_in_view(projected, look);
             is_hair_repeat = frame > 0 && new_hair_points == hair_points;
             if (!is_hair_repeat) {
                 hair_points = std::move(new_hair_points);
@@ -867,9 +819,9 @@ std::string render_animation(const FaceModel& face, const SvgOptions& svg_option
         svg += hair_frames.finish() + clothes_layer + face_frames.finish();
     } else {
         const double hair_done = kFramesShare + 0.3 * (1.0 - kFramesShare);
-        svg += "<g id=\"hair\">\n" + hair_keyframes.finish(progress, kFramesShare, hair_done) + "</g>\n" +
-               clothes_layer + "<g id=\"face\">\n" + face_keyframes.finish(progress, hair_done, 1.0) +
-               "</g>\n";
+        svg += open_head_group(tilt, "hair") + hair_keyframes.finish(progress, kFramesShare, hair_done) +
+               "</g>\n" + clothes_layer + open_head_group(tilt, "face") +
+               face_keyframes.finish(progress, hair_done, 1.0) + "</g>\n";
     }
     svg += "</svg>\n";
     report(progress, 1.0, "encoding", frame_count);

@@ -211,7 +211,9 @@ std::vector<PhoneState> build_phone_chain(const std::vector<const Syllable*>& sy
                                                     "empty pinyin \"" + syllable.pinyin + "\"");
         const SplitSyllable parts = split(std::string(toneless));
         if (index > 0) {
-            const bool has_comma = syllables[index - 1]->pause_after;
+            // Sentences aligned together (run together by the speaker) may still have a pause
+            // between them, as long as a comma's or longer.
+            const bool has_comma = syllables[index - 1]->pause_after || syllables[index - 1]->sentence != syllable.sentence;
             states.push_back(has_comma ? pause_state(StateRole::comma_pause, index - 1, 20.0, 200, 0.0)
                                        : pause_state(StateRole::short_pause, index - 1, 6.0, 60, -3.0));
         }

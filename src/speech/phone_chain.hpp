@@ -54,8 +54,9 @@ struct PhoneState {
     bool has_tail = false;          // may last past max_frames, paying the prior's slope there per frame
 };
 
-// The chain of one sentence: edge silence, syllables (with optional pauses between them), edge
-// silence. `frames` is the sentence's length including the edge silences, `speech_frames` the
+// The chain of one sentence, or of neighbouring sentences aligned together: edge silence,
+// syllables (with optional pauses between them, of a comma's kind after a comma or a sentence's
+// end), edge silence. `frames` is the sentence's length including the edge silences, `speech_frames` the
 // part that is speech; vowel durations are scaled to fill it.
 // \throws talkface::InvalidArgument naming the syllable if its pinyin is not Mandarin.
 std::vector<PhoneState> build_phone_chain(const std::vector<const Syllable*>& syllables, std::size_t frames,

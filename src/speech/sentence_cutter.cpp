@@ -7,6 +7,7 @@
 
 #include "common/number_format.hpp"
 #include "speech/alignment_checks.hpp"
+#include "speech/run_together.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
@@ -99,13 +100,6 @@ std::vector<FrameSpan> choose_sentence_pauses(const LoudnessProfile& loudness, c
     const std::size_t sentence_count = syllables.size();
     const auto& pauses = loudness.pauses;
     const std::size_t boundary_count = sentence_count - 1;
-    if (pauses.size() < boundary_count) {
-        throw AlignmentError("the transcript has " + std::to_string(sentence_count) +
-                             " spoken sentences but the audio has only " + std::to_string(pauses.size() + 1) +
-                             " stretches of speech between pauses (" +
-                             span_text({loudness.speech_first_frame, loudness.speech_end_frame}) +
-                             "); is a sentence missing from the audio or added to the transcript?");
-    }
     std::size_t total_syllables = 0;
     for (std::size_t count : syllables) total_syllables += count;
     std::vector<std::size_t> lengths;
@@ -225,8 +219,8 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     return profile;
 }
 
-std::vector<FrameSpan> cut_sentences(const FeatureTrack& track, const LoudnessProfile& loudness,
-                                     const Timeline& transcript, const AlignOptions& options) {
+SentenceCut cut_sentences(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
+                          const AlignOptions& options) {
     const std::vector<std::size_t> all_counts = syllables_per_sentence(transcript);
     // Sentences without a syllable (only symbols) take no time: they sit at the next one's start.
     std::vector<std::size_t> spoken;
@@ -236,7 +230,9 @@ std::vector<FrameSpan> cut_sentences(const FeatureTrack& track, const LoudnessPr
         spoken.push_back(k);
         spoken_counts.push_back(all_counts[k]);
     }
+    SentenceCut cut;
     std::vector<FrameSpan> spoken_spans;
+    std::vector<bool> spoken_runs_on(spoken.size(), false);
     if (options.sentence_cut == SentenceCutMode::first_pause) {
         spoken_spans = speaking_parts_from_first_pause(track, options);
         if (spoken_spans.size() != spoken.size()) {
@@ -250,22 +246,31 @@ std::vector<FrameSpan> cut_sentences(const FeatureTrack& track, const LoudnessPr
         }
     } else if (spoken.size() == 1) {
         spoken_spans.push_back({loudness.speech_first_frame, loudness.speech_end_frame});
+    } else if (loudness.pauses.size() + 1 < spoken.size()) {
+        // Some sentence ends have no pause at all: which ones, only the syllables can tell.
+        spoken_spans.assign(spoken.size(), {loudness.speech_first_frame, loudness.speech_end_frame});
+        spoken_runs_on.assign(spoken.size(), true);
+        spoken_runs_on.back() = false;
     } else {
         spoken_spans = choose_sentence_pauses(loudness, spoken_counts, transcript);
+        spoken_runs_on = find_run_together(spoken_spans, spoken_counts, loudness);
+        cut.is_in_doubt = are_sentence_ends_in_doubt(spoken_spans, spoken_counts, loudness);
     }
-    std::vector<FrameSpan> spans(all_counts.size());
+    cut.spans.resize(all_counts.size());
+    cut.runs_on.assign(all_counts.size(), false);
     std::size_t next_spoken = 0;
     for (std::size_t k = 0; k < all_counts.size(); ++k) {
         if (next_spoken < spoken.size() && spoken[next_spoken] == k) {
-            spans[k] = spoken_spans[next_spoken++];
+            cut.runs_on[k] = spoken_runs_on[next_spoken];
+            cut.spans[k] = spoken_spans[next_spoken++];
         } else {
             const std::size_t at = next_spoken < spoken_spans.size() ? spoken_spans[next_spoken].first_frame
                                    : spoken_spans.empty()           ? 0
                                                                     : spoken_spans.back().end_frame;
-            spans[k] = {at, at};
+            cut.spans[k] = {at, at};
         }
     }
-    return spans;
+    return cut;
 }
 
 }  // namespace talkface::detail

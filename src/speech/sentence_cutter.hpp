@@ -37,12 +37,23 @@ struct LoudnessProfile {
 
 LoudnessProfile measure_loudness(const FeatureTrack& track);
 
-// One span per sentence of `transcript`, in order, covering its speech only.
-// \throws talkface::AlignmentError when the pauses cannot be matched to the sentences (too few
-//         pauses; in first_pause mode, a different number of speaking parts), naming the times.
+// Where the sentences of a transcript are spoken, as far as the pauses tell.
+struct SentenceCut {
+    std::vector<FrameSpan> spans;  // per sentence of the transcript, in order, its speech only
+    // Per sentence: its end has no pause the cutter can be sure of (run_together.hpp), so it is
+    // aligned together with the next sentence, which then places the end; its span is a guess.
+    std::vector<bool> runs_on;
+    // The pauses do not single the sentence ends out (run_together.hpp): a cut that the syllables
+    // refuse may be a comma's pause taken for a sentence's end.
+    bool is_in_doubt = false;
+};
+
+// The sentences of `transcript` cut from the audio.
+// \throws talkface::AlignmentError when the pauses cannot be matched to the sentences (in
+//         first_pause mode, a different number of speaking parts), naming the times.
 // \throws talkface::InvalidArgument if the first pause lies outside the audio.
-std::vector<FrameSpan> cut_sentences(const FeatureTrack& track, const LoudnessProfile& loudness,
-                                     const Timeline& transcript, const AlignOptions& options);
+SentenceCut cut_sentences(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
+                          const AlignOptions& options);
 
 }  // namespace talkface::detail
 

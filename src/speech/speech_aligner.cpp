@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "common/number_format.hpp"
 #include "speech/acoustic_model.hpp"
@@ -51,8 +52,11 @@ constexpr double kLoopSwitchPenalty = 2.0;
 // Silence before a burst (a pause and the closure together) from which on the closure is taken
 // for part of a pause: a stop's closure lasts under 0.2 s.
 constexpr std::size_t kPauseBeforeBurstFrames = 20;
-// Files of at most this many sentences get the leave-one-out check (held_out_fit_gap).
+// Files of at most this many sentences get the leave-one-out check (held_out_fit_gaps).
 constexpr std::size_t kMaxHeldOutCheckSentences = 2;
+// A sentence end that the syllables of a chain put this far outside the pause the cutter chose
+// for it shows that the cut was wrong: the benchmark's tolerance for a sentence boundary.
+constexpr std::size_t kMovedEndFrames = 15;
 // How much of a long sentence the first pass, on hand-set models, aligns: two minutes.
 constexpr std::size_t kBootstrapFrames = 12000;
 // Shares of the job's progress: reading and features, cutting, the alignment passes.
@@ -94,8 +98,10 @@ void validate_transcript(const Timeline& transcript) {
     }
 }
 
+// One sentence, or neighbouring sentences the speaker ran together, aligned as one chain.
 struct SentenceWork {
-    std::size_t sentence = 0;
+    std::size_t first_sentence = 0;  // the transcript's sentences [first_sentence, end_sentence)
+    std::size_t end_sentence = 0;
     FrameSpan speech;   // from the cutter
     FrameSpan searched; // with the edges
     std::vector<const Syllable*> syllables;
@@ -144,16 +150,14 @@ std::size_t speech_frames(const LoudnessProfile& loudness, const FrameSpan& span
     return frames;
 }
 
-// Writes the syllables of one aligned sentence into `result`; returns its fit per speech frame.
-double place_syllables(const SentenceWork& work, const std::vector<StateSegment>& path, const EmissionScores& scores,
-                       const FeatureTrack& track, Timeline& result) {
+// Writes the syllables of one aligned sentence into `result`.
+void place_syllables(const SentenceWork& work, const std::vector<StateSegment>& path, const EmissionScores& scores,
+                     const FeatureTrack& track, Timeline& result) {
     const double offset_s = static_cast<double>(work.searched.first_frame) * kFrameStepS;
     // The last frame may run past the audio's last sample: no time is later than the audio's end.
     auto time_s = [&](std::size_t frame) {
         return std::min(track.duration_s, offset_s + static_cast<double>(frame) * kFrameStepS);
     };
-    double fit_sum = 0.0;
-    std::size_t fit_frames = 0;
     for (std::size_t local = 0; local < work.syllables.size(); ++local) {
         Syllable& syllable = result.syllables[work.syllable_indices[local]];
         std::size_t first = 0, end = 0;
@@ -185,7 +189,6 @@ double place_syllables(const SentenceWork& work, const std::vector<StateSegment>
                 const float* row = &scores.values[t * kPhoneClassCount];
                 const double total = log_sum_exp(row, kPhoneClassCount);
                 posterior_sum += std::exp(static_cast<double>(row[state.phone_class]) - total);
-                fit_sum += row[state.phone_class];
                 ++frames;
             }
         }
@@ -198,9 +201,34 @@ double place_syllables(const SentenceWork& work, const std::vector<StateSegment>
         syllable.end_s = time_s(std::max(end, first + 1));
         syllable.final_start_s = time_s(final_first.value_or(first));
         syllable.confidence = frames > 0 ? posterior_sum / static_cast<double>(frames) : 0.0;
-        fit_frames += frames;
     }
-    return fit_frames > 0 ? fit_sum / static_cast<double>(fit_frames) : -std::numeric_limits<double>::infinity();
+}
+
+// How well the speech of `path` (a sentence's, or its share of a block's) fits the models of the
+// sounds its text says, per frame.
+double speech_fit(const SentenceWork& work, const std::vector<StateSegment>& path, const EmissionScores& scores) {
+    double sum = 0.0;
+    std::size_t frames = 0;
+    for (const auto& segment : path) {
+        const PhoneState& state = work.states[segment.state];
+        if (is_pause(state.role)) continue;
+        for (std::size_t t = segment.first_frame; t < segment.end_frame; ++t) sum += scores.at(t, state.phone_class);
+        frames += segment.end_frame - segment.first_frame;
+    }
+    return frames > 0 ? sum / static_cast<double>(frames) : -std::numeric_limits<double>::infinity();
+}
+
+// The path of a block cut into its sentences' shares (a pause goes with the sentence before it),
+// each with the index of its sentence in the transcript.
+std::vector<std::pair<std::size_t, std::vector<StateSegment>>> split_by_sentence(const SentenceWork& work,
+                                                                                const std::vector<StateSegment>& path) {
+    std::vector<std::pair<std::size_t, std::vector<StateSegment>>> shares;
+    for (const auto& segment : path) {
+        const std::size_t sentence = work.syllables[work.states[segment.state].syllable]->sentence;
+        if (shares.empty() || shares.back().first != sentence) shares.emplace_back(sentence, std::vector<StateSegment>());
+        shares.back().second.push_back(segment);
+    }
+    return shares;
 }
 
 // How much better, per frame, the sentence's speech fits the best sequence of sounds than the
@@ -235,33 +263,53 @@ double text_fit_gap(const SentenceWork& work, const std::vector<StateSegment>& p
     return (free - forced) / static_cast<double>(end - first);
 }
 
-// The path of a sentence cut between its syllables into a first and a second half (pauses go
-// with the syllable before them).
-std::array<std::vector<StateSegment>, 2> split_in_halves(const SentenceWork& work, const std::vector<StateSegment>& path) {
-    std::array<std::vector<StateSegment>, 2> halves;
-    const std::size_t second_half = (work.syllables.size() + 1) / 2;
-    for (const auto& segment : path) halves[work.states[segment.state].syllable < second_half ? 0 : 1].push_back(segment);
+// The path of a chain cut between its syllables into each sentence's first and second half
+// (pauses go with the syllable before them): half h of the chain's j-th sentence is 2 j + h.
+std::vector<std::vector<StateSegment>> split_in_halves(const SentenceWork& work, const std::vector<StateSegment>& path) {
+    std::vector<std::size_t> half_of_syllable(work.syllables.size());
+    std::size_t first = 0;
+    std::size_t sentences = 0;
+    for (; first < work.syllables.size(); ++sentences) {
+        std::size_t end = first;
+        while (end < work.syllables.size() && work.syllables[end]->sentence == work.syllables[first]->sentence) ++end;
+        const std::size_t second_half = first + (end - first + 1) / 2;
+        for (std::size_t i = first; i < end; ++i) half_of_syllable[i] = 2 * sentences + (i < second_half ? 0 : 1);
+        first = end;
+    }
+    std::vector<std::vector<StateSegment>> halves(2 * sentences);
+    for (const auto& segment : path) halves[half_of_syllable[work.states[segment.state].syllable]].push_back(segment);
     return halves;
 }
 
-// text_fit_gap of each half of a sentence, scored with models learned from the rest of the
-// recording only (leave one out), the larger of the two. Models re-estimated on a recording fit
-// whatever text shaped them, and on a file of a sentence or two a wrong text shapes most of them;
-// models that never saw these frames cannot bend to it. `half_estimators` holds the two halves'
-// shares of `whole`; `scores` is overwritten (an hour's scores are 19 MB: no second buffer).
-double held_out_fit_gap(const SentenceWork& work, const std::vector<StateSegment>& path,
-                        const std::vector<float>& observations, const ModelEstimator& whole,
-                        const ModelEstimator* half_estimators, EmissionScores& scores) {
-    const auto halves = split_in_halves(work, path);
-    double largest = -std::numeric_limits<double>::infinity();
-    for (std::size_t h = 0; h < 2; ++h) {
+// text_fit_gap of each half of each sentence of a chain, scored with models learned from the rest of the
+// recording only (leave one out); an empty half gives minus infinity. Models re-estimated on a
+// recording fit whatever text shaped them, and on a file of a sentence or two a wrong text shapes
+// most of them; models that never saw these frames cannot bend to it. `half_estimators` holds the
+// two halves' shares of `whole`; `scores` is overwritten (an hour's scores are 19 MB: no second
+// buffer).
+std::vector<double> held_out_fit_gaps(const SentenceWork& work, const std::vector<std::vector<StateSegment>>& halves,
+                                      const std::vector<float>& observations, const ModelEstimator& whole,
+                                      const std::vector<ModelEstimator>& half_estimators, EmissionScores& scores) {
+    std::vector<double> gaps(halves.size(), -std::numeric_limits<double>::infinity());
+    std::vector<float> half_observations;
+    for (std::size_t h = 0; h < halves.size(); ++h) {
         if (halves[h].empty()) continue;
         ModelEstimator rest = whole;
         rest.subtract(half_estimators[h]);
-        rest.estimate(kReestimatedWeight).score(observations, work.searched.length(), scores);
-        largest = std::max(largest, text_fit_gap(work, halves[h], scores));
+        // Only the half's own frames are scored: a chain of sentences run together is long.
+        const std::size_t first = halves[h].front().first_frame;
+        const std::size_t end = halves[h].back().end_frame;
+        half_observations.assign(observations.begin() + static_cast<std::ptrdiff_t>(first * kObservationCount),
+                                 observations.begin() + static_cast<std::ptrdiff_t>(end * kObservationCount));
+        rest.estimate(kReestimatedWeight).score(half_observations, end - first, scores);
+        std::vector<StateSegment> shifted = halves[h];
+        for (auto& segment : shifted) {
+            segment.first_frame -= first;
+            segment.end_frame -= first;
+        }
+        gaps[h] = text_fit_gap(work, shifted, scores);
     }
-    return largest;
+    return gaps;
 }
 
 std::vector<AlignedStretch> stretches_of(const SentenceWork& work, const std::vector<StateSegment>& path) {
@@ -281,27 +329,49 @@ std::vector<AlignedStretch> stretches_of(const SentenceWork& work, const std::ve
     return stretches;
 }
 
-Timeline align_track(const FeatureTrack& track, const Timeline& transcript, const AlignOptions& options,
-                     ProgressReporter& progress) {
-    const LoudnessProfile loudness = measure_loudness(track);
-    if (loudness.speech_end_frame <= loudness.speech_first_frame)
-        throw AlignmentError("no speech found in the " + format_fixed(track.duration_s, 2) +
-                             " s of audio: nothing rises above its noise floor");
-    const std::vector<FrameSpan> spans = cut_sentences(track, loudness, transcript, options);
-    progress.report(kReadingShare + kCuttingShare, "sentences");
-    check_sentence_lengths(spans, loudness, transcript);
+// Frames from the first syllable's start to the last one's end of sentence `k` as aligned.
+FrameSpan aligned_span(const Timeline& result, std::size_t k) {
+    FrameSpan span{std::numeric_limits<std::size_t>::max(), 0};
+    for (const auto& syllable : result.syllables) {
+        if (syllable.sentence != k) continue;
+        span.first_frame = std::min(span.first_frame, static_cast<std::size_t>(std::lround(syllable.start_s / kFrameStepS)));
+        span.end_frame = std::max(span.end_frame, static_cast<std::size_t>(std::lround(syllable.end_s / kFrameStepS)));
+    }
+    return span;
+}
+
+// The syllables of every sentence of `cut`, aligned sentence by sentence (neighbours that run on,
+// together), and the checks that audio and transcript belong together.
+Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
+                   const SentenceCut& cut, ProgressReporter& progress) {
+    // Where sentences run together the cutter's spans are guesses: the syllables place them, and
+    // the sentences' lengths are checked on where the syllables put them.
+    std::vector<FrameSpan> spans = cut.spans;
+    const bool has_blocks = std::find(cut.runs_on.begin(), cut.runs_on.end(), true) != cut.runs_on.end();
+    if (!has_blocks) check_sentence_lengths(spans, loudness, transcript);
 
     std::vector<SentenceWork> work;
+    std::size_t spoken_sentences = 0;
+    bool continues_block = false;
     for (std::size_t k = 0; k < spans.size(); ++k) {
-        SentenceWork sentence;
-        sentence.sentence = k;
-        sentence.speech = spans[k];
+        if (std::none_of(transcript.syllables.begin(), transcript.syllables.end(),
+                         [&](const Syllable& s) { return s.sentence == k; }))
+            continue;
+        ++spoken_sentences;
+        if (!continues_block) {
+            work.emplace_back();
+            work.back().first_sentence = k;
+            work.back().speech = spans[k];
+        }
+        SentenceWork& block = work.back();
+        block.end_sentence = k + 1;
+        block.speech = {std::min(block.speech.first_frame, spans[k].first_frame), std::max(block.speech.end_frame, spans[k].end_frame)};
         for (std::size_t i = 0; i < transcript.syllables.size(); ++i) {
             if (transcript.syllables[i].sentence != k) continue;
-            sentence.syllables.push_back(&transcript.syllables[i]);
-            sentence.syllable_indices.push_back(i);
+            block.syllables.push_back(&transcript.syllables[i]);
+            block.syllable_indices.push_back(i);
         }
-        if (!sentence.syllables.empty()) work.push_back(std::move(sentence));
+        continues_block = cut.runs_on[k];
     }
     // Edges reach into the pauses around the sentence, at most halfway to its neighbours.
     for (std::size_t w = 0; w < work.size(); ++w) {
@@ -325,9 +395,9 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
     std::vector<double> fits(spans.size(), std::numeric_limits<double>::quiet_NaN());
     std::vector<double> fit_gaps(spans.size(), 0.0);
     std::vector<double> held_out_gaps(spans.size(), 0.0);
-    // What the last re-estimation learned, in all and from each half of each sentence.
+    // What the last re-estimation learned, in all and from each half of each sentence (per chain).
     ModelEstimator whole_estimator;
-    std::vector<ModelEstimator> half_estimators;
+    std::vector<std::vector<ModelEstimator>> half_estimators;
     AcousticModel model = AcousticModel::hand_set();
     const int passes = 1 + kReestimationRounds;
     const double alignment_share = 1.0 - kReadingShare - kCuttingShare;
@@ -338,7 +408,7 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
         const bool is_last = pass + 1 == passes;
         const bool is_last_estimate = pass + 2 == passes;
         ModelEstimator estimator;
-        if (is_last_estimate) half_estimators.assign(2 * work.size(), ModelEstimator());
+        if (is_last_estimate) half_estimators.assign(work.size(), {});
         for (std::size_t w = 0; w < work.size(); ++w) {
             const SentenceWork& sentence = work[w];
             observe(track, loudness, sentence.searched, observations);
@@ -350,27 +420,43 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
             const std::vector<StateSegment> path =
                 viterbi_align(sentence.states, scores, workspace, pass == 0 ? kBootstrapFrames : scores.frame_count);
             if (path.empty()) {
-                throw AlignmentError(describe_sentence(sentence.sentence, sentence.speech, transcript) + ": its " +
+                throw AlignmentError(describe_sentence(sentence.first_sentence, sentence.speech, transcript) + ": its " +
                                      std::to_string(sentence.syllables.size()) +
                                      " syllables do not fit in so short a stretch of speech; check the transcript");
             }
             if (is_last) {
-                fits[sentence.sentence] = place_syllables(sentence, path, scores, track, result);
-                fit_gaps[sentence.sentence] = text_fit_gap(sentence, path, scores);
+                place_syllables(sentence, path, scores, track, result);
+                const bool is_block = sentence.end_sentence > sentence.first_sentence + 1;
+                for (const auto& [k, share] : split_by_sentence(sentence, path)) {
+                    if (is_block) spans[k] = aligned_span(result, k);
+                    fits[k] = speech_fit(sentence, share, scores);
+                    fit_gaps[k] = text_fit_gap(sentence, share, scores);
+                }
                 // In a room every sound rings into the next, and a right text's halves gap up to
                 // 0.85 (bench/ reverb): there the check would refuse one right sentence in six.
                 // With three sentences or more, check_text_fit and check_fit compare each with
                 // the others, which holds better than this absolute limit.
-                if (!sentence.ends_in_tail && work.size() <= kMaxHeldOutCheckSentences)
-                    held_out_gaps[sentence.sentence] = held_out_fit_gap(sentence, path, observations, whole_estimator,
-                                                                        &half_estimators[2 * w], scores);
-                check_path(stretches_of(sentence, path), loudness, sentence.sentence, sentence.speech, transcript);
+                // In a chain, models re-estimated on it fit its sentences' texts as they would in a
+                // file of one or two: the halves of each are checked the same way.
+                if (!sentence.ends_in_tail && (spoken_sentences <= kMaxHeldOutCheckSentences || is_block)) {
+                    const auto halves = split_in_halves(sentence, path);
+                    const auto gaps = held_out_fit_gaps(sentence, halves, observations, whole_estimator,
+                                                        half_estimators[w], scores);
+                    for (std::size_t h = 0; h < halves.size(); ++h) {
+                        if (halves[h].empty()) continue;
+                        const std::size_t k = sentence.syllables[sentence.states[halves[h].front().state].syllable]->sentence;
+                        held_out_gaps[k] = std::max(held_out_gaps[k], gaps[h]);
+                    }
+                }
+                for (const auto& [k, share] : split_by_sentence(sentence, path))
+                    check_path(stretches_of(sentence, share), loudness, k, spans[k], transcript);
             }
             else {
                 estimator.add(observations, sentence.states, path);
                 if (is_last_estimate) {
                     const auto halves = split_in_halves(sentence, path);
-                    for (std::size_t h = 0; h < 2; ++h) half_estimators[2 * w + h].add(observations, sentence.states, halves[h]);
+                    half_estimators[w].assign(halves.size(), ModelEstimator());
+                    for (std::size_t h = 0; h < halves.size(); ++h) half_estimators[w][h].add(observations, sentence.states, halves[h]);
                 }
             }
             progress.report(kReadingShare + kCuttingShare +
@@ -380,6 +466,7 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
         if (!is_last) model = estimator.estimate(kReestimatedWeight);
         if (is_last_estimate) whole_estimator = std::move(estimator);
     }
+    if (has_blocks) check_sentence_lengths(spans, loudness, transcript);
     check_text_fit(fit_gaps, spans, transcript);
     check_held_out_fit(held_out_gaps, spans, transcript);
     check_fit(fits, spans, transcript);
@@ -396,6 +483,139 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
                                        [&](const Syllable& s) { return s.sentence == k; });
         result.sentences[k].start_s = first->start_s;
         result.sentences[k].end_s = last->end_s;
+    }
+    return result;
+}
+
+// Per sentence of `transcript`: whether it has a syllable.
+std::vector<bool> spoken_sentences_of(const Timeline& transcript) {
+    std::vector<bool> is_spoken(transcript.sentences.size(), false);
+    for (const auto& syllable : transcript.syllables) is_spoken[syllable.sentence] = true;
+    return is_spoken;
+}
+
+// How many blocks `cut` aligns: spoken sentences that do not continue the one before.
+std::size_t block_count(const SentenceCut& cut, const Timeline& transcript) {
+    const std::vector<bool> is_spoken = spoken_sentences_of(transcript);
+    std::size_t blocks = 0;
+    bool continues_block = false;
+    for (std::size_t k = 0; k < cut.runs_on.size(); ++k) {
+        if (!is_spoken[k]) continue;
+        if (!continues_block) ++blocks;
+        continues_block = cut.runs_on[k];
+    }
+    return blocks;
+}
+
+// Whether `aligned` ends spoken sentence `k`, or starts the next spoken one, `next`, outside the
+// pause `cut` put between them (by more than kMovedEndFrames).
+bool moves_sentence_end(const SentenceCut& cut, const Timeline& aligned, std::size_t k, std::size_t next) {
+    const std::size_t pause_first = cut.spans[k].end_frame;
+    const std::size_t pause_end = std::max(pause_first, cut.spans[next].first_frame);
+    auto is_outside = [&](double time_s) {
+        const double frame = time_s / kFrameStepS;
+        return frame + static_cast<double>(kMovedEndFrames) < static_cast<double>(pause_first) ||
+               frame > static_cast<double>(pause_end + kMovedEndFrames);
+    };
+    return is_outside(aligned.sentences[k].end_s) || is_outside(aligned.sentences[next].start_s);
+}
+
+// Whether the pause `cut` put between spoken sentence `k` and the next lies, in `aligned`, between
+// two syllables where the transcript marks a pause (a comma or a sentence end): a pause the text
+// accounts for. A wrong text aligned as a chain can move a sentence end too, but it leaves the
+// pause between the sentences heard between two syllables it does not mark.
+bool is_cut_pause_in_text(const SentenceCut& cut, const Timeline& aligned, std::size_t k, std::size_t next) {
+    const double pause_first = static_cast<double>(cut.spans[k].end_frame);
+    const double pause_end = static_cast<double>(std::max(cut.spans[k].end_frame, cut.spans[next].first_frame));
+    const double tolerance = static_cast<double>(kMovedEndFrames);
+    const auto& syllables = aligned.syllables;
+    for (std::size_t i = 0; i + 1 < syllables.size(); ++i) {
+        if (!syllables[i].pause_after && syllables[i].sentence == syllables[i + 1].sentence) continue;
+        if (syllables[i].end_s / kFrameStepS <= pause_first + tolerance &&
+            syllables[i + 1].start_s / kFrameStepS >= pause_end - tolerance)
+            return true;
+    }
+    return false;
+}
+
+// Pairs (k, next) of neighbouring spoken sentences.
+std::vector<std::pair<std::size_t, std::size_t>> spoken_neighbours(const std::vector<bool>& is_spoken) {
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    std::size_t previous = is_spoken.size();
+    for (std::size_t k = 0; k < is_spoken.size(); ++k) {
+        if (!is_spoken[k]) continue;
+        if (previous < is_spoken.size()) pairs.emplace_back(previous, k);
+        previous = k;
+    }
+    return pairs;
+}
+
+// align_cut, where a sentence end that ran on keeps its chain only if the chain's syllables move
+// it out of the pause the cutter chose and put that pause where the text has one (a comma's): a
+// sentence end they leave in its pause confirms the cut, and one they move off a pause the text
+// does not account for is a wrong text's doing. Then the sentences are aligned apart again, as
+// the checks know them best.
+Timeline align_confirmed(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
+                         const SentenceCut& cut, const std::vector<bool>& is_spoken, ProgressReporter& progress) {
+    Timeline result = align_cut(track, loudness, transcript, cut, progress);
+    SentenceCut confirmed = cut;
+    for (const auto& [k, next] : spoken_neighbours(is_spoken)) {
+        // Too few pauses: the cutter chose none for this end, and the chain is all there is.
+        const bool has_cut_pause = cut.spans[k].end_frame <= cut.spans[next].first_frame;
+        if (cut.runs_on[k] && has_cut_pause &&
+            !(moves_sentence_end(cut, result, k, next) && is_cut_pause_in_text(cut, result, k, next)))
+            confirmed.runs_on[k] = false;
+    }
+    if (confirmed.runs_on == cut.runs_on) return result;
+    return align_cut(track, loudness, transcript, confirmed, progress);
+}
+
+Timeline align_track(const FeatureTrack& track, const Timeline& transcript, const AlignOptions& options,
+                     ProgressReporter& progress) {
+    const LoudnessProfile loudness = measure_loudness(track);
+    if (loudness.speech_end_frame <= loudness.speech_first_frame)
+        throw AlignmentError("no speech found in the " + format_fixed(track.duration_s, 2) +
+                             " s of audio: nothing rises above its noise floor");
+    const SentenceCut cut = cut_sentences(track, loudness, transcript, options);
+    progress.report(kReadingShare + kCuttingShare, "sentences");
+    const std::vector<bool> is_spoken = spoken_sentences_of(transcript);
+    const auto spoken_sentences = static_cast<std::size_t>(std::count(is_spoken.begin(), is_spoken.end(), true));
+    const std::size_t stretches = loudness.pauses.size() + 1;
+    Timeline result;
+    try {
+        result = align_confirmed(track, loudness, transcript, cut, is_spoken, progress);
+    } catch (const AlignmentError& error) {
+        // Fewer stretches of speech than sentences: either sentences run together or the
+        // transcript has one the audio lacks; the first is tried, and the message tells of both.
+        if (options.sentence_cut == SentenceCutMode::automatic && stretches < spoken_sentences)
+            throw AlignmentError("the transcript has " + std::to_string(spoken_sentences) +
+                                 " spoken sentences but the audio has only " + std::to_string(stretches) +
+                                 " stretches of speech between pauses, and run together they do not fit it either: " +
+                                 error.what());
+        // A sentence end cut at a pause inside a sentence (speech run together, whose only pauses
+        // are a comma's) squeezes one sentence and stretches the next until a check refuses them.
+        // Aligned as one block, the syllables find the ends; a transcript that does not match the
+        // audio fails there too, and the first, sentence-by-sentence, account of it is kept. Where
+        // the pauses do single the sentence ends out (and in the caller's own cut, Algorithm 3.1),
+        // the cut stands and so does the refusal.
+        if (!cut.is_in_doubt || block_count(cut, transcript) == 1) throw;
+        SentenceCut block = cut;
+        std::fill(block.runs_on.begin(), block.runs_on.end(), true);
+        try {
+            result = align_cut(track, loudness, transcript, block, progress);
+        } catch (const AlignmentError&) {
+            throw error;
+        }
+        // Syllables that end every sentence in the pause it was cut at confirm the cut, and a
+        // sentence end moved off a pause the text does not account for is a wrong text's doing:
+        // either way it was the text, not the cut, that the checks refused.
+        bool has_moved_end = false;
+        for (const auto& [k, next] : spoken_neighbours(is_spoken)) {
+            if (!moves_sentence_end(cut, result, k, next)) continue;
+            if (!is_cut_pause_in_text(cut, result, k, next)) throw error;
+            has_moved_end = true;
+        }
+        if (!has_moved_end) throw error;
     }
     progress.report(1.0, "syllables");
     return result;

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <pugixml.hpp>
@@ -22,6 +23,7 @@
 #include "talkface/errors.hpp"
 #include "talkface/expression_simulator.hpp"
 #include "talkface/face_model.hpp"
+#include "talkface/mouth_shape.hpp"
 #include "talkface/svg_animator.hpp"
 #include "talkface/transcript.hpp"
 #include "talkface/web_page.hpp"
@@ -45,8 +47,13 @@ Timeline spoken_timeline() {
     return timeline;
 }
 
+// The simulated face, with a tilt, a turn and a nod of its own, so that every head movement is
+// seen in 3 s.
 Animation spoken_animation(const FaceModel& face, const Timeline& timeline) {
-    const ExpressionSimulator simulator(timeline, 11);
+    ExpressionSimulator simulator(timeline, 11);
+    simulator.set_user_events({{ExpressionEventKind::tilt, 0.4, 1.2, 5.0},
+                               {ExpressionEventKind::turn, 1.0, 1.7, -7.0},
+                               {ExpressionEventKind::nod, 1.9, 2.4, 4.0}});
     return animate(face, timeline, simulator);
 }
 
@@ -111,7 +118,7 @@ std::vector<PathCommand> path_commands(const std::string& data) {
             ++i;
             continue;
         }
-        std::size_t end = data.find_first_of("MmLlCcSsQqZz", i);
+        std::size_t end = data.find_first_of("MmLlCcSsQqTtZz", i);
         if (end == std::string::npos) end = data.size();
         REQUIRE(!commands.empty());
         const std::vector<double> numbers = numbers_of(data.substr(i, end - i));
@@ -122,16 +129,19 @@ std::vector<PathCommand> path_commands(const std::string& data) {
 }
 
 // The control points a path draws, absolute, as x y x y ...: every point of M, L, C and Q, and
-// for an S the reflected c1 it leaves implicit, so that an S segment lists what a C would.
+// for an S or a T the reflected first control point it leaves implicit, so that an S segment lists
+// what a C would, and a T what a Q would.
 std::vector<double> control_points(const std::vector<PathCommand>& commands) {
     std::vector<double> points;
-    double x = 0.0, y = 0.0, start_x = 0.0, start_y = 0.0, c2_x = 0.0, c2_y = 0.0;
+    double x = 0.0, y = 0.0, start_x = 0.0, start_y = 0.0, control_x = 0.0, control_y = 0.0;
+    char previous = 'M';
     for (const PathCommand& command : commands) {
         const char upper = static_cast<char>(std::toupper(static_cast<unsigned char>(command.letter)));
         const bool is_relative = command.letter != upper;
         if (upper == 'Z') {
             x = start_x;
             y = start_y;
+            previous = upper;
             continue;
         }
         const std::size_t pairs = upper == 'C' ? 3 : upper == 'S' || upper == 'Q' ? 2 : 1;
@@ -140,22 +150,28 @@ std::vector<double> control_points(const std::vector<PathCommand>& commands) {
         for (std::size_t k = 0; k < n.size(); k += 2 * pairs) {
             const double base_x = is_relative ? x : 0.0;
             const double base_y = is_relative ? y : 0.0;
-            if (upper == 'S') {
-                points.push_back(2.0 * x - c2_x);
-                points.push_back(2.0 * y - c2_y);
+            if (upper == 'S' || upper == 'T') {
+                // SVG: the reflection of the last control point if the previous segment is of the
+                // same kind, else the pen.
+                const bool reflects =
+                    upper == 'S' ? previous == 'C' || previous == 'S' : previous == 'Q' || previous == 'T';
+                points.push_back(reflects ? 2.0 * x - control_x : x);
+                points.push_back(reflects ? 2.0 * y - control_y : y);
             }
             for (std::size_t p = 0; p < pairs; ++p) {
                 points.push_back(base_x + n[k + 2 * p]);
                 points.push_back(base_y + n[k + 2 * p + 1]);
             }
-            c2_x = points[points.size() - 4 + (pairs == 1 ? 2 : 0)];
-            c2_y = points[points.size() - 3 + (pairs == 1 ? 2 : 0)];
+            const bool is_curve = upper != 'M' && upper != 'L';
+            control_x = points[points.size() - (is_curve ? 4 : 2)];
+            control_y = points[points.size() - (is_curve ? 3 : 1)];
             x = points[points.size() - 2];
             y = points.back();
             if (upper == 'M' && k == 0) {
                 start_x = x;
                 start_y = y;
             }
+            previous = upper;
         }
     }
     return points;
@@ -175,8 +191,51 @@ std::vector<PathCommand> animated_path(const pugi::xml_node& animate, double t) 
     return commands;
 }
 
-// The control points an element shows at key time `t` (x y x y ...): its outline (animated or
-// not) moved by its translate and every <animateTransform type="translate" additive="sum">.
+// A point moved by one transform: translate(x [y]), scale(s [sy]) or rotate(degrees [cx cy]).
+void apply_transform(const std::string& type, const std::vector<double>& n, double& x, double& y) {
+    if (type == "translate") {
+        x += n.at(0);
+        y += n.size() > 1 ? n[1] : 0.0;
+    } else if (type == "scale") {
+        x *= n.at(0);
+        y *= n.size() > 1 ? n[1] : n[0];
+    } else {
+        REQUIRE(type == "rotate");
+        const double angle_rad = n.at(0) * 3.14159265358979323846 / 180.0;
+        const double cx = n.size() > 2 ? n[1] : 0.0, cy = n.size() > 2 ? n[2] : 0.0;
+        const double dx = x - cx, dy = y - cy;
+        x = cx + std::cos(angle_rad) * dx - std::sin(angle_rad) * dy;
+        y = cy + std::sin(angle_rad) * dx + std::cos(angle_rad) * dy;
+    }
+}
+
+// Points (x y x y ...) moved by what `node` and its ancestors show at key time `t`: each one's
+// transform attribute, followed by its <animateTransform additive="sum"> children, which SVG
+// multiplies onto it in document order (so the last one moves a point first).
+void apply_transforms(const pugi::xml_node& node, double t, std::vector<double>& points) {
+    for (pugi::xml_node n = node; n && n.type() == pugi::node_element; n = n.parent()) {
+        std::vector<std::pair<std::string, std::vector<double>>> transforms;
+        const std::string list = n.attribute("transform").value();
+        for (std::size_t open = list.find('('); open != std::string::npos; open = list.find('(', open + 1)) {
+            std::size_t name_start = list.rfind(' ', open);
+            name_start = name_start == std::string::npos ? 0 : name_start + 1;
+            transforms.emplace_back(list.substr(name_start, open - name_start),
+                                    numbers_of(list.substr(open + 1, list.find(')', open) - open - 1)));
+        }
+        for (const pugi::xml_node animation : n.children("animateTransform")) {
+            REQUIRE(std::string(animation.attribute("additive").value()) == "sum");
+            transforms.emplace_back(animation.attribute("type").value(), animated_numbers(animation, t));
+        }
+        for (auto transform = transforms.rbegin(); transform != transforms.rend(); ++transform) {
+            for (std::size_t k = 0; k + 1 < points.size(); k += 2) {
+                apply_transform(transform->first, transform->second, points[k], points[k + 1]);
+            }
+        }
+    }
+}
+
+// The control points an element shows at key time `t` (x y x y ...), in the document's user space:
+// its outline (animated or not) moved by its own transforms and its groups'.
 std::vector<double> shown_points(const pugi::xml_node& element, double t) {
     std::vector<double> points;
     if (element.attribute("d")) {
@@ -191,25 +250,7 @@ std::vector<double> shown_points(const pugi::xml_node& element, double t) {
                                      : element.attribute(coordinate).as_double());
         }
     }
-    double dx = 0.0, dy = 0.0;
-    const std::string base = element.attribute("transform").value();
-    if (!base.empty()) {
-        REQUIRE(base.rfind("translate(", 0) == 0);
-        const std::vector<double> offset = numbers_of(base);
-        dx += offset.at(0);
-        dy += offset.at(1);
-    }
-    for (const pugi::xml_node animation : element.children("animateTransform")) {
-        REQUIRE(std::string(animation.attribute("type").value()) == "translate");
-        REQUIRE(std::string(animation.attribute("additive").value()) == "sum");
-        const std::vector<double> offset = animated_numbers(animation, t);
-        dx += offset.at(0);
-        dy += offset.at(1);
-    }
-    for (std::size_t k = 0; k + 1 < points.size(); k += 2) {
-        points[k] += dx;
-        points[k + 1] += dy;
-    }
+    apply_transforms(element, t, points);
     return points;
 }
 
@@ -229,6 +270,59 @@ std::vector<std::string> drawn_elements() {
         }
     }
     return paths;
+}
+
+// Checks every other frame of `animation` against `document`, its keyframes encoding: every
+// drawn point shown where the frame drawn alone has it, within the tolerance and the rounding.
+void check_every_other_frame(const SvgAnimator& animator, const Animation& animation,
+                             const pugi::xml_document& document, double tolerance_px) {
+    // The tolerance, plus the rounding of values written in tenths (0.05 px), of the
+    // translates (0.01 px) and of the frames' own two decimals (0.005 px); a c1 that an S
+    // leaves implicit is made of three rounded points and the frame's own rounding (0.17 px).
+    // (A T's control and the end before it are rounded as a chain: the key frames leave
+    // the extra rounding over from the tolerance, so they keep to the same bounds.)
+    const double allowed = tolerance_px + 0.07;
+    const double allowed_implicit = tolerance_px + 0.19;
+    const double last_frame = static_cast<double>(animation.frames.size() - 1);
+    for (std::size_t frame = 0; frame < animation.frames.size(); frame += 2) {
+        CAPTURE(frame);
+        const pugi::xml_document expected = parse(animator.render_svg(animation.frames[frame]));
+        const double t = last_frame > 0.0 ? static_cast<double>(frame) / last_frame : 0.0;
+        for (const std::string& path : drawn_elements()) {
+            CAPTURE(path);
+            const pugi::xml_node shown_node = document.select_node(path.c_str()).node();
+            const pugi::xml_node want_node = expected.select_node(path.c_str()).node();
+            REQUIRE(shown_node);
+            REQUIRE(want_node);
+            const std::vector<double> shown = shown_points(shown_node, t);
+            const std::vector<double> want = shown_points(want_node, 0.0);
+            REQUIRE(shown.size() == want.size());
+            // Implicit control points: where the animated path writes S or T, and the frame C or Q.
+            std::vector<bool> is_implicit(want.size() / 2, false);
+            if (const pugi::xml_node animate =
+                    shown_node.find_child_by_attribute("animate", "attributeName", "d")) {
+                std::size_t point = 0;
+                for (const PathCommand& command : animated_path(animate, t)) {
+                    const char upper =
+                        static_cast<char>(std::toupper(static_cast<unsigned char>(command.letter)));
+                    if (upper == 'Z') continue;
+                    const std::size_t pairs = upper == 'C' ? 3 : upper == 'S' || upper == 'Q' ? 2 : 1;
+                    for (std::size_t k = 0; k < command.numbers.size(); k += 2 * pairs) {
+                        if (upper == 'S' || upper == 'T') is_implicit.at(point++) = true;
+                        point += pairs;
+                    }
+                }
+            }
+            double worst = 0.0, worst_implicit = 0.0;
+            for (std::size_t k = 0; k < want.size(); ++k) {
+                const double gap = std::abs(shown[k] - want[k]);
+                (is_implicit[k / 2] ? worst_implicit : worst) =
+                    std::max(is_implicit[k / 2] ? worst_implicit : worst, gap);
+            }
+            CHECK(worst <= allowed);
+            CHECK(worst_implicit <= allowed_implicit);
+        }
+    }
 }
 
 }  // namespace
@@ -266,53 +360,33 @@ TEST_SUITE("SvgAnimator animation") {
             SvgAnimationOptions options;
             options.tolerance_px = tolerance_px;
             const pugi::xml_document document = parse(animator.render_animation_svg(animation, options));
-            // The head turns, and outlines move under a translate of their own.
+            // The head tilts as a whole, and outlines move under a translate of their own as it turns.
+            CHECK(document.select_node("//g[@id='face']/animateTransform[@type='rotate']"));
+            CHECK(document.select_node("//g[@id='hair']/animateTransform[@type='rotate']"));
             CHECK(document.select_node("//path[@class='nose']/animateTransform[@type='translate']"));
-            // The tolerance, plus the rounding of values written in tenths (0.05 px), of the
-            // translates (0.01 px) and of the frames' own two decimals (0.005 px); a c1 that an S
-            // leaves implicit is made of three rounded points and the frame's own rounding (0.17 px).
-            const double allowed = tolerance_px + 0.07;
-            const double allowed_implicit = tolerance_px + 0.19;
-            const double last_frame = static_cast<double>(animation.frames.size() - 1);
-            for (std::size_t frame = 0; frame < animation.frames.size(); frame += 2) {
-                CAPTURE(frame);
-                const pugi::xml_document expected = parse(animator.render_svg(animation.frames[frame]));
-                const double t = static_cast<double>(frame) / last_frame;
-                for (const std::string& path : drawn_elements()) {
-                    CAPTURE(path);
-                    const pugi::xml_node shown_node = document.select_node(path.c_str()).node();
-                    const pugi::xml_node want_node = expected.select_node(path.c_str()).node();
-                    REQUIRE(shown_node);
-                    REQUIRE(want_node);
-                    const std::vector<double> shown = shown_points(shown_node, t);
-                    const std::vector<double> want = shown_points(want_node, 0.0);
-                    REQUIRE(shown.size() == want.size());
-                    // Implicit c1s: where the animated path writes S and the frame writes C.
-                    std::vector<bool> is_implicit(want.size() / 2, false);
-                    if (const pugi::xml_node animate =
-                            shown_node.find_child_by_attribute("animate", "attributeName", "d")) {
-                        std::size_t point = 0;
-                        for (const PathCommand& command : animated_path(animate, t)) {
-                            const char upper =
-                                static_cast<char>(std::toupper(static_cast<unsigned char>(command.letter)));
-                            if (upper == 'Z') continue;
-                            const std::size_t pairs = upper == 'C' ? 3 : upper == 'S' || upper == 'Q' ? 2 : 1;
-                            for (std::size_t k = 0; k < command.numbers.size(); k += 2 * pairs) {
-                                if (upper == 'S') is_implicit.at(point++) = true;
-                                point += pairs;
-                            }
-                        }
-                    }
-                    double worst = 0.0, worst_implicit = 0.0;
-                    for (std::size_t k = 0; k < want.size(); ++k) {
-                        const double gap = std::abs(shown[k] - want[k]);
-                        (is_implicit[k / 2] ? worst_implicit : worst) =
-                            std::max(is_implicit[k / 2] ? worst_implicit : worst, gap);
-                    }
-                    CHECK(worst <= allowed);
-                    CHECK(worst_implicit <= allowed_implicit);
-                }
+            check_every_other_frame(animator, animation, document, tolerance_px);
+        }
+    }
+
+    TEST_CASE("a tilt that never changes is a fixed rotate of the head, and its frames are kept") {
+        const FaceModel face = FaceModel::default_face();
+        const SvgAnimator animator(face);
+        for (const std::size_t frame_count : {std::size_t{1}, std::size_t{3}}) {
+            CAPTURE(frame_count);
+            Animation animation;
+            animation.duration_s = static_cast<double>(frame_count - 1) / animation.fps;
+            for (std::size_t frame = 0; frame < frame_count; ++frame) {
+                FaceState state;
+                state.pose.gamma_deg = -6.0;
+                state.pose.beta_deg = 2.0 * static_cast<double>(frame);
+                state.mouth = mouth_controls(face, frame == 1 ? MouthShape::a : MouthShape::o);
+                animation.frames.push_back(state);
             }
+            const pugi::xml_document document = parse(animator.render_animation_svg(animation));
+            CHECK_FALSE(document.select_node("//animateTransform[@type='rotate']"));
+            CHECK(std::string(document.select_node("//g[@id='face']").node().attribute("transform").value())
+                      .find("rotate(-6)") != std::string::npos);
+            check_every_other_frame(animator, animation, document, SvgAnimationOptions{}.tolerance_px);
         }
     }
 
@@ -329,9 +403,10 @@ TEST_SUITE("SvgAnimator animation") {
     }
 
     TEST_CASE("a minute of speech takes less than the stated bytes in the keyframes encoding") {
-        // Issue #6 asks for less than 300 KB a minute; this bound keeps what was reached from
-        // growing back (bench/README.md has the figures on 3 minutes of speech).
-        constexpr double kMaxKibPerMinute = 440.0;
+        // Issue #6 asks for less than 300 KB a minute of real speech, met there (bench/README.md:
+        // 280 KB on 3 minutes). This timeline's pauses are shorter, so its mouth moves more: 305 KB
+        // were reached on it, and this bound keeps that from growing back.
+        constexpr double kMaxKibPerMinute = 315.0;
         const FaceModel face = FaceModel::default_face();
         Timeline timeline;
         std::string text;

@@ -212,6 +212,47 @@ TEST_SUITE("SpeechAligner") {
         }
     }
 
+    TEST_CASE("sentences run together without a pause end where their syllables do") {
+        // The only pauses are the commas inside the sentences: cut there, the first sentence
+        // ended half-way and the rest were squeezed, with no error (issue #4).
+        const Timeline transcript = clip_transcript("run_together");
+        const Timeline timeline = SpeechAligner().align_file(clip_path("run_together.flac"), transcript);
+        check_well_formed(timeline, transcript);
+        const auto starts = sentence_truth("run_together", "start");
+        const auto ends = sentence_truth("run_together", "end");
+        REQUIRE(starts.size() == 3);
+        for (std::size_t k = 0; k < 3; ++k) {
+            CAPTURE(k);
+            CHECK(std::fabs(timeline.sentences[k].start_s - starts[k]) < 0.1);
+            CHECK(std::fabs(timeline.sentences[k].end_s - ends[k]) < 0.1);
+        }
+        CHECK(share_within(timeline, true_starts("run_together"), 0.05) >= 0.75);
+    }
+
+    TEST_CASE("a wrong transcript of sentences run together is an AlignmentError naming where") {
+        const SpeechAligner aligner;
+        const std::string audio = clip_path("run_together.flac");
+        SUBCASE("a missing sentence") {
+            CHECK_THROWS_WITH_AS(aligner.align_file(audio, read_transcript("他每天早上跑步，锻炼身体。我们都觉得他的脸色很好。")),
+                                 doctest::Contains("sentence 2 ("), AlignmentError);
+        }
+        SUBCASE("an extra sentence") {
+            CHECK_THROWS_WITH_AS(
+                aligner.align_file(audio, read_transcript("他每天早上跑步，锻炼身体。我们都觉得他的脸色很好。明天，他要去北京开会。他们都很好。")),
+                doctest::Contains("run_together.flac: "), AlignmentError);
+        }
+        SUBCASE("two sentences swapped") {
+            CHECK_THROWS_WITH_AS(
+                aligner.align_file(audio, read_transcript("他每天早上跑步，锻炼身体。明天，他要去北京开会。我们都觉得他的脸色很好。")),
+                doctest::Contains("does not sound like its text"), AlignmentError);
+        }
+        SUBCASE("another sentence of as many syllables") {
+            CHECK_THROWS_WITH_AS(
+                aligner.align_file(audio, read_transcript("他每天早上跑步，锻炼身体。小朋友们在公园里放风筝。明天，他要去北京开会。")),
+                doctest::Contains("\"小朋友们在公园里放风筝。\""), AlignmentError);
+        }
+    }
+
     TEST_CASE("the automatic cut finds synthetic sentences between tone bursts in noise") {
         const int rate_hz = 22050;
         std::vector<double> pauses_s;

@@ -9,6 +9,11 @@ cd "$(dirname "$0")"
 "$make_corpus" --clip one_sentence --rate-wpm 200 --pitch 50 "小朋友們在公園裡放風箏。"
 "$make_corpus" --clip two_sentences --rate-wpm 190 --pitch 45 --pause-s 0.9 "今天下午有雨。我们明天再去吧。"
 
+# Three sentences with no pause between them: only the commas inside them pause.
+"$make_corpus" --clip run_together --rate-wpm 190 --pitch 50 --pause-s 0 "他每天早上跑步，锻炼身体。我们都觉得他的脸色很好。明天，他要去北京开会。"
+sox -R -V1 run_together.wav run_together.flac
+rm run_together.wav
+
 "$make_corpus" --clip comma_pause --rate-wpm 210 --pitch 55 "请把桌子上的杯子拿给我，谢谢。"
 sox -R -V1 comma_pause.wav comma_pause.flac
 rm comma_pause.wav

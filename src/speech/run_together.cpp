@@ -1,0 +1,87 @@
+#include "speech/run_together.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace talkface::detail {
+
+namespace {
+
+// Neighbouring sentences of one speaker differ in rate by up to ~1.4 (bench/ draws 170-230
+// syllables a minute per sentence; read speech varies about as much). A sentence end cut at a
+// comma of the next sentence moves a clause from one to the other: the rates then part by 2-3.
+constexpr double kMaxNeighbourRateRatio = 1.6;
+// Against the recording's typical sentence (the median), a sentence varies less than against a
+// single neighbour: beyond this its cut is in doubt.
+constexpr double kMaxTypicalRateRatio = 1.5;
+
+// Frames of `span` inside pauses, and the longest of those pauses.
+struct PausesInside {
+    std::size_t frames = 0;
+    std::size_t longest = 0;
+};
+
+PausesInside pauses_inside(const LoudnessProfile& loudness, const FrameSpan& span) {
+    PausesInside inside;
+    for (const auto& pause : loudness.pauses) {
+        if (pause.first_frame < span.first_frame || pause.end_frame > span.end_frame) continue;
+        inside.frames += pause.length();
+        inside.longest = std::max(inside.longest, pause.length());
+    }
+    return inside;
+}
+
+struct SentenceMeasures {
+    std::vector<double> frames_per_syllable;  // on the cut: speech frames, pauses inside left out
+    std::vector<std::size_t> longest_inside;  // the longest pause inside each sentence
+};
+
+SentenceMeasures measure_sentences(const std::vector<FrameSpan>& spans, const std::vector<std::size_t>& syllables,
+                                   const LoudnessProfile& loudness) {
+    SentenceMeasures measures;
+    for (std::size_t k = 0; k < spans.size(); ++k) {
+        const PausesInside inside = pauses_inside(loudness, spans[k]);
+        const std::size_t speech = spans[k].length() > inside.frames ? spans[k].length() - inside.frames : 0;
+        measures.frames_per_syllable.push_back(static_cast<double>(std::max<std::size_t>(speech, 1)) /
+                                               static_cast<double>(std::max<std::size_t>(syllables[k], 1)));
+        measures.longest_inside.push_back(inside.longest);
+    }
+    return measures;
+}
+
+std::size_t cut_pause(const std::vector<FrameSpan>& spans, std::size_t k) {
+    return spans[k + 1].first_frame > spans[k].end_frame ? spans[k + 1].first_frame - spans[k].end_frame : 0;
+}
+
+bool is_outside_ratio(double ratio, double limit) { return ratio > limit || ratio < 1.0 / limit; }
+
+}  // namespace
+
+std::vector<bool> find_run_together(const std::vector<FrameSpan>& spans, const std::vector<std::size_t>& syllables,
+                                    const LoudnessProfile& loudness) {
+    std::vector<bool> runs_on(spans.size(), false);
+    const SentenceMeasures measures = measure_sentences(spans, syllables, loudness);
+    for (std::size_t k = 0; k + 1 < spans.size(); ++k) {
+        const bool pause_in_doubt = cut_pause(spans, k) <= std::max(measures.longest_inside[k], measures.longest_inside[k + 1]);
+        const bool rates_disagree = is_outside_ratio(measures.frames_per_syllable[k] / measures.frames_per_syllable[k + 1],
+                                                     kMaxNeighbourRateRatio);
+        runs_on[k] = pause_in_doubt || rates_disagree;
+    }
+    return runs_on;
+}
+
+bool are_sentence_ends_in_doubt(const std::vector<FrameSpan>& spans, const std::vector<std::size_t>& syllables,
+                                const LoudnessProfile& loudness) {
+    if (spans.size() < 2) return false;
+    const SentenceMeasures measures = measure_sentences(spans, syllables, loudness);
+    std::size_t shortest_cut = std::numeric_limits<std::size_t>::max();
+    for (std::size_t k = 0; k + 1 < spans.size(); ++k) shortest_cut = std::min(shortest_cut, cut_pause(spans, k));
+    if (shortest_cut <= *std::max_element(measures.longest_inside.begin(), measures.longest_inside.end())) return true;
+    std::vector<double> rates = measures.frames_per_syllable;
+    std::nth_element(rates.begin(), rates.begin() + static_cast<std::ptrdiff_t>(rates.size() / 2), rates.end());
+    const double typical = rates[rates.size() / 2];
+    return std::any_of(measures.frames_per_syllable.begin(), measures.frames_per_syllable.end(),
+                       [&](double rate) { return is_outside_ratio(rate / typical, kMaxTypicalRateRatio); });
+}
+
+}  // namespace talkface::detail
