@@ -35,6 +35,16 @@ constexpr double kMaxTextFitGapAboveTypical = 0.15;
 // aligner), a replaced or swapped sentence mostly more: at 0.35, 0.3% of right one-sentence clips
 // are refused and 26% of wrong ones found; with two sentences 0.1% and 74%.
 constexpr double kMaxHeldOutFitGap = 0.35;
+// In a file of one or two sentences, on models re-estimated on it, the speech of a right text fits
+// a free sequence of sounds at most -0.05 per frame better than its text (bench/ tuning clips, every
+// condition but a room's tail, which the aligner leaves out): the text's path shaped the models.
+// Above zero the free sounds win even on models the text shaped.
+constexpr double kMaxOwnFitGap = 0.0;
+// The logarithms of a right text's syllable lengths spread by a standard deviation of 0.2-0.35
+// (0.63 at most, bench/ tuning clips of one and two sentences a right text passes with): one voice
+// keeps its syllables within a factor of about two of each other. A wrong text's path squeezes
+// some into a few frames and draws others out (median 0.55).
+constexpr double kMaxSyllableLengthSpread = 0.7;
 // No syllable holds 0.45 s of silence (a stop closure lasts under 0.2 s), and no pause hides 0.4 s
 // of speech: either means the text and the audio part ways there.
 constexpr double kMaxSilenceInSyllableFrames = 45.0;
@@ -52,6 +62,15 @@ double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
     const std::size_t n = values.size();
     return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// The refusal of a sentence whose speech other sounds fit `gap` per frame better than its text, on
+// models described by `models` ("" for the recording's own, re-estimated on every sentence).
+[[noreturn]] void refuse_text_fit(std::size_t k, const FrameSpan& span, const Timeline& transcript,
+                                  const std::string& models, double gap, double limit) {
+    throw AlignmentError(describe_sentence(k, span, transcript) + ": the audio does not sound like its text (" + models +
+                         "other sounds fit its speech " + format_fixed(gap, 2) + " per frame better than the text's, at most " +
+                         format_fixed(limit, 2) + " for the right text); is it another sentence, or are two sentences swapped?");
 }
 
 }  // namespace
@@ -163,21 +182,50 @@ void check_text_fit(const std::vector<double>& gap_per_frame, const std::vector<
     const double typical = gaps.size() >= 3 ? median(gaps) : -std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < gap_per_frame.size(); ++k) {
         const double gap = gap_per_frame[k];
-        if (!(gap > kMaxTextFitGap && gap - typical > kMaxTextFitGapAboveTypical)) continue;
-        throw AlignmentError(describe_sentence(k, spans[k], transcript) + ": the audio does not sound like its text (other sounds fit its " +
-                             "speech " + format_fixed(gap, 2) + " per frame better than the text's, at most " +
-                             format_fixed(kMaxTextFitGap, 2) + " for the right text); is it another sentence, or are two sentences swapped?");
+        if (gap > kMaxTextFitGap && gap - typical > kMaxTextFitGapAboveTypical)
+            refuse_text_fit(k, spans[k], transcript, "", gap, kMaxTextFitGap);
     }
 }
 
 void check_held_out_fit(const std::vector<double>& gap_per_frame, const std::vector<FrameSpan>& spans,
                         const Timeline& transcript) {
     for (std::size_t k = 0; k < gap_per_frame.size(); ++k) {
-        if (!(gap_per_frame[k] > kMaxHeldOutFitGap)) continue;
-        throw AlignmentError(describe_sentence(k, spans[k], transcript) + ": the audio does not sound like its text (with " +
-                             "models learned from the rest of the recording, other sounds fit part of its speech " +
-                             format_fixed(gap_per_frame[k], 2) + " per frame better than the text's, at most " +
-                             format_fixed(kMaxHeldOutFitGap, 2) + " for the right text); is it another sentence, or are two sentences swapped?");
+        if (gap_per_frame[k] > kMaxHeldOutFitGap)
+            refuse_text_fit(k, spans[k], transcript, "with models learned from the rest of the recording, on half of it, ",
+                            gap_per_frame[k], kMaxHeldOutFitGap);
+    }
+}
+
+void check_own_fit(const std::vector<double>& gap_per_frame, const std::vector<FrameSpan>& spans,
+                   const Timeline& transcript) {
+    for (std::size_t k = 0; k < gap_per_frame.size(); ++k) {
+        if (gap_per_frame[k] > kMaxOwnFitGap)
+            refuse_text_fit(k, spans[k], transcript, "even with models learned from this speech and its text, ",
+                            gap_per_frame[k], kMaxOwnFitGap);
+    }
+}
+
+double syllable_length_spread(const std::vector<AlignedStretch>& stretches) {
+    std::vector<double> logs;
+    for (const auto& stretch : stretches)
+        if (!stretch.is_pause) logs.push_back(std::log(static_cast<double>(stretch.end_frame - stretch.first_frame)));
+    if (logs.empty()) return 0.0;
+    double mean = 0.0;
+    for (double value : logs) mean += value;
+    mean /= static_cast<double>(logs.size());
+    double variance = 0.0;
+    for (double value : logs) variance += (value - mean) * (value - mean);
+    return std::sqrt(variance / static_cast<double>(logs.size()));
+}
+
+void check_syllable_lengths(const std::vector<double>& spreads, const std::vector<FrameSpan>& spans,
+                            const Timeline& transcript) {
+    for (std::size_t k = 0; k < spreads.size(); ++k) {
+        if (!(spreads[k] > kMaxSyllableLengthSpread)) continue;
+        throw AlignmentError(describe_sentence(k, spans[k], transcript) + ": its syllables would be squeezed and drawn out " +
+                             "far beyond one voice's rhythm (their lengths spread by a factor of " +
+                             format_fixed(std::exp(spreads[k]), 2) + ", at most " + format_fixed(std::exp(kMaxSyllableLengthSpread), 2) +
+                             " for the right text); is it another sentence, or are two sentences swapped?");
     }
 }
 

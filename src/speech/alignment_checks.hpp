@@ -53,6 +53,23 @@ void check_text_fit(const std::vector<double>& gap_per_frame, const std::vector<
 void check_held_out_fit(const std::vector<double>& gap_per_frame, const std::vector<FrameSpan>& spans,
                         const Timeline& transcript);
 
+// check_text_fit for a file of one or two sentences, where the models were learned from these very
+// sentences and shaped by their text: on them a right text's path fits at least as well as a free
+// sequence of sounds, so a gap above zero is the wrong text. NaN: a sentence not checked.
+// \throws talkface::AlignmentError naming the first sentence whose text does not fit its speech.
+void check_own_fit(const std::vector<double>& gap_per_frame, const std::vector<FrameSpan>& spans,
+                   const Timeline& transcript);
+
+// How much the lengths of a sentence's syllables (pauses left out) vary: the standard deviation of
+// their logarithms.
+double syllable_length_spread(const std::vector<AlignedStretch>& stretches);
+
+// Each sentence's syllable_length_spread against what one voice's syllables show: a wrong text
+// forced onto the speech squeezes some syllables and stretches others. NaN: a sentence not checked.
+// \throws talkface::AlignmentError naming the first sentence whose syllables vary too much.
+void check_syllable_lengths(const std::vector<double>& spreads, const std::vector<FrameSpan>& spans,
+                            const Timeline& transcript);
+
 // How well each aligned sentence's frames fit the models of the sounds its text says, per frame,
 // against the other sentences of the same recording.
 // \throws talkface::AlignmentError naming the sentence that fits far worse than the rest.
