@@ -15,6 +15,10 @@ constexpr double kMaxNeighbourRateRatio = 1.6;
 // single neighbour: beyond this its cut is in doubt.
 constexpr double kMaxTypicalRateRatio = 1.5;
 
+// A sentence end that the syllables of a chain put this far outside the pause the cutter chose
+// for it shows that the cut was wrong: the benchmark's tolerance for a sentence boundary.
+constexpr std::size_t kMovedEndFrames = 15;
+
 // Frames of `span` inside pauses, and the longest of those pauses.
 struct PausesInside {
     std::size_t frames = 0;
@@ -82,6 +86,60 @@ bool are_sentence_ends_in_doubt(const std::vector<FrameSpan>& spans, const std::
     const double typical = rates[rates.size() / 2];
     return std::any_of(measures.frames_per_syllable.begin(), measures.frames_per_syllable.end(),
                        [&](double rate) { return is_outside_ratio(rate / typical, kMaxTypicalRateRatio); });
+}
+
+std::vector<bool> spoken_sentences_of(const Timeline& transcript) {
+    std::vector<bool> is_spoken(transcript.sentences.size(), false);
+    for (const auto& syllable : transcript.syllables) is_spoken[syllable.sentence] = true;
+    return is_spoken;
+}
+
+std::size_t block_count(const SentenceCut& cut, const Timeline& transcript) {
+    const std::vector<bool> is_spoken = spoken_sentences_of(transcript);
+    std::size_t blocks = 0;
+    bool continues_block = false;
+    for (std::size_t k = 0; k < cut.runs_on.size(); ++k) {
+        if (!is_spoken[k]) continue;
+        if (!continues_block) ++blocks;
+        continues_block = cut.runs_on[k];
+    }
+    return blocks;
+}
+
+bool moves_sentence_end(const SentenceCut& cut, const Timeline& aligned, std::size_t k, std::size_t next) {
+    const std::size_t pause_first = cut.spans[k].end_frame;
+    const std::size_t pause_end = std::max(pause_first, cut.spans[next].first_frame);
+    auto is_outside = [&](double time_s) {
+        const double frame = time_s / kFrameStepS;
+        return frame + static_cast<double>(kMovedEndFrames) < static_cast<double>(pause_first) ||
+               frame > static_cast<double>(pause_end + kMovedEndFrames);
+    };
+    return is_outside(aligned.sentences[k].end_s) || is_outside(aligned.sentences[next].start_s);
+}
+
+bool is_cut_pause_in_text(const SentenceCut& cut, const Timeline& aligned, std::size_t k, std::size_t next) {
+    const double pause_first = static_cast<double>(cut.spans[k].end_frame);
+    const double pause_end = static_cast<double>(std::max(cut.spans[k].end_frame, cut.spans[next].first_frame));
+    const double tolerance = static_cast<double>(kMovedEndFrames);
+    const auto& syllables = aligned.syllables;
+    for (std::size_t i = 0; i + 1 < syllables.size(); ++i) {
+        if (!syllables[i].pause_after && syllables[i].sentence == syllables[i + 1].sentence) continue;
+        if (syllables[i].end_s / kFrameStepS <= pause_first + tolerance &&
+            syllables[i + 1].start_s / kFrameStepS >= pause_end - tolerance)
+            return true;
+    }
+    return false;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> spoken_neighbours(const std::vector<bool>& is_spoken) {
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    std::size_t previous = is_spoken.size();
+    for (std::size_t k = 0; k < is_spoken.size(); ++k) {
+        if (!is_spoken[k]) continue;
+        if (previous < is_spoken.size()) pairs.emplace_back(previous, k);
+        previous = k;
+    }
+    return pairs;
 }
 
 }  // namespace talkface::detail

@@ -6,6 +6,7 @@
 #define TALKFACE_SPEECH_RUN_TOGETHER_HPP
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "speech/sentence_cutter.hpp"
@@ -27,6 +28,30 @@ std::vector<bool> find_run_together(const std::vector<FrameSpan>& spans, const s
 // transcript is called wrong.
 bool are_sentence_ends_in_doubt(const std::vector<FrameSpan>& spans, const std::vector<std::size_t>& syllables,
                                 const LoudnessProfile& loudness);
+
+// Per sentence of `transcript`: whether it has a syllable.
+std::vector<bool> spoken_sentences_of(const Timeline& transcript);
+
+// How many blocks `cut` aligns: spoken sentences that do not continue the one before.
+std::size_t block_count(const SentenceCut& cut, const Timeline& transcript);
+
+// What a chain's alignment says of the cut. A sentence end that ran on keeps its chain only if the
+// chain's syllables move it out of the pause the cutter chose and put that pause where the text
+// has one: a sentence end they leave in its pause confirms the cut, and one they move off a pause
+// the text does not account for is a wrong text's doing.
+//
+// Whether `aligned` ends spoken sentence `k`, or starts the next spoken one, `next`, outside the
+// pause `cut` put between them, by more than the benchmark's tolerance for a sentence boundary.
+bool moves_sentence_end(const SentenceCut& cut, const Timeline& aligned, std::size_t k, std::size_t next);
+
+// Whether the pause `cut` put between spoken sentence `k` and the next lies, in `aligned`, between
+// two syllables where the transcript marks a pause (a comma or a sentence end): a pause the text
+// accounts for. A wrong text aligned as a chain can move a sentence end too, but it leaves the
+// pause between the sentences heard between two syllables it does not mark.
+bool is_cut_pause_in_text(const SentenceCut& cut, const Timeline& aligned, std::size_t k, std::size_t next);
+
+// Pairs (k, next) of neighbouring spoken sentences.
+std::vector<std::pair<std::size_t, std::size_t>> spoken_neighbours(const std::vector<bool>& is_spoken);
 
 }  // namespace talkface::detail
 

@@ -16,6 +16,7 @@
 #include "speech/frame_features.hpp"
 #include "speech/hsmm.hpp"
 #include "speech/phone_chain.hpp"
+#include "speech/run_together.hpp"
 #include "speech/sentence_cutter.hpp"
 #include "talkface/errors.hpp"
 
@@ -54,9 +55,6 @@ constexpr double kLoopSwitchPenalty = 2.0;
 constexpr std::size_t kPauseBeforeBurstFrames = 20;
 // Files of at most this many sentences get the leave-one-out check (held_out_fit_gaps).
 constexpr std::size_t kMaxHeldOutCheckSentences = 2;
-// A sentence end that the syllables of a chain put this far outside the pause the cutter chose
-// for it shows that the cut was wrong: the benchmark's tolerance for a sentence boundary.
-constexpr std::size_t kMovedEndFrames = 15;
 // How much of a long sentence the first pass, on hand-set models, aligns: two minutes.
 constexpr std::size_t kBootstrapFrames = 12000;
 // Shares of the job's progress: reading and features, cutting, the alignment passes.
@@ -500,69 +498,6 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
         result.sentences[k].end_s = last->end_s;
     }
     return result;
-}
-
-// Per sentence of `transcript`: whether it has a syllable.
-std::vector<bool> spoken_sentences_of(const Timeline& transcript) {
-    std::vector<bool> is_spoken(transcript.sentences.size(), false);
-    for (const auto& syllable : transcript.syllables) is_spoken[syllable.sentence] = true;
-    return is_spoken;
-}
-
-// How many blocks `cut` aligns: spoken sentences that do not continue the one before.
-std::size_t block_count(const SentenceCut& cut, const Timeline& transcript) {
-    const std::vector<bool> is_spoken = spoken_sentences_of(transcript);
-    std::size_t blocks = 0;
-    bool continues_block = false;
-    for (std::size_t k = 0; k < cut.runs_on.size(); ++k) {
-        if (!is_spoken[k]) continue;
-        if (!continues_block) ++blocks;
-        continues_block = cut.runs_on[k];
-    }
-    return blocks;
-}
-
-// Whether `aligned` ends spoken sentence `k`, or starts the next spoken one, `next`, outside the
-// pause `cut` put between them (by more than kMovedEndFrames).
-bool moves_sentence_end(const SentenceCut& cut, const Timeline& aligned, std::size_t k, std::size_t next) {
-    const std::size_t pause_first = cut.spans[k].end_frame;
-    const std::size_t pause_end = std::max(pause_first, cut.spans[next].first_frame);
-    auto is_outside = [&](double time_s) {
-        const double frame = time_s / kFrameStepS;
-        return frame + static_cast<double>(kMovedEndFrames) < static_cast<double>(pause_first) ||
-               frame > static_cast<double>(pause_end + kMovedEndFrames);
-    };
-    return is_outside(aligned.sentences[k].end_s) || is_outside(aligned.sentences[next].start_s);
-}
-
-// Whether the pause `cut` put between spoken sentence `k` and the next lies, in `aligned`, between
-// two syllables where the transcript marks a pause (a comma or a sentence end): a pause the text
-// accounts for. A wrong text aligned as a chain can move a sentence end too, but it leaves the
-// pause between the sentences heard between two syllables it does not mark.
-bool is_cut_pause_in_text(const SentenceCut& cut, const Timeline& aligned, std::size_t k, std::size_t next) {
-    const double pause_first = static_cast<double>(cut.spans[k].end_frame);
-    const double pause_end = static_cast<double>(std::max(cut.spans[k].end_frame, cut.spans[next].first_frame));
-    const double tolerance = static_cast<double>(kMovedEndFrames);
-    const auto& syllables = aligned.syllables;
-    for (std::size_t i = 0; i + 1 < syllables.size(); ++i) {
-        if (!syllables[i].pause_after && syllables[i].sentence == syllables[i + 1].sentence) continue;
-        if (syllables[i].end_s / kFrameStepS <= pause_first + tolerance &&
-            syllables[i + 1].start_s / kFrameStepS >= pause_end - tolerance)
-            return true;
-    }
-    return false;
-}
-
-// Pairs (k, next) of neighbouring spoken sentences.
-std::vector<std::pair<std::size_t, std::size_t>> spoken_neighbours(const std::vector<bool>& is_spoken) {
-    std::vector<std::pair<std::size_t, std::size_t>> pairs;
-    std::size_t previous = is_spoken.size();
-    for (std::size_t k = 0; k < is_spoken.size(); ++k) {
-        if (!is_spoken[k]) continue;
-        if (previous < is_spoken.size()) pairs.emplace_back(previous, k);
-        previous = k;
-    }
-    return pairs;
 }
 
 // align_cut, where a sentence end that ran on keeps its chain only if the chain's syllables move
