@@ -327,10 +327,12 @@ std::vector<AlignedStretch> stretches_of(const SentenceWork& work, const std::ve
     return stretches;
 }
 
-// Frames from the first syllable's start to the last one's end of sentence `k` as aligned.
-FrameSpan aligned_span(const Timeline& result, std::size_t k) {
+// Frames from the first syllable's start to the last one's end of sentence `k` of `work` as
+// aligned in `result`.
+FrameSpan aligned_span(const Timeline& result, const SentenceWork& work, std::size_t k) {
     FrameSpan span{std::numeric_limits<std::size_t>::max(), 0};
-    for (const auto& syllable : result.syllables) {
+    for (const std::size_t i : work.syllable_indices) {
+        const Syllable& syllable = result.syllables[i];
         if (syllable.sentence != k) continue;
         span.first_frame = std::min(span.first_frame, static_cast<std::size_t>(std::lround(syllable.start_s / kFrameStepS)));
         span.end_frame = std::max(span.end_frame, static_cast<std::size_t>(std::lround(syllable.end_s / kFrameStepS)));
@@ -351,25 +353,24 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
     std::vector<SentenceWork> work;
     std::size_t spoken_sentences = 0;
     bool continues_block = false;
-    for (std::size_t k = 0; k < spans.size(); ++k) {
-        if (std::none_of(transcript.syllables.begin(), transcript.syllables.end(),
-                         [&](const Syllable& s) { return s.sentence == k; }))
-            continue;
-        ++spoken_sentences;
-        if (!continues_block) {
-            work.emplace_back();
-            work.back().first_sentence = k;
-            work.back().speech = spans[k];
+    // One pass: the syllables come in sentence order (validate_transcript), and a sentence without
+    // syllables has nothing to align.
+    for (std::size_t i = 0; i < transcript.syllables.size(); ++i) {
+        const std::size_t k = transcript.syllables[i].sentence;
+        if (i == 0 || transcript.syllables[i - 1].sentence != k) {
+            ++spoken_sentences;
+            if (!continues_block) {
+                work.emplace_back();
+                work.back().first_sentence = k;
+                work.back().speech = spans[k];
+            }
+            SentenceWork& block = work.back();
+            block.end_sentence = k + 1;
+            block.speech = {std::min(block.speech.first_frame, spans[k].first_frame), std::max(block.speech.end_frame, spans[k].end_frame)};
+            continues_block = cut.runs_on[k];
         }
-        SentenceWork& block = work.back();
-        block.end_sentence = k + 1;
-        block.speech = {std::min(block.speech.first_frame, spans[k].first_frame), std::max(block.speech.end_frame, spans[k].end_frame)};
-        for (std::size_t i = 0; i < transcript.syllables.size(); ++i) {
-            if (transcript.syllables[i].sentence != k) continue;
-            block.syllables.push_back(&transcript.syllables[i]);
-            block.syllable_indices.push_back(i);
-        }
-        continues_block = cut.runs_on[k];
+        work.back().syllables.push_back(&transcript.syllables[i]);
+        work.back().syllable_indices.push_back(i);
     }
     // Edges reach into the pauses around the sentence, at most halfway to its neighbours.
     for (std::size_t w = 0; w < work.size(); ++w) {
@@ -429,7 +430,7 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
                 place_syllables(sentence, path, scores, track, result);
                 const bool is_block = sentence.end_sentence > sentence.first_sentence + 1;
                 for (const auto& [k, share] : split_by_sentence(sentence, path)) {
-                    if (is_block) spans[k] = aligned_span(result, k);
+                    if (is_block) spans[k] = aligned_span(result, sentence, k);
                     fits[k] = speech_fit(sentence, share, scores);
                     fit_gaps[k] = text_fit_gap(sentence, share, scores);
                 }
