@@ -56,6 +56,7 @@ from ._talkface import (
     SvgAnimator,
     SvgOptions,
     Syllable,
+    TIMELINE_JSON_VERSION,
     Timeline,
     UserEventMode,
     WebLink,
@@ -78,6 +79,7 @@ from ._talkface import (
     key_frames_json,
     key_frames_tsv,
     lift_face,
+    load_timeline_json,
     load_transcript,
     mandarin_syllables,
     mouth_controls,
@@ -90,8 +92,11 @@ from ._talkface import (
     project_face,
     read_transcript,
     rotation_origin,
+    save_timeline_json,
     syllable_mouth_shapes,
     timeline_end_s,
+    timeline_from_json,
+    timeline_to_json,
     to_image,
     to_local,
     validate_expression_events,
@@ -99,7 +104,6 @@ from ._talkface import (
     write_alignment_plot_svg,
     write_web_page,
 )
-from .timeline_json import timeline_from_json, timeline_to_json
 
 
 def default_face() -> FaceModel:
@@ -154,6 +158,7 @@ __all__ = [
     "SvgAnimator",
     "SvgOptions",
     "Syllable",
+    "TIMELINE_JSON_VERSION",
     "Timeline",
     "UserEventMode",
     "WebLink",
@@ -177,6 +182,7 @@ __all__ = [
     "key_frames_json",
     "key_frames_tsv",
     "lift_face",
+    "load_timeline_json",
     "load_transcript",
     "mandarin_syllables",
     "mouth_controls",
@@ -189,6 +195,7 @@ __all__ = [
     "project_face",
     "read_transcript",
     "rotation_origin",
+    "save_timeline_json",
     "syllable_mouth_shapes",
     "timeline_end_s",
     "timeline_from_json",
