@@ -13,7 +13,7 @@
 #include "common/number_format.hpp"
 #include "render/layers.hpp"
 #include "render/svg_animation.hpp"
-#include "render/svg_text.hpp"
+#include "render/svg_document.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/mouth_shape.hpp"
 
@@ -26,7 +26,7 @@ constexpr int kMaxDecimals = 6;
 // Room around the outermost points for the curves' overshoot between points and the outline's
 // width: a Catmull-Rom control point lies at most 1/6 of a neighbour span outside.
 constexpr double kMarginInD = 0.35;
-// The clothes layer reaches this far from O (see clothes_svg.cpp), so the canvas shows them.
+// The clothes layer reaches this far from O (see clothes_drawing.cpp), so the canvas shows them.
 constexpr double kMinHalfWidthInD = 2.2;
 constexpr double kMinBottomBelowOriginInD = 1.9;
 
@@ -146,17 +146,19 @@ std::string SvgAnimator::render_svg(const FaceState& state) const {
     const detail::LayerStyle style{options.decimals, options.stroke_width_in_d * projected.d};
     // The user space is the face's own image space: a caller can crop or place a document with
     // points from project_face() (the samples zoom on the mouth that way).
-    std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
-    svg += detail::open_svg_root(impl_->canvas, options.decimals, "");
-    svg += detail::draw_background_layer(impl_->canvas, options.background, options.decimals);
+    const int decimals = options.decimals;
+    std::string svg = detail::kXmlDeclaration;
+    svg += detail::open_svg_root(impl_->canvas, decimals, "");
+    svg += detail::background_layer_svg(impl_->canvas, options.background, decimals);
     const detail::FaceLook look = detail::make_face_look(projected, style);
-    svg += "<g id=\"hair\">\n" + detail::draw_hair_layer(projected, look);
-    svg += "</g>\n<g id=\"clothes\">\n";
-    if (options.draw_clothes) {
-        svg += detail::draw_clothes_layer(projected, impl_->canvas.box, options.clothes, style);
-    }
-    svg += "</g>\n<g id=\"face\">\n" + detail::draw_face_layer(projected, look) + "</g>\n</svg>\n";
-    return svg;
+    svg += detail::layer_group_svg("hair", detail::draw_hair_layer(projected, look), decimals);
+    svg += detail::layer_group_svg(
+        "clothes",
+        options.draw_clothes ? detail::draw_clothes_layer(projected, impl_->canvas.box, options.clothes, style)
+                             : detail::Layer(),
+        decimals);
+    svg += detail::layer_group_svg("face", detail::draw_face_layer(projected, look), decimals);
+    return svg + "</svg>\n";
 }
 
 void SvgAnimator::write_svg(const std::string& path, const FaceState& state) const {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "common/atomic_file.hpp"
-#include "speech/reading_tables.hpp"
+#include "text/reading_tables.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface {

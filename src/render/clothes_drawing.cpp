@@ -1,6 +1,6 @@
 // The clothes layer (thesis 6.3.1, Figures 6.7 and 6.8): a neck and shoulders under the head.
 #include <algorithm>
-#include <string>
+#include <utility>
 
 #include "render/curves.hpp"
 #include "render/layers.hpp"
@@ -20,8 +20,7 @@ constexpr double kShoulderInD = 1.45;
 
 }  // namespace
 
-std::string draw_clothes_layer(const ProjectedFace& face, const CanvasBox& canvas, Rgb clothes,
-                               const LayerStyle& style) {
+Layer draw_clothes_layer(const ProjectedFace& face, const CanvasBox& canvas, Rgb clothes, const LayerStyle& style) {
     // The body stays put while the head turns, so everything hangs from O and d alone.
     const Point2 o = face.origin;
     const double d = face.d;
@@ -33,7 +32,7 @@ std::string draw_clothes_layer(const ProjectedFace& face, const CanvasBox& canva
 
     // The neck reaches below the V of the collar, so no background shows through the V.
     const double neck_bottom_in_d = kCollarDipInD + 0.1;
-    PathData neck(style.decimals);
+    Path neck;
     neck.move_to(at(-kNeckHalfWidthInD, kNeckTopInD))
         .arc({at(-kNeckHalfWidthInD, kNeckTopInD), at(-kNeckHalfWidthInD * 0.97, 0.5 * kCollarInD),
               at(-kNeckHalfWidthInD * 1.1, neck_bottom_in_d)})
@@ -41,13 +40,16 @@ std::string draw_clothes_layer(const ProjectedFace& face, const CanvasBox& canva
         .arc({at(kNeckHalfWidthInD * 1.1, neck_bottom_in_d), at(kNeckHalfWidthInD * 0.97, 0.5 * kCollarInD),
               at(kNeckHalfWidthInD, kNeckTopInD)})
         .close();
-    std::string svg = "<path" + attribute("class", "neck") + attribute("d", neck.str()) +
-                      paint(to_hex(colors.skin), to_hex(colors.outline), style.stroke_px, style.decimals) +
-                      "/>\n";
+    Layer layer;
+    Shape neck_shape;
+    neck_shape.name = "neck";
+    neck_shape.path = std::move(neck);
+    neck_shape.paint = {Paint::of(colors.skin), Paint::of(colors.outline), style.stroke_px};
+    layer.elements.push_back(std::move(neck_shape));
 
     const Point2 left_shoulder{left_edge, o.y + kShoulderInD * d};
     const Point2 right_shoulder{right_edge, o.y + kShoulderInD * d};
-    PathData shirt(style.decimals);
+    Path shirt;
     shirt.move_to({left_edge, bottom})
         .arc({{left_edge, bottom}, left_shoulder})
         .arc({left_shoulder, at(-0.8, kCollarInD + 0.12), at(-kNeckHalfWidthInD * 1.2, kCollarInD)})
@@ -58,10 +60,12 @@ std::string draw_clothes_layer(const ProjectedFace& face, const CanvasBox& canva
         .arc({at(kNeckHalfWidthInD * 1.2, kCollarInD), at(0.8, kCollarInD + 0.12), right_shoulder})
         .arc({right_shoulder, {right_edge, bottom}})
         .close();
-    svg += "<path" + attribute("class", "shirt") + attribute("d", shirt.str()) +
-           paint(to_hex(clothes), to_hex(blend(clothes, Rgb{}, 0.4)), style.stroke_px, style.decimals) +
-           "/>\n";
-    return svg;
+    Shape shirt_shape;
+    shirt_shape.name = "shirt";
+    shirt_shape.path = std::move(shirt);
+    shirt_shape.paint = {Paint::of(clothes), Paint::of(blend(clothes, Rgb{}, 0.4)), style.stroke_px};
+    layer.elements.push_back(std::move(shirt_shape));
+    return layer;
 }
 
 }  // namespace talkface::detail

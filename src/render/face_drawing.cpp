@@ -2,9 +2,10 @@
 // (contour points past 10 degrees, the nose bridge side) already chosen by project_face().
 #include <cmath>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
-#include "common/number_format.hpp"
 #include "render/curves.hpp"
 #include "render/layers.hpp"
 #include "render/svg_text.hpp"
@@ -15,6 +16,8 @@ namespace {
 
 // The pupil's diameter is 1/3 of the iris's (MPEG-4 neutral face).
 constexpr double kPupilToIrisRadius = 1.0 / 3.0;
+constexpr Rgb kPupilColour{0x11, 0x11, 0x11};
+constexpr Rgb kHighlightColour{0xff, 0xff, 0xff};
 
 std::vector<Point2> points_of(const ProjectedFace& face, const FaceLook& look,
                               const std::vector<std::string>& ids) {
@@ -24,27 +27,29 @@ std::vector<Point2> points_of(const ProjectedFace& face, const FaceLook& look,
     return points;
 }
 
-std::string path_element(const std::string& data, const std::string& paint_attributes,
-                         const std::string& class_name) {
-    return "<path" + attribute("class", class_name) + attribute("d", data) + paint_attributes + "/>\n";
+Shape path_shape(std::string_view name, Path path, const ShapePaint& paint) {
+    Shape shape;
+    shape.kind = ShapeKind::path;
+    shape.name = name;
+    shape.paint = paint;
+    shape.path = std::move(path);
+    return shape;
 }
 
-std::string draw_ears(const ProjectedFace& face, const FaceLook& look) {
-    std::string svg;
+void draw_ears(const ProjectedFace& face, const FaceLook& look, Layer& layer) {
     // arc(10.8, 10.2, A) as one cubic through the ear's top 10.2 (curves.hpp: rim_segment); the
     // straight edge that closes each ear runs under the face contour, drawn after it.
     const std::vector<std::vector<std::string>> ears{{"10.8", "10.2", "A"}, {"10.7", "10.1", "B"}};
-    const char* const names[] = {"ear-left", "ear-right"};
+    constexpr std::string_view names[] = {"ear-left", "ear-right"};
     for (std::size_t i = 0; i < ears.size(); ++i) {
         const std::vector<Point2> points = points_of(face, look, ears[i]);
-        PathData path(look.style.decimals);
+        Path path;
         path.move_to(points[0]).curves({rim_segment(points[0], points[1], points[2])}).close();
-        svg += path_element(path.str(), look.skin, names[i]);
+        layer.elements.push_back(path_shape(names[i], std::move(path), look.skin));
     }
-    return svg;
 }
 
-std::string draw_face_contour(const ProjectedFace& face, const FaceLook& look) {
+void draw_face_contour(const ProjectedFace& face, const FaceLook& look, Layer& layer) {
     // arc(11.2, 11.2a, 11.1, 11.3a, 11.3), arc(11.3, 10.9, 2.13), arc(2.13, 2.1, 2.14),
     // arc(2.14, 10.10, 11.2) as one closed curve: a face outline has no corners where they meet.
     const auto& left = face.left_contour;
@@ -62,105 +67,116 @@ std::string draw_face_contour(const ProjectedFace& face, const FaceLook& look) {
     const std::vector<CubicSegment> upper(segments.begin(), segments.begin() + 6);
     const std::vector<CubicSegment> jaw(segments.begin() + 6, segments.end());
     const Point2 jaw_middle{(points[7].x + points[9].x) / 2.0, (points[7].y + points[9].y) / 2.0};
-    PathData upper_path(look.style.decimals);
+    Path upper_path;
     upper_path.move_to(points.front()).curves(upper).line_to(jaw_middle);
-    PathData jaw_path(look.style.decimals);
+    Path jaw_path;
     jaw_path.move_to(points[6]).curves(jaw);
-    return path_element(upper_path.str(), look.skin, "face-contour") +
-           path_element(jaw_path.str(), look.skin, "jaw");
+    layer.elements.push_back(path_shape("face-contour", std::move(upper_path), look.skin));
+    layer.elements.push_back(path_shape("jaw", std::move(jaw_path), look.skin));
 }
 
-std::string draw_nose(const ProjectedFace& face, const FaceLook& look) {
+void draw_nose(const ProjectedFace& face, const FaceLook& look, Layer& layer) {
     // Algorithm 2.3 step 8: the bridge line runs down the side of the nose that faces the viewer.
     const std::vector<std::string> bridge = face.nose_bridge == NoseBridgeSide::right
                                                 ? std::vector<std::string>{"9.7", "C", "9.13"}
                                                 : std::vector<std::string>{"9.6", "C", "9.14"};
     const std::vector<std::vector<std::string>> arcs{
         bridge, {"9.14", "9.2", "9.4"}, {"9.13", "9.1", "9.5"}, {"D", "9.15", "E"}};
-    PathData path(look.style.decimals);
+    Path path;
     for (const auto& ids : arcs) {
         const std::vector<Point2> points = points_of(face, look, ids);
         path.move_to(points.front()).arc(points);
     }
-    return path_element(path.str(), look.nose, "nose");
+    layer.elements.push_back(path_shape("nose", std::move(path), look.nose));
 }
 
-std::string draw_eyebrows(const ProjectedFace& face, const FaceLook& look) {
+void draw_eyebrows(const ProjectedFace& face, const FaceLook& look, Layer& layer) {
     // Corner-cut arc(4.6, 4.4a, 4.4, 4.2) and arc(4.2, G, F, 4.6): one closed outline per brow.
     const std::vector<std::vector<std::string>> brows{{"4.6", "4.4a", "4.4", "4.2", "G", "F"},
                                                       {"4.5", "4.3a", "4.3", "4.1", "H", "I"}};
-    const char* const names[] = {"eyebrow-left", "eyebrow-right"};
-    std::string svg;
+    constexpr std::string_view names[] = {"eyebrow-left", "eyebrow-right"};
     for (std::size_t i = 0; i < brows.size(); ++i) {
-        PathData outline(look.style.decimals);
+        Path outline;
         outline.corner_cut_closed(points_of(face, look, brows[i]));
-        svg += "<path" + attribute("class", names[i]) + attribute("d", outline.str()) + look.brows + "/>\n";
+        layer.elements.push_back(path_shape(names[i], std::move(outline), look.brows));
     }
-    return svg;
 }
 
+// The names of one eye's parts (static text: the drawing model keeps views of it).
 struct EyeParts {
-    const char* side;                  // "left" or "right", image sides
     std::vector<std::string> outline;  // corner, top, corner, bottom
     const char* eyeball;
     const char* radius_fapu;
+    std::string_view clip_id, outline_id, gradient_id;
+    std::string_view white, eyeball_group, outline_stroke;
 };
 
+// Image sides: left, then right.
 const std::vector<EyeParts>& eye_parts() {
     static const std::vector<EyeParts> parts{
-        {"left", {"3.12", "3.2", "3.8", "3.4"}, "EyeballLeft", "r1"},
-        {"right", {"3.7", "3.1", "3.11", "3.3"}, "EyeballRight", "r2"}};
+        {{"3.12", "3.2", "3.8", "3.4"}, "EyeballLeft", "r1", "tf-eye-left-clip", "tf-eye-left",
+         "tf-iris-left-gradient", "eye-left-white", "eyeball-left", "eye-left-outline"},
+        {{"3.7", "3.1", "3.11", "3.3"}, "EyeballRight", "r2", "tf-eye-right-clip", "tf-eye-right",
+         "tf-iris-right-gradient", "eye-right-white", "eyeball-right", "eye-right-outline"}};
     return parts;
 }
 
-std::string eye_outline_data(const ProjectedFace& face, const FaceLook& look, const EyeParts& eye) {
+Path eye_outline(const ProjectedFace& face, const FaceLook& look, const EyeParts& eye) {
     const std::vector<Point2> p = points_of(face, look, eye.outline);
-    PathData path(look.style.decimals);
+    Path path;
     path.move_to(p[0]).arc({p[0], p[1], p[2]}).arc({p[2], p[3], p[0]}).close();
-    return path.str();
-}
-
-std::string eye_clip_id(const EyeParts& eye) { return std::string("tf-eye-") + eye.side + "-clip"; }
-std::string eye_outline_id(const EyeParts& eye) { return std::string("tf-eye-") + eye.side; }
-std::string iris_gradient_id(const EyeParts& eye) {
-    return std::string("tf-iris-") + eye.side + "-gradient";
+    return path;
 }
 
 // Light from the upper left, darker rim: the eyes of thesis Figure 6.5.
-std::string iris_gradient(const EyeParts& eye, Rgb iris) {
-    return "<radialGradient" + attribute("id", iris_gradient_id(eye)) +
-           " cx=\"0.4\" cy=\"0.4\" r=\"0.6\">\n" + "<stop offset=\"0\"" +
-           attribute("stop-color", to_hex(blend(iris, Rgb{0xff, 0xff, 0xff}, 0.45))) + "/>\n" +
-           "<stop offset=\"0.6\"" + attribute("stop-color", to_hex(iris)) + "/>\n" + "<stop offset=\"1\"" +
-           attribute("stop-color", to_hex(blend(iris, Rgb{}, 0.5))) + "/>\n</radialGradient>\n";
+RadialGradient iris_gradient(Rgb iris) {
+    return {0.4, 0.4, 0.6,
+            {{0.0, blend(iris, Rgb{0xff, 0xff, 0xff}, 0.45)}, {0.6, iris}, {1.0, blend(iris, Rgb{}, 0.5)}}};
 }
 
-std::string draw_eye_defs(const ProjectedFace& face, const FaceLook& look) {
-    std::string svg;
+// Each eye's clip path and iris gradient, in that order: the definitions of eye i are 2 i and 2 i + 1.
+void draw_eye_definitions(const ProjectedFace& face, const FaceLook& look, Layer& layer) {
+    for (const EyeParts& eye : eye_parts()) {
+        // The outline is defined once, in its clip path, and drawn again for the white and the
+        // stroke: an animation then moves one path per eye instead of three.
+        Definition clip;
+        clip.kind = DefinitionKind::clip_path;
+        clip.id = eye.clip_id;
+        clip.outline_id = eye.outline_id;
+        clip.outline = eye_outline(face, look, eye);
+        layer.definitions.push_back(std::move(clip));
+        Definition gradient;
+        gradient.kind = DefinitionKind::radial_gradient;
+        gradient.id = eye.gradient_id;
+        gradient.gradient = look.iris_gradient;
+        layer.definitions.push_back(std::move(gradient));
+    }
+}
+
+Shape circle_shape(Point2 centre, double radius, const Paint& fill) {
+    Shape shape;
+    shape.kind = ShapeKind::circle;
+    shape.centre = centre;
+    shape.radius = radius;
+    shape.paint.fill = fill;
+    return shape;
+}
+
+Shape reference_shape(std::string_view name, std::size_t definition, const ShapePaint& paint) {
+    Shape shape;
+    shape.kind = ShapeKind::reference;
+    shape.name = name;
+    shape.definition = definition;
+    shape.paint = paint;
+    return shape;
+}
+
+void draw_eyes(const ProjectedFace& face, const FaceLook& look, Layer& layer) {
     for (std::size_t i = 0; i < eye_parts().size(); ++i) {
         const EyeParts& eye = eye_parts()[i];
-        // The outline is written once, here, and <use>d for the white and the stroke: an animation
-        // then moves one path per eye instead of three.
-        svg += "<clipPath" + attribute("id", eye_clip_id(eye)) + ">\n<path" +
-               attribute("id", eye_outline_id(eye)) + attribute("d", eye_outline_data(face, look, eye)) +
-               "/>\n</clipPath>\n";
-        svg += look.iris_gradients[i];
-    }
-    return svg;
-}
-
-std::string circle(Point2 centre, double radius, const std::string& fill, int decimals) {
-    return "<circle" + attribute("cx", format_fixed(centre.x, decimals)) +
-           attribute("cy", format_fixed(centre.y, decimals)) +
-           attribute("r", format_fixed(radius, decimals)) + attribute("fill", fill) + "/>\n";
-}
-
-std::string draw_eyes(const ProjectedFace& face, const FaceLook& look) {
-    std::string svg;
-    for (const EyeParts& eye : eye_parts()) {
-        const std::string outline = attribute("xlink:href", "#" + eye_outline_id(eye));
-        svg += "<use" + attribute("class", std::string("eye-") + eye.side + "-white") + outline +
-               look.eye_white + "/>\n";
+        const std::size_t clip = 2 * i;
+        const std::size_t gradient = 2 * i + 1;
+        layer.elements.push_back(reference_shape(eye.white, clip, look.eye_white));
         // Clipped by the eye outline, so a closing lid hides iris and pupil (thesis 6.3.1).
         const Point2 pupil = look.point(face, eye.eyeball);
         const double iris_radius_px = face.face.fapu(eye.radius_fapu);
@@ -169,21 +185,22 @@ std::string draw_eyes(const ProjectedFace& face, const FaceLook& look) {
         // The light comes from the upper left of the image, whatever the view turns.
         const Point2 light = look.view.apply_to_offset({-0.35 * iris_radius_px, -0.35 * iris_radius_px});
         const Point2 highlight{pupil.x + light.x, pupil.y + light.y};
-        const int decimals = look.style.decimals;
-        svg += "<g" + attribute("class", std::string("eyeball-") + eye.side) +
-               attribute("clip-path", "url(#" + eye_clip_id(eye) + ")") + ">\n" +
-               circle(pupil, iris_radius, "url(#" + iris_gradient_id(eye) + ")", decimals) +
-               circle(pupil, pupil_radius, "#111111", decimals) +
-               circle(highlight, 0.5 * pupil_radius, "#ffffff", decimals) + "</g>\n";
-        svg += "<use" + attribute("class", std::string("eye-") + eye.side + "-outline") + outline +
-               look.eye_outline + "/>\n";
+        Shape eyeball;
+        eyeball.kind = ShapeKind::group;
+        eyeball.name = eye.eyeball_group;
+        eyeball.definition = clip;
+        eyeball.is_clipped = true;
+        eyeball.children = {circle_shape(pupil, iris_radius, Paint::of_gradient(gradient)),
+                            circle_shape(pupil, pupil_radius, Paint::of(kPupilColour)),
+                            circle_shape(highlight, 0.5 * pupil_radius, Paint::of(kHighlightColour))};
+        layer.elements.push_back(std::move(eyeball));
+        layer.elements.push_back(reference_shape(eye.outline_stroke, clip, look.eye_outline));
     }
-    return svg;
 }
 
-std::string draw_mouth(const ProjectedFace& face, const FaceLook& look) {
+void draw_mouth(const ProjectedFace& face, const FaceLook& look, Layer& layer) {
     const std::vector<Point2> lips = points_of(face, look, {"8.1", "8.9", "8.4", "8.2", "8.3", "8.10"});
-    PathData outer(look.style.decimals);
+    Path outer;
     outer.move_to(lips[0])
         .arc({lips[0], lips[1], lips[2]})
         .arc({lips[2], lips[3], lips[4]})
@@ -191,13 +208,17 @@ std::string draw_mouth(const ProjectedFace& face, const FaceLook& look) {
         .close();
     // arc(R, 2.2, S) + arc(S, 2.3, R): R and S sit on the corners 8.4 and 8.3 (SPEC: S = 8.3).
     const std::vector<Point2> inner_points = points_of(face, look, {"R", "2.2", "S", "2.3"});
-    PathData inner(look.style.decimals);
+    Path inner;
     inner.move_to(inner_points[0])
         .arc({inner_points[0], inner_points[1], inner_points[2]})
         .arc({inner_points[2], inner_points[3], inner_points[0]})
         .close();
-    return path_element(outer.str(), look.lips, "lips") +
-           path_element(inner.str(), look.mouth_opening, "mouth-opening");
+    layer.elements.push_back(path_shape("lips", std::move(outer), look.lips));
+    layer.elements.push_back(path_shape("mouth-opening", std::move(inner), look.mouth_opening));
+}
+
+ShapePaint paint_of(const Paint& fill, const Paint& stroke, double stroke_width) {
+    return {fill, stroke, stroke_width};
 }
 
 }  // namespace
@@ -234,35 +255,42 @@ std::vector<Point2> hair_polygon_in_view(const ProjectedFace& face, const FaceLo
 
 FaceLook make_face_look(const ProjectedFace& face, const LayerStyle& style) {
     const FaceColors& colors = face.face.colors();
-    const std::string outline = to_hex(colors.outline);
+    const Paint outline = Paint::of(colors.outline);
+    const Paint none;
+    const double stroke = style.stroke_px;
     FaceLook look;
     look.style = style;
-    look.skin = paint(to_hex(colors.skin), outline, style.stroke_px, style.decimals);
-    look.hair =
-        paint(to_hex(colors.hair), to_hex(blend(colors.hair, Rgb{}, 0.4)), style.stroke_px, style.decimals);
-    look.nose = paint("none", outline, style.stroke_px, style.decimals);
-    const std::string brow_colour = to_hex(colors.brows);
-    look.brows = paint(brow_colour, brow_colour, 0.5 * style.stroke_px, style.decimals);
-    look.eye_white = paint(to_hex(colors.eye_white), "none", 0.0, style.decimals);
-    look.eye_outline = paint("none", outline, style.stroke_px, style.decimals);
-    look.lips = paint(to_hex(colors.lips), outline, style.stroke_px, style.decimals);
-    look.mouth_opening = paint(to_hex(colors.mouth_inside), outline, 0.6 * style.stroke_px, style.decimals);
-    for (std::size_t i = 0; i < eye_parts().size(); ++i)
-        look.iris_gradients[i] = iris_gradient(eye_parts()[i], colors.iris);
+    look.skin = paint_of(Paint::of(colors.skin), outline, stroke);
+    look.hair = paint_of(Paint::of(colors.hair), Paint::of(blend(colors.hair, Rgb{}, 0.4)), stroke);
+    look.nose = paint_of(none, outline, stroke);
+    look.brows = paint_of(Paint::of(colors.brows), Paint::of(colors.brows), 0.5 * stroke);
+    look.eye_white = paint_of(Paint::of(colors.eye_white), none, 0.0);
+    look.eye_outline = paint_of(none, outline, stroke);
+    look.lips = paint_of(Paint::of(colors.lips), outline, stroke);
+    look.mouth_opening = paint_of(Paint::of(colors.mouth_inside), outline, 0.6 * stroke);
+    look.iris_gradient = iris_gradient(colors.iris);
     for (std::size_t i = 0; i < face.ids.size(); ++i) look.point_index.emplace(face.ids[i], i);
     return look;
 }
 
-std::string draw_hair_layer(const ProjectedFace& face, const FaceLook& look) {
-    PathData outline(look.style.decimals);
+Layer draw_hair_layer(const ProjectedFace& face, const FaceLook& look) {
+    Path outline;
     outline.corner_cut_closed(hair_polygon_in_view(face, look));
-    return "<path" + attribute("class", "hair") + attribute("d", outline.str()) + look.hair + "/>\n";
+    Layer layer;
+    layer.elements.push_back(path_shape("hair", std::move(outline), look.hair));
+    return layer;
 }
 
-std::string draw_face_layer(const ProjectedFace& face, const FaceLook& look) {
-    return "<defs>\n" + draw_eye_defs(face, look) + "</defs>\n" + draw_ears(face, look) +
-           draw_face_contour(face, look) + draw_nose(face, look) + draw_eyebrows(face, look) +
-           draw_eyes(face, look) + draw_mouth(face, look);
+Layer draw_face_layer(const ProjectedFace& face, const FaceLook& look) {
+    Layer layer;
+    draw_eye_definitions(face, look, layer);
+    draw_ears(face, look, layer);
+    draw_face_contour(face, look, layer);
+    draw_nose(face, look, layer);
+    draw_eyebrows(face, look, layer);
+    draw_eyes(face, look, layer);
+    draw_mouth(face, look, layer);
+    return layer;
 }
 
 }  // namespace talkface::detail

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "common/test_paths.hpp"
-#include "speech/reading_tables.hpp"
+#include "text/reading_tables.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/transcript.hpp"
 
