@@ -27,6 +27,7 @@
 #include "talkface/face_lift.hpp"
 #include "talkface/face_model.hpp"
 #include "talkface/face_pose.hpp"
+#include "talkface/frame_renderer.hpp"
 #include "talkface/library.hpp"
 #include "talkface/lip_sync.hpp"
 #include "talkface/mouth_controls.hpp"
