@@ -1090,6 +1090,57 @@ TF_API tf_status tf_write_web_page(const tf_face_model *face, const tf_svg_optio
                                    const char *audio_path, const tf_web_page_options *page_options,
                                    const char *path);
 
+/* ---------------------------------------------------------------------------------------------
+ * Timing exports and imports (issue 15, docs/timing-formats.md): the timing of a speech for the
+ * tools animators use, and timings from theirs instead of the aligner.
+ * ------------------------------------------------------------------------------------------- */
+
+/* The export of an aligned timeline and its animation (tf_animate) in `format`: "rhubarb-tsv",
+ * "rhubarb-json", "rhubarb-xml", "moho", "live2d", "textgrid", "srt" or "vtt", spanning 0 to the
+ * timeline's duration. audio_path (may be NULL) goes into Rhubarb's metadata.soundFile. Release
+ * *out_document with tf_free; *out_len (if not NULL) is its length without the NUL.
+ * Errors: TF_ERR_INVALID_ARGUMENT naming an unknown format (and listing the formats), a duration
+ * that is not positive, or a NULL timeline, animation, format or out_document. */
+TF_API tf_status tf_export_to_string(const tf_timeline *timeline, const tf_animation *animation, const char *format,
+                                     const char *audio_path, char **out_document, size_t *out_len);
+
+/* tf_export_to_string written to `path` atomically; format NULL or "" takes it from the suffix
+ * (.tsv .xml .dat .motion3.json .TextGrid .srt .vtt).
+ * Errors: as tf_export_to_string; TF_ERR_INVALID_ARGUMENT for a suffix that names no format;
+ * TF_ERR_FILE naming the path (the file is then left as it was). */
+TF_API tf_status tf_export_to_file(const char *path, const tf_timeline *timeline, const tf_animation *animation,
+                                   const char *format, const char *audio_path);
+
+/* The transcript (tf_read_transcript) timed by a timing document instead of the aligner, into a
+ * new timeline *out: format "textgrid" (a syllables or words tier), "srt", "vtt", "words-json"
+ * (a list of {"text","start","end"}), "timeline-json", or "json" (either JSON). duration_s is the
+ * audio's length (0: not checked). source_name (may be NULL) names the document in messages.
+ * Errors: TF_ERR_PARSE naming source:line for a malformed document, times out of order or past
+ * duration_s, or a text that parts from the transcript (the first place they part);
+ * TF_ERR_INVALID_ARGUMENT for an unknown format or a NULL argument. */
+TF_API tf_status tf_read_timing_string(const char *text, size_t length, const char *format,
+                                       const tf_timeline *transcript, double duration_s, const char *source_name,
+                                       tf_timeline **out);
+
+/* tf_read_timing_string of a file; format NULL or "" takes it from the suffix.
+ * Errors: TF_ERR_FILE naming the path; as tf_read_timing_string. */
+TF_API tf_status tf_read_timing_file(const char *path, const tf_timeline *transcript, double duration_s,
+                                     const char *format, tf_timeline **out);
+
+/* The timeline in an import format ("textgrid", "srt", "vtt", "words-json", "timeline-json"), so
+ * that tf_read_timing_string gives its times back. Release *out_document with tf_free.
+ * Errors: TF_ERR_INVALID_ARGUMENT for an unknown format or a NULL argument. */
+TF_API tf_status tf_write_timing_string(const tf_timeline *timeline, const char *format, char **out_document,
+                                        size_t *out_len);
+
+/* The transcript spoken in audio_path, timed by the timing file instead of the aligner alone (what
+ * `--timing FILE` does): word and syllable timings are read as they are; subtitle cues bound the
+ * aligner (the recording is aligned and each cue's syllables are kept inside the cue). format NULL
+ * or "" takes it from the suffix.
+ * Errors: as tf_read_timing_file and tf_align_file. */
+TF_API tf_status tf_time_transcript(const char *timing_path, const char *audio_path, const tf_timeline *transcript,
+                                    const char *format, tf_timeline **out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -37,6 +37,7 @@
 #include "talkface/svg_animator.hpp"
 #include "talkface/timeline.hpp"
 #include "talkface/timeline_json.hpp"
+#include "talkface/timing_formats.hpp"
 #include "talkface/transcript.hpp"
 #include "talkface/types.hpp"
 #include "talkface/version.h"

@@ -15,6 +15,16 @@ Cancelled.
 """
 
 from ._talkface import (
+    audio_duration_s,
+    export_format_for_path,
+    export_format_names,
+    export_to_file,
+    export_to_string,
+    read_timing_file,
+    read_timing_string,
+    time_transcript,
+    timing_format_names,
+    write_timing_string,
     AnimationEncoding,
     AlignOptions,
     AlignmentError,
@@ -152,6 +162,16 @@ def default_face() -> FaceModel:
 
 
 __all__ = [
+    "audio_duration_s",
+    "export_format_for_path",
+    "export_format_names",
+    "export_to_file",
+    "export_to_string",
+    "read_timing_file",
+    "read_timing_string",
+    "time_transcript",
+    "timing_format_names",
+    "write_timing_string",
     "AnimationEncoding",
     "AlignOptions",
     "AlignmentError",
