@@ -1,5 +1,5 @@
 // Face from a photo (SPEC step 1, thesis 2.2): the pieces shared by the steps in this folder. Only
-// src/face/photo/*.cpp include this header, so OpenCV's headers stay out of every other file.
+// src/photo/*.cpp include this header, so OpenCV's headers stay out of every other file.
 #ifndef TALKFACE_FACE_PHOTO_PHOTO_INTERNAL_HPP
 #define TALKFACE_FACE_PHOTO_PHOTO_INTERNAL_HPP
 

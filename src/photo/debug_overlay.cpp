@@ -8,7 +8,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "face/photo/photo_internal.hpp"
+#include "photo/photo_internal.hpp"
 
 namespace talkface::photo {
 

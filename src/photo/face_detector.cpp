@@ -11,7 +11,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/objdetect.hpp>
 
-#include "face/photo/photo_internal.hpp"
+#include "photo/photo_internal.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::photo {

@@ -16,7 +16,7 @@
 #include <dlib/image_processing/frontal_face_detector.h>
 #include <opencv2/imgproc.hpp>
 
-#include "face/photo/photo_internal.hpp"
+#include "photo/photo_internal.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::photo {

@@ -14,7 +14,7 @@
 #include <jerror.h>  // after jpeglib.h: the JWRN_ codes
 #include <png.h>
 
-#include "face/photo/photo_internal.hpp"
+#include "photo/photo_internal.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::photo {

@@ -10,7 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "face/fapu_measure.hpp"
-#include "face/photo/photo_internal.hpp"
+#include "photo/photo_internal.hpp"
 
 namespace talkface::photo {
 

@@ -15,7 +15,7 @@
 #include <zlib.h>
 
 #include "common/test_paths.hpp"
-#include "face/photo/photo_internal.hpp"
+#include "photo/photo_internal.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/face_from_photo.hpp"
 #include "talkface/svg_animator.hpp"
