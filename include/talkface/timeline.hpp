@@ -16,6 +16,9 @@ struct Sentence {
     std::string text;    ///< the transcript's text of the sentence, UTF-8, punctuation included
     double start_s = 0.0;  ///< seconds from the start of the audio (0 before alignment)
     double end_s = 0.0;    ///< seconds; end_s >= start_s
+    /// Whether the sentence begins a paragraph of the transcript (a blank line before it; the
+    /// first sentence always does). The audio book's page keeps the paragraphs.
+    bool starts_paragraph = false;
 };
 
 /// One syllable: one character of the transcript that has a reading.

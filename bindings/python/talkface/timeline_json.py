@@ -6,7 +6,8 @@ the talkface command in C++; both accept the same document and name what is wron
     {"sentences": [{"text": "你好。", "start": 0.5, "end": 1.1}],
      "syllables": [{"text": "你", "pinyin": "ni3", "start": 0.5, "end": 0.8, "sentence": 0}, ...]}
 
-Besides the contract's keys a syllable may carry "final_start" (seconds or null), "confidence"
+Besides the contract's keys a sentence after the first may carry "paragraph" (true when it begins
+one; the first always does), a syllable may carry "final_start" (seconds or null), "confidence"
 (0..1) and "pause_after" (true/false), and the document "duration" (seconds) and "warnings" (a list
 of strings); missing times are 0, as in the output of `talkface syllables --json`.
 """
@@ -92,8 +93,11 @@ def timeline_from_json(text, source_name="<timeline>"):
     for index, entry in enumerate(reader.list(document["sentences"], "sentences")):
         item = f"sentences[{index}]"
         reader.object(entry, item)
+        paragraph = entry.get("paragraph", index == 0)
+        if not isinstance(paragraph, bool):
+            raise reader.fail(f"{item}.paragraph", f"expected true or false, found {_found(paragraph)}")
         sentences.append(Sentence(reader.text(entry, "text", item), reader.number(entry, "start", item, 0.0),
-                                  reader.number(entry, "end", item, 0.0)))
+                                  reader.number(entry, "end", item, 0.0), paragraph))
     syllables = []
     for index, entry in enumerate(reader.list(document["syllables"], "syllables")):
         item = f"syllables[{index}]"
@@ -131,7 +135,10 @@ def timeline_to_json(timeline):
     def dump(value):
         return json.dumps(value, ensure_ascii=False, separators=(",", ":"))
 
-    sentences = [dump({"text": s.text, "start": s.start_s, "end": s.end_s}) for s in timeline.sentences]
+    # The first sentence always begins a paragraph: only the others say so.
+    sentences = [dump({"text": s.text, "start": s.start_s, "end": s.end_s,
+                       **({"paragraph": True} if s.starts_paragraph and k > 0 else {})})
+                 for k, s in enumerate(timeline.sentences)]
     syllables = []
     for s in timeline.syllables:
         entry = {"text": s.text, "pinyin": s.pinyin, "start": s.start_s, "end": s.end_s, "sentence": s.sentence}
