@@ -30,8 +30,8 @@ Example:
 Args:
     text (str): the sentence as written, punctuation included.
     start_s, end_s (float): seconds from the start of the audio (0 before alignment).
-    starts_paragraph (bool): whether a paragraph of the transcript begins with it (a blank line
-        before it; the audio book's page keeps paragraphs).
+    starts_paragraph (bool): whether a blank line of the transcript stands before it, beginning a
+        new paragraph (the audio book's page keeps paragraphs).
 
 Example:
     >>> talkface.Sentence("你好。")
@@ -41,7 +41,7 @@ Example:
         .def_readwrite("start_s", &Sentence::start_s, "seconds from the start of the audio")
         .def_readwrite("end_s", &Sentence::end_s, "seconds; end_s >= start_s")
         .def_readwrite("starts_paragraph", &Sentence::starts_paragraph,
-                       "whether a paragraph begins with it (a blank line before it; the first sentence does)")
+                       "whether a blank line stands before it: a new paragraph begins (never the first sentence)")
         .def("__eq__",
              [](const Sentence& a, const Sentence& b) {
                  return a.text == b.text && a.start_s == b.start_s && a.end_s == b.end_s &&

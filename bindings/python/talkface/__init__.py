@@ -52,6 +52,7 @@ from ._talkface import (
     SvgAnimator,
     SvgOptions,
     Syllable,
+    TIMELINE_JSON_VERSION,
     Timeline,
     UserEventMode,
     WebLink,
@@ -74,6 +75,7 @@ from ._talkface import (
     key_frames_json,
     key_frames_tsv,
     lift_face,
+    load_timeline_json,
     load_transcript,
     mandarin_syllables,
     mouth_controls,
@@ -86,8 +88,11 @@ from ._talkface import (
     project_face,
     read_transcript,
     rotation_origin,
+    save_timeline_json,
     syllable_mouth_shapes,
     timeline_end_s,
+    timeline_from_json,
+    timeline_to_json,
     to_image,
     to_local,
     validate_expression_events,
@@ -95,7 +100,6 @@ from ._talkface import (
     write_alignment_plot_svg,
     write_web_page,
 )
-from .timeline_json import timeline_from_json, timeline_to_json
 
 
 # Face from a photo is the _talkface_photo module (it loads OpenCV, libpng, libjpeg and dlib through
@@ -185,6 +189,7 @@ __all__ = [
     "SvgAnimator",
     "SvgOptions",
     "Syllable",
+    "TIMELINE_JSON_VERSION",
     "Timeline",
     "UserEventMode",
     "WebLink",
@@ -208,6 +213,7 @@ __all__ = [
     "key_frames_json",
     "key_frames_tsv",
     "lift_face",
+    "load_timeline_json",
     "load_transcript",
     "mandarin_syllables",
     "mouth_controls",
@@ -220,6 +226,7 @@ __all__ = [
     "project_face",
     "read_transcript",
     "rotation_origin",
+    "save_timeline_json",
     "syllable_mouth_shapes",
     "timeline_end_s",
     "timeline_from_json",

@@ -3,7 +3,7 @@
 // Copyright (c) 1991-2022 Unicode, Inc., under the Unicode License: readings converted
 // to numbered pinyin and reordered by frequency; other Unihan fields left out.
 // Licences and notices: docs/data-licences.md.
-#include "speech/embedded_text.hpp"
+#include "text/embedded_text.hpp"
 
 namespace talkface::detail {
 

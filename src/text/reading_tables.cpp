@@ -1,8 +1,8 @@
-#include "speech/reading_tables.hpp"
+#include "text/reading_tables.hpp"
 
 #include <algorithm>
 
-#include "speech/embedded_text.hpp"
+#include "text/embedded_text.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {

@@ -5,7 +5,7 @@
 // settle a polyphonic character, Traditional forms added with OpenCC (Apache License
 // 2.0), tones chosen from Unihan (Copyright (c) 1991-2022 Unicode, Inc., Unicode License).
 // Licences and notices: docs/data-licences.md.
-#include "speech/embedded_text.hpp"
+#include "text/embedded_text.hpp"
 
 namespace talkface::detail {
 

@@ -1,4 +1,4 @@
-#include "speech/audio_source.hpp"
+#include "audio/audio_source.hpp"
 
 #include <sndfile.h>
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "common/atomic_file.hpp"
-#include "speech/reading_tables.hpp"
+#include "text/reading_tables.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface {
@@ -253,7 +253,7 @@ private:
         // (a heading without a full stop is a sentence of its own).
         if (has_blank_line(pending_space_)) {
             close_sentence();
-            starts_paragraph_ = true;
+            starts_paragraph_ = !timeline_.sentences.empty();
         }
         if (c.value == '{') return read_fix(text, i);
         if (tables_.character_readings.count(c.text) != 0) {
@@ -430,7 +430,7 @@ private:
     std::string sentence_text_;
     std::string pending_space_;
     bool sentence_ended_ = false;  // an end mark was seen; closing quotes may still follow
-    bool starts_paragraph_ = true;  // the next sentence begins a paragraph (the first one does)
+    bool starts_paragraph_ = false;  // a blank line stands between the last sentence and the next
 };
 
 }  // namespace

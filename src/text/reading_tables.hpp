@@ -1,7 +1,7 @@
 // The character, phrase and syllable tables of the transcript reader, parsed once from the
 // embedded text (embedded_text.hpp) on first use.
-#ifndef TALKFACE_SPEECH_READING_TABLES_HPP
-#define TALKFACE_SPEECH_READING_TABLES_HPP
+#ifndef TALKFACE_TEXT_READING_TABLES_HPP
+#define TALKFACE_TEXT_READING_TABLES_HPP
 
 #include <cstddef>
 #include <string>

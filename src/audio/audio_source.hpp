@@ -1,7 +1,7 @@
 // Audio in, one block at a time, mixed down to mono: from a file through libsndfile, or from
 // samples the caller holds. Nothing here keeps the whole signal (the memory target of issue #4).
-#ifndef TALKFACE_SPEECH_AUDIO_SOURCE_HPP
-#define TALKFACE_SPEECH_AUDIO_SOURCE_HPP
+#ifndef TALKFACE_AUDIO_AUDIO_SOURCE_HPP
+#define TALKFACE_AUDIO_AUDIO_SOURCE_HPP
 
 #include <cstddef>
 #include <memory>
