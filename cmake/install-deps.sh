@@ -21,11 +21,12 @@ libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev li
 # libavcodec59 brings libx264, libvpx, libopus and libwebp with it.
 # libdlib-data is dlib's 95 MB landmark model: only the dlib photo locator reads it, at run time.
 # python3-skimage and python-matplotlib-data ship the real test photos (astronaut.png,
-# grace_hopper.jpg).
+# grace_hopper.jpg). fonts-noto-cjk gives the browser tests and the screenshots in docs/ real
+# Chinese characters (the pages name it among each system's CJK fonts).
 # praat reads the exported TextGrids and ffmpeg's ffprobe the exported subtitles, as the programs
 # their users open them with (issue #15).
 test_packages="python3-pil python3-pytest python3-venv python3-pip python3-setuptools chromium fonts-dejavu-core
-python3-skimage python-matplotlib-data librsvg2-bin libdlib-data praat ffmpeg"
+python3-skimage python-matplotlib-data librsvg2-bin libdlib-data fonts-noto-cjk praat ffmpeg"
 bench_packages="espeak-ng libespeak-ng-dev sox libsox-fmt-all time"
 
 case "${1:-build}" in

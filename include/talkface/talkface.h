@@ -568,6 +568,23 @@ TF_API tf_status tf_timeline_warning_count(const tf_timeline *timeline, size_t *
  * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or an argument is NULL. */
 TF_API tf_status tf_timeline_warning(const tf_timeline *timeline, size_t index, const char **out_warning);
 
+/* Marks (non-zero) or clears (0) that sentence `index` begins a paragraph of the transcript (a
+ * blank line before it); the audio book's page keeps the paragraphs. tf_read_transcript sets it.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or timeline is NULL. */
+TF_API tf_status tf_timeline_set_sentence_starts_paragraph(tf_timeline *timeline, size_t index,
+                                                           int starts_paragraph);
+
+/* Whether sentence `index` begins a paragraph (1) or not (0).
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or an argument is NULL. */
+TF_API tf_status tf_timeline_sentence_starts_paragraph(const tf_timeline *timeline, size_t index,
+                                                       int *out_starts_paragraph);
+
+/* The timeline as the `align` JSON document (SPEC "Contracts"), UTF-8:
+ * {"sentences":[{"text","start","end"}], "syllables":[{"text","pinyin","start","end","sentence",
+ * "final_start" (only when known),"confidence","pause_after"}], "duration":s, "warnings":[...]},
+ * numbers in shortest round-trip form. Release *out_json with tf_free; *out_len (if not NULL) is
+ * its length in bytes without the NUL. talkface reads no JSON in C: parse the document with your
+ * JSON library and rebuild it with tf_timeline_create and the add functions.
 /* The timeline as the timeline JSON (docs/timeline-format.md; the `align` document of SPEC
  * "Contracts", versioned), UTF-8: {"version":1, "sentences":[{"text","start","end"}],
  * "syllables":[{"text","pinyin","start","end","sentence","final_start" (only when known),

@@ -292,7 +292,9 @@ class Sentence:
     text: str
     start_s: float
     end_s: float
-    def __init__(self, text: str = "", start_s: float = 0.0, end_s: float = 0.0) -> None: ...
+    starts_paragraph: bool
+    def __init__(self, text: str = "", start_s: float = 0.0, end_s: float = 0.0,
+                 starts_paragraph: bool = False) -> None: ...
     def __eq__(self, other: object) -> bool: ...
 
 class Syllable:
