@@ -38,6 +38,7 @@
 #include "talkface/transcript.hpp"
 #include "talkface/types.hpp"
 #include "talkface/version.h"
+#include "talkface/video_writer.hpp"
 #include "talkface/web_page.hpp"
 
 #endif

@@ -9,6 +9,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "commands.hpp"
 #include "progress_bar.hpp"
@@ -17,9 +18,10 @@ namespace talkface_cli {
 
 namespace {
 
-// Shares of the whole job in the progress bar: alignment is most of it.
-constexpr double kAlignedAt = 0.55;
+// Share of the whole job in the progress bar until the face is animated: alignment is most of it,
+// and most of that share.
 constexpr double kAnimatedAt = 0.6;
+constexpr double kAlignmentShare = 0.9;
 
 std::optional<std::pair<double, double>> parse_pair(const std::string& text, char separator) {
     std::istringstream in(text);
@@ -116,7 +118,7 @@ talkface::ExpressionStyle expression_style(const StyleOptions& options) {
     return style;
 }
 
-void add_page_options(CLI::App& command, AnimateOptions& options) {
+void add_face_options(CLI::App& command, AnimateOptions& options) {
     command.add_option("--face", options.face_path, "Face model file (default: the built-in face)")
         ->check(CLI::ExistingFile);
     command.add_option("--fps", options.fps, "Frames per second of the animation")
@@ -124,6 +126,10 @@ void add_page_options(CLI::App& command, AnimateOptions& options) {
         ->capture_default_str();
     command.add_option("--seed", options.seed, "Seed of the simulated blinks and head moves")->capture_default_str();
     add_style_options(command, options.expression);
+}
+
+void add_page_options(CLI::App& command, AnimateOptions& options) {
+    add_face_options(command, options);
     command
         .add_option("--encoding", options.encoding,
                     "keyframes: the face animated between key frames (small); frames: one group per frame")
@@ -155,28 +161,35 @@ void add_page_options(CLI::App& command, AnimateOptions& options) {
     command.add_flag("-q,--quiet", options.quiet, "No progress bar");
 }
 
+TalkingFace animate_talking_face(const AnimateOptions& options, const std::string& audio_path,
+                                 const talkface::Timeline& transcript, ProgressBar* bar, double animated_at) {
+    const talkface::ExpressionStyle style = expression_style(options.expression);
+    talkface::FaceModel face =
+        options.face_path.empty() ? talkface::FaceModel::default_face() : talkface::FaceModel::load(options.face_path);
+    talkface::Timeline timeline = talkface::SpeechAligner().align_file(
+        audio_path, transcript, progress_part(bar, 0.0, animated_at * kAlignmentShare));
+    const talkface::ExpressionSimulator simulator(timeline, options.seed, style);
+    talkface::LipSyncOptions lip_sync;
+    lip_sync.fps = options.fps;
+    talkface::Animation animation = talkface::animate(face, timeline, simulator, lip_sync);
+    if (bar) bar->update(animated_at, "animating");
+    return {std::move(face), std::move(timeline), std::move(animation)};
+}
+
 void make_talking_face(const AnimateOptions& options, const std::string& audio_path,
                        const talkface::Timeline& transcript, const std::string& linked_audio_url) {
     const bool is_svg = is_svg_output(options.output_path);
     if (is_svg && (options.app != "plain" || options.link_audio)) {
         throw CLI::ValidationError("--output", "an .svg output is the bare animation: --app and --link-audio need .html");
     }
-    // Read before the alignment, the slow part: a bad style file fails at once.
-    const talkface::ExpressionStyle style = expression_style(options.expression);
+    // Read before the alignment, the slow part: a bad option fails at once.
     talkface::WebPageOptions page = page_options(options);
     page.audio_url = linked_audio_url;
-    const talkface::FaceModel face =
-        options.face_path.empty() ? talkface::FaceModel::default_face() : talkface::FaceModel::load(options.face_path);
-
     const std::unique_ptr<ProgressBar> bar = make_progress_bar(options.quiet);
-    const talkface::Timeline timeline =
-        talkface::SpeechAligner().align_file(audio_path, transcript, progress_part(bar.get(), 0.0, kAlignedAt));
-    const talkface::ExpressionSimulator simulator(timeline, options.seed, style);
-    talkface::LipSyncOptions lip_sync;
-    lip_sync.fps = options.fps;
-    const talkface::Animation animation = talkface::animate(face, timeline, simulator, lip_sync);
-    if (bar) bar->update(kAnimatedAt, "animating");
-    const talkface::SvgAnimator animator(face);
+    const TalkingFace talking = animate_talking_face(options, audio_path, transcript, bar.get(), kAnimatedAt);
+    const talkface::Timeline& timeline = talking.timeline;
+    const talkface::Animation& animation = talking.animation;
+    const talkface::SvgAnimator animator(talking.face);
     // The output is written whole at the end (a temporary file renamed): a failure leaves no page.
     if (is_svg) {
         animator.write_animation_svg(options.output_path, animation, page.animation,

@@ -11,6 +11,8 @@
 #include <CLI/CLI.hpp>
 #include <talkface/talkface.hpp>
 
+#include "progress_bar.hpp"
+
 namespace talkface_cli {
 
 // --style NAME|FILE.json and --without KIND,...
@@ -44,8 +46,26 @@ struct AnimateOptions {
     bool quiet = false;
 };
 
-// Adds the options both commands take (all but the inputs) to `command`.
+// Adds --face, --fps, --seed, --style and --without: what every command that animates a face from
+// a speech takes (animate, demo, video).
+void add_face_options(CLI::App& command, AnimateOptions& options);
+
+// Adds the options both page commands take (all but the inputs) to `command`: add_face_options()
+// and the page's own.
 void add_page_options(CLI::App& command, AnimateOptions& options);
+
+// A speech aligned and the face animated on it.
+struct TalkingFace {
+    talkface::FaceModel face;
+    talkface::Timeline timeline;
+    talkface::Animation animation;
+};
+
+// Aligns `audio_path` with `transcript` and animates the face of `options` (face, fps, seed,
+// style), reporting to `bar` (may be null) from 0 to `animated_at`. A bad style or face file
+// fails before the alignment, the slow part.
+TalkingFace animate_talking_face(const AnimateOptions& options, const std::string& audio_path,
+                                 const talkface::Timeline& transcript, ProgressBar* bar, double animated_at);
 
 // Aligns `audio_path` with `transcript`, animates the face and writes options.output_path: a page
 // (.html), or the bare animation (.svg). A linked page links `linked_audio_url`.

@@ -30,6 +30,7 @@ void bind_animation(py::module_& m);
 void bind_speech_aligner(py::module_& m);
 void bind_web_page(py::module_& m);
 void bind_photo(py::module_& m);  // after bind_face_model: adds FaceModel.from_photo
+void bind_video_writer(py::module_& m);
 
 // A float64 array of `rows` x `columns`, C order (a copy the caller owns).
 inline py::array_t<double> new_matrix(py::ssize_t rows, py::ssize_t columns) {

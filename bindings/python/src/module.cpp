@@ -32,4 +32,5 @@ Example:
     bind_speech_aligner(m);
     bind_web_page(m);
     bind_photo(m);
+    bind_video_writer(m);
 }
