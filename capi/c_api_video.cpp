@@ -1,11 +1,15 @@
 // tf_video_options and tf_video_writer: the C face of talkface::VideoWriter.
 
 #include "c_api_guard.hpp"
+#include "c_api_handles.hpp"
+#include "talkface/face_video.hpp"
 #include "talkface/video_writer.hpp"
 
 using talkface::VideoOptions;
 using talkface::VideoWriter;
+using talkface::capi::enum_value;
 using talkface::capi::guard;
+using talkface::capi::progress_for;
 using talkface::capi::require_non_null;
 
 struct tf_video_options {
@@ -14,6 +18,10 @@ struct tf_video_options {
 
 struct tf_video_writer {
     VideoWriter writer;
+};
+
+struct tf_video_look {
+    talkface::FaceVideoOptions options;  // its `video` part is ignored: tf_video_options carries it
 };
 
 extern "C" {
@@ -117,6 +125,65 @@ tf_status tf_video_writer_finish(tf_video_writer* writer) {
     return guard([&] {
         require_non_null(writer, "writer");
         writer->writer.finish();
+    });
+}
+
+tf_status tf_video_look_create(tf_video_look** out) {
+    return guard([&] {
+        require_non_null(out, "out");
+        *out = new tf_video_look{};
+    });
+}
+
+void tf_video_look_destroy(tf_video_look* look) { delete look; }
+
+tf_status tf_video_look_set_layout(tf_video_look* look, tf_video_layout layout) {
+    return guard([&] {
+        require_non_null(look, "look");
+        const int value = enum_value(layout);
+        if (value != TF_VIDEO_LAYOUT_ANNOUNCER && value != TF_VIDEO_LAYOUT_FACE) {
+            throw talkface::InvalidArgument("layout", "expected TF_VIDEO_LAYOUT_ANNOUNCER (0) or TF_VIDEO_LAYOUT_FACE "
+                                                      "(1), found " + std::to_string(value));
+        }
+        look->options.frame.layout = static_cast<talkface::FrameLayout>(value);
+    });
+}
+
+tf_status tf_video_look_set_background(tf_video_look* look, const tf_rgb* colour, const char* image_path) {
+    return guard([&] {
+        require_non_null(look, "look");
+        if (colour == nullptr) {
+            look->options.frame.background.reset();
+        } else {
+            look->options.frame.background = talkface::Rgb{colour->r, colour->g, colour->b};
+        }
+        look->options.background_image_path = image_path != nullptr ? image_path : "";
+    });
+}
+
+tf_status tf_video_look_set_face_placement(tf_video_look* look, const double origin_xy[2], double d_px) {
+    return guard([&] {
+        require_non_null(look, "look");
+        if (origin_xy == nullptr) {
+            look->options.frame.face_origin_px.reset();
+        } else {
+            look->options.frame.face_origin_px = talkface::Point2{origin_xy[0], origin_xy[1]};
+        }
+        look->options.frame.face_d_px = d_px;
+    });
+}
+
+tf_status tf_render_video(const char* path, const tf_face_model* face, const tf_animation* animation,
+                          const char* audio_path, const tf_video_options* video, const tf_video_look* look,
+                          tf_progress_fn progress, void* user_data) {
+    return guard([&] {
+        require_non_null(path, "path");
+        require_non_null(face, "face");
+        require_non_null(animation, "animation");
+        talkface::FaceVideoOptions options = look != nullptr ? look->options : talkface::FaceVideoOptions{};
+        options.video = video != nullptr ? video->options : VideoOptions{};
+        talkface::render_video(path, face->model, animation->animation, audio_path != nullptr ? audio_path : "",
+                               options, progress_for(progress, user_data));
     });
 }
 

@@ -18,9 +18,9 @@ namespace talkface_cli {
 
 namespace {
 
-// Share of the whole job in the progress bar until the face is animated: alignment is most of it,
-// and most of that share.
+// Share of the whole job in the progress bar until the face is animated: alignment is most of it.
 constexpr double kAnimatedAt = 0.6;
+// Alignment's share of animate_talking_face(); animating is the rest.
 constexpr double kAlignmentShare = 0.9;
 
 std::optional<std::pair<double, double>> parse_pair(const std::string& text, char separator) {
@@ -93,6 +93,15 @@ void run_animate(const AnimateOptions& options, const std::string& audio_path, c
 
 }  // namespace
 
+void add_speech_arguments(CLI::App& command, std::string& audio_path, std::string& transcript_path) {
+    command.add_option("AUDIO", audio_path, "Speech: WAV, FLAC or OGG, any rate, mono or stereo")
+        ->required()
+        ->check(CLI::ExistingFile);
+    command.add_option("TRANSCRIPT", transcript_path, "Its transcript, UTF-8 (as `talkface align` reads it)")
+        ->required()
+        ->check(CLI::ExistingFile);
+}
+
 void add_style_options(CLI::App& command, StyleOptions& options) {
     command
         .add_option("--style", options.style,
@@ -156,23 +165,28 @@ void add_page_options(CLI::App& command, AnimateOptions& options) {
     command.add_option("--stage", options.stage, "announcer: the stage's size, WIDTHxHEIGHT in pixels")
         ->check(pair_validator('x', "WIDTHxHEIGHT", "800x450"))
         ->capture_default_str();
-    command.add_option("-o,--output", options.output_path, "OUT.html for a web page, OUT.svg for the bare animation")
+    command.add_option("-o,--output", options.output_path, "OUT.html for a web page, OUT.svg for the bare animation (demo: OUT.mp4, .webm, .webp, .png for a video)")
         ->required();
     command.add_flag("-q,--quiet", options.quiet, "No progress bar");
 }
 
 TalkingFace animate_talking_face(const AnimateOptions& options, const std::string& audio_path,
-                                 const talkface::Timeline& transcript, ProgressBar* bar, double animated_at) {
+                                 const talkface::Timeline& transcript, const talkface::ProgressCallback& progress) {
     const talkface::ExpressionStyle style = expression_style(options.expression);
     talkface::FaceModel face =
         options.face_path.empty() ? talkface::FaceModel::default_face() : talkface::FaceModel::load(options.face_path);
-    talkface::Timeline timeline = talkface::SpeechAligner().align_file(
-        audio_path, transcript, progress_part(bar, 0.0, animated_at * kAlignmentShare));
+    talkface::ProgressCallback alignment_progress;
+    if (progress) {
+        alignment_progress = [&progress](double fraction, const std::string& stage) {
+            return progress(fraction * kAlignmentShare, stage);
+        };
+    }
+    talkface::Timeline timeline = talkface::SpeechAligner().align_file(audio_path, transcript, alignment_progress);
     const talkface::ExpressionSimulator simulator(timeline, options.seed, style);
     talkface::LipSyncOptions lip_sync;
     lip_sync.fps = options.fps;
     talkface::Animation animation = talkface::animate(face, timeline, simulator, lip_sync);
-    if (bar) bar->update(animated_at, "animating");
+    if (progress) progress(1.0, "animating");
     return {std::move(face), std::move(timeline), std::move(animation)};
 }
 
@@ -186,7 +200,8 @@ void make_talking_face(const AnimateOptions& options, const std::string& audio_p
     talkface::WebPageOptions page = page_options(options);
     page.audio_url = linked_audio_url;
     const std::unique_ptr<ProgressBar> bar = make_progress_bar(options.quiet);
-    const TalkingFace talking = animate_talking_face(options, audio_path, transcript, bar.get(), kAnimatedAt);
+    const TalkingFace talking =
+        animate_talking_face(options, audio_path, transcript, progress_part(bar.get(), 0.0, kAnimatedAt));
     const talkface::Timeline& timeline = talking.timeline;
     const talkface::Animation& animation = talking.animation;
     const talkface::SvgAnimator animator(talking.face);
@@ -207,12 +222,7 @@ void setup_animate_command(CLI::App& app) {
     auto transcript_path = std::make_shared<std::string>();
     CLI::App* animate = app.add_subcommand(
         "animate", "Make a web page where the face talks in sync with a speech (or the bare SVG animation)");
-    animate->add_option("AUDIO", *audio_path, "Speech: WAV, FLAC or OGG, any rate, mono or stereo")
-        ->required()
-        ->check(CLI::ExistingFile);
-    animate->add_option("TRANSCRIPT", *transcript_path, "Its transcript, UTF-8 (as `talkface align` reads it)")
-        ->required()
-        ->check(CLI::ExistingFile);
+    add_speech_arguments(*animate, *audio_path, *transcript_path);
     add_page_options(*animate, *options);
     animate->callback([options, audio_path, transcript_path] { run_animate(*options, *audio_path, *transcript_path); });
 }

@@ -21,6 +21,9 @@ struct StyleOptions {
     std::vector<std::string> without;  // event kinds not simulated
 };
 
+// Adds the AUDIO and TRANSCRIPT arguments (existing files) of the commands that animate a speech.
+void add_speech_arguments(CLI::App& command, std::string& audio_path, std::string& transcript_path);
+
 // Adds --style and --without to `command`.
 void add_style_options(CLI::App& command, StyleOptions& options);
 
@@ -62,10 +65,10 @@ struct TalkingFace {
 };
 
 // Aligns `audio_path` with `transcript` and animates the face of `options` (face, fps, seed,
-// style), reporting to `bar` (may be null) from 0 to `animated_at`. A bad style or face file
-// fails before the alignment, the slow part.
+// style), reporting 0..1 to `progress` (may be empty; returning false cancels). A bad style or
+// face file fails before the alignment, the slow part.
 TalkingFace animate_talking_face(const AnimateOptions& options, const std::string& audio_path,
-                                 const talkface::Timeline& transcript, ProgressBar* bar, double animated_at);
+                                 const talkface::Timeline& transcript, const talkface::ProgressCallback& progress);
 
 // Aligns `audio_path` with `transcript`, animates the face and writes options.output_path: a page
 // (.html), or the bare animation (.svg). A linked page links `linked_audio_url`.

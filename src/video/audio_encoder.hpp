@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-#include "speech/audio_source.hpp"
+#include "audio/audio_source.hpp"
 #include "talkface/speech_aligner.hpp"
 
 namespace talkface::detail {

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "speech/audio_source.hpp"
+#include "audio/audio_source.hpp"
 #include "talkface/errors.hpp"
 #include "video/audio_stream_encoder.hpp"
 #include "video/muxer_output.hpp"

@@ -118,9 +118,71 @@ static int test_refusals_name_the_problem(void) {
     return failures;
 }
 
+static int count_progress(double fraction, const char *stage, void *user_data) {
+    int *calls = user_data;
+    (void)fraction;
+    (void)stage;
+    ++*calls;
+    return 0;
+}
+
+static int cancel_at_once(double fraction, const char *stage, void *user_data) {
+    (void)fraction;
+    (void)stage;
+    (void)user_data;
+    return 1;
+}
+
+static int test_renders_the_face(void) {
+    int failures = 0;
+    char path[1024];
+    tf_face_model *face = NULL;
+    tf_timeline *timeline = NULL;
+    tf_expression_simulator *simulator = NULL;
+    tf_animation *animation = NULL;
+    tf_video_options *options = NULL;
+    tf_video_look *look = NULL;
+    const tf_rgb white = {255, 255, 255};
+    const double origin[2] = {80.0, 80.0};
+    int calls = 0;
+    snprintf(path, sizeof path, "%s/c_api_face_video.webm", TF_TEST_OUTPUT_DIR);
+    remove(path);
+    CHECK_OK(tf_face_model_default(&face));
+    CHECK_OK(tf_timeline_create(&timeline));
+    CHECK_OK(tf_timeline_set_duration_s(timeline, 0.5));
+    CHECK_OK(tf_expression_simulator_create(timeline, 3, "normal", &simulator));
+    CHECK_OK(tf_animate(face, timeline, simulator, NULL, &animation));
+    CHECK_OK(tf_video_options_create(&options));
+    CHECK_OK(tf_video_options_set_size(options, 160, 90));
+    CHECK_OK(tf_video_options_set_fps(options, 10.0));
+    CHECK_OK(tf_video_look_create(&look));
+    CHECK_OK(tf_video_look_set_layout(look, TF_VIDEO_LAYOUT_ANNOUNCER));
+    CHECK_OK(tf_video_look_set_background(look, &white, NULL));
+    CHECK_OK(tf_video_look_set_face_placement(look, origin, 20.0));
+    CHECK_FAILS_WITH(tf_video_look_set_layout(look, (tf_video_layout)7), TF_ERR_INVALID_ARGUMENT, "layout");
+    CHECK_OK(tf_render_video(path, face, animation, NULL, options, look, count_progress, &calls));
+    CHECK(calls > 1);
+    CHECK(file_size(path) > 100);
+    remove(path);
+    CHECK_FAILS_WITH(tf_render_video(path, face, animation, NULL, options, look, cancel_at_once, NULL),
+                     TF_ERR_CANCELLED, "cancelled");
+    CHECK(!file_exists(path));
+    CHECK_FAILS_WITH(tf_render_video(path, NULL, animation, NULL, options, look, NULL, NULL), TF_ERR_INVALID_ARGUMENT,
+                     "face");
+    tf_video_look_destroy(look);
+    tf_video_look_destroy(NULL);
+    tf_video_options_destroy(options);
+    tf_animation_destroy(animation);
+    tf_expression_simulator_destroy(simulator);
+    tf_timeline_destroy(timeline);
+    tf_face_model_destroy(face);
+    return failures;
+}
+
 int main(void) {
     int failures = 0;
     failures += test_writes_an_mp4();
+    failures += test_renders_the_face();
     failures += test_refusals_name_the_problem();
     if (failures != 0) fprintf(stderr, "%d check(s) failed\n", failures);
     return failures == 0 ? 0 : 1;

@@ -232,6 +232,86 @@ Example:
                 return false;
             },
             py::arg("exception_type"), py::arg("exception"), py::arg("traceback"));
+
+    py::class_<FaceVideoOptions>(m, "FaceVideoOptions", R"doc(
+How the face becomes a video: the VideoOptions (size, fps, quality, transparency), where the face
+stands ("announcer": on a stage, as tall as the frame, the default; "face": its own canvas fitted
+into the frame), the background colour (None: transparent) and a picture drawn over it.
+
+Example:
+    >>> options = talkface.FaceVideoOptions(video=talkface.VideoOptions(width_px=640, height_px=360),
+    ...                                     background="#ffffff")
+)doc")
+        .def(py::init([](const VideoOptions& video, const std::string& layout, std::optional<Rgb> background,
+                         const std::string& background_image_path) {
+                 FaceVideoOptions options;
+                 options.video = video;
+                 if (layout != "announcer" && layout != "face") {
+                     throw InvalidArgument("layout", "expected \"announcer\" or \"face\", found \"" + layout + "\"");
+                 }
+                 options.frame.layout = layout == "face" ? FrameLayout::face : FrameLayout::announcer;
+                 options.frame.background = background;
+                 options.background_image_path = background_image_path;
+                 return options;
+             }),
+             py::arg("video") = VideoOptions{}, py::arg("layout") = "announcer",
+             py::arg("background") = FrameOptions{}.background, py::arg("background_image_path") = "", R"doc(
+Args:
+    video (VideoOptions): size, frame rate, quality, transparency.
+    layout (str): "announcer" (the default) or "face".
+    background (str | None): "#rrggbb", or None for none (transparent where nothing is drawn).
+    background_image_path (str): a picture (PNG, JPEG, WebP, SVG ...) covering the frame; "" for none.
+
+Raises:
+    talkface.InvalidArgument: an unknown layout or a malformed colour.
+
+Example:
+    >>> talkface.FaceVideoOptions(layout="face", background=None)
+)doc")
+        .def_readwrite("video", &FaceVideoOptions::video, "size, frame rate, quality, transparency")
+        .def_readwrite("background_image_path", &FaceVideoOptions::background_image_path, "a picture over the colour")
+        .def_property(
+            "background", [](const FaceVideoOptions& o) { return o.frame.background; },
+            [](FaceVideoOptions& o, std::optional<Rgb> colour) { o.frame.background = colour; },
+            "\"#rrggbb\" or None (transparent)")
+        .def_property_readonly(
+            "layout", [](const FaceVideoOptions& o) { return o.frame.layout == FrameLayout::face ? "face" : "announcer"; },
+            "\"announcer\" or \"face\"");
+
+    m.def(
+        "render_video",
+        [](const std::string& path, const FaceModel& face, const Animation& animation, const std::string& audio_path,
+           const FaceVideoOptions& options, const py::object& progress) {
+            const FaceModel face_copy = face;
+            const Animation animation_copy = animation;  // the caller's objects may change once the GIL is free
+            run_without_gil(progress, [&](const ProgressCallback& callback) {
+                render_video(path, face_copy, animation_copy, audio_path, options, callback);
+                return 0;
+            });
+        },
+        py::arg("path"), py::arg("face"), py::arg("animation"), py::arg("audio_path") = "",
+        py::arg("options") = FaceVideoOptions{}, py::arg("progress") = py::none(), R"doc(
+Writes a video of `face` playing `animation` with the speech at audio_path ("" for none): frame k
+shows the animation at k / fps, as many frames as cover the speech. Releases the GIL while it works;
+`progress(fraction, stage)` is called with it, and returning False cancels (talkface.Cancelled).
+Written through a temporary file: a failure or a cancel leaves none.
+
+Args:
+    path (str): .mp4, .webm, .webp or .png (a numbered sequence).
+    face (FaceModel): the neutral face the animation was made from.
+    animation (Animation): from talkface.animate().
+    audio_path (str): the speech, WAV, FLAC or OGG.
+    options (FaceVideoOptions): size, fps, layout, background.
+    progress (callable | None): progress(fraction, stage) -> bool | None.
+
+Raises:
+    talkface.InvalidArgument: an option out of range (named) or an encoder missing from FFmpeg.
+    talkface.FileError: the audio, the picture or the output cannot be read or written.
+    talkface.Cancelled: progress returned False.
+
+Example:
+    >>> talkface.render_video("talk.mp4", face, animation, "speech.wav")
+)doc");
 }
 
 }  // namespace talkface::python
