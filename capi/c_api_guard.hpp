@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "talkface/errors.hpp"
+#include "talkface/speech_aligner.hpp"
 #include "talkface/talkface.h"
 
 namespace talkface::capi {
@@ -55,6 +56,15 @@ int enum_value(const Enum& value) {
     int result = 0;
     std::memcpy(&result, &value, sizeof result);
     return result;
+}
+
+// Adapts a C progress callback (non-zero cancels); an empty ProgressCallback when there is none,
+// so the library skips reporting.
+inline talkface::ProgressCallback progress_for(tf_progress_fn progress, void* user_data) {
+    if (progress == nullptr) return {};
+    return [progress, user_data](double fraction, const std::string& stage) {
+        return progress(fraction, stage.c_str(), user_data) == 0;
+    };
 }
 
 // A malloc'd NUL-terminated copy of `text` for a (char **out, size_t *out_len) pair; tf_free frees it.

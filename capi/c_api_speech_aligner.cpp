@@ -12,6 +12,7 @@ using talkface::SentenceCutMode;
 using talkface::SpeechAligner;
 using talkface::capi::enum_value;
 using talkface::capi::guard;
+using talkface::capi::progress_for;
 using talkface::capi::require_non_null;
 
 namespace {
@@ -32,13 +33,6 @@ SpeechAligner aligner_for(const tf_align_options* options) {
     return SpeechAligner(options != nullptr ? options->options : AlignOptions{});
 }
 
-// Adapts a C callback; an empty ProgressCallback when there is none, so the aligner skips reporting.
-talkface::ProgressCallback progress_for(tf_progress_fn progress, void* user_data) {
-    if (progress == nullptr) return {};
-    return [progress, user_data](double fraction, const std::string& stage) {
-        return progress(fraction, stage.c_str(), user_data) == 0;
-    };
-}
 
 }  // namespace
 

@@ -13,6 +13,7 @@ struct tf_web_page_options {
 using talkface::InvalidArgument;
 using talkface::capi::enum_value;
 using talkface::capi::guard;
+using talkface::capi::progress_for;
 using talkface::capi::require_non_null;
 
 namespace {
@@ -26,12 +27,6 @@ talkface::AnimationEncoding to_encoding(const tf_animation_encoding& encoding) {
     return static_cast<talkface::AnimationEncoding>(value);
 }
 
-talkface::ProgressCallback progress_for(tf_progress_fn progress, void* user_data) {
-    if (progress == nullptr) return {};
-    return [progress, user_data](double fraction, const std::string& stage) {
-        return progress(fraction, stage.c_str(), user_data) == 0;
-    };
-}
 
 talkface::SvgAnimator animator_for(const tf_face_model* face, const tf_svg_options* options) {
     return talkface::SvgAnimator(face->model, options != nullptr ? options->options : talkface::SvgOptions{});

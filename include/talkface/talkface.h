@@ -1158,6 +1158,105 @@ TF_API tf_status tf_write_timing_string(const tf_timeline *timeline, const char 
 TF_API tf_status tf_time_transcript(const char *timing_path, const char *audio_path, const tf_timeline *transcript,
                                     const char *format, tf_timeline **out);
 
+/* ---------------------------------------------------------------------------------------------
+ * Video (talkface::VideoWriter, video_writer.hpp): frames of RGBA pixels and a speech encoded
+ * through FFmpeg's libraries, the kind of file told by the extension. Written to a temporary file
+ * beside the output and renamed by tf_video_writer_finish: a writer destroyed unfinished leaves
+ * no output. Encoders are found by name in the FFmpeg the process loaded. */
+
+/* The kinds of video file; values equal talkface::VideoFormat. */
+typedef enum tf_video_format {
+    TF_VIDEO_MP4 = 0,          /* .mp4: H.264 (yuv420p) + AAC, index in front */
+    TF_VIDEO_WEBM = 1,         /* .webm: VP9 + Opus; transparent: with an alpha channel */
+    TF_VIDEO_WEBP = 2,         /* .webp: animated WebP, looping, no sound */
+    TF_VIDEO_PNG_SEQUENCE = 3  /* .png: OUT-000000.png, OUT-000001.png, ..., no sound */
+} tf_video_format;
+
+/* The format of an output path by its extension (either case).
+ * Errors: TF_ERR_INVALID_ARGUMENT for an unknown extension (the message names it) or a NULL argument. */
+TF_API tf_status tf_video_format_from_path(const char *path, tf_video_format *out_format);
+
+/* How a video is encoded. Created by tf_video_options_create with the defaults (1280 x 720, 30 fps,
+ * the format's default quality, opaque), released by tf_video_options_destroy. Values are checked
+ * when a writer is opened (or by tf_check_video_options). */
+typedef struct tf_video_options tf_video_options;
+
+TF_API tf_status tf_video_options_create(tf_video_options **out);
+/* Releases the options; NULL is allowed. */
+TF_API void tf_video_options_destroy(tf_video_options *options);
+/* Frame size in pixels: 2..7680 (the longer side) by 2..4320 (the shorter); even for .mp4 and .webm. */
+TF_API tf_status tf_video_options_set_size(tf_video_options *options, int width_px, int height_px);
+/* Frames per second, 1..120. */
+TF_API tf_status tf_video_options_set_fps(tf_video_options *options, double fps);
+/* Constant quality, lower is better: H.264 0..51, VP9 0..63; -1 the default (20, 32). */
+TF_API tf_status tf_video_options_set_crf(tf_video_options *options, int crf);
+/* Non-zero keeps the frames' alpha channel (.webm, .webp, .png only). */
+TF_API tf_status tf_video_options_set_transparent(tf_video_options *options, int transparent);
+/* Checks options for an output at path without creating anything. options may be NULL (defaults).
+ * Errors: TF_ERR_INVALID_ARGUMENT naming the option (width_px, height_px, fps, crf, transparent)
+ * or the extension, with what was expected. */
+TF_API tf_status tf_check_video_options(const char *path, const tf_video_options *options);
+
+/* A video being written. Opened by tf_video_writer_open, released by tf_video_writer_destroy. */
+typedef struct tf_video_writer tf_video_writer;
+
+/* Opens `path` (options may be NULL: the defaults).
+ * Errors: TF_ERR_INVALID_ARGUMENT as tf_check_video_options, or if the system's FFmpeg lacks the
+ * format's encoder (the message names it); TF_ERR_FILE if no temporary file can be made beside path. */
+TF_API tf_status tf_video_writer_open(const char *path, const tf_video_options *options, tf_video_writer **out);
+/* Releases the writer; an unfinished one removes its temporary file. NULL is allowed. */
+TF_API void tf_video_writer_destroy(tf_video_writer *writer);
+/* The sound, from frame 0: frame_count frames of channel_count interleaved floats in -1..1 (mixed
+ * down to mono), read while frames are written: they must stay valid until tf_video_writer_finish.
+ * .webp and .png ignore it. Before the first frame, at most once.
+ * Errors: TF_ERR_INVALID_ARGUMENT for malformed audio, a second call or a call after a frame. */
+TF_API tf_status tf_video_writer_add_audio(tf_video_writer *writer, const float *samples, size_t frame_count,
+                                           int channel_count, int sample_rate_hz);
+/* The same from an audio file (WAV, FLAC, OGG ...). Errors: TF_ERR_FILE, TF_ERR_PARSE, as above. */
+TF_API tf_status tf_video_writer_add_audio_file(tf_video_writer *writer, const char *audio_path);
+/* Appends a frame: height rows of width straight-alpha RGBA pixels (the options' size), row y at
+ * rgba + y * stride_bytes. Frame k is shown at k / fps.
+ * Errors: TF_ERR_INVALID_ARGUMENT for NULL or a stride < 4 * width; TF_ERR_FILE if writing fails. */
+TF_API tf_status tf_video_writer_write_frame(tf_video_writer *writer, const uint8_t *rgba, size_t stride_bytes);
+/* The frames written so far. Errors: TF_ERR_INVALID_ARGUMENT for a NULL argument. */
+TF_API tf_status tf_video_writer_frame_count(const tf_video_writer *writer, size_t *out_count);
+/* Encodes the rest of the sound, closes the file and renames it into place; call once.
+ * Errors: TF_ERR_INVALID_ARGUMENT if no frame was written or it was finished; TF_ERR_FILE. */
+TF_API tf_status tf_video_writer_finish(tf_video_writer *writer);
+
+/* Where the face stands in a video's frames; values equal talkface::FrameLayout. */
+typedef enum tf_video_layout {
+    TF_VIDEO_LAYOUT_ANNOUNCER = 0,  /* on a stage, standing on the bottom edge, as tall as the frame (the default) */
+    TF_VIDEO_LAYOUT_FACE = 1        /* the face's own canvas fitted into the frame, centred */
+} tf_video_layout;
+
+/* How the face looks in a video (talkface::FaceVideoOptions without its VideoOptions). Created by
+ * tf_video_look_create with the defaults (the announcer over #1d3b5c), released by tf_video_look_destroy. */
+typedef struct tf_video_look tf_video_look;
+
+TF_API tf_status tf_video_look_create(tf_video_look **out);
+/* Releases it; NULL is allowed. */
+TF_API void tf_video_look_destroy(tf_video_look *look);
+/* Errors: TF_ERR_INVALID_ARGUMENT if look is NULL or layout is not a tf_video_layout. */
+TF_API tf_status tf_video_look_set_layout(tf_video_look *look, tf_video_layout layout);
+/* The background: a colour (NULL: none, transparent where nothing is drawn) and a picture file drawn
+ * over it, covering the frame (NULL or "": none). The picture is read when the video is made. */
+TF_API tf_status tf_video_look_set_background(tf_video_look *look, const tf_rgb *colour, const char *image_path);
+/* Announcer: where the face's rotation origin O (the neck) stands in the frame, pixels (origin_xy
+ * NULL: centred on the bottom edge), and its eye distance d there (0: the canvas as tall as the frame). */
+TF_API tf_status tf_video_look_set_face_placement(tf_video_look *look, const double origin_xy[2], double d_px);
+
+/* Writes a video of `face` playing `animation` with the speech at audio_path (NULL or "": silent):
+ * frame k shows the animation at k / fps, as many frames as cover the speech, so the file lasts as
+ * long as the speech within a frame. video and look may be NULL (defaults: 1280 x 720, 30 fps, the
+ * announcer); progress may be NULL (fraction of frames, stage "video"; non-zero cancels). Written
+ * through a temporary file: a failure or a cancel leaves none.
+ * Errors: TF_ERR_INVALID_ARGUMENT as tf_check_video_options or for an empty animation; TF_ERR_FILE if
+ * the audio, the picture or the output cannot be read or written; TF_ERR_CANCELLED. */
+TF_API tf_status tf_render_video(const char *path, const tf_face_model *face, const tf_animation *animation,
+                                 const char *audio_path, const tf_video_options *video, const tf_video_look *look,
+                                 tf_progress_fn progress, void *user_data);
+
 #ifdef __cplusplus
 }
 #endif

@@ -27,6 +27,7 @@
 #include "talkface/face_lift.hpp"
 #include "talkface/face_model.hpp"
 #include "talkface/face_pose.hpp"
+#include "talkface/face_video.hpp"
 #include "talkface/frame_renderer.hpp"
 #include "talkface/library.hpp"
 #include "talkface/lip_sync.hpp"
@@ -41,6 +42,7 @@
 #include "talkface/transcript.hpp"
 #include "talkface/types.hpp"
 #include "talkface/version.h"
+#include "talkface/video_writer.hpp"
 #include "talkface/web_page.hpp"
 
 #endif

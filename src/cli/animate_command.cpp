@@ -9,6 +9,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "commands.hpp"
 #include "progress_bar.hpp"
@@ -18,9 +19,10 @@ namespace talkface_cli {
 
 namespace {
 
-// Shares of the whole job in the progress bar: alignment is most of it.
-constexpr double kAlignedAt = 0.55;
+// Share of the whole job in the progress bar until the face is animated: alignment is most of it.
 constexpr double kAnimatedAt = 0.6;
+// Alignment's share of animate_talking_face(); animating is the rest.
+constexpr double kAlignmentShare = 0.9;
 
 std::optional<std::pair<double, double>> parse_pair(const std::string& text, char separator) {
     std::istringstream in(text);
@@ -92,6 +94,15 @@ void run_animate(const AnimateOptions& options, const std::string& audio_path, c
 
 }  // namespace
 
+void add_speech_arguments(CLI::App& command, std::string& audio_path, std::string& transcript_path) {
+    command.add_option("AUDIO", audio_path, "Speech: WAV, FLAC or OGG, any rate, mono or stereo")
+        ->required()
+        ->check(CLI::ExistingFile);
+    command.add_option("TRANSCRIPT", transcript_path, "Its transcript, UTF-8 (as `talkface align` reads it)")
+        ->required()
+        ->check(CLI::ExistingFile);
+}
+
 void add_style_options(CLI::App& command, StyleOptions& options) {
     command
         .add_option("--style", options.style,
@@ -117,7 +128,7 @@ talkface::ExpressionStyle expression_style(const StyleOptions& options) {
     return style;
 }
 
-void add_page_options(CLI::App& command, AnimateOptions& options) {
+void add_face_options(CLI::App& command, AnimateOptions& options) {
     command.add_option("--face", options.face_path, "Face model file (default: the built-in face)")
         ->check(CLI::ExistingFile);
     command.add_option("--fps", options.fps, "Frames per second of the animation")
@@ -125,6 +136,10 @@ void add_page_options(CLI::App& command, AnimateOptions& options) {
         ->capture_default_str();
     command.add_option("--seed", options.seed, "Seed of the simulated blinks and head moves")->capture_default_str();
     add_style_options(command, options.expression);
+}
+
+void add_page_options(CLI::App& command, AnimateOptions& options) {
+    add_face_options(command, options);
     command
         .add_option("--encoding", options.encoding,
                     "keyframes: the face animated between key frames (small); frames: one group per frame")
@@ -151,9 +166,29 @@ void add_page_options(CLI::App& command, AnimateOptions& options) {
     command.add_option("--stage", options.stage, "announcer: the stage's size, WIDTHxHEIGHT in pixels")
         ->check(pair_validator('x', "WIDTHxHEIGHT", "800x450"))
         ->capture_default_str();
-    command.add_option("-o,--output", options.output_path, "OUT.html for a web page, OUT.svg for the bare animation")
+    command.add_option("-o,--output", options.output_path, "OUT.html for a web page, OUT.svg for the bare animation (demo: OUT.mp4, .webm, .webp, .png for a video)")
         ->required();
     command.add_flag("-q,--quiet", options.quiet, "No progress bar");
+}
+
+TalkingFace animate_talking_face(const AnimateOptions& options, const std::string& audio_path,
+                                 const talkface::Timeline& transcript, const talkface::ProgressCallback& progress) {
+    const talkface::ExpressionStyle style = expression_style(options.expression);
+    talkface::FaceModel face =
+        options.face_path.empty() ? talkface::FaceModel::default_face() : talkface::FaceModel::load(options.face_path);
+    talkface::ProgressCallback alignment_progress;
+    if (progress) {
+        alignment_progress = [&progress](double fraction, const std::string& stage) {
+            return progress(fraction * kAlignmentShare, stage);
+        };
+    }
+    talkface::Timeline timeline = timed_speech(audio_path, transcript, options.timing_path, alignment_progress);
+    const talkface::ExpressionSimulator simulator(timeline, options.seed, style);
+    talkface::LipSyncOptions lip_sync;
+    lip_sync.fps = options.fps;
+    talkface::Animation animation = talkface::animate(face, timeline, simulator, lip_sync);
+    if (progress) progress(1.0, "animating");
+    return {std::move(face), std::move(timeline), std::move(animation)};
 }
 
 void make_talking_face(const AnimateOptions& options, const std::string& audio_path,
@@ -162,22 +197,15 @@ void make_talking_face(const AnimateOptions& options, const std::string& audio_p
     if (is_svg && (options.app != "plain" || options.link_audio)) {
         throw CLI::ValidationError("--output", "an .svg output is the bare animation: --app and --link-audio need .html");
     }
-    // Read before the alignment, the slow part: a bad style file fails at once.
-    const talkface::ExpressionStyle style = expression_style(options.expression);
+    // Read before the alignment, the slow part: a bad option fails at once.
     talkface::WebPageOptions page = page_options(options);
     page.audio_url = linked_audio_url;
-    const talkface::FaceModel face =
-        options.face_path.empty() ? talkface::FaceModel::default_face() : talkface::FaceModel::load(options.face_path);
-
     const std::unique_ptr<ProgressBar> bar = make_progress_bar(options.quiet);
-    const talkface::Timeline timeline =
-        timed_speech(audio_path, transcript, options.timing_path, progress_part(bar.get(), 0.0, kAlignedAt));
-    const talkface::ExpressionSimulator simulator(timeline, options.seed, style);
-    talkface::LipSyncOptions lip_sync;
-    lip_sync.fps = options.fps;
-    const talkface::Animation animation = talkface::animate(face, timeline, simulator, lip_sync);
-    if (bar) bar->update(kAnimatedAt, "animating");
-    const talkface::SvgAnimator animator(face);
+    const TalkingFace talking =
+        animate_talking_face(options, audio_path, transcript, progress_part(bar.get(), 0.0, kAnimatedAt));
+    const talkface::Timeline& timeline = talking.timeline;
+    const talkface::Animation& animation = talking.animation;
+    const talkface::SvgAnimator animator(talking.face);
     // The output is written whole at the end (a temporary file renamed): a failure leaves no page.
     if (is_svg) {
         animator.write_animation_svg(options.output_path, animation, page.animation,
@@ -195,12 +223,7 @@ void setup_animate_command(CLI::App& app) {
     auto transcript_path = std::make_shared<std::string>();
     CLI::App* animate = app.add_subcommand(
         "animate", "Make a web page where the face talks in sync with a speech (or the bare SVG animation)");
-    animate->add_option("AUDIO", *audio_path, "Speech: WAV, FLAC or OGG, any rate, mono or stereo")
-        ->required()
-        ->check(CLI::ExistingFile);
-    animate->add_option("TRANSCRIPT", *transcript_path, "Its transcript, UTF-8 (as `talkface align` reads it)")
-        ->required()
-        ->check(CLI::ExistingFile);
+    add_speech_arguments(*animate, *audio_path, *transcript_path);
     add_page_options(*animate, *options);
     add_timing_option(*animate, options->timing_path);
     animate->callback([options, audio_path, transcript_path] { run_animate(*options, *audio_path, *transcript_path); });

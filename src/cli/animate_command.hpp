@@ -11,6 +11,8 @@
 #include <CLI/CLI.hpp>
 #include <talkface/talkface.hpp>
 
+#include "progress_bar.hpp"
+
 namespace talkface_cli {
 
 // --style NAME|FILE.json and --without KIND,...
@@ -18,6 +20,9 @@ struct StyleOptions {
     std::string style = "normal";      // a named style, or a style JSON file (docs/style-format.md)
     std::vector<std::string> without;  // event kinds not simulated
 };
+
+// Adds the AUDIO and TRANSCRIPT arguments (existing files) of the commands that animate a speech.
+void add_speech_arguments(CLI::App& command, std::string& audio_path, std::string& transcript_path);
 
 // Adds --style and --without to `command`.
 void add_style_options(CLI::App& command, StyleOptions& options);
@@ -41,12 +46,30 @@ struct AnimateOptions {
     double face_d = 0.0;
     std::string stage = "800x450";
     std::string output_path;
-    std::string timing_path;  // --timing: time the speech by this file instead of aligning (animate only)
+    std::string timing_path;  // --timing: time the speech by this file instead of aligning
     bool quiet = false;
 };
 
-// Adds the options both commands take (all but the inputs) to `command`.
+// Adds --face, --fps, --seed, --style and --without: what every command that animates a face from
+// a speech takes (animate, demo, video).
+void add_face_options(CLI::App& command, AnimateOptions& options);
+
+// Adds the options both page commands take (all but the inputs) to `command`: add_face_options()
+// and the page's own.
 void add_page_options(CLI::App& command, AnimateOptions& options);
+
+// A speech aligned and the face animated on it.
+struct TalkingFace {
+    talkface::FaceModel face;
+    talkface::Timeline timeline;
+    talkface::Animation animation;
+};
+
+// Aligns `audio_path` with `transcript` and animates the face of `options` (face, fps, seed,
+// style), reporting 0..1 to `progress` (may be empty; returning false cancels). A bad style or
+// face file fails before the alignment, the slow part.
+TalkingFace animate_talking_face(const AnimateOptions& options, const std::string& audio_path,
+                                 const talkface::Timeline& transcript, const talkface::ProgressCallback& progress);
 
 // Aligns `audio_path` with `transcript`, animates the face and writes options.output_path: a page
 // (.html), or the bare animation (.svg). A linked page links `linked_audio_url`.

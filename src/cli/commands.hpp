@@ -25,6 +25,9 @@ void setup_align_command(CLI::App& app);
 // `talkface animate`: a speech and its transcript as a web page where the face talks (animate_command.cpp).
 void setup_animate_command(CLI::App& app);
 
+// `talkface video`: a speech and its transcript as a video of the talking face (video_command.cpp).
+void setup_video_command(CLI::App& app);
+
 // `talkface demo`: animate on the built-in face and the bundled speech (demo_command.cpp).
 void setup_demo_command(CLI::App& app);
 

@@ -14,6 +14,7 @@
 #include <talkface/talkface.hpp>
 
 #include "animate_command.hpp"
+#include "video_command.hpp"
 #include "commands.hpp"
 #include "common/atomic_file.hpp"
 #include "embedded_demo.hpp"
@@ -49,10 +50,19 @@ private:
     std::string path_;
 };
 
-void run_demo(const AnimateOptions& options) {
+void run_demo(const AnimateOptions& options, const CLI::App& demo) {
     const TemporarySpeech speech;
     const talkface::Timeline transcript =
         talkface::read_transcript(view_of(demo_transcript()), {}, "samples/speech/demo.txt");
+    if (is_video_output(options.output_path)) {
+        // A video at the video's defaults (1280x720, 30 fps, the announcer), unless asked otherwise.
+        VideoCommandOptions video;
+        video.animate = options;
+        if (demo.count("--fps") == 0) video.animate.fps = talkface::VideoOptions{}.fps;
+        if (demo.count("--app") != 0) video.app = options.app == "announcer" ? "announcer" : "plain";
+        make_video(video, speech.path(), transcript);
+        return;
+    }
     std::string linked_url;
     if (options.link_audio) {
         // A linked page needs the speech beside it: written there as OUT.ogg.
@@ -68,9 +78,11 @@ void run_demo(const AnimateOptions& options) {
 void setup_demo_command(CLI::App& app) {
     auto options = std::make_shared<AnimateOptions>();
     CLI::App* demo = app.add_subcommand(
-        "demo", "Make the web page of the built-in face saying a short bundled Mandarin speech (open it in a browser)");
+        "demo",
+        "Make the web page (or, for -o OUT.mp4/.webm/.webp/.png, the video) of the built-in face saying a short "
+        "bundled Mandarin speech");
     add_page_options(*demo, *options);
-    demo->callback([options] { run_demo(*options); });
+    demo->callback([options, demo] { run_demo(*options, *demo); });
 }
 
 }  // namespace talkface_cli

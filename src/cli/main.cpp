@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
     talkface_cli::setup_face_from_photo_command(app);
 #endif
     talkface_cli::setup_animate_command(app);
+    talkface_cli::setup_video_command(app);
     talkface_cli::setup_demo_command(app);
 
     try {

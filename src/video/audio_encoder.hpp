@@ -1,9 +1,9 @@
 // Speech as a compressed audio file, in memory or on disk: Opus in Ogg or WebM, AAC in MP4. The
 // web pages embed it (apps/), so a page carries a few hundred kilobytes a minute, not a WAV's
-// megabytes. What plays where (checked in Chromium 156 headless, the rest from MDN's "Media
-// container formats" and "Web audio codec guide"; tests/video/test_browser_audio.py plays each):
-//   Opus in Ogg   Chromium, Firefox; Safari only from 18.4 (macOS 15.4 / iOS 18.4)
-//   Opus in WebM  Chromium, Firefox; Safari from 15 (macOS 12)
+// megabytes. What plays where (Chromium 156 headless: tests/video/test_browser_audio.py plays
+// each; the rest from MDN's "Web audio codec guide" and caniuse's issues #6805 and #6997):
+//   Opus in Ogg   Chromium, Firefox; not Safari (its <audio> does not read the Ogg container)
+//   Opus in WebM  Chromium, Firefox; Safari from 17 (Apple's release notes)
 //   AAC in MP4    Chromium, Firefox (through the system's decoder), Safari, every phone
 // so a page that must play everywhere offers AAC in MP4, or Opus in WebM with an MP4 fallback.
 #ifndef TALKFACE_VIDEO_AUDIO_ENCODER_HPP

@@ -9,7 +9,9 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "talkface/talkface.hpp"
 
@@ -32,6 +34,58 @@ void bind_animation(py::module_& m);
 void bind_speech_aligner(py::module_& m);
 void bind_web_page(py::module_& m);
 void bind_photo(py::module_& m);  // the _talkface_photo module (photo_module.cpp)
+void bind_video_writer(py::module_& m);
+
+// The progress callable as a ProgressCallback, for the long calls (alignment, video). The work runs
+// without the GIL, so each report takes it back. An exception the callable raises cancels the work
+// and is kept, to be raised in place of talkface.Cancelled once the library has unwound. With no
+// callable, each report still checks for signals, so that Ctrl-C stops long work with
+// KeyboardInterrupt.
+class PythonProgress {
+public:
+    explicit PythonProgress(py::object progress) : progress_(std::move(progress)) {}
+
+    // Called on the working thread, without the GIL.
+    bool report(double fraction, const std::string& stage) {
+        py::gil_scoped_acquire gil;
+        try {
+            if (progress_.is_none()) {
+                if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+                return true;
+            }
+            const py::object result = progress_(fraction, stage);
+            if (result.is_none()) return true;
+            const int is_true = PyObject_IsTrue(result.ptr());
+            if (is_true < 0) throw py::error_already_set();
+            return is_true == 1;
+        } catch (py::error_already_set& error) {
+            error_ = std::move(error);
+            return false;
+        }
+    }
+
+    // Called with the GIL once the work was cancelled.
+    void raise_callback_error() {
+        if (error_) throw std::move(*error_);
+    }
+
+private:
+    py::object progress_;
+    std::optional<py::error_already_set> error_;
+};
+
+// Runs `work(callback)` without the GIL; called with it.
+template <typename Work>
+auto run_without_gil(const py::object& progress, Work&& work) {
+    PythonProgress bridge(progress);
+    try {
+        py::gil_scoped_release release;
+        return work([&bridge](double fraction, const std::string& stage) { return bridge.report(fraction, stage); });
+    } catch (const Cancelled&) {
+        bridge.raise_callback_error();
+        throw;
+    }
+}
 
 // A float64 array of `rows` x `columns`, C order (a copy the caller owns).
 inline py::array_t<double> new_matrix(py::ssize_t rows, py::ssize_t columns) {

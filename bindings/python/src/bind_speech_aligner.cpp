@@ -9,56 +9,6 @@ namespace talkface::python {
 
 namespace {
 
-// The progress callable as a ProgressCallback. The alignment runs without the GIL, so each report
-// takes it back. An exception the callable raises cancels the alignment and is kept, to be raised
-// in place of talkface.Cancelled once the aligner has unwound. With no callable, each report still
-// checks for signals, so that Ctrl-C stops a long alignment with KeyboardInterrupt.
-class PythonProgress {
-public:
-    explicit PythonProgress(py::object progress) : progress_(std::move(progress)) {}
-
-    // Called on the aligning thread, without the GIL.
-    bool report(double fraction, const std::string& stage) {
-        py::gil_scoped_acquire gil;
-        try {
-            if (progress_.is_none()) {
-                if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-                return true;
-            }
-            const py::object result = progress_(fraction, stage);
-            if (result.is_none()) return true;
-            const int is_true = PyObject_IsTrue(result.ptr());
-            if (is_true < 0) throw py::error_already_set();
-            return is_true == 1;
-        } catch (py::error_already_set& error) {
-            error_ = std::move(error);
-            return false;
-        }
-    }
-
-    // Called with the GIL once the alignment was cancelled.
-    void raise_callback_error() {
-        if (error_) throw std::move(*error_);
-    }
-
-private:
-    py::object progress_;
-    std::optional<py::error_already_set> error_;
-};
-
-// Runs `align(callback)` without the GIL; called with it.
-template <typename Align>
-Timeline align_without_gil(const py::object& progress, Align&& align) {
-    PythonProgress bridge(progress);
-    try {
-        py::gil_scoped_release release;
-        return align([&bridge](double fraction, const std::string& stage) { return bridge.report(fraction, stage); });
-    } catch (const Cancelled&) {
-        bridge.raise_callback_error();
-        throw;
-    }
-}
-
 using SampleArray = py::array_t<float, py::array::c_style | py::array::forcecast>;
 
 // The view of a (frames,) or (frames, channels) array; its shape is checked here, the rest by the
@@ -180,7 +130,7 @@ Example:
                 const std::string audio_path = path.string();
                 // A copy: another Python thread may change the caller's timeline once the GIL is free.
                 const Timeline transcript_copy = transcript;
-                return align_without_gil(progress, [&](const ProgressCallback& callback) {
+                return run_without_gil(progress, [&](const ProgressCallback& callback) {
                     return aligner.align_file(audio_path, transcript_copy, callback);
                 });
             },
@@ -214,7 +164,7 @@ Example:
                const Timeline& transcript, const py::object& progress) {
                 const AudioView audio = audio_view(samples, sample_rate_hz);
                 const Timeline transcript_copy = transcript;
-                return align_without_gil(progress, [&](const ProgressCallback& callback) {
+                return run_without_gil(progress, [&](const ProgressCallback& callback) {
                     return aligner.align(audio, transcript_copy, callback);
                 });
             },

@@ -33,4 +33,5 @@ Example:
     bind_animation(m);
     bind_speech_aligner(m);
     bind_web_page(m);
+    bind_video_writer(m);
 }

@@ -1,0 +1,152 @@
+"""`talkface video` and `talkface demo -o OUT.mp4`, run as a user runs them: the files are read back
+with ffprobe and ffmpeg (frames decoded at an open vowel and in a pause), the refusals checked by
+their messages, and Ctrl-C checked to leave nothing behind.
+
+The bundled speech (samples/speech/demo.ogg, 12.95 s) is aligned once with `talkface align --json`;
+the same audio and transcript give the video's times.
+"""
+import json
+import os
+import pathlib
+import re
+import shutil
+import signal
+import subprocess
+import time
+
+import pytest
+from PIL import Image
+
+CLI = os.environ["TALKFACE_CLI"]
+SPEECH_DIR = pathlib.Path(os.environ["TALKFACE_SOURCE_DIR"]) / "samples" / "speech"
+SPEECH, TRANSCRIPT = SPEECH_DIR / "demo.ogg", SPEECH_DIR / "demo.txt"
+SPEECH_S = 12.95
+MOUTH_INSIDE = (0x6A, 0x1E, 0x22)  # FaceColors::mouth_inside of the built-in face
+FFMPEG, FFPROBE = shutil.which("ffmpeg"), shutil.which("ffprobe")
+
+pytestmark = pytest.mark.skipif(FFPROBE is None or FFMPEG is None, reason="ffmpeg is not installed")
+
+
+def run(*args, check=True):
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=600, check=check)
+
+
+def probe(path):
+    out = subprocess.run([FFPROBE, "-v", "error", "-show_streams", "-show_format", "-of", "json", str(path)],
+                         capture_output=True, text=True, check=True).stdout
+    return json.loads(out)
+
+
+def frame_at(video, time_s, png):
+    subprocess.run([FFMPEG, "-v", "error", "-y", "-ss", f"{time_s:.3f}", "-i", str(video), "-frames:v", "1",
+                    str(png)], check=True)
+    return Image.open(png).convert("RGB")
+
+
+def mouth_inside_pixels(image, tolerance=12):
+    """Pixels of the mouth's inside colour; 12 keeps the dark lip outline out after H.264."""
+    return sum(1 for pixel in image.getdata() if all(abs(p - c) <= tolerance for p, c in zip(pixel, MOUTH_INSIDE)))
+
+
+@pytest.fixture(scope="module")
+def alignment():
+    return json.loads(run("align", SPEECH, TRANSCRIPT, "--json", "-q").stdout)
+
+
+@pytest.fixture(scope="module")
+def mp4(tmp_path_factory):
+    path = tmp_path_factory.mktemp("video") / "talk.mp4"
+    run("video", SPEECH, TRANSCRIPT, "-o", path, "-q", "--size", "640x360")
+    return path
+
+
+def test_mp4_plays_in_browsers_and_lasts_as_long_as_the_speech(mp4):
+    info = probe(mp4)
+    video = next(s for s in info["streams"] if s["codec_type"] == "video")
+    audio = next(s for s in info["streams"] if s["codec_type"] == "audio")
+    assert (video["codec_name"], video["pix_fmt"], video["width"], video["height"]) == ("h264", "yuv420p", 640, 360)
+    assert audio["codec_name"] == "aac"
+    assert float(video["start_time"]) == pytest.approx(0.0, abs=1e-6)
+    assert float(audio["start_time"]) == pytest.approx(0.0, abs=1e-6)
+    assert float(info["format"]["duration"]) == pytest.approx(SPEECH_S, abs=1 / 30)
+    assert float(video["duration"]) == pytest.approx(SPEECH_S, abs=1 / 30)
+    assert eval(video["r_frame_rate"]) == 30  # noqa: S307 - "30/1" from ffprobe
+    head = mp4.read_bytes()
+    assert head.find(b"moov") < head.find(b"mdat")  # faststart
+
+
+def open_vowel_time(alignment):
+    """The middle of the vowel of the longest syllable whose final is a / ai / ao / an / ang."""
+    open_finals = [s for s in alignment["syllables"] if re.fullmatch(r"[a-z]*?[^iuv]?a[oin]?g?\d", s["pinyin"])]
+    syllable = max(open_finals, key=lambda s: s["end"] - s.get("final_start", s["start"]))
+    vowel_start = syllable.get("final_start", syllable["start"])
+    return vowel_start + 0.6 * (syllable["end"] - vowel_start)
+
+
+def test_mouth_is_open_in_a_vowel_and_closed_in_a_pause(mp4, alignment, tmp_path):
+    vowel_s = open_vowel_time(alignment)
+    pause_s = alignment["syllables"][0]["start"] / 2
+    open_pixels = mouth_inside_pixels(frame_at(mp4, vowel_s, tmp_path / "vowel.png"))
+    closed_pixels = mouth_inside_pixels(frame_at(mp4, pause_s, tmp_path / "pause.png"))
+    assert open_pixels > 60, f"mouth at {vowel_s:.3f} s shows {open_pixels} inside pixels"
+    assert closed_pixels < 10, f"mouth at {pause_s:.3f} s shows {closed_pixels} inside pixels"
+
+
+def test_transparent_webm_keeps_alpha(tmp_path):
+    path = tmp_path / "alpha.webm"
+    run("video", SPEECH, TRANSCRIPT, "-o", path, "-q", "--size", "320x180", "--fps", "10", "--transparent")
+    info = probe(path)
+    codecs = sorted(s["codec_name"] for s in info["streams"])
+    assert codecs == ["opus", "vp9"]
+    video = next(s for s in info["streams"] if s["codec_type"] == "video")
+    assert video.get("tags", {}).get("alpha_mode") == "1"
+
+
+def test_png_sequence_and_webp(tmp_path):
+    run("video", SPEECH, TRANSCRIPT, "-o", tmp_path / "f.png", "-q", "--size", "161x91", "--fps", "2")
+    frames = sorted(p.name for p in tmp_path.glob("f-*.png"))
+    assert len(frames) == 26 and frames[0] == "f-000000.png"  # ceil(12.95 * 2)
+    assert Image.open(tmp_path / frames[0]).size == (161, 91)
+    run("video", SPEECH, TRANSCRIPT, "-o", tmp_path / "chat.webp", "-q", "--size", "160x90", "--fps", "5")
+    assert (tmp_path / "chat.webp").read_bytes()[8:12] == b"WEBP"
+
+
+@pytest.mark.parametrize("args,message", [
+    (["-o", "talk.avi"], 'unknown extension ".avi"'),
+    (["-o", "talk.mp4", "--size", "641x360"], "needs an even width and height"),
+    (["-o", "talk.mp4", "--size", "8000x4000"], "over the largest, 7680x4320"),
+    (["-o", "talk.mp4", "--size", "big"], "expected WIDTHxHEIGHT"),
+    (["-o", "talk.mp4", "--fps", "0"], "--fps"),
+    (["-o", "talk.mp4", "--fps", "121"], "--fps"),
+    (["-o", "talk.mp4", "--transparent"], "no alpha channel"),
+    (["-o", "talk.mp4", "--crf", "60"], "crf: expected 0..51"),
+])
+def test_bad_input_is_refused_by_name_and_leaves_no_file(tmp_path, args, message):
+    args = [str(tmp_path / a) if a.startswith("talk.") else a for a in args]
+    result = run("video", SPEECH, TRANSCRIPT, "-q", *args, check=False)
+    assert result.returncode == 2, result.stderr
+    assert message in result.stderr
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_ctrl_c_leaves_no_file(tmp_path):
+    path = tmp_path / "long.mp4"
+    process = subprocess.Popen([CLI, "video", str(SPEECH), str(TRANSCRIPT), "-o", str(path), "-q",
+                                "--size", "1920x1080", "--fps", "60"], stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and not any(p.name.startswith("long.mp4.tmp") for p in tmp_path.iterdir()):
+        time.sleep(0.05)
+    process.send_signal(signal.SIGINT)
+    _, stderr = process.communicate(timeout=120)
+    assert process.returncode == 130, stderr
+    assert "interrupted" in stderr
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_demo_makes_an_mp4_of_the_built_in_face(tmp_path):
+    path = tmp_path / "demo.mp4"
+    run("demo", "-o", path, "-q")
+    info = probe(path)
+    video = next(s for s in info["streams"] if s["codec_type"] == "video")
+    assert (video["width"], video["height"], eval(video["r_frame_rate"])) == (1280, 720, 30)  # noqa: S307
+    assert float(info["format"]["duration"]) == pytest.approx(SPEECH_S, abs=1 / 30)
