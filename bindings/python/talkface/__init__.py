@@ -15,6 +15,7 @@ Cancelled.
 """
 
 from ._talkface import (
+    AlphaMode,
     AnimationEncoding,
     AlignOptions,
     AlignmentError,
@@ -31,6 +32,9 @@ from ._talkface import (
     FaceModel,
     FaceState,
     FileError,
+    FrameLayout,
+    FrameOptions,
+    FrameRenderer,
     InvalidArgument,
     LiftedFace,
     LipSyncOptions,
@@ -152,6 +156,7 @@ def default_face() -> FaceModel:
 
 
 __all__ = [
+    "AlphaMode",
     "AnimationEncoding",
     "AlignOptions",
     "AlignmentError",
@@ -168,6 +173,9 @@ __all__ = [
     "FaceModel",
     "FaceState",
     "FileError",
+    "FrameLayout",
+    "FrameOptions",
+    "FrameRenderer",
     "InvalidArgument",
     "LiftedFace",
     "LipSyncOptions",
