@@ -4,6 +4,7 @@
 #define TALKFACE_CAPI_C_API_HANDLES_HPP
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "c_api_guard.hpp"
@@ -69,6 +70,14 @@ namespace talkface::capi {
 // A new handle owning `model`, for the (tf_face_model **out) of every call that makes a face.
 inline tf_face_model* new_face(FaceModel model) {
     return new tf_face_model{std::move(model)};
+}
+
+// A C colour; NULL (for an optional one) is none.
+inline Rgb to_rgb(tf_rgb colour) {
+    return Rgb{colour.r, colour.g, colour.b};
+}
+inline std::optional<Rgb> to_optional_rgb(const tf_rgb* colour) {
+    return colour == nullptr ? std::nullopt : std::optional<Rgb>(to_rgb(*colour));
 }
 
 inline Point2 to_point(const double xy[2]) {

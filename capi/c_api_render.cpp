@@ -2,7 +2,6 @@
 #include "c_api_guard.hpp"
 #include "c_api_handles.hpp"
 
-using talkface::Rgb;
 using talkface::SvgAnimator;
 using talkface::SvgOptions;
 using talkface::capi::guard;
@@ -34,11 +33,7 @@ void tf_svg_options_destroy(tf_svg_options* options) {
 tf_status tf_svg_options_set_background(tf_svg_options* options, const tf_rgb* colour) {
     return guard([&] {
         require_non_null(options, "options");
-        if (colour == nullptr) {
-            options->options.background.reset();
-        } else {
-            options->options.background = Rgb{colour->r, colour->g, colour->b};
-        }
+        options->options.background = talkface::capi::to_optional_rgb(colour);
     });
 }
 
@@ -46,7 +41,7 @@ tf_status tf_svg_options_set_clothes(tf_svg_options* options, int draw_clothes, 
     return guard([&] {
         require_non_null(options, "options");
         options->options.draw_clothes = draw_clothes != 0;
-        options->options.clothes = Rgb{colour.r, colour.g, colour.b};
+        options->options.clothes = talkface::capi::to_rgb(colour);
     });
 }
 

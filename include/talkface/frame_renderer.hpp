@@ -65,7 +65,8 @@ struct FrameOptions {
 /// hair, clothes, face): cubic Bezier paths, corner-cut hair and brows, eyeballs clipped to the eye
 /// outline with a radial gradient, antialiased. What does not move (background, background image,
 /// clothes) is drawn once and reused; only the region the head covered in the last frame or covers
-/// in this one is drawn again, and a state equal to the last one is not drawn at all.
+/// in this one is drawn again, and a state equal to the last one is not drawn at all. Every frame is
+/// the same, to the byte, as the one a new renderer would draw.
 ///
 /// Pixels are 4 bytes, R, G, B, A in that order in memory, rows top to bottom, `stride_bytes`
 /// apart (at least 4 * width_px), alpha as FrameOptions::alpha says.

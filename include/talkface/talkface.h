@@ -462,6 +462,94 @@ TF_API tf_status tf_render_svg(const tf_face_model *face, const tf_face_state *s
 TF_API tf_status tf_write_svg(const tf_face_model *face, const tf_face_state *state,
                               const tf_svg_options *options, const char *path);
 
+/* Frames as pixels (talkface::FrameRenderer): the same layers as the SVG, drawn with cairo,
+ * antialiased, into a caller's buffer of RGBA bytes (R, G, B, A in memory order, rows top to
+ * bottom, stride_bytes apart). */
+
+/* Where the face stands in a frame; values equal talkface::FrameLayout. */
+typedef enum tf_frame_layout {
+    /* Thesis 7.2: the frame is a stage, the face stands on its bottom edge, centred, its canvas as
+     * tall as the frame (or placed by tf_frame_options_set_face_placement). The default. */
+    TF_FRAME_LAYOUT_ANNOUNCER = 0,
+    /* The face's SVG canvas fitted into the frame and centred, as a viewer shows tf_render_svg's
+     * document at the frame's size. */
+    TF_FRAME_LAYOUT_FACE = 1
+} tf_frame_layout;
+
+/* How the bytes of a pixel carry alpha; values equal talkface::AlphaMode. */
+typedef enum tf_alpha_mode {
+    TF_ALPHA_STRAIGHT = 0,      /* R, G, B not multiplied by A (PNG, FFmpeg's rgba). The default. */
+    TF_ALPHA_PREMULTIPLIED = 1  /* R, G, B multiplied by A / 255 */
+} tf_alpha_mode;
+
+/* How frames are drawn. Created by tf_frame_options_create with the defaults (1280x720, the
+ * announcer layout, background #1d3b5c, clothes drawn, outline 0.025 d, straight alpha); released by
+ * tf_frame_options_destroy. Values are checked by tf_frame_renderer_create. */
+typedef struct tf_frame_options tf_frame_options;
+
+/* New options with the defaults. Errors: TF_ERR_INVALID_ARGUMENT if out is NULL. */
+TF_API tf_status tf_frame_options_create(tf_frame_options **out);
+
+/* Releases options. Accepts NULL. */
+TF_API void tf_frame_options_destroy(tf_frame_options *options);
+
+/* Sets the frame size, pixels: width 1..7680, height 1..4320.
+ * Errors: TF_ERR_INVALID_ARGUMENT if options is NULL. */
+TF_API tf_status tf_frame_options_set_size_px(tf_frame_options *options, int width_px, int height_px);
+
+/* Sets where the face stands. Errors: TF_ERR_INVALID_ARGUMENT if options is NULL. */
+TF_API tf_status tf_frame_options_set_layout(tf_frame_options *options, tf_frame_layout layout);
+
+/* Sets the background colour; NULL leaves the frame transparent where nothing is drawn.
+ * Errors: TF_ERR_INVALID_ARGUMENT if options is NULL. */
+TF_API tf_status tf_frame_options_set_background(tf_frame_options *options, const tf_rgb *colour);
+
+/* Draws the clothes layer if draw_clothes is non-zero, in `colour`.
+ * Errors: TF_ERR_INVALID_ARGUMENT if options is NULL. */
+TF_API tf_status tf_frame_options_set_clothes(tf_frame_options *options, int draw_clothes, tf_rgb colour);
+
+/* Sets the outline width, in units of d. Errors: TF_ERR_INVALID_ARGUMENT if options is NULL. */
+TF_API tf_status tf_frame_options_set_stroke_width_in_d(tf_frame_options *options, double stroke_width_in_d);
+
+/* announcer: where the face's rotation origin O stands (origin_px: x, y in frame pixels; NULL:
+ * centred, standing on the bottom edge) and its eye distance d in frame pixels (0: the canvas as
+ * tall as the frame). Errors: TF_ERR_INVALID_ARGUMENT if options is NULL. */
+TF_API tf_status tf_frame_options_set_face_placement(tf_frame_options *options, const double origin_px[2],
+                                                     double face_d_px);
+
+/* Sets how alpha is carried. Errors: TF_ERR_INVALID_ARGUMENT if options is NULL. */
+TF_API tf_status tf_frame_options_set_alpha(tf_frame_options *options, tf_alpha_mode alpha);
+
+/* Draws frames of one face; keeps the layers that do not move and the last frame, so that each
+ * frame draws only what moved. One thread at a time per renderer. Created by
+ * tf_frame_renderer_create, released by tf_frame_renderer_destroy. */
+typedef struct tf_frame_renderer tf_frame_renderer;
+
+/* A renderer of `face` (a neutral face); `options` NULL means the defaults.
+ * Errors: TF_ERR_INVALID_ARGUMENT if face or out is NULL or an option is out of range (named). */
+TF_API tf_status tf_frame_renderer_create(const tf_face_model *face, const tf_frame_options *options,
+                                          tf_frame_renderer **out);
+
+/* Releases a renderer. Accepts NULL. */
+TF_API void tf_frame_renderer_destroy(tf_frame_renderer *renderer);
+
+/* The frame's size in pixels; a buffer needs height_px rows of at least 4 * width_px bytes.
+ * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_frame_renderer_size(const tf_frame_renderer *renderer, int *width_px, int *height_px);
+
+/* Draws a picture over the background colour, covering the frame (scaled to fill it, centred, the
+ * overflow cropped), under the face. `rgba`: height rows of width straight-alpha RGBA pixels,
+ * stride_bytes apart; copied.
+ * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL, a size is 0 or the stride too small. */
+TF_API tf_status tf_frame_renderer_set_background_image(tf_frame_renderer *renderer, const uint8_t *rgba,
+                                                        int width, int height, size_t stride_bytes);
+
+/* Draws the face at `state` into `rgba`: every pixel of the frame is written.
+ * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL, stride_bytes < 4 * width, or the state
+ * does not fit the face. */
+TF_API tf_status tf_frame_renderer_render_rgba(tf_frame_renderer *renderer, const tf_face_state *state,
+                                               uint8_t *rgba, size_t stride_bytes);
+
 /* ---------------------------------------------------------------------------------------------
  * Transcripts and timelines (SPEC step 4): sentences and syllables in transcript order, with their
  * times once aligned. The JSON form is the SPEC "Contracts" `align` document.

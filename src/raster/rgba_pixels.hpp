@@ -19,6 +19,7 @@ PixelBox united(const PixelBox& a, const PixelBox& b);
 
 // Copies `box` of cairo ARGB32 pixels (`argb`, rows `argb_stride` bytes apart) into RGBA bytes
 // (`rgba`, rows `rgba_stride` apart, the same coordinates), unpremultiplied unless `is_premultiplied`.
+// Little-endian machines only (cairo's words are native-endian; every platform talkface builds on).
 void argb32_to_rgba(const std::uint8_t* argb, std::size_t argb_stride, std::uint8_t* rgba, std::size_t rgba_stride,
                     const PixelBox& box, bool is_premultiplied);
 

@@ -247,6 +247,35 @@ TEST_SUITE("FrameRenderer") {
         }
     }
 
+    TEST_CASE("frames of a held head, where only the mouth, the lids and the brows move, are whole frames") {
+        const FaceModel face = FaceModel::default_face();
+        FrameOptions options;
+        options.width_px = 640;
+        options.height_px = 360;
+        FrameRenderer running(face, options);
+        FaceState state;
+        state.pose = {4.0, -6.0, 2.0};
+        std::vector<FaceState> sequence;
+        for (const MouthShape shape : {MouthShape::a, MouthShape::o, MouthShape::m, MouthShape::i, MouthShape::e}) {
+            state.mouth = mouth_controls(face, shape);
+            sequence.push_back(state);
+        }
+        state.expression.blink_left = state.expression.blink_right = 0.7;
+        sequence.push_back(state);
+        state.expression.blink_left = state.expression.blink_right = 0.0;
+        state.expression.brows = 0.8;
+        sequence.push_back(state);
+        state.pose.beta_deg = 3.0;  // and the head moves again
+        sequence.push_back(state);
+        state.mouth = mouth_controls(face, MouthShape::u);
+        sequence.push_back(state);
+        for (std::size_t i = 0; i < sequence.size(); ++i) {
+            CAPTURE(i);
+            FrameRenderer fresh(face, options);
+            CHECK(running.render_frame_rgba(sequence[i]) == fresh.render_frame_rgba(sequence[i]));
+        }
+    }
+
     TEST_CASE("the announcer layout stands the face on the frame's bottom edge over the background") {
         const FaceModel face = FaceModel::default_face();
         FrameOptions options;

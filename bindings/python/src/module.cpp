@@ -25,6 +25,7 @@ Example:
     bind_rotation3d(m);
     bind_face_state(m);
     bind_svg_animator(m);
+    bind_frame_renderer(m);
     bind_transcript(m);
     bind_timeline_json(m);
     bind_timing_formats(m);

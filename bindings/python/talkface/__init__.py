@@ -15,6 +15,7 @@ Cancelled.
 """
 
 from ._talkface import (
+    AlphaMode,
     audio_duration_s,
     export_format_for_path,
     export_format_names,
@@ -42,6 +43,9 @@ from ._talkface import (
     FaceModel,
     FaceState,
     FileError,
+    FrameLayout,
+    FrameOptions,
+    FrameRenderer,
     InvalidArgument,
     LiftedFace,
     LipSyncOptions,
@@ -169,6 +173,7 @@ def default_face() -> FaceModel:
 
 
 __all__ = [
+    "AlphaMode",
     "audio_duration_s",
     "export_format_for_path",
     "export_format_names",
@@ -196,6 +201,9 @@ __all__ = [
     "FaceModel",
     "FaceState",
     "FileError",
+    "FrameLayout",
+    "FrameOptions",
+    "FrameRenderer",
     "InvalidArgument",
     "LiftedFace",
     "LipSyncOptions",

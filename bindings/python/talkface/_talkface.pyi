@@ -244,6 +244,52 @@ class SvgAnimator:
     def write_animation_svg(self, path: _PathLike, animation: Animation,
                             options: SvgAnimationOptions = ...) -> None: ...
 
+class FrameLayout(enum.Enum):
+    announcer = 0
+    face = 1
+
+class AlphaMode(enum.Enum):
+    straight = 0
+    premultiplied = 1
+
+class FrameOptions:
+    width_px: int
+    height_px: int
+    layout: FrameLayout
+    background: str | None
+    draw_clothes: bool
+    clothes: str
+    stroke_width_in_d: float
+    face_origin_px: tuple[float, float] | None
+    face_d_px: float
+    alpha: AlphaMode
+    def __init__(
+        self,
+        width_px: int = 1280,
+        height_px: int = 720,
+        layout: FrameLayout = ...,
+        background: str | None = "#1d3b5c",
+        draw_clothes: bool = True,
+        clothes: str = "#2f4f7f",
+        stroke_width_in_d: float = 0.025,
+        face_origin_px: tuple[float, float] | None = None,
+        face_d_px: float = 0.0,
+        alpha: AlphaMode = ...,
+    ) -> None: ...
+
+class FrameRenderer:
+    def __init__(self, face: FaceModel, options: FrameOptions = ...) -> None: ...
+    @property
+    def face(self) -> FaceModel: ...
+    @property
+    def options(self) -> FrameOptions: ...
+    @property
+    def width_px(self) -> int: ...
+    @property
+    def height_px(self) -> int: ...
+    def render_frame_rgba(self, state: FaceState) -> numpy.typing.NDArray[numpy.uint8]: ...
+    def set_background_image(self, image: numpy.typing.NDArray[numpy.uint8]) -> None: ...
+
 class AnimationEncoding(enum.Enum):
     keyframes = 0
     frames = 1
