@@ -568,14 +568,26 @@ TF_API tf_status tf_timeline_warning_count(const tf_timeline *timeline, size_t *
  * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or an argument is NULL. */
 TF_API tf_status tf_timeline_warning(const tf_timeline *timeline, size_t index, const char **out_warning);
 
-/* The timeline as the `align` JSON document (SPEC "Contracts"), UTF-8:
- * {"sentences":[{"text","start","end"}], "syllables":[{"text","pinyin","start","end","sentence",
- * "final_start" (only when known),"confidence","pause_after"}], "duration":s, "warnings":[...]},
- * numbers in shortest round-trip form. Release *out_json with tf_free; *out_len (if not NULL) is
- * its length in bytes without the NUL. talkface reads no JSON in C: parse the document with your
- * JSON library and rebuild it with tf_timeline_create and the add functions.
+/* The timeline as the timeline JSON (docs/timeline-format.md; the `align` document of SPEC
+ * "Contracts", versioned), UTF-8: {"version":1, "sentences":[{"text","start","end"}],
+ * "syllables":[{"text","pinyin","start","end","sentence","final_start" (only when known),
+ * "confidence","pause_after"}], "duration":s, "warnings":[...]}, numbers in shortest round-trip
+ * form, so that tf_timeline_from_json reads back the same timeline. Release *out_json with
+ * tf_free; *out_len (if not NULL) is its length in bytes without the NUL.
  * Errors: TF_ERR_INVALID_ARGUMENT if timeline or out_json is NULL. */
 TF_API tf_status tf_timeline_to_json(const tf_timeline *timeline, char **out_json, size_t *out_len);
+
+/* Reads the timeline JSON (`length` bytes of UTF-8) into a new timeline *out; source_name (may be
+ * NULL: "<timeline>") names it in messages. Keys left out take their defaults (times 0).
+ * Errors: TF_ERR_PARSE naming source:line:column and the item ("syllables[3].start") for text that
+ *         is not JSON, a missing or mistyped key, a negative time, an end before its start, or a
+ *         "version" newer than this build reads; TF_ERR_INVALID_ARGUMENT if json or out is NULL. */
+TF_API tf_status tf_timeline_from_json(const char *json, size_t length, const char *source_name,
+                                       tf_timeline **out);
+
+/* tf_timeline_from_json of a file. Errors: TF_ERR_FILE naming the path if it cannot be read;
+ * TF_ERR_PARSE as tf_timeline_from_json; TF_ERR_INVALID_ARGUMENT if path or out is NULL. */
+TF_API tf_status tf_timeline_load_json(const char *path, tf_timeline **out);
 
 /* 1 if `syllable` is a legal Mandarin syllable in numbered pinyin ("hang2", "lv4", "ma5"), else 0
  * (also for NULL). */

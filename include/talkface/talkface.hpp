@@ -35,6 +35,7 @@
 #include "talkface/speech_aligner.hpp"
 #include "talkface/svg_animator.hpp"
 #include "talkface/timeline.hpp"
+#include "talkface/timeline_json.hpp"
 #include "talkface/transcript.hpp"
 #include "talkface/types.hpp"
 #include "talkface/version.h"

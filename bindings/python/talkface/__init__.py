@@ -56,6 +56,7 @@ from ._talkface import (
     SvgAnimator,
     SvgOptions,
     Syllable,
+    TIMELINE_JSON_VERSION,
     Timeline,
     UserEventMode,
     WebLink,
@@ -79,6 +80,7 @@ from ._talkface import (
     key_frames_json,
     key_frames_tsv,
     lift_face,
+    load_timeline_json,
     load_transcript,
     mandarin_syllables,
     mouth_controls,
@@ -91,8 +93,11 @@ from ._talkface import (
     project_face,
     read_transcript,
     rotation_origin,
+    save_timeline_json,
     syllable_mouth_shapes,
     timeline_end_s,
+    timeline_from_json,
+    timeline_to_json,
     to_image,
     to_local,
     validate_expression_events,
@@ -100,7 +105,6 @@ from ._talkface import (
     write_alignment_plot_svg,
     write_web_page,
 )
-from .timeline_json import timeline_from_json, timeline_to_json
 
 
 def default_face() -> FaceModel:
@@ -155,6 +159,7 @@ __all__ = [
     "SvgAnimator",
     "SvgOptions",
     "Syllable",
+    "TIMELINE_JSON_VERSION",
     "Timeline",
     "UserEventMode",
     "WebLink",
@@ -179,6 +184,7 @@ __all__ = [
     "key_frames_json",
     "key_frames_tsv",
     "lift_face",
+    "load_timeline_json",
     "load_transcript",
     "mandarin_syllables",
     "mouth_controls",
@@ -191,6 +197,7 @@ __all__ = [
     "project_face",
     "read_transcript",
     "rotation_origin",
+    "save_timeline_json",
     "syllable_mouth_shapes",
     "timeline_end_s",
     "timeline_from_json",
