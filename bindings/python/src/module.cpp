@@ -32,5 +32,4 @@ Example:
     bind_animation(m);
     bind_speech_aligner(m);
     bind_web_page(m);
-    bind_photo(m);
 }
