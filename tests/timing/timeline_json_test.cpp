@@ -186,7 +186,7 @@ TEST_SUITE("timeline JSON") {
                               R"({"text":"y","first_syllable":0,"syllable_count":1}]})")
                   .find("written_forms[1]: covers syllables 0..0") != std::string::npos);
         CHECK(error_of(head + R"({"text":"x","first_syllable":0,"syllable_count":0}]})") ==
-              "t.json:4:62: written_forms[0].syllable_count: expected a whole number >= 1, found 0");
+              "t.json:4:66: written_forms[0].syllable_count: expected a whole number >= 1, found 0");
         CHECK(error_of(head + R"({"first_syllable":0,"syllable_count":1}]})") ==
               "t.json:4:18: written_forms[0]: \"text\" is missing");
     }
