@@ -233,6 +233,53 @@ tf_status tf_timeline_warning(const tf_timeline* timeline, size_t index, const c
     });
 }
 
+tf_status tf_timeline_written_form_count(const tf_timeline* timeline, size_t* out_count) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        require_non_null(out_count, "out_count");
+        *out_count = timeline->timeline.written_forms.size();
+    });
+}
+
+tf_status tf_timeline_written_form(const tf_timeline* timeline, size_t index, const char** out_text,
+                                   size_t* out_first_syllable, size_t* out_syllable_count) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        const auto& form = item_at(timeline->timeline.written_forms, index, "written form");
+        if (out_text != nullptr) *out_text = form.text.c_str();
+        if (out_first_syllable != nullptr) *out_first_syllable = form.first_syllable;
+        if (out_syllable_count != nullptr) *out_syllable_count = form.syllable_count;
+    });
+}
+
+tf_status tf_timeline_add_written_form(tf_timeline* timeline, const char* text, size_t first_syllable,
+                                       size_t syllable_count) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        require_non_null(text, "text");
+        auto& timeline_value = timeline->timeline;
+        if (*text == '\0') throw InvalidArgument("text", "expected the form as written, got an empty string");
+        if (syllable_count == 0) throw InvalidArgument("syllable_count", "expected at least 1, got 0");
+        const size_t syllables = timeline_value.syllables.size();
+        if (first_syllable >= syllables || syllable_count > syllables - first_syllable) {
+            throw InvalidArgument("first_syllable", "syllables " + std::to_string(first_syllable) + ".." +
+                                                        std::to_string(first_syllable + syllable_count - 1) +
+                                                        " are not all among the " + std::to_string(syllables) +
+                                                        " syllables added so far");
+        }
+        if (!timeline_value.written_forms.empty()) {
+            const auto& previous = timeline_value.written_forms.back();
+            const size_t previous_end = previous.first_syllable + previous.syllable_count;
+            if (first_syllable < previous_end) {
+                throw InvalidArgument("first_syllable", "expected " + std::to_string(previous_end) +
+                                                            " or more (forms come in order, apart), got " +
+                                                            std::to_string(first_syllable));
+            }
+        }
+        timeline_value.written_forms.push_back({text, first_syllable, syllable_count});
+    });
+}
+
 tf_status tf_timeline_to_json(const tf_timeline* timeline, char** out_json, size_t* out_len) {
     return guard([&] {
         require_non_null(timeline, "timeline");

@@ -710,6 +710,24 @@ TF_API int tf_is_valid_pinyin(const char *syllable);
 TF_API tf_status tf_syllable_mouth_shapes(const char *pinyin, tf_mouth_shape *out, size_t capacity,
                                           size_t *out_count);
 
+/* The number of written forms the reader read by rule: numbers, dates, amounts, letters, English
+ * words (docs/written-forms.md). Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_timeline_written_form_count(const tf_timeline *timeline, size_t *out_count);
+
+/* Written form `index`: its text as the page shows it ("2026年"; borrowed, valid while the
+ * timeline lives unmodified), the index of its first syllable and how many syllables it became
+ * ("2026年": 5, 二零二六年). Any out pointer may be NULL.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or timeline is NULL. */
+TF_API tf_status tf_timeline_written_form(const tf_timeline *timeline, size_t index, const char **out_text,
+                                          size_t *out_first_syllable, size_t *out_syllable_count);
+
+/* Appends a written form (text copied) covering syllables first_syllable ..
+ * first_syllable + syllable_count - 1, after the forms already there (to rebuild a timeline).
+ * Errors: TF_ERR_INVALID_ARGUMENT if timeline or text is NULL, text is empty, syllable_count is
+ * 0, or the syllables are past the last one or start before the previous form's end. */
+TF_API tf_status tf_timeline_add_written_form(tf_timeline *timeline, const char *text, size_t first_syllable,
+                                              size_t syllable_count);
+
 /* ---------------------------------------------------------------------------------------------
  * Speech alignment (SPEC step 4, thesis chapter 3): a recorded speech and its transcript become a
  * timeline with every sentence's and syllable's times (the `align` JSON of SPEC "Contracts").

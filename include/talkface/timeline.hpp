@@ -21,9 +21,13 @@ struct Sentence {
     bool starts_paragraph = false;
 };
 
-/// One syllable: one character of the transcript that has a reading.
+/// One syllable: one character of the transcript that has a reading, or one syllable of a form
+/// read by rule (a number, letters, an English word: see WrittenForm).
 struct Syllable {
-    std::string text;      ///< the character (or the pinyin syllable when the transcript is pinyin)
+    /// The character (or the pinyin syllable when the transcript is pinyin); for a syllable of a
+    /// WrittenForm, what is said: the character of a number's reading ("二" of 2026), the toneless
+    /// pinyin of a letter or an English syllable ("ei" of AI).
+    std::string text;
     std::string pinyin;    ///< numbered pinyin, u-umlaut written v: "lv4", "hang2", "ma5"
     std::size_t sentence = 0;  ///< index into Timeline::sentences
     double start_s = 0.0;  ///< where its initial consonant starts (SPEC "Alignment")
@@ -35,6 +39,16 @@ struct Syllable {
     bool pause_after = false;
 };
 
+/// A stretch of the transcript read by rule rather than character by character (a number, a date,
+/// a time, an amount, letters, an English word) and the syllables it became, so that a user can
+/// check "2026年 -> 二零二六年 er4 ling2 er4 liu4 nian2" before aligning. Syllables that no form
+/// covers are read from their own character.
+struct WrittenForm {
+    std::string text;                ///< as the page shows it, UTF-8: "2026年", "3:30", "iPhone"
+    std::size_t first_syllable = 0;  ///< index into Timeline::syllables of its first syllable
+    std::size_t syllable_count = 0;  ///< how many syllables it became (at least 1)
+};
+
 /// Sentences and syllables in transcript order, with what was skipped.
 struct Timeline {
     std::vector<Sentence> sentences;
@@ -43,6 +57,10 @@ struct Timeline {
     /// message per item naming it and where it stands; never silently dropped.
     std::vector<std::string> warnings;
     double duration_s = 0.0;  ///< length of the audio, seconds (0 before alignment)
+    /// The written forms read by rule, in transcript order, none overlapping (empty for a
+    /// timeline from a source that does not keep them). Last, so that aggregate initialisers of
+    /// the members above keep their meaning.
+    std::vector<WrittenForm> written_forms;
 };
 
 }  // namespace v0

@@ -21,7 +21,7 @@ inline namespace v0 {
 /// How a transcript is read.
 struct TranscriptOptions {
     /// Read runs of Latin letters that spell Mandarin syllables ("ni3 hao3", "ni3hao3", "nihao")
-    /// as syllables; when false they are reported like any other character without a reading.
+    /// as syllables; when false they are read as letters or English words like any other Latin.
     bool read_pinyin = true;
 };
 
@@ -39,18 +39,27 @@ struct TranscriptOptions {
 ///   may be left out (tone 5).
 /// - A pinyin token gives one syllable per syllable it spells: text as written, pinyin
 ///   normalised ("lü4", "lu:4" -> "lv4"; no tone -> 5); an apostrophe separates syllables (xi'an).
-/// - Characters without a reading (Latin letters that are not pinyin, digits, symbols, Han
-///   characters the table lacks) are not syllables: each adds a Timeline::warnings entry
-///   `source:line:column: "A" (U+0041) has no Mandarin reading; skipped`. Punctuation other
-///   than the marks above (quotes, brackets, dashes) stays in Sentence::text silently.
+/// - Written forms are read as a native reader says them (docs/written-forms.md): numbers,
+///   dates, clock times, percentages, fractions, ranges, money, units and phone numbers
+///   (2026年 二零二六年, 2本书 两本书, 3:30 三点三十分, 85% 百分之八十五, ¥199 一百九十九元,
+///   13812345678 幺三八...), acronyms letter by letter (AI ei ai), English words by a pronouncing
+///   dictionary (iPhone ai feng). Each becomes a WrittenForm in Timeline::written_forms beside
+///   its syllables. A fix right after a form replaces its reading, in characters or numbered
+///   pinyin: 2026{两千零二十六}, OK{ou1 kei4}. A number of more than 16 digits is read digit by
+///   digit and a word the dictionary lacks letter by letter, each with a warning.
+/// - Characters without a reading (symbols, Han characters the table lacks) are not syllables:
+///   each adds a Timeline::warnings entry `source:line:column: "★" (U+2605) has no Mandarin
+///   reading; skipped`. Punctuation other than the marks above (quotes, brackets, dashes) stays
+///   in Sentence::text silently.
 /// Columns count characters (code points), not bytes; lines and columns are 1-based.
 /// Sentence::text is the sentence as written, fixes removed; times are all 0.
 ///
 /// \param utf8_text the transcript; a leading byte order mark is skipped
 /// \param source_name names the text in messages (a path, or "<transcript>")
 /// \throws talkface::ParseError on invalid UTF-8 (naming the byte offset and its line:column),
-///         on a reading fix that is not a Mandarin syllable (行{hxng2}), on a fix with no
-///         character before it, or on an unclosed "{".
+///         on a reading fix that is not a Mandarin syllable (行{hxng2}) or, after a written form,
+///         neither characters nor pinyin (5{★}), on a fix with no character or form right before
+///         it, or on an unclosed "{".
 /// Thread safety: may be called from several threads at once (the tables are read-only).
 TALKFACE_API Timeline read_transcript(std::string_view utf8_text, const TranscriptOptions& options = {},
                                       const std::string& source_name = "<transcript>");

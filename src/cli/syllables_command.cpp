@@ -19,14 +19,37 @@ struct SyllablesOptions {
     bool no_pinyin_input = false;
 };
 
+// One line per character, and one per written form read by rule, with what it became:
+//   2026年 -> 二零二六年 er4 ling2 er4 liu4 nian2
 void print_plain(const talkface::Timeline& timeline) {
     std::size_t next = 0;
+    std::size_t next_form = 0;
     for (std::size_t index = 0; index < timeline.sentences.size(); ++index) {
         std::cout << "sentence " << index + 1 << ": " << timeline.sentences[index].text << '\n';
-        for (; next < timeline.syllables.size() && timeline.syllables[next].sentence == index; ++next) {
-            const auto& syllable = timeline.syllables[next];
-            std::cout << "  " << syllable.text << '\t' << syllable.pinyin
-                      << (syllable.pause_after ? "\t(pause)" : "") << '\n';
+        while (next < timeline.syllables.size() && timeline.syllables[next].sentence == index) {
+            const talkface::WrittenForm* form =
+                next_form < timeline.written_forms.size() && timeline.written_forms[next_form].first_syllable == next
+                    ? &timeline.written_forms[next_form]
+                    : nullptr;
+            const std::size_t count = form != nullptr ? form->syllable_count : 1;
+            std::string said;
+            std::string readings;
+            for (std::size_t k = next; k < next + count && k < timeline.syllables.size(); ++k) {
+                // Characters run together (二零二六年), Latin syllables get a space (ai feng).
+                const bool is_wide = (static_cast<unsigned char>(timeline.syllables[k].text.front()) & 0x80U) != 0;
+                if (!said.empty() && !is_wide) said += ' ';
+                said += timeline.syllables[k].text;
+                readings += (readings.empty() ? "" : " ") + timeline.syllables[k].pinyin;
+            }
+            const bool pause = timeline.syllables[std::min(next + count, timeline.syllables.size()) - 1].pause_after;
+            if (form != nullptr) {
+                std::cout << "  " << form->text << " -> " << said << '\t' << readings;
+                ++next_form;
+            } else {
+                std::cout << "  " << said << '\t' << readings;
+            }
+            std::cout << (pause ? "\t(pause)" : "") << '\n';
+            next += count;
         }
     }
 }
@@ -61,7 +84,7 @@ void setup_syllables_command(CLI::App& app) {
                         "Print the timeline JSON without times: {\"version\":1, \"sentences\":[{text}], "
                         "\"syllables\":[{text,pinyin,sentence,pause_after}], \"warnings\":[...]}");
     syllables->add_flag("--no-pinyin-input", options->no_pinyin_input,
-                        "Report Latin letters as unreadable instead of reading them as pinyin");
+                        "Read Latin letters as letters or English words, never as pinyin");
     syllables->callback([options] { run_syllables(*options); });
 }
 

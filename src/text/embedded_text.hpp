@@ -20,6 +20,9 @@ EmbeddedText readings_text();
 EmbeddedText syllables_text();
 // "詞語\tci2 yu3": a word and the reading of each of its characters (tools/make_phrases.py).
 EmbeddedText phrases_text();
+// "word\tsyl1 syl2": a lowercase English word and its Mandarin-like syllables, sorted by byte
+// value (tools/make_english.py).
+EmbeddedText english_text();
 
 }  // namespace talkface::detail
 

@@ -9,83 +9,24 @@
 #include <vector>
 
 #include "common/atomic_file.hpp"
-#include "text/reading_tables.hpp"
 #include "talkface/errors.hpp"
+#include "text/code_points.hpp"
+#include "text/latin_words.hpp"
+#include "text/reading_tables.hpp"
+#include "text/written_numbers.hpp"
 
 namespace talkface {
 inline namespace v0 {
 
 namespace {
 
-struct CodePoint {
-    char32_t value = 0;
-    std::string_view text;  // its UTF-8 bytes in the transcript
-    int line = 1;
-    int column = 1;  // in characters
-};
-
-std::vector<CodePoint> decode_utf8(std::string_view text, const std::string& source_name) {
-    std::vector<CodePoint> code_points;
-    code_points.reserve(text.size());
-    int line = 1;
-    int column = 1;
-    std::size_t offset = text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;
-    while (offset < text.size()) {
-        const auto lead = static_cast<unsigned char>(text[offset]);
-        std::size_t length = 1;
-        char32_t value = lead;
-        char32_t minimum = 0;
-        if (lead >= 0xF0 && lead <= 0xF4) {
-            length = 4;
-            value = lead & 0x07U;
-            minimum = 0x10000;
-        } else if (lead >= 0xE0 && lead <= 0xEF) {
-            length = 3;
-            value = lead & 0x0FU;
-            minimum = 0x800;
-        } else if (lead >= 0xC2 && lead <= 0xDF) {
-            length = 2;
-            value = lead & 0x1FU;
-            minimum = 0x80;
-        } else if (lead >= 0x80) {
-            length = 0;  // a continuation byte, or C0 C1 F5..FF, which never start a character
-        }
-        for (std::size_t i = 1; length > 0 && i < length; ++i) {
-            const auto next = offset + i < text.size() ? static_cast<unsigned char>(text[offset + i]) : 0U;
-            if ((next & 0xC0U) != 0x80U) {
-                length = 0;
-            } else {
-                value = (value << 6) | (next & 0x3FU);
-            }
-        }
-        // Overlong forms, UTF-16 surrogates and values past U+10FFFF are not characters.
-        if (length == 0 || value < minimum || (value >= 0xD800 && value <= 0xDFFF) || value > 0x10FFFF) {
-            char byte_text[8];
-            std::snprintf(byte_text, sizeof byte_text, "0x%02X", static_cast<unsigned>(lead));
-            throw ParseError(source_name, line, column, "byte offset " + std::to_string(offset),
-                             std::string("invalid UTF-8: the sequence starting with byte ") + byte_text +
-                                 " is not a character; save the transcript as UTF-8");
-        }
-        code_points.push_back({value, text.substr(offset, length), line, column});
-        offset += length;
-        if (value == '\n') {
-            ++line;
-            column = 1;
-        } else {
-            ++column;
-        }
-    }
-    return code_points;
-}
+using detail::ascii_form;
+using detail::CodePoint;
+using detail::decode_utf8;
 
 bool is_space(char32_t c) {
     return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f' || c == 0xA0 ||
            c == 0x3000 || c == 0xFEFF;
-}
-
-// Full-width ASCII forms (！？，Ａ１％) behave as their ASCII counterparts.
-char32_t ascii_form(char32_t c) {
-    return c >= 0xFF01 && c <= 0xFF5E ? c - 0xFEE0 : c;
 }
 
 // Two line breaks with nothing but spaces between them.
@@ -226,9 +167,22 @@ bool looks_like_pinyin(const std::vector<CodePoint>& token) {
 }
 
 struct HanCharacter {
-    const CodePoint* code_point;
+    const CodePoint* code_point;  // where it stands in the transcript; nullptr in a form's reading
+    std::string_view text;
     std::string fix;  // a reading fix, normalised; empty if none
 };
+
+bool is_ascii_letter(char32_t c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+
+bool is_ascii_capital(char32_t c) {
+    return c >= 'A' && c <= 'Z';
+}
+
+std::string toneless_of(const std::string& pinyin) {
+    return pinyin.substr(0, pinyin.size() - 1);
+}
 
 class TranscriptReader {
 public:
@@ -259,11 +213,16 @@ private:
         if (tables_.character_readings.count(c.text) != 0) {
             if (sentence_ended_) close_sentence();
             append_text(c.text);
-            run_.push_back({&c, {}});
+            run_.push_back({&c, c.text, {}});
             return i + 1;
         }
         flush_run();
         if (sentence_ended_ && !(ends_sentence(c.value) || closes_quote(c.value))) close_sentence();
+        if (auto form = detail::read_number_form(text, i)) {
+            if (!form->warning.empty()) warn(c, "\"" + written_text(text, i, form->end) + "\": " + form->warning);
+            add_form(text, i, form->end, read_words(form->words));
+            return form->end;
+        }
         if (ends_sentence(c.value)) {
             append_text(c.text);
             sentence_ended_ = true;
@@ -277,7 +236,7 @@ private:
             }
             return i + 1;
         }
-        if (is_pinyin_letter(c.value) || is_digit(c.value)) return read_token(text, i);
+        if (is_pinyin_letter(c.value)) return read_token(text, i);
         append_text(c.text);
         if (!is_silent_punctuation(c.value)) warn_no_reading(c);
         return i + 1;
@@ -289,19 +248,94 @@ private:
                                            text.begin() + static_cast<std::ptrdiff_t>(end));
         std::optional<std::vector<WrittenSyllable>> syllables;
         if (options_.read_pinyin && looks_like_pinyin(token)) syllables = split_pinyin(token);
+        if (!syllables) return read_latin(text, start);
         for (const auto& c : token) append_text(c.text);
-        if (!syllables) {
-            for (const auto& c : token) {
-                if (!is_silent_punctuation(c.value)) warn_no_reading(c);
-            }
-            return end;
-        }
         for (auto& syllable : *syllables)
             add_syllable(std::move(syllable.written), std::move(syllable.pinyin));
         return end;
     }
 
-    // 行{hang2}: overrides the reading of the character right before the brace.
+    // Latin letters that are not pinyin: an acronym (all capitals) letter by letter, a word by
+    // the English dictionary, else by its parts (WeChat: we chat), else letter by letter with a
+    // warning. A hyphenated word the dictionary has whole (Wi-Fi) is one form.
+    std::size_t read_latin(const std::vector<CodePoint>& text, std::size_t start) {
+        auto letters_end = [&](std::size_t from) {
+            while (from < text.size() && is_ascii_letter(text[from].value)) ++from;
+            return from;
+        };
+        auto end = letters_end(start);
+        if (end == start) {  // ü or Ü alone
+            append_text(text[start].text);
+            warn_no_reading(text[start]);
+            return start + 1;
+        }
+        std::string word = written_text(text, start, end);
+        if (end + 1 < text.size() && text[end].value == '-' && is_ascii_letter(text[end + 1].value)) {
+            const auto second_end = letters_end(end + 1);
+            const auto joined = word + written_text(text, end + 1, second_end);
+            if (std::any_of(joined.begin(), joined.end(), [](char l) { return l >= 'a' && l <= 'z'; }) &&
+                detail::english_word_syllables(joined)) {
+                word = joined;
+                end = second_end;
+            }
+        }
+        std::vector<std::string> pinyin;
+        const bool is_acronym = std::all_of(word.begin(), word.end(), [](char l) { return is_ascii_capital(l); });
+        if (is_acronym) {
+            pinyin = detail::letter_syllables(word);
+        } else if (auto found = detail::english_word_syllables(word)) {
+            pinyin = std::move(*found);
+        } else {
+            pinyin = read_word_parts(word, text[start]);
+        }
+        std::vector<Syllable> syllables;
+        for (const auto& reading : pinyin) syllables.push_back(make_syllable(toneless_of(reading), reading));
+        add_form(text, start, end, std::move(syllables));
+        return end;
+    }
+
+    // A word the dictionary lacks, by the parts its capitals mark (WeChat, YouTube), or as two
+    // words it has (Facebook); a part still unknown is spelled, with a warning.
+    std::vector<std::string> read_word_parts(const std::string& word, const CodePoint& at) {
+        std::vector<std::string> parts;
+        for (std::size_t i = 0; i < word.size(); ++i) {
+            const bool starts_part = i == 0 || (is_ascii_capital(static_cast<char32_t>(word[i])) &&
+                                                !is_ascii_capital(static_cast<char32_t>(word[i - 1])));
+            if (starts_part) parts.emplace_back();
+            parts.back() += word[i];
+        }
+        std::vector<std::string> pinyin;
+        for (const auto& part : parts) {
+            auto found = parts.size() > 1 ? detail::english_word_syllables(part) : std::nullopt;
+            if (!found) found = read_compound(part);
+            if (!found) {
+                warn(at, "\"" + part + "\" is not in the English pronouncing dictionary; read letter by letter (fix it in place: " +
+                             part + "{...})");
+                found = detail::letter_syllables(part);
+            }
+            pinyin.insert(pinyin.end(), found->begin(), found->end());
+        }
+        return pinyin;
+    }
+
+    // A word the dictionary lacks as two words it has, the longer first part first (facebook:
+    // face book, google: go ogle): closer in length and sound than spelling it.
+    static std::optional<std::vector<std::string>> read_compound(const std::string& word) {
+        constexpr std::size_t kShortestPart = 2;
+        for (auto split = word.size() < kShortestPart ? 0 : word.size() - kShortestPart; split >= kShortestPart;
+             --split) {
+            auto first = detail::english_word_syllables(word.substr(0, split));
+            if (!first) continue;
+            auto second = detail::english_word_syllables(word.substr(split));
+            if (!second) continue;
+            first->insert(first->end(), second->begin(), second->end());
+            return first;
+        }
+        return std::nullopt;
+    }
+
+    // 行{hang2}: overrides the reading of the character right before the brace; 2026{两千零二十六}
+    // or iPhone{ai4 feng4}: the reading of the written form right before it.
     std::size_t read_fix(const std::vector<CodePoint>& text, std::size_t open) {
         const auto& brace = text[open];
         auto close = open + 1;
@@ -314,11 +348,17 @@ private:
             throw ParseError(source_name_, brace.line, brace.column, "reading fix \"{" + written + "\"",
                              "no closing \"}\" on this line; write a fix as 行{hang2}");
         }
+        const bool follows_form = last_form_end_ == open && pending_space_.empty();
+        if (follows_form) {
+            fix_form(written, brace);
+            return close + 1;
+        }
         const bool follows_character =
             !run_.empty() && pending_space_.empty() && run_.back().code_point == &text[open - 1];
         if (!follows_character) {
             throw ParseError(source_name_, brace.line, brace.column, "reading fix \"{" + written + "}\"",
-                             "a fix must directly follow the Chinese character it reads, as in 行{hang2}");
+                             "a fix must directly follow the Chinese character or the written form (a number, "
+                             "a Latin word) it reads, as in 行{hang2} or 2026{两千零二十六}");
         }
         auto pinyin = detail::normalise_pinyin(written);
         if (pinyin.empty()) {
@@ -333,16 +373,69 @@ private:
         return close + 1;
     }
 
-    // Reads the pending run of Chinese characters: longest phrase first, then each character's
+    // Replaces the syllables of the last written form by the fix's: Chinese characters (read by
+    // the tables), numbered pinyin syllables, or both, spaces between them ignored.
+    void fix_form(const std::string& fix, const CodePoint& brace) {
+        auto& form = timeline_.written_forms.back();
+        const auto where = "reading fix \"{" + fix + "}\" for \"" + form.text + "\"";
+        const auto fix_text = decode_utf8(fix, source_name_);
+        std::vector<Syllable> syllables;
+        std::vector<HanCharacter> run;
+        auto flush = [&] {
+            const auto pinyin = read_han(run);
+            for (std::size_t k = 0; k < run.size(); ++k) syllables.push_back(make_syllable(std::string(run[k].text), pinyin[k]));
+            run.clear();
+        };
+        for (std::size_t i = 0; i < fix_text.size();) {
+            const auto& c = fix_text[i];
+            if (is_space(c.value)) {
+                flush();
+                ++i;
+            } else if (tables_.character_readings.count(c.text) != 0) {
+                run.push_back({nullptr, c.text, {}});
+                ++i;
+            } else if (is_pinyin_letter(c.value)) {
+                flush();
+                const auto end = end_of_token(fix_text, i);
+                const std::vector<CodePoint> token(fix_text.begin() + static_cast<std::ptrdiff_t>(i),
+                                                   fix_text.begin() + static_cast<std::ptrdiff_t>(end));
+                const auto split = split_pinyin(token);
+                if (!split) {
+                    throw ParseError(source_name_, brace.line, brace.column, where,
+                                     "\"" + written_text(fix_text, i, end) +
+                                         "\" is not Mandarin in numbered pinyin; write the reading in Chinese "
+                                         "characters or pinyin, e.g. 2026{两千零二十六} or OK{ou1 kei4}");
+                }
+                for (const auto& syllable : *split) syllables.push_back(make_syllable(syllable.written, syllable.pinyin));
+                i = end;
+            } else {
+                throw ParseError(source_name_, brace.line, brace.column, where,
+                                 describe_character(c) +
+                                     " is neither a Chinese character with a reading nor numbered pinyin");
+            }
+        }
+        flush();
+        if (syllables.empty()) {
+            throw ParseError(source_name_, brace.line, brace.column, where,
+                             "the fix is empty; write how the form is said, e.g. 2026{两千零二十六}");
+        }
+        timeline_.syllables.resize(form.first_syllable);
+        form.syllable_count = syllables.size();
+        for (auto& syllable : syllables) timeline_.syllables.push_back(std::move(syllable));
+        last_form_end_.reset();
+    }
+
+    // The readings of a run of Chinese characters: longest phrase first, then each character's
     // most frequent reading; fixes win over both.
-    void flush_run() {
-        for (std::size_t i = 0; i < run_.size();) {
+    std::vector<std::string> read_han(const std::vector<HanCharacter>& run) const {
+        std::vector<std::string> readings_of_run;
+        for (std::size_t i = 0; i < run.size();) {
             std::size_t matched = 1;
             const std::vector<std::string_view>* readings = nullptr;
-            for (auto length = std::min(tables_.longest_phrase_characters, run_.size() - i); length >= 2;
+            for (auto length = std::min(tables_.longest_phrase_characters, run.size() - i); length >= 2;
                  --length) {
                 std::string phrase;
-                for (std::size_t k = i; k < i + length; ++k) phrase += run_[k].code_point->text;
+                for (std::size_t k = i; k < i + length; ++k) phrase += run[k].text;
                 const auto found = tables_.phrase_readings.find(phrase);
                 if (found != tables_.phrase_readings.end() && found->second.size() == length) {
                     readings = &found->second;
@@ -351,37 +444,82 @@ private:
                 }
             }
             for (std::size_t k = 0; k < matched; ++k) {
-                const auto& character = run_[i + k];
+                const auto& character = run[i + k];
                 std::string pinyin = character.fix;
                 if (pinyin.empty()) {
-                    pinyin =
-                        readings != nullptr
-                            ? std::string((*readings)[k])
-                            : std::string(tables_.character_readings.at(character.code_point->text).front());
+                    pinyin = readings != nullptr ? std::string((*readings)[k])
+                                                 : std::string(tables_.character_readings.at(character.text).front());
                     check_table_reading(character, pinyin);
                 }
-                add_syllable(std::string(character.code_point->text), std::move(pinyin));
+                readings_of_run.push_back(std::move(pinyin));
             }
             i += matched;
         }
+        return readings_of_run;
+    }
+
+    void flush_run() {
+        const auto readings = read_han(run_);
+        for (std::size_t k = 0; k < run_.size(); ++k) add_syllable(std::string(run_[k].text), readings[k]);
         run_.clear();
+    }
+
+    // The syllables of a form's reading in words (二零二六年), each character read by the tables.
+    std::vector<Syllable> read_words(const std::string& words) const {
+        const auto characters = decode_utf8(words, "<reading>");
+        std::vector<HanCharacter> run;
+        for (const auto& c : characters) {
+            if (tables_.character_readings.count(c.text) == 0) {
+                throw Error(ErrorCode::internal, "internal error (a bug in talkface): the reading \"" + words +
+                                                     "\" holds \"" + std::string(c.text) + "\", which has no reading");
+            }
+            run.push_back({nullptr, c.text, {}});
+        }
+        const auto readings = read_han(run);
+        std::vector<Syllable> syllables;
+        for (std::size_t k = 0; k < run.size(); ++k) syllables.push_back(make_syllable(std::string(run[k].text), readings[k]));
+        return syllables;
     }
 
     void check_table_reading(const HanCharacter& character, const std::string& pinyin) const {
         if (detail::normalise_pinyin(pinyin) != pinyin) {
             throw Error(ErrorCode::internal,
                         "internal error (a bug in talkface): the reading table gives \"" +
-                            std::string(character.code_point->text) + "\" the reading \"" + pinyin +
+                            std::string(character.text) + "\" the reading \"" + pinyin +
                             "\", not a Mandarin syllable");
         }
     }
 
-    void add_syllable(std::string text, std::string pinyin) {
+    Syllable make_syllable(std::string text, std::string pinyin) const {
         Syllable syllable;
         syllable.text = std::move(text);
         syllable.pinyin = std::move(pinyin);
         syllable.sentence = timeline_.sentences.size();
-        timeline_.syllables.push_back(std::move(syllable));
+        return syllable;
+    }
+
+    void add_syllable(std::string text, std::string pinyin) {
+        timeline_.syllables.push_back(make_syllable(std::move(text), std::move(pinyin)));
+    }
+
+    // A written form text[start, end) read as `syllables`: its text goes into the sentence as
+    // written, and the form is kept beside its syllables.
+    void add_form(const std::vector<CodePoint>& text, std::size_t start, std::size_t end, std::vector<Syllable> syllables) {
+        if (sentence_ended_) close_sentence();
+        const auto written = written_text(text, start, end);
+        append_text(written);
+        timeline_.written_forms.push_back({written, timeline_.syllables.size(), syllables.size()});
+        for (auto& syllable : syllables) {
+            syllable.sentence = timeline_.sentences.size();
+            timeline_.syllables.push_back(std::move(syllable));
+        }
+        last_form_end_ = end;
+    }
+
+    static std::string written_text(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+        std::string written;
+        for (auto k = start; k < end; ++k) written += text[k].text;
+        return written;
     }
 
     // Whitespace between two Chinese characters is layout (a wrapped line), not text; elsewhere
@@ -416,10 +554,11 @@ private:
         sentence_ended_ = false;
     }
 
-    void warn_no_reading(const CodePoint& c) {
-        timeline_.warnings.push_back(source_name_ + ":" + std::to_string(c.line) + ":" +
-                                     std::to_string(c.column) + ": " + describe_character(c) +
-                                     " has no Mandarin reading; skipped");
+    void warn_no_reading(const CodePoint& c) { warn(c, describe_character(c) + " has no Mandarin reading; skipped"); }
+
+    void warn(const CodePoint& c, const std::string& message) {
+        timeline_.warnings.push_back(source_name_ + ":" + std::to_string(c.line) + ":" + std::to_string(c.column) +
+                                     ": " + message);
     }
 
     const TranscriptOptions& options_;
@@ -427,6 +566,7 @@ private:
     const detail::ReadingTables& tables_;
     Timeline timeline_;
     std::vector<HanCharacter> run_;  // Chinese characters not yet read, in order
+    std::optional<std::size_t> last_form_end_;  // where the last written form ends in the text
     std::string sentence_text_;
     std::string pending_space_;
     bool sentence_ended_ = false;  // an end mark was seen; closing quotes may still follow

@@ -2,8 +2,10 @@
 // written and read from one table per item, so that a field added to timeline.hpp is one row here.
 #include "talkface/timeline_json.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <type_traits>
 #include <string>
 #include <vector>
 
@@ -55,6 +57,14 @@ public:
     bool flag(const JsonValue& value, const char* key) const {
         if (value.type != JsonValue::Type::boolean) fail(value, key, "expected true or false, found " + json_found(value));
         return value.boolean;
+    }
+
+    std::size_t count(const JsonValue& value, const char* key, std::size_t lowest) const {
+        if (value.type != JsonValue::Type::number || value.number < static_cast<double>(lowest) ||
+            value.number != std::floor(value.number) || value.number > 1e15) {
+            fail(value, key, "expected a whole number >= " + std::to_string(lowest) + ", found " + json_found(value));
+        }
+        return static_cast<std::size_t>(value.number);
     }
 
     std::size_t sentence_index(const JsonValue& value, const char* key) const {
@@ -140,6 +150,25 @@ const std::vector<Field<Syllable>>& syllable_fields() {
     return fields;
 }
 
+// A written form read by rule (a number, letters, an English word) and its syllables (issue 13).
+const std::vector<Field<WrittenForm>>& written_form_fields() {
+    static const std::vector<Field<WrittenForm>> fields = {
+        {"text", true, false, [](const WrittenForm& f) -> std::optional<std::string> { return json_quoted(f.text); },
+         [](const ItemReader& r, const JsonValue& v, WrittenForm& f) { f.text = r.text(v, "text"); }},
+        {"first_syllable", true, false,
+         [](const WrittenForm& f) -> std::optional<std::string> { return std::to_string(f.first_syllable); },
+         [](const ItemReader& r, const JsonValue& v, WrittenForm& f) {
+             f.first_syllable = r.count(v, "first_syllable", 0);
+         }},
+        {"syllable_count", true, false,
+         [](const WrittenForm& f) -> std::optional<std::string> { return std::to_string(f.syllable_count); },
+         [](const ItemReader& r, const JsonValue& v, WrittenForm& f) {
+             f.syllable_count = r.count(v, "syllable_count", 1);
+         }},
+    };
+    return fields;
+}
+
 template <typename Item>
 std::string item_json(const Item& item, const std::vector<Field<Item>>& fields, const TimelineJsonOptions& options) {
     std::string json = "{";
@@ -185,10 +214,12 @@ Item read_item(const JsonReader& json, const JsonValue& value, const std::string
         if (found != nullptr) field.read(reader, *found, result);
         else if (field.is_required) json.fail(value.offset, item, "\"" + std::string(field.key) + "\" is missing");
     }
-    if (result.end_s < result.start_s) {
-        json.fail(value.offset, item,
-                  "ends at " + json_number(result.end_s) + " s, before it starts (" + json_number(result.start_s) +
-                      " s)");
+    if constexpr (!std::is_same_v<Item, WrittenForm>) {
+        if (result.end_s < result.start_s) {
+            json.fail(value.offset, item,
+                      "ends at " + json_number(result.end_s) + " s, before it starts (" +
+                          json_number(result.start_s) + " s)");
+        }
     }
     return result;
 }
@@ -215,11 +246,16 @@ std::string timeline_to_json(const Timeline& timeline, const TimelineJsonOptions
     for (const Sentence& sentence : timeline.sentences) sentences.push_back(item_json(sentence, sentence_fields(), options));
     std::vector<std::string> syllables;
     for (const Syllable& syllable : timeline.syllables) syllables.push_back(item_json(syllable, syllable_fields(), options));
+    std::vector<std::string> written_forms;
+    for (const WrittenForm& form : timeline.written_forms) {
+        written_forms.push_back(item_json(form, written_form_fields(), options));
+    }
     std::vector<std::string> warnings;
     for (const std::string& warning : timeline.warnings) warnings.push_back(json_quoted(warning));
     std::string json = "{\"version\":" + std::to_string(kTimelineJsonVersion) + ",\n";
     json += "\"sentences\":" + list_json(sentences) + ",\n";
     json += "\"syllables\":" + list_json(syllables) + ",\n";
+    if (!written_forms.empty()) json += "\"written_forms\":" + list_json(written_forms) + ",\n";
     if (options.with_times) json += "\"duration\":" + json_number(timeline.duration_s) + ",\n";
     json += "\"warnings\":" + list_json(warnings) + "}\n";
     return json;
@@ -243,6 +279,25 @@ Timeline timeline_from_json(std::string_view utf8_text, const std::string& sourc
     for (std::size_t k = 0; k < syllables.items.size(); ++k) {
         timeline.syllables.push_back(read_item(json, syllables.items[k], "syllables[" + std::to_string(k) + "]",
                                                syllable_fields(), timeline.sentences.size()));
+    }
+    if (const JsonValue* forms = document.find("written_forms")) {
+        std::size_t covered = 0;  // forms come in order, apart, inside the syllables
+        for (std::size_t k = 0; k < list(json, *forms, "written_forms").items.size(); ++k) {
+            const std::string item = "written_forms[" + std::to_string(k) + "]";
+            const JsonValue& value = forms->items[k];
+            auto form = read_item(json, value, item, written_form_fields(), 0);
+            if (form.first_syllable < covered ||
+                form.syllable_count > timeline.syllables.size() - std::min(form.first_syllable, timeline.syllables.size()) ||
+                form.first_syllable >= timeline.syllables.size()) {
+                json.fail(value.offset, item,
+                          "covers syllables " + std::to_string(form.first_syllable) + ".." +
+                              std::to_string(form.first_syllable + form.syllable_count - 1) +
+                              ", expected a stretch of the " + std::to_string(timeline.syllables.size()) +
+                              " syllables from " + std::to_string(covered) + " on (forms come in order, apart)");
+            }
+            covered = form.first_syllable + form.syllable_count;
+            timeline.written_forms.push_back(std::move(form));
+        }
     }
     if (const JsonValue* duration = document.find("duration")) {
         timeline.duration_s = ItemReader(json, "document", 0).seconds(*duration, "duration");

@@ -32,10 +32,10 @@ static tf_timeline *new_spoken_timeline(void) {
 
 static int test_transcript_is_read_into_sentences_and_syllables(void) {
     int failures = 0;
-    /* 長期下來，傷害不斷累積。銀行{hang2} ABC */
+    /* 長期下來，傷害不斷累積。銀行{hang2} ★ */
     const char *text = "\xe9\x95\xb7\xe6\x9c\x9f\xe4\xb8\x8b\xe4\xbe\x86\xef\xbc\x8c\xe5\x82\xb7\xe5\xae\xb3"
                        "\xe4\xb8\x8d\xe6\x96\xb7\xe7\xb4\xaf\xe7\xa9\x8d\xe3\x80\x82\xe9\x8a\x80\xe8\xa1\x8c"
-                       "{hang2} ABC";
+                       "{hang2} \xe2\x98\x85";
     tf_timeline *timeline = NULL;
     size_t count = 0;
     size_t sentence_index = 99;
@@ -58,10 +58,61 @@ static int test_transcript_is_read_into_sentences_and_syllables(void) {
     CHECK_OK(tf_timeline_syllable_times(timeline, 0, NULL, NULL, &has_final_start, NULL));
     CHECK(has_final_start == 0);
     CHECK_OK(tf_timeline_warning_count(timeline, &count));
-    CHECK(count == 3);
+    CHECK(count == 1);
     CHECK_OK(tf_timeline_warning(timeline, 0, &warning));
-    CHECK(strncmp(warning, "story.txt:1:23: \"A\"", 19) == 0);
+    CHECK(strncmp(warning, "story.txt:1:23: \"\xe2\x98\x85\"", 21) == 0);
     CHECK_FAILS_WITH(tf_timeline_syllable(timeline, 12, NULL, NULL, NULL), TF_ERR_INVALID_ARGUMENT, "12");
+    tf_timeline_destroy(timeline);
+    return failures;
+}
+
+static int test_written_forms_are_kept_beside_their_syllables(void) {
+    int failures = 0;
+    /* 2026年用AI。 -> 二零二六年 用 ei ai */
+    const char *text = "2026\xe5\xb9\xb4\xe7\x94\xa8" "AI\xe3\x80\x82";
+    tf_timeline *timeline = NULL;
+    size_t count = 0;
+    size_t first = 99;
+    size_t syllables = 99;
+    const char *form_text = NULL;
+    const char *syllable_text = NULL;
+    const char *pinyin = NULL;
+    char *json = NULL;
+    CHECK_OK(tf_read_transcript(text, strlen(text), "forms.txt", &timeline));
+    CHECK_OK(tf_timeline_syllable_count(timeline, &count));
+    CHECK(count == 8);
+    CHECK_OK(tf_timeline_written_form_count(timeline, &count));
+    CHECK(count == 2);
+    CHECK_OK(tf_timeline_written_form(timeline, 0, &form_text, &first, &syllables));
+    CHECK(strcmp(form_text, "2026\xe5\xb9\xb4") == 0);
+    CHECK(first == 0 && syllables == 5);
+    CHECK_OK(tf_timeline_syllable(timeline, 0, &syllable_text, &pinyin, NULL));
+    CHECK(strcmp(syllable_text, "\xe4\xba\x8c") == 0); /* 二 */
+    CHECK(strcmp(pinyin, "er4") == 0);
+    CHECK_OK(tf_timeline_written_form(timeline, 1, &form_text, &first, NULL));
+    CHECK(strcmp(form_text, "AI") == 0 && first == 6);
+    CHECK_FAILS_WITH(tf_timeline_written_form(timeline, 2, NULL, NULL, NULL), TF_ERR_INVALID_ARGUMENT, "2");
+    /* Adding: in order, inside the syllables, at least one. */
+    CHECK_FAILS_WITH(tf_timeline_add_written_form(timeline, "x", 6, 1), TF_ERR_INVALID_ARGUMENT, "first_syllable");
+    CHECK_FAILS_WITH(tf_timeline_add_written_form(timeline, "x", 7, 2), TF_ERR_INVALID_ARGUMENT, "first_syllable");
+    CHECK_FAILS_WITH(tf_timeline_add_written_form(timeline, "x", 8, 0), TF_ERR_INVALID_ARGUMENT, "syllable_count");
+    CHECK_FAILS_WITH(tf_timeline_add_written_form(timeline, "", 7, 1), TF_ERR_INVALID_ARGUMENT, "text");
+    CHECK_FAILS_WITH(tf_timeline_add_written_form(timeline, NULL, 7, 1), TF_ERR_INVALID_ARGUMENT, "text");
+    CHECK_FAILS_WITH(tf_timeline_written_form_count(NULL, &count), TF_ERR_INVALID_ARGUMENT, "timeline");
+    /* The timeline JSON carries the forms, and reads them back. */
+    CHECK_OK(tf_timeline_to_json(timeline, &json, NULL));
+    CHECK(strstr(json, "{\"text\":\"AI\",\"first_syllable\":6,\"syllable_count\":2}") != NULL);
+    tf_timeline_destroy(timeline);
+    timeline = NULL;
+    CHECK_OK(tf_timeline_from_json(json, strlen(json), "forms.json", &timeline));
+    tf_free(json);
+    CHECK_OK(tf_timeline_written_form_count(timeline, &count));
+    CHECK(count == 2);
+    tf_timeline_destroy(timeline);
+    timeline = new_spoken_timeline();
+    CHECK_OK(tf_timeline_add_written_form(timeline, "OK", 3, 2));
+    CHECK_OK(tf_timeline_written_form(timeline, 0, &form_text, &first, &syllables));
+    CHECK(strcmp(form_text, "OK") == 0 && first == 3 && syllables == 2);
     tf_timeline_destroy(timeline);
     return failures;
 }
@@ -654,6 +705,7 @@ static int test_paragraphs_of_the_transcript_are_kept(void) {
 int main(void) {
     int failures = 0;
     failures += test_transcript_is_read_into_sentences_and_syllables();
+    failures += test_written_forms_are_kept_beside_their_syllables();
     failures += test_transcript_errors_name_where();
     failures += test_paragraphs_of_the_transcript_are_kept();
     failures += test_built_timeline_reads_back_and_writes_align_json();

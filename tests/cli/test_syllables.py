@@ -18,13 +18,13 @@ def write(tmp_path, text, name="transcript.txt"):
 
 
 def test_json_has_exactly_the_contract_shape(tmp_path):
-    path = write(tmp_path, "長期下來，傷害不斷累積。\n銀行{hang2}很好 ABC")
+    path = write(tmp_path, "長期下來，傷害不斷累積。\n銀行{hang2}很好 ★")
     result = run("syllables", path, "--json")
     assert result.returncode == 0, result.stderr
     assert result.stderr == ""
     document = json.loads(result.stdout)
     assert list(document) == ["version", "sentences", "syllables", "warnings"]
-    assert document["sentences"] == [{"text": "長期下來，傷害不斷累積。"}, {"text": "銀行很好 ABC"}]
+    assert document["sentences"] == [{"text": "長期下來，傷害不斷累積。"}, {"text": "銀行很好 ★"}]
     syllables = document["syllables"]
     assert all(list(s) == ["text", "pinyin", "sentence", "pause_after"] for s in syllables)
     assert [s["text"] for s in syllables] == list("長期下來傷害不斷累積銀行很好")
@@ -32,8 +32,8 @@ def test_json_has_exactly_the_contract_shape(tmp_path):
     assert syllables[11] == {"text": "行", "pinyin": "hang2", "sentence": 1, "pause_after": False}
     assert [s["text"] for s in syllables if s["pause_after"]] == ["來"]
     assert [s["sentence"] for s in syllables] == [0] * 10 + [1] * 4
-    assert len(document["warnings"]) == 3
-    assert document["warnings"][0].startswith(f'{path}:2:13: "A"')
+    assert len(document["warnings"]) == 1
+    assert document["warnings"][0].startswith(f'{path}:2:13: "★"')
 
 
 def test_json_writes_u_umlaut_as_v(tmp_path):
@@ -42,12 +42,40 @@ def test_json_writes_u_umlaut_as_v(tmp_path):
 
 
 def test_plain_output_lists_sentences_and_readings_and_warns_on_stderr(tmp_path):
-    result = run("syllables", write(tmp_path, "首都。都是 X"))
+    result = run("syllables", write(tmp_path, "首都。都是 ★"))
     assert result.returncode == 0, result.stderr
     assert result.stdout.splitlines() == [
         "sentence 1: 首都。", "  首\tshou3", "  都\tdu1",
-        "sentence 2: 都是 X", "  都\tdou1", "  是\tshi4"]
-    assert 'talkface: warning:' in result.stderr and '"X"' in result.stderr
+        "sentence 2: 都是 ★", "  都\tdou1", "  是\tshi4"]
+    assert 'talkface: warning:' in result.stderr and '"★"' in result.stderr
+
+
+def test_plain_output_shows_each_written_form_and_what_it_became(tmp_path):
+    result = run("syllables", write(tmp_path, "今天是2026年12月1日，我用iPhone。"))
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert "  2026年 -> 二零二六年\ter4 ling2 er4 liu4 nian2" in lines
+    assert "  1 -> 一\tyi1" in lines
+    assert "  日\tri4\t(pause)" in lines
+    assert "  iPhone -> ai feng\tai1 feng5" in lines
+    assert result.stderr == ""
+
+
+def test_json_carries_the_written_text_of_each_syllable_group(tmp_path):
+    document = json.loads(run("syllables", write(tmp_path, "打13812345678，GDP增长5%。"), "--json").stdout)
+    assert list(document) == ["version", "sentences", "syllables", "written_forms", "warnings"]
+    forms = document["written_forms"]
+    assert [f["text"] for f in forms] == ["13812345678", "GDP", "5%"]
+    phone = forms[0]
+    said = document["syllables"][phone["first_syllable"]:phone["first_syllable"] + phone["syllable_count"]]
+    assert "".join(s["text"] for s in said) == "幺三八幺二三四五六七八"
+    assert document["sentences"] == [{"text": "打13812345678，GDP增长5%。"}]
+
+
+def test_a_number_too_long_is_read_digit_by_digit_with_a_warning(tmp_path):
+    result = run("syllables", write(tmp_path, "1" * 30))
+    assert result.returncode == 0
+    assert "more than 16 digits; read digit by digit" in result.stderr
 
 
 def test_invalid_utf8_fails_naming_the_byte_offset(tmp_path):

@@ -24,14 +24,14 @@ def spoken_timeline():
 
 
 def test_read_transcript_gives_sentences_syllables_and_warnings():
-    timeline = talkface.read_transcript("長期下來，傷害不斷累積。\n銀行{hang2}很好 ABC", source_name="story.txt")
-    assert [s.text for s in timeline.sentences] == ["長期下來，傷害不斷累積。", "銀行很好 ABC"]
+    timeline = talkface.read_transcript("長期下來，傷害不斷累積。\n銀行{hang2}很好 ★", source_name="story.txt")
+    assert [s.text for s in timeline.sentences] == ["長期下來，傷害不斷累積。", "銀行很好 ★"]
     assert "".join(s.text for s in timeline.syllables) == "長期下來傷害不斷累積銀行很好"
     assert timeline.syllables[11].pinyin == "hang2"
     assert timeline.syllables[11].sentence == 1
     assert timeline.syllables[3].pause_after
-    assert len(timeline.warnings) == 3
-    assert timeline.warnings[0].startswith('story.txt:2:13: "A"')
+    assert len(timeline.warnings) == 1
+    assert timeline.warnings[0].startswith('story.txt:2:13: "★"')
     assert all(s.start_s == 0.0 and s.final_start_s is None for s in timeline.syllables)
 
 
@@ -50,8 +50,53 @@ def test_a_blank_line_starts_a_paragraph():
 def test_pinyin_input_can_be_turned_off():
     assert [s.pinyin for s in talkface.read_transcript("ni3 hao3").syllables] == ["ni3", "hao3"]
     off = talkface.read_transcript("ni3 hao3", read_pinyin=False)
-    assert off.syllables == []
-    assert len(off.warnings) > 0
+    # Read as Latin instead: "ni" is spelled (a warning names it), 3 is a number.
+    assert [s.pinyin for s in off.syllables][:3] == ["en1", "ai4", "san1"]
+    assert 'not in the English pronouncing dictionary' in off.warnings[0]
+
+
+def test_written_forms_are_read_aloud_and_kept_beside_their_syllables():
+    timeline = talkface.read_transcript("今天是2026年12月1日，我用iPhone打电话。")
+    assert timeline.sentences[0].text == "今天是2026年12月1日，我用iPhone打电话。"
+    forms = timeline.written_forms
+    assert [f.text for f in forms] == ["2026年", "12", "1", "iPhone"]
+    year = forms[0]
+    said = timeline.syllables[year.first_syllable:year.first_syllable + year.syllable_count]
+    assert "".join(s.text for s in said) == "二零二六年"
+    assert [s.pinyin for s in said] == ["er4", "ling2", "er4", "liu4", "nian2"]
+    assert forms[3] == talkface.WrittenForm("iPhone", first_syllable=15, syllable_count=2)
+    assert timeline.warnings == []
+
+
+def test_a_written_form_is_fixed_in_place_and_a_bad_fix_names_where():
+    fixed = talkface.read_transcript("2026{两千零二十六}年")
+    assert "".join(s.text for s in fixed.syllables) == "两千零二十六年"
+    assert fixed.written_forms[0].syllable_count == 6
+    with pytest.raises(talkface.ParseError, match=r"<transcript>:1:3: reading fix"):
+        talkface.read_transcript("5%{★}")
+
+
+def test_a_number_too_long_is_read_digit_by_digit_with_a_warning():
+    timeline = talkface.read_transcript("1" * 20)
+    assert len(timeline.syllables) == 20
+    assert "more than 16 digits" in timeline.warnings[0]
+
+
+def test_written_forms_go_through_the_timeline_json():
+    timeline = talkface.read_transcript("打110。")
+    json = talkface.timeline_to_json(timeline, with_times=False)
+    assert '"written_forms":[\n{"text":"110","first_syllable":1,"syllable_count":3}\n]' in json
+    back = talkface.timeline_from_json(json)
+    assert back.written_forms == timeline.written_forms
+
+
+def test_timeline_keeps_written_forms_it_is_given():
+    timeline = talkface.Timeline(
+        [talkface.Sentence("OK。")],
+        [talkface.Syllable("ou", "ou1"), talkface.Syllable("kei", "kei4")],
+        written_forms=[talkface.WrittenForm("OK", 0, 2)])
+    assert timeline.written_forms[0].text == "OK"
+    assert repr(timeline.written_forms[0]) == "talkface.WrittenForm('OK', first_syllable=0, syllable_count=2)"
 
 
 def test_bad_reading_fix_is_a_parse_error_naming_where():

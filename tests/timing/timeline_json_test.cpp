@@ -59,6 +59,13 @@ void check_equal(const Timeline& a, const Timeline& b) {
     }
     CHECK(a.warnings == b.warnings);
     CHECK(a.duration_s == b.duration_s);
+    REQUIRE(a.written_forms.size() == b.written_forms.size());
+    for (std::size_t k = 0; k < a.written_forms.size(); ++k) {
+        CAPTURE(k);
+        CHECK(a.written_forms[k].text == b.written_forms[k].text);
+        CHECK(a.written_forms[k].first_syllable == b.written_forms[k].first_syllable);
+        CHECK(a.written_forms[k].syllable_count == b.written_forms[k].syllable_count);
+    }
 }
 
 std::string error_of(const std::string& text) {
@@ -148,6 +155,40 @@ TEST_SUITE("timeline JSON") {
         CHECK(error_of(head + R"(], "warnings": [3]})") == "t.json:3:17: warnings[0]: expected a string, found 3");
         CHECK(error_of(head + R"(], "duration": "long"})") ==
               "t.json:3:16: document.duration: expected a number of seconds, found \"long\"");
+    }
+
+    TEST_CASE("written forms round trip beside their syllables, with times and without") {
+        Timeline timeline = spoken_timeline();
+        timeline.written_forms = {{"2\"6", 0, 2}, {"AI", 3, 1}};
+        for (const bool with_times : {true, false}) {
+            CAPTURE(with_times);
+            talkface::TimelineJsonOptions options;
+            options.with_times = with_times;
+            const std::string json = talkface::timeline_to_json(timeline, options);
+            CHECK(json.find("\"written_forms\":[\n{\"text\":\"2\\\"6\",\"first_syllable\":0,\"syllable_count\":2},\n"
+                            "{\"text\":\"AI\",\"first_syllable\":3,\"syllable_count\":1}\n],\n") != std::string::npos);
+            const Timeline back = talkface::timeline_from_json(json);
+            REQUIRE(back.written_forms.size() == 2);
+            CHECK(back.written_forms[1].text == "AI");
+            CHECK(talkface::timeline_to_json(back, options) == json);
+        }
+        CHECK(talkface::timeline_to_json(spoken_timeline()).find("written_forms") == std::string::npos);
+    }
+
+    TEST_CASE("a written form outside the syllables or out of order is refused by item") {
+        const std::string head = "{\"sentences\":[{\"text\":\"a\"}],\n\"syllables\":[\n"
+                                 R"({"text":"a","pinyin":"a1","sentence":0},{"text":"a","pinyin":"a1","sentence":0}],)"
+                                 "\n\"written_forms\":[";
+        CHECK(error_of(head + R"({"text":"x","first_syllable":1,"syllable_count":2}]})") ==
+              "t.json:4:18: written_forms[0]: covers syllables 1..2, expected a stretch of the 2 syllables from 0 on "
+              "(forms come in order, apart)");
+        CHECK(error_of(head + R"({"text":"x","first_syllable":1,"syllable_count":1},)"
+                              R"({"text":"y","first_syllable":0,"syllable_count":1}]})")
+                  .find("written_forms[1]: covers syllables 0..0") != std::string::npos);
+        CHECK(error_of(head + R"({"text":"x","first_syllable":0,"syllable_count":0}]})") ==
+              "t.json:4:66: written_forms[0].syllable_count: expected a whole number >= 1, found 0");
+        CHECK(error_of(head + R"({"first_syllable":0,"syllable_count":1}]})") ==
+              "t.json:4:18: written_forms[0]: \"text\" is missing");
     }
 
     TEST_CASE("a file is read and written whole, and a missing one is named") {

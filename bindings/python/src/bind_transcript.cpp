@@ -1,4 +1,4 @@
-// Timelines and transcripts in Python: Sentence, Syllable, Timeline, read_transcript(),
+// Timelines and transcripts in Python: Sentence, Syllable, WrittenForm, Timeline, read_transcript(),
 // load_transcript(), is_valid_pinyin().
 #include "bind.hpp"
 
@@ -100,6 +100,41 @@ Example:
                         s.pause_after);
         });
 
+    py::class_<WrittenForm>(m, "WrittenForm", R"doc(
+A stretch of the transcript read by rule (a number, date, time, amount, letters, an English word)
+and the syllables it became: timeline.syllables[first_syllable : first_syllable + syllable_count].
+
+Example:
+    >>> timeline = talkface.read_transcript("2026年")
+    >>> form = timeline.written_forms[0]
+    >>> form.text, [s.pinyin for s in timeline.syllables[form.first_syllable:][:form.syllable_count]]
+    ('2026年', ['er4', 'ling2', 'er4', 'liu4', 'nian2'])
+)doc")
+        .def(py::init([](std::string text, std::size_t first_syllable, std::size_t syllable_count) {
+                 return WrittenForm{std::move(text), first_syllable, syllable_count};
+             }),
+             py::arg("text") = "", py::arg("first_syllable") = 0, py::arg("syllable_count") = 0, R"doc(
+Args:
+    text (str): the form as the page shows it, UTF-8: "2026年", "3:30", "iPhone".
+    first_syllable (int): index into Timeline.syllables of its first syllable.
+    syllable_count (int): how many syllables it became.
+
+Example:
+    >>> talkface.WrittenForm("OK", first_syllable=3, syllable_count=2)
+)doc")
+        .def_readwrite("text", &WrittenForm::text, "the form as written, UTF-8")
+        .def_readwrite("first_syllable", &WrittenForm::first_syllable, "index of its first syllable")
+        .def_readwrite("syllable_count", &WrittenForm::syllable_count, "how many syllables it became")
+        .def("__eq__",
+             [](const WrittenForm& a, const WrittenForm& b) {
+                 return a.text == b.text && a.first_syllable == b.first_syllable &&
+                        a.syllable_count == b.syllable_count;
+             })
+        .def("__repr__", [](const WrittenForm& f) {
+            return py::str("talkface.WrittenForm({!r}, first_syllable={!r}, syllable_count={!r})")
+                .format(f.text, f.first_syllable, f.syllable_count);
+        });
+
     py::class_<Timeline>(m, "Timeline", R"doc(
 Sentences and syllables in transcript order, with what the reader skipped (warnings) and the length of
 the audio. The list attributes are copies: change one and assign it back
@@ -111,16 +146,20 @@ Example:
     ['ni3', 'hao3']
 )doc")
         .def(py::init([](std::vector<Sentence> sentences, std::vector<Syllable> syllables,
-                         std::vector<std::string> warnings, double duration_s) {
-                 return Timeline{std::move(sentences), std::move(syllables), std::move(warnings), duration_s};
+                         std::vector<std::string> warnings, double duration_s,
+                         std::vector<WrittenForm> written_forms) {
+                 return Timeline{std::move(sentences), std::move(syllables), std::move(warnings), duration_s,
+                                 std::move(written_forms)};
              }),
              py::arg("sentences") = std::vector<Sentence>{}, py::arg("syllables") = std::vector<Syllable>{},
-             py::arg("warnings") = std::vector<std::string>{}, py::arg("duration_s") = 0.0, R"doc(
+             py::arg("warnings") = std::vector<std::string>{}, py::arg("duration_s") = 0.0,
+             py::arg("written_forms") = std::vector<WrittenForm>{}, R"doc(
 Args:
     sentences (list[Sentence]): in transcript order.
     syllables (list[Syllable]): in transcript order, each naming its sentence.
     warnings (list[str]): what the transcript reader skipped.
     duration_s (float): length of the audio, seconds.
+    written_forms (list[WrittenForm]): the forms read by rule, in order, none overlapping.
 
 Example:
     >>> talkface.Timeline([talkface.Sentence("好。", 0.2, 0.6)],
@@ -130,6 +169,8 @@ Example:
         .def_readwrite("syllables", &Timeline::syllables, "list[Syllable] (a copy)")
         .def_readwrite("warnings", &Timeline::warnings, "list[str]: what the reader skipped, and where")
         .def_readwrite("duration_s", &Timeline::duration_s, "length of the audio, seconds (0 before alignment)")
+        .def_readwrite("written_forms", &Timeline::written_forms,
+                       "list[WrittenForm] (a copy): numbers, dates, letters, English words read by rule")
         .def("__repr__", [](const Timeline& t) {
             return py::str("<talkface.Timeline: {} sentences, {} syllables, {} warnings, duration_s={!r}>")
                 .format(t.sentences.size(), t.syllables.size(), t.warnings.size(), t.duration_s);
@@ -143,17 +184,20 @@ Example:
         py::arg("text"), py::arg("source_name") = "<transcript>", py::arg("read_pinyin") = true, R"doc(
 Reads a transcript (Traditional or Simplified characters, or numbered pinyin) into sentences and
 syllables, times all 0. Sentences end at 。！？；… and . ! ? ;. A polyphonic character is read by the
-built-in phrase table; fix a reading in place: 行{hang2}. Characters without a reading are skipped and
-reported in Timeline.warnings ("source:line:column: ...").
+built-in phrase table; fix a reading in place: 行{hang2}. Written forms are read as a native reader
+says them (2026年 二零二六年, 85% 百分之八十五, AI ei ai, iPhone ai feng; docs/written-forms.md), each
+kept in Timeline.written_forms; fix one in place: 2026{两千零二十六}. Characters without a reading
+are skipped and reported in Timeline.warnings ("source:line:column: ...").
 
 Args:
     text (str): the transcript.
     source_name (str): names the text in messages.
-    read_pinyin (bool): read runs of Latin letters that spell Mandarin syllables as syllables.
+    read_pinyin (bool): read runs of Latin letters that spell Mandarin syllables as syllables
+        (otherwise as letters or English words).
 
 Raises:
-    talkface.ParseError: a reading fix that is not Mandarin (行{hxng2}), an unclosed "{" (names
-        source:line:column).
+    talkface.ParseError: a reading fix that is not Mandarin (行{hxng2}, 5{★}), an unclosed "{"
+        (names source:line:column).
 
 Example:
     >>> timeline = talkface.read_transcript("長期下來，傷害不斷累積。")

@@ -365,17 +365,26 @@ class Syllable:
     ) -> None: ...
     def __eq__(self, other: object) -> bool: ...
 
+class WrittenForm:
+    text: str
+    first_syllable: int
+    syllable_count: int
+    def __init__(self, text: str = "", first_syllable: int = 0, syllable_count: int = 0) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+
 class Timeline:
     sentences: list[Sentence]
     syllables: list[Syllable]
     warnings: list[str]
     duration_s: float
+    written_forms: list[WrittenForm]
     def __init__(
         self,
         sentences: list[Sentence] = ...,
         syllables: list[Syllable] = ...,
         warnings: list[str] = ...,
         duration_s: float = 0.0,
+        written_forms: list[WrittenForm] = ...,
     ) -> None: ...
 
 def read_transcript(text: str, source_name: str = "<transcript>", read_pinyin: bool = True) -> Timeline: ...

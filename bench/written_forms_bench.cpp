@@ -1,0 +1,137 @@
+// written_forms_bench: how many written-form sentences (numbers, dates, money, phone numbers,
+// acronyms, English words) the transcript stage reads as a native reader says them (issue 13).
+//
+//   written_forms_bench [--sentences FILE] [--corpus-sentences OUT]
+//
+// FILE (bench/corpus/written_forms.txt by default) holds SET<TAB>SENTENCE<TAB>SAID lines. A sentence
+// is read exactly when its toneless syllables equal those of SAID read by the same tables (tones do
+// not move the lips, and polyphonic characters are not what is measured here). --corpus-sentences
+// writes SET<TAB>SENTENCE for make_corpus --sentences, so that espeak-ng speaks the readings and
+// align_bench measures the onsets on them (bench/README.md).
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <talkface/talkface.hpp>
+
+namespace {
+
+struct WrittenSentence {
+    std::string set;
+    std::string text;
+    std::string said;
+    int line = 0;
+};
+
+std::vector<WrittenSentence> read_sentences(const std::string& path) {
+    std::ifstream file(path);
+    if (!file) throw std::runtime_error(path + ": cannot be read");
+    std::vector<WrittenSentence> sentences;
+    std::string line;
+    int number = 0;
+    while (std::getline(file, line)) {
+        ++number;
+        if (line.empty() || line[0] == '#') continue;
+        const auto first = line.find('\t');
+        const auto second = first == std::string::npos ? first : line.find('\t', first + 1);
+        if (second == std::string::npos) {
+            throw std::runtime_error(path + ":" + std::to_string(number) + ": expected SET<TAB>SENTENCE<TAB>SAID");
+        }
+        WrittenSentence sentence{line.substr(0, first), line.substr(first + 1, second - first - 1),
+                                 line.substr(second + 1), number};
+        if (sentence.set != "tuning" && sentence.set != "held-out") {
+            throw std::runtime_error(path + ":" + std::to_string(number) + ": set \"" + sentence.set +
+                                     "\" is neither tuning nor held-out");
+        }
+        sentences.push_back(std::move(sentence));
+    }
+    return sentences;
+}
+
+std::string toneless(const talkface::Timeline& timeline) {
+    std::string text;
+    for (const auto& syllable : timeline.syllables) {
+        if (!text.empty()) text += ' ';
+        text += syllable.pinyin.substr(0, syllable.pinyin.size() - 1);
+    }
+    return text;
+}
+
+struct Tally {
+    int sentences = 0;
+    int exact = 0;
+    int forms = 0;
+    int warned = 0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        std::string sentences_path = TALKFACE_BENCH_WRITTEN_FORMS;
+        std::string corpus_path;
+        for (int i = 1; i < argc; ++i) {
+            const std::string arg = argv[i];
+            if (arg == "--sentences" && i + 1 < argc) {
+                sentences_path = argv[++i];
+            } else if (arg == "--corpus-sentences" && i + 1 < argc) {
+                corpus_path = argv[++i];
+            } else {
+                std::cerr << "usage: written_forms_bench [--sentences FILE] [--corpus-sentences OUT]\n";
+                return 2;
+            }
+        }
+        const auto sentences = read_sentences(sentences_path);
+        std::map<std::string, Tally> tallies;
+        std::ofstream corpus;
+        if (!corpus_path.empty()) {
+            corpus.open(corpus_path);
+            if (!corpus) throw std::runtime_error(corpus_path + ": cannot be written");
+            corpus << "# Written-form sentences from " << sentences_path << " (written_forms_bench).\n";
+        }
+        int left_out = 0;
+        for (const auto& sentence : sentences) {
+            const auto where = sentences_path + ":" + std::to_string(sentence.line);
+            const auto read = talkface::read_transcript(sentence.text, {}, where);
+            const auto expected = talkface::read_transcript(sentence.said, {}, where + " (said)");
+            auto& tally = tallies[sentence.set];
+            ++tally.sentences;
+            tally.forms += static_cast<int>(read.written_forms.size());
+            if (!read.warnings.empty()) ++tally.warned;
+            const auto got = toneless(read);
+            const auto want = toneless(expected);
+            if (got == want) {
+                ++tally.exact;
+            } else {
+                std::cout << "miss (" << sentence.set << ") " << sentence.text << "\n  expected " << want
+                          << "\n  got      " << got << '\n';
+            }
+            // make_corpus takes one sentence with no warnings (every syllable spoken and known).
+            if (corpus.is_open()) {
+                if (read.warnings.empty() && read.sentences.size() == 1) {
+                    corpus << sentence.set << '\t' << sentence.text << '\n';
+                } else {
+                    ++left_out;
+                }
+            }
+        }
+        std::cout << "\n| set | sentences | written forms | read exactly | share | with a warning |\n"
+                  << "|---|---|---|---|---|---|\n";
+        for (const auto* set : {"tuning", "held-out"}) {
+            const auto& tally = tallies[set];
+            if (tally.sentences == 0) continue;
+            std::cout << "| " << set << " | " << tally.sentences << " | " << tally.forms << " | " << tally.exact
+                      << " | " << (100 * tally.exact + tally.sentences / 2) / tally.sentences << "% | "
+                      << tally.warned << " |\n";
+        }
+        if (corpus.is_open()) std::cout << "\ncorpus sentences written to " << corpus_path << " (" << left_out
+                                        << " left out: a warning or more than one sentence)\n";
+        return 0;
+    } catch (const std::exception& error) {
+        std::cerr << "written_forms_bench: error: " << error.what() << '\n';
+        return 1;
+    }
+}

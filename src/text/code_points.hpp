@@ -1,0 +1,31 @@
+// A transcript as code points, each with its UTF-8 bytes and where it stands (line, column), the
+// unit every reader of the text stage works on.
+#ifndef TALKFACE_TEXT_CODE_POINTS_HPP
+#define TALKFACE_TEXT_CODE_POINTS_HPP
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace talkface::detail {
+
+struct CodePoint {
+    char32_t value = 0;
+    std::string_view text;  // its UTF-8 bytes in the transcript
+    int line = 1;
+    int column = 1;  // in characters
+};
+
+// Decodes UTF-8 (a leading byte order mark skipped); views point into `text`.
+// \throws talkface::ParseError naming `source_name`, the line, column and byte offset of the
+//         first byte that does not start a character.
+std::vector<CodePoint> decode_utf8(std::string_view text, const std::string& source_name);
+
+// Full-width ASCII forms (！？，Ａ１％) behave as their ASCII counterparts.
+inline char32_t ascii_form(char32_t c) {
+    return c >= 0xFF01 && c <= 0xFF5E ? c - 0xFEE0 : c;
+}
+
+}  // namespace talkface::detail
+
+#endif

@@ -1,0 +1,402 @@
+#include "text/written_numbers.hpp"
+
+#include <string_view>
+
+#include "text/number_words.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+bool is_digit_at(const std::vector<CodePoint>& text, std::size_t i) {
+    if (i >= text.size()) return false;
+    const auto c = ascii_form(text[i].value);
+    return c >= '0' && c <= '9';
+}
+
+char32_t value_at(const std::vector<CodePoint>& text, std::size_t i) {
+    return i < text.size() ? ascii_form(text[i].value) : 0;
+}
+
+bool is_ascii_letter(char32_t c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+
+std::string digits_from(const std::vector<CodePoint>& text, std::size_t& i) {
+    std::string digits;
+    while (is_digit_at(text, i)) digits += static_cast<char>(ascii_form(text[i++].value));
+    return digits;
+}
+
+// A number as written: 1,234.5 is whole "1234", fraction "5".
+struct WrittenNumber {
+    std::string whole;
+    std::string fraction;
+    bool has_point = false;
+    bool has_separators = false;
+    std::size_t end = 0;
+};
+
+WrittenNumber parse_number(const std::vector<CodePoint>& text, std::size_t i) {
+    WrittenNumber number;
+    number.whole = digits_from(text, i);
+    // Thousands separators: an ASCII comma and exactly three digits (1,234,567). The ideographic
+    // comma ，stays a pause: 1，2，3 is a list.
+    if (number.whole.size() <= 3) {
+        while (i + 3 < text.size() + 1 && text[i].value == ',' && is_digit_at(text, i + 1) &&
+               is_digit_at(text, i + 2) && is_digit_at(text, i + 3) && !is_digit_at(text, i + 4)) {
+            for (std::size_t k = 1; k <= 3; ++k) number.whole += static_cast<char>(ascii_form(text[i + k].value));
+            number.has_separators = true;
+            i += 4;
+        }
+    }
+    if (value_at(text, i) == '.' && is_digit_at(text, i + 1)) {
+        ++i;
+        number.has_point = true;
+        number.fraction = digits_from(text, i);
+    }
+    number.end = i;
+    return number;
+}
+
+bool is_one_of(char32_t c, std::u32string_view set) {
+    return set.find(c) != std::u32string_view::npos;
+}
+
+// Measure words and magnitudes before which 2 is 两 (两本书, 两个, 两万). Not 月 号 日 楼 路 度,
+// where 2 is a name or an ordinal (二月, 二号, 二楼).
+bool takes_liang(char32_t c) {
+    return is_one_of(c, U"个個本位名只隻条條张張件次天年岁歲人种種块塊元倍台臺部辆輛家份杯碗瓶双雙对對层層场場"
+                        U"周週遍斤米千万萬亿億百项項篇首页頁座所间間节節门門架把支枝根片头頭匹颗顆粒趟套声聲句"
+                        U"样樣章口股群批排队隊段堆吨噸升克里码碼毛角点點成分秒小公届屆期美港欧歐英");
+}
+
+// Words before which a number names a room, a bus route or a house, said digit by digit when it
+// has three or more digits (305室 三零五室, 302路 三零二路).
+bool names_by_digits(char32_t c) {
+    return is_one_of(c, U"室房路号號");
+}
+
+// A word earlier in the sentence that makes the numbers after it phone numbers.
+bool follows_phone_word(const std::vector<CodePoint>& text, std::size_t start) {
+    std::string before;
+    for (std::size_t i = start; i-- > 0;) {
+        const auto c = ascii_form(text[i].value);
+        if (c == '.' || c == '!' || c == '?' || c == ';' || c == 0x3002 || c == '\n') break;
+        before.insert(0, text[i].text);
+    }
+    for (const std::string_view word : {"电话", "電話", "手机", "手機", "号码", "號碼", "热线", "熱線", "拨打",
+                                        "撥打", "致电", "致電", "分机", "分機", "传真", "傳真"}) {
+        if (before.find(word) != std::string::npos) return true;
+    }
+    return false;
+}
+
+struct Unit {
+    std::string_view written;
+    const char* words;
+};
+
+// Latin unit symbols right after a number (5km, 2 kg). Case matters: m is metres, M is not a unit.
+constexpr Unit kUnits[] = {
+    {"km", "公里"}, {"m", "米"}, {"cm", "厘米"}, {"mm", "毫米"}, {"kg", "公斤"}, {"g", "克"},
+    {"mg", "毫克"}, {"t", "吨"}, {"ml", "毫升"}, {"mL", "毫升"}, {"L", "升"}, {"h", "小时"},
+    {"min", "分钟"}, {"s", "秒"}, {"ms", "毫秒"}, {"Hz", "赫兹"}, {"kHz", "千赫"}, {"MHz", "兆赫"},
+    {"kW", "千瓦"}, {"W", "瓦"}, {"V", "伏"}, {"mAh", "毫安时"}, {"kWh", "千瓦时"}, {"km/h", "公里每小时"},
+    {"m/s", "米每秒"}, {"m²", "平方米"}, {"km²", "平方公里"}, {"㎡", "平方米"}, {"㎞", "公里"}, {"㎏", "公斤"},
+    {"℃", "摄氏度"}, {"℉", "华氏度"}, {"°C", "摄氏度"}, {"°F", "华氏度"}, {"°", "度"}, {"%", ""},
+};
+
+// The unit written at text[i] (after at most one space when it is Latin), or nullptr.
+const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size_t& end) {
+    const auto start = value_at(text, i) == ' ' && is_ascii_letter(value_at(text, i + 1)) ? i + 1 : i;
+    const Unit* best = nullptr;
+    for (const auto& unit : kUnits) {
+        std::string written;
+        std::size_t k = start;
+        while (k < text.size() && written.size() < unit.written.size()) {
+            const auto c = ascii_form(text[k].value);  // ％ is %
+            if (c < 0x80) {
+                written += static_cast<char>(c);
+            } else {
+                written += text[k].text;
+            }
+            ++k;
+        }
+        if (written != unit.written) continue;
+        // A Latin unit must end the letters: 5kgs or 3mind are words, not units.
+        if (is_ascii_letter(static_cast<char32_t>(unit.written.back())) && is_ascii_letter(value_at(text, k))) continue;
+        if (best == nullptr || unit.written.size() > best->written.size()) {
+            best = &unit;
+            end = k;
+        }
+    }
+    return best;
+}
+
+struct Currency {
+    std::u32string_view written;
+    const char* before;  // said before the amount
+    const char* after;   // said after it
+};
+
+constexpr Currency kCurrencies[] = {
+    {U"NT$", "新台币", "元"}, {U"US$", "", "美元"}, {U"HK$", "", "港元"}, {U"S$", "", "新加坡元"},
+    {U"$", "", "美元"},      {U"¥", "", "元"},     {U"￥", "", "元"},     {U"€", "", "欧元"},
+    {U"£", "", "英镑"},
+};
+
+const Currency* currency_at(const std::vector<CodePoint>& text, std::size_t i, std::size_t& end) {
+    for (const auto& currency : kCurrencies) {
+        std::size_t k = 0;
+        while (k < currency.written.size() && i + k < text.size() && text[i + k].value == currency.written[k]) ++k;
+        if (k == currency.written.size() && is_digit_at(text, i + k)) {
+            end = i + k;
+            return &currency;
+        }
+    }
+    return nullptr;
+}
+
+// How one number is said, given what follows it.
+struct NumberContext {
+    char32_t next = 0;          // the code point after the form ('%' counts as the unit)
+    bool has_unit = false;      // a unit follows (5km): a measure, so 2 is 两
+    bool is_ordinal = false;    // 第 before it
+    bool is_phone = false;      // a phone word earlier in the sentence
+};
+
+struct SaidNumber {
+    std::string words;
+    bool is_year = false;
+    std::string warning;
+};
+
+SaidNumber say_number(const WrittenNumber& number, const NumberContext& context) {
+    SaidNumber said;
+    const auto& whole = number.whole;
+    if (number.has_point) {
+        if (whole.size() > kMostCardinalDigits) {
+            said.words = digit_words(whole) + "点" + digit_words(number.fraction);
+            said.warning = "more than 16 digits before the point; read digit by digit";
+        } else {
+            said.words = decimal_words(whole, number.fraction);
+        }
+        return said;
+    }
+    if (whole.size() > kMostCardinalDigits) {
+        said.words = digit_words(whole);
+        said.warning = "a number of more than 16 digits; read digit by digit";
+        return said;
+    }
+    if (!number.has_separators) {
+        const bool is_mobile = whole.size() == 11 && whole.front() == '1';
+        if ((context.is_phone && whole.size() >= 3) || is_mobile) {
+            said.words = digit_words(whole, true);
+            return said;
+        }
+        if (whole.size() >= 2 && whole.front() == '0') {
+            said.words = digit_words(whole);
+            return said;
+        }
+        if (whole.size() == 4 && (context.next == U'年')) {
+            said.words = digit_words(whole);
+            said.is_year = true;
+            return said;
+        }
+        if (whole.size() >= 3 && names_by_digits(context.next)) {
+            said.words = digit_words(whole);
+            return said;
+        }
+    }
+    if (whole == "2" && !context.is_ordinal && (context.has_unit || takes_liang(context.next))) {
+        said.words = "两";
+        return said;
+    }
+    said.words = cardinal_words(whole, !context.is_ordinal);
+    return said;
+}
+
+void append_warning(SpokenForm& form, const std::string& warning) {
+    if (warning.empty()) return;
+    if (!form.warning.empty()) form.warning += "; ";
+    form.warning += warning;
+}
+
+// 3:30 三点三十分, 10:05 十点零五分, 2:00 两点; nullopt when the text after the colon is not
+// minutes (3:2 is a score).
+std::optional<SpokenForm> read_clock_time(const std::vector<CodePoint>& text, const WrittenNumber& hour) {
+    auto i = hour.end + 1;
+    const auto minutes = digits_from(text, i);
+    if (hour.has_point || hour.has_separators || hour.whole.size() > 2 || std::stoi(hour.whole) > 24 ||
+        minutes.size() != 2 || minutes > "59") {
+        return std::nullopt;
+    }
+    auto say_part = [](const std::string& digits, const char* unit) -> std::string {
+        if (digits == "00") return "";
+        if (digits.front() == '0') return std::string("零") + digit_words(digits.substr(1)) + unit;
+        return cardinal_words(digits, false) + unit;
+    };
+    SpokenForm form;
+    form.words = (hour.whole == "2" ? std::string("两") : cardinal_words(hour.whole, false)) + "点" +
+                 say_part(minutes, "分");
+    if (value_at(text, i) == ':' && is_digit_at(text, i + 1) && is_digit_at(text, i + 2) &&
+        !is_digit_at(text, i + 3)) {
+        auto k = i + 1;
+        const auto seconds = digits_from(text, k);
+        if (seconds <= "59") {
+            if (minutes == "00" && seconds != "00") form.words += "零";
+            form.words += say_part(seconds, "秒");
+            i = k;
+        }
+    }
+    form.end = i;
+    return form;
+}
+
+bool is_dash(char32_t c) {
+    return c == '-' || c == 0x2013 /*–*/ || c == 0x2014 /*—*/ || c == 0x2212 /*−*/;
+}
+
+bool is_range_mark(char32_t c) {
+    return is_dash(c) || c == '~' || c == 0x301C /*〜*/;
+}
+
+// 2026-12-01, 2026/12/1: a year, a month and a day.
+std::optional<SpokenForm> read_numeric_date(const std::vector<CodePoint>& text, const WrittenNumber& year) {
+    const auto separator = value_at(text, year.end);
+    if (year.has_point || year.has_separators || year.whole.size() != 4 || !(separator == '-' || separator == '/')) {
+        return std::nullopt;
+    }
+    auto i = year.end + 1;
+    const auto month = digits_from(text, i);
+    if (month.empty() || month.size() > 2 || value_at(text, i) != separator) return std::nullopt;
+    ++i;
+    const auto day = digits_from(text, i);
+    const int month_value = month.empty() ? 0 : std::stoi(month);
+    const int day_value = day.empty() ? 0 : std::stoi(day);
+    if (day.empty() || day.size() > 2 || month_value < 1 || month_value > 12 || day_value < 1 || day_value > 31) {
+        return std::nullopt;
+    }
+    SpokenForm form;
+    form.words = digit_words(year.whole) + "年" + cardinal_words(month, false) + "月" + cardinal_words(day, false) + "日";
+    form.end = i;
+    return form;
+}
+
+// 010-12345678, 0912-345-678: groups of digits joined by dashes, said digit by digit.
+std::optional<SpokenForm> read_dashed_digits(const std::vector<CodePoint>& text, const WrittenNumber& first,
+                                             bool is_phone) {
+    if (first.has_point || first.has_separators) return std::nullopt;
+    std::vector<std::string> groups{first.whole};
+    auto i = first.end;
+    while (is_dash(value_at(text, i)) && is_digit_at(text, i + 1)) {
+        ++i;
+        groups.push_back(digits_from(text, i));
+    }
+    const bool looks_like_phone = first.whole.front() == '0' || groups.size() >= 3 || is_phone;
+    if (groups.size() < 2 || !looks_like_phone) return std::nullopt;
+    SpokenForm form;
+    for (const auto& group : groups) form.words += digit_words(group, true);
+    form.end = i;
+    return form;
+}
+
+}  // namespace
+
+std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, std::size_t start) {
+    auto i = start;
+    const Currency* currency = currency_at(text, i, i);
+    std::string sign_words;
+    const auto first = value_at(text, i);
+    const bool after_word = start > 0 && (is_digit_at(text, start - 1) || is_ascii_letter(value_at(text, start - 1)));
+    if (currency == nullptr && (is_dash(first) || first == '+') && is_digit_at(text, i + 1) && !after_word) {
+        sign_words = first == '+' ? "正" : "负";
+        ++i;
+    }
+    if (!is_digit_at(text, i)) return std::nullopt;
+
+    NumberContext context;
+    std::size_t previous = start;
+    while (previous > 0 && text[previous - 1].value == ' ') --previous;
+    context.is_ordinal = previous > 0 && (text[previous - 1].value == U'第');
+    context.is_phone = follows_phone_word(text, start);
+
+    const auto number = parse_number(text, i);
+    SpokenForm form;
+    if (sign_words.empty() && currency == nullptr && value_at(text, number.end) == ':') {
+        if (auto time = read_clock_time(text, number)) return time;
+        if (is_digit_at(text, number.end + 1)) {
+            auto second = parse_number(text, number.end + 1);
+            form.words = say_number(number, context).words + "比" + say_number(second, context).words;
+            form.end = second.end;
+            return form;
+        }
+    }
+    if (sign_words.empty() && currency == nullptr) {
+        if (auto date = read_numeric_date(text, number)) return date;
+        if (auto digits = read_dashed_digits(text, number, context.is_phone)) return digits;
+    }
+    if (value_at(text, number.end) == '/' && is_digit_at(text, number.end + 1) && !number.has_point) {
+        const auto denominator = parse_number(text, number.end + 1);
+        const auto said_denominator = say_number(denominator, {});
+        const auto said_numerator = say_number(number, {});
+        form.words = sign_words + said_denominator.words + "分之" + said_numerator.words;
+        append_warning(form, said_denominator.warning);
+        append_warning(form, said_numerator.warning);
+        form.end = denominator.end;
+        return form;
+    }
+
+    // One number, or a range of two (3-5, 3~5), said with what follows the last of them.
+    std::vector<WrittenNumber> numbers{number};
+    auto after_first = number.end;
+    const bool first_is_percent = value_at(text, after_first) == '%';
+    if (first_is_percent) ++after_first;  // 10%-20%
+    if (is_range_mark(value_at(text, after_first)) && is_digit_at(text, after_first + 1)) {
+        auto second = parse_number(text, after_first + 1);
+        if (!first_is_percent || value_at(text, second.end) == '%') numbers.push_back(std::move(second));
+    }
+    auto end = numbers.back().end;
+    std::size_t unit_end = end;
+    const Unit* unit = unit_at(text, end, unit_end);
+    context.next = value_at(text, end);
+    context.has_unit = unit != nullptr && unit->written != "%";
+    std::string unit_words = unit == nullptr ? "" : unit->words;
+    const bool is_percent = unit != nullptr && unit->written == "%";
+    const bool is_per_mille = end < text.size() && text[end].value == 0x2030 /*‰*/;
+    const bool is_temperature = unit != nullptr && std::string_view(unit->words).find("氏度") != std::string_view::npos;
+    if (sign_words == "负" && is_temperature) sign_words = "零下";
+
+    for (std::size_t k = 0; k < numbers.size(); ++k) {
+        const auto said = say_number(numbers[k], context);
+        if (k > 0) form.words += "到";
+        if (k == 0) form.words += sign_words;
+        if (currency != nullptr) form.words += currency->before;
+        if (is_percent) form.words += "百分之";
+        if (is_per_mille) form.words += "千分之";
+        form.words += said.words;
+        if (said.is_year) {
+            form.words += "年";
+            // The 年 of a year belongs to the form; after a range, only the last takes it.
+            if (k + 1 < numbers.size()) form.words.erase(form.words.size() - std::string_view("年").size());
+        }
+        append_warning(form, said.warning);
+        if (said.is_year && k + 1 == numbers.size()) end += 1;
+    }
+    if (unit != nullptr) end = unit_end;
+    if (is_per_mille) end += 1;
+    form.words += unit_words;
+    if (currency != nullptr) {
+        // $5万 is 五万美元: the magnitude comes before the currency's name.
+        if (is_one_of(value_at(text, end), U"万萬亿億千")) {
+            form.words += text[end].text;
+            ++end;
+        }
+        form.words += currency->after;
+    }
+    form.end = end;
+    return form;
+}
+
+}  // namespace talkface::detail

@@ -1,0 +1,31 @@
+// Numbers as written on a page (2026年, 12月1日, 3:30, 85%, 1/3, 3-5, -3, 1,234, ¥199, NT$300,
+// 5km, 25℃, 13812345678), read as a native reader says them (issue 13, SPEC "Transcript to
+// syllables"). The conventions chosen where usage varies are in docs/written-forms.md.
+#ifndef TALKFACE_TEXT_WRITTEN_NUMBERS_HPP
+#define TALKFACE_TEXT_WRITTEN_NUMBERS_HPP
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "text/code_points.hpp"
+
+namespace talkface::detail {
+
+struct SpokenForm {
+    std::size_t end = 0;   // index past the written form in the code points
+    std::string words;     // what is said, in Simplified characters: 二零二六年
+    std::string warning;   // what the reader should know ("read digit by digit"), or ""
+};
+
+// The number form that starts at text[start] (a digit, full-width or not, or a sign or currency
+// sign right before one: -3, ¥199, $5, NT$300), with the characters after it that decide how it is
+// said and are said with it (年 of a year, % , ℃, km, the 万 of $5万); nullopt if no number
+// starts there. Characters before it are looked at, not taken: 第 (an ordinal keeps 二), a phone
+// word earlier in the sentence (电话, 號碼: digits are said one by one, 1 as 幺).
+std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, std::size_t start);
+
+}  // namespace talkface::detail
+
+#endif

@@ -1,0 +1,247 @@
+// Written forms read aloud (issue 13): numbers, dates, times, amounts, units, phone numbers,
+// letters and English words, as a native reader says them, in Simplified and Traditional text.
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "talkface/errors.hpp"
+#include "talkface/lip_sync.hpp"
+#include "talkface/transcript.hpp"
+#include "text/latin_words.hpp"
+#include "text/number_words.hpp"
+
+using namespace talkface;
+
+namespace {
+
+// What is said: the syllables' texts, characters run together, Latin syllables apart.
+std::string said(const Timeline& timeline) {
+    std::string text;
+    for (const auto& syllable : timeline.syllables) {
+        const bool is_wide = (static_cast<unsigned char>(syllable.text.front()) & 0x80U) != 0;
+        if (!text.empty() && !is_wide) text += ' ';
+        text += syllable.text;
+    }
+    return text;
+}
+
+std::string said(const std::string& transcript) {
+    return said(read_transcript(transcript));
+}
+
+std::string pinyin_of(const std::string& transcript) {
+    std::string text;
+    for (const auto& syllable : read_transcript(transcript).syllables) text += (text.empty() ? "" : " ") + syllable.pinyin;
+    return text;
+}
+
+struct Case {
+    std::string written;
+    std::string said;
+};
+
+void check_cases(const std::vector<Case>& cases) {
+    for (const auto& item : cases) {
+        CAPTURE(item.written);
+        const auto timeline = read_transcript(item.written);
+        CHECK(said(timeline) == item.said);
+        CHECK(timeline.warnings.empty());
+    }
+}
+
+}  // namespace
+
+TEST_SUITE("written forms") {
+    TEST_CASE("cardinals are said with 万 and 亿 groups, 零 for inner zeros, 十 at the head") {
+        const std::vector<Case> cases = {
+            {"0", "零"},          {"7", "七"},           {"10", "十"},           {"12", "十二"},
+            {"20", "二十"},       {"105", "一百零五"},    {"110", "一百一十"},     {"1010", "一千零一十"},
+            {"12999", "一万二千九百九十九"},             {"10005", "一万零五"},   {"100010", "十万零一十"},
+            {"1000000", "一百万"}, {"100000000", "一亿"}, {"120000000", "一亿二千万"},
+            {"1000000001", "十亿零一"}, {"9999999999999999", "九千九百九十九万九千九百九十九亿九千九百九十九万九千九百九十九"},
+        };
+        for (const auto& item : cases) {
+            CAPTURE(item.written);
+            CHECK(detail::cardinal_words(item.written) == item.said);
+        }
+    }
+
+    TEST_CASE("2 is 两 before a measure word and at the head of 千, 万 and 亿") {
+        check_cases({
+            {"2本书", "两本书"},       {"2個人", "两個人"},          {"2400万", "两千四百万"},
+            {"2000", "两千"},         {"20000", "两万"},            {"2亿", "两亿"},
+            {"12000", "一万二千"},     {"22本", "二十二本"},          {"200000", "二十万"},
+            {"2月", "二月"},          {"2号", "二号"},              {"第2名", "第二名"},
+            {"2km", "两公里"},        {"2", "二"},                  {"2.5万", "二点五万"},
+        });
+    }
+
+    TEST_CASE("years are said digit by digit, dates and clock times as read aloud") {
+        check_cases({
+            {"2026年", "二零二六年"},                    {"1998年", "一九九八年"},
+            {"12月1日", "十二月一日"},                    {"2026年12月1日", "二零二六年十二月一日"},
+            {"2026-12-01", "二零二六年十二月一日"},        {"2026/1/5", "二零二六年一月五日"},
+            {"3:30", "三点三十分"},                       {"10:05", "十点零五分"},
+            {"2:00", "两点"},                             {"10点05分", "十点零五分"},
+            {"8:05:30", "八点零五分三十秒"},               {"2020-2025年", "二零二零到二零二五年"},
+            {"比分3:2", "比分三比二"},
+        });
+    }
+
+    TEST_CASE("percentages, decimals, fractions, ranges and signs") {
+        check_cases({
+            {"85%", "百分之八十五"},     {"0.5%", "百分之零点五"},   {"３％", "百分之三"},
+            {"3.14", "三点一四"},        {"0.05", "零点零五"},       {"1/3", "三分之一"},
+            {"2/3", "三分之二"},         {"3-5天", "三到五天"},       {"3~5", "三到五"},
+            {"-3", "负三"},              {"-3℃", "零下三摄氏度"},     {"+5", "正五"},
+            {"5‰", "千分之五"},          {"10%-20%", "百分之十到百分之二十"}, {"3-5%", "百分之三到百分之五"},
+        });
+    }
+
+    TEST_CASE("thousands separators, money and units") {
+        check_cases({
+            {"1,234", "一千二百三十四"},       {"1,234,567", "一百二十三万四千五百六十七"},
+            {"199元", "一百九十九元"},          {"¥199", "一百九十九元"},
+            {"￥50", "五十元"},                 {"$5", "五美元"},
+            {"$3.5", "三点五美元"},             {"NT$300", "新台币三百元"},
+            {"$5万", "五万美元"},               {"€20", "二十欧元"},
+            {"5km", "五公里"},                  {"60kg", "六十公斤"},
+            {"25℃", "二十五摄氏度"},            {"100 m", "一百米"},
+            {"120km/h", "一百二十公里每小时"},
+        });
+    }
+
+    TEST_CASE("phone and room numbers are said digit by digit, 1 as 幺 on the phone") {
+        check_cases({
+            {"13812345678", "幺三八幺二三四五六七八"},
+            {"010-12345678", "零幺零幺二三四五六七八"},
+            {"0912-345-678", "零九幺二三四五六七八"},
+            {"请拨打110", "请拨打幺幺零"},
+            {"電話：2345 6789", "電話二三四五六七八九"},
+            {"305室", "三零五室"},
+            {"302路公交车", "三零二路公交车"},
+            {"007", "零零七"},
+        });
+    }
+
+    TEST_CASE("full-width digits read as ASCII digits, in Simplified and Traditional text") {
+        check_cases({
+            {"１２３", "一百二十三"},
+            {"今年是２０２６年", "今年是二零二六年"},
+            {"兩岸有2400萬人", "兩岸有两千四百萬人"},
+            {"他買了2本書", "他買了两本書"},
+        });
+    }
+
+    TEST_CASE("acronyms are said letter by letter, English words by the dictionary") {
+        const std::vector<Case> cases = {
+            {"AI", "ei ai"},           {"CEO", "xi yi ou"},        {"GDP", "ji di pi"},
+            {"USB", "you ai si bi"},   {"OK", "ou kei"},           {"iPhone", "ai feng"},
+            {"Wi-Fi", "wai fa"},       {"email", "e mei"},         {"WeChat", "wei cha te"},
+            {"5G", "五 ji"},           {"MP3", "ai mu pi三"},       {"iPhone15", "ai feng十五"},
+        };
+        check_cases(cases);
+    }
+
+    TEST_CASE("a word the dictionary lacks is spelled letter by letter, with a warning") {
+        const auto timeline = read_transcript("用Xqzt吧", {}, "t.txt");
+        CHECK(said(timeline) == "用 ai ke si qiu zei ti吧");
+        REQUIRE(timeline.warnings.size() == 1);
+        CHECK(timeline.warnings[0].find("t.txt:1:2: \"Xqzt\" is not in the English pronouncing dictionary") == 0);
+    }
+
+    TEST_CASE("every letter name and every English reading is a syllable the aligner and the lips take") {
+        for (char letter = 'A'; letter <= 'Z'; ++letter) {
+            CAPTURE(letter);
+            for (const auto& syllable : detail::letter_syllables(std::string(1, letter))) {
+                CAPTURE(syllable);
+                CHECK(is_valid_pinyin(syllable));
+                CHECK_NOTHROW(syllable_mouth_shapes(syllable));
+            }
+        }
+        std::size_t checked = 0;
+        for (const auto line : detail::english_lines()) {
+            const auto tab = line.find('\t');
+            std::string_view rest = line.substr(tab + 1);
+            while (!rest.empty()) {
+                const auto space = rest.find(' ');
+                const std::string syllable(rest.substr(0, space));
+                if (!is_valid_pinyin(syllable)) {
+                    CAPTURE(line);
+                    CHECK(is_valid_pinyin(syllable));
+                }
+                ++checked;
+                rest.remove_prefix(space == std::string_view::npos ? rest.size() : space + 1);
+            }
+        }
+        CHECK(checked > 200000);
+        for (const std::string word : {"street", "hello", "microsoft", "strengths", "the", "rhythm", "quick", "judge"}) {
+            CAPTURE(word);
+            const auto syllables = detail::english_word_syllables(word);
+            REQUIRE(syllables);
+            for (const auto& syllable : *syllables) {
+                CAPTURE(syllable);
+                CHECK(is_valid_pinyin(syllable));
+                CHECK_NOTHROW(syllable_mouth_shapes(syllable));
+            }
+        }
+    }
+
+    TEST_CASE("each written form keeps its text beside the syllables it became") {
+        const auto timeline = read_transcript("今天是2026年12月1日，我用iPhone。");
+        CHECK(timeline.sentences.at(0).text == "今天是2026年12月1日，我用iPhone。");
+        REQUIRE(timeline.written_forms.size() == 4);
+        const auto& year = timeline.written_forms[0];
+        CHECK(year.text == "2026年");
+        CHECK(year.first_syllable == 3);
+        CHECK(year.syllable_count == 5);
+        CHECK(timeline.syllables[3].text == "二");
+        CHECK(timeline.syllables[3].pinyin == "er4");
+        CHECK(timeline.syllables[7].pinyin == "nian2");
+        CHECK(timeline.written_forms[1].text == "12");
+        CHECK(timeline.written_forms[2].text == "1");
+        CHECK(timeline.written_forms[3].text == "iPhone");
+        CHECK(timeline.written_forms[3].first_syllable == 15);
+        CHECK(timeline.written_forms[3].syllable_count == 2);
+        CHECK(timeline.syllables[12].pause_after);  // the comma after 日
+    }
+
+    TEST_CASE("a fix right after a written form replaces its reading, in characters or pinyin") {
+        CHECK(said("2026{两千零二十六}年") == "两千零二十六年");
+        CHECK(pinyin_of("OK{ou1 kei4}") == "ou1 kei4");
+        CHECK(pinyin_of("3:30{san1 dian3 ban4}") == "san1 dian3 ban4");
+        const auto timeline = read_transcript("共2026{两千 零二十六}人");
+        REQUIRE(timeline.written_forms.size() == 1);
+        CHECK(timeline.written_forms[0].text == "2026");
+        CHECK(timeline.written_forms[0].syllable_count == 6);
+        CHECK(timeline.sentences[0].text == "共2026人");
+        CHECK(said(timeline) == "共两千零二十六人");
+    }
+
+    TEST_CASE("a bad fix of a written form is an error naming it and where it stands") {
+        CHECK_THROWS_WITH_AS(read_transcript("买2026{xyz9}个", {}, "t.txt"),
+                             doctest::Contains("t.txt:1:6: reading fix \"{xyz9}\" for \"2026\""), ParseError);
+        CHECK_THROWS_WITH_AS(read_transcript("OK{}", {}, "t.txt"), doctest::Contains("the fix is empty"), ParseError);
+        CHECK_THROWS_WITH_AS(read_transcript("5{★}", {}, "t.txt"),
+                             doctest::Contains("neither a Chinese character with a reading nor numbered pinyin"),
+                             ParseError);
+        CHECK_THROWS_WITH_AS(read_transcript("5 {wu3}", {}, "t.txt"), doctest::Contains("must directly follow"),
+                             ParseError);
+    }
+
+    TEST_CASE("a number of more than 16 digits is read digit by digit with a warning") {
+        const std::string digits = "12345678901234567";
+        const auto timeline = read_transcript("号码是" + digits + "。", {}, "t.txt");
+        CHECK(said(timeline) == "号码是一二三四五六七八九零一二三四五六七");
+        REQUIRE(timeline.warnings.size() == 1);
+        CHECK(timeline.warnings[0] ==
+              "t.txt:1:4: \"" + digits + "\": a number of more than 16 digits; read digit by digit");
+        const auto long_decimal = read_transcript(std::string(40, '9') + ".5");
+        CHECK(long_decimal.syllables.size() == 42);
+        CHECK(long_decimal.warnings.size() == 1);
+        const auto sixteen = read_transcript("1234567890123456");
+        CHECK(sixteen.warnings.empty());
+        CHECK(said(sixteen).find("万") != std::string::npos);
+    }
+}

@@ -1,0 +1,155 @@
+#!/usr/bin/python3
+"""Generates src/text/data/english.cpp: English words as Mandarin-like syllables, so that an English
+word in a Mandarin transcript (iPhone, Wi-Fi, email) gets syllables the aligner can time and the lips
+can shape (issue 13). Run with Debian 12's /usr/bin/python3 after `apt-get install festlex-cmu`.
+
+Source: the CMU pronouncing dictionary 0.4 as Festival ships it (festlex-cmu,
+/usr/share/festival/dicts/cmu/cmudict-0.4.out): ~106k words, each already cut into syllables with
+a stress mark. Each English syllable becomes one Mandarin syllable, its onset and vowel mapped to
+the nearest pinyin initial and final; an s before another consonant (street, spin) and the last
+consonant of a word (the k of Mike, the s of news) become syllables of their own with a short
+vowel, as Mandarin speakers say them (迈克 mai ke); liquids and glides after a consonant (play,
+quick, cute) and other codas are dropped. Every result is a syllable of the library's own table
+(the one make_readings.py writes, which the aligner and the lips accept); when the plain mapping
+is not (fi, gi), the nearest one in it is taken (fa, ji). Stressed syllables get tone 1, the rest tone 5: tones do not move the
+lips, and espeak-ng speaks them either way.
+
+Why a committed table and not the dictionary read at run time: the library must run with no data
+package installed and give the same syllables on every machine (SPEC "Transcript to syllables"),
+like the Unihan tables; the mapping is done once, here, where it can be checked whole. The
+dictionary's licence (a BSD-style permission from the University of Edinburgh and CMU) allows
+this with its notice kept: docs/data-licences.md.
+"""
+
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from embed_text import write_cpp  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DICTIONARY = "/usr/share/festival/dicts/cmu/cmudict-0.4.out"
+OUTPUT = os.path.join(ROOT, "src", "text", "data", "english.cpp")
+READINGS = os.path.join(ROOT, "src", "text", "data", "readings.cpp")
+
+
+def library_syllables():
+    """The toneless syllables the library accepts (and the lips shape): the syllable table that
+    make_readings.py wrote, which is narrower than pinyin_rules' grammar (no gi, no fai)."""
+    with open(READINGS, encoding="utf-8") as source:
+        text = source.read()
+    table = text[text.index("kSyllablesText[] = {"):]
+    table = table[:table.index("};")]
+    return set(re.findall(r'"([a-z]+)\\n"', table))
+
+
+LEGAL = library_syllables()
+
+
+def is_legal_toneless(syllable):
+    return syllable in LEGAL
+
+VOWELS = {"aa": "a", "ae": "a", "ah": "a", "ao": "o", "aw": "ao", "ax": "e", "ay": "ai", "eh": "ai",
+          "er": "er", "ey": "ei", "ih": "i", "iy": "i", "ow": "ou", "oy": "ao", "uh": "u", "uw": "u"}
+INITIALS = {"p": "p", "b": "b", "t": "t", "d": "d", "k": "k", "g": "g", "f": "f", "v": "w", "th": "s",
+            "dh": "d", "s": "s", "z": "z", "sh": "sh", "zh": "r", "ch": "ch", "jh": "zh", "m": "m",
+            "n": "n", "l": "l", "r": "r", "w": "w", "y": "y", "hh": "h", "ng": "n"}
+# A consonant said as a syllable of its own (the s of street, the k of Mike).
+CONSONANT_SYLLABLES = {"p": "pu", "b": "bu", "t": "te", "d": "de", "k": "ke", "g": "ge", "f": "fu",
+                       "v": "fu", "th": "si", "dh": "de", "s": "si", "z": "zi", "sh": "shi",
+                       "zh": "shi", "ch": "qi", "jh": "zhi", "l": "le", "hh": "he"}
+NASAL = {("a", "n"): "an", ("a", "ng"): "ang", ("e", "n"): "en", ("e", "ng"): "eng", ("i", "n"): "in",
+         ("i", "ng"): "ing", ("u", "n"): "un", ("u", "ng"): "ong", ("ai", "n"): "an", ("ai", "ng"): "ang",
+         ("ei", "n"): "en", ("ei", "ng"): "eng", ("ao", "n"): "an", ("ao", "ng"): "ang", ("ou", "n"): "ong",
+         ("ou", "ng"): "ong", ("o", "n"): "ong", ("o", "ng"): "ong", ("er", "n"): "en", ("er", "ng"): "eng"}
+# Nearest finals to try, in order, when initial + final is not a Mandarin syllable.
+NEAREST = {"i": ["ei", "ai"], "in": ["en"], "ing": ["eng"], "ei": ["ai", "i"], "ai": ["a", "ei"],
+           "ou": ["o", "u", "ao"], "o": ["ou", "uo", "ao", "a"], "ao": ["ou", "a"], "u": ["ou", "o"],
+           "un": ["en", "ong"], "ong": ["eng", "ang"], "er": ["e", "a"], "e": ["a", "ei"], "an": ["en", "ang"],
+           "en": ["an", "eng"], "ang": ["eng", "an"], "eng": ["ang", "en"], "a": ["e"]}
+PALATAL = {"g": "j", "k": "q", "h": "x", "z": "j", "c": "q", "s": "x", "zh": "j", "ch": "q", "sh": "x"}
+# A final with no initial, as pinyin spells it.
+BARE = {"i": "yi", "in": "yin", "ing": "ying", "u": "wu", "un": "wen", "ong": "weng"}
+
+
+def legal_syllable(initial, final):
+    """The nearest legal toneless syllable to initial + final."""
+    finals = [final] + NEAREST.get(final, [])
+    initials = [initial] + ([PALATAL[initial]] if initial in PALATAL else [])
+    for candidate_final in finals:
+        for candidate_initial in initials:
+            if candidate_initial:
+                syllable = candidate_initial + candidate_final
+                if is_legal_toneless(syllable):
+                    return syllable
+    for candidate_final in finals:
+        syllable = BARE.get(candidate_final, candidate_final)
+        if is_legal_toneless(syllable):
+            return syllable
+    return "a"
+
+
+def map_word(syllables):
+    """[(phones, stress), ...] from the dictionary -> numbered pinyin syllables."""
+    result = []
+    for index, (phones, stress) in enumerate(syllables):
+        # A few syllables are a consonant alone (the m of "hmm"): said with the weak vowel.
+        vowel_at = next((i for i, phone in enumerate(phones) if phone in VOWELS), len(phones))
+        onset, coda = phones[:vowel_at], phones[vowel_at + 1:]
+        vowel = phones[vowel_at] if vowel_at < len(phones) else "ax"
+        tone = "1" if stress > 0 else "5"
+        if len(onset) >= 2 and onset[0] in ("s", "sh"):
+            result.append(CONSONANT_SYLLABLES[onset[0]] + "5")
+            onset = onset[1:]
+        # A liquid or glide after a consonant is dropped (play, quick, cute); otherwise the first
+        # consonant of a cluster opens the syllable.
+        while len(onset) >= 2 and onset[-1] in ("l", "r", "w", "y"):
+            onset = onset[:-1]
+        initial = INITIALS[onset[0]] if onset else ""
+        final = VOWELS[vowel]
+        nasal = next((phone for phone in coda if phone in ("n", "m", "ng")), None)
+        if nasal is not None:
+            final = NASAL.get((final, "n" if nasal == "m" else nasal), final)
+        result.append(legal_syllable(initial, final) + tone)
+        is_last = index + 1 == len(syllables)
+        last = coda[-1] if coda else None
+        if is_last and last in CONSONANT_SYLLABLES and last != "l":
+            result.append(CONSONANT_SYLLABLES[last] + "5")
+    return result
+
+
+ENTRY = re.compile(r'^\("((?:[^"\\]|\\.)*)" \S+ \((.*)\)\)\s*$')
+SYLLABLE = re.compile(r"\(\(([a-z ]+)\) (\d)\)")
+
+
+def main():
+    words = {}
+    with open(DICTIONARY, encoding="latin-1") as source:
+        for line in source:
+            match = ENTRY.match(line)
+            if not match:
+                continue
+            word = match.group(1).lower()
+            # Letters and inner apostrophes only; the first entry of a homograph is its commonest.
+            if not re.fullmatch(r"[a-z]+(?:'[a-z]+)?", word) or word in words:
+                continue
+            syllables = [(phones.split(), int(stress)) for phones, stress in SYLLABLE.findall(match.group(2))]
+            if syllables:
+                words[word] = map_word(syllables)
+    for word, readings in words.items():
+        for reading in readings:
+            assert is_legal_toneless(reading[:-1]), (word, reading)
+    lines = [f"{word}\t{' '.join(readings)}" for word, readings in sorted(words.items())]
+    write_cpp(OUTPUT, "tools/make_english.py",
+              ["The CMU pronouncing dictionary 0.4 (Debian festlex-cmu, cmudict-0.4.out), MODIFIED:",
+               "each English syllable mapped onto a Mandarin syllable (see the script).",
+               "Centre for Speech Technology Research, University of Edinburgh, UK.",
+               "Copyright (c) 1996, 1997, 1998. All Rights Reserved. Distributed under the",
+               "permission notice quoted whole in docs/data-licences.md, which must stay with it."],
+              {"english_text": lines})
+    print(f"{len(lines)} words -> {OUTPUT}")
+
+
+if __name__ == "__main__":
+    main()
