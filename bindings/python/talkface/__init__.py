@@ -12,6 +12,8 @@ Coordinates are image pixels with y down; angles are degrees; FAPUs are pixels. 
 talkface.Error subclasses whose messages name the file, line, point or parameter that was wrong:
 ParseError, FileError (also an OSError), InvalidArgument (also a ValueError), AlignmentError,
 Cancelled.
+
+talkface is licensed under the Apache License, Version 2.0 (the LICENSE file; __license__).
 """
 
 from ._talkface import (
@@ -67,7 +69,6 @@ from ._talkface import (
     apply_mouth,
     build_web_page,
     depth_in_d,
-    escape_html,
     expression_event_kind_from_name,
     expression_event_kind_name,
     is_valid_pinyin,
@@ -141,6 +142,9 @@ Example:
 FaceModel.from_photo = staticmethod(_face_model_from_photo)
 
 
+__license__ = "Apache-2.0"
+
+
 def default_face() -> FaceModel:
     """The built-in default face (same as FaceModel.default()).
 
@@ -205,7 +209,6 @@ __all__ = [
     "build_web_page",
     "default_face",
     "depth_in_d",
-    "escape_html",
     "expression_event_kind_from_name",
     "expression_event_kind_name",
     "is_valid_pinyin",
