@@ -127,6 +127,21 @@ tf_status tf_timeline_set_syllable_pause_after(tf_timeline* timeline, size_t ind
     });
 }
 
+tf_status tf_timeline_set_sentence_starts_paragraph(tf_timeline* timeline, size_t index, int starts_paragraph) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        item_at(timeline->timeline.sentences, index, "sentence").starts_paragraph = starts_paragraph != 0;
+    });
+}
+
+tf_status tf_timeline_sentence_starts_paragraph(const tf_timeline* timeline, size_t index, int* out_starts_paragraph) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        require_non_null(out_starts_paragraph, "out_starts_paragraph");
+        *out_starts_paragraph = item_at(timeline->timeline.sentences, index, "sentence").starts_paragraph ? 1 : 0;
+    });
+}
+
 tf_status tf_timeline_set_duration_s(tf_timeline* timeline, double duration_s) {
     return guard([&] {
         require_non_null(timeline, "timeline");

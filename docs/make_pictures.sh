@@ -39,3 +39,23 @@ screenshot "$work_dir/mouth-shapes.svg" "$docs_dir/mouth-shapes.png"
 # The words as pinyin (the sample's default is 願望 and 波濤): a headless machine may have no CJK font.
 "$build_dir/samples/syllable_strip/syllable_strip" "$work_dir/syllable-strip.svg" "yuan4 wang4" "bo1 tao1"
 screenshot "$work_dir/syllable-strip.svg" "$docs_dir/syllable-strip.png"
+
+# The pages (issue 17), seeked into the second sentence of the demo speech and screenshot: the
+# announcer's frame, and the audio book at a phone's and a desktop's size.
+speech_dir="$source_dir/samples/speech"
+seek=$("$build_dir/bin/talkface" align "$speech_dir/demo.ogg" "$speech_dir/demo.txt" --json -q |
+    python3 -c 'import json, sys; s = json.load(sys.stdin)["sentences"][1]; print("%.3f" % (s["start"] + 0.45 * (s["end"] - s["start"])))')
+"$build_dir/bin/talkface" demo -q --app announcer --title "晚間新聞" -o "$work_dir/announcer.html"
+"$build_dir/bin/talkface" demo -q --app audiobook --title "會說話的卡通臉" -o "$work_dir/audiobook.html"
+# page_screenshot HTML PNG WIDTH HEIGHT
+page_screenshot() {
+    profile=$(mktemp -d "$work_dir/profile.XXXXXX")
+    chromium --headless --no-sandbox --disable-gpu --disable-background-networking \
+        --disable-component-update --disable-sync --no-first-run --mute-audio --hide-scrollbars \
+        --user-data-dir="$profile" --virtual-time-budget=4000 --screenshot="$2" --window-size="$3,$4" \
+        "file://$1#t=$seek&pause" >/dev/null 2>&1
+    echo "wrote $2 ($3x$4)"
+}
+page_screenshot "$work_dir/announcer.html" "$docs_dir/announcer.png" 832 482
+page_screenshot "$work_dir/audiobook.html" "$docs_dir/audiobook-phone.png" 390 844
+page_screenshot "$work_dir/audiobook.html" "$docs_dir/audiobook-desktop.png" 1280 800

@@ -568,6 +568,23 @@ TF_API tf_status tf_timeline_warning_count(const tf_timeline *timeline, size_t *
  * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or an argument is NULL. */
 TF_API tf_status tf_timeline_warning(const tf_timeline *timeline, size_t index, const char **out_warning);
 
+/* Marks (non-zero) or clears (0) that sentence `index` begins a paragraph of the transcript (a
+ * blank line before it); the audio book's page keeps the paragraphs. tf_read_transcript sets it.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or timeline is NULL. */
+TF_API tf_status tf_timeline_set_sentence_starts_paragraph(tf_timeline *timeline, size_t index,
+                                                           int starts_paragraph);
+
+/* Whether sentence `index` begins a paragraph (1) or not (0).
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or an argument is NULL. */
+TF_API tf_status tf_timeline_sentence_starts_paragraph(const tf_timeline *timeline, size_t index,
+                                                       int *out_starts_paragraph);
+
+/* The timeline as the `align` JSON document (SPEC "Contracts"), UTF-8:
+ * {"sentences":[{"text","start","end"}], "syllables":[{"text","pinyin","start","end","sentence",
+ * "final_start" (only when known),"confidence","pause_after"}], "duration":s, "warnings":[...]},
+ * numbers in shortest round-trip form. Release *out_json with tf_free; *out_len (if not NULL) is
+ * its length in bytes without the NUL. talkface reads no JSON in C: parse the document with your
+ * JSON library and rebuild it with tf_timeline_create and the add functions.
 /* The timeline as the timeline JSON (docs/timeline-format.md; the `align` document of SPEC
  * "Contracts", versioned), UTF-8: {"version":1, "sentences":[{"text","start","end"}],
  * "syllables":[{"text","pinyin","start","end","sentence","final_start" (only when known),
@@ -1090,6 +1107,57 @@ TF_API tf_status tf_write_web_page(const tf_face_model *face, const tf_svg_optio
                                    const tf_animation *animation, const tf_timeline *timeline,
                                    const char *audio_path, const tf_web_page_options *page_options,
                                    const char *path);
+
+/* ---------------------------------------------------------------------------------------------
+ * Timing exports and imports (issue 15, docs/timing-formats.md): the timing of a speech for the
+ * tools animators use, and timings from theirs instead of the aligner.
+ * ------------------------------------------------------------------------------------------- */
+
+/* The export of an aligned timeline and its animation (tf_animate) in `format`: "rhubarb-tsv",
+ * "rhubarb-json", "rhubarb-xml", "moho", "live2d", "textgrid", "srt" or "vtt", spanning 0 to the
+ * timeline's duration. audio_path (may be NULL) goes into Rhubarb's metadata.soundFile. Release
+ * *out_document with tf_free; *out_len (if not NULL) is its length without the NUL.
+ * Errors: TF_ERR_INVALID_ARGUMENT naming an unknown format (and listing the formats), a duration
+ * that is not positive, or a NULL timeline, animation, format or out_document. */
+TF_API tf_status tf_export_to_string(const tf_timeline *timeline, const tf_animation *animation, const char *format,
+                                     const char *audio_path, char **out_document, size_t *out_len);
+
+/* tf_export_to_string written to `path` atomically; format NULL or "" takes it from the suffix
+ * (.tsv .xml .dat .motion3.json .TextGrid .srt .vtt).
+ * Errors: as tf_export_to_string; TF_ERR_INVALID_ARGUMENT for a suffix that names no format;
+ * TF_ERR_FILE naming the path (the file is then left as it was). */
+TF_API tf_status tf_export_to_file(const char *path, const tf_timeline *timeline, const tf_animation *animation,
+                                   const char *format, const char *audio_path);
+
+/* The transcript (tf_read_transcript) timed by a timing document instead of the aligner, into a
+ * new timeline *out: format "textgrid" (a syllables or words tier), "srt", "vtt", "words-json"
+ * (a list of {"text","start","end"}), "timeline-json", or "json" (either JSON). duration_s is the
+ * audio's length (0: not checked). source_name (may be NULL) names the document in messages.
+ * Errors: TF_ERR_PARSE naming source:line for a malformed document, times out of order or past
+ * duration_s, or a text that parts from the transcript (the first place they part);
+ * TF_ERR_INVALID_ARGUMENT for an unknown format or a NULL argument. */
+TF_API tf_status tf_read_timing_string(const char *text, size_t length, const char *format,
+                                       const tf_timeline *transcript, double duration_s, const char *source_name,
+                                       tf_timeline **out);
+
+/* tf_read_timing_string of a file; format NULL or "" takes it from the suffix.
+ * Errors: TF_ERR_FILE naming the path; as tf_read_timing_string. */
+TF_API tf_status tf_read_timing_file(const char *path, const tf_timeline *transcript, double duration_s,
+                                     const char *format, tf_timeline **out);
+
+/* The timeline in an import format ("textgrid", "srt", "vtt", "words-json", "timeline-json"), so
+ * that tf_read_timing_string gives its times back. Release *out_document with tf_free.
+ * Errors: TF_ERR_INVALID_ARGUMENT for an unknown format or a NULL argument. */
+TF_API tf_status tf_write_timing_string(const tf_timeline *timeline, const char *format, char **out_document,
+                                        size_t *out_len);
+
+/* The transcript spoken in audio_path, timed by the timing file instead of the aligner alone (what
+ * `--timing FILE` does): word and syllable timings are read as they are; subtitle cues bound the
+ * aligner (the recording is aligned and each cue's syllables are kept inside the cue). format NULL
+ * or "" takes it from the suffix.
+ * Errors: as tf_read_timing_file and tf_align_file. */
+TF_API tf_status tf_time_transcript(const char *timing_path, const char *audio_path, const tf_timeline *transcript,
+                                    const char *format, tf_timeline **out);
 
 #ifdef __cplusplus
 }

@@ -16,6 +16,9 @@ struct Sentence {
     std::string text;    ///< the transcript's text of the sentence, UTF-8, punctuation included
     double start_s = 0.0;  ///< seconds from the start of the audio (0 before alignment)
     double end_s = 0.0;    ///< seconds; end_s >= start_s
+    /// Whether a blank line of the transcript stands before it, so that it begins a new paragraph
+    /// (the first sentence begins the first one without it). The audio book's page keeps them.
+    bool starts_paragraph = false;
 };
 
 /// One syllable: one character of the transcript that has a reading.

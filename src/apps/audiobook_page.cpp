@@ -1,23 +1,64 @@
 // The audio book (thesis 7.3): the title, the text with the sentence being spoken highlighted, the
-// links, and the talking face beside them. Link URLs were checked by build_web_page(). Each sentence carries its times, so the page's script
-// highlights it while it is spoken and a click on it seeks the audio there.
+// links, and the talking face beside them. Link URLs were checked by build_web_page(). Each
+// sentence carries its times, so the page's script highlights it while it is spoken, keeps it in
+// view, and a click on it (or Enter) seeks the audio there.
+//
+// Layout: one column on a phone, the face and the player first and held at the top of the screen
+// while the text scrolls under them (a reader deep in the book still sees the face talk); from
+// 820 px on, the text on the left and the face beside it, held in view the same way.
 #include <string>
 
 #include "apps/apps.hpp"
+#include "apps/page_fonts.hpp"
 #include "common/number_format.hpp"
 #include "render/html_text.hpp"
 
 namespace talkface::detail {
+
+namespace {
+
+// Keeps the sentence being spoken in view: when it changes and lies outside the part of the window
+// that the held face leaves free, it is scrolled to a third of the way down that part. Not while
+// the reader scrolls by hand (for 4 s after a wheel, touch or scroll key), so reading ahead works.
+constexpr const char* kFollowScript = R"js((function () {
+  "use strict";
+  var teacher = document.querySelector(".tf-teacher");
+  var handScrolledAt = -1e9;
+  ["wheel", "touchmove"].forEach(function (name) {
+    window.addEventListener(name, function () { handScrolledAt = Date.now(); }, { passive: true });
+  });
+  window.addEventListener("keydown", function (event) {
+    if (["PageUp", "PageDown", "Home", "End"].indexOf(event.key) >= 0) handScrolledAt = Date.now();
+  });
+  document.addEventListener("tf-sentence", function (event) {
+    var sentence = event.detail.element;
+    if (!sentence || Date.now() - handScrolledAt < 4000) return;
+    var box = sentence.getBoundingClientRect();
+    var held = window.getComputedStyle(teacher).position === "sticky" && teacher.getBoundingClientRect().bottom < window.innerHeight / 2;
+    var top = held && teacher.getBoundingClientRect().left < box.right && teacher.getBoundingClientRect().right > box.left
+      ? teacher.getBoundingClientRect().bottom : 0;
+    if (box.top >= top + 8 && box.bottom <= window.innerHeight - 8) return;
+    window.scrollTo(0, window.scrollY + box.top - top - (window.innerHeight - top) / 3);
+  });
+})();
+)js";
+
+}  // namespace
 
 PageParts audiobook_page(const std::string& animation_svg, const Timeline& timeline, const WebPageOptions& options,
                          const std::string& title, const std::string& audio_element) {
     std::string text;
     for (std::size_t k = 0; k < timeline.sentences.size(); ++k) {
         const Sentence& sentence = timeline.sentences[k];
+        if (k == 0 || sentence.starts_paragraph) {
+            if (k > 0) text += "\n</p>\n";
+            text += "<p class=\"tf-paragraph\">\n";
+        }
         text += "<span class=\"tf-sentence\" tabindex=\"0\" data-index=\"" + std::to_string(k) + "\" data-start=\"" +
                 format_fixed(sentence.start_s, 3) + "\" data-end=\"" + format_fixed(sentence.end_s, 3) + "\">" +
-                escape_html(sentence.text) + "</span>\n";
+                escape_html(sentence.text) + "</span>";  // no space between: Chinese sets none
     }
+    if (!timeline.sentences.empty()) text += "\n</p>\n";
     std::string links;
     if (!options.links.empty()) {
         links = "<nav class=\"tf-links\"><h2>Links</h2><ul>\n";
@@ -31,24 +72,47 @@ PageParts audiobook_page(const std::string& animation_svg, const Timeline& timel
 
     PageParts parts;
     parts.style =
-        "body{margin:0;background:#f7f3ea;color:#2b2b2b;font-family:\"Noto Serif CJK TC\",\"Noto Serif CJK SC\","
-        "serif}"
-        ".tf-book{display:flex;flex-wrap:wrap;gap:32px;max-width:1080px;margin:0 auto;padding:32px 24px}"
-        ".tf-reader{flex:1 1 420px;min-width:280px}"
-        ".tf-reader h1{font-size:2rem;margin:0 0 24px;border-bottom:2px solid #d6c9a8;padding-bottom:12px}"
-        ".tf-text{font-size:1.35rem;line-height:2.1;margin:0}"
+        std::string("body{margin:0;background:#f7f3ea;color:#2b2b2b;font-family:") + kSerifFonts +
+        "}"
+        ".tf-book{display:grid;grid-template-columns:minmax(0,1fr);gap:0 40px;max-width:1180px;margin:0 auto;"
+        "padding:0 16px 40vh}"
+        ".tf-reader h1{font-family:" + kSansFonts +
+        ";font-size:1.5rem;margin:16px 0 12px;border-bottom:2px solid #d6c9a8;padding-bottom:8px}"
+        ".tf-text{font-size:1.2rem;line-height:1.95}"
+        ".tf-paragraph{margin:0 0 .9em;text-indent:2em}"
         ".tf-sentence{cursor:pointer;border-radius:4px;padding:2px 1px;transition:background .15s}"
         ".tf-sentence:hover{background:#efe6cf}"
         ".tf-sentence.tf-current{background:#ffd95e;box-shadow:0 0 0 2px #ffd95e}"
-        ".tf-links h2{font-size:1rem;margin:32px 0 8px;color:#6b5e3e}"
+        // The focus ring is blue and outside the highlight, so both show on the same sentence.
+        ":focus-visible{outline:3px solid #1d4ed8;outline-offset:3px}"
+        ".tf-sentence:focus-visible{outline-offset:4px;border-radius:4px}"
+        ".tf-links h2{font-family:" + kSansFonts +
+        ";font-size:1rem;margin:32px 0 8px;color:#6b5e3e}"
         ".tf-links ul{margin:0;padding-left:1.2em}.tf-links a{color:#1d4ed8}"
-        ".tf-teacher{flex:0 0 320px;position:sticky;top:16px;align-self:flex-start;background:#fff;"
-        "border-radius:12px;padding:12px;box-shadow:0 2px 12px #0002}"
-        ".tf-teacher svg.tf-animation{display:block;width:100%;height:auto;border-radius:8px}"
-        "audio{display:block;width:100%;margin-top:10px}";
-    parts.body = "<main class=\"tf-book\">\n<article class=\"tf-reader\">\n<h1>" + escape_html(title) +
-                 "</h1>\n<p class=\"tf-text\">\n" + text + "</p>\n" + links + "</article>\n<aside class=\"tf-teacher\">\n" +
-                 animation_svg + audio_element + "</aside>\n</main>\n";
+        // Phone first: the face and the player held at the top, at most 40% of the screen's height.
+        ".tf-teacher{position:sticky;top:0;z-index:1;margin:0 -16px;padding:8px 16px;background:#fffdf8;"
+        "box-shadow:0 2px 10px #0002}"
+        ".tf-teacher svg.tf-animation{display:block;height:calc(40vh - 70px);max-height:420px;width:auto;"
+        "max-width:100%;margin:0 auto;border-radius:8px}"
+        "audio{display:block;width:100%;height:44px;margin-top:6px}"
+        ".tf-keys{font-family:" + kSansFonts +
+        ";font-size:.8rem;color:#6b5e3e;margin:4px 0 0;text-align:center}"
+        "kbd{border:1px solid #c9bb97;border-radius:3px;padding:0 4px;background:#fff}"
+        "@media (min-width:820px){"
+        ".tf-book{grid-template-columns:minmax(0,1fr) minmax(280px,360px);padding:24px 24px 30vh}"
+        ".tf-reader{grid-column:1;grid-row:1}"
+        ".tf-teacher{grid-column:2;grid-row:1;top:16px;align-self:start;margin:16px 0 0;border-radius:12px;"
+        "padding:12px;box-shadow:0 2px 12px #0002}"
+        ".tf-teacher svg.tf-animation{height:auto;width:100%;max-height:calc(100vh - 160px)}"
+        ".tf-reader h1{font-size:2rem;margin:16px 0 24px}"
+        ".tf-text{font-size:1.35rem;line-height:2.1;max-width:38em}"
+        "}";
+    parts.body = "<main class=\"tf-book\">\n<aside class=\"tf-teacher\">\n" + animation_svg + audio_element +
+                 "<p class=\"tf-keys\"><kbd>Space</kbd> play / pause &#183; <kbd>&#8592;</kbd> <kbd>&#8594;</kbd> "
+                 "sentence</p>\n</aside>\n<article class=\"tf-reader\">\n<h1>" +
+                 escape_html(title) + "</h1>\n<div class=\"tf-text\">\n" + text + "</div>\n" + links +
+                 "</article>\n</main>\n";
+    parts.script = kFollowScript;
     return parts;
 }
 

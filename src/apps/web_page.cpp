@@ -10,6 +10,7 @@
 #include <string>
 
 #include "apps/apps.hpp"
+#include "apps/page_fonts.hpp"
 #include "common/atomic_file.hpp"
 #include "common/number_format.hpp"
 #include "render/html_text.hpp"
@@ -27,14 +28,16 @@ namespace {
 constexpr const char* kScript = R"js((function () {
   "use strict";
   var audio = document.getElementById("tf-audio");
-  var clock = document.querySelector("svg.tf-animation");
-  while (clock.ownerSVGElement) clock = clock.ownerSVGElement;
+  // The animation and, when it is nested in a stage, the stage's own <svg>: Chromium keeps a
+  // nested <svg> on a clock of its own, other browsers use the outermost one's.
+  var clocks = [document.querySelector("svg.tf-animation")];
+  while (clocks[clocks.length - 1].ownerSVGElement) clocks.push(clocks[clocks.length - 1].ownerSVGElement);
   var sentences = Array.prototype.slice.call(document.querySelectorAll(".tf-sentence"));
   var current = -1;
-  clock.pauseAnimations();
+  clocks.forEach(function (clock) { clock.pauseAnimations(); });
   function show() {
     var t = audio.currentTime || 0;
-    clock.setCurrentTime(t);
+    clocks.forEach(function (clock) { clock.setCurrentTime(t); });
     var index = -1;
     for (var k = 0; k < sentences.length; ++k) {
       if (parseFloat(sentences[k].getAttribute("data-start")) <= t) index = k;
@@ -43,6 +46,8 @@ constexpr const char* kScript = R"js((function () {
       if (current >= 0) sentences[current].classList.remove("tf-current");
       if (index >= 0) sentences[index].classList.add("tf-current");
       current = index;
+      document.dispatchEvent(new CustomEvent("tf-sentence",
+        { detail: { index: index, element: index >= 0 ? sentences[index] : null } }));
     }
     document.body.setAttribute("data-tf-time", t.toFixed(3));
     document.body.setAttribute("data-tf-sentence", String(index));
@@ -59,15 +64,34 @@ constexpr const char* kScript = R"js((function () {
     var started = audio.play();
     if (started && started.catch) started.catch(function () {});
   }
-  sentences.forEach(function (sentence) {
-    function seek() {
-      audio.currentTime = parseFloat(sentence.getAttribute("data-start"));
-      play();
-    }
+  function seek_to(index) {
+    audio.currentTime = parseFloat(sentences[index].getAttribute("data-start"));
+    show();
+  }
+  sentences.forEach(function (sentence, index) {
+    function seek() { seek_to(index); play(); }
     sentence.addEventListener("click", seek);
     sentence.addEventListener("keydown", function (event) {
-      if (event.key === "Enter" || event.key === " ") { event.preventDefault(); seek(); }
+      if (event.key === "Enter") { event.preventDefault(); seek(); }
     });
+  });
+  // Keys (issue 17): space plays and pauses, the arrows move a sentence back or on (the audio keeps
+  // playing or stays paused); a focused sentence takes the focus along. Keys typed into a control
+  // (the audio element's own, a link, a field) are the control's.
+  document.addEventListener("keydown", function (event) {
+    if (event.ctrlKey || event.metaKey || event.altKey) return;
+    var target = event.target;
+    if (target && target.closest && target.closest("audio,input,textarea,select,button,a,[contenteditable]")) return;
+    if (event.key === " " || event.key === "Spacebar") {
+      event.preventDefault();
+      if (audio.paused || audio.ended) play(); else audio.pause();
+    } else if (sentences.length > 0 && ["ArrowLeft", "ArrowUp", "ArrowRight", "ArrowDown"].indexOf(event.key) >= 0) {
+      event.preventDefault();
+      var back = event.key === "ArrowLeft" || event.key === "ArrowUp";
+      var index = Math.max(0, Math.min(sentences.length - 1, current + (back ? -1 : 1)));
+      seek_to(index);
+      if (sentences[index].tabIndex >= 0) sentences[index].focus({ preventScroll: true });
+    }
   });
   var wanted = /(?:^#|&)t=([0-9]+(?:\.[0-9]+)?)/.exec(window.location.hash);
   var stays = /(?:^#|&)pause(?:&|$)/.test(window.location.hash);
@@ -174,14 +198,14 @@ std::string build_web_page(const SvgAnimator& animator, const Animation& animati
         const SvgAnimator stage_animator(animator.face(), svg_options);
         parts = detail::announcer_page(
             without_prolog(stage_animator.render_animation_svg(animation, options.animation, progress)),
-            animator.face(), options, title, audio);
+            animator.face(), animation, timeline, options, title, audio);
     } else {
         const std::string svg = without_prolog(animator.render_animation_svg(animation, options.animation, progress));
         if (options.app == WebPageApp::audiobook) {
             parts = detail::audiobook_page(svg, timeline, options, title, audio);
         } else {
             parts.style =
-                "body{margin:0;background:#eef2f6;font-family:sans-serif}"
+                std::string("body{margin:0;background:#eef2f6;font-family:") + detail::kSansFonts + "}"
                 ".tf-plain{max-width:520px;margin:24px auto;padding:0 16px}"
                 ".tf-plain h1{font-size:1.2rem;color:#334155}"
                 "svg.tf-animation{display:block;width:100%;height:auto;border-radius:8px;background:#fff}"
@@ -193,7 +217,8 @@ std::string build_web_page(const SvgAnimator& animator, const Animation& animati
            "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
            "<meta name=\"generator\" content=\"talkface\">\n<title>" +
            escape_html(title) + "</title>\n<style>" + kCommonStyle + parts.style + "</style>\n</head>\n<body class=\"tf-" +
-           web_page_app_name(options.app) + "-page\">\n" + parts.body + "<script>\n" + kScript + "</script>\n</body>\n</html>\n";
+           web_page_app_name(options.app) + "-page\">\n" + parts.body + "<script>\n" + kScript + parts.script +
+           "</script>\n</body>\n</html>\n";
 }
 
 void write_web_page(const std::string& path, const SvgAnimator& animator, const Animation& animation,

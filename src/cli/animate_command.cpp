@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "progress_bar.hpp"
+#include "timing_option.hpp"
 #include "written_report.hpp"
 
 namespace talkface_cli {
@@ -172,7 +173,7 @@ void make_talking_face(const AnimateOptions& options, const std::string& audio_p
 
     const std::unique_ptr<ProgressBar> bar = make_progress_bar(options.quiet);
     const talkface::Timeline timeline =
-        talkface::SpeechAligner().align_file(audio_path, transcript, progress_part(bar.get(), 0.0, kAlignedAt));
+        timed_speech(audio_path, transcript, options.timing_path, progress_part(bar.get(), 0.0, kAlignedAt));
     const talkface::ExpressionSimulator simulator(timeline, options.seed, style);
     talkface::LipSyncOptions lip_sync;
     lip_sync.fps = options.fps;
@@ -209,6 +210,7 @@ void setup_animate_command(CLI::App& app) {
         ->required()
         ->check(CLI::ExistingFile);
     add_page_options(*animate, *options);
+    add_timing_option(*animate, options->timing_path);
     animate->callback([options, audio_path, transcript_path] { run_animate(*options, *audio_path, *transcript_path); });
 }
 

@@ -41,6 +41,7 @@ struct AnimateOptions {
     double face_d = 0.0;
     std::string stage = "800x450";
     std::string output_path;
+    std::string timing_path;  // --timing: time the speech by this file instead of aligning (animate only)
     bool quiet = false;
 };
 

@@ -16,6 +16,9 @@ void setup_syllables_command(CLI::App& app);
 // `talkface keyframes`: mouth key frames and expression events as JSON or TSV (keyframes_command.cpp).
 void setup_keyframes_command(CLI::App& app);
 
+// `talkface export`: the timing for Rhubarb, Moho, Live2D, Praat and subtitle tools (export_command.cpp).
+void setup_export_command(CLI::App& app);
+
 // `talkface align`: sentence and syllable times of a speech, as a table or JSON, and a plot (align_command.cpp).
 void setup_align_command(CLI::App& app);
 

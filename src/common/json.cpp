@@ -6,6 +6,7 @@
 
 #include "common/number_format.hpp"
 #include "common/text_location.hpp"
+#include "common/utf8.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
@@ -15,23 +16,6 @@ namespace {
 // Deep enough for any document talkface reads; a bound keeps hostile input from exhausting the stack.
 constexpr int kMaxDepth = 64;
 
-void append_utf8(std::string& out, std::uint32_t code) {
-    if (code < 0x80) {
-        out += static_cast<char>(code);
-    } else if (code < 0x800) {
-        out += static_cast<char>(0xC0 | (code >> 6));
-        out += static_cast<char>(0x80 | (code & 0x3F));
-    } else if (code < 0x10000) {
-        out += static_cast<char>(0xE0 | (code >> 12));
-        out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (code & 0x3F));
-    } else {
-        out += static_cast<char>(0xF0 | (code >> 18));
-        out += static_cast<char>(0x80 | ((code >> 12) & 0x3F));
-        out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (code & 0x3F));
-    }
-}
 
 }  // namespace
 

@@ -51,8 +51,10 @@ MouthControls mouth_controls(const FaceModel& neutral, MouthShape shape) {
     const double upper_lip_h = neutral.fapu("UpperLipH");
     const double lower_lip_h = neutral.fapu("LowerLipH");
 
-    // Every shape below is thesis 5.2.2 term by term: up = 8.9, dn = 8.2, lf = 8.4, rt = 8.3 of the
-    // neutral face moved by FAPU multiples (image y grows downwards, so "- MNS0" raises a point).
+    // Every shape below is thesis 5.2.2 term by term (up = 8.9, dn = 8.2, lf = 8.4, rt = 8.3 of the
+    // neutral face moved by FAPU multiples; image y grows downwards, so "- MNS0" raises a point),
+    // except the amounts of a, i, u and e, changed so that the shapes tell apart at a glance
+    // (issue 17; docs/design-notes.md "Mouth shapes").
     const auto opened = [&](double up_mns0, double down_mns0) {
         return MouthControls{moved(rest.up, 0.0, -up_mns0 * mns0), moved(rest.down, 0.0, down_mns0 * mns0),
                              rest.left, rest.right};
@@ -87,29 +89,38 @@ MouthControls mouth_controls(const FaceModel& neutral, MouthShape shape) {
         case MouthShape::z:
             return opened(0.15, 0.15);
         case MouthShape::a: {
-            // SPEC fix: the corners move inward by MW0/8 as in 5.2.1; 5.2.2's 0.8 MW0 would cross them.
-            MouthControls c = opened(0.3, 0.8);
-            const double corner_y = (c.up.y + c.down.y) / 2.0 - upper_lip_h / 3.0;
-            c.left = Point2{rest.left.x + mw0 / 8.0, corner_y};
-            c.right = Point2{rest.right.x - mw0 / 8.0, corner_y};
+            // Issue 17: a must read at a glance as the widest, the jaw dropped. The thesis's a moves
+            // the lower lip 0.8 MNS0 and (SPEC fix) pulls the corners in by MW0/8 to the middle of
+            // the opening: a narrow diamond, drawn much like o. Here the jaw drops 1.1 MNS0, the
+            // corners keep the neutral width and drop only a quarter of the way with the lower lip,
+            // so the upper lip stays a straight line and the opening is the broad D of an open "ah".
+            MouthControls c = opened(0.3, 1.1);
+            const double corner_dy = 0.25 * (c.down.y - rest.down.y) - upper_lip_h / 3.0;
+            c.left = moved(rest.left, 0.0, corner_dy);
+            c.right = moved(rest.right, 0.0, corner_dy);
             return c;
         }
         case MouthShape::i: {
+            // Issue 17: spread wider than the thesis's MW0/12 (MW0/8 each side), a thin slit, so i
+            // reads as a smile-wide mouth beside the round o and u.
             MouthControls c = opened(0.0, 1.0 / 6.0);
-            c.left = moved(rest.left, -mw0 / 12.0, -upper_lip_h / 2.0);
-            c.right = moved(rest.right, mw0 / 12.0, -upper_lip_h / 2.0);
+            c.left = moved(rest.left, -mw0 / 8.0, -upper_lip_h / 2.0);
+            c.right = moved(rest.right, mw0 / 8.0, -upper_lip_h / 2.0);
             return c;
         }
         case MouthShape::u: {
-            MouthControls c = opened(0.3, 0.3);
-            c.left = moved(rest.left, 0.2 * mw0, 0.0);
-            c.right = moved(rest.right, -0.2 * mw0, 0.0);
+            // Issue 17: small and pushed out: the corners pulled in to 0.4 MW0 (thesis: 0.6 MW0, as
+            // wide as o) and the lips parted less (thesis: 0.3 MNS0 each way).
+            MouthControls c = opened(0.2, 0.25);
+            c.left = moved(rest.left, 0.3 * mw0, 0.0);
+            c.right = moved(rest.right, -0.3 * mw0, 0.0);
             return c;
         }
         case MouthShape::e: {
+            // Spread as i (issue 17: MW0/8 each side, thesis MW0/12), opened half an MNS0.
             MouthControls c = opened(0.0, 0.5);
-            c.left = moved(rest.left, -mw0 / 12.0, -0.5 * upper_lip_h);
-            c.right = moved(rest.right, mw0 / 12.0, -0.5 * upper_lip_h);
+            c.left = moved(rest.left, -mw0 / 8.0, -0.5 * upper_lip_h);
+            c.right = moved(rest.right, mw0 / 8.0, -0.5 * upper_lip_h);
             return c;
         }
         case MouthShape::o: {

@@ -88,6 +88,13 @@ char32_t ascii_form(char32_t c) {
     return c >= 0xFF01 && c <= 0xFF5E ? c - 0xFEE0 : c;
 }
 
+// Two line breaks with nothing but spaces between them.
+bool has_blank_line(std::string_view space) {
+    const std::size_t first = space.find('\n');
+    if (first == std::string_view::npos) return false;
+    return space.find('\n', first + 1) != std::string_view::npos;
+}
+
 bool ends_sentence(char32_t c) {
     const auto a = ascii_form(c);
     return a == '.' || a == '!' || a == '?' || a == ';' || c == 0x3002 /*。*/ || c == 0xFF61 /*｡*/ ||
@@ -242,6 +249,12 @@ private:
             pending_space_ += c.text;
             return i + 1;
         }
+        // A blank line starts a paragraph, and a sentence never runs on into the next paragraph
+        // (a heading without a full stop is a sentence of its own).
+        if (has_blank_line(pending_space_)) {
+            close_sentence();
+            starts_paragraph_ = !timeline_.sentences.empty();
+        }
         if (c.value == '{') return read_fix(text, i);
         if (tables_.character_readings.count(c.text) != 0) {
             if (sentence_ended_) close_sentence();
@@ -394,7 +407,10 @@ private:
         flush_run();
         const bool has_syllables =
             !timeline_.syllables.empty() && timeline_.syllables.back().sentence == timeline_.sentences.size();
-        if (has_syllables) timeline_.sentences.push_back({sentence_text_, 0.0, 0.0});
+        if (has_syllables) {
+            timeline_.sentences.push_back({sentence_text_, 0.0, 0.0, starts_paragraph_});
+            starts_paragraph_ = false;
+        }
         sentence_text_.clear();
         pending_space_.clear();
         sentence_ended_ = false;
@@ -414,6 +430,7 @@ private:
     std::string sentence_text_;
     std::string pending_space_;
     bool sentence_ended_ = false;  // an end mark was seen; closing quotes may still follow
+    bool starts_paragraph_ = false;  // a blank line stands between the last sentence and the next
 };
 
 }  // namespace

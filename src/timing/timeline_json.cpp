@@ -94,6 +94,13 @@ const std::vector<Field<Sentence>>& sentence_fields() {
          [](const ItemReader& r, const JsonValue& v, Sentence& s) { s.start_s = r.seconds(v, "start"); }},
         {"end", false, true, [](const Sentence& s) -> std::optional<std::string> { return json_number(s.end_s); },
          [](const ItemReader& r, const JsonValue& v, Sentence& s) { s.end_s = r.seconds(v, "end"); }},
+        // Written only where a paragraph begins (issue 17), so documents without paragraphs keep
+        // their bytes.
+        {"paragraph", false, false,
+         [](const Sentence& s) -> std::optional<std::string> {
+             return s.starts_paragraph ? std::optional<std::string>("true") : std::nullopt;
+         },
+         [](const ItemReader& r, const JsonValue& v, Sentence& s) { s.starts_paragraph = r.flag(v, "paragraph"); }},
     };
     return fields;
 }

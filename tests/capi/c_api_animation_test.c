@@ -626,10 +626,37 @@ static int test_destroy_accepts_null(void) {
     return 0;
 }
 
+static int test_paragraphs_of_the_transcript_are_kept(void) {
+    int failures = 0;
+    /* 春曉\n\n春眠不覺曉。處處聞啼鳥。 */
+    const char *text = "\xe6\x98\xa5\xe6\x9b\x89\n\n\xe6\x98\xa5\xe7\x9c\xa0\xe4\xb8\x8d\xe8\xa6\xba\xe6\x9b\x89"
+                       "\xe3\x80\x82\xe8\x99\x95\xe8\x99\x95\xe8\x81\x9e\xe5\x95\xbc\xe9\xb3\xa5\xe3\x80\x82";
+    tf_timeline *timeline = NULL;
+    size_t count = 0;
+    int starts = -1;
+    CHECK_OK(tf_read_transcript(text, strlen(text), "poem.txt", &timeline));
+    CHECK_OK(tf_timeline_sentence_count(timeline, &count));
+    CHECK(count == 3);
+    CHECK_OK(tf_timeline_sentence_starts_paragraph(timeline, 1, &starts));
+    CHECK(starts == 1);
+    CHECK_OK(tf_timeline_sentence_starts_paragraph(timeline, 2, &starts));
+    CHECK(starts == 0);
+    CHECK_OK(tf_timeline_set_sentence_starts_paragraph(timeline, 2, 1));
+    CHECK_OK(tf_timeline_sentence_starts_paragraph(timeline, 2, &starts));
+    CHECK(starts == 1);
+    CHECK_FAILS_WITH(tf_timeline_sentence_starts_paragraph(timeline, 3, &starts), TF_ERR_INVALID_ARGUMENT, "3");
+    CHECK_FAILS_WITH(tf_timeline_set_sentence_starts_paragraph(NULL, 0, 1), TF_ERR_INVALID_ARGUMENT, "timeline");
+    CHECK_FAILS_WITH(tf_timeline_sentence_starts_paragraph(timeline, 0, NULL), TF_ERR_INVALID_ARGUMENT,
+                     "out_starts_paragraph");
+    tf_timeline_destroy(timeline);
+    return failures;
+}
+
 int main(void) {
     int failures = 0;
     failures += test_transcript_is_read_into_sentences_and_syllables();
     failures += test_transcript_errors_name_where();
+    failures += test_paragraphs_of_the_transcript_are_kept();
     failures += test_built_timeline_reads_back_and_writes_align_json();
     failures += test_timeline_json_reads_back_the_same_timeline();
     failures += test_syllable_shapes_size_then_data();

@@ -18,26 +18,28 @@ double vertical_opening(const FaceModel& face) {
 
 // Thesis 5.2.2 as a table, in FAPU multiples of the neutral face (image y down, so a negative dy is
 // up): up.dy in MNS0, down.dy in MNS0 (f: in LowerLipH), corner dx (inward, for 8.4; 8.3 mirrors it)
-// in MW0, corner dy in MNS0 plus in UpperLipH. Shapes a and o put the corners at the middle of the
-// opening instead (corners_mid).
+// in MW0, corner dy in MNS0 plus in UpperLipH. Shape o puts the corners at the middle of the
+// opening instead (corners_mid). a, i, u and e carry issue 17's amounts (design-notes.md).
 struct ShapeTable {
     MouthShape shape;
     double up_mns0, down_mns0, down_lower_lip_h, corner_in_mw0, corner_mns0, corner_upper_lip_h;
     bool corners_mid;
 };
 
-const ShapeTable kThesis522[] = {
+const ShapeTable kShapeTable[] = {
     {MouthShape::m, 0, 0, 0, 0, 0, 0, false},
     {MouthShape::f, 0, 0, -0.5, 0, 0, 0, false},
     {MouthShape::h_prime, -0.25, 0.3, 0, 0, -0.1, 0, false},
     {MouthShape::h, -0.25, 0.5, 0, 1.0 / 12.0, 0.1, 0, false},
     {MouthShape::r, -0.25, 0.25, 0, 0.15, 0, 0, false},
     {MouthShape::z, -0.15, 0.15, 0, 0, 0, 0, false},
-    // SPEC fix: inward by MW0 / 8, not 0.8 MW0. Corners at the middle, then up by UpperLipH / 3.
-    {MouthShape::a, -0.3, 0.8, 0, 1.0 / 8.0, 0, -1.0 / 3.0, true},
-    {MouthShape::i, 0, 1.0 / 6.0, 0, -1.0 / 12.0, 0, -0.5, false},
-    {MouthShape::u, -0.3, 0.3, 0, 0.2, 0, 0, false},
-    {MouthShape::e, 0, 0.5, 0, -1.0 / 12.0, 0, -0.5, false},
+    // Issue 17: the jaw down 1.1 MNS0, the corners at the neutral width, down a quarter of the
+    // lower lip's drop (0.275 MNS0) and up UpperLipH / 3 (thesis: 0.8 MNS0, corners in MW0 / 8 by
+    // SPEC's fix, at the middle of the opening).
+    {MouthShape::a, -0.3, 1.1, 0, 0, 0.275, -1.0 / 3.0, false},
+    {MouthShape::i, 0, 1.0 / 6.0, 0, -1.0 / 8.0, 0, -0.5, false},
+    {MouthShape::u, -0.2, 0.25, 0, 0.3, 0, 0, false},
+    {MouthShape::e, 0, 0.5, 0, -1.0 / 8.0, 0, -0.5, false},
     {MouthShape::o, -0.25, 0.65, 0, 0.2, 0, 0, true},
     {MouthShape::n, -0.3, 0.4, 0, 0, 0, -1.0 / 3.0, false},
 };
@@ -70,7 +72,7 @@ TEST_SUITE("mouth shapes") {
         CHECK_THROWS_AS(mouth_shape_from_name("h''"), InvalidArgument);
     }
 
-    TEST_CASE("the control points are thesis 5.2.2's formulas") {
+    TEST_CASE("the control points are thesis 5.2.2's formulas, with issue 17's amounts for a, i, u, e") {
         for (const auto& [name, face] : test::test_faces()) {
             CAPTURE(name);
             const MouthControls rest = neutral_mouth_controls(face);
@@ -80,7 +82,7 @@ TEST_SUITE("mouth shapes") {
             CHECK(rest.right == face.point("8.3"));
             const double mns0 = face.fapu("MNS0"), mw0 = face.fapu("MW0");
             const double upper_lip_h = face.fapu("UpperLipH"), lower_lip_h = face.fapu("LowerLipH");
-            for (const ShapeTable& row : kThesis522) {
+            for (const ShapeTable& row : kShapeTable) {
                 CAPTURE(mouth_shape_name(row.shape));
                 const MouthControls c = mouth_controls(face, row.shape);
                 const Point2 up{rest.up.x, rest.up.y + row.up_mns0 * mns0};
@@ -141,6 +143,38 @@ TEST_SUITE("mouth shapes") {
             }
             CHECK(mouth_controls(face, MouthShape::m) == neutral_mouth_controls(face));
             CHECK(apply_mouth(face, mouth_controls(face, MouthShape::m)) == face);
+        }
+    }
+
+    TEST_CASE("the finals tell apart at a glance: a open and full width, o round, u small, i and e spread") {
+        for (const auto& [name, face] : test::test_faces()) {
+            CAPTURE(name);
+            const auto width = [&](MouthShape shape) {
+                const FaceModel m = apply_mouth(face, mouth_controls(face, shape));
+                return m.point("8.3").x - m.point("8.4").x;
+            };
+            const auto opening = [&](MouthShape shape) {
+                const FaceModel m = apply_mouth(face, mouth_controls(face, shape));
+                return m.point("2.3").y - m.point("2.2").y;
+            };
+            const double rest_width = face.point("8.3").x - face.point("8.4").x;
+            // a: the jaw down, the corners not pulled in.
+            CHECK(width(MouthShape::a) == doctest::Approx(rest_width));
+            CHECK(opening(MouthShape::a) > 1.4 * opening(MouthShape::o));
+            // o: narrower than a by a fifth of the mouth on each side, open more than it is spread.
+            CHECK(width(MouthShape::o) < 0.65 * rest_width);
+            // u: the smallest mouth, narrower and less open than o.
+            CHECK(width(MouthShape::u) < 0.8 * width(MouthShape::o));
+            CHECK(opening(MouthShape::u) < 0.6 * opening(MouthShape::o));
+            for (MouthShape shape : all_mouth_shapes()) {
+                if (shape == MouthShape::u) continue;
+                CAPTURE(mouth_shape_name(shape));
+                CHECK(width(shape) > width(MouthShape::u));
+            }
+            // i and e: wider than the neutral mouth; i a slit, e half open.
+            CHECK(width(MouthShape::i) > 1.2 * rest_width);
+            CHECK(width(MouthShape::e) > 1.2 * rest_width);
+            CHECK(opening(MouthShape::i) < 0.5 * opening(MouthShape::e));
         }
     }
 

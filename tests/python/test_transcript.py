@@ -35,6 +35,18 @@ def test_read_transcript_gives_sentences_syllables_and_warnings():
     assert all(s.start_s == 0.0 and s.final_start_s is None for s in timeline.syllables)
 
 
+def test_a_blank_line_starts_a_paragraph():
+    timeline = talkface.read_transcript("春曉\n\n春眠不覺曉。處處聞啼鳥。\n夜來風雨聲，花落知多少？")
+    assert [s.text for s in timeline.sentences] == ["春曉", "春眠不覺曉。", "處處聞啼鳥。", "夜來風雨聲，花落知多少？"]
+    assert [s.starts_paragraph for s in timeline.sentences] == [False, True, False, False]
+    assert '"paragraph":true' in talkface.timeline_to_json(timeline).replace(" ", "")
+    assert [s.starts_paragraph for s in talkface.timeline_from_json(talkface.timeline_to_json(timeline)).sentences] == \
+        [False, True, False, False]
+    sentence = talkface.Sentence("好。", 0.5, 1.0, starts_paragraph=True)
+    assert sentence.starts_paragraph
+    assert sentence != talkface.Sentence("好。", 0.5, 1.0)
+
+
 def test_pinyin_input_can_be_turned_off():
     assert [s.pinyin for s in talkface.read_transcript("ni3 hao3").syllables] == ["ni3", "hao3"]
     off = talkface.read_transcript("ni3 hao3", read_pinyin=False)

@@ -563,7 +563,7 @@ TEST_SUITE("web page") {
         options.face_d_px = 2.0 * face.fapu("d");
         const std::string html = build_web_page(SvgAnimator(face), spoken_animation(face, timeline), timeline,
                                                 test::source_path("samples/speech/demo.ogg"), options);
-        const std::size_t stage = html.find("<svg class=\"tf-stage\"");
+        const std::size_t stage = html.find("<svg class=\"tf-stage-art\"");
         REQUIRE(stage != std::string::npos);
         const std::size_t inner = html.find("class=\"tf-animation\"", stage);
         REQUIRE(inner != std::string::npos);

@@ -103,11 +103,32 @@ TEST_SUITE("transcript") {
         CHECK(timeline.syllables.back().sentence == 5);
     }
 
-    TEST_CASE("line breaks, blank lines and spaces do not end a sentence") {
-        const auto timeline = read_transcript("\n  今天天氣\n\n很好。 \n");
+    TEST_CASE("line breaks and spaces do not end a sentence") {
+        const auto timeline = read_transcript("\n  今天天氣\n很好。 \n");
         REQUIRE(timeline.sentences.size() == 1);
         CHECK(timeline.sentences[0].text == "今天天氣很好。");
+        CHECK_FALSE(timeline.sentences[0].starts_paragraph);
         CHECK(timeline.syllables.size() == 6);
+    }
+
+    TEST_CASE("a blank line starts a paragraph, and ends a sentence left open") {
+        const auto timeline = read_transcript("\n\n春曉\n \r\n春眠不覺曉。處處聞啼鳥。\n夜來風雨聲，\n\n花落知多少？");
+        REQUIRE(timeline.sentences.size() == 5);
+        CHECK(timeline.sentences[0].text == "春曉");
+        CHECK(timeline.sentences[1].text == "春眠不覺曉。");
+        CHECK(timeline.sentences[2].text == "處處聞啼鳥。");
+        CHECK(timeline.sentences[3].text == "夜來風雨聲，");
+        CHECK(timeline.sentences[4].text == "花落知多少？");
+        const std::vector<bool> starts = {false, true, false, false, true};
+        for (std::size_t k = 0; k < starts.size(); ++k) {
+            CAPTURE(k);
+            CHECK(timeline.sentences[k].starts_paragraph == starts[k]);
+        }
+        const auto poem = read_transcript("春眠不覺曉。處處聞啼鳥。\n夜來風雨聲，\n\n花落知多少？");
+        REQUIRE(poem.sentences.size() == 4);
+        CHECK(poem.sentences[3].text == "花落知多少？");
+        CHECK(poem.sentences[3].starts_paragraph);
+        CHECK_FALSE(poem.sentences[2].starts_paragraph);
     }
 
     TEST_CASE("closing quotes stay with the sentence they end") {

@@ -25,6 +25,7 @@ void bind_face_state(py::module_& m);
 void bind_svg_animator(py::module_& m);
 void bind_transcript(py::module_& m);
 void bind_timeline_json(py::module_& m);
+void bind_timing_formats(py::module_& m);
 void bind_lip_sync(py::module_& m);
 void bind_expression_simulator(py::module_& m);
 void bind_animation(py::module_& m);

@@ -22,13 +22,16 @@ Example:
     >>> s = talkface.Sentence("你好。", start_s=0.5, end_s=1.2)
     >>> s.end_s - s.start_s
 )doc")
-        .def(py::init([](std::string text, double start_s, double end_s) {
-                 return Sentence{std::move(text), start_s, end_s};
+        .def(py::init([](std::string text, double start_s, double end_s, bool starts_paragraph) {
+                 return Sentence{std::move(text), start_s, end_s, starts_paragraph};
              }),
-             py::arg("text") = "", py::arg("start_s") = 0.0, py::arg("end_s") = 0.0, R"doc(
+             py::arg("text") = "", py::arg("start_s") = 0.0, py::arg("end_s") = 0.0,
+             py::arg("starts_paragraph") = false, R"doc(
 Args:
     text (str): the sentence as written, punctuation included.
     start_s, end_s (float): seconds from the start of the audio (0 before alignment).
+    starts_paragraph (bool): whether a blank line of the transcript stands before it, beginning a
+        new paragraph (the audio book's page keeps paragraphs).
 
 Example:
     >>> talkface.Sentence("你好。")
@@ -37,9 +40,12 @@ Example:
         .def_readwrite("text", &Sentence::text, "the sentence as written, UTF-8")
         .def_readwrite("start_s", &Sentence::start_s, "seconds from the start of the audio")
         .def_readwrite("end_s", &Sentence::end_s, "seconds; end_s >= start_s")
+        .def_readwrite("starts_paragraph", &Sentence::starts_paragraph,
+                       "whether a blank line stands before it: a new paragraph begins (never the first sentence)")
         .def("__eq__",
              [](const Sentence& a, const Sentence& b) {
-                 return a.text == b.text && a.start_s == b.start_s && a.end_s == b.end_s;
+                 return a.text == b.text && a.start_s == b.start_s && a.end_s == b.end_s &&
+                        a.starts_paragraph == b.starts_paragraph;
              })
         .def("__repr__", [](const Sentence& s) {
             return py::str("talkface.Sentence({!r}, start_s={!r}, end_s={!r})").format(s.text, s.start_s, s.end_s);

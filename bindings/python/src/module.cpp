@@ -27,6 +27,7 @@ Example:
     bind_svg_animator(m);
     bind_transcript(m);
     bind_timeline_json(m);
+    bind_timing_formats(m);
     bind_lip_sync(m);
     bind_expression_simulator(m);
     bind_animation(m);

@@ -17,6 +17,16 @@ talkface is licensed under the Apache License, Version 2.0 (the LICENSE file; __
 """
 
 from ._talkface import (
+    audio_duration_s,
+    export_format_for_path,
+    export_format_names,
+    export_to_file,
+    export_to_string,
+    read_timing_file,
+    read_timing_string,
+    time_transcript,
+    timing_format_names,
+    write_timing_string,
     AnimationEncoding,
     AlignOptions,
     AlignmentError,
@@ -156,6 +166,16 @@ def default_face() -> FaceModel:
 
 
 __all__ = [
+    "audio_duration_s",
+    "export_format_for_path",
+    "export_format_names",
+    "export_to_file",
+    "export_to_string",
+    "read_timing_file",
+    "read_timing_string",
+    "time_transcript",
+    "timing_format_names",
+    "write_timing_string",
     "AnimationEncoding",
     "AlignOptions",
     "AlignmentError",

@@ -1,0 +1,142 @@
+"""Headless Chromium driven through the DevTools protocol over a pipe (--remote-debugging-pipe: JSON
+messages ending in NUL on file descriptors 3 and 4), so that a test can press real keys (trusted
+events, with the focus ring a keyboard user sees), size the window as a phone's, read the page's
+layout and take screenshots, with no package beyond the standard library."""
+import base64
+import io
+import json
+import os
+import shutil
+import subprocess
+import tempfile
+import time
+
+from PIL import Image
+
+CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+
+KEYS = {
+    " ": ("Space", 32, " "),
+    "ArrowLeft": ("ArrowLeft", 37, ""),
+    "ArrowUp": ("ArrowUp", 38, ""),
+    "ArrowRight": ("ArrowRight", 39, ""),
+    "ArrowDown": ("ArrowDown", 40, ""),
+    "Tab": ("Tab", 9, ""),
+}
+
+
+class Browser:
+    def __init__(self, width, height, mobile=False):
+        self._profile = tempfile.TemporaryDirectory()
+        to_chrome_read, self._to_chrome = os.pipe()
+        self._from_chrome, from_chrome_write = os.pipe()
+        # The child must find the pipe's ends at 3 (it reads) and 4 (it writes).
+        high_read = os.dup2(to_chrome_read, 20)
+        high_write = os.dup2(from_chrome_write, 21)
+        os.close(to_chrome_read)
+        os.close(from_chrome_write)
+
+        def child_fds():
+            os.dup2(high_read, 3)
+            os.dup2(high_write, 4)
+
+        self._process = subprocess.Popen(
+            [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+             "--disable-component-update", "--disable-sync", "--no-first-run", "--mute-audio",
+             "--autoplay-policy=no-user-gesture-required", "--hide-scrollbars",
+             f"--user-data-dir={self._profile.name}", "--remote-debugging-pipe", f"--window-size={width},{height}",
+             "about:blank"],
+            # close_fds=False: the descriptors that child_fds() puts at 3 and 4 must reach chromium
+            # (Python's own descriptors are not inherited: they are opened close-on-exec).
+            close_fds=False, preexec_fn=child_fds,
+            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        os.close(high_read)
+        os.close(high_write)
+        self._buffer = b""
+        self._next_id = 0
+        self._session = None
+        target = self.call("Target.createTarget", url="about:blank")["targetId"]
+        self._session = self.call("Target.attachToTarget", targetId=target, flatten=True)["sessionId"]
+        self.call("Page.enable")
+        self.call("Emulation.setDeviceMetricsOverride", width=width, height=height, deviceScaleFactor=1,
+                  mobile=mobile)
+
+    def close(self):
+        try:
+            self.call("Browser.close", session=False)
+        except (OSError, RuntimeError):
+            pass
+        try:
+            self._process.wait(timeout=20)
+        except subprocess.TimeoutExpired:
+            self._process.kill()
+            self._process.wait()
+        os.close(self._to_chrome)
+        os.close(self._from_chrome)
+        self._profile.cleanup()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def call(self, method, session=True, **params):
+        self._next_id += 1
+        message = {"id": self._next_id, "method": method, "params": params}
+        if session and self._session is not None:
+            message["sessionId"] = self._session
+        os.write(self._to_chrome, json.dumps(message).encode() + b"\0")
+        deadline = time.monotonic() + 120
+        while time.monotonic() < deadline:
+            while b"\0" not in self._buffer:
+                chunk = os.read(self._from_chrome, 1 << 20)
+                if not chunk:
+                    raise RuntimeError("chromium closed the pipe")
+                self._buffer += chunk
+            raw, self._buffer = self._buffer.split(b"\0", 1)
+            reply = json.loads(raw)
+            if reply.get("id") == self._next_id:
+                if "error" in reply:
+                    raise RuntimeError(f"{method}: {reply['error']}")
+                return reply.get("result", {})
+        raise RuntimeError(f"{method}: no answer in 120 s")
+
+    def evaluate(self, expression):
+        result = self.call("Runtime.evaluate", expression=expression, awaitPromise=True, returnByValue=True)
+        if "exceptionDetails" in result:
+            raise RuntimeError(f"{expression}: {result['exceptionDetails']}")
+        return result["result"].get("value")
+
+    def open(self, url):
+        """Loads `url` and waits until the page's script says it is ready (data-tf-ready). Through
+        about:blank, so that a new fragment on the same page loads it again."""
+        self.call("Page.navigate", url="about:blank")
+        self.call("Page.navigate", url=url)
+        ready = self.evaluate("""new Promise(function (done) {
+            var waited = 0;
+            (function poll() {
+              if (document.body && document.body.getAttribute("data-tf-ready") === "1") return done(true);
+              if ((waited += 50) > 30000) return done(false);
+              setTimeout(poll, 50);
+            })();
+          })""")
+        if not ready:
+            raise RuntimeError(f"{url}: the page never said it was ready")
+        self.settle()
+
+    def settle(self):
+        """Two animation frames: style, layout and the script's scrolling have run."""
+        self.evaluate("new Promise(function (done) { requestAnimationFrame(function () { requestAnimationFrame("
+                      "function () { done(true); }); }); })")
+
+    def press(self, key):
+        code, key_code, text = KEYS[key]
+        common = {"key": key, "code": code, "windowsVirtualKeyCode": key_code, "nativeVirtualKeyCode": key_code}
+        self.call("Input.dispatchKeyEvent", type="keyDown", text=text, **common)
+        self.call("Input.dispatchKeyEvent", type="keyUp", **common)
+        self.settle()
+
+    def screenshot(self):
+        data = self.call("Page.captureScreenshot", format="png")["data"]
+        return Image.open(io.BytesIO(base64.b64decode(data))).convert("RGB")

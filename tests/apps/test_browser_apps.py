@@ -1,0 +1,220 @@
+"""The announcer and the audio book as a person sees them (issue 17), in headless Chromium driven
+through the DevTools protocol (browser.py): the caption shows the sentence being spoken and never
+covers the mouth; deep into a long book the spoken sentence is highlighted in view; on a phone's
+390x844 screen the face and the player come first, the text below; the keys play, pause and move a
+sentence, with a visible focus.
+
+The demo pages are made by `talkface demo`; the long book by the Python module, from a transcript
+of 120 sentences in 20 paragraphs timed by hand, over a silent recording linked beside the page.
+"""
+import json
+import os
+import pathlib
+import re
+import subprocess
+import wave
+
+import pytest
+
+import talkface
+from browser import CHROMIUM, Browser
+
+CLI = os.environ["TALKFACE_CLI"]
+SPEECH_DIR = pathlib.Path(os.environ["TALKFACE_SPEECH_DIR"])
+MOUTH_INSIDE = (0x6A, 0x1E, 0x22)  # FaceColors::mouth_inside of the built-in face
+HIGHLIGHT = (0xFF, 0xD9, 0x5E)     # .tf-current in the audio book
+SKIN = (0xF5, 0xD0, 0xA9)
+
+pytestmark = pytest.mark.skipif(CHROMIUM is None, reason="chromium is not installed")
+
+LINES = ["春天來了，花園裡的花都開了。", "小鳥在樹上唱歌。", "我們一起去河邊看看吧！", "河水很清，魚兒游來游去。",
+         "老師說，讀書要用心。", "大家都點頭笑了。"]
+
+
+def near(pixel, colour, tolerance=18):
+    return all(abs(p - c) <= tolerance for p, c in zip(pixel, colour))
+
+
+def pixels_of(image, colour, box=None, tolerance=18):
+    """(x, y) of every pixel near `colour`, inside box = (left, top, right, bottom) if given."""
+    left, top, right, bottom = box or (0, 0, image.size[0], image.size[1])
+    left, top = max(0, int(left)), max(0, int(top))
+    right, bottom = min(image.size[0], int(right)), min(image.size[1], int(bottom))
+    data = image.load()
+    return [(x, y) for y in range(top, bottom) for x in range(left, right) if near(data[x, y], colour, tolerance)]
+
+
+def rect(browser, selector):
+    return browser.evaluate(f"""(function () {{
+        var e = document.querySelector({json.dumps(selector)});
+        if (!e) return null;
+        var r = e.getBoundingClientRect();
+        return {{left: r.left, top: r.top, right: r.right, bottom: r.bottom}};
+      }})()""")
+
+
+@pytest.fixture(scope="module")
+def alignment():
+    result = subprocess.run([CLI, "align", str(SPEECH_DIR / "demo.ogg"), str(SPEECH_DIR / "demo.txt"),
+                             "--json", "-q"], check=True, capture_output=True, text=True, timeout=120)
+    return json.loads(result.stdout)
+
+
+@pytest.fixture(scope="module")
+def announcer(tmp_path_factory):
+    page = tmp_path_factory.mktemp("announcer") / "announcer.html"
+    subprocess.run([CLI, "demo", "-q", "--app", "announcer", "--title", "晚間新聞", "-o", str(page)],
+                   check=True, timeout=120)
+    return page
+
+
+@pytest.fixture(scope="module")
+def long_book(tmp_path_factory):
+    """120 sentences, 6 a paragraph; 0.2 s a syllable, 0.4 s between sentences."""
+    folder = tmp_path_factory.mktemp("book")
+    text = "\n\n".join("".join(LINES[(p + k) % len(LINES)] for k in range(6)) for p in range(20))
+    timeline = talkface.read_transcript(text)
+    syllables = timeline.syllables
+    sentences = timeline.sentences
+    t = 0.5
+    for index, sentence in enumerate(sentences):
+        own = [s for s in syllables if s.sentence == index]
+        sentence.start_s = t
+        for syllable in own:
+            syllable.start_s, syllable.end_s = t, t + 0.2
+            t += 0.2
+        sentence.end_s = t
+        t += 0.4
+    timeline.syllables = syllables
+    timeline.sentences = sentences
+    timeline.duration_s = t + 0.5
+    audio = folder / "book.wav"
+    with wave.open(str(audio), "wb") as out:
+        out.setnchannels(1)
+        out.setsampwidth(1)
+        out.setframerate(8000)
+        out.writeframes(b"\x80" * int(8000 * timeline.duration_s))
+    face = talkface.FaceModel.default()
+    animation = talkface.animate(face, timeline, talkface.ExpressionSimulator(timeline, 3))
+    options = talkface.WebPageOptions(app=talkface.WebPageApp.audiobook, title="春天的故事", link_audio=True,
+                                      audio_url="book.wav")
+    page = folder / "book.html"
+    talkface.write_web_page(page, talkface.SvgAnimator(face), animation, timeline, audio, options)
+    return page, timeline
+
+
+def test_the_book_keeps_its_paragraphs(long_book):
+    page, timeline = long_book
+    html = page.read_text()
+    paragraphs = re.findall(r'<p class="tf-paragraph">(.*?)</p>', html, re.S)
+    assert len(paragraphs) == 20
+    assert all(len(re.findall(r'class="tf-sentence"', p)) == 6 for p in paragraphs)
+    assert sum(s.starts_paragraph for s in timeline.sentences) == 19  # the first needs no blank line
+
+
+def test_the_announcer_caption_shows_the_sentence_being_spoken(announcer, alignment):
+    with Browser(832, 520) as browser:
+        shown = []
+        for sentence in alignment["sentences"]:
+            middle = (sentence["start"] + sentence["end"]) / 2
+            browser.open(f"file://{announcer}#t={middle:.3f}&pause")
+            caption = browser.evaluate("document.querySelector('.tf-caption .tf-current').textContent")
+            assert caption == sentence["text"]
+            box = rect(browser, ".tf-caption")
+            image = browser.screenshot()
+            # White text on the dark bar: the caption shows, and what it shows changes.
+            white = pixels_of(image, (0xFF, 0xFF, 0xFF), (box["left"], box["top"], box["right"], box["bottom"]), 40)
+            assert len(white) > 150, f"{len(white)} white text pixels in the caption"
+            shown.append(frozenset(white))
+            # The title stands apart, over the caption.
+            assert browser.evaluate("document.querySelector('.tf-title').textContent") == "晚間新聞"
+            assert rect(browser, ".tf-title")["bottom"] <= box["top"] + 1
+        assert len(set(shown)) == len(shown)
+
+
+def test_the_announcer_caption_never_covers_the_mouth(announcer, alignment):
+    # The middle of each sentence and of every open vowel (finals a, ai, ao, an, ang).
+    times = [(s["start"] + s["end"]) / 2 for s in alignment["sentences"]]
+    for syllable in alignment["syllables"]:
+        if re.fullmatch(r"[a-z]*?[^iuv]?a[oin]?g?\d", syllable["pinyin"]):
+            vowel = syllable.get("final_start", syllable["start"])
+            times.append(vowel + 0.6 * (syllable["end"] - vowel))
+    open_frames = 0
+    with Browser(832, 520) as browser:
+        for time_s in times:
+            browser.open(f"file://{announcer}#t={time_s:.3f}&pause")
+            box = rect(browser, ".tf-lower-third")
+            mouth = pixels_of(browser.screenshot(), MOUTH_INSIDE)
+            if len(mouth) > 20:
+                open_frames += 1
+                assert max(y for _, y in mouth) < box["top"], f"{time_s:.3f} s: the caption covers the mouth"
+    assert open_frames >= 5, f"only {open_frames} of {len(times)} frames show an open mouth"
+
+
+@pytest.mark.parametrize("size", [(390, 844), (1280, 800)], ids=["phone", "desktop"])
+def test_the_highlight_is_in_view_deep_into_a_long_book(long_book, size):
+    page, timeline = long_book
+    index = 100
+    sentence = timeline.sentences[index]
+    with Browser(*size, mobile=size[0] < 600) as browser:
+        browser.open(f"file://{page}#t={(sentence.start_s + sentence.end_s) / 2:.3f}&pause")
+        assert browser.evaluate("document.body.getAttribute('data-tf-sentence')") == str(index)
+        current = rect(browser, ".tf-sentence.tf-current")
+        teacher = rect(browser, ".tf-teacher")
+        assert browser.evaluate("window.scrollY") > 1000
+        assert current["bottom"] <= size[1]
+        if size[0] < 600:  # the face is held over the text: the sentence shows under it
+            assert current["top"] >= teacher["bottom"]
+        else:
+            assert current["top"] >= 0 and current["right"] <= teacher["left"]
+        image = browser.screenshot()
+        highlight = pixels_of(image, HIGHLIGHT, (current["left"], current["top"], current["right"], current["bottom"]))
+        assert len(highlight) > 200, f"{len(highlight)} highlight pixels in view"
+        # The face is still on the screen, talking.
+        skin = pixels_of(image, SKIN, (teacher["left"], teacher["top"], teacher["right"], teacher["bottom"]), 24)
+        assert len(skin) > 2000
+
+
+def test_a_phone_shows_the_face_and_the_player_first_and_the_text_below(long_book):
+    page, _ = long_book
+    with Browser(390, 844, mobile=True) as browser:
+        browser.open(f"file://{page}#t=0.1&pause")
+        face = rect(browser, "svg.tf-animation")
+        player = rect(browser, "#tf-audio")
+        text = rect(browser, ".tf-paragraph")
+        assert face["top"] >= 0 and face["bottom"] <= 844 and face["bottom"] - face["top"] > 200
+        assert player["top"] >= face["bottom"] - 1 and player["bottom"] <= 844
+        assert player["right"] - player["left"] > 300
+        assert text["top"] >= player["bottom"] and text["top"] < 844
+        assert browser.evaluate("document.documentElement.scrollWidth") <= 390
+        image = browser.screenshot()
+        skin = pixels_of(image, SKIN, (face["left"], face["top"], face["right"], face["bottom"]), 24)
+        assert len(skin) > 5000
+
+
+def test_keys_play_pause_and_move_a_sentence_with_a_visible_focus(long_book):
+    page, timeline = long_book
+    with Browser(1280, 800) as browser:
+        browser.open(f"file://{page}#t=0.1&pause")
+        assert browser.evaluate("document.body.getAttribute('data-tf-sentence')") == "-1"
+        moves = []
+        for key in ["ArrowRight", "ArrowRight", "ArrowDown", "ArrowLeft"]:
+            browser.press(key)
+            moves.append(browser.evaluate("[document.body.getAttribute('data-tf-sentence'), "
+                                          "document.activeElement.getAttribute('data-index'), "
+                                          "document.getElementById('tf-audio').currentTime]"))
+        assert [m[0] for m in moves] == ["0", "1", "2", "1"]
+        assert [m[1] for m in moves] == ["0", "1", "2", "1"]
+        assert moves[-1][2] == pytest.approx(timeline.sentences[1].start_s, abs=0.01)
+        # The focus ring shows on the focused sentence, outside its highlight.
+        style = browser.evaluate("(function () { var s = getComputedStyle(document.activeElement);"
+                                 " return [document.activeElement.matches(':focus-visible'), s.outlineStyle,"
+                                 " parseFloat(s.outlineWidth)]; })()")
+        assert style[0] and style[1] != "none" and style[2] >= 2
+        assert browser.evaluate("document.getElementById('tf-audio').paused")
+        browser.press(" ")
+        assert not browser.evaluate("document.getElementById('tf-audio').paused")
+        browser.evaluate("new Promise(function (done) { setTimeout(function () { done(true); }, 400); })")
+        browser.press(" ")
+        assert browser.evaluate("document.getElementById('tf-audio').paused")
+        assert browser.evaluate("document.getElementById('tf-audio').currentTime") > timeline.sentences[1].start_s
