@@ -1,22 +1,36 @@
-"""pip support: `pip install --no-build-isolation .` builds the _talkface module with CMake.
+"""pip support: `pip install --no-build-isolation .` builds the _talkface modules with CMake.
 
-The library is built static (BUILD_SHARED_LIBS=OFF) into the extension, so the wheel needs no
-libtalkface.so beside it. TALKFACE_CMAKE_BUILD_DIR, if set, is the CMake build folder (the packaging
-ctest keeps it out of the source tree); CMAKE_BUILD_PARALLEL_LEVEL sets the build's jobs as usual.
+The library is built static (BUILD_SHARED_LIBS=OFF) into the extensions, so the wheel needs no
+libtalkface.so beside it; _talkface_photo (face from a photo, OpenCV) is a module of its own, which
+the package imports on first use. Nothing is written into the source tree, so a read-only checkout
+installs: setuptools' build and egg-info folders and the CMake build go to a folder under the
+temporary directory named for this checkout (TALKFACE_PIP_BUILD_DIR overrides it).
+TALKFACE_CMAKE_BUILD_DIR, if set, is the CMake build folder; CMAKE_BUILD_PARALLEL_LEVEL sets the
+build's jobs as usual.
 """
 
+import hashlib
 import os
 import re
 import shutil
 import subprocess
 import sys
 import sysconfig
+import tempfile
 from pathlib import Path
 
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
 
 SOURCE_DIR = Path(__file__).resolve().parent
+# One folder per checkout (pip runs setup.py several times per install; each run finds the same one).
+BUILD_BASE = Path(
+    os.environ.get("TALKFACE_PIP_BUILD_DIR")
+    or Path(tempfile.gettempdir())
+    / f"talkface-pip-{os.getuid()}-{hashlib.sha256(str(SOURCE_DIR).encode()).hexdigest()[:12]}"
+)
+BUILD_BASE.mkdir(parents=True, exist_ok=True)  # egg_info wants its egg_base to exist
+EXTENSION_MODULES = ("_talkface", "_talkface_photo")
 
 
 def project_version() -> str:
@@ -30,8 +44,13 @@ class CMakeExtension(Extension):
 
 
 class CMakeBuild(build_ext):
+    @staticmethod
+    def photo_configured(build_dir: Path) -> bool:
+        cache = (build_dir / "CMakeCache.txt").read_text(encoding="utf-8")
+        return re.search(r"^TALKFACE_WITH_PHOTO:BOOL=ON$", cache, re.MULTILINE) is not None
+
     def build_extension(self, ext: Extension) -> None:
-        build_dir = Path(os.environ.get("TALKFACE_CMAKE_BUILD_DIR") or Path(self.build_temp) / "cmake")
+        build_dir = Path(os.environ.get("TALKFACE_CMAKE_BUILD_DIR") or BUILD_BASE / "cmake")
         build_dir.mkdir(parents=True, exist_ok=True)
         subprocess.run(
             [
@@ -47,12 +66,15 @@ class CMakeBuild(build_ext):
             ],
             check=True,
         )
-        build = ["cmake", "--build", str(build_dir), "--target", "_talkface"]
+        module = ext.name.rsplit(".", 1)[1]
+        built = build_dir / "python" / "talkface" / (module + sysconfig.get_config_var("EXT_SUFFIX"))
+        build = ["cmake", "--build", str(build_dir), "--target", module]
         if "CMAKE_BUILD_PARALLEL_LEVEL" not in os.environ:
             build += ["--parallel", str(os.cpu_count() or 1)]
+        if module == "_talkface_photo" and not self.photo_configured(build_dir):
+            return  # built without the photo stage (no OpenCV): the package works without it
         subprocess.run(build, check=True)
 
-        built = build_dir / "python" / "talkface" / ("_talkface" + sysconfig.get_config_var("EXT_SUFFIX"))
         target = Path(self.get_ext_fullpath(ext.name))
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(built, target)
@@ -60,12 +82,14 @@ class CMakeBuild(build_ext):
 
 setup(
     version=project_version(),
+    license_files=["LICENSE"],
     packages=["talkface"],
     package_dir={"talkface": "bindings/python/talkface"},
-    package_data={"talkface": ["py.typed", "_talkface.pyi"]},
-    ext_modules=[CMakeExtension("talkface._talkface")],
+    package_data={"talkface": ["py.typed", "_talkface.pyi", "_talkface_photo.pyi"]},
+    ext_modules=[CMakeExtension("talkface." + module) for module in EXTENSION_MODULES],
     cmdclass={"build_ext": CMakeBuild},
-    # build-pip/, not setuptools' build/: build/ is a common name for a developer's CMake build folder.
-    options={"build": {"build_base": "build-pip"}},
+    # Out of the source tree (module docstring); not setuptools' build/, a common name for a
+    # developer's CMake build folder.
+    options={"build": {"build_base": str(BUILD_BASE / "build")}, "egg_info": {"egg_base": str(BUILD_BASE)}},
     zip_safe=False,
 )

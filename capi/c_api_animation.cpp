@@ -381,7 +381,8 @@ tf_status tf_animation_key_frames_json(const tf_animation* animation, char** out
         require_non_null(animation, "animation");
         require_non_null(out_json, "out_json");
         talkface::capi::give_document(
-            talkface::key_frames_json(animation->animation.mouth_key_frames, animation->animation.events),
+            talkface::key_frames_json(animation->animation.mouth_key_frames, animation->animation.events,
+                                      animation->animation.fps, animation->animation.duration_s),
             out_json, out_len);
     });
 }

@@ -4,7 +4,8 @@
 //   auto face = talkface::FaceModel::default_face();
 //   talkface::ExpressionSimulator expressions(timeline, /*seed=*/7);
 //   talkface::Animation animation = talkface::animate(face, timeline, expressions);
-//   std::string json = talkface::key_frames_json(animation.mouth_key_frames, animation.events);
+//   std::string json = talkface::key_frames_json(animation.mouth_key_frames, animation.events,
+//                                                animation.fps, animation.duration_s);
 //
 // Functions here are pure and may be called from several threads at once.
 #ifndef TALKFACE_ANIMATION_HPP
@@ -41,11 +42,15 @@ TALKFACE_API Animation animate(const FaceModel& neutral, const Timeline& timelin
                                const ExpressionSimulator& expressions, const LipSyncOptions& options = {});
 
 /// The key frames as JSON, one line per item, numbers with at most 3 decimals (milliseconds):
-/// {"mouth":[{"time":s,"shape":"a","syllable":k}, ...], "events":[{"kind":"blink","start":s,
-/// "end":s,"amount":x}, ...]}. A rest key frame has "syllable":null. The same input always gives
-/// the same bytes.
+/// {"fps":25,"duration":s, "mouth":[{"time":s,"shape":"a","syllable":k}, ...],
+/// "events":[{"kind":"blink","start":s,"end":s,"amount":x}, ...]}: the frame rate the key frames sit
+/// on and the animation's length in seconds (Animation::fps and duration_s), so a player needs
+/// nothing else. A rest key frame has "syllable":null. The same input always gives the same bytes.
+/// \throws talkface::InvalidArgument naming "fps" unless it is finite and > 0, or "duration_s"
+///         unless it is finite and >= 0.
 TALKFACE_API std::string key_frames_json(const std::vector<MouthKeyFrame>& mouth_key_frames,
-                                         const std::vector<ExpressionEvent>& events);
+                                         const std::vector<ExpressionEvent>& events, double fps,
+                                         double duration_s);
 
 /// The mouth key frames as tab-separated text, one "time<TAB>shape" line each (time in seconds
 /// with at most 3 decimals, shape as mouth_shape_name() writes it), no header.

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "talkface/export.h"
+#include "talkface/progress.hpp"
 #include "talkface/timeline.hpp"
 
 namespace talkface {
@@ -22,11 +23,6 @@ struct AudioView {
     int channel_count = 1;
     int sample_rate_hz = 0;
 };
-
-/// Reports progress (fraction 0..1 of the whole job, and the stage: "reading", "sentences",
-/// "syllables"); return false to cancel, which makes the call throw talkface::Cancelled.
-/// Called from the thread that called the aligner.
-using ProgressCallback = std::function<bool(double fraction, const std::string& stage)>;
 
 /// How the audio is cut into sentence utterances.
 enum class SentenceCutMode : int {

@@ -16,6 +16,7 @@
 #include "talkface/export.h"
 #include "talkface/face_model.hpp"
 #include "talkface/face_pose.hpp"
+#include "talkface/progress.hpp"
 #include "talkface/types.hpp"
 
 namespace talkface {
@@ -33,10 +34,6 @@ struct SvgOptions {
     int width_px = 0;
     int height_px = 0;
 };
-
-/// Reports progress (fraction 0..1 and the stage, here "frames" and "encoding"); return false to
-/// cancel, which makes the call throw talkface::Cancelled. The same type as speech_aligner.hpp's.
-using ProgressCallback = std::function<bool(double fraction, const std::string& stage)>;
 
 /// How an animation becomes SVG. Both play in any browser that runs SMIL (Chromium, Firefox,
 /// Safari), alone or driven by a page's audio clock (web_page.hpp).

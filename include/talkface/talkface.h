@@ -1118,8 +1118,9 @@ TF_API tf_status tf_animation_event_count(const tf_animation *animation, size_t 
 TF_API tf_status tf_animation_event(const tf_animation *animation, size_t index, tf_expression_event *out);
 
 /* The key frames as JSON, one item per line, times in seconds with at most 3 decimals:
- * {"mouth":[{"time":s,"shape":"a","syllable":k}], "events":[{"kind":"blink","start":s,"end":s,
- * "amount":x}]} ("syllable":null for a rest). The same animation always gives the same bytes.
+ * {"fps":25,"duration":s, "mouth":[{"time":s,"shape":"a","syllable":k}], "events":[{"kind":"blink",
+ * "start":s,"end":s,"amount":x}]}: the animation's frame rate and length first, "syllable":null for
+ * a rest. The same animation always gives the same bytes.
  * Release *out_json with tf_free; *out_len (if not NULL) is its length without the NUL.
  * Errors: TF_ERR_INVALID_ARGUMENT if animation or out_json is NULL. */
 TF_API tf_status tf_animation_key_frames_json(const tf_animation *animation, char **out_json,

@@ -1,15 +1,16 @@
-// talkface: talking cartoon faces. This umbrella header includes the whole C++ API.
+// talkface: talking cartoon faces. This umbrella header includes the whole C++ API but the photo
+// stage (talkface/face_from_photo.hpp, library talkface::photo). The whole pipeline:
 //
 //   #include <talkface/talkface.hpp>
 //
 //   int main() {
-//       auto face = talkface::FaceModel::default_face();            // or FaceModel::load("face.xml")
-//       talkface::FaceState state;
-//       state.pose = {0.0, 10.0, -5.0};                              // nod, turn, tilt in degrees
-//       state.expression.smile = 0.6;
-//       state.mouth = talkface::mouth_controls(face, talkface::MouthShape::a);
-//       talkface::SvgAnimator animator(face);
-//       animator.write_svg("face.svg", state);                       // atomic: all or nothing
+//       const auto face = talkface::FaceModel::load("face.xml");          // or FaceModel::default_face()
+//       const auto transcript = talkface::load_transcript("speech.txt");  // sentences and syllables
+//       const auto timeline = talkface::SpeechAligner().align_file("speech.wav", transcript);
+//       const talkface::ExpressionSimulator expressions(timeline, /*seed=*/7);  // blinks, nods ...
+//       const auto animation = talkface::animate(face, timeline, expressions);
+//       talkface::write_web_page("talk.html", talkface::SvgAnimator(face), animation, timeline,
+//                                "speech.wav");                            // atomic: all or nothing
 //   }
 //
 // Errors are exceptions derived from talkface::Error (errors.hpp); each message names the file,
@@ -33,6 +34,7 @@
 #include "talkface/lip_sync.hpp"
 #include "talkface/mouth_controls.hpp"
 #include "talkface/mouth_shape.hpp"
+#include "talkface/progress.hpp"
 #include "talkface/rotation3d.hpp"
 #include "talkface/speech_aligner.hpp"
 #include "talkface/svg_animator.hpp"

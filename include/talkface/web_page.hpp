@@ -100,10 +100,6 @@ TALKFACE_API void write_web_page(const std::string& path, const SvgAnimator& ani
                                  const std::string& audio_path, const WebPageOptions& options = {},
                                  const ProgressCallback& progress = {});
 
-/// `text` with & < > " ' replaced by character references, safe inside HTML or XML text and
-/// quoted attribute values.
-TALKFACE_API std::string escape_html(std::string_view text);
-
 }  // namespace v0
 }  // namespace talkface
 

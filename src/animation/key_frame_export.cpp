@@ -1,9 +1,11 @@
 // Key frames as JSON and TSV, written by hand: the library has no JSON dependency, and a fixed
 // layout with millisecond numbers keeps the output byte-for-byte reproducible (golden tests).
+#include <cmath>
 #include <string>
 
 #include "common/number_format.hpp"
 #include "talkface/animation.hpp"
+#include "talkface/errors.hpp"
 
 namespace talkface {
 inline namespace v0 {
@@ -22,8 +24,14 @@ std::string quoted(const char* text) {
 }  // namespace
 
 std::string key_frames_json(const std::vector<MouthKeyFrame>& mouth_key_frames,
-                            const std::vector<ExpressionEvent>& events) {
-    std::string json = "{\"mouth\":[";
+                            const std::vector<ExpressionEvent>& events, double fps, double duration_s) {
+    if (!std::isfinite(fps) || fps <= 0.0) {
+        throw InvalidArgument("fps", "expected a frame rate > 0, got " + std::to_string(fps));
+    }
+    if (!std::isfinite(duration_s) || duration_s < 0.0) {
+        throw InvalidArgument("duration_s", "expected a duration >= 0 s, got " + std::to_string(duration_s));
+    }
+    std::string json = "{\"fps\":" + number(fps) + ",\"duration\":" + number(duration_s) + ",\n\"mouth\":[";
     for (std::size_t k = 0; k < mouth_key_frames.size(); ++k) {
         const MouthKeyFrame& key = mouth_key_frames[k];
         json += k == 0 ? "\n" : ",\n";

@@ -6,7 +6,7 @@
 
 #include "animation/lip_sync_checks.hpp"
 #include "common/number_format.hpp"
-#include "expression/timeline_checks.hpp"
+#include "timing/timeline_checks.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/lip_sync.hpp"
 

@@ -55,6 +55,9 @@ const CLI::Validator& pause_validator() {
 std::string timeline_table(const talkface::Timeline& timeline) {
     std::ostringstream out;
     out << std::fixed << std::setprecision(3);
+    // Column heads for the syllable rows below (times in seconds, confidence 0..1); each sentence's
+    // row says what it is ("sentence N  START - END s  TEXT").
+    out << "  text\t" << std::left << std::setw(8) << "pinyin" << std::right << " start final   end  confidence\n";
     std::size_t next = 0;
     for (std::size_t k = 0; k < timeline.sentences.size(); ++k) {
         const auto& sentence = timeline.sentences[k];

@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "progress_bar.hpp"
 #include "timing_option.hpp"
+#include "written_report.hpp"
 
 namespace talkface_cli {
 
@@ -168,7 +169,8 @@ void add_page_options(CLI::App& command, AnimateOptions& options) {
         ->capture_default_str();
     command.add_option("-o,--output", options.output_path, "OUT.html for a web page, OUT.svg for the bare animation (demo: OUT.mp4, .webm, .webp, .png for a video)")
         ->required();
-    command.add_flag("-q,--quiet", options.quiet, "No progress bar");
+    command.add_flag("-q,--quiet", options.quiet,
+                     "No progress bar, and no line saying what was written (its kind, duration and size)");
 }
 
 TalkingFace animate_talking_face(const AnimateOptions& options, const std::string& audio_path,
@@ -213,6 +215,12 @@ void make_talking_face(const AnimateOptions& options, const std::string& audio_p
     } else {
         talkface::write_web_page(options.output_path, animator, animation, timeline, audio_path, page,
                                  progress_part(bar.get(), kAnimatedAt, 1.0));
+    }
+    if (!options.quiet) {
+        const std::string what = is_svg ? "SVG animation (" + options.encoding + ")"
+                                        : options.app + " web page, audio " +
+                                              (options.link_audio ? "linked" : "embedded");
+        report_written(std::cerr, options.output_path, what, animation.duration_s);
     }
     for (const std::string& warning : timeline.warnings) std::cerr << "talkface: warning: " << warning << '\n';
 }

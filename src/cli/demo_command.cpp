@@ -6,7 +6,9 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -18,6 +20,7 @@
 #include "commands.hpp"
 #include "common/atomic_file.hpp"
 #include "embedded_demo.hpp"
+#include "written_report.hpp"
 
 namespace talkface_cli {
 
@@ -69,6 +72,7 @@ void run_demo(const AnimateOptions& options, const CLI::App& demo) {
         const std::filesystem::path audio = std::filesystem::path(options.output_path).replace_extension(".ogg");
         talkface::detail::write_file_atomically(audio.string(), view_of(demo_speech()));
         linked_url = audio.filename().generic_string();
+        if (!options.quiet) report_written(std::cerr, audio.string(), "the demo speech (Ogg Vorbis)", std::nullopt);
     }
     make_talking_face(options, speech.path(), transcript, linked_url);
 }

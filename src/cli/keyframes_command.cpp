@@ -166,8 +166,11 @@ void run_keyframes(const KeyframesOptions& options) {
     talkface::LipSyncOptions lip_sync;
     lip_sync.fps = options.fps;
     const auto key_frames = talkface::mouth_key_frames(timeline, lip_sync);
-    const std::string document = options.tsv ? talkface::key_frames_tsv(key_frames)
-                                             : talkface::key_frames_json(key_frames, simulator.events());
+    // The animation's length as talkface::animate() takes it (Animation::duration_s).
+    const double duration_s = std::max(talkface::timeline_end_s(timeline), simulator.duration_s());
+    const std::string document =
+        options.tsv ? talkface::key_frames_tsv(key_frames)
+                    : talkface::key_frames_json(key_frames, simulator.events(), options.fps, duration_s);
     if (options.output_path == "-") {
         std::cout << document << std::flush;
     } else {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "common/number_format.hpp"
-#include "expression/timeline_checks.hpp"
+#include "timing/timeline_checks.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/expression_simulator.hpp"
 

@@ -10,7 +10,7 @@
 #include "expression/envelopes.hpp"
 #include "expression/random.hpp"
 #include "expression/style_fields.hpp"
-#include "expression/timeline_checks.hpp"
+#include "timing/timeline_checks.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface {

@@ -8,6 +8,7 @@
 #include "audio/audio_source.hpp"
 #include "common/atomic_file.hpp"
 #include "common/number_format.hpp"
+#include "render/html_text.hpp"
 #include "talkface/web_page.hpp"
 
 namespace talkface {

@@ -5,7 +5,16 @@
 #include <string>
 #include <string_view>
 
-namespace talkface::detail {
+namespace talkface {
+inline namespace v0 {
+
+// `text` with & < > " ' replaced by character references, safe inside HTML or XML text and quoted
+// attribute values.
+std::string escape_html(std::string_view text);
+
+}  // namespace v0
+
+namespace detail {
 
 // RFC 4648 base64 of `bytes`, padded, on one line.
 std::string base64(std::string_view bytes);
@@ -26,6 +35,7 @@ std::string percent_encode_url(std::string_view url);
 // characters (which browsers drop, so "java\tscript:" would still be a scheme).
 void require_safe_link(std::string_view url, const std::string& parameter);
 
-}  // namespace talkface::detail
+}  // namespace detail
+}  // namespace talkface
 
 #endif

@@ -211,8 +211,9 @@ TEST_SUITE("lip_sync") {
             {0.0, MouthShape::m, std::nullopt}, {0.12, MouthShape::h_prime, 0}, {0.16, MouthShape::a, 0}};
         const std::vector<ExpressionEvent> events{{ExpressionEventKind::blink, 1.0, 1.2345, 1.0},
                                                   {ExpressionEventKind::nod, 2.5, 3.0, -4.25}};
-        CHECK(key_frames_json(keys, events) ==
-              "{\"mouth\":[\n"
+        CHECK(key_frames_json(keys, events, 25.0, 3.5) ==
+              "{\"fps\":25,\"duration\":3.5,\n"
+              "\"mouth\":[\n"
               "{\"time\":0,\"shape\":\"m\",\"syllable\":null},\n"
               "{\"time\":0.12,\"shape\":\"h'\",\"syllable\":0},\n"
               "{\"time\":0.16,\"shape\":\"a\",\"syllable\":0}\n"
@@ -222,7 +223,14 @@ TEST_SUITE("lip_sync") {
               "{\"kind\":\"nod\",\"start\":2.5,\"end\":3,\"amount\":-4.25}\n"
               "]}\n");
         CHECK(key_frames_tsv(keys) == "0\tm\n0.12\th'\n0.16\ta\n");
-        CHECK(key_frames_json({}, {}) == "{\"mouth\":[\n],\n\"events\":[\n]}\n");
+        CHECK(key_frames_json({}, {}, 30.0, 0.0) == "{\"fps\":30,\"duration\":0,\n\"mouth\":[\n],\n\"events\":[\n]}\n");
+    }
+
+    TEST_CASE("key frames JSON refuses a frame rate or duration it cannot carry") {
+        CHECK_THROWS_WITH_AS(key_frames_json({}, {}, 0.0, 1.0), doctest::Contains("fps"), InvalidArgument);
+        CHECK_THROWS_WITH_AS(key_frames_json({}, {}, 25.0, -1.0), doctest::Contains("duration_s"), InvalidArgument);
+        CHECK_THROWS_WITH_AS(key_frames_json({}, {}, 25.0, std::nan("")), doctest::Contains("duration_s"),
+                             InvalidArgument);
     }
 
     TEST_CASE("a syllable that is not Mandarin is named with its index and times") {

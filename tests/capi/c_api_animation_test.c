@@ -622,7 +622,8 @@ static int test_animation_frames_and_key_frames(void) {
 
     CHECK_OK(tf_animation_key_frames_json(animation, &json, &length));
     CHECK(strlen(json) == length);
-    CHECK(strncmp(json, "{\"mouth\":[\n{\"time\":0,\"shape\":\"m\",\"syllable\":null},\n{\"time\":0.4,", 58) == 0);
+    CHECK(strncmp(json, "{\"fps\":30,\"duration\":3,\n\"mouth\":[\n{\"time\":0,\"shape\":\"m\",\"syllable\":null},\n{\"time\":0.4,",
+                  84) == 0);
     CHECK(strstr(json, "\n\"events\":[") != NULL);
     CHECK_OK(tf_animation_key_frames_tsv(animation, &tsv, &length));
     CHECK(strncmp(tsv, "0\tm\n0.4\tm\n0.5\tm\n0.533\ta\n", 24) == 0);

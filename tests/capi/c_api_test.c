@@ -195,6 +195,16 @@ static int test_broken_xml_gives_parse_error_naming_the_line(void) {
     return failures;
 }
 
+static int test_a_future_face_version_is_refused_naming_the_version_read(void) {
+    int failures = 0;
+    const char *future = "<?xml version=\"1.0\"?>\n<talkface-face version=\"999\" name=\"x\"/>\n";
+    tf_face_model *face = NULL;
+    CHECK_FAILS_WITH(tf_face_model_from_xml(future, strlen(future), "future.xml", &face), TF_ERR_PARSE,
+                     "future.xml:2:16: attribute version: version 999 is newer than this library reads (up to 1)");
+    CHECK(face == NULL);
+    return failures;
+}
+
 static int test_null_arguments_are_named(void) {
     int failures = 0;
     tf_face_model *face = NULL;
@@ -555,6 +565,7 @@ int main(void) {
     failures += test_xml_text_round_trips();
     failures += test_bad_path_gives_file_error_naming_it();
     failures += test_broken_xml_gives_parse_error_naming_the_line();
+    failures += test_a_future_face_version_is_refused_naming_the_version_read();
     failures += test_null_arguments_are_named();
     failures += test_out_of_range_pose_names_the_angle();
     failures += test_render_returns_an_svg_of_the_stated_length();

@@ -112,6 +112,10 @@ def test_table_form_lists_every_sentence():
     lines = result.stdout.splitlines()
     assert [line.split()[:2] for line in lines if line.startswith("sentence")] == [["sentence", "1"],
                                                                                  ["sentence", "2"]]
+    # The column heads come first and name every column of the syllable rows.
+    assert lines[0].split() == ["text", "pinyin", "start", "final", "end", "confidence"]
+    syllable_rows = [line.split() for line in lines[1:] if not line.startswith("sentence")]
+    assert syllable_rows and all(len(row) == len(lines[0].split()) for row in syllable_rows)
 
 
 def assert_nothing_written(tmp_path, *inputs):

@@ -2,6 +2,7 @@
 embedded or linked, usage errors, and failures that leave no file behind."""
 import os
 import pathlib
+import re
 import subprocess
 import xml.dom.minidom
 
@@ -22,12 +23,31 @@ def test_demo_makes_a_self_contained_page(tmp_path):
     assert "data:audio/ogg;base64," in html
     assert "<animate " in html
     assert "大家好" in html
-    assert result.stderr == ""  # no bar when stderr is not a terminal
+    # No bar when stderr is not a terminal; one line saying what was written, how long and how large.
+    assert re.fullmatch(r"talkface: wrote \S+demo\.html: plain web page, audio embedded, \d+\.\d\d s, "
+                        r"\d+\.\d [kM]B\n", result.stderr), result.stderr
+    number, unit = result.stderr.split(", ")[-1].split()
+    scale = {"kB": 1e3, "MB": 1e6}[unit]
+    assert abs(float(number) * scale - page.stat().st_size) <= 0.05 * scale
+
+
+def test_quiet_says_nothing_and_the_svg_report_names_its_encoding(tmp_path):
+    svg = tmp_path / "talk.svg"
+    quiet = run("demo", "--quiet", "-o", tmp_path / "quiet.html")
+    assert quiet.returncode == 0 and quiet.stderr == "", quiet.stderr
+    result = run("demo", "-o", svg)
+    assert result.returncode == 0, result.stderr
+    assert result.stderr.startswith(f"talkface: wrote {svg}: SVG animation (keyframes), "), result.stderr
+    seconds = float(result.stderr.split(", ")[1].split()[0])
+    assert 3.0 < seconds < 30.0
 
 
 def test_demo_links_its_audio_beside_the_page(tmp_path):
     page = tmp_path / "linked.html"
-    assert run("demo", "--link-audio", "-o", page).returncode == 0
+    result = run("demo", "--link-audio", "-o", page)
+    assert result.returncode == 0, result.stderr
+    assert result.stderr.startswith(f"talkface: wrote {tmp_path / 'linked.ogg'}: the demo speech (Ogg Vorbis), ")
+    assert f"talkface: wrote {page}: plain web page, audio linked, " in result.stderr
     assert 'src="linked.ogg"' in page.read_text(encoding="utf-8")
     assert (tmp_path / "linked.ogg").read_bytes() == (SPEECH / "demo.ogg").read_bytes()
 

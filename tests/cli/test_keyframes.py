@@ -49,7 +49,9 @@ def test_json_has_exactly_the_contract_shape(tmp_path, timeline):
     result = keyframes("--timeline", timeline, "--seed", 7, "-o", out)
     assert result.stdout == "" and result.stderr == ""
     document = json.loads(out.read_text())
-    assert list(document) == ["mouth", "events"]
+    assert list(document) == ["fps", "duration", "mouth", "events"]
+    assert document["fps"] == 25
+    assert document["duration"] >= max(item["time"] for item in document["mouth"])
     assert document["mouth"][0] == {"time": 0, "shape": "m", "syllable": None}
     for item in document["mouth"]:
         assert list(item) == ["time", "shape", "syllable"]

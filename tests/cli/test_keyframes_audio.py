@@ -30,7 +30,8 @@ def test_audio_form_writes_the_keyframes_contract(tmp_path):
     result = keyframes("--seed", 7, "-o", out)
     assert result.stdout == ""
     document = json.loads(out.read_text(encoding="utf-8"))
-    assert list(document) == ["mouth", "events"]
+    assert list(document) == ["fps", "duration", "mouth", "events"]
+    assert document["fps"] == 25 and abs(document["duration"] - truth["duration"]) < 0.05
     assert document["mouth"][0] == {"time": 0, "shape": "m", "syllable": None}
     for item in document["mouth"]:
         assert list(item) == ["time", "shape", "syllable"]

@@ -35,8 +35,13 @@ LD_LIBRARY_PATH="$(PKG_CONFIG_PATH="$pc_dir" pkg-config --variable=libdir talkfa
   "$work_dir/consumer_c_pkgconfig"
 
 libdir=$(PKG_CONFIG_PATH="$pc_dir" pkg-config --variable=libdir talkface)
-if ldd "$libdir/libtalkface.so" | grep -Ei 'opencv|dlib|png|jpeg'; then
-  echo "libtalkface loads the photo stage's libraries (above); they belong to libtalkface_photo" >&2
+# Its direct needs (FFmpeg's libraries, for video, bring libpng and libjpeg of their own).
+if readelf -d "$libdir/libtalkface.so" | grep NEEDED | grep -Ei 'opencv|dlib|png|jpeg'; then
+  echo "libtalkface needs the photo stage's libraries (above); they belong to libtalkface_photo" >&2
+  exit 1
+fi
+if ldd "$libdir/libtalkface.so" | grep -Ei 'opencv|dlib'; then
+  echo "libtalkface loads OpenCV or dlib (above); they belong to libtalkface_photo" >&2
   exit 1
 fi
 

@@ -133,7 +133,9 @@ TEST_SUITE("FaceModel") {
             {"broken_xml.xml", "broken_xml.xml:9:3: ", "not a well-formed XML file"},
             {"wrong_root.xml", "wrong_root.xml:3:1: ", "element <face-model>: expected the root element"},
             {"no_version.xml", "no_version.xml:3:1: ", "missing attribute version"},
-            {"newer_version.xml", "newer_version.xml:3:16: ", "version 2 is newer than this library reads"},
+            {"newer_version.xml", "newer_version.xml:3:16: ", "version 2 is newer than this library reads (up to 1)"},
+            {"future_version.xml", "future_version.xml:3:16: ",
+             "version 999 is newer than this library reads (up to 1); update talkface"},
             {"missing_y.xml",
              "missing_y.xml:67:5: ", "point \"8.3\": expected attributes x and y, found only x"},
             {"missing_points.xml", "missing_points.xml:6:3: ", "missing 2 points: \"8.3\", \"9.15\""},
@@ -157,6 +159,13 @@ TEST_SUITE("FaceModel") {
                                  ParseError);
             CHECK_THROWS_WITH_AS(FaceModel::load(broken_face(c.file)), doctest::Contains(c.what), ParseError);
         }
+    }
+
+    TEST_CASE("a face file of a future version is refused naming the version this build reads") {
+        CHECK(FaceModel::kFileFormatVersion == 1);  // the refusals above say "up to 1"
+        const std::string read_here = "up to " + std::to_string(FaceModel::kFileFormatVersion) + ")";
+        CHECK_THROWS_WITH_AS(FaceModel::load(broken_face("future_version.xml")),
+                             doctest::Contains(read_here.c_str()), ParseError);
     }
 
     TEST_CASE("a parse error carries path, line, column and item") {

@@ -1,5 +1,7 @@
 #!/bin/sh
-# pip installs talkface into a fresh virtual environment and imports it from outside the source tree.
+# pip installs talkface into a fresh virtual environment from a read-only copy of the source tree,
+# checks that nothing was written into that copy (no build-pip/, no egg-info, no CMake build), and
+# imports the package from outside the tree, face from a photo included where it was built.
 # usage: pip_install_test.sh PYTHON SOURCE_DIR WORK_DIR   (WORK_DIR is emptied first)
 set -eu
 python=$1
@@ -7,15 +9,34 @@ source_dir=$2
 work_dir=$3
 
 rm -rf "$work_dir"
-mkdir -p "$work_dir"
+mkdir -p "$work_dir/source"
 "$python" -m venv --system-site-packages "$work_dir/venv"
+
+# The copy holds what git tracks (or, outside a checkout, the tree without build folders), made
+# read-only. Root ignores file modes, so the listing before and after is what proves nothing was
+# written.
+if git -C "$source_dir" rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+  (cd "$source_dir" && git ls-files -z --cached --others --exclude-standard | xargs -0 tar cf -) |
+    tar xf - -C "$work_dir/source"
+else
+  (cd "$source_dir" && tar cf - --exclude='./build*' --exclude='./.git' .) | tar xf - -C "$work_dir/source"
+fi
+chmod -R a-w "$work_dir/source"
+(cd "$work_dir/source" && find . | LC_ALL=C sort) >"$work_dir/before.txt"
 
 # Two jobs and a quiet pip: this runs beside other tests on small CI machines.
 export CMAKE_BUILD_PARALLEL_LEVEL=2
-export TALKFACE_CMAKE_BUILD_DIR="$work_dir/cmake-build"
-unset PYTHONPATH
-"$work_dir/venv/bin/pip" install -q --no-build-isolation --no-index "$source_dir" >"$work_dir/pip.log" 2>&1 ||
+export TALKFACE_PIP_BUILD_DIR="$work_dir/pip-build"
+unset PYTHONPATH TALKFACE_CMAKE_BUILD_DIR
+"$work_dir/venv/bin/pip" install -q --no-build-isolation --no-index "$work_dir/source" >"$work_dir/pip.log" 2>&1 ||
   { cat "$work_dir/pip.log"; exit 1; }
+
+(cd "$work_dir/source" && find . | LC_ALL=C sort) >"$work_dir/after.txt"
+if ! diff -u "$work_dir/before.txt" "$work_dir/after.txt"; then
+  echo "pip install wrote into the source tree (lines marked + above)" >&2
+  exit 1
+fi
+chmod -R u+w "$work_dir/source"
 
 cd "$work_dir"
 "$work_dir/venv/bin/python" -c '
@@ -28,5 +49,13 @@ assert d > 0, d
 assert talkface.__version__ == talkface.version()
 svg = talkface.SvgAnimator(talkface.FaceModel.default()).render_svg(talkface.FaceState())
 assert svg.startswith("<?xml")
+assert "talkface._talkface_photo" not in sys.modules, "import talkface loaded the photo stage"
+if any(location.parent.glob("_talkface_photo*.so")):
+    import numpy
+    try:
+        talkface.face_from_photo(numpy.full((64, 64), 128, dtype=numpy.uint8))
+        raise AssertionError("a blank photo gave a face")
+    except ValueError as error:
+        assert "no face" in str(error), error
 print("talkface", talkface.__version__, "from", location.parent, "d =", d)
 '

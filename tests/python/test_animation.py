@@ -55,7 +55,8 @@ def test_json_and_tsv_exports_have_the_contract_shape(face):
     simulator.set_user_events([talkface.ExpressionEvent("nod", 1.0, 1.4, 5.0)])
     animation = talkface.animate(face, timeline, simulator)
     document = json.loads(animation.key_frames_json())
-    assert list(document) == ["mouth", "events"]
+    assert list(document) == ["fps", "duration", "mouth", "events"]
+    assert document["fps"] == animation.fps and document["duration"] == round(animation.duration_s, 3)
     assert document["mouth"][0] == {"time": 0, "shape": "m", "syllable": None}
     assert all(list(item) == ["time", "shape", "syllable"] for item in document["mouth"])
     assert {"kind": "nod", "start": 1.0, "end": 1.4, "amount": 5.0} in document["events"]
@@ -63,7 +64,10 @@ def test_json_and_tsv_exports_have_the_contract_shape(face):
     lines = animation.key_frames_tsv().splitlines()
     assert len(lines) == len(document["mouth"])
     assert lines[0] == "0\tm"
-    assert animation.key_frames_json() == talkface.key_frames_json(animation.mouth_key_frames, animation.events)
+    assert animation.key_frames_json() == talkface.key_frames_json(animation.mouth_key_frames, animation.events,
+                                                                   animation.fps, animation.duration_s)
+    with pytest.raises(talkface.InvalidArgument, match="fps"):
+        talkface.key_frames_json([], [], 0.0, 1.0)
 
 
 def test_animation_is_deterministic_for_a_seed(face):

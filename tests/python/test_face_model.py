@@ -73,6 +73,14 @@ def test_xml_text_round_trips(face):
     assert talkface.FaceModel.from_xml(face.to_xml(), "face.xml") == face
 
 
+def test_a_face_file_of_a_future_version_is_refused_naming_the_version_read(face):
+    future = face.to_xml().replace('version="1"', 'version="999"', 1)
+    assert 'version="999"' in future
+    with pytest.raises(talkface.ParseError, match=r"face\.xml:\d+:\d+: .*version 999 is newer than this library "
+                                                  r"reads \(up to 1\); update talkface"):
+        talkface.FaceModel.from_xml(future, "face.xml")
+
+
 def test_copy_and_pickle_are_independent_equal_faces(face):
     for other in (copy.copy(face), copy.deepcopy(face), pickle.loads(pickle.dumps(face))):
         assert other == face

@@ -18,6 +18,7 @@
 
 #include "common/number_format.hpp"
 #include "common/test_paths.hpp"
+#include "render/html_text.hpp"
 #include "render/svg_text.hpp"
 #include "talkface/animation.hpp"
 #include "talkface/errors.hpp"

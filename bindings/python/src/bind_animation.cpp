@@ -22,11 +22,12 @@ Example:
         .def("__len__", [](const Animation& a) { return a.frames.size(); })
         .def(
             "key_frames_json",
-            [](const Animation& a) { return key_frames_json(a.mouth_key_frames, a.events); },
+            [](const Animation& a) { return key_frames_json(a.mouth_key_frames, a.events, a.fps, a.duration_s); },
             R"doc(
 The key frames as JSON, one item per line, times with at most 3 decimals:
-{"mouth":[{"time":s,"shape":"a","syllable":k}], "events":[{"kind":"blink","start":s,"end":s,
-"amount":x}]}; "syllable" is null for a rest. The same animation always gives the same text.
+{"fps":25,"duration":s, "mouth":[{"time":s,"shape":"a","syllable":k}], "events":[{"kind":"blink",
+"start":s,"end":s,"amount":x}]}: the animation's frame rate and length (seconds) first; "syllable"
+is null for a rest. The same animation always gives the same text.
 
 Example:
     >>> document = json.loads(animation.key_frames_json())
@@ -77,12 +78,17 @@ Example:
     >>> animation = talkface.animate(face, timeline, talkface.ExpressionSimulator(timeline, 7))
     >>> len(animation.frames), animation.key_frames_tsv()
 )doc");
-    m.def("key_frames_json", &key_frames_json, py::arg("mouth_key_frames"), py::arg("events"), R"doc(
-Key frames and events as the keyframes JSON document (see Animation.key_frames_json).
+    m.def("key_frames_json", &key_frames_json, py::arg("mouth_key_frames"), py::arg("events"), py::arg("fps"),
+          py::arg("duration_s"), R"doc(
+Key frames and events as the keyframes JSON document (see Animation.key_frames_json), with the
+frame rate they sit on and the animation's length in seconds.
+
+Raises:
+    talkface.InvalidArgument: fps not > 0, or duration_s negative or not finite.
 
 Example:
-    >>> talkface.key_frames_json(talkface.mouth_key_frames(timeline), simulator.events())
-    >>> talkface.key_frames_json([], [])
+    >>> talkface.key_frames_json(talkface.mouth_key_frames(timeline), simulator.events(), 25.0, 3.2)
+    >>> talkface.key_frames_json([], [], 25.0, 0.0)
 )doc");
     m.def("key_frames_tsv", &key_frames_tsv, py::arg("mouth_key_frames"), R"doc(
 Mouth key frames as "time<TAB>shape" lines (see Animation.key_frames_tsv).

@@ -1,4 +1,4 @@
-// WebPageApp, WebLink, WebPageOptions, build_web_page, write_web_page and escape_html in Python;
+// WebPageApp, WebLink, WebPageOptions, build_web_page and write_web_page in Python;
 // building a page runs without the GIL.
 #include "bind.hpp"
 
@@ -140,14 +140,6 @@ Raises:
 
 Example:
     >>> talkface.write_web_page("talk.html", talkface.SvgAnimator(face), animation, timeline, "speech.ogg")
-)doc");
-
-    m.def("escape_html", [](const std::string& text) { return escape_html(text); }, py::arg("text"), R"doc(
-text with & < > " ' replaced by character references, safe in HTML or XML text and quoted attributes.
-
-Example:
-    >>> talkface.escape_html("<b>")
-    '&lt;b&gt;'
 )doc");
 }
 

@@ -12,6 +12,8 @@ Coordinates are image pixels with y down; angles are degrees; FAPUs are pixels. 
 talkface.Error subclasses whose messages name the file, line, point or parameter that was wrong:
 ParseError, FileError (also an OSError), InvalidArgument (also a ValueError), AlignmentError,
 Cancelled.
+
+talkface is licensed under the Apache License, Version 2.0 (the LICENSE file; __license__).
 """
 
 from ._talkface import (
@@ -87,7 +89,6 @@ from ._talkface import (
     build_web_page,
     check_video_options,
     depth_in_d,
-    escape_html,
     expression_event_kind_from_name,
     expression_event_kind_name,
     is_valid_pinyin,
@@ -161,6 +162,9 @@ Example:
     >>> face.save("me.xml")
 """
 FaceModel.from_photo = staticmethod(_face_model_from_photo)
+
+
+__license__ = "Apache-2.0"
 
 
 def default_face() -> FaceModel:
@@ -247,7 +251,6 @@ __all__ = [
     "check_video_options",
     "default_face",
     "depth_in_d",
-    "escape_html",
     "expression_event_kind_from_name",
     "expression_event_kind_name",
     "is_valid_pinyin",

@@ -1,4 +1,4 @@
-#include "expression/timeline_checks.hpp"
+#include "timing/timeline_checks.hpp"
 
 #include <cmath>
 

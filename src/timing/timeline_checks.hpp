@@ -1,6 +1,6 @@
-// Checks on a Timeline that the expression and animation stages share.
-#ifndef TALKFACE_EXPRESSION_TIMELINE_CHECKS_HPP
-#define TALKFACE_EXPRESSION_TIMELINE_CHECKS_HPP
+// Checks on a Timeline, shared by the stages that read one (expression, animation).
+#ifndef TALKFACE_TIMING_TIMELINE_CHECKS_HPP
+#define TALKFACE_TIMING_TIMELINE_CHECKS_HPP
 
 #include <cstddef>
 #include <string>
