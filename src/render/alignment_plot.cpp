@@ -5,9 +5,9 @@
 #include <sstream>
 #include <vector>
 
+#include "audio/audio_source.hpp"
 #include "common/atomic_file.hpp"
 #include "common/number_format.hpp"
-#include "speech/audio_source.hpp"
 #include "talkface/web_page.hpp"
 
 namespace talkface {

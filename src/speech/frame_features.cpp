@@ -8,8 +8,8 @@
 #include <array>
 #include <complex>
 
+#include "audio/audio_source.hpp"
 #include "common/number_format.hpp"
-#include "speech/audio_source.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {

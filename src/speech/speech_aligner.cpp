@@ -8,10 +8,10 @@
 #include <string>
 #include <utility>
 
+#include "audio/audio_source.hpp"
 #include "common/number_format.hpp"
 #include "speech/acoustic_model.hpp"
 #include "speech/alignment_checks.hpp"
-#include "speech/audio_source.hpp"
 #include "speech/frame_features.hpp"
 #include "speech/hsmm.hpp"
 #include "speech/phone_chain.hpp"

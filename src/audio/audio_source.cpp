@@ -1,0 +1,168 @@
+#include "audio/audio_source.hpp"
+
+#include <sndfile.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include "common/number_format.hpp"
+#include "talkface/errors.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+constexpr std::size_t kMaxChannels = 64;
+
+std::string seconds_text(std::size_t frame, int sample_rate_hz) {
+    return format_fixed(static_cast<double>(frame) / sample_rate_hz, 3) + " s";
+}
+
+// libsndfile shortens the frame count of a WAV/AIFF whose data chunk is cut off and only says so
+// in its log ("data : 79912 (should be 19956)"); the header's promise is the first number.
+std::optional<std::size_t> header_data_bytes_if_truncated(SNDFILE* file) {
+    char log[4096] = {};
+    sf_command(file, SFC_GET_LOG_INFO, log, sizeof log);
+    std::istringstream lines(log);
+    std::string line;
+    while (std::getline(lines, line)) {
+        if (line.rfind("data :", 0) != 0 || line.find("should be") == std::string::npos) continue;
+        std::istringstream fields(line.substr(6));
+        unsigned long long bytes = 0;
+        if (fields >> bytes) return static_cast<std::size_t>(bytes);
+    }
+    return std::nullopt;
+}
+
+std::size_t bytes_per_frame(const SF_INFO& info) {
+    int sample_bytes = 0;
+    switch (info.format & SF_FORMAT_SUBMASK) {
+        case SF_FORMAT_PCM_S8: case SF_FORMAT_PCM_U8: case SF_FORMAT_ULAW: case SF_FORMAT_ALAW:
+            sample_bytes = 1; break;
+        case SF_FORMAT_PCM_16: sample_bytes = 2; break;
+        case SF_FORMAT_PCM_24: sample_bytes = 3; break;
+        case SF_FORMAT_PCM_32: case SF_FORMAT_FLOAT: sample_bytes = 4; break;
+        case SF_FORMAT_DOUBLE: sample_bytes = 8; break;
+        default: return 0;
+    }
+    return static_cast<std::size_t>(sample_bytes) * static_cast<std::size_t>(info.channels);
+}
+
+class FileSource final : public AudioSource {
+public:
+    FileSource(std::string path, SNDFILE* file, const SF_INFO& info, std::size_t promised_frames)
+        : path_(std::move(path)), file_(file), info_(info), promised_frames_(promised_frames) {}
+    ~FileSource() override { sf_close(file_); }
+    FileSource(const FileSource&) = delete;
+    FileSource& operator=(const FileSource&) = delete;
+
+    std::size_t read(float* mono, std::size_t max_frames) override {
+        const auto channels = static_cast<std::size_t>(info_.channels);
+        interleaved_.resize(max_frames * channels);
+        const sf_count_t got =
+            sf_readf_float(file_, interleaved_.data(), static_cast<sf_count_t>(max_frames));
+        const auto frames = got > 0 ? static_cast<std::size_t>(got) : 0;
+        for (std::size_t i = 0; i < frames; ++i) {
+            float sum = 0.0f;
+            for (std::size_t c = 0; c < channels; ++c) sum += interleaved_[i * channels + c];
+            mono[i] = sum / static_cast<float>(channels);
+        }
+        frames_read_ += frames;
+        if (frames == 0 && frames_read_ < promised_frames_) {
+            const std::string reason = sf_error(file_) != SF_ERR_NO_ERROR ? std::string(": ") + sf_strerror(file_) : "";
+            throw FileError(path_, "truncated: the header promises " + std::to_string(promised_frames_) +
+                                       " frames (" + seconds_text(promised_frames_, info_.samplerate) +
+                                       ") but the data ends at frame " + std::to_string(frames_read_) + " (" +
+                                       seconds_text(frames_read_, info_.samplerate) + ")" + reason);
+        }
+        return frames;
+    }
+    int sample_rate_hz() const override { return info_.samplerate; }
+    std::size_t frame_count() const override { return promised_frames_; }
+    const std::string& name() const override { return path_; }
+
+private:
+    std::string path_;
+    SNDFILE* file_;
+    SF_INFO info_;
+    std::size_t promised_frames_;
+    std::size_t frames_read_ = 0;
+    std::vector<float> interleaved_;
+};
+
+class ViewSource final : public AudioSource {
+public:
+    explicit ViewSource(const AudioView& audio) : audio_(audio) {}
+    std::size_t read(float* mono, std::size_t max_frames) override {
+        const auto channels = static_cast<std::size_t>(audio_.channel_count);
+        const std::size_t frames = std::min(max_frames, audio_.frame_count - position_);
+        const float* in = audio_.samples + position_ * channels;
+        for (std::size_t i = 0; i < frames; ++i) {
+            float sum = 0.0f;
+            for (std::size_t c = 0; c < channels; ++c) sum += in[i * channels + c];
+            mono[i] = sum / static_cast<float>(channels);
+        }
+        position_ += frames;
+        return frames;
+    }
+    int sample_rate_hz() const override { return audio_.sample_rate_hz; }
+    std::size_t frame_count() const override { return audio_.frame_count; }
+    const std::string& name() const override { return name_; }
+
+private:
+    AudioView audio_;
+    std::size_t position_ = 0;
+    std::string name_ = "audio";
+};
+
+}  // namespace
+
+std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
+    {
+        std::ifstream probe(path, std::ios::binary | std::ios::ate);
+        if (!probe) throw FileError(path, std::strerror(errno));
+        if (probe.tellg() == 0) throw InvalidArgument(path, "empty file: no audio frames");
+    }
+    SF_INFO info{};
+    SNDFILE* file = sf_open(path.c_str(), SFM_READ, &info);
+    if (file == nullptr) {
+        // sf_strerror(NULL) is libsndfile's process-global last error: read it before anything else
+        // can open a file on this thread.
+        const std::string reason = sf_strerror(nullptr);
+        if (reason.find("System error") != std::string::npos) throw FileError(path, reason);
+        throw ParseError(path, 0, 0, "", "not audio libsndfile can read (WAV, FLAC, OGG, ...): " + reason);
+    }
+    if (info.channels <= 0 || static_cast<std::size_t>(info.channels) > kMaxChannels || info.samplerate <= 0) {
+        sf_close(file);
+        throw ParseError(path, 0, 0, "", "unsupported header: " + std::to_string(info.channels) + " channels at " +
+                                             std::to_string(info.samplerate) + " Hz");
+    }
+    auto promised_frames = static_cast<std::size_t>(std::max<sf_count_t>(info.frames, 0));
+    if (const auto data_bytes = header_data_bytes_if_truncated(file)) {
+        if (const std::size_t frame_bytes = bytes_per_frame(info); frame_bytes > 0)
+            promised_frames = std::max(promised_frames, *data_bytes / frame_bytes);
+    }
+    if (promised_frames == 0) {
+        sf_close(file);
+        throw InvalidArgument(path, "empty audio: the file has no frames");
+    }
+    return std::make_unique<FileSource>(path, file, info, promised_frames);
+}
+
+std::unique_ptr<AudioSource> open_audio_view(const AudioView& audio) {
+    if (audio.frame_count == 0) throw InvalidArgument("audio.frame_count", "empty audio: no frames");
+    if (audio.samples == nullptr) throw InvalidArgument("audio.samples", "null, with " + std::to_string(audio.frame_count) + " frames");
+    if (audio.channel_count <= 0 || static_cast<std::size_t>(audio.channel_count) > kMaxChannels)
+        throw InvalidArgument("audio.channel_count", "expected 1.." + std::to_string(kMaxChannels) + ", found " +
+                                                         std::to_string(audio.channel_count));
+    if (audio.sample_rate_hz < 4000 || audio.sample_rate_hz > 384000)
+        throw InvalidArgument("audio.sample_rate_hz",
+                              "expected 4000..384000, found " + std::to_string(audio.sample_rate_hz));
+    return std::make_unique<ViewSource>(audio);
+}
+
+}  // namespace talkface::detail
