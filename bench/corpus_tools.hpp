@@ -4,7 +4,11 @@
 #ifndef TALKFACE_BENCH_CORPUS_TOOLS_HPP
 #define TALKFACE_BENCH_CORPUS_TOOLS_HPP
 
+#include <algorithm>
 #include <cstdint>
+#include <iterator>
+#include <sstream>
+#include <stdexcept>
 #include <filesystem>
 #include <functional>
 #include <random>
@@ -17,6 +21,33 @@
 #include "wav_file.hpp"
 
 namespace talkface_bench {
+
+/// `value` read whole as a Number.
+/// \throws std::invalid_argument naming the option `name` if it is not one.
+template <typename Number>
+Number parse_number(const std::string& name, const std::string& value) {
+    std::istringstream in(value);
+    Number number{};
+    if (!(in >> number) || !in.eof()) throw std::invalid_argument(name + " expects a number, got \"" + value + "\"");
+    return number;
+}
+
+/// The conditions (each with a `name`) that `list` names, comma-separated, or all of them if it is empty.
+/// \throws std::invalid_argument naming an unknown one.
+template <typename Condition, std::size_t N>
+std::vector<const Condition*> select_conditions(const Condition (&all)[N], const std::string& list) {
+    std::vector<const Condition*> selected;
+    std::istringstream names(list);
+    for (std::string name; std::getline(names, name, ',');) {
+        const auto found = std::find_if(std::begin(all), std::end(all),
+                                        [&](const Condition& condition) { return name == condition.name; });
+        if (found == std::end(all)) throw std::invalid_argument("unknown condition \"" + name + "\"");
+        selected.push_back(found);
+    }
+    if (selected.empty())
+        for (const auto& condition : all) selected.push_back(&condition);
+    return selected;
+}
 
 /// Uniform in [low, high). Not std::uniform_real_distribution, whose output differs between
 /// standard libraries.

@@ -321,14 +321,6 @@ void make_clip(const ClipOptions& options) {
     std::exit(2);
 }
 
-template <typename Number>
-Number number_arg(const std::string& name, const std::string& value) {
-    std::istringstream in(value);
-    Number number{};
-    if (!(in >> number) || !in.eof()) usage(name + " expects a number, got \"" + value + "\"");
-    return number;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -348,19 +340,19 @@ int main(int argc, char** argv) {
                 clip_mode = true;
                 clip.stem = value();
             } else if (arg == "--seed") {
-                corpus.seed = clip.seed = number_arg<std::uint64_t>(arg, value());
+                corpus.seed = clip.seed = talkface_bench::parse_number<std::uint64_t>(arg, value());
             } else if (arg == "--repeats") {
-                corpus.repeats = number_arg<int>(arg, value());
+                corpus.repeats = talkface_bench::parse_number<int>(arg, value());
             } else if (arg == "--sentences") {
                 corpus.sentences_path = value();
             } else if (arg == "--conditions") {
                 condition_list = value();
             } else if (arg == "--rate-wpm") {
-                clip.rate_wpm = number_arg<int>(arg, value());
+                clip.rate_wpm = talkface_bench::parse_number<int>(arg, value());
             } else if (arg == "--pitch") {
-                clip.pitch = number_arg<int>(arg, value());
+                clip.pitch = talkface_bench::parse_number<int>(arg, value());
             } else if (arg == "--pause-s") {
-                clip.pause_s = number_arg<double>(arg, value());
+                clip.pause_s = talkface_bench::parse_number<double>(arg, value());
             } else if (arg == "-h" || arg == "--help") {
                 usage("help");
             } else if (!arg.empty() && arg[0] == '-') {
@@ -377,17 +369,11 @@ int main(int argc, char** argv) {
         }
         corpus.out_dir = positional[0];
         if (corpus.repeats < 1) usage("--repeats must be at least 1");
-        std::istringstream names(condition_list);
-        for (std::string name; std::getline(names, name, ',');) {
-            const auto found = std::find_if(std::begin(all_conditions), std::end(all_conditions),
-                                            [&](const Condition& condition) { return name == condition.name; });
-            if (found == std::end(all_conditions)) usage("unknown condition \"" + name + "\"");
-            corpus.conditions.push_back(found);
-        }
-        if (corpus.conditions.empty())
-            for (const auto& condition : all_conditions) corpus.conditions.push_back(&condition);
+        corpus.conditions = talkface_bench::select_conditions(all_conditions, condition_list);
         make_corpus(corpus);
         return 0;
+    } catch (const std::invalid_argument& error) {
+        usage(error.what());
     } catch (const std::exception& error) {
         std::cerr << "make_corpus: " << error.what() << "\n";
         return 1;

@@ -469,14 +469,6 @@ void make_clip(const std::string& stem, const std::string& text, std::uint64_t s
     std::exit(2);
 }
 
-template <typename Number>
-Number number_arg(const std::string& name, const std::string& value) {
-    std::istringstream in(value);
-    Number number{};
-    if (!(in >> number) || !in.eof()) usage(name + " expects a number, got \"" + value + "\"");
-    return number;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -493,12 +485,12 @@ int main(int argc, char** argv) {
                 return argv[++i];
             };
             if (arg == "--clip") clip_stem = value();
-            else if (arg == "--seed") corpus.seed = number_arg<std::uint64_t>(arg, value());
-            else if (arg == "--repeats") corpus.repeats = number_arg<int>(arg, value());
+            else if (arg == "--seed") corpus.seed = talkface_bench::parse_number<std::uint64_t>(arg, value());
+            else if (arg == "--repeats") corpus.repeats = talkface_bench::parse_number<int>(arg, value());
             else if (arg == "--sentences") corpus.sentences_path = value();
             else if (arg == "--voice") corpus.voice_dir = value();
             else if (arg == "--conditions") condition_list = value();
-            else if (arg == "--tempo") clip_tempo = number_arg<double>(arg, value());
+            else if (arg == "--tempo") clip_tempo = talkface_bench::parse_number<double>(arg, value());
             else if (arg == "-h" || arg == "--help") usage("help");
             else if (!arg.empty() && arg[0] == '-') usage("unknown option " + arg);
             else positional.push_back(arg);
@@ -510,17 +502,11 @@ int main(int argc, char** argv) {
         }
         corpus.out_dir = positional[0];
         if (corpus.repeats < 1) usage("--repeats must be at least 1");
-        std::istringstream names(condition_list);
-        for (std::string name; std::getline(names, name, ',');) {
-            const auto found = std::find_if(std::begin(all_conditions), std::end(all_conditions),
-                                            [&](const Condition& condition) { return name == condition.name; });
-            if (found == std::end(all_conditions)) usage("unknown condition \"" + name + "\"");
-            corpus.conditions.push_back(found);
-        }
-        if (corpus.conditions.empty())
-            for (const auto& condition : all_conditions) corpus.conditions.push_back(&condition);
+        corpus.conditions = talkface_bench::select_conditions(all_conditions, condition_list);
         make_corpus(corpus);
         return 0;
+    } catch (const std::invalid_argument& error) {
+        usage(error.what());
     } catch (const std::exception& error) {
         std::cerr << "make_human_corpus: " << error.what() << "\n";
         return 1;

@@ -21,9 +21,10 @@ libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev li
 # libavcodec59 brings libx264, libvpx, libopus and libwebp with it.
 # libdlib-data is dlib's 95 MB landmark model: only the dlib photo locator reads it, at run time.
 # python3-skimage and python-matplotlib-data ship the real test photos (astronaut.png,
-# grace_hopper.jpg).
+# grace_hopper.jpg). gcin-voice holds every Mandarin syllable as a person recorded it: its speaker 3
+# is the aligner's human test voice (tests/speech/human_speech_test.cpp, bench/make_human_corpus).
 test_packages="python3-pil python3-pytest python3-venv python3-pip python3-setuptools chromium fonts-dejavu-core
-python3-skimage python-matplotlib-data librsvg2-bin libdlib-data"
+python3-skimage python-matplotlib-data librsvg2-bin libdlib-data gcin-voice"
 bench_packages="espeak-ng libespeak-ng-dev sox libsox-fmt-all time"
 
 case "${1:-build}" in
