@@ -2,7 +2,7 @@
 // condition and per sentence set, how close the syllable starts and sentence boundaries come to
 // the truth and how fast it ran, beside the naive baseline and the targets of issue #4.
 //
-//   align_bench CORPUS [--conditions clean,white10,...]
+//   align_bench CORPUS [--conditions clean,white10,...] [--dump SYLLABLES.tsv]   (every syllable's error, confidence)
 //   align_bench --file AUDIO TRANSCRIPT [--truth LIST]   (one file, for memory_bench.sh)
 //   align_bench --mismatch CORPUS [--conditions ...]      (wrong transcripts: detected, and false alarms)
 //
@@ -40,6 +40,8 @@ struct Score {
     int passages = 0;
     int failed = 0;                 ///< passages the aligner threw on; their onsets count as missed
     std::vector<double> errors_s;   ///< |onset error| per syllable; infinity when its passage failed
+    std::vector<double> confidences;      ///< per syllable of the passages aligned
+    std::vector<double> aligned_errors_s; ///< their errors, beside confidences
     int boundaries = 0;
     int boundaries_found = 0;
     double audio_s = 0;
@@ -49,6 +51,8 @@ struct Score {
         passages += other.passages;
         failed += other.failed;
         errors_s.insert(errors_s.end(), other.errors_s.begin(), other.errors_s.end());
+        confidences.insert(confidences.end(), other.confidences.begin(), other.confidences.end());
+        aligned_errors_s.insert(aligned_errors_s.end(), other.aligned_errors_s.begin(), other.aligned_errors_s.end());
         boundaries += other.boundaries;
         boundaries_found += other.boundaries_found;
         audio_s += other.audio_s;
@@ -131,8 +135,12 @@ void score_timeline(const talkface::Timeline& aligned, const talkface::Timeline&
                                  " sentences and " + std::to_string(aligned.syllables.size()) + " syllables, the truth has " +
                                  std::to_string(truth.sentences.size()) + " and " + std::to_string(truth.syllables.size()));
     }
-    for (std::size_t i = 0; i < truth.syllables.size(); ++i)
-        score.errors_s.push_back(std::fabs(aligned.syllables[i].start_s - truth.syllables[i].start_s));
+    for (std::size_t i = 0; i < truth.syllables.size(); ++i) {
+        const double error = std::fabs(aligned.syllables[i].start_s - truth.syllables[i].start_s);
+        score.errors_s.push_back(error);
+        score.aligned_errors_s.push_back(error);
+        score.confidences.push_back(aligned.syllables[i].confidence);
+    }
     for (std::size_t k = 0; k < truth.sentences.size(); ++k) {
         score.boundaries += 2;
         score.boundaries_found += std::fabs(aligned.sentences[k].start_s - truth.sentences[k].start_s) <= boundary_tolerance_s;
@@ -141,22 +149,65 @@ void score_timeline(const talkface::Timeline& aligned, const talkface::Timeline&
 }
 
 // Issue #4: clean and SNR 30 dB are held to the strict target, SNR 10 dB and every distorted
-// condition (white noise at 20 dB among them) to the loose one, and all to every boundary.
+// condition (white noise at 20 dB among them) to the loose one, and all to every boundary; issue
+// 12 raises SNR 10 dB to 85%. Issue 12's human speech (h-*), onsets only: at SNR 25 dB or better,
+// tempo up to 1.5, median <= 20 ms, 90% within 50 ms and 97% within 100 ms; at 15-20 dB (and in a
+// room) 80% and 95%. (Its sentence ends are printed but not held to a target: a weak last syllable's
+// decay, which the truth counts to -35 dB of its peak, sinks under the noise.)
 struct Target {
     bool applies = false;
-    bool strict = false;
+    double max_median_ms = 0;  ///< 0: no median target
+    double min_in_50 = 0;
+    double min_in_100 = 0;     ///< 0: no 100 ms target
+    bool all_boundaries = true;
 
     std::string text() const {
-        return strict ? "median<=20ms, >=90% in 50ms, all boundaries" : ">=80% in 50ms, all boundaries";
+        std::string text;
+        if (max_median_ms > 0) text += "median<=" + std::to_string(static_cast<int>(max_median_ms)) + "ms, ";
+        text += ">=" + std::to_string(static_cast<int>(min_in_50)) + "% in 50ms";
+        if (min_in_100 > 0) text += ", >=" + std::to_string(static_cast<int>(min_in_100)) + "% in 100ms";
+        return all_boundaries ? text + ", all boundaries" : text;
     }
     bool met(const Score& score) const {
-        if (score.boundaries_found != score.boundaries) return false;
-        if (strict) return score.median_ms() <= 20.0 && score.within_percent(0.050) >= 90.0;
-        return score.within_percent(0.050) >= 80.0;
+        if (all_boundaries && score.boundaries_found != score.boundaries) return false;
+        if (max_median_ms > 0 && !(score.median_ms() <= max_median_ms)) return false;
+        if (min_in_100 > 0 && !(score.within_percent(0.100) >= min_in_100)) return false;
+        return score.within_percent(0.050) >= min_in_50;
     }
 };
 
-Target target_for(const std::string& condition) { return {true, condition == "clean" || condition == "white30"}; }
+Target target_for(const std::string& condition) {
+    if (condition == "h-clean" || condition == "h-white30" || condition == "h-pink25" || condition == "h-fast")
+        return {true, 20.0, 90.0, 97.0, false};
+    if (condition.rfind("h-", 0) == 0) return {true, 0.0, 80.0, 95.0, false};
+    if (condition == "clean" || condition == "white30") return {true, 20.0, 90.0, 0.0, true};
+    if (condition == "white10") return {true, 0.0, 85.0, 0.0, true};
+    return {true, 0.0, 80.0, 0.0, true};
+}
+
+// Issue 12: a syllable more than 100 ms off should come out with a low confidence. Of the
+// syllables of `score`, how many of those more than 100 ms off fall under `threshold`, and how
+// many of the others do (a false alarm); and the confidence under which a tenth of the others fall.
+void print_confidence(const std::string& condition, const Score& score, double threshold) {
+    std::size_t bad = 0, bad_flagged = 0, good = 0, good_flagged = 0;
+    std::vector<double> good_confidences;
+    for (std::size_t i = 0; i < score.confidences.size(); ++i) {
+        const bool is_low = score.confidences[i] < threshold;
+        if (score.aligned_errors_s[i] > 0.100) {
+            ++bad;
+            bad_flagged += is_low;
+        } else {
+            ++good;
+            good_flagged += is_low;
+            good_confidences.push_back(score.confidences[i]);
+        }
+    }
+    std::sort(good_confidences.begin(), good_confidences.end());
+    const double tenth = good_confidences.empty() ? 0.0 : good_confidences[good_confidences.size() / 10];
+    std::printf("%-10s %6zu of %-6zu %6.1f%%   %6zu of %-6zu %6.1f%%   %.3f\n", condition.c_str(), bad_flagged, bad,
+                bad ? 100.0 * static_cast<double>(bad_flagged) / static_cast<double>(bad) : 0.0, good_flagged, good,
+                good ? 100.0 * static_cast<double>(good_flagged) / static_cast<double>(good) : 0.0, tenth);
+}
 
 std::string format_fixed(double value, int decimals) {
     if (std::isnan(value)) return "-";
@@ -218,7 +269,13 @@ fs::path audio_beside(const fs::path& truth_path) {
     throw std::runtime_error(truth_path.string() + ": no audio beside it");
 }
 
-int run_corpus(const fs::path& corpus, const std::string& only) {
+int run_corpus(const fs::path& corpus, const std::string& only, const std::string& dump_path) {
+    std::ofstream dump;
+    if (!dump_path.empty()) {
+        dump.open(dump_path);
+        if (!dump) throw std::runtime_error(dump_path + ": cannot write");
+        dump << "condition\tpassage\tsyllable\tpinyin\ttrue_start\tstart\terror_ms\tconfidence\n";
+    }
     const auto conditions = corpus_conditions(corpus, only);
     const talkface::SpeechAligner aligner;
     // scores[set][condition] for the aligner and the baseline.
@@ -237,6 +294,13 @@ int run_corpus(const fs::path& corpus, const std::string& only) {
                 const auto aligned = aligner.align_file(audio_path.string(), transcript);
                 mine.cpu_s += static_cast<double>(std::clock() - begin) / CLOCKS_PER_SEC;
                 score_timeline(aligned, truth.timeline, audio_path.string(), mine);
+                for (std::size_t i = 0; dump && i < aligned.syllables.size(); ++i) {
+                    const auto& syllable = aligned.syllables[i];
+                    const double truth_s = truth.timeline.syllables[i].start_s;
+                    dump << condition << "\t" << truth_path.stem().string() << "\t" << i << "\t" << syllable.pinyin << "\t"
+                         << truth_s << "\t" << syllable.start_s << "\t" << 1000.0 * (syllable.start_s - truth_s) << "\t"
+                         << syllable.confidence << "\n";
+                }
             } catch (const talkface::Error& error) {
                 mine.cpu_s += static_cast<double>(std::clock() - begin) / CLOCKS_PER_SEC;
                 ++mine.failed;
@@ -277,6 +341,22 @@ int run_corpus(const fs::path& corpus, const std::string& only) {
             aligner_all.add(mine);
             baseline_all.add(naive);
         }
+    }
+    std::printf("\nconfidence (issue 12): syllables more than 100 ms off, and the others, under talkface's documented\n"
+                "  threshold for a low confidence (%.2f); good_p10: the confidence under which 10%% of the others fall\n",
+                talkface::kLowAlignmentConfidence);
+    for (const char* set : sets) {
+        if (aligner_scores.find(set) == aligner_scores.end()) continue;
+        std::printf("%s sentences\n%-10s %-24s %-24s %s\n", set, "condition", "off >100ms: flagged", "others: flagged",
+                    "good_p10");
+        Score pooled;
+        for (const auto& condition : conditions) {
+            const Score& mine = aligner_scores[set][condition];
+            if (mine.passages == 0) continue;
+            print_confidence(condition, mine, talkface::kLowAlignmentConfidence);
+            pooled.add(mine);
+        }
+        print_confidence("all", pooled, talkface::kLowAlignmentConfidence);
     }
     std::printf("\nall\n");
     print_header();
@@ -497,7 +577,7 @@ int run_mismatch(const fs::path& corpus, const std::string& only) {
 
 [[noreturn]] void usage(const std::string& problem) {
     std::cerr << "align_bench: " << problem << "\n"
-              << "usage: align_bench CORPUS [--conditions A,B,...]\n"
+              << "usage: align_bench CORPUS [--conditions A,B,...] [--dump SYLLABLES.tsv]\n"
               << "       align_bench --file AUDIO TRANSCRIPT [--truth LIST]\n"
               << "       align_bench --mismatch CORPUS [--conditions A,B,...]\n";
     std::exit(2);
@@ -510,6 +590,7 @@ int main(int argc, char** argv) {
         std::vector<std::string> positional;
         std::string only;
         std::string truth_list;
+        std::string dump_path;
         bool file_mode = false;
         bool mismatch_mode = false;
         for (int i = 1; i < argc; ++i) {
@@ -520,6 +601,9 @@ int main(int argc, char** argv) {
             } else if (arg == "--truth") {
                 if (i + 1 >= argc) usage("--truth needs a value");
                 truth_list = argv[++i];
+            } else if (arg == "--dump") {
+                if (i + 1 >= argc) usage("--dump needs a value");
+                dump_path = argv[++i];
             } else if (arg == "--mismatch") {
                 mismatch_mode = true;
             } else if (arg == "--file") {
@@ -538,7 +622,7 @@ int main(int argc, char** argv) {
         }
         if (!truth_list.empty()) usage("--truth goes with --file");
         if (positional.size() != 1) usage("give the corpus directory that make_corpus wrote");
-        return mismatch_mode ? run_mismatch(positional[0], only) : run_corpus(positional[0], only);
+        return mismatch_mode ? run_mismatch(positional[0], only) : run_corpus(positional[0], only, dump_path);
     } catch (const std::exception& error) {
         std::cerr << "align_bench: " << error.what() << "\n";
         return 1;

@@ -21,15 +21,22 @@
 #include <nlohmann/json.hpp>
 #include <talkface/talkface.hpp>
 
+#include "corpus_tools.hpp"
 #include "espeak_speech.hpp"
 #include "wav_file.hpp"
 
 namespace fs = std::filesystem;
+using talkface_bench::BenchSentence;
 using talkface_bench::MonoAudio;
+using talkface_bench::Noise;
+using talkface_bench::add_noise;
+using talkface_bench::load_sentences;
+using talkface_bench::read_text;
+using talkface_bench::uniform;
+using talkface_bench::uniform_int;
+using talkface_bench::write_text;
 
 namespace {
-
-enum class Noise { none, white, pink, brown };
 
 struct Condition {
     const char* name;
@@ -68,11 +75,6 @@ const Condition all_conditions[] = {
     {"joined", "sentences run together, 0-0.12 s apart", 1.0, Noise::none, 0, "rate -v 16k", "-b 16", "wav", true},
 };
 
-struct BenchSentence {
-    std::string text;  ///< as written in sentences.txt, reading fixes kept
-    std::string set;   ///< "tuning" or "held-out"
-};
-
 /// How one passage is spoken: drawn once, shared by every condition.
 struct Delivery {
     std::vector<int> rate_wpm;  ///< per sentence
@@ -94,69 +96,8 @@ struct Recording {
     std::vector<bool> after_pause;  ///< per syllable
 };
 
-double uniform(std::mt19937_64& rng, double low, double high) {
-    // Not std::uniform_real_distribution, whose output differs between standard libraries.
-    const double unit = static_cast<double>(rng() >> 11) * 0x1.0p-53;
-    return low + (high - low) * unit;
-}
-
-int uniform_int(std::mt19937_64& rng, int low, int high) {
-    return low + static_cast<int>(std::floor(uniform(rng, 0.0, 1.0) * (high - low + 1)));
-}
-
-double gaussian(std::mt19937_64& rng) {
-    const double u1 = 1.0 - uniform(rng, 0.0, 1.0);
-    const double u2 = uniform(rng, 0.0, 1.0);
-    constexpr double two_pi = 6.283185307179586;
-    return std::sqrt(-2.0 * std::log(u1)) * std::cos(two_pi * u2);
-}
-
-std::string quoted(const std::string& text) {
-    std::string out = "'";
-    for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
 void run_sox(const std::string& input, const std::string& output, const Condition& condition) {
-    // -R: sox's dither and any other randomness repeat from run to run.
-    const std::string command = std::string("sox -R -V1 ") + quoted(input) + " " + condition.sox_output_options + " " +
-                                quoted(output) + " " + condition.sox_effects;
-    if (std::system(command.c_str()) != 0) throw std::runtime_error("sox failed: " + command);
-}
-
-void write_text(const fs::path& path, const std::string& text) {
-    std::ofstream file(path, std::ios::binary);
-    file << text;
-    if (!file) throw std::runtime_error(path.string() + ": cannot write");
-}
-
-std::string read_text(const fs::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw std::runtime_error(path.string() + ": cannot read");
-    std::ostringstream text;
-    text << file.rdbuf();
-    return text.str();
-}
-
-std::vector<BenchSentence> load_sentences(const std::string& path) {
-    std::istringstream lines(read_text(path));
-    std::vector<BenchSentence> sentences;
-    std::string line;
-    for (int number = 1; std::getline(lines, line); ++number) {
-        if (line.empty() || line[0] == '#') continue;
-        const std::string where = path + ":" + std::to_string(number);
-        const auto tab = line.find('\t');
-        if (tab == std::string::npos) throw std::runtime_error(where + ": expected SET<TAB>SENTENCE");
-        BenchSentence sentence{line.substr(tab + 1), line.substr(0, tab)};
-        if (sentence.set != "tuning" && sentence.set != "held-out")
-            throw std::runtime_error(where + ": set \"" + sentence.set + "\" is neither tuning nor held-out");
-        const auto timeline = talkface::read_transcript(sentence.text, {}, where);
-        if (timeline.sentences.size() != 1 || !timeline.warnings.empty())
-            throw std::runtime_error(where + ": expected one sentence of characters with readings");
-        sentences.push_back(std::move(sentence));
-    }
-    if (sentences.empty()) throw std::runtime_error(path + ": no sentences");
-    return sentences;
+    talkface_bench::run_sox(input, output, condition.sox_output_options, condition.sox_effects);
 }
 
 Delivery draw_delivery(std::size_t sentence_count, std::mt19937_64& rng) {
@@ -180,35 +121,14 @@ Delivery join_sentences(Delivery delivery, std::uint64_t seed, std::size_t passa
     return delivery;
 }
 
-// Each repeat shuffles each set and splits it into passages of about five sentences, so that a
-// sentence is heard in different neighbours, rates and pitches.
+// The passages of talkface_bench::plan_passages, each with its delivery drawn from the same stream
+// as soon as its sentences are chosen.
 std::vector<Passage> plan_passages(const std::vector<BenchSentence>& sentences, int repeats, std::uint64_t seed) {
     std::mt19937_64 rng(seed);
     std::vector<Passage> passages;
-    for (const std::string set : {"tuning", "held-out"}) {
-        std::vector<std::string> texts;
-        for (const auto& sentence : sentences)
-            if (sentence.set == set) texts.push_back(sentence.text);
-        if (texts.empty()) continue;
-        const std::size_t per_repeat = std::max<std::size_t>(1, (texts.size() + 2) / 5);
-        int number = 1;
-        for (int repeat = 0; repeat < repeats; ++repeat) {
-            for (std::size_t i = texts.size(); i > 1; --i)
-                std::swap(texts[i - 1], texts[static_cast<std::size_t>(uniform_int(rng, 0, static_cast<int>(i) - 1))]);
-            for (std::size_t part = 0; part < per_repeat; ++part) {
-                const std::size_t begin = part * texts.size() / per_repeat;
-                const std::size_t end = (part + 1) * texts.size() / per_repeat;
-                Passage passage;
-                char name[32];
-                std::snprintf(name, sizeof name, "%s-%03d", set.c_str(), number++);
-                passage.name = name;
-                passage.set = set;
-                for (std::size_t i = begin; i < end; ++i) passage.transcript += texts[i] + "\n";
-                passage.delivery = draw_delivery(end - begin, rng);
-                passages.push_back(std::move(passage));
-            }
-        }
-    }
+    talkface_bench::plan_passages(sentences, repeats, rng, [&](const talkface_bench::PlannedPassage& planned) {
+        passages.push_back({planned.name, planned.set, planned.transcript, draw_delivery(planned.sentence_count, rng)});
+    });
     return passages;
 }
 
@@ -271,86 +191,15 @@ Recording join_passage(const SpokenPassage& passage, const std::vector<double>& 
     return recording;
 }
 
-double rounded(double seconds) { return std::round(seconds * 1e5) / 1e5; }
-
 std::string truth_json(const Recording& recording, const Delivery& delivery, double rate_factor,
                        const std::string& condition, const std::string& set) {
-    nlohmann::ordered_json document;
-    document["generator"] = "talkface bench/make_corpus, espeak-ng voice cmn-latn-pinyin";
-    document["condition"] = condition;
-    document["set"] = set;
-    document["duration"] = rounded(recording.truth.duration_s);
-    document["sentences"] = nlohmann::ordered_json::array();
+    auto document = talkface_bench::truth_document("talkface bench/make_corpus, espeak-ng voice cmn-latn-pinyin", condition,
+                                                   set, recording.truth, recording.after_pause);
     for (std::size_t k = 0; k < recording.truth.sentences.size(); ++k) {
-        const auto& sentence = recording.truth.sentences[k];
-        document["sentences"].push_back({{"text", sentence.text},
-                                         {"start", rounded(sentence.start_s)},
-                                         {"end", rounded(sentence.end_s)},
-                                         {"rate_wpm", std::lround(delivery.rate_wpm[k] * rate_factor)},
-                                         {"pitch", delivery.pitch[k]}});
-    }
-    document["syllables"] = nlohmann::ordered_json::array();
-    for (std::size_t i = 0; i < recording.truth.syllables.size(); ++i) {
-        const auto& syllable = recording.truth.syllables[i];
-        document["syllables"].push_back({{"text", syllable.text},
-                                         {"pinyin", syllable.pinyin},
-                                         {"start", rounded(syllable.start_s)},
-                                         {"end", rounded(syllable.end_s)},
-                                         {"sentence", syllable.sentence},
-                                         {"after_pause", static_cast<bool>(recording.after_pause[i])}});
+        document["sentences"][k]["rate_wpm"] = std::lround(delivery.rate_wpm[k] * rate_factor);
+        document["sentences"][k]["pitch"] = delivery.pitch[k];
     }
     return document.dump(1) + "\n";
-}
-
-// Paul Kellet's pink filter (within 0.05 dB of -3 dB/octave above 10 Hz at these rates) and a
-// leaky integrator for brown (-6 dB/octave); the SNR is set from the measured power afterwards.
-std::vector<float> make_noise(Noise colour, std::size_t count, std::mt19937_64& rng) {
-    std::vector<float> noise(count);
-    double b0 = 0, b1 = 0, b2 = 0, integrated = 0;
-    for (auto& sample : noise) {
-        const double white = gaussian(rng);
-        double value = white;
-        if (colour == Noise::pink) {
-            b0 = 0.99765 * b0 + white * 0.0990460;
-            b1 = 0.96300 * b1 + white * 0.2965164;
-            b2 = 0.57000 * b2 + white * 1.0526913;
-            value = b0 + b1 + b2 + white * 0.1848;
-        } else if (colour == Noise::brown) {
-            integrated = 0.995 * integrated + white;
-            value = integrated;
-        }
-        sample = static_cast<float>(value);
-    }
-    return noise;
-}
-
-// SNR against the speech's active level: mean power inside the sentences, pauses left out.
-MonoAudio add_noise(const MonoAudio& clean, const talkface::Timeline& truth, Noise colour, double snr_db,
-                    std::mt19937_64& rng) {
-    double speech_power = 0;
-    std::size_t speech_count = 0;
-    for (const auto& sentence : truth.sentences) {
-        const auto begin = static_cast<std::size_t>(sentence.start_s * clean.sample_rate_hz);
-        const auto end = std::min(clean.samples.size(), static_cast<std::size_t>(sentence.end_s * clean.sample_rate_hz));
-        for (std::size_t i = begin; i < end; ++i) speech_power += double(clean.samples[i]) * clean.samples[i];
-        speech_count += end > begin ? end - begin : 0;
-    }
-    speech_power /= static_cast<double>(std::max<std::size_t>(speech_count, 1));
-    const auto noise = make_noise(colour, clean.samples.size(), rng);
-    double noise_power = 0;
-    for (float sample : noise) noise_power += double(sample) * sample;
-    noise_power /= static_cast<double>(std::max<std::size_t>(noise.size(), 1));
-    const double gain = std::sqrt(speech_power / (noise_power * std::pow(10.0, snr_db / 10.0)));
-    MonoAudio mixed = clean;
-    float peak = 0;
-    for (std::size_t i = 0; i < mixed.samples.size(); ++i) {
-        mixed.samples[i] += static_cast<float>(gain * noise[i]);
-        peak = std::max(peak, std::fabs(mixed.samples[i]));
-    }
-    // Scaling speech and noise together keeps the SNR and avoids clipping.
-    if (peak > 0.98f)
-        for (auto& sample : mixed.samples) sample *= 0.98f / peak;
-    return mixed;
 }
 
 struct CorpusOptions {
@@ -472,14 +321,6 @@ void make_clip(const ClipOptions& options) {
     std::exit(2);
 }
 
-template <typename Number>
-Number number_arg(const std::string& name, const std::string& value) {
-    std::istringstream in(value);
-    Number number{};
-    if (!(in >> number) || !in.eof()) usage(name + " expects a number, got \"" + value + "\"");
-    return number;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -499,19 +340,19 @@ int main(int argc, char** argv) {
                 clip_mode = true;
                 clip.stem = value();
             } else if (arg == "--seed") {
-                corpus.seed = clip.seed = number_arg<std::uint64_t>(arg, value());
+                corpus.seed = clip.seed = talkface_bench::parse_number<std::uint64_t>(arg, value());
             } else if (arg == "--repeats") {
-                corpus.repeats = number_arg<int>(arg, value());
+                corpus.repeats = talkface_bench::parse_number<int>(arg, value());
             } else if (arg == "--sentences") {
                 corpus.sentences_path = value();
             } else if (arg == "--conditions") {
                 condition_list = value();
             } else if (arg == "--rate-wpm") {
-                clip.rate_wpm = number_arg<int>(arg, value());
+                clip.rate_wpm = talkface_bench::parse_number<int>(arg, value());
             } else if (arg == "--pitch") {
-                clip.pitch = number_arg<int>(arg, value());
+                clip.pitch = talkface_bench::parse_number<int>(arg, value());
             } else if (arg == "--pause-s") {
-                clip.pause_s = number_arg<double>(arg, value());
+                clip.pause_s = talkface_bench::parse_number<double>(arg, value());
             } else if (arg == "-h" || arg == "--help") {
                 usage("help");
             } else if (!arg.empty() && arg[0] == '-') {
@@ -528,17 +369,11 @@ int main(int argc, char** argv) {
         }
         corpus.out_dir = positional[0];
         if (corpus.repeats < 1) usage("--repeats must be at least 1");
-        std::istringstream names(condition_list);
-        for (std::string name; std::getline(names, name, ',');) {
-            const auto found = std::find_if(std::begin(all_conditions), std::end(all_conditions),
-                                            [&](const Condition& condition) { return name == condition.name; });
-            if (found == std::end(all_conditions)) usage("unknown condition \"" + name + "\"");
-            corpus.conditions.push_back(found);
-        }
-        if (corpus.conditions.empty())
-            for (const auto& condition : all_conditions) corpus.conditions.push_back(&condition);
+        corpus.conditions = talkface_bench::select_conditions(all_conditions, condition_list);
         make_corpus(corpus);
         return 0;
+    } catch (const std::invalid_argument& error) {
+        usage(error.what());
     } catch (const std::exception& error) {
         std::cerr << "make_corpus: " << error.what() << "\n";
         return 1;

@@ -5,6 +5,10 @@
 #include "c_api_guard.hpp"
 #include "c_api_handles.hpp"
 #include "talkface/alignment_plot.hpp"
+#include "talkface/speech_aligner.hpp"
+
+// The C header spells the C++ threshold out as a number: they must not part.
+static_assert(TF_LOW_ALIGNMENT_CONFIDENCE == talkface::kLowAlignmentConfidence, "TF_LOW_ALIGNMENT_CONFIDENCE");
 
 using talkface::AlignOptions;
 using talkface::InvalidArgument;

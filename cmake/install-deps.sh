@@ -24,9 +24,11 @@ libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev li
 # grace_hopper.jpg). fonts-noto-cjk gives the browser tests and the screenshots in docs/ real
 # Chinese characters (the pages name it among each system's CJK fonts).
 # praat reads the exported TextGrids and ffmpeg's ffprobe the exported subtitles, as the programs
-# their users open them with (issue #15).
+# their users open them with (issue #15). gcin-voice holds every Mandarin syllable as a person
+# recorded it: its speaker 3 is the aligner's human test voice (tests/speech/human_speech_test.cpp,
+# bench/make_human_corpus).
 test_packages="python3-pil python3-pytest python3-venv python3-pip python3-setuptools chromium fonts-dejavu-core
-python3-skimage python-matplotlib-data librsvg2-bin libdlib-data fonts-noto-cjk praat ffmpeg"
+python3-skimage python-matplotlib-data librsvg2-bin libdlib-data fonts-noto-cjk praat ffmpeg gcin-voice"
 bench_packages="espeak-ng libespeak-ng-dev sox libsox-fmt-all time"
 
 case "${1:-build}" in

@@ -21,7 +21,9 @@ inline namespace v0 {
 /// A standalone SVG document of the audio's envelope (read in blocks, channels mixed down) and
 /// `timeline`: 200 px per second of timeline.duration_s (600 to 20000 px wide), each sentence's
 /// band tinted and titled with its text, a solid line at each syllable's start, a dotted one where
-/// its final starts, its text and pinyin above, and a second scale below. Text is escaped.
+/// its final starts, its text and pinyin above, and a second scale below. A syllable whose
+/// confidence is below kLowAlignmentConfidence is drawn in red over a red band titled with its
+/// confidence: the places to check. Text is escaped.
 /// \throws talkface::FileError / talkface::ParseError naming the file if it cannot be read as
 ///         audio, talkface::InvalidArgument if it has no frames.
 TALKFACE_API std::string alignment_plot_svg(const std::string& audio_path, const Timeline& timeline);

@@ -15,6 +15,11 @@
 namespace talkface {
 inline namespace v0 {
 
+/// A syllable whose Syllable::confidence is below this is one to check: its start may be more than
+/// 100 ms off. Measured on the benchmark's human speech (bench/README.md, issue 12), at most one in
+/// ten syllables that are right falls below it.
+constexpr double kLowAlignmentConfidence = 0.5;
+
 /// Audio samples the caller owns: `frame_count` frames of `channel_count` interleaved float samples
 /// in -1..1 at `sample_rate_hz`. Channels are mixed down to mono.
 struct AudioView {

@@ -642,8 +642,13 @@ TF_API tf_status tf_timeline_syllable_times(const tf_timeline *timeline, size_t 
                                             double *out_start_s, double *out_end_s,
                                             int *out_has_final_start, double *out_final_start_s);
 
-/* Syllable `index`'s confidence (0..1) and whether the transcript marks a pause after it (1 or 0).
- * Any out pointer may be NULL.
+/* A syllable whose confidence is below this is one to check: its start may be more than 100 ms off
+ * (talkface::kLowAlignmentConfidence; on the benchmark's human speech at most one right syllable in
+ * ten falls below it, bench/README.md). `talkface align --plot` draws such syllables in red. */
+#define TF_LOW_ALIGNMENT_CONFIDENCE 0.5
+
+/* Syllable `index`'s confidence (0..1; below TF_LOW_ALIGNMENT_CONFIDENCE: check it) and whether the
+ * transcript marks a pause after it (1 or 0). Any out pointer may be NULL.
  * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or timeline is NULL. */
 TF_API tf_status tf_timeline_syllable_confidence(const tf_timeline *timeline, size_t index,
                                                  double *out_confidence, int *out_pause_after);

@@ -25,6 +25,7 @@ constexpr double kWaveHeight = 160.0;
 // Thesis Figure 3.5: odd sentences blue, even ones green.
 constexpr const char* kSentenceColours[2] = {"#2a6fdb", "#2e9e4f"};
 constexpr const char* kOutsideColour = "#9a9a9a";
+constexpr const char* kDoubtfulColour = "#d62728";
 
 // The lowest and highest sample in each pixel column: a plot of an hour needs only this, never
 // the signal itself.
@@ -92,16 +93,28 @@ std::string plot_svg(detail::AudioSource& audio, const Timeline& timeline) {
                              std::string("stroke=\"") + (inside ? kSentenceColours[sentence % 2] : kOutsideColour) + "\"")
             << '\n';
     }
-    // Alternating label rows keep neighbouring syllables' labels apart.
+    // Alternating label rows keep neighbouring syllables' labels apart. A syllable the aligner is
+    // unsure of (issue 12) is drawn in red over a red band: where a user should look and listen.
     for (std::size_t i = 0; i < timeline.syllables.size(); ++i) {
         const auto& syllable = timeline.syllables[i];
         const double x = x_of(syllable.start_s);
-        svg << vertical_line(x, kWaveTop - 8, kWaveTop + kWaveHeight, "stroke=\"#333333\" stroke-width=\"1\"") << '\n';
+        const bool is_doubtful = syllable.confidence < kLowAlignmentConfidence;
+        if (is_doubtful)
+            svg << "<rect x=\"" << number(x) << "\" y=\"8\" width=\"" << number(std::max(1.0, x_of(syllable.end_s) - x))
+                << "\" height=\"" << number(kWaveTop + kWaveHeight - 8) << "\" fill=\"" << kDoubtfulColour
+                << "\" fill-opacity=\"0.15\"><title>" << escape_html(syllable.text) << " " << escape_html(syllable.pinyin)
+                << ": confidence " << detail::format_fixed(syllable.confidence, 2) << ", below "
+                << detail::format_fixed(kLowAlignmentConfidence, 2)
+                << ": check its place</title></rect>\n";
+        svg << vertical_line(x, kWaveTop - 8, kWaveTop + kWaveHeight,
+                             std::string("stroke=\"") + (is_doubtful ? kDoubtfulColour : "#333333") + "\" stroke-width=\"1\"")
+            << '\n';
         if (syllable.final_start_s && *syllable.final_start_s > syllable.start_s)
             svg << vertical_line(x_of(*syllable.final_start_s), kWaveTop, kWaveTop + kWaveHeight,
                                  "stroke=\"#333333\" stroke-dasharray=\"2 3\" stroke-width=\"0.7\"")
                 << '\n';
-        svg << "<text x=\"" << number(x + 2) << "\" y=\"" << number(i % 2 == 0 ? 24.0 : 44.0) << "\" font-size=\"12\">"
+        svg << "<text x=\"" << number(x + 2) << "\" y=\"" << number(i % 2 == 0 ? 24.0 : 44.0) << "\" font-size=\"12\""
+            << (is_doubtful ? std::string(" fill=\"") + kDoubtfulColour + "\"" : std::string()) << ">"
             << escape_html(syllable.text) << ' ' << escape_html(syllable.pinyin) << "</text>\n";
     }
     for (int second = 0; second <= static_cast<int>(duration_s); ++second) {

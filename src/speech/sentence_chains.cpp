@@ -1,6 +1,7 @@
 #include "speech/sentence_chains.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace talkface::detail {
 
@@ -18,6 +19,10 @@ constexpr std::size_t kTailReferenceFrames = 60;
 // A sentence end that end_before_tail moves this far is a room's tail: a voice's own fall past
 // kTailFallDb takes a frame or two (bench/: 0-2 frames in every condition but reverb, 3-26 there).
 constexpr std::size_t kRoomTailFrames = 3;
+// A room's tail falls smoothly; a quiet stretch after the last loud one that rises this far again
+// after a dip is speech (bench/ human speech: a quiet third-tone syllable after a closure, 15-25 dB
+// under the one before, rises 20-40 dB out of its closure; a tail's 25 ms frames ripple by 1-3 dB).
+constexpr float kTailRiseDb = 10.0f;
 // Past the end of a voice in a room, the search reaches only this far into the tail.
 constexpr std::size_t kTailEdgeFrames = 5;
 
@@ -83,7 +88,8 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
 // stretched to fill it) and the search gives it to the last vowel. Where the voice stops the level
 // falls at once far below the vowel's, and the tail only decays from there: speech in [first, end)
 // ends after its last frame less than kTailFallDb below the loudest frame of its last
-// kTailReferenceFrames. In noise the floor stays above that mark and nothing moves.
+// kTailReferenceFrames, unless what lies after it rises again (a quiet syllable, not a tail). In
+// noise the floor stays above that mark and nothing moves.
 std::size_t end_before_tail(const FeatureTrack& track, std::size_t first, std::size_t end) {
     if (end <= first + 1) return end;
     std::size_t loudest = end - 1;
@@ -91,7 +97,15 @@ std::size_t end_before_tail(const FeatureTrack& track, std::size_t first, std::s
         if (track.at(t, kEnergyDb) > track.at(loudest, kEnergyDb)) loudest = t;
     const float mark_db = track.at(loudest, kEnergyDb) - kTailFallDb;
     std::size_t trimmed = end;
-    while (trimmed > loudest + 1 && track.at(trimmed - 1, kEnergyDb) < mark_db) --trimmed;
+    float later_loudest_db = -std::numeric_limits<float>::infinity();
+    while (trimmed > loudest + 1 && track.at(trimmed - 1, kEnergyDb) < mark_db) {
+        const float level_db = track.at(trimmed - 1, kEnergyDb);
+        // A tail only decays: where the quiet part rises again after a dip, it holds a syllable of
+        // its own (a weak last syllable after a stop's closure), and nothing is cut.
+        if (level_db < later_loudest_db - kTailRiseDb) return end;
+        later_loudest_db = std::max(later_loudest_db, level_db);
+        --trimmed;
+    }
     return trimmed;
 }
 

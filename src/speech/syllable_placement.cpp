@@ -5,6 +5,8 @@
 #include <limits>
 #include <optional>
 
+#include "speech/alignment_confidence.hpp"
+
 namespace talkface::detail {
 
 namespace {
@@ -12,14 +14,6 @@ namespace {
 // Silence before a burst (a pause and the closure together) from which on the closure is taken
 // for part of a pause: a stop's closure lasts under 0.2 s.
 constexpr std::size_t kPauseBeforeBurstFrames = 20;
-
-double log_sum_exp(const float* values, int count) {
-    float largest = values[0];
-    for (int i = 1; i < count; ++i) largest = std::max(largest, values[i]);
-    double sum = 0.0;
-    for (int i = 0; i < count; ++i) sum += std::exp(static_cast<double>(values[i] - largest));
-    return largest + std::log(sum);
-}
 
 }  // namespace
 
@@ -30,13 +24,12 @@ void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>
     auto time_s = [&](std::size_t frame) {
         return std::min(track.duration_s, offset_s + static_cast<double>(frame) * kFrameStepS);
     };
+    std::vector<SyllableFrames> frames(chain.syllables.size());
     for (std::size_t local = 0; local < chain.syllables.size(); ++local) {
         Syllable& syllable = result.syllables[chain.syllable_indices[local]];
         std::size_t first = 0, end = 0;
         std::optional<std::size_t> final_first;
         bool has_start = false;
-        double posterior_sum = 0.0;
-        std::size_t frames = 0;
         for (std::size_t p = 0; p < path.size(); ++p) {
             const PhoneState& state = chain.states[path[p].state];
             if (state.syllable != local || is_pause(state.role)) continue;
@@ -57,12 +50,6 @@ void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>
             }
             end = path[p].end_frame;
             if (state.role == StateRole::final && !final_first) final_first = path[p].first_frame;
-            for (std::size_t t = path[p].first_frame; t < path[p].end_frame; ++t) {
-                const float* row = &scores.values[t * kPhoneClassCount];
-                const double total = log_sum_exp(row, kPhoneClassCount);
-                posterior_sum += std::exp(static_cast<double>(row[state.phone_class]) - total);
-                ++frames;
-            }
         }
         if (local + 1 == chain.syllables.size()) {
             const std::size_t offset = chain.searched.first_frame;
@@ -72,8 +59,11 @@ void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>
         syllable.start_s = time_s(first);
         syllable.end_s = time_s(std::max(end, first + 1));
         syllable.final_start_s = time_s(final_first.value_or(first));
-        syllable.confidence = frames > 0 ? posterior_sum / static_cast<double>(frames) : 0.0;
+        frames[local] = {first, std::max(end, first + 1)};
     }
+    const auto confidences = syllable_confidences(chain, path, scores, frames);
+    for (std::size_t local = 0; local < chain.syllables.size(); ++local)
+        result.syllables[chain.syllable_indices[local]].confidence = confidences[local];
 }
 
 std::vector<AlignedStretch> stretches_of(const SentenceChain& chain, const std::vector<StateSegment>& path) {

@@ -58,14 +58,17 @@ double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>&
         const std::size_t segment_end = std::min(segment.end_frame, end);
         for (std::size_t t = segment_first; t < segment_end; ++t) forced += scores.at(t, phone_class);
     }
+    return (free_sounds_score(scores, first, end) - forced) / static_cast<double>(end - first);
+}
+
+double free_sounds_score(const EmissionScores& scores, std::size_t first, std::size_t end) {
     std::array<double, kPhoneClassCount> best{};
     for (std::size_t t = first; t < end; ++t) {
         const double leader = *std::max_element(best.begin(), best.end());
         for (int c = 0; c < kPhoneClassCount; ++c)
             best[static_cast<std::size_t>(c)] = std::max(best[static_cast<std::size_t>(c)], leader - kLoopSwitchPenalty) + scores.at(t, c);
     }
-    const double free = *std::max_element(best.begin(), best.end());
-    return (free - forced) / static_cast<double>(end - first);
+    return *std::max_element(best.begin(), best.end());
 }
 
 std::vector<std::vector<StateSegment>> split_in_halves(const SentenceChain& chain, const std::vector<StateSegment>& path) {

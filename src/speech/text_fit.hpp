@@ -21,6 +21,10 @@ double speech_fit(const SentenceChain& chain, const std::vector<StateSegment>& p
 // sequence its text says: a phone loop against the forced path, on the same models.
 double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores);
 
+// The score of the best free sequence of sounds over frames [first, end) of `scores`, paying
+// for each change of sound: what text_fit_gap compares a path with.
+double free_sounds_score(const EmissionScores& scores, std::size_t first, std::size_t end);
+
 // The path of a chain cut into its sentences' shares (a pause goes with the sentence before it),
 // each with the index of its sentence in the transcript.
 std::vector<std::pair<std::size_t, std::vector<StateSegment>>> split_by_sentence(const SentenceChain& chain,

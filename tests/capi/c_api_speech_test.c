@@ -168,6 +168,16 @@ static int test_file_and_its_samples_align_alike(void) {
                               &from_samples));
     CHECK(from_samples != NULL);
     if (from_file != NULL && from_samples != NULL) CHECK(same_syllable_times(from_file, from_samples));
+    if (from_file != NULL) {
+        /* A clean clip: every syllable is where it should be, and none comes out doubtful. */
+        size_t count = 0;
+        CHECK_OK(tf_timeline_syllable_count(from_file, &count));
+        for (size_t i = 0; i < count; ++i) {
+            double confidence = 0.0;
+            CHECK_OK(tf_timeline_syllable_confidence(from_file, i, &confidence, NULL));
+            CHECK(confidence >= TF_LOW_ALIGNMENT_CONFIDENCE && confidence <= 1.0);
+        }
+    }
     tf_timeline_destroy(from_samples);
     tf_timeline_destroy(from_file);
     tf_timeline_destroy(transcript);

@@ -53,6 +53,8 @@ def test_align_file_gives_ordered_times_inside_the_audio(from_file):
         assert previous_end <= syllable.start_s < syllable.end_s <= from_file.duration_s
         assert syllable.final_start_s is None or syllable.start_s <= syllable.final_start_s <= syllable.end_s
         assert 0.0 <= syllable.confidence <= 1.0
+        # A clean clip: none of its syllables comes out doubtful.
+        assert syllable.confidence >= talkface.kLowAlignmentConfidence
         previous_end = syllable.end_s
     sentence = from_file.sentences[0]
     assert (sentence.start_s, sentence.end_s) == (from_file.syllables[0].start_s, from_file.syllables[-1].end_s)

@@ -84,6 +84,33 @@ TEST_CASE("the alignment plot draws each sentence, syllable and second, with esc
     CHECK(seconds == 5);
 }
 
+TEST_CASE("a syllable of low confidence is marked red, the others are not") {
+    const std::vector<float> samples = two_tones();
+    Timeline timeline = two_sentence_timeline();
+    timeline.syllables[1].confidence = kLowAlignmentConfidence - 0.01;
+    const std::string svg = alignment_plot_svg(AudioView{samples.data(), samples.size(), 1, kRateHz}, timeline);
+    const pugi::xml_document document = parse(svg);
+    std::vector<std::string> marked;
+    for (const auto& rect : document.child("svg").children("rect"))
+        if (std::string(rect.attribute("fill").value()) == "#d62728") marked.emplace_back(rect.child_value("title"));
+    REQUIRE(marked.size() == 1);
+    CHECK(marked[0] == "乙 yi3: confidence 0.49, below 0.5: check its place");
+    int red_lines = 0, red_labels = 0;
+    for (const auto& line : document.child("svg").children("line"))
+        red_lines += std::string(line.attribute("stroke").value()) == "#d62728";
+    for (const auto& text : document.child("svg").children("text"))
+        if (std::string(text.attribute("fill").value()) == "#d62728") {
+            ++red_labels;
+            CHECK(std::string(text.child_value()) == "乙 yi3");
+        }
+    CHECK(red_lines == 1);
+    CHECK(red_labels == 1);
+    // At the threshold a syllable is not doubtful.
+    timeline.syllables[1].confidence = kLowAlignmentConfidence;
+    CHECK(alignment_plot_svg(AudioView{samples.data(), samples.size(), 1, kRateHz}, timeline).find("#d62728") ==
+          std::string::npos);
+}
+
 TEST_CASE("the waveform follows the audio and takes its sentence's colour") {
     const std::vector<float> samples = two_tones();
     const std::string svg = alignment_plot_svg(AudioView{samples.data(), samples.size(), 1, kRateHz},

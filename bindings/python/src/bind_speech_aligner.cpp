@@ -90,10 +90,14 @@ Example:
                 .format(o.sentence_cut, o.first_pause_start_s, o.first_pause_end_s, o.c1, o.c2);
         });
 
+    m.attr("kLowAlignmentConfidence") = kLowAlignmentConfidence;
+
     py::class_<SpeechAligner>(m, "SpeechAligner", R"doc(
 Aligns a recorded speech with its transcript (thesis chapter 3): each sentence gets start_s and end_s,
 each syllable start_s (where its initial consonant starts), end_s, final_start_s (where its vowel
-starts) and a confidence; the timeline's duration_s is the audio's length. Audio is read in blocks: an
+starts) and a confidence; the timeline's duration_s is the audio's length. A syllable whose confidence
+is below talkface.kLowAlignmentConfidence (0.5) is one to check: its start may be more than 100 ms off
+(on the benchmark's human speech at most one right syllable in ten falls below it). Audio is read in blocks: an
 hour of speech aligns in bounded memory.
 
 The GIL is released while aligning, so alignments on several threads run at once; one aligner may be

@@ -72,7 +72,8 @@ Args:
     sentence (int): index into Timeline.sentences.
     start_s, end_s (float): seconds; start_s is where the initial consonant starts.
     final_start_s (float | None): where the final (vowel) starts, when measured.
-    confidence (float): 0..1, how sure the aligner is of the times.
+    confidence (float): 0..1, how sure the aligner is of the times; below talkface.kLowAlignmentConfidence
+        (0.5) the syllable may be more than 100 ms off: check it.
     pause_after (bool): the transcript marks a pause after it (，、：).
 
 Example:

@@ -13,6 +13,7 @@ _FloatArray = numpy.typing.NDArray[numpy.float64]
 
 __version__: str
 kMaxPoseAngleDeg: float
+kLowAlignmentConfidence: float
 
 def version() -> str: ...
 

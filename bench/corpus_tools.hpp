@@ -1,0 +1,115 @@
+// What the two corpus generators share (make_corpus: espeak-ng's voice; make_human_corpus: a
+// person's recorded syllables): seeded draws that repeat on every standard library, the sentence
+// list, the noise of the recording conditions, sox, and the truth files align_bench reads.
+#ifndef TALKFACE_BENCH_CORPUS_TOOLS_HPP
+#define TALKFACE_BENCH_CORPUS_TOOLS_HPP
+
+#include <algorithm>
+#include <cstdint>
+#include <iterator>
+#include <sstream>
+#include <stdexcept>
+#include <filesystem>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <talkface/timeline.hpp>
+
+#include "wav_file.hpp"
+
+namespace talkface_bench {
+
+/// `value` read whole as a Number.
+/// \throws std::invalid_argument naming the option `name` if it is not one.
+template <typename Number>
+Number parse_number(const std::string& name, const std::string& value) {
+    std::istringstream in(value);
+    Number number{};
+    if (!(in >> number) || !in.eof()) throw std::invalid_argument(name + " expects a number, got \"" + value + "\"");
+    return number;
+}
+
+/// The conditions (each with a `name`) that `list` names, comma-separated, or all of them if it is empty.
+/// \throws std::invalid_argument naming an unknown one.
+template <typename Condition, std::size_t N>
+std::vector<const Condition*> select_conditions(const Condition (&all)[N], const std::string& list) {
+    std::vector<const Condition*> selected;
+    std::istringstream names(list);
+    for (std::string name; std::getline(names, name, ',');) {
+        const auto found = std::find_if(std::begin(all), std::end(all),
+                                        [&](const Condition& condition) { return name == condition.name; });
+        if (found == std::end(all)) throw std::invalid_argument("unknown condition \"" + name + "\"");
+        selected.push_back(found);
+    }
+    if (selected.empty())
+        for (const auto& condition : all) selected.push_back(&condition);
+    return selected;
+}
+
+/// Uniform in [low, high). Not std::uniform_real_distribution, whose output differs between
+/// standard libraries.
+double uniform(std::mt19937_64& rng, double low, double high);
+/// Uniform in low..high, both included.
+int uniform_int(std::mt19937_64& rng, int low, int high);
+/// Standard normal (Box-Muller).
+double gaussian(std::mt19937_64& rng);
+
+/// `text` in single quotes for a POSIX shell.
+std::string quoted(const std::string& text);
+/// Runs `sox -R -V1 INPUT OUTPUT_OPTIONS OUTPUT EFFECTS` (-R: sox's dither repeats from run to run).
+/// \throws std::runtime_error with the command if sox fails.
+void run_sox(const std::string& input, const std::string& output, const std::string& output_options,
+             const std::string& effects);
+
+void write_text(const std::filesystem::path& path, const std::string& text);
+std::string read_text(const std::filesystem::path& path);
+
+struct BenchSentence {
+    std::string text;  ///< as written in sentences.txt, reading fixes kept
+    std::string set;   ///< "tuning" or "held-out"
+};
+
+/// `SET<TAB>SENTENCE` lines, each one sentence of characters with readings.
+/// \throws std::runtime_error naming the file and line of a bad one.
+std::vector<BenchSentence> load_sentences(const std::string& path);
+
+/// A passage of about five sentences of one set.
+struct PlannedPassage {
+    std::string name;        ///< SET-NNN
+    std::string set;
+    std::string transcript;  ///< one sentence a line
+    std::size_t sentence_count = 0;
+};
+
+/// Each repeat shuffles each set and cuts it into passages of about five sentences, so that a
+/// sentence is heard beside different neighbours. `on_planned` is called on each passage as soon
+/// as it is chosen, so that the caller draws its delivery from the same `rng` in the same order.
+void plan_passages(const std::vector<BenchSentence>& sentences, int repeats, std::mt19937_64& rng,
+                   const std::function<void(const PlannedPassage&)>& on_planned);
+
+enum class Noise { none, white, pink, brown };
+
+/// Noise of `colour`: Paul Kellet's pink filter (within 0.05 dB of -3 dB/octave above 10 Hz at
+/// these rates) and a leaky integrator for brown (-6 dB/octave).
+std::vector<float> make_noise(Noise colour, std::size_t count, std::mt19937_64& rng);
+
+/// `clean` with noise added at `snr_db` against the speech's active level: the mean power inside
+/// the sentences of `truth`, pauses left out. Speech and noise are scaled together below clipping.
+MonoAudio add_noise(const MonoAudio& clean, const talkface::Timeline& truth, Noise colour, double snr_db,
+                    std::mt19937_64& rng);
+
+/// Seconds rounded to 10 us, as the truth files write them.
+double rounded(double seconds);
+
+/// The truth file's document: the shape of `talkface align --json` plus `after_pause` per syllable.
+/// Callers add what they drew per sentence (`document["sentences"][k]["rate_wpm"]`) before dumping.
+nlohmann::ordered_json truth_document(const std::string& generator, const std::string& condition,
+                                      const std::string& set, const talkface::Timeline& truth,
+                                      const std::vector<bool>& after_pause);
+
+}  // namespace talkface_bench
+
+#endif

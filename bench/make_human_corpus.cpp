@@ -1,0 +1,514 @@
+// make_human_corpus: the aligner benchmark's human material (issue 12). Mandarin passages built
+// from the syllables a person recorded (Debian's gcin-voice, speaker 3 only), joined the way
+// running speech goes, with the start of every syllable known because the joins are ours.
+//
+//   make_human_corpus OUT [--seed N] [--repeats N] [--sentences FILE] [--conditions h-clean,...]
+//   make_human_corpus --clip STEM [--seed N] [--tempo T] TEXT
+//
+// Speaker 3 is the project's development voice; the other speaker of gcin-voice is kept for
+// measurement by others and is never read here (bench/README.md).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <talkface/talkface.hpp>
+
+#include "corpus_tools.hpp"
+#include "wav_file.hpp"
+
+namespace fs = std::filesystem;
+using talkface_bench::MonoAudio;
+using talkface_bench::Noise;
+
+namespace {
+
+constexpr int kRateHz = 16000;
+// The one speaker of gcin-voice this program reads (PROTOCOL: speaker 3 is for development).
+constexpr const char* kSpeakerFile = "3.ogg";
+// Speaker 3 says each syllable alone, in its citation form: about 0.4 s (trimmed). Read aloud in
+// a sentence at a careful pace a syllable takes about 0.25 s (4 a second): tempo 1.0 is that pace,
+// and 1.5 gives the 0.15-0.17 s syllables of fast speech.
+constexpr double kCitationToCareful = 1.6;
+const char* const kDefaultVoiceDir = "/usr/share/gcin-voice/ogg";
+
+struct Condition {
+    const char* name;
+    const char* description;
+    double min_tempo;   ///< each sentence's tempo is drawn in [min_tempo, max_tempo]
+    double max_tempo;
+    Noise noise;
+    double snr_db;
+    const char* sox_effects;  ///< on the joined 16 kHz speech, before any noise ("" for none)
+};
+
+const Condition all_conditions[] = {
+    {"h-clean", "speaker 3 as recorded, tempo 1.0-1.5", 1.0, 1.5, Noise::none, 0, ""},
+    {"h-white30", "white noise, SNR 30 dB", 1.0, 1.5, Noise::white, 30, ""},
+    {"h-pink25", "pink noise, SNR 25 dB", 1.0, 1.5, Noise::pink, 25, ""},
+    {"h-fast", "tempo 1.4-1.5, white noise at SNR 30 dB", 1.4, 1.5, Noise::white, 30, ""},
+    {"h-white20", "white noise, SNR 20 dB", 1.0, 1.5, Noise::white, 20, ""},
+    {"h-pink15", "pink noise, SNR 15 dB", 1.0, 1.5, Noise::pink, 15, ""},
+    {"h-reverb", "room reverb (sox reverb 40 50 60)", 1.0, 1.5, Noise::none, 0, "reverb 40 50 60 gain -n -3"},
+};
+
+// --- pinyin to gcin-voice's folders --------------------------------------------------------------
+
+// Zhuyin (bopomofo) of the pinyin initials, in the order they are matched (zh ch sh before z c s).
+const std::pair<const char*, const char*> kInitials[] = {
+    {"zh", "ㄓ"}, {"ch", "ㄔ"}, {"sh", "ㄕ"}, {"b", "ㄅ"}, {"p", "ㄆ"}, {"m", "ㄇ"}, {"f", "ㄈ"},
+    {"d", "ㄉ"},  {"t", "ㄊ"},  {"n", "ㄋ"},  {"l", "ㄌ"}, {"g", "ㄍ"}, {"k", "ㄎ"}, {"h", "ㄏ"},
+    {"j", "ㄐ"},  {"q", "ㄑ"},  {"x", "ㄒ"},  {"r", "ㄖ"}, {"z", "ㄗ"}, {"c", "ㄘ"}, {"s", "ㄙ"},
+};
+
+// Finals as written after an initial (u-umlaut as v), in zhuyin. y- and w- spellings are turned
+// into these first (yi -> i, wu -> u, yu -> v, you -> iou ...).
+const std::map<std::string, std::string> kFinals = {
+    {"a", "ㄚ"},     {"o", "ㄛ"},     {"e", "ㄜ"},     {"ê", "ㄝ"},     {"ai", "ㄞ"},    {"ei", "ㄟ"},
+    {"ao", "ㄠ"},    {"ou", "ㄡ"},    {"an", "ㄢ"},    {"en", "ㄣ"},    {"ang", "ㄤ"},   {"eng", "ㄥ"},
+    {"er", "ㄦ"},    {"i", "ㄧ"},     {"u", "ㄨ"},     {"v", "ㄩ"},     {"ia", "ㄧㄚ"},  {"io", "ㄧㄛ"},
+    {"ie", "ㄧㄝ"},  {"iai", "ㄧㄞ"}, {"iao", "ㄧㄠ"}, {"iu", "ㄧㄡ"},  {"iou", "ㄧㄡ"}, {"ian", "ㄧㄢ"},
+    {"in", "ㄧㄣ"},  {"iang", "ㄧㄤ"}, {"ing", "ㄧㄥ"}, {"ua", "ㄨㄚ"},  {"uo", "ㄨㄛ"}, {"uai", "ㄨㄞ"},
+    {"ui", "ㄨㄟ"},  {"uei", "ㄨㄟ"}, {"uan", "ㄨㄢ"}, {"un", "ㄨㄣ"},  {"uen", "ㄨㄣ"}, {"uang", "ㄨㄤ"},
+    {"ong", "ㄨㄥ"}, {"ueng", "ㄨㄥ"}, {"ve", "ㄩㄝ"}, {"van", "ㄩㄢ"},  {"vn", "ㄩㄣ"},  {"iong", "ㄩㄥ"},
+};
+
+struct Reading {
+    std::string initial;  ///< pinyin initial ("" for none)
+    std::string zhuyin;   ///< without the tone
+    int tone = 1;         ///< 1-4, 5 for the neutral (light) tone
+};
+
+Reading read_pinyin(const std::string& numbered, const std::string& where) {
+    std::string letters = numbered;
+    Reading reading;
+    if (!letters.empty() && letters.back() >= '1' && letters.back() <= '5') {
+        reading.tone = letters.back() - '0';
+        letters.pop_back();
+    }
+    for (auto& c : letters) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const auto umlaut = letters.find("u:");
+    if (umlaut != std::string::npos) letters.replace(umlaut, 2, "v");
+    std::string final = letters;
+    // y- and w- are the medials i, u, u-umlaut spelled at the start of a syllable.
+    if (letters.rfind("yu", 0) == 0) final = "v" + letters.substr(2);
+    else if (letters.rfind("yi", 0) == 0) final = letters.substr(1);
+    else if (letters.rfind("y", 0) == 0) final = "i" + letters.substr(1);
+    else if (letters.rfind("wu", 0) == 0) final = letters.substr(1);
+    else if (letters.rfind("w", 0) == 0) final = "u" + letters.substr(1);
+    else {
+        for (const auto& [pinyin, zhuyin] : kInitials) {
+            const std::string initial = pinyin;
+            if (letters.size() > initial.size() && letters.compare(0, initial.size(), initial) == 0) {
+                reading.initial = initial;
+                reading.zhuyin = zhuyin;
+                final = letters.substr(initial.size());
+                break;
+            }
+        }
+    }
+    // After j q x, u is u-umlaut; after zh ch sh r z c s a lone i is the empty rime (no zhuyin).
+    const std::string& i = reading.initial;
+    if ((i == "j" || i == "q" || i == "x") && !final.empty() && final[0] == 'u') final[0] = 'v';
+    const bool is_apical = final == "i" && (i == "zh" || i == "ch" || i == "sh" || i == "r" || i == "z" || i == "c" || i == "s");
+    if (!is_apical) {
+        const auto found = kFinals.find(final);
+        if (found == kFinals.end()) throw std::runtime_error(where + ": no zhuyin for the pinyin \"" + numbered + "\"");
+        reading.zhuyin += found->second;
+    }
+    return reading;
+}
+
+// A stop or affricate: after speech it starts with a closure (SPEC "Alignment").
+bool has_closure(const std::string& initial) {
+    static const char* const stops[] = {"b", "p", "d", "t", "g", "k", "j", "q", "zh", "ch", "z", "c"};
+    return std::find(std::begin(stops), std::end(stops), initial) != std::end(stops);
+}
+
+// m n l r and the zero initial: voicing runs on from the vowel before.
+bool is_voiced_onset(const std::string& initial) {
+    return initial.empty() || initial == "m" || initial == "n" || initial == "l" || initial == "r";
+}
+
+// --- the recorded syllables ----------------------------------------------------------------------
+
+// Speaker 3's recordings carry a DC offset of up to a tenth of their peak: a high-pass at 60 Hz
+// (below the voice's pitch) takes it out before the levels are measured.
+std::vector<float> decode(const fs::path& path) {
+    const std::string command = "sox -R -V1 " + talkface_bench::quoted(path.string()) + " -t f32 -c 1 -r " +
+                                std::to_string(kRateHz) + " - highpass 60 2>/dev/null";
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) throw std::runtime_error("cannot run: " + command);
+    std::vector<float> samples;
+    float block[4096];
+    for (std::size_t n; (n = std::fread(block, sizeof(float), 4096, pipe)) > 0;) samples.insert(samples.end(), block, block + n);
+    if (pclose(pipe) != 0 || samples.empty()) throw std::runtime_error("sox could not decode " + path.string());
+    return samples;
+}
+
+// The recording's own silence cut off: from the first 5 ms frame within 45 dB of its loudest (a
+// weak fricative's start) to the last within 35 dB (a vowel's decay goes on far below what a
+// listener hears as its end), never below -70 dBFS (the recordings' own floor is lower; most start
+// right at their first sound); a 2 ms fade in and a 10 ms fade out so that joins do not click.
+constexpr double kSilenceDb = -70.0;
+std::vector<float> trim(const std::vector<float>& samples) {
+    constexpr std::size_t frame = kRateHz / 200;
+    std::vector<double> level_db;
+    for (std::size_t i = 0; i + frame <= samples.size(); i += frame) {
+        double power = 0;
+        for (std::size_t k = i; k < i + frame; ++k) power += double(samples[k]) * samples[k];
+        level_db.push_back(10.0 * std::log10(power / frame + 1e-12));
+    }
+    if (level_db.empty()) return samples;
+    const double peak_db = *std::max_element(level_db.begin(), level_db.end());
+    const double start_db = std::max(peak_db - 45.0, kSilenceDb);
+    const double end_db = std::max(peak_db - 35.0, kSilenceDb);
+    std::size_t first = 0, last = level_db.size() - 1;
+    while (first < last && level_db[first] < start_db) ++first;
+    while (last > first && level_db[last] < end_db) --last;
+    std::vector<float> kept(samples.begin() + static_cast<std::ptrdiff_t>(first * frame),
+                            samples.begin() + static_cast<std::ptrdiff_t>((last + 1) * frame));
+    const std::size_t fade_in = std::min(kept.size(), std::size_t{kRateHz / 500});
+    const std::size_t fade_out = std::min(kept.size(), std::size_t{kRateHz / 100});
+    for (std::size_t k = 0; k < fade_in; ++k) kept[k] *= static_cast<float>(k) / static_cast<float>(fade_in);
+    for (std::size_t k = 0; k < fade_out; ++k) kept[kept.size() - 1 - k] *= static_cast<float>(k) / static_cast<float>(fade_out);
+    return kept;
+}
+
+// Speaker 3's syllables, decoded once, trimmed, and each pace made once (sox tempo, WSOLA with
+// its speech setting: the pitch stays).
+class SyllableBank {
+public:
+    SyllableBank(fs::path voice_dir, fs::path work_dir) : voice_dir_(std::move(voice_dir)), work_dir_(std::move(work_dir)) {}
+
+    // The folder for `reading`: its tone if speaker 3 recorded it, else the nearest one it did
+    // (neutral tones fall back to the first, then any). Empty if the syllable is missing.
+    std::string folder(const Reading& reading, bool& is_exact) const {
+        static const char* const suffixes[6][4] = {{"", "", "", ""},       {"", "4", "2", "3"}, {"2", "", "3", "4"},
+                                                   {"3", "2", "4", ""},    {"4", "", "2", "3"}, {"1", "", "4", "2"}};
+        is_exact = true;
+        for (const char* suffix : suffixes[reading.tone]) {
+            const fs::path candidate = voice_dir_ / (reading.zhuyin + suffix) / kSpeakerFile;
+            if (fs::exists(candidate)) return reading.zhuyin + suffix;
+            is_exact = false;
+        }
+        return {};
+    }
+
+    // The syllable in `folder` at `tempo` (rounded to 0.05: the same pace is made once).
+    const std::vector<float>& at(const std::string& folder, double tempo) {
+        const int step = static_cast<int>(std::lround(tempo * 20.0));
+        const auto key = std::make_pair(folder, step);
+        auto found = paced_.find(key);
+        if (found != paced_.end()) return found->second;
+        auto recorded = recorded_.find(folder);
+        if (recorded == recorded_.end())
+            recorded = recorded_.emplace(folder, trim(decode(voice_dir_ / folder / kSpeakerFile))).first;
+        std::vector<float> paced = recorded->second;
+        if (step != 20) {
+            const fs::path in = work_dir_ / "syllable.wav", out = work_dir_ / "paced.wav";
+            talkface_bench::write_wav(in.string(), {recorded->second, kRateHz});
+            talkface_bench::run_sox(in.string(), out.string(), "-b 16", "tempo -s " + std::to_string(step / 20.0));
+            paced = trim(talkface_bench::read_wav(out.string()).samples);
+        }
+        return paced_.emplace(key, std::move(paced)).first->second;
+    }
+
+private:
+    fs::path voice_dir_, work_dir_;
+    std::map<std::string, std::vector<float>> recorded_;
+    std::map<std::pair<std::string, int>, std::vector<float>> paced_;
+};
+
+// --- how a passage is spoken ---------------------------------------------------------------------
+
+// Drawn once per passage and shared by every condition (only the sentence tempo's range differs).
+struct Delivery {
+    std::vector<double> tempo_unit;    ///< per sentence, in [0, 1): where in the condition's range
+    std::vector<double> syllable_pace; ///< per syllable: its pace against the sentence's
+    std::vector<double> gain;          ///< per syllable: its level against the recording's
+    std::vector<double> join_s;        ///< per syllable inside a phrase: > 0 a gap before it, < 0 an overlap
+    std::vector<double> voiced_join_s; ///< the same where its initial is voiced (a cross-fade)
+    std::vector<double> closure_s;     ///< per syllable: a stop's or affricate's closure after speech
+    std::vector<double> pause_s;       ///< per syllable: the pause before it after a comma
+    std::vector<double> sentence_gaps_s;  ///< before the first sentence, between sentences, after the last
+};
+
+// How a person reads a sentence, as far as joined syllables can show it:
+// - the pace wanders inside a sentence: the log of a syllable's pace against the sentence's tempo
+//   is a random walk pulled back to 0 (standard deviation 0.25, correlated over about five
+//   syllables), so that a run of syllables comes quicker or slower than the sentence as a whole;
+//   a light (neutral) tone is said quicker and the last syllable of a phrase slower;
+// - syllables differ in level (standard deviation 4 dB), a light tone 6 dB weaker;
+// - inside a phrase a syllable runs into the one before: 60% of joins overlap by up to 40 ms (the
+//   next sound starts under the last one's end, no dip between them), the rest leave a gap of up
+//   to 30 ms; a stop or affricate after speech is preceded by its closure, 20-60 ms of silence;
+// - a comma's pause lasts 0.15-0.35 s, a sentence's 0.4-1.0 s.
+Delivery draw_delivery(const talkface::Timeline& transcript, std::mt19937_64& rng) {
+    using talkface_bench::gaussian;
+    using talkface_bench::uniform;
+    Delivery delivery;
+    for (std::size_t k = 0; k < transcript.sentences.size(); ++k) delivery.tempo_unit.push_back(uniform(rng, 0, 1));
+    double walk = 0.0;
+    for (std::size_t i = 0; i < transcript.syllables.size(); ++i) {
+        if (i == 0 || transcript.syllables[i - 1].sentence != transcript.syllables[i].sentence) walk = 0.25 * gaussian(rng);
+        else walk = 0.8 * walk + 0.15 * gaussian(rng);
+        delivery.syllable_pace.push_back(std::exp(walk));
+        delivery.gain.push_back(std::pow(10.0, 4.0 * gaussian(rng) / 20.0));
+        delivery.join_s.push_back(uniform(rng, 0, 1) < 0.6 ? -uniform(rng, 0.0, 0.04) : uniform(rng, 0.0, 0.03));
+        delivery.voiced_join_s.push_back(-uniform(rng, 0.03, 0.08));
+        delivery.closure_s.push_back(uniform(rng, 0.02, 0.06));
+        delivery.pause_s.push_back(uniform(rng, 0.15, 0.35));
+    }
+    delivery.sentence_gaps_s.push_back(uniform(rng, 0.3, 0.6));
+    for (std::size_t k = 1; k < transcript.sentences.size(); ++k) delivery.sentence_gaps_s.push_back(uniform(rng, 0.4, 1.0));
+    delivery.sentence_gaps_s.push_back(uniform(rng, 0.4, 0.8));
+    return delivery;
+}
+
+struct Recording {
+    MonoAudio audio;
+    talkface::Timeline truth;
+    std::vector<bool> after_pause;
+    std::vector<double> tempo;  ///< per sentence
+    int fallbacks = 0;          ///< syllables spoken in another tone than the transcript's (not recorded)
+};
+
+// The level of the joined speech: speaker 3's syllables are recorded near -10 dBFS at their peak.
+constexpr double kOverallGain = 0.7;
+
+Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, const Condition& condition,
+                SyllableBank& bank, const std::string& where) {
+    Recording recording;
+    recording.truth = transcript;
+    recording.audio.sample_rate_hz = kRateHz;
+    auto& samples = recording.audio.samples;
+    recording.after_pause.assign(transcript.syllables.size(), false);
+    // `end` is where the last syllable's sound ends; sounds are added (mixed) from `at` on.
+    std::size_t end = 0;
+    const auto to_samples = [](double seconds) { return static_cast<std::size_t>(std::lround(seconds * kRateHz)); };
+    const auto seconds = [](std::size_t at) { return static_cast<double>(at) / kRateHz; };
+    for (std::size_t k = 0; k < transcript.sentences.size(); ++k) {
+        end += to_samples(delivery.sentence_gaps_s[k]);
+        const double tempo = condition.min_tempo + (condition.max_tempo - condition.min_tempo) * delivery.tempo_unit[k];
+        recording.tempo.push_back(tempo);
+        bool is_first = true;
+        for (std::size_t i = 0; i < transcript.syllables.size(); ++i) {
+            auto& syllable = recording.truth.syllables[i];
+            if (syllable.sentence != k) continue;
+            const Reading reading = read_pinyin(syllable.pinyin, where + " \"" + syllable.text + "\"");
+            bool is_exact = true;
+            const std::string folder = bank.folder(reading, is_exact);
+            if (folder.empty()) throw std::runtime_error(where + ": speaker 3 has no recording of " + syllable.pinyin);
+            recording.fallbacks += !is_exact;
+            const bool after_comma = !is_first && transcript.syllables[i - 1].pause_after;
+            const bool ends_phrase = syllable.pause_after || i + 1 == transcript.syllables.size() ||
+                                     transcript.syllables[i + 1].sentence != k;
+            double pace = tempo * delivery.syllable_pace[i];
+            double gain = kOverallGain * delivery.gain[i];
+            if (reading.tone == 5) {
+                pace *= is_exact ? 1.2 : 1.7;
+                gain *= 0.5;
+            }
+            if (ends_phrase) pace *= 0.85;
+            const std::vector<float>& sound = bank.at(folder, std::clamp(kCitationToCareful * pace, 1.0, 4.0));
+            const bool after_pause = is_first || after_comma;
+            if (after_comma) end += to_samples(delivery.pause_s[i]);
+            // The truth (SPEC "Alignment"): after a pause, the first sound (a stop's burst); after
+            // speech, a stop's or affricate's closure start, any other initial's first sound.
+            std::size_t at = end;
+            std::size_t start = end;
+            if (!after_pause && has_closure(reading.initial)) {
+                at = end + to_samples(delivery.closure_s[i]);
+            } else if (!after_pause) {
+                // A voiced initial (m n l r, or none: a vowel, y-, w-) after a vowel is voiced right
+                // through: the two cross-fade over the whole overlap, with no dip and no attack.
+                const double join = is_voiced_onset(reading.initial) ? delivery.voiced_join_s[i] : delivery.join_s[i];
+                at = join >= 0 ? end + to_samples(join) : end - std::min(to_samples(-join), sound.size() / 4);
+                start = at;
+            }
+            syllable.start_s = seconds(start);
+            recording.after_pause[i] = after_pause;
+            const std::size_t fade = !after_pause && is_voiced_onset(reading.initial) && at < end ? end - at : 0;
+            if (samples.size() < at + sound.size()) samples.resize(at + sound.size(), 0.0f);
+            for (std::size_t n = 0; n < fade; ++n) {
+                const double share = 0.5 - 0.5 * std::cos(3.141592653589793 * static_cast<double>(n) / static_cast<double>(fade));
+                samples[at + n] = static_cast<float>(samples[at + n] * (1.0 - share) + share * gain * sound[n]);
+            }
+            for (std::size_t n = fade; n < sound.size(); ++n) samples[at + n] += static_cast<float>(gain) * sound[n];
+            end = at + sound.size();
+            syllable.end_s = seconds(end);
+            // A syllable ends where the next starts, or at its last sound before a pause.
+            if (!is_first && !transcript.syllables[i - 1].pause_after) recording.truth.syllables[i - 1].end_s = syllable.start_s;
+            is_first = false;
+        }
+        // A sentence runs from its first syllable's start to its last sound.
+        auto& sentence = recording.truth.sentences[k];
+        bool has_start = false;
+        for (const auto& syllable : recording.truth.syllables) {
+            if (syllable.sentence != k) continue;
+            if (!has_start) sentence.start_s = syllable.start_s;
+            has_start = true;
+            sentence.end_s = syllable.end_s;
+        }
+    }
+    samples.resize(end + to_samples(delivery.sentence_gaps_s.back()), 0.0f);
+    recording.truth.duration_s = seconds(samples.size());
+    return recording;
+}
+
+std::string truth_json(const Recording& recording, const std::string& condition, const std::string& set) {
+    auto document = talkface_bench::truth_document("talkface bench/make_human_corpus, gcin-voice speaker 3", condition, set,
+                                                   recording.truth, recording.after_pause);
+    for (std::size_t k = 0; k < recording.tempo.size(); ++k)
+        document["sentences"][k]["tempo"] = std::round(recording.tempo[k] * 1000.0) / 1000.0;
+    return document.dump(1) + "\n";
+}
+
+// The condition applied to the joined speech: sox's effects, then noise at the condition's SNR.
+MonoAudio record(const Recording& recording, const Condition& condition, const fs::path& work, std::mt19937_64& noise_rng) {
+    MonoAudio audio = recording.audio;
+    if (*condition.sox_effects) {
+        const fs::path in = work / "joined.wav", out = work / "effects.wav";
+        talkface_bench::write_wav(in.string(), audio);
+        talkface_bench::run_sox(in.string(), out.string(), "-b 16", condition.sox_effects);
+        audio = talkface_bench::read_wav(out.string());
+    }
+    if (condition.noise != Noise::none)
+        audio = talkface_bench::add_noise(audio, recording.truth, condition.noise, condition.snr_db, noise_rng);
+    return audio;
+}
+
+struct CorpusOptions {
+    std::string out_dir;
+    std::uint64_t seed = 1;
+    int repeats = 3;
+    std::string sentences_path = TALKFACE_BENCH_SENTENCES;
+    std::string voice_dir = kDefaultVoiceDir;
+    std::vector<const Condition*> conditions;
+};
+
+void make_corpus(const CorpusOptions& options) {
+    const auto sentences = talkface_bench::load_sentences(options.sentences_path);
+    std::mt19937_64 rng(options.seed);
+    std::vector<talkface_bench::PlannedPassage> passages;
+    std::vector<Delivery> deliveries;
+    talkface_bench::plan_passages(sentences, options.repeats, rng, [&](const talkface_bench::PlannedPassage& planned) {
+        passages.push_back(planned);
+        deliveries.push_back(draw_delivery(talkface::read_transcript(planned.transcript, {}, planned.name), rng));
+    });
+    const fs::path out = options.out_dir;
+    const fs::path work = out / ".work";
+    fs::create_directories(work);
+    SyllableBank bank(options.voice_dir, work);
+    std::string listing;
+    for (const Condition* condition : options.conditions) {
+        fs::create_directories(out / condition->name);
+        listing += std::string(condition->name) + "\t" + condition->description + "\n";
+    }
+    talkface_bench::write_text(out / "conditions.txt", listing);
+    double seconds = 0;
+    int fallbacks = 0;
+    for (std::size_t p = 0; p < passages.size(); ++p) {
+        const auto& passage = passages[p];
+        const auto transcript = talkface::read_transcript(passage.transcript, {}, passage.name);
+        for (const Condition* condition : options.conditions) {
+            const auto condition_index = static_cast<std::uint64_t>(condition - all_conditions);
+            // The noise comes from a stream of its own per passage and condition.
+            std::seed_seq noise_seed{options.seed, static_cast<std::uint64_t>(p), condition_index};
+            std::mt19937_64 noise_rng(noise_seed);
+            const Recording recording = speak(transcript, deliveries[p], *condition, bank, passage.name);
+            const fs::path stem = out / condition->name / passage.name;
+            talkface_bench::write_wav(stem.string() + ".wav", record(recording, *condition, work, noise_rng));
+            talkface_bench::write_text(stem.string() + ".txt", passage.transcript);
+            talkface_bench::write_text(stem.string() + ".json", truth_json(recording, condition->name, passage.set));
+            if (condition == options.conditions.front()) {
+                seconds += recording.truth.duration_s;
+                fallbacks += recording.fallbacks;
+            }
+        }
+        std::cout << passage.name << " (" << p + 1 << "/" << passages.size() << ")\n" << std::flush;
+    }
+    fs::remove_all(work);
+    std::cout << passages.size() << " passages, " << std::lround(seconds) << " s of speech per condition, "
+              << options.conditions.size() << " conditions in " << out.string() << "; " << fallbacks
+              << " syllables spoken in a tone speaker 3 has instead of the missing one\n";
+}
+
+void make_clip(const std::string& stem, const std::string& text, std::uint64_t seed, double tempo,
+               const std::string& voice_dir) {
+    const auto transcript = talkface::read_transcript(text, {}, "<clip text>");
+    std::mt19937_64 rng(seed);
+    const Delivery delivery = draw_delivery(transcript, rng);
+    const Condition condition{"clip", "", tempo, tempo, Noise::none, 0, ""};
+    const fs::path work = fs::path(stem).parent_path() / (fs::path(stem).filename().string() + ".work");
+    fs::create_directories(work);
+    SyllableBank bank(voice_dir, work);
+    const Recording recording = speak(transcript, delivery, condition, bank, stem);
+    talkface_bench::write_wav(stem + ".wav", recording.audio);
+    talkface_bench::write_text(stem + ".txt", text + "\n");
+    talkface_bench::write_text(stem + ".json", truth_json(recording, "clip", "test"));
+    fs::remove_all(work);
+}
+
+[[noreturn]] void usage(const std::string& problem) {
+    std::cerr << "make_human_corpus: " << problem << "\n"
+              << "usage: make_human_corpus OUT [--seed N] [--repeats N] [--sentences FILE] [--voice DIR] [--conditions A,B,...]\n"
+              << "       make_human_corpus --clip STEM [--seed N] [--tempo T] [--voice DIR] TEXT\n"
+              << "conditions:";
+    for (const auto& condition : all_conditions) std::cerr << " " << condition.name;
+    std::cerr << "\n";
+    std::exit(2);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        CorpusOptions corpus;
+        std::string clip_stem;
+        double clip_tempo = 1.2;
+        std::vector<std::string> positional;
+        std::string condition_list;
+        for (int i = 1; i < argc; ++i) {
+            const std::string arg = argv[i];
+            const auto value = [&]() -> std::string {
+                if (i + 1 >= argc) usage(arg + " needs a value");
+                return argv[++i];
+            };
+            if (arg == "--clip") clip_stem = value();
+            else if (arg == "--seed") corpus.seed = talkface_bench::parse_number<std::uint64_t>(arg, value());
+            else if (arg == "--repeats") corpus.repeats = talkface_bench::parse_number<int>(arg, value());
+            else if (arg == "--sentences") corpus.sentences_path = value();
+            else if (arg == "--voice") corpus.voice_dir = value();
+            else if (arg == "--conditions") condition_list = value();
+            else if (arg == "--tempo") clip_tempo = talkface_bench::parse_number<double>(arg, value());
+            else if (arg == "-h" || arg == "--help") usage("help");
+            else if (!arg.empty() && arg[0] == '-') usage("unknown option " + arg);
+            else positional.push_back(arg);
+        }
+        if (positional.size() != 1) usage(clip_stem.empty() ? "give the output directory OUT" : "give the clip's TEXT");
+        if (!clip_stem.empty()) {
+            make_clip(clip_stem, positional[0], corpus.seed, clip_tempo, corpus.voice_dir);
+            return 0;
+        }
+        corpus.out_dir = positional[0];
+        if (corpus.repeats < 1) usage("--repeats must be at least 1");
+        corpus.conditions = talkface_bench::select_conditions(all_conditions, condition_list);
+        make_corpus(corpus);
+        return 0;
+    } catch (const std::invalid_argument& error) {
+        usage(error.what());
+    } catch (const std::exception& error) {
+        std::cerr << "make_human_corpus: " << error.what() << "\n";
+        return 1;
+    }
+}

@@ -1,0 +1,40 @@
+// Where a sentence's voice ends before a room's tail (end_before_tail, issue 12: a quiet last
+// syllable is speech, not a tail).
+#include <doctest/doctest.h>
+
+#include <vector>
+
+#include "speech/sentence_chains.hpp"
+
+using namespace talkface::detail;
+
+namespace {
+
+// A feature track whose whole-band level per frame is `levels_db` (the other columns 0).
+FeatureTrack track_of(const std::vector<float>& levels_db) {
+    FeatureTrack track;
+    track.frame_count = levels_db.size();
+    track.values.assign(levels_db.size() * kFeatureCount, 0.0f);
+    for (std::size_t t = 0; t < levels_db.size(); ++t) track.values[t * kFeatureCount + kEnergyDb] = levels_db[t];
+    return track;
+}
+
+}  // namespace
+
+TEST_SUITE("sentence chains") {
+    TEST_CASE("a room's tail, falling from the last vowel, is cut off") {
+        std::vector<float> levels(30, -20.0f);  // the voice
+        for (int k = 1; k <= 30; ++k) levels.push_back(-20.0f - 1.5f * static_cast<float>(k));  // the tail
+        const FeatureTrack track = track_of(levels);
+        // The voice ends after the last frame within 18 dB of its loudest: 12 frames into the fall.
+        CHECK(end_before_tail(track, 0, levels.size()) == 42);
+    }
+
+    TEST_CASE("a quiet last syllable after a closure is kept, though far under the one before") {
+        std::vector<float> levels(30, -20.0f);                      // a loud syllable
+        levels.insert(levels.end(), 5, -70.0f);                      // a stop's closure
+        levels.insert(levels.end(), 20, -42.0f);                     // a quiet third tone, 22 dB under
+        const FeatureTrack track = track_of(levels);
+        CHECK(end_before_tail(track, 0, levels.size()) == levels.size());
+    }
+}
