@@ -672,12 +672,6 @@ TF_API tf_status tf_timeline_set_sentence_starts_paragraph(tf_timeline *timeline
 TF_API tf_status tf_timeline_sentence_starts_paragraph(const tf_timeline *timeline, size_t index,
                                                        int *out_starts_paragraph);
 
-/* The timeline as the `align` JSON document (SPEC "Contracts"), UTF-8:
- * {"sentences":[{"text","start","end"}], "syllables":[{"text","pinyin","start","end","sentence",
- * "final_start" (only when known),"confidence","pause_after"}], "duration":s, "warnings":[...]},
- * numbers in shortest round-trip form. Release *out_json with tf_free; *out_len (if not NULL) is
- * its length in bytes without the NUL. talkface reads no JSON in C: parse the document with your
- * JSON library and rebuild it with tf_timeline_create and the add functions.
 /* The timeline as the timeline JSON (docs/timeline-format.md; the `align` document of SPEC
  * "Contracts", versioned), UTF-8: {"version":1, "sentences":[{"text","start","end"}],
  * "syllables":[{"text","pinyin","start","end","sentence","final_start" (only when known),
