@@ -11,7 +11,10 @@ set -eu
 
 build_packages="build-essential cmake pkg-config git libeigen3-dev libpugixml-dev libcli11-dev
 nlohmann-json3-dev doctest-dev pybind11-dev python3-dev python3-numpy libsndfile1-dev libsamplerate0-dev
-libopencv-dev opencv-data libpng-dev libjpeg-dev libdlib-dev libblas-dev liblapack-dev zlib1g-dev"
+libopencv-dev opencv-data libpng-dev libjpeg-dev libdlib-dev libblas-dev liblapack-dev zlib1g-dev
+libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev"
+# libavformat-dev, libavcodec-dev, libswresample-dev and libavutil-dev also decode the recordings
+# libsndfile does not read (MP3, AAC/M4A, Opus, a video's sound track: src/audio/).
 # libpng-dev and libjpeg-dev read photo files (face from a photo). libdlib-dev's CMake package also
 # links libblas.so, liblapack.so, libjpeg.so and libz.so by path, and does not depend on the -dev
 # packages that provide them.
@@ -20,7 +23,7 @@ libopencv-dev opencv-data libpng-dev libjpeg-dev libdlib-dev libblas-dev liblapa
 # grace_hopper.jpg).
 test_packages="python3-pil python3-pytest python3-venv python3-pip python3-setuptools chromium fonts-dejavu-core
 python3-skimage python-matplotlib-data librsvg2-bin libdlib-data"
-bench_packages="espeak-ng libespeak-ng-dev sox libsox-fmt-all time"
+bench_packages="espeak-ng libespeak-ng-dev sox libsox-fmt-all time ffmpeg"
 
 case "${1:-build}" in
   build) wanted=$build_packages ;;

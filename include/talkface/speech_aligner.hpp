@@ -77,10 +77,12 @@ public:
     Timeline align(const AudioView& audio, const Timeline& transcript,
                    const ProgressCallback& progress = {}) const;
 
-    /// Aligns an audio file (WAV, FLAC, OGG, any sample rate, 8 to 32 bit or float, mono or stereo).
+    /// Aligns an audio file: WAV, FLAC, Ogg (any sample rate, 8 to 32 bit or float, mono or stereo)
+    /// through libsndfile; MP3 (read to its real end), AAC/M4A, Opus and the sound track of a video
+    /// (MP4, MOV, MKV, WebM) through FFmpeg's libraries.
     /// \throws talkface::FileError if it cannot be opened or read (truncated); talkface::ParseError
-    ///         if it is not audio talkface can read; talkface::InvalidArgument if it is empty or
-    ///         silent; and as align().
+    ///         naming the reason if it is not audio talkface can read, or a video has no sound track;
+    ///         talkface::InvalidArgument if it is empty or silent; and as align().
     Timeline align_file(const std::string& audio_path, const Timeline& transcript,
                         const ProgressCallback& progress = {}) const;
 

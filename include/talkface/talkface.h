@@ -644,8 +644,8 @@ TF_API tf_status tf_align_options_set_c1(tf_align_options *options, double c1);
  * Errors: TF_ERR_INVALID_ARGUMENT naming c2 if out of range, or for a NULL options. */
 TF_API tf_status tf_align_options_set_c2(tf_align_options *options, double c2);
 
-/* Aligns an audio file (WAV, FLAC, OGG; any rate, 8 to 32 bit or float, mono or stereo) with
- * `transcript` (from tf_read_transcript / tf_load_transcript) into a new timeline *out: the
+/* Aligns an audio file (WAV, FLAC, Ogg, MP3, AAC/M4A, Opus, or the sound track of an MP4, MOV, MKV
+ * or WebM video; any rate, mono or stereo) with `transcript` (from tf_read_transcript / tf_load_transcript) into a new timeline *out: the
  * transcript's sentences and syllables with their times, seconds (syllable start = where its initial
  * consonant starts; final start and confidence set), and the audio's duration. The audio is read in
  * blocks: an hour of speech aligns in bounded memory. `options` NULL means the defaults; `progress`

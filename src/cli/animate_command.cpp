@@ -194,7 +194,7 @@ void setup_animate_command(CLI::App& app) {
     auto transcript_path = std::make_shared<std::string>();
     CLI::App* animate = app.add_subcommand(
         "animate", "Make a web page where the face talks in sync with a speech (or the bare SVG animation)");
-    animate->add_option("AUDIO", *audio_path, "Speech: WAV, FLAC or OGG, any rate, mono or stereo")
+    animate->add_option("AUDIO", *audio_path, "Speech: WAV, FLAC, Ogg, MP3, M4A, Opus or a video's sound track (MP4, MOV, MKV, WebM)")
         ->required()
         ->check(CLI::ExistingFile);
     animate->add_option("TRANSCRIPT", *transcript_path, "Its transcript, UTF-8 (as `talkface align` reads it)")

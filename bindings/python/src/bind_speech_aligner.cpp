@@ -185,8 +185,8 @@ Example:
                 });
             },
             py::arg("path"), py::arg("transcript"), py::arg("progress") = py::none(), R"doc(
-Aligns an audio file (WAV, FLAC, OGG; any rate, 8 to 32 bit or float, mono or stereo) with its
-transcript. Releases the GIL while it works.
+Aligns an audio file (WAV, FLAC, Ogg, MP3, AAC/M4A, Opus, or a video's sound track: MP4, MOV, MKV,
+WebM; any rate, mono or stereo) with its transcript. Releases the GIL while it works.
 
 Args:
     path (str | os.PathLike): the audio file.
