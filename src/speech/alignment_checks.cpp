@@ -174,34 +174,34 @@ void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProf
     }
 }
 
-void check_text_fit(const std::vector<double>& gap_per_frame, const std::vector<FrameSpan>& spans,
+void check_text_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                     const Timeline& transcript) {
     std::vector<double> gaps;
-    for (std::size_t k = 0; k < gap_per_frame.size(); ++k)
-        if (spans[k].length() > 0) gaps.push_back(gap_per_frame[k]);
+    for (std::size_t k = 0; k < metrics.size(); ++k)
+        if (spans[k].length() > 0) gaps.push_back(metrics[k].fit_gap);
     const double typical = gaps.size() >= 3 ? median(gaps) : -std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < gap_per_frame.size(); ++k) {
-        const double gap = gap_per_frame[k];
+    for (std::size_t k = 0; k < metrics.size(); ++k) {
+        const double gap = metrics[k].fit_gap;
         if (gap > kMaxTextFitGap && gap - typical > kMaxTextFitGapAboveTypical)
             refuse_text_fit(k, spans[k], transcript, "", gap, kMaxTextFitGap);
     }
 }
 
-void check_held_out_fit(const std::vector<double>& gap_per_frame, const std::vector<FrameSpan>& spans,
+void check_held_out_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                         const Timeline& transcript) {
-    for (std::size_t k = 0; k < gap_per_frame.size(); ++k) {
-        if (gap_per_frame[k] > kMaxHeldOutFitGap)
+    for (std::size_t k = 0; k < metrics.size(); ++k) {
+        if (metrics[k].held_out_gap > kMaxHeldOutFitGap)
             refuse_text_fit(k, spans[k], transcript, "with models learned from the rest of the recording, on half of it, ",
-                            gap_per_frame[k], kMaxHeldOutFitGap);
+                            metrics[k].held_out_gap, kMaxHeldOutFitGap);
     }
 }
 
-void check_own_fit(const std::vector<double>& gap_per_frame, const std::vector<FrameSpan>& spans,
+void check_own_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                    const Timeline& transcript) {
-    for (std::size_t k = 0; k < gap_per_frame.size(); ++k) {
-        if (gap_per_frame[k] > kMaxOwnFitGap)
+    for (std::size_t k = 0; k < metrics.size(); ++k) {
+        if (metrics[k].own_fit_gap > kMaxOwnFitGap)
             refuse_text_fit(k, spans[k], transcript, "even with models learned from this speech and its text, ",
-                            gap_per_frame[k], kMaxOwnFitGap);
+                            metrics[k].own_fit_gap, kMaxOwnFitGap);
     }
 }
 
@@ -218,32 +218,34 @@ double syllable_length_spread(const std::vector<AlignedStretch>& stretches) {
     return std::sqrt(variance / static_cast<double>(logs.size()));
 }
 
-void check_syllable_lengths(const std::vector<double>& spreads, const std::vector<FrameSpan>& spans,
+void check_syllable_lengths(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                             const Timeline& transcript) {
-    for (std::size_t k = 0; k < spreads.size(); ++k) {
-        if (!(spreads[k] > kMaxSyllableLengthSpread)) continue;
+    for (std::size_t k = 0; k < metrics.size(); ++k) {
+        const double spread = metrics[k].length_spread;
+        if (!(spread > kMaxSyllableLengthSpread)) continue;
         throw AlignmentError(describe_sentence(k, spans[k], transcript) + ": its syllables would be squeezed and drawn out " +
                              "far beyond one voice's rhythm (their lengths spread by a factor of " +
-                             format_fixed(std::exp(spreads[k]), 2) + ", at most " + format_fixed(std::exp(kMaxSyllableLengthSpread), 2) +
+                             format_fixed(std::exp(spread), 2) + ", at most " + format_fixed(std::exp(kMaxSyllableLengthSpread), 2) +
                              " for the right text); is it another sentence, or are two sentences swapped?");
     }
 }
 
-void check_fit(const std::vector<double>& fit_per_frame, const std::vector<FrameSpan>& spans,
+void check_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                const Timeline& transcript) {
     std::vector<double> fits;
-    for (double fit : fit_per_frame)
-        if (std::isfinite(fit)) fits.push_back(fit);
+    for (const auto& sentence : metrics)
+        if (std::isfinite(sentence.fit)) fits.push_back(sentence.fit);
     if (fits.size() < 4) return;
     const double typical = median(fits);
     std::vector<double> deviations;
     for (double fit : fits) deviations.push_back(std::fabs(fit - typical));
     const double spread = 1.4826 * median(deviations);
     const double limit = typical - std::max(kFitOutlierSpread * spread, kFitOutlierMinimum);
-    for (std::size_t k = 0; k < fit_per_frame.size(); ++k) {
-        if (!std::isfinite(fit_per_frame[k]) || fit_per_frame[k] >= limit) continue;
+    for (std::size_t k = 0; k < metrics.size(); ++k) {
+        const double fit = metrics[k].fit;
+        if (!std::isfinite(fit) || fit >= limit) continue;
         throw AlignmentError(describe_sentence(k, spans[k], transcript) + ": the audio does not sound like its text (fit " +
-                             format_fixed(fit_per_frame[k], 2) + " per frame against " + format_fixed(typical, 2) +
+                             format_fixed(fit, 2) + " per frame against " + format_fixed(typical, 2) +
                              " for the other sentences); check the transcript");
     }
 }

@@ -4,6 +4,7 @@
 #define TALKFACE_SPEECH_ALIGNMENT_CHECKS_HPP
 
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,23 @@ std::string describe_sentence(std::size_t sentence, const FrameSpan& span, const
 void check_sentence_lengths(const std::vector<FrameSpan>& spans, const LoudnessProfile& loudness,
                             const Timeline& transcript);
 
+// What the alignment measured of one sentence, for the checks below (NaN or zero: not measured).
+struct SentenceMetrics {
+    // How well its frames fit the models of the sounds its text says, per frame (check_fit).
+    double fit = std::numeric_limits<double>::quiet_NaN();
+    // How much better a free sequence of sounds fits its speech than its text, per frame
+    // (check_text_fit), on the models re-estimated on the whole recording.
+    double fit_gap = 0.0;
+    // The largest such gap of its halves on models learned from the rest of the recording
+    // (check_held_out_fit).
+    double held_out_gap = 0.0;
+    // fit_gap where the models were learned from this sentence itself: files of one or two
+    // sentences (check_own_fit).
+    double own_fit_gap = std::numeric_limits<double>::quiet_NaN();
+    // syllable_length_spread, in the same files (check_syllable_lengths).
+    double length_spread = std::numeric_limits<double>::quiet_NaN();
+};
+
 // One stretch of an aligned sentence, in frames of the whole recording.
 struct AlignedStretch {
     std::size_t first_frame = 0;
@@ -43,21 +61,21 @@ void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProf
 // How much better each sentence's speech fits a free sequence of sounds than its text's (per frame,
 // from the aligner), against what a right text gives.
 // \throws talkface::AlignmentError naming the first sentence whose text does not fit its speech.
-void check_text_fit(const std::vector<double>& gap_per_frame, const std::vector<FrameSpan>& spans,
+void check_text_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                     const Timeline& transcript);
 
 // The same gap for each sentence, its halves scored with models learned from the rest of the
 // recording (leave one out), against what a right text gives anywhere: this holds for a file of one
 // or two sentences, where the models re-estimated on the recording fit any text.
 // \throws talkface::AlignmentError naming the first sentence whose text does not fit its speech.
-void check_held_out_fit(const std::vector<double>& gap_per_frame, const std::vector<FrameSpan>& spans,
+void check_held_out_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                         const Timeline& transcript);
 
 // check_text_fit for a file of one or two sentences, where the models were learned from these very
 // sentences and shaped by their text: on them a right text's path fits at least as well as a free
 // sequence of sounds, so a gap above zero is the wrong text. NaN: a sentence not checked.
 // \throws talkface::AlignmentError naming the first sentence whose text does not fit its speech.
-void check_own_fit(const std::vector<double>& gap_per_frame, const std::vector<FrameSpan>& spans,
+void check_own_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                    const Timeline& transcript);
 
 // How much the lengths of a sentence's syllables (pauses left out) vary: the standard deviation of
@@ -67,13 +85,13 @@ double syllable_length_spread(const std::vector<AlignedStretch>& stretches);
 // Each sentence's syllable_length_spread against what one voice's syllables show: a wrong text
 // forced onto the speech squeezes some syllables and stretches others. NaN: a sentence not checked.
 // \throws talkface::AlignmentError naming the first sentence whose syllables vary too much.
-void check_syllable_lengths(const std::vector<double>& spreads, const std::vector<FrameSpan>& spans,
+void check_syllable_lengths(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                             const Timeline& transcript);
 
 // How well each aligned sentence's frames fit the models of the sounds its text says, per frame,
 // against the other sentences of the same recording.
 // \throws talkface::AlignmentError naming the sentence that fits far worse than the rest.
-void check_fit(const std::vector<double>& fit_per_frame, const std::vector<FrameSpan>& spans,
+void check_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                const Timeline& transcript);
 
 }  // namespace talkface::detail

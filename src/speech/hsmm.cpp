@@ -207,10 +207,6 @@ std::vector<StateSegment> search(const std::vector<PhoneState>& states, std::siz
     return segments;
 }
 
-bool is_pause(StateRole role) {
-    return role == StateRole::edge_silence || role == StateRole::short_pause || role == StateRole::comma_pause;
-}
-
 // Frames the priors expect of states [first, end): the sum of the medians of those a path must
 // pass, consonants and vowels apart.
 struct ExpectedFrames {

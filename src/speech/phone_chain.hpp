@@ -40,6 +40,11 @@ enum class StateRole : int {
     final,
 };
 
+// The silences between and around the syllables (a stop's closure is not one: it belongs to its syllable).
+inline bool is_pause(StateRole role) {
+    return role == StateRole::edge_silence || role == StateRole::short_pause || role == StateRole::comma_pause;
+}
+
 struct PhoneState {
     PhoneClass phone_class = kSilence;
     StateRole role = StateRole::initial;

@@ -1,0 +1,98 @@
+#include "speech/sentence_chains.hpp"
+
+#include <algorithm>
+
+namespace talkface::detail {
+
+namespace {
+
+// Each sentence is searched with this much of the pauses around it, so that its first and last
+// sounds are free to start and end where the audio says.
+constexpr std::size_t kEdgeFrames = 30;
+// How far below the loudest frame of the end of a sentence its last sound ends (end_before_tail):
+// a room's tail starts 13-20 dB below the last vowel, which may itself be 10 dB below the louder
+// syllables before it; the last 0.6 s always hold a syllable's vowel. (bench/ reverb: 15-20 dB
+// find every sentence end, 25 dB leaves a tenth of them in the tail.)
+constexpr float kTailFallDb = 18.0f;
+constexpr std::size_t kTailReferenceFrames = 60;
+// A sentence end that end_before_tail moves this far is a room's tail: a voice's own fall past
+// kTailFallDb takes a frame or two (bench/: 0-2 frames in every condition but reverb, 3-26 there).
+constexpr std::size_t kRoomTailFrames = 3;
+// Past the end of a voice in a room, the search reaches only this far into the tail.
+constexpr std::size_t kTailEdgeFrames = 5;
+
+// Frames of `span` that are not in a pause: what the syllables fill, so that the vowels' duration
+// priors follow the speaking rate, not the pauses (a transcript without punctuation runs over the
+// pauses between its sentences).
+std::size_t speech_frames(const LoudnessProfile& loudness, const FrameSpan& span) {
+    std::size_t frames = span.length();
+    for (const auto& pause : loudness.pauses)
+        if (pause.first_frame >= span.first_frame && pause.end_frame <= span.end_frame) frames -= pause.length();
+    return frames;
+}
+
+}  // namespace
+
+std::vector<SentenceChain> group_chains(const Timeline& transcript, const SentenceCut& cut,
+                                        const std::vector<FrameSpan>& spans) {
+    std::vector<SentenceChain> chains;
+    bool continues_block = false;
+    // One pass: the syllables come in sentence order (validate_transcript), and a sentence without
+    // syllables has nothing to align.
+    for (std::size_t i = 0; i < transcript.syllables.size(); ++i) {
+        const std::size_t k = transcript.syllables[i].sentence;
+        if (i == 0 || transcript.syllables[i - 1].sentence != k) {
+            if (!continues_block) {
+                chains.emplace_back();
+                chains.back().first_sentence = k;
+                chains.back().speech = spans[k];
+            }
+            SentenceChain& block = chains.back();
+            block.end_sentence = k + 1;
+            block.speech = {std::min(block.speech.first_frame, spans[k].first_frame), std::max(block.speech.end_frame, spans[k].end_frame)};
+            continues_block = cut.runs_on[k];
+        }
+        chains.back().syllables.push_back(&transcript.syllables[i]);
+        chains.back().syllable_indices.push_back(i);
+    }
+    return chains;
+}
+
+void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness, std::vector<SentenceChain>& chains) {
+    // Edges reach into the pauses around the sentence, at most halfway to its neighbours.
+    for (std::size_t w = 0; w < chains.size(); ++w) {
+        SentenceChain& chain = chains[w];
+        const FrameSpan& speech = chain.speech;
+        const std::size_t lower = w == 0 ? 0 : (chains[w - 1].speech.end_frame + speech.first_frame) / 2;
+        const std::size_t upper =
+            w + 1 == chains.size() ? track.frame_count : (speech.end_frame + chains[w + 1].speech.first_frame + 1) / 2;
+        chain.searched.first_frame = std::max(lower, speech.first_frame > kEdgeFrames ? speech.first_frame - kEdgeFrames : 0);
+        // A sentence that ends in a room's tail is searched only a little past the voice's end, and
+        // its vowels are scaled to the voiced part: the tail is not speech to spread them over.
+        const std::size_t voiced_end = end_before_tail(track, speech.first_frame, speech.end_frame);
+        chain.ends_in_tail = voiced_end + kRoomTailFrames <= speech.end_frame;
+        chain.searched.end_frame =
+            std::min(upper, voiced_end < speech.end_frame ? voiced_end + kTailEdgeFrames : speech.end_frame + kEdgeFrames);
+        chain.states = build_phone_chain(chain.syllables, chain.searched.length(),
+                                         speech_frames(loudness, {speech.first_frame, voiced_end}));
+    }
+}
+
+// In a reverberant room the last sound rings on for a few hundred ms after the voice stops, and the
+// tail looks like the vowel: it lengthens the sentence the cutter finds (so every vowel is
+// stretched to fill it) and the search gives it to the last vowel. Where the voice stops the level
+// falls at once far below the vowel's, and the tail only decays from there: speech in [first, end)
+// ends after its last frame less than kTailFallDb below the loudest frame of its last
+// kTailReferenceFrames. In noise the floor stays above that mark and nothing moves.
+std::size_t end_before_tail(const FeatureTrack& track, std::size_t first, std::size_t end) {
+    if (end <= first + 1) return end;
+    std::size_t loudest = end - 1;
+    for (std::size_t t = end > first + kTailReferenceFrames ? end - kTailReferenceFrames : first; t < end; ++t)
+        if (track.at(t, kEnergyDb) > track.at(loudest, kEnergyDb)) loudest = t;
+    const float mark_db = track.at(loudest, kEnergyDb) - kTailFallDb;
+    std::size_t trimmed = end;
+    while (trimmed > loudest + 1 && track.at(trimmed - 1, kEnergyDb) < mark_db) --trimmed;
+    return trimmed;
+}
+
+}  // namespace talkface::detail

@@ -1,0 +1,49 @@
+// What the aligner searches: the transcript's sentences grouped into chains (one sentence, or
+// neighbours the speaker ran together, run_together.hpp), each with the stretch of audio it is
+// searched over and its chain of phone states (SPEC "Alignment").
+#ifndef TALKFACE_SPEECH_SENTENCE_CHAINS_HPP
+#define TALKFACE_SPEECH_SENTENCE_CHAINS_HPP
+
+#include <cstddef>
+#include <vector>
+
+#include "speech/frame_features.hpp"
+#include "speech/phone_chain.hpp"
+#include "speech/sentence_cutter.hpp"
+#include "talkface/timeline.hpp"
+
+namespace talkface::detail {
+
+// One sentence, or neighbouring sentences the speaker ran together, aligned as one chain.
+struct SentenceChain {
+    std::size_t first_sentence = 0;  // the transcript's sentences [first_sentence, end_sentence)
+    std::size_t end_sentence = 0;
+    FrameSpan speech;   // from the cutter
+    FrameSpan searched; // with the edges
+    std::vector<const Syllable*> syllables;
+    std::vector<std::size_t> syllable_indices;
+    std::vector<PhoneState> states;
+    bool ends_in_tail = false;  // its last sound rings on in a room (end_before_tail cut a tail off)
+
+    bool is_block() const { return end_sentence > first_sentence + 1; }
+};
+
+// The transcript's spoken sentences (those with syllables) grouped into chains: a sentence whose
+// end runs on (`cut.runs_on`) is chained to the next. Each chain's speech spans its sentences'
+// `spans`; searched spans and states are left to set_search_spans.
+std::vector<SentenceChain> group_chains(const Timeline& transcript, const SentenceCut& cut,
+                                        const std::vector<FrameSpan>& spans);
+
+// Each chain's searched span (its speech with the pauses around it, at most halfway to its
+// neighbours, and only a little of a room's tail) and its phone states, vowels scaled to the
+// speech they fill.
+// \throws talkface::InvalidArgument naming a syllable whose pinyin is not Mandarin.
+void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness, std::vector<SentenceChain>& chains);
+
+// SPEC: a sentence ends with its last sound. Where speech in [first, end) ends before a room's
+// tail: after its last frame less than a fixed fall below the loudest frame of its end.
+std::size_t end_before_tail(const FeatureTrack& track, std::size_t first, std::size_t end);
+
+}  // namespace talkface::detail
+
+#endif

@@ -1,0 +1,115 @@
+#include "speech/text_fit.hpp"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+
+namespace talkface::detail {
+
+namespace {
+
+// What the phone loop of text_fit_gap pays for a change of sound, in the re-estimated model's
+// log-likelihood (bench/ tuning passages: at 2 right and wrong texts lie furthest apart in every
+// condition; at 5 they overlap).
+constexpr double kLoopSwitchPenalty = 2.0;
+
+}  // namespace
+
+double speech_fit(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores) {
+    double sum = 0.0;
+    std::size_t frames = 0;
+    for (const auto& segment : path) {
+        const PhoneState& state = chain.states[segment.state];
+        if (is_pause(state.role)) continue;
+        for (std::size_t t = segment.first_frame; t < segment.end_frame; ++t) sum += scores.at(t, state.phone_class);
+        frames += segment.end_frame - segment.first_frame;
+    }
+    return frames > 0 ? sum / static_cast<double>(frames) : -std::numeric_limits<double>::infinity();
+}
+
+std::vector<std::pair<std::size_t, std::vector<StateSegment>>> split_by_sentence(const SentenceChain& chain,
+                                                                                const std::vector<StateSegment>& path) {
+    std::vector<std::pair<std::size_t, std::vector<StateSegment>>> shares;
+    for (const auto& segment : path) {
+        const std::size_t sentence = chain.syllables[chain.states[segment.state].syllable]->sentence;
+        if (shares.empty() || shares.back().first != sentence) shares.emplace_back(sentence, std::vector<StateSegment>());
+        shares.back().second.push_back(segment);
+    }
+    return shares;
+}
+
+// The loop pays for each change of sound, so on the right text it gains little over the path; on
+// a wrong text of the same length (two sentences swapped, another sentence) the path is forced
+// through sounds that are not there. Unlike the fit against the other sentences, this needs none.
+double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores) {
+    std::size_t first = 0, end = 0;
+    bool has_speech = false;
+    for (const auto& segment : path) {
+        if (is_pause(chain.states[segment.state].role)) continue;
+        if (!has_speech) first = segment.first_frame;
+        has_speech = true;
+        end = segment.end_frame;
+    }
+    if (!has_speech || end <= first) return 0.0;
+    double forced = 0.0;
+    for (const auto& segment : path) {
+        const int phone_class = chain.states[segment.state].phone_class;
+        const std::size_t segment_first = std::max(segment.first_frame, first);
+        const std::size_t segment_end = std::min(segment.end_frame, end);
+        for (std::size_t t = segment_first; t < segment_end; ++t) forced += scores.at(t, phone_class);
+    }
+    std::array<double, kPhoneClassCount> best{};
+    for (std::size_t t = first; t < end; ++t) {
+        const double leader = *std::max_element(best.begin(), best.end());
+        for (int c = 0; c < kPhoneClassCount; ++c)
+            best[static_cast<std::size_t>(c)] = std::max(best[static_cast<std::size_t>(c)], leader - kLoopSwitchPenalty) + scores.at(t, c);
+    }
+    const double free = *std::max_element(best.begin(), best.end());
+    return (free - forced) / static_cast<double>(end - first);
+}
+
+std::vector<std::vector<StateSegment>> split_in_halves(const SentenceChain& chain, const std::vector<StateSegment>& path) {
+    std::vector<std::size_t> half_of_syllable(chain.syllables.size());
+    std::size_t first = 0;
+    std::size_t sentences = 0;
+    for (; first < chain.syllables.size(); ++sentences) {
+        std::size_t end = first;
+        while (end < chain.syllables.size() && chain.syllables[end]->sentence == chain.syllables[first]->sentence) ++end;
+        const std::size_t second_half = first + (end - first + 1) / 2;
+        for (std::size_t i = first; i < end; ++i) half_of_syllable[i] = 2 * sentences + (i < second_half ? 0 : 1);
+        first = end;
+    }
+    std::vector<std::vector<StateSegment>> halves(2 * sentences);
+    for (const auto& segment : path) halves[half_of_syllable[chain.states[segment.state].syllable]].push_back(segment);
+    return halves;
+}
+
+// Models re-estimated on a recording fit whatever text shaped them, and on a file of a sentence or
+// two a wrong text shapes most of them; models that never saw these frames cannot bend to it.
+// `scores` is overwritten (an hour's scores are 19 MB: no second buffer).
+std::vector<double> held_out_fit_gaps(const SentenceChain& chain, const std::vector<std::vector<StateSegment>>& halves,
+                                      const std::vector<float>& observations, const ModelEstimator& whole,
+                                      const std::vector<ModelEstimator>& half_estimators, EmissionScores& scores) {
+    std::vector<double> gaps(halves.size(), -std::numeric_limits<double>::infinity());
+    std::vector<float> half_observations;
+    for (std::size_t h = 0; h < halves.size(); ++h) {
+        if (halves[h].empty()) continue;
+        ModelEstimator rest = whole;
+        rest.subtract(half_estimators[h]);
+        // Only the half's own frames are scored: a chain of sentences run together is long.
+        const std::size_t first = halves[h].front().first_frame;
+        const std::size_t end = halves[h].back().end_frame;
+        half_observations.assign(observations.begin() + static_cast<std::ptrdiff_t>(first * kObservationCount),
+                                 observations.begin() + static_cast<std::ptrdiff_t>(end * kObservationCount));
+        rest.estimate(kReestimatedWeight).score(half_observations, end - first, scores);
+        std::vector<StateSegment> shifted = halves[h];
+        for (auto& segment : shifted) {
+            segment.first_frame -= first;
+            segment.end_frame -= first;
+        }
+        gaps[h] = text_fit_gap(chain, shifted, scores);
+    }
+    return gaps;
+}
+
+}  // namespace talkface::detail

@@ -1,0 +1,42 @@
+// How well a chain's aligned speech fits its text: the measures the checks of alignment_checks.hpp
+// judge (issue #4: a wrong text is reported, not aligned with confidence).
+#ifndef TALKFACE_SPEECH_TEXT_FIT_HPP
+#define TALKFACE_SPEECH_TEXT_FIT_HPP
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "speech/acoustic_model.hpp"
+#include "speech/hsmm.hpp"
+#include "speech/sentence_chains.hpp"
+
+namespace talkface::detail {
+
+// How well the speech of `path` (a sentence's, or its share of a block's) fits the models of the
+// sounds its text says, per frame.
+double speech_fit(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores);
+
+// How much better, per frame, the speech of `path` fits the best sequence of sounds than the
+// sequence its text says: a phone loop against the forced path, on the same models.
+double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores);
+
+// The path of a chain cut into its sentences' shares (a pause goes with the sentence before it),
+// each with the index of its sentence in the transcript.
+std::vector<std::pair<std::size_t, std::vector<StateSegment>>> split_by_sentence(const SentenceChain& chain,
+                                                                                const std::vector<StateSegment>& path);
+
+// The path of a chain cut between its syllables into each sentence's first and second half
+// (pauses go with the syllable before them): half h of the chain's j-th sentence is 2 j + h.
+std::vector<std::vector<StateSegment>> split_in_halves(const SentenceChain& chain, const std::vector<StateSegment>& path);
+
+// text_fit_gap of each half (split_in_halves) scored with models learned from the rest of the
+// recording only (leave one out); an empty half gives minus infinity. `half_estimators` holds the
+// halves' shares of `whole`; `scores` is overwritten.
+std::vector<double> held_out_fit_gaps(const SentenceChain& chain, const std::vector<std::vector<StateSegment>>& halves,
+                                      const std::vector<float>& observations, const ModelEstimator& whole,
+                                      const std::vector<ModelEstimator>& half_estimators, EmissionScores& scores);
+
+}  // namespace talkface::detail
+
+#endif
