@@ -29,7 +29,11 @@ using talkface_bench::MonoAudio;
 
 namespace {
 
-enum class Noise { none, white, pink, brown };
+// The noises under the voice (issue #13 adds the steady and the musical ones, which are not blamed
+// on the transcript either): hum is mains hum (50 Hz and its harmonics), tone_pink a steady 440 Hz
+// tone under pink noise, music a synthetic tune (chords of harmonic notes, a bass, changing every
+// 0.2-0.6 s), room a ventilated room (low-passed pink noise with a 120 Hz motor line).
+enum class Noise { none, white, pink, brown, hum, tone_pink, music, room };
 
 struct Condition {
     const char* name;
@@ -41,6 +45,7 @@ struct Condition {
     const char* sox_output_options;
     const char* extension;
     bool runs_together;       ///< sentences 0-kMaxJointGapS apart instead of the passage's pauses
+    double silent_ends_s = 0; ///< extra silence before and after the passage (truth moved with it)
 };
 
 // A speaker who runs sentences together leaves at most a breath's catch between them: shorter than
@@ -66,6 +71,13 @@ const Condition all_conditions[] = {
     {"fast", "speaking rate +40%", 1.4, Noise::none, 0, "rate -v 16k", "-b 16", "wav", false},
     {"slow", "speaking rate -30%", 0.7, Noise::none, 0, "rate -v 16k", "-b 16", "wav", false},
     {"joined", "sentences run together, 0-0.12 s apart", 1.0, Noise::none, 0, "rate -v 16k", "-b 16", "wav", true},
+    {"hum15", "mains hum (50 Hz and harmonics), SNR 15 dB", 1.0, Noise::hum, 15, "", "", "wav", false},
+    {"tonepink15", "a steady 440 Hz tone under pink noise, SNR 15 dB", 1.0, Noise::tone_pink, 15, "", "", "wav", false},
+    {"music15", "synthetic music, SNR 15 dB", 1.0, Noise::music, 15, "", "", "wav", false},
+    {"music20", "synthetic music, SNR 20 dB", 1.0, Noise::music, 20, "", "", "wav", false},
+    {"room15", "room noise (ventilation and a motor's hum), SNR 15 dB", 1.0, Noise::room, 15, "", "", "wav", false},
+    {"silentends", "6 s of silence before and after", 1.0, Noise::none, 0, "rate -v 16k pad 6 6", "-b 16", "wav", false,
+     6.0},
 };
 
 struct BenchSentence {
@@ -273,6 +285,19 @@ Recording join_passage(const SpokenPassage& passage, const std::vector<double>& 
 
 double rounded(double seconds) { return std::round(seconds * 1e5) / 1e5; }
 
+// The recording's truth `by_s` later, as the silence sox put before it moves it.
+Recording shifted(const Recording& recording, double by_s) {
+    Recording moved{{}, recording.truth, recording.after_pause};
+    for (auto& sentence : moved.truth.sentences) sentence.start_s += by_s, sentence.end_s += by_s;
+    for (auto& syllable : moved.truth.syllables) {
+        syllable.start_s += by_s;
+        syllable.end_s += by_s;
+        if (syllable.final_start_s) *syllable.final_start_s += by_s;
+    }
+    moved.truth.duration_s += 2 * by_s;
+    return moved;
+}
+
 std::string truth_json(const Recording& recording, const Delivery& delivery, double rate_factor,
                        const std::string& condition, const std::string& set) {
     nlohmann::ordered_json document;
@@ -324,6 +349,58 @@ std::vector<float> make_noise(Noise colour, std::size_t count, std::mt19937_64& 
     return noise;
 }
 
+constexpr double kPi = 3.14159265358979323846;
+
+// A sum of harmonics of `frequency_hz` with amplitudes 1/k, at time `t_s`: a note, a hum.
+double harmonics(double frequency_hz, int count, double t_s) {
+    double value = 0;
+    for (int k = 1; k <= count; ++k) value += std::sin(2 * kPi * k * frequency_hz * t_s) / k;
+    return value;
+}
+
+// The steady and musical noises, at `rate_hz`.
+std::vector<float> make_tonal_noise(Noise kind, std::size_t count, int rate_hz, std::mt19937_64& rng) {
+    std::vector<float> noise(count, 0.0f);
+    if (kind == Noise::hum || kind == Noise::tone_pink) {
+        const std::vector<float> pink = kind == Noise::tone_pink ? make_noise(Noise::pink, count, rng) : std::vector<float>();
+        double pink_power = 0;
+        for (float v : pink) pink_power += double(v) * v;
+        // Tone and pink noise of equal power (the tone's is 1/2).
+        const double pink_gain = pink.empty() ? 0.0 : std::sqrt(0.5 / (pink_power / static_cast<double>(count)));
+        for (std::size_t i = 0; i < count; ++i) {
+            const double t = static_cast<double>(i) / rate_hz;
+            noise[i] = static_cast<float>(kind == Noise::hum ? harmonics(50.0, 8, t) : std::sin(2 * kPi * 440.0 * t) + pink_gain * pink[i]);
+        }
+        return noise;
+    }
+    if (kind == Noise::room) {
+        const std::vector<float> pink = make_noise(Noise::pink, count, rng);
+        double low = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            low += 0.15 * (pink[i] - low);  // one pole near 400 Hz at 16 kHz: the rumble of air
+            noise[i] = static_cast<float>(low + 0.15 * std::sin(2 * kPi * 120.0 * static_cast<double>(i) / rate_hz));
+        }
+        return noise;
+    }
+    // Music: a pentatonic tune of three-note chords over a bass, each chord 0.2-0.6 s with a soft
+    // attack and a decay, so that its onsets come as often as syllables do.
+    const double scale[] = {220.0, 246.9, 277.2, 329.6, 370.0, 440.0, 493.9, 554.4};
+    std::size_t i = 0;
+    while (i < count) {
+        const auto length = static_cast<std::size_t>(uniform(rng, 0.2, 0.6) * rate_hz);
+        const double root = scale[static_cast<std::size_t>(uniform(rng, 0, 5.999))];
+        const double third = root * 1.25, fifth = root * 1.5, bass = root / 4;
+        for (std::size_t j = 0; j < length && i < count; ++j, ++i) {
+            const double t = static_cast<double>(i) / rate_hz;
+            const double since = static_cast<double>(j) / rate_hz;
+            const double envelope = std::min(1.0, since / 0.02) * std::exp(-since * 3.0);
+            noise[i] = static_cast<float>(envelope * (harmonics(root, 6, t) + harmonics(third, 5, t) + harmonics(fifth, 5, t)) +
+                                          0.8 * harmonics(bass, 4, t));
+        }
+    }
+    return noise;
+}
+
 // SNR against the speech's active level: mean power inside the sentences, pauses left out.
 MonoAudio add_noise(const MonoAudio& clean, const talkface::Timeline& truth, Noise colour, double snr_db,
                     std::mt19937_64& rng) {
@@ -336,7 +413,9 @@ MonoAudio add_noise(const MonoAudio& clean, const talkface::Timeline& truth, Noi
         speech_count += end > begin ? end - begin : 0;
     }
     speech_power /= static_cast<double>(std::max<std::size_t>(speech_count, 1));
-    const auto noise = make_noise(colour, clean.samples.size(), rng);
+    const bool is_tonal = colour == Noise::hum || colour == Noise::tone_pink || colour == Noise::music || colour == Noise::room;
+    const auto noise = is_tonal ? make_tonal_noise(colour, clean.samples.size(), clean.sample_rate_hz, rng)
+                                : make_noise(colour, clean.samples.size(), rng);
     double noise_power = 0;
     for (float sample : noise) noise_power += double(sample) * sample;
     noise_power /= static_cast<double>(std::max<std::size_t>(noise.size(), 1));
@@ -422,8 +501,8 @@ void make_corpus(const CorpusOptions& options) {
                                                                 recording.truth, condition.noise, condition.snr_db, rng));
             }
             write_text(stem.string() + ".txt", passage.transcript);
-            write_text(stem.string() + ".json", truth_json(recording, passage.delivery, condition.rate_factor,
-                                                           condition.name, passage.set));
+            write_text(stem.string() + ".json", truth_json(shifted(recording, condition.silent_ends_s), passage.delivery,
+                                                           condition.rate_factor, condition.name, passage.set));
         }
         const auto normal = joined.find({1.0, false});
         seconds += normal != joined.end() ? normal->second.truth.duration_s : 0.0;

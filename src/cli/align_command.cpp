@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -28,6 +29,7 @@ struct AlignCommandOptions {
     std::string first_pause_text;
     double c1 = talkface::AlignOptions{}.c1;
     double c2 = talkface::AlignOptions{}.c2;
+    talkface::CheckMode check = talkface::AlignOptions{}.check;
     std::string output_path = "-";
     bool quiet = false;
 };
@@ -97,6 +99,7 @@ void run_align(const AlignCommandOptions& options) {
     talkface::AlignOptions align_options;
     align_options.c1 = options.c1;
     align_options.c2 = options.c2;
+    align_options.check = options.check;
     if (!options.first_pause_text.empty()) {
         const auto pause = parse_pause(options.first_pause_text).value_or(std::make_pair(0.0, 0.0));
         align_options.sentence_cut = talkface::SentenceCutMode::first_pause;
@@ -146,6 +149,12 @@ void setup_align_command(CLI::App& app) {
     align->add_option("--c2", options->c2, "Algorithm 3.1: loudest silence, as a multiple of the first pause's peak")
         ->check(CLI::Range(1.0, 1.5))
         ->capture_default_str();
+    align->add_option("--check", options->check,
+                      "What a transcript that does not match the audio does: refuse (strong evidence stops the "
+                      "alignment), warn (a warning, aligned anyway) or off")
+        ->transform(CLI::CheckedTransformer(std::map<std::string, talkface::CheckMode>{
+            {"refuse", talkface::CheckMode::refuse}, {"warn", talkface::CheckMode::warn}, {"off", talkface::CheckMode::off}}))
+        ->default_str("refuse");
     align->add_option("-o,--output", options->output_path, "Write the result here instead of stdout (- is stdout)");
     align->add_flag("-q,--quiet", options->quiet, "No progress bar");
     align->callback([options] { run_align(*options); });
