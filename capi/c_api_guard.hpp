@@ -13,8 +13,9 @@
 
 namespace talkface::capi {
 
-// This thread's last error message (tf_last_error_message).
-std::string& last_error();
+// This thread's last error message (tf_last_error_message). Exported (version TALKFACE_C_PRIVATE,
+// not API) for the photo calls, which libtalkface_photo compiles (talkface_c.map).
+TF_API std::string& last_error();
 
 // Runs `body` (which returns void); returns TF_OK, or records the message and returns the status of
 // the exception it threw. Never lets an exception out.

@@ -4,6 +4,7 @@
 #include "c_api_guard.hpp"
 #include "c_api_handles.hpp"
 #include "talkface/face_from_photo.hpp"
+#include "talkface/talkface_photo.h"
 
 using talkface::InvalidArgument;
 using talkface::capi::guard;

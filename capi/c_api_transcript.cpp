@@ -1,13 +1,13 @@
-// tf_timeline, transcripts and syllable shapes: the C face of transcript.hpp, timeline.hpp and
-// syllable_mouth_shapes() in lip_sync.hpp.
+// tf_timeline, transcripts and syllable shapes: the C face of transcript.hpp, timeline.hpp,
+// timeline_json.hpp and syllable_mouth_shapes() in lip_sync.hpp.
 #include <charconv>
-#include <cmath>
 #include <string>
 #include <string_view>
 
 #include "c_api_guard.hpp"
 #include "c_api_handles.hpp"
 #include "talkface/lip_sync.hpp"
+#include "talkface/timeline_json.hpp"
 #include "talkface/transcript.hpp"
 
 using talkface::InvalidArgument;
@@ -33,66 +33,11 @@ Syllable& syllable_at(tf_timeline* timeline, size_t index) {
     return item_at(timeline->timeline.syllables, index, "syllable");
 }
 
-// Shortest text that reads back as the same double, whatever the C locale (printf's "%g" would
-// write "0,5" under a German locale, and lose digits).
-std::string json_number(double value) {
-    if (!std::isfinite(value)) return "null";
+// For messages: the shortest text that reads back as the same double, whatever the C locale.
+std::string number_text(double value) {
     char buffer[32];
     const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
     return std::string(buffer, result.ptr);
-}
-
-std::string json_string(std::string_view text) {
-    std::string quoted = "\"";
-    for (const char c : text) {
-        switch (c) {
-            case '"': quoted += "\\\""; break;
-            case '\\': quoted += "\\\\"; break;
-            case '\n': quoted += "\\n"; break;
-            case '\r': quoted += "\\r"; break;
-            case '\t': quoted += "\\t"; break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20) {
-                    static const char kHex[] = "0123456789abcdef";
-                    quoted += "\\u00";
-                    quoted += kHex[(c >> 4) & 0xf];
-                    quoted += kHex[c & 0xf];
-                } else {
-                    quoted += c;  // UTF-8 passes through: readers see the characters, not \u escapes
-                }
-        }
-    }
-    return quoted + "\"";
-}
-
-// SPEC "Contracts" `align` shape, keys in the contract's order, then the extras a timeline carries
-// (final_start only when measured), so that a document read back makes the same animation.
-std::string timeline_json(const Timeline& timeline) {
-    std::string json = "{\"sentences\":[";
-    for (size_t k = 0; k < timeline.sentences.size(); ++k) {
-        const Sentence& sentence = timeline.sentences[k];
-        json += k == 0 ? "\n" : ",\n";
-        json += "{\"text\":" + json_string(sentence.text) + ",\"start\":" + json_number(sentence.start_s) +
-                ",\"end\":" + json_number(sentence.end_s) + "}";
-    }
-    json += "\n],\n\"syllables\":[";
-    for (size_t k = 0; k < timeline.syllables.size(); ++k) {
-        const Syllable& syllable = timeline.syllables[k];
-        json += k == 0 ? "\n" : ",\n";
-        json += "{\"text\":" + json_string(syllable.text) + ",\"pinyin\":" + json_string(syllable.pinyin) +
-                ",\"start\":" + json_number(syllable.start_s) + ",\"end\":" + json_number(syllable.end_s) +
-                ",\"sentence\":" + std::to_string(syllable.sentence);
-        if (syllable.final_start_s) json += ",\"final_start\":" + json_number(*syllable.final_start_s);
-        json += ",\"confidence\":" + json_number(syllable.confidence) +
-                ",\"pause_after\":" + (syllable.pause_after ? "true" : "false") + "}";
-    }
-    json += "\n],\n\"duration\":" + json_number(timeline.duration_s) + ",\n\"warnings\":[";
-    for (size_t k = 0; k < timeline.warnings.size(); ++k) {
-        json += k == 0 ? "\n" : ",\n";
-        json += json_string(timeline.warnings[k]);
-    }
-    json += timeline.warnings.empty() ? "]}\n" : "\n]}\n";
-    return json;
 }
 
 }  // namespace
@@ -169,7 +114,7 @@ tf_status tf_timeline_set_syllable_confidence(tf_timeline* timeline, size_t inde
         require_non_null(timeline, "timeline");
         Syllable& syllable = syllable_at(timeline, index);
         if (!(confidence >= 0.0 && confidence <= 1.0)) {
-            throw InvalidArgument("confidence", "expected 0..1, got " + json_number(confidence));
+            throw InvalidArgument("confidence", "expected 0..1, got " + number_text(confidence));
         }
         syllable.confidence = confidence;
     });
@@ -277,7 +222,24 @@ tf_status tf_timeline_to_json(const tf_timeline* timeline, char** out_json, size
     return guard([&] {
         require_non_null(timeline, "timeline");
         require_non_null(out_json, "out_json");
-        talkface::capi::give_document(timeline_json(timeline->timeline), out_json, out_len);
+        talkface::capi::give_document(talkface::timeline_to_json(timeline->timeline), out_json, out_len);
+    });
+}
+
+tf_status tf_timeline_from_json(const char* json, size_t length, const char* source_name, tf_timeline** out) {
+    return guard([&] {
+        require_non_null(json, "json");
+        require_non_null(out, "out");
+        *out = new tf_timeline{talkface::timeline_from_json(std::string_view(json, length),
+                                                            source_name != nullptr ? source_name : "<timeline>")};
+    });
+}
+
+tf_status tf_timeline_load_json(const char* path, tf_timeline** out) {
+    return guard([&] {
+        require_non_null(path, "path");
+        require_non_null(out, "out");
+        *out = new tf_timeline{talkface::load_timeline_json(path)};
     });
 }
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Generates src/speech/data/phrases.cpp: words that fix the reading of a polyphonic character
+"""Generates src/text/data/phrases.cpp: words that fix the reading of a polyphonic character
 (首都 shou3 du1, 都是 dou1 shi4), in Simplified and Traditional characters, for the transcript
 reader's longest-match lookup.
 
@@ -24,7 +24,7 @@ import pinyin_rules  # noqa: E402
 
 ANDROID_DB = "/usr/share/pyzy/db/android.db"
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-OUTPUT = os.path.join(ROOT, "src", "speech", "data", "phrases.cpp")
+OUTPUT = os.path.join(ROOT, "src", "text", "data", "phrases.cpp")
 
 
 def read_android_db():

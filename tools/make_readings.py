@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Generates src/speech/data/readings.cpp: every Han character's Mandarin readings, most frequent
+"""Generates src/text/data/readings.cpp: every Han character's Mandarin readings, most frequent
 first, in numbered pinyin, plus the set of legal toneless syllables, from Unihan.
 
 Source: /usr/share/unicode/Unihan_Readings.txt.bz2 (Debian package unicode-data; the Unicode
@@ -23,7 +23,7 @@ import embed_text  # noqa: E402
 
 UNIHAN = "/usr/share/unicode/Unihan_Readings.txt.bz2"
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-OUTPUT = os.path.join(ROOT, "src", "speech", "data", "readings.cpp")
+OUTPUT = os.path.join(ROOT, "src", "text", "data", "readings.cpp")
 
 # Fields from modern dictionaries and corpora: a character with more than one toneless reading
 # here is polyphonic for make_phrases.py. kHanyuPinyin (a historical dictionary) lists many

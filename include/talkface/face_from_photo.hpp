@@ -20,7 +20,7 @@
 #include <string_view>
 #include <vector>
 
-#include "talkface/export.h"
+#include "talkface/photo_export.h"
 #include "talkface/face_model.hpp"
 #include "talkface/types.hpp"
 
@@ -53,11 +53,11 @@ enum class PhotoLocator : int {
 };
 
 /// "thesis", "dlib" or "automatic".
-TALKFACE_API const char* photo_locator_name(PhotoLocator locator);
+TALKFACE_PHOTO_API const char* photo_locator_name(PhotoLocator locator);
 /// Parses a name as photo_locator_name() writes it. \throws talkface::InvalidArgument listing them.
-TALKFACE_API PhotoLocator photo_locator_from_name(std::string_view name);
+TALKFACE_PHOTO_API PhotoLocator photo_locator_from_name(std::string_view name);
 /// Whether this build of talkface has the dlib locator (TALKFACE_WITH_DLIB).
-TALKFACE_API bool has_dlib_locator();
+TALKFACE_PHOTO_API bool has_dlib_locator();
 
 /// How a photo is read.
 struct PhotoOptions {
@@ -111,7 +111,7 @@ struct PhotoFaceResult {
     PhotoBox face_box;                   ///< the detected face
     int faces_found = 0;                 ///< faces detected in the photo
     /// The confidence of the named feature. \throws talkface::InvalidArgument for an unknown name.
-    TALKFACE_API double confidence(std::string_view feature_name) const;
+    TALKFACE_PHOTO_API double confidence(std::string_view feature_name) const;
 };
 
 /// Extracts a face model from a frontal photo of a neutral face.
@@ -121,7 +121,7 @@ struct PhotoFaceResult {
 ///         the photo or face too dark; the face not frontal enough (turned, tilted or a profile).
 ///         Also for PhotoLocator::dlib without dlib support, and for bad options.
 /// \throws talkface::FileError if a Haar cascade or the dlib model cannot be found or read.
-TALKFACE_API PhotoFaceResult face_from_photo(const ImageView& photo, const PhotoOptions& options = {});
+TALKFACE_PHOTO_API PhotoFaceResult face_from_photo(const ImageView& photo, const PhotoOptions& options = {});
 
 /// Reads a PNG (any bit depth; transparency shown on white) or JPEG (RGB or greyscale, EXIF
 /// orientation applied) of at most 100 megapixels and calls face_from_photo(); error messages name
@@ -129,16 +129,16 @@ TALKFACE_API PhotoFaceResult face_from_photo(const ImageView& photo, const Photo
 /// \throws talkface::FileError naming the path and what is wrong if the file cannot be opened, is
 ///         empty, is not a PNG or JPEG (other formats are named), is broken or truncated, is a CMYK
 ///         JPEG, or is larger than 100 megapixels; otherwise as face_from_photo().
-TALKFACE_API PhotoFaceResult face_from_photo_file(const std::string& path, const PhotoOptions& options = {});
+TALKFACE_PHOTO_API PhotoFaceResult face_from_photo_file(const std::string& path, const PhotoOptions& options = {});
 
 /// The photo with the extracted points drawn on it (points coloured by feature, the hair polygon,
 /// the face contour, weak features in red), written as a PNG through a temporary file and a rename.
 /// \throws talkface::InvalidArgument for a malformed view; talkface::FileError if it cannot write.
-TALKFACE_API void write_photo_overlay(const ImageView& photo, const PhotoFaceResult& result,
+TALKFACE_PHOTO_API void write_photo_overlay(const ImageView& photo, const PhotoFaceResult& result,
                                       const std::string& output_png_path);
 /// As above, reading the photo (PNG or JPEG) from a file. \throws talkface::FileError if it cannot be
 /// read, as face_from_photo_file() says.
-TALKFACE_API void write_photo_overlay(const std::string& photo_path, const PhotoFaceResult& result,
+TALKFACE_PHOTO_API void write_photo_overlay(const std::string& photo_path, const PhotoFaceResult& result,
                                       const std::string& output_png_path);
 
 }  // namespace v0

@@ -11,7 +11,7 @@
 #include "talkface/export.h"
 #include "talkface/expression.hpp"
 #include "talkface/face_model.hpp"
-#include "talkface/mouth_shape.hpp"
+#include "talkface/mouth_controls.hpp"
 #include "talkface/types.hpp"
 
 namespace talkface {

@@ -568,14 +568,26 @@ TF_API tf_status tf_timeline_warning_count(const tf_timeline *timeline, size_t *
  * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or an argument is NULL. */
 TF_API tf_status tf_timeline_warning(const tf_timeline *timeline, size_t index, const char **out_warning);
 
-/* The timeline as the `align` JSON document (SPEC "Contracts"), UTF-8:
- * {"sentences":[{"text","start","end"}], "syllables":[{"text","pinyin","start","end","sentence",
- * "final_start" (only when known),"confidence","pause_after"}], "duration":s, "warnings":[...]},
- * numbers in shortest round-trip form. Release *out_json with tf_free; *out_len (if not NULL) is
- * its length in bytes without the NUL. talkface reads no JSON in C: parse the document with your
- * JSON library and rebuild it with tf_timeline_create and the add functions.
+/* The timeline as the timeline JSON (docs/timeline-format.md; the `align` document of SPEC
+ * "Contracts", versioned), UTF-8: {"version":1, "sentences":[{"text","start","end"}],
+ * "syllables":[{"text","pinyin","start","end","sentence","final_start" (only when known),
+ * "confidence","pause_after"}], "duration":s, "warnings":[...]}, numbers in shortest round-trip
+ * form, so that tf_timeline_from_json reads back the same timeline. Release *out_json with
+ * tf_free; *out_len (if not NULL) is its length in bytes without the NUL.
  * Errors: TF_ERR_INVALID_ARGUMENT if timeline or out_json is NULL. */
 TF_API tf_status tf_timeline_to_json(const tf_timeline *timeline, char **out_json, size_t *out_len);
+
+/* Reads the timeline JSON (`length` bytes of UTF-8) into a new timeline *out; source_name (may be
+ * NULL: "<timeline>") names it in messages. Keys left out take their defaults (times 0).
+ * Errors: TF_ERR_PARSE naming source:line:column and the item ("syllables[3].start") for text that
+ *         is not JSON, a missing or mistyped key, a negative time, an end before its start, or a
+ *         "version" newer than this build reads; TF_ERR_INVALID_ARGUMENT if json or out is NULL. */
+TF_API tf_status tf_timeline_from_json(const char *json, size_t length, const char *source_name,
+                                       tf_timeline **out);
+
+/* tf_timeline_from_json of a file. Errors: TF_ERR_FILE naming the path if it cannot be read;
+ * TF_ERR_PARSE as tf_timeline_from_json; TF_ERR_INVALID_ARGUMENT if path or out is NULL. */
+TF_API tf_status tf_timeline_load_json(const char *path, tf_timeline **out);
 
 /* 1 if `syllable` is a legal Mandarin syllable in numbered pinyin ("hang2", "lv4", "ma5"), else 0
  * (also for NULL). */
@@ -1095,95 +1107,6 @@ TF_API tf_status tf_write_web_page(const tf_face_model *face, const tf_svg_optio
                                    const tf_animation *animation, const tf_timeline *timeline,
                                    const char *audio_path, const tf_web_page_options *page_options,
                                    const char *path);
-
-/* ---------------------------------------------------------------------------------------------
- * Face from a photo (SPEC step 1; thesis 2.2, Chen and Tsai's method; talkface/face_from_photo.hpp).
- * The points are in the photo's pixels. Photo errors are TF_ERR_INVALID_ARGUMENT with a message that
- * names the photo and what was wrong: no face, several faces (set a face index), face too small, too
- * dark, not frontal enough. A missing Haar cascade or dlib model is TF_ERR_FILE.
- * ------------------------------------------------------------------------------------------- */
-
-/* How the bytes of one pixel are laid out (8 bits per channel). */
-typedef enum tf_pixel_format {
-    TF_PIXEL_FORMAT_GRAY8 = 0,
-    TF_PIXEL_FORMAT_RGB8 = 1,
-    TF_PIXEL_FORMAT_BGR8 = 2,
-    TF_PIXEL_FORMAT_RGBA8 = 3
-} tf_pixel_format;
-
-/* Which locator finds eyes, brows, nose, mouth and jaw. */
-typedef enum tf_photo_locator {
-    TF_PHOTO_LOCATOR_THESIS = 0,    /* knowledge-based edge detection, OpenCV only */
-    TF_PHOTO_LOCATOR_DLIB = 1,      /* dlib's 68-point shape predictor */
-    TF_PHOTO_LOCATOR_AUTOMATIC = 2  /* dlib where built in and installed, else thesis */
-} tf_photo_locator;
-
-/* 1 if this build has the dlib locator, else 0. */
-TF_API int tf_has_dlib_locator(void);
-
-/* Options for reading a photo; NULL everywhere means the defaults (automatic locator, refuse a
- * photo with several faces, opencv-data's cascades, libdlib-data's model). Created by
- * tf_photo_options_create, released by tf_photo_options_destroy. */
-typedef struct tf_photo_options tf_photo_options;
-
-/* Errors: TF_ERR_INVALID_ARGUMENT if out is NULL. */
-TF_API tf_status tf_photo_options_create(tf_photo_options **out);
-/* Releases options. Accepts NULL. */
-TF_API void tf_photo_options_destroy(tf_photo_options *options);
-/* Errors: TF_ERR_INVALID_ARGUMENT for a value outside tf_photo_locator or a NULL options. */
-TF_API tf_status tf_photo_options_set_locator(tf_photo_options *options, tf_photo_locator locator);
-/* Which face to use when the photo shows several, 0 = leftmost; -1 refuses such a photo.
- * Errors: TF_ERR_INVALID_ARGUMENT if face_index < -1 or options is NULL. */
-TF_API tf_status tf_photo_options_set_face_index(tf_photo_options *options, int face_index);
-/* Folder holding OpenCV's Haar cascades (copied). Errors: TF_ERR_INVALID_ARGUMENT for NULL. */
-TF_API tf_status tf_photo_options_set_cascade_dir(tf_photo_options *options, const char *folder);
-/* dlib's shape_predictor_68_face_landmarks.dat (copied). Errors: TF_ERR_INVALID_ARGUMENT for NULL. */
-TF_API tf_status tf_photo_options_set_dlib_model_path(tf_photo_options *options, const char *path);
-
-/* What a photo gave: the face and the confidence of every located feature. Created by
- * tf_photo_result_from_file / _from_pixels, released by tf_photo_result_destroy. */
-typedef struct tf_photo_result tf_photo_result;
-
-/* Reads a PNG or JPEG photo (at most 100 megapixels) and extracts its face. options may be NULL.
- * Errors: TF_ERR_FILE if the photo cannot be read or decoded (the message names the path and why:
- * missing, another format, broken, truncated, too large); TF_ERR_INVALID_ARGUMENT as described above. */
-TF_API tf_status tf_photo_result_from_file(const char *path, const tf_photo_options *options,
-                                           tf_photo_result **out);
-/* The same from pixels the caller owns (row y at pixels + y * stride_bytes), read during the call.
- * Errors: TF_ERR_INVALID_ARGUMENT for a malformed image or as described above. */
-TF_API tf_status tf_photo_result_from_pixels(const uint8_t *pixels, int width, int height, int stride_bytes,
-                                             tf_pixel_format format, const tf_photo_options *options,
-                                             tf_photo_result **out);
-/* Releases a result. Accepts NULL. */
-TF_API void tf_photo_result_destroy(tf_photo_result *result);
-/* A copy of the extracted face; release it with tf_face_model_destroy.
- * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
-TF_API tf_status tf_photo_result_face(const tf_photo_result *result, tf_face_model **out);
-/* The number of located features. Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
-TF_API tf_status tf_photo_result_feature_count(const tf_photo_result *result, size_t *out_count);
-/* Feature `index`: its name (borrowed, valid while the result lives), confidence 0..1, and whether
- * its points come from the default face's proportions because it was not found (1) or not (0).
- * Any out pointer may be NULL. Errors: TF_ERR_INVALID_ARGUMENT if index is out of range. */
-TF_API tf_status tf_photo_result_feature(const tf_photo_result *result, size_t index, const char **out_name,
-                                         double *out_confidence, int *out_from_prior);
-/* The confidence of the named feature ("left_eye", "mouth", "hair", ...).
- * Errors: TF_ERR_INVALID_ARGUMENT for an unknown name or a NULL argument. */
-TF_API tf_status tf_photo_result_confidence(const tf_photo_result *result, const char *feature_name,
-                                            double *out_confidence);
-/* The locator that was used (never TF_PHOTO_LOCATOR_AUTOMATIC).
- * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
-TF_API tf_status tf_photo_result_locator(const tf_photo_result *result, tf_photo_locator *out_locator);
-/* Writes the photo at photo_path with the extracted points drawn on it as a PNG, atomically.
- * Errors: TF_ERR_FILE if the photo cannot be read or the PNG written. */
-TF_API tf_status tf_photo_result_write_overlay(const tf_photo_result *result, const char *photo_path,
-                                               const char *output_png_path);
-
-/* Shortcuts that keep only the face. options may be NULL. Errors as tf_photo_result_from_*. */
-TF_API tf_status tf_face_model_from_photo_file(const char *path, const tf_photo_options *options,
-                                               tf_face_model **out);
-TF_API tf_status tf_face_model_from_photo_pixels(const uint8_t *pixels, int width, int height, int stride_bytes,
-                                                 tf_pixel_format format, const tf_photo_options *options,
-                                                 tf_face_model **out);
 
 #ifdef __cplusplus
 }

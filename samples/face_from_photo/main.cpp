@@ -7,6 +7,7 @@
 #include <iostream>
 #include <string>
 
+#include <talkface/face_from_photo.hpp>
 #include <talkface/talkface.hpp>
 
 int main(int argc, char** argv) {

@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "animation/lip_sync_checks.hpp"
-#include "expression/envelopes.hpp"
+#include "common/easing.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/lip_sync.hpp"
 

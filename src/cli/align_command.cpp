@@ -1,6 +1,5 @@
 // `talkface align`: a speech and its transcript in, each sentence's and syllable's times out
 // (SPEC "Contracts"), with an optional picture of the result (thesis Figures 3.5 and 3.8).
-#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -10,7 +9,6 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 #include <talkface/talkface.hpp>
 
 #include "commands.hpp"
@@ -56,28 +54,6 @@ const CLI::Validator& pause_validator() {
     return validator;
 }
 
-// Milliseconds are the aligner's resolution; more digits would only be noise in the file.
-double rounded(double seconds) { return std::round(seconds * 1000.0) / 1000.0; }
-
-std::string timeline_json(const talkface::Timeline& timeline) {
-    nlohmann::ordered_json document;
-    document["sentences"] = nlohmann::ordered_json::array();
-    for (const auto& sentence : timeline.sentences)
-        document["sentences"].push_back(
-            {{"text", sentence.text}, {"start", rounded(sentence.start_s)}, {"end", rounded(sentence.end_s)}});
-    document["syllables"] = nlohmann::ordered_json::array();
-    for (const auto& syllable : timeline.syllables) {
-        nlohmann::ordered_json entry{{"text", syllable.text},          {"pinyin", syllable.pinyin},
-                                     {"start", rounded(syllable.start_s)}, {"end", rounded(syllable.end_s)},
-                                     {"sentence", syllable.sentence}};
-        if (syllable.final_start_s) entry["final_start"] = rounded(*syllable.final_start_s);
-        entry["confidence"] = std::round(syllable.confidence * 100.0) / 100.0;
-        document["syllables"].push_back(entry);
-    }
-    document["warnings"] = timeline.warnings;
-    return document.dump(2) + "\n";
-}
-
 std::string timeline_table(const talkface::Timeline& timeline) {
     std::ostringstream out;
     out << std::fixed << std::setprecision(3);
@@ -114,7 +90,7 @@ void run_align(const AlignCommandOptions& options) {
         timeline = aligner.align_file(options.audio_path, transcript, progress_part(bar.get(), 0.0, 1.0));
     }
     // Everything is computed before any output is written: a failure leaves no file behind.
-    const std::string result = options.json ? timeline_json(timeline) : timeline_table(timeline);
+    const std::string result = options.json ? talkface::timeline_to_json(timeline) : timeline_table(timeline);
     const std::string plot = options.plot_path.empty() ? std::string() : talkface::alignment_plot_svg(options.audio_path, timeline);
     if (!options.plot_path.empty()) talkface::detail::write_file_atomically(options.plot_path, plot);
     if (options.output_path == "-") std::cout << result << std::flush;
@@ -136,8 +112,9 @@ void setup_align_command(CLI::App& app) {
         ->required()
         ->check(CLI::ExistingFile);
     align->add_flag("--json", options->json,
-                    "Print JSON: {\"sentences\":[{text,start,end}], \"syllables\":[{text,pinyin,start,end,sentence,"
-                    "final_start,confidence}], \"warnings\":[...]}, times in seconds");
+                    "Print the timeline JSON: {\"version\":1, \"sentences\":[{text,start,end}], \"syllables\":[{text,"
+                    "pinyin,start,end,sentence,final_start,confidence,pause_after}], \"duration\":s, "
+                    "\"warnings\":[...]}, times in seconds (docs/timeline-format.md)");
     align->add_option("--plot", options->plot_path, "Also draw the waveform, sentences and syllables as an SVG file");
     align->add_option("--first-pause", options->first_pause_text,
                       "Cut sentences by thesis Algorithm 3.1 from this pause between the first two sentences, in "

@@ -6,6 +6,7 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
+#include <talkface/face_from_photo.hpp>
 #include <talkface/talkface.hpp>
 
 #include "commands.hpp"

@@ -61,8 +61,7 @@ Json parse_json(const std::string& path) {
     }
 }
 
-// Reads the items of a document the way bindings/python/talkface/timeline_json.py does, with the same
-// item names ("syllables[3].start") in messages.
+// Reads the items of an events document, naming them ("events[3].start") in messages.
 class DocumentReader {
 public:
     explicit DocumentReader(std::string path) : path_(std::move(path)) {}
@@ -111,54 +110,6 @@ private:
     std::string path_;
 };
 
-// The `align` JSON (SPEC "Contracts"), plus the optional keys timeline_to_json writes.
-talkface::Timeline read_timeline(const std::string& path) {
-    const Json document = parse_json(path);
-    const DocumentReader reader(path);
-    reader.object(document, "document");
-    talkface::Timeline timeline;
-    const Json& sentences = reader.list(reader.member(document, "sentences", "document"), "sentences");
-    const Json& syllables = reader.list(reader.member(document, "syllables", "document"), "syllables");
-    for (std::size_t k = 0; k < sentences.size(); ++k) {
-        const std::string item = "sentences[" + std::to_string(k) + "]";
-        const Json& entry = reader.object(sentences[k], item);
-        timeline.sentences.push_back({reader.text(entry, "text", item), reader.number(entry, "start", item, 0.0),
-                                      reader.number(entry, "end", item, 0.0)});
-    }
-    for (std::size_t k = 0; k < syllables.size(); ++k) {
-        const std::string item = "syllables[" + std::to_string(k) + "]";
-        const Json& entry = reader.object(syllables[k], item);
-        talkface::Syllable syllable;
-        syllable.text = reader.text(entry, "text", item);
-        syllable.pinyin = reader.text(entry, "pinyin", item);
-        const Json& sentence = reader.member(entry, "sentence", item);
-        if (!sentence.is_number_unsigned() || sentence.get<std::size_t>() >= timeline.sentences.size()) {
-            reader.fail(item + ".sentence", "expected a sentence index 0.." +
-                                                std::to_string(static_cast<long>(timeline.sentences.size()) - 1) +
-                                                ", found " + sentence.dump());
-        }
-        syllable.sentence = sentence.get<std::size_t>();
-        syllable.start_s = reader.number(entry, "start", item, 0.0);
-        syllable.end_s = reader.number(entry, "end", item, 0.0);
-        if (entry.contains("final_start") && !entry.at("final_start").is_null()) {
-            syllable.final_start_s = reader.number(entry, "final_start", item, std::nullopt);
-        }
-        syllable.confidence = reader.number(entry, "confidence", item, 1.0);
-        if (syllable.confidence < 0.0 || syllable.confidence > 1.0) {
-            reader.fail(item + ".confidence", "expected 0..1, found " + entry.at("confidence").dump());
-        }
-        if (entry.contains("pause_after")) {
-            if (!entry.at("pause_after").is_boolean()) {
-                reader.fail(item + ".pause_after", "expected true or false, found " + entry.at("pause_after").dump());
-            }
-            syllable.pause_after = entry.at("pause_after").get<bool>();
-        }
-        timeline.syllables.push_back(std::move(syllable));
-    }
-    timeline.duration_s = reader.number(document, "duration", "document", 0.0);
-    return timeline;
-}
-
 // docs/events-format.md: the "events" list of the keyframes JSON, alone or inside a document.
 std::vector<talkface::ExpressionEvent> read_events(const std::string& path) {
     const Json document = parse_json(path);
@@ -184,7 +135,7 @@ std::vector<talkface::ExpressionEvent> read_events(const std::string& path) {
 }
 
 talkface::Timeline timeline_for(const KeyframesOptions& options) {
-    if (!options.timeline_path.empty()) return read_timeline(options.timeline_path);
+    if (!options.timeline_path.empty()) return talkface::load_timeline_json(options.timeline_path);
     const talkface::Timeline transcript = talkface::load_transcript(options.transcript_path);
     return talkface::SpeechAligner().align_file(options.audio_path, transcript);
 }
@@ -230,7 +181,7 @@ void setup_keyframes_command(CLI::App& app) {
     keyframes->add_option("TRANSCRIPT", options->transcript_path, "Its transcript, UTF-8")->check(CLI::ExistingFile);
     keyframes
         ->add_option("--timeline", options->timeline_path,
-                     "An aligned timeline (the JSON of `talkface align`) instead of AUDIO TRANSCRIPT")
+                     "An aligned timeline (the timeline JSON of `talkface align --json`) instead of AUDIO TRANSCRIPT")
         ->check(CLI::ExistingFile);
     keyframes->add_option("--seed", options->seed, "Seed of the simulated events; the same seed, the same events")
         ->capture_default_str();

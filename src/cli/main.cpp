@@ -31,7 +31,9 @@ int main(int argc, char** argv) {
     talkface_cli::setup_syllables_command(app);
     talkface_cli::setup_keyframes_command(app);
     talkface_cli::setup_align_command(app);
+#ifdef TALKFACE_WITH_PHOTO
     talkface_cli::setup_face_from_photo_command(app);
+#endif
     talkface_cli::setup_animate_command(app);
     talkface_cli::setup_demo_command(app);
 

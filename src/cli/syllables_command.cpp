@@ -5,7 +5,6 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 #include <talkface/talkface.hpp>
 
 #include "commands.hpp"
@@ -19,22 +18,6 @@ struct SyllablesOptions {
     bool json = false;
     bool no_pinyin_input = false;
 };
-
-// SPEC "Contracts": {"sentences":[{"text"}], "syllables":[{"text","pinyin","sentence"}],
-// "warnings":[...]}, keys in that order (ordered_json), characters as UTF-8, not \u escapes.
-std::string timeline_json(const talkface::Timeline& timeline) {
-    nlohmann::ordered_json document;
-    document["sentences"] = nlohmann::ordered_json::array();
-    for (const auto& sentence : timeline.sentences)
-        document["sentences"].push_back({{"text", sentence.text}});
-    document["syllables"] = nlohmann::ordered_json::array();
-    for (const auto& syllable : timeline.syllables) {
-        document["syllables"].push_back(
-            {{"text", syllable.text}, {"pinyin", syllable.pinyin}, {"sentence", syllable.sentence}});
-    }
-    document["warnings"] = timeline.warnings;
-    return document.dump(2);
-}
 
 void print_plain(const talkface::Timeline& timeline) {
     std::size_t next = 0;
@@ -53,7 +36,9 @@ void run_syllables(const SyllablesOptions& options) {
     transcript_options.read_pinyin = !options.no_pinyin_input;
     const auto timeline = talkface::load_transcript(options.transcript_path, transcript_options);
     if (options.json) {
-        std::cout << timeline_json(timeline) << '\n';
+        talkface::TimelineJsonOptions json_options;
+        json_options.with_times = false;
+        std::cout << talkface::timeline_to_json(timeline, json_options);
         return;
     }
     print_plain(timeline);
@@ -73,7 +58,8 @@ void setup_syllables_command(CLI::App& app) {
         ->required()
         ->check(CLI::ExistingFile);
     syllables->add_flag("--json", options->json,
-                        "Print JSON: {\"sentences\":[...], \"syllables\":[...], \"warnings\":[...]}");
+                        "Print the timeline JSON without times: {\"version\":1, \"sentences\":[{text}], "
+                        "\"syllables\":[{text,pinyin,sentence,pause_after}], \"warnings\":[...]}");
     syllables->add_flag("--no-pinyin-input", options->no_pinyin_input,
                         "Report Latin letters as unreadable instead of reading them as pinyin");
     syllables->callback([options] { run_syllables(*options); });

@@ -5,14 +5,18 @@
 #include <string>
 #include <string_view>
 
+#include "talkface/export.h"
+
+// Exported from libtalkface though not in its installed headers, for talkface's own programs and
+// libraries (the command, talkface::photo), so each does not compile a copy: not API, may change.
 namespace talkface::detail {
 
 // Writes `content` to `path` atomically. On failure the temporary file is removed, `path` is left
 // as it was, and talkface::FileError names the path and the OS reason.
-void write_file_atomically(const std::string& path, std::string_view content);
+TALKFACE_API void write_file_atomically(const std::string& path, std::string_view content);
 
 // Reads a whole file. Throws talkface::FileError naming the path and the OS reason.
-std::string read_file(const std::string& path);
+TALKFACE_API std::string read_file(const std::string& path);
 
 }  // namespace talkface::detail
 

@@ -2,17 +2,9 @@
 #ifndef TALKFACE_EXPRESSION_ENVELOPES_HPP
 #define TALKFACE_EXPRESSION_ENVELOPES_HPP
 
-#include <algorithm>
-#include <cmath>
+#include "common/easing.hpp"
 
 namespace talkface::detail {
-
-// Cosine ease in and out: 0 at 0, 1 at 1, zero slope at both ends, so a movement starts and stops
-// without a jerk; clamped outside [0, 1].
-inline double ease_in_out(double fraction) {
-    const double u = std::clamp(fraction, 0.0, 1.0);
-    return 0.5 - 0.5 * std::cos(u * 3.14159265358979323846);
-}
 
 // Blink lids over the event, 0..1: closing in the first 30%, reopening over the other 70% (the
 // lid falls faster than it rises: VanderWerf et al. 2003).

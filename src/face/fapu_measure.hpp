@@ -4,6 +4,7 @@
 
 #include <string_view>
 
+#include "talkface/export.h"
 #include "talkface/face_model.hpp"
 
 namespace talkface::detail {
@@ -17,7 +18,8 @@ namespace talkface::detail {
 //   r1, r2     half of LeftEyeH, RightEyeH (MPEG-4 neutral face: the eyelids touch the iris)
 //   EyebrowH   0.12 d, EyebrowH2 0.09 d: the brow's thickness at 4.4 and 4.4a times 1.3 (Algorithm 2.1
 //              puts G and F that far below); not measurable from the 72 points, so set from d.
-double measured_fapu(const FaceModel& face, std::string_view name);
+// Exported from libtalkface for talkface::photo (not in the installed headers: not API).
+TALKFACE_API double measured_fapu(const FaceModel& face, std::string_view name);
 
 }  // namespace talkface::detail
 

@@ -2,7 +2,6 @@
 
 #include <cstddef>
 
-#include "render/svg_text.hpp"
 
 namespace talkface::detail {
 
@@ -48,58 +47,6 @@ std::vector<CubicSegment> closed_curve_segments(const std::vector<Point2>& point
                                                points[(i + 1) % n], points[(i + 2) % n]));
     }
     return segments;
-}
-
-void PathData::append_point(Point2 point) {
-    append_fixed(text_, point.x, decimals_);
-    text_ += ',';
-    append_fixed(text_, point.y, decimals_);
-}
-
-PathData& PathData::move_to(Point2 point) {
-    if (!text_.empty()) text_ += ' ';
-    text_ += 'M';
-    append_point(point);
-    return *this;
-}
-
-PathData& PathData::line_to(Point2 point) {
-    text_ += " L";
-    append_point(point);
-    return *this;
-}
-
-PathData& PathData::curves(const std::vector<CubicSegment>& segments) {
-    for (const CubicSegment& segment : segments) {
-        text_ += " C";
-        append_point(segment.c1);
-        text_ += ' ';
-        append_point(segment.c2);
-        text_ += ' ';
-        append_point(segment.end);
-    }
-    return *this;
-}
-
-PathData& PathData::arc(const std::vector<Point2>& points) { return curves(arc_segments(points)); }
-
-PathData& PathData::corner_cut_closed(const std::vector<Point2>& corners) {
-    const std::size_t n = corners.size();
-    if (n < 3) return *this;
-    auto middle = [&](std::size_t i) { return 0.5 * (corners[i % n] + corners[(i + 1) % n]); };
-    move_to(middle(n - 1));
-    for (std::size_t i = 0; i < n; ++i) {
-        text_ += " Q";
-        append_point(corners[i]);
-        text_ += ' ';
-        append_point(middle(i));
-    }
-    return close();
-}
-
-PathData& PathData::close() {
-    text_ += " Z";
-    return *this;
 }
 
 }  // namespace talkface::detail

@@ -3,7 +3,6 @@
 #ifndef TALKFACE_RENDER_CURVES_HPP
 #define TALKFACE_RENDER_CURVES_HPP
 
-#include <string>
 #include <vector>
 
 #include "talkface/types.hpp"
@@ -31,30 +30,6 @@ CubicSegment rim_segment(Point2 start, Point2 middle, Point2 end);
 // A closed Catmull-Rom curve through every point, smooth everywhere (the face contour, whose
 // four arcs meet without corners). Starts and ends at points.front().
 std::vector<CubicSegment> closed_curve_segments(const std::vector<Point2>& points);
-
-// SVG path data, coordinates with `decimals` digits after the point.
-class PathData {
-public:
-    explicit PathData(int decimals) : decimals_(decimals) {}
-    PathData& move_to(Point2 point);
-    PathData& line_to(Point2 point);
-    PathData& curves(const std::vector<CubicSegment>& segments);
-    // The closed polygon `corners` cut at its corners without end (Chaikin's corner cutting: each
-    // edge keeps its 1/4 and 3/4 points, round after round): the limit is the quadratic B-spline
-    // of the polygon, one quadratic Bezier segment per corner, from the middle of the edge before
-    // it to the middle of the edge after it, with the corner as its control point. Inside the
-    // polygon's convex hull. Starts with a move.
-    PathData& corner_cut_closed(const std::vector<Point2>& corners);
-    // arc(points) drawn from points.front(), which must be the pen's position (or a new move).
-    PathData& arc(const std::vector<Point2>& points);
-    PathData& close();
-    const std::string& str() const { return text_; }
-
-private:
-    void append_point(Point2 point);
-    int decimals_;
-    std::string text_;
-};
 
 }  // namespace talkface::detail
 

@@ -36,7 +36,6 @@ KeyFrames choose_key_frames(const Track& track, std::size_t frame_count,
     };
     KeyFrames keys;
     keys.values.width = width;
-    keys.values.pieces = track.pieces;
     double start = 0.0;
     std::vector<double> start_values(width);
     for (std::size_t k = 0; k < width; ++k) start_values[k] = value(0, k);

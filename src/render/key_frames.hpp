@@ -9,9 +9,8 @@
 
 namespace talkface::detail {
 
-// One attribute of the first frame's document, followed through every frame.
+// One numeric attribute of a layer (drawing.hpp), followed through every frame.
 struct Track {
-    std::vector<std::string> pieces;  // the text around its numbers
     std::size_t width = 0;            // numbers per frame
     std::vector<float> numbers;       // width numbers per frame, frame after frame
     bool varies = false;
@@ -20,7 +19,7 @@ struct Track {
 // The key frames of one attribute: where they stand on the frame axis, and their numbers.
 struct KeyFrames {
     std::vector<double> positions;  // in frames, rising from 0 to the last frame
-    Track values;                   // one row of the track's width per key, with the track's pieces
+    Track values;                   // one row of the track's width per key
 };
 
 // Key frames for linear interpolation within `tolerances` (one per number of a frame) of every

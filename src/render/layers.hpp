@@ -1,14 +1,15 @@
-// The drawing of each SVG layer (thesis 6.3.1) from a projected face. Each function returns the
-// layer's content, to go inside its <g id="..."> group.
+// The layers of thesis 6.3.1 built from a projected face, as the drawing model (drawing.hpp): what
+// the SVG writers and the raster renderer draw. Each builder returns one layer's content.
 #ifndef TALKFACE_RENDER_LAYERS_HPP
 #define TALKFACE_RENDER_LAYERS_HPP
 
-#include <array>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
 #include <vector>
 
+#include "render/drawing.hpp"
 #include "talkface/face_pose.hpp"
 #include "talkface/types.hpp"
 
@@ -16,8 +17,8 @@ namespace talkface::detail {
 
 // What every layer draws with.
 struct LayerStyle {
-    int decimals = 2;        // digits after the point in coordinates
-    double stroke_px = 1.0;  // outline width
+    int decimals = 2;        // digits after the point when the layer is written as SVG
+    double stroke_px = 1.0;  // outline width, in the drawing's units
 };
 
 // The canvas in the face's image pixels (the SVG user space is the face's image space).
@@ -50,14 +51,14 @@ private:
     double cos_ = 1.0, sin_ = 0.0;
 };
 
-// What every state of one face is drawn with: the style, the paint attributes and gradients, and
-// where each point id stands in ProjectedFace::image_xy (the same for every state of a face). An
-// animation builds it once instead of once a frame, and sets its view per frame.
+// What every state of one face is drawn with: the style, the paints and gradients, and where each
+// point id stands in ProjectedFace::image_xy (the same for every state of a face). An animation
+// builds it once instead of once a frame, and sets its view per frame.
 struct FaceLook {
     LayerStyle style;  // in the view's units
     ViewMap view;
-    std::string skin, hair, nose, brows, eye_white, eye_outline, lips, mouth_opening;
-    std::array<std::string, 2> iris_gradients;  // <radialGradient> of the image-left, right iris
+    ShapePaint skin, hair, nose, brows, eye_white, eye_outline, lips, mouth_opening;
+    RadialGradient iris_gradient;  // of both irises
     std::unordered_map<std::string, std::size_t> point_index;
     // A point of `face` by id, in the view. \throws talkface::InvalidArgument for an unknown id.
     Point2 point(const ProjectedFace& face, std::string_view id) const;
@@ -69,16 +70,20 @@ FaceLook make_face_look(const ProjectedFace& face, const LayerStyle& style);
 // The hair polygon of `face` in the look's view: what draw_hair_layer() draws from.
 std::vector<Point2> hair_polygon_in_view(const ProjectedFace& face, const FaceLook& look);
 
-// The hair contour: the 23 hair points, corner-cut (curves.hpp), filled with the hair colour.
-std::string draw_hair_layer(const ProjectedFace& face, const FaceLook& look);
+// The background: a rectangle of `colour` over the canvas, or nothing.
+Layer draw_background_layer(const CanvasBox& canvas, const std::optional<Rgb>& colour);
 
-// Neck and shoulders, placed from O and d of the face. They do not turn with the head.
-std::string draw_clothes_layer(const ProjectedFace& face, const CanvasBox& canvas, Rgb clothes,
-                               const LayerStyle& style);
+// The hair contour: the 23 hair points, corner-cut (Path::corner_cut_closed), filled with the hair
+// colour.
+Layer draw_hair_layer(const ProjectedFace& face, const FaceLook& look);
+
+// Neck and shoulders, placed from O and d of the face, in image pixels. They do not turn with the
+// head.
+Layer draw_clothes_layer(const ProjectedFace& face, const CanvasBox& canvas, Rgb clothes, const LayerStyle& style);
 
 // Ears, face contour, nose, eyebrows, eyes with clipped eyeballs, mouth (Algorithm 2.2), with the
-// clip paths and gradients they use in a <defs> of their own. Ids start with "tf-".
-std::string draw_face_layer(const ProjectedFace& face, const FaceLook& look);
+// clip paths and gradients they use among its definitions. Ids start with "tf-".
+Layer draw_face_layer(const ProjectedFace& face, const FaceLook& look);
 
 }  // namespace talkface::detail
 

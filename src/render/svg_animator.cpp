@@ -2,20 +2,18 @@
 // every frame of one face shares.
 #include "talkface/svg_animator.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "common/atomic_file.hpp"
 #include "common/number_format.hpp"
+#include "render/face_canvas.hpp"
 #include "render/layers.hpp"
 #include "render/svg_animation.hpp"
-#include "render/svg_text.hpp"
+#include "render/svg_document.hpp"
 #include "talkface/errors.hpp"
-#include "talkface/mouth_shape.hpp"
 
 namespace talkface {
 inline namespace v0 {
@@ -23,13 +21,6 @@ inline namespace v0 {
 namespace {
 
 constexpr int kMaxDecimals = 6;
-// Room around the outermost points for the curves' overshoot between points and the outline's
-// width: a Catmull-Rom control point lies at most 1/6 of a neighbour span outside.
-constexpr double kMarginInD = 0.35;
-// The clothes layer reaches this far from O (see clothes_svg.cpp), so the canvas shows them.
-constexpr double kMinHalfWidthInD = 2.2;
-constexpr double kMinBottomBelowOriginInD = 1.9;
-
 void validate(const SvgOptions& options) {
     if (options.decimals < 0 || options.decimals > kMaxDecimals) {
         throw InvalidArgument("decimals", "expected 0.." + std::to_string(kMaxDecimals) + ", found " +
@@ -47,48 +38,6 @@ void validate(const SvgOptions& options) {
         throw InvalidArgument("height_px", "expected >= 0 (0 fits the face), found " +
                                                std::to_string(options.height_px));
     }
-}
-
-// The canvas of a face: every point of the face at the extreme poses (each angle -15, 0 or 15
-// degrees), with the mouth wide open and the brows raised, plus a margin. Centred on O so that the
-// body below it is centred too. Whole pixels, so the viewBox reads cleanly.
-detail::CanvasBox fit_canvas(const FaceModel& face) {
-    double min_x = std::numeric_limits<double>::infinity();
-    double min_y = min_x;
-    double max_x = -min_x;
-    double max_y = -min_x;
-    std::vector<FaceState> states(3);
-    states[1].mouth = mouth_controls(face, MouthShape::a);
-    states[2].expression.brows = 1.0;
-    Point2 origin;
-    double d = 0.0;
-    const double angles[] = {-kMaxPoseAngleDeg, 0.0, kMaxPoseAngleDeg};
-    for (FaceState state : states) {
-        for (double alpha : angles) {
-            for (double beta : angles) {
-                for (double gamma : angles) {
-                    state.pose = {alpha, beta, gamma};
-                    const ProjectedFace projected = project_face(face, state);
-                    for (const Point2& p : projected.image_xy) {
-                        min_x = std::min(min_x, p.x);
-                        max_x = std::max(max_x, p.x);
-                        min_y = std::min(min_y, p.y);
-                        max_y = std::max(max_y, p.y);
-                    }
-                    origin = projected.origin;
-                    d = projected.d;
-                }
-            }
-        }
-    }
-    const double margin = kMarginInD * d;
-    const double half_width =
-        std::max({origin.x - min_x + margin, max_x - origin.x + margin, kMinHalfWidthInD * d});
-    const double top = std::floor(min_y - margin);
-    const double bottom = std::ceil(std::max(max_y + margin, origin.y + kMinBottomBelowOriginInD * d));
-    const double left = std::floor(origin.x - half_width);
-    const double right = std::ceil(origin.x + half_width);
-    return {left, top, right - left, bottom - top};
 }
 
 }  // namespace
@@ -116,7 +65,7 @@ struct SvgAnimator::Impl {
 SvgAnimator::SvgAnimator(FaceModel face, SvgOptions options) {
     validate(options);
     impl_ = std::make_unique<Impl>();
-    const detail::CanvasBox box = fit_canvas(face);
+    const detail::CanvasBox box = detail::fit_face_canvas(face);
     const double aspect = box.width / box.height;
     int width_px = options.width_px;
     int height_px = options.height_px;
@@ -146,17 +95,19 @@ std::string SvgAnimator::render_svg(const FaceState& state) const {
     const detail::LayerStyle style{options.decimals, options.stroke_width_in_d * projected.d};
     // The user space is the face's own image space: a caller can crop or place a document with
     // points from project_face() (the samples zoom on the mouth that way).
-    std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
-    svg += detail::open_svg_root(impl_->canvas, options.decimals, "");
-    svg += detail::draw_background_layer(impl_->canvas, options.background, options.decimals);
+    const int decimals = options.decimals;
+    std::string svg = detail::kXmlDeclaration;
+    svg += detail::open_svg_root(impl_->canvas, decimals, "");
+    svg += detail::background_layer_svg(impl_->canvas, options.background, decimals);
     const detail::FaceLook look = detail::make_face_look(projected, style);
-    svg += "<g id=\"hair\">\n" + detail::draw_hair_layer(projected, look);
-    svg += "</g>\n<g id=\"clothes\">\n";
-    if (options.draw_clothes) {
-        svg += detail::draw_clothes_layer(projected, impl_->canvas.box, options.clothes, style);
-    }
-    svg += "</g>\n<g id=\"face\">\n" + detail::draw_face_layer(projected, look) + "</g>\n</svg>\n";
-    return svg;
+    svg += detail::layer_group_svg("hair", detail::draw_hair_layer(projected, look), decimals);
+    svg += detail::layer_group_svg(
+        "clothes",
+        options.draw_clothes ? detail::draw_clothes_layer(projected, impl_->canvas.box, options.clothes, style)
+                             : detail::Layer(),
+        decimals);
+    svg += detail::layer_group_svg("face", detail::draw_face_layer(projected, look), decimals);
+    return svg + "</svg>\n";
 }
 
 void SvgAnimator::write_svg(const std::string& path, const FaceState& state) const {

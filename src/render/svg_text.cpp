@@ -16,24 +16,38 @@ Rgb blend(Rgb a, Rgb b, double amount) {
     return {channel(a.r, b.r), channel(a.g, b.g), channel(a.b, b.b)};
 }
 
-void append_fixed(std::string& text, double value, int decimals) {
-    static constexpr long long kPowersOfTen[] = {1, 10, 100, 1000, 10000, 100000, 1000000};
-    // Beyond these, or out of a long long's range, the general conversion is as fast as needed.
+namespace {
+
+constexpr long long kPowersOfTen[] = {1, 10, 100, 1000, 10000, 100000, 1000000};
+
+// The value times 10^decimals rounded to a whole number, as format_fixed() rounds it, or false
+// where only the general conversion knows: beyond 6 decimals, out of a long long's range, or on a
+// tie. A product that lands on a tie may have been rounded onto it from either side: the general
+// conversion, which sees the exact value, decides. Elsewhere rounding the product cannot cross a
+// tie, so the digits are the same.
+bool scaled_whole(double value, int decimals, double& scaled) {
     constexpr double kLargestScaled = 1e15;
-    if (decimals < 0 || decimals > 6) {
+    if (decimals < 0 || decimals > 6) return false;
+    const double product = value * static_cast<double>(kPowersOfTen[decimals]);
+    scaled = std::nearbyint(product);
+    return std::abs(scaled) < kLargestScaled && std::abs(product - std::trunc(product)) != 0.5;
+}
+
+// What reading "[-]whole.fraction" gives: the whole part plus the fraction over its power of ten.
+double read_back(bool is_negative, long long whole, long long fraction, long long power) {
+    const double result = static_cast<double>(whole) + static_cast<double>(fraction) / static_cast<double>(power);
+    return is_negative ? -result : result;
+}
+
+}  // namespace
+
+void append_fixed(std::string& text, double value, int decimals) {
+    double scaled = 0.0;
+    if (!scaled_whole(value, decimals, scaled)) {
         text += format_fixed(value, decimals);
         return;
     }
     const long long power = kPowersOfTen[decimals];
-    const double product = value * static_cast<double>(power);
-    const double scaled = std::nearbyint(product);
-    // A product that lands on a tie may have been rounded onto it from either side: the general
-    // conversion, which sees the exact value, decides. Elsewhere rounding the product cannot
-    // cross a tie, so the digits are the same.
-    if (!(std::abs(scaled) < kLargestScaled) || std::abs(product - std::trunc(product)) == 0.5) {
-        text += format_fixed(value, decimals);
-        return;
-    }
     // Digits are written backwards from the end of the buffer, then appended at once.
     char buffer[32];
     char* const end = buffer + sizeof buffer;
@@ -59,20 +73,33 @@ void append_fixed(std::string& text, double value, int decimals) {
     text.append(p, static_cast<std::size_t>(end - p));
 }
 
-std::string attribute(const char* name, const std::string& value) {
-    return std::string(" ") + name + "=\"" + value + "\"";
+double round_as_written(double value, int decimals) {
+    double scaled = 0.0;
+    if (scaled_whole(value, decimals, scaled)) {
+        // The fraction's trailing zeros, which the text leaves out, do not change the quotient: the
+        // division is correctly rounded either way.
+        const long long power = kPowersOfTen[decimals];
+        const long long magnitude = std::llabs(static_cast<long long>(scaled));
+        return read_back(scaled < 0.0, magnitude / power, magnitude % power, power);
+    }
+    // Rare: read the text the general conversion writes, as a reader of the document would.
+    const std::string text = format_fixed(value, decimals);
+    std::size_t i = 0;
+    const bool is_negative = !text.empty() && text[0] == '-';
+    if (is_negative) ++i;
+    long long whole = 0;
+    for (; i < text.size() && text[i] != '.'; ++i) whole = whole * 10 + (text[i] - '0');
+    long long fraction = 0;
+    long long power = 1;
+    for (++i; i < text.size() && power < 1000000000; ++i) {
+        fraction = fraction * 10 + (text[i] - '0');
+        power *= 10;
+    }
+    return read_back(is_negative, whole, fraction, power);
 }
 
-std::string paint(const std::string& fill, const std::string& stroke, double stroke_px, int decimals) {
-    std::string text = attribute("fill", fill);
-    text += attribute("stroke", stroke);
-    if (stroke != "none") {
-        // A thin outline must not round to 0 when coordinates are written with few decimals.
-        text += attribute("stroke-width", format_fixed(stroke_px, std::max(decimals, 2)));
-        text += attribute("stroke-linejoin", "round");
-        text += attribute("stroke-linecap", "round");
-    }
-    return text;
+std::string attribute(const char* name, const std::string& value) {
+    return std::string(" ") + name + "=\"" + value + "\"";
 }
 
 }  // namespace talkface::detail

@@ -15,11 +15,13 @@ Rgb blend(Rgb a, Rgb b, double amount);
 // general-purpose conversion: an animation writes millions of coordinates.
 void append_fixed(std::string& text, double value, int decimals);
 
+// The number a reader of append_fixed(value, decimals)'s text gets back: whole + fraction / 10^n,
+// computed as SVG text would be read, without writing it. The animation encodings compare and
+// interpolate what the document shows, not the unrounded numbers.
+double round_as_written(double value, int decimals);
+
 // An attribute ` name="value"` (value written as given; callers pass numbers, ids, colours).
 std::string attribute(const char* name, const std::string& value);
-
-// Fill and stroke presentation attributes; `fill` or `stroke` "none" turns that paint off.
-std::string paint(const std::string& fill, const std::string& stroke, double stroke_px, int decimals);
 
 }  // namespace talkface::detail
 

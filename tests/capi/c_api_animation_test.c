@@ -99,7 +99,7 @@ static int test_built_timeline_reads_back_and_writes_align_json(void) {
                      "confidence");
     CHECK_OK(tf_timeline_to_json(timeline, &json, &length));
     CHECK(json != NULL && strlen(json) == length);
-    CHECK(strncmp(json, "{\"sentences\":[\n{\"text\":\"", 24) == 0);
+    CHECK(strncmp(json, "{\"version\":1,\n\"sentences\":[\n{\"text\":\"", 37) == 0);
     CHECK(strstr(json, "\"start\":0.5,\"end\":2.5}") != NULL);
     CHECK(strstr(json, "{\"text\":\"\xe5\xaa\xbd\",\"pinyin\":\"ma1\",\"start\":0.5,\"end\":0.75,\"sentence\":0,"
                        "\"final_start\":0.58,\"confidence\":1,\"pause_after\":false}") != NULL);
@@ -107,6 +107,46 @@ static int test_built_timeline_reads_back_and_writes_align_json(void) {
                        "\"pause_after\":true}") != NULL);
     CHECK(strstr(json, "\"duration\":3,\n\"warnings\":[]}") != NULL);
     tf_free(json);
+    tf_timeline_destroy(timeline);
+    return failures;
+}
+
+static int test_timeline_json_reads_back_the_same_timeline(void) {
+    int failures = 0;
+    const char *newer = "{\"version\":2,\"sentences\":[],\"syllables\":[]}";
+    const char *mistyped = "{\"sentences\":[\n{\"text\":1}],\"syllables\":[]}";
+    tf_timeline *timeline = new_spoken_timeline();
+    tf_timeline *read_back = NULL;
+    char *json = NULL;
+    char *json_again = NULL;
+    size_t length = 0;
+    double final_start_s = 0.0;
+    int has_final_start = 0;
+    int pause_after = 0;
+    double confidence = 0.0;
+    CHECK_OK(tf_timeline_set_syllable_final_start_s(timeline, 1, 0.8125));
+    CHECK_OK(tf_timeline_set_syllable_confidence(timeline, 1, 0.375));
+    CHECK_OK(tf_timeline_to_json(timeline, &json, &length));
+    CHECK_OK(tf_timeline_from_json(json, length, "mine.json", &read_back));
+    CHECK_OK(tf_timeline_syllable_times(read_back, 1, NULL, NULL, &has_final_start, &final_start_s));
+    CHECK(has_final_start == 1 && final_start_s == 0.8125);
+    CHECK_OK(tf_timeline_syllable_confidence(read_back, 1, &confidence, &pause_after));
+    CHECK(confidence == 0.375 && pause_after == 0);
+    CHECK_OK(tf_timeline_syllable_confidence(read_back, 2, &confidence, &pause_after));
+    CHECK(pause_after == 1);
+    CHECK_OK(tf_timeline_to_json(read_back, &json_again, NULL));
+    CHECK(strcmp(json, json_again) == 0);
+    tf_free(json);
+    tf_free(json_again);
+    tf_timeline_destroy(read_back);
+    read_back = NULL;
+    CHECK_FAILS_WITH(tf_timeline_from_json(newer, strlen(newer), "new.json", &read_back),
+                     TF_ERR_PARSE, "new.json:1:12: version: timeline JSON version 2 is newer");
+    CHECK(read_back == NULL);
+    CHECK_FAILS_WITH(tf_timeline_from_json(mistyped, strlen(mistyped), NULL, &read_back),
+                     TF_ERR_PARSE, "<timeline>:2:9: sentences[0].text: expected a string, found 1");
+    CHECK_FAILS_WITH(tf_timeline_load_json("/no/such/dir/t.json", &read_back), TF_ERR_FILE, "/no/such/dir/t.json");
+    CHECK_FAILS_WITH(tf_timeline_from_json(NULL, 0, NULL, &read_back), TF_ERR_INVALID_ARGUMENT, "json");
     tf_timeline_destroy(timeline);
     return failures;
 }
@@ -590,6 +630,7 @@ int main(void) {
     failures += test_transcript_is_read_into_sentences_and_syllables();
     failures += test_transcript_errors_name_where();
     failures += test_built_timeline_reads_back_and_writes_align_json();
+    failures += test_timeline_json_reads_back_the_same_timeline();
     failures += test_syllable_shapes_size_then_data();
     failures += test_event_kind_names_round_trip();
     failures += test_same_seed_gives_the_same_events();

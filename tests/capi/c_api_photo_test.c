@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "talkface/talkface.h"
+#include "talkface/talkface_photo.h"
 
 #include "c_check.h"
 

@@ -17,7 +17,7 @@ SVG_NS = "{http://www.w3.org/2000/svg}"
 
 # SPEC "Contracts"; `talkface align --help` documents the extra keys a syllable may carry.
 CONTRACT_SYLLABLE_KEYS = ["text", "pinyin", "start", "end", "sentence"]
-DOCUMENTED_EXTRA_SYLLABLE_KEYS = {"final_start", "confidence"}
+DOCUMENTED_EXTRA_SYLLABLE_KEYS = {"final_start", "confidence", "pause_after"}
 ONSET_TOLERANCE_S = 0.100
 ONSET_FLOOR = 0.80
 
@@ -50,7 +50,8 @@ def aligned():
 def test_json_has_the_contract_keys_and_ordered_times_inside_the_audio(aligned, name):
     document = aligned[name]
     expected = truth(name)
-    assert list(document) == ["sentences", "syllables", "warnings"]
+    assert list(document) == ["version", "sentences", "syllables", "duration", "warnings"]
+    assert abs(document["duration"] - expected["duration"]) < 0.001
     assert document["warnings"] == []
     assert [s["text"] for s in document["sentences"]] == [s["text"] for s in expected["sentences"]]
     assert [(s["text"], s["pinyin"], s["sentence"]) for s in document["syllables"]] == [

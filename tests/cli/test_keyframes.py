@@ -133,11 +133,11 @@ def test_an_unknown_kind_exits_1_naming_the_item(tmp_path, timeline):
     "text, where",
     [
         ('{"sentences": [}', ":1:16: not JSON"),
-        ('{"sentences": []}', ': document: "syllables" is missing'),
+        ('{"sentences": []}', ':1:1: document: "syllables" is missing'),
         ('{"sentences":[{"text":"a"}],"syllables":[{"text":"a","pinyin":"a1","sentence":0,"start":"x"}]}',
-         ': syllables[0].start: expected a number, found "x"'),
+         ':1:89: syllables[0].start: expected a number of seconds, found "x"'),
         ('{"sentences":[{"text":"a"}],"syllables":[{"text":"a","pinyin":"a1","sentence":3}]}',
-         ": syllables[0].sentence: expected a sentence index 0..0, found 3"),
+         ":1:79: syllables[0].sentence: expected a sentence index 0..0, found 3"),
     ],
 )
 def test_a_timeline_with_an_error_exits_1_naming_where(tmp_path, text, where):

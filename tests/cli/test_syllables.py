@@ -1,4 +1,5 @@
-"""`talkface syllables`: the SPEC "Contracts" JSON, the plain listing, and errors."""
+"""`talkface syllables`: the SPEC "Contracts" JSON (the timeline JSON without times, pause marks
+included), the plain listing, and errors."""
 import json
 import os
 import subprocess
@@ -22,13 +23,14 @@ def test_json_has_exactly_the_contract_shape(tmp_path):
     assert result.returncode == 0, result.stderr
     assert result.stderr == ""
     document = json.loads(result.stdout)
-    assert list(document) == ["sentences", "syllables", "warnings"]
+    assert list(document) == ["version", "sentences", "syllables", "warnings"]
     assert document["sentences"] == [{"text": "長期下來，傷害不斷累積。"}, {"text": "銀行很好 ABC"}]
     syllables = document["syllables"]
-    assert all(list(s) == ["text", "pinyin", "sentence"] for s in syllables)
+    assert all(list(s) == ["text", "pinyin", "sentence", "pause_after"] for s in syllables)
     assert [s["text"] for s in syllables] == list("長期下來傷害不斷累積銀行很好")
     assert [s["pinyin"][:-1] for s in syllables[:4]] == ["chang", "qi", "xia", "lai"]
-    assert syllables[11] == {"text": "行", "pinyin": "hang2", "sentence": 1}
+    assert syllables[11] == {"text": "行", "pinyin": "hang2", "sentence": 1, "pause_after": False}
+    assert [s["text"] for s in syllables if s["pause_after"]] == ["來"]
     assert [s["sentence"] for s in syllables] == [0] * 10 + [1] * 4
     assert len(document["warnings"]) == 3
     assert document["warnings"][0].startswith(f'{path}:2:13: "A"')

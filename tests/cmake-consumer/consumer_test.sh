@@ -1,23 +1,31 @@
 #!/bin/sh
-# Installs the build into a fresh prefix, then builds and runs the consumer programs in project/
-# against it: with find_package(talkface) and, for the C one, with pkg-config talkface_c.
-# usage: consumer_test.sh BUILD_DIR CONSUMER_SOURCE_DIR WORK_DIR [C_COMPILER]   (WORK_DIR is emptied)
+# Installs the build into a fresh prefix, then uses it as a user would, with nothing from the source
+# or build tree: builds and runs the consumer programs in project/ with find_package(talkface) and,
+# for the C one, with pkg-config talkface_c; runs the installed command (its run path is relative,
+# $ORIGIN/../lib, so no LD_LIBRARY_PATH) and imports the installed Python package; and checks that
+# libtalkface itself loads no OpenCV (the photo stage is libtalkface_photo).
+# usage: consumer_test.sh BUILD_DIR CONSUMER_SOURCE_DIR WORK_DIR [C_COMPILER [PYTHON]]   (WORK_DIR is emptied)
 set -eu
 build_dir=$1
 consumer_dir=$2
 work_dir=$3
 c_compiler=${4:-cc}
+python=${5:-}
 prefix="$work_dir/prefix"
 
 rm -rf "$work_dir"
 mkdir -p "$work_dir"
 cmake --install "$build_dir" --prefix "$prefix" >"$work_dir/install.log"
+unset LD_LIBRARY_PATH PYTHONPATH
 
 cmake -S "$consumer_dir" -B "$work_dir/build" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
   >"$work_dir/configure.log"
 cmake --build "$work_dir/build" --parallel 2 >"$work_dir/build.log"
 "$work_dir/build/consumer_cpp"
 "$work_dir/build/consumer_c"
+if [ -e "$work_dir/build/consumer_photo" ]; then
+  "$work_dir/build/consumer_photo"
+fi
 
 pc_dir=$(dirname "$(find "$prefix" -name talkface_c.pc)")
 flags=$(PKG_CONFIG_PATH="$pc_dir" pkg-config --cflags --libs talkface_c)
@@ -25,3 +33,37 @@ flags=$(PKG_CONFIG_PATH="$pc_dir" pkg-config --cflags --libs talkface_c)
 "$c_compiler" -std=c99 -o "$work_dir/consumer_c_pkgconfig" "$consumer_dir/consumer.c" $flags
 LD_LIBRARY_PATH="$(PKG_CONFIG_PATH="$pc_dir" pkg-config --variable=libdir talkface_c)" \
   "$work_dir/consumer_c_pkgconfig"
+
+libdir=$(PKG_CONFIG_PATH="$pc_dir" pkg-config --variable=libdir talkface)
+if ldd "$libdir/libtalkface.so" | grep -Ei 'opencv|dlib|png|jpeg'; then
+  echo "libtalkface loads the photo stage's libraries (above); they belong to libtalkface_photo" >&2
+  exit 1
+fi
+
+# The installed command, from a folder of its own, found through its relative run path.
+if [ -x "$prefix/bin/talkface" ]; then
+  readelf -d "$prefix/bin/talkface" | grep -q 'RUNPATH.*\$ORIGIN/\.\./lib' ||
+    { echo "bin/talkface has no \$ORIGIN/../lib run path" >&2; readelf -d "$prefix/bin/talkface" >&2; exit 1; }
+  mkdir -p "$work_dir/run"
+  (cd "$work_dir/run" && "$prefix/bin/talkface" render -o face.svg)
+  grep -q '<svg' "$work_dir/run/face.svg"
+  echo "installed command: $("$prefix/bin/talkface" --version)"
+fi
+
+# The installed Python package, from the prefix alone.
+if [ -n "$python" ] && [ -d "$prefix/lib/python3/dist-packages/talkface" ]; then
+  (cd "$work_dir/run" && PYTHONPATH="$prefix/lib/python3/dist-packages" PYTHONDONTWRITEBYTECODE=1 "$python" -c '
+import pathlib, sys
+import talkface
+location = pathlib.Path(talkface.__file__).resolve()
+assert pathlib.Path(sys.argv[1]).resolve() in location.parents, f"talkface imported from {location}"
+assert talkface.__version__ == talkface.version()
+svg = talkface.SvgAnimator(talkface.FaceModel.default()).render_svg(talkface.FaceState())
+assert svg.startswith("<?xml")
+assert "_talkface_photo" not in sys.modules, "import talkface loaded the photo stage"
+if any(location.parent.glob("_talkface_photo*.so")):
+    talkface.has_dlib_locator()
+    assert "talkface._talkface_photo" in sys.modules
+print("installed Python package: talkface", talkface.__version__, "from", location.parent)
+' "$prefix")
+fi

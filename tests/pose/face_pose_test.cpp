@@ -10,6 +10,7 @@
 #include "talkface/errors.hpp"
 #include "talkface/face_lift.hpp"
 #include "talkface/face_pose.hpp"
+#include "talkface/mouth_shape.hpp"
 
 using namespace talkface;
 

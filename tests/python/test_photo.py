@@ -7,6 +7,9 @@ import pytest
 
 import talkface
 
+# The photo stage is a library of its own (TALKFACE_WITH_PHOTO); a build without it has no module.
+pytest.importorskip("talkface._talkface_photo")
+
 ASTRONAUT = "/usr/lib/python3/dist-packages/skimage/data/astronaut.png"
 HOPPER = "/usr/share/matplotlib/mpl-data/sample_data/grace_hopper.jpg"
 needs_photo = pytest.mark.skipif(not os.path.exists(ASTRONAUT),

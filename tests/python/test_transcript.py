@@ -1,5 +1,6 @@
 """Transcripts and timelines in Python: read_transcript, load_transcript, is_valid_pinyin,
-syllable_mouth_shapes, and the align JSON helpers timeline_from_json / timeline_to_json."""
+syllable_mouth_shapes, and the timeline JSON (timeline_from_json / timeline_to_json, the library's
+codec, the same bytes as the command and C)."""
 import pytest
 
 import talkface
@@ -84,7 +85,8 @@ def test_timeline_json_has_the_align_contract_shape():
     import json
 
     document = json.loads(talkface.timeline_to_json(spoken_timeline()))
-    assert list(document) == ["sentences", "syllables", "duration", "warnings"]
+    assert list(document) == ["version", "sentences", "syllables", "duration", "warnings"]
+    assert document["version"] == talkface.TIMELINE_JSON_VERSION == 1
     assert document["sentences"] == [{"text": "你好，世界。", "start": 0.5, "end": 1.5}]
     first = document["syllables"][0]
     assert list(first)[:5] == ["text", "pinyin", "start", "end", "sentence"]
@@ -99,13 +101,32 @@ def test_timeline_json_reads_the_syllables_contract_without_times():
     assert timeline.syllables[0].end_s == 0.0
 
 
+def test_timeline_json_without_times_keeps_the_pause_marks():
+    import json
+
+    document = json.loads(talkface.timeline_to_json(spoken_timeline(), with_times=False))
+    assert "duration" not in document
+    assert document["syllables"][1] == {"text": "好", "pinyin": "hao3", "sentence": 0, "pause_after": True}
+
+
+def test_timeline_json_file_round_trip_and_a_newer_version_refused(tmp_path):
+    path = tmp_path / "aligned.json"
+    talkface.save_timeline_json(path, spoken_timeline())
+    assert talkface.load_timeline_json(path).syllables == spoken_timeline().syllables
+    assert talkface.timeline_to_json(talkface.load_timeline_json(path)) == path.read_text(encoding="utf-8")
+    with pytest.raises(talkface.ParseError, match=r"version 7 is newer than this talkface reads \(version 1\)"):
+        talkface.timeline_from_json('{"version": 7, "sentences": [], "syllables": []}')
+    with pytest.raises(talkface.FileError):
+        talkface.load_timeline_json(tmp_path / "missing.json")
+
+
 @pytest.mark.parametrize(
     "text, match, item",
     [
         ('{"sentences": [}', r"aligned\.json:1:16: ", ""),
         ('{"sentences": []}', r'"syllables" is missing', "document"),
         ('{"sentences":[{"text":"a"}],"syllables":[{"text":"a","pinyin":"a1","sentence":0,"start":"x"}]}',
-         r'syllables\[0\]\.start: expected a number', "syllables[0].start"),
+         r'1:89: syllables\[0\]\.start: expected a number', "syllables[0].start"),
         ('{"sentences":[{"text":"a"}],"syllables":[{"text":"a","pinyin":"a1","sentence":1}]}',
          r"syllables\[0\]\.sentence: expected a sentence index 0\.\.0, found 1", "syllables[0].sentence"),
         ('{"sentences":[{"start":0}],"syllables":[]}', r'sentences\[0\]: "text" is missing', "sentences[0]"),

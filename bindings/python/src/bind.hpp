@@ -24,20 +24,29 @@ void bind_rotation3d(py::module_& m);
 void bind_face_state(py::module_& m);
 void bind_svg_animator(py::module_& m);
 void bind_transcript(py::module_& m);
+void bind_timeline_json(py::module_& m);
 void bind_lip_sync(py::module_& m);
 void bind_expression_simulator(py::module_& m);
 void bind_animation(py::module_& m);
 void bind_speech_aligner(py::module_& m);
 void bind_web_page(py::module_& m);
-void bind_photo(py::module_& m);  // after bind_face_model: adds FaceModel.from_photo
+void bind_photo(py::module_& m);  // the _talkface_photo module (photo_module.cpp)
 
 // A float64 array of `rows` x `columns`, C order (a copy the caller owns).
 inline py::array_t<double> new_matrix(py::ssize_t rows, py::ssize_t columns) {
     return py::array_t<double>({rows, columns});
 }
 
-// "(70, 2)": an array's shape as numpy prints it, for error messages.
-std::string shape_text(const py::array& array);
+// "(70, 2)": an array's shape as numpy prints it, for error messages. Inline: both extension
+// modules (_talkface, _talkface_photo) use it.
+inline std::string shape_text(const py::array& array) {
+    std::string text = "(";
+    for (py::ssize_t axis = 0; axis < array.ndim(); ++axis) {
+        if (axis > 0) text += ", ";
+        text += std::to_string(array.shape(axis));
+    }
+    return text + (array.ndim() == 1 ? ",)" : ")");
+}
 
 // Points as an (N, 2) array, in order.
 template <typename Points>

@@ -71,15 +71,6 @@ void translate(std::exception_ptr thrown) {
 
 }  // namespace
 
-std::string shape_text(const py::array& array) {
-    std::string text = "(";
-    for (py::ssize_t axis = 0; axis < array.ndim(); ++axis) {
-        if (axis > 0) text += ", ";
-        text += std::to_string(array.shape(axis));
-    }
-    return text + (array.ndim() == 1 ? ",)" : ")");
-}
-
 void bind_errors(py::module_& m) {
     py::enum_<ErrorCode>(m, "ErrorCode", py::arithmetic(), R"doc(
 What kind of failure a talkface.Error is; the values equal the C ABI's tf_status.

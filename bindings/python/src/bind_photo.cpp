@@ -1,11 +1,13 @@
-// Face from a photo (talkface/face_from_photo.hpp): talkface.face_from_photo() with the confidence
-// of every feature, FaceModel.from_photo() for the face alone. A photo is a path or a numpy uint8
+// Face from a photo (talkface/face_from_photo.hpp), in the _talkface_photo module that links
+// talkface::photo: talkface.face_from_photo() with the confidence of every feature,
+// FaceModel.from_photo() for the face alone. A photo is a path or a numpy uint8
 // array (H, W) grey, (H, W, 3) RGB or (H, W, 4) RGBA.
 #include <filesystem>
 #include <optional>
 #include <variant>
 
 #include "bind.hpp"
+#include "talkface/face_from_photo.hpp"
 
 namespace talkface::python {
 
@@ -161,14 +163,14 @@ Example:
 )doc")
             .c_str());
 
-    // A static method on the FaceModel class bound in bind_face_model.cpp.
-    py::object face_model = m.attr("FaceModel");
-    face_model.attr("from_photo") = py::staticmethod(py::cpp_function(
+    // talkface.FaceModel.from_photo (talkface/__init__.py) calls this, importing the module on demand.
+    m.def(
+        "face_model_from_photo",
         [](const Photo& photo, const std::string& locator, int face_index, const std::string& cascade_dir,
            const std::string& dlib_model_path) {
             return extract(photo, make_options(locator, face_index, cascade_dir, dlib_model_path)).face;
         },
-        py::name("from_photo"), py::arg("photo"), py::kw_only(), py::arg("locator") = "automatic",
+        py::arg("photo"), py::kw_only(), py::arg("locator") = "automatic",
         py::arg("face_index") = -1, py::arg("cascade_dir") = "", py::arg("dlib_model_path") = "",
         (std::string(R"doc(
 The face model (photo pixels) of a frontal photo of a neutral face; talkface.face_from_photo() also
@@ -178,7 +180,7 @@ Example:
     >>> face = talkface.FaceModel.from_photo("me.jpg")
     >>> face.save("me.xml")
 )doc")
-            .c_str()));
+            .c_str());
 }
 
 }  // namespace talkface::python

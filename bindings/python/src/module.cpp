@@ -26,10 +26,10 @@ Example:
     bind_face_state(m);
     bind_svg_animator(m);
     bind_transcript(m);
+    bind_timeline_json(m);
     bind_lip_sync(m);
     bind_expression_simulator(m);
     bind_animation(m);
     bind_speech_aligner(m);
     bind_web_page(m);
-    bind_photo(m);
 }

@@ -15,10 +15,6 @@ Cancelled.
 """
 
 from ._talkface import (
-    PhotoFaceResult,
-    PhotoFeature,
-    face_from_photo,
-    has_dlib_locator,
     AnimationEncoding,
     AlignOptions,
     AlignmentError,
@@ -57,6 +53,7 @@ from ._talkface import (
     SvgAnimator,
     SvgOptions,
     Syllable,
+    TIMELINE_JSON_VERSION,
     Timeline,
     UserEventMode,
     WebLink,
@@ -79,6 +76,7 @@ from ._talkface import (
     key_frames_json,
     key_frames_tsv,
     lift_face,
+    load_timeline_json,
     load_transcript,
     mandarin_syllables,
     mouth_controls,
@@ -91,8 +89,11 @@ from ._talkface import (
     project_face,
     read_transcript,
     rotation_origin,
+    save_timeline_json,
     syllable_mouth_shapes,
     timeline_end_s,
+    timeline_from_json,
+    timeline_to_json,
     to_image,
     to_local,
     validate_expression_events,
@@ -100,7 +101,45 @@ from ._talkface import (
     write_alignment_plot_svg,
     write_web_page,
 )
-from .timeline_json import timeline_from_json, timeline_to_json
+
+
+# Face from a photo is the _talkface_photo module (it loads OpenCV, libpng, libjpeg and dlib through
+# libtalkface_photo), imported on the first use of one of these names, so that `import talkface`
+# costs a program that never reads a photo nothing of it.
+_PHOTO_NAMES = ("PhotoFaceResult", "PhotoFeature", "face_from_photo", "has_dlib_locator")
+
+
+def _photo_module():
+    try:
+        from . import _talkface_photo
+    except ImportError as error:
+        raise ImportError(
+            "talkface's face from a photo is not available: this talkface was built without the photo "
+            "stage (TALKFACE_WITH_PHOTO=OFF) or its library cannot be loaded: " + str(error)
+        ) from error
+    return _talkface_photo
+
+
+def __getattr__(name):
+    if name in _PHOTO_NAMES:
+        return getattr(_photo_module(), name)
+    raise AttributeError("module 'talkface' has no attribute " + repr(name))
+
+
+def _face_model_from_photo(photo, **options):
+    return _photo_module().face_model_from_photo(photo, **options)
+
+
+_face_model_from_photo.__doc__ = """The face model (photo pixels) of a frontal photo of a neutral face.
+
+Loads the photo stage on first use; talkface.face_from_photo() also gives each feature's confidence.
+Takes the keyword arguments of face_from_photo (locator, face_index, cascade_dir, dlib_model_path).
+
+Example:
+    >>> face = talkface.FaceModel.from_photo("me.jpg")
+    >>> face.save("me.xml")
+"""
+FaceModel.from_photo = staticmethod(_face_model_from_photo)
 
 
 def default_face() -> FaceModel:
@@ -114,10 +153,6 @@ def default_face() -> FaceModel:
 
 
 __all__ = [
-    "PhotoFaceResult",
-    "PhotoFeature",
-    "face_from_photo",
-    "has_dlib_locator",
     "AnimationEncoding",
     "AlignOptions",
     "AlignmentError",
@@ -156,6 +191,7 @@ __all__ = [
     "SvgAnimator",
     "SvgOptions",
     "Syllable",
+    "TIMELINE_JSON_VERSION",
     "Timeline",
     "UserEventMode",
     "WebLink",
@@ -179,6 +215,7 @@ __all__ = [
     "key_frames_json",
     "key_frames_tsv",
     "lift_face",
+    "load_timeline_json",
     "load_transcript",
     "mandarin_syllables",
     "mouth_controls",
@@ -191,6 +228,7 @@ __all__ = [
     "project_face",
     "read_transcript",
     "rotation_origin",
+    "save_timeline_json",
     "syllable_mouth_shapes",
     "timeline_end_s",
     "timeline_from_json",

@@ -1,0 +1,26 @@
+// Where the face's image pixels fall in a frame (FrameLayout): a scale and an offset.
+#ifndef TALKFACE_RASTER_FRAME_LAYOUT_HPP
+#define TALKFACE_RASTER_FRAME_LAYOUT_HPP
+
+#include "render/layers.hpp"
+#include "talkface/face_model.hpp"
+#include "talkface/frame_renderer.hpp"
+
+namespace talkface::detail {
+
+// frame = offset + scale * image, the same for x and y.
+struct FramePlacement {
+    double scale = 1.0;
+    Point2 offset{0.0, 0.0};
+    CanvasBox canvas_in_frame;  // the face's canvas, placed: the SVG document's viewport
+    Point2 apply(Point2 image_xy) const { return {offset.x + scale * image_xy.x, offset.y + scale * image_xy.y}; }
+};
+
+// The placement of `face`, whose canvas is `canvas` (face_canvas.hpp), by `options`. announcer: as
+// the announcer web page places it on its stage (apps/announcer_page.cpp); face: the canvas fitted
+// into the frame and centred, as an SVG viewer shows a document (preserveAspectRatio's default).
+FramePlacement place_face(const FaceModel& face, const CanvasBox& canvas, const FrameOptions& options);
+
+}  // namespace talkface::detail
+
+#endif

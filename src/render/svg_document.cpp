@@ -1,0 +1,32 @@
+#include "render/svg_document.hpp"
+
+#include "common/number_format.hpp"
+#include "render/svg_text.hpp"
+#include "render/svg_writer.hpp"
+
+namespace talkface::detail {
+
+std::string open_svg_root(const SvgCanvas& canvas, int decimals, const std::string& class_name) {
+    auto number = [&](double value) { return format_fixed(value, decimals); };
+    std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\"";
+    svg += " version=\"1.1\"";
+    if (!class_name.empty()) svg += attribute("class", class_name);
+    svg += attribute("width", std::to_string(canvas.width_px)) +
+           attribute("height", std::to_string(canvas.height_px)) +
+           attribute("viewBox", number(canvas.box.x) + " " + number(canvas.box.y) + " " +
+                                    number(canvas.box.width) + " " + number(canvas.box.height)) +
+           ">\n";
+    return svg;
+}
+
+std::string layer_group_svg(const char* id, const Layer& layer, int decimals) {
+    std::string svg = "<g" + attribute("id", id) + ">\n";
+    write_layer_svg(layer, SvgLayerOptions{decimals, {}, nullptr}, svg);
+    return svg + "</g>\n";
+}
+
+std::string background_layer_svg(const SvgCanvas& canvas, const std::optional<Rgb>& colour, int decimals) {
+    return layer_group_svg("background", draw_background_layer(canvas.box, colour), decimals);
+}
+
+}  // namespace talkface::detail

@@ -1,0 +1,134 @@
+// The drawing model (src/render/drawing.hpp) and its SVG writer: what the encodings and the raster
+// renderer rely on.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "render/drawing.hpp"
+#include "render/keyframes_encoder.hpp"
+#include "render/layers.hpp"
+#include "render/svg_text.hpp"
+#include "render/svg_writer.hpp"
+#include "talkface/errors.hpp"
+#include "talkface/face_model.hpp"
+#include "talkface/face_pose.hpp"
+
+using namespace talkface;
+using namespace talkface::detail;
+
+namespace {
+
+// The number an SVG reader gets from `text`, read digit by digit as our encoder once read it.
+double read_decimal(const std::string& text) {
+    std::size_t i = 0;
+    const bool is_negative = text[0] == '-';
+    if (is_negative) ++i;
+    long long whole = 0;
+    for (; i < text.size() && text[i] != '.'; ++i) whole = whole * 10 + (text[i] - '0');
+    long long fraction = 0, power = 1;
+    for (++i; i < text.size(); ++i) {
+        fraction = fraction * 10 + (text[i] - '0');
+        power *= 10;
+    }
+    const double value = static_cast<double>(whole) + static_cast<double>(fraction) / static_cast<double>(power);
+    return is_negative ? -value : value;
+}
+
+Layer face_layer_at(const FaceState& state) {
+    const FaceModel face = FaceModel::default_face();
+    const ProjectedFace projected = project_face(face, state);
+    const FaceLook look = make_face_look(projected, LayerStyle{2, 1.5});
+    return draw_face_layer(projected, look);
+}
+
+}  // namespace
+
+TEST_SUITE("drawing model") {
+    TEST_CASE("round_as_written gives back what the written text reads as") {
+        std::mt19937 random(7);
+        std::uniform_real_distribution<double> value(-5000.0, 5000.0);
+        for (int decimals = 0; decimals <= 3; ++decimals) {
+            for (int i = 0; i < 20000; ++i) {
+                // Ties (x.5 at the last digit) go to the general conversion: make some.
+                const double x = i % 10 == 0 ? std::round(value(random) * 20.0) / 20.0 : value(random);
+                std::string text;
+                append_fixed(text, x, decimals);
+                CAPTURE(x);
+                CAPTURE(text);
+                CHECK(round_as_written(x, decimals) == read_decimal(text));
+            }
+        }
+    }
+
+    TEST_CASE("path data is written verb by verb") {
+        Path path;
+        path.move_to({1, 2}).line_to({3.26, 4}).curves({{{5, 6}, {7, 8}, {9, 10}}}).close();
+        path.verbs.push_back(PathVerb::quadratic);
+        path.points.insert(path.points.end(), {{1, 1}, {2, 2.5}});
+        std::string text;
+        append_path_data(text, path, 1);
+        CHECK(text == "M1,2 L3.3,4 C5,6 7,8 9,10 Z Q1,1 2,2.5");
+    }
+
+    TEST_CASE("numeric attributes are listed in the order the writer writes them") {
+        const Layer layer = face_layer_at(FaceState{});
+        std::vector<NumericAttribute> attributes;
+        list_numeric_attributes(layer, attributes);
+        REQUIRE(attributes.size() > 10);
+        std::vector<AttributeOverride> overrides(attributes.size());
+        for (std::size_t i = 0; i < overrides.size(); ++i) {
+            overrides[i].is_set = true;
+            overrides[i].value = "#" + std::to_string(i) + "#";
+        }
+        std::string svg;
+        write_layer_svg(layer, SvgLayerOptions{2, {}, &overrides}, svg);
+        std::size_t position = 0;
+        for (std::size_t i = 0; i < attributes.size(); ++i) {
+            CAPTURE(i);
+            const std::size_t found = svg.find(std::string(attributes[i].name) + "=\"#" + std::to_string(i) + "#\"");
+            REQUIRE(found != std::string::npos);
+            CHECK(found > position);
+            position = found;
+        }
+        overrides.pop_back();
+        svg.clear();
+        CHECK_THROWS_AS(write_layer_svg(layer, SvgLayerOptions{2, {}, &overrides}, svg), Error);
+    }
+
+    TEST_CASE("ids and references get the frame's prefix") {
+        std::string svg;
+        write_layer_svg(face_layer_at(FaceState{}), SvgLayerOptions{2, "f3-", nullptr}, svg);
+        CHECK(svg.find("id=\"f3-tf-eye-left-clip\"") != std::string::npos);
+        CHECK(svg.find("url(#f3-tf-eye-left-clip)") != std::string::npos);
+        CHECK(svg.find("url(#f3-tf-iris-right-gradient)") != std::string::npos);
+        CHECK(svg.find("xlink:href=\"#f3-tf-eye-right\"") != std::string::npos);
+        CHECK(svg.find("\"tf-") == std::string::npos);
+        CHECK(svg.find("#tf-") == std::string::npos);
+    }
+
+    TEST_CASE("the keyframes encoder refuses a frame drawn with other path verbs") {
+        const Layer first = face_layer_at(FaceState{});
+        Layer other = first;
+        other.elements.front().path.line_to({1, 1});
+        KeyframesEncoder encoder(25.0, 3.0, 1, 2);
+        encoder.add(first);
+        CHECK_THROWS_WITH_AS(encoder.add(other), doctest::Contains("frame 1 draws attribute d"), Error);
+        Layer fewer = first;
+        fewer.elements.pop_back();
+        CHECK_THROWS_WITH_AS(encoder.add(fewer), doctest::Contains("numeric attributes"), Error);
+    }
+
+    TEST_CASE("a layer that holds still is written as the first frame, without animations") {
+        const Layer layer = face_layer_at(FaceState{});
+        KeyframesEncoder encoder(25.0, 3.0, 1, 3);
+        encoder.add(layer);
+        encoder.add(layer);
+        encoder.add_repeat();
+        std::string still;
+        write_layer_svg(layer, SvgLayerOptions{1, {}, nullptr}, still);
+        CHECK(encoder.finish({}, 0.0, 1.0) == still);
+    }
+}
