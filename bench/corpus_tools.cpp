@@ -103,7 +103,9 @@ void plan_passages(const std::vector<BenchSentence>& sentences, int repeats, std
     }
 }
 
-std::vector<float> make_noise(Noise colour, std::size_t count, std::mt19937_64& rng) {
+namespace {
+
+std::vector<float> make_random_noise(Noise colour, std::size_t count, std::mt19937_64& rng) {
     std::vector<float> noise(count);
     double b0 = 0, b1 = 0, b2 = 0, integrated = 0;
     for (auto& sample : noise) {
@@ -123,6 +125,65 @@ std::vector<float> make_noise(Noise colour, std::size_t count, std::mt19937_64& 
     return noise;
 }
 
+constexpr double kPi = 3.14159265358979323846;
+
+// A sum of harmonics of `frequency_hz` with amplitudes 1/k, at time `t_s`: a note, a hum.
+double harmonics(double frequency_hz, int count, double t_s) {
+    double value = 0;
+    for (int k = 1; k <= count; ++k) value += std::sin(2 * kPi * k * frequency_hz * t_s) / k;
+    return value;
+}
+
+// The steady and musical noises, at `rate_hz`.
+std::vector<float> make_tonal_noise(Noise kind, std::size_t count, int rate_hz, std::mt19937_64& rng) {
+    std::vector<float> noise(count, 0.0f);
+    if (kind == Noise::hum || kind == Noise::tone_pink) {
+        const std::vector<float> pink = kind == Noise::tone_pink ? make_random_noise(Noise::pink, count, rng) : std::vector<float>();
+        double pink_power = 0;
+        for (float v : pink) pink_power += double(v) * v;
+        // Tone and pink noise of equal power (the tone's is 1/2).
+        const double pink_gain = pink.empty() ? 0.0 : std::sqrt(0.5 / (pink_power / static_cast<double>(count)));
+        for (std::size_t i = 0; i < count; ++i) {
+            const double t = static_cast<double>(i) / rate_hz;
+            noise[i] = static_cast<float>(kind == Noise::hum ? harmonics(50.0, 8, t) : std::sin(2 * kPi * 440.0 * t) + pink_gain * pink[i]);
+        }
+        return noise;
+    }
+    if (kind == Noise::room) {
+        const std::vector<float> pink = make_random_noise(Noise::pink, count, rng);
+        double low = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            low += 0.15 * (pink[i] - low);  // one pole near 400 Hz at 16 kHz: the rumble of air
+            noise[i] = static_cast<float>(low + 0.15 * std::sin(2 * kPi * 120.0 * static_cast<double>(i) / rate_hz));
+        }
+        return noise;
+    }
+    // Music: a pentatonic tune of three-note chords over a bass, each chord 0.2-0.6 s with a soft
+    // attack and a decay, so that its onsets come as often as syllables do.
+    const double scale[] = {220.0, 246.9, 277.2, 329.6, 370.0, 440.0, 493.9, 554.4};
+    std::size_t i = 0;
+    while (i < count) {
+        const auto length = static_cast<std::size_t>(uniform(rng, 0.2, 0.6) * rate_hz);
+        const double root = scale[static_cast<std::size_t>(uniform(rng, 0, 5.999))];
+        const double third = root * 1.25, fifth = root * 1.5, bass = root / 4;
+        for (std::size_t j = 0; j < length && i < count; ++j, ++i) {
+            const double t = static_cast<double>(i) / rate_hz;
+            const double since = static_cast<double>(j) / rate_hz;
+            const double envelope = std::min(1.0, since / 0.02) * std::exp(-since * 3.0);
+            noise[i] = static_cast<float>(envelope * (harmonics(root, 6, t) + harmonics(third, 5, t) + harmonics(fifth, 5, t)) +
+                                          0.8 * harmonics(bass, 4, t));
+        }
+    }
+    return noise;
+}
+
+}  // namespace
+
+std::vector<float> make_noise(Noise colour, std::size_t count, int rate_hz, std::mt19937_64& rng) {
+    const bool is_tonal = colour == Noise::hum || colour == Noise::tone_pink || colour == Noise::music || colour == Noise::room;
+    return is_tonal ? make_tonal_noise(colour, count, rate_hz, rng) : make_random_noise(colour, count, rng);
+}
+
 MonoAudio add_noise(const MonoAudio& clean, const talkface::Timeline& truth, Noise colour, double snr_db,
                     std::mt19937_64& rng) {
     double speech_power = 0;
@@ -134,7 +195,7 @@ MonoAudio add_noise(const MonoAudio& clean, const talkface::Timeline& truth, Noi
         speech_count += end > begin ? end - begin : 0;
     }
     speech_power /= static_cast<double>(std::max<std::size_t>(speech_count, 1));
-    const auto noise = make_noise(colour, clean.samples.size(), rng);
+    const auto noise = make_noise(colour, clean.samples.size(), clean.sample_rate_hz, rng);
     double noise_power = 0;
     for (float sample : noise) noise_power += double(sample) * sample;
     noise_power /= static_cast<double>(std::max<std::size_t>(noise.size(), 1));

@@ -90,11 +90,15 @@ struct PlannedPassage {
 void plan_passages(const std::vector<BenchSentence>& sentences, int repeats, std::mt19937_64& rng,
                    const std::function<void(const PlannedPassage&)>& on_planned);
 
-enum class Noise { none, white, pink, brown };
+/// The noises under the voice. Issue #13 adds the steady and the musical ones, which must not be
+/// blamed on the transcript either: hum is mains hum (50 Hz and its harmonics), tone_pink a steady
+/// 440 Hz tone under pink noise, music a synthetic tune (chords of harmonic notes over a bass,
+/// changing every 0.2-0.6 s), room a ventilated room (low-passed pink noise with a 120 Hz motor line).
+enum class Noise { none, white, pink, brown, hum, tone_pink, music, room };
 
-/// Noise of `colour`: Paul Kellet's pink filter (within 0.05 dB of -3 dB/octave above 10 Hz at
-/// these rates) and a leaky integrator for brown (-6 dB/octave).
-std::vector<float> make_noise(Noise colour, std::size_t count, std::mt19937_64& rng);
+/// Noise of `colour` at `rate_hz`: Paul Kellet's pink filter (within 0.05 dB of -3 dB/octave above
+/// 10 Hz at these rates), a leaky integrator for brown (-6 dB/octave), and the tonal kinds above.
+std::vector<float> make_noise(Noise colour, std::size_t count, int rate_hz, std::mt19937_64& rng);
 
 /// `clean` with noise added at `snr_db` against the speech's active level: the mean power inside
 /// the sentences of `truth`, pauses left out. Speech and noise are scaled together below clipping.

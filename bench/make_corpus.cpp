@@ -48,6 +48,7 @@ struct Condition {
     const char* sox_output_options;
     const char* extension;
     bool runs_together;       ///< sentences 0-kMaxJointGapS apart instead of the passage's pauses
+    double silent_ends_s = 0; ///< extra silence before and after the passage (truth moved with it)
 };
 
 // A speaker who runs sentences together leaves at most a breath's catch between them: shorter than
@@ -73,6 +74,13 @@ const Condition all_conditions[] = {
     {"fast", "speaking rate +40%", 1.4, Noise::none, 0, "rate -v 16k", "-b 16", "wav", false},
     {"slow", "speaking rate -30%", 0.7, Noise::none, 0, "rate -v 16k", "-b 16", "wav", false},
     {"joined", "sentences run together, 0-0.12 s apart", 1.0, Noise::none, 0, "rate -v 16k", "-b 16", "wav", true},
+    {"hum15", "mains hum (50 Hz and harmonics), SNR 15 dB", 1.0, Noise::hum, 15, "", "", "wav", false},
+    {"tonepink15", "a steady 440 Hz tone under pink noise, SNR 15 dB", 1.0, Noise::tone_pink, 15, "", "", "wav", false},
+    {"music15", "synthetic music, SNR 15 dB", 1.0, Noise::music, 15, "", "", "wav", false},
+    {"music20", "synthetic music, SNR 20 dB", 1.0, Noise::music, 20, "", "", "wav", false},
+    {"room15", "room noise (ventilation and a motor's hum), SNR 15 dB", 1.0, Noise::room, 15, "", "", "wav", false},
+    {"silentends", "6 s of silence before and after", 1.0, Noise::none, 0, "rate -v 16k pad 6 6", "-b 16", "wav", false,
+     6.0},
 };
 
 /// How one passage is spoken: drawn once, shared by every condition.
@@ -191,6 +199,19 @@ Recording join_passage(const SpokenPassage& passage, const std::vector<double>& 
     return recording;
 }
 
+// The recording's truth `by_s` later, as the silence sox put before it moves it.
+Recording shifted(const Recording& recording, double by_s) {
+    Recording moved{{}, recording.truth, recording.after_pause};
+    for (auto& sentence : moved.truth.sentences) sentence.start_s += by_s, sentence.end_s += by_s;
+    for (auto& syllable : moved.truth.syllables) {
+        syllable.start_s += by_s;
+        syllable.end_s += by_s;
+        if (syllable.final_start_s) *syllable.final_start_s += by_s;
+    }
+    moved.truth.duration_s += 2 * by_s;
+    return moved;
+}
+
 std::string truth_json(const Recording& recording, const Delivery& delivery, double rate_factor,
                        const std::string& condition, const std::string& set) {
     auto document = talkface_bench::truth_document("talkface bench/make_corpus, espeak-ng voice cmn-latn-pinyin", condition,
@@ -271,8 +292,8 @@ void make_corpus(const CorpusOptions& options) {
                                                                 recording.truth, condition.noise, condition.snr_db, rng));
             }
             write_text(stem.string() + ".txt", passage.transcript);
-            write_text(stem.string() + ".json", truth_json(recording, passage.delivery, condition.rate_factor,
-                                                           condition.name, passage.set));
+            write_text(stem.string() + ".json", truth_json(shifted(recording, condition.silent_ends_s), passage.delivery,
+                                                           condition.rate_factor, condition.name, passage.set));
         }
         const auto normal = joined.find({1.0, false});
         seconds += normal != joined.end() ? normal->second.truth.duration_s : 0.0;

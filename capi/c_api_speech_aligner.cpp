@@ -11,6 +11,7 @@
 static_assert(TF_LOW_ALIGNMENT_CONFIDENCE == talkface::kLowAlignmentConfidence, "TF_LOW_ALIGNMENT_CONFIDENCE");
 
 using talkface::AlignOptions;
+using talkface::CheckMode;
 using talkface::InvalidArgument;
 using talkface::SentenceCutMode;
 using talkface::SpeechAligner;
@@ -81,6 +82,16 @@ tf_status tf_align_options_set_c1(tf_align_options* options, double c1) {
 
 tf_status tf_align_options_set_c2(tf_align_options* options, double c2) {
     return guard([&] { update(options, [&](AlignOptions& o) { o.c2 = c2; }); });
+}
+
+tf_status tf_align_options_set_check(tf_align_options* options, tf_check_mode mode) {
+    return guard([&] {
+        require_non_null(options, "options");
+        const int value = enum_value(mode);
+        if (value != TF_CHECK_REFUSE && value != TF_CHECK_WARN && value != TF_CHECK_OFF)
+            throw InvalidArgument("check", "expected a tf_check_mode (0..2), got " + std::to_string(value));
+        update(options, [&](AlignOptions& o) { o.check = static_cast<CheckMode>(value); });
+    });
 }
 
 tf_status tf_align_file(const char* audio_path, const tf_timeline* transcript, const tf_align_options* options,

@@ -14,6 +14,8 @@ nlohmann-json3-dev doctest-dev pybind11-dev python3-dev python3-numpy libsndfile
 libopencv-dev opencv-data libpng-dev libjpeg-dev libdlib-dev libblas-dev liblapack-dev zlib1g-dev
 libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev libcairo2-dev"
 # libcairo2-dev: the raster renderer (FrameRenderer) draws frames with cairo.
+# libavformat-dev, libavcodec-dev, libswresample-dev and libavutil-dev also decode the recordings
+# libsndfile does not read (MP3, AAC/M4A, Opus, a video's sound track: src/audio/).
 # libpng-dev and libjpeg-dev read photo files (face from a photo). libdlib-dev's CMake package also
 # links libblas.so, liblapack.so, libjpeg.so and libz.so by path, and does not depend on the -dev
 # packages that provide them.

@@ -42,6 +42,20 @@ enum class SentenceCutMode : int {
     first_pause = 1,
 };
 
+/// What the aligner does when the audio does not sound like its transcript (a missing or extra
+/// sentence, the wrong text). A finding names the sentence, its time span and the evidence (how far
+/// the measure lies past what a right text gives). A line of a few syllables gives weak evidence:
+/// what is found there is a warning in every mode, never a refusal.
+enum class CheckMode : int {
+    /// The default: strong evidence refuses the alignment (talkface::AlignmentError).
+    refuse = 0,
+    /// Strong evidence is reported in Timeline::warnings and the alignment is returned, as it
+    /// comes out with the checks off.
+    warn = 1,
+    /// No checks: the syllables are placed however well the text fits the audio.
+    off = 2,
+};
+
 /// Options of SpeechAligner. Defaults suit ordinary recordings.
 struct AlignOptions {
     SentenceCutMode sentence_cut = SentenceCutMode::automatic;
@@ -49,6 +63,7 @@ struct AlignOptions {
     double first_pause_end_s = 0.0;
     double c1 = 0.95;                  ///< Algorithm 3.1 step 3, in 0.5..1
     double c2 = 1.45;                  ///< Algorithm 3.1 step 4, in 1..1.5
+    CheckMode check = CheckMode::refuse;  ///< what a transcript that does not match the audio does
 };
 
 /// Aligns a recorded speech with its transcript (a Timeline from read_transcript()).
@@ -73,15 +88,19 @@ public:
     /// Aligns samples in memory.
     /// \throws talkface::InvalidArgument for an empty or malformed view or an empty transcript.
     /// \throws talkface::AlignmentError when audio and transcript do not match (a missing or extra
-    ///         sentence, the wrong text), naming the sentence and the time where it was noticed.
+    ///         sentence, the wrong text), naming the sentence and the time where it was noticed;
+    ///         with CheckMode::warn or off only when no alignment can be made at all (more
+    ///         syllables than the speech can hold, no speech).
     /// \throws talkface::Cancelled if `progress` returned false.
     Timeline align(const AudioView& audio, const Timeline& transcript,
                    const ProgressCallback& progress = {}) const;
 
-    /// Aligns an audio file (WAV, FLAC, OGG, any sample rate, 8 to 32 bit or float, mono or stereo).
+    /// Aligns an audio file: WAV, FLAC, Ogg (any sample rate, 8 to 32 bit or float, mono or stereo)
+    /// through libsndfile; MP3 (read to its real end), AAC/M4A, Opus and the sound track of a video
+    /// (MP4, MOV, MKV, WebM) through FFmpeg's libraries.
     /// \throws talkface::FileError if it cannot be opened or read (truncated); talkface::ParseError
-    ///         if it is not audio talkface can read; talkface::InvalidArgument if it is empty or
-    ///         silent; and as align().
+    ///         naming the reason if it is not audio talkface can read, or a video has no sound track;
+    ///         talkface::InvalidArgument if it is empty or silent; and as align().
     Timeline align_file(const std::string& audio_path, const Timeline& transcript,
                         const ProgressCallback& progress = {}) const;
 

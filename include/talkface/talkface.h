@@ -778,9 +778,27 @@ TF_API tf_status tf_align_options_set_c1(tf_align_options *options, double c1);
  * Errors: TF_ERR_INVALID_ARGUMENT naming c2 if out of range, or for a NULL options. */
 TF_API tf_status tf_align_options_set_c2(tf_align_options *options, double c2);
 
-/* Aligns an audio file (WAV, FLAC, OGG; any rate, 8 to 32 bit or float, mono or stereo) with
- * `transcript` (from tf_read_transcript / tf_load_transcript) into a new timeline *out: the
- * transcript's sentences and syllables with their times, seconds (syllable start = where its initial
+/* What the aligner does when the audio does not sound like its transcript; values equal
+ * talkface::CheckMode. A finding names the sentence, its times and the evidence; a line of a few
+ * syllables gives weak evidence, reported as a warning of the timeline in every mode. */
+typedef enum tf_check_mode {
+    /* The default: strong evidence refuses the alignment (TF_ERR_ALIGNMENT). */
+    TF_CHECK_REFUSE = 0,
+    /* Strong evidence becomes a warning of the timeline (tf_timeline_warning), aligned as with the
+     * checks off. */
+    TF_CHECK_WARN = 1,
+    /* No checks. */
+    TF_CHECK_OFF = 2
+} tf_check_mode;
+
+/* Sets what a transcript that does not match the audio does (TF_CHECK_REFUSE by default).
+ * Errors: TF_ERR_INVALID_ARGUMENT naming check for a value outside tf_check_mode, or for a NULL
+ * options. */
+TF_API tf_status tf_align_options_set_check(tf_align_options *options, tf_check_mode mode);
+
+/* Aligns an audio file (WAV, FLAC, Ogg, MP3, AAC/M4A, Opus, or the sound track of an MP4, MOV, MKV
+ * or WebM video; any rate, mono or stereo) with `transcript` (from tf_read_transcript /
+ * tf_load_transcript) into a new timeline *out: the transcript's sentences and syllables with their times, seconds (syllable start = where its initial
  * consonant starts; final start and confidence set), and the audio's duration. The audio is read in
  * blocks: an hour of speech aligns in bounded memory. `options` NULL means the defaults; `progress`
  * may be NULL (user_data is passed to it untouched). *out is left unchanged on failure.

@@ -9,6 +9,7 @@
 #include <optional>
 #include <sstream>
 
+#include "audio/ffmpeg_source.hpp"
 #include "common/number_format.hpp"
 #include "talkface/errors.hpp"
 
@@ -134,7 +135,14 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
         // can open a file on this thread.
         const std::string reason = sf_strerror(nullptr);
         if (reason.find("System error") != std::string::npos) throw FileError(path, reason);
-        throw ParseError(path, 0, 0, "", "not audio libsndfile can read (WAV, FLAC, OGG, ...): " + reason);
+        // Not a format libsndfile knows (M4A, Opus in WebM, a video): FFmpeg's turn.
+        return open_ffmpeg_file(path);
+    }
+    // libsndfile's MP3 length is an estimate from the first frame's bit rate, and it stops there:
+    // sox's MP3s at 22.05 and 44.1 kHz came out "truncated". FFmpeg reads them to the real end.
+    if ((info.format & SF_FORMAT_TYPEMASK) == SF_FORMAT_MPEG) {
+        sf_close(file);
+        return open_ffmpeg_file(path);
     }
     if (info.channels <= 0 || static_cast<std::size_t>(info.channels) > kMaxChannels || info.samplerate <= 0) {
         sf_close(file);

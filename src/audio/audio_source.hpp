@@ -1,5 +1,6 @@
-// Audio in, one block at a time, mixed down to mono: from a file through libsndfile, or from
-// samples the caller holds. Nothing here keeps the whole signal (the memory target of issue #4).
+// Audio in, one block at a time, mixed down to mono: from a file through libsndfile (WAV, FLAC,
+// Ogg) or FFmpeg (MP3, AAC/M4A, Opus, a video's sound track), or from samples the caller holds.
+// Nothing here keeps the whole signal (the memory target of issue #4).
 #ifndef TALKFACE_AUDIO_AUDIO_SOURCE_HPP
 #define TALKFACE_AUDIO_AUDIO_SOURCE_HPP
 
@@ -19,14 +20,16 @@ public:
     // \throws talkface::FileError when the data ends before the header said it would.
     virtual std::size_t read(float* mono, std::size_t max_frames) = 0;
     virtual int sample_rate_hz() const = 0;
-    // Frames the source says it has; progress is measured against it.
+    // Frames the source says it has; progress is measured against it. For what FFmpeg reads it is
+    // the container's estimate, and read() goes on to the real end.
     virtual std::size_t frame_count() const = 0;
     // Names the audio in messages: the path, or "audio" for samples in memory.
     virtual const std::string& name() const = 0;
 };
 
 // \throws talkface::FileError if the file is missing or cannot be opened, talkface::ParseError
-//         if libsndfile cannot read it as audio, talkface::InvalidArgument if it has no frames.
+//         naming the reason if neither libsndfile nor FFmpeg reads it as audio (or a video has no
+//         sound track), talkface::InvalidArgument if it has no frames.
 std::unique_ptr<AudioSource> open_audio_file(const std::string& path);
 
 // \throws talkface::InvalidArgument naming the field of `audio` that is malformed.

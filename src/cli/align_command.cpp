@@ -2,6 +2,7 @@
 // (SPEC "Contracts"), with an optional picture of the result (thesis Figures 3.5 and 3.8).
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -26,6 +27,7 @@ struct AlignCommandOptions {
     std::string first_pause_text;
     double c1 = talkface::AlignOptions{}.c1;
     double c2 = talkface::AlignOptions{}.c2;
+    talkface::CheckMode check = talkface::AlignOptions{}.check;
     std::string output_path = "-";
     bool quiet = false;
 };
@@ -76,6 +78,7 @@ void run_align(const AlignCommandOptions& options) {
     talkface::AlignOptions align_options;
     align_options.c1 = options.c1;
     align_options.c2 = options.c2;
+    align_options.check = options.check;
     if (!options.first_pause_text.empty()) {
         const auto pause = parse_pause(options.first_pause_text).value_or(std::make_pair(0.0, 0.0));
         align_options.sentence_cut = talkface::SentenceCutMode::first_pause;
@@ -104,7 +107,7 @@ void run_align(const AlignCommandOptions& options) {
 void setup_align_command(CLI::App& app) {
     auto options = std::make_shared<AlignCommandOptions>();
     CLI::App* align = app.add_subcommand("align", "Find when each sentence and syllable of a transcript is spoken");
-    align->add_option("AUDIO", options->audio_path, "Speech: WAV, FLAC or OGG, any rate, mono or stereo")
+    align->add_option("AUDIO", options->audio_path, "Speech: WAV, FLAC, Ogg, MP3, M4A, Opus or a video's sound track (MP4, MOV, MKV, WebM)")
         ->required()
         ->check(CLI::ExistingFile);
     align->add_option("TRANSCRIPT", options->transcript_path,
@@ -128,6 +131,12 @@ void setup_align_command(CLI::App& app) {
     align->add_option("--c2", options->c2, "Algorithm 3.1: loudest silence, as a multiple of the first pause's peak")
         ->check(CLI::Range(1.0, 1.5))
         ->capture_default_str();
+    align->add_option("--check", options->check,
+                      "What a transcript that does not match the audio does: refuse (strong evidence stops the "
+                      "alignment), warn (a warning, aligned anyway) or off")
+        ->transform(CLI::CheckedTransformer(std::map<std::string, talkface::CheckMode>{
+            {"refuse", talkface::CheckMode::refuse}, {"warn", talkface::CheckMode::warn}, {"off", talkface::CheckMode::off}}))
+        ->default_str("refuse");
     align->add_option("-o,--output", options->output_path, "Write the result here instead of stdout (- is stdout)");
     align->add_flag("-q,--quiet", options->quiet, "No progress bar");
     align->callback([options] { run_align(*options); });

@@ -66,10 +66,11 @@ void check_text_fit(const std::vector<SentenceMetrics>& metrics, const std::vect
 
 // The same gap for each sentence, its halves scored with models learned from the rest of the
 // recording (leave one out), against what a right text gives anywhere: this holds for a file of one
-// or two sentences, where the models re-estimated on the recording fit any text.
+// or two sentences, where the models re-estimated on the recording fit any text. A sentence of a
+// few syllables is too short for it: what is found there goes to `weak_findings`, with its evidence.
 // \throws talkface::AlignmentError naming the first sentence whose text does not fit its speech.
 void check_held_out_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
-                        const Timeline& transcript);
+                        const Timeline& transcript, std::vector<std::string>& weak_findings);
 
 // check_text_fit for a file of one or two sentences, where the models were learned from these very
 // sentences and shaped by their text: on them a right text's path fits at least as well as a free

@@ -143,12 +143,12 @@ Reestimation reestimate(const FeatureTrack& track, const LoudnessProfile& loudne
 
 // The final pass over one chain, on the re-estimated models: its syllables placed in `result`,
 // what the checks judge of each of its sentences measured into `metrics`, and its path checked
-// (check_path).
+// (check_path) when `is_checked`.
 void measure_chain(const SentenceChain& chain, std::size_t w, const std::vector<StateSegment>& path,
                    const std::vector<float>& observations, const Reestimation& learned, std::size_t spoken_sentences,
                    const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
                    EmissionScores& scores, Timeline& result, std::vector<FrameSpan>& spans,
-                   std::vector<SentenceMetrics>& metrics) {
+                   std::vector<SentenceMetrics>& metrics, bool is_checked) {
     place_syllables(chain, path, scores, track, result);
     for (const auto& [k, share] : split_by_sentence(chain, path)) {
         if (chain.is_block()) spans[k] = aligned_span(result, chain, k);
@@ -179,7 +179,7 @@ void measure_chain(const SentenceChain& chain, std::size_t w, const std::vector<
             metrics[k].own_fit_gap = metrics[k].fit_gap;
             metrics[k].length_spread = syllable_length_spread(stretches);
         }
-        check_path(stretches, loudness, k, spans[k], transcript);
+        if (is_checked) check_path(stretches, loudness, k, spans[k], transcript);
     }
 }
 
@@ -202,14 +202,14 @@ void set_sentence_times(const std::vector<FrameSpan>& spans, Timeline& result) {
 }
 
 // The syllables of every sentence of `cut`, aligned sentence by sentence (neighbours that run on,
-// together), and the checks that audio and transcript belong together.
+// together), and, when `is_checked`, the checks that audio and transcript belong together.
 Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
-                   const SentenceCut& cut, ProgressReporter& progress) {
+                   const SentenceCut& cut, ProgressReporter& progress, bool is_checked) {
     // Where sentences run together the cutter's spans are guesses: the syllables place them, and
     // the sentences' lengths are checked on where the syllables put them.
     std::vector<FrameSpan> spans = cut.spans;
     const bool has_blocks = std::find(cut.runs_on.begin(), cut.runs_on.end(), true) != cut.runs_on.end();
-    if (!has_blocks) check_sentence_lengths(spans, loudness, transcript);
+    if (!has_blocks && is_checked) check_sentence_lengths(spans, loudness, transcript);
 
     std::vector<SentenceChain> chains = group_chains(transcript, cut, spans);
     set_search_spans(track, loudness, chains);
@@ -228,15 +228,17 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
         learned.model.score(observations, chains[w].searched.length(), scores);
         const auto path = align_chain(chains[w], scores, workspace, scores.frame_count, transcript);
         measure_chain(chains[w], w, path, observations, learned, spoken_sentences, track, loudness, transcript, scores,
-                      result, spans, metrics);
+                      result, spans, metrics, is_checked);
         report_pass(progress, kReestimationRounds, w, chains.size());
     }
-    if (has_blocks) check_sentence_lengths(spans, loudness, transcript);
-    check_text_fit(metrics, spans, transcript);
-    check_held_out_fit(metrics, spans, transcript);
-    check_own_fit(metrics, spans, transcript);
-    check_syllable_lengths(metrics, spans, transcript);
-    check_fit(metrics, spans, transcript);
+    if (is_checked) {
+        if (has_blocks) check_sentence_lengths(spans, loudness, transcript);
+        check_text_fit(metrics, spans, transcript);
+        check_held_out_fit(metrics, spans, transcript, result.warnings);
+        check_own_fit(metrics, spans, transcript);
+        check_syllable_lengths(metrics, spans, transcript);
+        check_fit(metrics, spans, transcript);
+    }
     set_sentence_times(spans, result);
     return result;
 }
@@ -247,8 +249,9 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
 // does not account for is a wrong text's doing. Then the sentences are aligned apart again, as
 // the checks know them best.
 Timeline align_confirmed(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
-                         const SentenceCut& cut, const std::vector<bool>& is_spoken, ProgressReporter& progress) {
-    Timeline result = align_cut(track, loudness, transcript, cut, progress);
+                         const SentenceCut& cut, const std::vector<bool>& is_spoken, ProgressReporter& progress,
+                         bool is_checked) {
+    Timeline result = align_cut(track, loudness, transcript, cut, progress, is_checked);
     SentenceCut confirmed = cut;
     for (const auto& [k, next] : spoken_neighbours(is_spoken)) {
         // Too few pauses: the cutter chose none for this end, and the chain is all there is.
@@ -258,11 +261,11 @@ Timeline align_confirmed(const FeatureTrack& track, const LoudnessProfile& loudn
             confirmed.runs_on[k] = false;
     }
     if (confirmed.runs_on == cut.runs_on) return result;
-    return align_cut(track, loudness, transcript, confirmed, progress);
+    return align_cut(track, loudness, transcript, confirmed, progress, is_checked);
 }
 
 Timeline align_track(const FeatureTrack& track, const Timeline& transcript, const AlignOptions& options,
-                     ProgressReporter& progress) {
+                     ProgressReporter& progress, bool is_checked) {
     const LoudnessProfile loudness = measure_loudness(track);
     if (loudness.speech_end_frame <= loudness.speech_first_frame)
         throw AlignmentError("no speech found in the " + format_fixed(track.duration_s, 2) +
@@ -274,7 +277,7 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
     const std::size_t stretches = loudness.pauses.size() + 1;
     Timeline result;
     try {
-        result = align_confirmed(track, loudness, transcript, cut, is_spoken, progress);
+        result = align_confirmed(track, loudness, transcript, cut, is_spoken, progress, is_checked);
     } catch (const AlignmentError& error) {
         // Fewer stretches of speech than sentences: either sentences run together or the
         // transcript has one the audio lacks; the first is tried, and the message tells of both.
@@ -293,7 +296,7 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
         SentenceCut block = cut;
         std::fill(block.runs_on.begin(), block.runs_on.end(), true);
         try {
-            result = align_cut(track, loudness, transcript, block, progress);
+            result = align_cut(track, loudness, transcript, block, progress, is_checked);
         } catch (const AlignmentError&) {
             throw error;
         }
@@ -312,6 +315,21 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
     return result;
 }
 
+// AlignOptions::check: refuse, as the checks find; warn, the alignment the checks refused made
+// again without them, and their finding kept in its warnings; off, no checks at all.
+Timeline align_checked(const FeatureTrack& track, const Timeline& transcript, const AlignOptions& options,
+                       ProgressReporter& progress) {
+    if (options.check != CheckMode::warn) return align_track(track, transcript, options, progress, options.check == CheckMode::refuse);
+    try {
+        return align_track(track, transcript, options, progress, true);
+    } catch (const AlignmentError& error) {
+        Timeline result = align_track(track, transcript, options, progress, false);
+        result.warnings.push_back(std::string("the transcript may not match the audio (aligned anyway, check mode warn): ") +
+                                  error.what());
+        return result;
+    }
+}
+
 Timeline align_source(AudioSource& source, const Timeline& transcript, const AlignOptions& options,
                       const ProgressCallback& callback) {
     validate_transcript(transcript);
@@ -319,7 +337,7 @@ Timeline align_source(AudioSource& source, const Timeline& transcript, const Ali
     progress.report(0.0, "reading");
     const FeatureTrack track =
         analyze_audio(source, [&](double fraction) { progress.report(kReadingShare * fraction, "reading"); });
-    return align_track(track, transcript, options, progress);
+    return align_checked(track, transcript, options, progress);
 }
 
 }  // namespace
@@ -333,6 +351,8 @@ SpeechAligner::SpeechAligner(AlignOptions options) : impl_(std::make_unique<Impl
         throw InvalidArgument("c1", "expected 0.5..1 (Algorithm 3.1 step 3), found " + format_shortest(options.c1));
     if (!(options.c2 >= 1.0 && options.c2 <= 1.5))
         throw InvalidArgument("c2", "expected 1..1.5 (Algorithm 3.1 step 4), found " + format_shortest(options.c2));
+    if (options.check != CheckMode::refuse && options.check != CheckMode::warn && options.check != CheckMode::off)
+        throw InvalidArgument("check", "unknown mode " + std::to_string(static_cast<int>(options.check)));
     if (options.sentence_cut != SentenceCutMode::automatic && options.sentence_cut != SentenceCutMode::first_pause)
         throw InvalidArgument("sentence_cut", "unknown mode " + std::to_string(static_cast<int>(options.sentence_cut)));
     if (options.sentence_cut == SentenceCutMode::first_pause &&

@@ -313,8 +313,50 @@ static int test_the_alignment_plot_is_an_svg_of_the_clip(void) {
     return failures;
 }
 
+/* tf_align_options_set_check: a wrong text of as many syllables is refused by default, a warning of
+ * the timeline with TF_CHECK_WARN, and nothing at all with TF_CHECK_OFF. */
+static int test_check_modes_refuse_warn_or_skip(void) {
+    static const char wrong_text[] = "我昨天在超市买了苹果和。";
+    int failures = 0;
+    tf_timeline *wrong = NULL;
+    tf_timeline *aligned = NULL;
+    tf_align_options *options = NULL;
+    size_t count = 0;
+    const char *warning = NULL;
+    CHECK_OK(tf_read_transcript(wrong_text, strlen(wrong_text), "wrong.txt", &wrong));
+    CHECK_OK(tf_align_options_create(&options));
+    CHECK_FAILS_WITH(tf_align_file(kClipPath, wrong, options, NULL, NULL, &aligned), TF_ERR_ALIGNMENT,
+                     "does not sound like its text");
+    CHECK(aligned == NULL);
+
+    CHECK_OK(tf_align_options_set_check(options, TF_CHECK_WARN));
+    CHECK_OK(tf_align_file(kClipPath, wrong, options, NULL, NULL, &aligned));
+    CHECK_OK(tf_timeline_warning_count(aligned, &count));
+    CHECK(count >= 1);
+    if (count >= 1) {
+        CHECK_OK(tf_timeline_warning(aligned, count - 1, &warning));
+        CHECK(strstr(warning, "the transcript may not match the audio") == warning);
+        CHECK(strstr(warning, "sentence 1 (0.") != NULL);
+    }
+    tf_timeline_destroy(aligned);
+    aligned = NULL;
+
+    CHECK_OK(tf_align_options_set_check(options, TF_CHECK_OFF));
+    CHECK_OK(tf_align_file(kClipPath, wrong, options, NULL, NULL, &aligned));
+    CHECK_OK(tf_timeline_warning_count(aligned, &count));
+    CHECK(count == 0);
+    tf_timeline_destroy(aligned);
+
+    CHECK_FAILS_WITH(tf_align_options_set_check(options, (tf_check_mode)9), TF_ERR_INVALID_ARGUMENT, "check");
+    CHECK_FAILS_WITH(tf_align_options_set_check(NULL, TF_CHECK_WARN), TF_ERR_INVALID_ARGUMENT, "options");
+    tf_align_options_destroy(options);
+    tf_timeline_destroy(wrong);
+    return failures;
+}
+
 int main(void) {
     int failures = 0;
+    failures += test_check_modes_refuse_warn_or_skip();
     failures += test_the_alignment_plot_is_an_svg_of_the_clip();
     failures += test_file_and_its_samples_align_alike();
     failures += test_progress_rises_and_a_non_zero_return_cancels();

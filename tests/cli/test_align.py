@@ -163,3 +163,42 @@ def test_option_out_of_range_is_a_usage_error():
     result = run("align", audio, transcript, "--c1", "0.2")
     assert result.returncode == 2
     assert "--c1" in result.stderr
+
+
+@pytest.mark.parametrize("mode,code", [("refuse", 1), ("warn", 0), ("off", 0)])
+def test_check_option_refuses_warns_or_skips(tmp_path, mode, code):
+    audio, _ = clip("one_sentence")
+    transcript = tmp_path / "wrong.txt"
+    transcript.write_text("我昨天在超市买了苹果和。", encoding="utf-8")
+    result = run("align", audio, transcript, "--json", "--quiet", "--check", mode)
+    assert result.returncode == code, result.stderr
+    if mode == "refuse":
+        assert "does not sound like its text" in result.stderr
+        return
+    warnings = json.loads(result.stdout)["warnings"]
+    found = [w for w in warnings if w.startswith("the transcript may not match the audio")]
+    assert len(found) == (1 if mode == "warn" else 0)
+
+
+def test_check_option_other_values_are_a_usage_error():
+    audio, transcript = clip("one_sentence")
+    result = run("align", audio, transcript, "--check", "maybe")
+    assert result.returncode == 2
+    assert "--check" in result.stderr
+
+
+@pytest.mark.parametrize("name", ["sox_22050.mp3", "phone.m4a", "clip.webm"])
+def test_recordings_as_people_have_them_align(name):
+    audio = SOURCE_DIR / "tests" / "data" / "audio" / name
+    _, transcript = clip("one_sentence")
+    result = run("align", audio, transcript, "--json", "--quiet")
+    assert result.returncode == 0, result.stderr
+    assert len(json.loads(result.stdout)["syllables"]) == 11
+
+
+def test_a_video_without_sound_exits_1_saying_so():
+    audio = SOURCE_DIR / "tests" / "data" / "audio" / "no_sound.mp4"
+    _, transcript = clip("one_sentence")
+    result = run("align", audio, transcript, "--quiet")
+    assert result.returncode == 1
+    assert result.stderr.startswith(f"talkface: error: {audio}: a video without a sound track")

@@ -229,3 +229,20 @@ def test_alignment_plot_marks_every_syllable_and_is_written_whole(tmp_path, from
     with pytest.raises(talkface.FileError, match="no_such_speech.wav"):
         talkface.write_alignment_plot_svg(tmp_path / "never.svg", tmp_path / "no_such_speech.wav", from_file)
     assert not (tmp_path / "never.svg").exists()
+
+
+def test_check_mode_refuses_warns_of_or_skips_a_wrong_text():
+    wrong = talkface.read_transcript("我昨天在超市买了苹果和。")
+    assert talkface.AlignOptions().check == talkface.CheckMode.refuse
+    with pytest.raises(talkface.AlignmentError, match="does not sound like its text"):
+        talkface.SpeechAligner().align_file(CLIP, wrong)
+    warned = talkface.SpeechAligner(talkface.AlignOptions(check=talkface.CheckMode.warn)).align_file(CLIP, wrong)
+    findings = [w for w in warned.warnings if w.startswith("the transcript may not match the audio")]
+    assert len(findings) == 1 and "sentence 1 (0." in findings[0]
+    assert len(warned.syllables) == len(wrong.syllables)
+    options = talkface.AlignOptions()
+    options.check = talkface.CheckMode.off
+    assert "check=<CheckMode.off: 2>" in repr(options)
+    unchecked = talkface.SpeechAligner(options).align_file(CLIP, wrong)
+    assert unchecked.warnings == []
+    assert [s.start_s for s in unchecked.syllables] == [s.start_s for s in warned.syllables]

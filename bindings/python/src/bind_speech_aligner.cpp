@@ -46,6 +46,19 @@ Example:
         .value("automatic", SentenceCutMode::automatic)
         .value("first_pause", SentenceCutMode::first_pause);
 
+    py::enum_<CheckMode>(m, "CheckMode", R"doc(
+What the aligner does when the audio does not sound like its transcript: refuse (the default: strong
+evidence raises talkface.AlignmentError), warn (the finding goes to Timeline.warnings and the
+syllables are aligned as with the checks off) or off (no checks). A finding names the sentence, its
+times and the evidence; a line of a few syllables gives weak evidence, a warning in every mode.
+
+Example:
+    >>> talkface.AlignOptions(check=talkface.CheckMode.warn)
+)doc")
+        .value("refuse", CheckMode::refuse)
+        .value("warn", CheckMode::warn)
+        .value("off", CheckMode::off);
+
     py::class_<AlignOptions>(m, "AlignOptions", R"doc(
 Options of SpeechAligner; checked when a SpeechAligner is made, which names the one out of range.
 The defaults suit ordinary recordings.
@@ -55,25 +68,27 @@ Example:
     >>> aligner = talkface.SpeechAligner(options)
 )doc")
         .def(py::init([](SentenceCutMode sentence_cut, double first_pause_start_s, double first_pause_end_s,
-                         double c1, double c2) {
+                         double c1, double c2, CheckMode check) {
                  AlignOptions options;
                  options.sentence_cut = sentence_cut;
                  options.first_pause_start_s = first_pause_start_s;
                  options.first_pause_end_s = first_pause_end_s;
                  options.c1 = c1;
                  options.c2 = c2;
+                 options.check = check;
                  return options;
              }),
              py::arg("sentence_cut") = AlignOptions{}.sentence_cut,
              py::arg("first_pause_start_s") = AlignOptions{}.first_pause_start_s,
              py::arg("first_pause_end_s") = AlignOptions{}.first_pause_end_s, py::arg("c1") = AlignOptions{}.c1,
-             py::arg("c2") = AlignOptions{}.c2, R"doc(
+             py::arg("c2") = AlignOptions{}.c2, py::arg("check") = AlignOptions{}.check, R"doc(
 Args:
     sentence_cut (SentenceCutMode): automatic or first_pause.
     first_pause_start_s, first_pause_end_s (float): first_pause mode: the pause between the first two
         sentences, seconds from the start of the audio.
     c1 (float): Algorithm 3.1 step 3, shortest pause as a share of the first one, 0.5..1.
     c2 (float): Algorithm 3.1 step 4, loudest silence as a multiple of the first pause's peak, 1..1.5.
+    check (CheckMode): refuse, warn or off: what a transcript that does not match the audio does.
 
 Example:
     >>> talkface.AlignOptions()
@@ -84,10 +99,11 @@ Example:
         .def_readwrite("first_pause_end_s", &AlignOptions::first_pause_end_s, "seconds")
         .def_readwrite("c1", &AlignOptions::c1, "Algorithm 3.1 step 3, 0.5..1")
         .def_readwrite("c2", &AlignOptions::c2, "Algorithm 3.1 step 4, 1..1.5")
+        .def_readwrite("check", &AlignOptions::check, "CheckMode")
         .def("__repr__", [](const AlignOptions& o) {
             return py::str("talkface.AlignOptions(sentence_cut={!r}, first_pause_start_s={!r}, "
-                           "first_pause_end_s={!r}, c1={!r}, c2={!r})")
-                .format(o.sentence_cut, o.first_pause_start_s, o.first_pause_end_s, o.c1, o.c2);
+                           "first_pause_end_s={!r}, c1={!r}, c2={!r}, check={!r})")
+                .format(o.sentence_cut, o.first_pause_start_s, o.first_pause_end_s, o.c1, o.c2, o.check);
         });
 
     m.attr("kLowAlignmentConfidence") = kLowAlignmentConfidence;
@@ -139,8 +155,8 @@ Example:
                 });
             },
             py::arg("path"), py::arg("transcript"), py::arg("progress") = py::none(), R"doc(
-Aligns an audio file (WAV, FLAC, OGG; any rate, 8 to 32 bit or float, mono or stereo) with its
-transcript. Releases the GIL while it works.
+Aligns an audio file (WAV, FLAC, Ogg, MP3, AAC/M4A, Opus, or a video's sound track: MP4, MOV, MKV,
+WebM; any rate, mono or stereo) with its transcript. Releases the GIL while it works.
 
 Args:
     path (str | os.PathLike): the audio file.

@@ -415,12 +415,18 @@ class SentenceCutMode(enum.Enum):
     automatic = 0
     first_pause = 1
 
+class CheckMode(enum.Enum):
+    refuse = 0
+    warn = 1
+    off = 2
+
 class AlignOptions:
     sentence_cut: SentenceCutMode
     first_pause_start_s: float
     first_pause_end_s: float
     c1: float
     c2: float
+    check: CheckMode
     def __init__(
         self,
         sentence_cut: SentenceCutMode = ...,
@@ -428,6 +434,7 @@ class AlignOptions:
         first_pause_end_s: float = 0.0,
         c1: float = 0.95,
         c2: float = 1.45,
+        check: CheckMode = ...,
     ) -> None: ...
 
 _Progress = Callable[[float, str], bool | None]

@@ -21,3 +21,9 @@ rm comma_pause.wav
 "$make_corpus" --clip stereo_44k --rate-wpm 180 --pitch 60 "這條路晚上很安靜。"
 sox -R -V1 stereo_44k.wav -C 4 stereo_44k.ogg remix 1 1v0.8 rate -v 44100
 rm stereo_44k.wav
+
+# A short line spoken by a person (issue #13): gcin-voice's speaker 3 (never speaker 5), one
+# recording a syllable, joined, with 0.3 s of silence around it. Needs gcin-voice.
+gcin=/usr/share/gcin-voice/ogg
+sox -R -V1 "$gcin/ㄋㄧ3/3.ogg" "$gcin/ㄏㄠ3/3.ogg" -r 16000 -b 16 short_line.flac silence 1 0.01 0.5% reverse silence 1 0.01 0.5% reverse pad 0.3 0.3
+printf '你好。\n' > short_line.txt

@@ -1,0 +1,289 @@
+#include "audio/ffmpeg_source.hpp"
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libavutil/channel_layout.h>
+#include <libavutil/log.h>
+#include <libavutil/opt.h>
+#include <libswresample/swresample.h>
+}
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <mutex>
+#include <vector>
+
+#include "common/number_format.hpp"
+#include "talkface/errors.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+constexpr int kMaxChannels = 64;
+
+// An MP3 without a LAME/Xing tag (sox writes none) does not say how many samples of encoder delay
+// lead its first frame, and FFmpeg then keeps them: sox's 22.05 kHz MP3s came out 50 ms late. LAME,
+// the encoder behind sox, ffmpeg and Audacity alike, delays by 576 samples, and the decoder adds
+// 529: the numbers a LAME tag would carry.
+constexpr std::size_t kUntaggedMp3DelayFrames = 576 + 529;
+
+// Demuxers for recordings people have: MP3, raw AAC, MP4/M4A/MOV (one demuxer), Matroska/WebM,
+// Ogg (Opus), FLAC, WAV and a few more. Whitelisted because FFmpeg also has demuxers (playlists,
+// concat lists, image sequences) that open other files named inside the input.
+constexpr const char* kFormats = "mp3,aac,mov,matroska,webm,ogg,flac,wav,w64,aiff,caf,avi,asf,amr,au";
+
+std::string av_reason(int code) {
+    char text[AV_ERROR_MAX_STRING_SIZE] = {};
+    av_strerror(code, text, sizeof text);
+    return text;
+}
+
+std::string seconds_text(double seconds) { return format_fixed(seconds, 3) + " s"; }
+
+// The library prints nothing (STYLE.md): FFmpeg logs to stderr by default. Its log level is
+// process-wide, so it is only lowered when the host program has left FFmpeg's default in place.
+void quiet_ffmpeg_log() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        if (av_log_get_level() == AV_LOG_INFO) av_log_set_level(AV_LOG_QUIET);
+    });
+}
+
+struct FormatCloser {
+    void operator()(AVFormatContext* context) const { avformat_close_input(&context); }
+};
+struct CodecFreer {
+    void operator()(AVCodecContext* context) const { avcodec_free_context(&context); }
+};
+struct PacketFreer {
+    void operator()(AVPacket* packet) const { av_packet_free(&packet); }
+};
+struct FrameFreer {
+    void operator()(AVFrame* frame) const { av_frame_free(&frame); }
+};
+struct ResamplerFreer {
+    void operator()(SwrContext* context) const { swr_free(&context); }
+};
+
+class FfmpegSource final : public AudioSource {
+public:
+    explicit FfmpegSource(std::string path) : path_(std::move(path)) {
+        quiet_ffmpeg_log();
+        AVDictionary* options = nullptr;
+        av_dict_set(&options, "format_whitelist", kFormats, 0);
+        av_dict_set(&options, "protocol_whitelist", "file", 0);
+        AVFormatContext* raw = nullptr;
+        const int opened = avformat_open_input(&raw, path_.c_str(), nullptr, &options);
+        av_dict_free(&options);
+        if (opened < 0) {
+            if (opened == AVERROR(ENOENT) || opened == AVERROR(EACCES) || opened == AVERROR(EISDIR))
+                throw FileError(path_, av_reason(opened));
+            throw not_audio(av_reason(opened));
+        }
+        format_.reset(raw);
+        if (const int found = avformat_find_stream_info(format_.get(), nullptr); found < 0)
+            throw not_audio(av_reason(found));
+        const int stream = av_find_best_stream(format_.get(), AVMEDIA_TYPE_AUDIO, -1, -1, nullptr, 0);
+        if (stream < 0) {
+            bool has_video = false;
+            for (unsigned i = 0; i < format_->nb_streams; ++i)
+                has_video |= format_->streams[i]->codecpar->codec_type == AVMEDIA_TYPE_VIDEO;
+            if (has_video) throw ParseError(path_, 0, 0, "", "a video without a sound track: nothing to align");
+            throw not_audio("no audio stream in the " + std::string(format_->iformat->name) + " file");
+        }
+        stream_ = format_->streams[stream];
+        const AVCodecParameters* parameters = stream_->codecpar;
+        const AVCodec* codec = avcodec_find_decoder(parameters->codec_id);
+        if (codec == nullptr)
+            throw ParseError(path_, 0, 0, "", std::string("its sound track is ") + avcodec_get_name(parameters->codec_id) +
+                                                   ", which this FFmpeg cannot decode");
+        codec_.reset(avcodec_alloc_context3(codec));
+        if (!codec_) throw std::bad_alloc();
+        if (const int copied = avcodec_parameters_to_context(codec_.get(), parameters); copied < 0)
+            throw not_audio(av_reason(copied));
+        if (const int ready = avcodec_open2(codec_.get(), codec, nullptr); ready < 0)
+            throw ParseError(path_, 0, 0, "", std::string("cannot decode its ") + codec->name + " sound track: " +
+                                                   av_reason(ready));
+        sample_rate_hz_ = codec_->sample_rate;
+        if (sample_rate_hz_ <= 0 || codec_->ch_layout.nb_channels <= 0 || codec_->ch_layout.nb_channels > kMaxChannels)
+            throw ParseError(path_, 0, 0, "", "unsupported sound track: " + std::to_string(codec_->ch_layout.nb_channels) +
+                                                   " channels at " + std::to_string(sample_rate_hz_) + " Hz");
+        estimated_frames_ = estimate_frames();
+        // FFmpeg's MP3 reader moves the stream's start past the delay a LAME tag gives; no start, no tag.
+        if (parameters->codec_id == AV_CODEC_ID_MP3 && (stream_->start_time == AV_NOPTS_VALUE || stream_->start_time == 0))
+            frames_to_skip_ = kUntaggedMp3DelayFrames;
+        packet_.reset(av_packet_alloc());
+        frame_.reset(av_frame_alloc());
+        if (!packet_ || !frame_) throw std::bad_alloc();
+        // Decode up to the first samples now: a file that holds none is refused on opening.
+        if (!decode_next_frame()) throw InvalidArgument(path_, "empty audio: the sound track decodes to no samples");
+    }
+
+    ~FfmpegSource() override { av_channel_layout_uninit(&resampler_layout_); }
+    FfmpegSource(const FfmpegSource&) = delete;
+    FfmpegSource& operator=(const FfmpegSource&) = delete;
+
+    std::size_t read(float* mono, std::size_t max_frames) override {
+        std::size_t written = 0;
+        while (written < max_frames) {
+            if (pending_position_ == pending_.size()) {
+                if (!decode_next_frame()) break;
+                continue;
+            }
+            const std::size_t take = std::min(max_frames - written, pending_.size() - pending_position_);
+            std::copy_n(pending_.data() + pending_position_, take, mono + written);
+            pending_position_ += take;
+            written += take;
+        }
+        return written;
+    }
+    int sample_rate_hz() const override { return sample_rate_hz_; }
+    std::size_t frame_count() const override { return estimated_frames_; }
+    const std::string& name() const override { return path_; }
+
+private:
+    ParseError not_audio(const std::string& reason) const {
+        return ParseError(path_, 0, 0, "",
+                          "not audio talkface can read (WAV, FLAC, Ogg, MP3, AAC/M4A, Opus, or the sound track of an "
+                          "MP4, MOV, MKV or WebM video): " + reason);
+    }
+
+    // The container's length (the stream's, else the whole file's); at least 1, since progress
+    // divides by it. Only an estimate: reading goes on to the real end.
+    std::size_t estimate_frames() const {
+        double seconds = 0.0;
+        if (stream_->duration != AV_NOPTS_VALUE && stream_->duration > 0)
+            seconds = static_cast<double>(stream_->duration) * av_q2d(stream_->time_base);
+        else if (format_->duration != AV_NOPTS_VALUE && format_->duration > 0)
+            seconds = static_cast<double>(format_->duration) / AV_TIME_BASE;
+        const double frames = std::min(seconds * sample_rate_hz_, 1e12);
+        return std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(frames)));
+    }
+
+    // Decodes the next frame of the sound track into pending_ (mono); false at the end.
+    bool decode_next_frame() {
+        while (true) {
+            const int received = avcodec_receive_frame(codec_.get(), frame_.get());
+            if (received == 0) {
+                mix_down(*frame_);
+                av_frame_unref(frame_.get());
+                if (!pending_.empty()) return true;
+                continue;
+            }
+            if (received == AVERROR_EOF) return false;
+            if (received != AVERROR(EAGAIN)) throw decode_error(received);
+            if (!send_next_packet()) return false;
+        }
+    }
+
+    // Feeds the decoder the next packet of the sound track, or the end; false once the end was sent.
+    bool send_next_packet() {
+        if (flushed_) return false;
+        while (true) {
+            const int got = av_read_frame(format_.get(), packet_.get());
+            if (got == AVERROR_EOF) {
+                avcodec_send_packet(codec_.get(), nullptr);
+                flushed_ = true;
+                return true;
+            }
+            if (got < 0) throw ParseError(path_, 0, 0, "", "cannot read past " + seconds_text(seconds_read()) + ": " +
+                                                                av_reason(got));
+            if (packet_->stream_index != stream_->index) {
+                av_packet_unref(packet_.get());
+                continue;
+            }
+            const int sent = avcodec_send_packet(codec_.get(), packet_.get());
+            av_packet_unref(packet_.get());
+            // A damaged packet is skipped, as players do (a scratch in an MP3 is a click, not the end).
+            if (sent == AVERROR_INVALIDDATA) continue;
+            if (sent < 0) throw decode_error(sent);
+            return true;
+        }
+    }
+
+    ParseError decode_error(int code) const {
+        return ParseError(path_, 0, 0, "", "the sound track cannot be decoded at " + seconds_text(seconds_read()) + ": " +
+                                                av_reason(code));
+    }
+
+    double seconds_read() const { return static_cast<double>(frames_decoded_) / sample_rate_hz_; }
+
+    // Converts a decoded frame to interleaved float and averages its channels, as the libsndfile
+    // reader does, so that a file gives the same samples whichever library reads it.
+    void mix_down(const AVFrame& frame) {
+        pending_.clear();
+        pending_position_ = 0;
+        if (frame.nb_samples <= 0) return;
+        if (frame.sample_rate != sample_rate_hz_)
+            throw ParseError(path_, 0, 0, "", "the sample rate changes from " + std::to_string(sample_rate_hz_) + " to " +
+                                                   std::to_string(frame.sample_rate) + " Hz at " +
+                                                   seconds_text(seconds_read()));
+        const int channels = frame.ch_layout.nb_channels;
+        if (channels <= 0 || channels > kMaxChannels)
+            throw ParseError(path_, 0, 0, "", std::to_string(channels) + " channels at " + seconds_text(seconds_read()));
+        if (!resampler_ || frame.format != resampler_format_ || av_channel_layout_compare(&frame.ch_layout, &resampler_layout_) != 0)
+            make_resampler(frame);
+        interleaved_.resize(static_cast<std::size_t>(frame.nb_samples) * static_cast<std::size_t>(channels));
+        auto* out = reinterpret_cast<std::uint8_t*>(interleaved_.data());
+        const int converted = swr_convert(resampler_.get(), &out, frame.nb_samples,
+                                          const_cast<const std::uint8_t**>(frame.extended_data), frame.nb_samples);
+        if (converted < 0) throw decode_error(converted);
+        const auto count = static_cast<std::size_t>(converted);
+        const std::size_t skipped = std::min(frames_to_skip_, count);
+        frames_to_skip_ -= skipped;
+        pending_.resize(count - skipped);
+        for (std::size_t i = skipped; i < count; ++i) {
+            float sum = 0.0f;
+            for (std::size_t c = 0; c < static_cast<std::size_t>(channels); ++c) sum += interleaved_[i * channels + c];
+            // A damaged stream can decode to infinities; the speech stage's sums must stay finite.
+            const float mean = sum / static_cast<float>(channels);
+            pending_[i - skipped] = std::isfinite(mean) ? mean : 0.0f;
+        }
+        frames_decoded_ += count;
+    }
+
+    // Sample format conversion only (same rate, same channels): the speech stage resamples.
+    void make_resampler(const AVFrame& frame) {
+        av_channel_layout_uninit(&resampler_layout_);
+        if (av_channel_layout_copy(&resampler_layout_, &frame.ch_layout) < 0) throw std::bad_alloc();
+        SwrContext* raw = nullptr;
+        // FFmpeg 5.1 takes the layouts by non-const pointer; the copy stands for both.
+        const int made = swr_alloc_set_opts2(&raw, &resampler_layout_, AV_SAMPLE_FMT_FLT, frame.sample_rate,
+                                             &resampler_layout_, static_cast<AVSampleFormat>(frame.format),
+                                             frame.sample_rate, 0, nullptr);
+        resampler_.reset(raw);
+        if (made < 0 || swr_init(resampler_.get()) < 0)
+            throw ParseError(path_, 0, 0, "", std::string("cannot convert its samples (") +
+                                                   (av_get_sample_fmt_name(static_cast<AVSampleFormat>(frame.format))
+                                                        ? av_get_sample_fmt_name(static_cast<AVSampleFormat>(frame.format))
+                                                        : "unknown format") + ")");
+        resampler_format_ = frame.format;
+    }
+
+    std::string path_;
+    std::unique_ptr<AVFormatContext, FormatCloser> format_;
+    std::unique_ptr<AVCodecContext, CodecFreer> codec_;
+    std::unique_ptr<AVPacket, PacketFreer> packet_;
+    std::unique_ptr<AVFrame, FrameFreer> frame_;
+    std::unique_ptr<SwrContext, ResamplerFreer> resampler_;
+    AVChannelLayout resampler_layout_{};
+    int resampler_format_ = -1;
+    AVStream* stream_ = nullptr;
+    int sample_rate_hz_ = 0;
+    std::size_t estimated_frames_ = 1;
+    std::size_t frames_decoded_ = 0;
+    std::size_t frames_to_skip_ = 0;
+    bool flushed_ = false;
+    std::vector<float> interleaved_;
+    std::vector<float> pending_;
+    std::size_t pending_position_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<AudioSource> open_ffmpeg_file(const std::string& path) { return std::make_unique<FfmpegSource>(path); }
+
+}  // namespace talkface::detail

@@ -1,0 +1,24 @@
+// Audio files libsndfile does not read, or reads wrongly, through FFmpeg's libraries: MP3 (whose
+// length libsndfile only estimates), AAC/M4A, Opus, and the sound track of a video file (MP4, MOV,
+// MKV, WebM). Decoded one packet at a time; only src/audio/ sees FFmpeg's types (issue #13).
+#ifndef TALKFACE_AUDIO_FFMPEG_SOURCE_HPP
+#define TALKFACE_AUDIO_FFMPEG_SOURCE_HPP
+
+#include <memory>
+#include <string>
+
+#include "audio/audio_source.hpp"
+
+namespace talkface::detail {
+
+// Opens the first audio stream FFmpeg finds in `path` and decodes its first samples, so that a file
+// with no sound at all is refused here rather than part way through the alignment. frame_count()
+// is the container's estimate; read() goes on to the real end.
+// \throws talkface::ParseError naming the file and the reason: not a format talkface reads, a video
+//         without a sound track, a codec FFmpeg cannot decode; talkface::FileError if it cannot be
+//         opened; talkface::InvalidArgument if it decodes to no samples.
+std::unique_ptr<AudioSource> open_ffmpeg_file(const std::string& path);
+
+}  // namespace talkface::detail
+
+#endif

@@ -1,0 +1,123 @@
+// Recordings as people have them (issue #13): every format of tests/data/audio/ (make_fixtures.sh)
+// reads to its real end, gives the WAV's samples' timing, and aligns; what cannot be read says why.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "audio/audio_source.hpp"
+#include "common/test_paths.hpp"
+#include "talkface/errors.hpp"
+#include "talkface/speech_aligner.hpp"
+#include "talkface/transcript.hpp"
+
+using namespace talkface;
+
+namespace {
+
+std::string fixture(const std::string& file) { return test::source_path("tests/data/audio/" + file); }
+std::string speech_clip(const std::string& file) { return test::source_path("tests/data/speech/" + file); }
+
+// Every sample of a source, mixed to mono, read in blocks as the aligner reads them.
+std::vector<float> read_all(detail::AudioSource& source) {
+    std::vector<float> samples;
+    std::vector<float> block(1000);
+    while (const std::size_t got = source.read(block.data(), block.size())) samples.insert(samples.end(), block.begin(), block.begin() + got);
+    return samples;
+}
+
+// Loudness in 5 ms steps: comparable across sample rates and lossy codecs.
+std::vector<double> envelope(const std::vector<float>& samples, int rate_hz) {
+    std::vector<double> energy(samples.size() * 200 / static_cast<std::size_t>(rate_hz) + 1, 0.0);
+    for (std::size_t i = 0; i < samples.size(); ++i)
+        energy[i * 200 / static_cast<std::size_t>(rate_hz)] += static_cast<double>(samples[i]) * samples[i] / rate_hz;
+    return energy;
+}
+
+// The shift (in 5 ms steps, -20..20) that best lines `decoded`'s loudness up with `reference`'s.
+int best_lag(const std::vector<double>& reference, const std::vector<double>& decoded) {
+    int best = 0;
+    double best_score = -1.0;
+    for (int lag = -20; lag <= 20; ++lag) {
+        double score = 0.0;
+        for (std::size_t i = 0; i < reference.size(); ++i) {
+            const long j = static_cast<long>(i) + lag;
+            if (j >= 0 && j < static_cast<long>(decoded.size())) score += std::sqrt(reference[i] * decoded[static_cast<std::size_t>(j)]);
+        }
+        if (score > best_score) best_score = score, best = lag;
+    }
+    return best;
+}
+
+void write_bytes(const std::string& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary) << bytes;
+}
+
+const char* const kRecordings[] = {"sox_22050.mp3",  "sox_44100.mp3", "ffmpeg_16000.mp3", "ffmpeg_48000.mp3",
+                                   "phone.m4a",      "voice.opus",    "clip.mp4",         "clip.mov",
+                                   "clip.mkv",       "clip.webm"};
+
+}  // namespace
+
+TEST_SUITE("audio") {
+    TEST_CASE("MP3, M4A, Opus and a video's sound track read to the real end, in step with the WAV") {
+        const auto wav = detail::open_audio_file(speech_clip("one_sentence.wav"));
+        const std::vector<float> reference = read_all(*wav);
+        const double reference_s = static_cast<double>(reference.size()) / wav->sample_rate_hz();
+        const std::vector<double> reference_loudness = envelope(reference, wav->sample_rate_hz());
+        for (const std::string name : kRecordings) {
+            CAPTURE(name);
+            const auto source = detail::open_audio_file(fixture(name));
+            CHECK(source->name() == fixture(name));
+            const std::vector<float> samples = read_all(*source);
+            const double seconds = static_cast<double>(samples.size()) / source->sample_rate_hz();
+            // Codecs pad the end to a whole frame (at most ~50 ms); none stops short.
+            CHECK(seconds >= reference_s - 0.005);
+            CHECK(seconds <= reference_s + 0.08);
+            // No codec's delay left in: the speech starts where the WAV's does, within 5 ms.
+            CHECK(std::abs(best_lag(reference_loudness, envelope(samples, source->sample_rate_hz()))) <= 1);
+        }
+    }
+
+    TEST_CASE("each recording aligns as its WAV does") {
+        const Timeline transcript = load_transcript(speech_clip("one_sentence.txt"));
+        const SpeechAligner aligner;
+        const Timeline reference = aligner.align_file(speech_clip("one_sentence.wav"), transcript);
+        for (const std::string name : kRecordings) {
+            CAPTURE(name);
+            const Timeline timeline = aligner.align_file(fixture(name), transcript);
+            REQUIRE(timeline.syllables.size() == reference.syllables.size());
+            for (std::size_t i = 0; i < timeline.syllables.size(); ++i) {
+                CAPTURE(i);
+                CHECK(std::fabs(timeline.syllables[i].start_s - reference.syllables[i].start_s) <= 0.0301);
+            }
+        }
+    }
+
+    TEST_CASE("a video without a sound track, a damaged file and a wrong format say so, naming the file") {
+        const std::string silent_video = fixture("no_sound.mp4");
+        CHECK_THROWS_WITH_AS(detail::open_audio_file(silent_video),
+                             doctest::Contains((silent_video + ": a video without a sound track").c_str()), ParseError);
+
+        std::ifstream in(fixture("phone.m4a"), std::ios::binary);
+        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        const std::string cut = test::output_path("cut_header.m4a");
+        write_bytes(cut, bytes.substr(0, 200));
+        CHECK_THROWS_WITH_AS(detail::open_audio_file(cut), doctest::Contains((cut + ": not audio talkface can read").c_str()),
+                             ParseError);
+
+        const std::string image = test::output_path("picture.mp3");
+        write_bytes(image, std::string("\x89PNG\r\n\x1a\n", 8) + std::string(400, '\0'));
+        CHECK_THROWS_WITH_AS(detail::open_audio_file(image), doctest::Contains((image + ": not audio").c_str()), ParseError);
+
+        CHECK_THROWS_WITH_AS(SpeechAligner().align_file(silent_video, read_transcript("ni3 hao3.")),
+                             doctest::Contains("without a sound track"), ParseError);
+    }
+
+    TEST_CASE("a directory is a file error, not a parse error") {
+        const std::string folder = test::source_path("tests/data/audio");
+        CHECK_THROWS_AS(detail::open_audio_file(folder), FileError);
+    }
+}

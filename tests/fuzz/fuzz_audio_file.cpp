@@ -1,0 +1,39 @@
+// Any bytes as an audio file, read as the aligner reads one (libsndfile, else FFmpeg: MP3, M4A, Opus,
+// a video's sound track): either talkface::Error, or a positive rate and finite samples to the end.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "audio/audio_source.hpp"
+#include "talkface/errors.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    // The readers take a path: each input goes to a file of this process's own.
+    static const std::string path =
+        (std::filesystem::temp_directory_path() / ("talkface_fuzz_audio_" + std::to_string(getpid()))).string();
+    {
+        std::ofstream out(path, std::ios::binary | std::ios::trunc);
+        out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+    }
+    try {
+        const auto source = talkface::detail::open_audio_file(path);
+        if (source->sample_rate_hz() <= 0 || source->frame_count() == 0) std::abort();
+        std::vector<float> block(4096);
+        while (const std::size_t got = source->read(block.data(), block.size())) {
+            if (got > block.size()) std::abort();
+            for (std::size_t i = 0; i < got; ++i)
+                if (!std::isfinite(block[i])) std::abort();
+        }
+    } catch (const talkface::Error&) {
+    }
+    std::remove(path.c_str());
+    return 0;
+}
