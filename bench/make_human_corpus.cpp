@@ -48,6 +48,7 @@ struct Condition {
     Noise noise;
     double snr_db;
     const char* sox_effects;  ///< on the joined 16 kHz speech, before any noise ("" for none)
+    bool is_running = false;  ///< joined as running speech goes (RunningDelivery), not syllable by syllable
 };
 
 const Condition all_conditions[] = {
@@ -58,6 +59,15 @@ const Condition all_conditions[] = {
     {"h-white20", "white noise, SNR 20 dB", 1.0, 1.5, Noise::white, 20, ""},
     {"h-pink15", "pink noise, SNR 15 dB", 1.0, 1.5, Noise::pink, 15, ""},
     {"h-reverb", "room reverb (sox reverb 40 50 60)", 1.0, 1.5, Noise::none, 0, "reverb 40 50 60 gain -n -3"},
+    // Running speech: the same passages said as a fluent speaker runs syllables together.
+    {"r-clean", "running speech, tempo 1.0-1.5", 1.0, 1.5, Noise::none, 0, "", true},
+    {"r-white30", "running speech, white noise at SNR 30 dB", 1.0, 1.5, Noise::white, 30, "", true},
+    {"r-pink25", "running speech, pink noise at SNR 25 dB", 1.0, 1.5, Noise::pink, 25, "", true},
+    {"r-fast", "running speech, tempo 1.3-1.5, white noise at SNR 30 dB", 1.3, 1.5, Noise::white, 30, "", true},
+    {"r-white20", "running speech, white noise at SNR 20 dB", 1.0, 1.5, Noise::white, 20, "", true},
+    {"r-pink15", "running speech, pink noise at SNR 15 dB", 1.0, 1.5, Noise::pink, 15, "", true},
+    {"r-reverb", "running speech, room reverb (sox reverb 40 50 60)", 1.0, 1.5, Noise::none, 0,
+     "reverb 40 50 60 gain -n -3", true},
 };
 
 // --- pinyin to gcin-voice's folders --------------------------------------------------------------
@@ -274,6 +284,79 @@ Delivery draw_delivery(const talkface::Timeline& transcript, std::mt19937_64& rn
     return delivery;
 }
 
+// What running speech adds to a Delivery (the `r-` conditions). Citation syllables joined one by
+// one keep what a person says alone: a fresh attack, a long decay, a closure before every stop, a
+// pause at every comma, a steady pitch. A fluent speaker at 1.3-1.5 times a careful pace does not:
+// - a syllable's decay is cut short where the next begins: 60-85% of its sound is heard, the rest
+//   is spoken over (the next syllable starts there, with a 10 ms fade of the one before);
+// - a voiced initial (m n l r, or none) loses the first 10-40 ms of its recorded attack, then
+//   cross-fades with the vowel before over 30-70 ms; other initials overlap the one before by up to
+//   30 ms or follow after up to 15 ms; a stop's or affricate's closure lasts 0-40 ms;
+// - the pace jitters per syllable (standard deviation 0.12 of its log) on top of the wandering of
+//   Delivery, and the last syllable of a phrase is said 0.75 times as fast;
+// - the pitch falls through a sentence by 100-300 cents (declination), from a level of its own
+//   (standard deviation 100 cents), each syllable 40 cents up or down; the level falls by 3-6 dB
+//   through a sentence, from a sentence level of its own (standard deviation 3 dB);
+// - only 45% of commas are heard as a pause (0.08-0.25 s); the others run on.
+// Drawn from a stream of its own, so that the other conditions' files do not change.
+constexpr double kMeanTailKeep = 0.725;
+struct RunningDelivery {
+    std::vector<double> tail_keep;      ///< per syllable: share of its sound heard before the next starts
+    std::vector<double> attack_cut_s;   ///< per syllable: its attack left out after a voiced join
+    std::vector<double> voiced_join_s;  ///< per syllable: the cross-fade of a voiced join (negative)
+    std::vector<double> join_s;         ///< per syllable: the gap (> 0) or overlap (< 0) of another join
+    std::vector<double> closure_s;      ///< per syllable: a stop's or affricate's closure
+    std::vector<double> pace_jitter;    ///< per syllable: its pace against the wandering one
+    std::vector<double> pitch_cents;    ///< per syllable: its pitch against the sentence's line
+    std::vector<bool> comma_is_pause;   ///< per syllable after a comma: heard as a pause
+    std::vector<double> pause_s;        ///< per syllable: that pause
+    std::vector<double> sentence_cents;      ///< per sentence: its pitch level
+    std::vector<double> declination_cents;   ///< per sentence: how far its pitch falls
+    std::vector<double> sentence_gain_db;    ///< per sentence: its level
+    std::vector<double> fading_db;           ///< per sentence: how far its level falls
+};
+
+RunningDelivery draw_running(const talkface::Timeline& transcript, std::mt19937_64& rng) {
+    using talkface_bench::gaussian;
+    using talkface_bench::uniform;
+    RunningDelivery running;
+    for (std::size_t i = 0; i < transcript.syllables.size(); ++i) {
+        running.tail_keep.push_back(uniform(rng, kMeanTailKeep - 0.125, kMeanTailKeep + 0.125));
+        running.attack_cut_s.push_back(uniform(rng, 0.01, 0.04));
+        running.voiced_join_s.push_back(-uniform(rng, 0.03, 0.07));
+        running.join_s.push_back(uniform(rng, 0, 1) < 0.6 ? -uniform(rng, 0.0, 0.03) : uniform(rng, 0.0, 0.015));
+        running.closure_s.push_back(uniform(rng, 0.0, 0.04));
+        running.pace_jitter.push_back(std::exp(0.12 * gaussian(rng)));
+        running.pitch_cents.push_back(40.0 * gaussian(rng));
+        running.comma_is_pause.push_back(uniform(rng, 0, 1) < 0.45);
+        running.pause_s.push_back(uniform(rng, 0.08, 0.25));
+    }
+    for (std::size_t k = 0; k < transcript.sentences.size(); ++k) {
+        running.sentence_cents.push_back(100.0 * gaussian(rng));
+        running.declination_cents.push_back(uniform(rng, 100.0, 300.0));
+        running.sentence_gain_db.push_back(3.0 * gaussian(rng));
+        running.fading_db.push_back(uniform(rng, 3.0, 6.0));
+    }
+    return running;
+}
+
+// `sound` read `factor` times faster by linear interpolation: its pitch (and its formants) raised
+// by `factor`, its length divided by it. Speaker 3's syllables are near 8 kHz-band speech, and
+// the factors here are within 0.8-1.25, so the interpolation's own roll-off does not matter.
+std::vector<float> resampled(const std::vector<float>& sound, double factor) {
+    std::vector<float> out;
+    if (sound.size() < 2) return sound;
+    const auto count = static_cast<std::size_t>(static_cast<double>(sound.size() - 1) / factor);
+    out.reserve(count);
+    for (std::size_t n = 0; n < count; ++n) {
+        const double at = static_cast<double>(n) * factor;
+        const auto k = static_cast<std::size_t>(at);
+        const double share = at - static_cast<double>(k);
+        out.push_back(static_cast<float>(sound[k] * (1.0 - share) + sound[k + 1] * share));
+    }
+    return out;
+}
+
 struct Recording {
     MonoAudio audio;
     talkface::Timeline truth;
@@ -285,21 +368,32 @@ struct Recording {
 // The level of the joined speech: speaker 3's syllables are recorded near -10 dBFS at their peak.
 constexpr double kOverallGain = 0.7;
 
-Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, const Condition& condition,
-                SyllableBank& bank, const std::string& where) {
+Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, const RunningDelivery& running,
+                const Condition& condition, SyllableBank& bank, const std::string& where) {
     Recording recording;
     recording.truth = transcript;
     recording.audio.sample_rate_hz = kRateHz;
     auto& samples = recording.audio.samples;
     recording.after_pause.assign(transcript.syllables.size(), false);
+    const bool is_running = condition.is_running;
     // `end` is where the last syllable's sound ends; sounds are added (mixed) from `at` on.
     std::size_t end = 0;
+    // The last syllable mixed in, its gain and where it starts: running speech cuts its tail.
+    std::vector<float> last_sound;
+    double last_gain = 0.0;
+    std::size_t last_at = 0;
     const auto to_samples = [](double seconds) { return static_cast<std::size_t>(std::lround(seconds * kRateHz)); };
     const auto seconds = [](std::size_t at) { return static_cast<double>(at) / kRateHz; };
     for (std::size_t k = 0; k < transcript.sentences.size(); ++k) {
         end += to_samples(delivery.sentence_gaps_s[k]);
         const double tempo = condition.min_tempo + (condition.max_tempo - condition.min_tempo) * delivery.tempo_unit[k];
         recording.tempo.push_back(tempo);
+        std::size_t sentence_first = transcript.syllables.size(), sentence_count = 0;
+        for (std::size_t i = 0; i < transcript.syllables.size(); ++i) {
+            if (transcript.syllables[i].sentence != k) continue;
+            sentence_first = std::min(sentence_first, i);
+            ++sentence_count;
+        }
         bool is_first = true;
         for (std::size_t i = 0; i < transcript.syllables.size(); ++i) {
             auto& syllable = recording.truth.syllables[i];
@@ -312,32 +406,64 @@ Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, 
             const bool after_comma = !is_first && transcript.syllables[i - 1].pause_after;
             const bool ends_phrase = syllable.pause_after || i + 1 == transcript.syllables.size() ||
                                      transcript.syllables[i + 1].sentence != k;
-            double pace = tempo * delivery.syllable_pace[i];
+            // Where in its sentence the syllable comes, 0 to 1: pitch and level fall along it.
+            const double position = sentence_count > 1 ? static_cast<double>(i - sentence_first) / static_cast<double>(sentence_count - 1) : 0.0;
+            double pace = tempo * delivery.syllable_pace[i] * (is_running ? running.pace_jitter[i] : 1.0);
             double gain = kOverallGain * delivery.gain[i];
             if (reading.tone == 5) {
                 pace *= is_exact ? 1.2 : 1.7;
                 gain *= 0.5;
             }
-            if (ends_phrase) pace *= 0.85;
-            const std::vector<float>& sound = bank.at(folder, std::clamp(kCitationToCareful * pace, 1.0, 4.0));
-            const bool after_pause = is_first || after_comma;
-            if (after_comma) end += to_samples(delivery.pause_s[i]);
+            if (ends_phrase) pace *= is_running ? 0.75 : 0.85;
+            std::vector<float> sound;
+            if (is_running) {
+                gain *= std::pow(10.0, (running.sentence_gain_db[k] - running.fading_db[k] * position) / 20.0);
+                const double cents = running.sentence_cents[k] - running.declination_cents[k] * position + running.pitch_cents[i];
+                const double factor = std::pow(2.0, cents / 1200.0);
+                // Read `factor` times faster after sox's tempo: sox makes up the rest of the pace. Its
+                // tail spoken over, a syllable is said slower for the same pace: kMeanTailKeep of it
+                // is heard before the next, which then comes when it would at that pace.
+                const double citation_pace = std::clamp(kCitationToCareful * pace * kMeanTailKeep, 0.8, 4.0);
+                sound = resampled(bank.at(folder, citation_pace / factor), factor);
+            } else {
+                sound = bank.at(folder, std::clamp(kCitationToCareful * pace, 1.0, 4.0));
+            }
+            const bool after_pause = is_first || (after_comma && (!is_running || running.comma_is_pause[i]));
+            if (after_comma && after_pause) end += to_samples(is_running ? running.pause_s[i] : delivery.pause_s[i]);
+            const bool is_voiced_join = !after_pause && is_voiced_onset(reading.initial);
+            if (is_running && !after_pause) {
+                // The last syllable's decay is spoken over: it ends (a 10 ms fade) where this one begins.
+                const std::size_t heard = last_at + static_cast<std::size_t>(running.tail_keep[i] * static_cast<double>(last_sound.size()));
+                if (heard < end) {
+                    const std::size_t fade = std::min<std::size_t>(kRateHz / 100, heard - last_at);
+                    for (std::size_t n = heard - fade; n < end; ++n) {
+                        const double kept = n < heard ? static_cast<double>(heard - n) / static_cast<double>(fade) : 0.0;
+                        samples[n] -= static_cast<float>((1.0 - kept) * last_gain * last_sound[n - last_at]);
+                    }
+                    end = heard;
+                }
+                if (is_voiced_join) {
+                    const std::size_t cut = std::min(to_samples(running.attack_cut_s[i]), sound.size() / 4);
+                    sound.erase(sound.begin(), sound.begin() + static_cast<std::ptrdiff_t>(cut));
+                }
+            }
             // The truth (SPEC "Alignment"): after a pause, the first sound (a stop's burst); after
             // speech, a stop's or affricate's closure start, any other initial's first sound.
             std::size_t at = end;
             std::size_t start = end;
             if (!after_pause && has_closure(reading.initial)) {
-                at = end + to_samples(delivery.closure_s[i]);
+                at = end + to_samples(is_running ? running.closure_s[i] : delivery.closure_s[i]);
             } else if (!after_pause) {
                 // A voiced initial (m n l r, or none: a vowel, y-, w-) after a vowel is voiced right
                 // through: the two cross-fade over the whole overlap, with no dip and no attack.
-                const double join = is_voiced_onset(reading.initial) ? delivery.voiced_join_s[i] : delivery.join_s[i];
+                const double join = is_voiced_join ? (is_running ? running.voiced_join_s[i] : delivery.voiced_join_s[i])
+                                                    : (is_running ? running.join_s[i] : delivery.join_s[i]);
                 at = join >= 0 ? end + to_samples(join) : end - std::min(to_samples(-join), sound.size() / 4);
                 start = at;
             }
             syllable.start_s = seconds(start);
             recording.after_pause[i] = after_pause;
-            const std::size_t fade = !after_pause && is_voiced_onset(reading.initial) && at < end ? end - at : 0;
+            const std::size_t fade = is_voiced_join && at < end ? end - at : 0;
             if (samples.size() < at + sound.size()) samples.resize(at + sound.size(), 0.0f);
             for (std::size_t n = 0; n < fade; ++n) {
                 const double share = 0.5 - 0.5 * std::cos(3.141592653589793 * static_cast<double>(n) / static_cast<double>(fade));
@@ -345,9 +471,12 @@ Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, 
             }
             for (std::size_t n = fade; n < sound.size(); ++n) samples[at + n] += static_cast<float>(gain) * sound[n];
             end = at + sound.size();
+            last_sound = std::move(sound);
+            last_gain = gain;
+            last_at = at;
             syllable.end_s = seconds(end);
             // A syllable ends where the next starts, or at its last sound before a pause.
-            if (!is_first && !transcript.syllables[i - 1].pause_after) recording.truth.syllables[i - 1].end_s = syllable.start_s;
+            if (!is_first && !after_pause) recording.truth.syllables[i - 1].end_s = syllable.start_s;
             is_first = false;
         }
         // A sentence runs from its first syllable's start to its last sound.
@@ -405,6 +534,13 @@ void make_corpus(const CorpusOptions& options) {
         passages.push_back(planned);
         deliveries.push_back(draw_delivery(talkface::read_transcript(planned.transcript, {}, planned.name), rng));
     });
+    // Running speech's draws come from a stream of their own per passage: the h- files stay as they were.
+    std::vector<RunningDelivery> runnings;
+    for (std::size_t p = 0; p < passages.size(); ++p) {
+        std::seed_seq running_seed{options.seed, static_cast<std::uint64_t>(p), std::uint64_t{12}};
+        std::mt19937_64 running_rng(running_seed);
+        runnings.push_back(draw_running(talkface::read_transcript(passages[p].transcript, {}, passages[p].name), running_rng));
+    }
     const fs::path out = options.out_dir;
     const fs::path work = out / ".work";
     fs::create_directories(work);
@@ -425,7 +561,7 @@ void make_corpus(const CorpusOptions& options) {
             // The noise comes from a stream of its own per passage and condition.
             std::seed_seq noise_seed{options.seed, static_cast<std::uint64_t>(p), condition_index};
             std::mt19937_64 noise_rng(noise_seed);
-            const Recording recording = speak(transcript, deliveries[p], *condition, bank, passage.name);
+            const Recording recording = speak(transcript, deliveries[p], runnings[p], *condition, bank, passage.name);
             const fs::path stem = out / condition->name / passage.name;
             talkface_bench::write_wav(stem.string() + ".wav", record(recording, *condition, work, noise_rng));
             talkface_bench::write_text(stem.string() + ".txt", passage.transcript);
@@ -452,7 +588,7 @@ void make_clip(const std::string& stem, const std::string& text, std::uint64_t s
     const fs::path work = fs::path(stem).parent_path() / (fs::path(stem).filename().string() + ".work");
     fs::create_directories(work);
     SyllableBank bank(voice_dir, work);
-    const Recording recording = speak(transcript, delivery, condition, bank, stem);
+    const Recording recording = speak(transcript, delivery, draw_running(transcript, rng), condition, bank, stem);
     talkface_bench::write_wav(stem + ".wav", recording.audio);
     talkface_bench::write_text(stem + ".txt", text + "\n");
     talkface_bench::write_text(stem + ".json", truth_json(recording, "clip", "test"));
