@@ -29,8 +29,11 @@ libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev li
 # their users open them with (issue #15). gcin-voice holds every Mandarin syllable as a person
 # recorded it: its speaker 3 is the aligner's human test voice (tests/speech/human_speech_test.cpp,
 # bench/make_human_corpus).
+# python3-dask and python3-distributed run the batch jobs (talkface.batch, `python3 -m talkface batch`)
+# and start the real scheduler and workers of its test.
 test_packages="python3-pil python3-pytest python3-venv python3-pip python3-setuptools chromium fonts-dejavu-core
-python3-skimage python-matplotlib-data librsvg2-bin libdlib-data fonts-noto-cjk praat ffmpeg gcin-voice"
+python3-skimage python-matplotlib-data librsvg2-bin libdlib-data fonts-noto-cjk praat ffmpeg gcin-voice
+python3-dask python3-distributed"
 bench_packages="espeak-ng libespeak-ng-dev sox libsox-fmt-all time"
 
 case "${1:-build}" in

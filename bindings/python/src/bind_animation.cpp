@@ -22,7 +22,11 @@ Example:
         .def("__len__", [](const Animation& a) { return a.frames.size(); })
         .def(
             "key_frames_json",
-            [](const Animation& a) { return key_frames_json(a.mouth_key_frames, a.events, a.fps, a.duration_s); },
+            [](const Animation& a) {
+                const Animation copy = a;
+                py::gil_scoped_release release;
+                return key_frames_json(copy.mouth_key_frames, copy.events, copy.fps, copy.duration_s);
+            },
             R"doc(
 The key frames as JSON, one item per line, times with at most 3 decimals:
 {"fps":25,"duration":s, "mouth":[{"time":s,"shape":"a","syllable":k}], "events":[{"kind":"blink",
@@ -34,7 +38,12 @@ Example:
     >>> document["mouth"][0]
 )doc")
         .def(
-            "key_frames_tsv", [](const Animation& a) { return key_frames_tsv(a.mouth_key_frames); },
+            "key_frames_tsv",
+            [](const Animation& a) {
+                const std::vector<MouthKeyFrame> key_frames = a.mouth_key_frames;
+                py::gil_scoped_release release;
+                return key_frames_tsv(key_frames);
+            },
             R"doc(
 The mouth key frames as "time<TAB>shape" lines, no header.
 
@@ -79,7 +88,7 @@ Example:
     >>> len(animation.frames), animation.key_frames_tsv()
 )doc");
     m.def("key_frames_json", &key_frames_json, py::arg("mouth_key_frames"), py::arg("events"), py::arg("fps"),
-          py::arg("duration_s"), R"doc(
+          py::arg("duration_s"), py::call_guard<py::gil_scoped_release>(), R"doc(
 Key frames and events as the keyframes JSON document (see Animation.key_frames_json), with the
 frame rate they sit on and the animation's length in seconds.
 
@@ -90,7 +99,8 @@ Example:
     >>> talkface.key_frames_json(talkface.mouth_key_frames(timeline), simulator.events(), 25.0, 3.2)
     >>> talkface.key_frames_json([], [], 25.0, 0.0)
 )doc");
-    m.def("key_frames_tsv", &key_frames_tsv, py::arg("mouth_key_frames"), R"doc(
+    m.def("key_frames_tsv", &key_frames_tsv, py::arg("mouth_key_frames"), py::call_guard<py::gil_scoped_release>(),
+          R"doc(
 Mouth key frames as "time<TAB>shape" lines (see Animation.key_frames_tsv).
 
 Example:

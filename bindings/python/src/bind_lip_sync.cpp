@@ -156,8 +156,15 @@ Example:
                 .format(o.fps, o.rest_min_pause_s, o.rest_transition_s, o.interpolation, o.max_speed_mns0_per_s);
         });
 
-    m.def("mouth_key_frames", &mouth_key_frames, py::arg("timeline"), py::arg("options") = LipSyncOptions{},
-          R"doc(
+    m.def(
+        "mouth_key_frames",
+        [](const Timeline& timeline, const LipSyncOptions& options) {
+            const Timeline timeline_copy = timeline;
+            const LipSyncOptions options_copy = options;
+            py::gil_scoped_release release;
+            return mouth_key_frames(timeline_copy, options_copy);
+        },
+        py::arg("timeline"), py::arg("options") = LipSyncOptions{}, R"doc(
 The mouth key frames of a timeline, in rising time, each on a frame: the rest (m) at 0 and in pauses,
 then each syllable's shapes at their onsets (thesis 5.3).
 

@@ -217,7 +217,10 @@ Example:
     m.def(
         "alignment_plot_svg",
         [](const std::filesystem::path& audio_path, const Timeline& timeline) {
-            return alignment_plot_svg(audio_path.string(), timeline);
+            const std::string audio = audio_path.string();
+            const Timeline timeline_copy = timeline;
+            py::gil_scoped_release release;
+            return alignment_plot_svg(audio, timeline_copy);
         },
         py::arg("audio_path"), py::arg("timeline"), R"doc(
 The picture of an alignment (thesis Figures 3.5 and 3.8) as an SVG document: the audio's waveform,
@@ -236,7 +239,11 @@ Example:
     m.def(
         "write_alignment_plot_svg",
         [](const std::filesystem::path& svg_path, const std::filesystem::path& audio_path, const Timeline& timeline) {
-            write_alignment_plot_svg(svg_path.string(), audio_path.string(), timeline);
+            const std::string svg = svg_path.string();
+            const std::string audio = audio_path.string();
+            const Timeline timeline_copy = timeline;
+            py::gil_scoped_release release;
+            write_alignment_plot_svg(svg, audio, timeline_copy);
         },
         py::arg("svg_path"), py::arg("audio_path"), py::arg("timeline"), R"doc(
 Writes alignment_plot_svg(audio_path, timeline) to svg_path through a temporary file that is

@@ -11,7 +11,9 @@ void bind_timeline_json(py::module_& m) {
         [](const Timeline& timeline, bool with_times) {
             TimelineJsonOptions options;
             options.with_times = with_times;
-            return timeline_to_json(timeline, options);
+            const Timeline timeline_copy = timeline;
+            py::gil_scoped_release release;
+            return timeline_to_json(timeline_copy, options);
         },
         py::arg("timeline"), py::arg("with_times") = true, R"doc(
 The timeline as the timeline JSON (docs/timeline-format.md): {"version": 1, "sentences": [...],
@@ -30,7 +32,10 @@ Example:
 )doc");
     m.def(
         "timeline_from_json",
-        [](std::string_view text, const std::string& source_name) { return timeline_from_json(text, source_name); },
+        [](std::string_view text, const std::string& source_name) {
+            py::gil_scoped_release release;
+            return timeline_from_json(text, source_name);
+        },
         py::arg("text"), py::arg("source_name") = "<timeline>", R"doc(
 Reads the timeline JSON. Keys left out take their defaults (times 0, confidence 1), so the output
 of `talkface syllables --json` reads too; keys this version does not know are skipped.
@@ -49,7 +54,12 @@ Example:
 )doc");
     m.def(
         "load_timeline_json",
-        [](const std::filesystem::path& path) { return load_timeline_json(path.string()); }, py::arg("path"),
+        [](const std::filesystem::path& path) {
+            const std::string json_path = path.string();
+            py::gil_scoped_release release;
+            return load_timeline_json(json_path);
+        },
+        py::arg("path"),
         R"doc(
 Reads a timeline JSON file as timeline_from_json() does; messages name the path.
 
@@ -65,7 +75,10 @@ Example:
         [](const std::filesystem::path& path, const Timeline& timeline, bool with_times) {
             TimelineJsonOptions options;
             options.with_times = with_times;
-            save_timeline_json(path.string(), timeline, options);
+            const std::string json_path = path.string();
+            const Timeline timeline_copy = timeline;
+            py::gil_scoped_release release;
+            save_timeline_json(json_path, timeline_copy, options);
         },
         py::arg("path"), py::arg("timeline"), py::arg("with_times") = true, R"doc(
 Writes timeline_to_json() to a file, whole or not at all (a temporary file renamed over it).

@@ -34,7 +34,9 @@ Raises:
         "export_to_string",
         [](const Timeline& timeline, const Animation& animation, const std::string& format,
            const std::string& audio_path) {
-            return export_to_string(export_input(timeline, animation, audio_path), format);
+            const ExportInput input = export_input(timeline, animation, audio_path);
+            py::gil_scoped_release release;
+            return export_to_string(input, format);
         },
         py::arg("timeline"), py::arg("animation"), py::arg("format"), py::arg("audio_path") = "", R"doc(
 The speech's timing in a tool's format, spanning 0 to timeline.duration_s: Rhubarb Lip Sync cues
@@ -59,7 +61,9 @@ Example:
         "export_to_file",
         [](const std::filesystem::path& path, const Timeline& timeline, const Animation& animation,
            const std::string& format, const std::string& audio_path) {
-            export_to_file(path.string(), export_input(timeline, animation, audio_path), format);
+            const ExportInput input = export_input(timeline, animation, audio_path);
+            py::gil_scoped_release release;
+            export_to_file(path.string(), input, format);
         },
         py::arg("path"), py::arg("timeline"), py::arg("animation"), py::arg("format") = "",
         py::arg("audio_path") = "", R"doc(
@@ -79,7 +83,9 @@ The timing import formats: ["textgrid", "srt", "vtt", "words-json", "timeline-js
         "read_timing_string",
         [](std::string_view text, const std::string& format, const Timeline& transcript, double duration_s,
            const std::string& source_name) {
-            return read_timing_string(text, format, transcript, duration_s, source_name);
+            const Timeline transcript_copy = transcript;
+            py::gil_scoped_release release;
+            return read_timing_string(text, format, transcript_copy, duration_s, source_name);
         },
         py::arg("text"), py::arg("format"), py::arg("transcript"), py::arg("duration_s") = 0.0,
         py::arg("source_name") = "<timing>", R"doc(
@@ -105,7 +111,11 @@ Example:
     m.def(
         "read_timing_file",
         [](const std::filesystem::path& path, const Timeline& transcript, double duration_s,
-           const std::string& format) { return read_timing_file(path.string(), transcript, duration_s, format); },
+           const std::string& format) {
+            const Timeline transcript_copy = transcript;
+            py::gil_scoped_release release;
+            return read_timing_file(path.string(), transcript_copy, duration_s, format);
+        },
         py::arg("path"), py::arg("transcript"), py::arg("duration_s") = 0.0, py::arg("format") = "", R"doc(
 read_timing_string() of a file; format "" takes it from the suffix (.TextGrid .srt .vtt .json).
 
@@ -115,7 +125,14 @@ Raises:
 Example:
     >>> timeline = talkface.read_timing_file("words.json", transcript, 4.2)
 )doc");
-    m.def("write_timing_string", &write_timing_string, py::arg("timeline"), py::arg("format"), R"doc(
+    m.def(
+        "write_timing_string",
+        [](const Timeline& timeline, const std::string& format) {
+            const Timeline timeline_copy = timeline;
+            py::gil_scoped_release release;
+            return write_timing_string(timeline_copy, format);
+        },
+        py::arg("timeline"), py::arg("format"), R"doc(
 The timeline in an import format, so that read_timing_string() gives its times back (syllable by
 syllable for textgrid and words-json, sentence by sentence for srt and vtt).
 
@@ -127,8 +144,9 @@ Example:
         "time_transcript",
         [](const std::filesystem::path& timing_path, const std::filesystem::path& audio_path,
            const Timeline& transcript, const std::string& format) {
+            const Timeline transcript_copy = transcript;
             py::gil_scoped_release release;
-            return time_transcript(timing_path.string(), audio_path.string(), transcript, format);
+            return time_transcript(timing_path.string(), audio_path.string(), transcript_copy, format);
         },
         py::arg("timing_path"), py::arg("audio_path"), py::arg("transcript"), py::arg("format") = "", R"doc(
 The transcript spoken in a recording, timed by a timing file instead of aligning the whole
@@ -143,8 +161,14 @@ Raises:
 Example:
     >>> timeline = talkface.time_transcript("speech.srt", "speech.wav", transcript)
 )doc");
-    m.def("audio_duration_s", [](const std::filesystem::path& path) { return audio_duration_s(path.string()); },
-          py::arg("audio_path"), R"doc(
+    m.def(
+        "audio_duration_s",
+        [](const std::filesystem::path& path) {
+            const std::string audio_path = path.string();
+            py::gil_scoped_release release;
+            return audio_duration_s(audio_path);
+        },
+        py::arg("audio_path"), R"doc(
 The length of a recording in seconds, from its header.
 
 Example:

@@ -180,6 +180,7 @@ Example:
     m.def(
         "read_transcript",
         [](std::string_view text, const std::string& source_name, bool read_pinyin) {
+            py::gil_scoped_release release;
             return read_transcript(text, transcript_options(read_pinyin), source_name);
         },
         py::arg("text"), py::arg("source_name") = "<transcript>", py::arg("read_pinyin") = true, R"doc(
@@ -208,7 +209,9 @@ Example:
     m.def(
         "load_transcript",
         [](const std::filesystem::path& path, bool read_pinyin) {
-            return load_transcript(path.string(), transcript_options(read_pinyin));
+            const std::string transcript_path = path.string();
+            py::gil_scoped_release release;
+            return load_transcript(transcript_path, transcript_options(read_pinyin));
         },
         py::arg("path"), py::arg("read_pinyin") = true, R"doc(
 Reads a UTF-8 transcript file as read_transcript() does; messages name the path.

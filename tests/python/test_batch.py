@@ -1,0 +1,194 @@
+"""talkface.batch without a cluster: the manifest, each job kind, skipping, and files left behind.
+The jobs run on the bundled speech's shortest clip (tests/data/speech/one_sentence: 3.1 s)."""
+
+import json
+import os
+import pathlib
+import xml.etree.ElementTree as ElementTree
+
+import pytest
+
+import talkface
+import talkface.batch as batch
+
+SOURCE_DIR = pathlib.Path(__file__).resolve().parents[2]
+SPEECH = SOURCE_DIR / "tests" / "data" / "speech"
+AUDIO = SPEECH / "one_sentence.wav"
+TRANSCRIPT = SPEECH / "one_sentence.txt"
+AUDIO_S = 3.1
+
+
+def write_manifest(tmp_path, text, name="jobs.csv"):
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    return str(path)
+
+
+def parse_error(tmp_path, text):
+    path = write_manifest(tmp_path, text)
+    with pytest.raises(talkface.ParseError) as raised:
+        batch.read_manifest(path)
+    return path, raised.value
+
+
+def test_manifest_rows_become_jobs_with_paths_beside_the_manifest(tmp_path):
+    (tmp_path / "sub").mkdir()
+    path = write_manifest(
+        tmp_path / "sub",
+        "\ufeffoutput, audio ,transcript,seed,app,style,face,timing\n"
+        "out/a.html,a.ogg,a.txt,7,audiobook,announcer,,\n"
+        "\n"
+        '"out/b, with comma.mp4",/abs/b.wav,b.txt,,plain,my_style.json,face.xml,b.srt\n',
+    )
+    jobs = batch.read_manifest(path)
+    folder = str(tmp_path / "sub")
+    assert [job.row for job in jobs] == [2, 4]
+    first, second = jobs
+    assert first.output == os.path.join(folder, "out", "a.html")
+    assert first.audio == os.path.join(folder, "a.ogg")
+    assert (first.seed, first.app, first.style, first.face, first.timing) == (7, "audiobook", "announcer", "", "")
+    assert second.output == os.path.join(folder, "out", "b, with comma.mp4")
+    assert second.audio == "/abs/b.wav"
+    assert second.style == os.path.join(folder, "my_style.json")
+    assert second.face == os.path.join(folder, "face.xml")
+    assert second.timing == os.path.join(folder, "b.srt")
+    assert second.seed == 0
+    assert second.where() == f"{path}:4"
+    assert set(second.inputs()) == {second.audio, second.transcript, second.face, second.style, second.timing}
+
+
+@pytest.mark.parametrize(
+    "text, line, item, words",
+    [
+        ("audio,transcript\n", 1, "output", 'no "output" column'),
+        ("audio,transcript,output,speed\n", 1, "speed", 'unknown column "speed"'),
+        ("audio,transcript,output,audio\n", 1, "audio", "appears twice"),
+        ("audio,transcript,output\na.ogg,a.txt,a.html\nb.ogg,b.txt\n", 3, "", "2 fields"),
+        ("audio,transcript,output\na.ogg,a.txt,a.html\n\nb.ogg,,b.html\n", 4, "transcript", "empty"),
+        ("audio,transcript,output\na.ogg,a.txt,a.docx\n", 2, "output", "a.docx"),
+        ("audio,transcript,output,seed\na.ogg,a.txt,a.html,-1\n", 2, "seed", '"-1"'),
+        ("audio,transcript,output,seed\na.ogg,a.txt,a.html,18446744073709551616\n", 2, "seed", "2^64-1"),
+        ("audio,transcript,output,app\na.ogg,a.txt,a.json,audiobook\n", 2, "app", "only pages and videos"),
+        ("audio,transcript,output,app\na.ogg,a.txt,a.mp4,audiobook\n", 2, "app", "announcer, plain"),
+        ("audio,transcript,output\na.ogg,a.txt,x.html\nb.ogg,b.txt,./x.html\n", 3, "output", "line 2"),
+        ('audio,transcript,output\na.ogg,"a.txt,a.html\n', 2, "", "not CSV"),
+        ("", 1, "", "empty"),
+    ],
+)
+def test_manifest_errors_name_file_line_and_column(tmp_path, text, line, item, words):
+    path, error = parse_error(tmp_path, text)
+    assert str(error).startswith(f"{path}:{line}: ")
+    assert words in str(error)
+    assert (error.path, error.line, error.item) == (path, line, item)
+    if item:
+        assert f"column {item}" in str(error)
+
+
+def test_a_manifest_that_is_not_utf8_names_its_line(tmp_path):
+    path = tmp_path / "jobs.csv"
+    path.write_bytes(b"audio,transcript,output\na.ogg,a.txt,a.html\n\xff.ogg,a.txt,b.html\n")
+    with pytest.raises(talkface.ParseError, match=r"jobs.csv:3: not UTF-8"):
+        batch.read_manifest(str(path))
+
+
+def test_a_missing_manifest_is_a_file_error(tmp_path):
+    with pytest.raises(OSError) as raised:
+        batch.read_manifest(str(tmp_path / "none.csv"))
+    assert isinstance(raised.value, talkface.FileError)
+    assert "none.csv" in str(raised.value)
+
+
+@pytest.mark.parametrize(
+    "output, kind",
+    [("a.html", "page"), ("a.svg", "svg"), ("a.mp4", "video"), ("a.WEBM", "video"), ("a.webp", "video"),
+     ("a.json", "keyframes"), ("a.motion3.json", "export:live2d"), ("a.tsv", "export:rhubarb-tsv"),
+     ("a.xml", "export:rhubarb-xml"), ("a.dat", "export:moho"), ("a.TextGrid", "export:textgrid"),
+     ("a.srt", "export:srt"), ("a.vtt", "export:vtt")],
+)
+def test_the_extension_picks_the_job(output, kind):
+    assert batch.job_kind(output) == kind
+
+
+def test_an_unknown_extension_lists_the_known_ones():
+    with pytest.raises(talkface.InvalidArgument, match=r"\.html .*\.mp4 .*\.TextGrid") as raised:
+        batch.job_kind("frames.png")  # a numbered sequence is many files: not a batch output
+    assert raised.value.parameter == "output"
+
+
+def check_whole(path):
+    """The output parses as its kind and spans the clip's 3.1 s."""
+    text = path.read_text(encoding="utf-8")
+    if path.name.endswith(".motion3.json"):
+        assert json.loads(text)["Meta"]["Duration"] == pytest.approx(AUDIO_S, abs=0.1)
+    elif path.suffix == ".json":
+        assert json.loads(text)["duration"] == pytest.approx(AUDIO_S, abs=0.1)
+    elif path.suffix == ".html":
+        assert text.startswith("<!DOCTYPE html>") and text.rstrip().endswith("</html>")
+    elif path.suffix == ".svg":
+        assert ElementTree.fromstring(text).tag.endswith("svg")
+    elif path.suffix == ".TextGrid":
+        xmax = float(text.split("xmax = ", 1)[1].split()[0])
+        assert xmax == pytest.approx(AUDIO_S, abs=0.1)
+    else:
+        assert text
+
+
+@pytest.mark.parametrize("name", ["a.json", "a.html", "a.svg", "a.TextGrid", "a.srt", "a.motion3.json"])
+def test_run_job_writes_a_whole_output_and_nothing_else(tmp_path, name):
+    output = tmp_path / "new folder" / name
+    result = batch.run_job(batch.Job(str(AUDIO), str(TRANSCRIPT), str(output)))
+    assert (result.status, result.message) == ("done", "")
+    assert result.output_size == output.stat().st_size > 0
+    assert result.seconds > 0 and result.worker.endswith(f":{os.getpid()}")
+    check_whole(output)
+    assert os.listdir(output.parent) == [name]
+
+
+def test_a_job_is_skipped_while_its_output_is_newer_than_its_inputs(tmp_path):
+    transcript = tmp_path / "speech.txt"
+    transcript.write_bytes(TRANSCRIPT.read_bytes())
+    output = tmp_path / "keys.json"
+    job = batch.Job(str(AUDIO), str(transcript), str(output), seed=3)
+    assert batch.run_job(job).status == "done"
+    first = output.stat().st_mtime_ns
+    skipped = batch.run_job(job)
+    assert (skipped.status, skipped.output_size) == ("skipped", output.stat().st_size)
+    assert output.stat().st_mtime_ns == first
+    assert batch.run_job(job, force=True).status == "done"
+    os.utime(transcript, ns=(output.stat().st_mtime_ns + 10**9,) * 2)  # the transcript was edited
+    assert batch.run_job(job).status == "done"
+
+
+def test_a_failed_job_says_why_and_leaves_no_file(tmp_path):
+    not_audio = tmp_path / "noise.wav"
+    not_audio.write_text("not audio", encoding="utf-8")
+    leftover = tmp_path / "a.html.tmp-Ab12Cd"  # as a killed writer leaves it
+    leftover.write_text("half a page", encoding="utf-8")
+    cases = [
+        (batch.Job(str(not_audio), str(TRANSCRIPT), str(tmp_path / "a.html")), "noise.wav: not audio"),
+        (batch.Job(str(tmp_path / "none.wav"), str(TRANSCRIPT), str(tmp_path / "b.json")), "none.wav"),
+        (batch.Job(str(AUDIO), str(tmp_path / "none.txt"), str(tmp_path / "c.srt")), "none.txt"),
+        (batch.Job(str(AUDIO), str(SPEECH / "run_together.txt"), str(tmp_path / "d.json")), "sentence"),
+        (batch.Job(str(AUDIO), str(TRANSCRIPT), str(tmp_path / "e.json"), face=str(TRANSCRIPT)), "one_sentence.txt:1"),
+    ]
+    for job, words in cases:
+        result = batch.run_job(job)
+        assert result.status == "failed", job
+        assert words in result.message
+        assert result.output_size == 0
+    assert sorted(os.listdir(tmp_path)) == ["noise.wav"]
+
+
+def test_a_cancelled_job_leaves_no_file(tmp_path):
+    output = tmp_path / "a.json"
+    result = batch.run_job(batch.Job(str(AUDIO), str(TRANSCRIPT), str(output)), progress=lambda fraction, stage: False)
+    assert result.status == "failed" and "cancel" in result.message.lower()
+    assert os.listdir(tmp_path) == []
+
+
+def test_run_refuses_local_cluster_settings_for_a_running_scheduler():
+    pytest.importorskip("distributed")
+    with pytest.raises(ValueError, match="workers: applies to the local cluster only"):
+        batch.run([], scheduler="tcp://127.0.0.1:1", workers=2)
+    with pytest.raises(ValueError, match="retries"):
+        batch.run([], retries=-1)
