@@ -7,6 +7,7 @@
 #include <cmath>
 #include <array>
 #include <complex>
+#include <cstdint>
 
 #include "audio/audio_source.hpp"
 #include "common/number_format.hpp"
@@ -25,6 +26,15 @@ constexpr int kMelFilters = 24;
 // Below this peak (-80 dBFS) there is no speech to align, only dither or digital silence.
 constexpr float kSilentPeak = 1e-4f;
 constexpr double kEnergyFloor = 1e-10;
+// Dither (standard deviation: 0.3 of a 16-bit step, about -100 dBFS) added to every sample before
+// analysis, as a recording's own noise floor would be (Kaldi dithers the same way). Digital silence
+// (a synthesizer's closures, speech joined by an editor, a codec's muted bands) otherwise gives
+// frames of one constant spectrum, which the silence class learns as a spike: a path that holds the
+// faintest sound there (a decay, a fade) loses to one that does not, and a right text is refused
+// for the free sounds fitting it better (bench/ r-clean: 7 of 18 passages, h-clean: 1). A whole
+// step cost espeak-ng's reverb 2 points within 50 ms (its tails decay into digital silence); this
+// level costs it 0.3 and helps the clean speech as much.
+constexpr float kDitherStep = 0.3f / 32768.0f;
 
 double hz_to_mel(double hz) { return 2595.0 * std::log10(1.0 + hz / 700.0); }
 double mel_to_hz(double mel) { return 700.0 * (std::pow(10.0, mel / 2595.0) - 1.0); }
@@ -68,7 +78,9 @@ public:
     }
 
     void push(const float* samples, std::size_t count) {
+        const std::size_t first = pending_.size();
         pending_.insert(pending_.end(), samples, samples + count);
+        for (std::size_t i = first; i < pending_.size(); ++i) pending_[i] += dither();
         samples_in_ += count;
         std::size_t start = 0;
         while (pending_.size() - start >= kWindow) {
@@ -89,6 +101,20 @@ public:
     }
 
 private:
+    // Triangular noise (the sum of two uniform draws of xorshift64) of kDitherStep's standard
+    // deviation: the same sequence on every run, cheap enough for every sample.
+    float dither() {
+        const auto next = [this] {
+            dither_state_ ^= dither_state_ << 13;
+            dither_state_ ^= dither_state_ >> 7;
+            dither_state_ ^= dither_state_ << 17;
+            return static_cast<float>(dither_state_ >> 40) * (1.0f / 16777216.0f) - 0.5f;
+        };
+        // Each draw is uniform in [-0.5, 0.5) (variance 1/12); two of them have variance 1/6.
+        constexpr float kScale = 2.449489743f * kDitherStep;  // sqrt(6)
+        return (next() + next()) * kScale;
+    }
+
     void analyze_frame(const float* samples) {
         const std::size_t hop_start = (kWindow - kHop) / 2;
         float peak = 0.0f;
@@ -128,6 +154,7 @@ private:
     }
 
     FeatureTrack& track_;
+    std::uint64_t dither_state_ = 0x9E3779B97F4A7C15ull;
     std::vector<float> pending_;
     std::size_t samples_in_ = 0;
     std::array<float, kWindow> window_{};
