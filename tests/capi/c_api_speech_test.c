@@ -326,7 +326,7 @@ static int test_check_modes_refuse_warn_or_skip(void) {
     CHECK_OK(tf_read_transcript(wrong_text, strlen(wrong_text), "wrong.txt", &wrong));
     CHECK_OK(tf_align_options_create(&options));
     CHECK_FAILS_WITH(tf_align_file(kClipPath, wrong, options, NULL, NULL, &aligned), TF_ERR_ALIGNMENT,
-                     "does not sound like its text");
+                     "is it another sentence, or are two sentences swapped?");
     CHECK(aligned == NULL);
 
     CHECK_OK(tf_align_options_set_check(options, TF_CHECK_WARN));

@@ -173,7 +173,7 @@ def test_check_option_refuses_warns_or_skips(tmp_path, mode, code):
     result = run("align", audio, transcript, "--json", "--quiet", "--check", mode)
     assert result.returncode == code, result.stderr
     if mode == "refuse":
-        assert "does not sound like its text" in result.stderr
+        assert "is it another sentence, or are two sentences swapped?" in result.stderr
         return
     warnings = json.loads(result.stdout)["warnings"]
     found = [w for w in warnings if w.startswith("the transcript may not match the audio")]
