@@ -107,7 +107,7 @@ struct FrameRenderer::Impl {
     FrameOptions options;
     detail::CanvasBox canvas;
     detail::FramePlacement placement;
-    detail::FaceLook look;  // in image pixels: the view is the identity
+    detail::FacePaints paints;  // in image pixels: the view is the identity
     Surface background_colour;  // the colour alone
     Surface background;         // the colour and the picture: what every frame starts from
     Surface clothes;            // transparent but for the clothes
@@ -173,8 +173,8 @@ struct FrameRenderer::Impl {
 
     void draw(const FaceState& state) {
         const ProjectedFace projected = project_face(face, state);
-        const detail::Layer hair = detail::draw_hair_layer(projected, look);
-        const detail::Layer face_layer = detail::draw_face_layer(projected, look);
+        const detail::Layer hair = detail::draw_hair_layer(projected, paints);
+        const detail::Layer face_layer = detail::draw_face_layer(projected, paints);
         const detail::PixelBox head =
             detail::united(frame_box_of(detail::layer_extent(hair)), frame_box_of(detail::layer_extent(face_layer)));
         const detail::PixelBox dirty =
@@ -224,7 +224,7 @@ FrameRenderer::FrameRenderer(FaceModel face, FrameOptions options) {
     impl.placement = detail::place_face(face, impl.canvas, options);
     const ProjectedFace neutral = project_face(face, FaceState{});
     const detail::LayerStyle style{2, options.stroke_width_in_d * neutral.d};
-    impl.look = detail::make_face_look(neutral, style);
+    impl.paints = detail::make_face_paints(neutral, style);
     impl.face = std::move(face);
     impl.options = options;
     const int width = options.width_px;

@@ -32,12 +32,6 @@ std::vector<CubicSegment> arc_segments(const std::vector<Point2>& points) {
     return segments;
 }
 
-CubicSegment rim_segment(Point2 start, Point2 middle, Point2 end) {
-    // B(1/2) = (start + 3 c1 + 3 c2 + end) / 8 = middle with c1 = c2 = c.
-    const Point2 control{(8.0 * middle.x - start.x - end.x) / 6.0, (8.0 * middle.y - start.y - end.y) / 6.0};
-    return {control, control, end};
-}
-
 std::vector<CubicSegment> closed_curve_segments(const std::vector<Point2>& points) {
     std::vector<CubicSegment> segments;
     const std::size_t n = points.size();

@@ -21,12 +21,6 @@ struct CubicSegment {
 // so several arcs joined at their ends meet in a corner, as the eye and lip corners should.
 std::vector<CubicSegment> arc_segments(const std::vector<Point2>& points);
 
-// One cubic Bezier segment from `start` to `end` that passes through `middle` at its half-way
-// parameter, with both inner control points at the same place. Where the middle point is the far end
-// of a rounded shape (the top of an ear's rim), a Catmull-Rom arc would make its tangent there
-// parallel to end - start and fold the curve into a spike; this one rounds over it instead.
-CubicSegment rim_segment(Point2 start, Point2 middle, Point2 end);
-
 // A closed Catmull-Rom curve through every point, smooth everywhere (the face contour, whose
 // four arcs meet without corners). Starts and ends at points.front().
 std::vector<CubicSegment> closed_curve_segments(const std::vector<Point2>& points);

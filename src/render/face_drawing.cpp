@@ -1,6 +1,7 @@
 // The hair and face layers: thesis Algorithm 2.2 steps 2-14, with Algorithm 2.3's substitutions
 // (contour points past 10 degrees, the nose bridge side) already chosen by project_face().
 #include <cmath>
+#include <iterator>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -18,13 +19,20 @@ namespace {
 constexpr double kPupilToIrisRadius = 1.0 / 3.0;
 constexpr Rgb kPupilColour{0x11, 0x11, 0x11};
 constexpr Rgb kHighlightColour{0xff, 0xff, 0xff};
+constexpr Rgb kTeethColour{0xfa, 0xf7, 0xf0};
 
-std::vector<Point2> points_of(const ProjectedFace& face, const FaceLook& look,
+std::vector<Point2> points_of(const ProjectedFace& face, const FacePaints& paints,
                               const std::vector<std::string>& ids) {
     std::vector<Point2> points;
     points.reserve(ids.size());
-    for (const std::string& id : ids) points.push_back(look.point(face, id));
+    for (const std::string& id : ids) points.push_back(paints.point(face, id));
     return points;
+}
+
+std::vector<Point2> points_of_hair(const ProjectedFace& face, const FacePaints& paints) {
+    std::vector<Point2> polygon = face.hair_polygon();
+    for (Point2& point : polygon) point = paints.view.apply(point);
+    return polygon;
 }
 
 Shape path_shape(std::string_view name, Path path, const ShapePaint& paint) {
@@ -36,26 +44,48 @@ Shape path_shape(std::string_view name, Path path, const ShapePaint& paint) {
     return shape;
 }
 
-void draw_ears(const ProjectedFace& face, const FaceLook& look, Layer& layer) {
-    // arc(10.8, 10.2, A) as one cubic through the ear's top 10.2 (curves.hpp: rim_segment); the
-    // straight edge that closes each ear runs under the face contour, drawn after it.
-    const std::vector<std::vector<std::string>> ears{{"10.8", "10.2", "A"}, {"10.7", "10.1", "B"}};
-    constexpr std::string_view names[] = {"ear-left", "ear-right"};
-    for (std::size_t i = 0; i < ears.size(); ++i) {
-        const std::vector<Point2> points = points_of(face, look, ears[i]);
-        Path path;
-        path.move_to(points[0]).curves({rim_segment(points[0], points[1], points[2])}).close();
-        layer.elements.push_back(path_shape(names[i], std::move(path), look.skin));
-    }
+Point2 affine(Point2 origin, Point2 to_a, double s, Point2 to_b, double t) {
+    return {origin.x + s * to_a.x + t * to_b.x, origin.y + s * to_a.y + t * to_b.y};
 }
 
-void draw_face_contour(const ProjectedFace& face, const FaceLook& look, Layer& layer) {
+// The ear as one cubic Bezier segment in the frame of its upper contact point A: (s, t) is
+// A + s (top - A) + t (lower contact - A), top = 10.2 / 10.1, lower contact = 10.8 / 10.7. It starts
+// and ends inside the head, where the face contour, drawn over it, hides the straight edge that
+// closes it; its control points round it over the top and down into the lobe. Affine combinations
+// of three projected points: the ear turns, nods and tilts with the head. One segment, as the
+// thesis's arc(10.8, 10.2, A): an animation moves four points per ear.
+constexpr double kEarCurve[4][2] = {{-0.6, 0.05}, {1.9, -0.35}, {1.3, 1.4}, {-0.9, 0.85}};
+
+// Each ear's upper contact point, top and lower contact point (image left, then right).
+constexpr const char* kEarPoints[2][3] = {{"A", "10.2", "10.8"}, {"B", "10.1", "10.7"}};
+
+std::vector<Shape> draw_ears(const ProjectedFace& face, const FacePaints& paints) {
+    // Thesis step 4's arc(10.8, 10.2, A) gives the ear's three points; drawn through them, it is a
+    // spike. The ear is a rounded curve placed by them instead, under the hair (the hair layer
+    // draws it first, so the hair hides it where it reaches) and under the face contour.
+    constexpr std::string_view names[] = {"ear-left", "ear-right"};
+    std::vector<Shape> shapes;
+    for (std::size_t i = 0; i < std::size(kEarPoints); ++i) {
+        const std::vector<Point2> points = points_of(face, paints, {kEarPoints[i][0], kEarPoints[i][1], kEarPoints[i][2]});
+        const Point2 contact = points[0];
+        const Point2 to_top{points[1].x - contact.x, points[1].y - contact.y};
+        const Point2 to_lobe{points[2].x - contact.x, points[2].y - contact.y};
+        Point2 curve[4];
+        for (int k = 0; k < 4; ++k) curve[k] = affine(contact, to_top, kEarCurve[k][0], to_lobe, kEarCurve[k][1]);
+        Path path;
+        path.move_to(curve[0]).curves({{curve[1], curve[2], curve[3]}}).close();
+        shapes.push_back(path_shape(names[i], std::move(path), paints.skin));
+    }
+    return shapes;
+}
+
+void draw_face_contour(const ProjectedFace& face, const FacePaints& paints, Layer& layer) {
     // arc(11.2, 11.2a, 11.1, 11.3a, 11.3), arc(11.3, 10.9, 2.13), arc(2.13, 2.1, 2.14),
     // arc(2.14, 10.10, 11.2) as one closed curve: a face outline has no corners where they meet.
     const auto& left = face.left_contour;
     const auto& right = face.right_contour;
     const std::vector<Point2> points =
-        points_of(face, look,
+        points_of(face, paints,
                   {left[1], left[0], "11.2a", "11.1", "11.3a", right[0], right[1], right[2], "2.1", left[2]});
     const std::vector<CubicSegment> segments = closed_curve_segments(points);
     // Drawn as two open paths, so that the jaw, which the chin 2.1 moves with every mouth shape, is
@@ -71,34 +101,56 @@ void draw_face_contour(const ProjectedFace& face, const FaceLook& look, Layer& l
     upper_path.move_to(points.front()).curves(upper).line_to(jaw_middle);
     Path jaw_path;
     jaw_path.move_to(points[6]).curves(jaw);
-    layer.elements.push_back(path_shape("face-contour", std::move(upper_path), look.skin));
-    layer.elements.push_back(path_shape("jaw", std::move(jaw_path), look.skin));
+    layer.elements.push_back(path_shape("face-contour", std::move(upper_path), paints.skin));
+    layer.elements.push_back(path_shape("jaw", std::move(jaw_path), paints.skin));
 }
 
-void draw_nose(const ProjectedFace& face, const FaceLook& look, Layer& layer) {
-    // Algorithm 2.3 step 8: the bridge line runs down the side of the nose that faces the viewer.
-    const std::vector<std::string> bridge = face.nose_bridge == NoseBridgeSide::right
-                                                ? std::vector<std::string>{"9.7", "C", "9.13"}
-                                                : std::vector<std::string>{"9.6", "C", "9.14"};
-    const std::vector<std::vector<std::string>> arcs{
-        bridge, {"9.14", "9.2", "9.4"}, {"9.13", "9.1", "9.5"}, {"D", "9.15", "E"}};
-    Path path;
-    for (const auto& ids : arcs) {
-        const std::vector<Point2> points = points_of(face, look, ids);
-        path.move_to(points.front()).arc(points);
+Point2 lerp(Point2 a, Point2 b, double t) { return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}; }
+
+void draw_nose(const ProjectedFace& face, const FacePaints& paints, Layer& layer) {
+    // Thesis step 6's arcs read as an open squiggle: a bridge line from the eyes, two wings apart
+    // from it and a dash under the tip. The nose is drawn from the same points as the line the
+    // bridge takes (Algorithm 2.3 step 8: the side that faces the viewer) from half-way down to C
+    // into the wing, the wings and the tip as one line arc(9.14, 9.2, 9.15, 9.1, 9.13),
+    // and two nostrils, all one path; a look without outlines shades the bridge's side instead.
+    const bool is_right = face.nose_bridge == NoseBridgeSide::right;
+    const std::vector<Point2> p =
+        points_of(face, paints,
+                  is_right ? std::vector<std::string>{"9.7", "C", "9.13", "9.1", "9.5", "9.15", "9.14"}
+                           : std::vector<std::string>{"9.6", "C", "9.14", "9.2", "9.4", "9.15", "9.13"});
+    // p: the bridge's top, C, the bridge's lower end, wing, nostril's bottom, tip, the other wing's top.
+    if (paints.nose_shade.fill.kind != PaintKind::none) {
+        Path shade;
+        shade.corner_cut_closed({lerp(p[0], p[1], 0.2), p[1], p[2], p[3], p[4], p[5],
+                                 lerp(lerp(p[1], p[5], 0.6), p[6], 0.25)});
+        layer.elements.push_back(path_shape("nose-shade", std::move(shade), paints.nose_shade));
     }
-    layer.elements.push_back(path_shape("nose", std::move(path), look.nose));
+    const std::vector<Point2> bottom = points_of(face, paints, {"9.14", "9.2", "9.15", "9.1", "9.13"});
+    const Point2 bridge_start = lerp(p[0], p[1], 0.5);
+    Path path;
+    if (paints.nose.stroke.kind != PaintKind::none) {
+        path.move_to(bridge_start).arc({bridge_start, p[1], p[2]});
+        path.move_to(bottom.front()).arc(bottom);
+    }
+    // The nostrils: small loops above the line, between the wing's bottom (9.4 / 9.5), D / E and
+    // the tip.
+    for (const auto& ids : {std::vector<std::string>{"9.4", "D", "9.15", "9.2"},
+                            std::vector<std::string>{"9.5", "E", "9.15", "9.1"}}) {
+        const std::vector<Point2> q = points_of(face, paints, ids);
+        path.corner_cut_closed({lerp(q[0], q[3], 0.2), lerp(q[1], q[3], 0.15), lerp(q[1], q[2], 0.55)});
+    }
+    layer.elements.push_back(path_shape("nose", std::move(path), paints.nose));
 }
 
-void draw_eyebrows(const ProjectedFace& face, const FaceLook& look, Layer& layer) {
+void draw_eyebrows(const ProjectedFace& face, const FacePaints& paints, Layer& layer) {
     // Corner-cut arc(4.6, 4.4a, 4.4, 4.2) and arc(4.2, G, F, 4.6): one closed outline per brow.
     const std::vector<std::vector<std::string>> brows{{"4.6", "4.4a", "4.4", "4.2", "G", "F"},
                                                       {"4.5", "4.3a", "4.3", "4.1", "H", "I"}};
     constexpr std::string_view names[] = {"eyebrow-left", "eyebrow-right"};
     for (std::size_t i = 0; i < brows.size(); ++i) {
         Path outline;
-        outline.corner_cut_closed(points_of(face, look, brows[i]));
-        layer.elements.push_back(path_shape(names[i], std::move(outline), look.brows));
+        outline.corner_cut_closed(points_of(face, paints, brows[i]));
+        layer.elements.push_back(path_shape(names[i], std::move(outline), paints.brows));
     }
 }
 
@@ -121,8 +173,8 @@ const std::vector<EyeParts>& eye_parts() {
     return parts;
 }
 
-Path eye_outline(const ProjectedFace& face, const FaceLook& look, const EyeParts& eye) {
-    const std::vector<Point2> p = points_of(face, look, eye.outline);
+Path eye_outline(const ProjectedFace& face, const FacePaints& paints, const EyeParts& eye) {
+    const std::vector<Point2> p = points_of(face, paints, eye.outline);
     Path path;
     path.move_to(p[0]).arc({p[0], p[1], p[2]}).arc({p[2], p[3], p[0]}).close();
     return path;
@@ -135,7 +187,7 @@ RadialGradient iris_gradient(Rgb iris) {
 }
 
 // Each eye's clip path and iris gradient, in that order: the definitions of eye i are 2 i and 2 i + 1.
-void draw_eye_definitions(const ProjectedFace& face, const FaceLook& look, Layer& layer) {
+void draw_eye_definitions(const ProjectedFace& face, const FacePaints& paints, Layer& layer) {
     for (const EyeParts& eye : eye_parts()) {
         // The outline is defined once, in its clip path, and drawn again for the white and the
         // stroke: an animation then moves one path per eye instead of three.
@@ -143,12 +195,12 @@ void draw_eye_definitions(const ProjectedFace& face, const FaceLook& look, Layer
         clip.kind = DefinitionKind::clip_path;
         clip.id = eye.clip_id;
         clip.outline_id = eye.outline_id;
-        clip.outline = eye_outline(face, look, eye);
+        clip.outline = eye_outline(face, paints, eye);
         layer.definitions.push_back(std::move(clip));
         Definition gradient;
         gradient.kind = DefinitionKind::radial_gradient;
         gradient.id = eye.gradient_id;
-        gradient.gradient = look.iris_gradient;
+        gradient.gradient = paints.iris_gradient;
         layer.definitions.push_back(std::move(gradient));
     }
 }
@@ -171,19 +223,19 @@ Shape reference_shape(std::string_view name, std::size_t definition, const Shape
     return shape;
 }
 
-void draw_eyes(const ProjectedFace& face, const FaceLook& look, Layer& layer) {
+void draw_eyes(const ProjectedFace& face, const FacePaints& paints, Layer& layer) {
     for (std::size_t i = 0; i < eye_parts().size(); ++i) {
         const EyeParts& eye = eye_parts()[i];
         const std::size_t clip = 2 * i;
         const std::size_t gradient = 2 * i + 1;
-        layer.elements.push_back(reference_shape(eye.white, clip, look.eye_white));
+        layer.elements.push_back(reference_shape(eye.white, clip, paints.eye_white));
         // Clipped by the eye outline, so a closing lid hides iris and pupil (thesis 6.3.1).
-        const Point2 pupil = look.point(face, eye.eyeball);
+        const Point2 pupil = paints.point(face, eye.eyeball);
         const double iris_radius_px = face.face.fapu(eye.radius_fapu);
-        const double iris_radius = look.view.scale() * iris_radius_px;
+        const double iris_radius = paints.view.scale() * iris_radius_px;
         const double pupil_radius = kPupilToIrisRadius * iris_radius;
         // The light comes from the upper left of the image, whatever the view turns.
-        const Point2 light = look.view.apply_to_offset({-0.35 * iris_radius_px, -0.35 * iris_radius_px});
+        const Point2 light = paints.view.apply_to_offset({-0.35 * iris_radius_px, -0.35 * iris_radius_px});
         const Point2 highlight{pupil.x + light.x, pupil.y + light.y};
         Shape eyeball;
         eyeball.kind = ShapeKind::group;
@@ -194,12 +246,12 @@ void draw_eyes(const ProjectedFace& face, const FaceLook& look, Layer& layer) {
                             circle_shape(pupil, pupil_radius, Paint::of(kPupilColour)),
                             circle_shape(highlight, 0.5 * pupil_radius, Paint::of(kHighlightColour))};
         layer.elements.push_back(std::move(eyeball));
-        layer.elements.push_back(reference_shape(eye.outline_stroke, clip, look.eye_outline));
+        layer.elements.push_back(reference_shape(eye.outline_stroke, clip, paints.eye_outline));
     }
 }
 
-void draw_mouth(const ProjectedFace& face, const FaceLook& look, Layer& layer) {
-    const std::vector<Point2> lips = points_of(face, look, {"8.1", "8.9", "8.4", "8.2", "8.3", "8.10"});
+void draw_mouth(const ProjectedFace& face, const FacePaints& paints, Layer& layer) {
+    const std::vector<Point2> lips = points_of(face, paints, {"8.1", "8.9", "8.4", "8.2", "8.3", "8.10"});
     Path outer;
     outer.move_to(lips[0])
         .arc({lips[0], lips[1], lips[2]})
@@ -207,14 +259,51 @@ void draw_mouth(const ProjectedFace& face, const FaceLook& look, Layer& layer) {
         .arc({lips[4], lips[5], lips[0]})
         .close();
     // arc(R, 2.2, S) + arc(S, 2.3, R): R and S sit on the corners 8.4 and 8.3 (SPEC: S = 8.3).
-    const std::vector<Point2> inner_points = points_of(face, look, {"R", "2.2", "S", "2.3"});
-    Path inner;
-    inner.move_to(inner_points[0])
+    const std::vector<Point2> inner_points = points_of(face, paints, {"R", "2.2", "S", "2.3"});
+    Definition opening;
+    opening.kind = DefinitionKind::clip_path;
+    opening.id = "tf-mouth-clip";
+    opening.outline_id = "tf-mouth";
+    opening.outline.move_to(inner_points[0])
         .arc({inner_points[0], inner_points[1], inner_points[2]})
         .arc({inner_points[2], inner_points[3], inner_points[0]})
         .close();
-    layer.elements.push_back(path_shape("lips", std::move(outer), look.lips));
-    layer.elements.push_back(path_shape("mouth-opening", std::move(inner), look.mouth_opening));
+    const std::size_t clip = layer.definitions.size();
+    layer.definitions.push_back(std::move(opening));
+    Definition tongue;
+    tongue.kind = DefinitionKind::radial_gradient;
+    tongue.id = "tf-mouth-inside-gradient";
+    tongue.gradient = paints.mouth_inside_gradient;
+    const std::size_t gradient = layer.definitions.size();
+    layer.definitions.push_back(std::move(tongue));
+
+    // The inside of the mouth is drawn with the opening's own outline, which the animation moves
+    // already, and nothing else: its fill's gradient, in the opening's bounding box, is the upper
+    // teeth at its top (under the upper lip), the dark, the tongue and the lower teeth at its
+    // bottom (on the lower lip, which moves with the jaw). Shapes of their own would cost a minute
+    // of speech 100 KB or more in the keyframes encoding (issue 17).
+    ShapePaint inside = paints.mouth_opening;
+    inside.fill = Paint::of_gradient(gradient);
+    inside.stroke = Paint{};
+    ShapePaint outline = paints.mouth_opening;
+    outline.fill = Paint{};
+    layer.elements.push_back(path_shape("lips", std::move(outer), paints.lips));
+    layer.elements.push_back(reference_shape("mouth-opening", clip, inside));
+    layer.elements.push_back(reference_shape("mouth-opening-outline", clip, outline));
+}
+
+// The inside of an open mouth from top to bottom, as a radial gradient in the opening's bounding
+// box whose centre lies far above it: its rings cross the opening as flat arcs, lower in the
+// middle, like the rows of teeth. Offsets run from 2/3 at the top to 1 at the bottom.
+RadialGradient mouth_inside_gradient(const FaceColors& colors) {
+    constexpr double kCentreY = -2.0, kRadius = 3.0;
+    auto at = [&](double y) { return (y - kCentreY) / kRadius; };
+    const Rgb dark = colors.mouth_inside;
+    const Rgb tongue = blend(blend(colors.lips, Rgb{0xf0, 0x90, 0xa0}, 0.4), dark, 0.2);
+    const Rgb lower_teeth = blend(kTeethColour, dark, 0.12);
+    return {0.5, kCentreY, kRadius,
+            {{at(0.0), kTeethColour}, {at(0.24), kTeethColour}, {at(0.25), dark}, {at(0.55), dark},
+             {at(0.6), tongue}, {at(0.83), tongue}, {at(0.84), lower_teeth}, {at(1.0), lower_teeth}}};
 }
 
 ShapePaint paint_of(const Paint& fill, const Paint& stroke, double stroke_width) {
@@ -242,54 +331,58 @@ Point2 ViewMap::apply(Point2 image_xy) const {
     return apply_to_offset({image_xy.x - origin_.x, image_xy.y - origin_.y});
 }
 
-Point2 FaceLook::point(const ProjectedFace& face, std::string_view id) const {
+Point2 FacePaints::point(const ProjectedFace& face, std::string_view id) const {
     const auto found = point_index.find(std::string(id));
     return view.apply(found == point_index.end() ? face.point(id) : face.image_xy[found->second]);
 }
 
-std::vector<Point2> hair_polygon_in_view(const ProjectedFace& face, const FaceLook& look) {
-    std::vector<Point2> polygon = face.hair_polygon();
-    for (Point2& point : polygon) point = look.view.apply(point);
-    return polygon;
+std::vector<Point2> hair_layer_points(const ProjectedFace& face, const FacePaints& paints) {
+    std::vector<Point2> points = face.hair_polygon();
+    for (Point2& point : points) point = paints.view.apply(point);
+    for (const auto& ear : kEarPoints) {
+        for (const char* id : ear) points.push_back(paints.point(face, id));
+    }
+    return points;
 }
 
-FaceLook make_face_look(const ProjectedFace& face, const LayerStyle& style) {
+FacePaints make_face_paints(const ProjectedFace& face, const LayerStyle& style) {
     const FaceColors& colors = face.face.colors();
     const Paint outline = Paint::of(colors.outline);
     const Paint none;
     const double stroke = style.stroke_px;
-    FaceLook look;
-    look.style = style;
-    look.skin = paint_of(Paint::of(colors.skin), outline, stroke);
-    look.hair = paint_of(Paint::of(colors.hair), Paint::of(blend(colors.hair, Rgb{}, 0.4)), stroke);
-    look.nose = paint_of(none, outline, stroke);
-    look.brows = paint_of(Paint::of(colors.brows), Paint::of(colors.brows), 0.5 * stroke);
-    look.eye_white = paint_of(Paint::of(colors.eye_white), none, 0.0);
-    look.eye_outline = paint_of(none, outline, stroke);
-    look.lips = paint_of(Paint::of(colors.lips), outline, stroke);
-    look.mouth_opening = paint_of(Paint::of(colors.mouth_inside), outline, 0.6 * stroke);
-    look.iris_gradient = iris_gradient(colors.iris);
-    for (std::size_t i = 0; i < face.ids.size(); ++i) look.point_index.emplace(face.ids[i], i);
-    return look;
+    FacePaints paints;
+    paints.style = style;
+    paints.skin = paint_of(Paint::of(colors.skin), outline, stroke);
+    paints.hair = paint_of(Paint::of(colors.hair), Paint::of(blend(colors.hair, Rgb{}, 0.4)), stroke);
+    paints.nose = paint_of(none, outline, stroke);
+    paints.brows = paint_of(Paint::of(colors.brows), Paint::of(colors.brows), 0.5 * stroke);
+    paints.eye_white = paint_of(Paint::of(colors.eye_white), none, 0.0);
+    paints.eye_outline = paint_of(none, outline, stroke);
+    paints.lips = paint_of(Paint::of(colors.lips), outline, stroke);
+    paints.mouth_opening = paint_of(Paint::of(colors.mouth_inside), outline, 0.6 * stroke);
+    paints.mouth_inside_gradient = mouth_inside_gradient(colors);
+    paints.iris_gradient = iris_gradient(colors.iris);
+    for (std::size_t i = 0; i < face.ids.size(); ++i) paints.point_index.emplace(face.ids[i], i);
+    return paints;
 }
 
-Layer draw_hair_layer(const ProjectedFace& face, const FaceLook& look) {
+Layer draw_hair_layer(const ProjectedFace& face, const FacePaints& paints) {
     Path outline;
-    outline.corner_cut_closed(hair_polygon_in_view(face, look));
+    outline.corner_cut_closed(points_of_hair(face, paints));
     Layer layer;
-    layer.elements.push_back(path_shape("hair", std::move(outline), look.hair));
+    layer.elements = draw_ears(face, paints);
+    layer.elements.push_back(path_shape("hair", std::move(outline), paints.hair));
     return layer;
 }
 
-Layer draw_face_layer(const ProjectedFace& face, const FaceLook& look) {
+Layer draw_face_layer(const ProjectedFace& face, const FacePaints& paints) {
     Layer layer;
-    draw_eye_definitions(face, look, layer);
-    draw_ears(face, look, layer);
-    draw_face_contour(face, look, layer);
-    draw_nose(face, look, layer);
-    draw_eyebrows(face, look, layer);
-    draw_eyes(face, look, layer);
-    draw_mouth(face, look, layer);
+    draw_eye_definitions(face, paints, layer);
+    draw_face_contour(face, paints, layer);
+    draw_nose(face, paints, layer);
+    draw_eyebrows(face, paints, layer);
+    draw_eyes(face, paints, layer);
+    draw_mouth(face, paints, layer);
     return layer;
 }
 

@@ -54,36 +54,38 @@ private:
 // What every state of one face is drawn with: the style, the paints and gradients, and where each
 // point id stands in ProjectedFace::image_xy (the same for every state of a face). An animation
 // builds it once instead of once a frame, and sets its view per frame.
-struct FaceLook {
+struct FacePaints {
     LayerStyle style;  // in the view's units
     ViewMap view;
     ShapePaint skin, hair, nose, brows, eye_white, eye_outline, lips, mouth_opening;
-    RadialGradient iris_gradient;  // of both irises
+    ShapePaint nose_shade;  // none: no shade
+    RadialGradient iris_gradient;            // of both irises
+    RadialGradient mouth_inside_gradient;    // teeth, the dark, the tongue, teeth (face_drawing.cpp)
     std::unordered_map<std::string, std::size_t> point_index;
     // A point of `face` by id, in the view. \throws talkface::InvalidArgument for an unknown id.
     Point2 point(const ProjectedFace& face, std::string_view id) const;
 };
 
-// The look of `face`, at any state of it.
-FaceLook make_face_look(const ProjectedFace& face, const LayerStyle& style);
+// The paints of `face`, at any state of it.
+FacePaints make_face_paints(const ProjectedFace& face, const LayerStyle& style);
 
-// The hair polygon of `face` in the look's view: what draw_hair_layer() draws from.
-std::vector<Point2> hair_polygon_in_view(const ProjectedFace& face, const FaceLook& look);
+// The points draw_hair_layer() draws from, in the view of `paints`: the hair polygon, then the ears'.
+std::vector<Point2> hair_layer_points(const ProjectedFace& face, const FacePaints& paints);
 
 // The background: a rectangle of `colour` over the canvas, or nothing.
 Layer draw_background_layer(const CanvasBox& canvas, const std::optional<Rgb>& colour);
 
-// The hair contour: the 23 hair points, corner-cut (Path::corner_cut_closed), filled with the hair
-// colour.
-Layer draw_hair_layer(const ProjectedFace& face, const FaceLook& look);
+// The back of the head: the ears, then over them the hair contour (the 23 hair points, corner-cut:
+// Path::corner_cut_closed, filled with the hair colour), which hides them where it reaches.
+Layer draw_hair_layer(const ProjectedFace& face, const FacePaints& paints);
 
 // Neck and shoulders, placed from O and d of the face, in image pixels. They do not turn with the
 // head.
 Layer draw_clothes_layer(const ProjectedFace& face, const CanvasBox& canvas, Rgb clothes, const LayerStyle& style);
 
-// Ears, face contour, nose, eyebrows, eyes with clipped eyeballs, mouth (Algorithm 2.2), with the
+// Face contour, nose, eyebrows, eyes with clipped eyeballs, mouth (Algorithm 2.2), with the
 // clip paths and gradients they use among its definitions. Ids start with "tf-".
-Layer draw_face_layer(const ProjectedFace& face, const FaceLook& look);
+Layer draw_face_layer(const ProjectedFace& face, const FacePaints& paints);
 
 }  // namespace talkface::detail
 

@@ -91,8 +91,8 @@ std::string render_animation(const FaceModel& face, const SvgOptions& svg_option
     Layer hair;
     Layer face_layer;
     std::vector<Point2> hair_points;
-    // The look of the face: its d, hence the stroke, is the same at every state.
-    FaceLook look;
+    // The paints of the face: its d, hence the stroke, is the same at every state.
+    FacePaints paints;
     HeadTilt tilt;
     const FaceState* previous = nullptr;
     double previous_angle_deg = 0.0;
@@ -125,9 +125,9 @@ std::string render_animation(const FaceModel& face, const SvgOptions& svg_option
             if (frame == 0) {
                 const LayerStyle style{svg_options.decimals, svg_options.stroke_width_in_d * projected.d};
                 if (is_frames) {
-                    look = make_face_look(projected, style);
+                    paints = make_face_paints(projected, style);
                 } else {
-                    look = make_face_look(projected, LayerStyle{head_decimals, style.stroke_px * kUnitsPerPx});
+                    paints = make_face_paints(projected, LayerStyle{head_decimals, style.stroke_px * kUnitsPerPx});
                     tilt = plan_head_tilt(animation, projected.origin, reach_px(canvas.box, projected.origin),
                                           kTiltShare * options.tolerance_px);
                 }
@@ -139,15 +139,15 @@ std::string render_animation(const FaceModel& face, const SvgOptions& svg_option
             }
             if (!is_frames) {
                 previous_angle_deg = tilt.angle_deg[frame];
-                look.view = ViewMap(tilt.origin, previous_angle_deg, kUnitsPerPx);
+                paints.view = ViewMap(tilt.origin, previous_angle_deg, kUnitsPerPx);
             }
-            std::vector<Point2> new_hair_points = hair_polygon_in_view(projected, look);
+            std::vector<Point2> new_hair_points = hair_layer_points(projected, paints);
             is_hair_repeat = frame > 0 && new_hair_points == hair_points;
             if (!is_hair_repeat) {
                 hair_points = std::move(new_hair_points);
-                hair = draw_hair_layer(projected, look);
+                hair = draw_hair_layer(projected, paints);
             }
-            face_layer = draw_face_layer(projected, look);
+            face_layer = draw_face_layer(projected, paints);
         }
         if (is_frames) {
             hair_frames.add(hair);

@@ -99,14 +99,14 @@ std::string SvgAnimator::render_svg(const FaceState& state) const {
     std::string svg = detail::kXmlDeclaration;
     svg += detail::open_svg_root(impl_->canvas, decimals, "");
     svg += detail::background_layer_svg(impl_->canvas, options.background, decimals);
-    const detail::FaceLook look = detail::make_face_look(projected, style);
-    svg += detail::layer_group_svg("hair", detail::draw_hair_layer(projected, look), decimals);
+    const detail::FacePaints paints = detail::make_face_paints(projected, style);
+    svg += detail::layer_group_svg("hair", detail::draw_hair_layer(projected, paints), decimals);
     svg += detail::layer_group_svg(
         "clothes",
         options.draw_clothes ? detail::draw_clothes_layer(projected, impl_->canvas.box, options.clothes, style)
                              : detail::Layer(),
         decimals);
-    svg += detail::layer_group_svg("face", detail::draw_face_layer(projected, look), decimals);
+    svg += detail::layer_group_svg("face", detail::draw_face_layer(projected, paints), decimals);
     return svg + "</svg>\n";
 }
 

@@ -40,8 +40,8 @@ double read_decimal(const std::string& text) {
 Layer face_layer_at(const FaceState& state) {
     const FaceModel face = FaceModel::default_face();
     const ProjectedFace projected = project_face(face, state);
-    const FaceLook look = make_face_look(projected, LayerStyle{2, 1.5});
-    return draw_face_layer(projected, look);
+    const FacePaints paints = make_face_paints(projected, LayerStyle{2, 1.5});
+    return draw_face_layer(projected, paints);
 }
 
 }  // namespace
@@ -117,7 +117,7 @@ TEST_SUITE("drawing model") {
         encoder.add(first);
         CHECK_THROWS_WITH_AS(encoder.add(other), doctest::Contains("frame 1 draws attribute d"), Error);
         Layer fewer = first;
-        fewer.elements.pop_back();
+        fewer.elements.erase(fewer.elements.begin());
         CHECK_THROWS_WITH_AS(encoder.add(fewer), doctest::Contains("numeric attributes"), Error);
     }
 

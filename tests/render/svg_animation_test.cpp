@@ -259,10 +259,10 @@ std::vector<double> shown_points(const pugi::xml_node& element, double t) {
 std::vector<std::string> drawn_elements() {
     std::vector<std::string> paths;
     for (const char* name : {"hair", "ear-left", "ear-right", "face-contour", "jaw", "nose", "eyebrow-left",
-                             "eyebrow-right", "lips", "mouth-opening"}) {
+                             "eyebrow-right", "lips"}) {
         paths.push_back(std::string("//path[@class='") + name + "']");
     }
-    for (const char* id : {"tf-eye-left", "tf-eye-right"})
+    for (const char* id : {"tf-eye-left", "tf-eye-right", "tf-mouth"})
         paths.push_back(std::string("//path[@id='") + id + "']");
     for (const char* side : {"left", "right"}) {
         for (int circle = 1; circle <= 3; ++circle) {

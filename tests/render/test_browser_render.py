@@ -51,6 +51,11 @@ class Rendered:
         hex_colour = self.element(class_name).get("fill")
         return tuple(int(hex_colour[i:i + 2], 16) for i in (1, 3, 5))
 
+    def stop_colours(self, gradient_id):
+        gradient = next(e for e in self.root.iter() if e.get("id") == gradient_id)
+        return [tuple(int(stop.get("stop-color")[i:i + 2], 16) for i in (1, 3, 5))
+                for stop in gradient if stop.tag.endswith("stop")]
+
     def box(self, class_name):
         """Bounding box of an element's coordinates, in screenshot pixels."""
         element = self.element(class_name)
@@ -99,8 +104,10 @@ def test_hair_colour_appears_above_the_face(open_mouth):
 
 
 def test_open_mouth_shows_the_inside_and_a_closed_mouth_does_not(open_mouth, closed_mouth):
-    inside = open_mouth.colour("mouth-opening")
-    _, open_pixels = open_mouth.share_of(inside, open_mouth.box("lips"), tolerance=16)
-    _, closed_pixels = closed_mouth.share_of(inside, closed_mouth.box("lips"), tolerance=16)
-    assert open_pixels > 60
-    assert closed_pixels < 5
+    # The opening's gradient, top to bottom: upper teeth, the dark, the tongue, lower teeth.
+    teeth, _, dark = open_mouth.stop_colours("tf-mouth-inside-gradient")[:3]
+    for colour, least in ((dark, 60), (teeth, 30)):
+        _, open_pixels = open_mouth.share_of(colour, open_mouth.box("lips"), tolerance=16)
+        _, closed_pixels = closed_mouth.share_of(colour, closed_mouth.box("lips"), tolerance=16)
+        assert open_pixels > least
+        assert closed_pixels < 5
