@@ -192,3 +192,33 @@ def test_run_refuses_local_cluster_settings_for_a_running_scheduler():
         batch.run([], scheduler="tcp://127.0.0.1:1", workers=2)
     with pytest.raises(ValueError, match="retries"):
         batch.run([], retries=-1)
+
+
+def run_command(*arguments):
+    import subprocess
+    import sys
+
+    environment = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
+    return subprocess.run([sys.executable, "-m", "talkface", *arguments], capture_output=True, text=True,
+                          timeout=60, env=environment)
+
+
+def test_the_command_names_a_wrong_manifest_before_starting_a_cluster(tmp_path):
+    path = write_manifest(tmp_path, "audio,transcript,output\na.ogg,a.txt,a.docx\n")
+    finished = run_command("batch", path)
+    assert finished.returncode == 1
+    assert finished.stderr.startswith(f"talkface: error: {path}:2: column output:")
+
+
+@pytest.mark.parametrize(
+    "arguments, words",
+    [(["--workers", "0"], "--workers: expected 1 or more"),
+     (["--retries", "-1"], "--retries: expected 0 or more"),
+     (["--scheduler", "tcp://127.0.0.1:1", "--workers", "2"], "local cluster"),
+     (["--speed", "2"], "unrecognized arguments")],
+)
+def test_the_command_refuses_wrong_options_with_status_2(tmp_path, arguments, words):
+    path = write_manifest(tmp_path, "audio,transcript,output\n")
+    finished = run_command("batch", path, *arguments)
+    assert finished.returncode == 2
+    assert words in finished.stderr

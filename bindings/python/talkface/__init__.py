@@ -13,6 +13,8 @@ talkface.Error subclasses whose messages name the file, line, point or parameter
 ParseError, FileError (also an OSError), InvalidArgument (also a ValueError), AlignmentError,
 Cancelled.
 
+Many speeches at once, on one machine or a Dask cluster: talkface.batch (docs/batch.md).
+
 talkface is licensed under the Apache License, Version 2.0 (the LICENSE file; __license__).
 """
 

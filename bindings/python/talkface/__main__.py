@@ -5,6 +5,7 @@ error; 130 interrupted.
 """
 
 import argparse
+import importlib
 import json
 import os
 import sys
@@ -121,9 +122,20 @@ def write_report(path, results):
 
 
 def run_batch(options):
+    import logging
+
     import talkface
     import talkface.batch
 
+    try:
+        importlib.import_module("distributed")
+    except ImportError as error:
+        print(f"talkface: error: batch jobs need Dask's distributed (Debian: python3-distributed): {error}",
+              file=sys.stderr)
+        return EXIT_FAILED
+    # Dask warns of each worker it kills when the local cluster closes, as it must on a busy
+    # machine; the command reports every job itself.
+    logging.getLogger("distributed").setLevel(logging.ERROR)
     try:
         jobs = talkface.batch.read_manifest(options.manifest)
     except talkface.Error as error:
@@ -157,7 +169,11 @@ def main(argv=None):
     try:
         return run_batch(options)
     except KeyboardInterrupt:
-        print("\ntalkface: interrupted; the jobs not finished wrote nothing", file=sys.stderr)
+        if options.scheduler:
+            print("\ntalkface: interrupted; the jobs not started are cancelled, those running on the cluster "
+                  "finish", file=sys.stderr)
+        else:
+            print("\ntalkface: interrupted; the jobs not finished wrote nothing", file=sys.stderr)
         return EXIT_INTERRUPTED
 
 

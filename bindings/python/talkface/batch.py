@@ -32,6 +32,7 @@ __all__ = [
     "JobResult",
     "MANIFEST_COLUMNS",
     "job_kind",
+    "local_cluster",
     "read_manifest",
     "run",
     "run_job",
@@ -300,10 +301,6 @@ def run(jobs: Iterable[Job], scheduler=None, workers: Optional[int] = None,
             "workers" if workers is not None else "retries",
             "applies to the local cluster only; a running scheduler has its own workers and "
             "distributed.scheduler.allowed-failures")
-    if workers is not None and workers < 1:
-        raise _invalid_argument("workers", f"expected 1 or more, found {workers}")
-    if retries is not None and retries < 0:
-        raise _invalid_argument("retries", f"expected 0 or more, found {retries}")
     cluster = None
     client = None
     futures = []
@@ -311,7 +308,7 @@ def run(jobs: Iterable[Job], scheduler=None, workers: Optional[int] = None,
         if isinstance(scheduler, distributed.Client):
             client = scheduler
         elif scheduler is None:
-            cluster = _local_cluster(distributed, workers or os.cpu_count() or 1, retries)
+            cluster = local_cluster(workers, retries)
             client = distributed.Client(cluster)
         else:
             client = _connect(distributed, str(scheduler))
@@ -354,17 +351,35 @@ def _result_of(future, job: Job) -> JobResult:
         return JobResult(job, "failed", 0.0, 0, message, "")
 
 
-def _local_cluster(distributed, workers: int, retries: Optional[int]):
-    import dask
+def local_cluster(workers: Optional[int] = None, retries: Optional[int] = None):
+    """The local Dask cluster run() starts when given no scheduler, for callers who keep one across
+    several run() calls (pass distributed.Client(cluster) as the scheduler; close both after).
 
-    settings = {}
+    Args:
+        workers: single-threaded worker processes (default: the machine's cores).
+        retries: how many times a job runs again when its worker dies (default: Dask's, 3).
+
+    Example:
+        >>> with talkface.batch.local_cluster(2) as cluster, distributed.Client(cluster) as client:
+        ...     results = talkface.batch.run(jobs, scheduler=client)
+    """
+    import dask
+    import distributed
+
+    if workers is not None and workers < 1:
+        raise _invalid_argument("workers", f"expected 1 or more, found {workers}")
+    if retries is not None and retries < 0:
+        raise _invalid_argument("retries", f"expected 0 or more, found {retries}")
+    # The workers' statistical profiler samples every thread 100 times a second: CPU taken from
+    # the jobs, for a dashboard nobody opens here.
+    settings = {"distributed.worker.profile.enabled": False}
     if retries is not None:
         settings["distributed.scheduler.allowed-failures"] = retries
-    # One thread a worker: one job fits one core, and processes keep jobs' memory apart. No
-    # dashboard: it would take a port the caller did not ask for.
+    # One thread a worker: one job fits one core, and processes keep jobs' memory apart. Only on
+    # the loopback interface, and no dashboard: it would take a port the caller did not ask for.
     with dask.config.set(settings):
-        return distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                                        dashboard_address=None, host="127.0.0.1")
+        return distributed.LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
+                                        processes=True, dashboard_address=None, host="127.0.0.1")
 
 
 def _connect(distributed, address: str):
