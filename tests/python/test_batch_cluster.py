@@ -198,3 +198,26 @@ def test_a_manifest_on_a_cluster_survives_a_killed_worker_and_skips_on_rerun(tmp
         assert set(line) >= {"row", "status", "seconds", "output_size", "message"}
         assert (line["output_size"] > 0) == (name in GOOD)
     assert stray_files(tmp_path / "out") == []
+
+    # Cancelled: a quick job, then two videos that take 10-40 s each here; on_result stops run()
+    # after the quick one. The running videos must stop and write nothing.
+    videos = tmp_path / "videos.csv"
+    videos.write_text("audio,transcript,output\n"
+                      f"{CLIPS}/one_sentence.wav,{CLIPS}/one_sentence.txt,cancel/quick.srt\n"
+                      f"{DEMO}/demo.ogg,{DEMO}/demo.txt,cancel/a.mp4\n"
+                      f"{DEMO}/demo.ogg,{DEMO}/demo.txt,cancel/b.webm\n", encoding="utf-8")
+
+    class Stop(Exception):
+        pass
+
+    def stop_after_the_first(result):
+        raise Stop()
+
+    with pytest.raises(Stop):
+        batch.run(batch.read_manifest(str(videos)), scheduler=address, on_result=stop_after_the_first)
+    deadline = time.monotonic() + 20
+    while any(client.run(lambda dask_worker: len(dask_worker.state.executing)).values()):
+        assert time.monotonic() < deadline, "a cancelled job went on running"
+        time.sleep(0.2)
+    assert sorted(path.name for path in (tmp_path / "cancel").iterdir()) == ["quick.srt"]
+

@@ -169,11 +169,7 @@ def main(argv=None):
     try:
         return run_batch(options)
     except KeyboardInterrupt:
-        if options.scheduler:
-            print("\ntalkface: interrupted; the jobs not started are cancelled, those running on the cluster "
-                  "finish", file=sys.stderr)
-        else:
-            print("\ntalkface: interrupted; the jobs not finished wrote nothing", file=sys.stderr)
+        print("\ntalkface: interrupted; the jobs not finished wrote nothing", file=sys.stderr)
         return EXIT_INTERRUPTED
 
 

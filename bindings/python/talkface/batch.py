@@ -285,8 +285,10 @@ def run(jobs: Iterable[Job], scheduler=None, workers: Optional[int] = None,
         force: redo jobs whose outputs are up to date.
 
     A job that keeps killing its workers fails with a message saying so; every other failure is
-    the job's own (JobResult.message). Temporary files of jobs cut short are removed before
-    returning, for outputs this machine can see.
+    the job's own (JobResult.message). If run() is interrupted (or on_result raises), the jobs not
+    started are cancelled and the running ones stop at their next progress report (within a
+    frame of a video, a moment of an alignment), leaving no output; temporary files of jobs cut
+    short are removed before returning, for outputs this machine can see.
 
     Raises:
         ImportError: Dask's distributed is not installed (Debian: python3-distributed).
@@ -316,7 +318,8 @@ def run(jobs: Iterable[Job], scheduler=None, workers: Optional[int] = None,
         index_of = {}
         for index, job in enumerate(jobs):
             # pure=False: the same job submitted twice (a second run) must run again, not be looked up.
-            future = client.submit(run_job, job, force, pure=False, key=f"talkface-job-{index}-{os.urandom(6).hex()}")
+            future = client.submit(_run_on_dask_worker, job, force, pure=False,
+                                   key=f"talkface-job-{index}-{os.urandom(6).hex()}")
             index_of[future.key] = index
             futures.append(future)
         for future in distributed.as_completed(futures):
@@ -335,6 +338,22 @@ def run(jobs: Iterable[Job], scheduler=None, workers: Optional[int] = None,
             cluster.close()
         for job in jobs:
             remove_temporary_files(job.output)
+
+
+def _run_on_dask_worker(job: Job, force: bool) -> JobResult:
+    # Dask cannot stop a running task: when run() cancels its futures (interrupted, or on_result
+    # raised), the worker marks the running task cancelled, and the job's next progress report
+    # sees it and stops the work, which removes its temporary file.
+    import distributed
+
+    worker = distributed.get_worker()
+    key = worker.get_current_task()
+
+    def is_wanted(fraction: float, stage: str) -> bool:
+        task = worker.state.tasks.get(key)
+        return task is not None and task.state != "cancelled"
+
+    return run_job(job, force, is_wanted)
 
 
 def _result_of(future, job: Job) -> JobResult:
