@@ -643,8 +643,10 @@ TF_API tf_status tf_timeline_syllable_times(const tf_timeline *timeline, size_t 
                                             int *out_has_final_start, double *out_final_start_s);
 
 /* A syllable whose confidence is below this is one to check: its start may be more than 100 ms off
- * (talkface::kLowAlignmentConfidence; on the benchmark's human speech at most one right syllable in
- * ten falls below it, bench/README.md). `talkface align --plot` draws such syllables in red. */
+ * (talkface::kLowAlignmentConfidence). The confidence is calibrated on the recording (half of it
+ * against the recording's median evidence), so the threshold holds across noise and rooms: on the
+ * benchmark's human speech one right syllable in ten falls below it, and six in ten of those more
+ * than 100 ms off do (bench/README.md). `talkface align --plot` draws such syllables in red. */
 #define TF_LOW_ALIGNMENT_CONFIDENCE 0.5
 
 /* Syllable `index`'s confidence (0..1; below TF_LOW_ALIGNMENT_CONFIDENCE: check it) and whether the

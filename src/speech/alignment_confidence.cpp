@@ -14,12 +14,14 @@ namespace {
 constexpr std::size_t kGapMarginFrames = 10;
 // Neighbours on each side whose evidence joins a syllable's.
 constexpr std::size_t kNeighbours = 2;
-// The evidence (mean posterior minus fit gap, the syllable's and its neighbourhood's averaged)
-// mapped to 0..1 by a logistic: 0.5, kLowAlignmentConfidence, where a tenth of the syllables
-// within 100 ms fall on bench/'s human tuning passages (issue 12: at most 10% of the right ones
-// flagged); the slope spreads the evidence's usual range (0.1-0.7) over most of 0..1.
-constexpr double kEvidenceAtLow = 0.33;
+// The evidence (mean posterior minus fit gap, the syllable's and its neighbourhood's averaged),
+// less half the recording's median, mapped to 0..1 by a logistic: 0.5, kLowAlignmentConfidence,
+// where a tenth of the syllables within 100 ms fall on bench/'s human tuning passages, all
+// conditions pooled (issue 12: at most 10% of the right ones flagged); the slope spreads the
+// evidence's usual range over most of 0..1.
+constexpr double kEvidenceAtLow = 0.082;
 constexpr double kSlope = 10.0;
+constexpr double kRelativeShare = 0.5;
 
 double log_sum_exp(const float* values, int count) {
     float largest = values[0];
@@ -31,8 +33,8 @@ double log_sum_exp(const float* values, int count) {
 
 }  // namespace
 
-std::vector<double> syllable_confidences(const SentenceChain& chain, const std::vector<StateSegment>& path,
-                                         const EmissionScores& scores, const std::vector<SyllableFrames>& frames) {
+std::vector<double> syllable_evidence(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                                      const EmissionScores& scores, const std::vector<SyllableFrames>& frames) {
     // The class the path gives each frame.
     std::vector<int> frame_class(scores.frame_count, kSilence);
     for (const auto& segment : path)
@@ -55,17 +57,31 @@ std::vector<double> syllable_confidences(const SentenceChain& chain, const std::
         for (std::size_t t = low; t < high; ++t) forced += scores.at(t, frame_class[t]);
         gap[i] = high > low ? (free_sounds_score(scores, low, high) - forced) / static_cast<double>(high - low) : 0.0;
     }
-    std::vector<double> confidences(count, 0.0);
+    std::vector<double> evidence(count, 0.0);
     for (std::size_t i = 0; i < count; ++i) {
         const std::size_t first = i > kNeighbours ? i - kNeighbours : 0;
         const std::size_t end = std::min(count, i + kNeighbours + 1);
         double around = 0.0;
         for (std::size_t j = first; j < end; ++j) around += posterior[j] - gap[j];
         around /= static_cast<double>(end - first);
-        const double evidence = 0.5 * (posterior[i] - gap[i]) + 0.5 * around;
-        confidences[i] = 1.0 / (1.0 + std::exp(-kSlope * (evidence - kEvidenceAtLow)));
+        evidence[i] = 0.5 * (posterior[i] - gap[i]) + 0.5 * around;
     }
-    return confidences;
+    return evidence;
+}
+
+void set_confidences(const std::vector<double>& evidence, Timeline& result) {
+    std::vector<double> placed;
+    for (const double value : evidence)
+        if (!std::isnan(value)) placed.push_back(value);
+    if (placed.empty()) return;
+    const auto middle = placed.begin() + static_cast<std::ptrdiff_t>(placed.size() / 2);
+    std::nth_element(placed.begin(), middle, placed.end());
+    const double median = *middle;
+    for (std::size_t i = 0; i < evidence.size() && i < result.syllables.size(); ++i) {
+        if (std::isnan(evidence[i])) continue;
+        const double calibrated = evidence[i] - kRelativeShare * median;
+        result.syllables[i].confidence = 1.0 / (1.0 + std::exp(-kSlope * (calibrated - kEvidenceAtLow)));
+    }
 }
 
 }  // namespace talkface::detail

@@ -8,6 +8,7 @@
 
 #include "speech/hsmm.hpp"
 #include "speech/sentence_chains.hpp"
+#include "talkface/timeline.hpp"
 
 namespace talkface::detail {
 
@@ -17,13 +18,20 @@ struct SyllableFrames {
     std::size_t end_frame = 0;
 };
 
-// Per syllable of `chain` (holding `frames` on `path`), a confidence in 0..1. Two kinds of
-// evidence, each of the syllable and of its neighbours (drift comes in runs: a syllable placed a
-// syllable off pulls its neighbours with it): how probable the sound the path gives each frame is
-// among all sounds (the mean posterior of its class), and how much better a free sequence of
-// sounds fits the syllable's stretch than the path does (text_fit_gap's loop, per frame).
-std::vector<double> syllable_confidences(const SentenceChain& chain, const std::vector<StateSegment>& path,
-                                         const EmissionScores& scores, const std::vector<SyllableFrames>& frames);
+// Per syllable of `chain` (holding `frames` on `path`), the evidence that it is where the path
+// put it. Two kinds, each of the syllable and of its neighbours (drift comes in runs: a syllable
+// placed a syllable off pulls its neighbours with it): how probable the sound the path gives each
+// frame is among all sounds (the mean posterior of its class), less how much better a free
+// sequence of sounds fits the syllable's stretch than the path does (text_fit_gap's loop, per frame).
+std::vector<double> syllable_evidence(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                                      const EmissionScores& scores, const std::vector<SyllableFrames>& frames);
+
+// Each syllable's confidence in 0..1 from its evidence (per syllable of the transcript; NaN for one
+// no chain placed), half as it is and half against the recording's median: in a room or in noise
+// every syllable's evidence is lower, and a threshold on the evidence alone flagged half of the
+// right syllables there and almost none in clean speech (issue 12: the threshold must hold across
+// conditions); the absolute half keeps a recording aligned badly throughout from looking normal.
+void set_confidences(const std::vector<double>& evidence, Timeline& result);
 
 }  // namespace talkface::detail
 

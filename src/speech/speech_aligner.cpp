@@ -12,6 +12,7 @@
 #include "common/number_format.hpp"
 #include "speech/acoustic_model.hpp"
 #include "speech/alignment_checks.hpp"
+#include "speech/alignment_confidence.hpp"
 #include "speech/frame_features.hpp"
 #include "speech/hsmm.hpp"
 #include "speech/phone_chain.hpp"
@@ -147,9 +148,9 @@ Reestimation reestimate(const FeatureTrack& track, const LoudnessProfile& loudne
 void measure_chain(const SentenceChain& chain, std::size_t w, const std::vector<StateSegment>& path,
                    const std::vector<float>& observations, const Reestimation& learned, std::size_t spoken_sentences,
                    const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
-                   EmissionScores& scores, Timeline& result, std::vector<FrameSpan>& spans,
+                   EmissionScores& scores, Timeline& result, std::vector<double>& evidence, std::vector<FrameSpan>& spans,
                    std::vector<SentenceMetrics>& metrics, bool is_checked) {
-    place_syllables(chain, path, scores, track, result);
+    place_syllables(chain, path, scores, track, result, evidence);
     for (const auto& [k, share] : split_by_sentence(chain, path)) {
         if (chain.is_block()) spans[k] = aligned_span(result, chain, k);
         metrics[k].fit = speech_fit(chain, share, scores);
@@ -220,6 +221,7 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
     Timeline result = transcript;
     result.duration_s = track.duration_s;
     std::vector<SentenceMetrics> metrics(spans.size());
+    std::vector<double> evidence(transcript.syllables.size(), std::numeric_limits<double>::quiet_NaN());
     std::vector<float> observations;
     EmissionScores scores;
     ViterbiWorkspace workspace;
@@ -228,9 +230,10 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
         learned.model.score(observations, chains[w].searched.length(), scores);
         const auto path = align_chain(chains[w], scores, workspace, scores.frame_count, transcript);
         measure_chain(chains[w], w, path, observations, learned, spoken_sentences, track, loudness, transcript, scores,
-                      result, spans, metrics, is_checked);
+                      result, evidence, spans, metrics, is_checked);
         report_pass(progress, kReestimationRounds, w, chains.size());
     }
+    set_confidences(evidence, result);
     if (is_checked) {
         if (has_blocks) check_sentence_lengths(spans, loudness, transcript);
         check_text_fit(metrics, spans, transcript);

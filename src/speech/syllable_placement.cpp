@@ -18,7 +18,7 @@ constexpr std::size_t kPauseBeforeBurstFrames = 20;
 }  // namespace
 
 void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores,
-                     const FeatureTrack& track, Timeline& result) {
+                     const FeatureTrack& track, Timeline& result, std::vector<double>& evidence) {
     const double offset_s = static_cast<double>(chain.searched.first_frame) * kFrameStepS;
     // The last frame may run past the audio's last sample: no time is later than the audio's end.
     auto time_s = [&](std::size_t frame) {
@@ -61,9 +61,8 @@ void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>
         syllable.final_start_s = time_s(final_first.value_or(first));
         frames[local] = {first, std::max(end, first + 1)};
     }
-    const auto confidences = syllable_confidences(chain, path, scores, frames);
-    for (std::size_t local = 0; local < chain.syllables.size(); ++local)
-        result.syllables[chain.syllable_indices[local]].confidence = confidences[local];
+    const auto placed = syllable_evidence(chain, path, scores, frames);
+    for (std::size_t local = 0; local < chain.syllables.size(); ++local) evidence[chain.syllable_indices[local]] = placed[local];
 }
 
 std::vector<AlignedStretch> stretches_of(const SentenceChain& chain, const std::vector<StateSegment>& path) {

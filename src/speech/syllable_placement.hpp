@@ -14,9 +14,11 @@
 
 namespace talkface::detail {
 
-// Writes the syllables of one aligned chain into `result` (times in seconds of the recording).
+// Writes the syllables of one aligned chain into `result` (times in seconds of the recording),
+// and the evidence of their places into `evidence` (per syllable of the transcript), from which
+// set_confidences gives their confidences once every chain is placed.
 void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores,
-                     const FeatureTrack& track, Timeline& result);
+                     const FeatureTrack& track, Timeline& result, std::vector<double>& evidence);
 
 // The path's syllables and pauses, in frames of the whole recording.
 std::vector<AlignedStretch> stretches_of(const SentenceChain& chain, const std::vector<StateSegment>& path);
