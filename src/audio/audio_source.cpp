@@ -2,12 +2,14 @@
 
 #include <sndfile.h>
 
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <optional>
 #include <sstream>
+#include <string_view>
 
 #include "audio/ffmpeg_source.hpp"
 #include "common/number_format.hpp"
@@ -51,6 +53,22 @@ std::size_t bytes_per_frame(const SF_INFO& info) {
         default: return 0;
     }
     return static_cast<std::size_t>(sample_bytes) * static_cast<std::size_t>(info.channels);
+}
+
+// The containers libsndfile reads, by their first bytes: WAV (RIFF, RIFX, RF64, BW64), Wave64,
+// AIFF, AU, CAF, FLAC and Ogg. Everything else (MP3, M4A, video, and what is not audio at all) goes
+// to FFmpeg: libsndfile tries any unknown file as MP3 through mpg123, which prints "Illegal
+// Audio-MPEG-Header" on stderr for bad input, and its MP3 length is an estimate from the first
+// frame's bit rate (sox's MP3s at 22.05 and 44.1 kHz came out "truncated"); FFmpeg reads them to
+// the real end and prints nothing (ffmpeg_source.cpp).
+bool is_sndfile_container(const std::array<char, 12>& header) {
+    const std::string_view start(header.data(), header.size());
+    const bool is_iff = (start.substr(0, 4) == "RIFF" || start.substr(0, 4) == "RIFX" || start.substr(0, 4) == "RF64" ||
+                         start.substr(0, 4) == "BW64") && start.substr(8, 4) == "WAVE";
+    const bool is_aiff = start.substr(0, 4) == "FORM" && (start.substr(8, 4) == "AIFF" || start.substr(8, 4) == "AIFC");
+    return is_iff || is_aiff || start.substr(0, 4) == "riff" || start.substr(0, 4) == ".snd" ||
+           start.substr(0, 4) == "dns." || start.substr(0, 4) == "caff" || start.substr(0, 4) == "fLaC" ||
+           start.substr(0, 4) == "OggS";
 }
 
 class FileSource final : public AudioSource {
@@ -123,11 +141,18 @@ private:
 }  // namespace
 
 std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
+    std::array<char, 12> header{};
     {
         std::ifstream probe(path, std::ios::binary | std::ios::ate);
         if (!probe) throw FileError(path, std::strerror(errno));
         if (probe.tellg() == 0) throw InvalidArgument(path, "empty file: no audio frames");
+        probe.seekg(0);
+        errno = 0;
+        probe.read(header.data(), static_cast<std::streamsize>(header.size()));
+        // A directory opens as a stream and fails on the first read (EISDIR).
+        if (probe.bad() || (probe.gcount() == 0 && errno != 0)) throw FileError(path, std::strerror(errno));
     }
+    if (!is_sndfile_container(header)) return open_ffmpeg_file(path);
     SF_INFO info{};
     SNDFILE* file = sf_open(path.c_str(), SFM_READ, &info);
     if (file == nullptr) {
@@ -135,13 +160,7 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
         // can open a file on this thread.
         const std::string reason = sf_strerror(nullptr);
         if (reason.find("System error") != std::string::npos) throw FileError(path, reason);
-        // Not a format libsndfile knows (M4A, Opus in WebM, a video): FFmpeg's turn.
-        return open_ffmpeg_file(path);
-    }
-    // libsndfile's MP3 length is an estimate from the first frame's bit rate, and it stops there:
-    // sox's MP3s at 22.05 and 44.1 kHz came out "truncated". FFmpeg reads them to the real end.
-    if ((info.format & SF_FORMAT_TYPEMASK) == SF_FORMAT_MPEG) {
-        sf_close(file);
+        // A container libsndfile knows holding a codec it does not (Opus in an old libsndfile): FFmpeg's turn.
         return open_ffmpeg_file(path);
     }
     if (info.channels <= 0 || static_cast<std::size_t>(info.channels) > kMaxChannels || info.samplerate <= 0) {

@@ -2,9 +2,15 @@
 // reads to its real end, gives the WAV's samples' timing, and aligns; what cannot be read says why.
 #include <doctest/doctest.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "audio/audio_source.hpp"
@@ -114,6 +120,51 @@ TEST_SUITE("audio") {
 
         CHECK_THROWS_WITH_AS(SpeechAligner().align_file(silent_video, read_transcript("ni3 hao3.")),
                              doctest::Contains("without a sound track"), ParseError);
+    }
+
+    TEST_CASE("bad input prints nothing on stderr: the library reports through its errors only") {
+        // libsndfile's MP3 decoder (mpg123) printed "Illegal Audio-MPEG-Header" for bytes it could
+        // not place; FFmpeg logs to stderr unless its process-wide level is lowered.
+        std::ifstream in(fixture("sox_22050.mp3"), std::ios::binary);
+        const std::string mp3((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        std::string noise(3000, '\0');
+        std::uint32_t state = 1;
+        for (char& c : noise) c = static_cast<char>((state = state * 1664525u + 1013904223u) >> 24);
+        const std::vector<std::pair<std::string, std::string>> inputs = {
+            {"noise.bin", noise},
+            {"noise.mp3", noise},
+            {"frame_then_noise.mp3", std::string("\xff\xfb\x90\x00", 4) + noise},
+            {"mp3_cut.mp3", mp3.substr(0, mp3.size() / 3) + noise},
+            {"riff_noise.wav", std::string("RIFF\x10\0\0\0WAVE", 12) + noise},
+        };
+        const std::string captured = test::output_path("stderr_of_bad_input.txt");
+        std::fflush(stderr);
+        const int saved = dup(2);
+        const int sink = open(captured.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        REQUIRE(saved >= 0);
+        REQUIRE(sink >= 0);
+        dup2(sink, 2);
+        close(sink);
+        int refused = 0;
+        for (const auto& [name, bytes] : inputs) {
+            const std::string path = test::output_path(name);
+            write_bytes(path, bytes);
+            try {
+                auto source = detail::open_audio_file(path);
+                std::vector<float> block(4096);
+                while (source->read(block.data(), block.size()) > 0) {
+                }
+            } catch (const Error&) {
+                ++refused;
+            }
+        }
+        std::fflush(stderr);
+        dup2(saved, 2);
+        close(saved);
+        std::ifstream printed(captured);
+        const std::string text((std::istreambuf_iterator<char>(printed)), std::istreambuf_iterator<char>());
+        CHECK(text == "");
+        CHECK(refused >= 3);
     }
 
     TEST_CASE("a directory is a file error, not a parse error") {
