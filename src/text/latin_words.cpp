@@ -1,6 +1,8 @@
 #include "text/latin_words.hpp"
 
 #include <algorithm>
+#include <string_view>
+#include <utility>
 
 #include "talkface/errors.hpp"
 #include "text/embedded_text.hpp"
@@ -15,6 +17,13 @@ const char* const kLetterNames[26] = {
     "ei1",         "bi4",      "xi1",     "di4",  "yi4",  "ai2 fu5", "ji4",     "ai1 qi1", "ai4",
     "zhei4",       "kei4",     "ai2 le5", "ai2 mu5", "en1", "ou1",  "pi1",     "qiu1",    "a4 er5",
     "ai2 si5",     "ti4",      "you1",    "wei1", "da2 bu5 liu5", "ai2 ke4 si5", "wai4", "zei4",
+};
+
+// Words Mandarin speakers say their own way, where the dictionary's mapping misses it: email is
+// 伊妹儿 (the mapping of its first vowel gave "e").
+constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
+    {"email", "yi1 mei4 er5"},
+    {"e-mail", "yi1 mei4 er5"},
 };
 
 void append_words(std::vector<std::string>& syllables, std::string_view words) {
@@ -64,6 +73,12 @@ std::optional<std::vector<std::string>> english_word_syllables(std::string_view 
     std::string key;
     for (const char letter : word) {
         key += letter >= 'A' && letter <= 'Z' ? static_cast<char>(letter - 'A' + 'a') : letter;
+    }
+    for (const auto& [spelled, said] : kSaidOtherwise) {
+        if (key != spelled) continue;
+        std::vector<std::string> syllables;
+        append_words(syllables, said);
+        return syllables;
     }
     const auto& lines = english_lines();
     const auto found = std::lower_bound(lines.begin(), lines.end(), key, [](std::string_view line, const std::string& k) {

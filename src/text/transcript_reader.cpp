@@ -13,6 +13,7 @@
 #include "text/code_points.hpp"
 #include "text/latin_words.hpp"
 #include "text/reading_tables.hpp"
+#include "text/script_variant.hpp"
 #include "text/written_numbers.hpp"
 
 namespace talkface {
@@ -166,6 +167,14 @@ bool looks_like_pinyin(const std::vector<CodePoint>& token) {
     return has_tone || !has_inner_capital;
 }
 
+bool has_tone_digit(const std::vector<CodePoint>& token) {
+    return std::any_of(token.begin(), token.end(), [](const CodePoint& c) { return is_digit(c.value); });
+}
+
+bool is_all_capitals(const std::vector<CodePoint>& token) {
+    return std::all_of(token.begin(), token.end(), [](const CodePoint& c) { return c.value >= 'A' && c.value <= 'Z'; });
+}
+
 struct HanCharacter {
     const CodePoint* code_point;  // where it stands in the transcript; nullptr in a form's reading
     std::string_view text;
@@ -190,6 +199,9 @@ public:
         : options_(options), source_name_(source_name), tables_(detail::reading_tables()) {}
 
     Timeline read(const std::vector<CodePoint>& text) {
+        is_traditional_ = detail::is_traditional_text(text);
+        has_han_ = std::any_of(text.begin(), text.end(),
+                               [&](const CodePoint& c) { return tables_.character_readings.count(c.text) != 0; });
         for (std::size_t i = 0; i < text.size();) i = read_item(text, i);
         close_sentence();
         return std::move(timeline_);
@@ -247,7 +259,12 @@ private:
         const std::vector<CodePoint> token(text.begin() + static_cast<std::ptrdiff_t>(start),
                                            text.begin() + static_cast<std::ptrdiff_t>(end));
         std::optional<std::vector<WrittenSyllable>> syllables;
-        if (options_.read_pinyin && looks_like_pinyin(token)) syllables = split_pinyin(token);
+        // Among Chinese characters, a Latin word without tone numbers that the English dictionary
+        // has (men, long, email) or all in capitals (A股) is English or letters, not pinyin:
+        // pinyin inside Chinese text carries its tones (docs/written-forms.md).
+        const bool is_english_among_han =
+            has_han_ && !has_tone_digit(token) && (is_all_capitals(token) || detail::english_word_syllables(written_text(text, start, end)));
+        if (options_.read_pinyin && looks_like_pinyin(token) && !is_english_among_han) syllables = split_pinyin(token);
         if (!syllables) return read_latin(text, start);
         for (const auto& c : token) append_text(c.text);
         for (auto& syllable : *syllables)
@@ -477,7 +494,10 @@ private:
         }
         const auto readings = read_han(run);
         std::vector<Syllable> syllables;
-        for (std::size_t k = 0; k < run.size(); ++k) syllables.push_back(make_syllable(std::string(run[k].text), readings[k]));
+        // The readings are the tables' (Simplified); what a syllable shows follows the transcript.
+        for (std::size_t k = 0; k < run.size(); ++k)
+            syllables.push_back(make_syllable(is_traditional_ ? detail::traditional_form(run[k].text) : std::string(run[k].text),
+                                              readings[k]));
         return syllables;
     }
 
@@ -562,6 +582,8 @@ private:
     }
 
     const TranscriptOptions& options_;
+    bool is_traditional_ = false;  // the transcript is mostly Traditional (script_variant.hpp)
+    bool has_han_ = false;         // the transcript has Chinese characters: a toneless Latin word may be English
     const std::string& source_name_;
     const detail::ReadingTables& tables_;
     Timeline timeline_;

@@ -77,6 +77,43 @@ bool names_by_digits(char32_t c) {
     return is_one_of(c, U"室房路号號");
 }
 
+// Service and emergency numbers (110 police, 119 fire, 120 ambulance, 12345 the city's hotline,
+// 10086 a carrier, 95xxx a bank's line): said digit by digit with 幺 where they are dialled or
+// named (打110, 110报警), as cardinals where they count (120人, 时速120).
+bool is_service_number(const std::string& digits) {
+    for (const std::string_view number : {"110", "112", "114", "119", "120", "122", "999", "12110", "12306", "12315",
+                                          "12333", "12345", "12348", "12358", "12365", "12369", "10000", "10010", "10086"})
+        if (digits == number) return true;
+    return digits.size() == 5 && (digits.rfind("95", 0) == 0 || digits.rfind("96", 0) == 0);
+}
+
+std::string text_between(const std::vector<CodePoint>& text, std::size_t first, std::size_t end) {
+    std::string between;
+    for (std::size_t i = first; i < std::min(end, text.size()); ++i) between += text[i].text;
+    return between;
+}
+
+// A service number is dialled or named: a dialling word right before it (打110, 拨打120, call
+// 10086) or a service's name right after it (110报警, 120急救车).
+bool is_service_call(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    const std::string before = text_between(text, start >= 3 ? start - 3 : 0, start);
+    const std::string after = text_between(text, end, end + 2);
+    for (const std::string_view word : {"打", "拨", "撥", "叫", "call", "Call"})
+        if (before.size() >= word.size() && before.compare(before.size() - word.size(), word.size(), word) == 0) return true;
+    for (const std::string_view word : {"报警", "報警", "急救", "火警", "查号", "查號", "热线", "熱線", "电话", "電話",
+                                        "服务", "服務", "客服", "求助", "救护", "救護", "平台", "平臺"})
+        if (after.rfind(word, 0) == 0) return true;
+    return false;
+}
+
+// A naming word right before the number (房间号是1208, 编号：305): said digit by digit as a
+// room's number is.
+bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start) {
+    std::size_t i = start;
+    for (int skipped = 0; skipped < 2 && i > 0 && is_one_of(text[i - 1].value, U" 是为為：:\u3000"); ++skipped) --i;
+    return i > 0 && is_one_of(text[i - 1].value, U"号號室房");
+}
+
 // A word earlier in the sentence that makes the numbers after it phone numbers.
 bool follows_phone_word(const std::vector<CodePoint>& text, std::size_t start) {
     std::string before;
@@ -164,6 +201,8 @@ struct NumberContext {
     bool has_unit = false;      // a unit follows (5km): a measure, so 2 is 两
     bool is_ordinal = false;    // 第 before it
     bool is_phone = false;      // a phone word earlier in the sentence
+    bool is_named = false;      // a naming word right before it (房间号是1208)
+    bool is_service_call = false;  // dialled or named (打110, 110报警)
 };
 
 struct SaidNumber {
@@ -204,7 +243,11 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
             said.is_year = true;
             return said;
         }
-        if (whole.size() >= 3 && names_by_digits(context.next)) {
+        if (context.is_service_call && is_service_number(whole) && !context.has_unit && !takes_liang(context.next)) {
+            said.words = digit_words(whole, true);
+            return said;
+        }
+        if (whole.size() >= 3 && (names_by_digits(context.next) || context.is_named)) {
             said.words = digit_words(whole);
             return said;
         }
@@ -323,6 +366,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     context.is_phone = follows_phone_word(text, start);
 
     const auto number = parse_number(text, i);
+    context.is_named = follows_name_word(text, start);
+    context.is_service_call = is_service_call(text, start, number.end);
     SpokenForm form;
     if (sign_words.empty() && currency == nullptr && value_at(text, number.end) == ':') {
         if (auto time = read_clock_time(text, number)) return time;
@@ -332,6 +377,13 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
             form.end = second.end;
             return form;
         }
+    }
+    // 7×24 七乘二十四: a product, each number said alone.
+    if (is_one_of(value_at(text, number.end), U"×*") && is_digit_at(text, number.end + 1) && currency == nullptr) {
+        auto second = parse_number(text, number.end + 1);
+        form.words = sign_words + say_number(number, {}).words + "乘" + say_number(second, {}).words;
+        form.end = second.end;
+        return form;
     }
     if (sign_words.empty() && currency == nullptr) {
         if (auto date = read_numeric_date(text, number)) return date;

@@ -69,7 +69,7 @@ TEST_SUITE("written forms") {
 
     TEST_CASE("2 is 两 before a measure word and at the head of 千, 万 and 亿") {
         check_cases({
-            {"2本书", "两本书"},       {"2個人", "两個人"},          {"2400万", "两千四百万"},
+            {"2本书", "两本书"},       {"2個人", "兩個人"},          {"2400万", "两千四百万"},
             {"2000", "两千"},         {"20000", "两万"},            {"2亿", "两亿"},
             {"12000", "一万二千"},     {"22本", "二十二本"},          {"200000", "二十万"},
             {"2月", "二月"},          {"2号", "二号"},              {"第2名", "第二名"},
@@ -129,8 +129,9 @@ TEST_SUITE("written forms") {
         check_cases({
             {"１２３", "一百二十三"},
             {"今年是２０２６年", "今年是二零二六年"},
-            {"兩岸有2400萬人", "兩岸有两千四百萬人"},
-            {"他買了2本書", "他買了两本書"},
+            {"兩岸有2400萬人", "兩岸有兩千四百萬人"},
+            {"他買了2本書", "他買了兩本書"},
+            {"這個月漲了3.5%，約1.2億", "這個月漲了百分之三點五約一點二億"},
         });
     }
 
@@ -138,10 +139,41 @@ TEST_SUITE("written forms") {
         const std::vector<Case> cases = {
             {"AI", "ei ai"},           {"CEO", "xi yi ou"},        {"GDP", "ji di pi"},
             {"USB", "you ai si bi"},   {"OK", "ou kei"},           {"iPhone", "ai feng"},
-            {"Wi-Fi", "wai fa"},       {"email", "e mei"},         {"WeChat", "wei cha te"},
+            {"Wi-Fi", "wai fa"},       {"email", "yi mei er"},         {"WeChat", "wei cha te"},
             {"5G", "五 ji"},           {"MP3", "ai mu pi三"},       {"iPhone15", "ai feng十五"},
         };
         check_cases(cases);
+    }
+
+    TEST_CASE("inside Chinese text a Latin word without tones is English or letters, not pinyin") {
+        check_cases({
+            {"men和long", "man和 long"},
+            {"A股上涨", "ei股上涨"},
+            {"请发email给我", "请发 yi mei er给我"},
+            {"我叫Xiaoming", "我叫 Xiao ming"},
+            {"ni3 hao3", "ni3 hao3"},
+            {"ni hao", "ni hao"},
+        });
+        // English (from the dictionary), not the pinyin men5 and long5 they also spell.
+        CHECK(pinyin_of("men和long") == "man1 he2 long1");
+        CHECK(pinyin_of("ni hao") == "ni5 hao5");
+    }
+
+    TEST_CASE("numbers named, dialled and multiplied: 号 before, service numbers, ×") {
+        check_cases({
+            {"房间号是1208", "房间号是一二零八"},
+            {"编号：305", "编号三零五"},
+            {"打110", "打幺幺零"},
+            {"请拨打12345热线", "请拨打幺二三四五热线"},
+            {"110报警", "幺幺零报警"},
+            {"来了120人", "来了一百二十人"},
+            {"时速120", "时速一百二十"},
+            {"7×24小时", "七乘二十四小时"},
+            {"5G网络", "五 ji网络"},
+            {"第3季度GDP增长5.2%", "第三季度 ji di pi增长百分之五点二"},
+            {"2025-2026年度", "二零二五到二零二六年度"},
+            {"00后和90年代", "零零后和九十年代"},
+        });
     }
 
     TEST_CASE("a word the dictionary lacks is spelled letter by letter, with a warning") {

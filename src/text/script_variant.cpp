@@ -1,0 +1,44 @@
+#include "text/script_variant.hpp"
+
+#include <utility>
+
+namespace talkface::detail {
+
+namespace {
+
+// Common characters written differently in the two scripts, pairwise: position k of each is one
+// word. Characters both scripts use (台 后 里 只) are left out, so that neither side counts them.
+constexpr std::u32string_view kSimplifiedOnly =
+    U"们个这会说时国对学来为书点两万亿号电话几么还过请开门长东车见机关发经变种让钱湾气温与从体问题听欢乐买卖进华"
+    U"实现业务员语线区当报纸头应该条场动汉阳红风云飞鸟鱼马龙";
+constexpr std::u32string_view kTraditionalOnly =
+    U"們個這會說時國對學來為書點兩萬億號電話幾麼還過請開門長東車見機關發經變種讓錢灣氣溫與從體問題聽歡樂買賣進華"
+    U"實現業務員語線區當報紙頭應該條場動漢陽紅風雲飛鳥魚馬龍";
+
+// The characters of the written forms' readings that Traditional writes otherwise.
+constexpr std::pair<std::string_view, std::string_view> kReadingCharacters[] = {
+    {"两", "兩"}, {"万", "萬"}, {"亿", "億"}, {"点", "點"}, {"负", "負"}, {"时", "時"}, {"钟", "鐘"},
+    {"吨", "噸"}, {"摄", "攝"}, {"华", "華"}, {"兹", "茲"}, {"号", "號"}, {"欧", "歐"}, {"镑", "鎊"},
+    {"币", "幣"},
+};
+
+}  // namespace
+
+bool is_traditional_text(const std::vector<CodePoint>& text) {
+    static_assert(kSimplifiedOnly.size() == kTraditionalOnly.size(), "the two lists are pairwise");
+    std::size_t simplified = 0, traditional = 0;
+    for (const CodePoint& c : text) {
+        if (c.value < 0x2E80) continue;
+        if (kSimplifiedOnly.find(c.value) != std::u32string_view::npos) ++simplified;
+        if (kTraditionalOnly.find(c.value) != std::u32string_view::npos) ++traditional;
+    }
+    return traditional > simplified;
+}
+
+std::string traditional_form(std::string_view character) {
+    for (const auto& [simplified, traditional] : kReadingCharacters)
+        if (character == simplified) return std::string(traditional);
+    return std::string(character);
+}
+
+}  // namespace talkface::detail
