@@ -15,6 +15,7 @@ using talkface::CheckMode;
 using talkface::InvalidArgument;
 using talkface::SentenceCutMode;
 using talkface::SpeechAligner;
+using talkface::TextMismatch;
 using talkface::capi::enum_value;
 using talkface::capi::guard;
 using talkface::capi::progress_for;
@@ -91,6 +92,38 @@ tf_status tf_align_options_set_check(tf_align_options* options, tf_check_mode mo
         if (value != TF_CHECK_REFUSE && value != TF_CHECK_WARN && value != TF_CHECK_OFF)
             throw InvalidArgument("check", "expected a tf_check_mode (0..2), got " + std::to_string(value));
         update(options, [&](AlignOptions& o) { o.check = static_cast<CheckMode>(value); });
+    });
+}
+
+tf_status tf_align_options_set_lenient(tf_align_options* options, int lenient) {
+    return guard([&] {
+        require_non_null(options, "options");
+        update(options, [&](AlignOptions& o) { o.lenient = lenient != 0; });
+    });
+}
+
+tf_status tf_timeline_mismatch_count(const tf_timeline* timeline, size_t* out_count) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        require_non_null(out_count, "out_count");
+        *out_count = timeline->timeline.mismatches.size();
+    });
+}
+
+tf_status tf_timeline_mismatch(const tf_timeline* timeline, size_t index, double* out_start_s, double* out_end_s,
+                               size_t* out_first_syllable, size_t* out_syllable_count, const char** out_expected_text) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        const auto& mismatches = timeline->timeline.mismatches;
+        if (index >= mismatches.size())
+            throw InvalidArgument("index", "mismatch " + std::to_string(index) + " of " +
+                                               std::to_string(mismatches.size()));
+        const TextMismatch& mismatch = mismatches[index];
+        if (out_start_s != nullptr) *out_start_s = mismatch.start_s;
+        if (out_end_s != nullptr) *out_end_s = mismatch.end_s;
+        if (out_first_syllable != nullptr) *out_first_syllable = mismatch.first_syllable;
+        if (out_syllable_count != nullptr) *out_syllable_count = mismatch.syllable_count;
+        if (out_expected_text != nullptr) *out_expected_text = mismatch.expected_text.c_str();
     });
 }
 

@@ -66,6 +66,11 @@ struct AlignOptions {
     double c1 = 0.95;                  ///< Algorithm 3.1 step 3, in 0.5..1
     double c2 = 1.45;                  ///< Algorithm 3.1 step 4, in 1..1.5
     CheckMode check = CheckMode::refuse;  ///< what a transcript that does not match the audio does
+    /// A transcript that differs from the speech by a word or two is aligned rather than refused:
+    /// a stretch of speech that does not say its text is fitted as generic speech, reported in
+    /// Timeline::mismatches (time span, expected text) and in Timeline::warnings, and the rest is
+    /// aligned as with a right text. The checks then refuse nothing (as CheckMode::off).
+    bool lenient = false;
 };
 
 /// Aligns a recorded speech with its transcript (a Timeline from read_transcript()).

@@ -798,6 +798,26 @@ typedef enum tf_check_mode {
  * options. */
 TF_API tf_status tf_align_options_set_check(tf_align_options *options, tf_check_mode mode);
 
+/* Lenient alignment (non-zero) or not (0, the default): a transcript that differs from the speech
+ * by a word or two is aligned rather than refused; each stretch of speech that does not say its
+ * text is fitted as generic speech and reported (tf_timeline_mismatch and a warning), and the rest
+ * is aligned as with a right text. The checks then refuse nothing.
+ * Errors: TF_ERR_INVALID_ARGUMENT for a NULL options. */
+TF_API tf_status tf_align_options_set_lenient(tf_align_options *options, int lenient);
+
+/* The number of stretches where the speech does not say the text (lenient alignment only).
+ * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
+TF_API tf_status tf_timeline_mismatch_count(const tf_timeline *timeline, size_t *out_count);
+
+/* Mismatch `index`, in time order: its time span in seconds (start == end where the speech leaves
+ * the text out), the first of the transcript's syllables it stands for and how many (0 where the
+ * speech has words the transcript lacks), and the text the transcript expected there (borrowed,
+ * valid while the timeline lives unmodified). Any out pointer may be NULL.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or timeline is NULL. */
+TF_API tf_status tf_timeline_mismatch(const tf_timeline *timeline, size_t index, double *out_start_s,
+                                      double *out_end_s, size_t *out_first_syllable, size_t *out_syllable_count,
+                                      const char **out_expected_text);
+
 /* Aligns an audio file (WAV, FLAC, Ogg, MP3, AAC/M4A, Opus, or the sound track of an MP4, MOV, MKV
  * or WebM video; any rate, mono or stereo) with `transcript` (from tf_read_transcript /
  * tf_load_transcript) into a new timeline *out: the transcript's sentences and syllables with their times, seconds (syllable start = where its initial

@@ -50,6 +50,20 @@ struct WrittenForm {
     std::size_t syllable_count = 0;  ///< how many syllables it became (at least 1)
 };
 
+/// A stretch where the speech does not say the transcript's text: found by lenient alignment
+/// (AlignOptions::lenient) in place of a refusal. The syllables it stands for keep their place in
+/// Timeline::syllables, spread over the stretch at its loudness peaks with confidence 0, so that the
+/// mouth follows the audio's loudness there; everything around it is aligned as usual.
+struct TextMismatch {
+    double start_s = 0.0;  ///< where the stretch starts, seconds from the start of the audio
+    double end_s = 0.0;    ///< end_s >= start_s; equal where the speech leaves the text out
+    std::size_t first_syllable = 0;  ///< index into Timeline::syllables of the first syllable it stands for
+    /// How many of the transcript's syllables it stands for; 0 where the speech has words the
+    /// transcript lacks (first_syllable is then the syllable after them).
+    std::size_t syllable_count = 0;
+    std::string expected_text;  ///< what the transcript says there (its syllables' text), UTF-8
+};
+
 /// Sentences and syllables in transcript order, with what was skipped.
 struct Timeline {
     std::vector<Sentence> sentences;
@@ -62,6 +76,8 @@ struct Timeline {
     /// timeline from a source that does not keep them). Last, so that aggregate initialisers of
     /// the members above keep their meaning.
     std::vector<WrittenForm> written_forms;
+    /// Where the speech does not say the text, in time order (only from lenient alignment).
+    std::vector<TextMismatch> mismatches;
 };
 
 }  // namespace v0

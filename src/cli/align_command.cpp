@@ -12,6 +12,7 @@
 #include <talkface/talkface.hpp>
 
 #include "commands.hpp"
+#include "timing_option.hpp"
 #include "progress_bar.hpp"
 #include "common/atomic_file.hpp"
 
@@ -28,6 +29,7 @@ struct AlignCommandOptions {
     double c1 = talkface::AlignOptions{}.c1;
     double c2 = talkface::AlignOptions{}.c2;
     talkface::CheckMode check = talkface::AlignOptions{}.check;
+    bool lenient = false;
     std::string output_path = "-";
     bool quiet = false;
 };
@@ -79,6 +81,7 @@ void run_align(const AlignCommandOptions& options) {
     align_options.c1 = options.c1;
     align_options.c2 = options.c2;
     align_options.check = options.check;
+    align_options.lenient = options.lenient;
     if (!options.first_pause_text.empty()) {
         const auto pause = parse_pause(options.first_pause_text).value_or(std::make_pair(0.0, 0.0));
         align_options.sentence_cut = talkface::SentenceCutMode::first_pause;
@@ -137,6 +140,7 @@ void setup_align_command(CLI::App& app) {
         ->transform(CLI::CheckedTransformer(std::map<std::string, talkface::CheckMode>{
             {"refuse", talkface::CheckMode::refuse}, {"warn", talkface::CheckMode::warn}, {"off", talkface::CheckMode::off}}))
         ->default_str("refuse");
+    add_lenient_option(*align, options->lenient);
     align->add_option("-o,--output", options->output_path, "Write the result here instead of stdout (- is stdout)");
     align->add_flag("-q,--quiet", options->quiet, "No progress bar");
     align->callback([options] { run_align(*options); });

@@ -184,7 +184,7 @@ TalkingFace animate_talking_face(const AnimateOptions& options, const std::strin
             return progress(fraction * kAlignmentShare, stage);
         };
     }
-    talkface::Timeline timeline = timed_speech(audio_path, transcript, options.timing_path, alignment_progress);
+    talkface::Timeline timeline = timed_speech(audio_path, transcript, options.timing, alignment_progress);
     const talkface::ExpressionSimulator simulator(timeline, options.seed, style);
     talkface::LipSyncOptions lip_sync;
     lip_sync.fps = options.fps;
@@ -233,7 +233,7 @@ void setup_animate_command(CLI::App& app) {
         "animate", "Make a web page where the face talks in sync with a speech (or the bare SVG animation)");
     add_speech_arguments(*animate, *audio_path, *transcript_path);
     add_page_options(*animate, *options);
-    add_timing_option(*animate, options->timing_path);
+    add_timing_option(*animate, options->timing);
     animate->callback([options, audio_path, transcript_path] { run_animate(*options, *audio_path, *transcript_path); });
 }
 

@@ -12,6 +12,7 @@
 #include <talkface/talkface.hpp>
 
 #include "progress_bar.hpp"
+#include "timing_option.hpp"
 
 namespace talkface_cli {
 
@@ -46,7 +47,7 @@ struct AnimateOptions {
     double face_d = 0.0;
     std::string stage = "800x450";
     std::string output_path;
-    std::string timing_path;  // --timing: time the speech by this file instead of aligning
+    SpeechTiming timing;  // --timing FILE instead of aligning, --lenient
     bool quiet = false;
 };
 

@@ -21,7 +21,7 @@ struct ExportOptions {
     std::string transcript_path;
     std::string output_path;
     std::string format;
-    std::string timing_path;
+    SpeechTiming timing;
     std::uint64_t seed = 0;
     StyleOptions expression;
     double fps = talkface::LipSyncOptions{}.fps;
@@ -36,8 +36,9 @@ void run_export(const ExportOptions& options) {
     talkface::Timeline timeline;
     {
         const std::unique_ptr<ProgressBar> bar = make_progress_bar(options.quiet);
-        timeline = timed_speech(options.audio_path, transcript, options.timing_path, progress_part(bar.get(), 0.0, 1.0));
+        timeline = timed_speech(options.audio_path, transcript, options.timing, progress_part(bar.get(), 0.0, 1.0));
     }
+    print_mismatches(options.audio_path, timeline);
     const talkface::ExpressionSimulator simulator(timeline, options.seed, expression_style(options.expression));
     talkface::LipSyncOptions lip_sync;
     lip_sync.fps = options.fps;
@@ -78,7 +79,7 @@ void setup_export_command(CLI::App& app) {
                      "rhubarb-tsv, rhubarb-json, rhubarb-xml, moho, live2d, textgrid, srt or vtt "
                      "(docs/timing-formats.md); needed for any other .json")
         ->check(CLI::IsMember(talkface::export_format_names()));
-    add_timing_option(*command, options->timing_path);
+    add_timing_option(*command, options->timing);
     command->add_option("--seed", options->seed, "Seed of the simulated blinks and head moves (live2d)")
         ->capture_default_str();
     add_style_options(*command, options->expression);

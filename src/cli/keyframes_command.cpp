@@ -28,7 +28,7 @@ struct KeyframesOptions {
     std::string audio_path;
     std::string transcript_path;
     std::string timeline_path;
-    std::string timing_path;
+    SpeechTiming timing;
     std::uint64_t seed = 0;
     StyleOptions expression;
     std::string events_path;
@@ -139,7 +139,9 @@ std::vector<talkface::ExpressionEvent> read_events(const std::string& path) {
 talkface::Timeline timeline_for(const KeyframesOptions& options) {
     if (!options.timeline_path.empty()) return talkface::load_timeline_json(options.timeline_path);
     const talkface::Timeline transcript = talkface::load_transcript(options.transcript_path);
-    return timed_speech(options.audio_path, transcript, options.timing_path);
+    talkface::Timeline timeline = timed_speech(options.audio_path, transcript, options.timing);
+    print_mismatches(options.audio_path, timeline);
+    return timeline;
 }
 
 void run_keyframes(const KeyframesOptions& options) {
@@ -147,8 +149,8 @@ void run_keyframes(const KeyframesOptions& options) {
     if (has_audio_form == !options.timeline_path.empty()) {
         throw CLI::ValidationError("keyframes", "give either AUDIO TRANSCRIPT or --timeline TIMELINE.json");
     }
-    if (!options.timing_path.empty() && !has_audio_form) {
-        throw CLI::ValidationError("--timing", "times AUDIO TRANSCRIPT: give them, not --timeline");
+    if ((!options.timing.timing_path.empty() || options.timing.lenient) && !has_audio_form) {
+        throw CLI::ValidationError(options.timing.lenient ? "--lenient" : "--timing", "times AUDIO TRANSCRIPT: give them, not --timeline");
     }
     // Everything is computed before the output is opened: a bad input leaves no file.
     const talkface::Timeline timeline = timeline_for(options);
@@ -191,7 +193,7 @@ void setup_keyframes_command(CLI::App& app) {
         ->add_option("--timeline", options->timeline_path,
                      "An aligned timeline (the timeline JSON of `talkface align --json`) instead of AUDIO TRANSCRIPT")
         ->check(CLI::ExistingFile);
-    add_timing_option(*keyframes, options->timing_path);
+    add_timing_option(*keyframes, options->timing);
     keyframes->add_option("--seed", options->seed, "Seed of the simulated events; the same seed, the same events")
         ->capture_default_str();
     add_style_options(*keyframes, options->expression);

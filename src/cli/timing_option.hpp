@@ -1,5 +1,6 @@
 // `--timing FILE`, shared by every command that times a speech (export, keyframes, animate, video):
-// a TextGrid, subtitles or a word-time JSON instead of the aligner (issue #15). Wiring it into a
+// a TextGrid, subtitles or a word-time JSON instead of the aligner (issue #15); and `--lenient`,
+// what the aligner does with a transcript a word or two off (issue #13). Wiring them into a
 // command is add_timing_option() beside its options and timed_speech() where it aligned.
 #ifndef TALKFACE_CLI_TIMING_OPTION_HPP
 #define TALKFACE_CLI_TIMING_OPTION_HPP
@@ -11,13 +12,26 @@
 
 namespace talkface_cli {
 
-// Adds --timing FILE (an existing file) to `command`, bound to `timing_path`.
-void add_timing_option(CLI::App& command, std::string& timing_path);
+// How a command times its speech.
+struct SpeechTiming {
+    std::string timing_path;  // --timing: time the speech by this file instead of aligning
+    bool lenient = false;     // --lenient: report a stretch that does not say its text, not refuse
+};
 
-// The transcript spoken in `audio_path`: timed by the --timing file when `timing_path` is not
-// empty (talkface::time_transcript), else aligned (SpeechAligner::align_file).
+// Adds --timing FILE (an existing file) and --lenient to `command`, bound to `timing`.
+void add_timing_option(CLI::App& command, SpeechTiming& timing);
+
+// Adds --lenient alone (the align command has no --timing).
+void add_lenient_option(CLI::App& command, bool& lenient);
+
+// The transcript spoken in `audio_path`: timed by the --timing file when there is one
+// (talkface::time_transcript), else aligned (SpeechAligner::align_file, lenient with --lenient);
 talkface::Timeline timed_speech(const std::string& audio_path, const talkface::Timeline& transcript,
-                                const std::string& timing_path, const talkface::ProgressCallback& progress = {});
+                                const SpeechTiming& timing, const talkface::ProgressCallback& progress = {});
+
+// Tells each mismatch of a lenient alignment on stderr, for commands that print no warnings of
+// their own.
+void print_mismatches(const std::string& audio_path, const talkface::Timeline& timeline);
 
 }  // namespace talkface_cli
 

@@ -106,7 +106,7 @@ talkface::FaceVideoOptions face_video_options(const VideoCommandOptions& options
 void add_video_options(CLI::App& command, VideoCommandOptions& options) {
     options.animate.fps = talkface::VideoOptions{}.fps;
     add_face_options(command, options.animate);
-    add_timing_option(command, options.animate.timing_path);
+    add_timing_option(command, options.animate.timing);
     command.add_option("--size", options.size, "Frame size WIDTHxHEIGHT in pixels (even for .mp4 and .webm)")
         ->check(size_validator())
         ->capture_default_str();

@@ -53,7 +53,7 @@ std::size_t fill_duration_scores(const PhoneState& state, std::size_t frames, st
     const double reference = state.is_optional ? 0.0 : prior.at(state.median_frames);
     for (std::size_t d = longest; d >= shortest && d > 0; --d) {
         const double score = is_flat ? 0.0 : prior.at(static_cast<double>(d)) - reference;
-        reversed.push_back(static_cast<float>(score + state.entry_log_penalty));
+        reversed.push_back(static_cast<float>(score + state.entry_log_penalty + state.frame_log_penalty * static_cast<double>(d)));
     }
     return longest;
 }
@@ -64,8 +64,16 @@ std::size_t fill_duration_scores(const PhoneState& state, std::size_t frames, st
 float tail_step(const PhoneState& state, std::size_t longest) {
     const double frames = static_cast<double>(longest);
     const double z = (std::log(frames) - std::log(state.median_frames)) / state.log_sigma;
-    return static_cast<float>(-(1.0 + z / state.log_sigma) / frames);
+    return static_cast<float>(-(1.0 + z / state.log_sigma) / frames + state.frame_log_penalty);
 }
+
+// What skipping `state` costs; minus infinity where the path must pass it.
+float skip_score(const PhoneState& state) {
+    return state.is_optional ? 0.0f : static_cast<float>(state.skip_log_penalty);
+}
+
+// The row of the prefix sums that scores `phone_class`: kGenericSpeech has the last one.
+std::size_t prefix_row(PhoneClass phone_class) { return static_cast<std::size_t>(phone_class); }
 
 // max over i < count of a[i] + b[i]; eight independent lanes, so that the compiler vectorizes it.
 float max_of_sums(const float* a, const float* b, std::size_t count) {
@@ -97,7 +105,8 @@ std::vector<StateSegment> search(const std::vector<PhoneState>& states, std::siz
     // is subtracted first (every path pays one emission per frame, so no decision changes): the
     // sums along good paths then stay small, where float keeps its resolution.
     auto& prefix = workspace.prefix;
-    prefix.assign(static_cast<std::size_t>(kPhoneClassCount) * width, 0.0);
+    // Generic speech scores each frame as its best class does: its row is all zeros.
+    prefix.assign(static_cast<std::size_t>(kPhoneClassCount + 1) * width, 0.0);
     for (std::size_t t = 0; t < frames; ++t) {
         const float* row = &emissions.values[(first_frame + t) * kPhoneClassCount];
         const float best = *std::max_element(row, row + kPhoneClassCount);
@@ -120,7 +129,7 @@ std::vector<StateSegment> search(const std::vector<PhoneState>& states, std::siz
     // Fills entry_minus_prefix for state j and the duration table; returns the longest duration.
     auto prepare_state = [&](std::size_t j) {
         const PhoneState& state = states[first_state + j];
-        const double* class_prefix = &prefix[static_cast<std::size_t>(state.phone_class) * width];
+        const double* class_prefix = &prefix[prefix_row(state.phone_class) * width];
         const float* entry_row = &entry[j * width];
         for (std::size_t t = 0; t <= frames; ++t)
             entry_minus_prefix[t] = entry_row[t] == kImpossible ? kImpossible : static_cast<float>(entry_row[t] - class_prefix[t]);
@@ -132,13 +141,13 @@ std::vector<StateSegment> search(const std::vector<PhoneState>& states, std::siz
         if (j > 0) {
             const float* previous_finish = &finish[(j - 1) * width];
             const float* previous_entry = &entry[(j - 1) * width];
-            const bool may_skip = states[first_state + j - 1].is_optional;
+            const float skip = skip_score(states[first_state + j - 1]);
             for (std::size_t t = 0; t <= frames; ++t)
-                entry_row[t] = may_skip ? std::max(previous_finish[t], previous_entry[t]) : previous_finish[t];
+                entry_row[t] = skip == kImpossible ? previous_finish[t] : std::max(previous_finish[t], previous_entry[t] + skip);
         }
         const std::size_t longest = prepare_state(j);
         const std::size_t shortest = longest + 1 - duration_score.size();
-        const double* class_prefix = &prefix[static_cast<std::size_t>(state.phone_class) * width];
+        const double* class_prefix = &prefix[prefix_row(state.phone_class) * width];
         float* finish_row = &finish[j * width];
         const std::size_t first_entry =
             static_cast<std::size_t>(std::find_if(entry_row, entry_row + width, [](float v) { return v != kImpossible; }) - entry_row);
@@ -169,7 +178,8 @@ std::vector<StateSegment> search(const std::vector<PhoneState>& states, std::siz
             if (finish[k * width + t] > finish[j * width + t]) j = k;
         if (finish[j * width + t] == kImpossible) return {};
     } else {
-        is_skipped = states[first_state + j].is_optional && entry[j * width + t] > finish[j * width + t];
+        const float skip = skip_score(states[first_state + j]);
+        is_skipped = skip != kImpossible && entry[j * width + t] + skip > finish[j * width + t];
         if (!is_skipped && finish[j * width + t] == kImpossible) return {};
     }
     std::vector<StateSegment> segments;
@@ -200,7 +210,8 @@ std::vector<StateSegment> search(const std::vector<PhoneState>& states, std::siz
             t -= best_frames;
         }
         if (j == 0) break;
-        is_skipped = states[first_state + j - 1].is_optional && entry[(j - 1) * width + t] > finish[(j - 1) * width + t];
+        const float skip = skip_score(states[first_state + j - 1]);
+        is_skipped = skip != kImpossible && entry[(j - 1) * width + t] + skip > finish[(j - 1) * width + t];
         --j;
     }
     std::reverse(segments.begin(), segments.end());

@@ -5,6 +5,7 @@
 #define TALKFACE_SPEECH_PHONE_CHAIN_HPP
 
 #include <cstddef>
+#include <limits>
 #include <string_view>
 #include <vector>
 
@@ -29,6 +30,10 @@ enum PhoneClass : int {
     kVowelV,       // u-umlaut
     kVowelApical,  // the empty rime of zi ci si zhi chi shi ri
     kPhoneClassCount,
+    // Not a class with a model: any sound at all, scored at each frame by the class that fits it
+    // best (hsmm.cpp). Lenient alignment (lenient_chain.hpp) lets it stand for speech the text
+    // does not say.
+    kGenericSpeech = kPhoneClassCount,
 };
 
 enum class StateRole : int {
@@ -38,6 +43,7 @@ enum class StateRole : int {
     closure,        // of a stop or affricate after speech: the syllable starts here (SPEC)
     initial,
     final,
+    generic_speech, // optional, of class kGenericSpeech: speech other than the text's (lenient_chain.hpp)
 };
 
 // The silences between and around the syllables (a stop's closure is not one: it belongs to its syllable).
@@ -57,6 +63,10 @@ struct PhoneState {
     bool stretches = false;         // scaled with the speaking rate (vowels)
     double entry_log_penalty = 0.0; // added when the state is used (a cheap short pause)
     bool has_tail = false;          // may last past max_frames, paying the prior's slope there per frame
+    // A state the path must pass may still be skipped where this is finite, paying it (lenient
+    // alignment: a syllable the speech does not say). Optional states are skipped for nothing.
+    double skip_log_penalty = -std::numeric_limits<double>::infinity();
+    double frame_log_penalty = 0.0; // paid per frame held (generic speech fits every frame well)
 };
 
 // The chain of one sentence, or of neighbouring sentences aligned together: edge silence,

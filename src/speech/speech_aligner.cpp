@@ -15,6 +15,7 @@
 #include "speech/alignment_confidence.hpp"
 #include "speech/frame_features.hpp"
 #include "speech/hsmm.hpp"
+#include "speech/lenient_chain.hpp"
 #include "speech/phone_chain.hpp"
 #include "speech/run_together.hpp"
 #include "speech/sentence_chains.hpp"
@@ -203,9 +204,10 @@ void set_sentence_times(const std::vector<FrameSpan>& spans, Timeline& result) {
 }
 
 // The syllables of every sentence of `cut`, aligned sentence by sentence (neighbours that run on,
-// together), and, when `is_checked`, the checks that audio and transcript belong together.
+// together), and, when `is_checked`, the checks that audio and transcript belong together; when
+// `is_lenient`, the final pass on lenient chains (lenient_chain.hpp).
 Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
-                   const SentenceCut& cut, ProgressReporter& progress, bool is_checked) {
+                   const SentenceCut& cut, ProgressReporter& progress, bool is_checked, bool is_lenient) {
     // Where sentences run together the cutter's spans are guesses: the syllables place them, and
     // the sentences' lengths are checked on where the syllables put them.
     std::vector<FrameSpan> spans = cut.spans;
@@ -228,6 +230,13 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
     for (std::size_t w = 0; w < chains.size(); ++w) {
         observe(track, loudness, chains[w].searched, observations);
         learned.model.score(observations, chains[w].searched.length(), scores);
+        if (is_lenient) {
+            const SentenceChain chain = lenient_chain(chains[w]);
+            const auto path = align_chain(chain, scores, workspace, scores.frame_count, transcript);
+            place_lenient(chain, path, scores, track, loudness, result);
+            report_pass(progress, kReestimationRounds, w, chains.size());
+            continue;
+        }
         const auto path = align_chain(chains[w], scores, workspace, scores.frame_count, transcript);
         measure_chain(chains[w], w, path, observations, learned, spoken_sentences, track, loudness, transcript, scores,
                       result, evidence, spans, metrics, is_checked);
@@ -253,8 +262,8 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
 // the checks know them best.
 Timeline align_confirmed(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
                          const SentenceCut& cut, const std::vector<bool>& is_spoken, ProgressReporter& progress,
-                         bool is_checked) {
-    Timeline result = align_cut(track, loudness, transcript, cut, progress, is_checked);
+                         bool is_checked, bool is_lenient) {
+    Timeline result = align_cut(track, loudness, transcript, cut, progress, is_checked, is_lenient);
     SentenceCut confirmed = cut;
     for (const auto& [k, next] : spoken_neighbours(is_spoken)) {
         // Too few pauses: the cutter chose none for this end, and the chain is all there is.
@@ -264,7 +273,7 @@ Timeline align_confirmed(const FeatureTrack& track, const LoudnessProfile& loudn
             confirmed.runs_on[k] = false;
     }
     if (confirmed.runs_on == cut.runs_on) return result;
-    return align_cut(track, loudness, transcript, confirmed, progress, is_checked);
+    return align_cut(track, loudness, transcript, confirmed, progress, is_checked, is_lenient);
 }
 
 Timeline align_track(const FeatureTrack& track, const Timeline& transcript, const AlignOptions& options,
@@ -280,7 +289,7 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
     const std::size_t stretches = loudness.pauses.size() + 1;
     Timeline result;
     try {
-        result = align_confirmed(track, loudness, transcript, cut, is_spoken, progress, is_checked);
+        result = align_confirmed(track, loudness, transcript, cut, is_spoken, progress, is_checked, options.lenient);
     } catch (const AlignmentError& error) {
         // Fewer stretches of speech than sentences: either sentences run together or the
         // transcript has one the audio lacks; the first is tried, and the message tells of both.
@@ -299,7 +308,7 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
         SentenceCut block = cut;
         std::fill(block.runs_on.begin(), block.runs_on.end(), true);
         try {
-            result = align_cut(track, loudness, transcript, block, progress, is_checked);
+            result = align_cut(track, loudness, transcript, block, progress, is_checked, options.lenient);
         } catch (const AlignmentError&) {
             throw error;
         }
@@ -319,9 +328,11 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
 }
 
 // AlignOptions::check: refuse, as the checks find; warn, the alignment the checks refused made
-// again without them, and their finding kept in its warnings; off, no checks at all.
+// again without them, and their finding kept in its warnings; off, no checks at all. Lenient
+// alignment reports what does not match in place of the checks.
 Timeline align_checked(const FeatureTrack& track, const Timeline& transcript, const AlignOptions& options,
                        ProgressReporter& progress) {
+    if (options.lenient) return align_track(track, transcript, options, progress, false);
     if (options.check != CheckMode::warn) return align_track(track, transcript, options, progress, options.check == CheckMode::refuse);
     try {
         return align_track(track, transcript, options, progress, true);

@@ -169,6 +169,30 @@ const std::vector<Field<WrittenForm>>& written_form_fields() {
     return fields;
 }
 
+// A stretch where the speech does not say the text, from lenient alignment (issue 13).
+const std::vector<Field<TextMismatch>>& mismatch_fields() {
+    static const std::vector<Field<TextMismatch>> fields = {
+        {"start", true, true, [](const TextMismatch& m) -> std::optional<std::string> { return json_number(m.start_s); },
+         [](const ItemReader& r, const JsonValue& v, TextMismatch& m) { m.start_s = r.seconds(v, "start"); }},
+        {"end", true, true, [](const TextMismatch& m) -> std::optional<std::string> { return json_number(m.end_s); },
+         [](const ItemReader& r, const JsonValue& v, TextMismatch& m) { m.end_s = r.seconds(v, "end"); }},
+        {"first_syllable", true, false,
+         [](const TextMismatch& m) -> std::optional<std::string> { return std::to_string(m.first_syllable); },
+         [](const ItemReader& r, const JsonValue& v, TextMismatch& m) {
+             m.first_syllable = r.count(v, "first_syllable", 0);
+         }},
+        {"syllable_count", true, false,
+         [](const TextMismatch& m) -> std::optional<std::string> { return std::to_string(m.syllable_count); },
+         [](const ItemReader& r, const JsonValue& v, TextMismatch& m) {
+             m.syllable_count = r.count(v, "syllable_count", 0);
+         }},
+        {"expected", true, false,
+         [](const TextMismatch& m) -> std::optional<std::string> { return json_quoted(m.expected_text); },
+         [](const ItemReader& r, const JsonValue& v, TextMismatch& m) { m.expected_text = r.text(v, "expected"); }},
+    };
+    return fields;
+}
+
 template <typename Item>
 std::string item_json(const Item& item, const std::vector<Field<Item>>& fields, const TimelineJsonOptions& options) {
     std::string json = "{";
@@ -250,12 +274,17 @@ std::string timeline_to_json(const Timeline& timeline, const TimelineJsonOptions
     for (const WrittenForm& form : timeline.written_forms) {
         written_forms.push_back(item_json(form, written_form_fields(), options));
     }
+    // Found by the aligner: a document without times has none.
+    std::vector<std::string> mismatches;
+    if (options.with_times)
+        for (const TextMismatch& mismatch : timeline.mismatches) mismatches.push_back(item_json(mismatch, mismatch_fields(), options));
     std::vector<std::string> warnings;
     for (const std::string& warning : timeline.warnings) warnings.push_back(json_quoted(warning));
     std::string json = "{\"version\":" + std::to_string(kTimelineJsonVersion) + ",\n";
     json += "\"sentences\":" + list_json(sentences) + ",\n";
     json += "\"syllables\":" + list_json(syllables) + ",\n";
     if (!written_forms.empty()) json += "\"written_forms\":" + list_json(written_forms) + ",\n";
+    if (!mismatches.empty()) json += "\"mismatches\":" + list_json(mismatches) + ",\n";
     if (options.with_times) json += "\"duration\":" + json_number(timeline.duration_s) + ",\n";
     json += "\"warnings\":" + list_json(warnings) + "}\n";
     return json;
@@ -297,6 +326,21 @@ Timeline timeline_from_json(std::string_view utf8_text, const std::string& sourc
             }
             covered = form.first_syllable + form.syllable_count;
             timeline.written_forms.push_back(std::move(form));
+        }
+    }
+    if (const JsonValue* mismatches = document.find("mismatches")) {
+        for (std::size_t k = 0; k < list(json, *mismatches, "mismatches").items.size(); ++k) {
+            const std::string item = "mismatches[" + std::to_string(k) + "]";
+            const JsonValue& value = mismatches->items[k];
+            auto mismatch = read_item(json, value, item, mismatch_fields(), 0);
+            if (mismatch.first_syllable > timeline.syllables.size() ||
+                mismatch.syllable_count > timeline.syllables.size() - mismatch.first_syllable) {
+                json.fail(value.offset, item,
+                          "stands for syllables from " + std::to_string(mismatch.first_syllable) + " (" +
+                              std::to_string(mismatch.syllable_count) + " of them), past the " +
+                              std::to_string(timeline.syllables.size()) + " syllables");
+            }
+            timeline.mismatches.push_back(std::move(mismatch));
         }
     }
     if (const JsonValue* duration = document.find("duration")) {

@@ -354,9 +354,51 @@ static int test_check_modes_refuse_warn_or_skip(void) {
     return failures;
 }
 
+/* Lenient alignment (issue #13): the clip says 公园, which the transcript lacks; the stretch is
+ * reported with its time and the syllable after it, and a right text has none. */
+static int test_lenient_reports_speech_the_transcript_lacks(void) {
+    static const char text[] = "小朋友们在里放风筝。";
+    int failures = 0;
+    tf_timeline *transcript = NULL;
+    tf_timeline *aligned = NULL;
+    tf_align_options *options = NULL;
+    size_t count = 0, first = 0, syllables = 0;
+    double start_s = 0.0, end_s = 0.0;
+    const char *expected = NULL;
+    CHECK_OK(tf_read_transcript(text, strlen(text), "lenient.txt", &transcript));
+    CHECK_OK(tf_align_options_create(&options));
+    CHECK_OK(tf_align_options_set_lenient(options, 1));
+    CHECK_OK(tf_align_file(CLIP_DIR "lenient_espeak.flac", transcript, options, NULL, NULL, &aligned));
+    CHECK_OK(tf_timeline_mismatch_count(aligned, &count));
+    CHECK(count == 1);
+    if (count == 1) {
+        CHECK_OK(tf_timeline_mismatch(aligned, 0, &start_s, &end_s, &first, &syllables, &expected));
+        CHECK(first == 5 && syllables == 0);
+        CHECK(strcmp(expected, "") == 0);
+        CHECK(start_s > 1.3 && start_s < 1.5 && end_s > 1.8 && end_s < 2.0);
+        CHECK_OK(tf_timeline_mismatch(aligned, 0, NULL, NULL, NULL, NULL, NULL));
+    }
+    CHECK_FAILS_WITH(tf_timeline_mismatch(aligned, 1, NULL, NULL, NULL, NULL, NULL), TF_ERR_INVALID_ARGUMENT, "index");
+    tf_timeline_destroy(aligned);
+    aligned = NULL;
+    tf_timeline_destroy(transcript);
+
+    transcript = clip_transcript();
+    CHECK_OK(tf_align_file(kClipPath, transcript, options, NULL, NULL, &aligned));
+    CHECK_OK(tf_timeline_mismatch_count(aligned, &count));
+    CHECK(count == 0);
+    tf_timeline_destroy(aligned);
+    tf_timeline_destroy(transcript);
+    CHECK_FAILS_WITH(tf_align_options_set_lenient(NULL, 1), TF_ERR_INVALID_ARGUMENT, "options");
+    CHECK_FAILS_WITH(tf_timeline_mismatch_count(NULL, &count), TF_ERR_INVALID_ARGUMENT, "timeline");
+    tf_align_options_destroy(options);
+    return failures;
+}
+
 int main(void) {
     int failures = 0;
     failures += test_check_modes_refuse_warn_or_skip();
+    failures += test_lenient_reports_speech_the_transcript_lacks();
     failures += test_the_alignment_plot_is_an_svg_of_the_clip();
     failures += test_file_and_its_samples_align_alike();
     failures += test_progress_rises_and_a_non_zero_return_cancels();

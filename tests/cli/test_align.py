@@ -202,3 +202,19 @@ def test_a_video_without_sound_exits_1_saying_so():
     result = run("align", audio, transcript, "--quiet")
     assert result.returncode == 1
     assert result.stderr.startswith(f"talkface: error: {audio}: a video without a sound track")
+
+
+def test_lenient_aligns_a_text_a_word_off_and_reports_the_stretch(tmp_path):
+    audio = CLIPS_DIR / "lenient_espeak.flac"  # says 公园, which this transcript lacks
+    transcript = tmp_path / "lacks.txt"
+    transcript.write_text("小朋友们在里放风筝。\n", encoding="utf-8")
+    result = run("align", audio, transcript, "--json", "--quiet", "--lenient")
+    assert result.returncode == 0, result.stderr
+    document = json.loads(result.stdout)
+    assert [(m["first_syllable"], m["syllable_count"], m["expected"]) for m in document["mismatches"]] == [(5, 0, "")]
+    assert document["mismatches"][0]["start"] < document["mismatches"][0]["end"]
+    assert "mismatches" not in json.loads(run("align", audio, transcript, "--json", "--quiet", "--check", "off").stdout)
+    # The commands that align on their way to an animation take it too, and say what they found.
+    keyframes = run("keyframes", audio, transcript, "--lenient", "-o", tmp_path / "k.json")
+    assert keyframes.returncode == 0, keyframes.stderr
+    assert "speech the transcript lacks" in keyframes.stderr

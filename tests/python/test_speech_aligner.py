@@ -246,3 +246,26 @@ def test_check_mode_refuses_warns_of_or_skips_a_wrong_text():
     unchecked = talkface.SpeechAligner(options).align_file(CLIP, wrong)
     assert unchecked.warnings == []
     assert [s.start_s for s in unchecked.syllables] == [s.start_s for s in warned.syllables]
+
+
+def test_lenient_reports_speech_the_transcript_lacks_and_keeps_the_rest():
+    # espeak-ng says 小朋友们在公园里放风筝; the transcript lacks 公园 (tests/data/speech/make_clips.sh).
+    transcript = talkface.read_transcript("小朋友们在里放风筝。")
+    audio = CLIPS_DIR / "lenient_espeak.flac"
+    options = talkface.AlignOptions(lenient=True)
+    assert options.lenient and "lenient=True" in repr(options)
+    assert not talkface.AlignOptions().lenient
+    aligned = talkface.SpeechAligner(options).align_file(audio, transcript)
+    assert len(aligned.mismatches) == 1
+    mismatch = aligned.mismatches[0]
+    assert (mismatch.first_syllable, mismatch.syllable_count, mismatch.expected_text) == (5, 0, "")
+    assert 1.3 < mismatch.start_s < 1.5 and 1.8 < mismatch.end_s < 2.0
+    assert any("speech the transcript lacks" in w for w in aligned.warnings)
+    # A right text: nothing marked.
+    right = talkface.load_transcript(CLIPS_DIR / "one_sentence.txt")
+    assert talkface.SpeechAligner(options).align_file(CLIP, right).mismatches == []
+    # The timeline JSON keeps them.
+    again = talkface.timeline_from_json(talkface.timeline_to_json(aligned))
+    assert again.mismatches == aligned.mismatches
+    made = talkface.TextMismatch(start_s=1.0, end_s=1.5, first_syllable=2, syllable_count=1, expected_text="好")
+    assert talkface.Timeline(mismatches=[made]).mismatches == [made]

@@ -191,6 +191,32 @@ TEST_SUITE("timeline JSON") {
               "t.json:4:18: written_forms[0]: \"text\" is missing");
     }
 
+    TEST_CASE("mismatches of a lenient alignment round trip; a document without times has none") {
+        Timeline timeline = spoken_timeline();
+        timeline.mismatches = {{0.5, 0.5 + 1.0 / 3.0, 1, 2, "好\"世"}, {1.25, 1.25, 4, 0, ""}};
+        const std::string json = talkface::timeline_to_json(timeline);
+        CHECK(json.find("\"mismatches\":[\n{\"start\":0.5,\"end\":0.8333333333333333,\"first_syllable\":1,"
+                        "\"syllable_count\":2,\"expected\":\"好\\\"世\"},\n") != std::string::npos);
+        const Timeline back = talkface::timeline_from_json(json);
+        REQUIRE(back.mismatches.size() == 2);
+        CHECK(back.mismatches[0].end_s == timeline.mismatches[0].end_s);
+        CHECK(back.mismatches[0].expected_text == "好\"世");
+        CHECK(back.mismatches[1].first_syllable == 4);
+        CHECK(back.mismatches[1].syllable_count == 0);
+        CHECK(talkface::timeline_to_json(back) == json);
+        talkface::TimelineJsonOptions without_times;
+        without_times.with_times = false;
+        CHECK(talkface::timeline_to_json(timeline, without_times).find("mismatches") == std::string::npos);
+        CHECK(talkface::timeline_to_json(spoken_timeline()).find("mismatches") == std::string::npos);
+        const std::string head = "{\"sentences\":[{\"text\":\"a\"}],\n\"syllables\":[\n"
+                                 R"({"text":"a","pinyin":"a1","sentence":0}],)"
+                                 "\n\"mismatches\":[";
+        CHECK(error_of(head + R"({"start":1,"end":2,"first_syllable":1,"syllable_count":1,"expected":"b"}]})")
+                  .find("mismatches[0]: stands for syllables from 1 (1 of them), past the 1 syllables") != std::string::npos);
+        CHECK(error_of(head + R"({"start":2,"end":1,"first_syllable":0,"syllable_count":1,"expected":"b"}]})")
+                  .find("mismatches[0]: ends at 1 s, before it starts (2 s)") != std::string::npos);
+    }
+
     TEST_CASE("a file is read and written whole, and a missing one is named") {
         CHECK_THROWS_WITH_AS(talkface::load_timeline_json("/no/such/dir/t.json"),
                              doctest::Contains("/no/such/dir/t.json"), talkface::FileError);

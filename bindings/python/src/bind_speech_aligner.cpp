@@ -68,7 +68,7 @@ Example:
     >>> aligner = talkface.SpeechAligner(options)
 )doc")
         .def(py::init([](SentenceCutMode sentence_cut, double first_pause_start_s, double first_pause_end_s,
-                         double c1, double c2, CheckMode check) {
+                         double c1, double c2, CheckMode check, bool lenient) {
                  AlignOptions options;
                  options.sentence_cut = sentence_cut;
                  options.first_pause_start_s = first_pause_start_s;
@@ -76,12 +76,14 @@ Example:
                  options.c1 = c1;
                  options.c2 = c2;
                  options.check = check;
+                 options.lenient = lenient;
                  return options;
              }),
              py::arg("sentence_cut") = AlignOptions{}.sentence_cut,
              py::arg("first_pause_start_s") = AlignOptions{}.first_pause_start_s,
              py::arg("first_pause_end_s") = AlignOptions{}.first_pause_end_s, py::arg("c1") = AlignOptions{}.c1,
-             py::arg("c2") = AlignOptions{}.c2, py::arg("check") = AlignOptions{}.check, R"doc(
+             py::arg("c2") = AlignOptions{}.c2, py::arg("check") = AlignOptions{}.check,
+             py::arg("lenient") = AlignOptions{}.lenient, R"doc(
 Args:
     sentence_cut (SentenceCutMode): automatic or first_pause.
     first_pause_start_s, first_pause_end_s (float): first_pause mode: the pause between the first two
@@ -89,6 +91,9 @@ Args:
     c1 (float): Algorithm 3.1 step 3, shortest pause as a share of the first one, 0.5..1.
     c2 (float): Algorithm 3.1 step 4, loudest silence as a multiple of the first pause's peak, 1..1.5.
     check (CheckMode): refuse, warn or off: what a transcript that does not match the audio does.
+    lenient (bool): align a transcript that differs from the speech by a word or two rather than
+        refuse it: each stretch that does not say its text is fitted as generic speech and reported
+        in Timeline.mismatches (and warnings); the checks then refuse nothing.
 
 Example:
     >>> talkface.AlignOptions()
@@ -100,10 +105,11 @@ Example:
         .def_readwrite("c1", &AlignOptions::c1, "Algorithm 3.1 step 3, 0.5..1")
         .def_readwrite("c2", &AlignOptions::c2, "Algorithm 3.1 step 4, 1..1.5")
         .def_readwrite("check", &AlignOptions::check, "CheckMode")
+        .def_readwrite("lenient", &AlignOptions::lenient, "bool: report what does not match rather than refuse")
         .def("__repr__", [](const AlignOptions& o) {
             return py::str("talkface.AlignOptions(sentence_cut={!r}, first_pause_start_s={!r}, "
-                           "first_pause_end_s={!r}, c1={!r}, c2={!r}, check={!r})")
-                .format(o.sentence_cut, o.first_pause_start_s, o.first_pause_end_s, o.c1, o.c2, o.check);
+                           "first_pause_end_s={!r}, c1={!r}, c2={!r}, check={!r}, lenient={!r})")
+                .format(o.sentence_cut, o.first_pause_start_s, o.first_pause_end_s, o.c1, o.c2, o.check, o.lenient);
         });
 
     m.attr("kLowAlignmentConfidence") = kLowAlignmentConfidence;

@@ -136,6 +136,45 @@ Example:
                 .format(f.text, f.first_syllable, f.syllable_count);
         });
 
+    py::class_<TextMismatch>(m, "TextMismatch", R"doc(
+A stretch where the speech does not say the transcript's text, found by lenient alignment
+(AlignOptions(lenient=True)): its time span, the syllables it stands for
+(timeline.syllables[first_syllable : first_syllable + syllable_count], spread over the stretch at
+its loudness peaks with confidence 0) and the text expected there. syllable_count is 0 where the
+speech has words the transcript lacks; start_s == end_s where the speech leaves the text out.
+
+Example:
+    >>> aligned = talkface.SpeechAligner(talkface.AlignOptions(lenient=True)).align_file("a.wav", timeline)
+    >>> [(m.start_s, m.end_s, m.expected_text) for m in aligned.mismatches]
+)doc")
+        .def(py::init([](double start_s, double end_s, std::size_t first_syllable, std::size_t syllable_count,
+                         std::string expected_text) {
+                 return TextMismatch{start_s, end_s, first_syllable, syllable_count, std::move(expected_text)};
+             }),
+             py::arg("start_s") = 0.0, py::arg("end_s") = 0.0, py::arg("first_syllable") = 0,
+             py::arg("syllable_count") = 0, py::arg("expected_text") = "", R"doc(
+Args:
+    start_s, end_s (float): the stretch of audio, seconds.
+    first_syllable (int): index into Timeline.syllables of the first syllable it stands for.
+    syllable_count (int): how many syllables it stands for (0: speech the transcript lacks).
+    expected_text (str): what the transcript says there, UTF-8.
+)doc")
+        .def_readwrite("start_s", &TextMismatch::start_s, "seconds")
+        .def_readwrite("end_s", &TextMismatch::end_s, "seconds")
+        .def_readwrite("first_syllable", &TextMismatch::first_syllable, "index of the first syllable it stands for")
+        .def_readwrite("syllable_count", &TextMismatch::syllable_count, "how many syllables it stands for")
+        .def_readwrite("expected_text", &TextMismatch::expected_text, "what the transcript says there, UTF-8")
+        .def("__eq__",
+             [](const TextMismatch& a, const TextMismatch& b) {
+                 return a.start_s == b.start_s && a.end_s == b.end_s && a.first_syllable == b.first_syllable &&
+                        a.syllable_count == b.syllable_count && a.expected_text == b.expected_text;
+             })
+        .def("__repr__", [](const TextMismatch& m) {
+            return py::str("talkface.TextMismatch(start_s={!r}, end_s={!r}, first_syllable={!r}, syllable_count={!r}, "
+                           "expected_text={!r})")
+                .format(m.start_s, m.end_s, m.first_syllable, m.syllable_count, m.expected_text);
+        });
+
     py::class_<Timeline>(m, "Timeline", R"doc(
 Sentences and syllables in transcript order, with what the reader skipped (warnings) and the length of
 the audio. The list attributes are copies: change one and assign it back
@@ -148,19 +187,21 @@ Example:
 )doc")
         .def(py::init([](std::vector<Sentence> sentences, std::vector<Syllable> syllables,
                          std::vector<std::string> warnings, double duration_s,
-                         std::vector<WrittenForm> written_forms) {
+                         std::vector<WrittenForm> written_forms, std::vector<TextMismatch> mismatches) {
                  return Timeline{std::move(sentences), std::move(syllables), std::move(warnings), duration_s,
-                                 std::move(written_forms)};
+                                 std::move(written_forms), std::move(mismatches)};
              }),
              py::arg("sentences") = std::vector<Sentence>{}, py::arg("syllables") = std::vector<Syllable>{},
              py::arg("warnings") = std::vector<std::string>{}, py::arg("duration_s") = 0.0,
-             py::arg("written_forms") = std::vector<WrittenForm>{}, R"doc(
+             py::arg("written_forms") = std::vector<WrittenForm>{},
+             py::arg("mismatches") = std::vector<TextMismatch>{}, R"doc(
 Args:
     sentences (list[Sentence]): in transcript order.
     syllables (list[Syllable]): in transcript order, each naming its sentence.
     warnings (list[str]): what the transcript reader skipped.
     duration_s (float): length of the audio, seconds.
     written_forms (list[WrittenForm]): the forms read by rule, in order, none overlapping.
+    mismatches (list[TextMismatch]): where the speech does not say the text (lenient alignment).
 
 Example:
     >>> talkface.Timeline([talkface.Sentence("好。", 0.2, 0.6)],
@@ -172,6 +213,8 @@ Example:
         .def_readwrite("duration_s", &Timeline::duration_s, "length of the audio, seconds (0 before alignment)")
         .def_readwrite("written_forms", &Timeline::written_forms,
                        "list[WrittenForm] (a copy): numbers, dates, letters, English words read by rule")
+        .def_readwrite("mismatches", &Timeline::mismatches,
+                       "list[TextMismatch] (a copy): where the speech does not say the text (lenient alignment)")
         .def("__repr__", [](const Timeline& t) {
             return py::str("<talkface.Timeline: {} sentences, {} syllables, {} warnings, duration_s={!r}>")
                 .format(t.sentences.size(), t.syllables.size(), t.warnings.size(), t.duration_s);

@@ -365,6 +365,22 @@ class Syllable:
     ) -> None: ...
     def __eq__(self, other: object) -> bool: ...
 
+class TextMismatch:
+    start_s: float
+    end_s: float
+    first_syllable: int
+    syllable_count: int
+    expected_text: str
+    def __init__(
+        self,
+        start_s: float = ...,
+        end_s: float = ...,
+        first_syllable: int = ...,
+        syllable_count: int = ...,
+        expected_text: str = ...,
+    ) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+
 class WrittenForm:
     text: str
     first_syllable: int
@@ -378,6 +394,7 @@ class Timeline:
     warnings: list[str]
     duration_s: float
     written_forms: list[WrittenForm]
+    mismatches: list[TextMismatch]
     def __init__(
         self,
         sentences: list[Sentence] = ...,
@@ -385,6 +402,7 @@ class Timeline:
         warnings: list[str] = ...,
         duration_s: float = 0.0,
         written_forms: list[WrittenForm] = ...,
+        mismatches: list[TextMismatch] = ...,
     ) -> None: ...
 
 def read_transcript(text: str, source_name: str = "<transcript>", read_pinyin: bool = True) -> Timeline: ...
@@ -427,6 +445,7 @@ class AlignOptions:
     c1: float
     c2: float
     check: CheckMode
+    lenient: bool
     def __init__(
         self,
         sentence_cut: SentenceCutMode = ...,
@@ -435,6 +454,7 @@ class AlignOptions:
         c1: float = 0.95,
         c2: float = 1.45,
         check: CheckMode = ...,
+        lenient: bool = ...,
     ) -> None: ...
 
 _Progress = Callable[[float, str], bool | None]
