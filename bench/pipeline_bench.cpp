@@ -1,7 +1,8 @@
 // The whole pipeline on a 3-minute speech (issue #6): transcript, alignment, simulated expressions,
 // animation, rendering, as a process of its own pinned to one core. Prints wall time, peak memory
 // and bytes per minute of animation (the SVG, without the audio) in each encoding, against the
-// targets in bench/README.md.
+// targets in bench/README.md; then the size of the page a reader downloads, the speech compressed
+// and embedded beside the keyframes animation, against issue #17's aim.
 //
 //   pipeline_bench CORPUS [--seconds S]    (CORPUS: what make_corpus wrote; S: 180 by default)
 //
@@ -35,6 +36,8 @@ namespace {
 // Targets of issue #6.
 constexpr double kMaxPipelineSeconds = 0.6;  // 3 minutes of speech: 300x real time
 constexpr double kMaxKeyframesKbPerMinute = 300.0;
+// Aim of issue #17: a page with its audio embedded.
+constexpr double kMaxPageKbPerMinute = 200.0;
 
 [[noreturn]] void usage(const std::string& why) {
     std::cerr << "pipeline_bench: " << why << "\nusage: pipeline_bench CORPUS [--seconds S]\n";
@@ -149,6 +152,25 @@ Run measure(const char* self, const Speech& speech, const std::string& encoding,
 
 const char* verdict(bool met) { return met ? "met" : "NOT met"; }
 
+struct PageSize {
+    std::size_t total = 0;
+    std::size_t audio = 0;  // the audio's data: URI
+};
+
+// The default page (keyframes, the speech compressed and embedded), built in this process: its
+// size, not its time, is measured.
+PageSize measure_page(const Speech& speech) {
+    const talkface::FaceModel face = talkface::FaceModel::default_face();
+    const talkface::Timeline timeline =
+        talkface::SpeechAligner().align_file(speech.audio_path, talkface::load_transcript(speech.transcript_path));
+    const talkface::ExpressionSimulator simulator(timeline, 1);
+    const talkface::Animation animation = talkface::animate(face, timeline, simulator);
+    const std::string page = talkface::build_web_page(talkface::SvgAnimator(face), animation, timeline, speech.audio_path);
+    const std::size_t audio_start = page.find("src=\"data:audio/");
+    if (audio_start == std::string::npos) throw std::runtime_error("the page has no embedded audio");
+    return {page.size(), page.find('"', audio_start + 5) - audio_start};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -191,6 +213,14 @@ int main(int argc, char** argv) {
                     wall_for_3_minutes, verdict(wall_for_3_minutes < kMaxPipelineSeconds));
         std::printf("target: keyframes < %.0f KB per minute: %.0f KB, %s\n", kMaxKeyframesKbPerMinute, keyframes_kb,
                     verdict(keyframes_kb < kMaxKeyframesKbPerMinute));
+        const PageSize page = measure_page(speech);
+        const double page_kb = static_cast<double>(page.total) / 1024.0 / minutes;
+        const double audio_kb = static_cast<double>(page.audio) / 1024.0 / minutes;
+        std::printf("\npage with the speech embedded (default options): %.0f KB per minute, of which the audio "
+                    "%.0f KB, the face and the rest %.0f KB\n",
+                    page_kb, audio_kb, page_kb - audio_kb);
+        std::printf("aim (issue #17): page < %.0f KB per minute: %.0f KB, %s\n", kMaxPageKbPerMinute, page_kb,
+                    verdict(page_kb < kMaxPageKbPerMinute));
         return 0;
     } catch (const std::exception& error) {
         std::cerr << "pipeline_bench: " << talkface::full_message(error) << "\n";

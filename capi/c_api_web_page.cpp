@@ -109,10 +109,17 @@ tf_status tf_web_page_options_set_encoding(tf_web_page_options* options, tf_anim
     });
 }
 
-tf_status tf_web_page_options_set_link_audio(tf_web_page_options* options, int link_audio, const char* url) {
+tf_status tf_web_page_options_set_audio(tf_web_page_options* options, tf_web_page_audio audio, int bitrate_bps,
+                                        const char* url) {
     return guard([&] {
         require_non_null(options, "options");
-        options->options.link_audio = link_audio != 0;
+        const int value = enum_value(audio);
+        if (value < TF_PAGE_AUDIO_COMPRESSED || value > TF_PAGE_AUDIO_LINK) {
+            throw InvalidArgument("audio", "expected TF_PAGE_AUDIO_COMPRESSED (0), TF_PAGE_AUDIO_ORIGINAL (1) or "
+                                           "TF_PAGE_AUDIO_LINK (2), got " + std::to_string(value));
+        }
+        options->options.audio = static_cast<talkface::WebPageAudio>(value);
+        options->options.audio_bitrate_bps = bitrate_bps;
         options->options.audio_url = url != nullptr ? url : "";
     });
 }

@@ -1207,7 +1207,7 @@ typedef enum tf_web_page_app {
 } tf_web_page_app;
 
 /* Options of a web page. Created by tf_web_page_options_create with the defaults (plain page,
- * key frames, audio embedded, an 800 x 450 stage), released by tf_web_page_options_destroy. */
+ * key frames, audio compressed and embedded, an 800 x 450 stage), released by tf_web_page_options_destroy. */
 typedef struct tf_web_page_options tf_web_page_options;
 
 TF_API tf_status tf_web_page_options_create(tf_web_page_options **out);
@@ -1222,9 +1222,19 @@ TF_API tf_status tf_web_page_options_set_title(tf_web_page_options *options, con
 TF_API tf_status tf_web_page_options_add_link(tf_web_page_options *options, const char *text, const char *url);
 /* Errors: TF_ERR_INVALID_ARGUMENT if options is NULL or the encoding is unknown. */
 TF_API tf_status tf_web_page_options_set_encoding(tf_web_page_options *options, tf_animation_encoding encoding);
-/* link_audio 0 embeds the audio in the page (the default); non-zero links `url` (relative to the
- * page; NULL: the audio file's name) and the audio must stay beside the page. */
-TF_API tf_status tf_web_page_options_set_link_audio(tf_web_page_options *options, int link_audio, const char *url);
+/* How a web page carries its audio; values equal talkface::WebPageAudio. */
+typedef enum tf_web_page_audio {
+    TF_PAGE_AUDIO_COMPRESSED = 0,  /* embedded as Opus in WebM, mono, for speech (the default) */
+    TF_PAGE_AUDIO_ORIGINAL = 1,    /* embedded as the audio file's own bytes */
+    TF_PAGE_AUDIO_LINK = 2         /* linked: the audio file must stay beside the page */
+} tf_web_page_audio;
+
+/* How the page carries its audio. bitrate_bps: TF_PAGE_AUDIO_COMPRESSED's Opus bit rate, 6000 to
+ * 128000 (0: 12000, wideband speech), checked when the page is built. url: TF_PAGE_AUDIO_LINK's
+ * link, relative to the page (NULL or "": the audio file's name).
+ * Errors: TF_ERR_INVALID_ARGUMENT if options is NULL or audio is not a tf_web_page_audio. */
+TF_API tf_status tf_web_page_options_set_audio(tf_web_page_options *options, tf_web_page_audio audio,
+                                               int bitrate_bps, const char *url);
 /* Announcer: the stage's size in CSS pixels, its colour, and a background image file (PNG, JPEG,
  * GIF, WebP or SVG, embedded; NULL for none). */
 TF_API tf_status tf_web_page_options_set_stage(tf_web_page_options *options, int width_px, int height_px,

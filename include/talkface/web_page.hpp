@@ -6,10 +6,11 @@
 //   page.app = talkface::WebPageApp::audiobook;
 //   page.title = "春曉";
 //   talkface::write_web_page("book.html", talkface::SvgAnimator(face), animation, timeline,
-//                            "speech.ogg", page);
+//                            "speech.wav", page);
 //
 // The page is one self-contained HTML file that works from a file:// URL with no network: the SVG,
-// the style and the script are inline, the audio is embedded as a data: URI (or linked). The
+// the style and the script are inline, the audio is embedded as a data: URI (compressed for speech,
+// or the file's own bytes) or linked. The
 // script pauses the SVG's own timeline and sets its time from audio.currentTime on every animation
 // frame, so play, pause, seek, playback rate and the end keep face and voice together. A URL
 // fragment "#t=SECONDS" seeks there once the audio is ready; "#t=SECONDS&pause" also stays paused.
@@ -46,6 +47,22 @@ TALKFACE_API const char* web_page_app_name(WebPageApp app);
 /// \throws talkface::InvalidArgument listing the valid names.
 TALKFACE_API WebPageApp web_page_app_from_name(std::string_view name);
 
+/// How the page carries its audio. The numeric values are stable within a major version.
+enum class WebPageAudio : int {
+    /// Embedded, encoded anew for speech: Opus in WebM, mono, WebPageOptions::audio_bitrate_bps
+    /// (12 kb/s by default, about 105 KB a minute in the page). Opus in WebM plays in Chromium,
+    /// Firefox and Safari 17.4 and later (iOS too); Opus in Ogg not in Safari before 18.4.
+    compressed = 0,
+    original = 1,  ///< embedded as the file's own bytes (.ogg .oga .opus .wav .flac .mp3 .m4a)
+    link = 2,      ///< linked as audio_url: the audio file must stay beside the page
+};
+
+/// "compressed", "original", "link".
+TALKFACE_API const char* web_page_audio_name(WebPageAudio audio);
+/// Parses a name as web_page_audio_name() writes it.
+/// \throws talkface::InvalidArgument listing the valid names.
+TALKFACE_API WebPageAudio web_page_audio_from_name(std::string_view name);
+
 /// A link of the audio book's page.
 struct WebLink {
     std::string text;  ///< what the reader sees
@@ -60,11 +77,13 @@ struct WebPageOptions {
     std::vector<WebLink> links;  ///< audio book: listed under the text
     SvgAnimationOptions animation;  ///< the encoding of the face's animation
 
-    /// False (the default): the audio is embedded in the page as a data: URI. True: the page
-    /// links to audio_url, and the audio file must stay beside the page.
-    bool link_audio = false;
-    /// The link written when link_audio is true, relative to the page (e.g. "speech.ogg"); empty:
-    /// the audio file's name. Percent-encoded as needed.
+    /// How the audio is carried: compressed and embedded (the default), its own bytes embedded, or linked.
+    WebPageAudio audio = WebPageAudio::compressed;
+    /// compressed: the Opus bit rate, bits per second, 6000 to 128000; 0: 12000, a clear voice
+    /// (wideband speech, as on a good phone call; music and noise suffer first).
+    int audio_bitrate_bps = 0;
+    /// The link written when audio is link, relative to the page (e.g. "speech.ogg"); empty: the
+    /// audio file's name. Percent-encoded as needed.
     std::string audio_url;
 
     /// Announcer: the stage's size, and what is behind the face: a colour, or an image file (PNG,
@@ -80,11 +99,13 @@ struct WebPageOptions {
     double face_d_px = 0.0;  ///< 0: as large as fits the stage's height
 };
 
-/// The page, as a UTF-8 HTML document. `audio_path` is read (and embedded unless
-/// options.link_audio); its type is told by its extension (.ogg .oga .opus .wav .flac .mp3 .m4a).
+/// The page, as a UTF-8 HTML document. `audio_path` is read: compressed, any audio file
+/// SpeechAligner::align_file reads; embedded as it is or linked, its type is told by its extension
+/// (.ogg .oga .opus .wav .flac .mp3 .m4a).
 /// `timeline` gives the sentences and their times (the audio book's text); `animation` was made
 /// from it with `animator`'s face.
 /// \throws talkface::FileError if the audio or the background image cannot be read;
+///         talkface::ParseError if compressed audio cannot be decoded;
 ///         talkface::InvalidArgument naming the option that is out of range, a link whose URL has a
 ///         refused scheme, or an audio file of unknown type; and as render_animation_svg().
 TALKFACE_API std::string build_web_page(const SvgAnimator& animator, const Animation& animation,

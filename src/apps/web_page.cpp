@@ -16,6 +16,7 @@
 #include "render/html_text.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/web_page.hpp"
+#include "video/audio_encoder.hpp"
 
 namespace talkface {
 inline namespace v0 {
@@ -110,6 +111,17 @@ constexpr const char* kScript = R"js((function () {
 })();
 )js";
 
+// Compressed speech: at 12 kb/s libopus codes a voice as wideband speech (its SILK layer, up to
+// 8 kHz, where speech is intelligible), 10.9 kb/s measured on the demo speech: 106 KB a minute in
+// base64, which leaves room for the face in 200 KB. At 16 kb/s it moves to its hybrid
+// super-wideband mode (17.5 kb/s measured, 170 KB a minute), adding sibilance above 8 kHz; RFC 7587
+// (section 3.1.1) gives 8-12 kb/s for narrowband and 16-20 for wideband speech in calls, whose
+// 20 ms packets cost more than a file's 60 ms ones. 6 kb/s is libopus's floor; 128 kb/s is
+// transparent even for stereo music.
+constexpr int kSpeechBitrateBps = 12000;
+constexpr int kLowestBitrateBps = 6000;
+constexpr int kHighestBitrateBps = 128000;
+
 constexpr const char* kCommonStyle = "*{box-sizing:border-box}";
 
 void validate(const WebPageOptions& options) {
@@ -130,6 +142,15 @@ void validate(const WebPageOptions& options) {
         (!std::isfinite(options.face_origin_px->x) || !std::isfinite(options.face_origin_px->y))) {
         throw InvalidArgument("face_origin_px", "expected finite coordinates");
     }
+    const int audio = static_cast<int>(options.audio);
+    if (audio < 0 || audio > static_cast<int>(WebPageAudio::link)) {
+        throw InvalidArgument("audio", "expected compressed, original or link, found " + std::to_string(audio));
+    }
+    if (options.audio_bitrate_bps != 0 &&
+        (options.audio_bitrate_bps < kLowestBitrateBps || options.audio_bitrate_bps > kHighestBitrateBps)) {
+        throw InvalidArgument("audio_bitrate_bps", "expected 0 (12000) or 6000 to 128000 bits a second, found " +
+                                                       std::to_string(options.audio_bitrate_bps));
+    }
     for (std::size_t k = 0; k < options.links.size(); ++k) {
         detail::require_safe_link(options.links[k].url, "links[" + std::to_string(k) + "].url");
     }
@@ -141,19 +162,28 @@ std::string file_name_of(const std::string& path) {
 }
 
 std::string audio_element(const std::string& audio_path, const WebPageOptions& options) {
-    const std::string mime = detail::audio_mime_type(audio_path);
-    if (mime.empty()) {
-        throw InvalidArgument("audio_path", "expected a .ogg, .oga, .opus, .wav, .flac, .mp3 or .m4a file, found \"" +
-                                                audio_path + "\"");
-    }
     std::string source;
-    if (options.link_audio) {
-        if (!std::ifstream(audio_path, std::ios::binary)) throw FileError(audio_path, "cannot be opened");
-        const std::string url = options.audio_url.empty() ? file_name_of(audio_path) : options.audio_url;
-        detail::require_safe_link(url, "audio_url");
-        source = detail::percent_encode_url(url);
+    if (options.audio == WebPageAudio::compressed) {
+        detail::AudioEncodeOptions encoding;
+        encoding.container = detail::AudioContainer::webm_opus;
+        encoding.bitrate_bps = options.audio_bitrate_bps > 0 ? options.audio_bitrate_bps : kSpeechBitrateBps;
+        encoding.low_rate_speech = true;
+        source = detail::data_uri("audio/webm", detail::encode_audio_file(audio_path, encoding));
     } else {
-        source = detail::data_uri(mime, detail::read_file(audio_path));
+        const std::string mime = detail::audio_mime_type(audio_path);
+        if (mime.empty()) {
+            throw InvalidArgument("audio_path", "expected a .ogg, .oga, .opus, .wav, .flac, .mp3 or .m4a file to " +
+                                                    std::string(options.audio == WebPageAudio::link ? "link" : "embed") +
+                                                    " as it is, found \"" + audio_path + "\"");
+        }
+        if (options.audio == WebPageAudio::link) {
+            if (!std::ifstream(audio_path, std::ios::binary)) throw FileError(audio_path, "cannot be opened");
+            const std::string url = options.audio_url.empty() ? file_name_of(audio_path) : options.audio_url;
+            detail::require_safe_link(url, "audio_url");
+            source = detail::percent_encode_url(url);
+        } else {
+            source = detail::data_uri(mime, detail::read_file(audio_path));
+        }
     }
     return "<audio id=\"tf-audio\" controls preload=\"auto\" src=\"" + escape_html(source) + "\"></audio>\n";
 }
@@ -179,6 +209,22 @@ WebPageApp web_page_app_from_name(std::string_view name) {
     if (name == "announcer") return WebPageApp::announcer;
     if (name == "audiobook") return WebPageApp::audiobook;
     throw InvalidArgument("app", "expected plain, announcer or audiobook, found \"" + std::string(name) + "\"");
+}
+
+const char* web_page_audio_name(WebPageAudio audio) {
+    switch (audio) {
+        case WebPageAudio::compressed: return "compressed";
+        case WebPageAudio::original: return "original";
+        case WebPageAudio::link: return "link";
+    }
+    return "unknown";
+}
+
+WebPageAudio web_page_audio_from_name(std::string_view name) {
+    if (name == "compressed") return WebPageAudio::compressed;
+    if (name == "original") return WebPageAudio::original;
+    if (name == "link") return WebPageAudio::link;
+    throw InvalidArgument("audio", "expected compressed, original or link, found \"" + std::string(name) + "\"");
 }
 
 std::string build_web_page(const SvgAnimator& animator, const Animation& animation, const Timeline& timeline,

@@ -54,7 +54,8 @@ talkface::WebPageOptions page_options(const AnimateOptions& options) {
     page.app = talkface::web_page_app_from_name(options.app);
     page.title = options.title;
     page.animation.encoding = talkface::animation_encoding_from_name(options.encoding);
-    page.link_audio = options.link_audio;
+    page.audio = talkface::web_page_audio_from_name(options.audio);
+    page.audio_bitrate_bps = options.audio_bitrate;
     for (const std::string& link : options.links) {
         const std::size_t equals = link.find('=');
         // "TEXT=URL"; an absolute URL may hold '=' in its query, after its "://".
@@ -84,7 +85,7 @@ talkface::WebPageOptions page_options(const AnimateOptions& options) {
 
 void run_animate(const AnimateOptions& options, const std::string& audio_path, const std::string& transcript_path) {
     std::string linked_url;
-    if (options.link_audio) {
+    if (options.audio == "link") {
         // The page links the audio where it lies, relative to the page's folder.
         const std::filesystem::path page_folder =
             std::filesystem::absolute(options.output_path).parent_path();
@@ -146,8 +147,19 @@ void add_page_options(CLI::App& command, AnimateOptions& options) {
                     "keyframes: the face animated between key frames (small); frames: one group per frame")
         ->check(CLI::IsMember({"keyframes", "frames"}))
         ->capture_default_str();
-    command.add_flag("--link-audio", options.link_audio,
-                     "Link the audio file from the page instead of embedding it (keep it beside the page)");
+    command
+        .add_option("--audio-embed", options.audio,
+                    "compressed: the speech encoded anew (Opus in WebM, mono, plays in Chromium, Firefox and "
+                    "Safari 17.4+) and embedded; original: the audio file's own bytes embedded; link: the page "
+                    "links the audio file (keep it beside the page)")
+        ->check(CLI::IsMember({"compressed", "original", "link"}))
+        ->capture_default_str();
+    command.add_flag_callback(
+        "--link-audio", [&options] { options.audio = "link"; }, "The same as --audio-embed link");
+    command
+        .add_option("--audio-bitrate", options.audio_bitrate,
+                    "compressed: the Opus bit rate, bits a second (default 12000: wideband speech)")
+        ->check(CLI::Range(6000, 128000));
     command
         .add_option("--app", options.app,
                     "plain; announcer: the face on a stage with a background; audiobook: title, text with the "
@@ -196,7 +208,7 @@ TalkingFace animate_talking_face(const AnimateOptions& options, const std::strin
 void make_talking_face(const AnimateOptions& options, const std::string& audio_path,
                        const talkface::Timeline& transcript, const std::string& linked_audio_url) {
     const bool is_svg = is_svg_output(options.output_path);
-    if (is_svg && (options.app != "plain" || options.link_audio)) {
+    if (is_svg && (options.app != "plain" || options.audio == "link")) {
         throw CLI::ValidationError("--output", "an .svg output is the bare animation: --app and --link-audio need .html");
     }
     // Read before the alignment, the slow part: a bad option fails at once.
@@ -219,7 +231,9 @@ void make_talking_face(const AnimateOptions& options, const std::string& audio_p
     if (!options.quiet) {
         const std::string what = is_svg ? "SVG animation (" + options.encoding + ")"
                                         : options.app + " web page, audio " +
-                                              (options.link_audio ? "linked" : "embedded");
+                                              (options.audio == "link"       ? "linked"
+                                               : options.audio == "original" ? "embedded as it is"
+                                                                             : "compressed and embedded");
         report_written(std::cerr, options.output_path, what, animation.duration_s);
     }
     for (const std::string& warning : timeline.warnings) std::cerr << "talkface: warning: " << warning << '\n';

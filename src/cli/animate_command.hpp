@@ -38,7 +38,8 @@ struct AnimateOptions {
     std::uint64_t seed = 0;
     StyleOptions expression;
     std::string encoding = "keyframes";
-    bool link_audio = false;
+    std::string audio = "compressed";  // --audio-embed: compressed, original or link (--link-audio)
+    int audio_bitrate = 0;             // --audio-bitrate, bits a second (0: the page's default)
     std::string app = "plain";
     std::string title;
     std::vector<std::string> links;  // "TEXT=URL" or "URL"

@@ -28,7 +28,7 @@ AudioCodec codec_of(AudioContainer container) {
 void encode_into(MuxerOutput& output, AudioSource& audio, const AudioEncodeOptions& options,
                  const std::string& parameter) {
     AudioStreamEncoder stream(output, codec_of(options.container), audio.sample_rate_hz(), options.bitrate_bps,
-                              parameter);
+                              options.low_rate_speech, parameter);
     AVDictionary* muxer_options = nullptr;
     if (output.is_file() && options.container == AudioContainer::mp4_aac) {
         av_dict_set(&muxer_options, "movflags", "+faststart", 0);

@@ -1,11 +1,14 @@
 // Speech as a compressed audio file, in memory or on disk: Opus in Ogg or WebM, AAC in MP4. The
-// web pages embed it (apps/), so a page carries a few hundred kilobytes a minute, not a WAV's
-// megabytes. What plays where (Chromium 156 headless: tests/video/test_browser_audio.py plays
+// web pages embed it (apps/: Opus in WebM at 12 kb/s, about 105 KB a minute in base64), not a
+// WAV's megabytes. What plays where (Chromium 156 headless: tests/video/test_browser_audio.py plays
 // each; the rest from MDN's "Web audio codec guide" and caniuse's issues #6805 and #6997):
-//   Opus in Ogg   Chromium, Firefox; not Safari (its <audio> does not read the Ogg container)
-//   Opus in WebM  Chromium, Firefox; Safari from 17 (Apple's release notes)
+//   Opus in Ogg   Chromium, Firefox; Safari only from 18.4 (macOS 15.4, iOS 18.4: caniuse pull
+//                 request #7284, MDN pull request #39592)
+//   Opus in WebM  Chromium, Firefox; Safari from 17 on macOS, 17.4 on iOS (Apple's release notes,
+//                 caniuse pull request #7074; 17.4 could not play it from a blob, fixed in 17.5)
 //   AAC in MP4    Chromium, Firefox (through the system's decoder), Safari, every phone
-// so a page that must play everywhere offers AAC in MP4, or Opus in WebM with an MP4 fallback.
+// so the pages embed Opus in WebM: it plays in all three (Safari 17.4+), and FFmpeg's AAC-LC needs
+// several times Opus's bit rate for a voice (no HE-AAC encoder in Debian's FFmpeg).
 #ifndef TALKFACE_VIDEO_AUDIO_ENCODER_HPP
 #define TALKFACE_VIDEO_AUDIO_ENCODER_HPP
 
@@ -27,6 +30,9 @@ struct AudioEncodeOptions {
     AudioContainer container = AudioContainer::ogg_opus;
     // Bits per second; 0: 48 kb/s for Opus, 96 kb/s for AAC (mono speech).
     int bitrate_bps = 0;
+    // Opus only: a voice at a low bit rate (the pages' 12 kb/s), coded for intelligibility in
+    // long packets, whose container overhead would otherwise be a quarter of the stream.
+    bool low_rate_speech = false;
 };
 
 // The MIME type with its codecs parameter, for a data: URI or a <source type>: "audio/ogg; codecs=opus",

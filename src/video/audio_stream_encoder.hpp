@@ -30,9 +30,10 @@ struct AudioFifoDeleter {
 class AudioStreamEncoder {
 public:
     // Adds the stream to `output` (before its header is written). `bitrate_bps` 0 picks the
-    // codec's default for speech. `parameter` names the output in errors (an encoder missing).
+    // codec's default for speech. `low_rate_speech`: Opus tuned for a voice at a low bit rate
+    // (audio_encoder.hpp). `parameter` names the output in errors (an encoder missing).
     AudioStreamEncoder(MuxerOutput& output, AudioCodec codec, int input_rate_hz, int bitrate_bps,
-                       const std::string& parameter);
+                       bool low_rate_speech, const std::string& parameter);
 
     // Encodes `count` mono samples at the input rate and hands the packets to the muxer.
     void encode(const float* mono, std::size_t count);

@@ -78,7 +78,7 @@ struct VideoWriter::Impl {
         if (!has_sound(format)) return;
         audio_source = std::move(source);
         const detail::AudioCodec codec = format == VideoFormat::mp4 ? detail::AudioCodec::aac : detail::AudioCodec::opus;
-        audio.emplace(*muxer, codec, audio_source->sample_rate_hz(), 0, path);
+        audio.emplace(*muxer, codec, audio_source->sample_rate_hz(), 0, false, path);
     }
 
     void start() {

@@ -2,7 +2,8 @@
 through the DevTools protocol (browser.py): the caption shows the sentence being spoken and never
 covers the mouth; deep into a long book the spoken sentence is highlighted in view; on a phone's
 390x844 screen the face and the player come first, the text below; the keys play, pause and move a
-sentence, with a visible focus.
+sentence, with a visible focus; the speech compressed into the page plays, lasts as long as the
+recording, and face and voice stay together through seeks and playing.
 
 The demo pages are made by `talkface demo`; the long book by the Python module, from a transcript
 of 120 sentences in 20 paragraphs timed by hand, over a silent recording linked beside the page.
@@ -96,8 +97,8 @@ def long_book(tmp_path_factory):
         out.writeframes(b"\x80" * int(8000 * timeline.duration_s))
     face = talkface.FaceModel.default()
     animation = talkface.animate(face, timeline, talkface.ExpressionSimulator(timeline, 3))
-    options = talkface.WebPageOptions(app=talkface.WebPageApp.audiobook, title="春天的故事", link_audio=True,
-                                      audio_url="book.wav")
+    options = talkface.WebPageOptions(app=talkface.WebPageApp.audiobook, title="春天的故事",
+                                      audio=talkface.WebPageAudio.link, audio_url="book.wav")
     page = folder / "book.html"
     talkface.write_web_page(page, talkface.SvgAnimator(face), animation, timeline, audio, options)
     return page, timeline
@@ -218,3 +219,62 @@ def test_keys_play_pause_and_move_a_sentence_with_a_visible_focus(long_book):
         browser.press(" ")
         assert browser.evaluate("document.getElementById('tf-audio').paused")
         assert browser.evaluate("document.getElementById('tf-audio').currentTime") > timeline.sentences[1].start_s
+
+
+@pytest.fixture(scope="module")
+def compressed_page(tmp_path_factory):
+    page = tmp_path_factory.mktemp("compressed") / "demo.html"
+    subprocess.run([CLI, "demo", "-q", "-o", str(page)], check=True, timeout=120)
+    return page
+
+
+def test_the_compressed_speech_plays_as_long_as_the_recording_with_the_face_on_its_clock(compressed_page,
+                                                                                        alignment):
+    html = compressed_page.read_text()
+    assert 'src="data:audio/webm;base64,' in html
+    fps = 25.0  # the demo's frame rate (LipSyncOptions)
+    with Browser(640, 760) as browser:
+        browser.open(f"file://{compressed_page}#t=0&pause")
+        state = browser.evaluate("""(function () {
+            var audio = document.getElementById('tf-audio');
+            return [audio.error === null, audio.duration, audio.canPlayType('audio/webm; codecs=opus')];
+          })()""")
+        assert state[0] and state[2] == "probably"
+        assert state[1] == pytest.approx(alignment["duration"], abs=1 / fps)
+        # Seeks anywhere, forwards and back: the face's clock is the audio's.
+        for time_s in [alignment["duration"] * 0.8, 1.234, alignment["duration"] - 0.05, 0.0, 5.5]:
+            times = browser.evaluate("""new Promise(function (done) {
+                var audio = document.getElementById('tf-audio');
+                audio.addEventListener('seeked', function () {
+                  requestAnimationFrame(function () {
+                    done([audio.currentTime, document.querySelector('svg.tf-animation').getCurrentTime()]);
+                  });
+                }, { once: true });
+                audio.currentTime = %f;
+              })""" % time_s)
+            assert times[0] == pytest.approx(time_s, abs=0.002)
+            assert times[1] == pytest.approx(times[0], abs=0.001)
+        # Playing: the audio's clock moves, and at every animation frame the face shows the time the
+        # page last read from it (data-tf-time). The audio's own clock reads ahead by the time since
+        # then, a frame or two; on a loaded machine some frames are long, hence the median.
+        played, samples = browser.evaluate("""new Promise(function (done) {
+            var audio = document.getElementById('tf-audio');
+            var svg = document.querySelector('svg.tf-animation');
+            var samples = [], start = audio.currentTime, last = null;
+            audio.play();
+            (function sample(now) {
+              if (last !== null && audio.currentTime > start) {
+                samples.push([audio.currentTime - svg.getCurrentTime(), (now - last) / 1000,
+                              svg.getCurrentTime() - parseFloat(document.body.getAttribute('data-tf-time'))]);
+              }
+              last = now;
+              if (audio.currentTime - start > 1.0) { audio.pause(); done([audio.currentTime - start, samples]); return; }
+              requestAnimationFrame(sample);
+            })(performance.now());
+          })""")
+        assert played > 1.0
+        assert len(samples) >= 10
+        assert all(abs(from_shown) < 0.001 for _, _, from_shown in samples)
+        lags = sorted(lag for lag, _, _ in samples)
+        assert lags[0] >= -0.002
+        assert lags[len(lags) // 2] < 1 / fps, lags

@@ -60,14 +60,26 @@ static int test_web_page(const tf_face_model *face, const tf_animation *animatio
     CHECK(html != NULL && strlen(html) == length);
     CHECK(html != NULL && strstr(html, "<img") == NULL);
     CHECK(html != NULL && strstr(html, "&lt;/script&gt;&lt;img src=x onerror=alert(1)&gt;&quot;&#39;&amp;") != NULL);
+    CHECK(html != NULL && strstr(html, "data:audio/webm;base64,") != NULL);
+    tf_free(html);
+    CHECK_OK(tf_web_page_options_set_audio(options, TF_PAGE_AUDIO_ORIGINAL, 0, NULL));
+    html = NULL;
+    CHECK_OK(tf_build_web_page(face, NULL, animation, timeline, kSpeech, options, NULL, NULL, &html, NULL));
     CHECK(html != NULL && strstr(html, "data:audio/ogg;base64,") != NULL);
     tf_free(html);
+    CHECK_OK(tf_web_page_options_set_audio(options, TF_PAGE_AUDIO_COMPRESSED, 500, NULL));
+    html = NULL;
+    CHECK_FAILS_WITH(tf_build_web_page(face, NULL, animation, timeline, kSpeech, options, NULL, NULL, &html, NULL),
+                     TF_ERR_INVALID_ARGUMENT, "audio_bitrate_bps");
+    CHECK(html == NULL);
+    CHECK_FAILS_WITH(tf_web_page_options_set_audio(options, (tf_web_page_audio)3, 0, NULL), TF_ERR_INVALID_ARGUMENT,
+                     "TF_PAGE_AUDIO_LINK");
 
     CHECK_OK(tf_web_page_options_set_app(options, TF_PAGE_ANNOUNCER));
     CHECK_OK(tf_web_page_options_set_stage(options, 800, 450, stage, NULL));
     CHECK_OK(tf_web_page_options_set_face_placement(options, origin, 60.0));
     CHECK_OK(tf_web_page_options_set_encoding(options, TF_ENCODING_FRAMES));
-    CHECK_OK(tf_web_page_options_set_link_audio(options, 1, "speech.ogg"));
+    CHECK_OK(tf_web_page_options_set_audio(options, TF_PAGE_AUDIO_LINK, 0, "speech.ogg"));
     html = NULL;
     CHECK_OK(tf_build_web_page(face, NULL, animation, timeline, kSpeech, options, NULL, NULL, &html, NULL));
     CHECK(html != NULL && strstr(html, "src=\"speech.ogg\"") != NULL);

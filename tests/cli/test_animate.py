@@ -20,11 +20,11 @@ def test_demo_makes_a_self_contained_page(tmp_path):
     assert result.returncode == 0, result.stderr
     html = page.read_text(encoding="utf-8")
     assert html.startswith("<!DOCTYPE html>")
-    assert "data:audio/ogg;base64," in html
+    assert "data:audio/webm;base64," in html
     assert "<animate " in html
     assert "大家好" in html
     # No bar when stderr is not a terminal; one line saying what was written, how long and how large.
-    assert re.fullmatch(r"talkface: wrote \S+demo\.html: plain web page, audio embedded, \d+\.\d\d s, "
+    assert re.fullmatch(r"talkface: wrote \S+demo\.html: plain web page, audio compressed and embedded, \d+\.\d\d s, "
                         r"\d+\.\d [kM]B\n", result.stderr), result.stderr
     number, unit = result.stderr.split(", ")[-1].split()
     scale = {"kB": 1e3, "MB": 1e6}[unit]
@@ -50,6 +50,16 @@ def test_demo_links_its_audio_beside_the_page(tmp_path):
     assert f"talkface: wrote {page}: plain web page, audio linked, " in result.stderr
     assert 'src="linked.ogg"' in page.read_text(encoding="utf-8")
     assert (tmp_path / "linked.ogg").read_bytes() == (SPEECH / "demo.ogg").read_bytes()
+
+
+def test_animate_embeds_the_audio_as_it_is_when_asked(tmp_path):
+    page = tmp_path / "original.html"
+    result = run("animate", SPEECH / "demo.ogg", SPEECH / "demo.txt", "--audio-embed", "original", "-o", page)
+    assert result.returncode == 0, result.stderr
+    assert "audio embedded as it is" in result.stderr
+    assert "data:audio/ogg;base64," in page.read_text(encoding="utf-8")
+    refused = run("animate", SPEECH / "demo.ogg", SPEECH / "demo.txt", "--audio-bitrate", "1000", "-o", page)
+    assert refused.returncode == 2 and "--audio-bitrate" in refused.stderr
 
 
 def test_animate_writes_the_bare_animation_as_svg(tmp_path):

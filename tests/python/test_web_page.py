@@ -1,3 +1,4 @@
+import base64
 import html as html_module
 import pathlib
 import xml.dom.minidom
@@ -60,11 +61,31 @@ def test_audiobook_page_escapes_every_caller_text(face, animation, timeline):
     assert "<img" not in html
     assert html.count("</script>") == 1
     assert html_escaped(HOSTILE) in html
-    assert "data:audio/ogg;base64," in html
+    assert "data:audio/webm;base64," in html
+
+
+def test_the_audio_is_embedded_compressed_or_as_it_is(face, animation, timeline):
+    def embedded_bytes(options):
+        html = talkface.build_web_page(talkface.SvgAnimator(face), animation, timeline, SPEECH, options)
+        src = html.split('<audio id="tf-audio" controls preload="auto" src="')[1].split('"')[0]
+        mime, data = src.split(";base64,")
+        return mime, base64.b64decode(data)
+
+    mime, compressed = embedded_bytes(talkface.WebPageOptions())
+    assert mime == "data:audio/webm" and compressed.startswith(b"\x1a\x45\xdf\xa3")  # an EBML header
+    assert b"A_OPUS" in compressed
+    mime, richer = embedded_bytes(talkface.WebPageOptions(audio_bitrate_bps=48000))
+    assert len(richer) > 2 * len(compressed)
+    mime, original = embedded_bytes(talkface.WebPageOptions(audio=talkface.WebPageAudio.original))
+    assert mime == "data:audio/ogg" and original == SPEECH.read_bytes()
+    with pytest.raises(talkface.InvalidArgument, match="audio_bitrate_bps"):
+        talkface.build_web_page(talkface.SvgAnimator(face), animation, timeline, SPEECH,
+                                talkface.WebPageOptions(audio_bitrate_bps=200000))
 
 
 def test_announcer_page_links_the_audio_when_asked(face, animation, timeline):
-    options = talkface.WebPageOptions(app=talkface.WebPageApp.announcer, link_audio=True, audio_url="my speech.ogg",
+    options = talkface.WebPageOptions(app=talkface.WebPageApp.announcer, audio=talkface.WebPageAudio.link,
+                                      audio_url="my speech.ogg",
                                       face_origin_px=(600.0, 330.0), face_d_px=60.0, stage_colour="#203040")
     html = talkface.build_web_page(talkface.SvgAnimator(face), animation, timeline, SPEECH, options)
     assert 'src="my%20speech.ogg"' in html

@@ -1,4 +1,4 @@
-// WebPageApp, WebLink, WebPageOptions, build_web_page and write_web_page in Python;
+// WebPageApp, WebPageAudio, WebLink, WebPageOptions, build_web_page and write_web_page in Python;
 // building a page runs without the GIL.
 #include "bind.hpp"
 
@@ -13,6 +13,15 @@ links, the face beside them).
         .value("plain", WebPageApp::plain)
         .value("announcer", WebPageApp::announcer)
         .value("audiobook", WebPageApp::audiobook);
+
+    py::enum_<WebPageAudio>(m, "WebPageAudio", R"doc(
+How a page carries its audio: compressed (encoded anew as Opus in WebM, mono, for speech, and
+embedded: plays in Chromium, Firefox and Safari 17.4+), original (the audio file's own bytes
+embedded) or link (the page links audio_url; keep the file beside the page).
+)doc")
+        .value("compressed", WebPageAudio::compressed)
+        .value("original", WebPageAudio::original)
+        .value("link", WebPageAudio::link);
 
     py::class_<WebLink>(m, "WebLink", R"doc(
 A link of the audio book's page: the text shown and an http:, https:, mailto: or relative URL.
@@ -37,8 +46,9 @@ Args:
     title (str): the page's title; "" takes the first sentence.
     links (list[WebLink]): audio book links.
     animation (SvgAnimationOptions): the face's encoding.
-    link_audio (bool): link audio_url instead of embedding the audio.
-    audio_url (str): the link, relative to the page ("" takes the audio file's name).
+    audio (WebPageAudio): compressed (the default), original or link.
+    audio_bitrate_bps (int): compressed: the Opus bit rate, 6000 to 128000; 0 takes 12000.
+    audio_url (str): link: the link, relative to the page ("" takes the audio file's name).
     stage_width_px, stage_height_px (int), stage_colour (str), background_image_path (str): the
         announcer's stage.
     face_origin_px ((x, y) | None), face_d_px (float): where the announcer's neck stands and its eye
@@ -48,7 +58,7 @@ Example:
     >>> options = talkface.WebPageOptions(app=talkface.WebPageApp.audiobook, title="春曉")
 )doc")
         .def(py::init([](WebPageApp app, std::string title, std::vector<WebLink> links, SvgAnimationOptions animation,
-                         bool link_audio, std::string audio_url, int stage_width_px, int stage_height_px,
+                         WebPageAudio audio, int audio_bitrate_bps, std::string audio_url, int stage_width_px, int stage_height_px,
                          Rgb stage_colour, std::string background_image_path, std::optional<Point2> face_origin_px,
                          double face_d_px) {
                  WebPageOptions options;
@@ -56,7 +66,8 @@ Example:
                  options.title = std::move(title);
                  options.links = std::move(links);
                  options.animation = animation;
-                 options.link_audio = link_audio;
+                 options.audio = audio;
+                 options.audio_bitrate_bps = audio_bitrate_bps;
                  options.audio_url = std::move(audio_url);
                  options.stage_width_px = stage_width_px;
                  options.stage_height_px = stage_height_px;
@@ -67,8 +78,8 @@ Example:
                  return options;
              }),
              py::arg("app") = WebPageApp::plain, py::arg("title") = "", py::arg("links") = std::vector<WebLink>{},
-             py::arg("animation") = SvgAnimationOptions{}, py::arg("link_audio") = false,
-             py::arg("audio_url") = "", py::arg("stage_width_px") = WebPageOptions{}.stage_width_px,
+             py::arg("animation") = SvgAnimationOptions{}, py::arg("audio") = WebPageAudio::compressed,
+             py::arg("audio_bitrate_bps") = 0, py::arg("audio_url") = "", py::arg("stage_width_px") = WebPageOptions{}.stage_width_px,
              py::arg("stage_height_px") = WebPageOptions{}.stage_height_px,
              py::arg("stage_colour") = WebPageOptions{}.stage_colour, py::arg("background_image_path") = "",
              py::arg("face_origin_px") = py::none(), py::arg("face_d_px") = 0.0)
@@ -76,7 +87,8 @@ Example:
         .def_readwrite("title", &WebPageOptions::title)
         .def_readwrite("links", &WebPageOptions::links)
         .def_readwrite("animation", &WebPageOptions::animation)
-        .def_readwrite("link_audio", &WebPageOptions::link_audio)
+        .def_readwrite("audio", &WebPageOptions::audio)
+        .def_readwrite("audio_bitrate_bps", &WebPageOptions::audio_bitrate_bps)
         .def_readwrite("audio_url", &WebPageOptions::audio_url)
         .def_readwrite("stage_width_px", &WebPageOptions::stage_width_px)
         .def_readwrite("stage_height_px", &WebPageOptions::stage_height_px)

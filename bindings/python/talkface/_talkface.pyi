@@ -305,6 +305,11 @@ class WebPageApp(enum.Enum):
     announcer = 1
     audiobook = 2
 
+class WebPageAudio(enum.Enum):
+    compressed = 0
+    original = 1
+    link = 2
+
 class WebLink:
     text: str
     url: str
@@ -315,7 +320,8 @@ class WebPageOptions:
     title: str
     links: list[WebLink]
     animation: SvgAnimationOptions
-    link_audio: bool
+    audio: WebPageAudio
+    audio_bitrate_bps: int
     audio_url: str
     stage_width_px: int
     stage_height_px: int
@@ -324,7 +330,8 @@ class WebPageOptions:
     face_origin_px: tuple[float, float] | None
     face_d_px: float
     def __init__(self, app: WebPageApp = ..., title: str = "", links: list[WebLink] = ...,
-                 animation: SvgAnimationOptions = ..., link_audio: bool = False, audio_url: str = "",
+                 animation: SvgAnimationOptions = ..., audio: WebPageAudio = ...,
+                 audio_bitrate_bps: int = 0, audio_url: str = "",
                  stage_width_px: int = 800, stage_height_px: int = 450, stage_colour: str = "#1d3b5c",
                  background_image_path: str = "", face_origin_px: tuple[float, float] | None = None,
                  face_d_px: float = 0.0) -> None: ...
