@@ -113,7 +113,8 @@ SentenceChain lenient_chain(const SentenceChain& chain) {
 }
 
 void place_lenient(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores,
-                   const FeatureTrack& track, const LoudnessProfile& loudness, Timeline& result) {
+                   const FeatureTrack& track, const LoudnessProfile& loudness, Timeline& result,
+                   std::vector<double>& evidence) {
     const std::size_t count = chain.syllables.size();
     std::vector<std::size_t> states_per_syllable(count, 0), states_on_path(count, 0);
     for (const PhoneState& state : chain.states)
@@ -129,7 +130,7 @@ void place_lenient(const SentenceChain& chain, const std::vector<StateSegment>& 
         if (is_syllable_state(state)) ++states_on_path[state.syllable];
         text_path.push_back(segment);
     }
-    place_syllables(chain, text_path, scores, track, result);
+    place_syllables(chain, text_path, scores, track, result, evidence);
     for (std::size_t i = 0; i < count; ++i) {
         if (states_on_path[i] == states_per_syllable[i]) continue;
         Marked syllable{2 * i + 1};
@@ -189,6 +190,8 @@ void place_lenient(const SentenceChain& chain, const std::vector<StateSegment>& 
                 syllable.end_s = std::min(track.duration_s, static_cast<double>(bounds[k + 1]) * kFrameStepS);
                 syllable.final_start_s = syllable.start_s + 0.3 * (syllable.end_s - syllable.start_s);
                 syllable.confidence = 0.0;
+                // Not measured: set_confidences leaves it at 0.
+                evidence[global + k] = std::numeric_limits<double>::quiet_NaN();
             }
         } else {
             mismatch.first_syllable = after_place / 2 < count ? chain.syllable_indices[after_place / 2]

@@ -19,11 +19,13 @@ namespace talkface::detail {
 // optional generic-speech state after the leading silence and after every syllable.
 SentenceChain lenient_chain(const SentenceChain& chain);
 
-// Places the syllables of a lenient chain's `path` in `result` (as place_syllables does), and for
-// each stretch the path fits with generic speech or skips: a TextMismatch in result.mismatches and
-// a warning, its syllables spread over the stretch at its loudness peaks with confidence 0.
+// Places the syllables of a lenient chain's `path` in `result` with their `evidence` (as
+// place_syllables does), and for each stretch the path fits with generic speech or skips: a
+// TextMismatch in result.mismatches and a warning, its syllables spread over the stretch at its
+// loudness dips with confidence 0 (evidence NaN: set_confidences leaves them so).
 void place_lenient(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores,
-                   const FeatureTrack& track, const LoudnessProfile& loudness, Timeline& result);
+                   const FeatureTrack& track, const LoudnessProfile& loudness, Timeline& result,
+                   std::vector<double>& evidence);
 
 }  // namespace talkface::detail
 

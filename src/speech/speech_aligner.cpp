@@ -233,7 +233,7 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
         if (is_lenient) {
             const SentenceChain chain = lenient_chain(chains[w]);
             const auto path = align_chain(chain, scores, workspace, scores.frame_count, transcript);
-            place_lenient(chain, path, scores, track, loudness, result);
+            place_lenient(chain, path, scores, track, loudness, result, evidence);
             report_pass(progress, kReestimationRounds, w, chains.size());
             continue;
         }
