@@ -51,6 +51,20 @@ std::vector<WrittenSentence> read_sentences(const std::string& path) {
     return sentences;
 }
 
+// The said text's Latin words are toneless pinyin; among Chinese characters the reader takes a
+// toneless word the English dictionary has (feng, pai) for English, so each gets tone 5 first.
+std::string with_neutral_tones(const std::string& said) {
+    std::string marked;
+    for (std::size_t i = 0; i < said.size(); ++i) {
+        marked += said[i];
+        const bool is_letter = said[i] >= 'a' && said[i] <= 'z';
+        const bool ends_word = i + 1 == said.size() || !((said[i + 1] >= 'a' && said[i + 1] <= 'z') ||
+                                                         (said[i + 1] >= '0' && said[i + 1] <= '9'));
+        if (is_letter && ends_word) marked += '5';
+    }
+    return marked;
+}
+
 std::string toneless(const talkface::Timeline& timeline) {
     std::string text;
     for (const auto& syllable : timeline.syllables) {
@@ -96,7 +110,7 @@ int main(int argc, char** argv) {
         for (const auto& sentence : sentences) {
             const auto where = sentences_path + ":" + std::to_string(sentence.line);
             const auto read = talkface::read_transcript(sentence.text, {}, where);
-            const auto expected = talkface::read_transcript(sentence.said, {}, where + " (said)");
+            const auto expected = talkface::read_transcript(with_neutral_tones(sentence.said), {}, where + " (said)");
             auto& tally = tallies[sentence.set];
             ++tally.sentences;
             tally.forms += static_cast<int>(read.written_forms.size());

@@ -230,7 +230,9 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
     }
     if (!number.has_separators) {
         const bool is_mobile = whole.size() == 11 && whole.front() == '1';
-        if ((context.is_phone && whole.size() >= 3) || is_mobile) {
+        // A phone word earlier in the sentence does not make an amount a phone number (这款手机售价5999元).
+        const bool counts = context.has_unit || takes_liang(context.next);
+        if ((context.is_phone && whole.size() >= 3 && !counts) || is_mobile) {
             said.words = digit_words(whole, true);
             return said;
         }
