@@ -222,3 +222,40 @@ def test_the_command_refuses_wrong_options_with_status_2(tmp_path, arguments, wo
     finished = run_command("batch", path, *arguments)
     assert finished.returncode == 2
     assert words in finished.stderr
+
+
+def test_a_job_whose_workers_all_died_is_reported_failed():
+    distributed_scheduler = pytest.importorskip("distributed.scheduler")
+
+    class LostFuture:
+        def result(self):
+            raise distributed_scheduler.KilledWorker("talkface-job-0-x", None, 3)
+
+    job = batch.Job("a.ogg", "a.txt", "a.html", row=5, manifest="jobs.csv")
+    result = batch._result_of(LostFuture(), job)
+    assert (result.status, result.job, result.output_size) == ("failed", job, 0)
+    assert "died each time it was tried (4 times)" in result.message
+
+
+def test_the_local_cluster_is_one_thread_a_worker_on_loopback_with_its_retries(monkeypatch):
+    distributed = pytest.importorskip("distributed")
+    import dask
+
+    made = {}
+
+    def local_cluster(**arguments):
+        # What the cluster would read from Dask's settings as it starts.
+        made.update(arguments, allowed_failures=dask.config.get("distributed.scheduler.allowed-failures"),
+                    profile=dask.config.get("distributed.worker.profile.enabled"))
+        return "cluster"
+
+    monkeypatch.setattr(distributed, "LocalCluster", local_cluster)
+    assert batch.local_cluster(workers=3, retries=0) == "cluster"
+    assert (made["n_workers"], made["threads_per_worker"], made["processes"]) == (3, 1, True)
+    assert (made["host"], made["dashboard_address"]) == ("127.0.0.1", None)
+    assert (made["allowed_failures"], made["profile"]) == (0, False)
+    assert dask.config.get("distributed.worker.profile.enabled") is True  # set for the cluster only
+    batch.local_cluster()
+    assert (made["n_workers"], made["allowed_failures"]) == (os.cpu_count(), 3)
+    with pytest.raises(ValueError, match="workers: expected 1 or more"):
+        batch.local_cluster(workers=0)

@@ -221,3 +221,4 @@ def test_a_manifest_on_a_cluster_survives_a_killed_worker_and_skips_on_rerun(tmp
         time.sleep(0.2)
     assert sorted(path.name for path in (tmp_path / "cancel").iterdir()) == ["quick.srt"]
 
+
