@@ -19,7 +19,7 @@ constexpr std::size_t kNeighbours = 2;
 // where a tenth of the syllables within 100 ms fall on bench/'s human tuning passages, all
 // conditions pooled (issue 12: at most 10% of the right ones flagged); the slope spreads the
 // evidence's usual range over most of 0..1.
-constexpr double kEvidenceAtLow = 0.082;
+constexpr double kEvidenceAtLow = 0.076;
 constexpr double kSlope = 10.0;
 constexpr double kRelativeShare = 0.5;
 

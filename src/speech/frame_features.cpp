@@ -26,14 +26,15 @@ constexpr int kMelFilters = 24;
 // Below this peak (-80 dBFS) there is no speech to align, only dither or digital silence.
 constexpr float kSilentPeak = 1e-4f;
 constexpr double kEnergyFloor = 1e-10;
-// Dither (standard deviation: 0.3 of a 16-bit step, about -100 dBFS) added to every sample before
-// analysis, as a recording's own noise floor would be (Kaldi dithers the same way). Digital silence
-// (a synthesizer's closures, speech joined by an editor, a codec's muted bands) otherwise gives
-// frames of one constant spectrum, which the silence class learns as a spike: a path that holds the
-// faintest sound there (a decay, a fade) loses to one that does not, and a right text is refused
-// for the free sounds fitting it better (bench/ r-clean: 7 of 18 passages, h-clean: 1). A whole
-// step cost espeak-ng's reverb 2 points within 50 ms (its tails decay into digital silence); this
-// level costs it 0.3 and helps the clean speech as much.
+// Dither (standard deviation: 0.3 of a 16-bit step, about -100 dBFS) added to every sample of the
+// frame whose spectrum's shape (the cepstra) is taken, as a recording's own noise floor would be
+// (Kaldi dithers the same way). Digital silence (a synthesizer's closures, speech joined by an
+// editor, a codec's muted bands) otherwise gives frames of one constant cepstrum, which the silence
+// class learns as a spike: a path that holds the faintest sound there loses to one that does not,
+// and a right text is refused for the free sounds fitting it better (bench/ r-clean: 7 of 18
+// passages). The band levels are taken of the frame as it is: dithered, they moved the floors the
+// loudness profile measures, and a right short line padded with silence was refused (bench/
+// short_lines_bench.py).
 constexpr float kDitherStep = 0.3f / 32768.0f;
 
 double hz_to_mel(double hz) { return 2595.0 * std::log10(1.0 + hz / 700.0); }
@@ -78,9 +79,7 @@ public:
     }
 
     void push(const float* samples, std::size_t count) {
-        const std::size_t first = pending_.size();
         pending_.insert(pending_.end(), samples, samples + count);
-        for (std::size_t i = first; i < pending_.size(); ++i) pending_[i] += dither();
         samples_in_ += count;
         std::size_t start = 0;
         while (pending_.size() - start >= kWindow) {
@@ -123,6 +122,11 @@ private:
         std::fill(frame_.begin() + kWindow, frame_.end(), 0.0f);
         fft_.fwd(spectrum_, frame_);
         for (std::size_t k = 0; k < kBins; ++k) power_[k] = std::norm(spectrum_[k]);
+        // The spectrum's shape (the cepstra) is taken of the dithered frame; its levels (the bands
+        // the loudness profile and the checks read) of the frame as it is.
+        for (std::size_t i = 0; i < kWindow; ++i) frame_[i] = (samples[i] + dither()) * window_[i];
+        fft_.fwd(spectrum_, frame_);
+        for (std::size_t k = 0; k < kBins; ++k) dithered_power_[k] = std::norm(spectrum_[k]);
 
         auto band_db = [&](double low_hz, double high_hz) {
             const auto first = static_cast<std::size_t>(std::ceil(low_hz * kFftSize / kAnalysisRateHz));
@@ -136,7 +140,7 @@ private:
         for (std::size_t m = 0; m < kMelFilters; ++m) {
             double sum = 0.0;
             for (std::size_t k = mel_first_bin_[m]; k < mel_end_bin_[m]; ++k)
-                sum += static_cast<double>(mel_weights_[m][k]) * power_[k];
+                sum += static_cast<double>(mel_weights_[m][k]) * dithered_power_[k];
             log_mel[m] = static_cast<float>(std::log(sum + kEnergyFloor));
         }
         for (std::size_t c = 0; c < kCepstrumCount; ++c) {
@@ -161,6 +165,7 @@ private:
     std::vector<float> frame_ = std::vector<float>(kFftSize);
     std::vector<std::complex<float>> spectrum_;
     std::array<float, kBins> power_{};
+    std::array<float, kBins> dithered_power_{};
     std::array<std::array<float, kBins>, kMelFilters> mel_weights_{};
     std::array<std::size_t, kMelFilters> mel_first_bin_{};  // each filter's non-zero bins
     std::array<std::size_t, kMelFilters> mel_end_bin_{};
