@@ -19,6 +19,7 @@ libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev li
 # libpng-dev and libjpeg-dev read photo files (face from a photo). libdlib-dev's CMake package also
 # links libblas.so, liblapack.so, libjpeg.so and libz.so by path, and does not depend on the -dev
 # packages that provide them.
+# zlib1g-dev also packs the pages' animation (gzip, src/apps/).
 # libav*-dev and libsw*-dev encode videos and the pages' compressed audio (src/video/); Debian's
 # libavcodec59 brings libx264, libvpx, libopus and libwebp with it.
 # libdlib-data is dlib's 95 MB landmark model: only the dlib photo locator reads it, at run time.

@@ -1,5 +1,6 @@
-// The web page of thesis 6.3.2 and chapter 7, as a single HTML file: the animation inline, the
-// audio embedded or linked, and a script that makes the audio element the animation's clock.
+// The web page of thesis 6.3.2 and chapter 7, as a single HTML file: the animation inline (packed
+// with gzip, packed_animation.hpp), the audio embedded or linked, and a script that makes the
+// audio element the animation's clock.
 //
 // The thesis played its audio through a plug-in's extension element that no browser has now, and
 // let audio and animation run on separate clocks. Here the SVG's own timeline is paused for good
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "apps/apps.hpp"
+#include "apps/packed_animation.hpp"
 #include "apps/page_fonts.hpp"
 #include "common/atomic_file.hpp"
 #include "common/number_format.hpp"
@@ -237,16 +239,19 @@ std::string build_web_page(const SvgAnimator& animator, const Animation& animati
                                : (!timeline.sentences.empty() ? timeline.sentences.front().text : std::string("talkface"));
 
     detail::PageParts parts;
+    detail::PackedAnimation packed;
     if (options.app == WebPageApp::announcer) {
         // The stage is the background: the face is drawn without its own.
         SvgOptions svg_options = animator.options();
         svg_options.background.reset();
         const SvgAnimator stage_animator(animator.face(), svg_options);
-        parts = detail::announcer_page(
-            without_prolog(stage_animator.render_animation_svg(animation, options.animation, progress)),
-            animator.face(), animation, timeline, options, title, audio);
+        packed = detail::pack_animation(
+            without_prolog(stage_animator.render_animation_svg(animation, options.animation, progress)));
+        parts = detail::announcer_page(packed.root, animator.face(), animation, timeline, options, title, audio);
     } else {
-        const std::string svg = without_prolog(animator.render_animation_svg(animation, options.animation, progress));
+        packed = detail::pack_animation(
+            without_prolog(animator.render_animation_svg(animation, options.animation, progress)));
+        const std::string& svg = packed.root;
         if (options.app == WebPageApp::audiobook) {
             parts = detail::audiobook_page(svg, timeline, options, title, audio);
         } else {
@@ -263,8 +268,8 @@ std::string build_web_page(const SvgAnimator& animator, const Animation& animati
            "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
            "<meta name=\"generator\" content=\"talkface\">\n<title>" +
            escape_html(title) + "</title>\n<style>" + kCommonStyle + parts.style + "</style>\n</head>\n<body class=\"tf-" +
-           web_page_app_name(options.app) + "-page\">\n" + parts.body + "<script>\n" + kScript + parts.script +
-           "</script>\n</body>\n</html>\n";
+           web_page_app_name(options.app) + "-page\">\n" + parts.body + packed.data + "<script>\n" +
+           detail::after_unpacking(kScript + parts.script) + "</script>\n</body>\n</html>\n";
 }
 
 void write_web_page(const std::string& path, const SvgAnimator& animator, const Animation& animation,

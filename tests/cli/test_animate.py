@@ -1,5 +1,7 @@
 """`talkface animate` and `talkface demo`: pages and bare animations from a speech, the audio
 embedded or linked, usage errors, and failures that leave no file behind."""
+import base64
+import gzip
 import os
 import pathlib
 import re
@@ -21,7 +23,8 @@ def test_demo_makes_a_self_contained_page(tmp_path):
     html = page.read_text(encoding="utf-8")
     assert html.startswith("<!DOCTYPE html>")
     assert "data:audio/webm;base64," in html
-    assert "<animate " in html
+    packed = html.split('<script type="application/gzip" id="tf-animation-data">')[1].split("</script>")[0]
+    assert "<animate " in gzip.decompress(base64.b64decode(packed)).decode()
     assert "大家好" in html
     # No bar when stderr is not a terminal; one line saying what was written, how long and how large.
     assert re.fullmatch(r"talkface: wrote \S+demo\.html: plain web page, audio compressed and embedded, \d+\.\d\d s, "

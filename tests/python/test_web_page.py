@@ -1,4 +1,5 @@
 import base64
+import gzip
 import html as html_module
 import pathlib
 import xml.dom.minidom
@@ -59,7 +60,9 @@ def test_audiobook_page_escapes_every_caller_text(face, animation, timeline):
     html = talkface.build_web_page(talkface.SvgAnimator(face), animation, timeline, SPEECH, options)
     assert html.startswith("<!DOCTYPE html>")
     assert "<img" not in html
-    assert html.count("</script>") == 1
+    # The page's script and the packed animation's data block, nothing else.
+    assert html.count("</script>") == 2
+    assert html.count("<script") == 2 and html.count('<script type="application/gzip" id="tf-animation-data">') == 1
     assert html_escaped(HOSTILE) in html
     assert "data:audio/webm;base64," in html
 
@@ -81,6 +84,21 @@ def test_the_audio_is_embedded_compressed_or_as_it_is(face, animation, timeline)
     with pytest.raises(talkface.InvalidArgument, match="audio_bitrate_bps"):
         talkface.build_web_page(talkface.SvgAnimator(face), animation, timeline, SPEECH,
                                 talkface.WebPageOptions(audio_bitrate_bps=200000))
+
+
+@pytest.mark.parametrize("app", [talkface.WebPageApp.plain, talkface.WebPageApp.announcer,
+                                 talkface.WebPageApp.audiobook])
+def test_the_page_packs_the_animation_it_draws(face, animation, timeline, app):
+    html = talkface.build_web_page(talkface.SvgAnimator(face), animation, timeline, SPEECH,
+                                   talkface.WebPageOptions(app=app))
+    packed = html.split('<script type="application/gzip" id="tf-animation-data">')[1].split("</script>")[0]
+    content = gzip.decompress(base64.b64decode(packed)).decode()
+    drawn = talkface.SvgAnimator(face).render_animation_svg(animation)
+    assert content.count("<animate ") == drawn.count("<animate ") > 3
+    if app != talkface.WebPageApp.announcer:  # the announcer's face is drawn without a background
+        assert drawn.endswith(content + "</svg>\n")
+    assert html.count('class="tf-animation"') == 1
+    assert "<animate " not in html
 
 
 def test_announcer_page_links_the_audio_when_asked(face, animation, timeline):

@@ -520,8 +520,12 @@ TEST_SUITE("web page") {
         const std::string html = build_web_page(SvgAnimator(face), spoken_animation(face, timeline), timeline,
                                                 test::source_path("samples/speech/demo.ogg"), options);
         CHECK(html.find("<img") == std::string::npos);
+        // The page's script and the packed animation's data block, nothing else.
         CHECK(html.find("<script>") == html.rfind("<script>"));
-        CHECK(html.find("</script>") == html.rfind("</script>"));
+        const std::size_t data = html.find("<script type=\"application/gzip\" id=\"tf-animation-data\">");
+        CHECK(html.find("<script") == data);
+        CHECK(html.find("</script>", html.find("</script>") + 1) == html.rfind("</script>"));
+        CHECK(html.find("</script>", html.find("</script>") + 1) != std::string::npos);
         CHECK(html.find(escape_html(kHostile)) != std::string::npos);
         CHECK(html.find("data-start=\"0.5\"") != std::string::npos);
     }
