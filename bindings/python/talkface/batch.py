@@ -317,8 +317,16 @@ def run(jobs: Iterable[Job], scheduler=None, workers: Optional[int] = None,
         results: List[Optional[JobResult]] = [None] * len(jobs)
         index_of = {}
         for index, job in enumerate(jobs):
+            # Up to date is decided here, once, not on the worker: a worker that dies after writing
+            # its output but before reporting gets its job run again, and that run must redo the
+            # job, not report the dead worker's output as skipped.
+            if not force and is_up_to_date(job):
+                results[index] = JobResult(job, "skipped", 0.0, os.stat(job.output).st_size)
+                if on_result is not None:
+                    on_result(results[index])
+                continue
             # pure=False: the same job submitted twice (a second run) must run again, not be looked up.
-            future = client.submit(_run_on_dask_worker, job, force, pure=False,
+            future = client.submit(_run_on_dask_worker, job, pure=False,
                                    key=f"talkface-job-{index}-{os.urandom(6).hex()}")
             index_of[future.key] = index
             futures.append(future)
@@ -340,7 +348,7 @@ def run(jobs: Iterable[Job], scheduler=None, workers: Optional[int] = None,
             remove_temporary_files(job.output)
 
 
-def _run_on_dask_worker(job: Job, force: bool) -> JobResult:
+def _run_on_dask_worker(job: Job) -> JobResult:
     # Dask cannot stop a running task: when run() cancels its futures (interrupted, or on_result
     # raised), the worker marks the running task cancelled, and the job's next progress report
     # sees it and stops the work, which removes its temporary file.
@@ -353,7 +361,7 @@ def _run_on_dask_worker(job: Job, force: bool) -> JobResult:
         task = worker.state.tasks.get(key)
         return task is not None and task.state != "cancelled"
 
-    return run_job(job, force, is_wanted)
+    return run_job(job, True, is_wanted)
 
 
 def _result_of(future, job: Job) -> JobResult:
