@@ -17,7 +17,7 @@
 namespace talkface::photo {
 
 void fail(const std::string& source, const std::string& problem) {
-    throw InvalidArgument("photo", source + ": " + problem);
+    throw InvalidArgument(source, problem);
 }
 
 cv::Mat to_bgr(const ImageView& view, const std::string& source) {

@@ -15,7 +15,8 @@
 
 namespace talkface::photo {
 
-// Throws InvalidArgument("photo", "<source>: <problem>"): every photo error names the photo first.
+// Throws InvalidArgument(source, problem), "<source>: <problem>": every photo error names the photo
+// (its path, or PhotoOptions::source_name, "photo" by default) first, and only once.
 [[noreturn]] void fail(const std::string& source, const std::string& problem);
 
 // The caller's view copied into an 8-bit BGR image. Throws for a malformed view.
