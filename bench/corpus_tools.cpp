@@ -5,12 +5,65 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 
 #include <talkface/transcript.hpp>
 
 namespace talkface_bench {
+
+void CorpusUsage::fail(const std::string& problem) const {
+    std::cerr << program << ": " << problem << "\n" << lines << "conditions:";
+    for (const std::string& condition : conditions) std::cerr << " " << condition;
+    std::cerr << "\n";
+    std::exit(2);
+}
+
+CorpusCommand parse_corpus_command(int argc, char** argv, const CorpusUsage& usage,
+                                   const std::string& sentences_path,
+                                   const std::vector<std::pair<std::string, OwnOption>>& own) {
+    CorpusCommand command;
+    command.sentences_path = sentences_path;
+    std::vector<std::string> positional;
+    try {
+        for (int i = 1; i < argc; ++i) {
+            const std::string arg = argv[i];
+            const auto value = [&]() -> std::string {
+                if (i + 1 >= argc) usage.fail(arg + " needs a value");
+                return argv[++i];
+            };
+            const auto own_option =
+                std::find_if(own.begin(), own.end(), [&](const auto& o) { return o.first == arg; });
+            if (arg == "--clip")
+                command.clip_stem = value();
+            else if (arg == "--seed")
+                command.seed = parse_number<std::uint64_t>(arg, value());
+            else if (arg == "--repeats")
+                command.repeats = parse_number<int>(arg, value());
+            else if (arg == "--sentences")
+                command.sentences_path = value();
+            else if (arg == "--conditions")
+                command.conditions = value();
+            else if (own_option != own.end())
+                own_option->second(arg, value());
+            else if (arg == "-h" || arg == "--help")
+                usage.fail("help");
+            else if (!arg.empty() && arg[0] == '-')
+                usage.fail("unknown option " + arg);
+            else
+                positional.push_back(arg);
+        }
+    } catch (const std::invalid_argument& error) {
+        usage.fail(error.what());
+    }
+    const bool is_clip = !command.clip_stem.empty();
+    if (positional.size() != 1)
+        usage.fail(is_clip ? "give the clip's TEXT" : "give the output directory OUT");
+    (is_clip ? command.clip_text : command.out_dir) = positional[0];
+    if (command.repeats < 1) usage.fail("--repeats must be at least 1");
+    return command;
+}
 
 double uniform(std::mt19937_64& rng, double low, double high) {
     const double unit = static_cast<double>(rng() >> 11) * 0x1.0p-53;

@@ -6,13 +6,14 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <iterator>
-#include <sstream>
-#include <stdexcept>
 #include <filesystem>
 #include <functional>
+#include <iterator>
 #include <random>
+#include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -48,6 +49,39 @@ std::vector<const Condition*> select_conditions(const Condition (&all)[N], const
         for (const auto& condition : all) selected.push_back(&condition);
     return selected;
 }
+
+/// What both generators' command lines say:
+///   PROGRAM OUT [--seed N] [--repeats N] [--sentences FILE] [--conditions A,B,...] [own options]
+///   PROGRAM --clip STEM [--seed N] [own options] TEXT
+struct CorpusCommand {
+    std::string out_dir;    ///< OUT; empty with --clip
+    std::string clip_stem;  ///< STEM; empty for a corpus
+    std::string clip_text;  ///< TEXT
+    std::uint64_t seed = 1;
+    int repeats = 3;  ///< at least 1
+    std::string sentences_path;
+    std::string conditions;  ///< comma-separated names; empty: all
+};
+
+/// How a generator is used, for its messages.
+struct CorpusUsage {
+    std::string program;                  ///< "make_corpus"
+    std::string lines;                    ///< the usage lines, each ending in "\n"
+    std::vector<std::string> conditions;  ///< every condition's name
+    /// Prints "PROGRAM: PROBLEM", the usage and the conditions to stderr; exits with status 2.
+    [[noreturn]] void fail(const std::string& problem) const;
+};
+
+/// A generator's own option (--rate-wpm, --voice ...): given its value.
+/// \throws std::invalid_argument for a bad value (parse_number's).
+using OwnOption = std::function<void(const std::string& name, const std::string& value)>;
+
+/// Reads the command line, handing each of `own`'s options to it. `sentences_path` is the default
+/// sentence list. A bad command line (an unknown option, a missing value or argument, a number that
+/// is not one, --repeats below 1) or -h / --help ends in usage.fail().
+CorpusCommand parse_corpus_command(int argc, char** argv, const CorpusUsage& usage,
+                                   const std::string& sentences_path,
+                                   const std::vector<std::pair<std::string, OwnOption>>& own);
 
 /// Uniform in [low, high). Not std::uniform_real_distribution, whose output differs between
 /// standard libraries.

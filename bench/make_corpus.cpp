@@ -227,7 +227,7 @@ struct CorpusOptions {
     std::string out_dir;
     std::uint64_t seed = 1;
     int repeats = 3;
-    std::string sentences_path = TALKFACE_BENCH_SENTENCES;
+    std::string sentences_path;
     std::vector<const Condition*> conditions;
 };
 
@@ -332,69 +332,41 @@ void make_clip(const ClipOptions& options) {
     write_text(options.stem + ".json", truth_json(recording, delivery, 1.0, "clip", "test"));
 }
 
-[[noreturn]] void usage(const std::string& problem) {
-    std::cerr << "make_corpus: " << problem << "\n"
-              << "usage: make_corpus OUT [--seed N] [--repeats N] [--sentences FILE] [--conditions A,B,...]\n"
-              << "       make_corpus --clip STEM [--seed N] [--rate-wpm N] [--pitch N] [--pause-s S] TEXT\n"
-              << "conditions:";
-    for (const auto& condition : all_conditions) std::cerr << " " << condition.name;
-    std::cerr << "\n";
-    std::exit(2);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
+    talkface_bench::CorpusUsage usage{
+        "make_corpus",
+        "usage: make_corpus OUT [--seed N] [--repeats N] [--sentences FILE] [--conditions A,B,...]\n"
+        "       make_corpus --clip STEM [--seed N] [--rate-wpm N] [--pitch N] [--pause-s S] TEXT\n",
+        {}};
+    for (const auto& condition : all_conditions) usage.conditions.push_back(condition.name);
     try {
-        CorpusOptions corpus;
         ClipOptions clip;
-        bool clip_mode = false;
-        std::vector<std::string> positional;
-        std::string condition_list;
-        for (int i = 1; i < argc; ++i) {
-            const std::string arg = argv[i];
-            const auto value = [&]() -> std::string {
-                if (i + 1 >= argc) usage(arg + " needs a value");
-                return argv[++i];
-            };
-            if (arg == "--clip") {
-                clip_mode = true;
-                clip.stem = value();
-            } else if (arg == "--seed") {
-                corpus.seed = clip.seed = talkface_bench::parse_number<std::uint64_t>(arg, value());
-            } else if (arg == "--repeats") {
-                corpus.repeats = talkface_bench::parse_number<int>(arg, value());
-            } else if (arg == "--sentences") {
-                corpus.sentences_path = value();
-            } else if (arg == "--conditions") {
-                condition_list = value();
-            } else if (arg == "--rate-wpm") {
-                clip.rate_wpm = talkface_bench::parse_number<int>(arg, value());
-            } else if (arg == "--pitch") {
-                clip.pitch = talkface_bench::parse_number<int>(arg, value());
-            } else if (arg == "--pause-s") {
-                clip.pause_s = talkface_bench::parse_number<double>(arg, value());
-            } else if (arg == "-h" || arg == "--help") {
-                usage("help");
-            } else if (!arg.empty() && arg[0] == '-') {
-                usage("unknown option " + arg);
-            } else {
-                positional.push_back(arg);
-            }
-        }
-        if (positional.size() != 1) usage(clip_mode ? "give the clip's TEXT" : "give the output directory OUT");
-        if (clip_mode) {
-            clip.text = positional[0];
+        const talkface_bench::CorpusCommand command = talkface_bench::parse_corpus_command(
+            argc, argv, usage, TALKFACE_BENCH_SENTENCES,
+            {{"--rate-wpm",
+              [&](auto& name, auto& value) {
+                  clip.rate_wpm = talkface_bench::parse_number<int>(name, value);
+              }},
+             {"--pitch",
+              [&](auto& name, auto& value) { clip.pitch = talkface_bench::parse_number<int>(name, value); }},
+             {"--pause-s", [&](auto& name, auto& value) {
+                  clip.pause_s = talkface_bench::parse_number<double>(name, value);
+              }}});
+        if (!command.clip_stem.empty()) {
+            clip.stem = command.clip_stem;
+            clip.text = command.clip_text;
+            clip.seed = command.seed;
             make_clip(clip);
             return 0;
         }
-        corpus.out_dir = positional[0];
-        if (corpus.repeats < 1) usage("--repeats must be at least 1");
-        corpus.conditions = talkface_bench::select_conditions(all_conditions, condition_list);
+        CorpusOptions corpus{command.out_dir, command.seed, command.repeats, command.sentences_path, {}};
+        corpus.conditions = talkface_bench::select_conditions(all_conditions, command.conditions);
         make_corpus(corpus);
         return 0;
     } catch (const std::invalid_argument& error) {
-        usage(error.what());
+        usage.fail(error.what());
     } catch (const std::exception& error) {
         std::cerr << "make_corpus: " << error.what() << "\n";
         return 1;

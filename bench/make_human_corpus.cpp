@@ -520,8 +520,8 @@ struct CorpusOptions {
     std::string out_dir;
     std::uint64_t seed = 1;
     int repeats = 3;
-    std::string sentences_path = TALKFACE_BENCH_SENTENCES;
-    std::string voice_dir = kDefaultVoiceDir;
+    std::string sentences_path;
+    std::string voice_dir;
     std::vector<const Condition*> conditions;
 };
 
@@ -595,54 +595,36 @@ void make_clip(const std::string& stem, const std::string& text, std::uint64_t s
     fs::remove_all(work);
 }
 
-[[noreturn]] void usage(const std::string& problem) {
-    std::cerr << "make_human_corpus: " << problem << "\n"
-              << "usage: make_human_corpus OUT [--seed N] [--repeats N] [--sentences FILE] [--voice DIR] [--conditions A,B,...]\n"
-              << "       make_human_corpus --clip STEM [--seed N] [--tempo T] [--voice DIR] TEXT\n"
-              << "conditions:";
-    for (const auto& condition : all_conditions) std::cerr << " " << condition.name;
-    std::cerr << "\n";
-    std::exit(2);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
+    talkface_bench::CorpusUsage usage{
+        "make_human_corpus",
+        "usage: make_human_corpus OUT [--seed N] [--repeats N] [--sentences FILE] [--voice DIR] "
+        "[--conditions A,B,...]\n"
+        "       make_human_corpus --clip STEM [--seed N] [--tempo T] [--voice DIR] TEXT\n",
+        {}};
+    for (const auto& condition : all_conditions) usage.conditions.push_back(condition.name);
     try {
-        CorpusOptions corpus;
-        std::string clip_stem;
+        std::string voice_dir = kDefaultVoiceDir;
         double clip_tempo = 1.2;
-        std::vector<std::string> positional;
-        std::string condition_list;
-        for (int i = 1; i < argc; ++i) {
-            const std::string arg = argv[i];
-            const auto value = [&]() -> std::string {
-                if (i + 1 >= argc) usage(arg + " needs a value");
-                return argv[++i];
-            };
-            if (arg == "--clip") clip_stem = value();
-            else if (arg == "--seed") corpus.seed = talkface_bench::parse_number<std::uint64_t>(arg, value());
-            else if (arg == "--repeats") corpus.repeats = talkface_bench::parse_number<int>(arg, value());
-            else if (arg == "--sentences") corpus.sentences_path = value();
-            else if (arg == "--voice") corpus.voice_dir = value();
-            else if (arg == "--conditions") condition_list = value();
-            else if (arg == "--tempo") clip_tempo = talkface_bench::parse_number<double>(arg, value());
-            else if (arg == "-h" || arg == "--help") usage("help");
-            else if (!arg.empty() && arg[0] == '-') usage("unknown option " + arg);
-            else positional.push_back(arg);
-        }
-        if (positional.size() != 1) usage(clip_stem.empty() ? "give the output directory OUT" : "give the clip's TEXT");
-        if (!clip_stem.empty()) {
-            make_clip(clip_stem, positional[0], corpus.seed, clip_tempo, corpus.voice_dir);
+        const talkface_bench::CorpusCommand command = talkface_bench::parse_corpus_command(
+            argc, argv, usage, TALKFACE_BENCH_SENTENCES,
+            {{"--voice", [&](auto&, auto& value) { voice_dir = value; }},
+             {"--tempo", [&](auto& name, auto& value) {
+                  clip_tempo = talkface_bench::parse_number<double>(name, value);
+              }}});
+        if (!command.clip_stem.empty()) {
+            make_clip(command.clip_stem, command.clip_text, command.seed, clip_tempo, voice_dir);
             return 0;
         }
-        corpus.out_dir = positional[0];
-        if (corpus.repeats < 1) usage("--repeats must be at least 1");
-        corpus.conditions = talkface_bench::select_conditions(all_conditions, condition_list);
+        CorpusOptions corpus{command.out_dir,        command.seed, command.repeats,
+                             command.sentences_path, voice_dir,    {}};
+        corpus.conditions = talkface_bench::select_conditions(all_conditions, command.conditions);
         make_corpus(corpus);
         return 0;
     } catch (const std::invalid_argument& error) {
-        usage(error.what());
+        usage.fail(error.what());
     } catch (const std::exception& error) {
         std::cerr << "make_human_corpus: " << error.what() << "\n";
         return 1;
