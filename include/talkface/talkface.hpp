@@ -6,12 +6,14 @@
 //   int main() {
 //       const auto face = talkface::FaceModel::load("face.xml");          // or FaceModel::default_face()
 //       const auto transcript = talkface::load_transcript("speech.txt");  // sentences and syllables
-//       const auto timeline = talkface::SpeechAligner().align_file("speech.wav", transcript);
+//       const auto timeline = talkface::SpeechAligner().align_file("speech.ogg", transcript);  // any audio
 //       const talkface::ExpressionSimulator expressions(timeline, /*seed=*/7);  // blinks, nods ...
 //       const auto animation = talkface::animate(face, timeline, expressions);
 //       talkface::write_web_page("talk.html", talkface::SvgAnimator(face), animation, timeline,
-//                                "speech.wav");                            // atomic: all or nothing
+//                                "speech.ogg");                            // atomic: all or nothing
 //   }
+//
+// (tests/headers/ builds this example from the text above and runs it on samples/speech/.)
 //
 // Errors are exceptions derived from talkface::Error (errors.hpp); each message names the file,
 // line, point, parameter or time that was wrong. Nothing in talkface prints or reads global state:
