@@ -48,9 +48,9 @@ Point2 checked_point(const double xy[2], const char* name) {
 }
 
 size_t index_of(const talkface::ProjectedFace& projected, size_t index) {
-    if (index >= projected.ids.size()) {
-        throw InvalidArgument("index", "expected 0.." + std::to_string(projected.ids.size() - 1) + ", got " +
-                                           std::to_string(index));
+    if (index >= projected.points.size()) {
+        throw InvalidArgument("index", "expected 0.." + std::to_string(projected.points.size() - 1) +
+                                           ", got " + std::to_string(index));
     }
     return index;
 }
@@ -162,7 +162,7 @@ tf_status tf_projected_face_point_count(const tf_projected_face* projected, size
     return guard([&] {
         require_non_null(projected, "projected");
         require_non_null(out_count, "out_count");
-        *out_count = projected->projected.ids.size();
+        *out_count = projected->projected.points.size();
     });
 }
 
@@ -170,7 +170,7 @@ tf_status tf_projected_face_point_id(const tf_projected_face* projected, size_t 
     return guard([&] {
         require_non_null(projected, "projected");
         require_non_null(out_id, "out_id");
-        *out_id = projected->projected.ids[index_of(projected->projected, index)].c_str();
+        *out_id = projected->projected.points[index_of(projected->projected, index)].id.c_str();
     });
 }
 

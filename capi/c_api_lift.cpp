@@ -59,7 +59,7 @@ tf_status tf_lifted_face_point_count(const tf_lifted_face* lifted, size_t* out_c
     return guard([&] {
         require_non_null(lifted, "lifted");
         require_non_null(out_count, "out_count");
-        *out_count = lifted->lifted.ids.size();
+        *out_count = lifted->lifted.points.size();
     });
 }
 
@@ -67,8 +67,8 @@ tf_status tf_lifted_face_point_id(const tf_lifted_face* lifted, size_t index, co
     return guard([&] {
         require_non_null(lifted, "lifted");
         require_non_null(out_id, "out_id");
-        check_index(index, lifted->lifted.ids.size());
-        *out_id = lifted->lifted.ids[index].c_str();
+        check_index(index, lifted->lifted.points.size());
+        *out_id = lifted->lifted.points[index].id.c_str();
     });
 }
 
@@ -97,28 +97,6 @@ tf_status tf_rotation_origin(const tf_face_model* face, double* out_x, double* o
         const Point2 origin = talkface::rotation_origin(face->model);
         *out_x = origin.x;
         *out_y = origin.y;
-    });
-}
-
-tf_status tf_to_local(double image_x, double image_y, double z, double origin_x, double origin_y,
-                      double out_local_xyz[3]) {
-    return guard([&] {
-        require_non_null(out_local_xyz, "out_local_xyz");
-        from_point3(talkface::to_local(Point2{image_x, image_y}, z, Point2{origin_x, origin_y}),
-                    out_local_xyz);
-    });
-}
-
-tf_status tf_to_image(const double local_xyz[3], double origin_x, double origin_y, double* out_x,
-                      double* out_y) {
-    return guard([&] {
-        require_non_null(local_xyz, "local_xyz");
-        require_non_null(out_x, "out_x");
-        require_non_null(out_y, "out_y");
-        const Point2 image_xy =
-            talkface::to_image(Point3{local_xyz[0], local_xyz[1], local_xyz[2]}, Point2{origin_x, origin_y});
-        *out_x = image_xy.x;
-        *out_y = image_xy.y;
     });
 }
 

@@ -73,26 +73,10 @@ struct UniformRange {
     friend bool operator!=(const UniformRange& a, const UniformRange& b) { return !(a == b); }
 };
 
-/// What an ExpressionStyle field holds, for reading and writing fields by name (the C ABI, Python,
-/// the style JSON of docs/style-format.md).
-enum class StyleFieldType : int {
-    number = 0,   ///< a double: seconds
-    integer = 1,  ///< an int: blink_interval_shape
-    range = 2,    ///< a UniformRange: seconds, 0..1 or degrees
-    flag = 3,     ///< a bool: is_<kind>_simulated
-};
-
-/// One ExpressionStyle field as the C ABI, Python and the style JSON name it.
-struct StyleField {
-    const char* name;  ///< the C++ member's name, e.g. "tilt_angle_deg"
-    StyleFieldType type;
-};
-
 /// The distributions of the simulation, and which kinds of event are simulated at all. Times are
 /// seconds; a "time between" events runs from the end of one to the start of the next (thesis
-/// 4.2). normal() and announcer() are the thesis's; any field may be changed, directly or by name
-/// (set_number(), set_range() ...: these check the value at once and name the field). The
-/// simulator checks every field again and names the first one out of range.
+/// 4.2). normal() and announcer() are the thesis's; any field may be changed. validate() checks
+/// every field and names the first one out of range; the simulator does the same.
 struct TALKFACE_API ExpressionStyle {
     std::string name = "normal";  ///< a label; "custom" for caller-built styles
 
@@ -160,26 +144,12 @@ struct TALKFACE_API ExpressionStyle {
     /// exact form): the same style always gives the same bytes.
     std::string to_json() const;
 
-    /// Every field but name, in declaration order, with its type.
-    static const std::vector<StyleField>& fields();
-    /// The value of a number field. \throws talkface::InvalidArgument for a name that is not a
-    ///         number field (the message lists the number fields).
-    double number(std::string_view field) const;
-    /// Sets a number field. \throws talkface::InvalidArgument naming the field if it is not a
-    ///         number field or the value is out of range; the style is then unchanged.
-    void set_number(std::string_view field, double value);
-    /// The value of an integer field (blink_interval_shape). \throws as number().
-    int integer(std::string_view field) const;
-    /// Sets an integer field. \throws as set_number().
-    void set_integer(std::string_view field, int value);
-    /// The value of a range field. \throws as number().
-    UniformRange range(std::string_view field) const;
-    /// Sets a range field. \throws as set_number(), also for min > max.
-    void set_range(std::string_view field, UniformRange value);
-    /// The value of a flag field (is_blink_simulated ...). \throws as number().
-    bool flag(std::string_view field) const;
-    /// Sets a flag field. \throws as number().
-    void set_flag(std::string_view field, bool value);
+    /// Checks every field against the limits docs/style-format.md gives (durations and scales
+    /// above 0, amounts within 0..1, angles within 0..kMaxPoseAngleDeg, min <= max, the shape
+    /// within 1..16, times at most 3600 s). \throws talkface::InvalidArgument naming the first field out of
+    /// range
+    ///         ("ExpressionStyle::tilt_angle_deg") and what it expected.
+    void validate() const;
     /// Whether events of `kind` are simulated (its is_<kind>_simulated field).
     bool is_simulated(ExpressionEventKind kind) const;
     /// Switches the simulation of a kind on or off. \throws talkface::InvalidArgument for a value

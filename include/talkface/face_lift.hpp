@@ -13,13 +13,18 @@
 namespace talkface {
 inline namespace v0 {
 
+/// One point of a lifted face.
+struct LiftedPoint {
+    std::string id;  ///< a model id (FaceModel::point_ids()) or "A" .. "S"
+    Point3 local;    ///< in the face's local frame (see Point3), pixels
+};
+
 /// A face in its local 3D frame: the rotation origin O, the 72 model points and the 17 additional
 /// points A..S (A B C D E F G H I J K L M N Q R S), each with a depth from Table 2.1 in units of d.
 struct TALKFACE_API LiftedFace {
-    Point2 origin;                      ///< O in image pixels: (EyeMid.x, EyeMid.y + 1.3 d)
-    double d = 0.0;                     ///< eyeball distance, pixels
-    std::vector<std::string> ids;       ///< the 72 model ids (FaceModel order), then "A" .. "S"
-    std::vector<Point3> local_xyz;      ///< same order as ids; local frame of Point3, pixels
+    Point2 origin;                    ///< O in image pixels: (EyeMid.x, EyeMid.y + 1.3 d)
+    double d = 0.0;                   ///< eyeball distance, pixels
+    std::vector<LiftedPoint> points;  ///< the 72 model points (FaceModel order), then "A" .. "S"
 
     /// A point's local position. \throws talkface::InvalidArgument for an unknown id.
     Point3 local(std::string_view id) const;
@@ -37,11 +42,6 @@ TALKFACE_API double depth_in_d(std::string_view id);
 
 /// The rotation origin O of Algorithm 2.1 step 3, in image pixels.
 TALKFACE_API Point2 rotation_origin(const FaceModel& face);
-
-/// Image to local: x' = x_o - x, y' = y_o - y, z kept (SPEC: the exact inverse of to_image()).
-TALKFACE_API Point3 to_local(Point2 image_xy, double z, Point2 origin);
-/// Local to image, orthographic: x = x_o - x', y = y_o - y' (z dropped).
-TALKFACE_API Point2 to_image(Point3 local_xyz, Point2 origin);
 
 /// The same face moved so its rotation origin is at `origin` and scaled so its d is `d_px`; every
 /// point and FAPU scales by d_px / d (thesis, end of 2.3.2).

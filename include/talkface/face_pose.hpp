@@ -41,10 +41,15 @@ struct FaceState {
 /// Which side of the nose the bridge line is drawn from (Algorithm 2.3 step 8).
 enum class NoseBridgeSide : int { left = 0, right = 1 };
 
+/// One point of a projected face.
+struct ProjectedPoint {
+    std::string id;  ///< a model id (FaceModel::point_ids()) or "A" .. "S"
+    Point2 xy;       ///< image pixels; the eyeball ids hold the pupils after gaze
+};
+
 /// A face drawn at a state: every point in image pixels, ready for a renderer.
 struct TALKFACE_API ProjectedFace {
-    std::vector<std::string> ids;   ///< the 72 model ids, then "A" .. "S" (as LiftedFace)
-    std::vector<Point2> image_xy;   ///< same order; eyeball ids hold the pupils after gaze
+    std::vector<ProjectedPoint> points;  ///< the 72 model points, then "A" .. "S" (as LiftedFace)
     /// The face contour's side points (forehead, cheek, jaw) on each side, after the contour
     /// substitution of Algorithm 2.3 (past 10 degrees the receding side uses N L J or Q M K).
     std::array<std::string, 3> left_contour{"11.2", "10.10", "2.14"};

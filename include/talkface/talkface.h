@@ -225,16 +225,6 @@ TF_API tf_status tf_depth_in_d(const char *id, double *out_depth_in_d);
  * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
 TF_API tf_status tf_rotation_origin(const tf_face_model *face, double *out_x, double *out_y);
 
-/* Image to local: x' = x_o - x, y' = y_o - y, z kept; the exact inverse of tf_to_image.
- * Errors: TF_ERR_INVALID_ARGUMENT if out_local_xyz is NULL. */
-TF_API tf_status tf_to_local(double image_x, double image_y, double z, double origin_x, double origin_y,
-                             double out_local_xyz[3]);
-
-/* Local to image, orthographic: x = x_o - x', y = y_o - y' (z dropped).
- * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
-TF_API tf_status tf_to_image(const double local_xyz[3], double origin_x, double origin_y,
-                             double *out_x, double *out_y);
-
 /* A new face: `face` moved so its rotation origin is at (origin_x, origin_y) and scaled so its d is
  * d_px (every point and FAPU scales by d_px / d).
  * Errors: TF_ERR_INVALID_ARGUMENT if d_px is not finite and positive or an argument is NULL. */

@@ -28,12 +28,13 @@ int main(int argc, char** argv) {
                     lifted.d);
         std::printf("%-12s %9s %9s   %9s %9s %9s   %7s\n", "point", "image x", "image y", "local x", "local y",
                     "local z", "z / d");
-        for (std::size_t i = 0; i < lifted.ids.size(); ++i) {
-            const std::string& id = lifted.ids[i];
-            const talkface::Point3 local = lifted.local_xyz[i];
-            const talkface::Point2 image = talkface::to_image(local, lifted.origin);
-            std::printf("%-12s %9.2f %9.2f   %9.2f %9.2f %9.2f   %7.3f\n", id.c_str(), image.x, image.y, local.x,
-                        local.y, local.z, local.z / lifted.d);
+        // The frontal projection puts every point, A .. S included, where the lift took it from.
+        const talkface::ProjectedFace frontal = talkface::project_face(face, talkface::FaceState{});
+        for (const talkface::LiftedPoint& point : lifted.points) {
+            const talkface::Point2 image = frontal.point(point.id);
+            const talkface::Point3& local = point.local;
+            std::printf("%-12s %9.2f %9.2f   %9.2f %9.2f %9.2f   %7.3f\n", point.id.c_str(), image.x, image.y,
+                        local.x, local.y, local.z, local.z / lifted.d);
         }
     } catch (const std::exception& error) {
         std::cerr << "face_model: error: " << error.what() << '\n';

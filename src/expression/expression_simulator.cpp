@@ -126,7 +126,7 @@ struct ExpressionSimulator::Impl {
 ExpressionSimulator::ExpressionSimulator(const Timeline& timeline, std::uint64_t seed,
                                          const ExpressionStyle& style)
     : impl_(std::make_unique<Impl>()) {
-    detail::check_style(style);
+    style.validate();
     detail::check_timeline(timeline);
     impl_->seed = seed;
     impl_->style = style;

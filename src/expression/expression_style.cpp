@@ -92,36 +92,6 @@ const std::vector<StyleFieldSpec>& style_field_specs() {
     return specs;
 }
 
-const char* style_field_type_name(StyleFieldType type) {
-    switch (type) {
-        case StyleFieldType::number:
-            return "number";
-        case StyleFieldType::integer:
-            return "integer";
-        case StyleFieldType::range:
-            return "range";
-        case StyleFieldType::flag:
-            return "flag";
-    }
-    return "unknown";
-}
-
-const StyleFieldSpec& find_style_field(std::string_view name, StyleFieldType type) {
-    std::string same_type;
-    for (const StyleFieldSpec& spec : style_field_specs()) {
-        if (spec.field.type == type)
-            same_type += (same_type.empty() ? "" : ", ") + std::string(spec.field.name);
-        if (name != spec.field.name) continue;
-        if (spec.field.type == type) return spec;
-        throw InvalidArgument("ExpressionStyle::" + std::string(name),
-                              std::string("is a ") + style_field_type_name(spec.field.type) +
-                                  " field, not a " + style_field_type_name(type) + " field");
-    }
-    throw InvalidArgument(
-        "ExpressionStyle field \"" + std::string(name) + "\"",
-        std::string("unknown; the ") + style_field_type_name(type) + " fields are " + same_type);
-}
-
 std::string style_field_problem(const StyleFieldSpec& spec, const ExpressionStyle& style) {
     switch (spec.field.type) {
         case StyleFieldType::number: {
@@ -152,33 +122,12 @@ std::string style_field_problem(const StyleFieldSpec& spec, const ExpressionStyl
     return "unknown field type";
 }
 
-void check_style(const ExpressionStyle& style) {
-    for (const StyleFieldSpec& spec : style_field_specs()) {
-        const std::string problem = style_field_problem(spec, style);
-        if (!problem.empty())
-            throw InvalidArgument("ExpressionStyle::" + std::string(spec.field.name), problem);
-    }
-}
-
 }  // namespace talkface::detail
 
 namespace talkface {
 inline namespace v0 {
 
 namespace {
-
-// Sets a field on a copy, checks it, and only then changes `style`: a refused value leaves it as
-// it was.
-template <typename Value>
-void set_checked(ExpressionStyle& style, std::string_view field, StyleFieldType type,
-                 Value ExpressionStyle::*detail::StyleFieldSpec::*member, Value value) {
-    const detail::StyleFieldSpec& spec = detail::find_style_field(field, type);
-    ExpressionStyle changed = style;
-    changed.*(spec.*member) = value;
-    const std::string problem = detail::style_field_problem(spec, changed);
-    if (!problem.empty()) throw InvalidArgument("ExpressionStyle::" + std::string(field), problem);
-    style = std::move(changed);
-}
 
 std::size_t checked_kind_index(ExpressionEventKind kind) {
     const auto index = static_cast<std::size_t>(kind);
@@ -213,45 +162,12 @@ ExpressionStyle ExpressionStyle::from_name(std::string_view name) {
                           "expected \"normal\" or \"announcer\"");
 }
 
-const std::vector<StyleField>& ExpressionStyle::fields() {
-    static const std::vector<StyleField> fields = [] {
-        std::vector<StyleField> result;
-        for (const detail::StyleFieldSpec& spec : detail::style_field_specs()) result.push_back(spec.field);
-        return result;
-    }();
-    return fields;
-}
-
-double ExpressionStyle::number(std::string_view field) const {
-    return this->*(detail::find_style_field(field, StyleFieldType::number).number);
-}
-
-void ExpressionStyle::set_number(std::string_view field, double value) {
-    set_checked(*this, field, StyleFieldType::number, &detail::StyleFieldSpec::number, value);
-}
-
-int ExpressionStyle::integer(std::string_view field) const {
-    return this->*(detail::find_style_field(field, StyleFieldType::integer).integer);
-}
-
-void ExpressionStyle::set_integer(std::string_view field, int value) {
-    set_checked(*this, field, StyleFieldType::integer, &detail::StyleFieldSpec::integer, value);
-}
-
-UniformRange ExpressionStyle::range(std::string_view field) const {
-    return this->*(detail::find_style_field(field, StyleFieldType::range).range);
-}
-
-void ExpressionStyle::set_range(std::string_view field, UniformRange value) {
-    set_checked(*this, field, StyleFieldType::range, &detail::StyleFieldSpec::range, value);
-}
-
-bool ExpressionStyle::flag(std::string_view field) const {
-    return this->*(detail::find_style_field(field, StyleFieldType::flag).flag);
-}
-
-void ExpressionStyle::set_flag(std::string_view field, bool value) {
-    set_checked(*this, field, StyleFieldType::flag, &detail::StyleFieldSpec::flag, value);
+void ExpressionStyle::validate() const {
+    for (const detail::StyleFieldSpec& spec : detail::style_field_specs()) {
+        const std::string problem = detail::style_field_problem(spec, *this);
+        if (!problem.empty())
+            throw InvalidArgument("ExpressionStyle::" + std::string(spec.field.name), problem);
+    }
 }
 
 bool ExpressionStyle::is_simulated(ExpressionEventKind kind) const {

@@ -1,5 +1,5 @@
-// ExpressionStyle's fields by name, with the limits each one is checked against: shared by the
-// by-name accessors, the simulator's check of a whole style and the style JSON reader.
+// ExpressionStyle's fields by name, with the limits each one is checked against: shared by
+// ExpressionStyle::validate() (which the simulator calls) and the style JSON reader and writer.
 #ifndef TALKFACE_EXPRESSION_STYLE_FIELDS_HPP
 #define TALKFACE_EXPRESSION_STYLE_FIELDS_HPP
 
@@ -10,6 +10,20 @@
 #include "talkface/expression_simulator.hpp"
 
 namespace talkface::detail {
+
+// What a field holds.
+enum class StyleFieldType : int {
+    number,   // a double: seconds
+    integer,  // an int: blink_interval_shape
+    range,    // a UniformRange: seconds, 0..1 or degrees
+    flag,     // a bool: is_<kind>_simulated
+};
+
+// A field as the style JSON names it: the C++ member's name.
+struct StyleField {
+    const char* name;
+    StyleFieldType type;
+};
 
 // One field: exactly one member pointer is set, the one of `type`.
 struct StyleFieldSpec {
@@ -27,19 +41,9 @@ struct StyleFieldSpec {
 
 const std::vector<StyleFieldSpec>& style_field_specs();
 
-// The field named `name` of type `type`. Throws InvalidArgument naming it if there is none: for
-// an unknown name listing the fields of that type, for one of another type saying which it is.
-const StyleFieldSpec& find_style_field(std::string_view name, StyleFieldType type);
-
 // "" if the field's value in `style` is within its limits, else what is wrong ("expected ...,
 // got ...").
 std::string style_field_problem(const StyleFieldSpec& spec, const ExpressionStyle& style);
-
-// Throws InvalidArgument naming the first field ("ExpressionStyle::tilt_angle_deg") out of range.
-void check_style(const ExpressionStyle& style);
-
-// "number", "integer", "range", "flag".
-const char* style_field_type_name(StyleFieldType type);
 
 }  // namespace talkface::detail
 

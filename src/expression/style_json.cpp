@@ -20,10 +20,12 @@ namespace {
 
 using detail::JsonReader;
 using detail::JsonValue;
+using detail::StyleFieldType;
 
 std::string all_keys() {
     std::string keys = "base, name";
-    for (const StyleField& field : ExpressionStyle::fields()) keys += std::string(", ") + field.name;
+    for (const detail::StyleFieldSpec& spec : detail::style_field_specs())
+        keys += std::string(", ") + spec.field.name;
     return keys;
 }
 

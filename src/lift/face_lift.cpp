@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "common/number_format.hpp"
+#include "lift/local_frame.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface {
@@ -99,12 +100,13 @@ std::vector<Point2> additional_points_image(const FaceModel& face, Point2 eye_mi
 }  // namespace
 
 Point3 LiftedFace::local(std::string_view id) const {
-    const auto found = std::find(ids.begin(), ids.end(), id);
-    if (found == ids.end() || static_cast<std::size_t>(found - ids.begin()) >= local_xyz.size()) {
+    const auto found =
+        std::find_if(points.begin(), points.end(), [&](const LiftedPoint& point) { return point.id == id; });
+    if (found == points.end()) {
         throw InvalidArgument("point \"" + std::string(id) + "\"",
                               "not a point of the lifted face (the 72 model points and A .. S)");
     }
-    return local_xyz[static_cast<std::size_t>(found - ids.begin())];
+    return found->local;
 }
 
 const std::vector<std::string>& additional_point_ids() {
@@ -128,16 +130,6 @@ Point2 rotation_origin(const FaceModel& face) {
     return {mid.x, mid.y + d * kOriginBelowEyeMidInD};
 }
 
-Point3 to_local(Point2 image_xy, double z, Point2 origin) {
-    // SPEC: x' = x_o - x; the local x axis points to the image left.
-    return {origin.x - image_xy.x, origin.y - image_xy.y, z};
-}
-
-Point2 to_image(Point3 local_xyz, Point2 origin) {
-    // SPEC: the exact inverse of to_local(); the thesis's "x_p + x_o" would mirror the face.
-    return {origin.x - local_xyz.x, origin.y - local_xyz.y};
-}
-
 LiftedFace lift_face(const FaceModel& face) {
     // Table 2.1 in lifted order (the 72 model ids, then A .. S), looked up once rather than by id for
     // every point of every frame.
@@ -152,17 +144,16 @@ LiftedFace lift_face(const FaceModel& face) {
     lifted.origin = rotation_origin(face);
     const auto& model_ids = FaceModel::point_ids();
     const auto& extra_ids = additional_point_ids();
-    lifted.ids.reserve(model_ids.size() + extra_ids.size());
-    lifted.local_xyz.reserve(model_ids.size() + extra_ids.size());
+    lifted.points.reserve(model_ids.size() + extra_ids.size());
     for (std::size_t i = 0; i < model_ids.size(); ++i) {
-        lifted.ids.push_back(model_ids[i]);
-        lifted.local_xyz.push_back(
-            to_local(face.points()[i], depths[i] * lifted.d, lifted.origin));
+        lifted.points.push_back(
+            {model_ids[i], detail::to_local(face.points()[i], depths[i] * lifted.d, lifted.origin)});
     }
     const std::vector<Point2> extra_xy = additional_points_image(face, eye_mid(face));
     for (std::size_t i = 0; i < extra_ids.size(); ++i) {
-        lifted.ids.push_back(extra_ids[i]);
-        lifted.local_xyz.push_back(to_local(extra_xy[i], depths[model_ids.size() + i] * lifted.d, lifted.origin));
+        lifted.points.push_back(
+            {extra_ids[i],
+             detail::to_local(extra_xy[i], depths[model_ids.size() + i] * lifted.d, lifted.origin)});
     }
     return lifted;
 }

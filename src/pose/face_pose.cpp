@@ -9,6 +9,7 @@
 
 #include "common/number_format.hpp"
 #include "face/point_ids.hpp"
+#include "lift/local_frame.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/face_lift.hpp"
 #include "talkface/rotation3d.hpp"
@@ -100,19 +101,20 @@ Vec3 gazing_pupil(Vec3 pupil, Vec3 focus, const Rotation3D& rotation, double rad
 }  // namespace
 
 Point2 ProjectedFace::point(std::string_view id) const {
-    const auto found = std::find(ids.begin(), ids.end(), id);
-    if (found == ids.end()) {
+    const auto found = std::find_if(points.begin(), points.end(),
+                                    [&](const ProjectedPoint& point) { return point.id == id; });
+    if (found == points.end()) {
         throw InvalidArgument("point \"" + std::string(id) + "\"",
                               "no such point in a projected face; expected one of the 72 model ids "
                               "(FaceModel::point_ids()) or A .. S");
     }
-    return image_xy[static_cast<std::size_t>(found - ids.begin())];
+    return found->xy;
 }
 
 std::vector<Point2> ProjectedFace::hair_polygon() const {
     std::vector<Point2> polygon;
-    for (const std::string& id : ids) {
-        if (is_hair_id(id)) polygon.push_back(point(id));
+    for (const ProjectedPoint& point : points) {
+        if (is_hair_id(point.id)) polygon.push_back(point.xy);
     }
     return polygon;
 }
@@ -133,7 +135,7 @@ ProjectedFace project_face(const FaceModel& neutral, const FaceState& state) {
     // first (face/point_ids.hpp), and lift_face() keeps that order.
     double hair_half_width = 0.0;
     for (std::size_t i = 0; i < detail::kHairPointCount; ++i) {
-        hair_half_width = std::max(hair_half_width, std::abs(lifted.local_xyz[i].x));
+        hair_half_width = std::max(hair_half_width, std::abs(lifted.points[i].local.x));
     }
     static const std::size_t eyeball_left_index = *detail::point_index("EyeballLeft");
     static const std::size_t eyeball_right_index = *detail::point_index("EyeballRight");
@@ -141,13 +143,13 @@ ProjectedFace project_face(const FaceModel& neutral, const FaceState& state) {
     const Point2 eyeball_left = face2d.points()[eyeball_left_index];
     const Point2 eyeball_right = face2d.points()[eyeball_right_index];
     const Point2 eye_mid{(eyeball_left.x + eyeball_right.x) / 2.0, (eyeball_left.y + eyeball_right.y) / 2.0};
-    const Vec3 focus = to_vec(to_local(eye_mid, kFocusDepthD * d, lifted.origin));
+    const Vec3 focus = to_vec(detail::to_local(eye_mid, kFocusDepthD * d, lifted.origin));
     const Rotation3D identity;
 
     ProjectedFace projected;
-    projected.image_xy.reserve(lifted.ids.size());
-    for (std::size_t i = 0; i < lifted.ids.size(); ++i) {
-        const Vec3 local = to_vec(lifted.local_xyz[i]);
+    projected.points.reserve(lifted.points.size());
+    for (std::size_t i = 0; i < lifted.points.size(); ++i) {
+        const Vec3 local = to_vec(lifted.points[i].local);
         // Each point moves by (where the pose puts it) - (where the frontal face has it), added to its
         // frontal image position. At zero angles the rotation is the identity bit for bit and both gaze
         // computations are the same arithmetic, so the move is exactly 0 and the frontal face comes
@@ -164,10 +166,12 @@ ProjectedFace project_face(const FaceModel& neutral, const FaceState& state) {
             move_local = to_vec(rotation.rotate(to_point(shifted))) - local;
         }
         // lift_face() lists the 72 model points first, in FaceModel order.
-        const Point2 frontal =
-            i < FaceModel::kPointCount ? face2d.points()[i] : to_image(lifted.local_xyz[i], lifted.origin);
+        const Point2 frontal = i < FaceModel::kPointCount
+                                   ? face2d.points()[i]
+                                   : detail::to_image(lifted.points[i].local, lifted.origin);
         // to_image: x = x_o - x', y = y_o - y', so a local move shows up negated in the image.
-        projected.image_xy.push_back(Point2{frontal.x - move_local.x, frontal.y - move_local.y});
+        projected.points.push_back(
+            {std::move(lifted.points[i].id), Point2{frontal.x - move_local.x, frontal.y - move_local.y}});
     }
 
     // Algorithm 2.3 steps 5-6, in SPEC's un-mirrored frame. The thesis's local-to-global formula
@@ -181,7 +185,6 @@ ProjectedFace project_face(const FaceModel& neutral, const FaceState& state) {
     projected.nose_bridge = pose.beta_deg < 0.0 ? NoseBridgeSide::right : NoseBridgeSide::left;
     projected.origin = lifted.origin;
     projected.d = d;
-    projected.ids = std::move(lifted.ids);
     projected.face = std::move(face2d);
     return projected;
 }

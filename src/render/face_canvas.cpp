@@ -38,7 +38,8 @@ CanvasBox fit_face_canvas(const FaceModel& face) {
                 for (double gamma : angles) {
                     state.pose = {alpha, beta, gamma};
                     const ProjectedFace projected = project_face(face, state);
-                    for (const Point2& p : projected.image_xy) {
+                    for (const ProjectedPoint& point : projected.points) {
+                        const Point2& p = point.xy;
                         min_x = std::min(min_x, p.x);
                         max_x = std::max(max_x, p.x);
                         min_y = std::min(min_y, p.y);

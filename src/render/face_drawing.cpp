@@ -333,7 +333,7 @@ Point2 ViewMap::apply(Point2 image_xy) const {
 
 Point2 FacePaints::point(const ProjectedFace& face, std::string_view id) const {
     const auto found = point_index.find(std::string(id));
-    return view.apply(found == point_index.end() ? face.point(id) : face.image_xy[found->second]);
+    return view.apply(found == point_index.end() ? face.point(id) : face.points[found->second].xy);
 }
 
 std::vector<Point2> hair_layer_points(const ProjectedFace& face, const FacePaints& paints) {
@@ -362,7 +362,7 @@ FacePaints make_face_paints(const ProjectedFace& face, const LayerStyle& style) 
     paints.mouth_opening = paint_of(Paint::of(colors.mouth_inside), outline, 0.6 * stroke);
     paints.mouth_inside_gradient = mouth_inside_gradient(colors);
     paints.iris_gradient = iris_gradient(colors.iris);
-    for (std::size_t i = 0; i < face.ids.size(); ++i) paints.point_index.emplace(face.ids[i], i);
+    for (std::size_t i = 0; i < face.points.size(); ++i) paints.point_index.emplace(face.points[i].id, i);
     return paints;
 }
 

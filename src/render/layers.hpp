@@ -52,7 +52,7 @@ private:
 };
 
 // What every state of one face is drawn with: the style, the paints and gradients, and where each
-// point id stands in ProjectedFace::image_xy (the same for every state of a face). An animation
+// point id stands in ProjectedFace::points (the same for every state of a face). An animation
 // builds it once instead of once a frame, and sets its view per frame.
 struct FacePaints {
     LayerStyle style;  // in the view's units

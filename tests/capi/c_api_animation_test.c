@@ -321,6 +321,41 @@ static int test_user_events_add_to_or_replace_the_simulated(void) {
     return failures;
 }
 
+/* Every key of the style JSON but "name" reads by name through exactly one of the four getters:
+ * the C layer's field names cannot drift from the style's. */
+static int check_every_json_key_is_a_field(const tf_expression_style* style) {
+    int failures = 0;
+    int keys = 0;
+    char* json = NULL;
+    const char* at = NULL;
+    CHECK_OK(tf_expression_style_to_json(style, &json, NULL));
+    for (at = json != NULL ? strstr(json, "\n  \"") : NULL; at != NULL; at = strstr(at + 1, "\n  \"")) {
+        char key[64];
+        const char* start = at + 4;
+        const char* end = strchr(start, '"');
+        size_t length = end != NULL ? (size_t)(end - start) : 0;
+        double number = 0.0, max = 0.0;
+        int integer = 0, readable = 0;
+        if (length == 0 || length >= sizeof key) {
+            CHECK(!"a JSON key of a sensible length");
+            break;
+        }
+        memcpy(key, start, length);
+        key[length] = '\0';
+        if (strcmp(key, "name") == 0) continue;
+        ++keys;
+        readable += tf_expression_style_get_number(style, key, &number) == TF_OK;
+        readable += tf_expression_style_get_integer(style, key, &integer) == TF_OK;
+        readable += tf_expression_style_get_range(style, key, &number, &max) == TF_OK;
+        readable += tf_expression_style_get_flag(style, key, &integer) == TF_OK;
+        if (readable != 1) fprintf(stderr, "style field \"%s\" read by %d getters\n", key, readable);
+        CHECK(readable == 1);
+    }
+    CHECK(keys == 22);
+    tf_free(json);
+    return failures;
+}
+
 static int test_style_fields_by_name(void) {
     int failures = 0;
     tf_expression_style *style = NULL;
@@ -356,6 +391,7 @@ static int test_style_fields_by_name(void) {
     CHECK_OK(tf_expression_style_set_flag(style, "is_nod_simulated", 7));
     CHECK_OK(tf_expression_style_get_flag(style, "is_nod_simulated", &flag));
     CHECK(flag == 1);
+    failures += check_every_json_key_is_a_field(style);
 
     CHECK_FAILS_WITH(tf_expression_style_set_number(style, "blink_scale", 1.0), TF_ERR_INVALID_ARGUMENT,
                      "\"blink_scale\": unknown; the number fields are blink_interval_scale_s, nod_min_pause_s");

@@ -383,9 +383,9 @@ TEST_SUITE("ExpressionSimulator") {
         // Gamma(shape k, scale theta) has mean k theta: 2.96 s by default, 6 s with theta = 3.
         const Timeline timeline = long_timeline(2500);
         ExpressionStyle slow;
-        slow.set_number("blink_interval_scale_s", 3.0);
+        slow.blink_interval_scale_s = 3.0;
         ExpressionStyle rare_shape;
-        rare_shape.set_integer("blink_interval_shape", 4);
+        rare_shape.blink_interval_shape = 4;
         const double normal_mean = mean_interval_s(of_kind(ExpressionSimulator(timeline, 3).simulated_events(),
                                                            ExpressionEventKind::blink));
         const double slow_mean = mean_interval_s(of_kind(ExpressionSimulator(timeline, 3, slow).simulated_events(),

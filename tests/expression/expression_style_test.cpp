@@ -1,5 +1,5 @@
-// ExpressionStyle: fields by name, the style JSON (docs/style-format.md). What a style does to the
-// simulation is in expression_simulator_test.cpp.
+// ExpressionStyle: validation naming the field, the style JSON (docs/style-format.md). What a style does to
+// the simulation is in expression_simulator_test.cpp.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -13,71 +13,45 @@
 using namespace talkface;
 
 TEST_SUITE("ExpressionStyle") {
-    TEST_CASE("every field is reachable by name and reads back what was set") {
+    TEST_CASE("validate() names the first field out of range and what it expected") {
+        CHECK_NOTHROW(ExpressionStyle::normal().validate());
+        CHECK_NOTHROW(ExpressionStyle::announcer().validate());
         ExpressionStyle style;
-        for (const StyleField& field : ExpressionStyle::fields()) {
-            CAPTURE(field.name);
-            switch (field.type) {
-                case StyleFieldType::number:
-                    style.set_number(field.name, 0.75);
-                    CHECK(style.number(field.name) == 0.75);
-                    break;
-                case StyleFieldType::integer:
-                    style.set_integer(field.name, 5);
-                    CHECK(style.integer(field.name) == 5);
-                    break;
-                case StyleFieldType::range:
-                    style.set_range(field.name, {0.25, 0.5});
-                    CHECK(style.range(field.name) == UniformRange{0.25, 0.5});
-                    break;
-                case StyleFieldType::flag:
-                    style.set_flag(field.name, false);
-                    CHECK(style.flag(field.name) == false);
-                    break;
-            }
-        }
-        CHECK(style.blink_interval_scale_s == 0.75);
-        CHECK(style.blink_interval_shape == 5);
-        CHECK(style.nod_angle_deg == UniformRange{0.25, 0.5});
-        CHECK(!style.is_turn_simulated);
-        CHECK(ExpressionStyle::fields().size() == 22);
-    }
-
-    TEST_CASE("by-name access refuses unknown names, listing the valid ones, and other types") {
-        ExpressionStyle style;
-        CHECK_THROWS_WITH_AS(style.set_number("blink_scale", 1.0),
-                             doctest::Contains("\"blink_scale\": unknown; the number fields are "
-                                               "blink_interval_scale_s, nod_min_pause_s"),
-                             InvalidArgument);
+        style.tilt_angle_deg = {2.0, 20.0};
         CHECK_THROWS_WITH_AS(
-            style.set_number("tilt_angle_deg", 1.0),
-            doctest::Contains("ExpressionStyle::tilt_angle_deg: is a range field, not a number"),
-            InvalidArgument);
-        CHECK_THROWS_WITH_AS(style.range("tilt"), doctest::Contains("tilt_angle_deg"), InvalidArgument);
-        CHECK_THROWS_AS(style.set_simulated(static_cast<ExpressionEventKind>(9), false), InvalidArgument);
-    }
-
-    TEST_CASE("a value out of range is refused naming the field, and the style is unchanged") {
-        ExpressionStyle style;
-        CHECK_THROWS_WITH_AS(
-            style.set_range("tilt_angle_deg", {2.0, 20.0}),
+            style.validate(),
             doctest::Contains("ExpressionStyle::tilt_angle_deg: expected a range with 0 <= min "
                               "<= max <= 15, got [2, 20]"),
             InvalidArgument);
-        CHECK_THROWS_WITH_AS(style.set_range("nod_down_s", {0.0, 0.5}),
+        style = ExpressionStyle{};
+        style.nod_down_s = {0.0, 0.5};
+        CHECK_THROWS_WITH_AS(style.validate(),
                              doctest::Contains("ExpressionStyle::nod_down_s: expected a range with 0 < min"),
                              InvalidArgument);
-        CHECK_THROWS_WITH_AS(style.set_range("brows_interval_s", {3.0, 1.0}),
-                             doctest::Contains("ExpressionStyle::brows_interval_s"), InvalidArgument);
+        style = ExpressionStyle{};
+        style.brows_interval_s = {3.0, 1.0};
+        CHECK_THROWS_WITH_AS(style.validate(), doctest::Contains("ExpressionStyle::brows_interval_s"),
+                             InvalidArgument);
+        style = ExpressionStyle{};
+        style.blink_interval_shape = 17;
         CHECK_THROWS_WITH_AS(
-            style.set_integer("blink_interval_shape", 17),
-            doctest::Contains("ExpressionStyle::blink_interval_shape: expected an integer from 1 "
-                              "to 16, got 17"),
+            style.validate(),
+            doctest::Contains(
+                "ExpressionStyle::blink_interval_shape: expected an integer from 1 to 16, got 17"),
             InvalidArgument);
-        CHECK_THROWS_WITH_AS(style.set_number("blink_interval_scale_s", 0.0),
-                             doctest::Contains("ExpressionStyle::blink_interval_scale_s"), InvalidArgument);
-        CHECK_THROWS_AS(style.set_number("nod_min_pause_s", std::nan("")), InvalidArgument);
-        CHECK(style == ExpressionStyle::normal());
+        style = ExpressionStyle{};
+        style.blink_interval_scale_s = 0.0;
+        CHECK_THROWS_WITH_AS(style.validate(), doctest::Contains("ExpressionStyle::blink_interval_scale_s"),
+                             InvalidArgument);
+        style = ExpressionStyle{};
+        style.nod_min_pause_s = std::nan("");
+        CHECK_THROWS_WITH_AS(style.validate(), doctest::Contains("ExpressionStyle::nod_min_pause_s"),
+                             InvalidArgument);
+        // The first field in declaration order is named when several are out of range.
+        style.blink_duration_s = {-1.0, 0.0};
+        CHECK_THROWS_WITH_AS(style.validate(), doctest::Contains("ExpressionStyle::blink_duration_s"),
+                             InvalidArgument);
+        CHECK_THROWS_AS(style.set_simulated(static_cast<ExpressionEventKind>(9), false), InvalidArgument);
     }
 
     TEST_CASE("JSON: to_json reads back as the same style, for the named ones and a changed one") {

@@ -9,11 +9,14 @@
 #include <vector>
 
 #include "common/test_paths.hpp"
+#include "lift/local_frame.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/face_lift.hpp"
 #include "talkface/face_model.hpp"
 
 using namespace talkface;
+using talkface::detail::to_image;
+using talkface::detail::to_local;
 
 namespace {
 
@@ -93,12 +96,11 @@ TEST_SUITE("FaceLift") {
     TEST_CASE("global -> local -> global is exact on the default face") {
         const FaceModel face = FaceModel::default_face();
         const LiftedFace lifted = lift_face(face);
-        REQUIRE(lifted.ids.size() == 72 + 17);
-        REQUIRE(lifted.local_xyz.size() == lifted.ids.size());
+        REQUIRE(lifted.points.size() == 72 + 17);
         for (std::size_t i = 0; i < FaceModel::kPointCount; ++i) {
-            CAPTURE(lifted.ids[i]);
-            CHECK(lifted.ids[i] == FaceModel::point_ids()[i]);
-            CHECK(to_image(lifted.local_xyz[i], lifted.origin) == face.points()[i]);
+            CAPTURE(lifted.points[i].id);
+            CHECK(lifted.points[i].id == FaceModel::point_ids()[i]);
+            CHECK(to_image(lifted.points[i].local, lifted.origin) == face.points()[i]);
         }
     }
 
@@ -108,8 +110,8 @@ TEST_SUITE("FaceLift") {
             const FaceModel face = random_face(seed);
             const LiftedFace lifted = lift_face(face);
             for (std::size_t i = 0; i < FaceModel::kPointCount; ++i) {
-                CAPTURE(lifted.ids[i]);
-                const Point2 back = to_image(lifted.local_xyz[i], lifted.origin);
+                CAPTURE(lifted.points[i].id);
+                const Point2 back = to_image(lifted.points[i].local, lifted.origin);
                 CHECK(std::abs(back.x - face.points()[i].x) <= 1e-9);
                 CHECK(std::abs(back.y - face.points()[i].y) <= 1e-9);
             }
@@ -156,9 +158,9 @@ TEST_SUITE("FaceLift") {
 
         const LiftedFace lifted = lift_face(FaceModel::default_face());
         CHECK(lifted.d == 65.0);
-        for (std::size_t i = 0; i < lifted.ids.size(); ++i) {
-            CAPTURE(lifted.ids[i]);
-            CHECK(lifted.local_xyz[i].z == depth_in_d(lifted.ids[i]) * 65.0);
+        for (const LiftedPoint& point : lifted.points) {
+            CAPTURE(point.id);
+            CHECK(point.local.z == depth_in_d(point.id) * 65.0);
         }
     }
 
@@ -169,7 +171,7 @@ TEST_SUITE("FaceLift") {
                                       FaceModel::load(test::source_path("samples/faces/female.xml"))}) {
             CAPTURE(face.name());
             const LiftedFace lifted = lift_face(face);
-            for (std::size_t i = 0; i < 17; ++i) CHECK(lifted.ids[72 + i] == additional_point_ids()[i]);
+            for (std::size_t i = 0; i < 17; ++i) CHECK(lifted.points[72 + i].id == additional_point_ids()[i]);
             auto p = [&](const char* id) { return face.point(id); };
             auto at = [&](const char* id) { return image_of(lifted, id); };
             auto check_near = [](Point2 actual, Point2 expected) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "lift/local_frame.hpp"
 #include "pose/test_faces.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/face_lift.hpp"
@@ -13,6 +14,7 @@
 #include "talkface/mouth_shape.hpp"
 
 using namespace talkface;
+using talkface::detail::to_image;
 
 namespace {
 
@@ -109,7 +111,7 @@ TEST_SUITE("face pose") {
                 apply_expression(apply_mouth(neutral, state.mouth.value_or(neutral_mouth_controls(neutral))),
                                  state.expression);
             CHECK(projected.face == face2d);
-            REQUIRE(projected.ids.size() == FaceModel::kPointCount + additional_point_ids().size());
+            REQUIRE(projected.points.size() == FaceModel::kPointCount + additional_point_ids().size());
             for (const std::string& id : FaceModel::point_ids()) {
                 CAPTURE(id);
                 CHECK(projected.point(id) == face2d.point(id));
@@ -131,8 +133,10 @@ TEST_SUITE("face pose") {
         const ProjectedFace projected = project_face(FaceModel::default_face(), posed(5, 10, -5));
         std::vector<std::string> want = FaceModel::point_ids();
         want.insert(want.end(), additional_point_ids().begin(), additional_point_ids().end());
-        CHECK(projected.ids == want);
-        CHECK(projected.image_xy.size() == want.size());
+        std::vector<std::string> ids;
+        for (const ProjectedPoint& point : projected.points) ids.push_back(point.id);
+        CHECK(ids == want);
+        for (const ProjectedPoint& point : projected.points) CHECK(projected.point(point.id) == point.xy);
         CHECK_THROWS_WITH_AS(projected.point("8.5"), doctest::Contains("\"8.5\""), InvalidArgument);
         const std::vector<Point2> hair = projected.hair_polygon();
         REQUIRE(hair.size() == 23);
@@ -165,7 +169,8 @@ TEST_SUITE("face pose") {
             const ProjectedFace face = project_face(neutral, posed(alpha_deg, beta_deg, gamma_deg));
             const ProjectedFace mirror =
                 project_face(neutral, posed(alpha_deg, -beta_deg, -gamma_deg));
-            for (const std::string& id : face.ids) {
+            for (const ProjectedPoint& point : face.points) {
+                const std::string& id = point.id;
                 CAPTURE(id);
                 REQUIRE(partner.count(id) == 1);
                 const Point2 p = face.point(id);
@@ -330,6 +335,10 @@ TEST_SUITE("face pose") {
         const ProjectedFace first = project_face(neutral, state);
         project_face(neutral, posed(-15, 15, 15));
         const ProjectedFace second = project_face(neutral, state);
-        CHECK(first.image_xy == second.image_xy);
+        REQUIRE(first.points.size() == second.points.size());
+        for (std::size_t i = 0; i < first.points.size(); ++i) {
+            CHECK(first.points[i].id == second.points[i].id);
+            CHECK(first.points[i].xy == second.points[i].xy);
+        }
     }
 }

@@ -118,6 +118,16 @@ py::array_t<double> points_to_array(const Points& points) {
     return array;
 }
 
+// The ids of named points (LiftedPoint, ProjectedPoint), in order: Python reads a face's points as
+// a list of ids beside a numpy array of coordinates.
+template <typename NamedPoint>
+std::vector<std::string> ids_of(const std::vector<NamedPoint>& points) {
+    std::vector<std::string> ids;
+    ids.reserve(points.size());
+    for (const NamedPoint& point : points) ids.push_back(point.id);
+    return ids;
+}
+
 }  // namespace talkface::python
 
 namespace pybind11::detail {

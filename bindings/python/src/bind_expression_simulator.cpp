@@ -8,6 +8,42 @@
 
 namespace talkface::python {
 
+namespace {
+
+// Sets a field on a copy and validates it: a refused value leaves the style as it was, and since
+// the style was valid before, the error names this field.
+template <typename Value>
+void set_validated(ExpressionStyle& style, Value ExpressionStyle::*member, Value value) {
+    ExpressionStyle changed = style;
+    changed.*member = value;
+    changed.validate();
+    style = std::move(changed);
+}
+
+template <typename Value>
+void def_field(py::class_<ExpressionStyle>& style_class, const char* name, Value ExpressionStyle::*member,
+               const char* doc) {
+    style_class.def_property(
+        name, [member](const ExpressionStyle& style) { return style.*member; },
+        [member](ExpressionStyle& style, Value value) { set_validated(style, member, value); }, doc);
+}
+
+// A range field as a (min, max) tuple.
+void def_range_field(py::class_<ExpressionStyle>& style_class, const char* name,
+                     UniformRange ExpressionStyle::*member, const char* doc) {
+    style_class.def_property(
+        name,
+        [member](const ExpressionStyle& style) {
+            return std::make_pair((style.*member).min, (style.*member).max);
+        },
+        [member](ExpressionStyle& style, std::pair<double, double> value) {
+            set_validated(style, member, UniformRange{value.first, value.second});
+        },
+        doc);
+}
+
+}  // namespace
+
 void bind_expression_simulator(py::module_& m) {
     py::enum_<ExpressionEventKind>(m, "ExpressionEventKind", R"doc(
 What an expression event does: blink, brows, tilt, turn, nod. The values equal the C ABI's
@@ -80,18 +116,6 @@ Example:
             return py::str("talkface.ExpressionEvent({!r}, {!r}, {!r}, {!r})")
                 .format(expression_event_kind_name(e.kind), e.start_s, e.end_s, e.amount);
         });
-
-    py::enum_<StyleFieldType>(m, "StyleFieldType", R"doc(
-What an ExpressionStyle field holds: number, integer, range or flag.
-
-Example:
-    >>> talkface.StyleFieldType.range
-    >>> talkface.StyleFieldType.flag.name
-)doc")
-        .value("number", StyleFieldType::number)
-        .value("integer", StyleFieldType::integer)
-        .value("range", StyleFieldType::range)
-        .value("flag", StyleFieldType::flag);
 
     py::enum_<UserEventMode>(m, "UserEventMode", R"doc(
 How a caller's events combine with the simulated ones: add (simulated events overlapping a caller's
@@ -209,22 +233,14 @@ Example:
     >>> pathlib.Path("calm.json").write_text(style.to_json())
     >>> talkface.ExpressionStyle.from_json(style.to_json()) == style
 )doc")
-        .def_static(
-            "fields",
-            [] {
-                std::vector<std::pair<std::string, std::string>> result;
-                for (const StyleField& field : ExpressionStyle::fields()) {
-                    result.emplace_back(field.name, py::str(py::cast(field.type).attr("name")));
-                }
-                return result;
-            },
-            R"doc(
-Every field but name, in declaration order, as (name, type) with type "number", "integer", "range"
-or "flag": the keys of the style JSON.
+        .def("validate", &ExpressionStyle::validate, R"doc(
+Checks every field; each property already checks its value as it is set.
+
+Raises:
+    talkface.InvalidArgument: naming the first field out of range and what it expected.
 
 Example:
-    >>> dict(talkface.ExpressionStyle.fields())["tilt_angle_deg"]
-    'range'
+    >>> talkface.ExpressionStyle.announcer().validate()
 )doc")
         .def("is_simulated", &ExpressionStyle::is_simulated, py::arg("kind"), R"doc(
 Whether events of a kind are simulated (its is_<kind>_simulated field).
@@ -233,7 +249,8 @@ Example:
     >>> talkface.ExpressionStyle().is_simulated(talkface.ExpressionEventKind.nod)
     True
 )doc")
-        .def("set_simulated", &ExpressionStyle::set_simulated, py::arg("kind"), py::arg("is_simulated"), R"doc(
+        .def("set_simulated", &ExpressionStyle::set_simulated, py::arg("kind"), py::arg("is_simulated"),
+             R"doc(
 Switches the simulation of a kind on or off. A kind switched off gets no simulated events; the other
 kinds' events stay the same for the same seed.
 
@@ -247,41 +264,37 @@ Example:
         .def("__repr__", [](const ExpressionStyle& style) {
             return py::str("<talkface.ExpressionStyle {!r}>").format(style.name);
         });
-    // One property per field, generated from the field list so that Python can never miss one.
-    for (const StyleField& field : ExpressionStyle::fields()) {
-        const std::string name = field.name;
-        switch (field.type) {
-            case StyleFieldType::number:
-                style_class.def_property(
-                    field.name, [name](const ExpressionStyle& s) { return s.number(name); },
-                    [name](ExpressionStyle& s, double value) { s.set_number(name, value); }, "seconds");
-                break;
-            case StyleFieldType::integer:
-                style_class.def_property(
-                    field.name, [name](const ExpressionStyle& s) { return s.integer(name); },
-                    [name](ExpressionStyle& s, int value) { s.set_integer(name, value); },
-                    "the Gamma distribution's integer shape, 1..16");
-                break;
-            case StyleFieldType::range:
-                style_class.def_property(
-                    field.name,
-                    [name](const ExpressionStyle& s) {
-                        const UniformRange range = s.range(name);
-                        return std::make_pair(range.min, range.max);
-                    },
-                    [name](ExpressionStyle& s, std::pair<double, double> value) {
-                        s.set_range(name, {value.first, value.second});
-                    },
-                    "(min, max) of a uniform variable: seconds, 0..1 or degrees");
-                break;
-            case StyleFieldType::flag:
-                style_class.def_property(
-                    field.name, [name](const ExpressionStyle& s) { return s.flag(name); },
-                    [name](ExpressionStyle& s, bool value) { s.set_flag(name, value); },
-                    "whether this kind of event is simulated");
-                break;
-        }
-    }
+    const char* const seconds = "seconds";
+    const char* const range = "(min, max) of a uniform variable, seconds";
+    const char* const kind_flag = "whether this kind of event is simulated";
+    def_field(style_class, "blink_interval_shape", &ExpressionStyle::blink_interval_shape,
+              "the Gamma distribution's integer shape of the time between blinks, 1..16");
+    def_field(style_class, "blink_interval_scale_s", &ExpressionStyle::blink_interval_scale_s,
+              "the Gamma distribution's scale of the time between blinks, seconds");
+    def_range_field(style_class, "blink_duration_s", &ExpressionStyle::blink_duration_s, range);
+    def_range_field(style_class, "brows_interval_s", &ExpressionStyle::brows_interval_s, range);
+    def_range_field(style_class, "brows_duration_s", &ExpressionStyle::brows_duration_s, range);
+    def_range_field(style_class, "brows_amount", &ExpressionStyle::brows_amount,
+                    "(min, max) of the raise at its peak, 0..1 of EyebrowH");
+    def_range_field(style_class, "tilt_interval_s", &ExpressionStyle::tilt_interval_s, range);
+    def_range_field(style_class, "tilt_duration_s", &ExpressionStyle::tilt_duration_s, range);
+    def_range_field(style_class, "tilt_angle_deg", &ExpressionStyle::tilt_angle_deg,
+                    "(min, max) of |gamma| reached, degrees (random sign)");
+    def_range_field(style_class, "turn_interval_s", &ExpressionStyle::turn_interval_s, range);
+    def_range_field(style_class, "turn_duration_s", &ExpressionStyle::turn_duration_s, range);
+    def_range_field(style_class, "turn_angle_deg", &ExpressionStyle::turn_angle_deg,
+                    "(min, max) of |beta| reached, degrees (random sign)");
+    def_range_field(style_class, "nod_lead_s", &ExpressionStyle::nod_lead_s, range);
+    def_range_field(style_class, "nod_down_s", &ExpressionStyle::nod_down_s, range);
+    def_range_field(style_class, "nod_up_s", &ExpressionStyle::nod_up_s, range);
+    def_range_field(style_class, "nod_angle_deg", &ExpressionStyle::nod_angle_deg,
+                    "(min, max) of alpha at the bottom of a nod, degrees");
+    def_field(style_class, "nod_min_pause_s", &ExpressionStyle::nod_min_pause_s, seconds);
+    def_field(style_class, "is_blink_simulated", &ExpressionStyle::is_blink_simulated, kind_flag);
+    def_field(style_class, "is_brows_simulated", &ExpressionStyle::is_brows_simulated, kind_flag);
+    def_field(style_class, "is_tilt_simulated", &ExpressionStyle::is_tilt_simulated, kind_flag);
+    def_field(style_class, "is_turn_simulated", &ExpressionStyle::is_turn_simulated, kind_flag);
+    def_field(style_class, "is_nod_simulated", &ExpressionStyle::is_nod_simulated, kind_flag);
 
     py::class_<ExpressionSimulator>(m, "ExpressionSimulator", R"doc(
 Simulates blinks, eyebrow raises, head tilts, turns and nods over a timeline from a seed (thesis

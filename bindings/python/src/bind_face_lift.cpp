@@ -1,4 +1,4 @@
-// The 3D lift in Python: LiftedFace, the local frame and place_face.
+// The 3D lift in Python: LiftedFace and place_face.
 #include "bind.hpp"
 
 namespace talkface::python {
@@ -14,14 +14,16 @@ Example:
 )doc")
         .def_readonly("origin", &LiftedFace::origin, "O, (x, y) in image pixels")
         .def_readonly("d", &LiftedFace::d, "eyeball distance, pixels")
-        .def_readonly("ids", &LiftedFace::ids, "the 72 model ids, then \"A\" .. \"S\" (a list)")
+        .def_property_readonly(
+            "ids", [](const LiftedFace& lifted) { return ids_of(lifted.points); },
+            "the 72 model ids, then \"A\" .. \"S\" (a new list)")
         .def_property_readonly(
             "local_xyz",
             [](const LiftedFace& lifted) {
-                auto array = new_matrix(static_cast<py::ssize_t>(lifted.local_xyz.size()), 3);
+                auto array = new_matrix(static_cast<py::ssize_t>(lifted.points.size()), 3);
                 auto view = array.mutable_unchecked<2>();
                 for (py::ssize_t row = 0; row < view.shape(0); ++row) {
-                    const Point3& point = lifted.local_xyz[static_cast<std::size_t>(row)];
+                    const Point3& point = lifted.points[static_cast<std::size_t>(row)].local;
                     view(row, 0) = point.x;
                     view(row, 1) = point.y;
                     view(row, 2) = point.z;
@@ -46,7 +48,8 @@ Example:
     >>> z / face.fapu("d")
 )doc")
         .def("__repr__", [](const LiftedFace& lifted) {
-            return py::str("<talkface.LiftedFace {} points, d={!r} px>").format(lifted.ids.size(), lifted.d);
+            return py::str("<talkface.LiftedFace {} points, d={!r} px>")
+                .format(lifted.points.size(), lifted.d);
         });
 
     m.def("lift_face", &lift_face, py::arg("face"), R"doc(
@@ -88,29 +91,6 @@ The rotation origin O of Algorithm 2.1 step 3: (x, y) in image pixels.
 Example:
     >>> x, y = talkface.rotation_origin(face)
     >>> y > face.point("9.15")[1]
-)doc");
-    m.def("to_local", &to_local, py::arg("image_xy"), py::arg("z"), py::arg("origin"), R"doc(
-Image to local: x' = x_o - x, y' = y_o - y, z kept; the exact inverse of to_image().
-
-Args:
-    image_xy (tuple[float, float]): image pixels.
-    z (float): depth, pixels.
-    origin (tuple[float, float]): the rotation origin, image pixels.
-
-Example:
-    >>> p = talkface.to_local((100.0, 50.0), 3.0, (120.0, 200.0))
-    >>> talkface.to_image(p, (120.0, 200.0))
-)doc");
-    m.def("to_image", &to_image, py::arg("local_xyz"), py::arg("origin"), R"doc(
-Local to image, orthographic: x = x_o - x', y = y_o - y' (z dropped).
-
-Args:
-    local_xyz (tuple[float, float, float]): local pixels.
-    origin (tuple[float, float]): the rotation origin, image pixels.
-
-Example:
-    >>> talkface.to_image((20.0, 150.0, 3.0), (120.0, 200.0))
-    (100.0, 50.0)
 )doc");
     m.def("place_face", &place_face, py::arg("face"), py::arg("origin"), py::arg("d_px"), R"doc(
 The same face moved so its rotation origin is at origin and scaled so its d is d_px; every point and

@@ -253,9 +253,16 @@ Example:
     >>> projected = talkface.project_face(face, talkface.FaceState(pose=talkface.Pose(beta_deg=12)))
     >>> projected.point("9.15"), projected.left_contour
 )doc")
-        .def_readonly("ids", &ProjectedFace::ids, "the 72 model ids, then \"A\" .. \"S\" (a list)")
         .def_property_readonly(
-            "image_xy", [](const ProjectedFace& projected) { return points_to_array(projected.image_xy); },
+            "ids", [](const ProjectedFace& projected) { return ids_of(projected.points); },
+            "the 72 model ids, then \"A\" .. \"S\" (a new list)")
+        .def_property_readonly(
+            "image_xy",
+            [](const ProjectedFace& projected) {
+                std::vector<Point2> xy;
+                for (const ProjectedPoint& point : projected.points) xy.push_back(point.xy);
+                return points_to_array(xy);
+            },
             "a new (N, 2) float64 array of (x, y) image pixels, in ids order; eyeball ids hold the pupils")
         .def_readonly("left_contour", &ProjectedFace::left_contour,
                       "forehead, cheek, jaw point ids of the image-left contour, after substitution")
