@@ -74,12 +74,7 @@ tf_status tf_frame_options_set_face_placement(tf_frame_options* options, const d
                                               double face_d_px) {
     return guard([&] {
         require_non_null(options, "options");
-        if (origin_px == nullptr) {
-            options->options.face_origin_px.reset();
-        } else {
-            options->options.face_origin_px = talkface::Point2{origin_px[0], origin_px[1]};
-        }
-        options->options.face_d_px = face_d_px;
+        talkface::capi::set_face_placement(options->options, origin_px, face_d_px);
     });
 }
 

@@ -14,6 +14,7 @@
 #include "talkface/face_lift.hpp"
 #include "talkface/face_model.hpp"
 #include "talkface/face_pose.hpp"
+#include "talkface/frame_renderer.hpp"
 #include "talkface/lip_sync.hpp"
 #include "talkface/mouth_shape.hpp"
 #include "talkface/speech_aligner.hpp"
@@ -82,6 +83,13 @@ inline std::optional<Rgb> to_optional_rgb(const tf_rgb* colour) {
 
 inline Point2 to_point(const double xy[2]) {
     return Point2{xy[0], xy[1]};
+}
+
+// Where a frame puts the face, from C: a NULL origin leaves the layout's own place (both frame
+// options and a video's look take it so).
+inline void set_face_placement(FrameOptions& options, const double origin_px[2], double d_px) {
+    options.face_origin_px = origin_px == nullptr ? std::nullopt : std::optional<Point2>(to_point(origin_px));
+    options.face_d_px = d_px;
 }
 
 inline void from_point(Point2 point, double out_xy[2]) {

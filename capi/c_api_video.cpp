@@ -152,11 +152,7 @@ tf_status tf_video_look_set_layout(tf_video_look* look, tf_video_layout layout) 
 tf_status tf_video_look_set_background(tf_video_look* look, const tf_rgb* colour, const char* image_path) {
     return guard([&] {
         require_non_null(look, "look");
-        if (colour == nullptr) {
-            look->options.frame.background.reset();
-        } else {
-            look->options.frame.background = talkface::Rgb{colour->r, colour->g, colour->b};
-        }
+        look->options.frame.background = talkface::capi::to_optional_rgb(colour);
         look->options.background_image_path = image_path != nullptr ? image_path : "";
     });
 }
@@ -164,12 +160,7 @@ tf_status tf_video_look_set_background(tf_video_look* look, const tf_rgb* colour
 tf_status tf_video_look_set_face_placement(tf_video_look* look, const double origin_xy[2], double d_px) {
     return guard([&] {
         require_non_null(look, "look");
-        if (origin_xy == nullptr) {
-            look->options.frame.face_origin_px.reset();
-        } else {
-            look->options.frame.face_origin_px = talkface::Point2{origin_xy[0], origin_xy[1]};
-        }
-        look->options.frame.face_d_px = d_px;
+        talkface::capi::set_face_placement(look->options.frame, origin_xy, d_px);
     });
 }
 
