@@ -1,6 +1,7 @@
 # cmake -DEXAMPLE=path -DSOURCE_DIR=... -DWORK_DIR=... -P run_example.cmake: runs talkface.hpp's
 # example where it finds the files it names (a face, a transcript, its recording: samples/) and
-# checks the page it writes: the face's SVG and the recording in one HTML file.
+# checks the page it writes: the face's SVG and the recording in one HTML file (the animation
+# itself is packed; the browser tests look at it).
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
 file(COPY_FILE "${SOURCE_DIR}/samples/faces/female.xml" "${WORK_DIR}/face.xml")
@@ -15,7 +16,7 @@ if(NOT output STREQUAL "")
   message(FATAL_ERROR "the example printed (the library prints nothing): ${output}")
 endif()
 file(READ "${WORK_DIR}/talk.html" page)
-foreach(part "<svg" "data:audio/" "<animate")
+foreach(part "<svg" "data:audio/")
   string(FIND "${page}" "${part}" at)
   if(at EQUAL -1)
     message(FATAL_ERROR "talk.html has no ${part}")
