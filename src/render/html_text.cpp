@@ -5,27 +5,14 @@
 #include <cstdint>
 #include <string>
 
+#include "common/markup_escape.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/web_page.hpp"
 
 namespace talkface {
 inline namespace v0 {
 
-std::string escape_html(std::string_view text) {
-    std::string escaped;
-    escaped.reserve(text.size() + text.size() / 8);
-    for (const char c : text) {
-        switch (c) {
-            case '&': escaped += "&amp;"; break;
-            case '<': escaped += "&lt;"; break;
-            case '>': escaped += "&gt;"; break;
-            case '"': escaped += "&quot;"; break;
-            case '\'': escaped += "&#39;"; break;
-            default: escaped += c;
-        }
-    }
-    return escaped;
-}
+std::string escape_html(std::string_view text) { return detail::escape_markup(text, detail::QuoteEscape::html); }
 
 }  // namespace v0
 }  // namespace talkface

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "common/markup_escape.hpp"
 #include "talkface/errors.hpp"
 #include "timing/export_writers.hpp"
 #include "timing/import_readers.hpp"
@@ -16,17 +17,13 @@ namespace talkface::detail {
 
 namespace {
 
-// Cue text may not hold "<" or "&" raw (they start tags and entities), nor ">" after "-" ("-->").
-std::string cue_text(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        if (c == '&') out += "&amp;";
-        else if (c == '<') out += "&lt;";
-        else if (c == '>') out += "&gt;";
-        else if (c == '\n' || c == '\r') out += ' ';  // a line break inside a cue could end it
-        else out += c;
+// Cue text may not hold "<" or "&" raw (they start tags and entities), nor ">" after "-" ("-->"),
+// nor a line break, which could end the cue.
+std::string cue_text(std::string text) {
+    for (char& c : text) {
+        if (c == '\n' || c == '\r') c = ' ';
     }
-    return out;
+    return escape_markup(text, QuoteEscape::none);
 }
 
 }  // namespace

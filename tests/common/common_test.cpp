@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "common/atomic_file.hpp"
+#include "common/markup_escape.hpp"
 #include "common/number_format.hpp"
 #include "common/text_location.hpp"
 #include "common/test_paths.hpp"
@@ -85,5 +86,15 @@ TEST_SUITE("common") {
 
     TEST_CASE("the loaded library's version is the headers' version") {
         CHECK(std::string(talkface::version()) == TALKFACE_VERSION_STRING);
+    }
+
+    TEST_CASE("markup escaping: & < > always, the quotes as HTML, XML or not at all") {
+        const std::string text = "<a href=\"x\">Tom's & 會說話</a>";
+        CHECK(detail::escape_markup(text, detail::QuoteEscape::none) ==
+              "&lt;a href=\"x\"&gt;Tom's &amp; 會說話&lt;/a&gt;");
+        CHECK(detail::escape_markup(text, detail::QuoteEscape::html) ==
+              "&lt;a href=&quot;x&quot;&gt;Tom&#39;s &amp; 會說話&lt;/a&gt;");
+        CHECK(detail::escape_markup(text, detail::QuoteEscape::xml) ==
+              "&lt;a href=&quot;x&quot;&gt;Tom&apos;s &amp; 會說話&lt;/a&gt;");
     }
 }
