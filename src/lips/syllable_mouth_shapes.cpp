@@ -234,6 +234,10 @@ SyllableShapes syllable_shapes(std::string_view pinyin) {
     std::vector<S> rime = rime_shapes(parts.rime);
     // 5.2.2: ㄢ is said e n after the medials ㄧ and ㄩ (xian = i e n, yuan = u e n).
     if (parts.rime == "an" && (parts.medial == 'i' || parts.medial == 'v')) rime = {S::e, S::n};
+    // ㄣ is said without the ㄜ that SPEC's en = h n carries after the medials ㄧ and ㄩ (in, ün: no
+    // vowel between the i or ü and the n): thesis Table 5.6 gives ㄣ the class n alone. Else 今 jin
+    // opened to h between i and n.
+    if (parts.rime == "en" && (parts.medial == 'i' || parts.medial == 'v')) rime = {S::n};
     // 5.2.2: ㄛ is said u o after the closed lips of m (bo = m u o).
     if (parts.rime == "o" && parts.medial == 0 && !result.shapes.empty() && result.shapes.back() == S::m) {
         rime = {S::u, S::o};

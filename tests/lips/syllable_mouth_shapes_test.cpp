@@ -19,7 +19,7 @@ namespace {
 // medial (i; u and ü: u) in bopomofo terms (in = i + en, ing = i + eng, iong = ü + eng, un = u + en,
 // ün = ü + en, iu = i + ou, ui = u + ei), then the rime (a; o; e: h; ê: e; er: h; ai: a i; ei: e i;
 // ao: a u; ou: o u; an: a n; en: h n; ang: a h; eng: h; ong: u h), with an -> e n after i / ü,
-// o -> u o after m, and h' / h dropped before i u e o.
+// o -> u o after m, en -> n after i / ü (in, ün), and h' / h dropped before i u e o.
 const char* const kTable = R"(
 a a
 ai a i
@@ -39,7 +39,7 @@ bian m i e n
 biang m i a h
 biao m i a u
 bie m i e
-bin m i h n
+bin m i n
 bing m i h
 bo m u o
 bu m u
@@ -93,7 +93,7 @@ dia i a
 dian i e n
 diao i a u
 die i e
-din i h n
+din i n
 ding i h
 diu i o u
 dong u h
@@ -164,14 +164,14 @@ jian i e n
 jiang i a h
 jiao i a u
 jie i e
-jin i h n
+jin i n
 jing i h
 jiong u h
 jiu i o u
 ju u
 juan u e n
 jue u e
-jun u h n
+jun u n
 ka h a
 kai h a i
 kan h a n
@@ -206,7 +206,7 @@ lian i e n
 liang i a h
 liao i a u
 lie i e
-lin i h n
+lin i n
 ling i h
 liu i o u
 lo o
@@ -232,7 +232,7 @@ mi m i
 mian m i e n
 miao m i a u
 mie m i e
-min m i h n
+min m i n
 ming m i h
 miu m i o u
 mo m u o
@@ -255,7 +255,7 @@ nian i e n
 niang i a h
 niao i a u
 nie i e
-nin i h n
+nin i n
 ning i h
 niu i o u
 nong u h
@@ -280,7 +280,7 @@ pi m i
 pian m i e n
 piao m i a u
 pie m i e
-pin m i h n
+pin m i n
 ping m i h
 po m u o
 pou m o u
@@ -291,14 +291,14 @@ qian i e n
 qiang i a h
 qiao i a u
 qie i e
-qin i h n
+qin i n
 qing i h
 qiong u h
 qiu i o u
 qu u
 quan u e n
 que u e
-qun u h n
+qun u n
 r h
 ran r a n
 rang r a h
@@ -386,21 +386,21 @@ xian i e n
 xiang i a h
 xiao i a u
 xie i e
-xin i h n
+xin i n
 xing i h
 xiong u h
 xiu i o u
 xu u
 xuan u e n
 xue u e
-xun u h n
+xun u n
 ya i a
 yan i e n
 yang i a h
 yao i a u
 ye i e
 yi i
-yin i h n
+yin i n
 ying i h
 yo i o
 yong u h
@@ -408,7 +408,7 @@ you i o u
 yu u
 yuan u e n
 yue u e
-yun u h n
+yun u n
 za z a
 zai z a i
 zan z a n

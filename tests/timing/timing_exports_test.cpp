@@ -74,6 +74,20 @@ TEST_SUITE("timing exports") {
         }
     }
 
+    TEST_CASE("今 jin1 says i then n: no open C between them (ㄧㄣ has no vowel of its own)") {
+        ExportInput input = hi();
+        input.timeline.sentences = {{"今。", 0.1, 0.4}};
+        input.timeline.syllables[0].text = "今";
+        input.timeline.syllables[0].pinyin = "jin1";
+        input.timeline.syllables[0].start_s = 0.1;
+        input.timeline.syllables[0].end_s = 0.4;
+        input.mouth_key_frames = talkface::mouth_key_frames(input.timeline);
+        const std::string tsv = talkface::export_to_string(input, "rhubarb-tsv");
+        CHECK(tsv.find("\tB\n") != std::string::npos);
+        CHECK(tsv.find("\tH\n") != std::string::npos);
+        CHECK(tsv.find("\tC\n") == std::string::npos);
+    }
+
     TEST_CASE("Moho switch data numbers frames from 1 with Preston Blair names, and ends at rest") {
         ExportInput input = hi();
         CHECK(talkface::export_to_string(input, "moho") == "MohoSwitch1\n1 rest\n2 AI\n7 E\n8 etc\n11 rest\n12 rest\n");
