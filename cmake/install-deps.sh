@@ -32,9 +32,15 @@ libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev li
 # bench/make_human_corpus).
 # python3-dask and python3-distributed run the batch jobs (talkface.batch, `python3 -m talkface batch`)
 # and start the real scheduler and workers of its test.
+# The Lottie export is played by the players its users have: librlottie-dev (rlottie, Telegram's and
+# many Android apps' player; tests/render/lottie_player_test.cpp) and lottie-web, which is not in
+# Debian: npm installs it into ~/.cache/talkface/npm for tests/apps/test_browser_lottie.py (Debian's
+# nodejs and npm where no npm is on the PATH: a Node.js from elsewhere brings its own).
 test_packages="python3-pil python3-pytest python3-venv python3-pip python3-setuptools chromium fonts-dejavu-core
 python3-skimage python-matplotlib-data librsvg2-bin libdlib-data fonts-noto-cjk praat ffmpeg gcin-voice
-python3-dask python3-distributed"
+python3-dask python3-distributed librlottie-dev"
+lottie_web_version="5.13.0"
+npm_prefix="${HOME}/.cache/talkface/npm"
 bench_packages="espeak-ng libespeak-ng-dev sox libsox-fmt-all time"
 
 case "${1:-build}" in
@@ -44,11 +50,29 @@ case "${1:-build}" in
   *) echo "usage: $0 [build|test|bench]" >&2; exit 2 ;;
 esac
 
+if [ "${1:-build}" != build ] && ! command -v npm >/dev/null; then
+  wanted="$wanted nodejs npm"
+fi
+
 missing=""
 for package in $wanted; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "ok installed" || missing="$missing $package"
 done
-[ -z "$missing" ] && exit 0
+
+# lottie-web from the npm registry, pinned, for the user who runs the tests (no root needed).
+install_lottie_web() {
+  [ "${1:-build}" = build ] && return 0
+  [ -f "$npm_prefix/node_modules/lottie-web/build/player/lottie.min.js" ] && return 0
+  command -v npm >/dev/null || return 0  # the packages above bring it; a second run installs lottie-web
+  mkdir -p "$npm_prefix"
+  echo "talkface: installing lottie-web $lottie_web_version into $npm_prefix" >&2
+  npm install --no-audit --no-fund --prefix "$npm_prefix" "lottie-web@$lottie_web_version" >/dev/null
+}
+
+if [ -z "$missing" ]; then
+  install_lottie_web "${1:-build}"
+  exit 0
+fi
 
 if [ "$(id -u)" -ne 0 ]; then
   echo "talkface: these Debian packages are missing:$missing" >&2
@@ -60,3 +84,4 @@ export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
 # shellcheck disable=SC2086 # the list is meant to split into words
 apt-get install -y -qq --no-install-recommends $missing >/dev/null
+install_lottie_web "${1:-build}"

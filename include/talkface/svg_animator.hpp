@@ -65,6 +65,13 @@ struct SvgAnimationOptions {
     double tolerance_px = 0.3;
 };
 
+/// How an animation becomes Lottie JSON (SvgAnimator::render_animation_lottie()).
+struct LottieOptions {
+    /// The largest distance, in the face's pixels, between a coordinate the player interpolates
+    /// and the same coordinate of the frame at that time (> 0), as SvgAnimationOptions::tolerance_px.
+    double tolerance_px = 0.3;
+};
+
 /// Draws a face as SVG 1.1 in four layers (background, hair, clothes, face): cubic Bezier paths for
 /// face, ears, nose, eyes and mouth, hair and eyebrows as the limit of corner-cutting subdivision
 /// (quadratic Bezier paths), eyeballs clipped to the eye outline with a radial gradient.
@@ -106,6 +113,25 @@ public:
     /// \throws talkface::FileError if it cannot be written, and as render_animation_svg().
     void write_animation_svg(const std::string& path, const Animation& animation,
                              const SvgAnimationOptions& options = {}, const ProgressCallback& progress = {}) const;
+
+    /// The animation as one Lottie document (JSON, as lottie-web 5.7 reads it; lottie-android,
+    /// lottie-ios and rlottie play the same files): the same layers, shapes, gradients and clip
+    /// paths as render_animation_svg() on the same canvas, as Lottie shape layers (a clipped group,
+    /// such as an eyeball, as a layer masked by its clip path). Every number that moves is animated
+    /// between key frames chosen as the keyframes encoding chooses them (within `tolerance_px` of
+    /// every frame, plus rounding to SvgOptions::decimals), linear between them. Frame rate: the
+    /// animation's; frame i shows time i / fps. Lottie carries no sound: a page plays the
+    /// recording beside it and sets the animation's time from the audio's clock
+    /// (lottie-web's goToAndStop(audio.currentTime * 1000, false); README.md shows it).
+    /// \throws talkface::InvalidArgument if the animation has no frames, a frame's state is out of
+    ///         range, or an option is out of range; talkface::Cancelled if `progress` returned false.
+    std::string render_animation_lottie(const Animation& animation, const LottieOptions& options = {},
+                                        const ProgressCallback& progress = {}) const;
+
+    /// Writes render_animation_lottie() to `path` through a temporary file and a rename.
+    /// \throws talkface::FileError if it cannot be written, and as render_animation_lottie().
+    void write_animation_lottie(const std::string& path, const Animation& animation,
+                                const LottieOptions& options = {}, const ProgressCallback& progress = {}) const;
 
 private:
     struct Impl;

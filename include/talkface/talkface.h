@@ -1189,6 +1189,25 @@ TF_API tf_status tf_write_animation_svg(const tf_face_model *face, const tf_anim
                                         const tf_svg_options *options, tf_animation_encoding encoding,
                                         const char *path);
 
+/* The animation as one Lottie document (JSON, as lottie-web reads it; lottie-android, lottie-ios
+ * and rlottie play it): the drawing of tf_render_animation_svg (`options` NULL: the default) as
+ * Lottie shape layers, every moving number animated between key frames, linear between them,
+ * within tolerance_px (> 0; 0.3 is C++'s default) of every frame. Lottie carries no sound: a page
+ * plays the recording beside it and sets the animation's time from the audio's clock.
+ * `progress` may be NULL. Release *out_json with tf_free; *out_len (if not NULL) is its length
+ * without the NUL.
+ * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL, tolerance_px is not > 0 or a frame
+ * cannot be drawn; TF_ERR_CANCELLED if progress returned non-zero. */
+TF_API tf_status tf_render_animation_lottie(const tf_face_model *face, const tf_animation *animation,
+                                            const tf_svg_options *options, double tolerance_px,
+                                            tf_progress_fn progress, void *user_data, char **out_json,
+                                            size_t *out_len);
+
+/* tf_render_animation_lottie written to `path` through a temporary file and a rename.
+ * Errors: as tf_render_animation_lottie; TF_ERR_FILE if the file cannot be written. */
+TF_API tf_status tf_write_animation_lottie(const tf_face_model *face, const tf_animation *animation,
+                                           const tf_svg_options *options, double tolerance_px, const char *path);
+
 /* What a web page is for; values equal talkface::WebPageApp. */
 typedef enum tf_web_page_app {
     TF_PAGE_PLAIN = 0,      /* the talking face and the audio controls */

@@ -1,8 +1,10 @@
 // `talkface export`: the timing of a speech for the tools animators use (issue #15): Rhubarb cues,
-// Moho switch data, a Live2D motion, a Praat TextGrid, subtitles. Format from -o's suffix or --format.
+// Moho switch data, a Live2D motion, a Praat TextGrid, subtitles; the talking face itself as Lottie.
+// Format from -o's suffix or --format.
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <talkface/talkface.hpp>
@@ -19,41 +21,50 @@ namespace {
 struct ExportOptions {
     std::string audio_path;
     std::string transcript_path;
-    std::string output_path;
     std::string format;
-    SpeechTiming timing;
-    std::uint64_t seed = 0;
-    StyleOptions expression;
-    double fps = talkface::LipSyncOptions{}.fps;
-    bool quiet = false;
+    AnimateOptions animate;  // face, fps, seed, style, output, timing (and --lenient), quiet
 };
 
+// The formats of export_to_string() and the face itself as Lottie, which SvgAnimator draws.
+std::vector<std::string> format_names() {
+    std::vector<std::string> names = talkface::export_format_names();
+    names.emplace_back("lottie");
+    return names;
+}
+
 void run_export(const ExportOptions& options) {
+    const std::string& output_path = options.animate.output_path;
     // The format is settled before the long work, so that a wrong suffix fails at once.
-    const std::string format =
-        options.format.empty() ? talkface::export_format_for_path(options.output_path) : options.format;
+    const std::string format = options.format.empty() ? talkface::export_format_for_path(output_path) : options.format;
     const talkface::Timeline transcript = talkface::load_transcript(options.transcript_path);
-    talkface::Timeline timeline;
+    TalkingFace talking;
     {
-        const std::unique_ptr<ProgressBar> bar = make_progress_bar(options.quiet);
-        timeline = timed_speech(options.audio_path, transcript, options.timing, progress_part(bar.get(), 0.0, 1.0));
+        const std::unique_ptr<ProgressBar> bar = make_progress_bar(options.animate.quiet);
+        talking = animate_talking_face(options.animate, options.audio_path, transcript,
+                                       progress_part(bar.get(), 0.0, 1.0));
     }
-    print_mismatches(options.audio_path, timeline);
-    const talkface::ExpressionSimulator simulator(timeline, options.seed, expression_style(options.expression));
-    talkface::LipSyncOptions lip_sync;
-    lip_sync.fps = options.fps;
-    const talkface::Animation animation =
-        talkface::animate(talkface::FaceModel::default_face(), timeline, simulator, lip_sync);
+    print_mismatches(options.audio_path, talking.timeline);
+    if (format == "lottie") {
+        const talkface::SvgAnimator animator(talking.face);
+        const std::unique_ptr<ProgressBar> bar = make_progress_bar(options.animate.quiet);
+        const auto progress = progress_part(bar.get(), 0.0, 1.0);
+        if (output_path == "-") {
+            std::cout << animator.render_animation_lottie(talking.animation, {}, progress) << std::flush;
+        } else {
+            animator.write_animation_lottie(output_path, talking.animation, {}, progress);
+        }
+        return;
+    }
     talkface::ExportInput input;
-    input.timeline = timeline;
-    input.mouth_key_frames = animation.mouth_key_frames;
-    input.fps = animation.fps;
-    input.frames = animation.frames;
+    input.timeline = talking.timeline;
+    input.mouth_key_frames = talking.animation.mouth_key_frames;
+    input.fps = talking.animation.fps;
+    input.frames = talking.animation.frames;
     input.audio_path = options.audio_path;
-    if (options.output_path == "-") {
+    if (output_path == "-") {
         std::cout << talkface::export_to_string(input, format) << std::flush;
     } else {
-        talkface::export_to_file(options.output_path, input, format);
+        talkface::export_to_file(output_path, input, format);
     }
 }
 
@@ -62,7 +73,8 @@ void run_export(const ExportOptions& options) {
 void setup_export_command(CLI::App& app) {
     auto options = std::make_shared<ExportOptions>();
     CLI::App* command = app.add_subcommand(
-        "export", "Write a speech's timing for other tools: Rhubarb cues, Moho, Live2D, TextGrid, subtitles");
+        "export",
+        "Write a speech's timing for other tools: Rhubarb cues, Moho, Live2D, TextGrid, subtitles; the face as Lottie");
     command->add_option("AUDIO", options->audio_path, "Recorded speech (WAV, FLAC, OGG)")
         ->required()
         ->check(CLI::ExistingFile);
@@ -70,25 +82,20 @@ void setup_export_command(CLI::App& app) {
         ->required()
         ->check(CLI::ExistingFile);
     command
-        ->add_option("-o,--output", options->output_path,
+        ->add_option("-o,--output", options->animate.output_path,
                      "Output file (- is stdout, with --format); its suffix picks the format: .tsv .xml .dat "
                      ".motion3.json .TextGrid .srt .vtt")
         ->required();
     command
         ->add_option("--format", options->format,
-                     "rhubarb-tsv, rhubarb-json, rhubarb-xml, moho, live2d, textgrid, srt or vtt "
+                     "rhubarb-tsv, rhubarb-json, rhubarb-xml, moho, live2d, textgrid, srt, vtt or lottie "
                      "(docs/timing-formats.md); needed for any other .json")
-        ->check(CLI::IsMember(talkface::export_format_names()));
-    add_timing_option(*command, options->timing);
-    command->add_option("--seed", options->seed, "Seed of the simulated blinks and head moves (live2d)")
-        ->capture_default_str();
-    add_style_options(*command, options->expression);
-    command->add_option("--fps", options->fps, "Frames per second: Moho's frame numbers, Live2D's frames")
-        ->check(CLI::PositiveNumber)
-        ->capture_default_str();
-    command->add_flag("-q,--quiet", options->quiet, "No progress bar");
+        ->check(CLI::IsMember(format_names()));
+    add_timing_option(*command, options->animate.timing);
+    add_face_options(*command, options->animate);
+    command->add_flag("-q,--quiet", options->animate.quiet, "No progress bar");
     command->callback([options] {
-        if (options->output_path == "-" && options->format.empty()) {
+        if (options->animate.output_path == "-" && options->format.empty()) {
             throw CLI::ValidationError("--format", "writing to stdout (-o -) needs --format");
         }
         run_export(*options);

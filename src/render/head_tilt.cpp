@@ -102,10 +102,24 @@ HeadTilt plan_head_tilt(const Animation& animation, Point2 origin, double reach_
         const double u = to > from ? std::min(1.0, std::max(0.0, (position - from) / (to - from))) : 0.0;
         tilt.angle_deg[frame] = a + u * (b - a);
     }
+    tilt.keys = keys;
     tilt.animation = "<animateTransform attributeName=\"transform\" type=\"rotate\" additive=\"sum\"" +
                      attribute("dur", clock_value(last / animation.fps)) + attribute("values", values) +
                      attribute("keyTimes", key_times_of(keys, frame_count)) + " fill=\"freeze\"/>\n";
     return tilt;
+}
+
+HeadTilt plan_head_tilt_on_canvas(const Animation& animation, Point2 origin, const CanvasBox& canvas,
+                                  double tolerance_px) {
+    // The tilt's share of the tolerance at the farthest point from O: what its key frames leave
+    // over is left to the layers' own key frames, so it is kept small enough that outlines which
+    // only the tilt moves still hold still.
+    constexpr double kTiltShare = 1.0 / 6.0;
+    double reach = 0.0;
+    for (const double x : {canvas.x, canvas.x + canvas.width}) {
+        for (const double y : {canvas.y, canvas.y + canvas.height}) reach = std::max(reach, std::hypot(x - origin.x, y - origin.y));
+    }
+    return plan_head_tilt(animation, origin, reach, kTiltShare * tolerance_px);
 }
 
 std::string open_head_group(const HeadTilt& tilt, const char* id) {

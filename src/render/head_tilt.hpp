@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "render/key_frames.hpp"
+#include "render/layers.hpp"
 #include "talkface/animation.hpp"
 #include "talkface/types.hpp"
 
@@ -30,12 +32,18 @@ struct HeadTilt {
     std::vector<double> angle_deg;  // per frame: the angle the groups show at that frame
     double held_angle_deg = 0.0;    // the angle of a tilt that never changes (a fixed rotate)
     std::string animation;          // the groups' <animateTransform>, empty when the tilt is held
+    KeyFrames keys;                 // the angle's key frames (frames, degrees); none when held
 };
 
 // The tilt of every frame of `animation` as key frames of an angle, within `tolerance_px` of every
 // frame at `reach_px` from O (the farthest a drawn point can be). What the interpolated angle
 // leaves over is drawn, not lost: keep the share small so that rigid outlines hold still.
 HeadTilt plan_head_tilt(const Animation& animation, Point2 origin, double reach_px, double tolerance_px);
+
+// plan_head_tilt() for a head drawn on `canvas` (which holds the face at every pose: its farthest
+// corner from O is the reach) taking its share of an animation's `tolerance_px`.
+HeadTilt plan_head_tilt_on_canvas(const Animation& animation, Point2 origin, const CanvasBox& canvas,
+                                  double tolerance_px);
 
 // The start tag of a head group, `<g id="ID" transform="...">`, with the tilt's animation.
 std::string open_head_group(const HeadTilt& tilt, const char* id);

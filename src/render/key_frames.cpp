@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "common/number_format.hpp"
 
@@ -113,6 +114,30 @@ KeyFrames choose_key_frames(const Track& track, std::size_t frame_count,
         add_key();
     }
     return keys;
+}
+
+void TrackRecorder::start(std::vector<double> first_numbers) {
+    first_ = std::move(first_numbers);
+    track_ = Track{};
+}
+
+void TrackRecorder::add(const std::vector<double>& numbers, std::size_t frame, std::size_t expected_frames) {
+    if (!track_.varies) {
+        if (numbers == first_) return;
+        track_.varies = true;
+        track_.width = first_.size();
+        track_.numbers.reserve(expected_frames * track_.width);
+        for (std::size_t earlier = 0; earlier < frame; ++earlier) {
+            for (const double number : first_) track_.numbers.push_back(static_cast<float>(number));
+        }
+    }
+    for (const double number : numbers) track_.numbers.push_back(static_cast<float>(number));
+}
+
+void TrackRecorder::repeat() {
+    if (!track_.varies) return;
+    const std::size_t last = track_.numbers.size() - track_.width;
+    for (std::size_t k = 0; k < track_.width; ++k) track_.numbers.push_back(track_.numbers[last + k]);
 }
 
 std::string key_times_of(const KeyFrames& keys, std::size_t frame_count) {

@@ -16,6 +16,28 @@ struct Track {
     bool varies = false;
 };
 
+// Records one attribute's numbers frame after frame, cheaply while they hold still: frame 0's
+// numbers are kept apart, and the track only starts at the first frame that differs from them
+// (frame 0's numbers standing in for every frame before it). Both animation encoders that choose
+// key frames from drawn frames (keyframes_encoder.hpp, lottie_layer_encoder.hpp) record with it.
+class TrackRecorder {
+public:
+    // Frame 0's numbers, which fix the width.
+    void start(std::vector<double> first_numbers);
+    // The numbers of frame `frame` (>= 1), as wide as frame 0's; `expected_frames` reserves room
+    // once the track starts.
+    void add(const std::vector<double>& numbers, std::size_t frame, std::size_t expected_frames);
+    // The next frame is the same as the one before.
+    void repeat();
+    const std::vector<double>& first() const { return first_; }
+    std::size_t width() const { return first_.size(); }
+    const Track& track() const { return track_; }
+
+private:
+    std::vector<double> first_;
+    Track track_;
+};
+
 // The key frames of one attribute: where they stand on the frame axis, and their numbers.
 struct KeyFrames {
     std::vector<double> positions;  // in frames, rising from 0 to the last frame

@@ -31,8 +31,9 @@ void KeyframesEncoder::add(const Layer& layer) {
             Slot& slot = slots_[i];
             const NumericAttribute& attribute = first_attributes_[i];
             if (attribute.kind == AttributeKind::path_data) slot.verbs = attribute.path->verbs;
-            append_numbers_as_written(attribute, decimals_, slot.first);
-            slot.width = slot.first.size();
+            std::vector<double> first;
+            append_numbers_as_written(attribute, decimals_, first);
+            slot.numbers.start(std::move(first));
         }
         return;
     }
@@ -47,39 +48,18 @@ void KeyframesEncoder::add(const Layer& layer) {
         const NumericAttribute& attribute = attributes_[i];
         numbers_.clear();
         append_numbers_as_written(attribute, decimals_, numbers_);
-        if (numbers_.size() != slot.width ||
+        if (numbers_.size() != slot.numbers.width() ||
             (attribute.kind == AttributeKind::path_data && attribute.path->verbs != slot.verbs)) {
             throw internal_error("frame " + std::to_string(frame) + " draws attribute " + attribute.name +
                                  " with other path commands or another number of coordinates than frame 0");
         }
-        if (!slot.track.varies) {
-            if (numbers_ == slot.first) continue;
-            start_track(slot, frame);
-        }
-        for (const double number : numbers_) slot.track.numbers.push_back(static_cast<float>(number));
+        slot.numbers.add(numbers_, frame, expected_frames_);
     }
 }
 
 void KeyframesEncoder::add_repeat() {
     if (frame_count_++ == 0) throw internal_error("no frame to repeat");
-    for (Slot& slot : slots_) {
-        Track& track = slot.track;
-        if (!track.varies) continue;
-        const std::size_t last = track.numbers.size() - track.width;
-        for (std::size_t k = 0; k < track.width; ++k) track.numbers.push_back(track.numbers[last + k]);
-    }
-}
-
-// The attribute first differs from frame 0 at `frame`: from now on its numbers are kept, with
-// frame 0's for every frame before.
-void KeyframesEncoder::start_track(Slot& slot, std::size_t frame) {
-    Track& track = slot.track;
-    track.varies = true;
-    track.width = slot.width;
-    track.numbers.reserve(expected_frames_ * track.width);
-    for (std::size_t earlier = 0; earlier < frame; ++earlier) {
-        for (const double number : slot.first) track.numbers.push_back(static_cast<float>(number));
-    }
+    for (Slot& slot : slots_) slot.numbers.repeat();
 }
 
 std::string KeyframesEncoder::finish(const ProgressCallback& progress, double from, double to) const {
@@ -91,15 +71,16 @@ std::string KeyframesEncoder::finish(const ProgressCallback& progress, double fr
                             "encoding", frame_count_);
         }
         const Slot& slot = slots_[i];
-        if (!slot.track.varies) continue;
+        const Track& track = slot.numbers.track();
+        if (!track.varies) continue;
         const NumericAttribute& attribute = first_attributes_[i];
         const TrackForm form{attribute.kind, attribute.name, &slot.verbs};
-        const std::string animation = animate_element(form, slot.track, frame_count_, duration_s, tolerance_);
+        const std::string animation = animate_element(form, track, frame_count_, duration_s, tolerance_);
         AttributeOverride& override = overrides[i];
         override.is_set = true;
         // Outlines only: their numbers are points, and the element takes a transform.
-        if (attribute.kind != AttributeKind::number && slot.width % 2 == 0) {
-            MovedText moved = moved_outline_text(split_motion(slot.track, frame_count_), form, frame_count_,
+        if (attribute.kind != AttributeKind::number && slot.numbers.width() % 2 == 0) {
+            MovedText moved = moved_outline_text(split_motion(track, frame_count_), form, frame_count_,
                                                  duration_s, tolerance_);
             std::string plain;
             append_attribute_value(plain, attribute, decimals_);

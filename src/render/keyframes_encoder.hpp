@@ -38,12 +38,8 @@ public:
 private:
     struct Slot {
         std::vector<PathVerb> verbs;  // path data: the first frame's
-        std::size_t width = 0;        // numbers per frame
-        std::vector<double> first;    // the first frame's numbers, as written
-        Track track;
+        TrackRecorder numbers;        // as written
     };
-
-    void start_track(Slot& slot, std::size_t frame);
 
     double fps_;
     double tolerance_;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "common/number_format.hpp"
+#include "render/animation_frame.hpp"
 #include "render/frames_encoder.hpp"
 #include "render/head_tilt.hpp"
 #include "render/keyframes_encoder.hpp"
@@ -48,22 +49,6 @@ void validate(const Animation& animation, const SvgAnimationOptions& options) {
         encoding != static_cast<int>(AnimationEncoding::frames)) {
         throw InvalidArgument("encoding", "expected keyframes or frames, found " + std::to_string(encoding));
     }
-}
-
-// The tilt's share of the tolerance at the farthest point from O: what its key frames leave over is
-// left to the layers' own key frames (head_tilt.hpp), so it is kept small enough that outlines
-// which only the tilt moves still hold still.
-constexpr double kTiltShare = 1.0 / 6.0;
-
-// The farthest any drawn point can be from `origin`: a corner of the canvas, which holds the face
-// at every pose.
-double reach_px(const CanvasBox& box, Point2 origin) {
-    double reach = 0.0;
-    for (const double x : {box.x, box.x + box.width}) {
-        for (const double y : {box.y, box.y + box.height})
-            reach = std::max(reach, std::hypot(x - origin.x, y - origin.y));
-    }
-    return reach;
 }
 
 }  // namespace
@@ -111,25 +96,14 @@ std::string render_animation(const FaceModel& face, const SvgOptions& svg_option
         bool is_hair_repeat = is_repeat;
         if (!is_repeat) {
             previous = &state;
-            // Built in place: a default ProjectedFace would build the default face first.
-            const ProjectedFace projected = [&] {
-                try {
-                    return project_face(face, state);
-                } catch (const Error&) {
-                    std::throw_with_nested(InvalidArgument(
-                        "animation.frames[" + std::to_string(frame) + "]",
-                        "the face cannot be drawn at " +
-                            format_fixed(static_cast<double>(frame) / animation.fps, 3) + " s"));
-                }
-            }();
+            const ProjectedFace projected = project_animation_frame(face, animation, frame);
             if (frame == 0) {
                 const LayerStyle style{svg_options.decimals, svg_options.stroke_width_in_d * projected.d};
                 if (is_frames) {
                     paints = make_face_paints(projected, style);
                 } else {
                     paints = make_face_paints(projected, LayerStyle{head_decimals, style.stroke_px * kUnitsPerPx});
-                    tilt = plan_head_tilt(animation, projected.origin, reach_px(canvas.box, projected.origin),
-                                          kTiltShare * options.tolerance_px);
+                    tilt = plan_head_tilt_on_canvas(animation, projected.origin, canvas.box, options.tolerance_px);
                 }
                 clothes_layer = layer_group_svg(
                     "clothes",

@@ -11,6 +11,7 @@
 #include "common/number_format.hpp"
 #include "render/face_canvas.hpp"
 #include "render/layers.hpp"
+#include "render/lottie_animation.hpp"
 #include "render/svg_animation.hpp"
 #include "render/svg_document.hpp"
 #include "talkface/errors.hpp"
@@ -122,6 +123,16 @@ std::string SvgAnimator::render_animation_svg(const Animation& animation, const 
 void SvgAnimator::write_animation_svg(const std::string& path, const Animation& animation,
                                       const SvgAnimationOptions& options, const ProgressCallback& progress) const {
     detail::write_file_atomically(path, render_animation_svg(animation, options, progress));
+}
+
+std::string SvgAnimator::render_animation_lottie(const Animation& animation, const LottieOptions& options,
+                                                 const ProgressCallback& progress) const {
+    return detail::render_lottie(impl_->face, impl_->options, impl_->canvas, animation, options, progress);
+}
+
+void SvgAnimator::write_animation_lottie(const std::string& path, const Animation& animation,
+                                         const LottieOptions& options, const ProgressCallback& progress) const {
+    detail::write_file_atomically(path, render_animation_lottie(animation, options, progress));
 }
 
 }  // namespace v0

@@ -1,5 +1,6 @@
-/* The C ABI of the animation as SVG and of the web page, driven from C: both encodings, a page
- * whose hostile texts stay text, refused links, and all-or-nothing writes. */
+/* The C ABI of the animation as SVG and as Lottie and of the web page, driven from C: both
+ * encodings, the Lottie document, a page whose hostile texts stay text, refused links, and
+ * all-or-nothing writes. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,6 +41,37 @@ static int test_animation_svg(const tf_face_model *face, const tf_animation *ani
                      TF_ERR_INVALID_ARGUMENT, "encoding");
     CHECK_FAILS_WITH(tf_write_animation_svg(face, animation, NULL, TF_ENCODING_KEYFRAMES, "/nonexistent/dir/a.svg"),
                      TF_ERR_FILE, "/nonexistent/dir/a.svg");
+    return failures;
+}
+
+static int test_animation_lottie(const tf_face_model *face, const tf_animation *animation) {
+    int failures = 0;
+    char *json = NULL;
+    size_t length = 0;
+    char path[512];
+    FILE *file = NULL;
+    tf_svg_options *options = NULL;
+    CHECK_OK(tf_svg_options_create(&options));
+    CHECK_OK(tf_svg_options_set_background(options, NULL));
+    CHECK_OK(tf_render_animation_lottie(face, animation, options, 0.3, NULL, NULL, &json, &length));
+    CHECK(json != NULL && strlen(json) == length);
+    CHECK(json != NULL && strncmp(json, "{\"v\":\"5.7.4\",\"fr\":25,", 19) == 0);
+    /* The mouth moves (an animated Bezier path); no background layer without a colour. */
+    CHECK(json != NULL && strstr(json, "\"nm\":\"lips\",\"it\":[{\"ty\":\"sh\",\"nm\":\"path\",\"ks\":{\"a\":1,") != NULL);
+    CHECK(json != NULL && strstr(json, "\"nm\":\"background\"") == NULL);
+    tf_free(json);
+    tf_svg_options_destroy(options);
+    CHECK_FAILS_WITH(tf_render_animation_lottie(face, animation, NULL, 0.0, NULL, NULL, &json, NULL),
+                     TF_ERR_INVALID_ARGUMENT, "tolerance_px");
+    CHECK_FAILS_WITH(tf_render_animation_lottie(face, NULL, NULL, 0.3, NULL, NULL, &json, NULL),
+                     TF_ERR_INVALID_ARGUMENT, "animation");
+    snprintf(path, sizeof path, "%s/c_api_face.json", TF_TEST_OUTPUT_DIR);
+    CHECK_OK(tf_write_animation_lottie(face, animation, NULL, 0.3, path));
+    file = fopen(path, "rb");
+    CHECK(file != NULL);
+    if (file != NULL) fclose(file);
+    CHECK_FAILS_WITH(tf_write_animation_lottie(face, animation, NULL, 0.3, "/nonexistent/dir/a.json"), TF_ERR_FILE,
+                     "/nonexistent/dir/a.json");
     return failures;
 }
 
@@ -130,6 +162,7 @@ int main(void) {
     CHECK_OK(tf_animate(face, timeline, simulator, NULL, &animation));
     if (face != NULL && animation != NULL) {
         failures += test_animation_svg(face, animation);
+        failures += test_animation_lottie(face, animation);
         failures += test_web_page(face, animation, timeline);
     }
     tf_animation_destroy(animation);

@@ -1,6 +1,6 @@
 """`talkface export AUDIO TRANSCRIPT -o FILE`: each format from its suffix, each checked by the
 program that reads it (praat reads the TextGrid and counts its intervals, ffprobe reads the
-subtitles), Rhubarb's cues spanning the audio, `--timing` instead of aligning, and refusals that
+subtitles), Rhubarb's cues spanning the audio, the face as Lottie, `--timing` instead of aligning, and refusals that
 name the file and leave nothing behind."""
 import json
 import os
@@ -167,13 +167,26 @@ def test_a_timing_that_parts_from_the_transcript_names_the_place_and_writes_noth
     assert sorted(p.name for p in tmp_path.iterdir()) == ["late.json", "words.json"]
 
 
+def test_lottie_is_the_face_itself_over_the_whole_speech(tmp_path):
+    lottie = json.loads(export(tmp_path, "face.json", "--format", "lottie", "--fps", 20, "--seed", 3).read_text())
+    assert (lottie["fr"], lottie["ip"]) == (20, 0)
+    assert lottie["op"] == int(DURATION_S * 20) + 1  # frame i at i / fps, to the audio's end
+    names = [layer["nm"] for layer in lottie["layers"]]
+    assert names[-1] == "background" and "hair" in names and "clothes" in names
+    assert sum(1 for layer in lottie["layers"] if layer.get("hasMask")) == 2  # the eyeballs
+    # --face takes a face file, as animate's does.
+    missing = run("export", AUDIO, TRANSCRIPT, "-o", "-", "--format", "lottie", "--quiet", "--face",
+                  tmp_path / "missing.xml")
+    assert missing.returncode == 2 and "missing.xml" in missing.stderr
+
+
 def test_format_errors(tmp_path):
     result = run("export", AUDIO, TRANSCRIPT, "-o", tmp_path / "cues.json")
     assert result.returncode == 1 and "name the format" in result.stderr
     result = run("export", AUDIO, TRANSCRIPT, "-o", tmp_path / "cues.xyz")
     assert result.returncode == 1 and 'no export format for suffix ".xyz"' in result.stderr
     assert run("export", AUDIO, TRANSCRIPT, "-o", "-").returncode == 2
-    assert run("export", AUDIO, TRANSCRIPT, "-o", "x.tsv", "--format", "lottie").returncode == 2
+    assert run("export", AUDIO, TRANSCRIPT, "-o", "x.tsv", "--format", "flash").returncode == 2
     assert list(tmp_path.iterdir()) == []
     result = run("export", AUDIO, TRANSCRIPT, "-o", "-", "--format", "rhubarb-tsv", "--quiet")
     assert result.returncode == 0 and result.stdout.startswith("0.00\tX\n")

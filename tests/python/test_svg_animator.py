@@ -1,4 +1,5 @@
 import concurrent.futures
+import json
 import xml.dom.minidom
 
 import pytest
@@ -50,3 +51,29 @@ def test_two_threads_render_at_once(face):
     with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
         rendered = list(pool.map(animator.render_svg, states))
     assert rendered == expected
+
+
+def test_the_animation_as_lottie_moves_the_mouth_and_writes_atomically(face, tmp_path):
+    timeline = talkface.read_transcript("你好。")
+    syllables = timeline.syllables
+    for index, syllable in enumerate(syllables):
+        syllable.start_s, syllable.end_s = 0.3 + 0.3 * index, 0.6 + 0.3 * index
+    timeline.syllables = syllables
+    timeline.duration_s = 1.2
+    animation = talkface.animate(face, timeline, talkface.ExpressionSimulator(timeline, 3))
+    animator = talkface.SvgAnimator(face)
+    lottie = json.loads(animator.render_animation_lottie(animation))
+    assert (lottie["fr"], lottie["ip"], lottie["op"]) == (animation.fps, 0, len(animation.frames))
+    lips = [group for layer in lottie["layers"] for group in layer["shapes"] if group["nm"] == "lips"]
+    assert len(lips) == 1 and lips[0]["it"][0]["ks"]["a"] == 1
+    # A coarser tolerance needs fewer key frames.
+    coarse = json.loads(animator.render_animation_lottie(animation, tolerance_px=3.0))
+    coarse_lips = [group for layer in coarse["layers"] for group in layer["shapes"] if group["nm"] == "lips"]
+    assert len(coarse_lips[0]["it"][0]["ks"]["k"]) < len(lips[0]["it"][0]["ks"]["k"])
+    with pytest.raises(talkface.InvalidArgument, match="tolerance_px"):
+        animator.render_animation_lottie(animation, tolerance_px=-1.0)
+    path = tmp_path / "face.json"
+    animator.write_animation_lottie(path, animation)
+    assert json.loads(path.read_text()) == lottie
+    with pytest.raises(talkface.FileError):
+        animator.write_animation_lottie(tmp_path / "missing" / "face.json", animation)

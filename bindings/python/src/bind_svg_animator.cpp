@@ -206,6 +206,57 @@ Raises:
 Example:
     >>> animator.write_animation_svg("talk.svg", animation)
     >>> open("talk.svg").read(5)
+)doc")
+        .def(
+            "render_animation_lottie",
+            [](const SvgAnimator& animator, const Animation& animation, double tolerance_px) {
+                const Animation animation_copy = animation;
+                LottieOptions options;
+                options.tolerance_px = tolerance_px;
+                py::gil_scoped_release release;
+                return animator.render_animation_lottie(animation_copy, options);
+            },
+            py::arg("animation"), py::arg("tolerance_px") = LottieOptions{}.tolerance_px, R"doc(
+The animation as one Lottie document (a JSON str, as lottie-web, lottie-android, lottie-ios and
+rlottie play it): the same drawing as render_animation_svg() as Lottie shape layers, every moving
+number animated between key frames within tolerance_px of every frame. Lottie carries no sound:
+play the recording beside it. Releases the GIL while it works.
+
+Args:
+    animation (Animation): from talkface.animate().
+    tolerance_px (float): the largest distance between an interpolated coordinate and the frame's (> 0).
+
+Raises:
+    talkface.InvalidArgument: the animation has no frames, or tolerance_px is not > 0.
+
+Example:
+    >>> lottie = json.loads(animator.render_animation_lottie(animation))
+    >>> lottie["fr"]
+)doc")
+        .def(
+            "write_animation_lottie",
+            [](const SvgAnimator& animator, const std::filesystem::path& path, const Animation& animation,
+               double tolerance_px) {
+                const std::string path_text = path.string();
+                const Animation animation_copy = animation;
+                LottieOptions options;
+                options.tolerance_px = tolerance_px;
+                py::gil_scoped_release release;
+                animator.write_animation_lottie(path_text, animation_copy, options);
+            },
+            py::arg("path"), py::arg("animation"), py::arg("tolerance_px") = LottieOptions{}.tolerance_px, R"doc(
+Writes render_animation_lottie() to path through a temporary file and a rename. Releases the GIL.
+
+Args:
+    path (str | os.PathLike): the Lottie JSON file to write.
+    animation (Animation): from talkface.animate().
+    tolerance_px (float): as render_animation_lottie().
+
+Raises:
+    talkface.FileError: it cannot be written; talkface.InvalidArgument: as render_animation_lottie().
+
+Example:
+    >>> animator.write_animation_lottie("talk.json", animation)
 )doc");
 }
 

@@ -1,0 +1,21 @@
+#include "render/animation_frame.hpp"
+
+#include <exception>
+#include <string>
+
+#include "common/number_format.hpp"
+#include "talkface/errors.hpp"
+
+namespace talkface::detail {
+
+ProjectedFace project_animation_frame(const FaceModel& face, const Animation& animation, std::size_t frame) {
+    try {
+        return project_face(face, animation.frames[frame]);
+    } catch (const Error&) {
+        std::throw_with_nested(InvalidArgument(
+            "animation.frames[" + std::to_string(frame) + "]",
+            "the face cannot be drawn at " + format_fixed(static_cast<double>(frame) / animation.fps, 3) + " s"));
+    }
+}
+
+}  // namespace talkface::detail

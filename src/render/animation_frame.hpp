@@ -1,0 +1,20 @@
+// One frame of an Animation projected for drawing, as every animation encoding (SVG, Lottie) draws
+// it: a state that cannot be drawn is an error naming the frame and its time.
+#ifndef TALKFACE_RENDER_ANIMATION_FRAME_HPP
+#define TALKFACE_RENDER_ANIMATION_FRAME_HPP
+
+#include <cstddef>
+
+#include "talkface/animation.hpp"
+#include "talkface/face_pose.hpp"
+
+namespace talkface::detail {
+
+// project_face() of frame `frame` of `animation`.
+// \throws talkface::InvalidArgument naming animation.frames[frame] and its time, with
+//         project_face()'s error nested.
+ProjectedFace project_animation_frame(const FaceModel& face, const Animation& animation, std::size_t frame);
+
+}  // namespace talkface::detail
+
+#endif

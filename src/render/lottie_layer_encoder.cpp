@@ -1,0 +1,440 @@
+#include "render/lottie_layer_encoder.hpp"
+
+#include <cmath>
+#include <utility>
+
+#include "common/json.hpp"
+#include "common/number_format.hpp"
+#include "talkface/errors.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+// Colours and gradient stops are written 0..1 to three digits: a step of 1/255 is 0.004.
+constexpr int kColourDecimals = 3;
+constexpr double kColourTolerance = 0.5 / 255.0;
+// A key time to a thousandth of a frame.
+constexpr int kTimeDecimals = 3;
+
+Error internal_error(const std::string& what) {
+    return Error(ErrorCode::internal, "internal error (a bug in talkface): " + what);
+}
+
+double rounded(double value, int decimals) {
+    const double scale = std::pow(10.0, decimals);
+    return std::round(value * scale) / scale;
+}
+
+// One subpath as Lottie draws it: vertices with absolute in and out controls (a line's controls
+// are its ends). A closed subpath's last segment runs back to its first vertex; the drawing
+// model's closes come after a segment that already ends there, so that segment is of length 0.
+struct Subpath {
+    std::vector<Point2> vertices, in, out;
+    bool closed = false;
+};
+
+std::vector<Subpath> subpaths_of(const Path& path) {
+    std::vector<Subpath> subpaths;
+    Point2 start{0.0, 0.0};
+    const auto begin = [&](Point2 point) {
+        subpaths.push_back({{point}, {point}, {point}, false});
+        start = point;
+    };
+    std::size_t next = 0;
+    const std::vector<Point2>& p = path.points;
+    for (const PathVerb verb : path.verbs) {
+        if (verb == PathVerb::move) {
+            begin(p[next]);
+        } else if (verb == PathVerb::close) {
+            if (!subpaths.empty()) subpaths.back().closed = true;
+        } else {
+            // After a close, SVG goes on from the closed subpath's start.
+            if (subpaths.empty() || subpaths.back().closed) begin(start);
+            Subpath& subpath = subpaths.back();
+            const Point2 from = subpath.vertices.back();
+            Point2 c1 = from, c2 = p[next], end = p[next];
+            if (verb == PathVerb::cubic) {
+                c1 = p[next];
+                c2 = p[next + 1];
+                end = p[next + 2];
+            } else if (verb == PathVerb::quadratic) {
+                // Raised to a cubic, exactly.
+                end = p[next + 1];
+                c1 = {from.x + 2.0 / 3.0 * (p[next].x - from.x), from.y + 2.0 / 3.0 * (p[next].y - from.y)};
+                c2 = {end.x + 2.0 / 3.0 * (p[next].x - end.x), end.y + 2.0 / 3.0 * (p[next].y - end.y)};
+            }
+            subpath.out.back() = c1;
+            subpath.vertices.push_back(end);
+            subpath.in.push_back(c2);
+            subpath.out.push_back(end);
+        }
+        next += static_cast<std::size_t>(points_of(verb));
+    }
+    return subpaths;
+}
+
+// The box of a shape's geometry, for gradients in its bounding box units (SVG objectBoundingBox).
+// Of a path, the box of its points and controls: the curve's own box where the extremes are
+// points, as on the shapes a gradient paints today (circles).
+struct Box {
+    double min_x = HUGE_VAL, min_y = HUGE_VAL, max_x = -HUGE_VAL, max_y = -HUGE_VAL;
+    void add(Point2 point) {
+        min_x = std::min(min_x, point.x);
+        min_y = std::min(min_y, point.y);
+        max_x = std::max(max_x, point.x);
+        max_y = std::max(max_y, point.y);
+    }
+};
+
+void append_points(const std::vector<Point2>& points, int decimals, std::vector<double>& numbers) {
+    for (const Point2& point : points) {
+        numbers.push_back(rounded(point.x, decimals));
+        numbers.push_back(rounded(point.y, decimals));
+    }
+}
+
+void append_number_list(std::string& text, const double* numbers, std::size_t count, int decimals) {
+    text += '[';
+    for (std::size_t k = 0; k < count; ++k) {
+        if (k > 0) text += ',';
+        text += format_fixed(numbers[k], decimals);
+    }
+    text += ']';
+}
+
+// A Bezier path value from its numbers: n vertices, then n in controls, then n out controls,
+// absolute; Lottie's controls are relative to their vertex.
+void append_bezier(std::string& text, const double* numbers, std::size_t width, bool closed, int decimals) {
+    const std::size_t n = width / 6;
+    const auto list = [&](const char* key, std::size_t offset) {
+        text += '"';
+        text += key;
+        text += "\":[";
+        for (std::size_t k = 0; k < n; ++k) {
+            if (k > 0) text += ',';
+            const double x = numbers[offset + 2 * k], y = numbers[offset + 2 * k + 1];
+            const double vx = offset == 0 ? 0.0 : numbers[2 * k], vy = offset == 0 ? 0.0 : numbers[2 * k + 1];
+            text += '[' + format_fixed(x - vx, decimals) + ',' + format_fixed(y - vy, decimals) + ']';
+        }
+        text += ']';
+    };
+    text += '{';
+    list("i", 2 * n);
+    text += ',';
+    list("o", 4 * n);
+    text += ',';
+    list("v", 0);
+    text += closed ? ",\"c\":true}" : ",\"c\":false}";
+}
+
+}  // namespace
+
+// One frame's walk over a layer: every property's numbers in walk order, and (for the first
+// frame) the Lottie text with a placeholder for each property.
+struct LottieLayerEncoder::Frame {
+    struct Value {
+        Form form = Form::vector;
+        bool closed = false;
+        double tolerance = 0.0;
+        int decimals = 0;
+        std::vector<double> numbers;
+    };
+
+    const std::string& name;
+    double tolerance;
+    int decimals;
+    bool write_text;
+    std::vector<Value> values;
+    std::vector<LottieLayerContent> layers;
+    std::vector<std::string> items;  // the current Lottie layer's shapes, in paint order
+
+    // A placeholder for a property of these numbers (rounded to `digits`).
+    std::string property(Form form, bool closed, double property_tolerance, int digits, std::vector<double> numbers) {
+        const std::size_t index = values.size();
+        values.push_back({form, closed, property_tolerance, digits, std::move(numbers)});
+        return write_text ? "\x01" + std::to_string(index) + "\x02" : std::string();
+    }
+
+    std::string bezier(const Subpath& subpath) {
+        std::vector<double> numbers;
+        numbers.reserve(6 * subpath.vertices.size());
+        append_points(subpath.vertices, decimals, numbers);
+        append_points(subpath.in, decimals, numbers);
+        append_points(subpath.out, decimals, numbers);
+        return property(Form::bezier, subpath.closed, tolerance, decimals, std::move(numbers));
+    }
+
+    std::string point(double x, double y) {
+        return property(Form::vector, false, tolerance, decimals, {rounded(x, decimals), rounded(y, decimals)});
+    }
+
+    std::string colour(Rgb rgb) {
+        return property(Form::vector, false, kColourTolerance, kColourDecimals,
+                        {rounded(rgb.r / 255.0, kColourDecimals), rounded(rgb.g / 255.0, kColourDecimals),
+                         rounded(rgb.b / 255.0, kColourDecimals), 1.0});
+    }
+
+    // "s", "e" and "g" of a radial gradient over `box`: centred at (cx, cy) in the box's units,
+    // its last stop at r times the box's width (a circle: SVG's ellipse on a box that is not square
+    // is out of Lottie's reach, and the shapes a gradient paints are round).
+    std::string gradient(const RadialGradient& radial, const Box& box) {
+        const double width = box.max_x - box.min_x, height = box.max_y - box.min_y;
+        const double cx = box.min_x + radial.cx * width, cy = box.min_y + radial.cy * height;
+        std::vector<double> stops;
+        for (const GradientStop& stop : radial.stops) {
+            stops.insert(stops.end(), {rounded(stop.offset, kColourDecimals),
+                                       rounded(stop.colour.r / 255.0, kColourDecimals),
+                                       rounded(stop.colour.g / 255.0, kColourDecimals),
+                                       rounded(stop.colour.b / 255.0, kColourDecimals)});
+        }
+        std::string text = "\"g\":{\"p\":" + std::to_string(radial.stops.size()) + ",\"k\":";
+        text += property(Form::vector, false, kColourTolerance, kColourDecimals, std::move(stops));
+        text += "},\"s\":" + point(cx, cy) + ",\"e\":" + point(cx + radial.r * width, cy);
+        return text + ",\"t\":2,\"h\":{\"a\":0,\"k\":0},\"a\":{\"a\":0,\"k\":0}";
+    }
+
+    // The stroke or fill item of `paint`; empty for none.
+    std::string paint_item(const Layer& layer, const Paint& paint, const Box& box, bool is_stroke, double width) {
+        const std::string line = is_stroke ? ",\"w\":" + property(Form::scalar, false, tolerance, decimals,
+                                                                   {rounded(width, decimals)}) +
+                                                 ",\"lc\":2,\"lj\":2,\"ml\":4"
+                                           : ",\"r\":1";
+        switch (paint.kind) {
+            case PaintKind::none: return {};
+            case PaintKind::colour:
+                return std::string("{\"ty\":\"") + (is_stroke ? "st" : "fl") + "\",\"nm\":\"" +
+                       (is_stroke ? "stroke" : "fill") + "\",\"c\":" + colour(paint.colour) +
+                       ",\"o\":{\"a\":0,\"k\":100}" + line + ",\"bm\":0}";
+            case PaintKind::gradient:
+                return std::string("{\"ty\":\"") + (is_stroke ? "gs" : "gf") + "\",\"nm\":\"" +
+                       (is_stroke ? "stroke" : "fill") + "\",\"o\":{\"a\":0,\"k\":100}," +
+                       gradient(layer.definitions.at(paint.gradient).gradient, box) + line + ",\"bm\":0}";
+        }
+        return {};
+    }
+
+    std::vector<std::string> path_items(const Path& path, Box& box) {
+        std::vector<std::string> shapes;
+        for (const Subpath& subpath : subpaths_of(path)) {
+            for (const Point2& p : subpath.vertices) box.add(p);
+            for (const Point2& p : subpath.in) box.add(p);
+            for (const Point2& p : subpath.out) box.add(p);
+            shapes.push_back("{\"ty\":\"sh\",\"nm\":\"path\",\"ks\":" + bezier(subpath) + "}");
+        }
+        return shapes;
+    }
+
+    // One shape as a group: its geometry, its stroke over its fill, and the group's transform.
+    void add_shape(const Layer& layer, const Shape& shape) {
+        Box box;
+        std::vector<std::string> geometry;
+        switch (shape.kind) {
+            case ShapeKind::path: geometry = path_items(shape.path, box); break;
+            case ShapeKind::reference: geometry = path_items(layer.definitions.at(shape.definition).outline, box); break;
+            case ShapeKind::polyline: {
+                // Open: Lottie fills an open path as if closed, as SVG fills a polyline.
+                Subpath subpath{shape.points, shape.points, shape.points, false};
+                for (const Point2& p : shape.points) box.add(p);
+                geometry.push_back("{\"ty\":\"sh\",\"nm\":\"polyline\",\"ks\":" + bezier(subpath) + "}");
+                break;
+            }
+            case ShapeKind::circle:
+                box.add({shape.centre.x - shape.radius, shape.centre.y - shape.radius});
+                box.add({shape.centre.x + shape.radius, shape.centre.y + shape.radius});
+                geometry.push_back("{\"ty\":\"el\",\"nm\":\"circle\",\"p\":" + point(shape.centre.x, shape.centre.y) +
+                                   ",\"s\":" + point(2.0 * shape.radius, 2.0 * shape.radius) + ",\"d\":1}");
+                break;
+            case ShapeKind::rect:
+                box.add(shape.corner);
+                box.add({shape.corner.x + shape.width, shape.corner.y + shape.height});
+                geometry.push_back("{\"ty\":\"rc\",\"nm\":\"rect\",\"p\":" +
+                                   point(shape.corner.x + 0.5 * shape.width, shape.corner.y + 0.5 * shape.height) +
+                                   ",\"s\":" + point(shape.width, shape.height) + ",\"r\":{\"a\":0,\"k\":0},\"d\":1}");
+                break;
+            case ShapeKind::group: return;  // walk() takes groups apart
+        }
+        const std::string stroke = paint_item(layer, shape.paint.stroke, box, true, shape.paint.stroke_width);
+        const std::string fill = paint_item(layer, shape.paint.fill, box, false, 0.0);
+        if (!write_text) return;
+        std::string group = "{\"ty\":\"gr\",\"nm\":" + json_quoted(shape.name.empty() ? "shape" : shape.name) +
+                            ",\"it\":[";
+        for (const std::string& item : geometry) group += item + ",";
+        if (!stroke.empty()) group += stroke + ",";
+        if (!fill.empty()) group += fill + ",";
+        group += "{\"ty\":\"tr\",\"nm\":\"transform\",\"p\":{\"a\":0,\"k\":[0,0]},\"a\":{\"a\":0,\"k\":[0,0]},"
+                 "\"s\":{\"a\":0,\"k\":[100,100]},\"r\":{\"a\":0,\"k\":0},\"o\":{\"a\":0,\"k\":100},"
+                 "\"sk\":{\"a\":0,\"k\":0},\"sa\":{\"a\":0,\"k\":0}}],\"bm\":0}";
+        items.push_back(std::move(group));
+    }
+
+    // Ends the current Lottie layer (if it drew anything).
+    void close_layer(const std::string& layer_name, std::string masks) {
+        if (items.empty()) return;
+        LottieLayerContent content{layer_name, "[", std::move(masks)};
+        for (std::size_t k = items.size(); k-- > 0;) {
+            content.shapes += items[k];
+            if (k > 0) content.shapes += ',';
+        }
+        content.shapes += ']';
+        items.clear();
+        if (write_text) layers.push_back(std::move(content));
+    }
+
+    void walk(const Layer& layer, const Shape& shape, bool in_clip) {
+        if (shape.kind != ShapeKind::group) {
+            add_shape(layer, shape);
+            return;
+        }
+        if (!shape.is_clipped) {
+            for (const Shape& child : shape.children) walk(layer, child, in_clip);
+            return;
+        }
+        if (in_clip) throw internal_error("a clipped group inside a clipped group has no Lottie form (masks do not nest)");
+        close_layer(name, {});
+        std::string masks = "[";
+        for (const Subpath& subpath : subpaths_of(layer.definitions.at(shape.definition).outline)) {
+            if (masks.size() > 1) masks += ',';
+            masks += "{\"inv\":false,\"mode\":\"a\",\"pt\":" + bezier(subpath) +
+                     ",\"o\":{\"a\":0,\"k\":100},\"x\":{\"a\":0,\"k\":0},\"nm\":\"clip\"}";
+        }
+        masks += ']';
+        for (const Shape& child : shape.children) walk(layer, child, true);
+        close_layer(name + " " + std::string(shape.name.empty() ? "clipped" : shape.name), std::move(masks));
+    }
+
+    void walk(const Layer& layer) {
+        for (const Shape& shape : layer.elements) walk(layer, shape, false);
+        close_layer(name, {});
+    }
+};
+
+LottieLayerEncoder::LottieLayerEncoder(std::string name, double tolerance, int decimals, std::size_t expected_frames)
+    : name_(std::move(name)), tolerance_(tolerance), decimals_(decimals), expected_frames_(expected_frames) {}
+
+void LottieLayerEncoder::add(const Layer& layer) {
+    const std::size_t frame = frame_count_++;
+    Frame walk{name_, tolerance_, decimals_, frame == 0, {}, {}, {}};
+    walk.walk(layer);
+    if (frame == 0) {
+        templates_ = std::move(walk.layers);
+        properties_.resize(walk.values.size());
+        for (std::size_t i = 0; i < properties_.size(); ++i) {
+            Frame::Value& value = walk.values[i];
+            Property& property = properties_[i];
+            property.form = value.form;
+            property.closed = value.closed;
+            property.tolerance = value.tolerance;
+            property.decimals = value.decimals;
+            property.numbers.start(std::move(value.numbers));
+        }
+        return;
+    }
+    if (walk.values.size() != properties_.size()) {
+        throw internal_error("frame " + std::to_string(frame) + " of layer " + name_ + " has " +
+                             std::to_string(walk.values.size()) + " Lottie properties, frame 0 has " +
+                             std::to_string(properties_.size()));
+    }
+    for (std::size_t i = 0; i < properties_.size(); ++i) {
+        const Frame::Value& value = walk.values[i];
+        Property& property = properties_[i];
+        if (value.form != property.form || value.closed != property.closed ||
+            value.numbers.size() != property.numbers.width()) {
+            throw internal_error("frame " + std::to_string(frame) + " of layer " + name_ + " draws property " +
+                                 std::to_string(i) + " with another form or number count than frame 0");
+        }
+        property.numbers.add(value.numbers, frame, expected_frames_);
+    }
+}
+
+void LottieLayerEncoder::add_repeat() {
+    if (frame_count_++ == 0) throw internal_error("no frame to repeat");
+    for (Property& property : properties_) property.numbers.repeat();
+}
+
+std::size_t LottieLayerEncoder::animated_property_count() const {
+    std::size_t count = 0;
+    for (const Property& property : properties_) count += property.numbers.track().varies ? 1 : 0;
+    return count;
+}
+
+std::string LottieLayerEncoder::property_text(const Property& property) const {
+    const auto append_value = [&](std::string& text, const double* numbers, std::size_t width, bool as_keyframe) {
+        switch (property.form) {
+            case Form::scalar:
+                if (as_keyframe) {
+                    append_number_list(text, numbers, 1, property.decimals);
+                } else {
+                    text += format_fixed(numbers[0], property.decimals);
+                }
+                return;
+            case Form::vector: append_number_list(text, numbers, width, property.decimals); return;
+            case Form::bezier:
+                if (as_keyframe) text += '[';
+                append_bezier(text, numbers, width, property.closed, property.decimals);
+                if (as_keyframe) text += ']';
+                return;
+        }
+    };
+    const Track& track = property.numbers.track();
+    const std::size_t width = property.numbers.width();
+    std::string text;
+    if (!track.varies) {
+        text = "{\"a\":0,\"k\":";
+        append_value(text, property.numbers.first().data(), width, false);
+        return text + "}";
+    }
+    const KeyFrames keys =
+        choose_key_frames(track, frame_count_, std::vector<double>(width, property.tolerance));
+    // Linear between keys: a Bezier easing from (0, 0) to (1, 1) with its handles on the line.
+    std::string ease_in = "{\"x\":1,\"y\":1}", ease_out = "{\"x\":0,\"y\":0}";
+    // Bodymovin's habit: one easing number a dimension, except for Bezier paths.
+    if (property.form != Form::bezier) {
+        std::string ones = "[", zeros = "[";
+        for (std::size_t k = 0; k < width; ++k) {
+            ones += k > 0 ? ",1" : "1";
+            zeros += k > 0 ? ",0" : "0";
+        }
+        ease_in = "{\"x\":" + ones + "],\"y\":" + ones + "]}";
+        ease_out = "{\"x\":" + zeros + "],\"y\":" + zeros + "]}";
+    }
+    text = "{\"a\":1,\"k\":[";
+    std::vector<double> numbers(width);
+    for (std::size_t key = 0; key < keys.positions.size(); ++key) {
+        if (key > 0) text += ',';
+        for (std::size_t k = 0; k < width; ++k) numbers[k] = keys.values.numbers[key * width + k];
+        text += "{\"t\":" + format_fixed(keys.positions[key], kTimeDecimals) + ",\"s\":";
+        append_value(text, numbers.data(), width, true);
+        if (key + 1 < keys.positions.size()) text += ",\"i\":" + ease_in + ",\"o\":" + ease_out;
+        text += '}';
+    }
+    return text + "]}";
+}
+
+std::vector<LottieLayerContent> LottieLayerEncoder::finish() const {
+    std::vector<std::string> texts(properties_.size());
+    for (std::size_t i = 0; i < properties_.size(); ++i) texts[i] = property_text(properties_[i]);
+    const auto fill_in = [&](const std::string& pattern) {
+        std::string text;
+        text.reserve(pattern.size());
+        for (std::size_t at = 0; at < pattern.size();) {
+            const std::size_t open = pattern.find('\x01', at);
+            if (open == std::string::npos) {
+                text.append(pattern, at, std::string::npos);
+                break;
+            }
+            const std::size_t close = pattern.find('\x02', open);
+            text.append(pattern, at, open - at);
+            text += texts[std::stoul(pattern.substr(open + 1, close - open - 1))];
+            at = close + 1;
+        }
+        return text;
+    };
+    std::vector<LottieLayerContent> layers;
+    for (const LottieLayerContent& layer : templates_) {
+        layers.push_back({layer.name, fill_in(layer.shapes), layer.masks.empty() ? std::string() : fill_in(layer.masks)});
+    }
+    return layers;
+}
+
+}  // namespace talkface::detail
