@@ -16,6 +16,8 @@ constexpr int kColourDecimals = 3;
 constexpr double kColourTolerance = 0.5 / 255.0;
 // A key time to a thousandth of a frame.
 constexpr int kTimeDecimals = 3;
+// Gradient geometry in a bounding box's units (0..1).
+constexpr int kUnitDecimals = 4;
 
 Error internal_error(const std::string& what) {
     return Error(ErrorCode::internal, "internal error (a bug in talkface): " + what);
@@ -175,22 +177,26 @@ struct LottieLayerEncoder::Frame {
                          rounded(rgb.b / 255.0, kColourDecimals), 1.0});
     }
 
+    // A gradient's "g": its stops' count and their offsets and colours (a property: stops may change).
+    std::string stops(const RadialGradient& radial) {
+        std::vector<double> numbers;
+        for (const GradientStop& stop : radial.stops) {
+            numbers.insert(numbers.end(), {rounded(stop.offset, kColourDecimals),
+                                           rounded(stop.colour.r / 255.0, kColourDecimals),
+                                           rounded(stop.colour.g / 255.0, kColourDecimals),
+                                           rounded(stop.colour.b / 255.0, kColourDecimals)});
+        }
+        return "{\"p\":" + std::to_string(radial.stops.size()) + ",\"k\":" +
+               property(Form::vector, false, kColourTolerance, kColourDecimals, std::move(numbers)) + "}";
+    }
+
     // "s", "e" and "g" of a radial gradient over `box`: centred at (cx, cy) in the box's units,
-    // its last stop at r times the box's width (a circle: SVG's ellipse on a box that is not square
-    // is out of Lottie's reach, and the shapes a gradient paints are round).
+    // its last stop at r times the box's width. Exact on a square box (a circle's); fills of other
+    // shapes take add_fill_in_box(), and a gradient stroke (none is drawn) keeps the width's circle.
     std::string gradient(const RadialGradient& radial, const Box& box) {
         const double width = box.max_x - box.min_x, height = box.max_y - box.min_y;
         const double cx = box.min_x + radial.cx * width, cy = box.min_y + radial.cy * height;
-        std::vector<double> stops;
-        for (const GradientStop& stop : radial.stops) {
-            stops.insert(stops.end(), {rounded(stop.offset, kColourDecimals),
-                                       rounded(stop.colour.r / 255.0, kColourDecimals),
-                                       rounded(stop.colour.g / 255.0, kColourDecimals),
-                                       rounded(stop.colour.b / 255.0, kColourDecimals)});
-        }
-        std::string text = "\"g\":{\"p\":" + std::to_string(radial.stops.size()) + ",\"k\":";
-        text += property(Form::vector, false, kColourTolerance, kColourDecimals, std::move(stops));
-        text += "},\"s\":" + point(cx, cy) + ",\"e\":" + point(cx + radial.r * width, cy);
+        std::string text = "\"g\":" + stops(radial) + ",\"s\":" + point(cx, cy) + ",\"e\":" + point(cx + radial.r * width, cy);
         return text + ",\"t\":2,\"h\":{\"a\":0,\"k\":0},\"a\":{\"a\":0,\"k\":0}";
     }
 
@@ -214,29 +220,71 @@ struct LottieLayerEncoder::Frame {
         return {};
     }
 
-    std::vector<std::string> path_items(const Path& path, Box& box) {
+    // The "sh" items of a path's subpaths; `outlines` gets their Bezier properties (for masks).
+    std::vector<std::string> path_items(const Path& path, Box& box, std::vector<std::string>& outlines) {
         std::vector<std::string> shapes;
         for (const Subpath& subpath : subpaths_of(path)) {
             for (const Point2& p : subpath.vertices) box.add(p);
             for (const Point2& p : subpath.in) box.add(p);
             for (const Point2& p : subpath.out) box.add(p);
-            shapes.push_back("{\"ty\":\"sh\",\"nm\":\"path\",\"ks\":" + bezier(subpath) + "}");
+            outlines.push_back(bezier(subpath));
+            shapes.push_back("{\"ty\":\"sh\",\"nm\":\"path\",\"ks\":" + outlines.back() + "}");
         }
         return shapes;
     }
 
+    static std::string masks_of(const std::vector<std::string>& outlines, const char* name) {
+        std::string masks = "[";
+        for (const std::string& outline : outlines) {
+            if (masks.size() > 1) masks += ',';
+            masks += "{\"inv\":false,\"mode\":\"a\",\"pt\":" + outline +
+                     ",\"o\":{\"a\":0,\"k\":100},\"x\":{\"a\":0,\"k\":0},\"nm\":\"" + name + "\"}";
+        }
+        return masks + "]";
+    }
+
+    // A gradient fill in the bounding box's units as SVG draws it on a box that is not square (an
+    // ellipse, which Lottie's radial gradients are not): a unit square filled with the gradient as a
+    // circle, stretched onto the box by its group's transform, in a layer masked by the shape's
+    // outline. A box of no height or width paints nothing, as in SVG.
+    void add_fill_in_box(const RadialGradient& radial, const Box& box, const std::vector<std::string>& outlines,
+                         const std::string& layer_name) {
+        close_layer(name, {});
+        const std::string gradient_stops = stops(radial);
+        const std::string corner = point(box.min_x, box.min_y);
+        const std::string size = property(Form::vector, false, 100.0 * tolerance, decimals,
+                                          {rounded(100.0 * (box.max_x - box.min_x), decimals),
+                                           rounded(100.0 * (box.max_y - box.min_y), decimals)});
+        if (!write_text) return;
+        const auto unit = [](double value) { return format_fixed(value, kUnitDecimals); };
+        items.push_back(
+            "{\"ty\":\"gr\",\"nm\":\"fill\",\"it\":[{\"ty\":\"rc\",\"nm\":\"box\",\"p\":{\"a\":0,\"k\":[0.5,0.5]},"
+            "\"s\":{\"a\":0,\"k\":[1,1]},\"r\":{\"a\":0,\"k\":0},\"d\":1},{\"ty\":\"gf\",\"nm\":\"fill\","
+            "\"o\":{\"a\":0,\"k\":100},\"g\":" + gradient_stops + ",\"s\":{\"a\":0,\"k\":[" +
+            unit(radial.cx) + "," + unit(radial.cy) + "]},\"e\":{\"a\":0,\"k\":[" + unit(radial.cx + radial.r) + "," +
+            unit(radial.cy) + "]},\"t\":2,\"h\":{\"a\":0,\"k\":0},\"a\":{\"a\":0,\"k\":0},\"r\":1,\"bm\":0},"
+            "{\"ty\":\"tr\",\"nm\":\"transform\",\"p\":" + corner + ",\"a\":{\"a\":0,\"k\":[0,0]},\"s\":" + size +
+            ",\"r\":{\"a\":0,\"k\":0},\"o\":{\"a\":0,\"k\":100},\"sk\":{\"a\":0,\"k\":0},"
+            "\"sa\":{\"a\":0,\"k\":0}}],\"bm\":0}");
+        close_layer(layer_name, masks_of(outlines, "fill"));
+    }
+
     // One shape as a group: its geometry, its stroke over its fill, and the group's transform.
-    void add_shape(const Layer& layer, const Shape& shape) {
+    void add_shape(const Layer& layer, const Shape& shape, bool in_clip) {
         Box box;
         std::vector<std::string> geometry;
+        std::vector<std::string> outlines;
         switch (shape.kind) {
-            case ShapeKind::path: geometry = path_items(shape.path, box); break;
-            case ShapeKind::reference: geometry = path_items(layer.definitions.at(shape.definition).outline, box); break;
+            case ShapeKind::path: geometry = path_items(shape.path, box, outlines); break;
+            case ShapeKind::reference:
+                geometry = path_items(layer.definitions.at(shape.definition).outline, box, outlines);
+                break;
             case ShapeKind::polyline: {
                 // Open: Lottie fills an open path as if closed, as SVG fills a polyline.
                 Subpath subpath{shape.points, shape.points, shape.points, false};
                 for (const Point2& p : shape.points) box.add(p);
-                geometry.push_back("{\"ty\":\"sh\",\"nm\":\"polyline\",\"ks\":" + bezier(subpath) + "}");
+                outlines.push_back(bezier(subpath));
+                geometry.push_back("{\"ty\":\"sh\",\"nm\":\"polyline\",\"ks\":" + outlines.back() + "}");
                 break;
             }
             case ShapeKind::circle:
@@ -245,18 +293,30 @@ struct LottieLayerEncoder::Frame {
                 geometry.push_back("{\"ty\":\"el\",\"nm\":\"circle\",\"p\":" + point(shape.centre.x, shape.centre.y) +
                                    ",\"s\":" + point(2.0 * shape.radius, 2.0 * shape.radius) + ",\"d\":1}");
                 break;
-            case ShapeKind::rect:
+            case ShapeKind::rect: {
                 box.add(shape.corner);
                 box.add({shape.corner.x + shape.width, shape.corner.y + shape.height});
                 geometry.push_back("{\"ty\":\"rc\",\"nm\":\"rect\",\"p\":" +
                                    point(shape.corner.x + 0.5 * shape.width, shape.corner.y + 0.5 * shape.height) +
                                    ",\"s\":" + point(shape.width, shape.height) + ",\"r\":{\"a\":0,\"k\":0},\"d\":1}");
+                const Point2 c = shape.corner;
+                const std::vector<Point2> corners{
+                    c, {c.x + shape.width, c.y}, {c.x + shape.width, c.y + shape.height}, {c.x, c.y + shape.height}};
+                outlines.push_back(bezier(Subpath{corners, corners, corners, true}));
                 break;
+            }
             case ShapeKind::group: return;  // walk() takes groups apart
         }
+        // A circle's box is square: its gradient is Lottie's own. Any other shape's may not be.
+        const bool is_fill_in_box = shape.paint.fill.kind == PaintKind::gradient && shape.kind != ShapeKind::circle;
+        if (is_fill_in_box) {
+            if (in_clip) throw internal_error("a gradient fill inside a clipped group has no Lottie form (masks do not nest)");
+            add_fill_in_box(layer.definitions.at(shape.paint.fill.gradient).gradient, box, outlines,
+                            name + " " + std::string(shape.name.empty() ? "fill" : shape.name));
+        }
         const std::string stroke = paint_item(layer, shape.paint.stroke, box, true, shape.paint.stroke_width);
-        const std::string fill = paint_item(layer, shape.paint.fill, box, false, 0.0);
-        if (!write_text) return;
+        const std::string fill = is_fill_in_box ? std::string() : paint_item(layer, shape.paint.fill, box, false, 0.0);
+        if (!write_text || (stroke.empty() && fill.empty())) return;
         std::string group = "{\"ty\":\"gr\",\"nm\":" + json_quoted(shape.name.empty() ? "shape" : shape.name) +
                             ",\"it\":[";
         for (const std::string& item : geometry) group += item + ",";
@@ -283,7 +343,7 @@ struct LottieLayerEncoder::Frame {
 
     void walk(const Layer& layer, const Shape& shape, bool in_clip) {
         if (shape.kind != ShapeKind::group) {
-            add_shape(layer, shape);
+            add_shape(layer, shape, in_clip);
             return;
         }
         if (!shape.is_clipped) {
@@ -292,13 +352,11 @@ struct LottieLayerEncoder::Frame {
         }
         if (in_clip) throw internal_error("a clipped group inside a clipped group has no Lottie form (masks do not nest)");
         close_layer(name, {});
-        std::string masks = "[";
+        std::vector<std::string> outlines;
         for (const Subpath& subpath : subpaths_of(layer.definitions.at(shape.definition).outline)) {
-            if (masks.size() > 1) masks += ',';
-            masks += "{\"inv\":false,\"mode\":\"a\",\"pt\":" + bezier(subpath) +
-                     ",\"o\":{\"a\":0,\"k\":100},\"x\":{\"a\":0,\"k\":0},\"nm\":\"clip\"}";
+            outlines.push_back(bezier(subpath));
         }
-        masks += ']';
+        std::string masks = masks_of(outlines, "clip");
         for (const Shape& child : shape.children) walk(layer, child, true);
         close_layer(name + " " + std::string(shape.name.empty() ? "clipped" : shape.name), std::move(masks));
     }

@@ -3,6 +3,7 @@
 // tolerance; then a whole animation as one document.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -277,7 +278,16 @@ TEST_SUITE("lottie") {
                 if (group.find("nm")->text == "lips") lips = &group;
             }
         }
-        CHECK(masked == 2);
+        // The eyeballs, clipped by their eye outlines, and the inside of the mouth, whose gradient
+        // stretches over its box: a unit square under a transform that follows the opening.
+        CHECK(masked == 3);
+        const auto mouth_inside = std::find_if(layers.begin(), layers.end(), [](const JsonValue& layer) {
+            return layer.find("nm")->text == "face mouth-opening";
+        });
+        REQUIRE(mouth_inside != layers.end());
+        const JsonValue& box_fill = mouth_inside->find("shapes")->items[0];
+        CHECK(box_fill.find("it")->items[1].find("ty")->text == "gf");
+        CHECK(key_count(*box_fill.find("it")->items[2].find("s")) >= 3);
         REQUIRE(lips != nullptr);
         const JsonValue& lips_path = *lips->find("it")->items[0].find("ks");
         CHECK(key_count(lips_path) >= 3);
