@@ -63,6 +63,13 @@ tf_status tf_frame_options_set_clothes(tf_frame_options* options, int draw_cloth
     });
 }
 
+tf_status tf_frame_options_set_look(tf_frame_options* options, tf_face_look look) {
+    return guard([&] {
+        require_non_null(options, "options");
+        options->options.look = static_cast<talkface::FaceLook>(enum_value(look));
+    });
+}
+
 tf_status tf_frame_options_set_stroke_width_in_d(tf_frame_options* options, double stroke_width_in_d) {
     return guard([&] {
         require_non_null(options, "options");

@@ -45,6 +45,14 @@ tf_status tf_svg_options_set_clothes(tf_svg_options* options, int draw_clothes, 
     });
 }
 
+tf_status tf_svg_options_set_look(tf_svg_options* options, tf_face_look look) {
+    return guard([&] {
+        require_non_null(options, "options");
+        // Checked when rendering, as every option is.
+        options->options.look = static_cast<talkface::FaceLook>(talkface::capi::enum_value(look));
+    });
+}
+
 tf_status tf_svg_options_set_stroke_width_in_d(tf_svg_options* options, double stroke_width_in_d) {
     return guard([&] {
         require_non_null(options, "options");

@@ -149,6 +149,18 @@ tf_status tf_video_look_set_layout(tf_video_look* look, tf_video_layout layout) 
     });
 }
 
+tf_status tf_video_look_set_face_look(tf_video_look* look, tf_face_look face_look) {
+    return guard([&] {
+        require_non_null(look, "look");
+        const int value = enum_value(face_look);
+        if (value != TF_FACE_LOOK_OUTLINED && value != TF_FACE_LOOK_FLAT) {
+            throw talkface::InvalidArgument("face_look", "expected TF_FACE_LOOK_OUTLINED (0) or TF_FACE_LOOK_FLAT (1), "
+                                                         "found " + std::to_string(value));
+        }
+        look->options.frame.look = static_cast<talkface::FaceLook>(value);
+    });
+}
+
 tf_status tf_video_look_set_background(tf_video_look* look, const tf_rgb* colour, const char* image_path) {
     return guard([&] {
         require_non_null(look, "look");

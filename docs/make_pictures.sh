@@ -23,6 +23,8 @@ screenshot() {
 
 "$build_dir/bin/talkface" render -o "$work_dir/face.svg"
 screenshot "$work_dir/face.svg" "$docs_dir/face.png"
+"$build_dir/bin/talkface" render --look flat -o "$work_dir/face-flat.svg"
+screenshot "$work_dir/face-flat.svg" "$docs_dir/face-flat.png"
 
 "$build_dir/samples/pose_sheet/pose_sheet" "$work_dir/contact-sheet.svg"
 screenshot "$work_dir/contact-sheet.svg" "$docs_dir/contact-sheet.png"
@@ -31,7 +33,12 @@ if [ -f "$source_dir/samples/faces/female.xml" ]; then
     "$build_dir/samples/pose_sheet/pose_sheet" "$work_dir/contact-sheet-female.svg" \
         "$source_dir/samples/faces/female.xml"
     screenshot "$work_dir/contact-sheet-female.svg" "$docs_dir/contact-sheet-female.png"
+    "$build_dir/samples/pose_sheet/pose_sheet" "$work_dir/contact-sheet-female-flat.svg" \
+        "$source_dir/samples/faces/female.xml" flat
+    screenshot "$work_dir/contact-sheet-female-flat.svg" "$docs_dir/contact-sheet-female-flat.png"
 fi
+"$build_dir/samples/pose_sheet/pose_sheet" "$work_dir/contact-sheet-flat.svg" default flat
+screenshot "$work_dir/contact-sheet-flat.svg" "$docs_dir/contact-sheet-flat.png"
 
 "$build_dir/samples/mouth_shapes/mouth_shapes" "$work_dir/mouth-shapes.svg"
 screenshot "$work_dir/mouth-shapes.svg" "$docs_dir/mouth-shapes.png"

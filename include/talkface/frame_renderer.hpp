@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "talkface/export.h"
+#include "talkface/face_look.hpp"
 #include "talkface/face_model.hpp"
 #include "talkface/face_pose.hpp"
 #include "talkface/types.hpp"
@@ -52,6 +53,7 @@ struct FrameOptions {
     std::optional<Rgb> background = Rgb{0x1d, 0x3b, 0x5c};
     bool draw_clothes = true;           ///< the clothes layer (neck and shoulders)
     Rgb clothes{0x2f, 0x4f, 0x7f};      ///< clothes colour
+    FaceLook look = FaceLook::outlined; ///< how the shapes are painted (as SvgOptions)
     double stroke_width_in_d = 0.025;   ///< outline width, in units of d (as SvgOptions)
     /// announcer: where the face's rotation origin O (the neck) stands, in frame pixels; unset:
     /// centred, the canvas standing on the bottom edge.

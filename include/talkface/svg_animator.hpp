@@ -14,6 +14,7 @@
 
 #include "talkface/animation.hpp"
 #include "talkface/export.h"
+#include "talkface/face_look.hpp"
 #include "talkface/face_model.hpp"
 #include "talkface/face_pose.hpp"
 #include "talkface/progress.hpp"
@@ -28,7 +29,8 @@ struct SvgOptions {
     std::optional<Rgb> background = Rgb{0xdd, 0xe8, 0xf0};
     bool draw_clothes = true;                 ///< the clothes layer (neck and shoulders)
     Rgb clothes{0x2f, 0x4f, 0x7f};            ///< clothes colour
-    double stroke_width_in_d = 0.025;         ///< outline width, in units of d
+    FaceLook look = FaceLook::outlined;       ///< how the shapes are painted
+    double stroke_width_in_d = 0.025;         ///< outline width, in units of d (FaceLook::outlined)
     int decimals = 2;                         ///< digits after the point in coordinates (0..6)
     /// Canvas size in pixels; 0 fits the face at any pose with a margin (about 4.4 d by 5.2 d).
     int width_px = 0;

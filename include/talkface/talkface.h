@@ -406,6 +406,12 @@ TF_API tf_status tf_projected_face_face(const tf_projected_face *projected, tf_f
  * Rendering (SPEC step 7): SVG 1.1 in layers background, hair, clothes, face.
  * ------------------------------------------------------------------------------------------- */
 
+/* How a face's shapes are painted (talkface::FaceLook). */
+typedef enum tf_face_look {
+    TF_FACE_LOOK_OUTLINED = 0, /* the thesis's cartoon: filled shapes with dark outlines. The default. */
+    TF_FACE_LOOK_FLAT = 1      /* no outlines: flat fills told apart by colour, soft shades */
+} tf_face_look;
+
 /* How a face is drawn. Created by tf_svg_options_create with the defaults (a light blue-grey
  * background, clothes drawn, outline 0.025 d, 2 decimals, canvas fitted to the face); released by
  * tf_svg_options_destroy. Values are checked when rendering. */
@@ -424,6 +430,10 @@ TF_API tf_status tf_svg_options_set_background(tf_svg_options *options, const tf
 /* Draws the clothes layer (neck and shoulders) if draw_clothes is non-zero, in `colour`.
  * Errors: TF_ERR_INVALID_ARGUMENT if options is NULL. */
 TF_API tf_status tf_svg_options_set_clothes(tf_svg_options *options, int draw_clothes, tf_rgb colour);
+
+/* Sets how the shapes are painted. Errors: TF_ERR_INVALID_ARGUMENT if options is NULL (the value
+ * is checked when rendering). */
+TF_API tf_status tf_svg_options_set_look(tf_svg_options *options, tf_face_look look);
 
 /* Sets the outline width, in units of d.
  * Errors: TF_ERR_INVALID_ARGUMENT if options is NULL (the value is checked when rendering). */
@@ -497,6 +507,10 @@ TF_API tf_status tf_frame_options_set_background(tf_frame_options *options, cons
 /* Draws the clothes layer if draw_clothes is non-zero, in `colour`.
  * Errors: TF_ERR_INVALID_ARGUMENT if options is NULL. */
 TF_API tf_status tf_frame_options_set_clothes(tf_frame_options *options, int draw_clothes, tf_rgb colour);
+
+/* Sets how the shapes are painted. Errors: TF_ERR_INVALID_ARGUMENT if options is NULL (the value
+ * is checked by tf_frame_renderer_create). */
+TF_API tf_status tf_frame_options_set_look(tf_frame_options *options, tf_face_look look);
 
 /* Sets the outline width, in units of d. Errors: TF_ERR_INVALID_ARGUMENT if options is NULL. */
 TF_API tf_status tf_frame_options_set_stroke_width_in_d(tf_frame_options *options, double stroke_width_in_d);
@@ -1410,6 +1424,9 @@ TF_API tf_status tf_video_look_set_background(tf_video_look *look, const tf_rgb 
 /* Announcer: where the face's rotation origin O (the neck) stands in the frame, pixels (origin_xy
  * NULL: centred on the bottom edge), and its eye distance d there (0: the canvas as tall as the frame). */
 TF_API tf_status tf_video_look_set_face_placement(tf_video_look *look, const double origin_xy[2], double d_px);
+/* How the face's shapes are painted. Errors: TF_ERR_INVALID_ARGUMENT if look is NULL or face_look is
+ * not a tf_face_look. */
+TF_API tf_status tf_video_look_set_face_look(tf_video_look *look, tf_face_look face_look);
 
 /* Writes a video of `face` playing `animation` with the speech at audio_path (NULL or "": silent):
  * frame k shows the animation at k / fps, as many frames as cover the speech, so the file lasts as

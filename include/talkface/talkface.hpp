@@ -28,6 +28,7 @@
 #include "talkface/expression.hpp"
 #include "talkface/expression_simulator.hpp"
 #include "talkface/face_lift.hpp"
+#include "talkface/face_look.hpp"
 #include "talkface/face_model.hpp"
 #include "talkface/face_pose.hpp"
 #include "talkface/face_video.hpp"

@@ -28,11 +28,13 @@ inline std::string svg_number(double value) {
 }
 
 // `document` (what SvgAnimator::render_svg returns) as a nested <svg> at `cell`. Every id and every
-// url(#...) reference gets `id_prefix`, since the same ids repeat in every cell of a sheet.
+// url(#...) and href="#..." reference gets `id_prefix`, since the same ids repeat in every cell of a
+// sheet.
 inline std::string nest_svg(const std::string& document, const Cell& cell, const std::string& id_prefix) {
     std::string body = std::regex_replace(document, std::regex(R"(<\?xml[^>]*\?>\s*)"), "");
     body = std::regex_replace(body, std::regex(R"( id=")"), " id=\"" + id_prefix);
     body = std::regex_replace(body, std::regex(R"(url\(#)"), "url(#" + id_prefix);
+    body = std::regex_replace(body, std::regex(R"(href="#)"), "href=\"#" + id_prefix);
 
     const std::size_t root_end = body.find('>');
     std::string root = body.substr(0, root_end);

@@ -1,6 +1,7 @@
 // Stage 3 + 7: a contact sheet of poses x expressions, like thesis Figure 2.20.
 //
-//   pose_sheet OUT.svg [FACE.xml]     the built-in default face when no file is given
+//   pose_sheet OUT.svg [FACE.xml [LOOK]]   the built-in face for no file or "default"; LOOK: outlined
+//                                          (the default) or flat
 #include <cstdio>
 #include <exception>
 #include <fstream>
@@ -38,13 +39,16 @@ std::string text(double x, double y, const std::string& content, const char* anc
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 2 || argc > 3) {
-        std::cerr << "usage: pose_sheet OUT.svg [FACE.xml]\n";
+    if (argc < 2 || argc > 4) {
+        std::cerr << "usage: pose_sheet OUT.svg [FACE.xml|default [outlined|flat]]\n";
         return 2;
     }
     try {
         const talkface::FaceModel face =
-            argc == 3 ? talkface::FaceModel::load(argv[2]) : talkface::FaceModel::default_face();
+            argc >= 3 && std::string(argv[2]) != "default" ? talkface::FaceModel::load(argv[2])
+                                                           : talkface::FaceModel::default_face();
+        talkface::SvgOptions options;
+        if (argc == 4) options.look = talkface::face_look_from_name(argv[3]);
         const std::vector<Row> rows{
             {"frontal", {0, 0, 0}},           {"turn beta +15", {0, 15, 0}},
             {"turn beta -15", {0, -15, 0}},   {"nod alpha +15", {15, 0, 0}},
@@ -63,7 +67,7 @@ int main(int argc, char** argv) {
                                           {"brows raised", brows, false},
                                           {"talking (a)", {}, true}};
 
-        const talkface::SvgAnimator animator(face);
+        const talkface::SvgAnimator animator(face, options);
         // Every state of one face shares the canvas, so one cell size fits all.
         const std::string first = animator.render_svg({});
         const auto size_of = [&](const char* name) {

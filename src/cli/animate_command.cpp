@@ -130,9 +130,16 @@ talkface::ExpressionStyle expression_style(const StyleOptions& options) {
     return style;
 }
 
+void add_look_option(CLI::App& command, std::string& look) {
+    command.add_option("--look", look, "How the face is painted: outlined (the thesis's cartoon) or flat (no outlines)")
+        ->check(CLI::IsMember({"outlined", "flat"}))
+        ->capture_default_str();
+}
+
 void add_face_options(CLI::App& command, AnimateOptions& options) {
     command.add_option("--face", options.face_path, "Face model file (default: the built-in face)")
         ->check(CLI::ExistingFile);
+    add_look_option(command, options.look);
     command.add_option("--fps", options.fps, "Frames per second of the animation")
         ->check(CLI::Range(1.0, 120.0))
         ->capture_default_str();
@@ -219,7 +226,9 @@ void make_talking_face(const AnimateOptions& options, const std::string& audio_p
         animate_talking_face(options, audio_path, transcript, progress_part(bar.get(), 0.0, kAnimatedAt));
     const talkface::Timeline& timeline = talking.timeline;
     const talkface::Animation& animation = talking.animation;
-    const talkface::SvgAnimator animator(talking.face);
+    talkface::SvgOptions svg_options;
+    svg_options.look = talkface::face_look_from_name(options.look);
+    const talkface::SvgAnimator animator(talking.face, svg_options);
     // The output is written whole at the end (a temporary file renamed): a failure leaves no page.
     if (is_svg) {
         animator.write_animation_svg(options.output_path, animation, page.animation,

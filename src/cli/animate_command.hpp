@@ -37,6 +37,7 @@ struct AnimateOptions {
     double fps = talkface::LipSyncOptions{}.fps;
     std::uint64_t seed = 0;
     StyleOptions expression;
+    std::string look = "outlined";  // talkface::face_look_name()
     std::string encoding = "keyframes";
     std::string audio = "compressed";  // --audio-embed: compressed, original or link (--link-audio)
     int audio_bitrate = 0;             // --audio-bitrate, bits a second (0: the page's default)
@@ -52,9 +53,12 @@ struct AnimateOptions {
     bool quiet = false;
 };
 
-// Adds --face, --fps, --seed, --style and --without: what every command that animates a face from
-// a speech takes (animate, demo, video).
+// Adds --face, --look, --fps, --seed, --style and --without: what every command that animates a
+// face from a speech takes (animate, demo, video).
 void add_face_options(CLI::App& command, AnimateOptions& options);
+
+// Adds --look (outlined or flat) to a command that draws a face.
+void add_look_option(CLI::App& command, std::string& look);
 
 // Adds the options both page commands take (all but the inputs) to `command`: add_face_options()
 // and the page's own.

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <talkface/talkface.hpp>
 
+#include "animate_command.hpp"
 #include "commands.hpp"
 
 namespace talkface_cli {
@@ -25,6 +26,7 @@ struct RenderOptions {
     double brows = 0.0;
     std::string background = talkface::to_hex(*talkface::SvgOptions{}.background);
     bool no_clothes = false;
+    std::string look = "outlined";
     std::string output_path;
 };
 
@@ -104,6 +106,7 @@ void run_render(const RenderOptions& options) {
     talkface::SvgOptions svg_options;
     svg_options.background = parse_background(options.background);
     svg_options.draw_clothes = !options.no_clothes;
+    svg_options.look = talkface::face_look_from_name(options.look);
     const talkface::SvgAnimator animator(face, svg_options);
     try {
         if (options.output_path == "-") {
@@ -143,6 +146,7 @@ void setup_render_command(CLI::App& app) {
         ->check(background_validator())
         ->capture_default_str();
     render->add_flag("--no-clothes", options->no_clothes, "Leave out the neck and shoulders");
+    add_look_option(*render, options->look);
     render->add_option("-o,--output", options->output_path, "Output SVG file; - writes to stdout")
         ->required();
     render->callback([options] { run_render(*options); });

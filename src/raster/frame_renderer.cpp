@@ -29,6 +29,10 @@ constexpr int kMaxHeightPx = 4320;
 constexpr int kDirtyMarginPx = 2;
 
 void validate(const FrameOptions& options) {
+    if (options.look != FaceLook::outlined && options.look != FaceLook::flat) {
+        throw InvalidArgument("look", "expected FaceLook::outlined or FaceLook::flat, found " +
+                                          std::to_string(static_cast<int>(options.look)));
+    }
     if (options.width_px < 1 || options.width_px > kMaxWidthPx) {
         throw InvalidArgument("width_px", "expected 1.." + std::to_string(kMaxWidthPx) + ", found " +
                                               std::to_string(options.width_px));
@@ -223,7 +227,7 @@ FrameRenderer::FrameRenderer(FaceModel face, FrameOptions options) {
     impl.canvas = detail::fit_face_canvas(face);
     impl.placement = detail::place_face(face, impl.canvas, options);
     const ProjectedFace neutral = project_face(face, FaceState{});
-    const detail::LayerStyle style{2, options.stroke_width_in_d * neutral.d};
+    const detail::LayerStyle style{2, options.stroke_width_in_d * neutral.d, options.look};
     impl.paints = detail::make_face_paints(neutral, style);
     impl.face = std::move(face);
     impl.options = options;

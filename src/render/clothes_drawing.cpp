@@ -46,7 +46,10 @@ Layer draw_clothes_layer(const ProjectedFace& face, const CanvasBox& canvas, Rgb
     Shape neck_shape;
     neck_shape.name = "neck";
     neck_shape.path = std::move(neck);
-    neck_shape.paint = {Paint::of(colors.skin), Paint::of(colors.outline), style.stroke_px};
+    // Without outlines, the neck is a shade of the skin, so that the chin stands out against it.
+    const bool is_flat = style.look == FaceLook::flat;
+    neck_shape.paint = is_flat ? ShapePaint{Paint::of(blend(colors.skin, colors.outline, 0.16)), Paint{}, 0.0}
+                               : ShapePaint{Paint::of(colors.skin), Paint::of(colors.outline), style.stroke_px};
     layer.elements.push_back(std::move(neck_shape));
 
     // A bust: the shoulders round over into the upper arms, which fall to the bottom edge inside
@@ -79,7 +82,8 @@ Layer draw_clothes_layer(const ProjectedFace& face, const CanvasBox& canvas, Rgb
     Shape shirt_shape;
     shirt_shape.name = "shirt";
     shirt_shape.path = std::move(shirt);
-    shirt_shape.paint = {Paint::of(clothes), Paint::of(blend(clothes, Rgb{}, 0.4)), style.stroke_px};
+    shirt_shape.paint = is_flat ? ShapePaint{Paint::of(clothes), Paint{}, 0.0}
+                                : ShapePaint{Paint::of(clothes), Paint::of(blend(clothes, Rgb{}, 0.4)), style.stroke_px};
     layer.elements.push_back(std::move(shirt_shape));
     return layer;
 }

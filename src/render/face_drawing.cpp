@@ -54,7 +54,7 @@ Point2 affine(Point2 origin, Point2 to_a, double s, Point2 to_b, double t) {
 // closes it; its control points round it over the top and down into the lobe. Affine combinations
 // of three projected points: the ear turns, nods and tilts with the head. One segment, as the
 // thesis's arc(10.8, 10.2, A): an animation moves four points per ear.
-constexpr double kEarCurve[4][2] = {{-0.6, 0.05}, {1.9, -0.35}, {1.3, 1.4}, {-0.9, 0.85}};
+constexpr double kEarCurve[4][2] = {{-0.6, 0.05}, {1.9, -0.35}, {0.9, 1.35}, {-0.9, 0.85}};
 
 // Each ear's upper contact point, top and lower contact point (image left, then right).
 constexpr const char* kEarPoints[2][3] = {{"A", "10.2", "10.8"}, {"B", "10.1", "10.7"}};
@@ -74,7 +74,7 @@ std::vector<Shape> draw_ears(const ProjectedFace& face, const FacePaints& paints
         for (int k = 0; k < 4; ++k) curve[k] = affine(contact, to_top, kEarCurve[k][0], to_lobe, kEarCurve[k][1]);
         Path path;
         path.move_to(curve[0]).curves({{curve[1], curve[2], curve[3]}}).close();
-        shapes.push_back(path_shape(names[i], std::move(path), paints.skin));
+        shapes.push_back(path_shape(names[i], std::move(path), paints.ears));
     }
     return shapes;
 }
@@ -347,22 +347,40 @@ std::vector<Point2> hair_layer_points(const ProjectedFace& face, const FacePaint
 
 FacePaints make_face_paints(const ProjectedFace& face, const LayerStyle& style) {
     const FaceColors& colors = face.face.colors();
-    const Paint outline = Paint::of(colors.outline);
     const Paint none;
-    const double stroke = style.stroke_px;
     FacePaints paints;
     paints.style = style;
-    paints.skin = paint_of(Paint::of(colors.skin), outline, stroke);
-    paints.hair = paint_of(Paint::of(colors.hair), Paint::of(blend(colors.hair, Rgb{}, 0.4)), stroke);
-    paints.nose = paint_of(none, outline, stroke);
-    paints.brows = paint_of(Paint::of(colors.brows), Paint::of(colors.brows), 0.5 * stroke);
-    paints.eye_white = paint_of(Paint::of(colors.eye_white), none, 0.0);
-    paints.eye_outline = paint_of(none, outline, stroke);
-    paints.lips = paint_of(Paint::of(colors.lips), outline, stroke);
-    paints.mouth_opening = paint_of(Paint::of(colors.mouth_inside), outline, 0.6 * stroke);
-    paints.mouth_inside_gradient = mouth_inside_gradient(colors);
-    paints.iris_gradient = iris_gradient(colors.iris);
     for (std::size_t i = 0; i < face.points.size(); ++i) paints.point_index.emplace(face.points[i].id, i);
+    if (style.look == FaceLook::flat) {
+        // No outlines: what an outline told apart, a shade of the skin tells apart here (the ears
+        // and, in the clothes layer, the neck, which meet the face's own skin).
+        const Rgb shade = blend(colors.skin, colors.outline, 0.16);
+        paints.skin = paint_of(Paint::of(colors.skin), none, 0.0);
+        paints.ears = paint_of(Paint::of(shade), none, 0.0);
+        paints.hair = paint_of(Paint::of(colors.hair), none, 0.0);
+        paints.nose = paint_of(Paint::of(blend(colors.skin, colors.outline, 0.55)), none, 0.0);
+        paints.nose_shade = paint_of(Paint::of(blend(colors.skin, colors.outline, 0.1)), none, 0.0);
+        paints.brows = paint_of(Paint::of(colors.brows), none, 0.0);
+        paints.eye_white = paint_of(Paint::of(colors.eye_white), none, 0.0);
+        paints.eye_outline = paint_of(none, none, 0.0);
+        paints.lips = paint_of(Paint::of(colors.lips), none, 0.0);
+        paints.mouth_opening = paint_of(Paint::of(colors.mouth_inside), none, 0.0);
+        paints.iris_gradient = {0.5, 0.5, 0.5, {{0.0, colors.iris}, {0.75, colors.iris}, {1.0, blend(colors.iris, Rgb{}, 0.3)}}};
+    } else {
+        const Paint outline = Paint::of(colors.outline);
+        const double stroke = style.stroke_px;
+        paints.skin = paint_of(Paint::of(colors.skin), outline, stroke);
+        paints.ears = paints.skin;
+        paints.hair = paint_of(Paint::of(colors.hair), Paint::of(blend(colors.hair, Rgb{}, 0.4)), stroke);
+        paints.nose = paint_of(none, outline, stroke);
+        paints.brows = paint_of(Paint::of(colors.brows), Paint::of(colors.brows), 0.5 * stroke);
+        paints.eye_white = paint_of(Paint::of(colors.eye_white), none, 0.0);
+        paints.eye_outline = paint_of(none, outline, stroke);
+        paints.lips = paint_of(Paint::of(colors.lips), outline, stroke);
+        paints.mouth_opening = paint_of(Paint::of(colors.mouth_inside), outline, 0.6 * stroke);
+        paints.iris_gradient = iris_gradient(colors.iris);
+    }
+    paints.mouth_inside_gradient = mouth_inside_gradient(colors);
     return paints;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "render/drawing.hpp"
+#include "talkface/face_look.hpp"
 #include "talkface/face_pose.hpp"
 #include "talkface/types.hpp"
 
@@ -19,6 +20,7 @@ namespace talkface::detail {
 struct LayerStyle {
     int decimals = 2;        // digits after the point when the layer is written as SVG
     double stroke_px = 1.0;  // outline width, in the drawing's units
+    FaceLook look = FaceLook::outlined;
 };
 
 // The canvas in the face's image pixels (the SVG user space is the face's image space).
@@ -57,7 +59,7 @@ private:
 struct FacePaints {
     LayerStyle style;  // in the view's units
     ViewMap view;
-    ShapePaint skin, hair, nose, brows, eye_white, eye_outline, lips, mouth_opening;
+    ShapePaint skin, ears, hair, nose, brows, eye_white, eye_outline, lips, mouth_opening;
     ShapePaint nose_shade;  // none: no shade
     RadialGradient iris_gradient;            // of both irises
     RadialGradient mouth_inside_gradient;    // teeth, the dark, the tongue, teeth (face_drawing.cpp)

@@ -98,11 +98,11 @@ std::string render_animation(const FaceModel& face, const SvgOptions& svg_option
             previous = &state;
             const ProjectedFace projected = project_animation_frame(face, animation, frame);
             if (frame == 0) {
-                const LayerStyle style{svg_options.decimals, svg_options.stroke_width_in_d * projected.d};
+                const LayerStyle style{svg_options.decimals, svg_options.stroke_width_in_d * projected.d, svg_options.look};
                 if (is_frames) {
                     paints = make_face_paints(projected, style);
                 } else {
-                    paints = make_face_paints(projected, LayerStyle{head_decimals, style.stroke_px * kUnitsPerPx});
+                    paints = make_face_paints(projected, LayerStyle{head_decimals, style.stroke_px * kUnitsPerPx, style.look});
                     tilt = plan_head_tilt_on_canvas(animation, projected.origin, canvas.box, options.tolerance_px);
                 }
                 clothes_layer = layer_group_svg(

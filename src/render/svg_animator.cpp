@@ -23,6 +23,10 @@ namespace {
 
 constexpr int kMaxDecimals = 6;
 void validate(const SvgOptions& options) {
+    if (options.look != FaceLook::outlined && options.look != FaceLook::flat) {
+        throw InvalidArgument("look", "expected FaceLook::outlined or FaceLook::flat, found " +
+                                          std::to_string(static_cast<int>(options.look)));
+    }
     if (options.decimals < 0 || options.decimals > kMaxDecimals) {
         throw InvalidArgument("decimals", "expected 0.." + std::to_string(kMaxDecimals) + ", found " +
                                               std::to_string(options.decimals));
@@ -93,7 +97,7 @@ const SvgOptions& SvgAnimator::options() const { return impl_->options; }
 std::string SvgAnimator::render_svg(const FaceState& state) const {
     const ProjectedFace projected = project_face(impl_->face, state);
     const SvgOptions& options = impl_->options;
-    const detail::LayerStyle style{options.decimals, options.stroke_width_in_d * projected.d};
+    const detail::LayerStyle style{options.decimals, options.stroke_width_in_d * projected.d, options.look};
     // The user space is the face's own image space: a caller can crop or place a document with
     // points from project_face() (the samples zoom on the mouth that way).
     const int decimals = options.decimals;

@@ -36,6 +36,20 @@ static int test_a_frame_fills_the_callers_buffer(void) {
     CHECK(pixels[0] == 10 && pixels[1] == 20 && pixels[2] == 30 && pixels[3] == 255);
     CHECK(pixels[170 * stride + 4 * 160] == 200 && pixels[170 * stride + 4 * 160 + 1] == 100);
     CHECK(pixels[4 * 320] == 0xab && pixels[stride - 1] == 0xab);
+    /* The flat look draws the same frame without outlines: other pixels, the same background. */
+    {
+        tf_frame_renderer *flat = NULL;
+        uint8_t *flat_pixels = malloc(stride * 180);
+        CHECK_OK(tf_frame_options_set_look(options, TF_FACE_LOOK_FLAT));
+        CHECK_OK(tf_frame_renderer_create(face, options, &flat));
+        CHECK_OK(tf_frame_renderer_render_rgba(flat, state, flat_pixels, stride));
+        CHECK(flat_pixels[0] == 10 && flat_pixels[1] == 20 && flat_pixels[2] == 30);
+        CHECK(memcmp(pixels, flat_pixels, stride * 180) != 0);
+        tf_frame_renderer_destroy(flat);
+        free(flat_pixels);
+        CHECK_OK(tf_frame_options_set_look(options, (tf_face_look)7));
+        CHECK_FAILS_WITH(tf_frame_renderer_create(face, options, &flat), TF_ERR_INVALID_ARGUMENT, "look");
+    }
     tf_face_state_destroy(state);
     tf_frame_renderer_destroy(renderer);
     tf_frame_options_destroy(options);

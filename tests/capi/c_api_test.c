@@ -290,6 +290,17 @@ static int test_render_returns_an_svg_of_the_stated_length(void) {
     CHECK_FAILS_WITH(tf_write_svg(face, state, NULL, "/nonexistent/talkface/face.svg"), TF_ERR_FILE,
                      "/nonexistent/talkface/face.svg");
 
+    /* The flat look: no outline anywhere; a look that is not one is refused when rendering. */
+    CHECK_OK(tf_svg_options_set_look(options, TF_FACE_LOOK_FLAT));
+    CHECK_OK(tf_render_svg(face, state, options, &svg, NULL));
+    CHECK(svg != NULL && strstr(svg, "stroke-width") == NULL);
+    tf_free(svg);
+    svg = NULL;
+    CHECK_OK(tf_svg_options_set_look(options, (tf_face_look)7));
+    CHECK_FAILS_WITH(tf_render_svg(face, state, options, &svg, NULL), TF_ERR_INVALID_ARGUMENT, "look");
+    CHECK(svg == NULL);
+    CHECK_OK(tf_svg_options_set_look(options, TF_FACE_LOOK_OUTLINED));
+
     CHECK_OK(tf_svg_options_set_decimals(options, 99));
     svg = NULL;
     CHECK(tf_render_svg(face, state, options, &svg, NULL) == TF_ERR_INVALID_ARGUMENT);

@@ -46,6 +46,14 @@ def test_background_none_and_no_clothes_empty_those_layers():
     assert len(groups["clothes"]) == 0
 
 
+def test_look_flat_draws_without_outlines_and_an_unknown_look_is_a_usage_error():
+    result = run("render", "--look", "flat", "-o", "-")
+    assert result.returncode == 0, result.stderr
+    assert "stroke-width" not in result.stdout
+    assert "stroke-width" in run("render", "-o", "-").stdout
+    assert run("render", "--look", "sketch", "-o", "-").returncode == 2
+
+
 def test_help_exits_0_and_lists_exit_codes():
     result = run("--help")
     assert result.returncode == 0

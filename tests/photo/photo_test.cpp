@@ -297,13 +297,15 @@ TEST_CASE("closed loop: a face seen turned far to one side is refused as not fro
     // frontal face's no more than real frontal photos do: the reach differs by 13 % between the two
     // sides of the rendered face, by 11 % on astronaut.png (docs/photo.md). So such a photo is
     // accepted. A farther turn is drawn here as the renderer's 15 degrees with the receding cheek,
-    // jaw and ear pulled in by a further 0.35 d. The window is narrow: pulled in by 0.3 d the face is
-    // still accepted, by 0.45 d Haar's frontal cascade no longer finds it ("no face found").
+    // jaw and ear pulled in by a further 0.28 d. The window is narrow and moves with the drawing:
+    // with the thesis's drawing 0.35 d was refused and 0.3 d accepted; with issue 17's (rounded ears
+    // under the hair, the new nose, teeth) 0.24 d and 0.28 d are refused, and from 0.32 d Haar's
+    // frontal cascade no longer finds the face ("no face found").
     FaceModel face = FaceModel::default_face();
     const double d = face.fapu("d");
     for (const char* id : {"11.2", "10.10", "2.14", "10.2", "10.8"}) {
         const Point2 at = face.point(id);
-        face.set_point(id, {at.x + 0.35 * d, at.y});
+        face.set_point(id, {at.x + 0.28 * d, at.y});
     }
     FaceState state;
     state.pose.beta_deg = 15.0;

@@ -16,6 +16,17 @@ def test_a_frame_is_an_rgba_array_of_the_frame_size(face):
     assert renderer.options.layout == talkface.FrameLayout.announcer
 
 
+def test_the_flat_look_draws_the_same_face_without_outlines(face):
+    outlined = talkface.FrameRenderer(face, talkface.FrameOptions(width_px=320, height_px=180))
+    flat = talkface.FrameRenderer(face, talkface.FrameOptions(width_px=320, height_px=180,
+                                                               look=talkface.FaceLook.flat))
+    assert flat.options.look == talkface.FaceLook.flat
+    a = outlined.render_frame_rgba(talkface.FaceState()).astype(int)
+    b = flat.render_frame_rgba(talkface.FaceState()).astype(int)
+    assert tuple(b[0, 0]) == tuple(a[0, 0])
+    assert numpy.abs(a - b).max(axis=2).astype(bool).sum() > 200
+
+
 def test_the_mouth_region_changes_with_the_mouth_shape(face):
     renderer = talkface.FrameRenderer(face, talkface.FrameOptions(width_px=640, height_px=360))
     open_mouth = talkface.FaceState()

@@ -23,6 +23,15 @@ def test_options_are_kept_and_change_the_drawing(face):
     assert animator.render_svg(talkface.FaceState()) != plain
 
 
+def test_the_flat_look_draws_no_outline(face):
+    options = talkface.SvgOptions(look=talkface.FaceLook.flat)
+    assert options.look == talkface.FaceLook.flat
+    assert "look=FaceLook.flat" in repr(options)
+    flat = talkface.SvgAnimator(face, options).render_svg(talkface.FaceState())
+    assert "stroke-width" not in flat
+    assert "stroke-width" in talkface.SvgAnimator(face).render_svg(talkface.FaceState())
+
+
 def test_out_of_range_option_is_named(face):
     with pytest.raises(talkface.InvalidArgument, match="decimals"):
         talkface.SvgAnimator(face, talkface.SvgOptions(decimals=99))

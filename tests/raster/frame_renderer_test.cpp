@@ -177,11 +177,16 @@ TEST_SUITE("FrameRenderer") {
             const FaceModel face = *face_file ? FaceModel::load(test::source_path(face_file)) : FaceModel::default_face();
             const std::vector<FaceState> states = test_states(face);
             for (const auto& size : sizes) {
+              // The flat look at one size: the same shapes, other paints.
+              for (const FaceLook look : {FaceLook::outlined, FaceLook::flat}) {
+                if (look == FaceLook::flat && size[0] != 318) continue;
                 SvgOptions svg_options;
                 svg_options.width_px = size[0];
                 svg_options.height_px = size[1];
+                svg_options.look = look;
                 const SvgAnimator animator(face, svg_options);
                 FrameOptions options;
+                options.look = look;
                 options.layout = FrameLayout::face;
                 options.background = svg_options.background;
                 options.width_px = size[0];
@@ -189,7 +194,8 @@ TEST_SUITE("FrameRenderer") {
                 FrameRenderer renderer(face, options);
                 for (std::size_t i = 0; i < states.size(); ++i) {
                     const std::string name = std::string("raster-") + (*face_file ? "female" : "default") + "-" +
-                                             std::to_string(size[0]) + "-" + std::to_string(i);
+                                             face_look_name(look) + "-" + std::to_string(size[0]) + "-" +
+                                             std::to_string(i);
                     CAPTURE(name);
                     const Image frame = frame_of(renderer, states[i]);
                     const Image reference = rasterise_svg(animator, states[i], name);
@@ -203,6 +209,7 @@ TEST_SUITE("FrameRenderer") {
                     CHECK(d.mean < kMaxMeanDifference);
                     CHECK(d.share_far < kMaxShareFar);
                 }
+              }
             }
         }
     }

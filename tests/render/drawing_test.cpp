@@ -2,7 +2,9 @@
 // renderer rely on.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -14,7 +16,9 @@
 #include "render/svg_writer.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/face_model.hpp"
+#include "talkface/face_look.hpp"
 #include "talkface/face_pose.hpp"
+#include "talkface/mouth_shape.hpp"
 
 using namespace talkface;
 using namespace talkface::detail;
@@ -130,5 +134,34 @@ TEST_SUITE("drawing model") {
         std::string still;
         write_layer_svg(layer, SvgLayerOptions{1, {}, nullptr}, still);
         CHECK(encoder.finish({}, 0.0, 1.0) == still);
+    }
+
+    TEST_CASE("the flat look draws no outline, and tells the ears and the nose apart by colour") {
+        const FaceModel face = FaceModel::default_face();
+        FaceState state;
+        state.mouth = mouth_controls(face, MouthShape::a);
+        const ProjectedFace projected = project_face(face, state);
+        const FacePaints flat = make_face_paints(projected, LayerStyle{2, 1.5, FaceLook::flat});
+        const FacePaints outlined = make_face_paints(projected, LayerStyle{2, 1.5, FaceLook::outlined});
+        std::size_t strokes = 0;
+        std::function<void(const Shape&)> count = [&](const Shape& shape) {
+            strokes += shape.paint.stroke.kind != PaintKind::none;
+            for (const Shape& child : shape.children) count(child);
+        };
+        for (const Layer& layer : {draw_hair_layer(projected, flat), draw_face_layer(projected, flat),
+                                   draw_clothes_layer(projected, CanvasBox{0, 0, 400, 400}, Rgb{}, flat.style)}) {
+            for (const Shape& shape : layer.elements) count(shape);
+        }
+        CHECK(strokes == 0);
+        CHECK_FALSE(flat.ears.fill.colour == flat.skin.fill.colour);
+        CHECK(outlined.ears.fill.colour == outlined.skin.fill.colour);
+        CHECK(outlined.ears.stroke.kind == PaintKind::colour);
+        // The nose is its shade and nostrils when nothing outlines it.
+        const Layer layer = draw_face_layer(projected, flat);
+        CHECK(std::any_of(layer.elements.begin(), layer.elements.end(),
+                          [](const Shape& shape) { return shape.name == "nose-shade"; }));
+        CHECK(face_look_from_name(face_look_name(FaceLook::flat)) == FaceLook::flat);
+        CHECK(face_look_from_name("outlined") == FaceLook::outlined);
+        CHECK_THROWS_AS(face_look_from_name("sketch"), InvalidArgument);
     }
 }

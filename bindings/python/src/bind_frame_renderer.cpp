@@ -35,7 +35,7 @@ Example:
 )doc")
         .def(py::init([](int width_px, int height_px, FrameLayout layout, std::optional<Rgb> background,
                          bool draw_clothes, Rgb clothes, double stroke_width_in_d, std::optional<Point2> face_origin_px,
-                         double face_d_px, AlphaMode alpha) {
+                         double face_d_px, AlphaMode alpha, FaceLook look) {
                  FrameOptions options;
                  options.width_px = width_px;
                  options.height_px = height_px;
@@ -47,6 +47,7 @@ Example:
                  options.face_origin_px = face_origin_px;
                  options.face_d_px = face_d_px;
                  options.alpha = alpha;
+                 options.look = look;
                  return options;
              }),
              py::arg("width_px") = FrameOptions{}.width_px, py::arg("height_px") = FrameOptions{}.height_px,
@@ -54,7 +55,8 @@ Example:
              py::arg("draw_clothes") = FrameOptions{}.draw_clothes, py::arg("clothes") = FrameOptions{}.clothes,
              py::arg("stroke_width_in_d") = FrameOptions{}.stroke_width_in_d,
              py::arg("face_origin_px") = FrameOptions{}.face_origin_px,
-             py::arg("face_d_px") = FrameOptions{}.face_d_px, py::arg("alpha") = FrameOptions{}.alpha, R"doc(
+             py::arg("face_d_px") = FrameOptions{}.face_d_px, py::arg("alpha") = FrameOptions{}.alpha,
+             py::arg("look") = FrameOptions{}.look, R"doc(
 Args:
     width_px, height_px (int): frame size, 1..7680 by 1..4320.
     layout (FrameLayout): announcer (the face on a stage, the default) or face.
@@ -66,6 +68,7 @@ Args:
         frame pixels; None: centred, standing on the bottom edge.
     face_d_px (float): announcer: the face's eye distance d in frame pixels; 0: as tall as the frame.
     alpha (AlphaMode): straight (the default) or premultiplied.
+    look (FaceLook): outlined (the thesis's cartoon, the default) or flat (no outlines).
 
 Raises:
     talkface.InvalidArgument: a colour is not "#rrggbb" or "#rgb".
@@ -79,6 +82,7 @@ Example:
         .def_readwrite("background", &FrameOptions::background, "\"#rrggbb\" or None (transparent)")
         .def_readwrite("draw_clothes", &FrameOptions::draw_clothes, "draw the clothes layer")
         .def_readwrite("clothes", &FrameOptions::clothes, "clothes colour, \"#rrggbb\"")
+        .def_readwrite("look", &FrameOptions::look, "how the shapes are painted (FaceLook)")
         .def_readwrite("stroke_width_in_d", &FrameOptions::stroke_width_in_d, "outline width, units of d")
         .def_readwrite("face_origin_px", &FrameOptions::face_origin_px, "announcer: O in frame pixels, or None")
         .def_readwrite("face_d_px", &FrameOptions::face_d_px, "announcer: d in frame pixels (0: fit the height)")
@@ -86,9 +90,9 @@ Example:
         .def("__repr__", [](const FrameOptions& o) {
             return py::str("talkface.FrameOptions(width_px={!r}, height_px={!r}, layout={}, background={!r}, "
                            "draw_clothes={!r}, clothes={!r}, stroke_width_in_d={!r}, face_origin_px={!r}, "
-                           "face_d_px={!r}, alpha={})")
+                           "face_d_px={!r}, alpha={}, look={})")
                 .format(o.width_px, o.height_px, py::cast(o.layout), o.background, o.draw_clothes, o.clothes,
-                        o.stroke_width_in_d, o.face_origin_px, o.face_d_px, py::cast(o.alpha));
+                        o.stroke_width_in_d, o.face_origin_px, o.face_d_px, py::cast(o.alpha), py::cast(o.look));
         });
 
     py::class_<SharedFrameRenderer>(m, "FrameRenderer", R"doc(

@@ -1,9 +1,12 @@
-// SvgOptions, SvgAnimationOptions and SvgAnimator in Python; rendering runs without the GIL.
+// FaceLook, SvgOptions, SvgAnimationOptions and SvgAnimator in Python; rendering runs without the GIL.
 #include "bind.hpp"
 
 namespace talkface::python {
 
 void bind_svg_animator(py::module_& m) {
+    py::enum_<FaceLook>(m, "FaceLook", "How a face's shapes are painted (SvgOptions.look, FrameOptions.look).")
+        .value("outlined", FaceLook::outlined, "the thesis's cartoon: filled shapes with dark outlines (the default)")
+        .value("flat", FaceLook::flat, "no outlines: flat fills told apart by colour, soft shades");
     py::class_<SvgOptions>(m, "SvgOptions", R"doc(
 How a face is drawn; checked when an SvgAnimator is made. Colours are "#rrggbb" strings.
 
@@ -12,11 +15,12 @@ Example:
     >>> talkface.SvgAnimator(face, options)
 )doc")
         .def(py::init([](std::optional<Rgb> background, bool draw_clothes, Rgb clothes,
-                         double stroke_width_in_d, int decimals, int width_px, int height_px) {
+                         double stroke_width_in_d, int decimals, int width_px, int height_px, FaceLook look) {
                  SvgOptions options;
                  options.background = background;
                  options.draw_clothes = draw_clothes;
                  options.clothes = clothes;
+                 options.look = look;
                  options.stroke_width_in_d = stroke_width_in_d;
                  options.decimals = decimals;
                  options.width_px = width_px;
@@ -27,7 +31,7 @@ Example:
              py::arg("draw_clothes") = SvgOptions{}.draw_clothes, py::arg("clothes") = SvgOptions{}.clothes,
              py::arg("stroke_width_in_d") = SvgOptions{}.stroke_width_in_d,
              py::arg("decimals") = SvgOptions{}.decimals, py::arg("width_px") = SvgOptions{}.width_px,
-             py::arg("height_px") = SvgOptions{}.height_px, R"doc(
+             py::arg("height_px") = SvgOptions{}.height_px, py::arg("look") = SvgOptions{}.look, R"doc(
 Args:
     background (str | None): background colour "#rrggbb"; None leaves it transparent.
     draw_clothes (bool): draw the clothes layer (neck and shoulders).
@@ -35,6 +39,7 @@ Args:
     stroke_width_in_d (float): outline width, in units of d (eyeball distance).
     decimals (int): digits after the point in coordinates, 0..6.
     width_px, height_px (int): canvas size, pixels; 0 fits the face at any pose with a margin.
+    look (FaceLook): outlined (the thesis's cartoon, the default) or flat (no outlines).
 
 Raises:
     talkface.InvalidArgument: a colour is not "#rrggbb" or "#rgb".
@@ -46,6 +51,7 @@ Example:
         .def_readwrite("background", &SvgOptions::background, "\"#rrggbb\" or None (transparent)")
         .def_readwrite("draw_clothes", &SvgOptions::draw_clothes, "draw the clothes layer")
         .def_readwrite("clothes", &SvgOptions::clothes, "clothes colour, \"#rrggbb\"")
+        .def_readwrite("look", &SvgOptions::look, "how the shapes are painted (FaceLook)")
         .def_readwrite("stroke_width_in_d", &SvgOptions::stroke_width_in_d, "outline width, units of d")
         .def_readwrite("decimals", &SvgOptions::decimals, "digits after the point (0..6)")
         .def_readwrite("width_px", &SvgOptions::width_px, "canvas width, pixels (0 = fit)")
@@ -53,9 +59,9 @@ Example:
         .def("__repr__", [](const SvgOptions& o) {
             return py::str(
                        "talkface.SvgOptions(background={!r}, draw_clothes={!r}, clothes={!r}, "
-                       "stroke_width_in_d={!r}, decimals={!r}, width_px={!r}, height_px={!r})")
+                       "stroke_width_in_d={!r}, decimals={!r}, width_px={!r}, height_px={!r}, look={})")
                 .format(o.background, o.draw_clothes, o.clothes, o.stroke_width_in_d, o.decimals, o.width_px,
-                        o.height_px);
+                        o.height_px, py::cast(o.look));
         });
 
     py::enum_<AnimationEncoding>(m, "AnimationEncoding", R"doc(
