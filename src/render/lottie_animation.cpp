@@ -80,7 +80,7 @@ std::string render_lottie(const FaceModel& face, const SvgOptions& svg_options, 
         previous = &state;
         const ProjectedFace projected = project_animation_frame(face, animation, frame);
         if (frame == 0) {
-            const LayerStyle style{decimals, svg_options.stroke_width_in_d * projected.d};
+            const LayerStyle style{decimals, svg_options.stroke_width_in_d * projected.d, svg_options.look};
             paints = make_face_paints(projected, style);
             clothes.add(svg_options.draw_clothes ? draw_clothes_layer(projected, canvas.box, svg_options.clothes, style)
                                                  : Layer());
