@@ -53,7 +53,7 @@ struct Scene {
     talkface::FrameOptions options;
     talkface::detail::CanvasBox canvas;
     talkface::detail::FramePlacement placement;
-    talkface::detail::FaceLook look;
+    talkface::detail::FacePaints paints;
     talkface::detail::LayerStyle style;
 
     Scene(talkface::FaceModel model, const talkface::FrameOptions& frame_options)
@@ -62,14 +62,14 @@ struct Scene {
         placement = talkface::detail::place_face(face, canvas, options);
         const talkface::ProjectedFace neutral = talkface::project_face(face, talkface::FaceState{});
         style = {2, options.stroke_width_in_d * neutral.d};
-        look = talkface::detail::make_face_look(neutral, style);
+        paints = talkface::detail::make_face_paints(neutral, style);
     }
 
     StateLayers layers(const talkface::FaceState& state) const {
         const talkface::ProjectedFace projected = talkface::project_face(face, state);
-        return {talkface::detail::draw_hair_layer(projected, look),
+        return {talkface::detail::draw_hair_layer(projected, paints),
                 talkface::detail::draw_clothes_layer(projected, canvas, options.clothes, style),
-                talkface::detail::draw_face_layer(projected, look)};
+                talkface::detail::draw_face_layer(projected, paints)};
     }
 };
 
