@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "common/test_paths.hpp"
+#include "render/face_grid.hpp"
 #include "render/drawing.hpp"
 #include "render/layers.hpp"
 #include "talkface/face_model.hpp"
@@ -23,28 +24,6 @@ using namespace talkface;
 using namespace talkface::detail;
 
 namespace {
-
-std::vector<std::pair<std::string, FaceModel>> bundled_faces() {
-    std::vector<std::pair<std::string, FaceModel>> faces{{"default", FaceModel::default_face()}};
-    const std::filesystem::path folder = test::source_path("samples/faces");
-    std::set<std::string> paths;
-    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-        if (entry.path().extension() == ".xml") paths.insert(entry.path().string());
-    }
-    for (const std::string& path : paths) faces.emplace_back(path, FaceModel::load(path));
-    return faces;
-}
-
-std::vector<Pose> pose_grid() {
-    std::vector<Pose> poses;
-    const double angles[] = {-15.0, -7.5, 0.0, 7.5, 15.0};
-    for (double alpha : angles) {
-        for (double beta : angles) {
-            for (double gamma : angles) poses.push_back({alpha, beta, gamma});
-        }
-    }
-    return poses;
-}
 
 Point2 bezier(const std::vector<Point2>& p, double t) {
     // De Casteljau over the control polygon (2 to 4 points).
@@ -161,9 +140,9 @@ std::vector<FaceState> states_at(const FaceModel& face, const Pose& pose) {
 
 TEST_SUITE("layer order") {
     TEST_CASE("the ears lie under the hair and the face, their seams hidden, at every pose") {
-        for (const auto& [name, face] : bundled_faces()) {
+        for (const auto& [name, face] : test::bundled_faces()) {
             CAPTURE(name);
-            for (const Pose& pose : pose_grid()) {
+            for (const Pose& pose : test::pose_grid()) {
                 CAPTURE(pose.alpha_deg);
                 CAPTURE(pose.beta_deg);
                 CAPTURE(pose.gamma_deg);
@@ -202,9 +181,9 @@ TEST_SUITE("layer order") {
     }
 
     TEST_CASE("the nose, the brows, the eyes and the mouth lie on the face and are painted over it") {
-        for (const auto& [name, face] : bundled_faces()) {
+        for (const auto& [name, face] : test::bundled_faces()) {
             CAPTURE(name);
-            for (const Pose& pose : pose_grid()) {
+            for (const Pose& pose : test::pose_grid()) {
                 for (const FaceState& state : states_at(face, pose)) {
                   for (const FaceLook look : {FaceLook::outlined, FaceLook::flat}) {
                     CAPTURE(pose.alpha_deg);

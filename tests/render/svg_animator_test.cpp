@@ -19,6 +19,7 @@
 #include "talkface/mouth_shape.hpp"
 #include "talkface/svg_animator.hpp"
 #include "common/test_paths.hpp"
+#include "render/face_grid.hpp"
 
 using namespace talkface;
 
@@ -97,31 +98,6 @@ double enclosed_area(const std::vector<std::pair<double, double>>& outline) {
 
 pugi::xml_node node_with_id(const pugi::xml_document& document, const std::string& id) {
     return document.find_node([&](pugi::xml_node node) { return id == node.attribute("id").value(); });
-}
-
-// The faces every property is checked on: the built-in face and the sample face files.
-std::vector<std::pair<std::string, FaceModel>> test_faces() {
-    std::vector<std::pair<std::string, FaceModel>> faces{{"default", FaceModel::default_face()}};
-    const std::filesystem::path folder = test::source_path("samples/faces");
-    if (std::filesystem::is_directory(folder)) {
-        std::set<std::string> paths;
-        for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-            if (entry.path().extension() == ".xml") paths.insert(entry.path().string());
-        }
-        for (const std::string& path : paths) faces.emplace_back(path, FaceModel::load(path));
-    }
-    return faces;
-}
-
-std::vector<Pose> pose_grid() {
-    std::vector<Pose> poses;
-    const double angles[] = {-15.0, -7.5, 0.0, 7.5, 15.0};
-    for (double alpha : angles) {
-        for (double beta : angles) {
-            for (double gamma : angles) poses.push_back({alpha, beta, gamma});
-        }
-    }
-    return poses;
 }
 
 }  // namespace
@@ -214,7 +190,7 @@ TEST_CASE("the canvas is the same at every pose and expression of one face") {
     const pugi::xml_document frontal = parse_svg(animator.render_svg({}));
     const std::string view_box = frontal.child("svg").attribute("viewBox").value();
     const std::string width = frontal.child("svg").attribute("width").value();
-    for (const Pose& pose : pose_grid()) {
+    for (const Pose& pose : test::pose_grid()) {
         FaceState state;
         state.pose = pose;
         state.expression.brows = 1.0;
@@ -229,7 +205,7 @@ TEST_CASE("the canvas is the same at every pose and expression of one face") {
 }
 
 TEST_CASE("every coordinate lies inside the canvas at every pose within 15 degrees") {
-    for (const auto& [face_name, face] : test_faces()) {
+    for (const auto& [face_name, face] : test::bundled_faces()) {
         CAPTURE(face_name);
         const SvgAnimator animator(face);
         const std::vector<FaceState> expressions = [&] {
@@ -240,7 +216,7 @@ TEST_CASE("every coordinate lies inside the canvas at every pose within 15 degre
             states[2].mouth = mouth_controls(face, MouthShape::u);
             return states;
         }();
-        for (const Pose& pose : pose_grid()) {
+        for (const Pose& pose : test::pose_grid()) {
             for (FaceState state : expressions) {
                 state.pose = pose;
                 const pugi::xml_document document = parse_svg(animator.render_svg(state));
