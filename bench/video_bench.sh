@@ -1,22 +1,21 @@
 #!/bin/sh
-# issue #16's video benchmark: a 3-minute speech (pipeline_bench's joined clean passages) made into
-# a 1280x720, 30 fps MP4 by `talkface video`, the whole process on one core, beside the naive route
-# (an SVG per frame, rsvg-convert, ffmpeg; bench/naive_video.py, sampled) measured in the same run.
-# Prints seconds (wall and CPU), real-time factor, peak memory and MB per minute.
+# issue #16's video benchmark: a 3-minute speech made into a 1280x720, 30 fps MP4 by `talkface video`,
+# the whole process (alignment, drawing, encoding) on one core, beside the naive route (an SVG per
+# frame, rsvg-convert, ffmpeg; bench/naive_video.py, sampled) measured in the same run. Prints
+# seconds (wall and CPU), real-time factor, peak memory and MB per minute.
 #
-# usage: bench/video_bench.sh CORPUS BUILD_DIR [CORE]
-#   CORPUS     what make_corpus wrote; CORPUS/pipeline/ is made by pipeline_bench if missing
-#   BUILD_DIR  a build with the command and the Python module (build/bin/talkface, build/python)
-#   CORE       the CPU to pin both routes to (default 0)
+# usage: bench/video_bench.sh SPEECH TRANSCRIPT BUILD_DIR [CORE]
+#   SPEECH, TRANSCRIPT  about 3 minutes: pipeline_bench's joined passages (CORPUS/pipeline/speech.wav
+#                       and speech.txt), or the demo said 14 times (bench/README.md, "Video")
+#   BUILD_DIR           a build with the command and the Python module (build/bin/talkface, build/python)
+#   CORE                the CPU to pin both routes to (default 0)
 # On a machine shared with other builds the wall times are low estimates; the CPU times are the
 # fairer figure there.
 set -eu
-corpus=$1
-build=$2
-core=${3:-0}
-speech="$corpus/pipeline/speech.wav"
-transcript="$corpus/pipeline/speech.txt"
-[ -f "$speech" ] || "$build/bin/pipeline_bench" "$corpus" >/dev/null
+speech=$1
+transcript=$2
+build=$3
+core=${4:-0}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 speech_s=$(ffprobe -v error -show_entries format=duration -of csv=p=0 "$speech")

@@ -137,12 +137,12 @@ tf_status tf_video_look_create(tf_video_look** out) {
 
 void tf_video_look_destroy(tf_video_look* look) { delete look; }
 
-tf_status tf_video_look_set_layout(tf_video_look* look, tf_video_layout layout) {
+tf_status tf_video_look_set_layout(tf_video_look* look, tf_frame_layout layout) {
     return guard([&] {
         require_non_null(look, "look");
         const int value = enum_value(layout);
-        if (value != TF_VIDEO_LAYOUT_ANNOUNCER && value != TF_VIDEO_LAYOUT_FACE) {
-            throw talkface::InvalidArgument("layout", "expected TF_VIDEO_LAYOUT_ANNOUNCER (0) or TF_VIDEO_LAYOUT_FACE "
+        if (value != TF_FRAME_LAYOUT_ANNOUNCER && value != TF_FRAME_LAYOUT_FACE) {
+            throw talkface::InvalidArgument("layout", "expected TF_FRAME_LAYOUT_ANNOUNCER (0) or TF_FRAME_LAYOUT_FACE "
                                                       "(1), found " + std::to_string(value));
         }
         look->options.frame.layout = static_cast<talkface::FrameLayout>(value);

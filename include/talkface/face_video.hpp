@@ -31,6 +31,8 @@ struct FaceVideoOptions {
 };
 
 /// Writes a video of `face` playing `animation`, with the speech at `audio_path` (empty: silent).
+/// The announcer layout with no placement given stands the face where the announcer page stands it
+/// for the same animation (larger, if need be, so that its open mouth would clear the caption).
 /// Frame k shows the animation at time k / fps (its nearest frame); the video has as many frames
 /// as cover the speech (ceil(duration * fps)), or the animation's when silent, so the file lasts as
 /// long as the speech within one frame. `progress` gets the fraction of frames done and "video";

@@ -26,9 +26,10 @@ inline namespace v0 {
 
 /// Where the face stands in a frame.
 enum class FrameLayout : int {
-    /// Thesis 7.2, the virtual announcer (and the web page's announcer app): the frame is a stage,
-    /// the face stands on its bottom edge, centred, its canvas as tall as the frame, over the
-    /// background; FrameOptions::face_origin_px and face_d_px move and scale it. The default.
+    /// Thesis 7.2, the virtual announcer: the frame is a stage and the face stands where the
+    /// announcer web page stands it on a stage of the frame's size (centred on the bottom edge, its
+    /// canvas as tall as the frame, larger if its mouth at rest would meet the page's caption band),
+    /// over the background; FrameOptions::face_origin_px and face_d_px move and scale it. The default.
     announcer = 0,
     /// The face's own canvas (SvgAnimator's, with its default size) scaled to fit the frame and
     /// centred, as an SVG viewer shows SvgAnimator::render_svg() at the frame's size.
@@ -56,7 +57,7 @@ struct FrameOptions {
     FaceLook look = FaceLook::outlined; ///< how the shapes are painted (as SvgOptions)
     double stroke_width_in_d = 0.025;   ///< outline width, in units of d (as SvgOptions)
     /// announcer: where the face's rotation origin O (the neck) stands, in frame pixels; unset:
-    /// centred, the canvas standing on the bottom edge.
+    /// centred, the canvas standing on the bottom edge (as the announcer page places it).
     std::optional<Point2> face_origin_px;
     /// announcer: the face's eye distance d in frame pixels (> 0); 0: the canvas as tall as the frame.
     double face_d_px = 0.0;

@@ -468,8 +468,9 @@ TF_API tf_status tf_write_svg(const tf_face_model *face, const tf_face_state *st
 
 /* Where the face stands in a frame; values equal talkface::FrameLayout. */
 typedef enum tf_frame_layout {
-    /* Thesis 7.2: the frame is a stage, the face stands on its bottom edge, centred, its canvas as
-     * tall as the frame (or placed by tf_frame_options_set_face_placement). The default. */
+    /* Thesis 7.2: the frame is a stage, the face stands where the announcer page stands it: on its
+     * bottom edge, centred, its canvas as tall as the frame, larger if its mouth would meet the
+     * page's caption band (or placed by tf_frame_options_set_face_placement). The default. */
     TF_FRAME_LAYOUT_ANNOUNCER = 0,
     /* The face's SVG canvas fitted into the frame and centred, as a viewer shows tf_render_svg's
      * document at the frame's size. */
@@ -1403,12 +1404,6 @@ TF_API tf_status tf_video_writer_frame_count(const tf_video_writer *writer, size
  * Errors: TF_ERR_INVALID_ARGUMENT if no frame was written or it was finished; TF_ERR_FILE. */
 TF_API tf_status tf_video_writer_finish(tf_video_writer *writer);
 
-/* Where the face stands in a video's frames; values equal talkface::FrameLayout. */
-typedef enum tf_video_layout {
-    TF_VIDEO_LAYOUT_ANNOUNCER = 0,  /* on a stage, standing on the bottom edge, as tall as the frame (the default) */
-    TF_VIDEO_LAYOUT_FACE = 1        /* the face's own canvas fitted into the frame, centred */
-} tf_video_layout;
-
 /* How the face looks in a video (talkface::FaceVideoOptions without its VideoOptions). Created by
  * tf_video_look_create with the defaults (the announcer over #1d3b5c), released by tf_video_look_destroy. */
 typedef struct tf_video_look tf_video_look;
@@ -1416,8 +1411,10 @@ typedef struct tf_video_look tf_video_look;
 TF_API tf_status tf_video_look_create(tf_video_look **out);
 /* Releases it; NULL is allowed. */
 TF_API void tf_video_look_destroy(tf_video_look *look);
-/* Errors: TF_ERR_INVALID_ARGUMENT if look is NULL or layout is not a tf_video_layout. */
-TF_API tf_status tf_video_look_set_layout(tf_video_look *look, tf_video_layout layout);
+/* Where the face stands, as in tf_frame_options_set_layout (the announcer: where the announcer page
+ * stands it for the same animation).
+ * Errors: TF_ERR_INVALID_ARGUMENT if look is NULL or layout is not a tf_frame_layout. */
+TF_API tf_status tf_video_look_set_layout(tf_video_look *look, tf_frame_layout layout);
 /* The background: a colour (NULL: none, transparent where nothing is drawn) and a picture file drawn
  * over it, covering the frame (NULL or "": none). The picture is read when the video is made. */
 TF_API tf_status tf_video_look_set_background(tf_video_look *look, const tf_rgb *colour, const char *image_path);

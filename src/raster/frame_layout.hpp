@@ -2,6 +2,8 @@
 #ifndef TALKFACE_RASTER_FRAME_LAYOUT_HPP
 #define TALKFACE_RASTER_FRAME_LAYOUT_HPP
 
+#include <vector>
+
 #include "render/layers.hpp"
 #include "talkface/face_model.hpp"
 #include "talkface/frame_renderer.hpp"
@@ -17,9 +19,16 @@ struct FramePlacement {
 };
 
 // The placement of `face`, whose canvas is `canvas` (face_canvas.hpp), by `options`. announcer: as
-// the announcer web page places it on its stage (apps/announcer_page.cpp); face: the canvas fitted
-// into the frame and centred, as an SVG viewer shows a document (preserveAspectRatio's default).
+// the announcer web page places it on a stage of the frame's size (render/announcer_layout.hpp),
+// for the face at rest; face: the canvas fitted into the frame and centred, as an SVG viewer shows a
+// document (preserveAspectRatio's default).
 FramePlacement place_face(const FaceModel& face, const CanvasBox& canvas, const FrameOptions& options);
+
+// `options` with the announcer's placement made explicit (face_d_px, face_origin_px) as the page
+// places the face for an animation of `frames`: its mouth, as open as it gets in them, clear of the
+// page's lower third. Unchanged for the face layout or a placement given already.
+FrameOptions with_announcer_placement(const FaceModel& face, const std::vector<FaceState>& frames,
+                                      FrameOptions options);
 
 }  // namespace talkface::detail
 

@@ -40,38 +40,54 @@ StageBox mouth_extent(const FaceModel& face, const std::vector<FaceState>& frame
     return {left, top, right - left, bottom - top};
 }
 
-}  // namespace
-
-AnnouncerLayout announcer_layout(const FaceModel& face, const StageBox& canvas, const std::vector<FaceState>& frames,
-                                 const WebPageOptions& options) {
+// The placement, given the mouth's extent over every frame (in image pixels).
+AnnouncerFacePlacement place_face(const FaceModel& face, const StageBox& canvas, const StageBox& mouth,
+                                  const WebPageOptions& options) {
     const double stage_width = options.stage_width_px;
     const double stage_height = options.stage_height_px;
     const ProjectedFace neutral = project_face(face, FaceState{});
-    const Point2 origin = neutral.origin;
-
-    AnnouncerLayout layout;
-    const double band_height = kCaptionHeightShare * stage_height;
-    const double edge = kEdgeShare * stage_height;
     const double clearance = kMouthClearanceShare * stage_height;
-    const double low_top = stage_height - edge - band_height;
-    const StageBox mouth = mouth_extent(face, frames);
+    const double low_top = stage_height - kEdgeShare * stage_height - kCaptionHeightShare * stage_height;
 
     // Unset: the face as tall as the stage, its canvas standing on the stage's bottom edge, and
     // larger, if need be, until its mouth clears the lower third (the canvas's margin above the
     // hair is cut first), so that the caption lies over the chest as in a news frame.
     const double canvas_bottom = canvas.y + canvas.height;
-    double scale = options.face_d_px > 0.0 ? options.face_d_px / neutral.d : stage_height / canvas.height;
+    AnnouncerFacePlacement placement;
+    placement.image_origin = neutral.origin;
+    placement.scale = options.face_d_px > 0.0 ? options.face_d_px / neutral.d : stage_height / canvas.height;
     if (options.face_d_px <= 0.0 && !options.face_origin_px && mouth.y + mouth.height < canvas_bottom) {
-        scale = std::max(scale, (stage_height - low_top + clearance) / (canvas_bottom - mouth.y - mouth.height));
+        placement.scale =
+            std::max(placement.scale, (stage_height - low_top + clearance) / (canvas_bottom - mouth.y - mouth.height));
     }
-    const Point2 stage_origin =
-        options.face_origin_px.value_or(Point2{0.5 * stage_width, stage_height - (canvas_bottom - origin.y) * scale});
-    const auto to_stage = [&](Point2 image_xy) {
-        return Point2{stage_origin.x + (image_xy.x - origin.x) * scale, stage_origin.y + (image_xy.y - origin.y) * scale};
-    };
-    const Point2 canvas_corner = to_stage({canvas.x, canvas.y});
+    placement.stage_origin = options.face_origin_px.value_or(
+        Point2{0.5 * stage_width, stage_height - (canvas_bottom - neutral.origin.y) * placement.scale});
+    return placement;
+}
+
+}  // namespace
+
+AnnouncerFacePlacement announcer_face_placement(const FaceModel& face, const StageBox& canvas,
+                                                const std::vector<FaceState>& frames, const WebPageOptions& options) {
+    return place_face(face, canvas, mouth_extent(face, frames), options);
+}
+
+AnnouncerLayout announcer_layout(const FaceModel& face, const StageBox& canvas, const std::vector<FaceState>& frames,
+                                 const WebPageOptions& options) {
+    const double stage_width = options.stage_width_px;
+    const double stage_height = options.stage_height_px;
+    const double band_height = kCaptionHeightShare * stage_height;
+    const double edge = kEdgeShare * stage_height;
+    const double clearance = kMouthClearanceShare * stage_height;
+    const double low_top = stage_height - edge - band_height;
+    const StageBox mouth = mouth_extent(face, frames);
+    const AnnouncerFacePlacement placement = place_face(face, canvas, mouth, options);
+    const double scale = placement.scale;
+
+    AnnouncerLayout layout;
+    const Point2 canvas_corner = placement.to_stage({canvas.x, canvas.y});
     layout.face = {canvas_corner.x, canvas_corner.y, canvas.width * scale, canvas.height * scale};
-    const Point2 mouth_corner = to_stage({mouth.x, mouth.y});
+    const Point2 mouth_corner = placement.to_stage({mouth.x, mouth.y});
     layout.mouth = {mouth_corner.x, mouth_corner.y, mouth.width * scale, mouth.height * scale};
 
     const double band_x = kEdgeShare * stage_width;

@@ -30,6 +30,22 @@ struct AnnouncerLayout {
     bool is_caption_on_top = false;  // true when the face stands so low that the caption goes above it
 };
 
+// Where the face stands: image pixels p go to stage_origin + scale * (p - image_origin), O being
+// the face's rotation origin.
+struct AnnouncerFacePlacement {
+    double scale = 1.0;
+    Point2 image_origin{0.0, 0.0};
+    Point2 stage_origin{0.0, 0.0};
+    Point2 to_stage(Point2 image_xy) const {
+        return {stage_origin.x + (image_xy.x - image_origin.x) * scale, stage_origin.y + (image_xy.y - image_origin.y) * scale};
+    }
+};
+
+// The face's placement alone, as announcer_layout() places it (a video of the announcer, which has
+// no caption, stands the face where the page does).
+AnnouncerFacePlacement announcer_face_placement(const FaceModel& face, const StageBox& canvas,
+                                                const std::vector<FaceState>& frames, const WebPageOptions& options);
+
 // `canvas` is the face's animation canvas (its viewBox, in the face's image pixels), `frames` the
 // states the animation shows (empty: the neutral face); the caption keeps clear of the mouth in
 // every one of them.

@@ -49,6 +49,9 @@ AudioStreamEncoder::AudioStreamEncoder(MuxerOutput& output, AudioCodec codec, in
         av_dict_set(&settings, "application", "voip", 0);
         av_dict_set(&settings, "frame_duration", "60", 0);
     }
+    // FFmpeg's AAC encoder searches its quantisers in two loops by default, a tenth of a whole
+    // video's time (callgrind); its "fast" coder takes half of that at the same bit rate.
+    if (!is_opus) av_dict_set(&settings, "aac_coder", "fast", 0);
     const int opened = avcodec_open2(encoder_.get(), &encoder, &settings);
     av_dict_free(&settings);
     check_ffmpeg(opened, encoder.name);

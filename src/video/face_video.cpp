@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "audio/audio_source.hpp"
+#include "raster/frame_layout.hpp"
 #include "talkface/errors.hpp"
 #include "video/image_decoder.hpp"
 
@@ -31,6 +32,9 @@ void render_video(const std::string& path, const FaceModel& face, const Animatio
     frame_options.width_px = options.video.width_px;
     frame_options.height_px = options.video.height_px;
     frame_options.alpha = AlphaMode::straight;
+    // The announcer stands where the announcer page stands it for this animation (its mouth clear
+    // of the page's lower third), so that the video and the page agree.
+    frame_options = detail::with_announcer_placement(face, animation.frames, frame_options);
     if (options.video.transparent) frame_options.background.reset();
     FrameRenderer renderer(face, frame_options);
     if (!options.background_image_path.empty()) {

@@ -15,11 +15,15 @@ namespace talkface::detail {
 namespace {
 
 // x264 on flat cartoon frames: "animation" tuning (more reference frames, deblocking for flat
-// areas) keeps edges clean at a low rate. The preset is "superfast": x264 was 45% of a whole
-// `talkface video` run with "veryfast" (perf), and superfast spends about 0.65 of that for files
-// about 1.6 times larger, still a few MB a minute (bench/README.md, "Video").
+// areas) keeps edges clean at a low rate. The preset is "superfast", with x264's macroblock tree
+// and a lookahead of 10 frames put back (superfast turns them off): on the demo's frames, the same
+// encoding time for 0.4 of the bytes, 53 dB PSNR instead of 59, still far past what an eye tells
+// apart (the still background is referenced by every frame and kept; the rest costs little).
+// veryfast made files as small for 1.2 times the time, ultrafast twice as large for 0.7
+// (bench/README.md, "Video").
 constexpr const char* kX264Preset = "superfast";
 constexpr const char* kX264Tune = "animation";
+constexpr const char* kX264Params = "mbtree=1:rc-lookahead=10";
 constexpr int kX264DefaultCrf = 20;
 // libvpx-vp9: constant quality (b=0 + crf); the "realtime" deadline with cpu-used 8 is the
 // setting fast enough to keep up with the face at 720p on one core.
@@ -88,7 +92,7 @@ VideoStreamEncoder::VideoStreamEncoder(VideoFormat format, const VideoOptions& o
     if (global_header) encoder->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
     const bool is_yuv = chosen.pixel_format == AV_PIX_FMT_YUV420P || chosen.pixel_format == AV_PIX_FMT_YUVA420P;
     if (is_yuv) {
-        // Tagged as what the conversion below does (BT.709, limited range), so players convert
+        // Tagged as what Yuv420Converter does (BT.709, limited range), so players convert
         // back the same way: untagged HD video is read as BT.709 by some players and BT.601 by others.
         encoder->colorspace = AVCOL_SPC_BT709;
         encoder->color_primaries = AVCOL_PRI_BT709;
@@ -99,7 +103,11 @@ VideoStreamEncoder::VideoStreamEncoder(VideoFormat format, const VideoOptions& o
         case VideoFormat::mp4:
             set_option(encoder, "preset", kX264Preset);
             set_option(encoder, "tune", kX264Tune);
-            if (const char* asm_level = x264_asm_level()) set_option(encoder, "x264-params", std::string("asm=") + asm_level);
+            if (const char* asm_level = x264_asm_level()) {
+                set_option(encoder, "x264-params", std::string(kX264Params) + ":asm=" + asm_level);
+            } else {
+                set_option(encoder, "x264-params", kX264Params);
+            }
             set_option(encoder, "crf", std::to_string(options.crf >= 0 ? options.crf : kX264DefaultCrf));
             encoder->profile = FF_PROFILE_H264_HIGH;
             // One thread: with x264's frame threads the same frames gave different bytes from run
@@ -122,15 +130,13 @@ VideoStreamEncoder::VideoStreamEncoder(VideoFormat format, const VideoOptions& o
     }
     check_ffmpeg(avcodec_open2(encoder, &codec, nullptr), chosen.encoder_name);
 
-    converter_.reset(sws_getContext(options.width_px, options.height_px, AV_PIX_FMT_RGBA, options.width_px,
-                                    options.height_px, chosen.pixel_format, SWS_BILINEAR | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr,
-                                    nullptr, nullptr));
-    if (!converter_) throw std::bad_alloc();
     if (is_yuv) {
-        // RGBA is full range; the video is limited range (16..235), BT.709 coefficients.
-        check_ffmpeg(sws_setColorspaceDetails(converter_.get(), sws_getCoefficients(SWS_CS_ITU709), 1,
-                                              sws_getCoefficients(SWS_CS_ITU709), 0, 0, 1 << 16, 1 << 16),
-                     "the colour conversion");
+        yuv_converter_.emplace(options.width_px, options.height_px, chosen.pixel_format == AV_PIX_FMT_YUVA420P);
+    } else {
+        converter_.reset(sws_getContext(options.width_px, options.height_px, AV_PIX_FMT_RGBA, options.width_px,
+                                        options.height_px, chosen.pixel_format, SWS_BILINEAR | SWS_ACCURATE_RND | SWS_BITEXACT,
+                                        nullptr, nullptr, nullptr));
+        if (!converter_) throw std::bad_alloc();
     }
     frame_ = make_video_frame(chosen.pixel_format, options.width_px, options.height_px);
     packet_ = make_packet();
@@ -138,11 +144,20 @@ VideoStreamEncoder::VideoStreamEncoder(VideoFormat format, const VideoOptions& o
 
 void VideoStreamEncoder::encode(const std::uint8_t* rgba, std::size_t stride_bytes, const PacketSink& sink) {
     // The encoder may still hold the previous frame's buffers (reference counted): write into
-    // fresh ones if so.
+    // fresh ones if so (which copies the picture: the YUV converter updates it where it changed).
     check_ffmpeg(av_frame_make_writable(frame_.get()), "a video frame");
-    const std::uint8_t* source[1] = {rgba};
-    const int source_stride[1] = {static_cast<int>(stride_bytes)};
-    sws_scale(converter_.get(), source, source_stride, 0, encoder_->height, frame_->data, frame_->linesize);
+    if (yuv_converter_) {
+        Yuv420Planes planes;
+        for (int plane = 0; plane < 4; ++plane) {
+            planes.data[plane] = frame_->data[plane];
+            planes.linesize[plane] = frame_->linesize[plane];
+        }
+        yuv_converter_->convert(rgba, stride_bytes, planes);
+    } else {
+        const std::uint8_t* source[1] = {rgba};
+        const int source_stride[1] = {static_cast<int>(stride_bytes)};
+        sws_scale(converter_.get(), source, source_stride, 0, encoder_->height, frame_->data, frame_->linesize);
+    }
     frame_->pts = next_pts_++;
     send(frame_.get(), sink);
 }

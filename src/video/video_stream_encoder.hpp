@@ -1,4 +1,4 @@
-// One video stream: RGBA frames in, converted (libswscale) to the encoder's pixel format and
+// One video stream: RGBA frames in, converted (Yuv420Converter, or libswscale for RGB formats) to the encoder's pixel format and
 // encoded; packets go to a muxer, or to a callback (a PNG sequence writes each to its own file).
 #ifndef TALKFACE_VIDEO_VIDEO_STREAM_ENCODER_HPP
 #define TALKFACE_VIDEO_VIDEO_STREAM_ENCODER_HPP
@@ -6,10 +6,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "talkface/video_writer.hpp"
 #include "video/ffmpeg_support.hpp"
+#include "video/yuv420_converter.hpp"
 
 namespace talkface::detail {
 
@@ -36,7 +38,8 @@ private:
     void send(AVFrame* frame, const PacketSink& sink);
 
     CodecContextPtr encoder_;
-    ScaleContextPtr converter_;
+    std::optional<Yuv420Converter> yuv_converter_;  // H.264 and VP9
+    ScaleContextPtr converter_;                      // the rest: libswscale
     FramePtr frame_;
     PacketPtr packet_;
     std::int64_t next_pts_ = 0;

@@ -156,12 +156,12 @@ static int test_renders_the_face(void) {
     CHECK_OK(tf_video_options_set_size(options, 160, 90));
     CHECK_OK(tf_video_options_set_fps(options, 10.0));
     CHECK_OK(tf_video_look_create(&look));
-    CHECK_OK(tf_video_look_set_layout(look, TF_VIDEO_LAYOUT_ANNOUNCER));
+    CHECK_OK(tf_video_look_set_layout(look, TF_FRAME_LAYOUT_ANNOUNCER));
     CHECK_OK(tf_video_look_set_face_look(look, TF_FACE_LOOK_FLAT));
     CHECK_FAILS_WITH(tf_video_look_set_face_look(look, (tf_face_look)5), TF_ERR_INVALID_ARGUMENT, "face_look");
     CHECK_OK(tf_video_look_set_background(look, &white, NULL));
     CHECK_OK(tf_video_look_set_face_placement(look, origin, 20.0));
-    CHECK_FAILS_WITH(tf_video_look_set_layout(look, (tf_video_layout)7), TF_ERR_INVALID_ARGUMENT, "layout");
+    CHECK_FAILS_WITH(tf_video_look_set_layout(look, (tf_frame_layout)7), TF_ERR_INVALID_ARGUMENT, "layout");
     CHECK_OK(tf_render_video(path, face, animation, NULL, options, look, count_progress, &calls));
     CHECK(calls > 1);
     CHECK(file_size(path) > 100);

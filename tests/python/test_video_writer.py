@@ -90,25 +90,3 @@ def test_two_writers_on_two_threads(tmp_path):
     for thread in threads:
         thread.join()
     assert (tmp_path / "a.mp4").read_bytes() == (tmp_path / "b.mp4").read_bytes()
-
-
-def test_render_video_of_an_animation_with_progress_and_cancel(tmp_path):
-    face = talkface.FaceModel.default()
-    timeline = talkface.Timeline()
-    timeline.duration_s = 1.0
-    animation = talkface.animate(face, timeline, talkface.ExpressionSimulator(timeline, 1),
-                                 talkface.LipSyncOptions(fps=10))
-    options = talkface.FaceVideoOptions(video=talkface.VideoOptions(width_px=160, height_px=90, fps=10),
-                                        layout="face", background="#ffffff")
-    seen = []
-    talkface.render_video(str(tmp_path / "face.png"), face, animation, "", options,
-                          progress=lambda fraction, stage: seen.append((fraction, stage)))
-    frames = sorted(p.name for p in tmp_path.iterdir())
-    assert frames[0] == "face-000000.png" and len(frames) == len(animation.frames)
-    assert seen[-1] == (1.0, "video")
-    with pytest.raises(talkface.Cancelled):
-        talkface.render_video(str(tmp_path / "cancelled.mp4"), face, animation, "", options,
-                              progress=lambda fraction, stage: fraction < 0.5)
-    assert not (tmp_path / "cancelled.mp4").exists()
-    with pytest.raises(talkface.InvalidArgument, match="layout"):
-        talkface.FaceVideoOptions(layout="sideways")

@@ -235,38 +235,43 @@ Example:
 
     py::class_<FaceVideoOptions>(m, "FaceVideoOptions", R"doc(
 How the face becomes a video: the VideoOptions (size, fps, quality, transparency), where the face
-stands ("announcer": on a stage, as tall as the frame, the default; "face": its own canvas fitted
-into the frame), the background colour (None: transparent) and a picture drawn over it.
+stands (a FrameLayout: announcer, on a stage where the announcer page stands it, the default; face,
+its own canvas fitted into the frame), the background colour (None: transparent) and a picture
+drawn over it.
 
 Example:
     >>> options = talkface.FaceVideoOptions(video=talkface.VideoOptions(width_px=640, height_px=360),
     ...                                     background="#ffffff")
 )doc")
-        .def(py::init([](const VideoOptions& video, const std::string& layout, std::optional<Rgb> background,
-                         const std::string& background_image_path) {
+        .def(py::init([](const VideoOptions& video, FrameLayout layout, std::optional<Rgb> background,
+                         const std::string& background_image_path, std::optional<Point2> face_origin_px,
+                         double face_d_px) {
                  FaceVideoOptions options;
                  options.video = video;
-                 if (layout != "announcer" && layout != "face") {
-                     throw InvalidArgument("layout", "expected \"announcer\" or \"face\", found \"" + layout + "\"");
-                 }
-                 options.frame.layout = layout == "face" ? FrameLayout::face : FrameLayout::announcer;
+                 options.frame.layout = layout;
                  options.frame.background = background;
+                 options.frame.face_origin_px = face_origin_px;
+                 options.frame.face_d_px = face_d_px;
                  options.background_image_path = background_image_path;
                  return options;
              }),
-             py::arg("video") = VideoOptions{}, py::arg("layout") = "announcer",
-             py::arg("background") = FrameOptions{}.background, py::arg("background_image_path") = "", R"doc(
+             py::arg("video") = VideoOptions{}, py::arg("layout") = FrameOptions{}.layout,
+             py::arg("background") = FrameOptions{}.background, py::arg("background_image_path") = "",
+             py::arg("face_origin_px") = py::none(), py::arg("face_d_px") = 0.0, R"doc(
 Args:
     video (VideoOptions): size, frame rate, quality, transparency.
-    layout (str): "announcer" (the default) or "face".
+    layout (FrameLayout): announcer (the default) or face.
     background (str | None): "#rrggbb", or None for none (transparent where nothing is drawn).
     background_image_path (str): a picture (PNG, JPEG, WebP, SVG ...) covering the frame; "" for none.
+    face_origin_px (tuple[float, float] | None): announcer: where the face's rotation origin (the
+        neck) stands, frame pixels; None: where the announcer page stands it.
+    face_d_px (float): announcer: the face's eye distance in frame pixels; 0: as the page sizes it.
 
 Raises:
-    talkface.InvalidArgument: an unknown layout or a malformed colour.
+    talkface.InvalidArgument: a malformed colour. Options out of range are refused by render_video.
 
 Example:
-    >>> talkface.FaceVideoOptions(layout="face", background=None)
+    >>> talkface.FaceVideoOptions(layout=talkface.FrameLayout.face, background=None)
 )doc")
         .def_readwrite("video", &FaceVideoOptions::video, "size, frame rate, quality, transparency")
         .def_readwrite("background_image_path", &FaceVideoOptions::background_image_path, "a picture over the colour")
@@ -274,9 +279,16 @@ Example:
             "background", [](const FaceVideoOptions& o) { return o.frame.background; },
             [](FaceVideoOptions& o, std::optional<Rgb> colour) { o.frame.background = colour; },
             "\"#rrggbb\" or None (transparent)")
-        .def_property_readonly(
-            "layout", [](const FaceVideoOptions& o) { return o.frame.layout == FrameLayout::face ? "face" : "announcer"; },
-            "\"announcer\" or \"face\"");
+        .def_property(
+            "layout", [](const FaceVideoOptions& o) { return o.frame.layout; },
+            [](FaceVideoOptions& o, FrameLayout layout) { o.frame.layout = layout; }, "a FrameLayout")
+        .def_property(
+            "face_origin_px", [](const FaceVideoOptions& o) { return o.frame.face_origin_px; },
+            [](FaceVideoOptions& o, std::optional<Point2> origin) { o.frame.face_origin_px = origin; },
+            "(x, y) of the rotation origin in frame pixels, or None")
+        .def_property(
+            "face_d_px", [](const FaceVideoOptions& o) { return o.frame.face_d_px; },
+            [](FaceVideoOptions& o, double d) { o.frame.face_d_px = d; }, "the eye distance in frame pixels; 0: as the page");
 
     m.def(
         "render_video",

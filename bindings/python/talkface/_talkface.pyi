@@ -672,10 +672,12 @@ class FaceVideoOptions:
     video: VideoOptions
     background: str | None
     background_image_path: str
-    def __init__(self, video: VideoOptions = ..., layout: str = "announcer", background: str | None = "#1d3b5c",
-                 background_image_path: str = "") -> None: ...
-    @property
-    def layout(self) -> str: ...
+    layout: FrameLayout
+    face_origin_px: tuple[float, float] | None
+    face_d_px: float
+    def __init__(self, video: VideoOptions = ..., layout: FrameLayout = ..., background: str | None = "#1d3b5c",
+                 background_image_path: str = "", face_origin_px: tuple[float, float] | None = None,
+                 face_d_px: float = 0.0) -> None: ...
 
 def render_video(path: str, face: FaceModel, animation: Animation, audio_path: str = "",
                  options: FaceVideoOptions = ...,
