@@ -68,7 +68,6 @@ def main():
                     str(work / "frames" / "%06d.png"), "-vf",
                     "pad=1280:720:(ow-iw)/2:(oh-ih)/2:color=0x1d3b5c,format=yuv420p",
                     "-c:v", "libx264", "-preset", "superfast", "-tune", "animation", "-crf", "20",
-                    "-x264-params", "mbtree=1:rc-lookahead=10",
                     "-threads", "1", str(work / "naive.mp4")], check=True)
     encode_s, encode_cpu_s = time.perf_counter() - t0, children_cpu_s() - c0
     scale = len(frames) / len(sampled)

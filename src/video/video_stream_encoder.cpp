@@ -15,15 +15,12 @@ namespace talkface::detail {
 namespace {
 
 // x264 on flat cartoon frames: "animation" tuning (more reference frames, deblocking for flat
-// areas) keeps edges clean at a low rate. The preset is "superfast", with x264's macroblock tree
-// and a lookahead of 10 frames put back (superfast turns them off): on the demo's frames, the same
-// encoding time for 0.4 of the bytes, 53 dB PSNR instead of 59, still far past what an eye tells
-// apart (the still background is referenced by every frame and kept; the rest costs little).
-// veryfast made files as small for 1.2 times the time, ultrafast twice as large for 0.7
+// areas) keeps edges clean at a low rate; the preset is "superfast". x264's macroblock tree
+// (mbtree, with a lookahead) made files 0.4 as large in the same time, but by spending less on
+// what changes: the moving mouth's inside colour drifted past what the sync test tells apart
 // (bench/README.md, "Video").
 constexpr const char* kX264Preset = "superfast";
 constexpr const char* kX264Tune = "animation";
-constexpr const char* kX264Params = "mbtree=1:rc-lookahead=10";
 constexpr int kX264DefaultCrf = 20;
 // libvpx-vp9: constant quality (b=0 + crf); the "realtime" deadline with cpu-used 8 is the
 // setting fast enough to keep up with the face at 720p on one core.
@@ -103,11 +100,7 @@ VideoStreamEncoder::VideoStreamEncoder(VideoFormat format, const VideoOptions& o
         case VideoFormat::mp4:
             set_option(encoder, "preset", kX264Preset);
             set_option(encoder, "tune", kX264Tune);
-            if (const char* asm_level = x264_asm_level()) {
-                set_option(encoder, "x264-params", std::string(kX264Params) + ":asm=" + asm_level);
-            } else {
-                set_option(encoder, "x264-params", kX264Params);
-            }
+            if (const char* asm_level = x264_asm_level()) set_option(encoder, "x264-params", std::string("asm=") + asm_level);
             set_option(encoder, "crf", std::to_string(options.crf >= 0 ? options.crf : kX264DefaultCrf));
             encoder->profile = FF_PROFILE_H264_HIGH;
             // One thread: with x264's frame threads the same frames gave different bytes from run
