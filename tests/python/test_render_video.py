@@ -1,5 +1,7 @@
 """talkface.render_video: the face as a video from Python; progress, cancel, refusals, and the GIL
 released while frames are drawn and encoded."""
+import base64
+import gzip
 import pathlib
 import shutil
 import subprocess
@@ -147,9 +149,14 @@ def test_the_video_shows_the_face_where_the_announcer_page_does(face, tmp_path, 
                                    talkface.WebPageOptions(app=talkface.WebPageApp.announcer, stage_width_px=width,
                                                            stage_height_px=height, stage_colour=STAGE))
     # The stage's own SVG (background and placed face) as a browser draws it before the clock runs:
-    # the animation's first frame.
+    # the animation's first frame, which the page's script unpacks into the stage's empty face.
     stage = page[page.index('<svg class="tf-stage-art"'):page.index('<div class="tf-lower-third')]
-    (tmp_path / "stage.svg").write_text(stage[:stage.rindex("</svg>") + len("</svg>")])
+    stage = stage[:stage.rindex("</svg>") + len("</svg>")]
+    packed = page.split('<script type="application/gzip" id="tf-animation-data">')[1].split("</script>")[0]
+    face_tag = stage.index(">", stage.index('class="tf-animation"')) + 1
+    assert stage[face_tag:].startswith("</svg>")
+    stage = stage[:face_tag] + gzip.decompress(base64.b64decode(packed)).decode() + stage[face_tag:]
+    (tmp_path / "stage.svg").write_text(stage)
     subprocess.run([RSVG_CONVERT, "-w", str(width), "-h", str(height), str(tmp_path / "stage.svg"), "-o",
                     str(tmp_path / "page.png")], check=True)
     talkface.render_video(str(tmp_path / "video.png"), face, animation, "",

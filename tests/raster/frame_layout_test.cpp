@@ -8,6 +8,7 @@
 #include "raster/frame_layout.hpp"
 #include "render/announcer_layout.hpp"
 #include "render/face_canvas.hpp"
+#include "render/face_grid.hpp"
 #include "talkface/face_pose.hpp"
 #include "talkface/mouth_shape.hpp"
 
@@ -15,19 +16,15 @@ using namespace talkface;
 
 namespace {
 
-// A talking head: nods, turns and tilts of the simulator's size, every mouth shape.
+// A talking head: every mouth shape at every pose of the render tests' grid.
 std::vector<FaceState> talking_frames(const FaceModel& face) {
     std::vector<FaceState> frames;
-    for (double alpha : {-5.0, 5.0}) {
-        for (double beta : {-8.0, 8.0}) {
-            for (double gamma : {-5.0, 5.0}) {
-                for (MouthShape shape : all_mouth_shapes()) {
-                    FaceState state;
-                    state.pose = {alpha, beta, gamma};
-                    state.mouth = mouth_controls(face, shape);
-                    frames.push_back(state);
-                }
-            }
+    for (const Pose& pose : test::pose_grid()) {
+        for (MouthShape shape : all_mouth_shapes()) {
+            FaceState state;
+            state.pose = pose;
+            state.mouth = mouth_controls(face, shape);
+            frames.push_back(state);
         }
     }
     return frames;

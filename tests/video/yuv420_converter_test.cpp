@@ -2,6 +2,7 @@
 // converted whole.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -72,6 +73,38 @@ TEST_CASE("BT.709 limited range: white, black, red and blue") {
         CHECK(int(picture.y[5]) == c.y);
         CHECK(int(picture.u[1]) == c.u);
         CHECK(int(picture.v[1]) == c.v);
+    }
+}
+
+TEST_CASE("every sample is the exact BT.709 value rounded, chroma the mean of its 2x2 pixels") {
+    // What a decoder reading the stream's tags (BT.709, limited range) inverts: a bias here moves
+    // every colour of the video (the fixed-point coefficients may only decide exact halves).
+    const int width = 32, height = 16;
+    std::vector<std::uint8_t> rgba(std::size_t(width) * height * 4);
+    paint(rgba, width, 0, 0, width, height, 7);
+    Picture picture(width, height);
+    Yuv420Converter(width, height, true).convert(rgba.data(), width * 4, picture.planes());
+    const double kr = 0.2126, kb = 0.0722, kg = 1.0 - kr - kb;
+    auto at = [&](int x, int y, int c) { return double(rgba[(std::size_t(y) * width + x) * 4 + c]); };
+    auto luma = [&](int x, int y) { return kr * at(x, y, 0) + kg * at(x, y, 1) + kb * at(x, y, 2); };
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            CHECK(std::abs(picture.y[std::size_t(y) * width + x] - (16.0 + 219.0 / 255.0 * luma(x, y))) <= 0.51);
+            CHECK(int(picture.a[std::size_t(y) * width + x]) == int(at(x, y, 3)));
+        }
+    }
+    for (int y = 0; y < height; y += 2) {
+        for (int x = 0; x < width; x += 2) {
+            double u = 0.0, v = 0.0;
+            for (int k = 0; k < 4; ++k) {
+                const int px = x + k % 2, py = y + k / 2;
+                u += (at(px, py, 2) - luma(px, py)) / (2.0 * (1.0 - kb)) / 4.0;
+                v += (at(px, py, 0) - luma(px, py)) / (2.0 * (1.0 - kr)) / 4.0;
+            }
+            const std::size_t chroma = std::size_t(y / 2) * (width / 2) + x / 2;
+            CHECK(std::abs(picture.u[chroma] - (128.0 + 224.0 / 255.0 * u)) <= 0.51);
+            CHECK(std::abs(picture.v[chroma] - (128.0 + 224.0 / 255.0 * v)) <= 0.51);
+        }
     }
 }
 
