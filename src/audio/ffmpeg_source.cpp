@@ -4,7 +4,6 @@ extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
 #include <libavutil/channel_layout.h>
-#include <libavutil/log.h>
 #include <libavutil/opt.h>
 #include <libswresample/swresample.h>
 }
@@ -12,9 +11,9 @@ extern "C" {
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <mutex>
 #include <vector>
 
+#include "audio/ffmpeg_messages.hpp"
 #include "common/number_format.hpp"
 #include "talkface/errors.hpp"
 
@@ -35,22 +34,7 @@ constexpr std::size_t kUntaggedMp3DelayFrames = 576 + 529;
 // concat lists, image sequences) that open other files named inside the input.
 constexpr const char* kFormats = "mp3,aac,mov,matroska,webm,ogg,flac,wav,w64,aiff,caf,avi,asf,amr,au";
 
-std::string av_reason(int code) {
-    char text[AV_ERROR_MAX_STRING_SIZE] = {};
-    av_strerror(code, text, sizeof text);
-    return text;
-}
-
 std::string seconds_text(double seconds) { return format_fixed(seconds, 3) + " s"; }
-
-// The library prints nothing (STYLE.md): FFmpeg logs to stderr by default. Its log level is
-// process-wide, so it is only lowered when the host program has left FFmpeg's default in place.
-void quiet_ffmpeg_log() {
-    static std::once_flag once;
-    std::call_once(once, [] {
-        if (av_log_get_level() == AV_LOG_INFO) av_log_set_level(AV_LOG_QUIET);
-    });
-}
 
 struct FormatCloser {
     void operator()(AVFormatContext* context) const { avformat_close_input(&context); }
@@ -80,12 +64,12 @@ public:
         av_dict_free(&options);
         if (opened < 0) {
             if (opened == AVERROR(ENOENT) || opened == AVERROR(EACCES) || opened == AVERROR(EISDIR))
-                throw FileError(path_, av_reason(opened));
-            throw not_audio(av_reason(opened));
+                throw FileError(path_, ffmpeg_error_text(opened));
+            throw not_audio(ffmpeg_error_text(opened));
         }
         format_.reset(raw);
         if (const int found = avformat_find_stream_info(format_.get(), nullptr); found < 0)
-            throw not_audio(av_reason(found));
+            throw not_audio(ffmpeg_error_text(found));
         const int stream = av_find_best_stream(format_.get(), AVMEDIA_TYPE_AUDIO, -1, -1, nullptr, 0);
         if (stream < 0) {
             bool has_video = false;
@@ -103,10 +87,10 @@ public:
         codec_.reset(avcodec_alloc_context3(codec));
         if (!codec_) throw std::bad_alloc();
         if (const int copied = avcodec_parameters_to_context(codec_.get(), parameters); copied < 0)
-            throw not_audio(av_reason(copied));
+            throw not_audio(ffmpeg_error_text(copied));
         if (const int ready = avcodec_open2(codec_.get(), codec, nullptr); ready < 0)
             throw ParseError(path_, 0, 0, "", std::string("cannot decode its ") + codec->name + " sound track: " +
-                                                   av_reason(ready));
+                                                   ffmpeg_error_text(ready));
         sample_rate_hz_ = codec_->sample_rate;
         if (sample_rate_hz_ <= 0 || codec_->ch_layout.nb_channels <= 0 || codec_->ch_layout.nb_channels > kMaxChannels)
             throw ParseError(path_, 0, 0, "", "unsupported sound track: " + std::to_string(codec_->ch_layout.nb_channels) +
@@ -190,7 +174,7 @@ private:
                 return true;
             }
             if (got < 0) throw ParseError(path_, 0, 0, "", "cannot read past " + seconds_text(seconds_read()) + ": " +
-                                                                av_reason(got));
+                                                                ffmpeg_error_text(got));
             if (packet_->stream_index != stream_->index) {
                 av_packet_unref(packet_.get());
                 continue;
@@ -206,7 +190,7 @@ private:
 
     ParseError decode_error(int code) const {
         return ParseError(path_, 0, 0, "", "the sound track cannot be decoded at " + seconds_text(seconds_read()) + ": " +
-                                                av_reason(code));
+                                                ffmpeg_error_text(code));
     }
 
     double seconds_read() const { return static_cast<double>(frames_decoded_) / sample_rate_hz_; }

@@ -1,34 +1,15 @@
 #include "video/ffmpeg_support.hpp"
 
 #include <cstring>
-#include <mutex>
 #include <new>
 
 extern "C" {
 #include <libavutil/error.h>
-#include <libavutil/log.h>
 }
 
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
-
-void quiet_ffmpeg_log() {
-    // The library prints nothing (STYLE.md section 3), but FFmpeg logs to stderr unless told
-    // otherwise, and its level is one setting for the whole process. Only FFmpeg's default is
-    // changed, once: a program that set its own level keeps it. Failures still reach the caller,
-    // as exceptions carrying av_strerror's text.
-    static std::once_flag once;
-    std::call_once(once, [] {
-        if (av_log_get_level() == AV_LOG_INFO) av_log_set_level(AV_LOG_QUIET);
-    });
-}
-
-std::string ffmpeg_error_text(int code) {
-    char text[AV_ERROR_MAX_STRING_SIZE] = {};
-    av_strerror(code, text, sizeof text);
-    return text;
-}
 
 void check_ffmpeg(int code, const char* what) {
     if (code == AVERROR(ENOMEM)) throw std::bad_alloc();

@@ -1,10 +1,12 @@
-// What every part of the video stage needs from FFmpeg's libraries: owning handles, the text of an
-// FFmpeg error code, and encoders looked up by name. Only src/video/ includes FFmpeg's headers.
+// What every part of the video stage needs from FFmpeg's libraries: owning handles, FFmpeg's
+// messages (audio/ffmpeg_messages.hpp), and encoders looked up by name.
 #ifndef TALKFACE_VIDEO_FFMPEG_SUPPORT_HPP
 #define TALKFACE_VIDEO_FFMPEG_SUPPORT_HPP
 
 #include <memory>
 #include <string>
+
+#include "audio/ffmpeg_messages.hpp"
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -37,13 +39,6 @@ using FramePtr = std::unique_ptr<AVFrame, FrameDeleter>;
 using PacketPtr = std::unique_ptr<AVPacket, PacketDeleter>;
 using ScaleContextPtr = std::unique_ptr<SwsContext, ScaleContextDeleter>;
 using ResampleContextPtr = std::unique_ptr<SwrContext, ResampleContextDeleter>;
-
-// Turns FFmpeg's logging to stderr off if it is at FFmpeg's default level (once per process).
-// Called before any other FFmpeg use of the stage (find_encoder, MuxerOutput).
-void quiet_ffmpeg_log();
-
-// av_strerror's text for an FFmpeg return code.
-std::string ffmpeg_error_text(int code);
 
 // Throws talkface::Error ("internal error (a bug in talkface)") if `code` < 0 — for calls that
 // fail only when talkface passes them something wrong — naming `what` and FFmpeg's reason.
