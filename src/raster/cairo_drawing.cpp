@@ -59,7 +59,7 @@ void add_geometry(cairo_t* cairo, const Layer& layer, const Shape& shape) {
             cairo_close_path(cairo);
             return;
         case ShapeKind::rect: cairo_rectangle(cairo, shape.corner.x, shape.corner.y, shape.width, shape.height); return;
-        case ShapeKind::reference: add_path(cairo, layer.definitions.at(shape.definition).outline); return;
+        case ShapeKind::reference: add_path(cairo, reference_outline(layer, shape)); return;
         case ShapeKind::group: return;
     }
 }
@@ -107,7 +107,7 @@ void draw_shape(cairo_t* cairo, const Layer& layer, const Shape& shape) {
         cairo_save(cairo);
         if (shape.is_clipped) {
             cairo_new_path(cairo);
-            add_path(cairo, layer.definitions.at(shape.definition).outline);
+            add_path(cairo, clip_outline(layer, layer.definitions.at(shape.definition)));
             cairo_set_fill_rule(cairo, CAIRO_FILL_RULE_WINDING);
             cairo_clip(cairo);
         }
@@ -154,7 +154,7 @@ struct Extent {
                 add({shape.corner.x + shape.width, shape.corner.y + shape.height}, 0.0);
                 return;
             case ShapeKind::reference:
-                for (const Point2& point : layer.definitions.at(shape.definition).outline.points) add(point, 0.0);
+                for (const Point2& point : reference_outline(layer, shape).points) add(point, 0.0);
                 return;
             case ShapeKind::group:
                 for (const Shape& child : shape.children) add_shape(layer, child);

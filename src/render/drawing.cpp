@@ -84,10 +84,25 @@ Path& Path::close() {
     return *this;
 }
 
+Path moved(const Path& path, Point2 offset) {
+    Path result = path;
+    for (Point2& point : result.points) point = {point.x + offset.x, point.y + offset.y};
+    return result;
+}
+
+Path clip_outline(const Layer& layer, const Definition& clip) {
+    if (!clip.is_moved) return clip.outline;
+    return moved(layer.definitions.at(clip.source).outline, clip.offset);
+}
+
+Path reference_outline(const Layer& layer, const Shape& reference) {
+    return moved(clip_outline(layer, layer.definitions.at(reference.definition)), reference.offset);
+}
+
 void list_numeric_attributes(const Layer& layer, std::vector<NumericAttribute>& attributes) {
     attributes.clear();
     for (const Definition& definition : layer.definitions) {
-        if (definition.kind == DefinitionKind::clip_path)
+        if (definition.kind == DefinitionKind::clip_path && !definition.is_moved)
             attributes.push_back({AttributeKind::path_data, "d", &definition.outline, nullptr, 0.0});
     }
     for (const Shape& shape : layer.elements) list_shape(shape, attributes);

@@ -5,10 +5,12 @@
 //
 // What a layer holds, in paint order:
 //   definitions  clip paths (each an outline path with an id of its own, which a shape may draw
-//                again) and radial gradients, referred to by their index in Layer::definitions;
+//                again, or an earlier clip path's outline moved) and radial gradients, referred to
+//                by their index in Layer::definitions;
 //   elements     shapes: a path (moves, lines, cubic and quadratic Bezier segments, closes), a
 //                polyline, a circle, a rectangle, a reference (a clip path's outline drawn again with
-//                a paint of its own: SVG <use>), or a group of shapes clipped by a clip path.
+//                a paint of its own, moved or not: SVG <use>), or a group of shapes clipped by a clip
+//                path (groups nest: their clips intersect).
 // Coordinates are in the drawing's units (image pixels, y down, unless the builder's view maps
 // them: layers.hpp ViewMap). Fills use the nonzero rule; strokes have round joins and caps.
 //
@@ -97,11 +99,19 @@ enum class DefinitionKind : std::uint8_t { clip_path, radial_gradient };
 
 // A clip path (an outline, drawn again by references) or a gradient. Ids are static text ("tf-..."),
 // unique in a document; an animation's frames encoding prefixes them per frame.
+//
+// A clip path may instead be an earlier clip path's outline moved by `offset` (`is_moved` set,
+// `source` that clip path, which has an outline of its own; `outline` and `outline_id` empty): a shape that follows another at a
+// fixed distance costs an animation no numbers of its own. Moves (here and on references) are
+// static: an animation writes frame 0's.
 struct Definition {
     DefinitionKind kind = DefinitionKind::clip_path;
     std::string_view id;
     std::string_view outline_id;  // clip_path: the id of its outline path
     Path outline;                 // clip_path: what is inside it is drawn, nonzero rule
+    bool is_moved = false;        // clip_path: `source`'s outline moved by `offset`
+    std::size_t source = 0;
+    Point2 offset{0.0, 0.0};
     RadialGradient gradient;      // radial_gradient
 };
 
@@ -119,6 +129,7 @@ struct Shape {
     Point2 corner;               // rect: its top-left corner, and its size
     double width = 0.0, height = 0.0;
     std::size_t definition = 0;  // reference: the clip path whose outline it draws; group: its clip
+    Point2 offset{0.0, 0.0};     // reference: the outline drawn moved by this
     bool is_clipped = false;     // group: clipped by `definition`
     std::vector<Shape> children; // group: drawn in order
 };
@@ -128,6 +139,15 @@ struct Layer {
     std::vector<Definition> definitions;
     std::vector<Shape> elements;
 };
+
+// `path` moved by `offset`.
+Path moved(const Path& path, Point2 offset);
+
+// The outline a clip path clips to: its own, or its source's moved.
+Path clip_outline(const Layer& layer, const Definition& clip);
+
+// The outline a reference draws: its clip path's, moved by its offset.
+Path reference_outline(const Layer& layer, const Shape& reference);
 
 // A number an animation may move, in document order: a path's points, a polyline's points, a
 // circle's cx, cy, r, a rectangle's x, y, width, height.
@@ -142,7 +162,7 @@ struct NumericAttribute {
 };
 
 // Every numeric attribute of `layer`, in the order svg_writer.cpp writes them (the definitions
-// first, then the elements, a group's children in place). Cleared first. The pointers point into
+// first, then the elements, a group's children in place; moved clip paths and offsets are none). Cleared first. The pointers point into
 // `layer`.
 void list_numeric_attributes(const Layer& layer, std::vector<NumericAttribute>& attributes);
 

@@ -250,6 +250,44 @@ void draw_eyes(const ProjectedFace& face, const FacePaints& paints, Layer& layer
     }
 }
 
+// The inside of an open mouth, in mouth widths (MW0): the upper teeth hang this far under the
+// upper lip's inner edge; the lower teeth stand this high over the lower lip's, the tongue behind
+// them this high; the teeth stop this far short of the mouth's corners, which stay dark.
+constexpr double kUpperTeethMw = 0.1;
+constexpr double kLowerTeethMw = 0.06;
+constexpr double kTongueMw = 0.14;
+constexpr double kTeethCornerMw = 0.05;
+
+// The head's axes in the drawing: across the face (image left to right, frontal) and down it, as
+// the line between the outer eye corners (which no mouth shape, blink or smile moves) turns.
+std::pair<Point2, Point2> head_axes(const ProjectedFace& face, const FacePaints& paints) {
+    const Point2 left = paints.point(face, "3.12"), right = paints.point(face, "3.7");
+    const Point2 frontal_left = face.face.point("3.12"), frontal_right = face.face.point("3.7");
+    const double angle = std::atan2(right.y - left.y, right.x - left.x) -
+                         std::atan2(frontal_right.y - frontal_left.y, frontal_right.x - frontal_left.x);
+    return {{std::cos(angle), std::sin(angle)}, {-std::sin(angle), std::cos(angle)}};
+}
+
+Definition moved_clip(std::string_view id, std::size_t source, Point2 offset) {
+    Definition clip;
+    clip.kind = DefinitionKind::clip_path;
+    clip.id = id;
+    clip.is_moved = true;
+    clip.source = source;
+    clip.offset = offset;
+    return clip;
+}
+
+Shape clipped_group(std::string_view name, std::size_t clip, std::vector<Shape> children) {
+    Shape group;
+    group.kind = ShapeKind::group;
+    group.name = name;
+    group.definition = clip;
+    group.is_clipped = true;
+    group.children = std::move(children);
+    return group;
+}
+
 void draw_mouth(const ProjectedFace& face, const FacePaints& paints, Layer& layer) {
     const std::vector<Point2> lips = points_of(face, paints, {"8.1", "8.9", "8.4", "8.2", "8.3", "8.10"});
     Path outer;
@@ -270,40 +308,48 @@ void draw_mouth(const ProjectedFace& face, const FacePaints& paints, Layer& laye
         .close();
     const std::size_t clip = layer.definitions.size();
     layer.definitions.push_back(std::move(opening));
-    Definition tongue;
-    tongue.kind = DefinitionKind::radial_gradient;
-    tongue.id = "tf-mouth-inside-gradient";
-    tongue.gradient = paints.mouth_inside_gradient;
-    const std::size_t gradient = layer.definitions.size();
-    layer.definitions.push_back(std::move(tongue));
 
-    // The inside of the mouth is drawn with the opening's own outline, which the animation moves
-    // already, and nothing else: its fill's gradient, in the opening's bounding box, is the upper
-    // teeth at its top (under the upper lip), the dark, the tongue and the lower teeth at its
-    // bottom (on the lower lip, which moves with the jaw). Shapes of their own would cost a minute
-    // of speech 100 KB or more in the keyframes encoding (issue 17).
-    ShapePaint inside = paints.mouth_opening;
-    inside.fill = Paint::of_gradient(gradient);
-    inside.stroke = Paint{};
+    // Teeth and tongue are the opening's own outline again, moved: a shape at a fixed distance
+    // under the upper lip's inner edge or over the lower lip's, clipped by the opening, keeps its
+    // size as the mouth opens and follows the lip it hangs from (the lower lip moves with the jaw,
+    // 8.2 and 2.1 with it). The animation moves no number for them (issue 17: shapes of their own
+    // cost a minute of speech 25 KiB or more). Inside the opening, in paint order: the dark; the
+    // upper teeth, everywhere but the corners; under them (where the opening moved down by the
+    // teeth's height reaches), the lower teeth, the tongue above them and the dark above that.
+    const auto [across, down] = head_axes(face, paints);
+    const double mw = paints.view.scale() * face.face.fapu("MW0");
+    const auto offset = [&](double across_mw, double down_mw) {
+        return Point2{mw * (across_mw * across.x + down_mw * down.x), mw * (across_mw * across.y + down_mw * down.y)};
+    };
+    const std::size_t short_of_left = layer.definitions.size();
+    layer.definitions.push_back(moved_clip("tf-mouth-teeth-left-clip", clip, offset(kTeethCornerMw, 0.0)));
+    const std::size_t short_of_right = layer.definitions.size();
+    layer.definitions.push_back(moved_clip("tf-mouth-teeth-right-clip", clip, offset(-kTeethCornerMw, 0.0)));
+    const std::size_t under_upper_teeth = layer.definitions.size();
+    layer.definitions.push_back(moved_clip("tf-mouth-below-teeth-clip", clip, offset(0.0, kUpperTeethMw)));
+
+    const auto inside = [&](std::string_view name, const ShapePaint& paint, Point2 moved_by) {
+        Shape shape = reference_shape(name, clip, paint);
+        shape.offset = moved_by;
+        return shape;
+    };
+    ShapePaint dark = paints.mouth_opening;
+    dark.stroke = Paint{};
     ShapePaint outline = paints.mouth_opening;
     outline.fill = Paint{};
+    std::vector<Shape> below_teeth{inside("lower-teeth", paints.lower_teeth, {0.0, 0.0}),
+                                   inside("tongue", paints.tongue, offset(0.0, -kLowerTeethMw)),
+                                   inside("mouth-back", dark, offset(0.0, -kTongueMw))};
+    std::vector<Shape> teeth{inside("upper-teeth", paints.teeth, {0.0, 0.0}),
+                             clipped_group("mouth-below-upper-teeth", under_upper_teeth, std::move(below_teeth))};
+    // The opening moved to either side, intersected: the opening short of its corners, and inside it
+    // where the opening has no dent (its arcs bulge outwards at every mouth shape and smile;
+    // tests/render/layer_order_test.cpp checks it).
     layer.elements.push_back(path_shape("lips", std::move(outer), paints.lips));
-    layer.elements.push_back(reference_shape("mouth-opening", clip, inside));
+    layer.elements.push_back(reference_shape("mouth-opening", clip, dark));
+    layer.elements.push_back(clipped_group(
+        "mouth-inside", short_of_left, {clipped_group("mouth-inside-short-of-corners", short_of_right, std::move(teeth))}));
     layer.elements.push_back(reference_shape("mouth-opening-outline", clip, outline));
-}
-
-// The inside of an open mouth from top to bottom, as a radial gradient in the opening's bounding
-// box whose centre lies far above it: its rings cross the opening as flat arcs, lower in the
-// middle, like the rows of teeth. Offsets run from 2/3 at the top to 1 at the bottom.
-RadialGradient mouth_inside_gradient(const FaceColors& colors) {
-    constexpr double kCentreY = -2.0, kRadius = 3.0;
-    auto at = [&](double y) { return (y - kCentreY) / kRadius; };
-    const Rgb dark = colors.mouth_inside;
-    const Rgb tongue = blend(blend(colors.lips, Rgb{0xf0, 0x90, 0xa0}, 0.4), dark, 0.2);
-    const Rgb lower_teeth = blend(kTeethColour, dark, 0.12);
-    return {0.5, kCentreY, kRadius,
-            {{at(0.0), kTeethColour}, {at(0.24), kTeethColour}, {at(0.25), dark}, {at(0.55), dark},
-             {at(0.6), tongue}, {at(0.83), tongue}, {at(0.84), lower_teeth}, {at(1.0), lower_teeth}}};
 }
 
 ShapePaint paint_of(const Paint& fill, const Paint& stroke, double stroke_width) {
@@ -380,7 +426,9 @@ FacePaints make_face_paints(const ProjectedFace& face, const LayerStyle& style) 
         paints.mouth_opening = paint_of(Paint::of(colors.mouth_inside), outline, 0.6 * stroke);
         paints.iris_gradient = iris_gradient(colors.iris);
     }
-    paints.mouth_inside_gradient = mouth_inside_gradient(colors);
+    paints.teeth = paint_of(Paint::of(kTeethColour), none, 0.0);
+    paints.lower_teeth = paint_of(Paint::of(blend(kTeethColour, colors.mouth_inside, 0.12)), none, 0.0);
+    paints.tongue = paint_of(Paint::of(blend(colors.lips, Rgb{0xf2, 0x9a, 0xa6}, 0.55)), none, 0.0);
     return paints;
 }
 

@@ -61,8 +61,8 @@ struct FacePaints {
     ViewMap view;
     ShapePaint skin, ears, hair, nose, brows, eye_white, eye_outline, lips, mouth_opening;
     ShapePaint nose_shade;  // none: no shade
+    ShapePaint teeth, lower_teeth, tongue;   // inside the mouth, over mouth_opening's fill
     RadialGradient iris_gradient;            // of both irises
-    RadialGradient mouth_inside_gradient;    // teeth, the dark, the tongue, teeth (face_drawing.cpp)
     std::unordered_map<std::string, std::size_t> point_index;
     // A point of `face` by id, in the view. \throws talkface::InvalidArgument for an unknown id.
     Point2 point(const ProjectedFace& face, std::string_view id) const;

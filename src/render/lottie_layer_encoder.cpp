@@ -150,6 +150,7 @@ struct LottieLayerEncoder::Frame {
     std::vector<Value> values;
     std::vector<LottieLayerContent> layers;
     std::vector<std::string> items;  // the current Lottie layer's shapes, in paint order
+    std::string clip_masks;          // the clips around the shapes being walked, as masks
 
     // A placeholder for a property of these numbers (rounded to `digits`).
     std::string property(Form form, bool closed, double property_tolerance, int digits, std::vector<double> numbers) {
@@ -233,14 +234,20 @@ struct LottieLayerEncoder::Frame {
         return shapes;
     }
 
-    static std::string masks_of(const std::vector<std::string>& outlines, const char* name) {
-        std::string masks = "[";
+    // The masks of `outlines` (no brackets): their union ("a", added), or, `intersected` with the
+    // masks before them ("i"), the one outline's.
+    static std::string mask_items(const std::vector<std::string>& outlines, const char* name, bool intersected) {
+        std::string masks;
         for (const std::string& outline : outlines) {
-            if (masks.size() > 1) masks += ',';
-            masks += "{\"inv\":false,\"mode\":\"a\",\"pt\":" + outline +
+            if (!masks.empty()) masks += ',';
+            masks += std::string("{\"inv\":false,\"mode\":\"") + (intersected ? "i" : "a") + "\",\"pt\":" + outline +
                      ",\"o\":{\"a\":0,\"k\":100},\"x\":{\"a\":0,\"k\":0},\"nm\":\"" + name + "\"}";
         }
-        return masks + "]";
+        return masks;
+    }
+
+    static std::string masks_of(const std::vector<std::string>& outlines, const char* name) {
+        return "[" + mask_items(outlines, name, false) + "]";
     }
 
     // A gradient fill in the bounding box's units as SVG draws it on a box that is not square (an
@@ -270,14 +277,15 @@ struct LottieLayerEncoder::Frame {
     }
 
     // One shape as a group: its geometry, its stroke over its fill, and the group's transform.
-    void add_shape(const Layer& layer, const Shape& shape, bool in_clip) {
+    void add_shape(const Layer& layer, const Shape& shape) {
+        const bool in_clip = !clip_masks.empty();
         Box box;
         std::vector<std::string> geometry;
         std::vector<std::string> outlines;
         switch (shape.kind) {
             case ShapeKind::path: geometry = path_items(shape.path, box, outlines); break;
             case ShapeKind::reference:
-                geometry = path_items(layer.definitions.at(shape.definition).outline, box, outlines);
+                geometry = path_items(reference_outline(layer, shape), box, outlines);
                 break;
             case ShapeKind::polyline: {
                 // Open: Lottie fills an open path as if closed, as SVG fills a polyline.
@@ -310,7 +318,7 @@ struct LottieLayerEncoder::Frame {
         // A circle's box is square: its gradient is Lottie's own. Any other shape's may not be.
         const bool is_fill_in_box = shape.paint.fill.kind == PaintKind::gradient && shape.kind != ShapeKind::circle;
         if (is_fill_in_box) {
-            if (in_clip) throw internal_error("a gradient fill inside a clipped group has no Lottie form (masks do not nest)");
+            if (in_clip) throw internal_error("a gradient fill inside a clipped group has no Lottie form (its mask would be a union inside an intersection)");
             add_fill_in_box(layer.definitions.at(shape.paint.fill.gradient).gradient, box, outlines,
                             name + " " + std::string(shape.name.empty() ? "fill" : shape.name));
         }
@@ -341,28 +349,40 @@ struct LottieLayerEncoder::Frame {
         if (write_text) layers.push_back(std::move(content));
     }
 
-    void walk(const Layer& layer, const Shape& shape, bool in_clip) {
+    // The masks of the clipped layer being drawn, as close_layer() takes them.
+    std::string masks_now() const { return clip_masks.empty() ? std::string() : "[" + clip_masks + "]"; }
+
+    // A clipped group is a layer of its own, masked by its clip; inside another, by both: its
+    // mask intersects theirs (which a clip of several subpaths, a union, cannot do).
+    void walk(const Layer& layer, const Shape& shape, const std::string& layer_name) {
         if (shape.kind != ShapeKind::group) {
-            add_shape(layer, shape, in_clip);
+            add_shape(layer, shape);
             return;
         }
         if (!shape.is_clipped) {
-            for (const Shape& child : shape.children) walk(layer, child, in_clip);
+            for (const Shape& child : shape.children) walk(layer, child, layer_name);
             return;
         }
-        if (in_clip) throw internal_error("a clipped group inside a clipped group has no Lottie form (masks do not nest)");
-        close_layer(name, {});
+        close_layer(layer_name, masks_now());
         std::vector<std::string> outlines;
-        for (const Subpath& subpath : subpaths_of(layer.definitions.at(shape.definition).outline)) {
+        for (const Subpath& subpath : subpaths_of(clip_outline(layer, layer.definitions.at(shape.definition)))) {
             outlines.push_back(bezier(subpath));
         }
-        std::string masks = masks_of(outlines, "clip");
-        for (const Shape& child : shape.children) walk(layer, child, true);
-        close_layer(name + " " + std::string(shape.name.empty() ? "clipped" : shape.name), std::move(masks));
+        const bool intersected = !clip_masks.empty();
+        if (intersected && outlines.size() != 1) {
+            throw internal_error("a clip of " + std::to_string(outlines.size()) +
+                                 " subpaths inside a clipped group has no Lottie form (masks intersect one by one)");
+        }
+        const std::string outer = clip_masks;
+        clip_masks += (intersected ? "," : "") + mask_items(outlines, "clip", intersected);
+        const std::string clipped_name = name + " " + std::string(shape.name.empty() ? "clipped" : shape.name);
+        for (const Shape& child : shape.children) walk(layer, child, clipped_name);
+        close_layer(clipped_name, masks_now());
+        clip_masks = outer;
     }
 
     void walk(const Layer& layer) {
-        for (const Shape& shape : layer.elements) walk(layer, shape, false);
+        for (const Shape& shape : layer.elements) walk(layer, shape, name);
         close_layer(name, {});
     }
 };
@@ -372,7 +392,7 @@ LottieLayerEncoder::LottieLayerEncoder(std::string name, double tolerance, int d
 
 void LottieLayerEncoder::add(const Layer& layer) {
     const std::size_t frame = frame_count_++;
-    Frame walk{name_, tolerance_, decimals_, frame == 0, {}, {}, {}};
+    Frame walk{name_, tolerance_, decimals_, frame == 0, {}, {}, {}, {}};
     walk.walk(layer);
     if (frame == 0) {
         templates_ = std::move(walk.layers);

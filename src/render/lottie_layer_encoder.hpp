@@ -2,7 +2,8 @@
 // (lottie-web's JSON schema): each shape a group ("gr") of its geometry ("sh" Bezier paths, "el"
 // circles, "rc" rectangles), its stroke and fill ("st"/"fl", "gs"/"gf" for radial gradients) and a
 // transform ("tr"). A group clipped by a clip path becomes a layer of its own, masked by the clip's
-// outline (Lottie clips layers, not groups), so a drawing layer may give several Lottie layers; so
+// outline (Lottie clips layers, not groups), and a clipped group inside it one masked by both
+// outlines, intersected; so a drawing layer may give several Lottie layers; so
 // does a gradient fill on a shape other than a circle (SVG stretches it over the shape's box, which
 // Lottie can only do with a transform: a unit square stretched onto the box, masked by the shape).
 //
@@ -39,9 +40,9 @@ public:
     LottieLayerEncoder(std::string name, double tolerance, int decimals, std::size_t expected_frames);
 
     // The next frame's layer.
-    // \throws talkface::Error (internal) if it draws other shapes or path verbs than the first, or
-    //         a clipped group or a gradient-filled shape (but a circle) inside a clipped group
-    //         (Lottie's masks cannot nest).
+    // \throws talkface::Error (internal) if it draws other shapes or path verbs than the first, a
+    //         gradient-filled shape (but a circle) inside a clipped group, or a clip of several
+    //         subpaths inside one (Lottie intersects masks one at a time).
     void add(const Layer& layer);
 
     // The next frame is the same as the one before.

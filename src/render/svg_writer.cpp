@@ -126,7 +126,34 @@ private:
         svg_ += ">\n";
     }
 
+    // ` xlink:href="#ID"` of a clip path's outline path.
+    void outline_reference(const Definition& clip) {
+        svg_ += " xlink:href=\"#";
+        svg_ += options_.id_prefix;
+        svg_ += clip.outline_id;
+        svg_ += '"';
+    }
+
+    // A static move, written as drawn: ` transform="translate(X Y)"`, nothing for none.
+    void translate_attribute(Point2 offset) {
+        if (offset.x == 0.0 && offset.y == 0.0) return;
+        svg_ += " transform=\"translate(";
+        append_fixed(svg_, offset.x, options_.decimals);
+        svg_ += ' ';
+        append_fixed(svg_, offset.y, options_.decimals);
+        svg_ += ")\"";
+    }
+
     void write_definition(const Definition& definition) {
+        if (definition.kind == DefinitionKind::clip_path && definition.is_moved) {
+            svg_ += "<clipPath";
+            id_attribute("id", definition.id);
+            svg_ += ">\n<use";
+            outline_reference(layer_.definitions.at(definition.source));
+            translate_attribute(definition.offset);
+            svg_ += "/>\n</clipPath>\n";
+            return;
+        }
         if (definition.kind == DefinitionKind::clip_path) {
             svg_ += "<clipPath";
             id_attribute("id", definition.id);
@@ -198,10 +225,12 @@ private:
             case ShapeKind::reference: {
                 svg_ += "<use";
                 text_attribute("class", shape.name);
-                svg_ += " xlink:href=\"#";
-                svg_ += options_.id_prefix;
-                svg_ += layer_.definitions.at(shape.definition).outline_id;
-                svg_ += '"';
+                // A moved clip path has no outline path of its own: its source's, moved further.
+                const Definition& clip = layer_.definitions.at(shape.definition);
+                const Point2 offset = clip.is_moved ? Point2{shape.offset.x + clip.offset.x, shape.offset.y + clip.offset.y}
+                                                    : shape.offset;
+                outline_reference(clip.is_moved ? layer_.definitions.at(clip.source) : clip);
+                translate_attribute(offset);
                 paint_attributes(shape.paint, true);
                 svg_ += "/>\n";
                 return;

@@ -174,7 +174,8 @@ def test_lottie_is_the_face_itself_over_the_whole_speech(tmp_path):
     names = [layer["nm"] for layer in lottie["layers"]]
     assert names[-1] == "background" and "hair" in names and "clothes" in names
     masked = sorted(layer["nm"] for layer in lottie["layers"] if layer.get("hasMask"))
-    assert masked == ["face eyeball-left", "face eyeball-right", "face mouth-opening"]
+    assert masked == ["face eyeball-left", "face eyeball-right", "face mouth-below-upper-teeth",
+                      "face mouth-inside-short-of-corners"]
     # --face takes a face file, as animate's does.
     missing = run("export", AUDIO, TRANSCRIPT, "-o", "-", "--format", "lottie", "--quiet", "--face",
                   tmp_path / "missing.xml")

@@ -113,6 +113,49 @@ TEST_SUITE("drawing model") {
         CHECK(svg.find("#tf-") == std::string::npos);
     }
 
+    TEST_CASE("a moved clip path and a moved reference draw their source's outline under a translate") {
+        Layer layer;
+        Definition clip;
+        clip.kind = DefinitionKind::clip_path;
+        clip.id = "tf-clip";
+        clip.outline_id = "tf-outline";
+        clip.outline.move_to({1, 2}).line_to({5, 2}).line_to({3, 6}).close();
+        layer.definitions.push_back(clip);
+        Definition moved_clip;
+        moved_clip.kind = DefinitionKind::clip_path;
+        moved_clip.id = "tf-moved";
+        moved_clip.is_moved = true;
+        moved_clip.source = 0;
+        moved_clip.offset = {0.0, 1.25};
+        layer.definitions.push_back(moved_clip);
+        Shape reference;
+        reference.kind = ShapeKind::reference;
+        reference.name = "copy";
+        reference.definition = 1;
+        reference.offset = {-2.0, 0.0};
+        reference.paint.fill = Paint::of(Rgb{1, 2, 3});
+        Shape group;
+        group.kind = ShapeKind::group;
+        group.is_clipped = true;
+        group.definition = 1;
+        group.children.push_back(reference);
+        layer.elements.push_back(group);
+        // The outlines as drawn: the source's moved, and a reference's moved further.
+        CHECK(clip_outline(layer, layer.definitions[1]).points.front() == Point2{1.0, 3.25});
+        CHECK(reference_outline(layer, reference).points.back() == Point2{1.0, 7.25});
+        // Only the source's outline is a number an animation moves.
+        std::vector<NumericAttribute> attributes;
+        list_numeric_attributes(layer, attributes);
+        CHECK(attributes.size() == 1);
+        std::string svg;
+        write_layer_svg(layer, SvgLayerOptions{2, "f1-", nullptr}, svg);
+        CHECK(svg.find("<clipPath id=\"f1-tf-moved\">\n<use xlink:href=\"#f1-tf-outline\" transform=\"translate(0 1.25)\"/>") !=
+              std::string::npos);
+        CHECK(svg.find("<use class=\"copy\" xlink:href=\"#f1-tf-outline\" transform=\"translate(-2 1.25)\" fill=\"#010203\"") !=
+              std::string::npos);
+        CHECK(svg.find("clip-path=\"url(#f1-tf-moved)\"") != std::string::npos);
+    }
+
     TEST_CASE("the keyframes encoder refuses a frame drawn with other path verbs") {
         const Layer first = face_layer_at(FaceState{});
         Layer other = first;

@@ -128,6 +128,83 @@ double hidden_share(const Drawn& drawn, const char* ear) {
     return hidden / static_cast<double>(rim.size());
 }
 
+// The mouth's shapes flattened once, with their clips: what paints where inside the opening.
+struct PaintedShape {
+    std::string_view name;
+    std::vector<std::vector<Point2>> fill;           // empty: no fill
+    std::vector<std::vector<std::vector<Point2>>> clips;  // each clip's polygons; all must hold p
+};
+
+void list_painted(const Layer& layer, const std::vector<Shape>& shapes,
+                  std::vector<std::vector<std::vector<Point2>>>& clips, std::vector<PaintedShape>& painted) {
+    for (const Shape& shape : shapes) {
+        if (shape.kind == ShapeKind::group) {
+            if (shape.is_clipped) clips.push_back(flatten(clip_outline(layer, layer.definitions[shape.definition])));
+            list_painted(layer, shape.children, clips, painted);
+            if (shape.is_clipped) clips.pop_back();
+            continue;
+        }
+        if (shape.paint.fill.kind == PaintKind::none) continue;
+        painted.push_back({shape.name,
+                           flatten(shape.kind == ShapeKind::reference ? reference_outline(layer, shape) : shape.path),
+                           clips});
+    }
+}
+
+bool is_inside_any(const std::vector<std::vector<Point2>>& polygons, Point2 p) {
+    for (const auto& polygon : polygons) {
+        if (is_inside(polygon, p)) return true;
+    }
+    return false;
+}
+
+// What shows inside the mouth's opening: for each of the opening's parts, the points (of a grid
+// over the opening's box) where it is the shape painted last, as a renderer paints the mouth's
+// shapes (the lips, the opening and what is inside it; clips of nested groups intersect).
+struct MouthInside {
+    std::vector<std::pair<std::string, std::vector<Point2>>> parts{
+        {"upper-teeth", {}}, {"lower-teeth", {}}, {"tongue", {}}, {"mouth-back", {}}, {"mouth-opening", {}}};
+    std::vector<Point2> opening;  // the opening's outline as a polygon
+    std::size_t shown(std::string_view part) const {
+        for (const auto& [name, points] : parts) {
+            if (name == part) return points.size();
+        }
+        return 0;
+    }
+};
+
+MouthInside mouth_inside(const Layer& face) {
+    MouthInside inside;
+    const Shape& opening = shape_named(face, "mouth-opening");
+    inside.opening = flatten(reference_outline(face, opening)).front();
+    std::vector<PaintedShape> painted;
+    std::vector<std::vector<std::vector<Point2>>> clips;
+    for (const char* part : {"lips", "mouth-opening", "mouth-inside"}) list_painted(face, {shape_named(face, part)}, clips, painted);
+    double min_x = 1e300, min_y = 1e300, max_x = -1e300, max_y = -1e300;
+    for (const Point2& p : inside.opening) {
+        min_x = std::min(min_x, p.x);
+        min_y = std::min(min_y, p.y);
+        max_x = std::max(max_x, p.x);
+        max_y = std::max(max_y, p.y);
+    }
+    constexpr int kSteps = 32;
+    for (int i = 0; i <= kSteps; ++i) {
+        for (int j = 0; j <= kSteps; ++j) {
+            const Point2 p{min_x + (max_x - min_x) * i / kSteps, min_y + (max_y - min_y) * j / kSteps};
+            const PaintedShape* top = nullptr;
+            for (const PaintedShape& shape : painted) {
+                bool shows = is_inside_any(shape.fill, p);
+                for (const auto& clip : shape.clips) shows = shows && is_inside_any(clip, p);
+                if (shows) top = &shape;
+            }
+            for (auto& [name, points] : inside.parts) {
+                if (top != nullptr && top->name == name) points.push_back(p);
+            }
+        }
+    }
+    return inside;
+}
+
 std::vector<FaceState> states_at(const FaceModel& face, const Pose& pose) {
     std::vector<FaceState> states(2);
     states[1].mouth = mouth_controls(face, MouthShape::a);
@@ -224,20 +301,82 @@ TEST_SUITE("layer order") {
                             for (const Point2& p : polygon) CHECK(is_inside(outline, p));
                         }
                     }
-                    // The inside of the mouth (teeth, tongue) is the opening's own outline filled,
-                    // painted over the lips and under the opening's stroke; the opening lies within
-                    // the lips.
-                    const Shape& inside = shape_named(layer, "mouth-opening");
-                    CHECK(inside.kind == ShapeKind::reference);
-                    CHECK(inside.paint.fill.kind == PaintKind::gradient);
-                    CHECK(shape_named(layer, "mouth-opening-outline").definition == inside.definition);
+                    // The inside of the mouth (the dark, teeth, tongue) is painted over the lips and
+                    // under the opening's stroke, clipped by the opening, which lies within the lips.
+                    const Shape& opening = shape_named(layer, "mouth-opening");
+                    CHECK(opening.kind == ShapeKind::reference);
+                    CHECK(shape_named(layer, "mouth-opening-outline").definition == opening.definition);
+                    const Shape& inside = shape_named(layer, "mouth-inside");
+                    CHECK(inside.is_clipped);
                     CHECK(index_of(layer, "lips") < index_of(layer, "mouth-opening"));
-                    CHECK(index_of(layer, "mouth-opening") < index_of(layer, "mouth-opening-outline"));
+                    CHECK(index_of(layer, "mouth-opening") < index_of(layer, "mouth-inside"));
+                    CHECK(index_of(layer, "mouth-inside") < index_of(layer, "mouth-opening-outline"));
                     const std::vector<Point2> lips = flatten(shape_named(layer, "lips").path).front();
-                    for (const auto& polygon : flatten(layer.definitions[inside.definition].outline)) {
+                    for (const auto& polygon : flatten(layer.definitions[opening.definition].outline)) {
                         for (const Point2& p : polygon) CHECK(is_covered(lips, p, 0.0125 * drawn.d));
                     }
                   }
+                }
+            }
+        }
+    }
+    TEST_CASE("teeth and tongue show in an open mouth at their own size, hung from the lips, at every pose") {
+        // The upper teeth hang from the upper lip's inner edge, the lower teeth and the tongue stand
+        // on the lower lip's (which moves with the jaw), each no deeper than a fixed share of the
+        // mouth's width however far the mouth opens (a and e, a smiling); a closed mouth shows none
+        // of them. All of it lies inside the opening.
+        for (const auto& [name, face] : test::bundled_faces()) {
+            CAPTURE(name);
+            const double mouth_width = face.fapu("MW0");
+            for (const Pose& pose : test::pose_grid()) {
+                CAPTURE(pose.alpha_deg);
+                CAPTURE(pose.beta_deg);
+                CAPTURE(pose.gamma_deg);
+                for (const FaceLook look : {FaceLook::outlined, FaceLook::flat}) {
+                    CAPTURE(face_look_name(look));
+                    FaceState closed;
+                    closed.pose = pose;
+                    // (Turned, the closed lips' inner points part by their depths: a sliver of the
+                    // dark may show, but no teeth.)
+                    const MouthInside shut = mouth_inside(draw(face, closed, look).face);
+                    for (const char* part : {"upper-teeth", "lower-teeth", "tongue"}) {
+                        CAPTURE(part);
+                        CHECK(shut.shown(part) == 0);
+                    }
+                    for (const auto& [shape, smile] : {std::pair{MouthShape::a, 0.0}, std::pair{MouthShape::e, 0.0},
+                                                       std::pair{MouthShape::a, 1.0}}) {
+                        CAPTURE(mouth_shape_name(shape));
+                        CAPTURE(smile);
+                        FaceState state = closed;
+                        state.mouth = mouth_controls(face, shape);
+                        state.expression.smile = smile;
+                        const ProjectedFace projected = project_face(face, state);
+                        // Down the face: across it is the line between the outer eye corners.
+                        const Point2 across{projected.point("3.7").x - projected.point("3.12").x,
+                                            projected.point("3.7").y - projected.point("3.12").y};
+                        const double length = std::hypot(across.x, across.y);
+                        const Point2 down{-across.y / length, across.x / length};
+                        const auto moved = [&](Point2 p, double mouth_widths) {
+                            return Point2{p.x + mouth_widths * mouth_width * down.x, p.y + mouth_widths * mouth_width * down.y};
+                        };
+                        const MouthInside open = mouth_inside(draw(face, state, look).face);
+                        if (shape == MouthShape::a) {
+                            for (const char* part : {"upper-teeth", "lower-teeth", "tongue", "mouth-back"}) {
+                                CAPTURE(part);
+                                CHECK(open.shown(part) > 5);
+                            }
+                        }
+                        for (const auto& [part, points] : open.parts) {
+                            CAPTURE(part);
+                            for (const Point2& p : points) {
+                                CHECK(is_inside(open.opening, p));
+                                if (part == "upper-teeth") CHECK_FALSE(is_inside(open.opening, moved(p, -0.15)));
+                                if (part == "lower-teeth" || part == "tongue") {
+                                    CHECK_FALSE(is_inside(open.opening, moved(p, 0.25)));
+                                }
+                            }
+                        }
+                    }
                 }
             }
         }

@@ -241,12 +241,67 @@ TEST_SUITE("lottie") {
         other.elements.pop_back();
         CHECK_THROWS_AS(broken.add(other), Error);
 
-        Layer nested = moving_layer(0.0);
-        Shape outer = nested.elements[2];
-        outer.children.push_back(nested.elements[2]);
-        nested.elements.push_back(outer);
-        LottieLayerEncoder nesting("nesting", kTolerance, kDecimals, 1);
-        CHECK_THROWS_WITH_AS(nesting.add(nested), doctest::Contains("masks do not nest"), Error);
+        // A gradient fill of a path inside a clipped group would need a union (its box's mask) inside
+        // an intersection.
+        Layer boxed = moving_layer(0.0);
+        Shape blob = boxed.elements[1];
+        blob.paint.fill = Paint::of_gradient(1);
+        boxed.elements[2].children.push_back(blob);
+        LottieLayerEncoder boxing("boxing", kTolerance, kDecimals, 1);
+        CHECK_THROWS_WITH_AS(boxing.add(boxed), doctest::Contains("no Lottie form"), Error);
+    }
+
+    TEST_CASE("a clipped group inside another is masked by both clips, intersected; a moved clip by its source moved") {
+        // Inside the eyeball's group: the clip's outline moved 5 right (a moved clip), holding a
+        // reference to the clip's outline moved 3 down.
+        const auto nested_layer = [](double t) {
+            Layer layer = moving_layer(t);
+            Definition moved_clip;
+            moved_clip.kind = DefinitionKind::clip_path;
+            moved_clip.id = "tf-moved";
+            moved_clip.is_moved = true;
+            moved_clip.source = 0;
+            moved_clip.offset = {5.0, 0.0};
+            layer.definitions.push_back(moved_clip);
+            Shape reference;
+            reference.kind = ShapeKind::reference;
+            reference.name = "inner";
+            reference.definition = 0;
+            reference.offset = {0.0, 3.0};
+            reference.paint.fill = Paint::of(Rgb{250, 250, 240});
+            Shape inner;
+            inner.kind = ShapeKind::group;
+            inner.name = "inner-group";
+            inner.is_clipped = true;
+            inner.definition = 2;
+            inner.children.push_back(reference);
+            layer.elements[2].children.push_back(inner);
+            return layer;
+        };
+        LottieLayerEncoder encoder("test", kTolerance, kDecimals, kFrames);
+        for (std::size_t frame = 0; frame < kFrames; ++frame) {
+            encoder.add(nested_layer(static_cast<double>(frame) / static_cast<double>(kFrames - 1)));
+        }
+        const std::vector<LottieLayerContent> layers = encoder.finish();
+        REQUIRE(layers.size() == 4);
+        CHECK(layers[1].name == "test eyeball");
+        CHECK(layers[2].name == "test inner-group");
+        const JsonValue outer = parse(layers[1].masks);
+        const JsonValue inner = parse(layers[2].masks);
+        REQUIRE(outer.items.size() == 1);
+        REQUIRE(inner.items.size() == 2);
+        CHECK(inner.items[0].find("mode")->text == "a");
+        CHECK(inner.items[1].find("mode")->text == "i");
+        // Frame 0: the clip's first vertex (40, 40); the moved clip's 5 right of it, the reference's 3 below.
+        const auto first_vertex = [](const JsonValue& path) {
+            const JsonValue& value = *path.find("k");
+            const JsonValue& shape = path.find("a")->number == 0.0 ? value : *value.items[0].find("s")->items.data();
+            return std::make_pair(shape.find("v")->items[0].items[0].number, shape.find("v")->items[0].items[1].number);
+        };
+        CHECK(first_vertex(*inner.items[0].find("pt")) == std::make_pair(40.0, 40.0));
+        CHECK(first_vertex(*inner.items[1].find("pt")) == std::make_pair(45.0, 40.0));
+        const JsonValue inner_shapes = parse(layers[2].shapes);
+        CHECK(first_vertex(*inner_shapes.items[0].find("it")->items[0].find("ks")) == std::make_pair(40.0, 43.0));
     }
 
     TEST_CASE("an animation is one Lottie document: the composition, the face's layers, the mouth moving") {
@@ -278,16 +333,20 @@ TEST_SUITE("lottie") {
                 if (group.find("nm")->text == "lips") lips = &group;
             }
         }
-        // The eyeballs, clipped by their eye outlines, and the inside of the mouth, whose gradient
-        // stretches over its box: a unit square under a transform that follows the opening.
-        CHECK(masked == 3);
-        const auto mouth_inside = std::find_if(layers.begin(), layers.end(), [](const JsonValue& layer) {
-            return layer.find("nm")->text == "face mouth-opening";
+        // The eyeballs, clipped by their eye outlines, and the inside of the mouth: the upper teeth
+        // clipped by the opening moved to either side (short of the corners), the lower teeth,
+        // tongue and back also by the opening moved down (under the upper teeth).
+        CHECK(masked == 4);
+        const auto below_upper_teeth = std::find_if(layers.begin(), layers.end(), [](const JsonValue& layer) {
+            return layer.find("nm")->text == "face mouth-below-upper-teeth";
         });
-        REQUIRE(mouth_inside != layers.end());
-        const JsonValue& box_fill = mouth_inside->find("shapes")->items[0];
-        CHECK(box_fill.find("it")->items[1].find("ty")->text == "gf");
-        CHECK(key_count(*box_fill.find("it")->items[2].find("s")) >= 3);
+        REQUIRE(below_upper_teeth != layers.end());
+        const std::vector<JsonValue>& masks = below_upper_teeth->find("masksProperties")->items;
+        REQUIRE(masks.size() == 3);
+        CHECK(masks[0].find("mode")->text == "a");
+        for (std::size_t k = 1; k < masks.size(); ++k) CHECK(masks[k].find("mode")->text == "i");
+        // The opening and its moved copies move with the mouth.
+        for (const JsonValue& mask : masks) CHECK(key_count(*mask.find("pt")) >= 3);
         REQUIRE(lips != nullptr);
         const JsonValue& lips_path = *lips->find("it")->items[0].find("ks");
         CHECK(key_count(lips_path) >= 3);

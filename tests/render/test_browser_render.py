@@ -51,11 +51,6 @@ class Rendered:
         hex_colour = self.element(class_name).get("fill")
         return tuple(int(hex_colour[i:i + 2], 16) for i in (1, 3, 5))
 
-    def stop_colours(self, gradient_id):
-        gradient = next(e for e in self.root.iter() if e.get("id") == gradient_id)
-        return [tuple(int(stop.get("stop-color")[i:i + 2], 16) for i in (1, 3, 5))
-                for stop in gradient if stop.tag.endswith("stop")]
-
     def box(self, class_name):
         """Bounding box of an element's coordinates, in screenshot pixels."""
         element = self.element(class_name)
@@ -104,9 +99,9 @@ def test_hair_colour_appears_above_the_face(open_mouth):
 
 
 def test_open_mouth_shows_the_inside_and_a_closed_mouth_does_not(open_mouth, closed_mouth):
-    # The opening's gradient, top to bottom: upper teeth, the dark, the tongue, lower teeth.
-    teeth, _, dark = open_mouth.stop_colours("tf-mouth-inside-gradient")[:3]
-    for colour, least in ((dark, 60), (teeth, 30)):
+    # The dark, the upper teeth and the tongue, each the opening's outline (moved) filled.
+    dark, teeth, tongue = (open_mouth.colour(part) for part in ("mouth-opening", "upper-teeth", "tongue"))
+    for colour, least in ((dark, 60), (teeth, 30), (tongue, 30)):
         _, open_pixels = open_mouth.share_of(colour, open_mouth.box("lips"), tolerance=16)
         _, closed_pixels = closed_mouth.share_of(colour, closed_mouth.box("lips"), tolerance=16)
         assert open_pixels > least
