@@ -1331,9 +1331,11 @@ TF_API tf_status tf_write_timing_string(const tf_timeline *timeline, const char 
                                         size_t *out_len);
 
 /* The transcript spoken in audio_path, timed by the timing file instead of the aligner alone (what
- * `--timing FILE` does): word and syllable timings are read as they are; subtitle cues bound the
- * aligner (the recording is aligned and each cue's syllables are kept inside the cue). format NULL
- * or "" takes it from the suffix.
+ * `--timing FILE` does): word and syllable timings are read as they are; subtitle cues that give
+ * sentence times only pin the aligner (each sentence is searched only inside its cues; the models
+ * are learned, and a wrong text refused, over the whole recording), cues that time every syllable
+ * (WebVTT cue timestamps, as the vtt export writes) are read as they are. format NULL or "" takes
+ * it from the suffix.
  * Errors: as tf_read_timing_file and tf_align_file. */
 TF_API tf_status tf_time_transcript(const char *timing_path, const char *audio_path, const tf_timeline *transcript,
                                     const char *format, tf_timeline **out);

@@ -72,7 +72,7 @@ TALKFACE_API std::string timing_format_for_path(const std::string& path);
 /// `transcript` takes its times from the timing's word or syllable intervals (a word's span is
 /// shared evenly among its syllables); SRT and WebVTT cues time their sentences, and their
 /// syllables share each cue evenly (or take WebVTT's cue timestamps, one per syllable: what
-/// talkface's vtt export writes). time_transcript() bounds the aligner by the cues instead.
+/// talkface's vtt export writes). time_transcript() pins the aligner to the cues instead.
 /// "timeline-json" is read as it is, once its syllables are found to be the transcript's.
 /// `duration_s` is the audio's length (0: unknown, not checked); the result's duration_s is set to it.
 /// \throws talkface::ParseError naming source_name:line and what was expected for a malformed
@@ -91,8 +91,13 @@ TALKFACE_API Timeline read_timing_file(const std::string& path, const Timeline& 
 /// The transcript spoken in the recording `audio_path`, timed by the timing file `timing_path`
 /// instead of aligning the whole recording: word and syllable timings (textgrid, words-json,
 /// timeline-json) as read_timing_file reads them, checked against the audio's length; subtitle
-/// cues (srt, vtt) bound the aligner: the recording is aligned, and each cue's syllables are kept
-/// inside the cue (moved in proportion into it where the aligner put them outside).
+/// cues (srt, vtt) that give sentence times only pin the aligner: each sentence is searched only
+/// inside its cues instead of between the pauses the aligner would choose (the models are still
+/// learned, and a wrong text still refused, over the whole recording); where a cue splits a
+/// sentence, its syllables are then kept inside each cue (moved in proportion into it where the
+/// aligner put them outside). Cues that time every syllable (a WebVTT cue timestamp before each
+/// one after the first, as the vtt export writes, or a cue per syllable) are read as
+/// read_timing_file reads them.
 /// `format` empty: timing_format_for_path(timing_path). This is what `--timing FILE` does.
 /// \throws as read_timing_file; talkface::FileError / ParseError for the audio as
 ///         SpeechAligner::align_file; AlignmentError as align_file; Cancelled if `progress`

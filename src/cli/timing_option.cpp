@@ -16,8 +16,8 @@ void add_timing_option(CLI::App& command, SpeechTiming& timing) {
     command
         .add_option("--timing", timing.timing_path,
                     "Time the speech by this file instead of aligning it: a Praat TextGrid (a \"syllables\" or "
-                    "\"words\" tier, as Montreal Forced Aligner writes), SRT or WebVTT subtitles (the aligner's "
-                    "syllables are kept inside each cue), or JSON (a list of {\"text\",\"start\",\"end\"}, or the timeline JSON); "
+                    "\"words\" tier, as Montreal Forced Aligner writes), SRT or WebVTT subtitles (each "
+                    "sentence is aligned inside its cue), or JSON (a list of {\"text\",\"start\",\"end\"}, or the timeline JSON); "
                     "docs/timing-formats.md")
         ->check(CLI::ExistingFile);
 }

@@ -51,10 +51,14 @@ std::vector<SentenceChain> group_chains(const Timeline& transcript, const Senten
                 chains.emplace_back();
                 chains.back().first_sentence = k;
                 chains.back().speech = spans[k];
+                chains.back().limit = cut.limits.empty() ? FrameSpan{0, std::numeric_limits<std::size_t>::max()} : cut.limits[k];
             }
             SentenceChain& block = chains.back();
             block.end_sentence = k + 1;
             block.speech = {std::min(block.speech.first_frame, spans[k].first_frame), std::max(block.speech.end_frame, spans[k].end_frame)};
+            if (!cut.limits.empty())
+                block.limit = {std::min(block.limit.first_frame, cut.limits[k].first_frame),
+                               std::max(block.limit.end_frame, cut.limits[k].end_frame)};
             continues_block = cut.runs_on[k];
         }
         chains.back().syllables.push_back(&transcript.syllables[i]);
@@ -68,9 +72,11 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
     for (std::size_t w = 0; w < chains.size(); ++w) {
         SentenceChain& chain = chains[w];
         const FrameSpan& speech = chain.speech;
-        const std::size_t lower = w == 0 ? 0 : (chains[w - 1].speech.end_frame + speech.first_frame) / 2;
-        const std::size_t upper =
-            w + 1 == chains.size() ? track.frame_count : (speech.end_frame + chains[w + 1].speech.first_frame + 1) / 2;
+        const std::size_t lower = std::max(chain.limit.first_frame,
+                                           w == 0 ? 0 : (chains[w - 1].speech.end_frame + speech.first_frame) / 2);
+        const std::size_t upper = std::min(chain.limit.end_frame, w + 1 == chains.size()
+                                                                      ? track.frame_count
+                                                                      : (speech.end_frame + chains[w + 1].speech.first_frame + 1) / 2);
         chain.searched.first_frame = std::max(lower, speech.first_frame > kEdgeFrames ? speech.first_frame - kEdgeFrames : 0);
         // A sentence that ends in a room's tail is searched only a little past the voice's end, and
         // its vowels are scaled to the voiced part: the tail is not speech to spread them over.

@@ -20,6 +20,7 @@ struct SentenceChain {
     std::size_t end_sentence = 0;
     FrameSpan speech;   // from the cutter
     FrameSpan searched; // with the edges
+    FrameSpan limit;    // what the search may not leave: its sentences' SentenceCut::limits, or the audio
     std::vector<const Syllable*> syllables;
     std::vector<std::size_t> syllable_indices;
     std::vector<PhoneState> states;
@@ -30,12 +31,13 @@ struct SentenceChain {
 
 // The transcript's spoken sentences (those with syllables) grouped into chains: a sentence whose
 // end runs on (`cut.runs_on`) is chained to the next. Each chain's speech spans its sentences'
-// `spans`; searched spans and states are left to set_search_spans.
+// `spans`, its limit their `cut.limits` (none: every frame); searched spans and states are left to
+// set_search_spans.
 std::vector<SentenceChain> group_chains(const Timeline& transcript, const SentenceCut& cut,
                                         const std::vector<FrameSpan>& spans);
 
 // Each chain's searched span (its speech with the pauses around it, at most halfway to its
-// neighbours, and only a little of a room's tail) and its phone states, vowels scaled to the
+// neighbours, only a little of a room's tail, never past its limit) and its phone states, vowels scaled to the
 // speech they fill.
 // \throws talkface::InvalidArgument naming a syllable whose pinyin is not Mandarin.
 void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness, std::vector<SentenceChain>& chains);

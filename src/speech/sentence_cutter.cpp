@@ -174,6 +174,27 @@ std::vector<FrameSpan> choose_sentence_pauses(const LoudnessProfile& loudness, c
     return spans;
 }
 
+// The cut of every sentence from that of the spoken ones: a sentence without syllables (only
+// symbols) takes no time and sits at the next spoken one's start.
+void place_spoken_spans(const std::vector<std::size_t>& all_counts, const std::vector<std::size_t>& spoken,
+                        const std::vector<FrameSpan>& spoken_spans, const std::vector<bool>& spoken_runs_on,
+                        SentenceCut& cut) {
+    cut.spans.resize(all_counts.size());
+    cut.runs_on.assign(all_counts.size(), false);
+    std::size_t next_spoken = 0;
+    for (std::size_t k = 0; k < all_counts.size(); ++k) {
+        if (next_spoken < spoken.size() && spoken[next_spoken] == k) {
+            cut.runs_on[k] = spoken_runs_on[next_spoken];
+            cut.spans[k] = spoken_spans[next_spoken++];
+        } else {
+            const std::size_t at = next_spoken < spoken_spans.size() ? spoken_spans[next_spoken].first_frame
+                                   : spoken_spans.empty()           ? 0
+                                                                    : spoken_spans.back().end_frame;
+            cut.spans[k] = {at, at};
+        }
+    }
+}
+
 }  // namespace
 
 LoudnessProfile measure_loudness(const FeatureTrack& track) {
@@ -256,20 +277,52 @@ SentenceCut cut_sentences(const FeatureTrack& track, const LoudnessProfile& loud
         spoken_runs_on = find_run_together(spoken_spans, spoken_counts, loudness);
         cut.is_in_doubt = are_sentence_ends_in_doubt(spoken_spans, spoken_counts, loudness);
     }
-    cut.spans.resize(all_counts.size());
-    cut.runs_on.assign(all_counts.size(), false);
-    std::size_t next_spoken = 0;
+    place_spoken_spans(all_counts, spoken, spoken_spans, spoken_runs_on, cut);
+    return cut;
+}
+
+SentenceCut given_sentence_cut(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
+                               const std::vector<GivenSpan>& spans_s) {
+    const std::vector<std::size_t> all_counts = syllables_per_sentence(transcript);
+    if (spans_s.size() != all_counts.size())
+        throw InvalidArgument("spans", "expected one span per sentence (" + std::to_string(all_counts.size()) +
+                                           "), found " + std::to_string(spans_s.size()));
+    const double duration_s = static_cast<double>(track.frame_count) * kFrameStepS;
+    std::vector<std::size_t> spoken;
+    std::vector<FrameSpan> limits;
     for (std::size_t k = 0; k < all_counts.size(); ++k) {
-        if (next_spoken < spoken.size() && spoken[next_spoken] == k) {
-            cut.runs_on[k] = spoken_runs_on[next_spoken];
-            cut.spans[k] = spoken_spans[next_spoken++];
-        } else {
-            const std::size_t at = next_spoken < spoken_spans.size() ? spoken_spans[next_spoken].first_frame
-                                   : spoken_spans.empty()           ? 0
-                                                                    : spoken_spans.back().end_frame;
-            cut.spans[k] = {at, at};
+        if (all_counts[k] == 0) continue;
+        const GivenSpan& given = spans_s[k];
+        if (!(std::isfinite(given.start_s) && std::isfinite(given.end_s) && given.start_s >= 0.0 &&
+              given.end_s > given.start_s && given.start_s < duration_s)) {
+            throw InvalidArgument("spans", "sentence " + std::to_string(k + 1) + " (" +
+                                               quote_start(transcript.sentences[k].text) + "): expected 0 <= start < end, start inside the " +
+                                               format_fixed(duration_s, 3) + " s of audio, found " +
+                                               format_fixed(given.start_s, 3) + "-" + format_fixed(given.end_s, 3) + " s");
         }
+        spoken.push_back(k);
+        const auto first = static_cast<std::size_t>(std::floor(given.start_s / kFrameStepS));
+        const auto end = std::min(track.frame_count, static_cast<std::size_t>(std::ceil(given.end_s / kFrameStepS)));
+        limits.push_back({first, std::max(end, first + 1)});
     }
+    std::vector<FrameSpan> spoken_spans;
+    std::vector<bool> spoken_runs_on(spoken.size(), false);
+    for (std::size_t i = 0; i < spoken.size(); ++i) {
+        // The syllables' durations follow the speech, not the quiet edges a cue leaves around it.
+        const FrameSpan& limit = limits[i];
+        auto is_speech = [&](std::size_t t) { return loudness.activity_db[t] >= loudness.activity_threshold_db; };
+        std::size_t first = limit.first_frame;
+        std::size_t end = limit.end_frame;
+        while (first < end && !is_speech(first)) ++first;
+        while (end > first && !is_speech(end - 1)) --end;
+        spoken_spans.push_back(end > first ? FrameSpan{first, end} : limit);
+        // One cue for both, or a cue across the end of one: a cue that starts where the last ended does not.
+        if (i + 1 < spoken.size()) spoken_runs_on[i] = spans_s[spoken[i + 1]].start_s < spans_s[spoken[i]].end_s;
+    }
+    SentenceCut cut;
+    place_spoken_spans(all_counts, spoken, spoken_spans, spoken_runs_on, cut);
+    cut.limits.assign(all_counts.size(), {0, track.frame_count});
+    for (std::size_t i = 0; i < spoken.size(); ++i) cut.limits[spoken[i]] = limits[i];
     return cut;
 }
 

@@ -1,7 +1,8 @@
-// Sentence utterances: where each sentence of the transcript is spoken (thesis 3.2). Two ways:
-// Algorithm 3.1 from a pause the caller selects, and an automatic one that learns the noise level
+// Sentence utterances: where each sentence of the transcript is spoken (thesis 3.2). Three ways:
+// Algorithm 3.1 from a pause the caller selects, an automatic one that learns the noise level
 // and the pauses from the audio and lets the transcript's sentences choose among them (SPEC
-// "Alignment": noise-adjusted loudness per band, a duration prior from each sentence's syllables).
+// "Alignment": noise-adjusted loudness per band, a duration prior from each sentence's syllables),
+// and spans the caller gives (subtitle cues, issue #15), which the search never leaves.
 #ifndef TALKFACE_SPEECH_SENTENCE_CUTTER_HPP
 #define TALKFACE_SPEECH_SENTENCE_CUTTER_HPP
 
@@ -46,6 +47,8 @@ struct SentenceCut {
     // The pauses do not single the sentence ends out (run_together.hpp): a cut that the syllables
     // refuse may be a comma's pause taken for a sentence's end.
     bool is_in_doubt = false;
+    // Per sentence: the frames its search may not leave (given spans); empty: no bound.
+    std::vector<FrameSpan> limits;
 };
 
 // The sentences of `transcript` cut from the audio.
@@ -54,6 +57,21 @@ struct SentenceCut {
 // \throws talkface::InvalidArgument if the first pause lies outside the audio.
 SentenceCut cut_sentences(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
                           const AlignOptions& options);
+
+// A sentence's time span as the caller gives it (a subtitle cue's), seconds.
+struct GivenSpan {
+    double start_s = 0.0;
+    double end_s = 0.0;
+};
+
+// The sentences of `transcript` where `spans_s` (one per sentence; those of sentences without
+// syllables are not read) says they are spoken: each sentence's speech is what is louder than the
+// noise inside its span (the whole span where nothing is), its search stays inside the span, and
+// neighbours whose spans overlap (one cue for both) are aligned as one chain.
+// \throws talkface::InvalidArgument naming the sentence whose span is not 0 <= start < end inside
+//         the audio, or if `spans_s` does not hold one span per sentence.
+SentenceCut given_sentence_cut(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
+                               const std::vector<GivenSpan>& spans_s);
 
 }  // namespace talkface::detail
 

@@ -14,6 +14,7 @@
 #include "speech/alignment_checks.hpp"
 #include "speech/alignment_confidence.hpp"
 #include "speech/frame_features.hpp"
+#include "speech/given_spans_alignment.hpp"
 #include "speech/hsmm.hpp"
 #include "speech/lenient_chain.hpp"
 #include "speech/phone_chain.hpp"
@@ -276,13 +277,16 @@ Timeline align_confirmed(const FeatureTrack& track, const LoudnessProfile& loudn
     return align_cut(track, loudness, transcript, confirmed, progress, is_checked, is_lenient);
 }
 
+// `given_spans` empty: the sentences cut as options.sentence_cut says; else where they say.
 Timeline align_track(const FeatureTrack& track, const Timeline& transcript, const AlignOptions& options,
-                     ProgressReporter& progress, bool is_checked) {
+                     const std::vector<GivenSpan>& given_spans, ProgressReporter& progress, bool is_checked) {
     const LoudnessProfile loudness = measure_loudness(track);
     if (loudness.speech_end_frame <= loudness.speech_first_frame)
         throw AlignmentError("no speech found in the " + format_fixed(track.duration_s, 2) +
                              " s of audio: nothing rises above its noise floor");
-    const SentenceCut cut = cut_sentences(track, loudness, transcript, options);
+    const bool is_given = !given_spans.empty();
+    const SentenceCut cut = is_given ? given_sentence_cut(track, loudness, transcript, given_spans)
+                                     : cut_sentences(track, loudness, transcript, options);
     progress.report(kReadingShare + kCuttingShare, "sentences");
     const std::vector<bool> is_spoken = spoken_sentences_of(transcript);
     const auto spoken_sentences = static_cast<std::size_t>(std::count(is_spoken.begin(), is_spoken.end(), true));
@@ -293,7 +297,7 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
     } catch (const AlignmentError& error) {
         // Fewer stretches of speech than sentences: either sentences run together or the
         // transcript has one the audio lacks; the first is tried, and the message tells of both.
-        if (options.sentence_cut == SentenceCutMode::automatic && stretches < spoken_sentences)
+        if (!is_given && options.sentence_cut == SentenceCutMode::automatic && stretches < spoken_sentences)
             throw AlignmentError("the transcript has " + std::to_string(spoken_sentences) +
                                  " spoken sentences but the audio has only " + std::to_string(stretches) +
                                  " stretches of speech between pauses, and run together they do not fit it either: " +
@@ -303,7 +307,7 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
         // Aligned as one block, the syllables find the ends; a transcript that does not match the
         // audio fails there too, and the first, sentence-by-sentence, account of it is kept. Where
         // the pauses do single the sentence ends out (and in the caller's own cut, Algorithm 3.1),
-        // the cut stands and so does the refusal.
+        // the cut stands and so does the refusal, as it does for given spans.
         if (!cut.is_in_doubt || block_count(cut, transcript) == 1) throw;
         SentenceCut block = cut;
         std::fill(block.runs_on.begin(), block.runs_on.end(), true);
@@ -331,13 +335,14 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
 // again without them, and their finding kept in its warnings; off, no checks at all. Lenient
 // alignment reports what does not match in place of the checks.
 Timeline align_checked(const FeatureTrack& track, const Timeline& transcript, const AlignOptions& options,
-                       ProgressReporter& progress) {
-    if (options.lenient) return align_track(track, transcript, options, progress, false);
-    if (options.check != CheckMode::warn) return align_track(track, transcript, options, progress, options.check == CheckMode::refuse);
+                       const std::vector<GivenSpan>& given_spans, ProgressReporter& progress) {
+    if (options.lenient) return align_track(track, transcript, options, given_spans, progress, false);
+    if (options.check != CheckMode::warn)
+        return align_track(track, transcript, options, given_spans, progress, options.check == CheckMode::refuse);
     try {
-        return align_track(track, transcript, options, progress, true);
+        return align_track(track, transcript, options, given_spans, progress, true);
     } catch (const AlignmentError& error) {
-        Timeline result = align_track(track, transcript, options, progress, false);
+        Timeline result = align_track(track, transcript, options, given_spans, progress, false);
         result.warnings.push_back(std::string("the transcript may not match the audio (aligned anyway, check mode warn): ") +
                                   error.what());
         return result;
@@ -345,13 +350,13 @@ Timeline align_checked(const FeatureTrack& track, const Timeline& transcript, co
 }
 
 Timeline align_source(AudioSource& source, const Timeline& transcript, const AlignOptions& options,
-                      const ProgressCallback& callback) {
+                      const std::vector<GivenSpan>& given_spans, const ProgressCallback& callback) {
     validate_transcript(transcript);
     ProgressReporter progress(callback);
     progress.report(0.0, "reading");
     const FeatureTrack track =
         analyze_audio(source, [&](double fraction) { progress.report(kReadingShare * fraction, "reading"); });
-    return align_checked(track, transcript, options, progress);
+    return align_checked(track, transcript, options, given_spans, progress);
 }
 
 }  // namespace
@@ -386,7 +391,7 @@ const AlignOptions& SpeechAligner::options() const { return impl_->options; }
 
 Timeline SpeechAligner::align(const AudioView& audio, const Timeline& transcript, const ProgressCallback& progress) const {
     const auto source = open_audio_view(audio);
-    return align_source(*source, transcript, impl_->options, progress);
+    return align_source(*source, transcript, impl_->options, {}, progress);
 }
 
 Timeline SpeechAligner::align_file(const std::string& audio_path, const Timeline& transcript,
@@ -394,7 +399,7 @@ Timeline SpeechAligner::align_file(const std::string& audio_path, const Timeline
     validate_transcript(transcript);
     const auto source = open_audio_file(audio_path);
     try {
-        return align_source(*source, transcript, impl_->options, progress);
+        return align_source(*source, transcript, impl_->options, {}, progress);
     } catch (const AlignmentError& error) {
         // Name the audio: the times in the message are in this file.
         throw AlignmentError(audio_path + ": " + error.what());
@@ -403,3 +408,18 @@ Timeline SpeechAligner::align_file(const std::string& audio_path, const Timeline
 
 }  // namespace v0
 }  // namespace talkface
+
+namespace talkface::detail {
+
+Timeline align_file_in_given_spans(const std::string& audio_path, const Timeline& transcript,
+                                   const std::vector<GivenSpan>& sentence_spans_s, const ProgressCallback& progress) {
+    validate_transcript(transcript);
+    const auto source = open_audio_file(audio_path);
+    try {
+        return align_source(*source, transcript, AlignOptions(), sentence_spans_s, progress);
+    } catch (const AlignmentError& error) {
+        throw AlignmentError(audio_path + ": " + error.what());
+    }
+}
+
+}  // namespace talkface::detail

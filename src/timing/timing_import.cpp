@@ -1,19 +1,22 @@
 // A transcript timed by a timing file and its recording (timing_formats.hpp's time_transcript):
-// word and syllable timings are read as they are; subtitle cues bound the aligner: the whole
-// recording is aligned, and each cue's syllables are kept inside the cue.
+// word and syllable timings are read as they are; subtitle cues pin the aligner: each sentence is
+// searched only inside its cues (speech/given_spans_alignment.hpp), in place of the pauses the
+// aligner would choose.
 //
 // Why not align each cue's stretch of audio alone: the aligner's checks of a wrong text need the
 // rest of the recording (its one-sentence checks refuse right sentences cut from a longer file, as
-// tests/data/speech/two_sentences' second sentence), so a cue alone is not enough to align.
+// tests/data/speech/two_sentences' second sentence), so a cue alone is not enough to align; the
+// pinned alignment re-estimates and checks over every cue at once.
 #include <algorithm>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "audio/audio_source.hpp"
 #include "common/atomic_file.hpp"
+#include "speech/given_spans_alignment.hpp"
 #include "talkface/errors.hpp"
-#include "talkface/speech_aligner.hpp"
 #include "talkface/timing_formats.hpp"
 #include "timing/import_readers.hpp"
 #include "timing/timed_units.hpp"
@@ -26,9 +29,28 @@ namespace {
 // Where the aligner may overshoot a cue without being moved: subtitle times are milliseconds.
 constexpr double kCueToleranceS = 0.0015;
 
-// Maps the syllables [first, last) of `timeline` from the span the aligner gave them into the
-// cue: unchanged where they lie inside it, else moved in proportion into the part of the cue they
-// overlap (or the whole cue, where they missed it).
+// Each sentence's span: from the start of the first cue holding one of its syllables to the end of
+// the last (a sentence split over cues is searched over all of them; sentences sharing a cue, or
+// a cue across a sentence end, are aligned together). Sentences without syllables: 0..0, unread.
+std::vector<detail::GivenSpan> sentence_spans(const Timeline& transcript, const std::vector<detail::TimedUnit>& cues,
+                                              const std::vector<std::pair<std::size_t, std::size_t>>& ranges) {
+    std::vector<detail::GivenSpan> spans(transcript.sentences.size());
+    std::vector<bool> is_set(spans.size(), false);
+    for (std::size_t c = 0; c < cues.size(); ++c) {
+        for (std::size_t i = ranges[c].first; i < ranges[c].second; ++i) {
+            const std::size_t k = transcript.syllables[i].sentence;
+            spans[k] = is_set[k] ? detail::GivenSpan{std::min(spans[k].start_s, cues[c].start_s), std::max(spans[k].end_s, cues[c].end_s)}
+                                 : detail::GivenSpan{cues[c].start_s, cues[c].end_s};
+            is_set[k] = true;
+        }
+    }
+    return spans;
+}
+
+// Where a cue splits a sentence, or two sentences share a chain, the aligner keeps the syllables
+// only inside the sentences' spans: maps the syllables [first, last) of `timeline` from the span
+// the aligner gave them into the cue: unchanged where they lie inside it, else moved in
+// proportion into the part of the cue they overlap (or the whole cue, where they missed it).
 void keep_inside(Timeline& timeline, std::size_t first, std::size_t last, const detail::TimedUnit& cue) {
     const double from_s = timeline.syllables[first].start_s;
     const double to_s = timeline.syllables[last - 1].end_s;
@@ -64,7 +86,16 @@ Timeline time_transcript(const std::string& timing_path, const std::string& audi
                                                                 : detail::read_webvtt_units(text, timing_path);
     detail::check_unit_times(cues, duration_s, timing_path);
     const auto ranges = detail::unit_syllable_ranges(transcript, cues, timing_path);
-    Timeline timeline = SpeechAligner().align_file(audio_path, transcript, progress);
+    // Cues that time every syllable (WebVTT cue timestamps, one before each syllable after the
+    // first, as talkface's vtt export writes) are a syllable timing: read as they are.
+    const bool times_syllables = std::all_of(cues.begin(), cues.end(), [&](const detail::TimedUnit& cue) {
+        const auto& range = ranges[static_cast<std::size_t>(&cue - cues.data())];
+        return cue.inner_starts_s.size() + 1 == range.second - range.first;
+    });
+    if (times_syllables)
+        return detail::match_timed_units(transcript, cues, duration_s, timing_path, detail::UnitKind::cues);
+    Timeline timeline =
+        detail::align_file_in_given_spans(audio_path, transcript, sentence_spans(transcript, cues, ranges), progress);
     for (std::size_t c = 0; c < cues.size(); ++c) {
         if (ranges[c].first < ranges[c].second) keep_inside(timeline, ranges[c].first, ranges[c].second, cues[c]);
     }

@@ -395,8 +395,41 @@ static int test_lenient_reports_speech_the_transcript_lacks(void) {
     return failures;
 }
 
+/* A subtitle cue pins the aligner (tf_time_transcript, issue #15): a cue narrower than the speech
+ * keeps every syllable inside it. */
+static int test_a_subtitle_cue_pins_the_syllables(void) {
+    int failures = 0;
+    tf_timeline *transcript = clip_transcript();
+    tf_timeline *timeline = NULL;
+    const char *cue_path = TF_TEST_OUTPUT_DIR "/one_sentence_cue.srt";
+    FILE *file = fopen(cue_path, "wb");
+    size_t count = 0;
+    size_t k;
+    CHECK(transcript != NULL && file != NULL);
+    if (transcript == NULL || file == NULL) return failures;
+    /* 小朋友們在公園裡放風箏。, spoken 0.30-2.79 s, cued 0.60-2.50 s. */
+    fputs("1\n00:00:00,600 --> 00:00:02,500\n"
+          "\xe5\xb0\x8f\xe6\x9c\x8b\xe5\x8f\x8b\xe5\x80\x91\xe5\x9c\xa8\xe5\x85\xac\xe5\x9c\x92\xe8\xa3\xa1"
+          "\xe6\x94\xbe\xe9\xa2\xa8\xe7\xae\x8f\xe3\x80\x82\n",
+          file);
+    fclose(file);
+    CHECK_OK(tf_time_transcript(cue_path, kClipPath, transcript, NULL, &timeline));
+    CHECK_OK(tf_timeline_syllable_count(timeline, &count));
+    CHECK(count == kClipSyllables);
+    for (k = 0; k < count; ++k) {
+        double start_s = 0.0;
+        double end_s = 0.0;
+        CHECK_OK(tf_timeline_syllable_times(timeline, k, &start_s, &end_s, NULL, NULL));
+        CHECK(start_s >= 0.6 - 1e-9 && end_s <= 2.5 + 1e-9 && start_s < end_s);
+    }
+    tf_timeline_destroy(timeline);
+    tf_timeline_destroy(transcript);
+    return failures;
+}
+
 int main(void) {
     int failures = 0;
+    failures += test_a_subtitle_cue_pins_the_syllables();
     failures += test_check_modes_refuse_warn_or_skip();
     failures += test_lenient_reports_speech_the_transcript_lacks();
     failures += test_the_alignment_plot_is_an_svg_of_the_clip();

@@ -138,14 +138,25 @@ def test_timing_file_instead_of_aligning(tmp_path, aligned):
     assert again.read_text() == grid.read_text()
 
 
-def test_subtitle_cues_bound_the_aligner(tmp_path, aligned):
+def test_subtitle_cues_pin_the_aligner(tmp_path):
     cues = tmp_path / "cues.srt"
     # The second sentence is spoken 2.57-4.15 s; its cue says 2.80-4.00, the first cue is right.
     cues.write_text("1\n00:00:00,290 --> 00:00:01,690\n今天下午有雨。\n\n"
                     "2\n00:00:02,800 --> 00:00:04,000\n我们明天再去吧。\n", encoding="utf-8")
-    bounded = export(tmp_path, "bounded.srt", "--timing", cues).read_text(encoding="utf-8")
-    assert bounded == export(tmp_path, "aligned.srt").read_text(encoding="utf-8").replace(
-        "00:00:02,570 --> 00:00:04,150", "00:00:02,800 --> 00:00:04,000")
+    pinned = export(tmp_path, "pinned.srt", "--timing", cues).read_text(encoding="utf-8").split("\n\n")
+    assert pinned[0] == export(tmp_path, "aligned.srt").read_text(encoding="utf-8").split("\n\n")[0]
+    times = pinned[1].splitlines()[1]
+    assert "00:00:02,800" <= times[:12] and times[-12:] <= "00:00:04,000"
+    # Searched only inside its cue, the sentence keeps the syllables the cue does not cut where
+    # espeak-ng put them (天 再 去, within 50 ms), instead of squeezing them all in proportion.
+    grid = export(tmp_path, "pinned.TextGrid", "--timing", cues).read_text(encoding="utf-8")
+    tier = grid[grid.index('name = "syllables"'):]
+    starts = [float(line.split("=")[1]) for line in tier.splitlines() if line.strip().startswith("xmin")][1:]
+    labels = [line.split("=")[1].strip().strip('"') for line in tier.splitlines() if line.strip().startswith("text")]
+    spoken = [start for start, label in zip(starts, labels) if label]
+    truth = json.loads((CLIPS_DIR / "two_sentences.json").read_text(encoding="utf-8"))["syllables"]
+    for k in (9, 10, 11):
+        assert abs(spoken[k] - truth[k]["start"]) < 0.05, (k, spoken[k])
     result = run("keyframes", AUDIO, TRANSCRIPT, "--timing", cues, "-o", "-")
     assert result.returncode == 0, result.stderr
     assert json.loads(result.stdout)["mouth"] != json.loads(run("keyframes", AUDIO, TRANSCRIPT, "-o", "-").stdout)["mouth"]

@@ -89,3 +89,14 @@ def test_time_transcript_reads_a_word_timing_against_the_recording(tmp_path):
     timeline = talkface.time_transcript(timing, clips / "one_sentence.wav", transcript)
     assert timeline.duration_s == duration_s
     assert timeline.syllables[1].start_s == pytest.approx(0.3)
+
+
+def test_time_transcript_pins_the_aligner_to_a_subtitle_cue(tmp_path):
+    import pathlib
+    clips = pathlib.Path(__file__).parents[2] / "tests" / "data" / "speech"
+    transcript = talkface.load_transcript(clips / "one_sentence.txt")
+    cue = tmp_path / "cue.srt"  # the sentence is spoken 0.30-2.79 s; its cue says 0.60-2.50
+    cue.write_text("1\n00:00:00,600 --> 00:00:02,500\n小朋友們在公園裡放風箏。\n", encoding="utf-8")
+    timeline = talkface.time_transcript(cue, clips / "one_sentence.wav", transcript)
+    assert len(timeline.syllables) == len(transcript.syllables)
+    assert all(0.6 - 1e-9 <= s.start_s < s.end_s <= 2.5 + 1e-9 for s in timeline.syllables)

@@ -6,12 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "common/test_paths.hpp"
+#include "common/speech_clips.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/speech_aligner.hpp"
 #include "talkface/transcript.hpp"
@@ -19,19 +18,6 @@
 using namespace talkface;
 
 namespace {
-
-std::string clip(const std::string& file) { return test::source_path("tests/data/speech/" + file); }
-
-// The syllables' true starts: the "start" values after "syllables" in the generator's truth.
-std::vector<double> true_starts() {
-    std::ifstream in(clip("lenient_espeak.json"));
-    const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    std::vector<double> starts;
-    for (std::size_t at = json.find("\"start\":", json.find("\"syllables\"")); at != std::string::npos;
-         at = json.find("\"start\":", at + 1))
-        starts.push_back(std::stod(json.substr(at + 8)));
-    return starts;
-}
 
 // Where 公园 (syllables 5 and 6 of what is said) starts and ends.
 constexpr std::size_t kWordFirst = 5;
@@ -47,10 +33,10 @@ SpeechAligner lenient_aligner() {
 
 TEST_SUITE("speech") {
     TEST_CASE("lenient: a word the transcript lacks is reported where it is said; the rest is in place") {
-        const auto truth = true_starts();
+        const auto truth = test::true_starts("lenient_espeak");
         REQUIRE(truth.size() == 11);
         const Timeline transcript = read_transcript("小朋友们在里放风筝。");
-        const Timeline aligned = lenient_aligner().align_file(clip("lenient_espeak.flac"), transcript);
+        const Timeline aligned = lenient_aligner().align_file(test::clip_path("lenient_espeak.flac"), transcript);
         REQUIRE(aligned.mismatches.size() == 1);
         const TextMismatch& mismatch = aligned.mismatches.front();
         CHECK(mismatch.syllable_count == 0);
@@ -71,9 +57,9 @@ TEST_SUITE("speech") {
     }
 
     TEST_CASE("lenient: a changed word is reported inside its stretch; the syllables around it keep their place") {
-        const auto truth = true_starts();
-        const Timeline transcript = load_transcript(clip("lenient_espeak.txt"));  // 学校 for 公园
-        const Timeline aligned = lenient_aligner().align_file(clip("lenient_espeak.flac"), transcript);
+        const auto truth = test::true_starts("lenient_espeak");
+        const Timeline transcript = load_transcript(test::clip_path("lenient_espeak.txt"));  // 学校 for 公园
+        const Timeline aligned = lenient_aligner().align_file(test::clip_path("lenient_espeak.flac"), transcript);
         REQUIRE(aligned.mismatches.size() == 1);
         const TextMismatch& mismatch = aligned.mismatches.front();
         CHECK(mismatch.syllable_count >= 1);
@@ -103,8 +89,8 @@ TEST_SUITE("speech") {
             {"run_together", ".flac"}, {"short_line", ".flac"}};
         for (const auto& [name, suffix] : clips) {
             CAPTURE(name);
-            const std::string audio = clip(std::string(name) + suffix);
-            const Timeline transcript = load_transcript(clip(std::string(name) + ".txt"));
+            const std::string audio = test::clip_path(std::string(name) + suffix);
+            const Timeline transcript = load_transcript(test::clip_path(std::string(name) + ".txt"));
             const Timeline strict = SpeechAligner().align_file(audio, transcript);
             const Timeline lenient = lenient_aligner().align_file(audio, transcript);
             CHECK(lenient.mismatches.empty());

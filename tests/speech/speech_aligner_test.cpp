@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "common/speech_clips.hpp"
 #include "common/test_paths.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/speech_aligner.hpp"
@@ -23,20 +24,10 @@ struct Clip {
     std::string name;
 };
 
-std::string clip_path(const std::string& file) { return test::source_path("tests/data/speech/" + file); }
+using test::clip_path;
+using test::true_starts;
 
 Timeline clip_transcript(const std::string& name) { return load_transcript(clip_path(name + ".txt")); }
-
-// The true onsets of tests/data/speech/NAME.json (its "start" values, syllables after sentences).
-std::vector<double> true_starts(const std::string& name) {
-    std::ifstream in(clip_path(name + ".json"));
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    std::vector<double> starts;
-    const std::size_t syllables = text.find("\"syllables\"");
-    for (std::size_t at = text.find("\"start\":", syllables); at != std::string::npos; at = text.find("\"start\":", at + 1))
-        starts.push_back(std::stod(text.substr(at + 8)));
-    return starts;
-}
 
 std::vector<double> sentence_truth(const std::string& name, const char* key) {
     std::ifstream in(clip_path(name + ".json"));

@@ -151,8 +151,10 @@ Example:
         py::arg("timing_path"), py::arg("audio_path"), py::arg("transcript"), py::arg("format") = "", R"doc(
 The transcript spoken in a recording, timed by a timing file instead of aligning the whole
 recording (what `--timing FILE` does): word and syllable timings as read_timing_file() reads them;
-subtitle cues bound the aligner: the recording is aligned and each cue's syllables are kept inside
-the cue. Releases the GIL.
+subtitle cues that give sentence times only pin the aligner: each sentence is searched only inside
+its cues (the models are learned, and a wrong text refused, over the whole recording); cues that
+time every syllable (WebVTT cue timestamps, as the vtt export writes) are read as they are.
+Releases the GIL.
 
 Raises:
     talkface.ParseError, talkface.FileError: as read_timing_file() and SpeechAligner.align_file().
