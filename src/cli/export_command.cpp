@@ -22,7 +22,7 @@ struct ExportOptions {
     std::string audio_path;
     std::string transcript_path;
     std::string format;
-    AnimateOptions animate;  // face, fps, seed, style, output, timing (and --lenient), quiet
+    AnimateOptions animate;  // face, look, fps, seed, style, output, timing (and --lenient), quiet
 };
 
 // The formats of export_to_string() and the face itself as Lottie, which SvgAnimator draws.
@@ -45,7 +45,9 @@ void run_export(const ExportOptions& options) {
     }
     print_mismatches(options.audio_path, talking.timeline);
     if (format == "lottie") {
-        const talkface::SvgAnimator animator(talking.face);
+        talkface::SvgOptions drawing;
+        drawing.look = talkface::face_look_from_name(options.animate.look);
+        const talkface::SvgAnimator animator(talking.face, drawing);
         const std::unique_ptr<ProgressBar> bar = make_progress_bar(options.animate.quiet);
         const auto progress = progress_part(bar.get(), 0.0, 1.0);
         if (output_path == "-") {
@@ -93,8 +95,16 @@ void setup_export_command(CLI::App& app) {
         ->check(CLI::IsMember(format_names()));
     add_timing_option(*command, options->animate.timing);
     add_face_options(*command, options->animate);
+    CLI::Option* look = command->get_option("--look");
+    look->description(look->get_description() + "; the lottie export only (a timing format refuses it)");
     command->add_flag("-q,--quiet", options->animate.quiet, "No progress bar");
-    command->callback([options] {
+    command->callback([options, look] {
+        // A timing format has no face to paint: a --look it would drop is refused, not ignored
+        // (Lottie is only ever named by --format: its .json suffix is ambiguous).
+        if (look->count() > 0 && options->format != "lottie") {
+            throw CLI::ValidationError("--look", "only the lottie export draws the face; the other formats carry the "
+                                                 "timing alone (--format lottie to export the face)");
+        }
         if (options->animate.output_path == "-" && options->format.empty()) {
             throw CLI::ValidationError("--format", "writing to stdout (-o -) needs --format");
         }

@@ -187,6 +187,16 @@ def test_lottie_is_the_face_itself_over_the_whole_speech(tmp_path):
     masked = sorted(layer["nm"] for layer in lottie["layers"] if layer.get("hasMask"))
     assert masked == ["face eyeball-left", "face eyeball-right", "face mouth-below-upper-teeth",
                       "face mouth-inside-short-of-corners"]
+    # --look paints the face: outlined draws strokes, flat none; a timing format refuses it.
+    def strokes(document):
+        return json.dumps(document).count('"ty": "st"') + json.dumps(document).count('"ty": "gs"')
+    flat = json.loads(export(tmp_path, "flat.json", "--format", "lottie", "--fps", 20, "--seed", 3,
+                             "--look", "flat").read_text())
+    assert strokes(lottie) > 10 and strokes(flat) == 0
+    assert {"hair", "clothes", "background"} <= {layer["nm"] for layer in flat["layers"]}
+    refused = run("export", AUDIO, TRANSCRIPT, "-o", tmp_path / "cues.tsv", "--look", "flat")
+    assert refused.returncode == 2 and "--look: only the lottie export draws the face" in refused.stderr
+    assert not (tmp_path / "cues.tsv").exists()
     # --face takes a face file, as animate's does.
     missing = run("export", AUDIO, TRANSCRIPT, "-o", "-", "--format", "lottie", "--quiet", "--face",
                   tmp_path / "missing.xml")
