@@ -18,4 +18,9 @@ ProjectedFace project_animation_frame(const FaceModel& face, const Animation& an
     }
 }
 
+bool is_held_frame(const FaceState& state, double angle_deg, const FaceState* previous, double previous_angle_deg) {
+    return previous != nullptr && state.pose == previous->pose && state.expression == previous->expression &&
+           state.mouth == previous->mouth && angle_deg == previous_angle_deg;
+}
+
 }  // namespace talkface::detail

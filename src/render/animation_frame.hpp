@@ -1,5 +1,6 @@
 // One frame of an Animation projected for drawing, as every animation encoding (SVG, Lottie) draws
-// it: a state that cannot be drawn is an error naming the frame and its time.
+// it: a state that cannot be drawn is an error naming the frame and its time; and the frames that
+// only hold the one before, which every encoding draws once.
 #ifndef TALKFACE_RENDER_ANIMATION_FRAME_HPP
 #define TALKFACE_RENDER_ANIMATION_FRAME_HPP
 
@@ -14,6 +15,11 @@ namespace talkface::detail {
 // \throws talkface::InvalidArgument naming animation.frames[frame] and its time, with
 //         project_face()'s error nested.
 ProjectedFace project_animation_frame(const FaceModel& face, const Animation& animation, std::size_t frame);
+
+// Holds (pauses, a held head) repeat a frame exactly: whether `state`, its head tilted by
+// `angle_deg`, draws the same as the last frame drawn, `previous` (nullptr: none yet) tilted by
+// `previous_angle_deg`.
+bool is_held_frame(const FaceState& state, double angle_deg, const FaceState* previous, double previous_angle_deg);
 
 }  // namespace talkface::detail
 

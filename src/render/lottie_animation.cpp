@@ -70,9 +70,7 @@ std::string render_lottie(const FaceModel& face, const SvgOptions& svg_options, 
         }
         const FaceState& state = animation.frames[frame];
         const double angle_deg = tilt.angle_deg.empty() ? 0.0 : tilt.angle_deg[frame];
-        // Holds (pauses, a held head) repeat a frame exactly: draw it once.
-        if (previous != nullptr && state.pose == previous->pose && state.expression == previous->expression &&
-            state.mouth == previous->mouth && angle_deg == previous_angle_deg) {
+        if (is_held_frame(state, angle_deg, previous, previous_angle_deg)) {
             hair.add_repeat();
             face_layer.add_repeat();
             continue;

@@ -88,10 +88,7 @@ std::string render_animation(const FaceModel& face, const SvgOptions& svg_option
         }
         const FaceState& state = animation.frames[frame];
         const double angle_deg = tilt.angle_deg.empty() ? 0.0 : tilt.angle_deg[frame];
-        // Holds (pauses, a held head) repeat a frame exactly: draw it once.
-        const bool is_repeat = previous != nullptr && state.pose == previous->pose &&
-                               state.expression == previous->expression && state.mouth == previous->mouth &&
-                               angle_deg == previous_angle_deg;
+        const bool is_repeat = is_held_frame(state, angle_deg, previous, previous_angle_deg);
         // The hair holds still whenever its points do (the mouth and the eyes move without it).
         bool is_hair_repeat = is_repeat;
         if (!is_repeat) {

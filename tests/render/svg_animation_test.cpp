@@ -18,6 +18,7 @@
 
 #include "common/number_format.hpp"
 #include "common/test_paths.hpp"
+#include "render/animation_frame.hpp"
 #include "render/html_text.hpp"
 #include "render/svg_text.hpp"
 #include "talkface/animation.hpp"
@@ -582,4 +583,25 @@ TEST_SUITE("web page") {
         CHECK(root.attribute("x").as_double() + (neutral.origin.x - box[0]) * scale == doctest::Approx(600.0).epsilon(0.001));
         CHECK(root.attribute("y").as_double() + (neutral.origin.y - box[1]) * scale == doctest::Approx(330.0).epsilon(0.001));
     }
+}
+
+TEST_CASE("a held frame is one that repeats pose, expression, mouth and tilt exactly") {
+    using talkface::detail::is_held_frame;
+    FaceState state;
+    state.mouth = MouthControls{};
+    CHECK_FALSE(is_held_frame(state, 0.0, nullptr, 0.0));  // the first frame is drawn
+    const FaceState same = state;
+    CHECK(is_held_frame(same, 1.5, &state, 1.5));
+    CHECK_FALSE(is_held_frame(same, 1.5, &state, 1.25));  // the head tilts on
+    FaceState moved = state;
+    moved.pose.gamma_deg = 0.5;
+    CHECK_FALSE(is_held_frame(moved, 0.0, &state, 0.0));
+    moved = state;
+    moved.expression.blink_left = 0.1;
+    CHECK_FALSE(is_held_frame(moved, 0.0, &state, 0.0));
+    moved = state;
+    moved.mouth->up.y += 0.01;
+    CHECK_FALSE(is_held_frame(moved, 0.0, &state, 0.0));
+    moved.mouth.reset();  // the neutral mouth is another mouth
+    CHECK_FALSE(is_held_frame(moved, 0.0, &state, 0.0));
 }
