@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "speech/frame_features.hpp"
 #include "speech/sentence_cutter.hpp"
 #include "talkface/timeline.hpp"
 
@@ -22,10 +23,15 @@ std::string quote_start(const std::string& text);
 std::string describe_sentence(std::size_t sentence, const FrameSpan& span, const Timeline& transcript);
 
 // Each sentence's speaking rate (speech frames per syllable, pauses inside left out) against the
-// others' and against what people can say.
+// others' and against what people can say; a sentence much slower than the others passes if its
+// voiced peaks (count_nuclei) leave no room for another sentence's syllables.
 // \throws talkface::AlignmentError naming the first sentence that does not fit, its text and times.
-void check_sentence_lengths(const std::vector<FrameSpan>& spans, const LoudnessProfile& loudness,
+void check_sentence_lengths(const std::vector<FrameSpan>& spans, const FeatureTrack& track, const LoudnessProfile& loudness,
                             const Timeline& transcript);
+
+// Voiced peaks in `span`, about one per syllable (a landmark the audio gives whatever the text):
+// peaks of the low band, each standing out from the dips on both sides of it.
+std::size_t count_nuclei(const FeatureTrack& track, const LoudnessProfile& loudness, const FrameSpan& span);
 
 // What the alignment measured of one sentence, for the checks below (NaN or zero: not measured).
 struct SentenceMetrics {

@@ -213,7 +213,7 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
     // the sentences' lengths are checked on where the syllables put them.
     std::vector<FrameSpan> spans = cut.spans;
     const bool has_blocks = std::find(cut.runs_on.begin(), cut.runs_on.end(), true) != cut.runs_on.end();
-    if (!has_blocks && is_checked) check_sentence_lengths(spans, loudness, transcript);
+    if (!has_blocks && is_checked) check_sentence_lengths(spans, track, loudness, transcript);
 
     std::vector<SentenceChain> chains = group_chains(transcript, cut, spans);
     set_search_spans(track, loudness, chains);
@@ -245,7 +245,7 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
     }
     set_confidences(evidence, result);
     if (is_checked) {
-        if (has_blocks) check_sentence_lengths(spans, loudness, transcript);
+        if (has_blocks) check_sentence_lengths(spans, track, loudness, transcript);
         check_text_fit(metrics, spans, transcript);
         check_held_out_fit(metrics, spans, transcript, result.warnings);
         check_own_fit(metrics, spans, transcript);

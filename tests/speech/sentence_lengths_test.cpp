@@ -1,0 +1,80 @@
+// check_sentence_lengths and the voiced peaks it counts (issue 12): a person may say a sentence
+// more than twice as slowly as the others, a sentence missing from the transcript leaves one as
+// slow but with two sentences' syllables in it.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "speech/alignment_checks.hpp"
+#include "talkface/errors.hpp"
+#include "talkface/transcript.hpp"
+
+using namespace talkface;
+using namespace talkface::detail;
+
+namespace {
+
+// A track whose low band (voicing) rises to `peak_db` in `peaks` evenly spaced bumps over each
+// span, at `dip_db` between them; 0 dB (the floor) elsewhere.
+struct BumpyTrack {
+    FeatureTrack track;
+    LoudnessProfile loudness;
+
+    explicit BumpyTrack(std::size_t frames) {
+        track.frame_count = frames;
+        track.values.assign(frames * kFeatureCount, 0.0f);
+        loudness.low_floor_db = 0.0f;
+    }
+    void bumps(const FrameSpan& span, std::size_t peaks, float peak_db, float dip_db) {
+        const double width = static_cast<double>(span.length()) / static_cast<double>(peaks);
+        for (std::size_t t = span.first_frame; t < span.end_frame; ++t) {
+            const double phase = (static_cast<double>(t - span.first_frame) + 0.5) / width;
+            const double within = phase - static_cast<double>(static_cast<std::size_t>(phase));  // 0..1 in a bump
+            const double rise = 1.0 - std::abs(2.0 * within - 1.0);                              // a triangle
+            track.values[t * kFeatureCount + kLowBandDb] = static_cast<float>(dip_db + (peak_db - dip_db) * rise);
+        }
+    }
+};
+
+}  // namespace
+
+TEST_SUITE("speech") {
+    TEST_CASE("voiced peaks: one per bump that stands out of its dips and its floor") {
+        BumpyTrack bumpy(400);
+        bumpy.bumps({0, 200}, 8, 30.0f, 15.0f);
+        CHECK(count_nuclei(bumpy.track, bumpy.loudness, {0, 200}) == 8);
+        // A ripple of 2 dB is one peak, not eight.
+        bumpy.bumps({0, 200}, 8, 30.0f, 28.0f);
+        CHECK(count_nuclei(bumpy.track, bumpy.loudness, {0, 200}) == 1);
+        // Bumps in a pause, under the floor's margin, are no syllables.
+        bumpy.bumps({200, 400}, 8, 8.0f, 0.0f);
+        CHECK(count_nuclei(bumpy.track, bumpy.loudness, {200, 400}) == 0);
+    }
+
+    TEST_CASE("a sentence far slower than the others passes when its voiced peaks fit its syllables") {
+        // Four syllables each; the third sentence 2.25 times as slow as the others.
+        const Timeline transcript = read_transcript("今天很好。我们走吧。他们来了。");
+        REQUIRE(transcript.syllables.size() == 12);
+        const std::vector<FrameSpan> spans = {{20, 100}, {150, 230}, {280, 460}};
+        BumpyTrack bumpy(500);
+        bumpy.bumps(spans[0], 4, 30.0f, 15.0f);
+        bumpy.bumps(spans[1], 4, 30.0f, 15.0f);
+        SUBCASE("a peak per syllable: said slowly") {
+            bumpy.bumps(spans[2], 4, 30.0f, 15.0f);
+            CHECK_NOTHROW(check_sentence_lengths(spans, bumpy.track, bumpy.loudness, transcript));
+        }
+        SUBCASE("two peaks per syllable: a sentence the transcript lacks") {
+            bumpy.bumps(spans[2], 8, 30.0f, 15.0f);
+            CHECK_THROWS_WITH_AS(check_sentence_lengths(spans, bumpy.track, bumpy.loudness, transcript),
+                                 doctest::Contains("sentence 3 (2.8-4.6 s"), AlignmentError);
+        }
+        SUBCASE("a sentence as much faster than the others is refused, whatever its peaks") {
+            const std::vector<FrameSpan> fast = {{20, 200}, {250, 430}, {480, 560}};
+            BumpyTrack quick(600);
+            for (const auto& span : fast) quick.bumps(span, 4, 30.0f, 15.0f);
+            CHECK_THROWS_AS(check_sentence_lengths(fast, quick.track, quick.loudness, transcript), AlignmentError);
+        }
+    }
+}
