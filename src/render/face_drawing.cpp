@@ -54,7 +54,7 @@ Point2 affine(Point2 origin, Point2 to_a, double s, Point2 to_b, double t) {
 // closes it; its control points round it over the top and down into the lobe. Affine combinations
 // of three projected points: the ear turns, nods and tilts with the head. One segment, as the
 // thesis's arc(10.8, 10.2, A): an animation moves four points per ear.
-constexpr double kEarCurve[4][2] = {{-0.6, 0.05}, {1.9, -0.35}, {0.9, 1.35}, {-0.9, 0.85}};
+constexpr double kEarCurve[4][2] = {{-0.41, -0.3}, {2.09, -0.065}, {1.41, 1.77}, {-0.5, 1.03}};
 
 // Each ear's upper contact point, top and lower contact point (image left, then right).
 constexpr const char* kEarPoints[2][3] = {{"A", "10.2", "10.8"}, {"B", "10.1", "10.7"}};
