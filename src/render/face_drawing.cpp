@@ -15,6 +15,10 @@ namespace talkface::detail {
 
 namespace {
 
+// How far an eye's upper lid is moved up, in lid widths (draw_eyes): its band's lower edge stays
+// 0.1 of its width inside the eye.
+constexpr double kLidRise = 0.6;
+
 // The pupil's diameter is 1/3 of the iris's (MPEG-4 neutral face).
 constexpr double kPupilToIrisRadius = 1.0 / 3.0;
 constexpr Rgb kPupilColour{0x11, 0x11, 0x11};
@@ -160,16 +164,16 @@ struct EyeParts {
     const char* eyeball;
     const char* radius_fapu;
     std::string_view clip_id, outline_id, gradient_id;
-    std::string_view white, eyeball_group, outline_stroke;
+    std::string_view white, eyeball_group, outline_stroke, lid;
 };
 
 // Image sides: left, then right.
 const std::vector<EyeParts>& eye_parts() {
     static const std::vector<EyeParts> parts{
         {{"3.12", "3.2", "3.8", "3.4"}, "EyeballLeft", "r1", "tf-eye-left-clip", "tf-eye-left",
-         "tf-iris-left-gradient", "eye-left-white", "eyeball-left", "eye-left-outline"},
+         "tf-iris-left-gradient", "eye-left-white", "eyeball-left", "eye-left-outline", "eye-left-lid"},
         {{"3.7", "3.1", "3.11", "3.3"}, "EyeballRight", "r2", "tf-eye-right-clip", "tf-eye-right",
-         "tf-iris-right-gradient", "eye-right-white", "eyeball-right", "eye-right-outline"}};
+         "tf-iris-right-gradient", "eye-right-white", "eyeball-right", "eye-right-outline", "eye-right-lid"}};
     return parts;
 }
 
@@ -223,11 +227,32 @@ Shape reference_shape(std::string_view name, std::size_t definition, const Shape
     return shape;
 }
 
+// The head's axes in the drawing: across the face (image left to right, frontal) and down it, as
+// the line between the outer eye corners (which no mouth shape, blink or smile moves) turns.
+std::pair<Point2, Point2> head_axes(const ProjectedFace& face, const FacePaints& paints) {
+    const Point2 left = paints.point(face, "3.12"), right = paints.point(face, "3.7");
+    const Point2 frontal_left = face.face.point("3.12"), frontal_right = face.face.point("3.7");
+    const double angle = std::atan2(right.y - left.y, right.x - left.x) -
+                         std::atan2(frontal_right.y - frontal_left.y, frontal_right.x - frontal_left.x);
+    return {{std::cos(angle), std::sin(angle)}, {-std::sin(angle), std::cos(angle)}};
+}
+
 void draw_eyes(const ProjectedFace& face, const FacePaints& paints, Layer& layer) {
     for (std::size_t i = 0; i < eye_parts().size(); ++i) {
         const EyeParts& eye = eye_parts()[i];
         const std::size_t clip = 2 * i;
         const std::size_t gradient = 2 * i + 1;
+        if (paints.eye_lid.fill.kind != PaintKind::none) {
+            // The upper lid: the eye's outline moved up by 0.6 of the lid's width and stroked that
+            // wide, under the white, shows as a band over the upper lid's edge, ending in a point
+            // past each corner, that closes with the eye into a line (its lower edge stays inside
+            // the eye, under the white). Moved by a fixed offset, it costs an animation no number.
+            const Point2 down = head_axes(face, paints).second;
+            const double up = -kLidRise * paints.eye_lid.stroke_width;
+            Shape lid = reference_shape(eye.lid, clip, paints.eye_lid);
+            lid.offset = {up * down.x, up * down.y};
+            layer.elements.push_back(std::move(lid));
+        }
         layer.elements.push_back(reference_shape(eye.white, clip, paints.eye_white));
         // Clipped by the eye outline, so a closing lid hides iris and pupil (thesis 6.3.1).
         const Point2 pupil = paints.point(face, eye.eyeball);
@@ -257,16 +282,6 @@ constexpr double kUpperTeethMw = 0.1;
 constexpr double kLowerTeethMw = 0.06;
 constexpr double kTongueMw = 0.14;
 constexpr double kTeethCornerMw = 0.05;
-
-// The head's axes in the drawing: across the face (image left to right, frontal) and down it, as
-// the line between the outer eye corners (which no mouth shape, blink or smile moves) turns.
-std::pair<Point2, Point2> head_axes(const ProjectedFace& face, const FacePaints& paints) {
-    const Point2 left = paints.point(face, "3.12"), right = paints.point(face, "3.7");
-    const Point2 frontal_left = face.face.point("3.12"), frontal_right = face.face.point("3.7");
-    const double angle = std::atan2(right.y - left.y, right.x - left.x) -
-                         std::atan2(frontal_right.y - frontal_left.y, frontal_right.x - frontal_left.x);
-    return {{std::cos(angle), std::sin(angle)}, {-std::sin(angle), std::cos(angle)}};
-}
 
 Definition moved_clip(std::string_view id, std::size_t source, Point2 offset) {
     Definition clip;
@@ -409,6 +424,9 @@ FacePaints make_face_paints(const ProjectedFace& face, const LayerStyle& style) 
         paints.brows = paint_of(Paint::of(colors.brows), none, 0.0);
         paints.eye_white = paint_of(Paint::of(colors.eye_white), none, 0.0);
         paints.eye_outline = paint_of(none, none, 0.0);
+        // An eye without an outline looks bare, and closed it vanishes: an upper lid shows both.
+        const Paint lid = Paint::of(blend(colors.skin, colors.outline, 0.85));
+        paints.eye_lid = paint_of(lid, lid, 1.8 * style.stroke_px);
         paints.lips = paint_of(Paint::of(colors.lips), none, 0.0);
         paints.mouth_opening = paint_of(Paint::of(colors.mouth_inside), none, 0.0);
         paints.iris_gradient = {0.5, 0.5, 0.5, {{0.0, colors.iris}, {0.75, colors.iris}, {1.0, blend(colors.iris, Rgb{}, 0.3)}}};

@@ -61,6 +61,7 @@ struct FacePaints {
     ViewMap view;
     ShapePaint skin, ears, hair, nose, brows, eye_white, eye_outline, lips, mouth_opening;
     ShapePaint nose_shade;  // none: no shade
+    ShapePaint eye_lid;     // the upper lids' band (its stroke width); none: no lid
     ShapePaint teeth, lower_teeth, tongue;   // inside the mouth, over mouth_opening's fill
     RadialGradient iris_gradient;            // of both irises
     std::unordered_map<std::string, std::size_t> point_index;

@@ -9,6 +9,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -237,6 +238,14 @@ EarArea ear_area(const Drawn& drawn, const char* ear) {
     return area;
 }
 
+// The unit vector down the face: across it is the line between the outer eye corners.
+Point2 down_the_face(const ProjectedFace& projected) {
+    const Point2 across{projected.point("3.7").x - projected.point("3.12").x,
+                        projected.point("3.7").y - projected.point("3.12").y};
+    const double length = std::hypot(across.x, across.y);
+    return {-across.y / length, across.x / length};
+}
+
 std::vector<FaceState> states_at(const FaceModel& face, const Pose& pose) {
     std::vector<FaceState> states(2);
     states[1].mouth = mouth_controls(face, MouthShape::a);
@@ -323,6 +332,51 @@ TEST_SUITE("layer order") {
                     least = std::min(least, shown / frontal_area.shown);
                 }
                 MESSAGE("  and at least " << least << " of that area at every pose where it is not the far ear");
+            }
+        }
+    }
+
+    TEST_CASE("the flat look's upper lid shows over an open eye's upper edge and as a line when it closes") {
+        // Without an outline an eye looked bare, and closed it vanished. The lid is painted under
+        // the eye's white; what shows of it (its band, less the eye) covers a point just above
+        // the upper lid's middle, open or closed, and none just below the lower lid's middle.
+        for (const auto& [name, face] : test::bundled_faces()) {
+            CAPTURE(name);
+            for (const Pose& pose : test::pose_grid()) {
+                CAPTURE(pose.alpha_deg);
+                CAPTURE(pose.beta_deg);
+                CAPTURE(pose.gamma_deg);
+                for (const double blink : {0.0, 0.5, 1.0}) {
+                    CAPTURE(blink);
+                    FaceState state;
+                    state.pose = pose;
+                    state.expression.blink_left = state.expression.blink_right = blink;
+                    const Layer outlined = draw(face, state).face;
+                    const Layer flat = draw(face, state, FaceLook::flat).face;
+                    const ProjectedFace projected = project_face(face, state);
+                    const Point2 down = down_the_face(projected);
+                    for (const auto& [side, top, bottom] : {std::tuple{"left", "3.2", "3.4"}, std::tuple{"right", "3.1", "3.3"}}) {
+                        CAPTURE(side);
+                        const std::string lid_name = std::string("eye-") + side + "-lid";
+                        const std::string white_name = std::string("eye-") + side + "-white";
+                        CHECK(std::none_of(outlined.elements.begin(), outlined.elements.end(),
+                                           [&](const Shape& shape) { return shape.name == lid_name; }));
+                        const Shape& lid = shape_named(flat, lid_name);
+                        const Shape& white = shape_named(flat, white_name);
+                        CHECK(lid.kind == ShapeKind::reference);
+                        CHECK(lid.definition == white.definition);
+                        CHECK(index_of(flat, lid_name) < index_of(flat, white_name));
+                        const std::vector<Point2> band = flatten(reference_outline(flat, lid)).front();
+                        const std::vector<Point2> eye = flatten(reference_outline(flat, white)).front();
+                        const double width = lid.paint.stroke_width;
+                        const auto shows = [&](Point2 p) {
+                            return is_covered(band, p, 0.5 * width) && !is_inside(eye, p);
+                        };
+                        const auto moved = [&](Point2 p, double by) { return Point2{p.x + by * down.x, p.y + by * down.y}; };
+                        CHECK(shows(moved(projected.point(top), -0.5 * width)));
+                        CHECK_FALSE(shows(moved(projected.point(bottom), 0.5 * width)));
+                    }
+                }
             }
         }
     }
@@ -421,11 +475,7 @@ TEST_SUITE("layer order") {
                         state.mouth = mouth_controls(face, shape);
                         state.expression.smile = smile;
                         const ProjectedFace projected = project_face(face, state);
-                        // Down the face: across it is the line between the outer eye corners.
-                        const Point2 across{projected.point("3.7").x - projected.point("3.12").x,
-                                            projected.point("3.7").y - projected.point("3.12").y};
-                        const double length = std::hypot(across.x, across.y);
-                        const Point2 down{-across.y / length, across.x / length};
+                        const Point2 down = down_the_face(projected);
                         const auto moved = [&](Point2 p, double mouth_widths) {
                             return Point2{p.x + mouth_widths * mouth_width * down.x, p.y + mouth_widths * mouth_width * down.y};
                         };
