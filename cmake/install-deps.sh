@@ -12,16 +12,17 @@ set -eu
 build_packages="build-essential cmake pkg-config git libeigen3-dev libpugixml-dev libcli11-dev
 nlohmann-json3-dev doctest-dev pybind11-dev python3-dev python3-numpy libsndfile1-dev libsamplerate0-dev
 libopencv-dev opencv-data libpng-dev libjpeg-dev libdlib-dev libblas-dev liblapack-dev zlib1g-dev
-libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev libcairo2-dev"
+libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev libavfilter-dev libcairo2-dev"
 # libcairo2-dev: the raster renderer (FrameRenderer) draws frames with cairo.
 # libavformat-dev, libavcodec-dev, libswresample-dev and libavutil-dev also decode the recordings
 # libsndfile does not read (MP3, AAC/M4A, Opus, a video's sound track: src/audio/).
 # libpng-dev and libjpeg-dev read photo files (face from a photo). libdlib-dev's CMake package also
 # links libblas.so, liblapack.so, libjpeg.so and libz.so by path, and does not depend on the -dev
 # packages that provide them.
-# zlib1g-dev also packs the pages' animation (gzip, src/apps/).
+# zlib1g-dev also packs the pages' animation (gzip, src/apps/) and keeps an animated GIF's frames (src/video/).
 # libav*-dev and libsw*-dev encode videos and the pages' compressed audio (src/video/); Debian's
-# libavcodec59 brings libx264, libvpx, libopus and libwebp with it.
+# libavcodec59 brings libx264, libvpx, libopus and libwebp with it; libavfilter-dev's palettegen and
+# paletteuse make an animated GIF's palette.
 # libdlib-data is dlib's 95 MB landmark model: only the dlib photo locator reads it, at run time.
 # python3-skimage and python-matplotlib-data ship the real test photos (astronaut.png,
 # grace_hopper.jpg). fonts-noto-cjk gives the browser tests and the screenshots in docs/ real

@@ -1351,7 +1351,8 @@ typedef enum tf_video_format {
     TF_VIDEO_MP4 = 0,          /* .mp4: H.264 (yuv420p) + AAC, index in front */
     TF_VIDEO_WEBM = 1,         /* .webm: VP9 + Opus; transparent: with an alpha channel */
     TF_VIDEO_WEBP = 2,         /* .webp: animated WebP, looping, no sound */
-    TF_VIDEO_PNG_SEQUENCE = 3  /* .png: OUT-000000.png, OUT-000001.png, ..., no sound */
+    TF_VIDEO_PNG_SEQUENCE = 3, /* .png: OUT-000000.png, OUT-000001.png, ..., no sound */
+    TF_VIDEO_GIF = 4           /* .gif: animated GIF, looping, no sound; one palette for all frames, 1..50 fps */
 } tf_video_format;
 
 /* The format of an output path by its extension (either case).
@@ -1368,11 +1369,12 @@ TF_API tf_status tf_video_options_create(tf_video_options **out);
 TF_API void tf_video_options_destroy(tf_video_options *options);
 /* Frame size in pixels: 2..7680 (the longer side) by 2..4320 (the shorter); even for .mp4 and .webm. */
 TF_API tf_status tf_video_options_set_size(tf_video_options *options, int width_px, int height_px);
-/* Frames per second, 1..120. */
+/* Frames per second, 1..120 (1..50 for .gif). */
 TF_API tf_status tf_video_options_set_fps(tf_video_options *options, double fps);
 /* Constant quality, lower is better: H.264 0..51, VP9 0..63; -1 the default (20, 32). */
 TF_API tf_status tf_video_options_set_crf(tf_video_options *options, int crf);
-/* Non-zero keeps the frames' alpha channel (.webm, .webp, .png only). */
+/* Non-zero keeps the frames' alpha channel (.webm, .webp, .gif, .png only; .gif: alpha under half
+ * is transparent). */
 TF_API tf_status tf_video_options_set_transparent(tf_video_options *options, int transparent);
 /* Checks options for an output at path without creating anything. options may be NULL (defaults).
  * Errors: TF_ERR_INVALID_ARGUMENT naming the option (width_px, height_px, fps, crf, transparent)

@@ -1,7 +1,7 @@
 // talkface: VideoWriter, which encodes frames of RGBA pixels and a speech into a video file through
 // FFmpeg's libraries (issue #16): MP4 (H.264 + AAC) for video sites, phones and presentations,
-// WebM (VP9 + Opus, with an alpha channel if asked) for compositing, animated WebP for chats, and
-// a numbered PNG sequence for editors.
+// WebM (VP9 + Opus, with an alpha channel if asked) for compositing, animated WebP or GIF for
+// chats, and a numbered PNG sequence for editors.
 //
 //   talkface::VideoOptions options;              // 1280x720, 30 fps
 //   talkface::VideoWriter video("talk.mp4", options);
@@ -10,7 +10,7 @@
 //   video.finish();                              // renamed into place only now
 //
 // Which encoder is used is decided at run time by name from the FFmpeg the process loaded
-// (libx264, libvpx-vp9, libwebp_anim, png; aac, libopus), so a system FFmpeg without one of them is
+// (libx264, libvpx-vp9, libwebp_anim, png, gif; aac, libopus), so a system FFmpeg without one of them is
 // refused with its name, not at link time. Thread safety: one writer is used by one thread at a
 // time; different writers may run on different threads.
 #ifndef TALKFACE_VIDEO_WRITER_HPP
@@ -35,9 +35,14 @@ enum class VideoFormat : int {
     webm = 1,          ///< .webm: VP9 + Opus; transparent: yuva420p, an alpha channel editors and Chromium read
     webp = 2,          ///< .webp: animated WebP, no sound; chats
     png_sequence = 3,  ///< .png: OUT-000000.png, OUT-000001.png, ... (frame k at k / fps), no sound
+    /// .gif: animated GIF, looping, no sound; chats. One palette of 255 colours made for all the
+    /// frames, which are kept (compressed) until finish(); 1..50 fps, as players show a frame for
+    /// whole hundredths of a second and take shorter than 0.02 s as 0.1 s; transparent: alpha
+    /// under half is GIF's transparent colour.
+    gif = 4,
 };
 
-/// "mp4", "webm", "webp", "png".
+/// "mp4", "webm", "webp", "png", "gif".
 TALKFACE_API const char* video_format_name(VideoFormat format);
 /// The format of an output path by its extension (either case).
 /// \throws talkface::InvalidArgument naming the path and its extension and listing the known ones.
@@ -49,9 +54,9 @@ struct VideoOptions {
     int height_px = 720;
     double fps = 30.0;    ///< frames per second, 1..120
     /// Constant quality, lower is better and larger: H.264 0..51 (default 20), VP9 0..63 (default
-    /// 32); -1 picks the default. WebP and PNG ignore it.
+    /// 32); -1 picks the default. WebP, GIF and PNG ignore it.
     int crf = -1;
-    /// Keep the frames' alpha channel: .webm (yuva420p), .webp and .png only. Otherwise alpha is
+    /// Keep the frames' alpha channel: .webm (yuva420p), .webp, .gif and .png only. Otherwise alpha is
     /// ignored and frames should be opaque.
     bool transparent = false;
 };
@@ -83,7 +88,7 @@ public:
     std::size_t frame_count() const;       ///< frames written so far
 
     /// The sound, starting with frame 0: `audio`'s samples (mixed down to mono), read while frames
-    /// are written, so they must stay valid until finish(). .webp and .png have no sound and ignore
+    /// are written, so they must stay valid until finish(). .webp, .gif and .png have no sound and ignore
     /// it. At most one audio per writer, before the first frame.
     /// \throws talkface::InvalidArgument if audio was added already, a frame was written, or
     ///         `audio` is malformed.

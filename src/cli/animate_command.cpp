@@ -186,7 +186,7 @@ void add_page_options(CLI::App& command, AnimateOptions& options) {
     command.add_option("--stage", options.stage, "announcer: the stage's size, WIDTHxHEIGHT in pixels")
         ->check(pair_validator('x', "WIDTHxHEIGHT", "800x450"))
         ->capture_default_str();
-    command.add_option("-o,--output", options.output_path, "OUT.html for a web page, OUT.svg for the bare animation (demo: OUT.mp4, .webm, .webp, .png for a video)")
+    command.add_option("-o,--output", options.output_path, "OUT.html for a web page, OUT.svg for the bare animation (demo: OUT.mp4, .webm, .webp, .gif, .png for a video)")
         ->required();
     command.add_flag("-q,--quiet", options.quiet,
                      "No progress bar, and no line saying what was written (its kind, duration and size)");

@@ -83,7 +83,7 @@ void setup_demo_command(CLI::App& app) {
     auto options = std::make_shared<AnimateOptions>();
     CLI::App* demo = app.add_subcommand(
         "demo",
-        "Make the web page (or, for -o OUT.mp4/.webm/.webp/.png, the video) of the built-in face saying a short "
+        "Make the web page (or, for -o OUT.mp4/.webm/.webp/.gif/.png, the video) of the built-in face saying a short "
         "bundled Mandarin speech");
     add_page_options(*demo, *options);
     demo->callback([options, demo] { run_demo(*options, *demo); });

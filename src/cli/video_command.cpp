@@ -122,11 +122,11 @@ void add_video_options(CLI::App& command, VideoCommandOptions& options) {
     command.add_option("--crf", options.crf,
                        "Constant quality, lower is better and larger: H.264 0..51 (default 20), VP9 0..63 (32)");
     command.add_flag("--transparent", options.transparent,
-                     "Keep an alpha channel where nothing is drawn (.webm, .webp, .png only)");
+                     "Keep an alpha channel where nothing is drawn (.webm, .webp, .gif, .png only)");
     command
         .add_option("-o,--output", options.animate.output_path,
-                    "OUT.mp4 (H.264 + AAC), OUT.webm (VP9 + Opus), OUT.webp (animated, no sound) or OUT.png "
-                    "(OUT-000000.png ...)")
+                    "OUT.mp4 (H.264 + AAC), OUT.webm (VP9 + Opus), OUT.webp or OUT.gif (animated, no sound; .gif "
+                    "up to 50 fps) or OUT.png (OUT-000000.png ...)")
         ->required();
     command.add_flag("-q,--quiet", options.animate.quiet, "No progress bar");
 }
@@ -171,7 +171,7 @@ void setup_video_command(CLI::App& app) {
     auto audio_path = std::make_shared<std::string>();
     auto transcript_path = std::make_shared<std::string>();
     CLI::App* video = app.add_subcommand(
-        "video", "Make a video of the face talking in sync with a speech (MP4, WebM, animated WebP or PNG frames)");
+        "video", "Make a video of the face talking in sync with a speech (MP4, WebM, animated WebP or GIF, or PNG frames)");
     add_speech_arguments(*video, *audio_path, *transcript_path);
     add_video_options(*video, *options);
     video->callback([options, audio_path, transcript_path] {

@@ -28,7 +28,7 @@ void add_video_options(CLI::App& command, VideoCommandOptions& options);
 void make_video(const VideoCommandOptions& options, const std::string& audio_path,
                 const talkface::Timeline& transcript);
 
-// True if `path`'s extension is a video's (.mp4, .webm, .webp, .png).
+// True if `path`'s extension is a video's (.mp4, .webm, .webp, .gif, .png).
 bool is_video_output(const std::string& path);
 
 }  // namespace talkface_cli

@@ -19,6 +19,9 @@ constexpr int kMaxLongSidePx = 7680;
 constexpr int kMaxShortSidePx = 4320;
 constexpr double kMinFps = 1.0;
 constexpr double kMaxFps = 120.0;
+// GIF's frame delays are whole hundredths of a second, and browsers show a delay under 0.02 s as
+// 0.1 s: faster than 50 fps a GIF would play slower than asked.
+constexpr double kMaxGifFps = 50.0;
 
 std::string lower_extension(std::string_view path) {
     const std::size_t slash = path.find_last_of('/');
@@ -43,8 +46,9 @@ const char* video_format_name(VideoFormat format) {
         case VideoFormat::webm: return "webm";
         case VideoFormat::webp: return "webp";
         case VideoFormat::png_sequence: return "png";
+        case VideoFormat::gif: return "gif";
     }
-    throw InvalidArgument("format", "expected mp4, webm, webp or png, found " +
+    throw InvalidArgument("format", "expected mp4, webm, webp, png or gif, found " +
                                         std::to_string(static_cast<int>(format)));
 }
 
@@ -54,10 +58,11 @@ VideoFormat video_format_from_path(std::string_view path) {
     if (extension == ".webm") return VideoFormat::webm;
     if (extension == ".webp") return VideoFormat::webp;
     if (extension == ".png") return VideoFormat::png_sequence;
+    if (extension == ".gif") return VideoFormat::gif;
     throw InvalidArgument(std::string(path), (extension.empty() ? std::string("no extension")
                                                                 : "unknown extension \"" + extension + "\"") +
                                                  "; expected .mp4 (H.264 + AAC), .webm (VP9 + Opus), .webp "
-                                                 "(animated) or .png (a numbered sequence)");
+                                                 "or .gif (animated) or .png (a numbered sequence)");
 }
 
 void check_video_options(std::string_view path, const VideoOptions& options) {
@@ -83,10 +88,15 @@ void check_video_options(std::string_view path, const VideoOptions& options) {
                               "a size of " + size + ": " + codec_words(format) +
                                   " needs an even width and height (4:2:0 colour); try " +
                                   std::to_string(even_width) + "x" + std::to_string(even_height) +
-                                  ", or .webp / .png, which take any size");
+                                  ", or .webp / .gif / .png, which take any size");
     }
     if (!std::isfinite(options.fps) || options.fps < kMinFps || options.fps > kMaxFps) {
         throw InvalidArgument("fps", "expected 1..120 frames per second, found " +
+                                         detail::format_shortest(options.fps));
+    }
+    if (format == VideoFormat::gif && options.fps > kMaxGifFps) {
+        throw InvalidArgument("fps", "expected 1..50 frames per second for .gif (its frames last whole "
+                                     "hundredths of a second, and players show shorter than 0.02 s as 0.1 s), found " +
                                          detail::format_shortest(options.fps));
     }
     const int max_crf = format == VideoFormat::webm ? 63 : 51;
@@ -96,7 +106,7 @@ void check_video_options(std::string_view path, const VideoOptions& options) {
                                          std::to_string(options.crf));
     }
     if (options.transparent && format == VideoFormat::mp4) {
-        throw InvalidArgument("transparent", "H.264 in .mp4 has no alpha channel; write .webm, .webp or .png");
+        throw InvalidArgument("transparent", "H.264 in .mp4 has no alpha channel; write .webm, .webp, .gif or .png");
     }
 }
 

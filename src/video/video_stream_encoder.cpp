@@ -42,6 +42,8 @@ FormatEncoder encoder_for(VideoFormat format, bool transparent) {
         case VideoFormat::webp: return {"libwebp_anim", "animated WebP (.webp)", AV_PIX_FMT_RGB32};
         case VideoFormat::png_sequence:
             return {"png", "PNG images (.png)", transparent ? AV_PIX_FMT_RGBA : AV_PIX_FMT_RGB24};
+        // GifFrames maps the frames to one palette.
+        case VideoFormat::gif: return {"gif", "animated GIF (.gif)", AV_PIX_FMT_PAL8};
     }
     throw InvalidArgument("format", "unknown video format");
 }
@@ -120,9 +122,15 @@ VideoStreamEncoder::VideoStreamEncoder(VideoFormat format, const VideoOptions& o
             encoder->flags |= AV_CODEC_FLAG_QSCALE;
             break;
         case VideoFormat::png_sequence: break;
+        case VideoFormat::gif: break;
     }
     check_ffmpeg(avcodec_open2(encoder, &codec, nullptr), chosen.encoder_name);
 
+    packet_ = make_packet();
+    if (format == VideoFormat::gif) {
+        gif_frames_.emplace(options.width_px, options.height_px, options.transparent);
+        return;
+    }
     if (is_yuv) {
         yuv_converter_.emplace(options.width_px, options.height_px, chosen.pixel_format == AV_PIX_FMT_YUVA420P);
     } else {
@@ -132,10 +140,14 @@ VideoStreamEncoder::VideoStreamEncoder(VideoFormat format, const VideoOptions& o
         if (!converter_) throw std::bad_alloc();
     }
     frame_ = make_video_frame(chosen.pixel_format, options.width_px, options.height_px);
-    packet_ = make_packet();
 }
 
 void VideoStreamEncoder::encode(const std::uint8_t* rgba, std::size_t stride_bytes, const PacketSink& sink) {
+    if (gif_frames_) {
+        gif_frames_->add(rgba, stride_bytes);
+        ++next_pts_;
+        return;
+    }
     // The encoder may still hold the previous frame's buffers (reference counted): write into
     // fresh ones if so (which copies the picture: the YUV converter updates it where it changed).
     check_ffmpeg(av_frame_make_writable(frame_.get()), "a video frame");
@@ -155,7 +167,10 @@ void VideoStreamEncoder::encode(const std::uint8_t* rgba, std::size_t stride_byt
     send(frame_.get(), sink);
 }
 
-void VideoStreamEncoder::finish(const PacketSink& sink) { send(nullptr, sink); }
+void VideoStreamEncoder::finish(const PacketSink& sink) {
+    if (gif_frames_) gif_frames_->finish([&](AVFrame* frame) { send(frame, sink); });
+    send(nullptr, sink);
+}
 
 void VideoStreamEncoder::send(AVFrame* frame, const PacketSink& sink) {
     check_ffmpeg(avcodec_send_frame(encoder_.get(), frame), "a video frame");

@@ -1,5 +1,6 @@
-// One video stream: RGBA frames in, converted (Yuv420Converter, or libswscale for RGB formats) to the encoder's pixel format and
-// encoded; packets go to a muxer, or to a callback (a PNG sequence writes each to its own file).
+// One video stream: RGBA frames in, converted to the encoder's pixel format (Yuv420Converter,
+// libswscale for RGB formats, GifFrames' one palette for GIF) and encoded; packets go to a muxer,
+// or to a callback (a PNG sequence writes each to its own file).
 #ifndef TALKFACE_VIDEO_VIDEO_STREAM_ENCODER_HPP
 #define TALKFACE_VIDEO_VIDEO_STREAM_ENCODER_HPP
 
@@ -11,6 +12,7 @@
 
 #include "talkface/video_writer.hpp"
 #include "video/ffmpeg_support.hpp"
+#include "video/gif_frames.hpp"
 #include "video/yuv420_converter.hpp"
 
 namespace talkface::detail {
@@ -39,7 +41,8 @@ private:
 
     CodecContextPtr encoder_;
     std::optional<Yuv420Converter> yuv_converter_;  // H.264 and VP9
-    ScaleContextPtr converter_;                      // the rest: libswscale
+    ScaleContextPtr converter_;                      // WebP and PNG: libswscale
+    std::optional<GifFrames> gif_frames_;            // GIF: all frames, then one palette
     FramePtr frame_;
     PacketPtr packet_;
     std::int64_t next_pts_ = 0;

@@ -29,6 +29,7 @@ const char* muxer_name(VideoFormat format) {
         case VideoFormat::mp4: return "mp4";
         case VideoFormat::webm: return "webm";
         case VideoFormat::webp: return "webp";
+        case VideoFormat::gif: return "gif";
         case VideoFormat::png_sequence: return nullptr;
     }
     return nullptr;
@@ -88,7 +89,7 @@ struct VideoWriter::Impl {
         AVDictionary* muxer_options = nullptr;
         if (format == VideoFormat::mp4) av_dict_set(&muxer_options, "movflags", "+faststart", 0);
         // Loop forever, as chats show animated images.
-        if (format == VideoFormat::webp) av_dict_set(&muxer_options, "loop", "0", 0);
+        if (format == VideoFormat::webp || format == VideoFormat::gif) av_dict_set(&muxer_options, "loop", "0", 0);
         muxer->write_header(&muxer_options);
         av_dict_free(&muxer_options);
     }

@@ -1,4 +1,4 @@
-/* The C ABI of talkface::VideoWriter: a short MP4 of a moving square with a tone, the refusals,
+/* The C ABI of talkface::VideoWriter: a short MP4 of a moving square with a tone, a GIF, the refusals,
  * and a writer destroyed unfinished leaving nothing. */
 #include <math.h>
 #include <stdint.h>
@@ -80,6 +80,41 @@ static int test_writes_an_mp4(void) {
     return failures;
 }
 
+/* A GIF, looping: "GIF89a", its frames written at finish with one palette. */
+static int test_writes_a_gif(void) {
+    int failures = 0;
+    char path[1024];
+    char head[7] = {0};
+    tf_video_options *options = NULL;
+    tf_video_writer *writer = NULL;
+    uint8_t *rgba = malloc((size_t)kWidth * kHeight * 4);
+    FILE *file = NULL;
+    int i;
+    snprintf(path, sizeof path, "%s/c_api_video.gif", TF_TEST_OUTPUT_DIR);
+    remove(path);
+    CHECK_OK(tf_video_options_create(&options));
+    CHECK_OK(tf_video_options_set_size(options, kWidth, kHeight));
+    CHECK_OK(tf_video_options_set_fps(options, 10.0));
+    CHECK_OK(tf_video_writer_open(path, options, &writer));
+    for (i = 0; i < kFrames; ++i) {
+        fill_frame(rgba, i);
+        CHECK_OK(tf_video_writer_write_frame(writer, rgba, (size_t)kWidth * 4));
+    }
+    CHECK(!file_exists(path));
+    CHECK_OK(tf_video_writer_finish(writer));
+    file = fopen(path, "rb");
+    CHECK(file != NULL);
+    if (file != NULL) {
+        CHECK(fread(head, 1, 6, file) == 6);
+        fclose(file);
+    }
+    CHECK(strcmp(head, "GIF89a") == 0);
+    tf_video_writer_destroy(writer);
+    tf_video_options_destroy(options);
+    free(rgba);
+    return failures;
+}
+
 static int test_refusals_name_the_problem(void) {
     int failures = 0;
     char path[1024];
@@ -89,6 +124,8 @@ static int test_refusals_name_the_problem(void) {
     uint8_t pixel[4] = {0, 0, 0, 255};
 
     CHECK_FAILS_WITH(tf_video_format_from_path("talk.avi", &format), TF_ERR_INVALID_ARGUMENT, "\".avi\"");
+    CHECK_OK(tf_video_format_from_path("chat.gif", &format));
+    CHECK(format == TF_VIDEO_GIF);
     CHECK_OK(tf_video_options_create(&options));
     CHECK_OK(tf_video_options_set_size(options, 641, 480));
     CHECK_FAILS_WITH(tf_check_video_options("a.mp4", options), TF_ERR_INVALID_ARGUMENT, "even width and height");
@@ -97,6 +134,8 @@ static int test_refusals_name_the_problem(void) {
     CHECK_OK(tf_video_options_set_size(options, 640, 480));
     CHECK_OK(tf_video_options_set_fps(options, 200.0));
     CHECK_FAILS_WITH(tf_check_video_options("a.mp4", options), TF_ERR_INVALID_ARGUMENT, "fps: expected 1..120");
+    CHECK_OK(tf_video_options_set_fps(options, 60.0));
+    CHECK_FAILS_WITH(tf_check_video_options("a.gif", options), TF_ERR_INVALID_ARGUMENT, "fps: expected 1..50");
     CHECK_OK(tf_video_options_set_fps(options, 25.0));
     CHECK_OK(tf_video_options_set_transparent(options, 1));
     CHECK_FAILS_WITH(tf_check_video_options("a.mp4", options), TF_ERR_INVALID_ARGUMENT, "no alpha channel");
@@ -184,6 +223,7 @@ static int test_renders_the_face(void) {
 int main(void) {
     int failures = 0;
     failures += test_writes_an_mp4();
+    failures += test_writes_a_gif();
     failures += test_renders_the_face();
     failures += test_refusals_name_the_problem();
     if (failures != 0) fprintf(stderr, "%d check(s) failed\n", failures);

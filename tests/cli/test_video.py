@@ -133,6 +133,19 @@ def test_png_sequence_and_webp(tmp_path):
     assert (tmp_path / "chat.webp").read_bytes()[8:12] == b"WEBP"
 
 
+def test_gif_has_a_frame_per_step_and_lasts_as_long_as_the_speech(tmp_path):
+    path = tmp_path / "chat.gif"
+    run("video", SPEECH, TRANSCRIPT, "-o", path, "-q", "--size", "161x91", "--fps", "5")
+    assert path.read_bytes()[:6] == b"GIF89a"
+    out = subprocess.run([FFPROBE, "-v", "error", "-count_frames", "-show_streams", "-show_format", "-of", "json",
+                          str(path)], capture_output=True, text=True, check=True).stdout
+    info = json.loads(out)
+    assert [(s["codec_name"], s["width"], s["height"]) for s in info["streams"]] == [("gif", 161, 91)]
+    assert int(info["streams"][0]["nb_read_frames"]) == 65  # ceil(12.95 * 5)
+    assert float(info["format"]["duration"]) == pytest.approx(SPEECH_S, abs=1 / 5)
+    assert list(tmp_path.iterdir()) == [path]
+
+
 @pytest.mark.parametrize("args,message", [
     (["-o", "talk.avi"], 'unknown extension ".avi"'),
     (["-o", "talk.mp4", "--size", "641x360"], "needs an even width and height"),
@@ -140,6 +153,8 @@ def test_png_sequence_and_webp(tmp_path):
     (["-o", "talk.mp4", "--size", "big"], "expected WIDTHxHEIGHT"),
     (["-o", "talk.mp4", "--fps", "0"], "--fps"),
     (["-o", "talk.mp4", "--fps", "121"], "--fps"),
+    (["-o", "talk.gif", "--fps", "60"], "expected 1..50 frames per second for .gif"),
+    (["-o", "talk.gif", "--size", "8000x4000"], "over the largest, 7680x4320"),
     (["-o", "talk.mp4", "--transparent"], "no alpha channel"),
     (["-o", "talk.mp4", "--crf", "60"], "crf: expected 0..51"),
 ])

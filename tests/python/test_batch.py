@@ -100,7 +100,7 @@ def test_a_missing_manifest_is_a_file_error(tmp_path):
 
 @pytest.mark.parametrize(
     "output, kind",
-    [("a.html", "page"), ("a.svg", "svg"), ("a.mp4", "video"), ("a.WEBM", "video"), ("a.webp", "video"),
+    [("a.html", "page"), ("a.svg", "svg"), ("a.mp4", "video"), ("a.WEBM", "video"), ("a.webp", "video"), ("a.gif", "video"),
      ("a.json", "keyframes"), ("a.motion3.json", "export:live2d"), ("a.tsv", "export:rhubarb-tsv"),
      ("a.xml", "export:rhubarb-xml"), ("a.dat", "export:moho"), ("a.TextGrid", "export:textgrid"),
      ("a.srt", "export:srt"), ("a.vtt", "export:vtt")],

@@ -62,6 +62,21 @@ def test_png_sequence(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["f-000000.png", "f-000001.png"]
 
 
+@pytest.mark.skipif(FFPROBE is None, reason="ffprobe is not installed")
+def test_gif_of_numpy_frames(tmp_path):
+    path = tmp_path / "chat.gif"
+    with talkface.VideoWriter(str(path), talkface.VideoOptions(width_px=160, height_px=120, fps=20)) as video:
+        assert video.format == talkface.VideoFormat.gif
+        for k in range(10):
+            video.write_frame(pattern(k))
+    out = subprocess.run([FFPROBE, "-v", "error", "-count_frames", "-show_streams", "-show_format", "-of", "json",
+                          str(path)], capture_output=True, text=True, check=True).stdout
+    info = json.loads(out)
+    assert [s["codec_name"] for s in info["streams"]] == ["gif"]
+    assert int(info["streams"][0]["nb_read_frames"]) == 10
+    assert abs(float(info["format"]["duration"]) - 0.5) <= 1 / 20
+
+
 def test_bad_input_is_named(tmp_path):
     with pytest.raises(talkface.InvalidArgument, match=r'unknown extension "\.avi"'):
         talkface.VideoWriter(str(tmp_path / "a.avi"))
@@ -69,6 +84,8 @@ def test_bad_input_is_named(tmp_path):
         talkface.check_video_options("a.mp4", talkface.VideoOptions(width_px=1281))
     with pytest.raises(talkface.InvalidArgument, match="fps"):
         talkface.VideoWriter(str(tmp_path / "a.mp4"), talkface.VideoOptions(fps=0.5))
+    with pytest.raises(talkface.InvalidArgument, match=r"fps: expected 1\.\.50 frames per second for \.gif"):
+        talkface.VideoWriter(str(tmp_path / "a.gif"), talkface.VideoOptions(fps=60))
     video = talkface.VideoWriter(str(tmp_path / "a.mp4"), talkface.VideoOptions(width_px=160, height_px=120))
     with pytest.raises(talkface.InvalidArgument, match=r"expected shape \(120, 160, 4\) uint8, got \(120, 160, 3\)"):
         video.write_frame(numpy.zeros((120, 160, 3), numpy.uint8))

@@ -74,6 +74,8 @@ TEST_CASE("the format comes from the extension, in either case") {
     CHECK(talkface::video_format_from_path("x.webm") == VideoFormat::webm);
     CHECK(talkface::video_format_from_path("x.WebP") == VideoFormat::webp);
     CHECK(talkface::video_format_from_path("frames/face.png") == VideoFormat::png_sequence);
+    CHECK(talkface::video_format_from_path("chat.GIF") == VideoFormat::gif);
+    CHECK(std::string(talkface::video_format_name(VideoFormat::gif)) == "gif");
     CHECK(std::string(talkface::video_format_name(VideoFormat::png_sequence)) == "png");
 }
 
@@ -194,6 +196,57 @@ TEST_CASE("WebP: an animated image that loops, no sound") {
     CHECK(frames == 5);
 }
 
+TEST_CASE("GIF: one palette for all the frames, looping, as long as its frames, no sound") {
+    const std::string folder = fresh_folder("gif");
+    const std::vector<float> samples = speech_like(16000, 0.5);
+    {
+        VideoWriter writer(folder + "/chat.gif", small(200, 150, 10.0));
+        writer.add_audio({samples.data(), samples.size(), 1, 16000});  // ignored: GIF has no sound
+        write_pattern(writer, 12);
+        writer.finish();
+    }
+    const talkface_test::MediaInfo info = talkface_test::probe_media(folder + "/chat.gif");
+    REQUIRE(info.video() != nullptr);
+    CHECK(info.audio() == nullptr);
+    CHECK(info.video()->codec == "gif");
+    CHECK(info.video()->frame_count == 12);
+    CHECK(info.duration_s == doctest::Approx(1.2).epsilon(0.1 / 1.2));
+    const std::string bytes = read_bytes(folder + "/chat.gif");
+    CHECK(bytes.substr(0, 6) == "GIF89a");
+    CHECK((static_cast<unsigned char>(bytes[10]) & 0x80) != 0);  // a global colour table
+    const std::size_t loop = bytes.find("NETSCAPE2.0");
+    REQUIRE(loop != std::string::npos);
+    CHECK(bytes[loop + 13] == 0);  // loop count 0: forever
+    CHECK(bytes[loop + 14] == 0);
+    // The pattern has fewer colours than the palette holds: every frame comes back exact, the
+    // first whole and the others as the rectangle that changed over the frame before.
+    for (const long index : {0L, 5L, 11L}) {
+        CAPTURE(index);
+        int width = 0, height = 0;
+        const std::vector<std::uint8_t> rgba = talkface_test::decode_video_frame_rgba(folder + "/chat.gif", index,
+                                                                                      &width, &height);
+        CHECK(rgba == talkface_test::test_pattern(index, 200, 150));
+    }
+    CHECK(std::distance(std::filesystem::directory_iterator(folder), std::filesystem::directory_iterator()) == 1);
+}
+
+TEST_CASE("GIF: transparent keeps what has no alpha transparent") {
+    const std::string path = fresh_folder("gif_alpha") + "/sticker.gif";
+    VideoOptions options = small(120, 90, 25.0);
+    options.transparent = true;
+    {
+        VideoWriter writer(path, options);
+        write_pattern(writer, 4, true);
+        writer.finish();
+    }
+    int width = 0, height = 0;
+    const std::vector<std::uint8_t> rgba = talkface_test::decode_video_frame_rgba(path, 3, &width, &height);
+    const int centre_x = talkface_test::square_left(3, 120) + talkface_test::kSquarePx / 2;
+    CHECK(is_near(talkface_test::pixel_at(rgba, width, centre_x, 45), {220, 30, 40, 255}, 0));
+    CHECK(talkface_test::pixel_at(rgba, width, centre_x, 45).a == 255);
+    CHECK(talkface_test::pixel_at(rgba, width, 4, 4).a == 0);
+}
+
 TEST_CASE("PNG sequence: numbered files, exact pixels, transparent if asked") {
     const std::string folder = fresh_folder("png");
     VideoOptions options = small(63, 41);  // any size, odd sides too
@@ -217,7 +270,7 @@ TEST_CASE("PNG sequence: numbered files, exact pixels, transparent if asked") {
 }
 
 TEST_CASE("a writer dropped before finish leaves no file, not even a temporary one") {
-    for (const char* name : {"/a.mp4", "/a.webm", "/a.webp", "/a.png"}) {
+    for (const char* name : {"/a.mp4", "/a.webm", "/a.webp", "/a.png", "/a.gif"}) {
         CAPTURE(name);
         const std::string folder = fresh_folder("dropped");
         {
@@ -256,6 +309,7 @@ TEST_CASE("bad options are refused by name before any file is made") {
     VideoOptions too_tall = small(4400, 4400);
     VideoOptions slow = small(320, 240, 0.5);
     VideoOptions fast = small(320, 240, 121.0);
+    VideoOptions fast_gif = small(320, 240, 60.0);
     VideoOptions crf = small();
     crf.crf = 52;
     VideoOptions transparent = small();
@@ -269,6 +323,8 @@ TEST_CASE("bad options are refused by name before any file is made") {
         {"/talk.png", too_tall, "over the largest, 7680x4320"},
         {"/talk.mp4", slow, "fps: expected 1..120 frames per second, found 0.5"},
         {"/talk.mp4", fast, "fps: expected 1..120 frames per second, found 121"},
+        {"/talk.gif", fast_gif, "fps: expected 1..50 frames per second for .gif"},
+        {"/talk.gif", too_wide, "over the largest, 7680x4320"},
         {"/talk.mp4", crf, "crf: expected 0..51"},
         {"/talk.mp4", transparent, "transparent: H.264 in .mp4 has no alpha channel"},
     };
@@ -280,9 +336,10 @@ TEST_CASE("bad options are refused by name before any file is made") {
         CHECK_THROWS_AS(talkface::check_video_options(folder + c.name, c.options), talkface::InvalidArgument);
     }
     CHECK(std::filesystem::is_empty(folder));
-    // 8K portrait is within the limit, and WebP takes odd sides.
+    // 8K portrait is within the limit, and WebP and GIF take odd sides.
     CHECK_NOTHROW(talkface::check_video_options("a.mp4", small(4320, 7680)));
     CHECK_NOTHROW(talkface::check_video_options("a.webp", small(321, 241)));
+    CHECK_NOTHROW(talkface::check_video_options("a.gif", small(321, 241, 50.0)));
 }
 
 TEST_CASE("frames and sound in the wrong order are refused") {

@@ -30,12 +30,14 @@ struct PyVideoWriter {
 void bind_video_writer(py::module_& m) {
     py::enum_<VideoFormat>(m, "VideoFormat", R"doc(
 The kind of video file, told by the output's extension: mp4 (H.264 + AAC), webm (VP9 + Opus, alpha
-if transparent), webp (animated, no sound), png_sequence (OUT-000000.png, ...).
+if transparent), webp and gif (animated, no sound; gif: one palette, 1..50 fps), png_sequence
+(OUT-000000.png, ...).
 )doc")
         .value("mp4", VideoFormat::mp4)
         .value("webm", VideoFormat::webm)
         .value("webp", VideoFormat::webp)
-        .value("png_sequence", VideoFormat::png_sequence);
+        .value("png_sequence", VideoFormat::png_sequence)
+        .value("gif", VideoFormat::gif);
 
     m.def("video_format_from_path", &video_format_from_path, py::arg("path"), R"doc(
 The format of an output path by its extension (either case).
@@ -70,7 +72,7 @@ Args:
     width_px, height_px (int): frame size; 2..7680 by 2..4320 (either way round), even for .mp4 and .webm.
     fps (float): frames per second, 1..120.
     crf (int): constant quality, lower is better: H.264 0..51, VP9 0..63; -1 the default (20, 32).
-    transparent (bool): keep the frames' alpha channel (.webm, .webp, .png only).
+    transparent (bool): keep the frames' alpha channel (.webm, .webp, .gif, .png only).
 
 Example:
     >>> talkface.VideoOptions(transparent=True)
@@ -112,7 +114,7 @@ Example:
              }),
              py::arg("path"), py::arg("options") = VideoOptions{}, R"doc(
 Args:
-    path (str): the output, .mp4, .webm, .webp or .png (a numbered sequence).
+    path (str): the output, .mp4, .webm, .webp, .gif or .png (a numbered sequence).
     options (VideoOptions): size, frame rate, quality, transparency.
 
 Raises:
@@ -144,7 +146,7 @@ Example:
             },
             py::arg("samples"), py::arg("sample_rate_hz"), R"doc(
 The sound, from frame 0 (mixed down to mono). The array is kept (a float32 copy if it was not one)
-until the writer is done. .webp and .png ignore it. Before the first frame, at most once.
+until the writer is done. .webp, .gif and .png ignore it. Before the first frame, at most once.
 
 Args:
     samples (numpy.ndarray): shape (frames,) or (frames, channels), values in -1..1.
@@ -309,7 +311,7 @@ shows the animation at k / fps, as many frames as cover the speech. Releases the
 Written through a temporary file: a failure or a cancel leaves none.
 
 Args:
-    path (str): .mp4, .webm, .webp or .png (a numbered sequence).
+    path (str): .mp4, .webm, .webp, .gif or .png (a numbered sequence).
     face (FaceModel): the neutral face the animation was made from.
     animation (Animation): from talkface.animate().
     audio_path (str): the speech, WAV, FLAC or OGG.

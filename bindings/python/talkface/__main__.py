@@ -26,7 +26,7 @@ def parse_arguments(argv):
         help="run the jobs of a CSV manifest on a Dask cluster",
         description="Runs one job a row of a CSV manifest (columns audio,transcript,output and optionally "
         "face,app,style,seed,timing; paths relative to the manifest) on a Dask cluster. The output's "
-        "extension picks the job: .html page, .svg animation, .mp4/.webm/.webp video, .json key frames, "
+        "extension picks the job: .html page, .svg animation, .mp4/.webm/.webp/.gif video, .json key frames, "
         ".tsv/.xml/.dat/.motion3.json/.TextGrid/.srt/.vtt export. Jobs whose output is newer than all "
         "their inputs are skipped. docs/batch.md.",
         epilog="exit status: 0 every job done or skipped; 1 some job failed, or the manifest is wrong; "

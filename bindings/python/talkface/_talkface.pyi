@@ -639,6 +639,7 @@ class VideoFormat(enum.Enum):
     webm = 1
     webp = 2
     png_sequence = 3
+    gif = 4
 
 def video_format_from_path(path: str) -> VideoFormat: ...
 

@@ -42,7 +42,7 @@ __all__ = [
 MANIFEST_COLUMNS = ("audio", "transcript", "output", "face", "app", "style", "seed", "timing")
 
 _PAGE_SUFFIXES = (".html", ".htm")
-_VIDEO_FORMATS = ("mp4", "webm", "webp")
+_VIDEO_FORMATS = ("mp4", "webm", "webp", "gif")
 _PAGE_APPS = ("plain", "announcer", "audiobook")
 _VIDEO_APPS = ("announcer", "plain")
 _NAMED_STYLES = ("normal", "announcer")
@@ -127,7 +127,7 @@ class JobResult:
 
 def job_kind(output: str) -> str:
     """What an output's extension asks for: "page" (.html), "svg" (the bare SVG animation), "video"
-    (.mp4 .webm .webp), "keyframes" (.json: key frames and events), or "export:FORMAT" (.tsv .xml
+    (.mp4 .webm .webp .gif), "keyframes" (.json: key frames and events), or "export:FORMAT" (.tsv .xml
     .dat .motion3.json .TextGrid .srt .vtt, as `talkface export` writes them).
 
     Raises:
@@ -151,7 +151,7 @@ def job_kind(output: str) -> str:
         raise _invalid_argument(
             "output",
             f'"{output}": no job makes this kind of file; the extension picks the job: .html (page), .svg '
-            "(SVG animation), .mp4 .webm .webp (video), .json (key frames), .tsv .xml .dat .motion3.json "
+            "(SVG animation), .mp4 .webm .webp .gif (video), .json (key frames), .tsv .xml .dat .motion3.json "
             ".TextGrid .srt .vtt (exports)",
         ) from None
 

@@ -1,0 +1,176 @@
+#include "video/gif_frames.hpp"
+
+#include <cstring>
+#include <new>
+#include <string>
+
+#include <zlib.h>
+
+extern "C" {
+#include <libavfilter/avfilter.h>
+#include <libavfilter/buffersink.h>
+#include <libavfilter/buffersrc.h>
+#include <libavutil/pixfmt.h>
+}
+
+#include "talkface/errors.hpp"
+#include "video/ffmpeg_support.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+// palettegen counts the colours of what changed from the frame before (the first frame whole):
+// the moving mouth and eyes get their colours although the still background covers most pixels.
+// One entry is kept for the transparent colour, which the GIF encoder also uses for the pixels
+// that did not change. paletteuse maps without dithering: the face's colours are flat and its
+// edges antialiased, which 255 colours hold, and dither noise would differ from frame to frame
+// where nothing moved.
+constexpr const char* kPaletteGen = "stats_mode=diff:reserve_transparent=1";
+constexpr const char* kPaletteUse = "dither=none:diff_mode=rectangle:alpha_threshold=128";
+
+}  // namespace
+
+struct GifFrames::Graph {
+    AVFilterGraph* graph = avfilter_graph_alloc();
+    std::vector<AVFilterContext*> sources;
+    AVFilterContext* sink = nullptr;
+
+    Graph() {
+        if (graph == nullptr) throw std::bad_alloc();
+    }
+    ~Graph() { avfilter_graph_free(&graph); }
+    Graph(const Graph&) = delete;
+    Graph& operator=(const Graph&) = delete;
+
+    AVFilterContext* add(const char* filter_name, const std::string& arguments) {
+        AVFilterContext* context = nullptr;
+        check_ffmpeg(avfilter_graph_create_filter(&context, avfilter_get_by_name(filter_name), filter_name,
+                                                  arguments.c_str(), nullptr, graph),
+                     filter_name);
+        return context;
+    }
+    AVFilterContext* add_source(int width, int height, AVPixelFormat format) {
+        AVFilterContext* source = add("buffer", "video_size=" + std::to_string(width) + "x" + std::to_string(height) +
+                                                    ":pix_fmt=" + std::to_string(format) +
+                                                    ":time_base=1/1:pixel_aspect=1/1");
+        sources.push_back(source);
+        return source;
+    }
+    void link(AVFilterContext* from, AVFilterContext* to, unsigned to_pad = 0) {
+        check_ffmpeg(avfilter_link(from, 0, to, to_pad), "a filter link");
+    }
+    void configure() { check_ffmpeg(avfilter_graph_config(graph, nullptr), "the GIF palette's filters"); }
+
+    void push(std::size_t source, AVFrame* frame) {
+        check_ffmpeg(av_buffersrc_add_frame_flags(sources[source], frame, AV_BUFFERSRC_FLAG_PUSH), "a GIF frame");
+    }
+    // The frames the sink has ready, to `each`; false once it has given its last.
+    bool drain(AVFrame* frame, const std::function<void(AVFrame*)>& each) {
+        for (;;) {
+            const int got = av_buffersink_get_frame(sink, frame);
+            if (got == AVERROR(EAGAIN)) return true;
+            if (got == AVERROR_EOF) return false;
+            check_ffmpeg(got, "a GIF frame");
+            each(frame);
+            av_frame_unref(frame);
+        }
+    }
+};
+
+GifFrames::GifFrames(int width, int height, bool transparent)
+    : width_(width), height_(height), transparent_(transparent), palette_graph_(std::make_unique<Graph>()),
+      last_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4, 0) {
+    Graph& graph = *palette_graph_;
+    AVFilterContext* source = graph.add_source(width, height, transparent ? AV_PIX_FMT_RGBA : AV_PIX_FMT_RGB0);
+    AVFilterContext* palettegen = graph.add("palettegen", kPaletteGen);
+    graph.sink = graph.add("buffersink", "");
+    graph.link(source, palettegen);
+    graph.link(palettegen, graph.sink);
+    graph.configure();
+}
+
+GifFrames::~GifFrames() = default;
+
+void GifFrames::add(const std::uint8_t* rgba, std::size_t stride_bytes) {
+    const std::size_t row_bytes = 4 * static_cast<std::size_t>(width_);
+    std::vector<std::uint8_t> difference(last_.size());
+    for (int y = 0; y < height_; ++y) {
+        const std::uint8_t* row = rgba + y * stride_bytes;
+        std::uint8_t* last = last_.data() + y * row_bytes;
+        std::uint8_t* out = difference.data() + y * row_bytes;
+        for (std::size_t x = 0; x < row_bytes; ++x) out[x] = static_cast<std::uint8_t>(row[x] - last[x]);
+        std::memcpy(last, row, row_bytes);
+    }
+    uLongf packed_size = compressBound(static_cast<uLong>(difference.size()));
+    std::vector<std::uint8_t> packed(packed_size);
+    if (compress2(packed.data(), &packed_size, difference.data(), static_cast<uLong>(difference.size()), 1) != Z_OK) {
+        throw std::bad_alloc();
+    }
+    packed.resize(packed_size);
+    packed.shrink_to_fit();
+    kept_.push_back(std::move(packed));
+
+    FramePtr frame(av_frame_alloc());
+    if (!frame) throw std::bad_alloc();
+    frame->format = transparent_ ? AV_PIX_FMT_RGBA : AV_PIX_FMT_RGB0;
+    frame->width = width_;
+    frame->height = height_;
+    frame->data[0] = last_.data();
+    frame->linesize[0] = static_cast<int>(row_bytes);
+    frame->pts = static_cast<std::int64_t>(kept_.size()) - 1;
+    // Not reference counted: the filter copies the picture.
+    palette_graph_->push(0, frame.get());
+}
+
+void GifFrames::finish(const std::function<void(AVFrame* frame)>& each) {
+    FramePtr palette(av_frame_alloc());
+    FramePtr mapped(av_frame_alloc());
+    if (!palette || !mapped) throw std::bad_alloc();
+    palette_graph_->push(0, nullptr);
+    palette_graph_->drain(palette.get(), [&](AVFrame* made) { av_frame_move_ref(mapped.get(), made); });
+    palette_graph_.reset();
+    av_frame_move_ref(palette.get(), mapped.get());
+    if (palette->width != 16 || palette->height != 16) check_ffmpeg(AVERROR_BUG, "the GIF palette");
+    palette->pts = 0;
+
+    Graph graph;
+    AVFilterContext* pictures = graph.add_source(width_, height_, transparent_ ? AV_PIX_FMT_RGBA : AV_PIX_FMT_RGB0);
+    AVFilterContext* colours = graph.add_source(16, 16, static_cast<AVPixelFormat>(palette->format));
+    AVFilterContext* paletteuse = graph.add("paletteuse", kPaletteUse);
+    graph.sink = graph.add("buffersink", "");
+    graph.link(pictures, paletteuse, 0);
+    graph.link(colours, paletteuse, 1);
+    graph.link(paletteuse, graph.sink);
+    graph.configure();
+    graph.push(1, palette.get());
+    graph.push(1, nullptr);
+
+    const std::size_t row_bytes = 4 * static_cast<std::size_t>(width_);
+    std::vector<std::uint8_t> picture(last_.size(), 0);
+    std::vector<std::uint8_t> difference(last_.size());
+    FramePtr frame(av_frame_alloc());
+    if (!frame) throw std::bad_alloc();
+    for (std::size_t k = 0; k < kept_.size(); ++k) {
+        uLongf size = static_cast<uLongf>(difference.size());
+        if (uncompress(difference.data(), &size, kept_[k].data(), static_cast<uLong>(kept_[k].size())) != Z_OK ||
+            size != difference.size()) {
+            check_ffmpeg(AVERROR_BUG, "a kept GIF frame");
+        }
+        std::vector<std::uint8_t>().swap(kept_[k]);
+        for (std::size_t i = 0; i < picture.size(); ++i) picture[i] = static_cast<std::uint8_t>(picture[i] + difference[i]);
+        frame->format = transparent_ ? AV_PIX_FMT_RGBA : AV_PIX_FMT_RGB0;
+        frame->width = width_;
+        frame->height = height_;
+        frame->data[0] = picture.data();
+        frame->linesize[0] = static_cast<int>(row_bytes);
+        frame->pts = static_cast<std::int64_t>(k);
+        graph.push(0, frame.get());
+        graph.drain(mapped.get(), each);
+    }
+    kept_.clear();
+    graph.push(0, nullptr);
+    if (graph.drain(mapped.get(), each)) check_ffmpeg(AVERROR_BUG, "the end of the GIF's frames");
+}
+
+}  // namespace talkface::detail
