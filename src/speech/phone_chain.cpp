@@ -11,6 +11,14 @@ namespace talkface::detail {
 
 namespace {
 
+// A pause the text does not mark, before f h s sh x, lasts at least this long (longer than such a
+// sound's own prior: f 9, h 7, s 11 frames). In noise the start of a weak fricative sounds like
+// the pause's noise and fits the silence model better than its own: a short pause took the first
+// 40-80 ms of it, and its onset came that late (espeak-ng at SNR 10 dB: three f or h in four,
+// and a sibilant in three, more than 50 ms late; a person at SNR 20 dB alike). A person stops
+// before a fricative for longer than that or not at all; a shorter silence there is its start.
+constexpr std::size_t kMinPauseBeforeFricativeFrames = 15;
+
 // Typical durations of Mandarin segments in 10 ms frames (read speech, phonetic literature:
 // unaspirated bursts ~15-20 ms, aspiration ~70-90 ms, sibilants ~100-130 ms, closures ~50 ms);
 // the rate scaling of vowels fits the rest to the sentence.
@@ -175,6 +183,11 @@ void add_final(const std::string& initial, const std::string& final, std::vector
     }
 }
 
+// Initials heard only as frication, with no closure before them: f h s sh x.
+bool is_fricative(const std::string& initial) {
+    return initial == "f" || initial == "h" || initial == "s" || initial == "sh" || initial == "x";
+}
+
 PhoneState pause_state(StateRole role, std::size_t syllable, double median_frames, std::size_t max_frames,
                        double entry_log_penalty) {
     PhoneState state;
@@ -214,8 +227,12 @@ std::vector<PhoneState> build_phone_chain(const std::vector<const Syllable*>& sy
             // Sentences aligned together (run together by the speaker) may still have a pause
             // between them, as long as a comma's or longer.
             const bool has_comma = syllables[index - 1]->pause_after || syllables[index - 1]->sentence != syllable.sentence;
-            states.push_back(has_comma ? pause_state(StateRole::comma_pause, index - 1, 20.0, 200, 0.0)
-                                       : pause_state(StateRole::short_pause, index - 1, 6.0, 60, -3.0));
+            if (has_comma) {
+                states.push_back(pause_state(StateRole::comma_pause, index - 1, 20.0, 200, 0.0));
+            } else {
+                states.push_back(pause_state(StateRole::short_pause, index - 1, 6.0, 60, -3.0));
+                if (is_fricative(parts.initial)) states.back().min_frames = kMinPauseBeforeFricativeFrames;
+            }
         }
         const std::size_t first_state = states.size();
         add_initial(parts.initial, index > 0, states);
