@@ -23,7 +23,10 @@ from PIL import Image
 CLI = os.environ["TALKFACE_CLI"]
 SPEECH_DIR = pathlib.Path(os.environ["TALKFACE_SPEECH_DIR"])
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-MOUTH_INSIDE = (0x6A, 0x1E, 0x22)  # FaceColors::mouth_inside of the built-in face
+# What an open mouth shows inside the lips on the built-in face: the dark (FaceColors::mouth_inside),
+# the upper and lower teeth and the tongue (src/render/face_drawing.cpp's paints).
+LIPS = (0xC8, 0x5A, 0x5A)
+MOUTH_INSIDE = ((0x6A, 0x1E, 0x22), (0xFA, 0xF7, 0xF0), (0xE9, 0xDD, 0xD7), (0xDF, 0x7D, 0x84))
 WINDOW = (640, 760)
 
 pytestmark = pytest.mark.skipif(CHROMIUM is None, reason="chromium is not installed")
@@ -51,9 +54,19 @@ def body_state(page, time_s):
     return dict(re.findall(r'data-tf-([a-z]+)="([^"]*)"', body)), dom
 
 
+def is_near(pixel, colour, tolerance):
+    return all(abs(p - c) <= tolerance for p, c in zip(pixel, colour))
+
+
 def mouth_inside_pixels(image, tolerance=18):
-    return sum(1 for pixel in image.getdata()
-               if all(abs(p - c) <= tolerance for p, c in zip(pixel, MOUTH_INSIDE)))
+    """Pixels of the mouth's inside colours within the lips' box (the teeth's white is the eyes' too)."""
+    width = image.width
+    lips = [i for i, pixel in enumerate(image.getdata()) if is_near(pixel, LIPS, 24)]
+    assert lips, "no lips in the screenshot"
+    left, right = min(i % width for i in lips), max(i % width for i in lips)
+    top, bottom = min(lips) // width, max(lips) // width
+    box = image.crop((left, top, right + 1, bottom + 1))
+    return sum(1 for pixel in box.getdata() if any(is_near(pixel, colour, tolerance) for colour in MOUTH_INSIDE))
 
 
 @pytest.fixture(scope="module")

@@ -1,5 +1,6 @@
 import concurrent.futures
 import json
+import re
 import xml.dom.minidom
 
 import pytest
@@ -23,12 +24,14 @@ def test_options_are_kept_and_change_the_drawing(face):
     assert animator.render_svg(talkface.FaceState()) != plain
 
 
-def test_the_flat_look_draws_no_outline(face):
+def test_the_flat_look_draws_no_outline_but_the_upper_lids(face):
     options = talkface.SvgOptions(look=talkface.FaceLook.flat)
     assert options.look == talkface.FaceLook.flat
     assert "look=FaceLook.flat" in repr(options)
     flat = talkface.SvgAnimator(face, options).render_svg(talkface.FaceState())
-    assert "stroke-width" not in flat
+    stroked = re.findall(r'<[^>]* stroke-width="[^"]*"', flat)
+    assert len(stroked) == 2 and all('class="eye-left-lid"' in e or 'class="eye-right-lid"' in e for e in stroked)
+    assert flat.count("stroke-width") == 2
     assert "stroke-width" in talkface.SvgAnimator(face).render_svg(talkface.FaceState())
 
 
