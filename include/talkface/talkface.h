@@ -1254,7 +1254,7 @@ typedef enum tf_web_page_audio {
 } tf_web_page_audio;
 
 /* How the page carries its audio. bitrate_bps: TF_PAGE_AUDIO_COMPRESSED's Opus bit rate, 6000 to
- * 128000 (0: 12000, wideband speech), checked when the page is built. url: TF_PAGE_AUDIO_LINK's
+ * 128000 (0: 11000, wideband speech), checked when the page is built. url: TF_PAGE_AUDIO_LINK's
  * link, relative to the page (NULL or "": the audio file's name).
  * Errors: TF_ERR_INVALID_ARGUMENT if options is NULL or audio is not a tf_web_page_audio. */
 TF_API tf_status tf_web_page_options_set_audio(tf_web_page_options *options, tf_web_page_audio audio,

@@ -51,7 +51,7 @@ TALKFACE_API WebPageApp web_page_app_from_name(std::string_view name);
 /// How the page carries its audio. The numeric values are stable within a major version.
 enum class WebPageAudio : int {
     /// Embedded, encoded anew for speech: Opus in WebM, mono, WebPageOptions::audio_bitrate_bps
-    /// (12 kb/s by default, about 105 KB a minute in the page). Opus in WebM plays in Chromium,
+    /// (11 kb/s by default, about 97 KiB a minute in the page). Opus in WebM plays in Chromium,
     /// Firefox and Safari 17.4 and later (iOS too); Opus in Ogg not in Safari before 18.4.
     compressed = 0,
     original = 1,  ///< embedded as the file's own bytes (.ogg .oga .opus .wav .flac .mp3 .m4a)
@@ -80,7 +80,7 @@ struct WebPageOptions {
 
     /// How the audio is carried: compressed and embedded (the default), its own bytes embedded, or linked.
     WebPageAudio audio = WebPageAudio::compressed;
-    /// compressed: the Opus bit rate, bits per second, 6000 to 128000; 0: 12000, a clear voice
+    /// compressed: the Opus bit rate, bits per second, 6000 to 128000; 0: 11000, a clear voice
     /// (wideband speech, as on a good phone call; music and noise suffer first).
     int audio_bitrate_bps = 0;
     /// The link written when audio is link, relative to the page (e.g. "speech.ogg"); empty: the

@@ -165,7 +165,7 @@ void add_page_options(CLI::App& command, AnimateOptions& options) {
         "--link-audio", [&options] { options.audio = "link"; }, "The same as --audio-embed link");
     command
         .add_option("--audio-bitrate", options.audio_bitrate,
-                    "compressed: the Opus bit rate, bits a second (default 12000: wideband speech)")
+                    "compressed: the Opus bit rate, bits a second (default 11000: wideband speech)")
         ->check(CLI::Range(6000, 128000));
     command
         .add_option("--app", options.app,

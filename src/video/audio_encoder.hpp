@@ -1,5 +1,5 @@
 // Speech as a compressed audio file, in memory or on disk: Opus in Ogg or WebM, AAC in MP4. The
-// web pages embed it (apps/: Opus in WebM at 12 kb/s, about 105 KB a minute in base64), not a
+// web pages embed it (apps/: Opus in WebM at 11 kb/s, about 97 KiB a minute in base64), not a
 // WAV's megabytes. What plays where (Chromium 156 headless: tests/video/test_browser_audio.py plays
 // each; the rest from MDN's "Web audio codec guide" and caniuse's issues #6805 and #6997):
 //   Opus in Ogg   Chromium, Firefox; Safari only from 18.4 (macOS 15.4, iOS 18.4: caniuse pull
@@ -30,7 +30,7 @@ struct AudioEncodeOptions {
     AudioContainer container = AudioContainer::ogg_opus;
     // Bits per second; 0: 48 kb/s for Opus, 96 kb/s for AAC (mono speech).
     int bitrate_bps = 0;
-    // Opus only: a voice at a low bit rate (the pages' 12 kb/s), coded for intelligibility in
+    // Opus only: a voice at a low bit rate (the pages' 11 kb/s), coded for intelligibility in
     // long packets, whose container overhead would otherwise be a quarter of the stream.
     bool low_rate_speech = false;
 };

@@ -5,8 +5,11 @@ import gzip
 import os
 import pathlib
 import re
+import shutil
 import subprocess
 import xml.dom.minidom
+
+import pytest
 
 CLI = os.environ["TALKFACE_CLI"]
 SPEECH = pathlib.Path(os.environ["TALKFACE_SOURCE_DIR"]) / "samples" / "speech"
@@ -43,6 +46,23 @@ def test_quiet_says_nothing_and_the_svg_report_names_its_encoding(tmp_path):
     assert result.stderr.startswith(f"talkface: wrote {svg}: SVG animation (keyframes), "), result.stderr
     seconds = float(result.stderr.split(", ")[1].split()[0])
     assert 3.0 < seconds < 30.0
+
+
+@pytest.mark.skipif(shutil.which("ffmpeg") is None, reason="ffmpeg is not installed")
+def test_a_page_takes_under_200_kib_a_minute_of_speech(tmp_path):
+    # The demo speech five times over (65 s) and its transcript as often: the face's packed
+    # animation and the compressed speech grow with the speech, the script and style do not.
+    (tmp_path / "list.txt").write_text(f"file '{SPEECH / 'demo.ogg'}'\n" * 5)
+    subprocess.run(["ffmpeg", "-v", "error", "-f", "concat", "-safe", "0", "-i", tmp_path / "list.txt", "-ac", "1",
+                    "-ar", "16000", tmp_path / "long.wav"], check=True, timeout=60)
+    (tmp_path / "long.txt").write_text(((SPEECH / "demo.txt").read_text(encoding="utf-8") + "\n") * 5, encoding="utf-8")
+    page = tmp_path / "long.html"
+    result = run("animate", tmp_path / "long.wav", tmp_path / "long.txt", "-o", page)
+    assert result.returncode == 0, result.stderr
+    seconds = float(re.search(r", (\d+\.\d\d) s, ", result.stderr).group(1))
+    assert seconds > 60
+    kib_per_minute = page.stat().st_size / 1024 / (seconds / 60)
+    assert kib_per_minute < 200, f"{kib_per_minute:.1f} KiB a minute"
 
 
 def test_demo_links_its_audio_beside_the_page(tmp_path):

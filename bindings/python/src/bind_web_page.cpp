@@ -47,7 +47,7 @@ Args:
     links (list[WebLink]): audio book links.
     animation (SvgAnimationOptions): the face's encoding.
     audio (WebPageAudio): compressed (the default), original or link.
-    audio_bitrate_bps (int): compressed: the Opus bit rate, 6000 to 128000; 0 takes 12000.
+    audio_bitrate_bps (int): compressed: the Opus bit rate, 6000 to 128000; 0 takes 11000.
     audio_url (str): link: the link, relative to the page ("" takes the audio file's name).
     stage_width_px, stage_height_px (int), stage_colour (str), background_image_path (str): the
         announcer's stage.
