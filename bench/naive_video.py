@@ -64,7 +64,7 @@ def main():
     # The sampled PNGs (the face's canvas, centred on 1280x720 by ffmpeg's pad) encoded as the
     # whole video would be, at the same settings as talkface's MP4.
     t0, c0 = time.perf_counter(), children_cpu_s()
-    subprocess.run(["ffmpeg", "-v", "error", "-y", "-framerate", str(args.fps), "-i",
+    subprocess.run(["ffmpeg", "-nostdin", "-v", "error", "-y", "-framerate", str(args.fps), "-i",
                     str(work / "frames" / "%06d.png"), "-vf",
                     "pad=1280:720:(ow-iw)/2:(oh-ih)/2:color=0x1d3b5c,format=yuv420p",
                     "-c:v", "libx264", "-preset", "superfast", "-tune", "animation", "-crf", "20",
