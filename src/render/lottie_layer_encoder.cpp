@@ -106,17 +106,25 @@ void append_number_list(std::string& text, const double* numbers, std::size_t co
 }
 
 // A Bezier path value from its numbers: n vertices, then n in controls, then n out controls,
-// absolute; Lottie's controls are relative to their vertex.
-void append_bezier(std::string& text, const double* numbers, std::size_t width, bool closed, int decimals) {
+// absolute; Lottie's controls are relative to their vertex. `folded`: the path is closed and its
+// last vertex is its first (the drawing model's close after a segment back to the start), so the
+// last vertex is left out and its in control becomes the first's: Lottie's own closing segment
+// is then that last segment, the same curve, one vertex shorter.
+void append_bezier(std::string& text, const double* numbers, std::size_t width, bool closed, bool folded,
+                   int decimals) {
     const std::size_t n = width / 6;
+    const std::size_t written = folded ? n - 1 : n;
     const auto list = [&](const char* key, std::size_t offset) {
         text += '"';
         text += key;
         text += "\":[";
-        for (std::size_t k = 0; k < n; ++k) {
+        for (std::size_t k = 0; k < written; ++k) {
             if (k > 0) text += ',';
-            const double x = numbers[offset + 2 * k], y = numbers[offset + 2 * k + 1];
-            const double vx = offset == 0 ? 0.0 : numbers[2 * k], vy = offset == 0 ? 0.0 : numbers[2 * k + 1];
+            const std::size_t from = folded && k == 0 && offset == 2 * n ? n - 1 : k;
+            const double x = numbers[offset + 2 * from], y = numbers[offset + 2 * from + 1];
+            // Relative to the vertex as written, so that a control is as near as the vertex.
+            const double vx = offset == 0 ? 0.0 : rounded(numbers[2 * from], decimals);
+            const double vy = offset == 0 ? 0.0 : rounded(numbers[2 * from + 1], decimals);
             text += '[' + format_fixed(x - vx, decimals) + ',' + format_fixed(y - vy, decimals) + ']';
         }
         text += ']';
@@ -128,6 +136,17 @@ void append_bezier(std::string& text, const double* numbers, std::size_t width, 
     text += ',';
     list("v", 0);
     text += closed ? ",\"c\":true}" : ",\"c\":false}";
+}
+
+// Whether a closed path of these rows (`width` numbers each, as append_bezier reads them) ends
+// every one at its first vertex.
+template <typename Number>
+bool ends_at_start(const std::vector<Number>& rows, std::size_t width) {
+    const std::size_t last = 2 * (width / 6 - 1);
+    for (std::size_t row = 0; row < rows.size(); row += width) {
+        if (rows[row + last] != rows[row] || rows[row + last + 1] != rows[row + 1]) return false;
+    }
+    return true;
 }
 
 }  // namespace
@@ -145,7 +164,7 @@ struct LottieLayerEncoder::Frame {
 
     const std::string& name;
     double tolerance;
-    int decimals;
+    int decimals;  // of the written coordinates; recorded a digit finer, so that keys do not chase the rounding
     bool write_text;
     std::vector<Value> values;
     std::vector<LottieLayerContent> layers;
@@ -162,14 +181,14 @@ struct LottieLayerEncoder::Frame {
     std::string bezier(const Subpath& subpath) {
         std::vector<double> numbers;
         numbers.reserve(6 * subpath.vertices.size());
-        append_points(subpath.vertices, decimals, numbers);
-        append_points(subpath.in, decimals, numbers);
-        append_points(subpath.out, decimals, numbers);
+        append_points(subpath.vertices, decimals + 1, numbers);
+        append_points(subpath.in, decimals + 1, numbers);
+        append_points(subpath.out, decimals + 1, numbers);
         return property(Form::bezier, subpath.closed, tolerance, decimals, std::move(numbers));
     }
 
     std::string point(double x, double y) {
-        return property(Form::vector, false, tolerance, decimals, {rounded(x, decimals), rounded(y, decimals)});
+        return property(Form::vector, false, tolerance, decimals, {rounded(x, decimals + 1), rounded(y, decimals + 1)});
     }
 
     std::string colour(Rgb rgb) {
@@ -204,18 +223,16 @@ struct LottieLayerEncoder::Frame {
     // The stroke or fill item of `paint`; empty for none.
     std::string paint_item(const Layer& layer, const Paint& paint, const Box& box, bool is_stroke, double width) {
         const std::string line = is_stroke ? ",\"w\":" + property(Form::scalar, false, tolerance, decimals,
-                                                                   {rounded(width, decimals)}) +
+                                                                   {rounded(width, decimals + 1)}) +
                                                  ",\"lc\":2,\"lj\":2,\"ml\":4"
                                            : ",\"r\":1";
         switch (paint.kind) {
             case PaintKind::none: return {};
             case PaintKind::colour:
-                return std::string("{\"ty\":\"") + (is_stroke ? "st" : "fl") + "\",\"nm\":\"" +
-                       (is_stroke ? "stroke" : "fill") + "\",\"c\":" + colour(paint.colour) +
+                return std::string("{\"ty\":\"") + (is_stroke ? "st" : "fl") + "\",\"c\":" + colour(paint.colour) +
                        ",\"o\":{\"a\":0,\"k\":100}" + line + ",\"bm\":0}";
             case PaintKind::gradient:
-                return std::string("{\"ty\":\"") + (is_stroke ? "gs" : "gf") + "\",\"nm\":\"" +
-                       (is_stroke ? "stroke" : "fill") + "\",\"o\":{\"a\":0,\"k\":100}," +
+                return std::string("{\"ty\":\"") + (is_stroke ? "gs" : "gf") + "\",\"o\":{\"a\":0,\"k\":100}," +
                        gradient(layer.definitions.at(paint.gradient).gradient, box) + line + ",\"bm\":0}";
         }
         return {};
@@ -229,7 +246,7 @@ struct LottieLayerEncoder::Frame {
             for (const Point2& p : subpath.in) box.add(p);
             for (const Point2& p : subpath.out) box.add(p);
             outlines.push_back(bezier(subpath));
-            shapes.push_back("{\"ty\":\"sh\",\"nm\":\"path\",\"ks\":" + outlines.back() + "}");
+            shapes.push_back("{\"ty\":\"sh\",\"ks\":" + outlines.back() + "}");
         }
         return shapes;
     }
@@ -260,17 +277,17 @@ struct LottieLayerEncoder::Frame {
         const std::string gradient_stops = stops(radial);
         const std::string corner = point(box.min_x, box.min_y);
         const std::string size = property(Form::vector, false, 100.0 * tolerance, decimals,
-                                          {rounded(100.0 * (box.max_x - box.min_x), decimals),
-                                           rounded(100.0 * (box.max_y - box.min_y), decimals)});
+                                          {rounded(100.0 * (box.max_x - box.min_x), decimals + 1),
+                                           rounded(100.0 * (box.max_y - box.min_y), decimals + 1)});
         if (!write_text) return;
         const auto unit = [](double value) { return format_fixed(value, kUnitDecimals); };
         items.push_back(
-            "{\"ty\":\"gr\",\"nm\":\"fill\",\"it\":[{\"ty\":\"rc\",\"nm\":\"box\",\"p\":{\"a\":0,\"k\":[0.5,0.5]},"
-            "\"s\":{\"a\":0,\"k\":[1,1]},\"r\":{\"a\":0,\"k\":0},\"d\":1},{\"ty\":\"gf\",\"nm\":\"fill\","
+            "{\"ty\":\"gr\",\"nm\":\"fill\",\"it\":[{\"ty\":\"rc\",\"p\":{\"a\":0,\"k\":[0.5,0.5]},"
+            "\"s\":{\"a\":0,\"k\":[1,1]},\"r\":{\"a\":0,\"k\":0},\"d\":1},{\"ty\":\"gf\","
             "\"o\":{\"a\":0,\"k\":100},\"g\":" + gradient_stops + ",\"s\":{\"a\":0,\"k\":[" +
             unit(radial.cx) + "," + unit(radial.cy) + "]},\"e\":{\"a\":0,\"k\":[" + unit(radial.cx + radial.r) + "," +
             unit(radial.cy) + "]},\"t\":2,\"h\":{\"a\":0,\"k\":0},\"a\":{\"a\":0,\"k\":0},\"r\":1,\"bm\":0},"
-            "{\"ty\":\"tr\",\"nm\":\"transform\",\"p\":" + corner + ",\"a\":{\"a\":0,\"k\":[0,0]},\"s\":" + size +
+            "{\"ty\":\"tr\",\"p\":" + corner + ",\"a\":{\"a\":0,\"k\":[0,0]},\"s\":" + size +
             ",\"r\":{\"a\":0,\"k\":0},\"o\":{\"a\":0,\"k\":100},\"sk\":{\"a\":0,\"k\":0},"
             "\"sa\":{\"a\":0,\"k\":0}}],\"bm\":0}");
         close_layer(layer_name, masks_of(outlines, "fill"));
@@ -292,19 +309,19 @@ struct LottieLayerEncoder::Frame {
                 Subpath subpath{shape.points, shape.points, shape.points, false};
                 for (const Point2& p : shape.points) box.add(p);
                 outlines.push_back(bezier(subpath));
-                geometry.push_back("{\"ty\":\"sh\",\"nm\":\"polyline\",\"ks\":" + outlines.back() + "}");
+                geometry.push_back("{\"ty\":\"sh\",\"ks\":" + outlines.back() + "}");
                 break;
             }
             case ShapeKind::circle:
                 box.add({shape.centre.x - shape.radius, shape.centre.y - shape.radius});
                 box.add({shape.centre.x + shape.radius, shape.centre.y + shape.radius});
-                geometry.push_back("{\"ty\":\"el\",\"nm\":\"circle\",\"p\":" + point(shape.centre.x, shape.centre.y) +
+                geometry.push_back("{\"ty\":\"el\",\"p\":" + point(shape.centre.x, shape.centre.y) +
                                    ",\"s\":" + point(2.0 * shape.radius, 2.0 * shape.radius) + ",\"d\":1}");
                 break;
             case ShapeKind::rect: {
                 box.add(shape.corner);
                 box.add({shape.corner.x + shape.width, shape.corner.y + shape.height});
-                geometry.push_back("{\"ty\":\"rc\",\"nm\":\"rect\",\"p\":" +
+                geometry.push_back("{\"ty\":\"rc\",\"p\":" +
                                    point(shape.corner.x + 0.5 * shape.width, shape.corner.y + 0.5 * shape.height) +
                                    ",\"s\":" + point(shape.width, shape.height) + ",\"r\":{\"a\":0,\"k\":0},\"d\":1}");
                 const Point2 c = shape.corner;
@@ -330,7 +347,7 @@ struct LottieLayerEncoder::Frame {
         for (const std::string& item : geometry) group += item + ",";
         if (!stroke.empty()) group += stroke + ",";
         if (!fill.empty()) group += fill + ",";
-        group += "{\"ty\":\"tr\",\"nm\":\"transform\",\"p\":{\"a\":0,\"k\":[0,0]},\"a\":{\"a\":0,\"k\":[0,0]},"
+        group += "{\"ty\":\"tr\",\"p\":{\"a\":0,\"k\":[0,0]},\"a\":{\"a\":0,\"k\":[0,0]},"
                  "\"s\":{\"a\":0,\"k\":[100,100]},\"r\":{\"a\":0,\"k\":0},\"o\":{\"a\":0,\"k\":100},"
                  "\"sk\":{\"a\":0,\"k\":0},\"sa\":{\"a\":0,\"k\":0}}],\"bm\":0}";
         items.push_back(std::move(group));
@@ -437,6 +454,7 @@ std::size_t LottieLayerEncoder::animated_property_count() const {
 }
 
 std::string LottieLayerEncoder::property_text(const Property& property) const {
+    bool folded = false;  // a closed path that ends where it starts: one vertex fewer (append_bezier)
     const auto append_value = [&](std::string& text, const double* numbers, std::size_t width, bool as_keyframe) {
         switch (property.form) {
             case Form::scalar:
@@ -449,21 +467,25 @@ std::string LottieLayerEncoder::property_text(const Property& property) const {
             case Form::vector: append_number_list(text, numbers, width, property.decimals); return;
             case Form::bezier:
                 if (as_keyframe) text += '[';
-                append_bezier(text, numbers, width, property.closed, property.decimals);
+                append_bezier(text, numbers, width, property.closed, folded, property.decimals);
                 if (as_keyframe) text += ']';
                 return;
         }
     };
     const Track& track = property.numbers.track();
     const std::size_t width = property.numbers.width();
+    const bool is_closed_path = property.form == Form::bezier && property.closed && width >= 12;
     std::string text;
     if (!track.varies) {
+        folded = is_closed_path && ends_at_start(property.numbers.first(), width);
         text = "{\"a\":0,\"k\":";
         append_value(text, property.numbers.first().data(), width, false);
         return text + "}";
     }
     const KeyFrames keys =
         choose_key_frames(track, frame_count_, std::vector<double>(width, property.tolerance));
+    // Every key ending at its start, so does every shape the player interpolates between them.
+    folded = is_closed_path && ends_at_start(keys.values.numbers, width);
     // Linear between keys: a Bezier easing from (0, 0) to (1, 1) with its handles on the line.
     std::string ease_in = "{\"x\":1,\"y\":1}", ease_out = "{\"x\":0,\"y\":0}";
     // Bodymovin's habit: one easing number a dimension, except for Bezier paths.
@@ -483,7 +505,16 @@ std::string LottieLayerEncoder::property_text(const Property& property) const {
         for (std::size_t k = 0; k < width; ++k) numbers[k] = keys.values.numbers[key * width + k];
         text += "{\"t\":" + format_fixed(keys.positions[key], kTimeDecimals) + ",\"s\":";
         append_value(text, numbers.data(), width, true);
-        if (key + 1 < keys.positions.size()) text += ",\"i\":" + ease_in + ",\"o\":" + ease_out;
+        if (key + 1 < keys.positions.size()) {
+            // A key the next one repeats as written holds (a pause): the same as linear between
+            // them, without the easing.
+            bool holds = true;
+            for (std::size_t k = 0; k < width && holds; ++k) {
+                holds = rounded(numbers[k], property.decimals) ==
+                        rounded(keys.values.numbers[(key + 1) * width + k], property.decimals);
+            }
+            text += holds ? ",\"h\":1" : ",\"i\":" + ease_in + ",\"o\":" + ease_out;
+        }
         text += '}';
     }
     return text + "]}";

@@ -35,7 +35,8 @@ struct LottieLayerContent {
 class LottieLayerEncoder {
 public:
     // `name` names the Lottie layers; `tolerance`: the largest distance, in the drawing's units,
-    // between an interpolated coordinate and the frame's; `decimals`: digits of the coordinates;
+    // between an interpolated coordinate and the frame's; `decimals`: digits of the written
+    // coordinates (the key frames are chosen on numbers a digit finer: the same keys at any digits);
     // `expected_frames`: how many frames will come (room is reserved once).
     LottieLayerEncoder(std::string name, double tolerance, int decimals, std::size_t expected_frames);
 

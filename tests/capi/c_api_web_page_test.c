@@ -57,7 +57,7 @@ static int test_animation_lottie(const tf_face_model *face, const tf_animation *
     CHECK(json != NULL && strlen(json) == length);
     CHECK(json != NULL && strncmp(json, "{\"v\":\"5.7.4\",\"fr\":25,", 19) == 0);
     /* The mouth moves (an animated Bezier path); no background layer without a colour. */
-    CHECK(json != NULL && strstr(json, "\"nm\":\"lips\",\"it\":[{\"ty\":\"sh\",\"nm\":\"path\",\"ks\":{\"a\":1,") != NULL);
+    CHECK(json != NULL && strstr(json, "\"nm\":\"lips\",\"it\":[{\"ty\":\"sh\",\"ks\":{\"a\":1,") != NULL);
     CHECK(json != NULL && strstr(json, "\"nm\":\"background\"") == NULL);
     tf_free(json);
     tf_svg_options_destroy(options);

@@ -196,11 +196,15 @@ TEST_SUITE("lottie") {
             const double t = static_cast<double>(frame) / static_cast<double>(kFrames - 1);
             const Layer drawn = moving_layer(t);
             const std::vector<double> blob = property_at(blob_path, static_cast<double>(frame));
-            // Vertices: the move, the line's end, the cubic's end, the quadratic's end (back at the start).
-            REQUIRE(blob.size() == 24);
+            // Vertices: the move, the line's end, the cubic's end; the quadratic, back at the start,
+            // is Lottie's closing segment, not a vertex of its own.
+            REQUIRE(blob.size() == 18);
             worst = std::max(worst, std::abs(blob[3] - (10.0 + 20.0 * t * t)));
             // The cubic's second control is the third vertex's in control.
-            worst = std::max(worst, std::abs(blob[8 + 5] - (30.0 + 5.0 * std::sin(6.0 * t))));
+            worst = std::max(worst, std::abs(blob[6 + 5] - (30.0 + 5.0 * std::sin(6.0 * t))));
+            // The quadratic's, raised to a cubic, the first vertex's in control.
+            worst = std::max(worst, std::abs(blob[6] - (10.0 - 10.0 / 3.0)));
+            worst = std::max(worst, std::abs(blob[7] - (10.0 + 40.0 / 3.0)));
             const std::vector<double> centre = property_at(*circle.find("p"), static_cast<double>(frame));
             worst = std::max(worst, std::abs(centre[0] - drawn.elements[2].children[0].centre.x));
             // The gradient's centre follows the circle's box.
