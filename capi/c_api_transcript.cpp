@@ -142,6 +142,21 @@ tf_status tf_timeline_sentence_starts_paragraph(const tf_timeline* timeline, siz
     });
 }
 
+tf_status tf_timeline_set_syllable_generic_speech(tf_timeline* timeline, size_t index, int generic_speech) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        syllable_at(timeline, index).generic_speech = generic_speech != 0;
+    });
+}
+
+tf_status tf_timeline_syllable_generic_speech(const tf_timeline* timeline, size_t index, int* out_generic_speech) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        require_non_null(out_generic_speech, "out_generic_speech");
+        *out_generic_speech = item_at(timeline->timeline.syllables, index, "syllable").generic_speech ? 1 : 0;
+    });
+}
+
 tf_status tf_timeline_set_duration_s(tf_timeline* timeline, double duration_s) {
     return guard([&] {
         require_non_null(timeline, "timeline");

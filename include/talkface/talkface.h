@@ -679,11 +679,28 @@ TF_API tf_status tf_timeline_set_sentence_starts_paragraph(tf_timeline *timeline
 TF_API tf_status tf_timeline_sentence_starts_paragraph(const tf_timeline *timeline, size_t index,
                                                        int *out_starts_paragraph);
 
+/* Marks (non-zero) or clears (0) that syllable `index` is part of a word no table reads (an English
+ * word the dictionary lacks), which the aligner fits as any speech rather than as its pinyin
+ * (TF_GENERIC_SPEECH_PINYIN, which only shapes the mouth). tf_read_transcript sets it.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or timeline is NULL. */
+TF_API tf_status tf_timeline_set_syllable_generic_speech(tf_timeline *timeline, size_t index,
+                                                         int generic_speech);
+
+/* Whether syllable `index` is generic speech (1) or read from its pinyin (0): for "Zorblax", which
+ * the English dictionary lacks, the reader makes "Zor" and "blax", each generic speech.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or an argument is NULL. */
+TF_API tf_status tf_timeline_syllable_generic_speech(const tf_timeline *timeline, size_t index,
+                                                     int *out_generic_speech);
+
+/* The pinyin of a generic-speech syllable: a neutral open and close of the mouth
+ * (talkface::kGenericSpeechPinyin). */
+#define TF_GENERIC_SPEECH_PINYIN "de5"
+
 /* The timeline as the timeline JSON (docs/timeline-format.md; the `align` document of SPEC
  * "Contracts", versioned), UTF-8: {"version":1, "sentences":[{"text","start","end"}],
  * "syllables":[{"text","pinyin","start","end","sentence","final_start" (only when known),
- * "confidence","pause_after"}], "duration":s, "warnings":[...]}, numbers in shortest round-trip
- * form, so that tf_timeline_from_json reads back the same timeline. Release *out_json with
+ * "confidence","pause_after","generic_speech" (only when true)}], "duration":s, "warnings":[...]},
+ * numbers in shortest round-trip form, so that tf_timeline_from_json reads back the same timeline. Release *out_json with
  * tf_free; *out_len (if not NULL) is its length in bytes without the NUL.
  * Errors: TF_ERR_INVALID_ARGUMENT if timeline or out_json is NULL. */
 TF_API tf_status tf_timeline_to_json(const tf_timeline *timeline, char **out_json, size_t *out_len);

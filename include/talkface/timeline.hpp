@@ -38,7 +38,17 @@ struct Syllable {
                               ///< kLowAlignmentConfidence (speech_aligner.hpp) it may be >100 ms off
     /// A pause the transcript marks right after this syllable (，、：), in which the mouth may rest.
     bool pause_after = false;
+    /// Part of a word no table reads (an English word the dictionary lacks: "Zorblax"), said but
+    /// not known: `text` is its share of the spelling ("Zor", "blax", about one syllable per group
+    /// of vowels), `pinyin` is kGenericSpeechPinyin, which only shapes the mouth (a plain open and
+    /// close), and the aligner fits it as any sound at all rather than as that pinyin. Last, so that
+    /// aggregate initialisers of the members above keep their meaning.
+    bool generic_speech = false;
 };
+
+/// The pinyin of a Syllable::generic_speech syllable: the light-tone 的, a neutral open and close
+/// of the mouth.
+inline constexpr const char* kGenericSpeechPinyin = "de5";
 
 /// A stretch of the transcript read by rule rather than character by character (a number, a date,
 /// a time, an amount, letters, an English word) and the syllables it became, so that a user can

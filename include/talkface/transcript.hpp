@@ -42,11 +42,13 @@ struct TranscriptOptions {
 /// - Written forms are read as a native reader says them (docs/written-forms.md): numbers,
 ///   dates, clock times, percentages, fractions, ranges, money, units and phone numbers
 ///   (2026年 二零二六年, 2本书 两本书, 3:30 三点三十分, 85% 百分之八十五, ¥199 一百九十九元,
-///   13812345678 幺三八...), acronyms letter by letter (AI ei ai), English words by a pronouncing
-///   dictionary (iPhone ai feng). Each becomes a WrittenForm in Timeline::written_forms beside
-///   its syllables. A fix right after a form replaces its reading, in characters or numbered
-///   pinyin: 2026{两千零二十六}, OK{ou1 kei4}. A number of more than 16 digits is read digit by
-///   digit and a word the dictionary lacks letter by letter, each with a warning.
+///   13812345678 幺三八...), acronyms of up to four capitals letter by letter (AI ei ai), English
+///   words by a pronouncing dictionary (iPhone ai feng). Each becomes a WrittenForm in
+///   Timeline::written_forms beside its syllables. A fix right after a form replaces its reading,
+///   in characters or numbered pinyin: 2026{两千零二十六}, OK{ou1 kei4}. A number of more than 16
+///   digits is read digit by digit with a warning; a word the dictionary lacks (Zorblax) becomes
+///   about as many Syllable::generic_speech syllables as its spelling has (Zor blax), which the
+///   aligner fits as any speech, with a warning (one without a vowel is spelled).
 /// - Characters without a reading (symbols, Han characters the table lacks) are not syllables:
 ///   each adds a Timeline::warnings entry `source:line:column: "★" (U+2605) has no Mandarin
 ///   reading; skipped`. Punctuation other than the marks above (quotes, brackets, dashes) stays

@@ -41,13 +41,19 @@ void print_plain(const talkface::Timeline& timeline) {
                 said += timeline.syllables[k].text;
                 readings += (readings.empty() ? "" : " ") + timeline.syllables[k].pinyin;
             }
-            const bool pause = timeline.syllables[std::min(next + count, timeline.syllables.size()) - 1].pause_after;
+            const std::size_t end = std::min(next + count, timeline.syllables.size());
+            const bool pause = timeline.syllables[end - 1].pause_after;
+            std::size_t generic = 0;
+            for (std::size_t k = next; k < end; ++k) generic += timeline.syllables[k].generic_speech ? 1 : 0;
             if (form != nullptr) {
                 std::cout << "  " << form->text << " -> " << said << '\t' << readings;
                 ++next_form;
             } else {
                 std::cout << "  " << said << '\t' << readings;
             }
+            if (generic > 0)
+                std::cout << "\t(unknown word: " << generic << (generic == 1 ? " syllable" : " syllables")
+                          << " of generic speech)";
             std::cout << (pause ? "\t(pause)" : "") << '\n';
             next += count;
         }
@@ -82,7 +88,8 @@ void setup_syllables_command(CLI::App& app) {
         ->check(CLI::ExistingFile);
     syllables->add_flag("--json", options->json,
                         "Print the timeline JSON without times: {\"version\":1, \"sentences\":[{text}], "
-                        "\"syllables\":[{text,pinyin,sentence,pause_after}], \"warnings\":[...]}");
+                        "\"syllables\":[{text,pinyin,sentence,pause_after,generic_speech (only when true)}], "
+                        "\"warnings\":[...]}");
     syllables->add_flag("--no-pinyin-input", options->no_pinyin_input,
                         "Read Latin letters as letters or English words, never as pinyin");
     syllables->callback([options] { run_syllables(*options); });

@@ -131,6 +131,8 @@ ModelEstimator::ModelEstimator()
 void ModelEstimator::add(const std::vector<float>& observations, const std::vector<PhoneState>& states,
                          const std::vector<StateSegment>& path) {
     for (const auto& segment : path) {
+        // Generic speech (a word no table reads) is any sound: it teaches no class.
+        if (states[segment.state].phone_class == kGenericSpeech) continue;
         const auto c = static_cast<std::size_t>(states[segment.state].phone_class);
         for (std::size_t t = segment.first_frame; t < segment.end_frame; ++t) {
             const float* row = &observations[t * kObservationCount];

@@ -49,7 +49,7 @@ std::vector<double> syllable_evidence(const SentenceChain& chain, const std::vec
         double sum = 0.0;
         for (std::size_t t = first; t < end; ++t) {
             const float* row = &scores.values[t * kPhoneClassCount];
-            sum += std::exp(static_cast<double>(row[frame_class[t]]) - log_sum_exp(row, kPhoneClassCount));
+            sum += std::exp(static_cast<double>(scores.at(t, frame_class[t])) - log_sum_exp(row, kPhoneClassCount));
         }
         posterior[i] = end > first ? sum / static_cast<double>(end - first) : 0.0;
         const std::size_t low = first > kGapMarginFrames ? first - kGapMarginFrames : 0;

@@ -4,6 +4,7 @@
 #ifndef TALKFACE_SPEECH_HSMM_HPP
 #define TALKFACE_SPEECH_HSMM_HPP
 
+#include <algorithm>
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -16,8 +17,11 @@ namespace talkface::detail {
 struct EmissionScores {
     std::vector<float> values;
     std::size_t frame_count = 0;
+    // kGenericSpeech scores as the class that fits the frame best.
     float at(std::size_t frame, int phone_class) const {
-        return values[frame * kPhoneClassCount + static_cast<std::size_t>(phone_class)];
+        const float* row = &values[frame * kPhoneClassCount];
+        if (phone_class == kGenericSpeech) return *std::max_element(row, row + kPhoneClassCount);
+        return row[static_cast<std::size_t>(phone_class)];
     }
 };
 

@@ -188,6 +188,17 @@ bool is_fricative(const std::string& initial) {
     return initial == "f" || initial == "h" || initial == "s" || initial == "sh" || initial == "x";
 }
 
+// A syllable of a word no table reads (Syllable::generic_speech): one state of any sound at all,
+// a syllable long (an initial and a vowel), stretched with the rate as vowels are. Any sound fits
+// it as well as the best class, so it pays per frame about what a right syllable's frames lose to
+// their best class (lenient_chain.cpp), or it would take its neighbours' sounds.
+PhoneState generic_syllable() {
+    PhoneState state = vowel(kGenericSpeech, 20.0);
+    state.log_sigma = 0.6;
+    state.frame_log_penalty = -0.1;
+    return state;
+}
+
 PhoneState pause_state(StateRole role, std::size_t syllable, double median_frames, std::size_t max_frames,
                        double entry_log_penalty) {
     PhoneState state;
@@ -235,8 +246,12 @@ std::vector<PhoneState> build_phone_chain(const std::vector<const Syllable*>& sy
             }
         }
         const std::size_t first_state = states.size();
-        add_initial(parts.initial, index > 0, states);
-        add_final(parts.initial, parts.final, states);
+        if (syllable.generic_speech) {
+            states.push_back(generic_syllable());
+        } else {
+            add_initial(parts.initial, index > 0, states);
+            add_final(parts.initial, parts.final, states);
+        }
         if (states.size() == first_state) throw InvalidArgument("syllable " + std::to_string(index) + " (\"" + syllable.text + "\")",
                                                                 "\"" + syllable.pinyin + "\" is not a Mandarin syllable");
         for (std::size_t s = first_state; s < states.size(); ++s) states[s].syllable = index;

@@ -78,8 +78,17 @@ std::vector<std::vector<StateSegment>> split_in_halves(const SentenceChain& chai
     for (; first < chain.syllables.size(); ++sentences) {
         std::size_t end = first;
         while (end < chain.syllables.size() && chain.syllables[end]->sentence == chain.syllables[first]->sentence) ++end;
-        const std::size_t second_half = first + (end - first + 1) / 2;
-        for (std::size_t i = first; i < end; ++i) half_of_syllable[i] = 2 * sentences + (i < second_half ? 0 : 1);
+        // Halves of the syllables read from their pinyin: generic speech (a word no table reads)
+        // teaches the models nothing, and a half left with few read syllables would be judged by
+        // models that never heard some of the other half's sounds.
+        std::size_t read = 0;
+        for (std::size_t i = first; i < end; ++i) read += chain.syllables[i]->generic_speech ? 0 : 1;
+        const std::size_t first_half_read = (read + 1) / 2;
+        std::size_t seen = 0;
+        for (std::size_t i = first; i < end; ++i) {
+            half_of_syllable[i] = 2 * sentences + (seen < first_half_read ? 0 : 1);
+            seen += chain.syllables[i]->generic_speech ? 0 : 1;
+        }
         first = end;
     }
     std::vector<std::vector<StateSegment>> halves(2 * sentences);

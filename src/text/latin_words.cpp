@@ -1,6 +1,8 @@
 #include "text/latin_words.hpp"
 
 #include <algorithm>
+#include <iterator>
+#include <string>
 #include <string_view>
 #include <utility>
 
@@ -19,12 +21,35 @@ const char* const kLetterNames[26] = {
     "ai2 si5",     "ti4",      "you1",    "wei1", "da2 bu5 liu5", "ai2 ke4 si5", "wai4", "zei4",
 };
 
-// Words Mandarin speakers say their own way, where the dictionary's mapping misses it: email is
-// 伊妹儿 (the mapping of its first vowel gave "e").
+// Words Mandarin speakers say their own way, where the dictionary's mapping misses it or it lacks
+// them (docs/written-forms.md): email is 伊妹儿 (the mapping of its first vowel gave "e"); COVID
+// and SARS, written in capitals, are said as words (扣维德, 萨斯), not spelled.
 constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     {"email", "yi1 mei4 er5"},
     {"e-mail", "yi1 mei4 er5"},
+    {"covid", "kou1 wei2 de5"},
+    {"sars", "sa4 si1"},
 };
+
+std::string lower_case(std::string_view word) {
+    std::string lower;
+    for (const char letter : word) lower += letter >= 'A' && letter <= 'Z' ? static_cast<char>(letter - 'A' + 'a') : letter;
+    return lower;
+}
+
+bool is_vowel_at(const std::string& lower, std::size_t i) {
+    const char c = lower[i];
+    if (c == 'y') return i > 0 && (i + 1 == lower.size() || std::string_view("aeiou").find(lower[i + 1]) == std::string_view::npos);
+    return std::string_view("aeiou").find(c) != std::string_view::npos;
+}
+
+// Two consonants that start an English syllable together.
+bool is_usual_onset(std::string_view pair) {
+    constexpr std::string_view kOnsets[] = {"bl", "br", "cl", "cr", "dr", "fl", "fr", "gl", "gr", "pl", "pr", "tr",
+                                            "sc", "sk", "sl", "sm", "sn", "sp", "st", "sw", "tw", "ch", "sh", "th",
+                                            "ph", "wh", "wr", "qu"};
+    return std::find(std::begin(kOnsets), std::end(kOnsets), pair) != std::end(kOnsets);
+}
 
 void append_words(std::vector<std::string>& syllables, std::string_view words) {
     std::size_t start = 0;
@@ -69,11 +94,46 @@ std::vector<std::string> letter_syllables(std::string_view letters) {
     return syllables;
 }
 
-std::optional<std::vector<std::string>> english_word_syllables(std::string_view word) {
-    std::string key;
-    for (const char letter : word) {
-        key += letter >= 'A' && letter <= 'Z' ? static_cast<char>(letter - 'A' + 'a') : letter;
+bool is_said_as_word(std::string_view word) {
+    const std::string key = lower_case(word);
+    return std::any_of(std::begin(kSaidOtherwise), std::end(kSaidOtherwise),
+                       [&](const auto& entry) { return entry.first == key; });
+}
+
+std::vector<std::string> spelled_syllables(std::string_view word) {
+    const std::string lower = lower_case(word);
+    // Groups of vowels: [first, end) in the word.
+    std::vector<std::pair<std::size_t, std::size_t>> groups;
+    for (std::size_t i = 0; i < lower.size(); ++i) {
+        if (!is_vowel_at(lower, i)) continue;
+        if (!groups.empty() && groups.back().second == i) {
+            groups.back().second = i + 1;
+        } else {
+            groups.emplace_back(i, i + 1);
+        }
     }
+    // A final e after a consonant is silent (blade), unless it makes -le a syllable (table).
+    const std::size_t n = lower.size();
+    if (groups.size() > 1 && groups.back().first + 1 == n && lower[n - 1] == 'e' && !is_vowel_at(lower, n - 2) &&
+        !(lower[n - 2] == 'l' && n >= 3 && !is_vowel_at(lower, n - 3)))
+        groups.pop_back();
+    std::vector<std::string> syllables;
+    std::size_t start = 0;
+    for (std::size_t g = 1; g < groups.size(); ++g) {
+        const std::size_t before = groups[g - 1].second;
+        const std::size_t onset = groups[g].first;
+        std::size_t cut = onset;
+        if (onset - before == 1) cut = onset - 1;
+        if (onset - before >= 2) cut = is_usual_onset(std::string_view(lower).substr(onset - 2, 2)) ? onset - 2 : onset - 1;
+        syllables.emplace_back(word.substr(start, cut - start));
+        start = cut;
+    }
+    if (!groups.empty()) syllables.emplace_back(word.substr(start));
+    return syllables;
+}
+
+std::optional<std::vector<std::string>> english_word_syllables(std::string_view word) {
+    const std::string key = lower_case(word);
     for (const auto& [spelled, said] : kSaidOtherwise) {
         if (key != spelled) continue;
         std::vector<std::string> syllables;

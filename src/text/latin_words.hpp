@@ -20,6 +20,16 @@ std::vector<std::string> letter_syllables(std::string_view letters);
 // the dictionary does not have it.
 std::optional<std::vector<std::string>> english_word_syllables(std::string_view word);
 
+// True where a word in capitals is said as a word, not letter by letter (COVID, SARS): the words
+// Mandarin speakers say their own way.
+bool is_said_as_word(std::string_view word);
+
+// A word nothing here reads (Zorblax), cut where its spelling puts syllables: one per group of
+// vowels (y among them after a consonant), a final silent e not counted, each cut before the
+// consonant that starts the next syllable, or before two that usually start one together (bl,
+// st, th ...): Zor blax. Empty if it has no vowel (Xkcd), which no one says as a word.
+std::vector<std::string> spelled_syllables(std::string_view word);
+
 // Every line of the English table, "word\tsyl1 syl2", sorted by word (for the lookup, and for a
 // test that checks every reading).
 const std::vector<std::string_view>& english_lines();

@@ -231,6 +231,7 @@ private:
         flush_run();
         if (sentence_ended_ && !(ends_sentence(c.value) || closes_quote(c.value))) close_sentence();
         if (auto form = detail::read_number_form(text, i)) {
+            form_warnings_ = timeline_.warnings.size();
             if (!form->warning.empty()) warn(c, "\"" + written_text(text, i, form->end) + "\": " + form->warning);
             add_form(text, i, form->end, read_words(form->words));
             return form->end;
@@ -272,10 +273,12 @@ private:
         return end;
     }
 
-    // Latin letters that are not pinyin: an acronym (all capitals) letter by letter, a word by
-    // the English dictionary, else by its parts (WeChat: we chat), else letter by letter with a
-    // warning. A hyphenated word the dictionary has whole (Wi-Fi) is one form.
+    // Latin letters that are not pinyin: an acronym (a few capitals) letter by letter, a word by
+    // the English dictionary, else by its parts (WeChat: we chat), else as generic speech of about
+    // as many syllables as its spelling has, with a warning. A hyphenated word the dictionary has
+    // whole (Wi-Fi) is one form.
     std::size_t read_latin(const std::vector<CodePoint>& text, std::size_t start) {
+        form_warnings_ = timeline_.warnings.size();
         auto letters_end = [&](std::size_t from) {
             while (from < text.size() && is_ascii_letter(text[from].value)) ++from;
             return from;
@@ -296,24 +299,59 @@ private:
                 end = second_end;
             }
         }
-        std::vector<std::string> pinyin;
-        const bool is_acronym = std::all_of(word.begin(), word.end(), [](char l) { return is_ascii_capital(l); });
-        if (is_acronym) {
-            pinyin = detail::letter_syllables(word);
-        } else if (auto found = detail::english_word_syllables(word)) {
-            pinyin = std::move(*found);
-        } else {
-            pinyin = read_word_parts(word, text[start]);
-        }
         std::vector<Syllable> syllables;
-        for (const auto& reading : pinyin) syllables.push_back(make_syllable(toneless_of(reading), reading));
+        const bool is_capitals = std::all_of(word.begin(), word.end(), [](char l) { return is_ascii_capital(l); });
+        if (is_capitals && !detail::is_said_as_word(word)) {
+            syllables = read_capitals(word);
+        } else if (auto found = detail::english_word_syllables(word)) {
+            syllables = said_syllables(*found);
+        } else {
+            syllables = read_word_parts(word, text[start]);
+        }
         add_form(text, start, end, std::move(syllables));
         return end;
     }
 
+    std::vector<Syllable> said_syllables(const std::vector<std::string>& pinyin) const {
+        std::vector<Syllable> syllables;
+        for (const auto& reading : pinyin) syllables.push_back(make_syllable(toneless_of(reading), reading));
+        return syllables;
+    }
+
+    // Capitals: an acronym of up to kLongestAcronym letters is spelled (USB, CCTV, NASA); a longer
+    // run is a word where the dictionary has it (NASDAQ) or its spelling can be said (a name in
+    // capitals), and spelled where it cannot (HTTPS: no vowel, WCDMA: four consonants in a row).
+    std::vector<Syllable> read_capitals(const std::string& word) const {
+        constexpr std::size_t kLongestAcronym = 4;
+        constexpr std::size_t kLongestSaidConsonants = 2;
+        if (word.size() > kLongestAcronym) {
+            if (auto found = detail::english_word_syllables(word)) return said_syllables(*found);
+            std::size_t consonants = 0, longest = 0;
+            for (const char letter : word) {
+                consonants = std::string_view("AEIOUY").find(letter) == std::string_view::npos ? consonants + 1 : 0;
+                longest = std::max(longest, consonants);
+            }
+            auto spelled = detail::spelled_syllables(word);
+            if (!spelled.empty() && longest <= kLongestSaidConsonants) return generic_syllables(spelled);
+        }
+        return said_syllables(detail::letter_syllables(word));
+    }
+
+    // Syllables of a word no table reads: its spelling's share each, fitted by the aligner as any
+    // sound at all (Syllable::generic_speech).
+    std::vector<Syllable> generic_syllables(const std::vector<std::string>& spelled) const {
+        std::vector<Syllable> syllables;
+        for (const auto& piece : spelled) {
+            syllables.push_back(make_syllable(piece, kGenericSpeechPinyin));
+            syllables.back().generic_speech = true;
+        }
+        return syllables;
+    }
+
     // A word the dictionary lacks, by the parts its capitals mark (WeChat, YouTube), or as two
-    // words it has (Facebook); a part still unknown is spelled, with a warning.
-    std::vector<std::string> read_word_parts(const std::string& word, const CodePoint& at) {
+    // words it has (Facebook); a part still unknown is generic speech of about as many syllables
+    // as its spelling has (or spelled, if it has no vowel), with a warning.
+    std::vector<Syllable> read_word_parts(const std::string& word, const CodePoint& at) {
         std::vector<std::string> parts;
         for (std::size_t i = 0; i < word.size(); ++i) {
             const bool starts_part = i == 0 || (is_ascii_capital(static_cast<char32_t>(word[i])) &&
@@ -321,18 +359,26 @@ private:
             if (starts_part) parts.emplace_back();
             parts.back() += word[i];
         }
-        std::vector<std::string> pinyin;
+        std::vector<Syllable> syllables;
         for (const auto& part : parts) {
             auto found = parts.size() > 1 ? detail::english_word_syllables(part) : std::nullopt;
             if (!found) found = read_compound(part);
-            if (!found) {
-                warn(at, "\"" + part + "\" is not in the English pronouncing dictionary; read letter by letter (fix it in place: " +
+            std::vector<Syllable> read;
+            if (found) {
+                read = said_syllables(*found);
+            } else if (const auto spelled = detail::spelled_syllables(part); !spelled.empty()) {
+                warn(at, "\"" + part + "\" is not in the English pronouncing dictionary; aligned as generic speech of about " +
+                             std::to_string(spelled.size()) + (spelled.size() == 1 ? " syllable" : " syllables") +
+                             " (fix it in place: " + part + "{...})");
+                read = generic_syllables(spelled);
+            } else {
+                warn(at, "\"" + part + "\" is not in the English pronouncing dictionary and has no vowel; read letter by letter (fix it in place: " +
                              part + "{...})");
-                found = detail::letter_syllables(part);
+                read = said_syllables(detail::letter_syllables(part));
             }
-            pinyin.insert(pinyin.end(), found->begin(), found->end());
+            for (auto& syllable : read) syllables.push_back(std::move(syllable));
         }
-        return pinyin;
+        return syllables;
     }
 
     // A word the dictionary lacks as two words it has, the longer first part first (facebook:
@@ -437,6 +483,8 @@ private:
                              "the fix is empty; write how the form is said, e.g. 2026{两千零二十六}");
         }
         timeline_.syllables.resize(form.first_syllable);
+        // What the reader said of the form (a word it did not know) no longer holds.
+        timeline_.warnings.resize(form_warnings_);
         form.syllable_count = syllables.size();
         for (auto& syllable : syllables) timeline_.syllables.push_back(std::move(syllable));
         last_form_end_.reset();
@@ -589,6 +637,7 @@ private:
     Timeline timeline_;
     std::vector<HanCharacter> run_;  // Chinese characters not yet read, in order
     std::optional<std::size_t> last_form_end_;  // where the last written form ends in the text
+    std::size_t form_warnings_ = 0;  // warnings before the last written form's own
     std::string sentence_text_;
     std::string pending_space_;
     bool sentence_ended_ = false;  // an end mark was seen; closing quotes may still follow

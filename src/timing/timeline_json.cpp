@@ -146,6 +146,13 @@ const std::vector<Field<Syllable>>& syllable_fields() {
         {"pause_after", false, false,
          [](const Syllable& s) -> std::optional<std::string> { return std::string(s.pause_after ? "true" : "false"); },
          [](const ItemReader& r, const JsonValue& v, Syllable& s) { s.pause_after = r.flag(v, "pause_after"); }},
+        // Written only for a syllable of a word no table reads (issue 13), so other documents keep
+        // their bytes.
+        {"generic_speech", false, false,
+         [](const Syllable& s) -> std::optional<std::string> {
+             return s.generic_speech ? std::optional<std::string>("true") : std::nullopt;
+         },
+         [](const ItemReader& r, const JsonValue& v, Syllable& s) { s.generic_speech = r.flag(v, "generic_speech"); }},
     };
     return fields;
 }

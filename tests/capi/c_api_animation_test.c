@@ -739,12 +739,40 @@ static int test_paragraphs_of_the_transcript_are_kept(void) {
     return failures;
 }
 
+static int test_a_word_no_table_reads_is_generic_speech(void) {
+    int failures = 0;
+    /* 我用Zorblax打电话 */
+    const char *text = "\xe6\x88\x91\xe7\x94\xa8Zorblax\xe6\x89\x93\xe7\x94\xb5\xe8\xaf\x9d";
+    tf_timeline *timeline = NULL;
+    const char *syllable = NULL;
+    const char *pinyin = NULL;
+    int generic = -1;
+    CHECK_OK(tf_read_transcript(text, strlen(text), "t.txt", &timeline));
+    CHECK_OK(tf_timeline_syllable(timeline, 2, &syllable, &pinyin, NULL));
+    CHECK(strcmp(syllable, "Zor") == 0);
+    CHECK(strcmp(pinyin, TF_GENERIC_SPEECH_PINYIN) == 0);
+    CHECK_OK(tf_timeline_syllable_generic_speech(timeline, 2, &generic));
+    CHECK(generic == 1);
+    CHECK_OK(tf_timeline_syllable_generic_speech(timeline, 1, &generic));
+    CHECK(generic == 0);
+    CHECK_OK(tf_timeline_set_syllable_generic_speech(timeline, 1, 1));
+    CHECK_OK(tf_timeline_syllable_generic_speech(timeline, 1, &generic));
+    CHECK(generic == 1);
+    CHECK_FAILS_WITH(tf_timeline_syllable_generic_speech(timeline, 7, &generic), TF_ERR_INVALID_ARGUMENT, "7");
+    CHECK_FAILS_WITH(tf_timeline_set_syllable_generic_speech(NULL, 0, 1), TF_ERR_INVALID_ARGUMENT, "timeline");
+    CHECK_FAILS_WITH(tf_timeline_syllable_generic_speech(timeline, 0, NULL), TF_ERR_INVALID_ARGUMENT,
+                     "out_generic_speech");
+    tf_timeline_destroy(timeline);
+    return failures;
+}
+
 int main(void) {
     int failures = 0;
     failures += test_transcript_is_read_into_sentences_and_syllables();
     failures += test_written_forms_are_kept_beside_their_syllables();
     failures += test_transcript_errors_name_where();
     failures += test_paragraphs_of_the_transcript_are_kept();
+    failures += test_a_word_no_table_reads_is_generic_speech();
     failures += test_built_timeline_reads_back_and_writes_align_json();
     failures += test_timeline_json_reads_back_the_same_timeline();
     failures += test_syllable_shapes_size_then_data();

@@ -61,6 +61,16 @@ def test_plain_output_shows_each_written_form_and_what_it_became(tmp_path):
     assert result.stderr == ""
 
 
+def test_a_word_no_table_reads_is_shown_as_generic_speech(tmp_path):
+    result = run("syllables", write(tmp_path, "我用Zorblax打电话。"))
+    assert result.returncode == 0, result.stderr
+    assert "  Zorblax -> Zor blax\tde5 de5\t(unknown word: 2 syllables of generic speech)" in result.stdout.splitlines()
+    assert "aligned as generic speech of about 2 syllables" in result.stderr
+    document = json.loads(run("syllables", write(tmp_path, "我用Zorblax打电话。"), "--json").stdout)
+    assert [s.get("generic_speech", False) for s in document["syllables"]] == [False, False, True, True, False, False,
+                                                                              False]
+
+
 def test_json_carries_the_written_text_of_each_syllable_group(tmp_path):
     document = json.loads(run("syllables", write(tmp_path, "打13812345678，GDP增长5%。"), "--json").stdout)
     assert list(document) == ["version", "sentences", "syllables", "written_forms", "warnings"]

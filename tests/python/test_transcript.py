@@ -50,8 +50,9 @@ def test_a_blank_line_starts_a_paragraph():
 def test_pinyin_input_can_be_turned_off():
     assert [s.pinyin for s in talkface.read_transcript("ni3 hao3").syllables] == ["ni3", "hao3"]
     off = talkface.read_transcript("ni3 hao3", read_pinyin=False)
-    # Read as Latin instead: "ni" is spelled (a warning names it), 3 is a number.
-    assert [s.pinyin for s in off.syllables][:3] == ["en1", "ai4", "san1"]
+    # Read as Latin instead: "ni" is a word no table reads, generic speech (a warning names it), 3 a number.
+    assert [s.pinyin for s in off.syllables][:2] == [talkface.kGenericSpeechPinyin, "san1"]
+    assert off.syllables[0].generic_speech
     assert 'not in the English pronouncing dictionary' in off.warnings[0]
 
 
@@ -88,6 +89,20 @@ def test_written_forms_go_through_the_timeline_json():
     assert '"written_forms":[\n{"text":"110","first_syllable":3,"syllable_count":3}\n]' in json
     back = talkface.timeline_from_json(json)
     assert back.written_forms == timeline.written_forms
+
+
+def test_a_word_no_table_reads_is_generic_speech():
+    timeline = talkface.read_transcript("我用Zorblax打电话", source_name="t.txt")
+    word = timeline.syllables[2:4]
+    assert [s.text for s in word] == ["Zor", "blax"]
+    assert all(s.generic_speech and s.pinyin == talkface.kGenericSpeechPinyin for s in word)
+    assert not timeline.syllables[1].generic_speech
+    assert "aligned as generic speech of about 2 syllables" in timeline.warnings[0]
+    back = talkface.timeline_from_json(talkface.timeline_to_json(timeline, with_times=False))
+    assert back.syllables == timeline.syllables
+    syllable = talkface.Syllable("Zor", "de5", generic_speech=True)
+    assert syllable.generic_speech
+    assert "generic_speech=True" in repr(syllable)
 
 
 def test_timeline_keeps_written_forms_it_is_given():

@@ -189,7 +189,9 @@ TEST_SUITE("transcript") {
         TranscriptOptions options;
         options.read_pinyin = false;
         const auto timeline = read_transcript("ni3 好", options);
-        CHECK(toneless(timeline) == "en ai san hao");  // "ni" is no English word: spelled, then 3
+        // "ni" is no English word: generic speech of one syllable, then 3
+        CHECK(toneless(timeline) == "de san hao");
+        CHECK(timeline.syllables.at(0).generic_speech);
         REQUIRE(timeline.warnings.size() == 1);
         CHECK(timeline.warnings[0].find("\"ni\" is not in the English pronouncing dictionary") != std::string::npos);
     }

@@ -177,11 +177,75 @@ TEST_SUITE("written forms") {
         });
     }
 
-    TEST_CASE("a word the dictionary lacks is spelled letter by letter, with a warning") {
+    TEST_CASE("a word the dictionary lacks and without a vowel is spelled letter by letter, with a warning") {
         const auto timeline = read_transcript("用Xqzt吧", {}, "t.txt");
         CHECK(said(timeline) == "用 ai ke si qiu zei ti吧");
         REQUIRE(timeline.warnings.size() == 1);
         CHECK(timeline.warnings[0].find("t.txt:1:2: \"Xqzt\" is not in the English pronouncing dictionary") == 0);
+        CHECK(timeline.syllables[1].generic_speech == false);
+    }
+
+    TEST_CASE("a word no table reads is generic speech, about a syllable per group of its vowels") {
+        const auto timeline = read_transcript("我用Zorblax打电话", {}, "t.txt");
+        CHECK(said(timeline) == "我用 Zor blax打电话");
+        REQUIRE(timeline.syllables.size() == 7);
+        for (std::size_t i = 0; i < timeline.syllables.size(); ++i) {
+            CAPTURE(i);
+            CHECK(timeline.syllables[i].generic_speech == (i == 2 || i == 3));
+        }
+        CHECK(timeline.syllables[2].pinyin == kGenericSpeechPinyin);
+        CHECK(is_valid_pinyin(kGenericSpeechPinyin));
+        CHECK_NOTHROW(syllable_mouth_shapes(kGenericSpeechPinyin));
+        REQUIRE(timeline.written_forms.size() == 1);
+        CHECK(timeline.written_forms[0].text == "Zorblax");
+        CHECK(timeline.written_forms[0].syllable_count == 2);
+        REQUIRE(timeline.warnings.size() == 1);
+        CHECK(timeline.warnings[0] ==
+              "t.txt:1:3: \"Zorblax\" is not in the English pronouncing dictionary; aligned as generic speech of "
+              "about 2 syllables (fix it in place: Zorblax{...})");
+        // A part the dictionary has keeps its reading beside a part it lacks.
+        const auto mixed = read_transcript("WeZorb");
+        REQUIRE(mixed.syllables.size() == 2);
+        CHECK_FALSE(mixed.syllables[0].generic_speech);
+        CHECK(mixed.syllables[1].generic_speech);
+        CHECK(mixed.syllables[1].text == "Zorb");
+        // A fix in place replaces the guess with a reading.
+        const auto fixed = read_transcript("Zorblax{zuo3 bu4 la1}");
+        REQUIRE(fixed.syllables.size() == 3);
+        CHECK_FALSE(fixed.syllables[0].generic_speech);
+        CHECK(fixed.warnings.empty());
+    }
+
+    TEST_CASE("a spelling is cut into syllables at its groups of vowels") {
+        using Cuts = std::vector<std::string>;
+        CHECK(detail::spelled_syllables("Zorblax") == Cuts{"Zor", "blax"});
+        CHECK(detail::spelled_syllables("blade") == Cuts{"blade"});        // a final e is silent
+        CHECK(detail::spelled_syllables("Tumble") == Cuts{"Tum", "ble"});  // but -le after a consonant is not
+        CHECK(detail::spelled_syllables("boy") == Cuts{"boy"});
+        CHECK(detail::spelled_syllables("gym") == Cuts{"gym"});
+        CHECK(detail::spelled_syllables("Yelp") == Cuts{"Yelp"});          // y before a vowel is a consonant
+        CHECK(detail::spelled_syllables("Kardashian") == Cuts{"Kar", "da", "shian"});
+        CHECK(detail::spelled_syllables("Xqzt").empty());
+        for (const std::string word : {"Zorblax", "Kardashian", "Tumble", "strengths", "a"}) {
+            std::string joined;
+            for (const auto& piece : detail::spelled_syllables(word)) joined += piece;
+            CHECK(joined == word);
+        }
+    }
+
+    TEST_CASE("a few capitals are an acronym, a longer run a word where it can be said") {
+        check_cases({
+            {"CCTV", "xi xi ti wei"},
+            {"NASA", "en ei ai si ei"},
+            {"HTTPS", "ai qi ti ti pi ai si"},  // no vowel
+            {"WCDMA", "da bu liu xi di ai mu ei"},  // four consonants in a row
+            {"COVID-19疫情", "kou wei de十九疫情"},
+            {"SARS", "sa si"},
+        });
+        const auto timeline = read_transcript("NVIDIA");
+        REQUIRE(timeline.syllables.size() == 2);
+        CHECK(timeline.syllables[0].generic_speech);
+        CHECK(timeline.warnings.empty());
     }
 
     TEST_CASE("every letter name and every English reading is a syllable the aligner and the lips take") {

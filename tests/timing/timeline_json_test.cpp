@@ -175,6 +175,17 @@ TEST_SUITE("timeline JSON") {
         CHECK(talkface::timeline_to_json(spoken_timeline()).find("written_forms") == std::string::npos);
     }
 
+    TEST_CASE("generic speech is written only where a syllable is, and reads back") {
+        Timeline timeline = spoken_timeline();
+        timeline.syllables[1].generic_speech = true;
+        const std::string json = talkface::timeline_to_json(timeline);
+        CHECK(json.find("\"generic_speech\":true") != std::string::npos);
+        CHECK(json.find("\"generic_speech\":true") == json.rfind("\"generic_speech\""));
+        const Timeline back = talkface::timeline_from_json(json);
+        for (std::size_t i = 0; i < back.syllables.size(); ++i) CHECK(back.syllables[i].generic_speech == (i == 1));
+        CHECK(talkface::timeline_to_json(spoken_timeline()).find("generic_speech") == std::string::npos);
+    }
+
     TEST_CASE("a written form outside the syllables or out of order is refused by item") {
         const std::string head = "{\"sentences\":[{\"text\":\"a\"}],\n\"syllables\":[\n"
                                  R"({"text":"a","pinyin":"a1","sentence":0},{"text":"a","pinyin":"a1","sentence":0}],)"

@@ -59,13 +59,14 @@ Example:
     >>> talkface.syllable_mouth_shapes(s.pinyin)
 )doc")
         .def(py::init([](std::string text, std::string pinyin, std::size_t sentence, double start_s, double end_s,
-                         std::optional<double> final_start_s, double confidence, bool pause_after) {
-                 return Syllable{std::move(text), std::move(pinyin), sentence,   start_s,
-                                 end_s,           final_start_s,     confidence, pause_after};
+                         std::optional<double> final_start_s, double confidence, bool pause_after,
+                         bool generic_speech) {
+                 return Syllable{std::move(text), std::move(pinyin), sentence,    start_s,       end_s,
+                                 final_start_s,   confidence,        pause_after, generic_speech};
              }),
              py::arg("text") = "", py::arg("pinyin") = "", py::arg("sentence") = 0, py::arg("start_s") = 0.0,
              py::arg("end_s") = 0.0, py::arg("final_start_s") = py::none(), py::arg("confidence") = 1.0,
-             py::arg("pause_after") = false, R"doc(
+             py::arg("pause_after") = false, py::arg("generic_speech") = false, R"doc(
 Args:
     text (str): the character (or the pinyin syllable when the transcript is pinyin).
     pinyin (str): numbered pinyin, u-umlaut written v: "lv4", "hang2".
@@ -75,6 +76,9 @@ Args:
     confidence (float): 0..1, how sure the aligner is of the times; below talkface.kLowAlignmentConfidence
         (0.5) the syllable may be more than 100 ms off: check it.
     pause_after (bool): the transcript marks a pause after it (，、：).
+    generic_speech (bool): part of a word no table reads (an English word the dictionary lacks): the
+        aligner fits it as any speech; its pinyin is talkface.kGenericSpeechPinyin ("de5"), which only
+        shapes the mouth.
 
 Example:
     >>> talkface.Syllable("行", "hang2")
@@ -88,18 +92,22 @@ Example:
         .def_readwrite("final_start_s", &Syllable::final_start_s, "where its final starts, seconds, or None")
         .def_readwrite("confidence", &Syllable::confidence, "0..1")
         .def_readwrite("pause_after", &Syllable::pause_after, "a pause the transcript marks after it")
+        .def_readwrite("generic_speech", &Syllable::generic_speech,
+                       "part of a word no table reads, aligned as any speech")
         .def("__eq__",
              [](const Syllable& a, const Syllable& b) {
                  return a.text == b.text && a.pinyin == b.pinyin && a.sentence == b.sentence &&
                         a.start_s == b.start_s && a.end_s == b.end_s && a.final_start_s == b.final_start_s &&
-                        a.confidence == b.confidence && a.pause_after == b.pause_after;
+                        a.confidence == b.confidence && a.pause_after == b.pause_after &&
+                        a.generic_speech == b.generic_speech;
              })
         .def("__repr__", [](const Syllable& s) {
             return py::str("talkface.Syllable({!r}, {!r}, sentence={!r}, start_s={!r}, end_s={!r}, "
-                           "final_start_s={!r}, confidence={!r}, pause_after={!r})")
+                           "final_start_s={!r}, confidence={!r}, pause_after={!r}, generic_speech={!r})")
                 .format(s.text, s.pinyin, s.sentence, s.start_s, s.end_s, s.final_start_s, s.confidence,
-                        s.pause_after);
+                        s.pause_after, s.generic_speech);
         });
+    m.attr("kGenericSpeechPinyin") = kGenericSpeechPinyin;
 
     py::class_<WrittenForm>(m, "WrittenForm", R"doc(
 A stretch of the transcript read by rule (a number, date, time, amount, letters, an English word)
@@ -169,10 +177,11 @@ Args:
                  return a.start_s == b.start_s && a.end_s == b.end_s && a.first_syllable == b.first_syllable &&
                         a.syllable_count == b.syllable_count && a.expected_text == b.expected_text;
              })
-        .def("__repr__", [](const TextMismatch& m) {
+        .def("__repr__", [](const TextMismatch& mismatch) {
             return py::str("talkface.TextMismatch(start_s={!r}, end_s={!r}, first_syllable={!r}, syllable_count={!r}, "
                            "expected_text={!r})")
-                .format(m.start_s, m.end_s, m.first_syllable, m.syllable_count, m.expected_text);
+                .format(mismatch.start_s, mismatch.end_s, mismatch.first_syllable, mismatch.syllable_count,
+                        mismatch.expected_text);
         });
 
     py::class_<Timeline>(m, "Timeline", R"doc(

@@ -14,6 +14,7 @@ _FloatArray = numpy.typing.NDArray[numpy.float64]
 __version__: str
 kMaxPoseAngleDeg: float
 kLowAlignmentConfidence: float
+kGenericSpeechPinyin: str
 
 def version() -> str: ...
 
@@ -360,6 +361,7 @@ class Syllable:
     final_start_s: float | None
     confidence: float
     pause_after: bool
+    generic_speech: bool
     def __init__(
         self,
         text: str = "",
@@ -370,6 +372,7 @@ class Syllable:
         final_start_s: float | None = None,
         confidence: float = 1.0,
         pause_after: bool = False,
+        generic_speech: bool = False,
     ) -> None: ...
     def __eq__(self, other: object) -> bool: ...
 

@@ -34,3 +34,35 @@ printf '你好。\n' > short_line.txt
 sox -R -V1 lenient_espeak.wav lenient_espeak.flac
 rm lenient_espeak.wav
 printf '小朋友们在学校里放风筝。\n' > lenient_espeak.txt
+
+# An English word no table reads between Mandarin (issue #13: generic speech): espeak-ng's `en`
+# voice says "Zorblax" (cmn-latn-pinyin cannot say English) between two clips of the generator,
+# whose silences at the joins are cut to 0 and 0.05 s. The truth holds the Mandarin syllables only,
+# moved to where they stand in the joined clip; "word" gives where the English word lies.
+"$make_corpus" --clip unknown_word_a --rate-wpm 190 --pitch 50 "我昨天用"
+"$make_corpus" --clip unknown_word_b --rate-wpm 190 --pitch 50 "给妈妈打了电话。"
+espeak-ng -v en -s 170 -w unknown_word_en.wav "Zorblax"
+sox -R -V1 unknown_word_en.wav -r 16000 -b 16 -c 1 unknown_word_w.wav silence 1 0.005 0.5% reverse silence 1 0.005 0.5% reverse
+a_end=$(python3 -c 'import json; print(json.load(open("unknown_word_a.json"))["sentences"][0]["end"])')
+sox -R -V1 unknown_word_a.wav unknown_word_a_cut.wav trim 0 "$a_end"
+sox -R -V1 unknown_word_b.wav unknown_word_b_cut.wav trim 0.25
+sox -R -V1 unknown_word_a_cut.wav unknown_word_w.wav unknown_word_b_cut.wav unknown_word.flac
+python3 - "$(soxi -D unknown_word_w.wav)" "$(soxi -D unknown_word.flac)" <<'PY'
+import json, sys
+word_s, duration = float(sys.argv[1]), float(sys.argv[2])
+a, b = json.load(open("unknown_word_a.json")), json.load(open("unknown_word_b.json"))
+a_end = a["sentences"][0]["end"]
+shift = a_end + word_s - 0.25
+syllables = [{"text": s["text"], "pinyin": s["pinyin"], "start": round(s["start"], 5), "end": round(s["end"], 5)}
+             for s in a["syllables"]]
+syllables += [{"text": s["text"], "pinyin": s["pinyin"], "start": round(s["start"] + shift, 5),
+               "end": round(s["end"] + shift, 5)} for s in b["syllables"]]
+truth = {"generator": "tests/data/speech/make_clips.sh: bench/make_corpus (cmn-latn-pinyin) and espeak-ng en",
+         "duration": round(duration, 5), "word": {"text": "Zorblax", "start": round(a_end, 5), "end": round(a_end + word_s, 5)},
+         "syllables": syllables}
+with open("unknown_word.json", "w") as out:
+    json.dump(truth, out, ensure_ascii=False, indent=1)
+    out.write("\n")
+PY
+rm unknown_word_a* unknown_word_b* unknown_word_en.wav unknown_word_w.wav
+printf '我昨天用Zorblax给妈妈打了电话。\n' > unknown_word.txt
