@@ -290,10 +290,22 @@ static int test_render_returns_an_svg_of_the_stated_length(void) {
     CHECK_FAILS_WITH(tf_write_svg(face, state, NULL, "/nonexistent/talkface/face.svg"), TF_ERR_FILE,
                      "/nonexistent/talkface/face.svg");
 
-    /* The flat look: no outline anywhere; a look that is not one is refused when rendering. */
+    /* The flat look: no outline anywhere but the two upper lids' bands (the first stroke is the
+       left lid's, the second the right's, none after); a look that is not one is refused when
+       rendering. */
     CHECK_OK(tf_svg_options_set_look(options, TF_FACE_LOOK_FLAT));
     CHECK_OK(tf_render_svg(face, state, options, &svg, NULL));
-    CHECK(svg != NULL && strstr(svg, "stroke-width") == NULL);
+    CHECK(svg != NULL);
+    if (svg != NULL) {
+        const char* left_lid = strstr(svg, "class=\"eye-left-lid\"");
+        const char* right_lid = strstr(svg, "class=\"eye-right-lid\"");
+        const char* first = strstr(svg, "stroke-width");
+        const char* second = first != NULL ? strstr(first + 1, "stroke-width") : NULL;
+        CHECK(left_lid != NULL && right_lid != NULL);
+        CHECK(first != NULL && left_lid != NULL && first > left_lid && (right_lid == NULL || first < right_lid));
+        CHECK(second != NULL && right_lid != NULL && second > right_lid);
+        CHECK(second != NULL && strstr(second + 1, "stroke-width") == NULL);
+    }
     tf_free(svg);
     svg = NULL;
     CHECK_OK(tf_svg_options_set_look(options, (tf_face_look)7));

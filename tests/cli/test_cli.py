@@ -49,7 +49,9 @@ def test_background_none_and_no_clothes_empty_those_layers():
 def test_look_flat_draws_without_outlines_and_an_unknown_look_is_a_usage_error():
     result = run("render", "--look", "flat", "-o", "-")
     assert result.returncode == 0, result.stderr
-    assert "stroke-width" not in result.stdout
+    # No outline but the upper lids' bands.
+    stroked = [e for e in ET.fromstring(result.stdout.encode()).iter() if e.get("stroke-width") is not None]
+    assert sorted(e.get("class") for e in stroked) == ["eye-left-lid", "eye-right-lid"]
     assert "stroke-width" in run("render", "-o", "-").stdout
     assert run("render", "--look", "sketch", "-o", "-").returncode == 2
 
