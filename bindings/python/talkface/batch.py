@@ -425,7 +425,7 @@ def _make_output(job: Job, progress) -> None:
     fps = talkface.VideoOptions().fps if kind == "video" else talkface.LipSyncOptions().fps
     video_options = None
     if kind == "video":
-        layout = "face" if (job.app or "announcer") == "plain" else "announcer"
+        layout = talkface.FrameLayout.face if (job.app or "announcer") == "plain" else talkface.FrameLayout.announcer
         video_options = talkface.FaceVideoOptions(video=talkface.VideoOptions(fps=fps), layout=layout)
         talkface.check_video_options(job.output, video_options.video)  # before the slow part
     transcript = talkface.load_transcript(job.transcript)
