@@ -192,7 +192,6 @@ void check_sentence_lengths(const std::vector<FrameSpan>& spans, const FeatureTr
 
 void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProfile& loudness, std::size_t sentence,
                 const FrameSpan& span, const Timeline& transcript) {
-    const auto is_speech = [&](std::size_t t) { return loudness.activity_db[t] >= loudness.activity_threshold_db; };
     std::vector<float> spoken_db;
     for (const auto& stretch : stretches)
         if (!stretch.is_pause)
@@ -203,7 +202,7 @@ void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProf
         speech_level_db = spoken_db[spoken_db.size() / 2];
     }
     const auto is_unspoken_speech = [&](std::size_t t) {
-        return is_speech(t) && loudness.activity_db[t] >= speech_level_db - kUnspokenSpeechBelowDb;
+        return is_speech_frame(loudness, t) && loudness.activity_db[t] >= speech_level_db - kUnspokenSpeechBelowDb;
     };
     const auto frames_text = [](std::size_t first, std::size_t end) {
         return format_fixed(static_cast<double>(first) * kFrameStepS, 2) + "-" +
@@ -232,7 +231,7 @@ void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProf
     for (const auto& stretch : stretches) {
         std::size_t run = 0, longest = 0, longest_end = 0;
         for (std::size_t t = stretch.first_frame; t < stretch.end_frame; ++t) {
-            run = (stretch.is_pause ? is_unspoken_speech(t) : !is_speech(t)) ? run + 1 : 0;
+            run = (stretch.is_pause ? is_unspoken_speech(t) : !is_speech_frame(loudness, t)) ? run + 1 : 0;
             if (run > longest) { longest = run; longest_end = t + 1; }
         }
         const double limit_frames = stretch.is_pause ? kMaxUnspokenSpeechFrames : kMaxSilenceInSyllableFrames;

@@ -15,10 +15,9 @@ namespace {
 // The costs that decide between the text and generic speech, in the units of the emission scores
 // (re-estimated log-likelihoods per 10 ms frame, scaled by kReestimatedWeight). Generic speech
 // scores every frame as the class that fits it best; on the test clips a right syllable's frames
-// lose 0.0-0.25 a frame to their best class, so generic speech pays 0.1 a frame and 8 to enter,
+// lose 0.0-0.25 a frame to their best class, so generic speech pays 0.1 a frame (kGenericSpeechFrameLogPenalty) and 8 to enter,
 // and skipping a syllable of the text costs 20: less, and right syllables that fit a little worse
 // than usual were skipped (one in three clips); more, and a changed word was no longer found.
-constexpr double kGenericFrameLogPenalty = -0.1;
 constexpr double kGenericEntryLogPenalty = -8.0;
 constexpr double kSkipSyllableLogPenalty = -20.0;
 constexpr double kGenericMedianFrames = 30.0;
@@ -43,7 +42,7 @@ PhoneState generic_state(std::size_t syllable) {
     state.is_optional = true;
     state.has_tail = true;
     state.entry_log_penalty = kGenericEntryLogPenalty;
-    state.frame_log_penalty = kGenericFrameLogPenalty;
+    state.frame_log_penalty = kGenericSpeechFrameLogPenalty;
     return state;
 }
 

@@ -195,7 +195,7 @@ bool is_fricative(const std::string& initial) {
 PhoneState generic_syllable() {
     PhoneState state = vowel(kGenericSpeech, 20.0);
     state.log_sigma = 0.6;
-    state.frame_log_penalty = -0.1;
+    state.frame_log_penalty = kGenericSpeechFrameLogPenalty;
     return state;
 }
 

@@ -69,6 +69,10 @@ struct PhoneState {
     double frame_log_penalty = 0.0; // paid per frame held (generic speech fits every frame well)
 };
 
+// What a state of generic speech pays per frame held (PhoneState::frame_log_penalty), for a word
+// no table reads and for lenient alignment's generic stretches alike; why 0.1: lenient_chain.cpp.
+constexpr double kGenericSpeechFrameLogPenalty = -0.1;
+
 // The chain of one sentence, or of neighbouring sentences aligned together: edge silence,
 // syllables (with optional pauses between them, of a comma's kind after a comma or a sentence's
 // end), edge silence. `frames` is the sentence's length including the edge silences, `speech_frames` the

@@ -222,18 +222,17 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     // never less than 6 dB above the floor (noise wanders by a few dB).
     const float speech_level_db = percentile(profile.activity_db, kSpeechPercentile);
     profile.activity_threshold_db = std::max({0.25f * speech_level_db, speech_level_db - 35.0f, 6.0f});
-    auto is_speech = [&](std::size_t t) { return profile.activity_db[t] >= profile.activity_threshold_db; };
     std::size_t first_speech = 0;
-    while (first_speech < frames && !is_speech(first_speech)) ++first_speech;
+    while (first_speech < frames && !is_speech_frame(profile, first_speech)) ++first_speech;
     std::size_t end_speech = frames;
-    while (end_speech > first_speech && !is_speech(end_speech - 1)) --end_speech;
+    while (end_speech > first_speech && !is_speech_frame(profile, end_speech - 1)) --end_speech;
     profile.speech_first_frame = first_speech;
     profile.speech_end_frame = end_speech;
     const auto min_pause_frames = static_cast<std::size_t>(std::lround(kMinPauseS / kFrameStepS));
     for (std::size_t t = first_speech; t < end_speech;) {
-        if (is_speech(t)) { ++t; continue; }
+        if (is_speech_frame(profile, t)) { ++t; continue; }
         std::size_t end = t;
-        while (end < end_speech && !is_speech(end)) ++end;
+        while (end < end_speech && !is_speech_frame(profile, end)) ++end;
         if (end - t >= min_pause_frames) profile.pauses.push_back({t, end});
         t = end;
     }
@@ -310,11 +309,10 @@ SentenceCut given_sentence_cut(const FeatureTrack& track, const LoudnessProfile&
     for (std::size_t i = 0; i < spoken.size(); ++i) {
         // The syllables' durations follow the speech, not the quiet edges a cue leaves around it.
         const FrameSpan& limit = limits[i];
-        auto is_speech = [&](std::size_t t) { return loudness.activity_db[t] >= loudness.activity_threshold_db; };
         std::size_t first = limit.first_frame;
         std::size_t end = limit.end_frame;
-        while (first < end && !is_speech(first)) ++first;
-        while (end > first && !is_speech(end - 1)) --end;
+        while (first < end && !is_speech_frame(loudness, first)) ++first;
+        while (end > first && !is_speech_frame(loudness, end - 1)) --end;
         spoken_spans.push_back(end > first ? FrameSpan{first, end} : limit);
         // One cue for both, or a cue across the end of one: a cue that starts where the last ended does not.
         if (i + 1 < spoken.size()) spoken_runs_on[i] = spans_s[spoken[i + 1]].start_s < spans_s[spoken[i]].end_s;

@@ -38,6 +38,11 @@ struct LoudnessProfile {
 
 LoudnessProfile measure_loudness(const FeatureTrack& track);
 
+// Whether frame t of `loudness` is speech (activity at or above its threshold).
+inline bool is_speech_frame(const LoudnessProfile& loudness, std::size_t t) {
+    return loudness.activity_db[t] >= loudness.activity_threshold_db;
+}
+
 // Where the sentences of a transcript are spoken, as far as the pauses tell.
 struct SentenceCut {
     std::vector<FrameSpan> spans;  // per sentence of the transcript, in order, its speech only

@@ -245,7 +245,7 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
             said.is_year = true;
             return said;
         }
-        if (context.is_service_call && is_service_number(whole) && !context.has_unit && !takes_liang(context.next)) {
+        if (context.is_service_call && is_service_number(whole) && !counts) {
             said.words = digit_words(whole, true);
             return said;
         }
