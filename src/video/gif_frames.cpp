@@ -94,22 +94,20 @@ GifFrames::~GifFrames() = default;
 
 void GifFrames::add(const std::uint8_t* rgba, std::size_t stride_bytes) {
     const std::size_t row_bytes = 4 * static_cast<std::size_t>(width_);
-    std::vector<std::uint8_t> difference(last_.size());
+    difference_.resize(last_.size());
     for (int y = 0; y < height_; ++y) {
         const std::uint8_t* row = rgba + y * stride_bytes;
         std::uint8_t* last = last_.data() + y * row_bytes;
-        std::uint8_t* out = difference.data() + y * row_bytes;
+        std::uint8_t* out = difference_.data() + y * row_bytes;
         for (std::size_t x = 0; x < row_bytes; ++x) out[x] = static_cast<std::uint8_t>(row[x] - last[x]);
         std::memcpy(last, row, row_bytes);
     }
-    uLongf packed_size = compressBound(static_cast<uLong>(difference.size()));
-    std::vector<std::uint8_t> packed(packed_size);
-    if (compress2(packed.data(), &packed_size, difference.data(), static_cast<uLong>(difference.size()), 1) != Z_OK) {
+    uLongf packed_size = compressBound(static_cast<uLong>(difference_.size()));
+    deflating_.resize(packed_size);
+    if (compress2(deflating_.data(), &packed_size, difference_.data(), static_cast<uLong>(difference_.size()), 1) != Z_OK) {
         throw std::bad_alloc();
     }
-    packed.resize(packed_size);
-    packed.shrink_to_fit();
-    kept_.push_back(std::move(packed));
+    kept_.emplace_back(deflating_.begin(), deflating_.begin() + static_cast<std::ptrdiff_t>(packed_size));
 
     FramePtr frame(av_frame_alloc());
     if (!frame) throw std::bad_alloc();

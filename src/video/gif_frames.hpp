@@ -45,6 +45,8 @@ private:
     std::unique_ptr<Graph> palette_graph_;
     std::vector<std::uint8_t> last_;  // the last frame added, rows packed
     std::vector<std::vector<std::uint8_t>> kept_;  // each frame minus the one before, deflated
+    std::vector<std::uint8_t> difference_;          // scratch for add(): one frame's difference and
+    std::vector<std::uint8_t> deflating_;           // its deflated bytes, reused frame after frame
 };
 
 }  // namespace talkface::detail
