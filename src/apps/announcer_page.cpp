@@ -14,6 +14,7 @@
 #include "apps/apps.hpp"
 #include "apps/page_fonts.hpp"
 #include "common/atomic_file.hpp"
+#include "common/internal_error.hpp"
 #include "common/number_format.hpp"
 #include "render/html_text.hpp"
 #include "talkface/errors.hpp"
@@ -26,7 +27,7 @@ namespace {
 StageBox view_box_of(const std::string& svg) {
     const std::size_t start = svg.find("viewBox=\"");
     if (start == std::string::npos) {
-        throw Error(ErrorCode::internal, "internal error (a bug in talkface): the animation has no viewBox");
+        throw detail::internal_error("the animation has no viewBox");
     }
     StageBox box;
     const char* text = svg.c_str() + start + 9;

@@ -5,6 +5,7 @@
 
 #include <zlib.h>
 
+#include "common/internal_error.hpp"
 #include "render/html_text.hpp"
 #include "talkface/errors.hpp"
 
@@ -30,10 +31,6 @@ constexpr const char* kUnpackTail = R"js(  }
   });
 })();
 )js";
-
-Error internal_error(const std::string& what) {
-    return Error(ErrorCode::internal, "internal error (a bug in talkface): " + what);
-}
 
 // RFC 1952 gzip at zlib's best level; the header's time is 0, so the bytes depend on `text` alone.
 std::string gzip(const std::string& text) {

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/internal_error.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/lip_sync.hpp"
 
@@ -107,8 +108,7 @@ std::vector<S> rime_shapes(std::string_view rime) {
     for (const auto& [name, shapes] : table) {
         if (name == rime) return shapes;
     }
-    throw Error(ErrorCode::internal,
-                "internal error (a bug in talkface): no shapes for rime \"" + std::string(rime) + "\"");
+    throw detail::internal_error("no shapes for rime \"" + std::string(rime) + "\"");
 }
 
 struct BopomofoFinal {
@@ -255,7 +255,7 @@ SyllableShapes syllable_shapes(std::string_view pinyin) {
     }
     result.has_initial_shape = !initial.empty();
     if (result.shapes.empty() || result.shapes.size() > 4) {
-        throw Error(ErrorCode::internal, "internal error (a bug in talkface): syllable \"" + syllable +
+        throw detail::internal_error("syllable \"" + syllable +
                                              "\" gave " + std::to_string(result.shapes.size()) +
                                              " mouth shapes");
     }

@@ -14,6 +14,7 @@
 #include <jerror.h>  // after jpeglib.h: the JWRN_ codes
 #include <png.h>
 
+#include "common/internal_error.hpp"
 #include "photo/photo_internal.hpp"
 #include "talkface/errors.hpp"
 
@@ -228,8 +229,7 @@ std::string encode_png(const cv::Mat& bgr) {
     png_alloc_size_t size = PNG_IMAGE_PNG_SIZE_MAX(image);
     std::string png(size, '\0');
     if (!png_image_write_to_memory(&image, png.data(), &size, 0, bgr.data, stride, nullptr)) {
-        throw Error(ErrorCode::internal, std::string("internal error (a bug in talkface): libpng could not encode the overlay: ") +
-                    image.message);
+        throw detail::internal_error(std::string("libpng could not encode the overlay: ") + image.message);
     }
     png.resize(size);
     return png;

@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "common/internal_error.hpp"
 #include "render/attribute_animation.hpp"
 #include "render/outline_motion.hpp"
 #include "render/svg_text.hpp"
@@ -12,10 +13,6 @@
 namespace talkface::detail {
 
 namespace {
-
-Error internal_error(const std::string& what) {
-    return Error(ErrorCode::internal, "internal error (a bug in talkface): " + what);
-}
 
 }  // namespace
 

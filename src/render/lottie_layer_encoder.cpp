@@ -3,6 +3,7 @@
 #include <cmath>
 #include <utility>
 
+#include "common/internal_error.hpp"
 #include "common/json.hpp"
 #include "common/number_format.hpp"
 #include "talkface/errors.hpp"
@@ -18,10 +19,6 @@ constexpr double kColourTolerance = 0.5 / 255.0;
 constexpr int kTimeDecimals = 3;
 // Gradient geometry in a bounding box's units (0..1).
 constexpr int kUnitDecimals = 4;
-
-Error internal_error(const std::string& what) {
-    return Error(ErrorCode::internal, "internal error (a bug in talkface): " + what);
-}
 
 double rounded(double value, int decimals) {
     const double scale = std::pow(10.0, decimals);

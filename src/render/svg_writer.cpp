@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "common/internal_error.hpp"
 #include "common/number_format.hpp"
 #include "render/svg_text.hpp"
 #include "talkface/errors.hpp"
@@ -30,7 +31,7 @@ public:
         }
         for (const Shape& shape : layer_.elements) write_shape(shape);
         if (options_.overrides != nullptr && slot_ != options_.overrides->size()) {
-            throw Error(ErrorCode::internal, "internal error (a bug in talkface): a layer of " +
+            throw internal_error("a layer of " +
                                                  std::to_string(slot_) + " numeric attributes written with " +
                                                  std::to_string(options_.overrides->size()) + " overrides");
         }

@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "audio/audio_source.hpp"
+#include "common/internal_error.hpp"
 #include "common/number_format.hpp"
 #include "talkface/errors.hpp"
 
@@ -207,8 +208,7 @@ public:
             data.data_out = output_.data();
             data.output_frames = static_cast<long>(output_.size());
             if (const int error = src_process(state_, &data); error != 0)
-                throw Error(ErrorCode::internal, std::string("internal error (a bug in talkface): libsamplerate: ") +
-                                                     src_strerror(error));
+                throw detail::internal_error(std::string("libsamplerate: ") + src_strerror(error));
             sink(output_.data(), static_cast<std::size_t>(data.output_frames_gen));
             data.data_in += data.input_frames_used;
             data.input_frames -= data.input_frames_used;

@@ -6,6 +6,7 @@
 #include <string_view>
 #include <utility>
 
+#include "common/internal_error.hpp"
 #include "talkface/errors.hpp"
 #include "text/embedded_text.hpp"
 
@@ -86,7 +87,7 @@ std::vector<std::string> letter_syllables(std::string_view letters) {
     for (const char letter : letters) {
         const char upper = letter >= 'a' && letter <= 'z' ? static_cast<char>(letter - 'a' + 'A') : letter;
         if (upper < 'A' || upper > 'Z') {
-            throw Error(ErrorCode::internal, std::string("internal error (a bug in talkface): \"") + letter +
+            throw internal_error(std::string("\"") + letter +
                                                  "\" is not a Latin letter");
         }
         append_words(syllables, kLetterNames[upper - 'A']);

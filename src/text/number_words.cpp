@@ -1,5 +1,6 @@
 #include "text/number_words.hpp"
 
+#include "common/internal_error.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
@@ -61,7 +62,7 @@ std::string below_yi_words(std::string_view digits, bool is_head, bool before_un
 
 std::string cardinal_words(std::string_view digits, bool liang_at_head) {
     if (digits.size() > kMostCardinalDigits) {
-        throw Error(ErrorCode::internal, "internal error (a bug in talkface): a cardinal of " +
+        throw internal_error("a cardinal of " +
                                              std::to_string(digits.size()) + " digits");
     }
     digits = strip_leading_zeros(digits);

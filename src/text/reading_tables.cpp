@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "common/internal_error.hpp"
 #include "text/embedded_text.hpp"
 #include "talkface/errors.hpp"
 
@@ -39,7 +40,7 @@ std::size_t count_characters(std::string_view utf8) {
 std::pair<std::string_view, std::vector<std::string_view>> parse_line(std::string_view line) {
     const auto tab = line.find('\t');
     if (tab == std::string_view::npos) {
-        throw Error(ErrorCode::internal, "internal error (a bug in talkface): reading table line \"" +
+        throw internal_error("reading table line \"" +
                                              std::string(line) + "\" has no tab");
     }
     return {line.substr(0, tab), split(line.substr(tab + 1), ' ')};

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/atomic_file.hpp"
+#include "common/internal_error.hpp"
 #include "talkface/errors.hpp"
 #include "text/code_points.hpp"
 #include "text/latin_words.hpp"
@@ -535,7 +536,7 @@ private:
         std::vector<HanCharacter> run;
         for (const auto& c : characters) {
             if (tables_.character_readings.count(c.text) == 0) {
-                throw Error(ErrorCode::internal, "internal error (a bug in talkface): the reading \"" + words +
+                throw detail::internal_error("the reading \"" + words +
                                                      "\" holds \"" + std::string(c.text) + "\", which has no reading");
             }
             run.push_back({nullptr, c.text, {}});
@@ -551,8 +552,7 @@ private:
 
     void check_table_reading(const HanCharacter& character, const std::string& pinyin) const {
         if (detail::normalise_pinyin(pinyin) != pinyin) {
-            throw Error(ErrorCode::internal,
-                        "internal error (a bug in talkface): the reading table gives \"" +
+            throw detail::internal_error("the reading table gives \"" +
                             std::string(character.text) + "\" the reading \"" + pinyin +
                             "\", not a Mandarin syllable");
         }

@@ -9,6 +9,7 @@ extern "C" {
 #include <libavutil/opt.h>
 }
 
+#include "common/internal_error.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
@@ -118,7 +119,7 @@ void AudioStreamEncoder::encode_buffered(bool is_last) {
         check_ffmpeg(av_channel_layout_copy(&frame_->ch_layout, &encoder_->ch_layout), "the frame's channel layout");
         check_ffmpeg(av_frame_get_buffer(frame_.get(), 0), "an audio frame's buffer");
         if (av_audio_fifo_read(fifo_.get(), reinterpret_cast<void**>(frame_->data), count) != count) {
-            throw Error(ErrorCode::internal, "internal error (a bug in talkface): the audio buffer ran short");
+            throw internal_error("the audio buffer ran short");
         }
         frame_->pts = next_pts_;
         next_pts_ += count;

@@ -7,6 +7,7 @@ extern "C" {
 #include <libavutil/error.h>
 }
 
+#include "common/internal_error.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
@@ -14,9 +15,7 @@ namespace talkface::detail {
 void check_ffmpeg(int code, const char* what) {
     if (code == AVERROR(ENOMEM)) throw std::bad_alloc();
     if (code < 0) {
-        throw Error(ErrorCode::internal,
-                    std::string("internal error (a bug in talkface): FFmpeg refused ") + what + ": " +
-                        ffmpeg_error_text(code));
+        throw internal_error(std::string("FFmpeg refused ") + what + ": " + ffmpeg_error_text(code));
     }
 }
 
