@@ -1,5 +1,6 @@
 #include "render/animation_frame.hpp"
 
+#include <cmath>
 #include <exception>
 #include <string>
 
@@ -7,6 +8,16 @@
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
+
+void check_animation_input(const Animation& animation, double tolerance_px) {
+    if (animation.frames.empty()) throw InvalidArgument("animation", "has no frames");
+    if (!std::isfinite(animation.fps) || animation.fps <= 0.0) {
+        throw InvalidArgument("animation.fps", "expected a finite number > 0, found " + format_shortest(animation.fps));
+    }
+    if (!std::isfinite(tolerance_px) || tolerance_px <= 0.0) {
+        throw InvalidArgument("tolerance_px", "expected a finite number > 0, found " + format_shortest(tolerance_px));
+    }
+}
 
 ProjectedFace project_animation_frame(const FaceModel& face, const Animation& animation, std::size_t frame) {
     try {

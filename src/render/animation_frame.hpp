@@ -11,6 +11,10 @@
 
 namespace talkface::detail {
 
+// What every encoding asks of its input: frames, a finite fps > 0 and a finite tolerance_px > 0.
+// \throws talkface::InvalidArgument naming the first that is not so.
+void check_animation_input(const Animation& animation, double tolerance_px);
+
 // project_face() of frame `frame` of `animation`.
 // \throws talkface::InvalidArgument naming animation.frames[frame] and its time, with
 //         project_face()'s error nested.

@@ -34,22 +34,11 @@ constexpr int kTransformDecimals = 4;
 constexpr int kAngleDecimals = 3;  // as head_tilt.cpp writes the SVG's
 constexpr int kTimeDecimals = 3;
 
-void validate(const Animation& animation, const LottieOptions& options) {
-    if (animation.frames.empty()) throw InvalidArgument("animation", "has no frames");
-    if (!std::isfinite(animation.fps) || animation.fps <= 0.0) {
-        throw InvalidArgument("animation.fps", "expected a finite number > 0, found " + format_shortest(animation.fps));
-    }
-    if (!std::isfinite(options.tolerance_px) || options.tolerance_px <= 0.0) {
-        throw InvalidArgument("tolerance_px", "expected a finite number > 0, found " +
-                                                  format_shortest(options.tolerance_px));
-    }
-}
-
 }  // namespace
 
 std::string render_lottie(const FaceModel& face, const SvgOptions& svg_options, const SvgCanvas& canvas,
                           const Animation& animation, const LottieOptions& options, const ProgressCallback& progress) {
-    validate(animation, options);
+    check_animation_input(animation, options.tolerance_px);
     const std::size_t frame_count = animation.frames.size();
     // A digit fewer than SvgOptions::decimals asks of an SVG coordinate (2: a tenth of a pixel, at
     // most 0.05 px off, where the SVG's keyframes round to 0.06 px): a sixth of the document less,

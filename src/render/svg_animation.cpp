@@ -35,15 +35,7 @@ constexpr double kFramesShare = 0.85;
 constexpr std::size_t kProgressEveryFrames = 50;
 
 void validate(const Animation& animation, const SvgAnimationOptions& options) {
-    if (animation.frames.empty()) throw InvalidArgument("animation", "has no frames");
-    if (!std::isfinite(animation.fps) || animation.fps <= 0.0) {
-        throw InvalidArgument("animation.fps", "expected a finite number > 0, found " +
-                                                   format_shortest(animation.fps));
-    }
-    if (!std::isfinite(options.tolerance_px) || options.tolerance_px <= 0.0) {
-        throw InvalidArgument("tolerance_px", "expected a finite number > 0, found " +
-                                                  format_shortest(options.tolerance_px));
-    }
+    check_animation_input(animation, options.tolerance_px);
     const int encoding = static_cast<int>(options.encoding);
     if (encoding != static_cast<int>(AnimationEncoding::keyframes) &&
         encoding != static_cast<int>(AnimationEncoding::frames)) {
