@@ -29,10 +29,7 @@ constexpr int kMaxHeightPx = 4320;
 constexpr int kDirtyMarginPx = 2;
 
 void validate(const FrameOptions& options) {
-    if (options.look != FaceLook::outlined && options.look != FaceLook::flat) {
-        throw InvalidArgument("look", "expected FaceLook::outlined or FaceLook::flat, found " +
-                                          std::to_string(static_cast<int>(options.look)));
-    }
+    detail::check_face_look(options.look);
     if (options.width_px < 1 || options.width_px > kMaxWidthPx) {
         throw InvalidArgument("width_px", "expected 1.." + std::to_string(kMaxWidthPx) + ", found " +
                                               std::to_string(options.width_px));

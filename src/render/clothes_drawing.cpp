@@ -48,7 +48,7 @@ Layer draw_clothes_layer(const ProjectedFace& face, const CanvasBox& canvas, Rgb
     neck_shape.path = std::move(neck);
     // Without outlines, the neck is a shade of the skin, so that the chin stands out against it.
     const bool is_flat = style.look == FaceLook::flat;
-    neck_shape.paint = is_flat ? ShapePaint{Paint::of(blend(colors.skin, colors.outline, 0.16)), Paint{}, 0.0}
+    neck_shape.paint = is_flat ? ShapePaint{Paint::of(flat_skin_shade(colors)), Paint{}, 0.0}
                                : ShapePaint{Paint::of(colors.skin), Paint::of(colors.outline), style.stroke_px};
     layer.elements.push_back(std::move(neck_shape));
 

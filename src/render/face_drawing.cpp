@@ -229,7 +229,12 @@ Shape reference_shape(std::string_view name, std::size_t definition, const Shape
 
 // The head's axes in the drawing: across the face (image left to right, frontal) and down it, as
 // the line between the outer eye corners (which no mouth shape, blink or smile moves) turns.
-std::pair<Point2, Point2> head_axes(const ProjectedFace& face, const FacePaints& paints) {
+struct HeadAxes {
+    Point2 across;
+    Point2 down;
+};
+
+HeadAxes head_axes(const ProjectedFace& face, const FacePaints& paints) {
     const Point2 left = paints.point(face, "3.12"), right = paints.point(face, "3.7");
     const Point2 frontal_left = face.face.point("3.12"), frontal_right = face.face.point("3.7");
     const double angle = std::atan2(right.y - left.y, right.x - left.x) -
@@ -237,7 +242,7 @@ std::pair<Point2, Point2> head_axes(const ProjectedFace& face, const FacePaints&
     return {{std::cos(angle), std::sin(angle)}, {-std::sin(angle), std::cos(angle)}};
 }
 
-void draw_eyes(const ProjectedFace& face, const FacePaints& paints, Layer& layer) {
+void draw_eyes(const ProjectedFace& face, const FacePaints& paints, const HeadAxes& axes, Layer& layer) {
     for (std::size_t i = 0; i < eye_parts().size(); ++i) {
         const EyeParts& eye = eye_parts()[i];
         const std::size_t clip = 2 * i;
@@ -247,10 +252,9 @@ void draw_eyes(const ProjectedFace& face, const FacePaints& paints, Layer& layer
             // wide, under the white, shows as a band over the upper lid's edge, ending in a point
             // past each corner, that closes with the eye into a line (its lower edge stays inside
             // the eye, under the white). Moved by a fixed offset, it costs an animation no number.
-            const Point2 down = head_axes(face, paints).second;
             const double up = -kLidRise * paints.eye_lid.stroke_width;
             Shape lid = reference_shape(eye.lid, clip, paints.eye_lid);
-            lid.offset = {up * down.x, up * down.y};
+            lid.offset = {up * axes.down.x, up * axes.down.y};
             layer.elements.push_back(std::move(lid));
         }
         layer.elements.push_back(reference_shape(eye.white, clip, paints.eye_white));
@@ -303,7 +307,7 @@ Shape clipped_group(std::string_view name, std::size_t clip, std::vector<Shape> 
     return group;
 }
 
-void draw_mouth(const ProjectedFace& face, const FacePaints& paints, Layer& layer) {
+void draw_mouth(const ProjectedFace& face, const FacePaints& paints, const HeadAxes& axes, Layer& layer) {
     const std::vector<Point2> lips = points_of(face, paints, {"8.1", "8.9", "8.4", "8.2", "8.3", "8.10"});
     Path outer;
     outer.move_to(lips[0])
@@ -331,7 +335,7 @@ void draw_mouth(const ProjectedFace& face, const FacePaints& paints, Layer& laye
     // cost a minute of speech 25 KiB or more). Inside the opening, in paint order: the dark; the
     // upper teeth, everywhere but the corners; under them (where the opening moved down by the
     // teeth's height reaches), the lower teeth, the tongue above them and the dark above that.
-    const auto [across, down] = head_axes(face, paints);
+    const auto& [across, down] = axes;
     const double mw = paints.view.scale() * face.face.fapu("MW0");
     const auto offset = [&](double across_mw, double down_mw) {
         return Point2{mw * (across_mw * across.x + down_mw * down.x), mw * (across_mw * across.y + down_mw * down.y)};
@@ -406,6 +410,8 @@ std::vector<Point2> hair_layer_points(const ProjectedFace& face, const FacePaint
     return points;
 }
 
+Rgb flat_skin_shade(const FaceColors& colors) { return blend(colors.skin, colors.outline, 0.16); }
+
 FacePaints make_face_paints(const ProjectedFace& face, const LayerStyle& style) {
     const FaceColors& colors = face.face.colors();
     const Paint none;
@@ -415,7 +421,7 @@ FacePaints make_face_paints(const ProjectedFace& face, const LayerStyle& style) 
     if (style.look == FaceLook::flat) {
         // No outlines: what an outline told apart, a shade of the skin tells apart here (the ears
         // and, in the clothes layer, the neck, which meet the face's own skin).
-        const Rgb shade = blend(colors.skin, colors.outline, 0.16);
+        const Rgb shade = flat_skin_shade(colors);
         paints.skin = paint_of(Paint::of(colors.skin), none, 0.0);
         paints.ears = paint_of(Paint::of(shade), none, 0.0);
         paints.hair = paint_of(Paint::of(colors.hair), none, 0.0);
@@ -465,8 +471,10 @@ Layer draw_face_layer(const ProjectedFace& face, const FacePaints& paints) {
     draw_face_contour(face, paints, layer);
     draw_nose(face, paints, layer);
     draw_eyebrows(face, paints, layer);
-    draw_eyes(face, paints, layer);
-    draw_mouth(face, paints, layer);
+    // The lids and the teeth are moved along the head's axes.
+    const HeadAxes axes = head_axes(face, paints);
+    draw_eyes(face, paints, axes, layer);
+    draw_mouth(face, paints, axes, layer);
     return layer;
 }
 

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "render/layers.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface {
@@ -22,4 +23,12 @@ FaceLook face_look_from_name(std::string_view name) {
 }
 
 }  // namespace v0
+
+void detail::check_face_look(FaceLook look) {
+    if (look != FaceLook::outlined && look != FaceLook::flat) {
+        throw InvalidArgument("look", "expected FaceLook::outlined or FaceLook::flat, found " +
+                                          std::to_string(static_cast<int>(look)));
+    }
+}
+
 }  // namespace talkface

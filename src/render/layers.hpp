@@ -69,6 +69,13 @@ struct FacePaints {
     Point2 point(const ProjectedFace& face, std::string_view id) const;
 };
 
+// \throws talkface::InvalidArgument ("look") unless `look` is FaceLook::outlined or FaceLook::flat.
+void check_face_look(FaceLook look);
+
+// The flat look's shade of the skin, where an outline told two skins apart: the ears against the
+// face, the neck against the chin.
+Rgb flat_skin_shade(const FaceColors& colors);
+
 // The paints of `face`, at any state of it.
 FacePaints make_face_paints(const ProjectedFace& face, const LayerStyle& style);
 

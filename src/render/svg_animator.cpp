@@ -23,10 +23,7 @@ namespace {
 
 constexpr int kMaxDecimals = 6;
 void validate(const SvgOptions& options) {
-    if (options.look != FaceLook::outlined && options.look != FaceLook::flat) {
-        throw InvalidArgument("look", "expected FaceLook::outlined or FaceLook::flat, found " +
-                                          std::to_string(static_cast<int>(options.look)));
-    }
+    detail::check_face_look(options.look);
     if (options.decimals < 0 || options.decimals > kMaxDecimals) {
         throw InvalidArgument("decimals", "expected 0.." + std::to_string(kMaxDecimals) + ", found " +
                                               std::to_string(options.decimals));
