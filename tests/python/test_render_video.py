@@ -120,6 +120,23 @@ def test_options_keep_what_they_are_given():
     options.layout = talkface.FrameLayout.announcer
     assert options.layout == talkface.FrameLayout.announcer
     assert talkface.FaceVideoOptions().layout == talkface.FrameLayout.announcer
+    assert talkface.FaceVideoOptions().look == talkface.FaceLook.outlined
+    assert talkface.FaceVideoOptions(look=talkface.FaceLook.flat).look == talkface.FaceLook.flat
+
+
+def test_the_flat_look_reaches_the_frames(face, tmp_path):
+    animation = animation_of(face, 0.1)
+    frames = {}
+    for look in (talkface.FaceLook.outlined, talkface.FaceLook.flat):
+        options = small(width=320, height=180)
+        options.look = look
+        folder = tmp_path / look.name
+        folder.mkdir()
+        talkface.render_video(str(folder / "face.png"), face, animation, "", options)
+        frames[look] = numpy.asarray(Image.open(folder / "face-000000.png").convert("RGB")).astype(int)
+    outlined, flat = frames[talkface.FaceLook.outlined], frames[talkface.FaceLook.flat]
+    assert tuple(flat[0, 0]) == tuple(outlined[0, 0])
+    assert numpy.abs(outlined - flat).max(axis=2).astype(bool).sum() > 200
 
 
 RSVG_CONVERT = shutil.which("rsvg-convert")

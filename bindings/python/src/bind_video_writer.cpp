@@ -247,19 +247,21 @@ Example:
 )doc")
         .def(py::init([](const VideoOptions& video, FrameLayout layout, std::optional<Rgb> background,
                          const std::string& background_image_path, std::optional<Point2> face_origin_px,
-                         double face_d_px) {
+                         double face_d_px, FaceLook look) {
                  FaceVideoOptions options;
                  options.video = video;
                  options.frame.layout = layout;
                  options.frame.background = background;
                  options.frame.face_origin_px = face_origin_px;
                  options.frame.face_d_px = face_d_px;
+                 options.frame.look = look;
                  options.background_image_path = background_image_path;
                  return options;
              }),
              py::arg("video") = VideoOptions{}, py::arg("layout") = FrameOptions{}.layout,
              py::arg("background") = FrameOptions{}.background, py::arg("background_image_path") = "",
-             py::arg("face_origin_px") = py::none(), py::arg("face_d_px") = 0.0, R"doc(
+             py::arg("face_origin_px") = py::none(), py::arg("face_d_px") = 0.0, py::arg("look") = FrameOptions{}.look,
+             R"doc(
 Args:
     video (VideoOptions): size, frame rate, quality, transparency.
     layout (FrameLayout): announcer (the default) or face.
@@ -268,6 +270,7 @@ Args:
     face_origin_px (tuple[float, float] | None): announcer: where the face's rotation origin (the
         neck) stands, frame pixels; None: where the announcer page stands it.
     face_d_px (float): announcer: the face's eye distance in frame pixels; 0: as the page sizes it.
+    look (FaceLook): outlined (the thesis's cartoon, the default) or flat (no outlines).
 
 Raises:
     talkface.InvalidArgument: a malformed colour. Options out of range are refused by render_video.
@@ -290,7 +293,10 @@ Example:
             "(x, y) of the rotation origin in frame pixels, or None")
         .def_property(
             "face_d_px", [](const FaceVideoOptions& o) { return o.frame.face_d_px; },
-            [](FaceVideoOptions& o, double d) { o.frame.face_d_px = d; }, "the eye distance in frame pixels; 0: as the page");
+            [](FaceVideoOptions& o, double d) { o.frame.face_d_px = d; }, "the eye distance in frame pixels; 0: as the page")
+        .def_property(
+            "look", [](const FaceVideoOptions& o) { return o.frame.look; },
+            [](FaceVideoOptions& o, FaceLook look) { o.frame.look = look; }, "how the shapes are painted (FaceLook)");
 
     m.def(
         "render_video",

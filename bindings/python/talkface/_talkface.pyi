@@ -679,9 +679,10 @@ class FaceVideoOptions:
     layout: FrameLayout
     face_origin_px: tuple[float, float] | None
     face_d_px: float
+    look: FaceLook
     def __init__(self, video: VideoOptions = ..., layout: FrameLayout = ..., background: str | None = "#1d3b5c",
                  background_image_path: str = "", face_origin_px: tuple[float, float] | None = None,
-                 face_d_px: float = 0.0) -> None: ...
+                 face_d_px: float = 0.0, look: FaceLook = ...) -> None: ...
 
 def render_video(path: str, face: FaceModel, animation: Animation, audio_path: str = "",
                  options: FaceVideoOptions = ...,
