@@ -85,6 +85,12 @@ inline Point2 to_point(const double xy[2]) {
     return Point2{xy[0], xy[1]};
 }
 
+// An animator per call: it only holds a copy of the face and the options, so a C caller needs no
+// animator handle to keep in step with its face. NULL options are the defaults.
+inline SvgAnimator animator_for(const tf_face_model* face, const tf_svg_options* options) {
+    return SvgAnimator(face->model, options != nullptr ? options->options : SvgOptions{});
+}
+
 // Where a frame puts the face, from C: a NULL origin leaves the layout's own place (both frame
 // options and a video's look take it so).
 inline void set_face_placement(FrameOptions& options, const double origin_px[2], double d_px) {

@@ -3,17 +3,10 @@
 #include "c_api_guard.hpp"
 #include "c_api_handles.hpp"
 
+using talkface::capi::animator_for;
 using talkface::capi::guard;
 using talkface::capi::progress_for;
 using talkface::capi::require_non_null;
-
-namespace {
-
-talkface::SvgAnimator lottie_animator(const tf_face_model* face, const tf_svg_options* options) {
-    return talkface::SvgAnimator(face->model, options != nullptr ? options->options : talkface::SvgOptions{});
-}
-
-}  // namespace
 
 extern "C" {
 
@@ -26,7 +19,7 @@ tf_status tf_render_animation_lottie(const tf_face_model* face, const tf_animati
         require_non_null(out_json, "out_json");
         talkface::LottieOptions lottie;
         lottie.tolerance_px = tolerance_px;
-        talkface::capi::give_document(lottie_animator(face, options).render_animation_lottie(
+        talkface::capi::give_document(animator_for(face, options).render_animation_lottie(
                                           animation->animation, lottie, progress_for(progress, user_data)),
                                       out_json, out_len);
     });
@@ -40,7 +33,7 @@ tf_status tf_write_animation_lottie(const tf_face_model* face, const tf_animatio
         require_non_null(path, "path");
         talkface::LottieOptions lottie;
         lottie.tolerance_px = tolerance_px;
-        lottie_animator(face, options).write_animation_lottie(path, animation->animation, lottie);
+        animator_for(face, options).write_animation_lottie(path, animation->animation, lottie);
     });
 }
 

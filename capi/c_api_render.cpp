@@ -2,20 +2,9 @@
 #include "c_api_guard.hpp"
 #include "c_api_handles.hpp"
 
-using talkface::SvgAnimator;
-using talkface::SvgOptions;
 using talkface::capi::guard;
+using talkface::capi::animator_for;
 using talkface::capi::require_non_null;
-
-namespace {
-
-// An animator per call: it only holds a copy of the face and the options, so a C caller needs no
-// animator handle to keep in step with its face.
-SvgAnimator make_animator(const tf_face_model* face, const tf_svg_options* options) {
-    return SvgAnimator(face->model, options != nullptr ? options->options : SvgOptions{});
-}
-
-}  // namespace
 
 extern "C" {
 
@@ -81,7 +70,7 @@ tf_status tf_render_svg(const tf_face_model* face, const tf_face_state* state, c
         require_non_null(face, "face");
         require_non_null(state, "state");
         require_non_null(out_svg, "out_svg");
-        talkface::capi::give_document(make_animator(face, options).render_svg(state->state), out_svg,
+        talkface::capi::give_document(animator_for(face, options).render_svg(state->state), out_svg,
                                       out_len);
     });
 }
@@ -92,7 +81,7 @@ tf_status tf_write_svg(const tf_face_model* face, const tf_face_state* state, co
         require_non_null(face, "face");
         require_non_null(state, "state");
         require_non_null(path, "path");
-        make_animator(face, options).write_svg(path, state->state);
+        animator_for(face, options).write_svg(path, state->state);
     });
 }
 

@@ -11,6 +11,7 @@ struct tf_web_page_options {
 };
 
 using talkface::InvalidArgument;
+using talkface::capi::animator_for;
 using talkface::capi::enum_value;
 using talkface::capi::guard;
 using talkface::capi::progress_for;
@@ -25,11 +26,6 @@ talkface::AnimationEncoding to_encoding(const tf_animation_encoding& encoding) {
                                               std::to_string(value));
     }
     return static_cast<talkface::AnimationEncoding>(value);
-}
-
-
-talkface::SvgAnimator animator_for(const tf_face_model* face, const tf_svg_options* options) {
-    return talkface::SvgAnimator(face->model, options != nullptr ? options->options : talkface::SvgOptions{});
 }
 
 }  // namespace
