@@ -11,6 +11,11 @@ std::string format_shortest(double value) {
     return std::string(buffer, result.ptr);
 }
 
+double rounded(double value, int decimals) {
+    const double scale = std::pow(10.0, decimals);
+    return std::round(value * scale) / scale;
+}
+
 std::string format_fixed(double value, int decimals) {
     char buffer[64];
     const auto result =

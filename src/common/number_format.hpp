@@ -14,6 +14,10 @@ std::string format_shortest(double value);
 // `value` with at most `decimals` digits after the point, trailing zeros dropped ("12.5", "-3").
 std::string format_fixed(double value, int decimals);
 
+// `value` rounded to `decimals` digits after the point, as a number (what format_fixed writes, for
+// callers that compare or reuse the written value).
+double rounded(double value, int decimals);
+
 // Parses a whole string as a double ("12.5", "-3e2"); nullopt if it is not exactly a number.
 // Does not depend on the C locale.
 std::optional<double> parse_double(std::string_view text);

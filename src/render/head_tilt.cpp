@@ -19,11 +19,6 @@ constexpr int kOriginDecimals = 2;
 // key_times_of() writes key times with 6 decimals: the groups turn at those times.
 constexpr double kKeyTimeScale = 1e6;
 
-double rounded(double value, int decimals) {
-    const double scale = std::pow(10.0, decimals);
-    return std::round(value * scale) / scale;
-}
-
 }  // namespace
 
 HeadTilt plan_head_tilt(const Animation& animation, Point2 origin, double reach_px, double tolerance_px) {

@@ -20,11 +20,6 @@ constexpr int kTimeDecimals = 3;
 // Gradient geometry in a bounding box's units (0..1).
 constexpr int kUnitDecimals = 4;
 
-double rounded(double value, int decimals) {
-    const double scale = std::pow(10.0, decimals);
-    return std::round(value * scale) / scale;
-}
-
 // One subpath as Lottie draws it: vertices with absolute in and out controls (a line's controls
 // are its ends). A closed subpath's last segment runs back to its first vertex; the drawing
 // model's closes come after a segment that already ends there, so that segment is of length 0.
