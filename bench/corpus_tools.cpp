@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 
@@ -230,9 +231,122 @@ std::vector<float> make_tonal_noise(Noise kind, std::size_t count, int rate_hz, 
     return noise;
 }
 
+// `signal` scaled to a mean power of 1 (left as it is if silent).
+void normalise_power(std::vector<float>& signal) {
+    double power = 0;
+    for (float v : signal) power += double(v) * v;
+    power /= static_cast<double>(std::max<std::size_t>(signal.size(), 1));
+    if (power <= 0) return;
+    const double gain = 1.0 / std::sqrt(power);
+    for (auto& v : signal) v = static_cast<float>(v * gain);
+}
+
+// A note of `frequency_hz` (harmonics with amplitudes 1/k) added to `out` from sample `first`: a
+// linear attack, then an exponential decay at `decay_per_s`, cut off after `length_s`. A vibrato of
+// 5 Hz and `vibrato` (a share of the frequency) gives a sung or bowed melody its life.
+void add_note(std::vector<float>& out, std::size_t first, double length_s, int rate_hz, double frequency_hz, int harmonic_count,
+              double amplitude, double attack_s, double decay_per_s, double vibrato = 0.0) {
+    const auto length = static_cast<std::size_t>(length_s * rate_hz);
+    double phase = 0;
+    for (std::size_t j = 0; j < length && first + j < out.size(); ++j) {
+        const double since = static_cast<double>(j) / rate_hz;
+        phase += 2 * kPi * frequency_hz * (1.0 + vibrato * std::sin(2 * kPi * 5.0 * since)) / rate_hz;
+        // The last 10 ms fade out, so that a note cut short does not click.
+        const double release = std::min(1.0, (length_s - since) / 0.01);
+        const double envelope = std::min(1.0, since / attack_s) * std::exp(-since * decay_per_s) * release;
+        double value = 0;
+        for (int k = 1; k <= harmonic_count; ++k) value += std::sin(k * phase) / k;
+        out[first + j] += static_cast<float>(amplitude * envelope * value);
+    }
+}
+
+// A tune as a radio plays one under a voice: a bar of four beats at 85-135 beats a minute, chords
+// I-V-vi-IV of a drawn key held through each bar, a bass on beats 1 and 3, a melody of the key's
+// pentatonic scale in eighth notes with rests, and a drum kit (a kick on 1 and 3, a snare on 2 and
+// 4, a hi-hat on every eighth): onsets of every kind, as often as syllables, tonal and noisy.
+std::vector<float> make_song(std::size_t count, int rate_hz, std::mt19937_64& rng) {
+    std::vector<float> music(count, 0.0f), drums(count, 0.0f);
+    const double beat_s = 60.0 / uniform(rng, 85.0, 135.0);
+    const double key_hz = 220.0 * std::pow(2.0, uniform_int(rng, -5, 6) / 12.0);
+    const auto semitones = [&](double semitone) { return key_hz * std::pow(2.0, semitone / 12.0); };
+    // Each chord as its root and two more tones, in semitones above the key.
+    const int chords[4][3] = {{0, 4, 7}, {7, 11, 14}, {9, 12, 16}, {5, 9, 12}};
+    const int pentatonic[] = {0, 2, 4, 7, 9, 12, 14, 16};
+    const auto at = [&](double seconds) { return static_cast<std::size_t>(seconds * rate_hz); };
+    for (std::size_t bar = 0; at(static_cast<double>(bar) * 4 * beat_s) < count; ++bar) {
+        const double bar_s = static_cast<double>(bar) * 4 * beat_s;
+        const auto& chord = chords[bar % 4];
+        for (int tone : chord) add_note(music, at(bar_s), 4 * beat_s, rate_hz, semitones(tone), 5, 0.25, 0.05, 0.4);
+        for (int beat : {0, 2}) add_note(music, at(bar_s + beat * beat_s), 2 * beat_s, rate_hz, semitones(chord[0]) / 4, 4, 0.6, 0.01, 3.0);
+        for (int eighth = 0; eighth < 8; ++eighth) {
+            const double start_s = bar_s + eighth * beat_s / 2;
+            if (uniform(rng, 0, 1) < 0.7) {
+                const int degree = pentatonic[uniform_int(rng, 0, 7)];
+                const double length_s = (uniform(rng, 0, 1) < 0.3 ? 2 : 1) * beat_s / 2;
+                add_note(music, at(start_s), length_s, rate_hz, 2 * semitones(degree), 4, 0.4, 0.01, 2.0, 0.004);
+            }
+            // Drums: a falling sine for the kick, noise and a 185 Hz body for the snare, a click of
+            // high noise (the difference of white samples) for the hi-hat.
+            const bool is_kick = eighth == 0 || eighth == 4, is_snare = eighth == 2 || eighth == 6;
+            double phase = 0, last_white = 0;
+            for (std::size_t j = 0; j < at(0.25) && at(start_s) + j < count; ++j) {
+                const double since = static_cast<double>(j) / rate_hz;
+                const double white = gaussian(rng);
+                double value = 0.15 * (white - last_white) * std::exp(-since / 0.02);
+                last_white = white;
+                if (is_kick) {
+                    phase += 2 * kPi * (50.0 + 70.0 * std::exp(-since / 0.03)) / rate_hz;
+                    value += std::sin(phase) * std::exp(-since / 0.12);
+                }
+                if (is_snare) value += (0.4 * white + 0.3 * std::sin(2 * kPi * 185.0 * since)) * std::exp(-since / 0.08);
+                drums[at(start_s) + j] += static_cast<float>(value);
+            }
+        }
+    }
+    normalise_power(music);
+    normalise_power(drums);
+    for (std::size_t i = 0; i < count; ++i) music[i] += 0.6f * drums[i];
+    return music;
+}
+
+// Mains hum and a fan: 50 or 60 Hz with harmonics up to 13 (the second, a transformer's
+// magnetostriction, the strongest; odd ones a rectifier's buzz), each at a drawn phase; and the
+// fan's air (pink noise under one pole near 1 kHz) with its blade tone (5-7 blades at 15-25
+// turns a second, three harmonics) swelling by a fifth at 0.3 Hz. Hum and fan of equal power.
+std::vector<float> make_mains_fan(std::size_t count, int rate_hz, std::mt19937_64& rng) {
+    const double mains_hz = uniform(rng, 0, 1) < 0.5 ? 50.0 : 60.0;
+    const double amplitudes[] = {0.6, 1.0, 0.5, 0.3, 0.35, 0.15, 0.2, 0.1, 0.12, 0.05, 0.08, 0.03, 0.05};
+    std::vector<double> phases;
+    for (std::size_t k = 0; k < std::size(amplitudes); ++k) phases.push_back(uniform(rng, 0, 2 * kPi));
+    const double blade_hz = uniform_int(rng, 5, 7) * uniform(rng, 15.0, 25.0);
+    std::vector<float> hum(count), blade(count), air = make_random_noise(Noise::pink, count, rng);
+    const double pole = 1.0 - std::exp(-2 * kPi * 1000.0 / rate_hz);
+    double low = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const double t = static_cast<double>(i) / rate_hz;
+        double value = 0;
+        for (std::size_t k = 0; k < std::size(amplitudes); ++k)
+            if (static_cast<double>(k + 1) * mains_hz < rate_hz / 2.0)
+                value += amplitudes[k] * std::sin(2 * kPi * static_cast<double>(k + 1) * mains_hz * t + phases[k]);
+        hum[i] = static_cast<float>(value);
+        low += pole * (air[i] - low);
+        air[i] = static_cast<float>(low);
+        blade[i] = static_cast<float>((1.0 + 0.2 * std::sin(2 * kPi * 0.3 * t)) * harmonics(blade_hz, 3, t));
+    }
+    normalise_power(hum);
+    normalise_power(air);
+    normalise_power(blade);
+    // The fan: its blade tone 6 dB under its air; together as loud as the hum.
+    const float fan_gain = static_cast<float>(1.0 / std::sqrt(1.25));
+    for (std::size_t i = 0; i < count; ++i) hum[i] += fan_gain * (air[i] + 0.5f * blade[i]);
+    return hum;
+}
+
 }  // namespace
 
 std::vector<float> make_noise(Noise colour, std::size_t count, int rate_hz, std::mt19937_64& rng) {
+    if (colour == Noise::song) return make_song(count, rate_hz, rng);
+    if (colour == Noise::mains_fan) return make_mains_fan(count, rate_hz, rng);
     const bool is_tonal = colour == Noise::hum || colour == Noise::tone_pink || colour == Noise::music || colour == Noise::room;
     return is_tonal ? make_tonal_noise(colour, count, rate_hz, rng) : make_random_noise(colour, count, rng);
 }

@@ -128,7 +128,10 @@ void plan_passages(const std::vector<BenchSentence>& sentences, int repeats, std
 /// blamed on the transcript either: hum is mains hum (50 Hz and its harmonics), tone_pink a steady
 /// 440 Hz tone under pink noise, music a synthetic tune (chords of harmonic notes over a bass,
 /// changing every 0.2-0.6 s), room a ventilated room (low-passed pink noise with a 120 Hz motor line).
-enum class Noise { none, white, pink, brown, hum, tone_pink, music, room };
+/// song is a tune as a radio plays one under a voice: chords that change with the bar, a bass, a
+/// melody and a drum kit's beat; mains_fan mains hum at 50 or 60 Hz (drawn) with its harmonics
+/// and a fan's broadband air and blade tone.
+enum class Noise { none, white, pink, brown, hum, tone_pink, music, room, song, mains_fan };
 
 /// Noise of `colour` at `rate_hz`: Paul Kellet's pink filter (within 0.05 dB of -3 dB/octave above
 /// 10 Hz at these rates), a leaky integrator for brown (-6 dB/octave), and the tonal kinds above.

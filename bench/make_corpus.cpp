@@ -55,7 +55,7 @@ struct Condition {
 // the 0.12 s that talkface's cutter takes for a pause, so that no sentence end can be cut at one.
 constexpr double kMaxJointGapS = 0.12;
 
-// Every output is 16-bit except OGG; resampling is sox's linear-phase "rate -v", which keeps times.
+// Every output is 16-bit PCM except OGG and GSM; resampling is sox's linear-phase "rate -v", which keeps times.
 const Condition all_conditions[] = {
     {"clean", "16 kHz mono 16-bit", 1.0, Noise::none, 0, "rate -v 16k", "-b 16", "wav", false},
     {"white30", "white noise, SNR 30 dB", 1.0, Noise::white, 30, "", "", "wav", false},
@@ -81,6 +81,13 @@ const Condition all_conditions[] = {
     {"room15", "room noise (ventilation and a motor's hum), SNR 15 dB", 1.0, Noise::room, 15, "", "", "wav", false},
     {"silentends", "6 s of silence before and after", 1.0, Noise::none, 0, "rate -v 16k pad 6 6", "-b 16", "wav", false,
      6.0},
+    // Issue 13, recordings as people have them: a tune with drums and a melody, mains hum with a
+    // fan, and a phone's voice mail (the telephone band at 8 kHz, GSM 06.10 in WAV, read by libsndfile).
+    {"song15", "a tune (chords, bass, melody, drums), SNR 15 dB", 1.0, Noise::song, 15, "", "", "wav", false},
+    {"mainsfan15", "mains hum (50 or 60 Hz and harmonics) and a fan, SNR 15 dB", 1.0, Noise::mains_fan, 15, "", "", "wav",
+     false},
+    {"gsm", "300-3400 Hz band, 8 kHz, GSM 06.10 in WAV", 1.0, Noise::none, 0, "sinc 300-3400 rate -v 8k",
+     "-e gsm-full-rate", "wav", false},
 };
 
 /// How one passage is spoken: drawn once, shared by every condition.

@@ -49,6 +49,10 @@ struct Condition {
     double snr_db;
     const char* sox_effects;  ///< on the joined 16 kHz speech, before any noise ("" for none)
     bool is_running = false;  ///< joined as running speech goes (RunningDelivery), not syllable by syllable
+    double max_snr_db = 0;    ///< above snr_db: each passage draws its SNR in [snr_db, max_snr_db]
+    double min_ends_s = 0;    ///< each end gets min_ends_s..max_ends_s (drawn) more of the noise alone
+    double max_ends_s = 0;
+    bool is_phone = false;    ///< after the noise: the telephone band at 8 kHz, through the GSM 06.10 codec
 };
 
 const Condition all_conditions[] = {
@@ -68,6 +72,16 @@ const Condition all_conditions[] = {
     {"r-pink15", "running speech, pink noise at SNR 15 dB", 1.0, 1.5, Noise::pink, 15, "", true},
     {"r-reverb", "running speech, room reverb (sox reverb 40 50 60)", 1.0, 1.5, Noise::none, 0,
      "reverb 40 50 60 gain -n -3", true},
+    // Recordings as people have them (issue 13). Each draws from its own noise stream (its index),
+    // so that the conditions above keep their files.
+    {"r-music", "running speech, a tune (chords, bass, melody, drums) at SNR 15-20 dB", 1.0, 1.5, Noise::song, 15, "",
+     true, 20},
+    {"r-hum", "running speech, mains hum (50 or 60 Hz and harmonics) and a fan at SNR 15-20 dB", 1.0, 1.5,
+     Noise::mains_fan, 15, "", true, 20},
+    {"r-longsil", "running speech, room noise at SNR 15-20 dB, alone for 3-10 s at each end", 1.0, 1.5, Noise::room, 15,
+     "", true, 20, 3, 10},
+    {"r-phone", "running speech, pink noise at SNR 30 dB, then the telephone band (300-3400 Hz) at 8 kHz through GSM 06.10",
+     1.0, 1.5, Noise::pink, 30, "", true, 0, 0, 0, true},
 };
 
 // --- pinyin to gcin-voice's folders --------------------------------------------------------------
@@ -502,7 +516,23 @@ std::string truth_json(const Recording& recording, const std::string& condition,
     return document.dump(1) + "\n";
 }
 
-// The condition applied to the joined speech: sox's effects, then noise at the condition's SNR.
+// `recording` with `lead_s` of silence before it and `trail_s` after, its truth moved with it.
+Recording with_ends(Recording recording, double lead_s, double trail_s) {
+    const auto lead = static_cast<std::size_t>(std::lround(lead_s * kRateHz));
+    const auto trail = static_cast<std::size_t>(std::lround(trail_s * kRateHz));
+    auto& samples = recording.audio.samples;
+    samples.insert(samples.begin(), lead, 0.0f);
+    samples.resize(samples.size() + trail, 0.0f);
+    const double shift_s = static_cast<double>(lead) / kRateHz;
+    for (auto& syllable : recording.truth.syllables) syllable.start_s += shift_s, syllable.end_s += shift_s;
+    for (auto& sentence : recording.truth.sentences) sentence.start_s += shift_s, sentence.end_s += shift_s;
+    recording.truth.duration_s = static_cast<double>(samples.size()) / kRateHz;
+    return recording;
+}
+
+// The condition applied to the joined speech: sox's effects, then noise at the condition's SNR,
+// then the telephone's band and codec. A condition that draws (its SNR, its ends) draws from
+// `noise_rng` before the noise does.
 MonoAudio record(const Recording& recording, const Condition& condition, const fs::path& work, std::mt19937_64& noise_rng) {
     MonoAudio audio = recording.audio;
     if (*condition.sox_effects) {
@@ -511,8 +541,18 @@ MonoAudio record(const Recording& recording, const Condition& condition, const f
         talkface_bench::run_sox(in.string(), out.string(), "-b 16", condition.sox_effects);
         audio = talkface_bench::read_wav(out.string());
     }
-    if (condition.noise != Noise::none)
-        audio = talkface_bench::add_noise(audio, recording.truth, condition.noise, condition.snr_db, noise_rng);
+    const double snr_db = condition.max_snr_db > condition.snr_db ? talkface_bench::uniform(noise_rng, condition.snr_db, condition.max_snr_db)
+                                                                  : condition.snr_db;
+    if (condition.noise != Noise::none) audio = talkface_bench::add_noise(audio, recording.truth, condition.noise, snr_db, noise_rng);
+    if (condition.is_phone) {
+        // sox's GSM 06.10 (the full-rate codec of 2G calls, still what many phone recorders and
+        // voice mails store) takes 8 kHz mono; decoded back to 16-bit WAV at 8 kHz.
+        const fs::path in = work / "mixed.wav", coded = work / "phone.gsm", out = work / "phone.wav";
+        talkface_bench::write_wav(in.string(), audio);
+        talkface_bench::run_sox(in.string(), coded.string(), "-r 8000 -c 1", "sinc 300-3400 rate -v 8k");
+        talkface_bench::run_sox(coded.string(), out.string(), "-b 16", "");
+        audio = talkface_bench::read_wav(out.string());
+    }
     return audio;
 }
 
@@ -561,7 +601,12 @@ void make_corpus(const CorpusOptions& options) {
             // The noise comes from a stream of its own per passage and condition.
             std::seed_seq noise_seed{options.seed, static_cast<std::uint64_t>(p), condition_index};
             std::mt19937_64 noise_rng(noise_seed);
-            const Recording recording = speak(transcript, deliveries[p], runnings[p], *condition, bank, passage.name);
+            Recording recording = speak(transcript, deliveries[p], runnings[p], *condition, bank, passage.name);
+            if (condition->max_ends_s > 0) {
+                const double lead_s = talkface_bench::uniform(noise_rng, condition->min_ends_s, condition->max_ends_s);
+                recording = with_ends(std::move(recording), lead_s,
+                                      talkface_bench::uniform(noise_rng, condition->min_ends_s, condition->max_ends_s));
+            }
             const fs::path stem = out / condition->name / passage.name;
             talkface_bench::write_wav(stem.string() + ".wav", record(recording, *condition, work, noise_rng));
             talkface_bench::write_text(stem.string() + ".txt", passage.transcript);
