@@ -137,7 +137,8 @@ PageParts announcer_page(const std::string& animation_svg, const FaceModel& face
         ".tf-caption .tf-sentence{display:none;margin:0}"
         ".tf-caption .tf-sentence.tf-current{display:block}"
         ".tf-caption:not(:has(.tf-current)){visibility:hidden}"
-        "audio{display:block;width:100%;margin-top:12px}";
+        "audio{display:block;width:100%;margin-top:12px}"
+        ":focus-visible{outline-color:#93c5fd}";  // light on the dark page
     parts.body = "<main class=\"tf-announcer\">\n<div class=\"tf-stage\">\n<svg class=\"tf-stage-art\" "
                  "xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " +
                  number(stage_width) + " " + number(stage_height) + "\" role=\"img\" aria-label=\"" +

@@ -30,8 +30,7 @@ constexpr const char* kFollowScript = R"js((function () {
   window.addEventListener("keydown", function (event) {
     if (["PageUp", "PageDown", "Home", "End"].indexOf(event.key) >= 0) handScrolledAt = Date.now();
   });
-  document.addEventListener("tf-sentence", function (event) {
-    var sentence = event.detail.element;
+  function keep_in_view(sentence) {
     if (!sentence || Date.now() - handScrolledAt < 4000) return;
     var box = sentence.getBoundingClientRect();
     var held = window.getComputedStyle(teacher).position === "sticky" && teacher.getBoundingClientRect().bottom < window.innerHeight / 2;
@@ -39,7 +38,11 @@ constexpr const char* kFollowScript = R"js((function () {
       ? teacher.getBoundingClientRect().bottom : 0;
     if (box.top >= top + 8 && box.bottom <= window.innerHeight - 8) return;
     window.scrollTo(0, window.scrollY + box.top - top - (window.innerHeight - top) / 3);
-  });
+  }
+  document.addEventListener("tf-sentence", function (event) { keep_in_view(event.detail.element); });
+  // Until the document's load event the page is not laid out as it will be, and a scroll made then
+  // may come to nothing (a link to a time deep in the book, opened, stayed at the top): again then.
+  window.addEventListener("load", function () { keep_in_view(document.querySelector(".tf-sentence.tf-current")); });
 })();
 )js";
 
@@ -83,8 +86,7 @@ PageParts audiobook_page(const std::string& animation_svg, const Timeline& timel
         ".tf-sentence{cursor:pointer;border-radius:4px;padding:2px 1px;transition:background .15s}"
         ".tf-sentence:hover{background:#efe6cf}"
         ".tf-sentence.tf-current{background:#ffd95e;box-shadow:0 0 0 2px #ffd95e}"
-        // The focus ring is blue and outside the highlight, so both show on the same sentence.
-        ":focus-visible{outline:3px solid #1d4ed8;outline-offset:3px}"
+        // The page's focus ring (web_page.cpp) sits outside the highlight: both show on one sentence.
         ".tf-sentence:focus-visible{outline-offset:4px;border-radius:4px}"
         ".tf-links h2{font-family:" + kSansFonts +
         ";font-size:1rem;margin:32px 0 8px;color:#6b5e3e}"

@@ -55,11 +55,19 @@ constexpr const char* kScript = R"js((function () {
     document.body.setAttribute("data-tf-time", t.toFixed(3));
     document.body.setAttribute("data-tf-sentence", String(index));
   }
+  // One loop of animation frames while the speech plays, however often play and pause come.
+  var following = false;
   function tick() {
     show();
-    if (!audio.paused && !audio.ended) window.requestAnimationFrame(tick);
+    following = !audio.paused && !audio.ended;
+    if (following) window.requestAnimationFrame(tick);
   }
-  audio.addEventListener("play", function () { window.requestAnimationFrame(tick); });
+  function follow() {
+    if (following) return;
+    following = true;
+    window.requestAnimationFrame(tick);
+  }
+  audio.addEventListener("play", follow);
   ["pause", "seeking", "seeked", "timeupdate", "ended", "ratechange", "loadedmetadata"].forEach(function (name) {
     audio.addEventListener(name, show);
   });
@@ -98,8 +106,14 @@ constexpr const char* kScript = R"js((function () {
   });
   var wanted = /(?:^#|&)t=([0-9]+(?:\.[0-9]+)?)/.exec(window.location.hash);
   var stays = /(?:^#|&)pause(?:&|$)/.test(window.location.hash);
+  // Ready once the face shows the audio's time: the SVG's timeline starts only with the document's
+  // load event (which the audio's first data holds back), and reads 0 until then.
   function ready() {
     show();
+    if (document.readyState !== "complete") {
+      window.addEventListener("load", ready, { once: true });
+      return;
+    }
     document.body.setAttribute("data-tf-ready", "1");
   }
   function start() {
@@ -108,8 +122,28 @@ constexpr const char* kScript = R"js((function () {
     audio.currentTime = parseFloat(wanted[1]);
     if (!stays) play();
   }
-  if (audio.readyState >= 1) start(); else audio.addEventListener("loadedmetadata", start, { once: true });
+  // A speech that cannot be played (a linked file missing, a format this browser lacks) is said
+  // on the page, under the player, rather than leaving a face that never moves unexplained.
+  function failed() {
+    var notice = document.createElement("p");
+    notice.className = "tf-audio-error";
+    notice.setAttribute("role", "alert");
+    var linked = !/^data:/.test(audio.getAttribute("src") || "");
+    notice.textContent = "The speech could not be played: " + (linked
+      ? "\u201c" + audio.getAttribute("src") + "\u201d is missing beside this page, or in a format this browser does not play."
+      : "this browser does not play its format.");
+    audio.insertAdjacentElement("afterend", notice);
+    ready();
+  }
+  if (audio.error) failed();
+  else if (audio.readyState >= 1) start();
+  else {
+    audio.addEventListener("loadedmetadata", start, { once: true });
+    audio.addEventListener("error", failed, { once: true });
+  }
   show();
+  // The animation is unpacked before this script runs: the speech may be playing already.
+  if (!audio.paused) follow();
 })();
 )js";
 
@@ -129,7 +163,13 @@ constexpr int kSpeechBitrateBps = 11000;
 constexpr int kLowestBitrateBps = 6000;
 constexpr int kHighestBitrateBps = 128000;
 
-constexpr const char* kCommonStyle = "*{box-sizing:border-box}";
+// A focus ring a keyboard user finds on every page (Chromium's own round the player is 1 px), and
+// the notice of a speech that cannot be played.
+constexpr const char* kCommonStyle =
+    "*{box-sizing:border-box}"
+    ":focus-visible{outline:3px solid #1d4ed8;outline-offset:3px}"
+    ".tf-audio-error{margin:8px 0 0;padding:8px 12px;border-radius:6px;background:#fee2e2;color:#7f1d1d;"
+    "font-size:.95rem;line-height:1.4}";
 
 void validate(const WebPageOptions& options) {
     const int app = static_cast<int>(options.app);

@@ -22,6 +22,7 @@ KEYS = {
     "ArrowRight": ("ArrowRight", 39, ""),
     "ArrowDown": ("ArrowDown", 40, ""),
     "Tab": ("Tab", 9, ""),
+    "Enter": ("Enter", 13, "\r"),
 }
 
 
@@ -54,10 +55,14 @@ class Browser:
         os.close(high_write)
         self._buffer = b""
         self._next_id = 0
+        # What the page reported while the test waited for answers: DevTools events, in order.
+        self.events = []
         self._session = None
         target = self.call("Target.createTarget", url="about:blank")["targetId"]
         self._session = self.call("Target.attachToTarget", targetId=target, flatten=True)["sessionId"]
         self.call("Page.enable")
+        self.call("Runtime.enable")
+        self.call("Log.enable")
         self.call("Emulation.setDeviceMetricsOverride", width=width, height=height, deviceScaleFactor=1,
                   mobile=mobile)
 
@@ -96,7 +101,9 @@ class Browser:
                 self._buffer += chunk
             raw, self._buffer = self._buffer.split(b"\0", 1)
             reply = json.loads(raw)
-            if reply.get("id") == self._next_id:
+            if "method" in reply:
+                self.events.append(reply)
+            elif reply.get("id") == self._next_id:
                 if "error" in reply:
                     raise RuntimeError(f"{method}: {reply['error']}")
                 return reply.get("result", {})
@@ -112,6 +119,7 @@ class Browser:
         """Loads `url` and waits until the page's script says it is ready (data-tf-ready). Through
         about:blank, so that a new fragment on the same page loads it again."""
         self.call("Page.navigate", url="about:blank")
+        self.events.clear()
         self.call("Page.navigate", url=url)
         ready = self.evaluate("""new Promise(function (done) {
             var waited = 0;
@@ -129,6 +137,23 @@ class Browser:
         """Two animation frames: style, layout and the script's scrolling have run."""
         self.evaluate("new Promise(function (done) { requestAnimationFrame(function () { requestAnimationFrame("
                       "function () { done(true); }); }); })")
+
+    def problems(self):
+        """What the page threw or logged as an error since it was opened, each as "SOURCE: text":
+        uncaught exceptions ("exception"), console.error ("console"), and the browser's own error
+        entries under their source ("network" for a resource that failed to load)."""
+        found = []
+        for event in self.events:
+            method, params = event["method"], event.get("params", {})
+            if method == "Runtime.exceptionThrown":
+                details = params["exceptionDetails"]
+                found.append("exception: " + (details.get("exception", {}).get("description") or details.get("text")))
+            elif method == "Runtime.consoleAPICalled" and params.get("type") in ("error", "assert"):
+                found.append("console: " + " ".join(str(arg.get("value", arg.get("description")))
+                                                    for arg in params.get("args", [])))
+            elif method == "Log.entryAdded" and params["entry"].get("level") == "error":
+                found.append(f"{params['entry'].get('source')}: {params['entry'].get('text')}")
+        return found
 
     def press(self, key):
         code, key_code, text = KEYS[key]

@@ -1,0 +1,258 @@
+"""The pages played as a person plays them, in headless Chromium (browser.py): play, pause, seeks
+back and forward, playing at 1.5 times, to the end and again, on a desktop window and a phone's,
+each page opened from file://. The face's clock must be the audio's at every animation frame, the
+page must throw nothing, and the player must work by keyboard. A speech that cannot be played is
+said on the page; a speech started before the page has unpacked its animation is followed.
+
+Pages: `talkface demo` (plain, audio book, announcer; the speech compressed into the page, or
+linked beside it) and `talkface animate` of a long speech (8 minutes, 300 sentences, timed by a
+timeline JSON over a silent recording).
+"""
+import json
+import os
+import pathlib
+import subprocess
+import wave
+
+import pytest
+
+import talkface
+from browser import CHROMIUM, Browser
+
+CLI = os.environ["TALKFACE_CLI"]
+FRAME_S = 1 / 25  # the pages' animation frame rate (LipSyncOptions)
+
+pytestmark = pytest.mark.skipif(CHROMIUM is None, reason="chromium is not installed")
+
+# The audio's clock and every clock of the face (the animation and, nested in a stage, the stage's
+# own <svg>, which Chromium runs on a clock of its own) in one look.
+CLOCKS = """(function () {
+  var audio = document.getElementById('tf-audio');
+  var clocks = [document.querySelector('svg.tf-animation')];
+  while (clocks[clocks.length - 1].ownerSVGElement) clocks.push(clocks[clocks.length - 1].ownerSVGElement);
+  return {audio: audio.currentTime, faces: clocks.map(function (c) { return c.getCurrentTime(); }),
+          shown: parseFloat(document.body.getAttribute('data-tf-time')), paused: audio.paused,
+          ended: audio.ended, duration: audio.duration};
+})()"""
+
+# Samples `frames` animation frames while something plays: per frame, the audio's clock less the
+# face's, and the face's clocks less the time the page last read from the audio (data-tf-time).
+FOLLOWING = """new Promise(function (done) {
+  var audio = document.getElementById('tf-audio');
+  var clocks = [document.querySelector('svg.tf-animation')];
+  while (clocks[clocks.length - 1].ownerSVGElement) clocks.push(clocks[clocks.length - 1].ownerSVGElement);
+  var samples = [];
+  (function sample() {
+    if (!audio.paused) {
+      var shown = parseFloat(document.body.getAttribute('data-tf-time'));
+      samples.push([audio.currentTime - clocks[0].getCurrentTime(),
+                    Math.max.apply(null, clocks.map(function (c) { return Math.abs(c.getCurrentTime() - shown); }))]);
+    }
+    if (samples.length >= %d || audio.ended) return done(samples);
+    requestAnimationFrame(sample);
+  })();
+})"""
+
+
+def wait(browser, seconds):
+    browser.evaluate("new Promise(function (done) { setTimeout(function () { done(true); }, %d); })" % (seconds * 1000))
+
+
+def seek(browser, time_s):
+    """Sets the audio's time and waits for the seek and an animation frame after it."""
+    browser.evaluate("""new Promise(function (done) {
+        var audio = document.getElementById('tf-audio');
+        audio.addEventListener('seeked', function () { requestAnimationFrame(function () { done(true); }); },
+                               { once: true });
+        audio.currentTime = %f;
+      })""" % time_s)
+
+
+def assert_face_shows_audio_time(browser, what):
+    clocks = browser.evaluate(CLOCKS)
+    for face in clocks["faces"]:
+        assert face == pytest.approx(clocks["audio"], abs=0.002), f"{what}: {clocks}"
+    return clocks
+
+
+def assert_face_follows_playing(browser, what, frames=20):
+    """At every frame the face shows what the page last read from the audio, and that is at most a
+    frame or two behind the audio's own clock (the median: a loaded machine has long frames)."""
+    samples = browser.evaluate(FOLLOWING % frames)
+    assert len(samples) >= min(frames, 5), f"{what}: {len(samples)} frames while playing"
+    assert all(from_shown < 0.001 for _, from_shown in samples), f"{what}: {samples}"
+    lags = sorted(lag for lag, _ in samples)
+    assert lags[0] >= -0.002 and lags[len(lags) // 2] < FRAME_S * 1.5, f"{what}: lags {lags}"
+
+
+def silent_wav(path, duration_s):
+    with wave.open(str(path), "wb") as out:
+        out.setnchannels(1)
+        out.setsampwidth(1)
+        out.setframerate(8000)
+        out.writeframes(b"\x80" * int(8000 * duration_s))
+
+
+@pytest.fixture(scope="module")
+def pages(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("pages")
+    made = {}
+    for name, args in {"plain": [], "audiobook": ["--app", "audiobook"], "announcer": ["--app", "announcer"],
+                       "linked": ["--link-audio"]}.items():
+        made[name] = folder / f"{name}.html"
+        subprocess.run([CLI, "demo", "-q", *args, "-o", str(made[name])], check=True, timeout=120)
+    # A long speech: 300 sentences of 5 syllables, 0.2 s each, 0.6 s between them.
+    lines = ["春天來了。", "小鳥唱歌。", "河水很清。", "讀書用心。", "大家笑了。"]
+    text = "".join(lines[k % len(lines)] for k in range(300))
+    (folder / "long.txt").write_text(text, encoding="utf-8")
+    timeline = talkface.read_transcript(text)
+    syllables, sentences = timeline.syllables, timeline.sentences
+    t = 0.5
+    for index, sentence in enumerate(sentences):
+        sentence.start_s = t
+        for syllable in (s for s in syllables if s.sentence == index):
+            syllable.start_s, syllable.end_s = t, t + 0.2
+            t += 0.2
+        sentence.end_s = t
+        t += 0.6
+    timeline.syllables, timeline.sentences, timeline.duration_s = syllables, sentences, t + 0.5
+    (folder / "long.json").write_text(talkface.timeline_to_json(timeline), encoding="utf-8")
+    silent_wav(folder / "long.wav", timeline.duration_s)
+    made["long"] = folder / "long.html"
+    subprocess.run([CLI, "animate", str(folder / "long.wav"), str(folder / "long.txt"), "--timing",
+                    str(folder / "long.json"), "-q", "-o", str(made["long"])], check=True, timeout=300)
+    return made
+
+
+@pytest.mark.parametrize("page, size", [
+    ("plain", (640, 760)), ("plain", (390, 844)),
+    ("audiobook", (1280, 800)), ("audiobook", (390, 844)),
+    ("announcer", (1280, 800)), ("announcer", (390, 844)),
+    ("linked", (640, 760)),
+    ("long", (640, 760)),
+], ids=lambda value: "x".join(map(str, value)) if isinstance(value, tuple) else value)
+def test_the_face_keeps_to_the_audio_clock_whatever_the_player_does(pages, page, size):
+    phone = size[0] < 600
+    with Browser(*size, mobile=phone) as browser:
+        browser.open(pages[page].as_uri())
+        assert browser.evaluate("location.protocol") == "file:"
+        duration = assert_face_shows_audio_time(browser, "opened")["duration"]
+        browser.evaluate("document.getElementById('tf-audio').play()")
+        assert_face_follows_playing(browser, "playing")
+        browser.evaluate("document.getElementById('tf-audio').pause()")
+        browser.settle()
+        paused_at = assert_face_shows_audio_time(browser, "paused")["audio"]
+        assert paused_at > 0
+        for what, time_s in [("forward", duration * 0.7), ("back", 0.4), ("to the start", 0.0)]:
+            seek(browser, time_s)
+            assert assert_face_shows_audio_time(browser, f"seeked {what}")["audio"] == pytest.approx(time_s, abs=0.01)
+        browser.evaluate("var a = document.getElementById('tf-audio'); a.playbackRate = 1.5; a.play()")
+        assert_face_follows_playing(browser, "at 1.5 times")
+        seek(browser, duration * 0.5)  # a seek while playing
+        assert_face_follows_playing(browser, "after a seek while playing")
+        browser.evaluate("""new Promise(function (done) {
+            var audio = document.getElementById('tf-audio');
+            audio.addEventListener('ended', function () { requestAnimationFrame(function () { done(true); }); },
+                                   { once: true });
+            audio.currentTime = audio.duration - 0.4;
+          })""")
+        ended = assert_face_shows_audio_time(browser, "ended")
+        assert ended["ended"] and ended["audio"] == pytest.approx(duration, abs=0.01)
+        browser.evaluate("document.getElementById('tf-audio').play()")  # again, from the start
+        assert_face_follows_playing(browser, "replayed")
+        assert browser.evaluate(CLOCKS)["audio"] < duration / 2
+        browser.evaluate("document.getElementById('tf-audio').pause()")
+        if phone:
+            assert browser.evaluate("document.documentElement.scrollWidth") <= size[0]
+        assert browser.problems() == []
+
+
+@pytest.mark.parametrize("page", ["plain", "audiobook", "announcer"])
+def test_the_player_is_reached_seen_and_worked_by_keyboard(pages, page):
+    with Browser(1280, 800) as browser:
+        browser.open(pages[page].as_uri())
+        for _ in range(10):  # the audio book's links and sentences come after the player
+            browser.press("Tab")
+            if browser.evaluate("document.activeElement.id") == "tf-audio":
+                break
+        assert browser.evaluate("document.activeElement.id") == "tf-audio"
+        # A ring a keyboard user finds: at least 2 px, not Chromium's 1 px default round the player.
+        ring = browser.evaluate("(function () { var s = getComputedStyle(document.activeElement);"
+                                " return [document.activeElement.matches(':focus-visible'), s.outlineStyle,"
+                                " parseFloat(s.outlineWidth)]; })()")
+        assert ring[0] and ring[1] not in ("none", "auto") and ring[2] >= 2, ring
+        browser.press(" ")
+        assert not browser.evaluate("document.getElementById('tf-audio').paused")
+        assert_face_follows_playing(browser, "played by the space bar")
+        browser.press(" ")
+        assert browser.evaluate("document.getElementById('tf-audio').paused")
+        before = assert_face_shows_audio_time(browser, "paused by the space bar")["audio"]
+        browser.press("ArrowRight")  # the player's own seek
+        wait(browser, 0.3)
+        assert assert_face_shows_audio_time(browser, "moved by an arrow")["audio"] > before
+        assert browser.problems() == []
+
+
+def test_ready_means_the_face_shows_the_time_of_the_fragment(pages):
+    # The SVG's timeline starts with the document's load event, after the audio's metadata: a page
+    # that says it is ready must already show the face at the fragment's time.
+    with Browser(640, 760) as browser:
+        browser.call("Page.navigate", url=pages["plain"].as_uri() + "#t=2.5&pause")
+        browser.evaluate("""new Promise(function (done) {
+            (function poll() {
+              if (document.body && document.body.getAttribute('data-tf-ready') === '1') return done(true);
+              setTimeout(poll, 2);
+            })();
+          })""")
+        clocks = assert_face_shows_audio_time(browser, "ready")
+        assert clocks["audio"] == pytest.approx(2.5, abs=0.01)
+
+
+@pytest.mark.parametrize("fragment", ["", "#t=3&pause"])
+def test_a_speech_that_cannot_be_played_is_said_on_the_page(pages, tmp_path, fragment):
+    page = tmp_path / "moved.html"
+    page.write_text(pages["linked"].read_text(encoding="utf-8"), encoding="utf-8")  # its speech left behind
+    with Browser(640, 760) as browser:
+        browser.open(page.as_uri() + fragment)
+        notice = browser.evaluate("(function () { var n = document.querySelector('.tf-audio-error');"
+                                  " return n && [n.getAttribute('role'), n.textContent, n.getBoundingClientRect().height]; })()")
+        assert notice is not None, "no notice on the page"
+        assert notice[0] == "alert" and "linked.ogg" in notice[1] and notice[2] > 10, notice
+        assert_face_shows_audio_time(browser, "no speech")
+        browser.press(" ")  # nothing to play, and nothing thrown
+        assert all(problem.startswith("network: ") for problem in browser.problems()), browser.problems()
+
+
+def test_a_speech_started_before_the_animation_is_unpacked_is_followed(pages):
+    # The page's script runs once the animation is unpacked; the player works before that. Hold the
+    # unpacking (the page's Response.text()) until the speech plays.
+    hold = """(function () {
+      var text = Response.prototype.text, held = [];
+      window.tfReleaseUnpacking = function () { held.forEach(function (go) { go(); }); held = null; };
+      Response.prototype.text = function () {
+        var response = this;
+        if (held === null) return text.call(response);
+        return new Promise(function (resolve) { held.push(function () { resolve(text.call(response)); }); });
+      };
+    })();"""
+    with Browser(640, 760) as browser:
+        browser.call("Page.addScriptToEvaluateOnNewDocument", source=hold)
+        browser.call("Page.navigate", url=pages["plain"].as_uri())
+        browser.evaluate("""new Promise(function (done) {
+            (function poll() {
+              var audio = document.getElementById('tf-audio');
+              if (audio && audio.readyState >= 1) return done(true);
+              setTimeout(poll, 20);
+            })();
+          })""")
+        browser.evaluate("document.getElementById('tf-audio').play()")
+        wait(browser, 0.3)
+        browser.evaluate("window.tfReleaseUnpacking()")
+        browser.evaluate("""new Promise(function (done) {
+            (function poll() {
+              if (document.body.getAttribute('data-tf-ready') === '1') return done(true);
+              setTimeout(poll, 20);
+            })();
+          })""")
+        assert_face_follows_playing(browser, "started before the unpacking", frames=30)
+        assert browser.problems() == []
