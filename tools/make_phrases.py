@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""Generates src/text/data/phrases.cpp: words that fix the reading of a polyphonic character
-(首都 shou3 du1, 都是 dou1 shi4), in Simplified and Traditional characters, for the transcript
-reader's longest-match lookup.
+"""Generates src/text/data/phrases.cpp: the words of a phrase list with how often each is used,
+in Simplified and Traditional characters, and the reading of each word that settles a polyphonic
+character (首都 shou3 du1, 都是 dou1 shi4). The transcript reader cuts a run of characters into
+its likeliest words by these costs (src/text/word_segmentation.cpp), then reads each word.
 
 Sources (licences in docs/data-licences.md):
   /usr/share/pyzy/db/android.db  Debian libpyzy-1.0-0v5; the Android Open Source Project's
@@ -12,6 +13,7 @@ Run: /usr/bin/python3 tools/make_phrases.py
 """
 
 import collections
+import math
 import os
 import sqlite3
 import subprocess
@@ -28,19 +30,38 @@ OUTPUT = os.path.join(ROOT, "src", "text", "data", "phrases.cpp")
 
 
 def read_android_db():
-    """[(phrase, [(initial_id, final_id), ...])] for every row of every py_phrase_N table."""
+    """[(phrase, freq, [(initial_id, final_id), ...])] for every row of every py_phrase_N table,
+    most frequent first (ties in table order)."""
     rows = []
     with sqlite3.connect(f"file:{ANDROID_DB}?mode=ro", uri=True) as db:
         tables = [name for (name,) in db.execute(
             "SELECT name FROM sqlite_master WHERE type = 'table' AND name LIKE 'py_phrase_%'")]
-        for table in tables:
+        for table in sorted(tables, key=lambda name: int(name.rsplit("_", 1)[1])):
             length = int(table.rsplit("_", 1)[1]) + 1
             columns = ", ".join(f"s{i}, y{i}" for i in range(length))
-            for row in db.execute(f"SELECT phrase, {columns} FROM {table}"):
-                phrase, ids = row[0], row[1:]
+            for row in db.execute(f"SELECT phrase, freq, {columns} FROM {table} ORDER BY rowid"):
+                phrase, freq, ids = row[0], row[1], row[2:]
                 if len(phrase) == length:
-                    rows.append((phrase, list(zip(ids[0::2], ids[1::2]))))
+                    rows.append((phrase, freq, list(zip(ids[0::2], ids[1::2]))))
+    rows.sort(key=lambda row: -row[1])
     return rows
+
+
+def word_costs(rows):
+    """{phrase: cost}, the cost -ln P(word) in hundredths. android.db's freq is not a count:
+    pyzy's create_db.py replaced the Android list's frequencies by their dense rank (1 for the
+    rarest value, 7,680 for the commonest), which keeps only their order. Zipf's law gives the
+    probability back from the order: a row's share of running text is 1 / (r H_N), r its place
+    in the list (rows of one freq share the first place among them), N the rows, H_N the N-th
+    harmonic number. A word read in several ways (参 can, shen, cen) adds its rows' shares."""
+    first_place = {}
+    for place, (_, freq, _) in enumerate(rows, start=1):
+        first_place.setdefault(freq, place)
+    harmonic = sum(1.0 / place for place in range(1, len(rows) + 1))
+    shares = collections.defaultdict(float)
+    for phrase, freq, _ in rows:
+        shares[phrase] += 1.0 / (first_place[freq] * harmonic)
+    return {phrase: round(-100 * math.log(share)) for phrase, share in shares.items()}
 
 
 def decode_ids(rows, unihan):
@@ -51,7 +72,7 @@ def decode_ids(rows, unihan):
     pair_votes = collections.defaultdict(collections.Counter)
     initial_votes = collections.defaultdict(collections.Counter)
     final_votes = collections.defaultdict(collections.Counter)
-    for phrase, ids in rows:
+    for phrase, _, ids in rows:
         if len(phrase) != 1 or phrase not in unihan:
             continue
         (initial_id, final_id), = ids
@@ -103,20 +124,25 @@ def main():
     rows = read_android_db()
     decode, initials, finals = decode_ids(rows, unihan)
     print(f"make_phrases: decoded {len(initials)} initial ids, {len(finals)} final ids")
+    costs = word_costs(rows)
 
+    # A word read in several ways takes the reading of its most frequent row (rows come most
+    # frequent first): 都是 dou shi, not du shi.
     simplified = {}
-    for phrase, ids in rows:
-        if len(phrase) > 1 and phrase not in simplified:
+    for phrase, _, ids in rows:
+        if phrase not in simplified:
             simplified[phrase] = [decode(pair) for pair in ids]
     bad = [p for p, syllables in simplified.items()
-           if not all(pinyin_rules.is_legal_toneless(s) for s in syllables)]
+           if len(p) > 1 and not all(pinyin_rules.is_legal_toneless(s) for s in syllables)]
     if bad:
         sys.exit(f"make_phrases: {len(bad)} phrases decode to illegal syllables, e.g. {bad[:5]}")
 
-    phrases = list(simplified)
-    forms = [(phrase, phrase) for phrase in phrases]
+    # Commonest first, so that a Traditional form two Simplified words share (a rare clash of
+    # OpenCC's conversion) takes the commoner word's reading and cost.
+    words = sorted(simplified, key=lambda phrase: (costs[phrase], phrase))
+    forms = [(word, word) for word in words]
     for config in ("s2t.json", "s2tw.json"):
-        forms.extend(zip(to_traditional(phrases, config), phrases))
+        forms.extend(zip(to_traditional(words, config), words))
 
     def first_toneless(character):
         return make_readings.ordered_readings(unihan[character])[0][:-1]
@@ -127,28 +153,34 @@ def main():
         if form in table or len(form) != len(source):
             continue
         syllables = simplified[source]
-        # Only phrases that settle a polyphonic character are kept: elsewhere the character
-        # table already gives the phrase's reading, and the table stays small.
-        if not any(c in unihan and (len(make_readings.modern_toneless(unihan[c])) > 1
-                                    or first_toneless(c) != s)
-                   for c, s in zip(form, syllables)):
-            continue
-        readings = [numbered_reading(c, s, unihan, f) for c, s, f in zip(form, syllables, source)]
-        if None in readings:
-            unreadable += 1  # pyzy reads a character in a way no Unihan field knows: not trusted
-            continue
-        table[form] = readings
-    lines = [f"{form}\t{' '.join(readings)}" for form, readings in sorted(table.items())]
+        # A word whose characters all take their first reading needs no readings of its own: it
+        # is there for its cost, which decides how the words around it are cut. One that settles
+        # a polyphonic character carries its readings.
+        settles = len(form) > 1 and any(
+            c in unihan and (len(make_readings.modern_toneless(unihan[c])) > 1 or first_toneless(c) != s)
+            for c, s in zip(form, syllables))
+        readings = []
+        if settles:
+            readings = [numbered_reading(c, s, unihan, f) for c, s, f in zip(form, syllables, source)]
+            if None in readings:
+                unreadable += 1  # pyzy reads a character in a way no Unihan field knows: not trusted
+                continue
+        table[form] = (costs[source], readings)
+    lines = [f"{form}\t{cost}" + (f"\t{' '.join(readings)}" if readings else "")
+             for form, (cost, readings) in sorted(table.items())]
     embed_text.write_cpp(
         OUTPUT, "tools/make_phrases.py",
         ["Modified data derived from the Android Open Source Project's Pinyin IME phrase list as",
          "shipped in Debian libpyzy-1.0-0v5 (android.db), Copyright 2008-2010 The Android Open",
-         "Source Project, Apache License 2.0: pinyin ids decoded, phrases filtered to those that",
-         "settle a polyphonic character, Traditional forms added with OpenCC (Apache License",
-         "2.0), tones chosen from Unihan (Copyright (c) 1991-2022 Unicode, Inc., Unicode License)."],
+         "Source Project, Apache License 2.0: frequency ranks turned into word costs, pinyin ids",
+         "decoded and kept only where they settle a polyphonic character, Traditional forms added",
+         "with OpenCC (Apache License 2.0), tones chosen from Unihan (Copyright (c) 1991-2022",
+         "Unicode, Inc., Unicode License)."],
         {"phrases_text": lines})
-    print(f"make_phrases: {len(simplified)} Simplified phrases, {len(lines)} kept with Traditional "
-          f"forms, {unreadable} dropped (reading not in Unihan) -> {os.path.relpath(OUTPUT, ROOT)}")
+    with_readings = sum(1 for _, readings in table.values() if readings)
+    print(f"make_phrases: {len(simplified)} Simplified words, {len(lines)} with Traditional forms, "
+          f"{with_readings} of them with readings, {unreadable} dropped (reading not in Unihan) "
+          f"-> {os.path.relpath(OUTPUT, ROOT)}")
 
 
 if __name__ == "__main__":

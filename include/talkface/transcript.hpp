@@ -31,9 +31,10 @@ struct TranscriptOptions {
 ///   stay with the sentence); text after the last mark is a sentence too. Line breaks, blank
 ///   lines and spaces do not end a sentence.
 /// - ，、：and , : mark a pause after the syllable before them (Syllable::pause_after).
-/// - Each character with a reading is one syllable. A polyphonic character is read by the
-///   longest word of the built-in phrase table that covers it (首都 shou3 du1, 都是 dou1 shi4),
-///   otherwise by its most frequent reading. Tones are the most frequent tone for that toneless
+/// - Each character with a reading is one syllable. A polyphonic character is read by the word
+///   it stands in (首都 shou3 du1, 都是 dou1 shi4): a run of characters is cut into its likeliest
+///   words by the built-in phrase list's word frequencies (亿人参加: 人 参加 can1 jia1, not 人参
+///   ren2 shen1), otherwise by its most frequent reading. Tones are the most frequent tone for that toneless
 ///   reading: a best guess (lips do not depend on tone), not tone sandhi.
 /// - A reading fix right after a character overrides it: 行{hang2}, 了{liao3}; the tone digit
 ///   may be left out (tone 5).

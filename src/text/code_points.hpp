@@ -26,6 +26,14 @@ inline char32_t ascii_form(char32_t c) {
     return c >= 0xFF01 && c <= 0xFF5E ? c - 0xFEE0 : c;
 }
 
+inline bool is_ascii_capital(char32_t c) {
+    return c >= 'A' && c <= 'Z';
+}
+
+inline bool is_ascii_letter(char32_t c) {
+    return is_ascii_capital(c) || (c >= 'a' && c <= 'z');
+}
+
 }  // namespace talkface::detail
 
 #endif

@@ -18,7 +18,9 @@ struct EmbeddedText {
 EmbeddedText readings_text();
 // Every legal toneless syllable, one per line (tools/make_readings.py).
 EmbeddedText syllables_text();
-// "詞語\tci2 yu3": a word and the reading of each of its characters (tools/make_phrases.py).
+// "詞語\tcost" or "詞語\tcost\tci2 yu3": a word of one or more characters, -ln P(word) in
+// hundredths, and, where it settles a polyphonic character, the reading of each of its
+// characters (tools/make_phrases.py).
 EmbeddedText phrases_text();
 // "word\tsyl1 syl2": a lowercase English word and its Mandarin-like syllables, sorted by byte
 // value (tools/make_english.py).

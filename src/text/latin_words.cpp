@@ -8,6 +8,7 @@
 
 #include "common/internal_error.hpp"
 #include "talkface/errors.hpp"
+#include "text/code_points.hpp"
 #include "text/embedded_text.hpp"
 
 namespace talkface::detail {
@@ -24,12 +25,14 @@ const char* const kLetterNames[26] = {
 
 // Words Mandarin speakers say their own way, where the dictionary's mapping misses it or it lacks
 // them (docs/written-forms.md): email is 伊妹儿 (the mapping of its first vowel gave "e"); COVID
-// and SARS, written in capitals, are said as words (扣维德, 萨斯), not spelled.
+// and SARS, written in capitals, are said as words (扣维德, 萨斯), not spelled; NVIDIA, which the
+// dictionary lacks, is said by its Chinese name, 英伟达.
 constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     {"email", "yi1 mei4 er5"},
     {"e-mail", "yi1 mei4 er5"},
     {"covid", "kou1 wei2 de5"},
     {"sars", "sa4 si1"},
+    {"nvidia", "ying1 wei3 da2"},
 };
 
 std::string lower_case(std::string_view word) {
@@ -93,6 +96,17 @@ std::vector<std::string> letter_syllables(std::string_view letters) {
         append_words(syllables, kLetterNames[upper - 'A']);
     }
     return syllables;
+}
+
+bool is_all_capitals(std::string_view word) {
+    return !word.empty() && std::all_of(word.begin(), word.end(), [](char letter) { return is_ascii_capital(letter); });
+}
+
+bool has_inner_acronym(std::string_view word) {
+    for (std::size_t i = 0; i + 2 < word.size(); ++i) {
+        if (word[i] >= 'a' && word[i] <= 'z' && is_ascii_capital(word[i + 1]) && is_ascii_capital(word[i + 2])) return true;
+    }
+    return false;
 }
 
 bool is_said_as_word(std::string_view word) {

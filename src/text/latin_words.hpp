@@ -20,6 +20,13 @@ std::vector<std::string> letter_syllables(std::string_view letters);
 // the dictionary does not have it.
 std::optional<std::vector<std::string>> english_word_syllables(std::string_view word);
 
+// True for a word of ASCII capitals only (CEO, NASA), false for an empty one.
+bool is_all_capitals(std::string_view word);
+
+// True for a word with two or more capitals after a small letter (iOS, macOS): an acronym inside
+// a word, said letter by letter, not as the dictionary's word.
+bool has_inner_acronym(std::string_view word);
+
 // True where a word in capitals is said as a word, not letter by letter (COVID, SARS): the words
 // Mandarin speakers say their own way.
 bool is_said_as_word(std::string_view word);

@@ -46,6 +46,15 @@ std::pair<std::string_view, std::vector<std::string_view>> parse_line(std::strin
     return {line.substr(0, tab), split(line.substr(tab + 1), ' ')};
 }
 
+int parse_cost(std::string_view digits, std::string_view line) {
+    const bool is_number = !digits.empty() && digits.size() < 7 &&
+                           std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (!is_number) throw internal_error("phrase table line \"" + std::string(line) + "\" has no cost");
+    int cost = 0;
+    for (const char digit : digits) cost = cost * 10 + (digit - '0');
+    return cost;
+}
+
 ReadingTables build_tables() {
     ReadingTables tables;
     for_each_line(syllables_text(), [&](std::string_view line) { tables.toneless_syllables.insert(line); });
@@ -53,11 +62,25 @@ ReadingTables build_tables() {
         auto [character, readings] = parse_line(line);
         tables.character_readings.emplace(character, std::move(readings));
     });
+    // "詞語\tcost" or "詞語\tcost\tci2 yu3".
     for_each_line(phrases_text(), [&](std::string_view line) {
-        auto [phrase, readings] = parse_line(line);
-        tables.longest_phrase_characters =
-            std::max(tables.longest_phrase_characters, count_characters(phrase));
-        tables.phrase_readings.emplace(phrase, std::move(readings));
+        const auto fields = split(line, '\t');
+        if (fields.size() < 2 || fields.size() > 3) {
+            throw internal_error("phrase table line \"" + std::string(line) + "\" is not word, cost, readings");
+        }
+        const auto word = fields[0];
+        Word entry;
+        entry.cost = parse_cost(fields[1], line);
+        if (fields.size() == 3) entry.readings = split(fields[2], ' ');
+        const auto characters = count_characters(word);
+        if (!entry.readings.empty() && entry.readings.size() != characters) {
+            throw internal_error("phrase table line \"" + std::string(line) + "\" has " +
+                                 std::to_string(entry.readings.size()) + " readings for " +
+                                 std::to_string(characters) + " characters");
+        }
+        tables.longest_word_characters = std::max(tables.longest_word_characters, characters);
+        if (characters == 1) tables.unknown_character_cost = std::max(tables.unknown_character_cost, entry.cost);
+        tables.words.emplace(word, std::move(entry));
     });
     return tables;
 }

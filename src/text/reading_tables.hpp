@@ -12,12 +12,24 @@
 
 namespace talkface::detail {
 
+// A word of the phrase list (tools/make_phrases.py), one character or more.
+struct Word {
+    // -ln P(word) in hundredths: what the word costs a cut of the text into words
+    // (word_segmentation.hpp).
+    int cost = 0;
+    // One numbered reading per character where the word settles a polyphonic character (首都
+    // shou3 du1); empty where each character takes its first reading.
+    std::vector<std::string_view> readings;
+};
+
 struct ReadingTables {
     // UTF-8 character -> its readings in numbered pinyin, most frequent first.
     std::unordered_map<std::string_view, std::vector<std::string_view>> character_readings;
-    // UTF-8 word -> one numbered reading per character.
-    std::unordered_map<std::string_view, std::vector<std::string_view>> phrase_readings;
-    std::size_t longest_phrase_characters = 0;
+    // UTF-8 word -> its cost and readings.
+    std::unordered_map<std::string_view, Word> words;
+    std::size_t longest_word_characters = 0;
+    // The cost of a character the phrase list lacks: that of its rarest one-character word.
+    int unknown_character_cost = 0;
     std::unordered_set<std::string_view> toneless_syllables;
 };
 

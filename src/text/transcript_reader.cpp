@@ -1,6 +1,6 @@
 // Transcript -> sentences and syllables [thesis 3.3.2; SPEC "Transcript to syllables"]. The
-// thesis picked the reading of each polyphonic character by hand; here a phrase table decides
-// (longest match first), then the character's most frequent reading.
+// thesis picked the reading of each polyphonic character by hand; here the word it stands in
+// decides (word_segmentation.hpp), then the character's most frequent reading.
 #include "talkface/transcript.hpp"
 
 #include <algorithm>
@@ -15,6 +15,7 @@
 #include "text/latin_words.hpp"
 #include "text/reading_tables.hpp"
 #include "text/script_variant.hpp"
+#include "text/word_segmentation.hpp"
 #include "text/written_numbers.hpp"
 
 namespace talkface {
@@ -25,6 +26,8 @@ namespace {
 using detail::ascii_form;
 using detail::CodePoint;
 using detail::decode_utf8;
+using detail::is_ascii_capital;
+using detail::is_ascii_letter;
 
 bool is_space(char32_t c) {
     return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f' || c == 0xA0 ||
@@ -172,23 +175,11 @@ bool has_tone_digit(const std::vector<CodePoint>& token) {
     return std::any_of(token.begin(), token.end(), [](const CodePoint& c) { return is_digit(c.value); });
 }
 
-bool is_all_capitals(const std::vector<CodePoint>& token) {
-    return std::all_of(token.begin(), token.end(), [](const CodePoint& c) { return c.value >= 'A' && c.value <= 'Z'; });
-}
-
 struct HanCharacter {
     const CodePoint* code_point;  // where it stands in the transcript; nullptr in a form's reading
     std::string_view text;
     std::string fix;  // a reading fix, normalised; empty if none
 };
-
-bool is_ascii_letter(char32_t c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
-}
-
-bool is_ascii_capital(char32_t c) {
-    return c >= 'A' && c <= 'Z';
-}
 
 std::string toneless_of(const std::string& pinyin) {
     return pinyin.substr(0, pinyin.size() - 1);
@@ -265,7 +256,8 @@ private:
         // has (men, long, email) or all in capitals (A股) is English or letters, not pinyin:
         // pinyin inside Chinese text carries its tones (docs/written-forms.md).
         const bool is_english_among_han =
-            has_han_ && !has_tone_digit(token) && (is_all_capitals(token) || detail::english_word_syllables(written_text(text, start, end)));
+            has_han_ && !has_tone_digit(token) &&
+            (detail::is_all_capitals(written_text(text, start, end)) || detail::english_word_syllables(written_text(text, start, end)));
         if (options_.read_pinyin && looks_like_pinyin(token) && !is_english_among_han) syllables = split_pinyin(token);
         if (!syllables) return read_latin(text, start);
         for (const auto& c : token) append_text(c.text);
@@ -301,9 +293,10 @@ private:
             }
         }
         std::vector<Syllable> syllables;
-        const bool is_capitals = std::all_of(word.begin(), word.end(), [](char l) { return is_ascii_capital(l); });
-        if (is_capitals && !detail::is_said_as_word(word)) {
+        if (detail::is_all_capitals(word) && !detail::is_said_as_word(word)) {
             syllables = read_capitals(word);
+        } else if (detail::has_inner_acronym(word)) {
+            syllables = read_word_parts(word, text[start]);
         } else if (auto found = detail::english_word_syllables(word)) {
             syllables = said_syllables(*found);
         } else {
@@ -349,8 +342,8 @@ private:
         return syllables;
     }
 
-    // A word the dictionary lacks, by the parts its capitals mark (WeChat, YouTube), or as two
-    // words it has (Facebook); a part still unknown is generic speech of about as many syllables
+    // A word the dictionary lacks or with an acronym inside, by the parts its capitals mark
+    // (WeChat, YouTube, iOS), or as two words it has (Facebook); a part still unknown is generic speech of about as many syllables
     // as its spelling has (or spelled, if it has no vowel), with a warning.
     std::vector<Syllable> read_word_parts(const std::string& word, const CodePoint& at) {
         std::vector<std::string> parts;
@@ -362,6 +355,11 @@ private:
         }
         std::vector<Syllable> syllables;
         for (const auto& part : parts) {
+            // A part in capitals is an acronym or a word in capitals (iOS: i + OS, ou ai si).
+            if (part.size() > 1 && detail::is_all_capitals(part)) {
+                for (auto& syllable : read_capitals(part)) syllables.push_back(std::move(syllable));
+                continue;
+            }
             auto found = parts.size() > 1 ? detail::english_word_syllables(part) : std::nullopt;
             if (!found) found = read_compound(part);
             std::vector<Syllable> read;
@@ -491,35 +489,30 @@ private:
         last_form_end_.reset();
     }
 
-    // The readings of a run of Chinese characters: longest phrase first, then each character's
-    // most frequent reading; fixes win over both.
+    // The readings of a run of Chinese characters: the run is cut into its likeliest words, each
+    // word read by the phrase table, or each of its characters by its most frequent reading;
+    // fixes win over both.
     std::vector<std::string> read_han(const std::vector<HanCharacter>& run) const {
+        std::vector<std::string_view> characters;
+        for (const auto& character : run) characters.push_back(character.text);
         std::vector<std::string> readings_of_run;
-        for (std::size_t i = 0; i < run.size();) {
-            std::size_t matched = 1;
-            const std::vector<std::string_view>* readings = nullptr;
-            for (auto length = std::min(tables_.longest_phrase_characters, run.size() - i); length >= 2;
-                 --length) {
-                std::string phrase;
-                for (std::size_t k = i; k < i + length; ++k) phrase += run[k].text;
-                const auto found = tables_.phrase_readings.find(phrase);
-                if (found != tables_.phrase_readings.end() && found->second.size() == length) {
-                    readings = &found->second;
-                    matched = length;
-                    break;
-                }
-            }
-            for (std::size_t k = 0; k < matched; ++k) {
-                const auto& character = run[i + k];
+        std::size_t first = 0;
+        for (const auto length : detail::likeliest_words(characters, tables_)) {
+            std::string word;
+            for (std::size_t k = first; k < first + length; ++k) word += run[k].text;
+            const auto found = tables_.words.find(word);
+            const bool has_readings = found != tables_.words.end() && !found->second.readings.empty();
+            for (std::size_t k = 0; k < length; ++k) {
+                const auto& character = run[first + k];
                 std::string pinyin = character.fix;
                 if (pinyin.empty()) {
-                    pinyin = readings != nullptr ? std::string((*readings)[k])
-                                                 : std::string(tables_.character_readings.at(character.text).front());
+                    pinyin = has_readings ? std::string(found->second.readings[k])
+                                          : std::string(tables_.character_readings.at(character.text).front());
                     check_table_reading(character, pinyin);
                 }
                 readings_of_run.push_back(std::move(pinyin));
             }
-            i += matched;
+            first += length;
         }
         return readings_of_run;
     }

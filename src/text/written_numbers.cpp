@@ -18,10 +18,6 @@ char32_t value_at(const std::vector<CodePoint>& text, std::size_t i) {
     return i < text.size() ? ascii_form(text[i].value) : 0;
 }
 
-bool is_ascii_letter(char32_t c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
-}
-
 std::string digits_from(const std::vector<CodePoint>& text, std::size_t& i) {
     std::string digits;
     while (is_digit_at(text, i)) digits += static_cast<char>(ascii_form(text[i++].value));
@@ -63,12 +59,13 @@ bool is_one_of(char32_t c, std::u32string_view set) {
     return set.find(c) != std::u32string_view::npos;
 }
 
-// Measure words and magnitudes before which 2 is 两 (两本书, 两个, 两万). Not 月 号 日 楼 路 度,
-// where 2 is a name or an ordinal (二月, 二号, 二楼).
+// Measure words and magnitudes before which 2 is 两 (两本书, 两个, 两万, 两步, 两男三女). Not 月 号
+// 日 楼 路 度 代, where 2 is a name or an ordinal (二月, 二号, 二楼, 二代).
 bool takes_liang(char32_t c) {
     return is_one_of(c, U"个個本位名只隻条條张張件次天年岁歲人种種块塊元倍台臺部辆輛家份杯碗瓶双雙对對层層场場"
                         U"周週遍斤米千万萬亿億百项項篇首页頁座所间間节節门門架把支枝根片头頭匹颗顆粒趟套声聲句"
-                        U"样樣章口股群批排队隊段堆吨噸升克里码碼毛角点點成分秒小公届屆期美港欧歐英");
+                        U"样樣章口股群批排队隊段堆吨噸升克里码碼毛角点點成分秒小公届屆期美港欧歐英"
+                        U"步下回圈眼拳脚腳刀枪槍盒包袋箱桶罐盘盤幅集册冊封轮輪局男女");
 }
 
 // Words before which a number names a room, a bus route or a house, said digit by digit when it
@@ -93,15 +90,68 @@ std::string text_between(const std::vector<CodePoint>& text, std::size_t first, 
     return between;
 }
 
-// A service number is dialled or named: a dialling word right before it (打110, 拨打120, call
-// 10086) or a service's name right after it (110报警, 120急救车).
+bool ends_with(const std::string& text, std::string_view end) {
+    return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+// Names of a service, said with its number: before it (客服热线10086) or after it (110报警).
+constexpr std::string_view kServiceWords[] = {"报警", "報警", "急救", "火警", "查号", "查號", "热线", "熱線", "电话",
+                                              "電話", "服务", "服務", "客服", "求助", "救护", "救護", "平台", "平臺",
+                                              "专线", "專線", "中心", "号码", "號碼"};
+
+// A service number is dialled or named: a dialling word before it, with nothing between but
+// the service's name or 给 (打110, 拨打客服热线10086, 打给120), or a service's name right after
+// it (110报警, 120急救车).
 bool is_service_call(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
-    const std::string before = text_between(text, start >= 3 ? start - 3 : 0, start);
-    const std::string after = text_between(text, end, end + 2);
+    constexpr std::size_t kLookBack = 12;  // code points: a dialling word and a service's name or two
+    std::string before = text_between(text, start >= kLookBack ? start - kLookBack : 0, start);
+    for (bool stripped = true; stripped;) {
+        stripped = false;
+        for (const std::string_view word : kServiceWords) {
+            if (ends_with(before, word)) {
+                before.erase(before.size() - word.size());
+                stripped = true;
+            }
+        }
+        for (const std::string_view word : {"给", "給", " "}) {
+            if (ends_with(before, word)) {
+                before.erase(before.size() - word.size());
+                stripped = true;
+            }
+        }
+    }
     for (const std::string_view word : {"打", "拨", "撥", "叫", "call", "Call"})
-        if (before.size() >= word.size() && before.compare(before.size() - word.size(), word.size(), word) == 0) return true;
-    for (const std::string_view word : {"报警", "報警", "急救", "火警", "查号", "查號", "热线", "熱線", "电话", "電話",
-                                        "服务", "服務", "客服", "求助", "救护", "救護", "平台", "平臺"})
+        if (ends_with(before, word)) return true;
+    const std::string after = text_between(text, end, end + 2);
+    for (const std::string_view word : kServiceWords)
+        if (after.rfind(word, 0) == 0) return true;
+    return false;
+}
+
+// The text before text[start] back to the last end mark or line break (the sentence so far), and
+// with `clause_only` to the last pause mark too.
+std::string text_before(const std::vector<CodePoint>& text, std::size_t start, bool clause_only) {
+    std::string before;
+    for (std::size_t i = start; i-- > 0;) {
+        const auto c = ascii_form(text[i].value);
+        if (c == '.' || c == '!' || c == '?' || c == ';' || c == 0x3002 || c == '\n') break;
+        if (clause_only && (c == ',' || c == 0x3001 /*、*/)) break;
+        before.insert(0, text[i].text);
+    }
+    return before;
+}
+
+// Two numbers joined by a colon are a score, not a clock time, where the sentence speaks of a
+// match: a score word earlier in the clause (比分是21:19) or a result right after (2:0战胜,
+// 21:19获胜). Without either, a colon that can be a time is one (下午3:30).
+bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    const std::string before = text_before(text, start, true);
+    for (const std::string_view word : {"比分", "比數", "比数", "战成", "戰成", "打成", "踢成"})
+        if (before.find(word) != std::string::npos) return true;
+    const std::string after = text_between(text, end, end + 2);
+    for (const std::string_view word : {"战胜", "戰勝", "击败", "擊敗", "获胜", "獲勝", "取胜", "取勝", "领先", "領先",
+                                        "落后", "落後", "险胜", "險勝", "大胜", "大勝", "完胜", "完勝", "逆转", "逆轉",
+                                        "告负", "告負", "胜", "勝", "负", "負", "赢", "贏", "输", "輸"})
         if (after.rfind(word, 0) == 0) return true;
     return false;
 }
@@ -116,14 +166,10 @@ bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start) {
 
 // A word earlier in the sentence that makes the numbers after it phone numbers.
 bool follows_phone_word(const std::vector<CodePoint>& text, std::size_t start) {
-    std::string before;
-    for (std::size_t i = start; i-- > 0;) {
-        const auto c = ascii_form(text[i].value);
-        if (c == '.' || c == '!' || c == '?' || c == ';' || c == 0x3002 || c == '\n') break;
-        before.insert(0, text[i].text);
-    }
+    const std::string before = text_before(text, start, false);
     for (const std::string_view word : {"电话", "電話", "手机", "手機", "号码", "號碼", "热线", "熱線", "拨打",
-                                        "撥打", "致电", "致電", "分机", "分機", "传真", "傳真"}) {
+                                        "撥打", "致电", "致電", "分机", "分機", "传真", "傳真", "座机", "座機",
+                                        "固话", "固話"}) {
         if (before.find(word) != std::string::npos) return true;
     }
     return false;
@@ -371,14 +417,15 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     context.is_named = follows_name_word(text, start);
     context.is_service_call = is_service_call(text, start, number.end);
     SpokenForm form;
-    if (sign_words.empty() && currency == nullptr && value_at(text, number.end) == ':') {
-        if (auto time = read_clock_time(text, number)) return time;
-        if (is_digit_at(text, number.end + 1)) {
-            auto second = parse_number(text, number.end + 1);
-            form.words = say_number(number, context).words + "比" + say_number(second, context).words;
-            form.end = second.end;
-            return form;
+    if (sign_words.empty() && currency == nullptr && value_at(text, number.end) == ':' &&
+        is_digit_at(text, number.end + 1)) {
+        auto second = parse_number(text, number.end + 1);
+        if (!is_score(text, start, second.end)) {
+            if (auto time = read_clock_time(text, number)) return time;
         }
+        form.words = say_number(number, context).words + "比" + say_number(second, context).words;
+        form.end = second.end;
+        return form;
     }
     // 7×24 七乘二十四: a product, each number said alone.
     if (is_one_of(value_at(text, number.end), U"×*") && is_digit_at(text, number.end + 1) && currency == nullptr) {

@@ -242,10 +242,41 @@ TEST_SUITE("written forms") {
             {"COVID-19疫情", "kou wei de十九疫情"},
             {"SARS", "sa si"},
         });
-        const auto timeline = read_transcript("NVIDIA");
-        REQUIRE(timeline.syllables.size() == 2);
+        const auto timeline = read_transcript("ZOLAXO");
+        REQUIRE(timeline.syllables.size() == 3);
         CHECK(timeline.syllables[0].generic_speech);
         CHECK(timeline.warnings.empty());
+    }
+
+    TEST_CASE("a word in capitals with a Chinese name is said by it, an acronym inside a word letter by letter") {
+        check_cases({
+            {"NVIDIA的股价", "ying wei da的股价"},
+            {"iOS 17系统", "ai ou ai si十七系统"},
+            {"iPhone", "ai feng"},
+        });
+    }
+
+    TEST_CASE("a sweep of news and game lines: service numbers, scores, 两 and extensions") {
+        check_cases({
+            // A dialling word further back, with the service's name or 给 between.
+            {"打给120", "打给幺二零"},
+            {"快叫救护车，打给120！", "快叫救护车打给幺二零"},
+            {"请立即拨打急救中心120", "请立即拨打急救中心幺二零"},
+            {"打败了120名对手", "打败了一百二十名对手"},
+            // A score where the clause speaks of a match; a time elsewhere.
+            {"比分是21:19，主队赢了", "比分是二十一比十九主队赢了"},
+            {"主队21:19获胜", "主队二十一比十九获胜"},
+            {"中国队以2:0战胜对手", "中国队以二比零战胜对手"},
+            {"下午3:30开会", "下午三点三十分开会"},
+            {"21:19出发", "二十一点十九分出发"},
+            // 两 before more measure words; 二代 stays.
+            {"走了2步", "走了两步"},
+            {"我们组有2男3女", "我们组有两男三女"},
+            {"砍了2刀", "砍了两刀"},
+            {"富2代", "富二代"},
+            // An extension after a landline.
+            {"座机是010-88886666转203", "座机是零幺零八八八八六六六六转二零三"},
+        });
     }
 
     TEST_CASE("every letter name and every English reading is a syllable the aligner and the lips take") {
