@@ -1369,7 +1369,7 @@ typedef enum tf_video_format {
     TF_VIDEO_WEBM = 1,         /* .webm: VP9 + Opus; transparent: with an alpha channel */
     TF_VIDEO_WEBP = 2,         /* .webp: animated WebP, looping, no sound */
     TF_VIDEO_PNG_SEQUENCE = 3, /* .png: OUT-000000.png, OUT-000001.png, ..., no sound */
-    TF_VIDEO_GIF = 4           /* .gif: animated GIF, looping, no sound; one palette for all frames, 1..50 fps */
+    TF_VIDEO_GIF = 4           /* .gif: animated GIF, looping, no sound; one palette from the first frames, 1..50 fps */
 } tf_video_format;
 
 /* The format of an output path by its extension (either case).

@@ -35,10 +35,11 @@ enum class VideoFormat : int {
     webm = 1,          ///< .webm: VP9 + Opus; transparent: yuva420p, an alpha channel editors and Chromium read
     webp = 2,          ///< .webp: animated WebP, no sound; chats
     png_sequence = 3,  ///< .png: OUT-000000.png, OUT-000001.png, ... (frame k at k / fps), no sound
-    /// .gif: animated GIF, looping, no sound; chats. One palette of 255 colours made for all the
-    /// frames, which are kept (compressed) until finish(); 1..50 fps, as players show a frame for
-    /// whole hundredths of a second and take shorter than 0.02 s as 0.1 s; transparent: alpha
-    /// under half is GIF's transparent colour.
+    /// .gif: animated GIF, looping, no sound; chats. One palette of 255 colours, made from the
+    /// first frames (all of a short GIF; 32 MB of them kept compressed, 25 s of a talking face at
+    /// 720p), the rest written as they come, so memory stays bounded; 1..50 fps, as players show
+    /// a frame for whole hundredths of a second and take shorter than 0.02 s as 0.1 s;
+    /// transparent: alpha under half is GIF's transparent colour.
     gif = 4,
 };
 

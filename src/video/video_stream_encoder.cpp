@@ -143,7 +143,7 @@ VideoStreamEncoder::VideoStreamEncoder(VideoFormat format, const VideoOptions& o
 
 void VideoStreamEncoder::encode(const std::uint8_t* rgba, std::size_t stride_bytes, const PacketSink& sink) {
     if (gif_frames_) {
-        gif_frames_->add(rgba, stride_bytes);
+        gif_frames_->add(rgba, stride_bytes, [&](AVFrame* frame) { send(frame, sink); });
         ++next_pts_;
         return;
     }

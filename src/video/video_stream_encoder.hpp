@@ -42,7 +42,7 @@ private:
     CodecContextPtr encoder_;
     std::optional<Yuv420Converter> yuv_converter_;  // H.264 and VP9
     ScaleContextPtr converter_;                      // WebP and PNG: libswscale
-    std::optional<GifFrames> gif_frames_;            // GIF: all frames, then one palette
+    std::optional<GifFrames> gif_frames_;            // GIF: one palette from the first frames
     FramePtr frame_;
     PacketPtr packet_;
     std::int64_t next_pts_ = 0;

@@ -230,6 +230,43 @@ TEST_CASE("GIF: one palette for all the frames, looping, as long as its frames, 
     CHECK(std::distance(std::filesystem::directory_iterator(folder), std::filesystem::directory_iterator()) == 1);
 }
 
+TEST_CASE("GIF: frames past the palette's sample are mapped as they come, each exact") {
+    // Noise of 16 colours deflates poorly (900 KB a frame at 1280x720): the palette's sample (the
+    // first 32 MB of kept frames) ends within some 36 frames, and the rest are mapped to its
+    // palette as they are written.
+    const std::string path = fresh_folder("gif_long") + "/long.gif";
+    const int width = 1280, height = 720;
+    const long frame_count = 60;
+    const auto noise = [&](long index) {
+        std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * height * 4);
+        std::uint32_t state = 2654435761u * static_cast<std::uint32_t>(index + 1);
+        for (std::size_t pixel = 0; pixel < rgba.size(); pixel += 4) {
+            state = state * 1664525u + 1013904223u;
+            const std::uint32_t colour = state >> 28;  // 0..15
+            rgba[pixel] = static_cast<std::uint8_t>(colour * 17);
+            rgba[pixel + 1] = static_cast<std::uint8_t>(255 - colour * 13);
+            rgba[pixel + 2] = static_cast<std::uint8_t>((colour * 97) % 256);
+            rgba[pixel + 3] = 255;
+        }
+        return rgba;
+    };
+    {
+        VideoWriter writer(path, small(width, height, 25.0));
+        for (long index = 0; index < frame_count; ++index) writer.write_frame(noise(index).data(), width * 4);
+        writer.finish();
+    }
+    const talkface_test::MediaInfo info = talkface_test::probe_media(path);
+    REQUIRE(info.video() != nullptr);
+    CHECK(info.video()->frame_count == frame_count);
+    for (const long index : {0L, 45L, frame_count - 1}) {
+        CAPTURE(index);
+        int decoded_width = 0, decoded_height = 0;
+        const std::vector<std::uint8_t> rgba = talkface_test::decode_video_frame_rgba(path, index, &decoded_width,
+                                                                                      &decoded_height);
+        CHECK(rgba == noise(index));
+    }
+}
+
 TEST_CASE("GIF: transparent keeps what has no alpha transparent") {
     const std::string path = fresh_folder("gif_alpha") + "/sticker.gif";
     VideoOptions options = small(120, 90, 25.0);
