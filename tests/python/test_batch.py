@@ -1,6 +1,7 @@
 """talkface.batch without a cluster: the manifest, each job kind, skipping, and files left behind.
 The jobs run on the bundled speech's shortest clip (tests/data/speech/one_sentence: 3.1 s)."""
 
+import dataclasses
 import json
 import os
 import pathlib
@@ -141,22 +142,93 @@ def test_run_job_writes_a_whole_output_and_nothing_else(tmp_path, name):
     assert result.output_size == output.stat().st_size > 0
     assert result.seconds > 0 and result.worker.endswith(f":{os.getpid()}")
     check_whole(output)
-    assert os.listdir(output.parent) == [name]
+    assert sorted(os.listdir(output.parent)) == sorted([name, f".{name}.talkface-job"])
 
 
-def test_a_job_is_skipped_while_its_output_is_newer_than_its_inputs(tmp_path):
-    transcript = tmp_path / "speech.txt"
-    transcript.write_bytes(TRANSCRIPT.read_bytes())
-    output = tmp_path / "keys.json"
-    job = batch.Job(str(AUDIO), str(transcript), str(output), seed=3)
+def copied_inputs(tmp_path):
+    """The clip's audio and transcript, and a style and a timing file, as files of the test's own."""
+    inputs = {"audio": tmp_path / "speech.wav", "transcript": tmp_path / "speech.txt",
+              "style": tmp_path / "style.json", "timing": tmp_path / "speech.json"}
+    inputs["audio"].write_bytes(AUDIO.read_bytes())
+    inputs["transcript"].write_bytes(TRANSCRIPT.read_bytes())
+    inputs["style"].write_text(talkface.ExpressionStyle.from_name("normal").to_json(), encoding="utf-8")
+    timeline = talkface.SpeechAligner().align_file(str(AUDIO), talkface.load_transcript(str(TRANSCRIPT)))
+    inputs["timing"].write_text(talkface.timeline_to_json(timeline), encoding="utf-8")
+    return inputs
+
+
+def edited_with_its_old_time(path, change):
+    """Changes a file's bytes and gives it back its time: a change no file time shows."""
+    before = path.stat()
+    change(path)
+    os.utime(path, ns=(before.st_atime_ns, before.st_mtime_ns))
+
+
+def test_a_job_is_skipped_while_its_inputs_and_options_are_those_it_was_made_from(tmp_path):
+    inputs = copied_inputs(tmp_path)
+    output = tmp_path / "page.html"
+    job = batch.Job(str(inputs["audio"]), str(inputs["transcript"]), str(output), app="plain",
+                    style=str(inputs["style"]), seed=3, timing=str(inputs["timing"]))
     assert batch.run_job(job).status == "done"
     first = output.stat().st_mtime_ns
     skipped = batch.run_job(job)
     assert (skipped.status, skipped.output_size) == ("skipped", output.stat().st_size)
     assert output.stat().st_mtime_ns == first
+    # Nothing that leaves the contents and the options as they were redoes it: newer times, the
+    # inputs copied elsewhere, the default app named.
+    for path in inputs.values():
+        os.utime(path, ns=(first + 10**9,) * 2)
+    moved = tmp_path / "moved"
+    moved.mkdir()
+    for path in inputs.values():
+        (moved / path.name).write_bytes(path.read_bytes())
+    for same in [job, dataclasses.replace(job, audio=str(moved / "speech.wav"), transcript=str(moved / "speech.txt"),
+                                          style=str(moved / "style.json"), timing=str(moved / "speech.json")),
+                 dataclasses.replace(job, app="")]:
+        assert batch.run_job(same).status == "skipped", same
+    assert output.stat().st_mtime_ns == first
     assert batch.run_job(job, force=True).status == "done"
-    os.utime(transcript, ns=(output.stat().st_mtime_ns + 10**9,) * 2)  # the transcript was edited
+
+
+@pytest.mark.parametrize("change", ["audio", "transcript", "style", "timing", "seed", "app", "named style",
+                                    "output removed", "digest removed"])
+def test_each_kind_of_change_redoes_the_job(tmp_path, change):
+    inputs = copied_inputs(tmp_path)
+    output = tmp_path / "page.html"
+    job = batch.Job(str(inputs["audio"]), str(inputs["transcript"]), str(output), app="plain",
+                    style=str(inputs["style"]), seed=3, timing=str(inputs["timing"]))
     assert batch.run_job(job).status == "done"
+    assert batch.is_up_to_date(job)
+    if change == "audio":  # a quieter recording, same length, same time
+        edited_with_its_old_time(inputs["audio"], lambda path: path.write_bytes(
+            path.read_bytes()[:44] + bytes(b & 0xFE for b in path.read_bytes()[44:])))
+    elif change == "transcript":  # one character changed, same length, same time
+        edited_with_its_old_time(inputs["transcript"], lambda path: path.write_text(
+            path.read_text(encoding="utf-8").replace("。", "！", 1), encoding="utf-8"))
+    elif change == "style":
+        edited_with_its_old_time(inputs["style"], lambda path: path.write_text(
+            talkface.ExpressionStyle.from_name("announcer").to_json(), encoding="utf-8"))
+    elif change == "timing":
+        def later(path):
+            timeline = talkface.timeline_from_json(path.read_text(encoding="utf-8"))
+            syllables = timeline.syllables
+            syllables[0].start_s += 0.01
+            timeline.syllables = syllables
+            path.write_text(talkface.timeline_to_json(timeline), encoding="utf-8")
+        edited_with_its_old_time(inputs["timing"], later)
+    elif change == "seed":
+        job = dataclasses.replace(job, seed=4)
+    elif change == "app":
+        job = dataclasses.replace(job, app="audiobook")
+    elif change == "named style":
+        job = dataclasses.replace(job, style="announcer")
+    elif change == "output removed":
+        output.unlink()
+    else:
+        (tmp_path / ".page.html.talkface-job").unlink()  # an output made before the digest was kept
+    assert not batch.is_up_to_date(job)
+    assert batch.run_job(job).status == "done"
+    assert batch.run_job(job).status == "skipped"
 
 
 def test_a_failed_job_says_why_and_leaves_no_file(tmp_path):

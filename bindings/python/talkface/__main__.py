@@ -27,8 +27,8 @@ def parse_arguments(argv):
         description="Runs one job a row of a CSV manifest (columns audio,transcript,output and optionally "
         "face,app,style,seed,timing; paths relative to the manifest) on a Dask cluster. The output's "
         "extension picks the job: .html page, .svg animation, .mp4/.webm/.webp/.gif video, .json key frames, "
-        ".tsv/.xml/.dat/.motion3.json/.TextGrid/.srt/.vtt export. Jobs whose output is newer than all "
-        "their inputs are skipped. docs/batch.md.",
+        ".tsv/.xml/.dat/.motion3.json/.TextGrid/.srt/.vtt export. Jobs whose output was made from the same "
+        "inputs and options are skipped. docs/batch.md.",
         epilog="exit status: 0 every job done or skipped; 1 some job failed, or the manifest is wrong; "
         "2 usage error; 130 interrupted",
     )
@@ -158,7 +158,7 @@ def run_batch(options):
     counts = progress.counts
     summary = f"talkface: {len(jobs)} jobs: {counts['done']} done, {counts['skipped']} skipped"
     if counts["skipped"]:
-        summary += " (their outputs are newer than their inputs; --force redoes them)"
+        summary += " (made before from the same inputs and options; --force redoes them)"
     summary += f", {counts['failed']} failed"
     print(summary, file=sys.stderr)
     return EXIT_FAILED if counts["failed"] else 0

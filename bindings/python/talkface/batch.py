@@ -10,9 +10,9 @@ for callers who bring another engine (Ray, Spark, a process pool)::
     results = talkface.batch.run(jobs, workers=8)
     failed = [result for result in results if result.status == "failed"]
 
-Outputs are written whole or not at all (a temporary file beside the output, renamed), a job whose
-output is newer than all its inputs is skipped unless force is set, and a failed job does not stop
-the others. Nothing here prints. docs/batch.md has the manifest's columns and the cluster setups.
+Outputs are written whole or not at all (a temporary file beside the output, renamed), a job done
+before with the same inputs and options is skipped unless force is set (job_digest, kept beside
+the output), and a failed job does not stop the others. Nothing here prints. docs/batch.md has the manifest's columns and the cluster setups.
 """
 
 from __future__ import annotations
@@ -20,6 +20,8 @@ from __future__ import annotations
 import csv
 import dataclasses
 import glob
+import hashlib
+import json
 import os
 import socket
 import time
@@ -31,6 +33,7 @@ __all__ = [
     "Job",
     "JobResult",
     "MANIFEST_COLUMNS",
+    "job_digest",
     "job_kind",
     "local_cluster",
     "read_manifest",
@@ -96,7 +99,7 @@ class JobResult:
 
     Attributes:
         job: the job.
-        status: "done", "skipped" (the output was newer than every input) or "failed".
+        status: "done", "skipped" (the output was made from the same inputs and options) or "failed".
         seconds: the job's own wall time on its worker (0 if it never ran).
         output_size: the output's size in bytes (0 if failed).
         message: why it failed ("" otherwise); talkface's messages name the file, line or time.
@@ -212,11 +215,13 @@ def run_job(job: Job, force: bool = False,
             progress: Optional[Callable[[float, str], Optional[bool]]] = None) -> JobResult:
     """Does one job in this process and says how it went; never raises for a failed job.
 
-    Skips the job ("skipped") if its output is newer than every input, unless force. Otherwise
+    Skips the job ("skipped") if its output was made from the same inputs and options (is_up_to_date),
+    unless force. Otherwise
     aligns the speech (or times it by job.timing), animates the face and writes the output through
     a temporary file beside it that is renamed: a failure, a cancel or a killed process leaves no
     output (a killed process's temporary file, OUTPUT.tmp-XXXXXX, is removed when the job runs
-    again). The output's folder is created if missing.
+    again). The output's folder is created if missing. The job's digest (job_digest) is written
+    beside the output once the output is whole.
 
     This is the function to call from another engine (Ray, Spark, multiprocessing): it reads its
     inputs and writes its output itself and returns a picklable JobResult. Thread-safe.
@@ -231,12 +236,15 @@ def run_job(job: Job, force: bool = False,
     worker = f"{socket.gethostname()}:{os.getpid()}"
     try:
         remove_temporary_files(job.output)
-        if not force and is_up_to_date(job):
+        # Taken before the work: an input changed while the job reads it makes the next run redo it.
+        digest = job_digest(job)
+        if not force and _kept_digest(job.output) == digest and os.path.exists(job.output):
             return JobResult(job, "skipped", time.monotonic() - start, os.stat(job.output).st_size, "", worker)
         folder = os.path.dirname(job.output)
         if folder:
             os.makedirs(folder, exist_ok=True)
         _make_output(job, progress)
+        _write_atomically(digest_path(job.output), digest + "\n")
         size = os.stat(job.output).st_size
         return JobResult(job, "done", time.monotonic() - start, size, "", worker)
     except talkface.Error as error:
@@ -249,17 +257,69 @@ def run_job(job: Job, force: bool = False,
 
 
 def is_up_to_date(job: Job) -> bool:
-    """True if the output exists and was modified after every input (a missing input: False)."""
+    """True if the output exists and the digest kept beside it is the job's digest now (job_digest):
+    made by this talkface from inputs of the same contents with the same options. False if an
+    input cannot be read (the job then fails and says why)."""
     try:
-        output_ns = os.stat(job.output).st_mtime_ns
-        return all(os.stat(path).st_mtime_ns < output_ns for path in job.inputs())
+        return os.path.exists(job.output) and _kept_digest(job.output) == job_digest(job)
     except OSError:
         return False
 
 
+def job_digest(job: Job) -> str:
+    """SHA-256 (hex) of what a job's output depends on: talkface's version, the kind of output, the
+    options that apply to it (app, named style, seed) and the contents of its input files (audio,
+    transcript, and face, style and timing files if given). Not file times, nor paths: an input
+    edited with an old time counts as changed; the same files moved or touched do not.
+
+    Raises:
+        OSError: an input cannot be read.
+    """
+    kind = job_kind(job.output)
+    options = {"talkface": talkface.__version__, "kind": kind, "seed": job.seed}
+    if kind == "page":
+        options["app"] = job.app or "plain"
+    elif kind == "video":
+        options["app"] = job.app or "announcer"
+    files = {"audio": job.audio, "transcript": job.transcript, "timing": job.timing}
+    if not kind.startswith("export:"):  # an export's timing does not depend on the face
+        files["face"] = job.face
+    if job.style in _NAMED_STYLES:
+        options["style"] = job.style
+    else:
+        files["style"] = job.style
+    digest = hashlib.sha256(json.dumps(options, sort_keys=True).encode())
+    for name, path in sorted(files.items()):
+        if not path:
+            digest.update(f"\0{name}\0none\0".encode())
+            continue
+        with open(path, "rb") as file:
+            # The length first: no file's bytes can pass for the next file's name.
+            digest.update(f"\0{name}\0{os.fstat(file.fileno()).st_size}\0".encode())
+            for block in iter(lambda: file.read(1 << 20), b""):
+                digest.update(block)
+    return digest.hexdigest()
+
+
+def digest_path(output: str) -> str:
+    """Where the digest of the job that made `output` is kept: .NAME.talkface-job beside it (hidden,
+    so that a folder of outputs published as it is carries no clutter)."""
+    folder, name = os.path.split(output)
+    return os.path.join(folder, f".{name}.talkface-job")
+
+
+def _kept_digest(output: str) -> str:
+    try:
+        with open(digest_path(output), encoding="ascii") as file:
+            return file.read().strip()
+    except (OSError, UnicodeDecodeError):
+        return ""
+
+
 def remove_temporary_files(output: str) -> None:
-    """Removes the temporary files (OUTPUT.tmp-XXXXXX) a killed writer of `output` left behind."""
-    for path in glob.glob(glob.escape(output) + ".tmp-*"):
+    """Removes the temporary files (OUTPUT.tmp-XXXXXX, and its digest's) a killed writer of `output`
+    left behind."""
+    for path in glob.glob(glob.escape(output) + ".tmp-*") + glob.glob(glob.escape(digest_path(output)) + ".tmp-*"):
         try:
             os.remove(path)
         except FileNotFoundError:
