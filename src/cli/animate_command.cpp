@@ -11,6 +11,7 @@
 #include <string>
 #include <utility>
 
+#include "choice_option.hpp"
 #include "commands.hpp"
 #include "progress_bar.hpp"
 #include "timing_option.hpp"
@@ -54,7 +55,7 @@ talkface::WebPageOptions page_options(const AnimateOptions& options) {
     page.app = talkface::web_page_app_from_name(options.app);
     page.title = options.title;
     page.animation.encoding = talkface::animation_encoding_from_name(options.encoding);
-    page.audio = talkface::web_page_audio_from_name(options.audio);
+    page.audio = options.audio;
     page.audio_bitrate_bps = options.audio_bitrate;
     for (const std::string& link : options.links) {
         const std::size_t equals = link.find('=');
@@ -85,7 +86,7 @@ talkface::WebPageOptions page_options(const AnimateOptions& options) {
 
 void run_animate(const AnimateOptions& options, const std::string& audio_path, const std::string& transcript_path) {
     std::string linked_url;
-    if (options.audio == "link") {
+    if (options.audio == talkface::WebPageAudio::link) {
         // The page links the audio where it lies, relative to the page's folder.
         const std::filesystem::path page_folder =
             std::filesystem::absolute(options.output_path).parent_path();
@@ -130,10 +131,11 @@ talkface::ExpressionStyle expression_style(const StyleOptions& options) {
     return style;
 }
 
-void add_look_option(CLI::App& command, std::string& look) {
+void add_look_option(CLI::App& command, talkface::FaceLook& look) {
     command.add_option("--look", look, "How the face is painted: outlined (the thesis's cartoon) or flat (no outlines)")
-        ->check(CLI::IsMember({"outlined", "flat"}))
-        ->capture_default_str();
+        ->transform(choice_of({talkface::FaceLook::outlined, talkface::FaceLook::flat}, talkface::face_look_name))
+        ->type_name("TEXT")
+        ->default_str(talkface::face_look_name(look));
 }
 
 void add_face_options(CLI::App& command, AnimateOptions& options) {
@@ -159,10 +161,14 @@ void add_page_options(CLI::App& command, AnimateOptions& options) {
                     "compressed: the speech encoded anew (Opus in WebM, mono, plays in Chromium, Firefox and "
                     "Safari 17.4+) and embedded; original: the audio file's own bytes embedded; link: the page "
                     "links the audio file (keep it beside the page)")
-        ->check(CLI::IsMember({"compressed", "original", "link"}))
-        ->capture_default_str();
+        ->transform(choice_of({talkface::WebPageAudio::compressed, talkface::WebPageAudio::original,
+                               talkface::WebPageAudio::link},
+                              talkface::web_page_audio_name))
+        ->type_name("TEXT")
+        ->default_str(talkface::web_page_audio_name(options.audio));
     command.add_flag_callback(
-        "--link-audio", [&options] { options.audio = "link"; }, "The same as --audio-embed link");
+        "--link-audio", [&options] { options.audio = talkface::WebPageAudio::link; },
+        "The same as --audio-embed link");
     command
         .add_option("--audio-bitrate", options.audio_bitrate,
                     "compressed: the Opus bit rate, bits a second (default 11000: wideband speech)")
@@ -215,7 +221,7 @@ TalkingFace animate_talking_face(const AnimateOptions& options, const std::strin
 void make_talking_face(const AnimateOptions& options, const std::string& audio_path,
                        const talkface::Timeline& transcript, const std::string& linked_audio_url) {
     const bool is_svg = is_svg_output(options.output_path);
-    if (is_svg && (options.app != "plain" || options.audio == "link")) {
+    if (is_svg && (options.app != "plain" || options.audio == talkface::WebPageAudio::link)) {
         throw CLI::ValidationError("--output", "an .svg output is the bare animation: --app and --link-audio need .html");
     }
     // Read before the alignment, the slow part: a bad option fails at once.
@@ -227,7 +233,7 @@ void make_talking_face(const AnimateOptions& options, const std::string& audio_p
     const talkface::Timeline& timeline = talking.timeline;
     const talkface::Animation& animation = talking.animation;
     talkface::SvgOptions svg_options;
-    svg_options.look = talkface::face_look_from_name(options.look);
+    svg_options.look = options.look;
     const talkface::SvgAnimator animator(talking.face, svg_options);
     // The output is written whole at the end (a temporary file renamed): a failure leaves no page.
     if (is_svg) {
@@ -240,8 +246,8 @@ void make_talking_face(const AnimateOptions& options, const std::string& audio_p
     if (!options.quiet) {
         const std::string what = is_svg ? "SVG animation (" + options.encoding + ")"
                                         : options.app + " web page, audio " +
-                                              (options.audio == "link"       ? "linked"
-                                               : options.audio == "original" ? "embedded as it is"
+                                              (options.audio == talkface::WebPageAudio::link       ? "linked"
+                                               : options.audio == talkface::WebPageAudio::original ? "embedded as it is"
                                                                              : "compressed and embedded");
         report_written(std::cerr, options.output_path, what, animation.duration_s);
     }

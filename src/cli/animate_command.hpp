@@ -37,9 +37,9 @@ struct AnimateOptions {
     double fps = talkface::LipSyncOptions{}.fps;
     std::uint64_t seed = 0;
     StyleOptions expression;
-    std::string look = "outlined";  // talkface::face_look_name()
+    talkface::FaceLook look = talkface::FaceLook::outlined;
     std::string encoding = "keyframes";
-    std::string audio = "compressed";  // --audio-embed: compressed, original or link (--link-audio)
+    talkface::WebPageAudio audio = talkface::WebPageAudio::compressed;  // --audio-embed, --link-audio
     int audio_bitrate = 0;             // --audio-bitrate, bits a second (0: the page's default)
     std::string app = "plain";
     std::string title;
@@ -58,7 +58,7 @@ struct AnimateOptions {
 void add_face_options(CLI::App& command, AnimateOptions& options);
 
 // Adds --look (outlined or flat) to a command that draws a face.
-void add_look_option(CLI::App& command, std::string& look);
+void add_look_option(CLI::App& command, talkface::FaceLook& look);
 
 // Adds the options both page commands take (all but the inputs) to `command`: add_face_options()
 // and the page's own.

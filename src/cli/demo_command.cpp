@@ -67,7 +67,7 @@ void run_demo(const AnimateOptions& options, const CLI::App& demo) {
         return;
     }
     std::string linked_url;
-    if (options.audio == "link") {
+    if (options.audio == talkface::WebPageAudio::link) {
         // A linked page needs the speech beside it: written there as OUT.ogg.
         const std::filesystem::path audio = std::filesystem::path(options.output_path).replace_extension(".ogg");
         talkface::detail::write_file_atomically(audio.string(), view_of(demo_speech()));

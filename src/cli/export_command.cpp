@@ -46,7 +46,7 @@ void run_export(const ExportOptions& options) {
     print_mismatches(options.audio_path, talking.timeline);
     if (format == "lottie") {
         talkface::SvgOptions drawing;
-        drawing.look = talkface::face_look_from_name(options.animate.look);
+        drawing.look = options.animate.look;
         const talkface::SvgAnimator animator(talking.face, drawing);
         const std::unique_ptr<ProgressBar> bar = make_progress_bar(options.animate.quiet);
         const auto progress = progress_part(bar.get(), 0.0, 1.0);

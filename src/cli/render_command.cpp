@@ -26,7 +26,7 @@ struct RenderOptions {
     double brows = 0.0;
     std::string background = talkface::to_hex(*talkface::SvgOptions{}.background);
     bool no_clothes = false;
-    std::string look = "outlined";
+    talkface::FaceLook look = talkface::FaceLook::outlined;
     std::string output_path;
 };
 
@@ -106,7 +106,7 @@ void run_render(const RenderOptions& options) {
     talkface::SvgOptions svg_options;
     svg_options.background = parse_background(options.background);
     svg_options.draw_clothes = !options.no_clothes;
-    svg_options.look = talkface::face_look_from_name(options.look);
+    svg_options.look = options.look;
     const talkface::SvgAnimator animator(face, svg_options);
     try {
         if (options.output_path == "-") {

@@ -79,7 +79,7 @@ talkface::FaceVideoOptions face_video_options(const VideoCommandOptions& options
     video.video.crf = options.crf;
     video.video.transparent = options.transparent;
     video.frame.layout = options.app == "plain" ? talkface::FrameLayout::face : talkface::FrameLayout::announcer;
-    video.frame.look = talkface::face_look_from_name(options.animate.look);
+    video.frame.look = options.animate.look;
     const std::string& background = options.animate.background;
     if (!background.empty()) {
         if (background.front() == '#') {

@@ -53,7 +53,17 @@ def test_look_flat_draws_without_outlines_and_an_unknown_look_is_a_usage_error()
     stroked = [e for e in ET.fromstring(result.stdout.encode()).iter() if e.get("stroke-width") is not None]
     assert sorted(e.get("class") for e in stroked) == ["eye-left-lid", "eye-right-lid"]
     assert "stroke-width" in run("render", "-o", "-").stdout
-    assert run("render", "--look", "sketch", "-o", "-").returncode == 2
+    refused = run("render", "--look", "sketch", "-o", "-")
+    assert refused.returncode == 2
+    assert '--look: expected outlined or flat, found "sketch"' in refused.stderr
+
+
+def test_an_unknown_audio_embedding_is_a_usage_error_listing_the_choices(tmp_path):
+    refused = run("demo", "--audio-embed", "wav", "-o", tmp_path / "page.html")
+    assert refused.returncode == 2
+    assert '--audio-embed: expected compressed, original or link, found "wav"' in refused.stderr
+    assert not (tmp_path / "page.html").exists()
+    assert "--audio-embed TEXT:{compressed,original,link}=compressed" in run("demo", "--help").stdout
 
 
 def test_help_exits_0_and_lists_exit_codes():
