@@ -21,8 +21,10 @@ constexpr const char* kUnpackHead = R"js((function () {
   "use strict";
   function run() {
 )js";
-constexpr const char* kUnpackTail = R"js(  }
-  var data = document.getElementById("tf-animation-data");
+// Around kDataId, so that the script and the element it reads name it once.
+constexpr const char* kUnpackTailBeforeId = R"js(  }
+  var data = document.getElementById(")js";
+constexpr const char* kUnpackTail = R"js(");
   var bytes = Uint8Array.from(atob(data.textContent.trim()), function (c) { return c.charCodeAt(0); });
   new Response(new Blob([bytes]).stream().pipeThrough(new DecompressionStream("gzip"))).text().then(function (content) {
     document.querySelector("svg.tf-animation").innerHTML = content;
@@ -69,7 +71,7 @@ PackedAnimation pack_animation(const std::string& svg) {
 }
 
 std::string after_unpacking(const std::string& script) {
-    return kUnpackHead + script + kUnpackTail;
+    return kUnpackHead + script + kUnpackTailBeforeId + kDataId + kUnpackTail;
 }
 
 }  // namespace talkface::detail

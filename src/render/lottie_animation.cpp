@@ -32,7 +32,6 @@ constexpr std::size_t kProgressEveryFrames = 50;
 constexpr const char* kLottieVersion = "5.7.4";
 constexpr int kTransformDecimals = 4;
 constexpr int kAngleDecimals = 3;  // as head_tilt.cpp writes the SVG's
-constexpr int kTimeDecimals = 3;
 
 }  // namespace
 
@@ -101,20 +100,7 @@ std::string render_lottie(const FaceModel& face, const SvgOptions& svg_options, 
                                        number(box.x) + "," + number(box.y) + ",0]}," + scale_text + "}";
     // The head's: drawn about O turned back by the tilt, turned by it here (Lottie's rotation, as
     // SVG's, is clockwise on the screen for a positive angle).
-    std::string rotation = "{\"a\":0,\"k\":" + format_fixed(tilt.held_angle_deg, kAngleDecimals) + "}";
-    if (!tilt.keys.positions.empty()) {
-        rotation = "{\"a\":1,\"k\":[";
-        for (std::size_t key = 0; key < tilt.keys.positions.size(); ++key) {
-            if (key > 0) rotation += ',';
-            rotation += "{\"t\":" + format_fixed(tilt.keys.positions[key], kTimeDecimals) + ",\"s\":[" +
-                        format_fixed(tilt.keys.values.numbers[key], kAngleDecimals) + "]";
-            if (key + 1 < tilt.keys.positions.size()) {
-                rotation += ",\"i\":{\"x\":[1],\"y\":[1]},\"o\":{\"x\":[0],\"y\":[0]}";
-            }
-            rotation += '}';
-        }
-        rotation += "]}";
-    }
+    const std::string rotation = lottie_scalar_property(tilt.keys, tilt.held_angle_deg, kAngleDecimals);
     const std::string head_transform = "{" + opaque + ",\"r\":" + rotation + ",\"p\":{\"a\":0,\"k\":[" +
                                        number(offset_x + scale * (tilt.origin.x - box.x)) + "," +
                                        number(offset_y + scale * (tilt.origin.y - box.y)) +

@@ -97,6 +97,44 @@ void append_number_list(std::string& text, const double* numbers, std::size_t co
     text += ']';
 }
 
+// Lottie's animated value {"a":1,"k":[...]}: a key at each of `keys`' frames, linear between keys
+// (a Bezier easing from (0, 0) to (1, 1) with its handles on the line), a key that the next repeats
+// as written holding ("h":1). `append_key_value` writes one key's `width` numbers.
+template <class AppendKeyValue>
+std::string keyed_value_text(const KeyFrames& keys, std::size_t width, int decimals, bool is_bezier_path,
+                             const AppendKeyValue& append_key_value) {
+    std::string ease_in = "{\"x\":1,\"y\":1}", ease_out = "{\"x\":0,\"y\":0}";
+    // Bodymovin's habit: one easing number a dimension, except for Bezier paths.
+    if (!is_bezier_path) {
+        std::string ones = "[", zeros = "[";
+        for (std::size_t k = 0; k < width; ++k) {
+            ones += k > 0 ? ",1" : "1";
+            zeros += k > 0 ? ",0" : "0";
+        }
+        ease_in = "{\"x\":" + ones + "],\"y\":" + ones + "]}";
+        ease_out = "{\"x\":" + zeros + "],\"y\":" + zeros + "]}";
+    }
+    std::string text = "{\"a\":1,\"k\":[";
+    std::vector<double> numbers(width);
+    for (std::size_t key = 0; key < keys.positions.size(); ++key) {
+        if (key > 0) text += ',';
+        for (std::size_t k = 0; k < width; ++k) numbers[k] = keys.values.numbers[key * width + k];
+        text += "{\"t\":" + format_fixed(keys.positions[key], kTimeDecimals) + ",\"s\":";
+        append_key_value(text, numbers.data());
+        if (key + 1 < keys.positions.size()) {
+            // A key the next one repeats as written holds (a pause): the same as linear between
+            // them, without the easing.
+            bool holds = true;
+            for (std::size_t k = 0; k < width && holds; ++k) {
+                holds = rounded(numbers[k], decimals) == rounded(keys.values.numbers[(key + 1) * width + k], decimals);
+            }
+            text += holds ? ",\"h\":1" : ",\"i\":" + ease_in + ",\"o\":" + ease_out;
+        }
+        text += '}';
+    }
+    return text + "]}";
+}
+
 // A Bezier path value from its numbers: n vertices, then n in controls, then n out controls,
 // absolute; Lottie's controls are relative to their vertex. `folded`: the path is closed and its
 // last vertex is its first (the drawing model's close after a segment back to the start), so the
@@ -478,38 +516,15 @@ std::string LottieLayerEncoder::property_text(const Property& property) const {
         choose_key_frames(track, frame_count_, std::vector<double>(width, property.tolerance));
     // Every key ending at its start, so does every shape the player interpolates between them.
     folded = is_closed_path && ends_at_start(keys.values.numbers, width);
-    // Linear between keys: a Bezier easing from (0, 0) to (1, 1) with its handles on the line.
-    std::string ease_in = "{\"x\":1,\"y\":1}", ease_out = "{\"x\":0,\"y\":0}";
-    // Bodymovin's habit: one easing number a dimension, except for Bezier paths.
-    if (property.form != Form::bezier) {
-        std::string ones = "[", zeros = "[";
-        for (std::size_t k = 0; k < width; ++k) {
-            ones += k > 0 ? ",1" : "1";
-            zeros += k > 0 ? ",0" : "0";
-        }
-        ease_in = "{\"x\":" + ones + "],\"y\":" + ones + "]}";
-        ease_out = "{\"x\":" + zeros + "],\"y\":" + zeros + "]}";
-    }
-    text = "{\"a\":1,\"k\":[";
-    std::vector<double> numbers(width);
-    for (std::size_t key = 0; key < keys.positions.size(); ++key) {
-        if (key > 0) text += ',';
-        for (std::size_t k = 0; k < width; ++k) numbers[k] = keys.values.numbers[key * width + k];
-        text += "{\"t\":" + format_fixed(keys.positions[key], kTimeDecimals) + ",\"s\":";
-        append_value(text, numbers.data(), width, true);
-        if (key + 1 < keys.positions.size()) {
-            // A key the next one repeats as written holds (a pause): the same as linear between
-            // them, without the easing.
-            bool holds = true;
-            for (std::size_t k = 0; k < width && holds; ++k) {
-                holds = rounded(numbers[k], property.decimals) ==
-                        rounded(keys.values.numbers[(key + 1) * width + k], property.decimals);
-            }
-            text += holds ? ",\"h\":1" : ",\"i\":" + ease_in + ",\"o\":" + ease_out;
-        }
-        text += '}';
-    }
-    return text + "]}";
+    return keyed_value_text(keys, width, property.decimals, property.form == Form::bezier,
+                            [&](std::string& out, const double* numbers) { append_value(out, numbers, width, true); });
+}
+
+std::string lottie_scalar_property(const KeyFrames& keys, double held_value, int decimals) {
+    if (keys.positions.empty()) return "{\"a\":0,\"k\":" + format_fixed(held_value, decimals) + "}";
+    return keyed_value_text(keys, 1, decimals, false, [decimals](std::string& out, const double* numbers) {
+        append_number_list(out, numbers, 1, decimals);
+    });
 }
 
 std::vector<LottieLayerContent> LottieLayerEncoder::finish() const {

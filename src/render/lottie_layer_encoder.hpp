@@ -32,6 +32,10 @@ struct LottieLayerContent {
     std::string masks;   // "[...]" or empty for none
 };
 
+// A one-number property (a layer transform's rotation, degrees) keyed as the encoder keys its
+// shapes' numbers: {"a":0,"k":held_value} when `keys` has none.
+std::string lottie_scalar_property(const KeyFrames& keys, double held_value, int decimals);
+
 class LottieLayerEncoder {
 public:
     // `name` names the Lottie layers; `tolerance`: the largest distance, in the drawing's units,

@@ -7,6 +7,7 @@
 
 #include "render/announcer_layout.hpp"
 #include "pose/test_faces.hpp"
+#include "render/face_grid.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/face_pose.hpp"
 #include "talkface/svg_animator.hpp"
@@ -34,19 +35,15 @@ StageBox canvas_of(const FaceModel& face) {
     return box;
 }
 
-// Frames at the 5 x 5 x 5 poses of a grid over +-15 degrees, with every mouth shape.
+// Frames at the render tests' poses (face_grid.hpp), with every mouth shape.
 std::vector<FaceState> pose_grid(const FaceModel& face) {
     std::vector<FaceState> frames;
-    for (double alpha : {-15.0, -7.0, 0.0, 8.0, 15.0}) {
-        for (double beta : {-15.0, -9.0, 0.0, 6.0, 15.0}) {
-            for (double gamma : {-15.0, -3.0, 0.0, 8.0, 15.0}) {
-                for (MouthShape shape : all_mouth_shapes()) {
-                    FaceState state;
-                    state.pose = {alpha, beta, gamma};
-                    state.mouth = mouth_controls(face, shape);
-                    frames.push_back(state);
-                }
-            }
+    for (const Pose& pose : test::pose_grid()) {
+        for (MouthShape shape : all_mouth_shapes()) {
+            FaceState state;
+            state.pose = pose;
+            state.mouth = mouth_controls(face, shape);
+            frames.push_back(state);
         }
     }
     return frames;
