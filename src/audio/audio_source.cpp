@@ -25,20 +25,38 @@ std::string seconds_text(std::size_t frame, int sample_rate_hz) {
     return format_fixed(static_cast<double>(frame) / sample_rate_hz, 3) + " s";
 }
 
+// The data chunk's size as the header states it and as the file holds it.
+struct DataBytes {
+    std::size_t stated = 0;
+    std::size_t present = 0;
+};
+
 // libsndfile shortens the frame count of a WAV/AIFF whose data chunk is cut off and only says so
-// in its log ("data : 79912 (should be 19956)"); the header's promise is the first number.
-std::optional<std::size_t> header_data_bytes_if_truncated(SNDFILE* file) {
+// in its log ("data : 79912 (should be 19956)"): the header's promise, then what is there.
+std::optional<DataBytes> data_bytes_if_truncated(SNDFILE* file) {
     char log[4096] = {};
     sf_command(file, SFC_GET_LOG_INFO, log, sizeof log);
     std::istringstream lines(log);
     std::string line;
     while (std::getline(lines, line)) {
-        if (line.rfind("data :", 0) != 0 || line.find("should be") == std::string::npos) continue;
-        std::istringstream fields(line.substr(6));
-        unsigned long long bytes = 0;
-        if (fields >> bytes) return static_cast<std::size_t>(bytes);
+        const std::size_t should_be = line.find("(should be");
+        if (line.rfind("data :", 0) != 0 || should_be == std::string::npos) continue;
+        std::istringstream stated(line.substr(6)), present(line.substr(should_be + 10));
+        unsigned long long stated_bytes = 0, present_bytes = 0;
+        if (stated >> stated_bytes && present >> present_bytes)
+            return DataBytes{static_cast<std::size_t>(stated_bytes), static_cast<std::size_t>(present_bytes)};
     }
     return std::nullopt;
+}
+
+// The frames a cut-off data chunk promised: its stated bytes over a frame's bytes, or for a codec
+// of blocks (GSM 06.10, ADPCM), whose frames have no size of their own, the frames present scaled
+// by how much more the header states than the file holds.
+std::size_t frames_promised_by(const SF_INFO& info, std::size_t frame_bytes, const DataBytes& data) {
+    if (frame_bytes > 0) return data.stated / frame_bytes;
+    if (data.present == 0) return 0;
+    return static_cast<std::size_t>(std::ceil(static_cast<double>(info.frames) * static_cast<double>(data.stated) /
+                                              static_cast<double>(data.present)));
 }
 
 std::size_t bytes_per_frame(const SF_INFO& info) {
@@ -168,16 +186,14 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
         throw ParseError(path, 0, 0, "", "unsupported header: " + std::to_string(info.channels) + " channels at " +
                                              std::to_string(info.samplerate) + " Hz");
     }
-    auto promised_frames = static_cast<std::size_t>(std::max<sf_count_t>(info.frames, 0));
-    if (const auto data_bytes = header_data_bytes_if_truncated(file)) {
-        if (const std::size_t frame_bytes = bytes_per_frame(info); frame_bytes > 0)
-            promised_frames = std::max(promised_frames, *data_bytes / frame_bytes);
-    }
-    if (promised_frames == 0) {
+    auto promised = static_cast<std::size_t>(std::max<sf_count_t>(info.frames, 0));
+    if (const auto data_bytes = data_bytes_if_truncated(file))
+        promised = std::max(promised, frames_promised_by(info, bytes_per_frame(info), *data_bytes));
+    if (promised == 0) {
         sf_close(file);
         throw InvalidArgument(path, "empty audio: the file has no frames");
     }
-    return std::make_unique<FileSource>(path, file, info, promised_frames);
+    return std::make_unique<FileSource>(path, file, info, promised);
 }
 
 std::unique_ptr<AudioSource> open_audio_view(const AudioView& audio) {

@@ -17,7 +17,8 @@ class AudioSource {
 public:
     virtual ~AudioSource() = default;
     // Fills `mono` with up to `max_frames` frames (channels averaged); 0 at the end.
-    // \throws talkface::FileError when the data ends before the header said it would.
+    // \throws talkface::FileError when the data ends before the header said it would (a WAV's data
+    //         size, a container's exact length for its sound track: MP4, a LAME-tagged MP3, FLAC).
     virtual std::size_t read(float* mono, std::size_t max_frames) = 0;
     virtual int sample_rate_hz() const = 0;
     // Frames the source says it has; progress is measured against it. For what FFmpeg reads it is

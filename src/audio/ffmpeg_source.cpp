@@ -34,6 +34,11 @@ constexpr std::size_t kUntaggedMp3DelayFrames = 576 + 529;
 // concat lists, image sequences) that open other files named inside the input.
 constexpr const char* kFormats = "mp3,aac,mov,matroska,webm,ogg,flac,wav,w64,aiff,caf,avi,asf,amr,au";
 
+// How far short of its stated length a sound track may end and still be whole: the larger of
+// these (encoder padding and priming are tens of milliseconds; a file cut off loses far more).
+constexpr double kLengthSlackS = 0.25;
+constexpr double kLengthSlackShare = 0.05;
+
 std::string seconds_text(double seconds) { return format_fixed(seconds, 3) + " s"; }
 
 struct FormatCloser {
@@ -96,6 +101,7 @@ public:
             throw ParseError(path_, 0, 0, "", "unsupported sound track: " + std::to_string(codec_->ch_layout.nb_channels) +
                                                    " channels at " + std::to_string(sample_rate_hz_) + " Hz");
         estimated_frames_ = estimate_frames();
+        stated_seconds_ = stated_seconds();
         // FFmpeg's MP3 reader moves the stream's start past the delay a LAME tag gives; no start, no tag.
         if (parameters->codec_id == AV_CODEC_ID_MP3 && (stream_->start_time == AV_NOPTS_VALUE || stream_->start_time == 0))
             frames_to_skip_ = kUntaggedMp3DelayFrames;
@@ -114,7 +120,10 @@ public:
         std::size_t written = 0;
         while (written < max_frames) {
             if (pending_position_ == pending_.size()) {
-                if (!decode_next_frame()) break;
+                if (!decode_next_frame()) {
+                    check_whole();
+                    break;
+                }
                 continue;
             }
             const std::size_t take = std::min(max_frames - written, pending_.size() - pending_position_);
@@ -145,6 +154,30 @@ private:
             seconds = static_cast<double>(format_->duration) / AV_TIME_BASE;
         const double frames = std::min(seconds * sample_rate_hz_, 1e12);
         return std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(frames)));
+    }
+
+    // The length the container states exactly for the sound track, seconds; 0 where it only
+    // guesses (an MP3 without a LAME tag: from its bit rate) or says nothing. A whole file's length
+    // counts only where the sound is all it holds: a video's sound track may end before its picture.
+    double stated_seconds() const {
+        if (format_->duration_estimation_method == AVFMT_DURATION_FROM_BITRATE) return 0.0;
+        if (stream_->duration != AV_NOPTS_VALUE && stream_->duration > 0)
+            return static_cast<double>(stream_->duration) * av_q2d(stream_->time_base);
+        if (format_->nb_streams == 1 && format_->duration != AV_NOPTS_VALUE && format_->duration > 0)
+            return static_cast<double>(format_->duration) / AV_TIME_BASE;
+        return 0.0;
+    }
+
+    // At the end of the data: a sound track well short of the length its container states was cut
+    // off (a download or a copy that stopped), as a WAV whose data ends early is (audio_source.cpp).
+    // Said, not aligned: half a recording would fail against its whole transcript with a message
+    // about the text. Codecs pad or trim a few frames at each end, far inside the allowance.
+    void check_whole() const {
+        if (stated_seconds_ <= 0.0) return;
+        const double decoded_s = seconds_read();
+        if (decoded_s >= stated_seconds_ - std::max(kLengthSlackS, kLengthSlackShare * stated_seconds_)) return;
+        throw FileError(path_, "truncated: its header says the sound lasts " + seconds_text(stated_seconds_) +
+                                   " but the data ends at " + seconds_text(decoded_s));
     }
 
     // Decodes the next frame of the sound track into pending_ (mono); false at the end.
@@ -258,6 +291,7 @@ private:
     AVStream* stream_ = nullptr;
     int sample_rate_hz_ = 0;
     std::size_t estimated_frames_ = 1;
+    double stated_seconds_ = 0.0;
     std::size_t frames_decoded_ = 0;
     std::size_t frames_to_skip_ = 0;
     bool flushed_ = false;

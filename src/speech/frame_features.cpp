@@ -19,6 +19,7 @@ namespace talkface::detail {
 namespace {
 
 constexpr std::size_t kBlockFrames = 8192;
+constexpr double kMostReservedS = 3600.0;
 constexpr std::size_t kHop = 160;       // 10 ms at 16 kHz
 constexpr std::size_t kWindow = 400;    // 25 ms
 constexpr std::size_t kFftSize = 512;
@@ -225,9 +226,10 @@ private:
 
 FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)>& on_progress) {
     FeatureTrack track;
-    track.values.reserve(static_cast<std::size_t>(static_cast<double>(source.frame_count()) /
-                                                  source.sample_rate_hz() / kFrameStepS + 2) *
-                         kFeatureCount);
+    // Room for the frames the source says it has, up to an hour's: a damaged header may promise
+    // years (a FLAC's sample count, an MP3's frame count), and reserving them threw bad_alloc.
+    const double promised_s = std::min(static_cast<double>(source.frame_count()) / source.sample_rate_hz(), kMostReservedS);
+    track.values.reserve(static_cast<std::size_t>(promised_s / kFrameStepS + 2) * kFeatureCount);
     FrameAnalyzer analyzer(track);
     Resampler resampler(source.sample_rate_hz());
     std::vector<float> block(kBlockFrames);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "audio/audio_source.hpp"
+#include "audio/decoded_audio.hpp"
 #include "common/test_paths.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/speech_aligner.hpp"
@@ -25,37 +26,6 @@ namespace {
 
 std::string fixture(const std::string& file) { return test::source_path("tests/data/audio/" + file); }
 std::string speech_clip(const std::string& file) { return test::source_path("tests/data/speech/" + file); }
-
-// Every sample of a source, mixed to mono, read in blocks as the aligner reads them.
-std::vector<float> read_all(detail::AudioSource& source) {
-    std::vector<float> samples;
-    std::vector<float> block(1000);
-    while (const std::size_t got = source.read(block.data(), block.size())) samples.insert(samples.end(), block.begin(), block.begin() + got);
-    return samples;
-}
-
-// Loudness in 5 ms steps: comparable across sample rates and lossy codecs.
-std::vector<double> envelope(const std::vector<float>& samples, int rate_hz) {
-    std::vector<double> energy(samples.size() * 200 / static_cast<std::size_t>(rate_hz) + 1, 0.0);
-    for (std::size_t i = 0; i < samples.size(); ++i)
-        energy[i * 200 / static_cast<std::size_t>(rate_hz)] += static_cast<double>(samples[i]) * samples[i] / rate_hz;
-    return energy;
-}
-
-// The shift (in 5 ms steps, -20..20) that best lines `decoded`'s loudness up with `reference`'s.
-int best_lag(const std::vector<double>& reference, const std::vector<double>& decoded) {
-    int best = 0;
-    double best_score = -1.0;
-    for (int lag = -20; lag <= 20; ++lag) {
-        double score = 0.0;
-        for (std::size_t i = 0; i < reference.size(); ++i) {
-            const long j = static_cast<long>(i) + lag;
-            if (j >= 0 && j < static_cast<long>(decoded.size())) score += std::sqrt(reference[i] * decoded[static_cast<std::size_t>(j)]);
-        }
-        if (score > best_score) best_score = score, best = lag;
-    }
-    return best;
-}
 
 void write_bytes(const std::string& path, const std::string& bytes) {
     std::ofstream(path, std::ios::binary) << bytes;
@@ -70,20 +40,20 @@ const char* const kRecordings[] = {"sox_22050.mp3",  "sox_44100.mp3", "ffmpeg_16
 TEST_SUITE("audio") {
     TEST_CASE("MP3, M4A, Opus and a video's sound track read to the real end, in step with the WAV") {
         const auto wav = detail::open_audio_file(speech_clip("one_sentence.wav"));
-        const std::vector<float> reference = read_all(*wav);
+        const std::vector<float> reference = test::read_all(*wav);
         const double reference_s = static_cast<double>(reference.size()) / wav->sample_rate_hz();
-        const std::vector<double> reference_loudness = envelope(reference, wav->sample_rate_hz());
+        const std::vector<double> reference_loudness = test::envelope(reference, wav->sample_rate_hz());
         for (const std::string name : kRecordings) {
             CAPTURE(name);
             const auto source = detail::open_audio_file(fixture(name));
             CHECK(source->name() == fixture(name));
-            const std::vector<float> samples = read_all(*source);
+            const std::vector<float> samples = test::read_all(*source);
             const double seconds = static_cast<double>(samples.size()) / source->sample_rate_hz();
             // Codecs pad the end to a whole frame (at most ~50 ms); none stops short.
             CHECK(seconds >= reference_s - 0.005);
             CHECK(seconds <= reference_s + 0.08);
             // No codec's delay left in: the speech starts where the WAV's does, within 5 ms.
-            CHECK(std::abs(best_lag(reference_loudness, envelope(samples, source->sample_rate_hz()))) <= 1);
+            CHECK(std::abs(test::best_lag(reference_loudness, test::envelope(samples, source->sample_rate_hz()))) <= 1);
         }
     }
 

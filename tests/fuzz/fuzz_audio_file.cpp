@@ -1,5 +1,6 @@
-// Any bytes as an audio file, read as the aligner reads one (libsndfile, else FFmpeg: MP3, M4A, Opus,
-// a video's sound track): either talkface::Error, or a positive rate and finite samples to the end.
+// Any bytes as an audio file, read and analysed as the aligner reads one (libsndfile: WAV with PCM or
+// GSM 06.10, FLAC, Ogg; else FFmpeg: MP3, M4A, Opus, a video's sound track): either talkface::Error,
+// or a positive rate and finite samples and features to the end.
 #include <unistd.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "audio/audio_source.hpp"
+#include "speech/frame_features.hpp"
 #include "talkface/errors.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -32,6 +34,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             for (std::size_t i = 0; i < got; ++i)
                 if (!std::isfinite(block[i])) std::abort();
         }
+        // Read again as the aligner reads it: the analysis sizes its buffers by the length the
+        // header states, which a damaged header makes huge (a FLAC's sample count threw bad_alloc).
+        const auto again = talkface::detail::open_audio_file(path);
+        const talkface::detail::FeatureTrack track = talkface::detail::analyze_audio(*again, {});
+        for (const float value : track.values)
+            if (!std::isfinite(value)) std::abort();
     } catch (const talkface::Error&) {
     }
     std::remove(path.c_str());

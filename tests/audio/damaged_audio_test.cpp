@@ -1,0 +1,183 @@
+// Bad input (issue #13): every container talkface reads, made here by ffmpeg from
+// tests/data/speech/one_sentence.wav, then damaged as downloads and disks damage files: emptied,
+// cut to its header, its header followed by random bytes, cut in half, a length in its header made
+// huge. Reading and analysing each (as the aligner does) either throws a talkface::Error naming the
+// file or gives finite samples; nothing else escapes, nothing crashes, nothing takes long. A file
+// cut in half whose container states its length is called truncated.
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "audio/audio_source.hpp"
+#include "common/test_paths.hpp"
+#include "speech/frame_features.hpp"
+#include "talkface/errors.hpp"
+
+using namespace talkface;
+
+namespace {
+
+struct Container {
+    const char* file;     // its name, whose extension ffmpeg reads as the container
+    const char* options;  // ffmpeg's options for it
+    bool states_length;   // its header says how long the sound is, exactly
+};
+
+// A picture for the video containers: 16x16 grey, 2 frames a second.
+const char* const kPicture = "-f lavfi -i color=c=gray:s=16x16:r=2:d=3.3 ";
+
+const Container kContainers[] = {
+    {"pcm.wav", "-c:a pcm_s16le", true},
+    {"gsm.wav", "-ar 8000 -c:a libgsm_ms", true},
+    {"audio.flac", "-c:a flac", true},
+    {"vorbis.ogg", "-c:a libvorbis -q:a 1", false},
+    {"voice.opus", "-c:a libopus -b:a 16k", false},
+    {"lame.mp3", "-c:a libmp3lame -b:a 32k", true},
+    {"untagged.mp3", "-c:a libmp3lame -b:a 32k -write_xing 0", false},
+    {"phone.m4a", "-c:a aac -b:a 32k", false},  // its index (moov) comes last: a cut file has none
+    {"faststart.m4a", "-c:a aac -b:a 32k -movflags +faststart", true},
+    {"clip.mp4", "-c:v libx264 -crf 40 -c:a aac -b:a 24k -shortest -movflags +faststart", true},
+    {"clip.mov", "-c:v libx264 -crf 40 -c:a aac -b:a 24k -shortest", false},
+    {"clip.mkv", "-c:v libvpx -b:v 8k -c:a libopus -b:a 16k -shortest", false},
+    {"clip.webm", "-c:v libvpx -b:v 8k -c:a libopus -b:a 16k -shortest", false},
+    {"voice.mka", "-c:a libopus -b:a 16k", true},
+};
+
+bool is_video(const std::string& file) { return file.rfind("clip.", 0) == 0; }
+
+std::string read_bytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+void write_bytes(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
+
+// The container, whole, made once per run.
+std::string whole(const Container& container) {
+    const std::string path = test::output_path(std::string("whole_") + container.file);
+    if (read_bytes(path).empty()) {
+        const std::string speech = test::source_path("tests/data/speech/one_sentence.wav");
+        const std::string command = std::string("ffmpeg -nostdin -loglevel error -y ") +
+                                    (is_video(container.file) ? kPicture : "") + "-i '" + speech + "' " + container.options +
+                                    " '" + path + "' 2>&1";
+        INFO(command);
+        REQUIRE(std::system(command.c_str()) == 0);
+    }
+    return read_bytes(path);
+}
+
+std::string random_bytes(std::size_t count, std::uint32_t seed) {
+    std::string bytes(count, '\0');
+    for (char& c : bytes) c = static_cast<char>((seed = seed * 1664525u + 1013904223u) >> 24);
+    return bytes;
+}
+
+void put_be32(std::string& bytes, std::size_t at, std::uint32_t value) {
+    for (int i = 0; i < 4; ++i) bytes[at + static_cast<std::size_t>(i)] = static_cast<char>(value >> (24 - 8 * i));
+}
+
+void put_le32(std::string& bytes, std::size_t at, std::uint32_t value) {
+    for (int i = 0; i < 4; ++i) bytes[at + static_cast<std::size_t>(i)] = static_cast<char>(value >> (8 * i));
+}
+
+// The file with a length its header states made huge: a WAV's RIFF and data sizes, an MP4's mdat
+// size, FLAC's sample count, a LAME tag's frame count, Matroska's duration. Unchanged if it has none.
+std::string with_huge_length(const std::string& file, std::string bytes) {
+    const std::string name(file);
+    if (name.find(".wav") != std::string::npos) {
+        put_le32(bytes, 4, 0xFFFFFFF0u);
+        if (const auto data = bytes.find("data"); data != std::string::npos) put_le32(bytes, data + 4, 0xFFFFFFF0u);
+    } else if (name.find(".m4a") != std::string::npos || name.find(".mp4") != std::string::npos || name.find(".mov") != std::string::npos) {
+        if (const auto mdat = bytes.find("mdat"); mdat != std::string::npos && mdat >= 4) put_be32(bytes, mdat - 4, 0x7FFFFFF0u);
+    } else if (name.find(".flac") != std::string::npos && bytes.size() > 26) {
+        // STREAMINFO's 36-bit sample count: the low nibble of byte 21 and bytes 22-25.
+        bytes[21] = static_cast<char>(bytes[21] | 0x0F);
+        for (std::size_t i = 22; i < 26; ++i) bytes[i] = '\xFF';
+    } else if (name.find(".mp3") != std::string::npos) {
+        for (const char* tag : {"Xing", "Info"})
+            if (const auto at = bytes.find(tag); at != std::string::npos && bytes.size() > at + 12) put_be32(bytes, at + 8, 0x7FFFFFF0u);
+    } else if (name.find(".mk") != std::string::npos || name.find(".webm") != std::string::npos) {
+        // Duration (ID 44 89), an 8-byte float: 1e30 ms.
+        if (const auto at = bytes.find("\x44\x89\x88"); at != std::string::npos && bytes.size() > at + 11)
+            for (std::size_t i = 0; i < 8; ++i) bytes[at + 3 + i] = "\x46\x29\xE0\x64\x8C\xB4\xB3\x9D"[i];
+    }
+    return bytes;
+}
+
+struct Outcome {
+    bool threw = false;
+    std::string message;
+    double seconds = 0.0;
+};
+
+// Reads and analyses `path` as the aligner does. Any exception but talkface::Error fails the test.
+Outcome read_and_analyse(const std::string& path) {
+    Outcome outcome;
+    const auto started = std::chrono::steady_clock::now();
+    try {
+        auto source = detail::open_audio_file(path);
+        const detail::FeatureTrack track = detail::analyze_audio(*source, {});
+        for (const float value : track.values) REQUIRE(std::isfinite(value));
+    } catch (const Error& error) {
+        outcome.threw = true;
+        outcome.message = error.what();
+    } catch (const std::exception& error) {
+        FAIL("not a talkface::Error: " << std::string(error.what()));
+    }
+    outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return outcome;
+}
+
+}  // namespace
+
+TEST_SUITE("audio") {
+    TEST_CASE("damaged files of every container: a talkface::Error naming the file, or finite samples, quickly") {
+        for (const Container& container : kContainers) {
+            const std::string bytes = whole(container);
+            REQUIRE(bytes.size() > 1000);
+            const std::string header = bytes.substr(0, 100);
+            const std::vector<std::pair<std::string, std::string>> damaged = {
+                {"empty", ""},
+                {"first 12 bytes", bytes.substr(0, 12)},
+                {"header only", header},
+                {"header and random bytes", header + random_bytes(bytes.size(), 7)},
+                {"random bytes in the middle", bytes.substr(0, bytes.size() / 3) + random_bytes(bytes.size() / 3, 11) +
+                                                   bytes.substr(2 * bytes.size() / 3)},
+                {"cut in half", bytes.substr(0, bytes.size() / 2)},
+                {"huge length", with_huge_length(container.file, bytes)},
+            };
+            for (const auto& [damage, content] : damaged) {
+                const std::string path = test::output_path(std::string("damaged_") + container.file);
+                write_bytes(path, content);
+                const std::string file = container.file;
+                CAPTURE(file);
+                CAPTURE(damage);
+                const Outcome outcome = read_and_analyse(path);
+                if (outcome.threw) CHECK(outcome.message.find(path) != std::string::npos);
+                CHECK(outcome.seconds < 5.0);
+                if (damage == "empty" || damage == "first 12 bytes" || damage == "header only") CHECK(outcome.threw);
+                if (damage == "cut in half" && container.states_length) {
+                    CHECK(outcome.threw);
+                    CHECK(outcome.message.find("truncated") != std::string::npos);
+                }
+            }
+        }
+    }
+
+    TEST_CASE("every container read whole is not called truncated") {
+        for (const Container& container : kContainers) {
+            const std::string file = container.file;
+            CAPTURE(file);
+            whole(container);
+            const Outcome outcome = read_and_analyse(test::output_path(std::string("whole_") + container.file));
+            CHECK_MESSAGE(!outcome.threw, outcome.message);
+        }
+    }
+}
