@@ -13,10 +13,10 @@ namespace talkface::detail {
 namespace {
 
 // Read speech runs at 3-8 syllables per second; a sentence below 1.4 or above 14 per second of
-// speech is not the text it was given. Against the recording's own median a sentence may differ
-// by a factor of 2 (emphasis, lists, a hurried aside) but not more, unless it is slower and its
-// voiced peaks say it holds no more syllables than its text (count_nuclei).
-constexpr double kFastestFramesPerSyllable = 7.0;
+// speech (kFastestFramesPerSyllable, sentence_cutter.hpp) is not the text it was given. Against the
+// recording's own median a sentence may differ by a factor of 2 (emphasis, lists, a hurried aside)
+// but not more, unless it is slower and its voiced peaks say it holds no more syllables than its
+// text (count_nuclei).
 constexpr double kSlowestFramesPerSyllable = 70.0;
 constexpr double kMaxRateRatio = 2.0;
 // A person says a sentence more than twice as slowly as the others of a recording (bench/ human
@@ -70,10 +70,7 @@ constexpr double kMaxSyllableLengthSpread = 0.7;
 constexpr double kMaxSilenceInSyllableFrames = 45.0;
 constexpr double kMaxUnspokenSpeechFrames = 40.0;
 // Speech the transcript lacks is spoken as loud as the rest: a frame of a pause counts as such only
-// within this much of the sentence's median syllable frame. Music 15-20 dB under the voice rises
-// above the noise floor at each note but stays further below (bench/ music15, music20: two in
-// three passages were refused as missing a sentence).
-constexpr float kUnspokenSpeechBelowDb = 12.0f;
+// within kUnspokenSpeechBelowDb (sentence_cutter.hpp) of the sentence's median syllable frame.
 // A syllable lasts 0.1-0.6 s in read speech, up to ~1 s drawn out before a pause. Longer, the
 // audio has speech the text lacks; several in a row under 60 ms, the text has syllables the audio
 // lacks.

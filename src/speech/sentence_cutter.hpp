@@ -15,6 +15,17 @@
 
 namespace talkface::detail {
 
+// Read speech runs at 3-8 syllables per second: at fewer frames a syllable than this (14 a second)
+// a stretch cannot hold its text. check_sentence_lengths refuses such a sentence, and the cutter
+// never chooses one.
+constexpr double kFastestFramesPerSyllable = 7.0;
+// Speech the transcript lacks is spoken as loud as the rest: sound this far below a recording's
+// speech level is not taken for speech the text lacks (check_path), nor for the start or end of
+// its speech (measure_loudness). Music 15-20 dB under the voice rises above the noise floor at each
+// note but stays further below (bench/ music15, music20: two in three passages were refused as
+// missing a sentence).
+constexpr float kUnspokenSpeechBelowDb = 12.0f;
+
 // Frames [first_frame, end_frame) of one sentence utterance.
 struct FrameSpan {
     std::size_t first_frame = 0;
