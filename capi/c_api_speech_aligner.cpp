@@ -35,6 +35,13 @@ void update(tf_align_options* options, Change&& change) {
     options->options = candidate;
 }
 
+const TextMismatch& mismatch_at(const talkface::Timeline& timeline, size_t index) {
+    if (index >= timeline.mismatches.size())
+        throw InvalidArgument("index", "mismatch " + std::to_string(index) + " of " +
+                                           std::to_string(timeline.mismatches.size()));
+    return timeline.mismatches[index];
+}
+
 SpeechAligner aligner_for(const tf_align_options* options) {
     return SpeechAligner(options != nullptr ? options->options : AlignOptions{});
 }
@@ -114,16 +121,23 @@ tf_status tf_timeline_mismatch(const tf_timeline* timeline, size_t index, double
                                size_t* out_first_syllable, size_t* out_syllable_count, const char** out_expected_text) {
     return guard([&] {
         require_non_null(timeline, "timeline");
-        const auto& mismatches = timeline->timeline.mismatches;
-        if (index >= mismatches.size())
-            throw InvalidArgument("index", "mismatch " + std::to_string(index) + " of " +
-                                               std::to_string(mismatches.size()));
-        const TextMismatch& mismatch = mismatches[index];
+        const TextMismatch& mismatch = mismatch_at(timeline->timeline, index);
         if (out_start_s != nullptr) *out_start_s = mismatch.start_s;
         if (out_end_s != nullptr) *out_end_s = mismatch.end_s;
         if (out_first_syllable != nullptr) *out_first_syllable = mismatch.first_syllable;
         if (out_syllable_count != nullptr) *out_syllable_count = mismatch.syllable_count;
         if (out_expected_text != nullptr) *out_expected_text = mismatch.expected_text.c_str();
+    });
+}
+
+tf_status tf_timeline_mismatch_loudness(const tf_timeline* timeline, size_t index, const double** out_values,
+                                        size_t* out_count, double* out_step_s) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        const TextMismatch& mismatch = mismatch_at(timeline->timeline, index);
+        if (out_values != nullptr) *out_values = mismatch.loudness.empty() ? nullptr : mismatch.loudness.data();
+        if (out_count != nullptr) *out_count = mismatch.loudness.size();
+        if (out_step_s != nullptr) *out_step_s = talkface::kMismatchLoudnessStepS;
     });
 }
 

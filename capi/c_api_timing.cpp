@@ -93,4 +93,19 @@ tf_status tf_time_transcript(const char* timing_path, const char* audio_path, co
     });
 }
 
+tf_status tf_time_transcript_with_options(const char* timing_path, const char* audio_path,
+                                          const tf_timeline* transcript, const char* format,
+                                          const tf_align_options* options, tf_progress_fn progress, void* user_data,
+                                          tf_timeline** out) {
+    return guard([&] {
+        require_non_null(timing_path, "timing_path");
+        require_non_null(audio_path, "audio_path");
+        require_non_null(transcript, "transcript");
+        require_non_null(out, "out");
+        *out = new tf_timeline{talkface::time_transcript(
+            timing_path, audio_path, transcript->timeline, options != nullptr ? options->options : talkface::AlignOptions{},
+            text_or(format, ""), talkface::capi::progress_for(progress, user_data))};
+    });
+}
+
 }  // extern "C"

@@ -112,10 +112,18 @@ struct LipSyncOptions {
 };
 
 /// The mouth key frames of a timeline, in strictly rising time, each on a frame (a multiple of
-/// 1 / fps): neutral (m) at 0 and in pauses, then each syllable's shapes at their onsets.
+/// 1 / fps): neutral (m) at 0 and in pauses, then each syllable's shapes at their onsets. Over a
+/// stretch where the speech does not say the text (a Timeline::mismatches entry with a loudness),
+/// the mouth follows the audio's loudness instead: on each frame the shape of its loudness (the
+/// mean of the values within half a frame of it), closed (m) under 0.1, then z from 0.1, n from
+/// 0.35, and a from 0.67 up, a key frame where the shape changes and where a
+/// run of one shape ends, naming the mismatch's syllable whose span holds it (or none); the
+/// shapes of that mismatch's syllables and the rests of pauses inside the stretch are left out.
 /// \throws talkface::InvalidArgument naming the syllable (index, pinyin, times) if its pinyin is
 ///         not Mandarin, its times are not finite, it ends before it starts or starts before the
-///         syllable before it; or naming the option that is out of range.
+///         syllable before it; naming the mismatch if its times are not finite, it stands for
+///         syllables past the last or its loudness leaves 0..1; or naming the option that is out
+///         of range.
 TALKFACE_API std::vector<MouthKeyFrame> mouth_key_frames(const Timeline& timeline,
                                                          const LipSyncOptions& options = {});
 

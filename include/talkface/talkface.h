@@ -840,6 +840,17 @@ TF_API tf_status tf_timeline_mismatch(const tf_timeline *timeline, size_t index,
                                       double *out_end_s, size_t *out_first_syllable, size_t *out_syllable_count,
                                       const char **out_expected_text);
 
+/* The audio's loudness over mismatch `index`: *out_count values (borrowed in *out_values, valid
+ * while the timeline lives unmodified; NULL where there are none), one per *out_step_s seconds
+ * from its start (0.02 s; value k is the mean over [start + k step, start + (k + 1) step)), in
+ * 0..1: 0 at or under the loudness the aligner takes for speech, 1 at the recording's loud speech
+ * (its 95th percentile), linear in dB between, to 0.01. None where the stretch is an instant or
+ * the timeline's source did not measure it. Over the stretch the mouth follows it (m under 0.1,
+ * then z, n, and a from 0.67) instead of the syllables' shapes. Any out pointer may be NULL.
+ * Errors: TF_ERR_INVALID_ARGUMENT if index is out of range or timeline is NULL. */
+TF_API tf_status tf_timeline_mismatch_loudness(const tf_timeline *timeline, size_t index, const double **out_values,
+                                               size_t *out_count, double *out_step_s);
+
 /* Aligns an audio file (WAV, FLAC, Ogg, MP3, AAC/M4A, Opus, or the sound track of an MP4, MOV, MKV
  * or WebM video; any rate, mono or stereo) with `transcript` (from tf_read_transcript /
  * tf_load_transcript) into a new timeline *out: the transcript's sentences and syllables with their times, seconds (syllable start = where its initial
@@ -1356,6 +1367,19 @@ TF_API tf_status tf_write_timing_string(const tf_timeline *timeline, const char 
  * Errors: as tf_read_timing_file and tf_align_file. */
 TF_API tf_status tf_time_transcript(const char *timing_path, const char *audio_path, const tf_timeline *transcript,
                                     const char *format, tf_timeline **out);
+
+/* tf_time_transcript, the aligner that subtitle cues pin taking `options` (NULL: the defaults):
+ * its check mode decides what a wrong text does, and with tf_align_options_set_lenient a stretch
+ * inside the cues that does not say its text is reported (tf_timeline_mismatch) rather than
+ * refused. `progress` may be NULL (user_data is passed to it untouched).
+ * Errors: as tf_time_transcript; TF_ERR_INVALID_ARGUMENT naming lenient when the options are
+ * lenient and the file times every syllable itself (textgrid, words-json, timeline-json, or cues
+ * with a timestamp per syllable): nothing is aligned, so nothing could be found not to match;
+ * TF_ERR_CANCELLED if progress returned non-zero. */
+TF_API tf_status tf_time_transcript_with_options(const char *timing_path, const char *audio_path,
+                                                 const tf_timeline *transcript, const char *format,
+                                                 const tf_align_options *options, tf_progress_fn progress,
+                                                 void *user_data, tf_timeline **out);
 
 /* ---------------------------------------------------------------------------------------------
  * Video (talkface::VideoWriter, video_writer.hpp): frames of RGBA pixels and a speech encoded

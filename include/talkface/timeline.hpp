@@ -60,10 +60,14 @@ struct WrittenForm {
     std::size_t syllable_count = 0;  ///< how many syllables it became (at least 1)
 };
 
+/// Time between two values of TextMismatch::loudness, seconds.
+inline constexpr double kMismatchLoudnessStepS = 0.02;
+
 /// A stretch where the speech does not say the transcript's text: found by lenient alignment
 /// (AlignOptions::lenient) in place of a refusal. The syllables it stands for keep their place in
-/// Timeline::syllables, spread over the stretch at its loudness peaks with confidence 0, so that the
-/// mouth follows the audio's loudness there; everything around it is aligned as usual.
+/// Timeline::syllables, spread over the stretch at its loudness dips with confidence 0; the mouth
+/// there follows the audio's loudness (`loudness`, mouth_key_frames) rather than their shapes;
+/// everything around it is aligned as usual.
 struct TextMismatch {
     double start_s = 0.0;  ///< where the stretch starts, seconds from the start of the audio
     double end_s = 0.0;    ///< end_s >= start_s; equal where the speech leaves the text out
@@ -72,6 +76,13 @@ struct TextMismatch {
     /// transcript lacks (first_syllable is then the syllable after them).
     std::size_t syllable_count = 0;
     std::string expected_text;  ///< what the transcript says there (its syllables' text), UTF-8
+    /// The audio's loudness over the stretch, one value per kMismatchLoudnessStepS from start_s
+    /// (value k is the mean of [start_s + k step, start_s + (k + 1) step), the last one cut at
+    /// end_s), in 0..1: 0 at or under the loudness the aligner takes for speech (silence, noise),
+    /// 1 at the recording's loud speech (its 95th percentile) and above, linear in dB between;
+    /// rounded to 0.01. Empty where the stretch is an instant, or where the timeline's source
+    /// did not measure it: the mouth then shows the syllables' shapes.
+    std::vector<double> loudness;
 };
 
 /// Sentences and syllables in transcript order, with what was skipped.

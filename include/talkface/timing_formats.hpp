@@ -106,6 +106,21 @@ TALKFACE_API Timeline time_transcript(const std::string& timing_path, const std:
                                       const Timeline& transcript, const std::string& format = "",
                                       const ProgressCallback& progress = {});
 
+/// time_transcript, the aligner that subtitle cues pin taking `options` (the other one takes
+/// the defaults): AlignOptions::check decides what a wrong text does, and with
+/// AlignOptions::lenient a stretch inside the cues that does not say its text is reported
+/// (Timeline::mismatches) rather than refused. The cues cut the sentences whatever
+/// options.sentence_cut says. Where a cue splits a sentence and its syllables are moved into it,
+/// a mismatch keeps its stretch of the audio. This is what `--timing FILE --lenient` does.
+/// \throws as time_transcript; talkface::InvalidArgument naming the option if `options` are out
+///         of range (as SpeechAligner's constructor), or naming "lenient" when options.lenient
+///         and the file times every syllable itself (textgrid, words-json, timeline-json, or cues
+///         with a timestamp per syllable): nothing is aligned, so nothing could be found not to
+///         say its text.
+TALKFACE_API Timeline time_transcript(const std::string& timing_path, const std::string& audio_path,
+                                      const Timeline& transcript, const AlignOptions& options,
+                                      const std::string& format = "", const ProgressCallback& progress = {});
+
 /// The length of a recording, seconds, from its header.
 /// \throws talkface::FileError / ParseError as SpeechAligner::align_file.
 TALKFACE_API double audio_duration_s(const std::string& audio_path);

@@ -12,6 +12,7 @@
 #include <talkface/talkface.hpp>
 
 #include "commands.hpp"
+#include "error_report.hpp"
 #include "timing_option.hpp"
 #include "progress_bar.hpp"
 #include "common/atomic_file.hpp"
@@ -102,7 +103,7 @@ void run_align(const AlignCommandOptions& options) {
     if (options.output_path == "-") std::cout << result << std::flush;
     else talkface::detail::write_file_atomically(options.output_path, result);
     if (!options.json)
-        for (const auto& warning : timeline.warnings) std::cerr << "talkface: warning: " << warning << '\n';
+        report_warnings(timeline);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 
 #include "choice_option.hpp"
 #include "commands.hpp"
+#include "error_report.hpp"
 #include "progress_bar.hpp"
 #include "timing_option.hpp"
 #include "written_report.hpp"
@@ -251,7 +252,7 @@ void make_talking_face(const AnimateOptions& options, const std::string& audio_p
                                                                              : "compressed and embedded");
         report_written(std::cerr, options.output_path, what, animation.duration_s);
     }
-    for (const std::string& warning : timeline.warnings) std::cerr << "talkface: warning: " << warning << '\n';
+    report_warnings(timeline);
 }
 
 void setup_animate_command(CLI::App& app) {

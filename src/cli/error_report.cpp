@@ -47,4 +47,8 @@ int report_error(const std::exception& error) {
     return exit_code_for(error);
 }
 
+void report_warnings(const talkface::Timeline& timeline) {
+    for (const std::string& warning : timeline.warnings) std::cerr << "talkface: warning: " << warning << '\n';
+}
+
 }  // namespace talkface_cli

@@ -11,6 +11,7 @@
 
 #include "animate_command.hpp"
 #include "commands.hpp"
+#include "error_report.hpp"
 #include "progress_bar.hpp"
 #include "timing_option.hpp"
 
@@ -43,7 +44,7 @@ void run_export(const ExportOptions& options) {
         talking = animate_talking_face(options.animate, options.audio_path, transcript,
                                        progress_part(bar.get(), 0.0, 1.0));
     }
-    print_mismatches(options.audio_path, talking.timeline);
+    report_warnings(talking.timeline);
     if (format == "lottie") {
         talkface::SvgOptions drawing;
         drawing.look = options.animate.look;

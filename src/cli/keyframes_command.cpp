@@ -15,6 +15,7 @@
 
 #include "animate_command.hpp"
 #include "commands.hpp"
+#include "error_report.hpp"
 #include "timing_option.hpp"
 #include "common/atomic_file.hpp"
 
@@ -140,7 +141,7 @@ talkface::Timeline timeline_for(const KeyframesOptions& options) {
     if (!options.timeline_path.empty()) return talkface::load_timeline_json(options.timeline_path);
     const talkface::Timeline transcript = talkface::load_transcript(options.transcript_path);
     talkface::Timeline timeline = timed_speech(options.audio_path, transcript, options.timing);
-    print_mismatches(options.audio_path, timeline);
+    report_warnings(timeline);
     return timeline;
 }
 

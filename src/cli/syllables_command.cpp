@@ -8,6 +8,7 @@
 #include <talkface/talkface.hpp>
 
 #include "commands.hpp"
+#include "error_report.hpp"
 
 namespace talkface_cli {
 
@@ -71,7 +72,7 @@ void run_syllables(const SyllablesOptions& options) {
         return;
     }
     print_plain(timeline);
-    for (const auto& warning : timeline.warnings) std::cerr << "talkface: warning: " << warning << '\n';
+    report_warnings(timeline);
 }
 
 }  // namespace

@@ -1,6 +1,5 @@
 #include "timing_option.hpp"
 
-#include <iostream>
 
 namespace talkface_cli {
 
@@ -24,18 +23,16 @@ void add_timing_option(CLI::App& command, SpeechTiming& timing) {
 
 talkface::Timeline timed_speech(const std::string& audio_path, const talkface::Timeline& transcript,
                                 const SpeechTiming& timing, const talkface::ProgressCallback& progress) {
-    if (!timing.timing_path.empty()) return talkface::time_transcript(timing.timing_path, audio_path, transcript, "", progress);
     talkface::AlignOptions options;
     options.lenient = timing.lenient;
-    return talkface::SpeechAligner(options).align_file(audio_path, transcript, progress);
-}
-
-void print_mismatches(const std::string& audio_path, const talkface::Timeline& timeline) {
-    for (const auto& mismatch : timeline.mismatches) {
-        std::cerr << "talkface: warning: " << audio_path << ": " << mismatch.start_s << "-" << mismatch.end_s << " s: "
-                  << (mismatch.syllable_count > 0 ? "the speech does not say \"" + mismatch.expected_text + "\""
-                                                  : std::string("speech the transcript lacks"))
-                  << " (--lenient: the mouth follows its loudness there)\n";
+    if (timing.timing_path.empty()) return talkface::SpeechAligner(options).align_file(audio_path, transcript, progress);
+    try {
+        return talkface::time_transcript(timing.timing_path, audio_path, transcript, options, "", progress);
+    } catch (const talkface::InvalidArgument& error) {
+        // --lenient with a file that times every syllable is a command line that cannot work.
+        const std::string prefix = error.parameter() + ": ";  // what() names the parameter first
+        if (error.parameter() == "lenient") throw CLI::ValidationError("--lenient", std::string(error.what()).substr(prefix.size()));
+        throw;
     }
 }
 

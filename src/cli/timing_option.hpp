@@ -25,13 +25,11 @@ void add_timing_option(CLI::App& command, SpeechTiming& timing);
 void add_lenient_option(CLI::App& command, bool& lenient);
 
 // The transcript spoken in `audio_path`: timed by the --timing file when there is one
-// (talkface::time_transcript), else aligned (SpeechAligner::align_file, lenient with --lenient);
+// (talkface::time_transcript: subtitle cues pin the aligner, lenient with --lenient), else aligned
+// (SpeechAligner::align_file, lenient with --lenient). Throws CLI::ValidationError (exit 2) for
+// --lenient with a --timing file that times every syllable, where nothing is aligned.
 talkface::Timeline timed_speech(const std::string& audio_path, const talkface::Timeline& transcript,
                                 const SpeechTiming& timing, const talkface::ProgressCallback& progress = {});
-
-// Tells each mismatch of a lenient alignment on stderr, for commands that print no warnings of
-// their own.
-void print_mismatches(const std::string& audio_path, const talkface::Timeline& timeline);
 
 }  // namespace talkface_cli
 

@@ -147,9 +147,7 @@ void make_video(const VideoCommandOptions& options, const std::string& audio_pat
                                                          interruptible(bar.get(), 0.0, kVideoAnimatedAt));
         talkface::render_video(options.animate.output_path, talking.face, talking.animation, audio_path, video,
                                interruptible(bar.get(), kVideoAnimatedAt, 1.0));
-        for (const std::string& warning : talking.timeline.warnings) {
-            std::cerr << "talkface: warning: " << warning << '\n';
-        }
+        report_warnings(talking.timeline);
     } catch (const talkface::Cancelled&) {
         if (g_is_interrupted == 0) throw;
         std::cerr << "\ntalkface: interrupted; " << options.animate.output_path << " was not written\n";

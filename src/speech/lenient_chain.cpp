@@ -89,6 +89,26 @@ std::vector<std::size_t> loudness_boundaries(const LoudnessProfile& loudness, st
     return bounds;
 }
 
+// TextMismatch::loudness of frames [first, end) of the audio: 0 at the loudness the aligner takes
+// for speech, 1 at the recording's loud speech, so that the mouth closes where the cutter hears a
+// pause and opens as wide as the loudest syllables on the recording's loud ones.
+std::vector<double> loudness_envelope(const LoudnessProfile& loudness, std::size_t first, std::size_t end) {
+    const auto step_frames = static_cast<std::size_t>(std::lround(kMismatchLoudnessStepS / kFrameStepS));
+    const double floor_db = loudness.activity_threshold_db;
+    const double range_db = static_cast<double>(loudness.speech_level_db) - floor_db;
+    std::vector<double> envelope;
+    end = std::min(end, loudness.activity_db.size());
+    for (std::size_t t = first; t < end; t += step_frames) {
+        const std::size_t stop = std::min(end, t + step_frames);
+        double sum_db = 0.0;
+        for (std::size_t i = t; i < stop; ++i) sum_db += loudness.activity_db[i];
+        const double above_db = sum_db / static_cast<double>(stop - t) - floor_db;
+        const double level = range_db > 0.0 ? above_db / range_db : (above_db > 0.0 ? 1.0 : 0.0);
+        envelope.push_back(std::round(std::clamp(level, 0.0, 1.0) * 100.0) / 100.0);
+    }
+    return envelope;
+}
+
 }  // namespace
 
 SentenceChain lenient_chain(const SentenceChain& chain) {
@@ -177,6 +197,7 @@ void place_lenient(const SentenceChain& chain, const std::vector<StateSegment>& 
         TextMismatch mismatch;
         mismatch.start_s = time_s(first);
         mismatch.end_s = time_s(end);
+        mismatch.loudness = loudness_envelope(loudness, offset + first, offset + end);
         if (local_count > 0) {
             const std::size_t global = chain.syllable_indices[first_local];
             mismatch.first_syllable = global;

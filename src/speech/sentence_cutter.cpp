@@ -231,7 +231,8 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     // the loud frames (a room's reverberation fills the pauses of a clean recording to there),
     // never less than kAboveFloorDb above the floor nor kNoiseWanderDb above the noise's typical
     // level (noise wanders by a few dB).
-    const float speech_level_db = percentile(profile.activity_db, kSpeechPercentile);
+    profile.speech_level_db = percentile(profile.activity_db, kSpeechPercentile);
+    const float speech_level_db = profile.speech_level_db;
     const float noise_level_db = percentile(profile.activity_db, kNoisePercentile);
     profile.activity_threshold_db =
         std::max({0.25f * speech_level_db, speech_level_db - 35.0f, kAboveFloorDb, noise_level_db + kNoiseWanderDb});

@@ -41,6 +41,7 @@ struct LoudnessProfile {
     float mid_floor_db = 0.0f;
     float high_floor_db = 0.0f;
     float activity_threshold_db = 0.0f;     // a frame is speech when its activity is above this
+    float speech_level_db = 0.0f;           // the activity of loud speech: its 95th percentile
     std::vector<float> activity_db;         // per frame: the loudest band above its floor, smoothed
     std::vector<FrameSpan> pauses;          // runs of non-speech, at least kMinPauseS, in order
     std::size_t speech_first_frame = 0;     // first and one past the last speech frame

@@ -411,14 +411,14 @@ Timeline SpeechAligner::align_file(const std::string& audio_path, const Timeline
 
 namespace talkface::detail {
 
-Timeline align_file_in_given_spans(const std::string& audio_path, const Timeline& transcript,
-                                   const std::vector<GivenSpan>& sentence_spans_s, const ProgressCallback& progress) {
+Timeline align_in_given_spans(AudioSource& source, const Timeline& transcript,
+                              const std::vector<GivenSpan>& sentence_spans_s, const AlignOptions& options,
+                              const ProgressCallback& progress) {
     validate_transcript(transcript);
-    const auto source = open_audio_file(audio_path);
     try {
-        return align_source(*source, transcript, AlignOptions(), sentence_spans_s, progress);
+        return align_source(source, transcript, options, sentence_spans_s, progress);
     } catch (const AlignmentError& error) {
-        throw AlignmentError(audio_path + ": " + error.what());
+        throw AlignmentError(source.name() + ": " + error.what());
     }
 }
 

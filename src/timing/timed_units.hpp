@@ -37,6 +37,12 @@ enum class UnitKind {
 Timeline match_timed_units(const Timeline& transcript, const std::vector<TimedUnit>& units, double duration_s,
                            const std::string& source, UnitKind kind);
 
+// match_timed_units of units whose times are checked (check_unit_times) and whose syllables are
+// found (`ranges`, unit_syllable_ranges's) already.
+Timeline time_matched_units(const Timeline& transcript, const std::vector<TimedUnit>& units,
+                            const std::vector<std::pair<std::size_t, std::size_t>>& ranges, double duration_s,
+                            UnitKind kind);
+
 // Which syllables each unit covered, as match_timed_units found them: first and one past the last
 // index into transcript.syllables, one pair per unit.
 std::vector<std::pair<std::size_t, std::size_t>> unit_syllable_ranges(const Timeline& transcript,

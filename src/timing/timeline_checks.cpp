@@ -33,6 +33,22 @@ void check_timeline(const Timeline& timeline) {
                 "starts before " + describe_syllable(timeline, k - 1) + "; syllables must be in time order");
         }
     }
+    for (std::size_t k = 0; k < timeline.mismatches.size(); ++k) {
+        const TextMismatch& mismatch = timeline.mismatches[k];
+        const std::string item = "mismatch " + std::to_string(k) + " (" + format_seconds(mismatch.start_s) + "-" +
+                                 format_seconds(mismatch.end_s) + " s)";
+        if (!std::isfinite(mismatch.start_s) || !std::isfinite(mismatch.end_s) || mismatch.start_s < 0.0 ||
+            mismatch.end_s < mismatch.start_s)
+            throw InvalidArgument(item, "times must be finite seconds from the start of the audio, the end not before the start");
+        if (mismatch.first_syllable > timeline.syllables.size() ||
+            mismatch.syllable_count > timeline.syllables.size() - mismatch.first_syllable)
+            throw InvalidArgument(item, "stands for syllables from " + std::to_string(mismatch.first_syllable) + " (" +
+                                            std::to_string(mismatch.syllable_count) + " of them), past the " +
+                                            std::to_string(timeline.syllables.size()) + " syllables");
+        for (const double value : mismatch.loudness)
+            if (!(value >= 0.0 && value <= 1.0))
+                throw InvalidArgument(item, "loudness values must be in 0..1, found " + format_shortest(value));
+    }
 }
 
 }  // namespace talkface::detail

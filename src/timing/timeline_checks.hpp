@@ -13,7 +13,8 @@ namespace talkface::detail {
 std::string describe_syllable(const Timeline& timeline, std::size_t index);
 
 // Throws InvalidArgument naming the syllable whose times are not finite or negative, that ends
-// before it starts, or that starts before the syllable before it.
+// before it starts, or that starts before the syllable before it; or naming the mismatch whose
+// times are so, that stands for syllables past the last, or whose loudness leaves 0..1.
 void check_timeline(const Timeline& timeline);
 
 // Seconds with millisecond precision, as every message and export writes them.

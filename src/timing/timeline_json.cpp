@@ -54,6 +54,13 @@ public:
         return value.number;
     }
 
+    std::vector<double> fractions(const JsonValue& value, const char* key) const {
+        if (value.type != JsonValue::Type::array) fail(value, key, "expected a list of numbers 0..1, found " + json_found(value));
+        std::vector<double> numbers;
+        for (const JsonValue& item : value.items) numbers.push_back(fraction(item, key));
+        return numbers;
+    }
+
     bool flag(const JsonValue& value, const char* key) const {
         if (value.type != JsonValue::Type::boolean) fail(value, key, "expected true or false, found " + json_found(value));
         return value.boolean;
@@ -196,6 +203,15 @@ const std::vector<Field<TextMismatch>>& mismatch_fields() {
         {"expected", true, false,
          [](const TextMismatch& m) -> std::optional<std::string> { return json_quoted(m.expected_text); },
          [](const ItemReader& r, const JsonValue& v, TextMismatch& m) { m.expected_text = r.text(v, "expected"); }},
+        // Written only where measured, so that documents of other sources keep their bytes.
+        {"loudness", false, true,
+         [](const TextMismatch& m) -> std::optional<std::string> {
+             if (m.loudness.empty()) return std::nullopt;
+             std::string json = "[";
+             for (const double value : m.loudness) json += (json.size() > 1 ? "," : "") + json_number(value);
+             return json + "]";
+         },
+         [](const ItemReader& r, const JsonValue& v, TextMismatch& m) { m.loudness = r.fractions(v, "loudness"); }},
     };
     return fields;
 }

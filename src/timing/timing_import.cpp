@@ -71,15 +71,31 @@ void keep_inside(Timeline& timeline, std::size_t first, std::size_t last, const 
     }
 }
 
+// Why lenient alignment cannot be had with a timing file of `format_name` that times every syllable.
+[[noreturn]] void refuse_lenient(const std::string& timing_path, const std::string& format_name) {
+    throw InvalidArgument("lenient", timing_path + " (" + format_name +
+                                         ") times every syllable itself: nothing is aligned, so nothing is found "
+                                         "not to say its text; lenient alignment needs subtitle cues that time "
+                                         "sentences (srt, vtt), or no timing file");
+}
+
 }  // namespace
 
 Timeline time_transcript(const std::string& timing_path, const std::string& audio_path, const Timeline& transcript,
                          const std::string& format, const ProgressCallback& progress) {
+    return time_transcript(timing_path, audio_path, transcript, AlignOptions(), format, progress);
+}
+
+Timeline time_transcript(const std::string& timing_path, const std::string& audio_path, const Timeline& transcript,
+                         const AlignOptions& options, const std::string& format, const ProgressCallback& progress) {
+    const SpeechAligner checked(options);  // options out of range are refused before any reading
     const std::unique_ptr<detail::AudioSource> audio = detail::open_audio_file(audio_path);
-    const double rate_hz = audio->sample_rate_hz();
-    const double duration_s = static_cast<double>(audio->frame_count()) / rate_hz;
+    const double duration_s = static_cast<double>(audio->frame_count()) / audio->sample_rate_hz();
     const std::string chosen = format.empty() ? timing_format_for_path(timing_path) : format;
-    if (chosen != "srt" && chosen != "vtt") return read_timing_file(timing_path, transcript, duration_s, chosen);
+    if (chosen != "srt" && chosen != "vtt") {
+        if (options.lenient) refuse_lenient(timing_path, chosen);
+        return read_timing_file(timing_path, transcript, duration_s, chosen);
+    }
 
     const std::string text = detail::read_file(timing_path);
     const std::vector<detail::TimedUnit> cues = chosen == "srt" ? detail::read_subrip_units(text, timing_path)
@@ -92,15 +108,16 @@ Timeline time_transcript(const std::string& timing_path, const std::string& audi
         const auto& range = ranges[static_cast<std::size_t>(&cue - cues.data())];
         return cue.inner_starts_s.size() + 1 == range.second - range.first;
     });
-    if (times_syllables)
-        return detail::match_timed_units(transcript, cues, duration_s, timing_path, detail::UnitKind::cues);
+    if (times_syllables) {
+        if (options.lenient) refuse_lenient(timing_path, "vtt with a timestamp per syllable");
+        return detail::time_matched_units(transcript, cues, ranges, duration_s, detail::UnitKind::cues);
+    }
     Timeline timeline =
-        detail::align_file_in_given_spans(audio_path, transcript, sentence_spans(transcript, cues, ranges), progress);
+        detail::align_in_given_spans(*audio, transcript, sentence_spans(transcript, cues, ranges), checked.options(), progress);
     for (std::size_t c = 0; c < cues.size(); ++c) {
         if (ranges[c].first < ranges[c].second) keep_inside(timeline, ranges[c].first, ranges[c].second, cues[c]);
     }
     detail::span_sentences(timeline);
-    timeline.duration_s = duration_s;
     return timeline;
 }
 

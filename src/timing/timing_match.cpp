@@ -195,7 +195,12 @@ std::vector<std::pair<std::size_t, std::size_t>> unit_syllable_ranges(const Time
 Timeline match_timed_units(const Timeline& transcript, const std::vector<TimedUnit>& units, double duration_s,
                            const std::string& source, UnitKind kind) {
     check_unit_times(units, duration_s, source);
-    const auto ranges = unit_syllable_ranges(transcript, units, source);
+    return time_matched_units(transcript, units, unit_syllable_ranges(transcript, units, source), duration_s, kind);
+}
+
+Timeline time_matched_units(const Timeline& transcript, const std::vector<TimedUnit>& units,
+                            const std::vector<std::pair<std::size_t, std::size_t>>& ranges, double duration_s,
+                            UnitKind kind) {
     Timeline timeline = transcript;
     for (std::size_t u = 0; u < units.size(); ++u) {
         const TimedUnit& unit = units[u];

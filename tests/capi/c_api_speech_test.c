@@ -377,8 +377,25 @@ static int test_lenient_reports_speech_the_transcript_lacks(void) {
         CHECK(strcmp(expected, "") == 0);
         CHECK(start_s > 1.3 && start_s < 1.5 && end_s > 1.8 && end_s < 2.0);
         CHECK_OK(tf_timeline_mismatch(aligned, 0, NULL, NULL, NULL, NULL, NULL));
+        /* Its loudness: a value 0..1 every 20 ms over the stretch, loud somewhere in it. */
+        {
+            const double *values = NULL;
+            size_t value_count = 0, v;
+            double step_s = 0.0, loudest = 0.0;
+            CHECK_OK(tf_timeline_mismatch_loudness(aligned, 0, &values, &value_count, &step_s));
+            CHECK(step_s == 0.02);
+            CHECK(values != NULL && value_count >= (size_t)((end_s - start_s) / step_s));
+            for (v = 0; values != NULL && v < value_count; ++v) {
+                CHECK(values[v] >= 0.0 && values[v] <= 1.0);
+                if (values[v] > loudest) loudest = values[v];
+            }
+            CHECK(loudest > 0.5);
+            CHECK_OK(tf_timeline_mismatch_loudness(aligned, 0, NULL, NULL, NULL));
+        }
     }
     CHECK_FAILS_WITH(tf_timeline_mismatch(aligned, 1, NULL, NULL, NULL, NULL, NULL), TF_ERR_INVALID_ARGUMENT, "index");
+    CHECK_FAILS_WITH(tf_timeline_mismatch_loudness(aligned, 1, NULL, NULL, NULL), TF_ERR_INVALID_ARGUMENT, "index");
+    CHECK_FAILS_WITH(tf_timeline_mismatch_loudness(NULL, 0, NULL, NULL, NULL), TF_ERR_INVALID_ARGUMENT, "timeline");
     tf_timeline_destroy(aligned);
     aligned = NULL;
     tf_timeline_destroy(transcript);
@@ -427,9 +444,53 @@ static int test_a_subtitle_cue_pins_the_syllables(void) {
     return failures;
 }
 
+/* The cue-pinned aligner takes options (tf_time_transcript_with_options): lenient, a word the cue
+ * and transcript lack is reported; a words JSON, which times every syllable, refuses lenient. */
+static int test_a_cue_pinned_alignment_takes_lenient_options(void) {
+    static const char text[] = "小朋友们在里放风筝。";
+    int failures = 0;
+    tf_timeline *transcript = NULL;
+    tf_timeline *timeline = NULL;
+    tf_align_options *options = NULL;
+    const char *cue_path = TF_TEST_OUTPUT_DIR "/lenient_cue.srt";
+    const char *words_path = TF_TEST_OUTPUT_DIR "/lenient_words.json";
+    FILE *file = fopen(cue_path, "wb");
+    size_t count = 0;
+    CHECK(file != NULL);
+    if (file == NULL) return failures;
+    fputs("1\n00:00:00,200 --> 00:00:03,100\n小朋友们在里放风筝。\n", file);
+    fclose(file);
+    file = fopen(words_path, "wb");
+    CHECK(file != NULL);
+    if (file == NULL) return failures;
+    fputs("[{\"text\": \"小朋友们在里放风筝\", \"start\": 0.3, \"end\": 2.9}]", file);
+    fclose(file);
+    CHECK_OK(tf_read_transcript(text, strlen(text), "lenient.txt", &transcript));
+    CHECK_OK(tf_align_options_create(&options));
+    CHECK_OK(tf_align_options_set_lenient(options, 1));
+    CHECK_OK(tf_time_transcript_with_options(cue_path, CLIP_DIR "lenient_espeak.flac", transcript, NULL, options, NULL,
+                                             NULL, &timeline));
+    CHECK_OK(tf_timeline_mismatch_count(timeline, &count));
+    CHECK(count == 1);
+    tf_timeline_destroy(timeline);
+    timeline = NULL;
+    CHECK_FAILS_WITH(tf_time_transcript_with_options(words_path, CLIP_DIR "lenient_espeak.flac", transcript, NULL,
+                                                     options, NULL, NULL, &timeline),
+                     TF_ERR_INVALID_ARGUMENT, "times every syllable itself");
+    CHECK(timeline == NULL);
+    /* NULL options: the defaults, as tf_time_transcript. */
+    CHECK_OK(tf_time_transcript_with_options(words_path, CLIP_DIR "lenient_espeak.flac", transcript, NULL, NULL, NULL,
+                                             NULL, &timeline));
+    tf_timeline_destroy(timeline);
+    tf_timeline_destroy(transcript);
+    tf_align_options_destroy(options);
+    return failures;
+}
+
 int main(void) {
     int failures = 0;
     failures += test_a_subtitle_cue_pins_the_syllables();
+    failures += test_a_cue_pinned_alignment_takes_lenient_options();
     failures += test_check_modes_refuse_warn_or_skip();
     failures += test_lenient_reports_speech_the_transcript_lacks();
     failures += test_the_alignment_plot_is_an_svg_of_the_clip();

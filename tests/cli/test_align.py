@@ -217,4 +217,30 @@ def test_lenient_aligns_a_text_a_word_off_and_reports_the_stretch(tmp_path):
     # The commands that align on their way to an animation take it too, and say what they found.
     keyframes = run("keyframes", audio, transcript, "--lenient", "-o", tmp_path / "k.json")
     assert keyframes.returncode == 0, keyframes.stderr
-    assert "speech the transcript lacks" in keyframes.stderr
+    # Said once (the timeline's warning), not twice.
+    assert keyframes.stderr.count("speech the transcript lacks") == 1, keyframes.stderr
+    # The stretch's loudness is in the JSON; over it the mouth opens and closes with the voice.
+    loudness = document["mismatches"][0]["loudness"]
+    assert all(0 <= value <= 1 for value in loudness) and max(loudness) > 0.5
+
+
+def test_lenient_with_a_timing_file(tmp_path):
+    audio = CLIPS_DIR / "lenient_espeak.flac"  # says 公园, which this transcript and its cue lack
+    transcript = tmp_path / "lacks.txt"
+    transcript.write_text("小朋友们在里放风筝。\n", encoding="utf-8")
+    cues = tmp_path / "cues.srt"
+    cues.write_text("1\n00:00:00,200 --> 00:00:03,100\n小朋友们在里放风筝。\n", encoding="utf-8")
+    # Subtitle cues pin the aligner, which --lenient makes lenient.
+    strict = run("keyframes", audio, transcript, "--timing", cues, "-o", tmp_path / "strict.json")
+    assert "speech the transcript lacks" not in strict.stderr
+    pinned = run("keyframes", audio, transcript, "--timing", cues, "--lenient", "-o", tmp_path / "k.json")
+    assert pinned.returncode == 0, pinned.stderr
+    assert pinned.stderr.count("speech the transcript lacks") == 1, pinned.stderr
+    # A timing that times every syllable aligns nothing: --lenient there is a usage error, named.
+    words = tmp_path / "words.json"
+    words.write_text('[{"text": "小朋友们在里放风筝", "start": 0.3, "end": 2.9}]', encoding="utf-8")
+    out = tmp_path / "words_k.json"
+    result = run("keyframes", audio, transcript, "--timing", words, "--lenient", "-o", out)
+    assert result.returncode == 2
+    assert f"--lenient: {words} (json) times every syllable itself" in result.stderr, result.stderr
+    assert not out.exists()

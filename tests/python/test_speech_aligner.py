@@ -269,3 +269,12 @@ def test_lenient_reports_speech_the_transcript_lacks_and_keeps_the_rest():
     assert again.mismatches == aligned.mismatches
     made = talkface.TextMismatch(start_s=1.0, end_s=1.5, first_syllable=2, syllable_count=1, expected_text="好")
     assert talkface.Timeline(mismatches=[made]).mismatches == [made]
+    # The stretch's loudness, a value 0..1 every MISMATCH_LOUDNESS_STEP_S, which the mouth follows.
+    assert talkface.MISMATCH_LOUDNESS_STEP_S == 0.02
+    loudness = mismatch.loudness
+    assert len(loudness) >= int((mismatch.end_s - mismatch.start_s) / talkface.MISMATCH_LOUDNESS_STEP_S)
+    assert all(0.0 <= value <= 1.0 for value in loudness) and max(loudness) > 0.5
+    assert again.mismatches[0].loudness == loudness
+    made.loudness = [0.0, 1.0]
+    assert made != talkface.TextMismatch(start_s=1.0, end_s=1.5, first_syllable=2, syllable_count=1, expected_text="好")
+    assert talkface.TextMismatch(loudness=[0.5]).loudness == [0.5]

@@ -100,3 +100,19 @@ def test_time_transcript_pins_the_aligner_to_a_subtitle_cue(tmp_path):
     timeline = talkface.time_transcript(cue, clips / "one_sentence.wav", transcript)
     assert len(timeline.syllables) == len(transcript.syllables)
     assert all(0.6 - 1e-9 <= s.start_s < s.end_s <= 2.5 + 1e-9 for s in timeline.syllables)
+
+
+def test_time_transcript_takes_the_aligners_options_lenient_among_them(tmp_path):
+    import pathlib
+    clips = pathlib.Path(__file__).parents[2] / "tests" / "data" / "speech"
+    transcript = talkface.read_transcript("小朋友们在里放风筝。")  # the clip says 公园 too
+    cue = tmp_path / "cue.srt"
+    cue.write_text("1\n00:00:00,200 --> 00:00:03,100\n小朋友们在里放风筝。\n", encoding="utf-8")
+    lenient = talkface.AlignOptions(lenient=True)
+    timeline = talkface.time_transcript(cue, clips / "lenient_espeak.flac", transcript, options=lenient)
+    assert [(m.first_syllable, m.syllable_count) for m in timeline.mismatches] == [(5, 0)]
+    words = tmp_path / "words.json"
+    words.write_text('[{"text": "小朋友们在里放风筝", "start": 0.3, "end": 2.9}]', encoding="utf-8")
+    with pytest.raises(ValueError, match="times every syllable itself"):
+        talkface.time_transcript(words, clips / "lenient_espeak.flac", transcript, options=lenient)
+    assert talkface.time_transcript(words, clips / "lenient_espeak.flac", transcript).mismatches == []

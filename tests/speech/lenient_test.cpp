@@ -12,6 +12,8 @@
 
 #include "common/speech_clips.hpp"
 #include "talkface/errors.hpp"
+#include "talkface/face_model.hpp"
+#include "talkface/lip_sync.hpp"
 #include "talkface/speech_aligner.hpp"
 #include "talkface/transcript.hpp"
 
@@ -22,6 +24,12 @@ namespace {
 // Where 公园 (syllables 5 and 6 of what is said) starts and ends.
 constexpr std::size_t kWordFirst = 5;
 constexpr std::size_t kWordEnd = 7;
+
+// How far the lips part in a shape, pixels of the default face.
+double opening(MouthShape shape) {
+    const MouthControls controls = mouth_controls(FaceModel::default_face(), shape);
+    return controls.down.y - controls.up.y;
+}
 
 SpeechAligner lenient_aligner() {
     AlignOptions options;
@@ -80,6 +88,58 @@ TEST_SUITE("speech") {
             if (i >= kWordFirst && i < kWordEnd) continue;
             CAPTURE(i);
             CHECK(std::abs(aligned.syllables[i].start_s - truth[i]) < 0.05);
+        }
+    }
+
+    TEST_CASE("lenient: the stretch carries the audio's loudness, and the mouth follows it there") {
+        const Timeline aligned = lenient_aligner().align_file(test::clip_path("lenient_espeak.flac"),
+                                                              read_transcript("小朋友们在里放风筝。"));
+        REQUIRE(aligned.mismatches.size() == 1);
+        const TextMismatch& mismatch = aligned.mismatches.front();
+        const std::vector<double>& loudness = mismatch.loudness;
+        // A value every 20 ms over the stretch (公园, about 0.5 s of speech).
+        CHECK(loudness.size() == static_cast<std::size_t>(std::ceil((mismatch.end_s - mismatch.start_s) / kMismatchLoudnessStepS - 1e-6)));
+        REQUIRE(loudness.size() >= 10);
+        CHECK(std::all_of(loudness.begin(), loudness.end(), [](double value) { return value >= 0.0 && value <= 1.0; }));
+        // Two syllables of speech: loud in their vowels, softer between them and at the ends.
+        const double loudest = *std::max_element(loudness.begin(), loudness.end());
+        CHECK(loudest > 0.6);
+        const auto peak = std::max_element(loudness.begin(), loudness.end()) - loudness.begin();
+        CHECK(std::any_of(loudness.begin() + peak, loudness.end(), [&](double value) { return value < loudest - 0.3; }));
+
+        // The mouth over the stretch: louder frames open wider; the two syllables of the text's
+        // syllables around it keep their own shapes.
+        const auto keys = mouth_key_frames(aligned);
+        std::vector<std::pair<double, MouthShape>> inside;  // (loudness, shape)
+        for (const MouthKeyFrame& key : keys) {
+            // A frame in from either end: the neighbours' own key frames may round onto the ends.
+            if (key.time_s <= mismatch.start_s + 0.04 || key.time_s >= mismatch.end_s - 0.04) continue;
+            // The loudness of the frame: the mean of the values within half a frame (20 ms at 25 fps).
+            double sum = 0.0;
+            int count = 0;
+            for (std::size_t k = 0; k < loudness.size(); ++k) {
+                const double middle_s = mismatch.start_s + (static_cast<double>(k) + 0.5) * kMismatchLoudnessStepS;
+                if (std::abs(middle_s - key.time_s) <= 0.02) {
+                    sum += loudness[k];
+                    ++count;
+                }
+            }
+            REQUIRE(count > 0);
+            inside.emplace_back(sum / count, key.shape);
+        }
+        REQUIRE(inside.size() >= 3);
+        const auto widest = std::max_element(inside.begin(), inside.end(), [](const auto& a, const auto& b) {
+            return opening(a.second) < opening(b.second);
+        });
+        const auto narrowest = std::min_element(inside.begin(), inside.end(), [](const auto& a, const auto& b) {
+            return opening(a.second) < opening(b.second);
+        });
+        CHECK(opening(widest->second) > opening(narrowest->second));  // it opens and closes
+        CHECK(widest->first > narrowest->first);                       // with the loudness
+        for (const auto& [value, shape] : inside) {
+            CAPTURE(value);
+            CHECK((value < 0.1) == (shape == MouthShape::m));
+            CHECK((value >= 0.67) == (shape == MouthShape::a));
         }
     }
 

@@ -168,5 +168,43 @@ TEST_SUITE("cue-pinned alignment") {
             CAPTURE(i);
             CHECK(std::abs(timeline.syllables[i].start_s - timed.syllables[i].start_s) < 0.0015);
         }
+        // Nothing is aligned, so lenient alignment has nothing to do: refused by name.
+        talkface::AlignOptions lenient;
+        lenient.lenient = true;
+        CHECK_THROWS_WITH_AS(talkface::time_transcript(path, clip_path("two_sentences.wav"),
+                                                       talkface::load_transcript(clip_path("two_sentences.txt")), lenient),
+                             doctest::Contains(("lenient: " + path + " (vtt with a timestamp per syllable) times every syllable").c_str()),
+                             talkface::InvalidArgument);
+    }
+
+    TEST_CASE("lenient options reach the aligner the cues pin: a word the cue's text lacks is reported, not refused") {
+        // lenient_espeak says 小朋友们在公园里放风筝 (2.97 s); the cue and the transcript lack 公园.
+        const Timeline transcript = talkface::read_transcript("小朋友们在里放风筝。");
+        const std::string path = write_srt("cue_pinned_lenient.srt", {{0.2, 3.1, "小朋友们在里放风筝。"}});
+        const std::string audio = clip_path("lenient_espeak.flac");
+        CHECK(talkface::time_transcript(path, audio, transcript).mismatches.empty());  // the default: not lenient
+        talkface::AlignOptions lenient;
+        lenient.lenient = true;
+        const Timeline timeline = talkface::time_transcript(path, audio, transcript, lenient);
+        REQUIRE(timeline.mismatches.size() == 1);
+        const auto truth = true_starts("lenient_espeak");
+        CHECK(timeline.mismatches[0].syllable_count == 0);
+        CHECK(std::abs(timeline.mismatches[0].start_s - truth[5]) < 0.05);  // 公
+        CHECK(std::abs(timeline.mismatches[0].end_s - truth[7]) < 0.05);    // 里
+        CHECK_FALSE(timeline.mismatches[0].loudness.empty());
+    }
+
+    TEST_CASE("lenient options with a timing that times every syllable are refused, naming lenient and why") {
+        const Timeline transcript = talkface::load_transcript(clip_path("two_sentences.txt"));
+        const std::string path = talkface::test::output_path("cue_pinned_words.json");
+        std::ofstream(path, std::ios::binary) << talkface::write_timing_string(transcript, "words-json");
+        talkface::AlignOptions lenient;
+        lenient.lenient = true;
+        CHECK_THROWS_WITH_AS(talkface::time_transcript(path, clip_path("two_sentences.wav"), transcript, lenient),
+                             doctest::Contains("(json) times every syllable itself: nothing is aligned"),
+                             talkface::InvalidArgument);
+        lenient.c1 = 2.0;
+        CHECK_THROWS_WITH_AS(talkface::time_transcript(path, clip_path("two_sentences.wav"), transcript, lenient),
+                             doctest::Contains("c1"), talkface::InvalidArgument);
     }
 }

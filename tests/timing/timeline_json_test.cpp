@@ -204,7 +204,7 @@ TEST_SUITE("timeline JSON") {
 
     TEST_CASE("mismatches of a lenient alignment round trip; a document without times has none") {
         Timeline timeline = spoken_timeline();
-        timeline.mismatches = {{0.5, 0.5 + 1.0 / 3.0, 1, 2, "好\"世"}, {1.25, 1.25, 4, 0, ""}};
+        timeline.mismatches = {{0.5, 0.5 + 1.0 / 3.0, 1, 2, "好\"世", {}}, {1.25, 1.25, 4, 0, "", {}}};
         const std::string json = talkface::timeline_to_json(timeline);
         CHECK(json.find("\"mismatches\":[\n{\"start\":0.5,\"end\":0.8333333333333333,\"first_syllable\":1,"
                         "\"syllable_count\":2,\"expected\":\"好\\\"世\"},\n") != std::string::npos);
@@ -226,6 +226,26 @@ TEST_SUITE("timeline JSON") {
                   .find("mismatches[0]: stands for syllables from 1 (1 of them), past the 1 syllables") != std::string::npos);
         CHECK(error_of(head + R"({"start":2,"end":1,"first_syllable":0,"syllable_count":1,"expected":"b"}]})")
                   .find("mismatches[0]: ends at 1 s, before it starts (2 s)") != std::string::npos);
+    }
+
+    TEST_CASE("a mismatch's loudness round trips exactly and is refused outside 0..1") {
+        Timeline timeline = spoken_timeline();
+        // Values as the aligner rounds them, and one it could not give: every double comes back.
+        timeline.mismatches = {{0.5, 0.58, 1, 1, "好", {0.0, 0.07, 0.29, 1.0}}, {0.9, 0.94, 2, 0, "", {1.0 / 3.0, 0.5}}};
+        const std::string json = talkface::timeline_to_json(timeline);
+        CHECK(json.find("\"expected\":\"好\",\"loudness\":[0,0.07,0.29,1]}") != std::string::npos);
+        const Timeline back = talkface::timeline_from_json(json);
+        REQUIRE(back.mismatches.size() == 2);
+        CHECK(back.mismatches[0].loudness == timeline.mismatches[0].loudness);
+        CHECK(back.mismatches[1].loudness == timeline.mismatches[1].loudness);
+        CHECK(talkface::timeline_to_json(back) == json);
+        const std::string head = "{\"sentences\":[{\"text\":\"a\"}],\n\"syllables\":[\n"
+                                 R"({"text":"a","pinyin":"a1","sentence":0}],)"
+                                 "\n\"mismatches\":[";
+        CHECK(error_of(head + R"({"start":1,"end":2,"first_syllable":0,"syllable_count":1,"expected":"a","loudness":[0.5,1.5]}]})")
+                  .find("mismatches[0].loudness: expected a number 0..1, found 1.5") != std::string::npos);
+        CHECK(error_of(head + R"({"start":1,"end":2,"first_syllable":0,"syllable_count":1,"expected":"a","loudness":0.5}]})")
+                  .find("mismatches[0].loudness: expected a list of numbers 0..1, found 0.5") != std::string::npos);
     }
 
     TEST_CASE("a file is read and written whole, and a missing one is named") {

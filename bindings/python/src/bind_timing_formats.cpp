@@ -143,22 +143,28 @@ Example:
     m.def(
         "time_transcript",
         [](const std::filesystem::path& timing_path, const std::filesystem::path& audio_path,
-           const Timeline& transcript, const std::string& format) {
+           const Timeline& transcript, const std::string& format, const std::optional<AlignOptions>& options) {
             const Timeline transcript_copy = transcript;
+            const AlignOptions options_copy = options.value_or(AlignOptions{});
             py::gil_scoped_release release;
-            return time_transcript(timing_path.string(), audio_path.string(), transcript_copy, format);
+            return time_transcript(timing_path.string(), audio_path.string(), transcript_copy, options_copy, format);
         },
-        py::arg("timing_path"), py::arg("audio_path"), py::arg("transcript"), py::arg("format") = "", R"doc(
+        py::arg("timing_path"), py::arg("audio_path"), py::arg("transcript"), py::arg("format") = "",
+        py::arg("options") = py::none(), R"doc(
 The transcript spoken in a recording, timed by a timing file instead of aligning the whole
 recording (what `--timing FILE` does): word and syllable timings as read_timing_file() reads them;
 subtitle cues that give sentence times only pin the aligner: each sentence is searched only inside
 its cues (the models are learned, and a wrong text refused, over the whole recording); cues that
 time every syllable (WebVTT cue timestamps, as the vtt export writes) are read as they are.
-Releases the GIL.
+`options` (AlignOptions, None: the defaults) are the pinned aligner's: check decides what a wrong
+text does; lenient reports a stretch inside the cues that does not say its text
+(Timeline.mismatches) rather than refusing. Releases the GIL.
 
 Raises:
     talkface.ParseError, talkface.FileError: as read_timing_file() and SpeechAligner.align_file().
     talkface.AlignmentError: as SpeechAligner.align_file().
+    ValueError: naming lenient if options.lenient and the file times every syllable itself
+        (textgrid, words-json, timeline-json, cues with a timestamp per syllable): nothing is aligned.
 
 Example:
     >>> timeline = talkface.time_transcript("speech.srt", "speech.wav", transcript)

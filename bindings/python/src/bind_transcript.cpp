@@ -144,38 +144,49 @@ Example:
                 .format(f.text, f.first_syllable, f.syllable_count);
         });
 
+    m.attr("MISMATCH_LOUDNESS_STEP_S") = kMismatchLoudnessStepS;
     py::class_<TextMismatch>(m, "TextMismatch", R"doc(
 A stretch where the speech does not say the transcript's text, found by lenient alignment
 (AlignOptions(lenient=True)): its time span, the syllables it stands for
 (timeline.syllables[first_syllable : first_syllable + syllable_count], spread over the stretch at
-its loudness peaks with confidence 0) and the text expected there. syllable_count is 0 where the
-speech has words the transcript lacks; start_s == end_s where the speech leaves the text out.
+its loudness dips with confidence 0), the text expected there, and the audio's loudness over it
+(loudness: one value 0..1 per MISMATCH_LOUDNESS_STEP_S = 0.02 s from start_s; 0 silence, 1 the
+recording's loud speech), which the mouth follows there instead of the syllables' shapes.
+syllable_count is 0 where the speech has words the transcript lacks; start_s == end_s where the
+speech leaves the text out.
 
 Example:
     >>> aligned = talkface.SpeechAligner(talkface.AlignOptions(lenient=True)).align_file("a.wav", timeline)
     >>> [(m.start_s, m.end_s, m.expected_text) for m in aligned.mismatches]
 )doc")
         .def(py::init([](double start_s, double end_s, std::size_t first_syllable, std::size_t syllable_count,
-                         std::string expected_text) {
-                 return TextMismatch{start_s, end_s, first_syllable, syllable_count, std::move(expected_text)};
+                         std::string expected_text, std::vector<double> loudness) {
+                 return TextMismatch{start_s, end_s, first_syllable, syllable_count, std::move(expected_text),
+                                     std::move(loudness)};
              }),
              py::arg("start_s") = 0.0, py::arg("end_s") = 0.0, py::arg("first_syllable") = 0,
-             py::arg("syllable_count") = 0, py::arg("expected_text") = "", R"doc(
+             py::arg("syllable_count") = 0, py::arg("expected_text") = "",
+             py::arg("loudness") = std::vector<double>{}, R"doc(
 Args:
     start_s, end_s (float): the stretch of audio, seconds.
     first_syllable (int): index into Timeline.syllables of the first syllable it stands for.
     syllable_count (int): how many syllables it stands for (0: speech the transcript lacks).
     expected_text (str): what the transcript says there, UTF-8.
+    loudness (list[float]): the audio's loudness, 0..1, one value per 0.02 s from start_s (empty:
+        not measured; the mouth then shows the syllables' shapes).
 )doc")
         .def_readwrite("start_s", &TextMismatch::start_s, "seconds")
         .def_readwrite("end_s", &TextMismatch::end_s, "seconds")
         .def_readwrite("first_syllable", &TextMismatch::first_syllable, "index of the first syllable it stands for")
         .def_readwrite("syllable_count", &TextMismatch::syllable_count, "how many syllables it stands for")
         .def_readwrite("expected_text", &TextMismatch::expected_text, "what the transcript says there, UTF-8")
+        .def_readwrite("loudness", &TextMismatch::loudness,
+                       "list[float] (a copy): the audio's loudness 0..1, one value per 0.02 s from start_s")
         .def("__eq__",
              [](const TextMismatch& a, const TextMismatch& b) {
                  return a.start_s == b.start_s && a.end_s == b.end_s && a.first_syllable == b.first_syllable &&
-                        a.syllable_count == b.syllable_count && a.expected_text == b.expected_text;
+                        a.syllable_count == b.syllable_count && a.expected_text == b.expected_text &&
+                        a.loudness == b.loudness;
              })
         .def("__repr__", [](const TextMismatch& mismatch) {
             return py::str("talkface.TextMismatch(start_s={!r}, end_s={!r}, first_syllable={!r}, syllable_count={!r}, "
