@@ -126,7 +126,7 @@ TEST_SUITE("lip sync") {
         CHECK(parted(1.32) == doctest::Approx(closed));
     }
 
-    TEST_CASE("a mismatch without a loudness keeps the syllables' shapes; one for speech the text lacks opens a pause") {
+    TEST_CASE("a mismatch without a loudness keeps the syllables' shapes, one for speech the text lacks opens a pause") {
         Timeline unmeasured = timeline_with_stretch({});
         Timeline plain = unmeasured;
         plain.mismatches.clear();

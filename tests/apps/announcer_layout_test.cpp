@@ -79,7 +79,7 @@ TEST_SUITE("announcer layout") {
         }
     }
 
-    TEST_CASE("the caption never covers the mouth, wherever the face stands; else the refusal names why") {
+    TEST_CASE("the caption never covers the mouth, wherever the face stands, else the refusal names why") {
         const FaceModel face = FaceModel::default_face();
         const StageBox canvas = canvas_of(face);
         const std::vector<FaceState> frames = pose_grid(face);

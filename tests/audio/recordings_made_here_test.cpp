@@ -94,7 +94,7 @@ TEST_SUITE("audio") {
         }
     }
 
-    TEST_CASE("a phone call (300-3400 Hz at 8 kHz; PCM, GSM, MP3, Opus, AAC) aligns as the WAV does") {
+    TEST_CASE("a phone call (300-3400 Hz at 8 kHz, PCM, GSM, MP3, Opus, AAC) aligns as the WAV does") {
         const Timeline transcript = load_transcript(speech_clip("one_sentence.txt"));
         const SpeechAligner aligner;
         const Timeline reference = aligner.align_file(speech_clip("one_sentence.wav"), transcript);

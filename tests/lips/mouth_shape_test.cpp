@@ -120,7 +120,7 @@ TEST_SUITE("mouth shapes") {
         }
     }
 
-    TEST_CASE("a opens widest; m and f are closed; m is the neutral face") {
+    TEST_CASE("a opens widest, m and f are closed, m is the neutral face") {
         for (const auto& [name, face] : test::test_faces()) {
             CAPTURE(name);
             const double widest = vertical_opening(apply_mouth(face, mouth_controls(face, MouthShape::a)));

@@ -126,7 +126,7 @@ TEST_SUITE("Rotation3D") {
         }
     }
 
-    TEST_CASE("any finite angle is a rotation; the angles read back in degrees") {
+    TEST_CASE("any finite angle is a rotation, the angles read back in degrees") {
         const Rotation3D r(90.0, -200.0, 30.0);
         CHECK(r.alpha_deg() == 90.0);
         CHECK(r.beta_deg() == -200.0);

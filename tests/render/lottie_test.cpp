@@ -227,7 +227,7 @@ TEST_SUITE("lottie") {
         CHECK(key_count(*bottom.items[0].find("it")->items[2].find("c")) == 0);
     }
 
-    TEST_CASE("a layer added once, or repeated, holds still; a frame with other shapes is a bug") {
+    TEST_CASE("a layer added once, or repeated, holds still, a frame with other shapes is a bug") {
         LottieLayerEncoder still("still", kTolerance, kDecimals, 1);
         still.add(moving_layer(0.5));
         for (const LottieLayerContent& layer : still.finish()) {
@@ -255,7 +255,7 @@ TEST_SUITE("lottie") {
         CHECK_THROWS_WITH_AS(boxing.add(boxed), doctest::Contains("no Lottie form"), Error);
     }
 
-    TEST_CASE("a clipped group inside another is masked by both clips, intersected; a moved clip by its source moved") {
+    TEST_CASE("a clipped group inside another is masked by both clips, intersected, a moved clip by its source moved") {
         // Inside the eyeball's group: the clip's outline moved 5 right (a moved clip), holding a
         // reference to the clip's outline moved 3 down.
         const auto nested_layer = [](double t) {

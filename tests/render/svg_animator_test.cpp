@@ -283,7 +283,7 @@ TEST_CASE("background and clothes layers follow the options, and stay in place w
     CHECK(node_with_id(full, "clothes").child("path"));
 }
 
-TEST_CASE("width_px and height_px set the size; the viewBox stays the face's") {
+TEST_CASE("width_px and height_px set the size, the viewBox stays the face's") {
     SvgOptions options;
     options.width_px = 300;
     const SvgAnimator sized(FaceModel::default_face(), options);

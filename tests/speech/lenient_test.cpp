@@ -40,7 +40,7 @@ SpeechAligner lenient_aligner() {
 }  // namespace
 
 TEST_SUITE("speech") {
-    TEST_CASE("lenient: a word the transcript lacks is reported where it is said; the rest is in place") {
+    TEST_CASE("lenient: a word the transcript lacks is reported where it is said, the rest is in place") {
         const auto truth = test::true_starts("lenient_espeak");
         REQUIRE(truth.size() == 11);
         const Timeline transcript = read_transcript("小朋友们在里放风筝。");
@@ -64,7 +64,7 @@ TEST_SUITE("speech") {
         CHECK(SpeechAligner(AlignOptions{}).options().lenient == false);
     }
 
-    TEST_CASE("lenient: a changed word is reported inside its stretch; the syllables around it keep their place") {
+    TEST_CASE("lenient: a changed word is reported inside its stretch, the syllables around it keep their place") {
         const auto truth = test::true_starts("lenient_espeak");
         const Timeline transcript = load_transcript(test::clip_path("lenient_espeak.txt"));  // 学校 for 公园
         const Timeline aligned = lenient_aligner().align_file(test::clip_path("lenient_espeak.flac"), transcript);

@@ -202,7 +202,7 @@ TEST_SUITE("timeline JSON") {
               "t.json:4:18: written_forms[0]: \"text\" is missing");
     }
 
-    TEST_CASE("mismatches of a lenient alignment round trip; a document without times has none") {
+    TEST_CASE("mismatches of a lenient alignment round trip, a document without times has none") {
         Timeline timeline = spoken_timeline();
         timeline.mismatches = {{0.5, 0.5 + 1.0 / 3.0, 1, 2, "好\"世", {}}, {1.25, 1.25, 4, 0, "", {}}};
         const std::string json = talkface::timeline_to_json(timeline);

@@ -153,7 +153,7 @@ TEST_SUITE("timing exports") {
               "WEBVTT\n\n1\n00:00:00.500 --> 00:00:01.500\n你<00:00:00.750>好，<00:00:01.000>世<00:00:01.250>界。\n");
     }
 
-    TEST_CASE("the format comes from the suffix where it is plain; a plain .json or an unknown one is named") {
+    TEST_CASE("the format comes from the suffix where it is plain, a plain .json or an unknown one is named") {
         CHECK(talkface::export_format_for_path("a/b.tsv") == "rhubarb-tsv");
         CHECK(talkface::export_format_for_path("b.xml") == "rhubarb-xml");
         CHECK(talkface::export_format_for_path("b.dat") == "moho");

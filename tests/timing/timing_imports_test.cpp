@@ -185,7 +185,7 @@ TEST_SUITE("timing imports") {
                                             "one interval tier), found tiers \"lexicon\", \"phones\"");
     }
 
-    TEST_CASE("WebVTT cue timestamps give the syllables' starts; markup and notes are skipped") {
+    TEST_CASE("WebVTT cue timestamps give the syllables' starts, markup and notes are skipped") {
         const std::string vtt = "WEBVTT - talkface\n\nNOTE made by hand\n\ncue-1\n00:00.500 --> 00:01.500 align:start\n"
                                 "<v Ann>你<00:00:00.600>好，<00:00:01.000>世<00:00:01.100>界。</v>\n\n"
                                 "00:00:01.500 --> 00:00:02.000\n再 見\n";

@@ -147,7 +147,7 @@ TEST_CASE("MP4: the same frames and sound give the same bytes") {
     CHECK(read_bytes(folder + "/a.mp4") == read_bytes(folder + "/b.mp4"));
 }
 
-TEST_CASE("WebM: VP9 and Opus; transparent keeps the alpha channel") {
+TEST_CASE("WebM: VP9 and Opus, transparent keeps the alpha channel") {
     const std::string folder = fresh_folder("webm");
     const std::vector<float> samples = speech_like(48000, 1.0);
     VideoOptions options = small();
