@@ -9,6 +9,7 @@ Sources (licences in docs/data-licences.md):
                                   Pinyin IME phrase list, Apache 2.0. Simplified, toneless.
   opencc (command, s2t and s2tw)  Debian opencc, Apache 2.0: Traditional forms of those phrases.
   Unihan readings                 via make_readings.py: decoding the ids and choosing tones.
+  tools/phrase_additions.tsv      words the list lacks or reads wrong, with their readings.
 Run: /usr/bin/python3 tools/make_phrases.py
 """
 
@@ -27,6 +28,7 @@ import pinyin_rules  # noqa: E402
 ANDROID_DB = "/usr/share/pyzy/db/android.db"
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUTPUT = os.path.join(ROOT, "src", "text", "data", "phrases.cpp")
+ADDITIONS = os.path.join(ROOT, "tools", "phrase_additions.tsv")
 
 
 def read_android_db():
@@ -98,6 +100,36 @@ def decode_ids(rows, unihan):
     return decode, initials, finals
 
 
+def read_additions():
+    """{word: [numbered readings]} from tools/phrase_additions.tsv: words the list lacks or reads
+    wrong (that file says why, word by word)."""
+    additions = {}
+    with open(ADDITIONS, encoding="utf-8") as lines:
+        for number, line in enumerate(lines, start=1):
+            if line.startswith("#") or not line.strip():
+                continue
+            word, readings, _ = line.rstrip("\n").split("\t")
+            readings = readings.split()
+            if len(readings) != len(word) or not all(
+                    pinyin_rules.is_legal_toneless(r[:-1]) and r[-1] in "12345" for r in readings):
+                sys.exit(f"make_phrases: {ADDITIONS}:{number}: {word} needs one numbered reading a character")
+            additions[word] = readings
+    return additions
+
+
+def add_words(simplified, costs, additions):
+    """Puts the additions into the list: a new word at the median cost of the list's words of its
+    length (a word as common as a typical one: it wins over its characters read apart, and loses
+    to a commoner word that overlaps it), a word the list has with its reading replaced."""
+    by_length = collections.defaultdict(list)
+    for phrase in simplified:
+        by_length[len(phrase)].append(costs[phrase])
+    for word, readings in additions.items():
+        if word not in costs:
+            costs[word] = sorted(by_length[len(word)])[len(by_length[len(word)]) // 2]
+        simplified[word] = [reading[:-1] for reading in readings]
+
+
 def to_traditional(phrases, config):
     """OpenCC over the whole list at once, one phrase per line (phrase-level conversion)."""
     result = subprocess.run(["opencc", "-c", config], input="\n".join(phrases) + "\n",
@@ -132,6 +164,8 @@ def main():
     for phrase, _, ids in rows:
         if phrase not in simplified:
             simplified[phrase] = [decode(pair) for pair in ids]
+    additions = read_additions()
+    add_words(simplified, costs, additions)
     bad = [p for p, syllables in simplified.items()
            if len(p) > 1 and not all(pinyin_rules.is_legal_toneless(s) for s in syllables)]
     if bad:
@@ -160,7 +194,9 @@ def main():
             c in unihan and (len(make_readings.modern_toneless(unihan[c])) > 1 or first_toneless(c) != s)
             for c, s in zip(form, syllables))
         readings = []
-        if settles:
+        if settles and source in additions:
+            readings = additions[source]
+        elif settles:
             readings = [numbered_reading(c, s, unihan, f) for c, s, f in zip(form, syllables, source)]
             if None in readings:
                 unreadable += 1  # pyzy reads a character in a way no Unihan field knows: not trusted

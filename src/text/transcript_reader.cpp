@@ -11,6 +11,7 @@
 #include "common/atomic_file.hpp"
 #include "common/internal_error.hpp"
 #include "talkface/errors.hpp"
+#include "text/aspect_particle.hpp"
 #include "text/code_points.hpp"
 #include "text/latin_words.hpp"
 #include "text/reading_tables.hpp"
@@ -104,6 +105,30 @@ std::size_t end_of_token(const std::vector<CodePoint>& text, std::size_t start) 
     return end;
 }
 
+// Full-width Latin letters, digits and symbols (ＡＩ ｉＰｈｏｎｅ ５Ｇ ％ ＄ ／ ：) are read as their ASCII
+// forms, as the numbers' reader already did with digits; each keeps its text, so sentences and
+// written forms show what the page shows. The braces of a reading fix stay ASCII only: ｛ is text.
+std::vector<CodePoint> width_folded(const std::vector<CodePoint>& text) {
+    auto folded = text;
+    for (auto& c : folded) {
+        if (c.value != 0xFF5B /*｛*/ && c.value != 0xFF5D /*｝*/) c.value = ascii_form(c.value);
+    }
+    return folded;
+}
+
+// What a run of Latin letters spells, in ASCII (ｉＰｈｏｎｅ: iPhone), for the tables.
+std::string latin_spelling(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    std::string spelling;
+    for (auto k = start; k < end; ++k) {
+        if (text[k].value < 0x80) {
+            spelling += static_cast<char>(text[k].value);
+        } else {
+            spelling += text[k].text;
+        }
+    }
+    return spelling;
+}
+
 std::string describe_character(const CodePoint& c) {
     char code[16];
     std::snprintf(code, sizeof code, "U+%04X", static_cast<unsigned>(c.value));
@@ -132,13 +157,16 @@ std::optional<std::vector<WrittenSyllable>> split_pinyin(const std::vector<CodeP
             for (auto i = part_start + from; i < part_start + to; ++i) text += token[i].text;
             return text;
         };
+        auto spelling = [&](std::size_t from, std::size_t to) {
+            return latin_spelling(token, part_start + from, part_start + to);
+        };
         // fewest[i]: fewest syllables spelling the part's code points from i on (count+1 = none).
         constexpr std::size_t kLongestSyllable = 7;  // "zhuang" + tone digit
         std::vector<std::size_t> fewest(count + 1, count + 1);
         fewest[count] = 0;
         for (std::size_t i = count; i-- > 0;) {
             for (std::size_t end = i + 1; end <= std::min(count, i + kLongestSyllable); ++end) {
-                if (fewest[end] < fewest[i] - 1 && !detail::normalise_pinyin(written(i, end)).empty()) {
+                if (fewest[end] < fewest[i] - 1 && !detail::normalise_pinyin(spelling(i, end)).empty()) {
                     fewest[i] = fewest[end] + 1;
                 }
             }
@@ -146,7 +174,7 @@ std::optional<std::vector<WrittenSyllable>> split_pinyin(const std::vector<CodeP
         if (fewest[0] > count) return std::nullopt;
         for (std::size_t i = 0; i < count;) {
             for (std::size_t end = std::min(count, i + kLongestSyllable); end > i; --end) {
-                auto pinyin = detail::normalise_pinyin(written(i, end));
+                auto pinyin = detail::normalise_pinyin(spelling(i, end));
                 if (!pinyin.empty() && fewest[end] + 1 == fewest[i]) {
                     syllables.push_back({written(i, end), std::move(pinyin)});
                     i = end;
@@ -190,7 +218,8 @@ public:
     TranscriptReader(const TranscriptOptions& options, const std::string& source_name)
         : options_(options), source_name_(source_name), tables_(detail::reading_tables()) {}
 
-    Timeline read(const std::vector<CodePoint>& text) {
+    Timeline read(const std::vector<CodePoint>& written) {
+        const auto text = width_folded(written);
         is_traditional_ = detail::is_traditional_text(text);
         has_han_ = std::any_of(text.begin(), text.end(),
                                [&](const CodePoint& c) { return tables_.character_readings.count(c.text) != 0; });
@@ -252,12 +281,17 @@ private:
         const std::vector<CodePoint> token(text.begin() + static_cast<std::ptrdiff_t>(start),
                                            text.begin() + static_cast<std::ptrdiff_t>(end));
         std::optional<std::vector<WrittenSyllable>> syllables;
-        // Among Chinese characters, a Latin word without tone numbers that the English dictionary
-        // has (men, long, email) or all in capitals (A股) is English or letters, not pinyin:
-        // pinyin inside Chinese text carries its tones (docs/written-forms.md).
+        // Among Chinese characters, a Latin word all in capitals (A股, and A4纸: a digit after
+        // capitals is a model or size, not a tone) or one without tone numbers that the English
+        // dictionary has (men, long, email) is English or letters, not pinyin: pinyin inside
+        // Chinese text is written in small letters with its tones (docs/written-forms.md).
+        std::string letters;
+        for (const auto& c : token) {
+            if (is_pinyin_letter(c.value)) letters += latin_spelling(token, &c - token.data(), &c - token.data() + 1);
+        }
         const bool is_english_among_han =
-            has_han_ && !has_tone_digit(token) &&
-            (detail::is_all_capitals(written_text(text, start, end)) || detail::english_word_syllables(written_text(text, start, end)));
+            has_han_ && (detail::is_all_capitals(letters) ||
+                         (!has_tone_digit(token) && detail::english_word_syllables(latin_spelling(text, start, end))));
         if (options_.read_pinyin && looks_like_pinyin(token) && !is_english_among_han) syllables = split_pinyin(token);
         if (!syllables) return read_latin(text, start);
         for (const auto& c : token) append_text(c.text);
@@ -282,10 +316,10 @@ private:
             warn_no_reading(text[start]);
             return start + 1;
         }
-        std::string word = written_text(text, start, end);
+        std::string word = latin_spelling(text, start, end);
         if (end + 1 < text.size() && text[end].value == '-' && is_ascii_letter(text[end + 1].value)) {
             const auto second_end = letters_end(end + 1);
-            const auto joined = word + written_text(text, end + 1, second_end);
+            const auto joined = word + latin_spelling(text, end + 1, second_end);
             if (std::any_of(joined.begin(), joined.end(), [](char l) { return l >= 'a' && l <= 'z'; }) &&
                 detail::english_word_syllables(joined)) {
                 word = joined;
@@ -497,15 +531,24 @@ private:
         for (const auto& character : run) characters.push_back(character.text);
         std::vector<std::string> readings_of_run;
         std::size_t first = 0;
-        for (const auto length : detail::likeliest_words(characters, tables_)) {
+        const auto lengths = detail::likeliest_words(characters, tables_);
+        for (std::size_t w = 0; w < lengths.size(); ++w) {
+            const auto length = lengths[w];
             std::string word;
             for (std::size_t k = first; k < first + length; ++k) word += run[k].text;
             const auto found = tables_.words.find(word);
             const bool has_readings = found != tables_.words.end() && !found->second.readings.empty();
+            const auto next_word = w + 1 < lengths.size() && lengths[w + 1] == 1 ? characters[first + length]
+                                                                                  : std::string_view();
+            const auto after_next = first + length + 1 < characters.size() ? characters[first + length + 1]
+                                                                            : std::string_view();
+            const auto before_particle = detail::reading_before_particle(word, next_word, after_next);
             for (std::size_t k = 0; k < length; ++k) {
                 const auto& character = run[first + k];
                 std::string pinyin = character.fix;
-                if (pinyin.empty()) {
+                if (pinyin.empty() && !before_particle.empty()) {
+                    pinyin = before_particle;
+                } else if (pinyin.empty()) {
                     pinyin = has_readings ? std::string(found->second.readings[k])
                                           : std::string(tables_.character_readings.at(character.text).front());
                     check_table_reading(character, pinyin);

@@ -4,6 +4,8 @@
 #include <limits>
 #include <string>
 
+#include "text/aspect_particle.hpp"
+
 namespace talkface::detail {
 
 std::vector<std::size_t> likeliest_words(const std::vector<std::string_view>& characters,
@@ -22,6 +24,7 @@ std::vector<std::size_t> likeliest_words(const std::vector<std::string_view>& ch
             word.clear();
             for (auto k = start; k < end; ++k) word += characters[k];
             const auto found = tables.words.find(word);
+            if (!may_start_word_here(characters, start, end, tables)) continue;
             long long cost = 0;
             if (found != tables.words.end()) {
                 cost = found->second.cost;

@@ -393,9 +393,22 @@ std::optional<SpokenForm> read_dashed_digits(const std::vector<CodePoint>& text,
     return form;
 }
 
+// Whether a range mark at `mark` follows a date or a clock time (9月1日-9月5日, 3点-5点, 12:00-14:00):
+// the first part of a range that ended the form before the mark, so the mark is 到, not a sign.
+bool follows_date_or_time(const std::vector<CodePoint>& text, std::size_t mark) {
+    if (mark >= 2 && is_one_of(text[mark - 1].value, U"年月日号號点點时時分秒")) return is_digit_at(text, mark - 2);
+    return mark >= 4 && is_digit_at(text, mark - 1) && is_digit_at(text, mark - 2) && value_at(text, mark - 3) == ':' &&
+           is_digit_at(text, mark - 4);
+}
+
 }  // namespace
 
 std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, std::size_t start) {
+    if (is_range_mark(value_at(text, start)) && is_digit_at(text, start + 1) && follows_date_or_time(text, start)) {
+        auto second = read_number_form(text, start + 1);
+        if (second) second->words = "到" + second->words;
+        return second;
+    }
     auto i = start;
     const Currency* currency = currency_at(text, i, i);
     std::string sign_words;
@@ -468,6 +481,12 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     const bool is_per_mille = end < text.size() && text[end].value == 0x2030 /*‰*/;
     const bool is_temperature = unit != nullptr && std::string_view(unit->words).find("氏度") != std::string_view::npos;
     if (sign_words == "负" && is_temperature) sign_words = "零下";
+    // ¥1,299.00 is 一千二百九十九元, $3.50 三点五美元: a price's trailing zeros are written, not said.
+    for (auto& price : numbers) {
+        if (currency == nullptr || !price.has_point) continue;
+        price.fraction.erase(price.fraction.find_last_not_of('0') + 1);
+        price.has_point = !price.fraction.empty();
+    }
 
     for (std::size_t k = 0; k < numbers.size(); ++k) {
         const auto said = say_number(numbers[k], context);

@@ -66,6 +66,28 @@ static int test_transcript_is_read_into_sentences_and_syllables(void) {
     return failures;
 }
 
+static int test_full_width_letters_are_read_as_ascii_letters(void) {
+    int failures = 0;
+    /* 用ＡＩ。 -> 用 ei ai; the form shows the full-width letters as written */
+    const char *text = "\xe7\x94\xa8\xef\xbc\xa1\xef\xbc\xa9\xe3\x80\x82";
+    tf_timeline *timeline = NULL;
+    size_t count = 0;
+    size_t first = 99;
+    const char *form_text = NULL;
+    const char *pinyin = NULL;
+    CHECK_OK(tf_read_transcript(text, strlen(text), "wide.txt", &timeline));
+    CHECK_OK(tf_timeline_syllable_count(timeline, &count));
+    CHECK(count == 3);
+    CHECK_OK(tf_timeline_syllable(timeline, 1, NULL, &pinyin, NULL));
+    CHECK(strcmp(pinyin, "ei1") == 0);
+    CHECK_OK(tf_timeline_written_form(timeline, 0, &form_text, &first, NULL));
+    CHECK(strcmp(form_text, "\xef\xbc\xa1\xef\xbc\xa9") == 0 && first == 1);
+    CHECK_OK(tf_timeline_warning_count(timeline, &count));
+    CHECK(count == 0);
+    tf_timeline_destroy(timeline);
+    return failures;
+}
+
 static int test_written_forms_are_kept_beside_their_syllables(void) {
     int failures = 0;
     /* 2026年用AI。 -> 二零二六年 用 ei ai */
@@ -770,6 +792,7 @@ int main(void) {
     int failures = 0;
     failures += test_transcript_is_read_into_sentences_and_syllables();
     failures += test_written_forms_are_kept_beside_their_syllables();
+    failures += test_full_width_letters_are_read_as_ascii_letters();
     failures += test_transcript_errors_name_where();
     failures += test_paragraphs_of_the_transcript_are_kept();
     failures += test_a_word_no_table_reads_is_generic_speech();

@@ -50,6 +50,18 @@ def test_plain_output_lists_sentences_and_readings_and_warns_on_stderr(tmp_path)
     assert 'talkface: warning:' in result.stderr and '"★"' in result.stderr
 
 
+def test_full_width_letters_are_read_as_ascii_and_shown_as_written(tmp_path):
+    result = run("syllables", write(tmp_path, "我用ｉＰｈｏｎｅ问ＡＩ，打Ｗｉ－Ｆｉ电话。"), "--json")
+    assert result.returncode == 0, result.stderr
+    document = json.loads(result.stdout)
+    assert document["sentences"] == [{"text": "我用ｉＰｈｏｎｅ问ＡＩ，打Ｗｉ－Ｆｉ电话。"}]
+    assert [f["text"] for f in document["written_forms"]] == ["ｉＰｈｏｎｅ", "ＡＩ", "Ｗｉ－Ｆｉ"]
+    assert [s["pinyin"] for s in document["syllables"][2:4]] == ["ai1", "feng5"]
+    assert document["warnings"] == []
+    plain = run("syllables", write(tmp_path, "ＡＩ"))
+    assert "  ＡＩ -> ei ai\tei1 ai4" in plain.stdout.splitlines()
+
+
 def test_plain_output_shows_each_written_form_and_what_it_became(tmp_path):
     result = run("syllables", write(tmp_path, "今天是2026年12月1日，我用iPhone。"))
     assert result.returncode == 0, result.stderr

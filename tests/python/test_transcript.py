@@ -69,6 +69,13 @@ def test_written_forms_are_read_aloud_and_kept_beside_their_syllables():
     assert timeline.warnings == []
 
 
+def test_full_width_letters_are_read_as_their_ascii_forms():
+    timeline = talkface.read_transcript("公司的ＣＥＯ说，ＧＤＰ增长５．３％。")
+    assert [f.text for f in timeline.written_forms] == ["ＣＥＯ", "ＧＤＰ", "５．３％"]
+    assert [s.pinyin for s in timeline.syllables[3:6]] == ["xi1", "yi4", "ou1"]
+    assert timeline.warnings == []
+
+
 def test_a_written_form_is_fixed_in_place_and_a_bad_fix_names_where():
     fixed = talkface.read_transcript("2026{两千零二十六}年")
     assert "".join(s.text for s in fixed.syllables) == "两千零二十六年"

@@ -64,6 +64,33 @@ TEST_SUITE("transcript") {
         CHECK(toneless("這家銀行長期支持小企業") == "zhe jia yin hang chang qi zhi chi xiao qi ye");
     }
 
+    TEST_CASE("the particle 了 after a verb decides the cut and the reading of 还") {
+        // 还 before the particle is the verb "return", huan2; before 了解 or in 还了得 the adverb.
+        CHECK(toneless("他还了我一本书") == "ta huan le wo yi ben shu");
+        CHECK(toneless("书他还了没有") == "shu ta huan le mei you");
+        CHECK(toneless("他還了三本書") == "ta huan le san ben shu");
+        CHECK(toneless("他还了解这个情况") == "ta hai liao jie zhe ge qing kuang");
+        CHECK(toneless("这还了得").substr(0, 7) == "zhe hai");
+        // After a verb that takes 了, 了 is the particle where 解 starts a word with what follows.
+        CHECK(toneless("我看了解说才明白") == "wo kan le jie shuo cai ming bai");
+        CHECK(toneless("听了解释以后") == "ting le jie shi yi hou");
+        CHECK(toneless("他寫了解決方案") == "ta xie le jie jue fang an");
+        CHECK(toneless("我们去了解情况") == "wo men qu liao jie qing kuang");
+        CHECK(toneless("我想了解说话的技巧") == "wo xiang liao jie shuo hua de ji qiao");
+        CHECK(toneless("他很了解我") == "ta hen liao jie wo");
+    }
+
+    TEST_CASE("words the phrase list lacks or misreads come from tools/phrase_additions.tsv") {
+        CHECK(toneless("他还没有还书") == "ta hai mei you huan shu");
+        CHECK(toneless("他還沒有還書") == "ta hai mei you huan shu");
+        CHECK(toneless("天气暖和了") == "tian qi nuan huo le");
+        CHECK(toneless("天氣很暖和") == "tian qi hen nuan huo");
+        CHECK(toneless("妈妈在和面") == "ma ma zai huo mian");
+        CHECK(toneless("他衣锦还乡") == "ta yi jin huan xiang");
+        // The words around them are cut as before.
+        CHECK(toneless("我和面包店的老板很熟") == "wo he mian bao dian de lao ban hen shu");
+    }
+
     TEST_CASE("syllables carry the character, numbered pinyin and their sentence") {
         const auto timeline = read_transcript("銀行。女兒");
         REQUIRE(timeline.syllables.size() == 4);

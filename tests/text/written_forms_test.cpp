@@ -99,6 +99,22 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("a dash after a date or a clock time is 到, not a minus sign") {
+        check_cases({
+            {"9月1日-9月5日", "九月一日到九月五日"},
+            {"12:00-14:00", "十二点到十四点"},
+            {"3点-5点", "三点到五点"},
+            {"2020年~2025年", "二零二零年到二零二五年"},
+            {"5月-6月", "五月到六月"},
+            // Not after a number's date or time: a sign.
+            {"今日-3℃", "今日零下三摄氏度"},
+            {"星期日-3", "星期日负三"},
+        });
+        const auto timeline = read_transcript("时间12:00-14:00。");
+        REQUIRE(timeline.written_forms.size() == 2);
+        CHECK(timeline.written_forms[1].text == "-14:00");
+    }
+
     TEST_CASE("thousands separators, money and units") {
         check_cases({
             {"1,234", "一千二百三十四"},       {"1,234,567", "一百二十三万四千五百六十七"},
@@ -108,7 +124,8 @@ TEST_SUITE("written forms") {
             {"$5万", "五万美元"},               {"€20", "二十欧元"},
             {"5km", "五公里"},                  {"60kg", "六十公斤"},
             {"25℃", "二十五摄氏度"},            {"100 m", "一百米"},
-            {"120km/h", "一百二十公里每小时"},
+            {"120km/h", "一百二十公里每小时"}, {"¥1,299.00", "一千二百九十九元"},
+            {"$3.50", "三点五美元"},
         });
     }
 
@@ -135,6 +152,31 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("full-width letters and symbols read as their ASCII forms, the text kept as written") {
+        check_cases({
+            {"ＡＩ技术", "ei ai技术"},
+            {"公司的ＣＥＯ", "公司的 xi yi ou"},
+            {"一部ｉＰｈｏｎｅ", "一部 ai feng"},
+            {"免费的Ｗｉ－Ｆｉ", "免费的 wai fa"},
+            {"支援５Ｇ網路", "支援五 ji網路"},
+            {"每天跑５ｋｍ", "每天跑五公里"},
+            {"門票ＮＴ＄３５０", "門票新台幣三百五十元"},
+            {"下午２：３０", "下午两点三十分"},
+            {"ＧＤＰ增长５．３％", "ji di pi增长百分之五点三"},
+        });
+        CHECK(pinyin_of("ｎｉ３ｈａｏ３") == "ni3 hao3");
+        const auto timeline = read_transcript("我用ｉＰｈｏｎｅ问ＡＩ。");
+        CHECK(timeline.warnings.empty());
+        CHECK(timeline.sentences.at(0).text == "我用ｉＰｈｏｎｅ问ＡＩ。");
+        REQUIRE(timeline.written_forms.size() == 2);
+        CHECK(timeline.written_forms[0].text == "ｉＰｈｏｎｅ");
+        CHECK(timeline.written_forms[1].text == "ＡＩ");
+        // A reading fix takes ASCII braces only: a full-width one is text, reported and skipped.
+        const auto braces = read_transcript("行｛hang2｝");
+        CHECK(braces.syllables.at(0).pinyin == "xing2");
+        CHECK(braces.warnings.size() == 2);
+    }
+
     TEST_CASE("acronyms are said letter by letter, English words by the dictionary") {
         const std::vector<Case> cases = {
             {"AI", "ei ai"},           {"CEO", "xi yi ou"},        {"GDP", "ji di pi"},
@@ -149,6 +191,9 @@ TEST_SUITE("written forms") {
         check_cases({
             {"men和long", "man和 long"},
             {"A股上涨", "ei股上涨"},
+            // Capitals with a digit are a size or a model, not pinyin a4.
+            {"请在A4纸上打印", "请在 ei四纸上打印"},
+            {"E3游戏展", "yi三游戏展"},
             {"请发email给我", "请发 yi mei er给我"},
             {"我叫Xiaoming", "我叫 Xiao ming"},
             {"ni3 hao3", "ni3 hao3"},
