@@ -84,6 +84,12 @@ bool is_service_number(const std::string& digits) {
     return digits.size() == 5 && (digits.rfind("95", 0) == 0 || digits.rfind("96", 0) == 0);
 }
 
+// A five-digit service number is a name wherever it does not count (12306购票, 12315投诉, 95588):
+// no one says 一万二千三百零六 of it. 12345 and 10000 are counts as often as names.
+bool is_named_anywhere(const std::string& digits) {
+    return digits.size() == 5 && digits != "12345" && digits != "10000";
+}
+
 std::string text_between(const std::vector<CodePoint>& text, std::size_t first, std::size_t end) {
     std::string between;
     for (std::size_t i = first; i < std::min(end, text.size()); ++i) between += text[i].text;
@@ -291,7 +297,7 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
             said.is_year = true;
             return said;
         }
-        if (context.is_service_call && is_service_number(whole) && !counts) {
+        if ((context.is_service_call || is_named_anywhere(whole)) && is_service_number(whole) && !counts) {
             said.words = digit_words(whole, true);
             return said;
         }
