@@ -34,16 +34,15 @@ double log_sum_exp(const float* values, int count) {
 
 }  // namespace
 
-std::vector<double> syllable_evidence(const SentenceChain& chain, const std::vector<StateSegment>& path,
-                                      const EmissionScores& scores, const std::vector<SyllableFrames>& frames) {
+std::vector<double> syllable_fits(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                                  const EmissionScores& scores, const std::vector<SyllableFrames>& frames) {
     // The class the path gives each frame.
     std::vector<int> frame_class(scores.frame_count, kSilence);
     for (const auto& segment : path)
         for (std::size_t t = segment.first_frame; t < std::min(segment.end_frame, scores.frame_count); ++t)
             frame_class[t] = chain.states[segment.state].phone_class;
-    const std::size_t count = frames.size();
-    std::vector<double> posterior(count, 0.0), gap(count, 0.0);
-    for (std::size_t i = 0; i < count; ++i) {
+    std::vector<double> fits(frames.size(), 0.0);
+    for (std::size_t i = 0; i < frames.size(); ++i) {
         const std::size_t first = std::min(frames[i].first_frame, scores.frame_count);
         const std::size_t end = std::min(std::max(frames[i].end_frame, first), scores.frame_count);
         double sum = 0.0;
@@ -51,21 +50,27 @@ std::vector<double> syllable_evidence(const SentenceChain& chain, const std::vec
             const float* row = &scores.values[t * kPhoneClassCount];
             sum += std::exp(static_cast<double>(scores.at(t, frame_class[t])) - log_sum_exp(row, kPhoneClassCount));
         }
-        posterior[i] = end > first ? sum / static_cast<double>(end - first) : 0.0;
+        const double posterior = end > first ? sum / static_cast<double>(end - first) : 0.0;
         const std::size_t low = first > kGapMarginFrames ? first - kGapMarginFrames : 0;
         const std::size_t high = std::min(scores.frame_count, end + kGapMarginFrames);
         double forced = 0.0;
         for (std::size_t t = low; t < high; ++t) forced += scores.at(t, frame_class[t]);
-        gap[i] = high > low ? (free_sounds_score(scores, low, high) - forced) / static_cast<double>(high - low) : 0.0;
+        const double gap = high > low ? (free_sounds_score(scores, low, high) - forced) / static_cast<double>(high - low) : 0.0;
+        fits[i] = posterior - gap;
     }
+    return fits;
+}
+
+std::vector<double> syllable_evidence(const std::vector<double>& fits) {
+    const std::size_t count = fits.size();
     std::vector<double> evidence(count, 0.0);
     for (std::size_t i = 0; i < count; ++i) {
         const std::size_t first = i > kNeighbours ? i - kNeighbours : 0;
         const std::size_t end = std::min(count, i + kNeighbours + 1);
         double around = 0.0;
-        for (std::size_t j = first; j < end; ++j) around += posterior[j] - gap[j];
+        for (std::size_t j = first; j < end; ++j) around += fits[j];
         around /= static_cast<double>(end - first);
-        evidence[i] = 0.5 * (posterior[i] - gap[i]) + 0.5 * around;
+        evidence[i] = 0.5 * fits[i] + 0.5 * around;
     }
     return evidence;
 }

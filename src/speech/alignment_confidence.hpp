@@ -18,13 +18,17 @@ struct SyllableFrames {
     std::size_t end_frame = 0;
 };
 
-// Per syllable of `chain` (holding `frames` on `path`), the evidence that it is where the path
-// put it. Two kinds, each of the syllable and of its neighbours (drift comes in runs: a syllable
-// placed a syllable off pulls its neighbours with it): how probable the sound the path gives each
-// frame is among all sounds (the mean posterior of its class), less how much better a free
-// sequence of sounds fits the syllable's stretch than the path does (text_fit_gap's loop, per frame).
-std::vector<double> syllable_evidence(const SentenceChain& chain, const std::vector<StateSegment>& path,
-                                      const EmissionScores& scores, const std::vector<SyllableFrames>& frames);
+// Per syllable of `chain` (holding `frames` on `path`), how well the path fits it: how probable
+// the sound the path gives each frame is among all sounds (the mean posterior of its class), less
+// how much better a free sequence of sounds fits the syllable's stretch than the path does
+// (text_fit_gap's loop, per frame).
+std::vector<double> syllable_fits(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                                  const EmissionScores& scores, const std::vector<SyllableFrames>& frames);
+
+// Per syllable, the evidence that it is where the path put it: its fit (syllable_fits) and its
+// neighbours' averaged (drift comes in runs: a syllable placed a syllable off pulls its neighbours
+// with it).
+std::vector<double> syllable_evidence(const std::vector<double>& fits);
 
 // Each syllable's confidence in 0..1 from its evidence (per syllable of the transcript; NaN for one
 // no chain placed), half as it is and half against the recording's median: in a room or in noise

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/number_format.hpp"
+#include "speech/alignment_confidence.hpp"
 #include "speech/syllable_placement.hpp"
 
 namespace talkface::detail {
@@ -25,6 +26,13 @@ constexpr std::size_t kGenericMaxFrames = 150;
 // Where the syllables of a stretch are spread: each boundary is the quietest frame within this
 // share of a syllable's width around its even place.
 constexpr double kBoundarySearchShare = 0.35;
+// A syllable's fit (syllable_fits) is an outlier of its chain's where it lies more than this many
+// median absolute deviations under their median, the usual bound. Syllables skipped are kept
+// skipped only where one of them or a neighbour fits the plain path so badly (unsupported_skips), and
+// a syllable beside a skipped one that fits the lenient path so badly joins the mismatch: the
+// path skips a changed word's worst syllable and squeezes the other between it and its neighbours
+// (a changed word was reported in part in 12 of 40 espeak-ng clips and whole in none, bench/README.md).
+constexpr double kOutlierDeviations = 3.0;
 
 bool is_syllable_state(const PhoneState& state) {
     return !is_pause(state.role) && state.role != StateRole::generic_speech;
@@ -109,6 +117,69 @@ std::vector<double> loudness_envelope(const LoudnessProfile& loudness, std::size
     return envelope;
 }
 
+double median_of(std::vector<double> values) {
+    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+    std::nth_element(values.begin(), middle, values.end());
+    return *middle;
+}
+
+// The fit under which a syllable's is an outlier among `fits` (those `is_counted`); none with
+// fewer than three, or none spread, to tell the usual spread from.
+double outlier_bound(const std::vector<double>& fits, const std::vector<bool>& is_counted) {
+    std::vector<double> counted;
+    for (std::size_t i = 0; i < fits.size(); ++i)
+        if (is_counted[i]) counted.push_back(fits[i]);
+    if (counted.size() < 3) return -std::numeric_limits<double>::infinity();
+    const double median = median_of(counted);
+    for (double& fit : counted) fit = std::abs(fit - median);
+    const double deviation = median_of(counted);
+    return deviation > 0.0 ? median - kOutlierDeviations * deviation : -std::numeric_limits<double>::infinity();
+}
+
+// Per syllable of `chain`, whether `path` passes every one of its states.
+std::vector<bool> whole_syllables(const SentenceChain& chain, const std::vector<StateSegment>& path) {
+    std::vector<std::size_t> states_per_syllable(chain.syllables.size(), 0), states_on_path(chain.syllables.size(), 0);
+    for (const PhoneState& state : chain.states)
+        if (is_syllable_state(state)) ++states_per_syllable[state.syllable];
+    for (const StateSegment& segment : path)
+        if (is_syllable_state(chain.states[segment.state])) ++states_on_path[chain.states[segment.state].syllable];
+    std::vector<bool> is_whole(chain.syllables.size());
+    for (std::size_t i = 0; i < is_whole.size(); ++i) is_whole[i] = states_on_path[i] == states_per_syllable[i];
+    return is_whole;
+}
+
+// Per syllable of `chain`, the frames its states hold on `path` (none: first_frame past end_frame).
+std::vector<SyllableFrames> frames_on_path(const SentenceChain& chain, const std::vector<StateSegment>& path) {
+    std::vector<SyllableFrames> frames(chain.syllables.size(), {std::numeric_limits<std::size_t>::max(), 0});
+    for (const StateSegment& segment : path) {
+        const PhoneState& state = chain.states[segment.state];
+        if (!is_syllable_state(state)) continue;
+        frames[state.syllable].first_frame = std::min(frames[state.syllable].first_frame, segment.first_frame);
+        frames[state.syllable].end_frame = std::max(frames[state.syllable].end_frame, segment.end_frame);
+    }
+    return frames;
+}
+
+// Syllables of the text's path (`is_whole`) next to a syllable it skips whose fit on the whole
+// path is an outlier of the chain's, added to `marked`, outward until a syllable fits as usual.
+// Generic speech alone is not grown from: it is where the speech has words the text lacks, and
+// the syllables around those are said.
+void add_outliers_beside(const std::vector<double>& fits, const std::vector<bool>& is_whole,
+                         const std::vector<SyllableFrames>& frames, std::vector<Marked>& marked) {
+    const double bound = outlier_bound(fits, is_whole);
+    std::vector<bool> is_marked(fits.size());
+    for (std::size_t i = 0; i < fits.size(); ++i) is_marked[i] = !is_whole[i];
+    for (bool is_grown = true; is_grown;) {
+        is_grown = false;
+        for (std::size_t i = 0; i < fits.size(); ++i) {
+            const bool is_beside = (i > 0 && is_marked[i - 1]) || (i + 1 < fits.size() && is_marked[i + 1]);
+            if (is_marked[i] || !is_beside || fits[i] >= bound) continue;
+            marked.push_back({2 * i + 1, frames[i].first_frame, frames[i].end_frame});
+            is_marked[i] = is_grown = true;
+        }
+    }
+}
+
 }  // namespace
 
 SentenceChain lenient_chain(const SentenceChain& chain) {
@@ -131,13 +202,41 @@ SentenceChain lenient_chain(const SentenceChain& chain) {
     return lenient;
 }
 
+std::vector<double> fits_on_path(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                                 const EmissionScores& scores) {
+    return syllable_fits(chain, path, scores, frames_on_path(chain, path));
+}
+
+std::vector<std::size_t> unsupported_skips(const SentenceChain& lenient, const std::vector<StateSegment>& path,
+                                           const std::vector<double>& plain_fits) {
+    if (plain_fits.size() != lenient.syllables.size()) return {};
+    const double bound = outlier_bound(plain_fits, std::vector<bool>(plain_fits.size(), true));
+    const std::vector<bool> is_whole = whole_syllables(lenient, path);
+    std::vector<std::size_t> unsupported;
+    for (std::size_t first = 0; first < is_whole.size(); ++first) {
+        if (is_whole[first]) continue;
+        std::size_t end = first;
+        while (end < is_whole.size() && !is_whole[end]) ++end;
+        bool is_outlier = false;
+        for (std::size_t j = first > 0 ? first - 1 : 0; j < std::min(is_whole.size(), end + 1); ++j)
+            if (plain_fits[j] < bound) is_outlier = true;
+        if (!is_outlier)
+            for (std::size_t i = first; i < end; ++i) unsupported.push_back(i);
+        first = end;
+    }
+    return unsupported;
+}
+
+void forbid_skips(SentenceChain& lenient, const std::vector<std::size_t>& syllables) {
+    for (PhoneState& state : lenient.states)
+        if (is_syllable_state(state) && std::find(syllables.begin(), syllables.end(), state.syllable) != syllables.end())
+            state.skip_log_penalty = -std::numeric_limits<double>::infinity();
+}
+
 void place_lenient(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores,
                    const FeatureTrack& track, const LoudnessProfile& loudness, Timeline& result,
                    std::vector<double>& evidence) {
     const std::size_t count = chain.syllables.size();
-    std::vector<std::size_t> states_per_syllable(count, 0), states_on_path(count, 0);
-    for (const PhoneState& state : chain.states)
-        if (is_syllable_state(state)) ++states_per_syllable[state.syllable];
     std::vector<StateSegment> text_path;
     std::vector<Marked> marked;
     for (const StateSegment& segment : path) {
@@ -146,21 +245,15 @@ void place_lenient(const SentenceChain& chain, const std::vector<StateSegment>& 
             marked.push_back({place_of(state, segment.state == 1), segment.first_frame, segment.end_frame});
             continue;
         }
-        if (is_syllable_state(state)) ++states_on_path[state.syllable];
         text_path.push_back(segment);
     }
     place_syllables(chain, text_path, scores, track, result, evidence);
-    for (std::size_t i = 0; i < count; ++i) {
-        if (states_on_path[i] == states_per_syllable[i]) continue;
-        Marked syllable{2 * i + 1};
-        for (const StateSegment& segment : text_path) {
-            const PhoneState& state = chain.states[segment.state];
-            if (!is_syllable_state(state) || state.syllable != i) continue;
-            syllable.first_frame = std::min(syllable.first_frame, segment.first_frame);
-            syllable.end_frame = std::max(syllable.end_frame, segment.end_frame);
-        }
-        marked.push_back(syllable);
-    }
+    const std::vector<SyllableFrames> frames = frames_on_path(chain, path);
+    const std::vector<bool> is_whole = whole_syllables(chain, path);
+    for (std::size_t i = 0; i < count; ++i)
+        if (!is_whole[i]) marked.push_back({2 * i + 1, frames[i].first_frame, frames[i].end_frame});
+    // Fitted on the whole path: beside generic speech the text's path alone would be silence.
+    add_outliers_beside(syllable_fits(chain, path, scores, frames), is_whole, frames, marked);
     std::sort(marked.begin(), marked.end(), [](const Marked& a, const Marked& b) { return a.place < b.place; });
 
     const std::size_t offset = chain.searched.first_frame;

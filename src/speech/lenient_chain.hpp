@@ -19,10 +19,28 @@ namespace talkface::detail {
 // optional generic-speech state after the leading silence and after every syllable.
 SentenceChain lenient_chain(const SentenceChain& chain);
 
+// Per syllable of `chain`, its fit (syllable_fits) over the frames its states hold on `path`.
+std::vector<double> fits_on_path(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                                 const EmissionScores& scores);
+
+// The syllables of runs the lenient chain's `path` skips (neighbours skipped together) where
+// neither one of them nor a neighbour of the run fits the chain's plain path (`plain_fits`:
+// fits_on_path of the path without leniency) as an outlier of the chain's: more than
+// kOutlierDeviations (lenient_chain.cpp) median absolute deviations under the median. A person's
+// syllable that fits the models a little worse than most, in a right text, costs less skipped than
+// fitted (9 of 30 right sentences marked, every one of 18 read passages, bench/README.md), yet on
+// the plain path it fits within the chain's usual spread; a changed word does not.
+std::vector<std::size_t> unsupported_skips(const SentenceChain& lenient, const std::vector<StateSegment>& path,
+                                           const std::vector<double>& plain_fits);
+
+// `lenient` with `syllables` no longer skippable.
+void forbid_skips(SentenceChain& lenient, const std::vector<std::size_t>& syllables);
+
 // Places the syllables of a lenient chain's `path` in `result` with their `evidence` (as
 // place_syllables does), and for each stretch the path fits with generic speech or skips: a
 // TextMismatch in result.mismatches and a warning, its syllables spread over the stretch at its
-// loudness dips with confidence 0 (evidence NaN: set_confidences leaves them so).
+// loudness dips with confidence 0 (evidence NaN: set_confidences leaves them so). A syllable beside
+// a skipped one whose fit on `path` is an outlier of the chain's joins its mismatch.
 void place_lenient(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores,
                    const FeatureTrack& track, const LoudnessProfile& loudness, Timeline& result,
                    std::vector<double>& evidence);

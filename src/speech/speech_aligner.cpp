@@ -232,8 +232,17 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
         observe(track, loudness, chains[w].searched, observations);
         learned.model.score(observations, chains[w].searched.length(), scores);
         if (is_lenient) {
-            const SentenceChain chain = lenient_chain(chains[w]);
-            const auto path = align_chain(chain, scores, workspace, scores.frame_count, transcript);
+            // A text with more syllables than the speech holds may have no plain path: no fits.
+            const auto plain = viterbi_align(chains[w].states, scores, workspace, scores.frame_count);
+            const auto plain_fits = plain.empty() ? std::vector<double>{} : fits_on_path(chains[w], plain, scores);
+            SentenceChain chain = lenient_chain(chains[w]);
+            auto path = align_chain(chain, scores, workspace, scores.frame_count, transcript);
+            // Each round forbids at least one more skip: it ends.
+            for (auto skips = unsupported_skips(chain, path, plain_fits); !skips.empty();
+                 skips = unsupported_skips(chain, path, plain_fits)) {
+                forbid_skips(chain, skips);
+                path = align_chain(chain, scores, workspace, scores.frame_count, transcript);
+            }
             place_lenient(chain, path, scores, track, loudness, result, evidence);
             report_pass(progress, kReestimationRounds, w, chains.size());
             continue;

@@ -61,7 +61,7 @@ void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>
         syllable.final_start_s = time_s(final_first.value_or(first));
         frames[local] = {first, std::max(end, first + 1)};
     }
-    const auto placed = syllable_evidence(chain, path, scores, frames);
+    const auto placed = syllable_evidence(syllable_fits(chain, path, scores, frames));
     for (std::size_t local = 0; local < chain.syllables.size(); ++local) evidence[chain.syllable_indices[local]] = placed[local];
 }
 
