@@ -7,9 +7,12 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include "audio/audio_source.hpp"
 #include "audio/decoded_audio.hpp"
@@ -29,10 +32,14 @@ void run(const std::string& command) {
     REQUIRE(std::system((command + " 2>&1").c_str()) == 0);
 }
 
-// one_sentence.wav encoded by ffmpeg with `options` into test output NAME.
+// one_sentence.wav encoded by ffmpeg with `options` into test output NAME. ctest runs this file's
+// cases as parallel processes that each make every file: ffmpeg writes a name of this process's own
+// and the whole file is renamed into place, so that no case reads a file another is still writing.
 std::string ffmpeg_made(const std::string& name, const std::string& options) {
     const std::string path = test::output_path(name);
-    run("ffmpeg -nostdin -loglevel error -y -i '" + speech_clip("one_sentence.wav") + "' " + options + " '" + path + "'");
+    const std::string partial = test::output_path(std::to_string(::getpid()) + "_partial_" + name);
+    run("ffmpeg -nostdin -loglevel error -y -i '" + speech_clip("one_sentence.wav") + "' " + options + " '" + partial + "'");
+    REQUIRE(std::rename(partial.c_str(), path.c_str()) == 0);
     return path;
 }
 
