@@ -19,7 +19,8 @@ inline namespace v0 {
 /// 100 ms off. The confidence weighs a syllable's evidence half as it is and half against the
 /// recording's median, so that the threshold holds in noise and in a room as in clean speech:
 /// measured on the benchmark's human speech (bench/README.md, issue 12), one right syllable in ten
-/// falls below it (3-24% per recording condition) and six in ten of those more than 100 ms off do.
+/// falls below it (2-23% per recording condition) and about half of those more than 100 ms off do
+/// (50% on its tuning passages and on the held-out ones).
 constexpr double kLowAlignmentConfidence = 0.5;
 
 /// Audio samples the caller owns: `frame_count` frames of `channel_count` interleaved float samples

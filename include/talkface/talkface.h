@@ -650,7 +650,7 @@ TF_API tf_status tf_timeline_syllable_times(const tf_timeline *timeline, size_t 
 /* A syllable whose confidence is below this is one to check: its start may be more than 100 ms off
  * (talkface::kLowAlignmentConfidence). The confidence is calibrated on the recording (half of it
  * against the recording's median evidence), so the threshold holds across noise and rooms: on the
- * benchmark's human speech one right syllable in ten falls below it, and six in ten of those more
+ * benchmark's human speech one right syllable in ten falls below it, and about half of those more
  * than 100 ms off do (bench/README.md). `talkface align --plot` draws such syllables in red. */
 #define TF_LOW_ALIGNMENT_CONFIDENCE 0.5
 

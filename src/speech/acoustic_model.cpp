@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "speech/spectral_landmarks.hpp"
+
 namespace talkface::detail {
 
 namespace {
@@ -122,6 +124,7 @@ void AcousticModel::score(const std::vector<float>& observations, std::size_t fr
             scores.values[t * kPhoneClassCount + c] = static_cast<float>(weight_ * (log_norm_[c] - 0.5 * sum));
         }
     }
+    set_boundary_bonus(observations, frame_count, scores);
 }
 
 ModelEstimator::ModelEstimator()

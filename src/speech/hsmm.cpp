@@ -75,6 +75,11 @@ float skip_score(const PhoneState& state) {
 // The row of the prefix sums that scores `phone_class`: kGenericSpeech has the last one.
 std::size_t prefix_row(PhoneClass phone_class) { return static_cast<std::size_t>(phone_class); }
 
+// What a state entered at frame t of the whole `emissions` gains (EmissionScores::boundary).
+float boundary_bonus(const EmissionScores& emissions, std::size_t t) {
+    return emissions.boundary.empty() ? 0.0f : emissions.boundary[t];
+}
+
 // max over i < count of a[i] + b[i]; eight independent lanes, so that the compiler vectorizes it.
 float max_of_sums(const float* a, const float* b, std::size_t count) {
     float lanes[8] = {kImpossible, kImpossible, kImpossible, kImpossible,
@@ -142,8 +147,11 @@ std::vector<StateSegment> search(const std::vector<PhoneState>& states, std::siz
             const float* previous_finish = &finish[(j - 1) * width];
             const float* previous_entry = &entry[(j - 1) * width];
             const float skip = skip_score(states[first_state + j - 1]);
-            for (std::size_t t = 0; t <= frames; ++t)
-                entry_row[t] = skip == kImpossible ? previous_finish[t] : std::max(previous_finish[t], previous_entry[t] + skip);
+            // A skipped state passes on the bonus its predecessor's finish already got at t.
+            for (std::size_t t = 0; t <= frames; ++t) {
+                const float arrived = previous_finish[t] + boundary_bonus(emissions, first_frame + t);
+                entry_row[t] = skip == kImpossible ? arrived : std::max(arrived, previous_entry[t] + skip);
+            }
         }
         const std::size_t longest = prepare_state(j);
         const std::size_t shortest = longest + 1 - duration_score.size();
@@ -211,7 +219,8 @@ std::vector<StateSegment> search(const std::vector<PhoneState>& states, std::siz
         }
         if (j == 0) break;
         const float skip = skip_score(states[first_state + j - 1]);
-        is_skipped = skip != kImpossible && entry[(j - 1) * width + t] + skip > finish[(j - 1) * width + t];
+        const float arrived = finish[(j - 1) * width + t] + boundary_bonus(emissions, first_frame + t);
+        is_skipped = skip != kImpossible && entry[(j - 1) * width + t] + skip > arrived;
         --j;
     }
     std::reverse(segments.begin(), segments.end());

@@ -17,6 +17,9 @@ namespace talkface::detail {
 struct EmissionScores {
     std::vector<float> values;
     std::size_t frame_count = 0;
+    // What a state entered at frame t gains, frame_count + 1 of them (spectral_landmarks.hpp: where
+    // the spectrum changes fast); empty: nothing, every frame alike.
+    std::vector<float> boundary;
     // kGenericSpeech scores as the class that fits the frame best.
     float at(std::size_t frame, int phone_class) const {
         const float* row = &values[frame * kPhoneClassCount];

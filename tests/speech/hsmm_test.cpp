@@ -104,6 +104,29 @@ TEST_SUITE("HSMM search") {
         check_same_path(viterbi_align(sentence.states, sentence.emissions, workspace), sentence.truth);
     }
 
+    TEST_CASE("a boundary bonus moves the change between two sounds the emissions cannot tell apart") {
+        // Two vowels of one class over 30 frames: the emissions say nothing of where the second
+        // starts, the priors (medians 10 and 20 frames) put it at frame 9; a landmark at frame 16 moves it
+        // there, and a bonus smaller than what the priors lose there does not.
+        std::vector<PhoneState> states = {chain_state(kVowelA, StateRole::final, 0, 10.0, 40, false),
+                                          chain_state(kVowelA, StateRole::final, 1, 20.0, 40, false)};
+        EmissionScores emissions;
+        emissions.frame_count = 30;
+        emissions.values.assign(30 * kPhoneClassCount, -1.0f);
+        ViterbiWorkspace workspace;
+        auto second_start = [&] {
+            const auto path = viterbi_align(states, emissions, workspace);
+            REQUIRE(path.size() == 2);
+            return path[1].first_frame;
+        };
+        CHECK(second_start() == 9);
+        emissions.boundary.assign(31, 0.0f);
+        emissions.boundary[16] = 3.0f;
+        CHECK(second_start() == 16);
+        emissions.boundary[16] = 0.1f;
+        CHECK(second_start() == 9);
+    }
+
     TEST_CASE("a chain longer than its frames has no path") {
         PlantedSentence sentence = plant(10);
         sentence.emissions.frame_count = 15;

@@ -120,7 +120,7 @@ each syllable start_s (where its initial consonant starts), end_s, final_start_s
 starts) and a confidence; the timeline's duration_s is the audio's length. A syllable whose confidence
 is below talkface.kLowAlignmentConfidence (0.5) is one to check: its start may be more than 100 ms off
 (the confidence is calibrated on the recording, so the threshold holds in noise and rooms too: on the
-benchmark's human speech one right syllable in ten falls below it, and six in ten of those more than
+benchmark's human speech one right syllable in ten falls below it, and about half of those more than
 100 ms off do). Audio is read in blocks: an
 hour of speech aligns in bounded memory.
 
