@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "speech/frame_features.hpp"
+#include "speech/hsmm.hpp"
 #include "speech/sentence_cutter.hpp"
 #include "talkface/timeline.hpp"
 
@@ -60,9 +61,12 @@ struct AlignedStretch {
 
 // Speech the transcript has no syllable for (a long run of speech inside a pause of the path) or
 // a syllable stretched over a long silence: what a missing sentence or a wrong text leaves behind.
+// A loud run in a pause counts as speech only if it sounds like the sentence's own syllables, on
+// the re-estimated models' `scores` (frame 0 of them is frame `first_scored_frame` of the
+// recording): music's drums and notes between sentences are as loud as speech, but not as like it.
 // \throws talkface::AlignmentError naming the sentence, the syllable and the time.
-void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProfile& loudness, std::size_t sentence,
-                const FrameSpan& span, const Timeline& transcript);
+void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProfile& loudness, const EmissionScores& scores,
+                std::size_t first_scored_frame, std::size_t sentence, const FrameSpan& span, const Timeline& transcript);
 
 // How much better each sentence's speech fits a free sequence of sounds than its text's (per frame,
 // from the aligner), against what a right text gives.
@@ -96,7 +100,8 @@ void check_syllable_lengths(const std::vector<SentenceMetrics>& metrics, const s
                             const Timeline& transcript);
 
 // How well each aligned sentence's frames fit the models of the sounds its text says, per frame,
-// against the other sentences of the same recording.
+// against the other sentences of the same recording; one that fits far worse is the wrong text
+// only if free sounds fit it better than its text (fit_gap above 0), else its audio is to blame.
 // \throws talkface::AlignmentError naming the sentence that fits far worse than the rest.
 void check_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                const Timeline& transcript);

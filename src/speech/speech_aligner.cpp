@@ -158,6 +158,19 @@ void measure_chain(const SentenceChain& chain, std::size_t w, const std::vector<
         metrics[k].fit = speech_fit(chain, share, scores);
         metrics[k].fit_gap = text_fit_gap(chain, share, scores);
     }
+    // Where a sentence ends in a room's tail a right text gaps up to 0.07 and spreads its syllables'
+    // lengths up to 0.79 (bench/ reverb), as much as a wrong text: there check_own_fit and
+    // check_syllable_lengths would refuse right texts. check_path judges on `scores` of the whole
+    // recording's models, before held_out_fit_gaps overwrites them.
+    const bool is_own_model = !chain.ends_in_tail && spoken_sentences <= kMaxHeldOutCheckSentences;
+    for (const auto& [k, share] : split_by_sentence(chain, path)) {
+        const auto stretches = stretches_of(chain, share);
+        if (is_own_model) {
+            metrics[k].own_fit_gap = metrics[k].fit_gap;
+            metrics[k].length_spread = syllable_length_spread(stretches);
+        }
+        if (is_checked) check_path(stretches, loudness, scores, chain.searched.first_frame, k, spans[k], transcript);
+    }
     // In a room every sound rings into the next, and a right text's halves gap up to 0.85 (bench/
     // reverb): there the check would refuse one right sentence in six. With three sentences or
     // more, check_text_fit and check_fit compare each with the others, which holds better than this
@@ -171,18 +184,6 @@ void measure_chain(const SentenceChain& chain, std::size_t w, const std::vector<
             const std::size_t k = chain.syllables[chain.states[halves[h].front().state].syllable]->sentence;
             metrics[k].held_out_gap = std::max(metrics[k].held_out_gap, gaps[h]);
         }
-    }
-    // Where a sentence ends in a room's tail a right text gaps up to 0.07 and spreads its syllables'
-    // lengths up to 0.79 (bench/ reverb), as much as a wrong text: there check_own_fit and
-    // check_syllable_lengths would refuse right texts.
-    const bool is_own_model = !chain.ends_in_tail && spoken_sentences <= kMaxHeldOutCheckSentences;
-    for (const auto& [k, share] : split_by_sentence(chain, path)) {
-        const auto stretches = stretches_of(chain, share);
-        if (is_own_model) {
-            metrics[k].own_fit_gap = metrics[k].fit_gap;
-            metrics[k].length_spread = syllable_length_spread(stretches);
-        }
-        if (is_checked) check_path(stretches, loudness, k, spans[k], transcript);
     }
 }
 
