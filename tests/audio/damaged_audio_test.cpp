@@ -8,17 +8,14 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
-#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include "audio/audio_source.hpp"
+#include "common/made_by_command.hpp"
 #include "common/test_paths.hpp"
 #include "speech/frame_features.hpp"
 #include "talkface/errors.hpp"
@@ -62,22 +59,16 @@ std::string read_bytes(const std::string& path) {
 
 void write_bytes(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
 
-// The container, whole, made once per run. ctest runs this file's cases in parallel processes that
-// both make it: ffmpeg writes a name of this process's own and the whole file is renamed into place,
-// so that no case reads a file another is still writing.
+// The container, whole, made once per run.
 std::string whole(const Container& container) {
-    const std::string path = test::output_path(std::string("whole_") + container.file);
-    if (read_bytes(path).empty()) {
+    const std::string name = std::string("whole_") + container.file;
+    if (read_bytes(test::output_path(name)).empty()) {
         const std::string speech = test::source_path("tests/data/speech/one_sentence.wav");
-        const std::string partial = test::output_path(std::to_string(::getpid()) + "_partial_" + container.file);
-        const std::string command = std::string("ffmpeg -nostdin -loglevel error -y ") +
-                                    (is_video(container.file) ? kPicture : "") + "-i '" + speech + "' " + container.options +
-                                    " '" + partial + "' 2>&1";
-        INFO(command);
-        REQUIRE(std::system(command.c_str()) == 0);
-        REQUIRE(std::rename(partial.c_str(), path.c_str()) == 0);
+        test::made_by_command(name, std::string("ffmpeg -nostdin -loglevel error -y ") +
+                                        (is_video(container.file) ? kPicture : "") + "-i '" + speech + "' " +
+                                        container.options);
     }
-    return read_bytes(path);
+    return read_bytes(test::output_path(name));
 }
 
 std::string random_bytes(std::size_t count, std::uint32_t seed) {

@@ -7,15 +7,12 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include "audio/audio_source.hpp"
 #include "audio/decoded_audio.hpp"
+#include "common/made_by_command.hpp"
 #include "common/test_paths.hpp"
 #include "talkface/speech_aligner.hpp"
 #include "talkface/transcript.hpp"
@@ -26,21 +23,10 @@ namespace {
 
 std::string speech_clip(const std::string& file) { return test::source_path("tests/data/speech/" + file); }
 
-// Runs a shell command; the test fails with it if it does not succeed.
-void run(const std::string& command) {
-    INFO(command);
-    REQUIRE(std::system((command + " 2>&1").c_str()) == 0);
-}
-
-// one_sentence.wav encoded by ffmpeg with `options` into test output NAME. ctest runs this file's
-// cases as parallel processes that each make every file: ffmpeg writes a name of this process's own
-// and the whole file is renamed into place, so that no case reads a file another is still writing.
+// one_sentence.wav encoded by ffmpeg with `options` into test output NAME.
 std::string ffmpeg_made(const std::string& name, const std::string& options) {
-    const std::string path = test::output_path(name);
-    const std::string partial = test::output_path(std::to_string(::getpid()) + "_partial_" + name);
-    run("ffmpeg -nostdin -loglevel error -y -i '" + speech_clip("one_sentence.wav") + "' " + options + " '" + partial + "'");
-    REQUIRE(std::rename(partial.c_str(), path.c_str()) == 0);
-    return path;
+    return test::made_by_command(
+        name, "ffmpeg -nostdin -loglevel error -y -i '" + speech_clip("one_sentence.wav") + "' " + options);
 }
 
 // The telephone band at 8 kHz, as a phone call's recording has it.
