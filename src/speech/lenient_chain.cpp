@@ -7,6 +7,7 @@
 
 #include "common/number_format.hpp"
 #include "speech/alignment_confidence.hpp"
+#include "speech/rival_syllables.hpp"
 #include "speech/syllable_placement.hpp"
 
 namespace talkface::detail {
@@ -33,6 +34,17 @@ constexpr double kBoundarySearchShare = 0.35;
 // path skips a changed word's worst syllable and squeezes the other between it and its neighbours
 // (a changed word was reported in part in 12 of 40 espeak-ng clips and whole in none, bench/README.md).
 constexpr double kOutlierDeviations = 3.0;
+// A right syllable's stretch, even one that fits the models as an outlier, fits its own text better
+// than all but a few unlike syllables (rival_share: 0 for most, at most 0.08 for espeak-ng's and
+// 0.2 for 95% of a person's in the read passages), where a changed word's skipped syllable lets
+// 0.06-0.68 of them fit better. Skips are kept only where one of the run's syllables is rivalled
+// by more than one in twenty: on the read passages that is most of the marks the outlier rule let
+// through (espeak-ng's 車 著 周 春, a person's 婆 出 叫), bench/README.md.
+constexpr double kMinRivalShare = 0.05;
+// Speech the transcript lacks is at least a syllable of it, and a syllable is rarely shorter than
+// three quarters of the sentence's median on its plain path: a shorter generic stretch is a right
+// syllable's onset or tail, or a breath, that generic speech fits a little better than the text.
+constexpr double kMinGenericSyllableShare = 0.75;
 
 bool is_syllable_state(const PhoneState& state) {
     return !is_pause(state.role) && state.role != StateRole::generic_speech;
@@ -148,18 +160,6 @@ std::vector<bool> whole_syllables(const SentenceChain& chain, const std::vector<
     return is_whole;
 }
 
-// Per syllable of `chain`, the frames its states hold on `path` (none: first_frame past end_frame).
-std::vector<SyllableFrames> frames_on_path(const SentenceChain& chain, const std::vector<StateSegment>& path) {
-    std::vector<SyllableFrames> frames(chain.syllables.size(), {std::numeric_limits<std::size_t>::max(), 0});
-    for (const StateSegment& segment : path) {
-        const PhoneState& state = chain.states[segment.state];
-        if (!is_syllable_state(state)) continue;
-        frames[state.syllable].first_frame = std::min(frames[state.syllable].first_frame, segment.first_frame);
-        frames[state.syllable].end_frame = std::max(frames[state.syllable].end_frame, segment.end_frame);
-    }
-    return frames;
-}
-
 // Syllables of the text's path (`is_whole`) next to a syllable it skips whose fit on the whole
 // path is an outlier of the chain's, added to `marked`, outward until a syllable fits as usual.
 // Generic speech alone is not grown from: it is where the speech has words the text lacks, and
@@ -181,6 +181,27 @@ void add_outliers_beside(const std::vector<double>& fits, const std::vector<bool
 }
 
 }  // namespace
+
+std::vector<SyllableFrames> frames_on_path(const SentenceChain& chain, const std::vector<StateSegment>& path) {
+    std::vector<SyllableFrames> frames(chain.syllables.size(), {std::numeric_limits<std::size_t>::max(), 0});
+    for (const StateSegment& segment : path) {
+        const PhoneState& state = chain.states[segment.state];
+        if (!is_syllable_state(state)) continue;
+        frames[state.syllable].first_frame = std::min(frames[state.syllable].first_frame, segment.first_frame);
+        frames[state.syllable].end_frame = std::max(frames[state.syllable].end_frame, segment.end_frame);
+    }
+    return frames;
+}
+
+void add_rival_shares(const SentenceChain& lenient, const std::vector<StateSegment>& path,
+                      const std::vector<SyllableFrames>& plain_frames, const EmissionScores& scores,
+                      std::vector<double>& shares) {
+    if (plain_frames.size() != lenient.syllables.size()) return;
+    shares.resize(lenient.syllables.size(), std::numeric_limits<double>::quiet_NaN());
+    const std::vector<bool> is_whole = whole_syllables(lenient, path);
+    for (std::size_t i = 0; i < is_whole.size(); ++i)
+        if (!is_whole[i] && std::isnan(shares[i])) shares[i] = rival_share(lenient, i, plain_frames[i], scores);
+}
 
 SentenceChain lenient_chain(const SentenceChain& chain) {
     SentenceChain lenient = chain;
@@ -208,7 +229,7 @@ std::vector<double> fits_on_path(const SentenceChain& chain, const std::vector<S
 }
 
 std::vector<std::size_t> unsupported_skips(const SentenceChain& lenient, const std::vector<StateSegment>& path,
-                                           const std::vector<double>& plain_fits) {
+                                           const std::vector<double>& plain_fits, const std::vector<double>& rival_shares) {
     if (plain_fits.size() != lenient.syllables.size()) return {};
     const double bound = outlier_bound(plain_fits, std::vector<bool>(plain_fits.size(), true));
     const std::vector<bool> is_whole = whole_syllables(lenient, path);
@@ -220,11 +241,33 @@ std::vector<std::size_t> unsupported_skips(const SentenceChain& lenient, const s
         bool is_outlier = false;
         for (std::size_t j = first > 0 ? first - 1 : 0; j < std::min(is_whole.size(), end + 1); ++j)
             if (plain_fits[j] < bound) is_outlier = true;
-        if (!is_outlier)
+        bool is_rivalled = false;
+        for (std::size_t i = first; i < end; ++i)
+            if (i >= rival_shares.size() || std::isnan(rival_shares[i]) || rival_shares[i] >= kMinRivalShare) is_rivalled = true;
+        if (!is_outlier || !is_rivalled)
             for (std::size_t i = first; i < end; ++i) unsupported.push_back(i);
         first = end;
     }
     return unsupported;
+}
+
+std::vector<std::size_t> short_generic(const SentenceChain& lenient, const std::vector<StateSegment>& path,
+                                       const std::vector<SyllableFrames>& plain_frames) {
+    std::vector<double> lengths;
+    for (const SyllableFrames& frames : plain_frames)
+        if (frames.end_frame > frames.first_frame) lengths.push_back(static_cast<double>(frames.end_frame - frames.first_frame));
+    if (lengths.empty()) return {};
+    const double shortest = kMinGenericSyllableShare * median_of(lengths);
+    std::vector<std::size_t> short_states;
+    for (const StateSegment& segment : path)
+        if (lenient.states[segment.state].role == StateRole::generic_speech &&
+            static_cast<double>(segment.end_frame - segment.first_frame) < shortest)
+            short_states.push_back(segment.state);
+    return short_states;
+}
+
+void forbid_states(SentenceChain& lenient, const std::vector<std::size_t>& states) {
+    for (std::size_t s : states) lenient.states[s].entry_log_penalty = -std::numeric_limits<double>::infinity();
 }
 
 void forbid_skips(SentenceChain& lenient, const std::vector<std::size_t>& syllables) {

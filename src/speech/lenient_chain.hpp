@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "speech/alignment_confidence.hpp"
 #include "speech/frame_features.hpp"
 #include "speech/hsmm.hpp"
 #include "speech/sentence_chains.hpp"
@@ -23,15 +24,34 @@ SentenceChain lenient_chain(const SentenceChain& chain);
 std::vector<double> fits_on_path(const SentenceChain& chain, const std::vector<StateSegment>& path,
                                  const EmissionScores& scores);
 
+// Per syllable of `chain`, the frames its states hold on `path` (none: first_frame past end_frame).
+std::vector<SyllableFrames> frames_on_path(const SentenceChain& chain, const std::vector<StateSegment>& path);
+
+// `shares` (per syllable; NaN: not measured) with the rival_share of each syllable the lenient
+// chain's `path` skips, over the frames it holds on the chain's plain path (`plain_frames`).
+void add_rival_shares(const SentenceChain& lenient, const std::vector<StateSegment>& path,
+                      const std::vector<SyllableFrames>& plain_frames, const EmissionScores& scores,
+                      std::vector<double>& shares);
+
 // The syllables of runs the lenient chain's `path` skips (neighbours skipped together) where
 // neither one of them nor a neighbour of the run fits the chain's plain path (`plain_fits`:
 // fits_on_path of the path without leniency) as an outlier of the chain's: more than
-// kOutlierDeviations (lenient_chain.cpp) median absolute deviations under the median. A person's
-// syllable that fits the models a little worse than most, in a right text, costs less skipped than
-// fitted (9 of 30 right sentences marked, every one of 18 read passages, bench/README.md), yet on
-// the plain path it fits within the chain's usual spread; a changed word does not.
+// kOutlierDeviations (lenient_chain.cpp) median absolute deviations under the median; or where no
+// syllable of the run is beaten on its plain-path stretch by at least kMinRivalShare of the unlike
+// syllables (`rival_shares`, per syllable, add_rival_shares; NaN or missing: not judged so). A
+// person's syllable that fits the models a little worse than most, in a right text, costs less
+// skipped than fitted, yet on the plain path it fits within the chain's usual spread, or, where it
+// is an outlier, still better than nearly every unlike syllable; a changed word does neither.
 std::vector<std::size_t> unsupported_skips(const SentenceChain& lenient, const std::vector<StateSegment>& path,
-                                           const std::vector<double>& plain_fits);
+                                           const std::vector<double>& plain_fits, const std::vector<double>& rival_shares);
+
+// The generic-speech states of `lenient` that `path` holds for less than most of a syllable of the
+// chain's plain path (`plain_frames`: frames_on_path of the path without leniency).
+std::vector<std::size_t> short_generic(const SentenceChain& lenient, const std::vector<StateSegment>& path,
+                                       const std::vector<SyllableFrames>& plain_frames);
+
+// `lenient` with its states `states` (generic speech) no longer usable.
+void forbid_states(SentenceChain& lenient, const std::vector<std::size_t>& states);
 
 // `lenient` with `syllables` no longer skippable.
 void forbid_skips(SentenceChain& lenient, const std::vector<std::size_t>& syllables);

@@ -236,12 +236,19 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
             // A text with more syllables than the speech holds may have no plain path: no fits.
             const auto plain = viterbi_align(chains[w].states, scores, workspace, scores.frame_count);
             const auto plain_fits = plain.empty() ? std::vector<double>{} : fits_on_path(chains[w], plain, scores);
+            const auto plain_frames = plain.empty() ? std::vector<SyllableFrames>{} : frames_on_path(chains[w], plain);
             SentenceChain chain = lenient_chain(chains[w]);
             auto path = align_chain(chain, scores, workspace, scores.frame_count, transcript);
-            // Each round forbids at least one more skip: it ends.
-            for (auto skips = unsupported_skips(chain, path, plain_fits); !skips.empty();
-                 skips = unsupported_skips(chain, path, plain_fits)) {
+            // Each round forbids at least one more skip or generic stretch: it ends. Rival shares
+            // are measured only for the syllables a path skips (50 small searches each).
+            std::vector<double> rival_shares;
+            for (;;) {
+                add_rival_shares(chain, path, plain_frames, scores, rival_shares);
+                const auto skips = unsupported_skips(chain, path, plain_fits, rival_shares);
+                const auto generic = short_generic(chain, path, plain_frames);
+                if (skips.empty() && generic.empty()) break;
                 forbid_skips(chain, skips);
+                forbid_states(chain, generic);
                 path = align_chain(chain, scores, workspace, scores.frame_count, transcript);
             }
             place_lenient(chain, path, scores, track, loudness, result, evidence);

@@ -6,12 +6,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "common/speech_clips.hpp"
 #include "speech/lenient_chain.hpp"
+#include "speech/rival_syllables.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/face_model.hpp"
 #include "talkface/lip_sync.hpp"
@@ -36,6 +38,20 @@ SpeechAligner lenient_aligner() {
     AlignOptions options;
     options.lenient = true;
     return SpeechAligner(options);
+}
+
+// A chain of `count` syllables (all `syllable`) of one state each, skippable at `skip_log_penalty`.
+detail::SentenceChain one_state_syllables(const Syllable& syllable, std::size_t count, double skip_log_penalty) {
+    detail::SentenceChain chain;
+    for (std::size_t i = 0; i < count; ++i) {
+        chain.syllables.push_back(&syllable);
+        detail::PhoneState state;
+        state.role = detail::StateRole::final;
+        state.syllable = i;
+        state.skip_log_penalty = skip_log_penalty;
+        chain.states.push_back(state);
+    }
+    return chain;
 }
 
 }  // namespace
@@ -165,35 +181,98 @@ TEST_SUITE("speech") {
     TEST_CASE("lenient: syllables skipped stay skipped only where one of them or a neighbour fits the plain path as an outlier") {
         // Five one-state syllables; the lenient path skips syllable 2.
         const Syllable syllable;
-        detail::SentenceChain chain;
-        for (std::size_t i = 0; i < 5; ++i) {
-            chain.syllables.push_back(&syllable);
-            detail::PhoneState state;
-            state.role = detail::StateRole::final;
-            state.syllable = i;
-            state.skip_log_penalty = -20.0;
-            chain.states.push_back(state);
-        }
+        detail::SentenceChain chain = one_state_syllables(syllable, 5, -20.0);
+        // Every skipped syllable rivalled: judged on the fits alone.
+        const std::vector<double> rivalled(5, 0.3);
         const std::vector<detail::StateSegment> skips_2 = {{0, 0, 10}, {1, 10, 20}, {3, 20, 30}, {4, 30, 40}};
         const std::vector<double> usual = {1.0, 1.1, 0.9, 1.05, 0.95};
-        CHECK(detail::unsupported_skips(chain, skips_2, usual) == std::vector<std::size_t>{2});
+        CHECK(detail::unsupported_skips(chain, skips_2, usual, rivalled) == std::vector<std::size_t>{2});
         std::vector<double> outlier = usual;
         outlier[2] = 0.2;  // 16 median absolute deviations under the median
-        CHECK(detail::unsupported_skips(chain, skips_2, outlier).empty());
+        CHECK(detail::unsupported_skips(chain, skips_2, outlier, rivalled).empty());
         outlier = usual;
         outlier[3] = 0.2;  // its neighbour
-        CHECK(detail::unsupported_skips(chain, skips_2, outlier).empty());
+        CHECK(detail::unsupported_skips(chain, skips_2, outlier, rivalled).empty());
         // Two syllables skipped together are judged together, with the run's neighbours.
         const std::vector<detail::StateSegment> skips_2_3 = {{0, 0, 10}, {1, 10, 20}, {4, 20, 40}};
-        CHECK(detail::unsupported_skips(chain, skips_2_3, usual) == std::vector<std::size_t>{2, 3});
+        CHECK(detail::unsupported_skips(chain, skips_2_3, usual, rivalled) == std::vector<std::size_t>{2, 3});
         outlier = usual;
         outlier[4] = 0.2;
-        CHECK(detail::unsupported_skips(chain, skips_2_3, outlier).empty());
+        CHECK(detail::unsupported_skips(chain, skips_2_3, outlier, rivalled).empty());
         // No plain path (more syllables than the speech holds): nothing to judge by.
-        CHECK(detail::unsupported_skips(chain, skips_2, {}).empty());
+        CHECK(detail::unsupported_skips(chain, skips_2, {}, rivalled).empty());
 
         detail::forbid_skips(chain, {2});
         CHECK(std::isinf(chain.states[2].skip_log_penalty));
         CHECK(chain.states[3].skip_log_penalty == -20.0);
+    }
+
+    TEST_CASE("lenient: an outlier stays skipped only where unlike syllables fit its stretch better than its text") {
+        const Syllable syllable;
+        detail::SentenceChain chain = one_state_syllables(syllable, 5, -20.0);
+        const std::vector<detail::StateSegment> skips_2_3 = {{0, 0, 10}, {1, 10, 20}, {4, 20, 40}};
+        std::vector<double> fits = {1.0, 1.1, 0.2, 1.05, 0.95};  // syllable 2 an outlier
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        // Its own text fits it better than every unlike syllable: a right syllable that fits badly.
+        CHECK(detail::unsupported_skips(chain, skips_2_3, fits, {0.0, 0.0, 0.0, 0.0, 0.0}) == std::vector<std::size_t>{2, 3});
+        // One of the run rivalled is enough (the path skips a changed word's syllables together).
+        CHECK(detail::unsupported_skips(chain, skips_2_3, fits, {0.0, 0.0, 0.0, 0.2, 0.0}).empty());
+        // Not measured: judged on the fits alone.
+        CHECK(detail::unsupported_skips(chain, skips_2_3, fits, {nan, nan, nan, nan, nan}).empty());
+    }
+
+    TEST_CASE("lenient: a syllable's own text fits its stretch better than unlike syllables do, a wrong one does not") {
+        // A stretch of "ba": 3 frames of closure, 3 of burst, 24 of a.
+        detail::EmissionScores scores;
+        scores.frame_count = 30;
+        scores.values.assign(scores.frame_count * detail::kPhoneClassCount, -10.0f);
+        for (std::size_t t = 0; t < scores.frame_count; ++t) {
+            const int best = t < 3 ? detail::kSilence : t < 6 ? detail::kBurst : detail::kVowelA;
+            scores.values[t * detail::kPhoneClassCount + static_cast<std::size_t>(best)] = 0.0f;
+        }
+        Syllable ba;
+        ba.pinyin = "ba3";
+        Syllable shi;
+        shi.pinyin = "shi4";
+        Syllable yue;
+        yue.pinyin = "yue4";
+        detail::SentenceChain chain;
+        chain.syllables = {&ba, &shi, &yue};
+        const detail::SyllableFrames stretch{0, 30};
+        CHECK(detail::rival_share(chain, 0, stretch, scores) < 0.05);
+        CHECK(detail::rival_share(chain, 1, stretch, scores) > 0.3);
+        CHECK(detail::rival_share(chain, 2, stretch, scores) > 0.3);
+        // No frames: nothing to judge.
+        CHECK(detail::rival_share(chain, 1, {10, 10}, scores) == 0.0);
+    }
+
+    TEST_CASE("lenient: generic speech shorter than most of a syllable is not speech the transcript lacks") {
+        // Four syllables of 20 frames on the plain path; the lenient path has two generic stretches.
+        const Syllable syllable;
+        const detail::SentenceChain plain = one_state_syllables(syllable, 4, -std::numeric_limits<double>::infinity());
+        const std::vector<detail::StateSegment> plain_path = {{0, 0, 20}, {1, 20, 40}, {2, 40, 60}, {3, 60, 80}};
+        const detail::SentenceChain lenient = detail::lenient_chain(plain);
+        // The last state of `role` of syllable `i`: for generic speech, the one after the syllable.
+        auto state_of = [&](detail::StateRole role, std::size_t i) {
+            std::size_t found = lenient.states.size();
+            for (std::size_t s = 0; s < lenient.states.size(); ++s)
+                if (lenient.states[s].role == role && lenient.states[s].syllable == i) found = s;
+            REQUIRE(found < lenient.states.size());
+            return found;
+        };
+        const auto final = detail::StateRole::final;
+        const auto generic = detail::StateRole::generic_speech;
+        // Generic speech of 10 frames after syllable 0 and of 16 after syllable 1.
+        const std::vector<detail::StateSegment> path = {
+            {state_of(final, 0), 0, 20},  {state_of(generic, 0), 20, 30}, {state_of(final, 1), 30, 50},
+            {state_of(generic, 1), 50, 66}, {state_of(final, 2), 66, 86},  {state_of(final, 3), 86, 106}};
+        const std::size_t first_generic = state_of(generic, 0);
+        const auto frames = detail::frames_on_path(plain, plain_path);
+        CHECK(detail::short_generic(lenient, path, frames) == std::vector<std::size_t>{first_generic});
+        // No plain path: nothing to judge by.
+        CHECK(detail::short_generic(lenient, path, {}).empty());
+        detail::SentenceChain forbidden = lenient;
+        detail::forbid_states(forbidden, {first_generic});
+        CHECK(std::isinf(forbidden.states[first_generic].entry_log_penalty));
     }
 }
