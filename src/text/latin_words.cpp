@@ -98,6 +98,35 @@ std::vector<std::string> letter_syllables(std::string_view letters) {
     return syllables;
 }
 
+std::vector<std::string> english_number_syllables(std::string_view digits) {
+    constexpr std::string_view kOnes[] = {"zero",    "one",     "two",       "three",    "four",
+                                          "five",    "six",     "seven",     "eight",    "nine",
+                                          "ten",     "eleven",  "twelve",    "thirteen", "fourteen",
+                                          "fifteen", "sixteen", "seventeen", "eighteen", "nineteen"};
+    constexpr std::string_view kTens[] = {"", "", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"};
+    std::vector<std::string_view> words;
+    while (digits.size() > 1 && digits.front() == '0') digits.remove_prefix(1);
+    if (digits.size() > 2) {
+        // A longer number is read digit by digit, 0 as "oh" (one oh one), as numbers are in English.
+        for (const char digit : digits) words.push_back(digit == '0' ? "oh" : kOnes[digit - '0']);
+    } else {
+        const int value = digits.size() == 1 ? digits[0] - '0' : (digits[0] - '0') * 10 + (digits[1] - '0');
+        if (value < 20) {
+            words.push_back(kOnes[value]);
+        } else {
+            words.push_back(kTens[value / 10]);
+            if (value % 10 != 0) words.push_back(kOnes[value % 10]);
+        }
+    }
+    std::vector<std::string> syllables;
+    for (const auto word : words) {
+        const auto found = english_word_syllables(word);
+        if (!found) throw internal_error("the English table lacks the number word \"" + std::string(word) + "\"");
+        syllables.insert(syllables.end(), found->begin(), found->end());
+    }
+    return syllables;
+}
+
 bool is_all_capitals(std::string_view word) {
     return !word.empty() && std::all_of(word.begin(), word.end(), [](char letter) { return is_ascii_capital(letter); });
 }

@@ -20,6 +20,11 @@ std::vector<std::string> letter_syllables(std::string_view letters);
 // the dictionary does not have it.
 std::optional<std::vector<std::string>> english_word_syllables(std::string_view word);
 
+// The syllables of a number said in English, as Mandarin speakers say No.1 (number one): 0 to 99
+// as English number words (twelve, forty two), a longer number digit by digit (one oh one).
+// `digits` are ASCII 0-9, at least one.
+std::vector<std::string> english_number_syllables(std::string_view digits);
+
 // True for a word of ASCII capitals only (CEO, NASA), false for an empty one.
 bool is_all_capitals(std::string_view word);
 

@@ -84,7 +84,7 @@ std::string digit_words(std::string_view digits, bool yao_for_one) {
 }
 
 std::string decimal_words(std::string_view whole_digits, std::string_view fraction_digits) {
-    return cardinal_words(whole_digits, false) + "点" + digit_words(fraction_digits);
+    return cardinal_words(whole_digits) + "点" + digit_words(fraction_digits);
 }
 
 }  // namespace talkface::detail

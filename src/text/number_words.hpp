@@ -22,8 +22,9 @@ std::string cardinal_words(std::string_view digits, bool liang_at_head = true);
 // `digits` one by one: "2026" -> 二零二六; with `yao_for_one` 1 is 幺, as phone numbers are said.
 std::string digit_words(std::string_view digits, bool yao_for_one = false);
 
-// A decimal: the whole part as a cardinal (no 两), then 点 and the fraction digits one by one:
-// ("3", "14") -> 三点一四, ("0", "5") -> 零点五.
+// A decimal: the whole part as a cardinal (两 at the head of a 千, 万 or 亿 place: 2350.5
+// 两千三百五十点五), then 点 and the fraction digits one by one: ("3", "14") -> 三点一四,
+// ("2", "5") -> 二点五.
 std::string decimal_words(std::string_view whole_digits, std::string_view fraction_digits);
 
 }  // namespace talkface::detail

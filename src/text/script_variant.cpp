@@ -19,7 +19,7 @@ constexpr std::u32string_view kTraditionalOnly =
 constexpr std::pair<std::string_view, std::string_view> kReadingCharacters[] = {
     {"两", "兩"}, {"万", "萬"}, {"亿", "億"}, {"点", "點"}, {"负", "負"}, {"时", "時"}, {"钟", "鐘"},
     {"吨", "噸"}, {"摄", "攝"}, {"华", "華"}, {"兹", "茲"}, {"号", "號"}, {"欧", "歐"}, {"镑", "鎊"},
-    {"币", "幣"},
+    {"币", "幣"}, {"线", "線"}, {"划", "劃"}, {"杠", "槓"},
 };
 
 }  // namespace

@@ -14,8 +14,11 @@
 #include "text/aspect_particle.hpp"
 #include "text/code_points.hpp"
 #include "text/latin_words.hpp"
+#include "text/number_words.hpp"
 #include "text/reading_tables.hpp"
+#include "text/return_verb.hpp"
 #include "text/script_variant.hpp"
+#include "text/web_addresses.hpp"
 #include "text/word_segmentation.hpp"
 #include "text/written_numbers.hpp"
 
@@ -249,13 +252,23 @@ private:
             run_.push_back({&c, c.text, {}});
             return i + 1;
         }
-        flush_run();
+        flush_run(ends_sentence(c.value) || marks_pause(c.value) || closes_quote(c.value));
         if (sentence_ended_ && !(ends_sentence(c.value) || closes_quote(c.value))) close_sentence();
+        if (auto address = detail::read_web_address(text, i)) {
+            form_warnings_ = timeline_.warnings.size();
+            add_form(text, i, address->end, address_syllables(*address, c));
+            return address->end;
+        }
         if (auto form = detail::read_number_form(text, i)) {
             form_warnings_ = timeline_.warnings.size();
             if (!form->warning.empty()) warn(c, "\"" + written_text(text, i, form->end) + "\": " + form->warning);
             add_form(text, i, form->end, read_words(form->words));
             return form->end;
+        }
+        if (detail::slash_reads_per(text, i)) {
+            form_warnings_ = timeline_.warnings.size();
+            add_form(text, i, i + 1, read_words("每"));
+            return i + 1;
         }
         if (ends_sentence(c.value)) {
             append_text(c.text);
@@ -326,18 +339,76 @@ private:
                 end = second_end;
             }
         }
-        std::vector<Syllable> syllables;
-        if (detail::is_all_capitals(word) && !detail::is_said_as_word(word)) {
-            syllables = read_capitals(word);
-        } else if (detail::has_inner_acronym(word)) {
-            syllables = read_word_parts(word, text[start]);
-        } else if (auto found = detail::english_word_syllables(word)) {
-            syllables = said_syllables(*found);
-        } else {
-            syllables = read_word_parts(word, text[start]);
+        if (auto number = number_sign(text, word, end)) {
+            add_form(text, start, number->first, number->second);
+            return number->first;
         }
-        add_form(text, start, end, std::move(syllables));
+        add_form(text, start, end, latin_word_syllables(word, text[start]));
         return end;
+    }
+
+    std::vector<Syllable> latin_word_syllables(const std::string& word, const CodePoint& at) {
+        if (detail::is_all_capitals(word) && !detail::is_said_as_word(word)) return read_capitals(word);
+        if (detail::has_inner_acronym(word)) return read_word_parts(word, at);
+        if (auto found = detail::english_word_syllables(word)) return said_syllables(*found);
+        return read_word_parts(word, at);
+    }
+
+    // No.1 (No. 1, NO.1) is said the English way, "number one", as Mandarin speakers say it; the
+    // end of the form and its syllables, or nullopt where `word` (ending at text[end]) is not No.
+    std::optional<std::pair<std::size_t, std::vector<Syllable>>> number_sign(const std::vector<CodePoint>& text,
+                                                                             const std::string& word,
+                                                                             std::size_t end) const {
+        if ((word != "No" && word != "NO") || end >= text.size() || text[end].value != '.') return std::nullopt;
+        auto first = end + 1;
+        if (first < text.size() && text[first].value == ' ') ++first;
+        auto last = first;
+        while (last < text.size() && is_digit(text[last].value)) ++last;
+        if (last == first) return std::nullopt;
+        auto syllables = *detail::english_word_syllables("number");
+        for (auto& syllable : detail::english_number_syllables(latin_spelling(text, first, last)))
+            syllables.push_back(std::move(syllable));
+        return std::make_pair(last, said_syllables(syllables));
+    }
+
+    // An address's parts as said: capitals as elsewhere (an acronym letter by letter), letters as
+    // a word the dictionary has (com, news), one by one where they are three or fewer (cn, qq,
+    // gov, www), as pinyin (zhangwei); digits one by one (163).
+    std::vector<Syllable> address_syllables(const detail::WebAddress& address, const CodePoint& at) {
+        std::vector<Syllable> syllables;
+        auto append = [&](std::vector<Syllable> more) {
+            for (auto& syllable : more) syllables.push_back(std::move(syllable));
+        };
+        for (const auto& part : address.parts) {
+            if (part.kind == detail::AddressPart::Kind::words) {
+                append(read_words(part.text));
+            } else if (part.kind == detail::AddressPart::Kind::digits) {
+                append(read_words(detail::digit_words(part.text)));
+            } else if (detail::is_all_capitals(part.text)) {
+                append(latin_word_syllables(part.text, at));
+            } else if (auto found = detail::english_word_syllables(part.text)) {
+                append(said_syllables(*found));
+            } else if (constexpr std::size_t kLongestSpelled = 3; part.text.size() <= kLongestSpelled) {
+                append(said_syllables(detail::letter_syllables(part.text)));
+            } else if (auto pinyin = address_pinyin(part.text)) {
+                append(std::move(*pinyin));
+            } else {
+                append(latin_word_syllables(part.text, at));
+            }
+        }
+        return syllables;
+    }
+
+    // Small letters that spell Mandarin (zhangwei, baidu), as pinyin syllables; nullopt otherwise.
+    std::optional<std::vector<Syllable>> address_pinyin(const std::string& letters) const {
+        if (!options_.read_pinyin || std::any_of(letters.begin(), letters.end(), [](char c) { return c < 'a' || c > 'z'; }))
+            return std::nullopt;
+        const auto token = decode_utf8(letters, "<address>");
+        auto split = split_pinyin(token);
+        if (!split) return std::nullopt;
+        std::vector<Syllable> syllables;
+        for (auto& syllable : *split) syllables.push_back(make_syllable(std::move(syllable.written), std::move(syllable.pinyin)));
+        return syllables;
     }
 
     std::vector<Syllable> said_syllables(const std::vector<std::string>& pinyin) const {
@@ -526,28 +597,34 @@ private:
     // The readings of a run of Chinese characters: the run is cut into its likeliest words, each
     // word read by the phrase table, or each of its characters by its most frequent reading;
     // fixes win over both.
-    std::vector<std::string> read_han(const std::vector<HanCharacter>& run) const {
+    // `ends_clause`: a pause or end mark follows the run, or the text ends (return_verb.hpp).
+    std::vector<std::string> read_han(const std::vector<HanCharacter>& run, bool ends_clause = false) const {
         std::vector<std::string_view> characters;
         for (const auto& character : run) characters.push_back(character.text);
         std::vector<std::string> readings_of_run;
         std::size_t first = 0;
         const auto lengths = detail::likeliest_words(characters, tables_);
+        std::vector<std::string> words;
+        for (std::size_t w = 0, start = 0; w < lengths.size(); start += lengths[w++]) {
+            words.emplace_back();
+            for (std::size_t k = start; k < start + lengths[w]; ++k) words.back() += run[k].text;
+        }
         for (std::size_t w = 0; w < lengths.size(); ++w) {
             const auto length = lengths[w];
-            std::string word;
-            for (std::size_t k = first; k < first + length; ++k) word += run[k].text;
+            const auto& word = words[w];
             const auto found = tables_.words.find(word);
             const bool has_readings = found != tables_.words.end() && !found->second.readings.empty();
             const auto next_word = w + 1 < lengths.size() && lengths[w + 1] == 1 ? characters[first + length]
                                                                                   : std::string_view();
             const auto after_next = first + length + 1 < characters.size() ? characters[first + length + 1]
                                                                             : std::string_view();
-            const auto before_particle = detail::reading_before_particle(word, next_word, after_next);
+            auto in_context = detail::reading_before_particle(word, next_word, after_next);
+            if (in_context.empty()) in_context = detail::return_verb_reading(words, w, ends_clause);
             for (std::size_t k = 0; k < length; ++k) {
                 const auto& character = run[first + k];
                 std::string pinyin = character.fix;
-                if (pinyin.empty() && !before_particle.empty()) {
-                    pinyin = before_particle;
+                if (pinyin.empty() && k == 0 && !in_context.empty()) {
+                    pinyin = in_context;
                 } else if (pinyin.empty()) {
                     pinyin = has_readings ? std::string(found->second.readings[k])
                                           : std::string(tables_.character_readings.at(character.text).front());
@@ -560,8 +637,8 @@ private:
         return readings_of_run;
     }
 
-    void flush_run() {
-        const auto readings = read_han(run_);
+    void flush_run(bool ends_clause = false) {
+        const auto readings = read_han(run_, ends_clause);
         for (std::size_t k = 0; k < run_.size(); ++k) add_syllable(std::string(run_[k].text), readings[k]);
         run_.clear();
     }
@@ -646,7 +723,7 @@ private:
     // A sentence without syllables (only punctuation, or only characters already warned about)
     // has nothing to align and is left out.
     void close_sentence() {
-        flush_run();
+        flush_run(true);
         const bool has_syllables =
             !timeline_.syllables.empty() && timeline_.syllables.back().sentence == timeline_.sentences.size();
         if (has_syllables) {

@@ -223,6 +223,13 @@ const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size
     return best;
 }
 
+// KB MB GB TB PB after a number (256GB, 2 TB): a unit, so the number counts (两 TB, not a phone
+// number's digits), said as its letters, which the Latin reader reads after the number.
+bool is_byte_unit_at(const std::vector<CodePoint>& text, std::size_t i) {
+    if (value_at(text, i) == ' ') ++i;
+    return is_one_of(value_at(text, i), U"KMGTP") && value_at(text, i + 1) == 'B' && !is_ascii_letter(value_at(text, i + 2));
+}
+
 struct Currency {
     std::u32string_view written;
     const char* before;  // said before the amount
@@ -255,6 +262,9 @@ struct NumberContext {
     bool is_phone = false;      // a phone word earlier in the sentence
     bool is_named = false;      // a naming word right before it (房间号是1208)
     bool is_service_call = false;  // dialled or named (打110, 110报警)
+    bool is_model = false;      // right after the capitals of a model's name (C919, A380)
+    bool is_generation = false;  // two digits right before 后 (90后, 00后)
+    bool is_hundredths = false;  // right after the seconds of a time (9秒83)
 };
 
 struct SaidNumber {
@@ -292,6 +302,12 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
             said.words = digit_words(whole);
             return said;
         }
+        // A generation (90后 九零后), the hundredths of a sprint (9秒83 九秒八三) and a model's
+        // number of three or more digits (C919 C九一九, A380) are said digit by digit.
+        if (!counts && (context.is_generation || context.is_hundredths || (context.is_model && whole.size() >= 3))) {
+            said.words = digit_words(whole);
+            return said;
+        }
         if (whole.size() == 4 && (context.next == U'年')) {
             said.words = digit_words(whole);
             said.is_year = true;
@@ -306,7 +322,7 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
             return said;
         }
     }
-    if (whole == "2" && !context.is_ordinal && (context.has_unit || takes_liang(context.next))) {
+    if (whole == "2" && !context.is_ordinal && !context.is_model && (context.has_unit || takes_liang(context.next))) {
         said.words = "两";
         return said;
     }
@@ -407,6 +423,51 @@ bool follows_date_or_time(const std::vector<CodePoint>& text, std::size_t mark) 
            is_digit_at(text, mark - 4);
 }
 
+// Right after the capitals that name a model, with nothing or a hyphen between (C919, A380,
+// B-52): one to three capitals that start a word.
+bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start) {
+    auto i = start;
+    if (i > 0 && text[i - 1].value == '-') --i;
+    std::size_t capitals = 0;
+    while (i > 0 && is_ascii_capital(value_at(text, i - 1))) {
+        --i;
+        ++capitals;
+    }
+    constexpr std::size_t kMostCapitals = 3;
+    return capitals >= 1 && capitals <= kMostCapitals && (i == 0 || !is_ascii_letter(value_at(text, i - 1)));
+}
+
+// A country calling code, +86: said 加八六 as the + key is named, with the phone number that
+// follows it in groups (+86 10 6512 3456), digit by digit with 幺 for 1. A + and one to three
+// digits is one where a group follows, a phone word is earlier in the sentence, or 区号 stands
+// right before it; elsewhere it is a sign (+5 正五).
+std::optional<SpokenForm> read_calling_code(const std::vector<CodePoint>& text, std::size_t start) {
+    if (value_at(text, start) != '+' || !is_digit_at(text, start + 1)) return std::nullopt;
+    if (start > 0 && (is_digit_at(text, start - 1) || is_ascii_letter(value_at(text, start - 1)))) return std::nullopt;
+    auto i = start + 1;
+    const auto code = digits_from(text, i);
+    constexpr std::size_t kLongestCode = 3;
+    if (code.size() > kLongestCode || value_at(text, i) == '.' || value_at(text, i) == '%') return std::nullopt;
+    std::vector<std::string> groups;
+    auto end = i;
+    while ((value_at(text, end) == ' ' || is_dash(value_at(text, end))) && is_digit_at(text, end + 1)) {
+        auto k = end + 1;
+        groups.push_back(digits_from(text, k));
+        end = k;
+    }
+    std::size_t word_end = start;
+    for (int skipped = 0; skipped < 2 && word_end > 0 && is_one_of(text[word_end - 1].value, U" 是为為：:"); ++skipped)
+        --word_end;
+    const auto before = text_between(text, word_end >= 2 ? word_end - 2 : 0, word_end);
+    const bool is_code = !groups.empty() || follows_phone_word(text, start) || before == "区号" || before == "區號";
+    if (!is_code) return std::nullopt;
+    SpokenForm form;
+    form.words = "加" + digit_words(code, true);
+    for (const auto& group : groups) form.words += digit_words(group, true);
+    form.end = end;
+    return form;
+}
+
 }  // namespace
 
 std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, std::size_t start) {
@@ -415,6 +476,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (second) second->words = "到" + second->words;
         return second;
     }
+    if (auto code = read_calling_code(text, start)) return code;
     auto i = start;
     const Currency* currency = currency_at(text, i, i);
     std::string sign_words;
@@ -434,6 +496,10 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
 
     const auto number = parse_number(text, i);
     context.is_named = follows_name_word(text, start);
+    context.is_model = sign_words.empty() && currency == nullptr && follows_model_name(text, start);
+    context.is_generation = number.whole.size() == 2 && !number.has_point && !number.has_separators &&
+                            is_one_of(value_at(text, number.end), U"后後");
+    context.is_hundredths = start >= 2 && text[start - 1].value == U'秒' && is_digit_at(text, start - 2);
     context.is_service_call = is_service_call(text, start, number.end);
     SpokenForm form;
     if (sign_words.empty() && currency == nullptr && value_at(text, number.end) == ':' &&
@@ -470,23 +536,41 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
 
     // One number, or a range of two (3-5, 3~5), said with what follows the last of them.
     std::vector<WrittenNumber> numbers{number};
+    std::vector<std::string> signs{sign_words};
     auto after_first = number.end;
     const bool first_is_percent = value_at(text, after_first) == '%';
     if (first_is_percent) ++after_first;  // 10%-20%
-    if (is_range_mark(value_at(text, after_first)) && is_digit_at(text, after_first + 1)) {
-        auto second = parse_number(text, after_first + 1);
-        if (!first_is_percent || value_at(text, second.end) == '%') numbers.push_back(std::move(second));
+    if (is_range_mark(value_at(text, after_first))) {
+        // The second number may carry its own sign: -8~-3℃ 零下八到零下三摄氏度.
+        auto second_start = after_first + 1;
+        std::string second_sign;
+        const auto mark = value_at(text, second_start);
+        if ((is_dash(mark) || mark == '+') && is_digit_at(text, second_start + 1)) {
+            second_sign = mark == '+' ? "正" : "负";
+            ++second_start;
+        }
+        if (is_digit_at(text, second_start)) {
+            auto second = parse_number(text, second_start);
+            if (!first_is_percent || value_at(text, second.end) == '%') {
+                numbers.push_back(std::move(second));
+                signs.push_back(std::move(second_sign));
+            }
+        }
     }
     auto end = numbers.back().end;
     std::size_t unit_end = end;
     const Unit* unit = unit_at(text, end, unit_end);
     context.next = value_at(text, end);
-    context.has_unit = unit != nullptr && unit->written != "%";
+    context.has_unit = (unit != nullptr && unit->written != "%") || is_byte_unit_at(text, end);
     std::string unit_words = unit == nullptr ? "" : unit->words;
     const bool is_percent = unit != nullptr && unit->written == "%";
     const bool is_per_mille = end < text.size() && text[end].value == 0x2030 /*‰*/;
     const bool is_temperature = unit != nullptr && std::string_view(unit->words).find("氏度") != std::string_view::npos;
-    if (sign_words == "负" && is_temperature) sign_words = "零下";
+    // A temperature's sign is said 零下 or 零上 (-3℃ 零下三摄氏度, +5℃ 零上五摄氏度).
+    for (auto& sign : signs) {
+        if (sign == "负" && is_temperature) sign = "零下";
+        if (sign == "正" && is_temperature) sign = "零上";
+    }
     // ¥1,299.00 is 一千二百九十九元, $3.50 三点五美元: a price's trailing zeros are written, not said.
     for (auto& price : numbers) {
         if (currency == nullptr || !price.has_point) continue;
@@ -497,7 +581,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     for (std::size_t k = 0; k < numbers.size(); ++k) {
         const auto said = say_number(numbers[k], context);
         if (k > 0) form.words += "到";
-        if (k == 0) form.words += sign_words;
+        form.words += signs[k];
         if (currency != nullptr) form.words += currency->before;
         if (is_percent) form.words += "百分之";
         if (is_per_mille) form.words += "千分之";
@@ -523,6 +607,16 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     }
     form.end = end;
     return form;
+}
+
+bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i) {
+    const auto is_han = [&](std::size_t k) { return k < text.size() && text[k].value >= 0x3400 && text[k].value <= 0x9FFF; };
+    if (value_at(text, i) != '/' || !is_han(i + 1)) return false;
+    constexpr std::size_t kLongestUnit = 3;  // characters: 元, 美元, 平方米
+    for (std::size_t k = 1; k <= kLongestUnit && k <= i; ++k) {
+        if (!is_han(i - k)) return is_digit_at(text, i - k);
+    }
+    return i > kLongestUnit && is_digit_at(text, i - kLongestUnit - 1);
 }
 
 }  // namespace talkface::detail

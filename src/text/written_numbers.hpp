@@ -26,6 +26,11 @@ struct SpokenForm {
 // word earlier in the sentence (电话, 號碼: digits are said one by one, 1 as 幺).
 std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, std::size_t start);
 
+// True where the slash at text[i] joins two units after a number and is said 每 (25元/公斤
+// 二十五元每公斤, 3次/周): a number, one to three Chinese characters, the slash, a Chinese
+// character. Elsewhere a slash is not said (男/女).
+bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i);
+
 }  // namespace talkface::detail
 
 #endif

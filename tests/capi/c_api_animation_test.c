@@ -88,6 +88,30 @@ static int test_full_width_letters_are_read_as_ascii_letters(void) {
     return failures;
 }
 
+static int test_an_address_is_one_written_form(void) {
+    int failures = 0;
+    /* 邮箱a@qq.com。 -> 邮箱 ei 艾特 qiu qiu 点 kan */
+    const char *text = "\xe9\x82\xae\xe7\xae\xb1" "a@qq.com\xe3\x80\x82";
+    tf_timeline *timeline = NULL;
+    size_t count = 0;
+    size_t first = 99;
+    size_t syllables = 99;
+    const char *form_text = NULL;
+    const char *syllable_text = NULL;
+    CHECK_OK(tf_read_transcript(text, strlen(text), "address.txt", &timeline));
+    CHECK_OK(tf_timeline_written_form_count(timeline, &count));
+    CHECK(count == 1);
+    CHECK_OK(tf_timeline_written_form(timeline, 0, &form_text, &first, &syllables));
+    CHECK(strcmp(form_text, "a@qq.com") == 0);
+    CHECK(first == 2 && syllables == 7);
+    CHECK_OK(tf_timeline_syllable(timeline, 3, &syllable_text, NULL, NULL));
+    CHECK(strcmp(syllable_text, "\xe8\x89\xbe") == 0); /* 艾 */
+    CHECK_OK(tf_timeline_sentence_count(timeline, &count));
+    CHECK(count == 1);
+    tf_timeline_destroy(timeline);
+    return failures;
+}
+
 static int test_written_forms_are_kept_beside_their_syllables(void) {
     int failures = 0;
     /* 2026年用AI。 -> 二零二六年 用 ei ai */
@@ -792,6 +816,7 @@ int main(void) {
     int failures = 0;
     failures += test_transcript_is_read_into_sentences_and_syllables();
     failures += test_written_forms_are_kept_beside_their_syllables();
+    failures += test_an_address_is_one_written_form();
     failures += test_full_width_letters_are_read_as_ascii_letters();
     failures += test_transcript_errors_name_where();
     failures += test_paragraphs_of_the_transcript_are_kept();

@@ -216,3 +216,16 @@ def test_timeline_json_errors_name_where(text, match, item):
         talkface.timeline_from_json(text, "aligned.json")
     assert caught.value.path == "aligned.json"
     assert caught.value.item == item
+
+
+def test_addresses_calling_codes_and_no_1_are_read_aloud():
+    timeline = talkface.read_transcript("请发邮件到zhangwei@163.com，或致电+86 10 6512 3456。他是No.1。")
+    assert [f.text for f in timeline.written_forms] == ["zhangwei@163.com", "+86 10 6512 3456", "No.1"]
+    address = timeline.written_forms[0]
+    said = timeline.syllables[address.first_syllable:address.first_syllable + address.syllable_count]
+    assert [s.text for s in said][2:4] == ["艾", "特"]
+    assert "".join(s.text for s in said[4:]) == "一六三点kan"
+    code = timeline.written_forms[1]
+    assert "".join(s.text for s in timeline.syllables[code.first_syllable:code.first_syllable + 3]) == "加八六"
+    assert len(timeline.sentences) == 2
+    assert timeline.warnings == []

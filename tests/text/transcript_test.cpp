@@ -70,7 +70,7 @@ TEST_SUITE("transcript") {
         CHECK(toneless("书他还了没有") == "shu ta huan le mei you");
         CHECK(toneless("他還了三本書") == "ta huan le san ben shu");
         CHECK(toneless("他还了解这个情况") == "ta hai liao jie zhe ge qing kuang");
-        CHECK(toneless("这还了得").substr(0, 7) == "zhe hai");
+        CHECK(toneless("这还了得") == "zhe hai liao de");
         // After a verb that takes 了, 了 is the particle where 解 starts a word with what follows.
         CHECK(toneless("我看了解说才明白") == "wo kan le jie shuo cai ming bai");
         CHECK(toneless("听了解释以后") == "ting le jie shi yi hou");
@@ -78,6 +78,34 @@ TEST_SUITE("transcript") {
         CHECK(toneless("我们去了解情况") == "wo men qu liao jie qing kuang");
         CHECK(toneless("我想了解说话的技巧") == "wo xiang liao jie shuo hua de ji qiao");
         CHECK(toneless("他很了解我") == "ta hen liao jie wo");
+    }
+
+    TEST_CASE("还 is the verb huan2 where the adverb hai2 cannot stand") {
+        // Nothing after it in its clause: the adverb always modifies what follows.
+        CHECK(toneless("借了东西要按时还。") == "jie le dong xi yao an shi huan");
+        CHECK(toneless("「書要記得還」") == "shu yao ji de huan");
+        // Before a person given something back, or a debt; asked as 还不还.
+        CHECK(toneless("你什么时候还我钱") == "ni shen me shi hou huan wo qian");
+        CHECK(toneless("他每个月都要还房贷") == "ta mei ge yue dou yao huan fang dai");
+        CHECK(toneless("你到底还不还？") == "ni dao di huan bu huan");
+        CHECK(toneless("你还不还钱") == "ni huan bu huan qian");
+        // The adverb keeps hai2: before a verb or an adjective, and before a number, which is not
+        // the clause's end (还500元 is cut before the number, not at a pause).
+        CHECK(toneless("他还想再去一次") == "ta hai xiang zai qu yi ci");
+        CHECK(toneless("他比我还高") == "ta bi wo hai gao");
+        CHECK(toneless("他还不快走") == "ta hai bu kuai zou");
+        CHECK(toneless("还有三天") == "hai you san tian");
+        CHECK(toneless("这个月还500元") == "zhe ge yue hai wu bai yuan");
+        CHECK(toneless("他还欠我钱") == "ta hai qian wo qian");
+    }
+
+    TEST_CASE("还得 is hai2 dei3, still have to, and 还得起 the verb with its complement") {
+        CHECK(toneless("下班以后我还得去超市") == "xia ban yi hou wo hai dei qu chao shi");
+        CHECK(toneless("我还得起床") == "wo hai dei qi chuang");
+        CHECK(toneless("这么多钱你还得起吗") == "zhe me duo qian ni huan de qi ma");
+        CHECK(toneless("他还不起") == "ta huan bu qi");
+        CHECK(toneless("他还不起床") == "ta hai bu qi chuang");
+        CHECK(toneless("我明天去机场还车") == "wo ming tian qu ji chang huan che");
     }
 
     TEST_CASE("words the phrase list lacks or misreads come from tools/phrase_additions.tsv") {
@@ -308,8 +336,8 @@ TEST_SUITE("transcript") {
 
     TEST_CASE("held-out news sentences are read right") {
         // tests/data/transcripts/heldout.tsv: 20 sentences, readings checked by hand. Before any
-        // tuning the reader got 309 of 310 syllables: 還得多喝水 needs 得{dei3}, since the phrase
-        // source itself reads 还得 "hai de" (as in 还得到).
+        // tuning the reader got 309 of 310 syllables: 还得多喝水 read 得 de, as the phrase source
+        // reads 还得; tools/phrase_additions.tsv now gives it hai2 dei3 (issue 13).
         std::ifstream file(test::source_path("tests/data/transcripts/heldout.tsv"));
         REQUIRE(file);
         std::string line;
@@ -339,6 +367,6 @@ TEST_SUITE("transcript") {
         }
         CHECK(sentence_count == 20);
         CHECK(syllable_count == 310);
-        CHECK(wrong_count <= 1);
+        CHECK(wrong_count == 0);
     }
 }

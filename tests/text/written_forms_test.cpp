@@ -329,6 +329,85 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("news figures: model numbers, generations, sprint times, units per unit, signed ranges") {
+        check_cases({
+            // Three or more digits after a model's capitals are said digit by digit; fewer count.
+            {"C919大飞机", "xi九一九大飞机"},
+            {"空客A380", "空客 ei三八零"},
+            {"G20峰会", "ji二十峰会"},
+            {"B-52轰炸机", "bi五十二轰炸机"},
+            {"iPhone 15", "ai feng十五"},
+            // A number after letters is a name, not a count: CO2 is 二, not 两.
+            {"CO2排放", "xi ou二排放"},
+            // A generation, the hundredths of a sprint.
+            {"90后", "九零后"},
+            {"10后", "一零后"},
+            {"9秒83", "九秒八三"},
+            {"5分钟后", "五分钟后"},
+            // KB MB GB TB are units: the number counts (两, and not a phone number's digits).
+            {"手机有256GB存储", "手机有二百五十六 ji bi存储"},
+            {"2TB硬盘", "两 ti bi硬盘"},
+            // A slash between units after a number is 每; elsewhere it is not said.
+            {"25元/公斤", "二十五元每公斤"},
+            {"2,350.5美元/盎司", "两千三百五十点五美元每盎司"},
+            {"男/女", "男女"},
+            // Signs on both ends of a range; a temperature's + is 零上.
+            {"-8~-3℃", "零下八到零下三摄氏度"},
+            {"-5~3℃", "零下五到三摄氏度"},
+            {"+5℃", "零上五摄氏度"},
+            {"+5", "正五"},
+        });
+    }
+
+    TEST_CASE("a country calling code is 加 and its digits, with the groups of the number after it") {
+        check_cases({
+            {"电话：+86 10 6512 3456", "电话加八六幺零六五幺二三四五六"},
+            {"+86-10-65123456", "加八六幺零六五幺二三四五六"},
+            {"国际区号是+86", "国际区号是加八六"},
+            {"区号：+852", "区号加八五二"},
+        });
+        // Without a group after it, a phone word or 区号, a + and digits is a sign.
+        CHECK(said("温差+12") == "温差正十二");
+    }
+
+    TEST_CASE("e-mail and web addresses: @ 艾特, dots 点, labels as words, pinyin or letters, digits one by one") {
+        check_cases({
+            {"邮箱zhangwei@163.com", "邮箱 zhang wei艾特一六三点 kan"},
+            {"12345678@qq.com", "一二三四五六七八艾特 qiu qiu点 kan"},
+            {"访问www.gov.cn", "访问 da bu liu da bu liu da bu liu点 ji ou wei点 xi en"},
+            // The scheme is not said; a path's slashes are.
+            {"https://www.example.com/news", "da bu liu da bu liu da bu liu点 yi zan pa点 kan斜杠 nu zi"},
+            {"user_name@example.com", "yu ze下划线 nen艾特 yi zan pa点 kan"},
+            // A mention; an @ before no name is a symbol without a reading (a warning).
+            {"@新华社", "艾特新华社"},
+        });
+        // The dot after an address ends the sentence; the address keeps its text.
+        const auto timeline = read_transcript("请访问www.gov.cn. 谢谢。");
+        REQUIRE(timeline.written_forms.size() == 1);
+        CHECK(timeline.written_forms[0].text == "www.gov.cn");
+        CHECK(timeline.sentences.size() == 2);
+        // Not addresses: a decimal, a number with a unit, No.1.
+        CHECK(said("3.14") == "三点一四");
+        CHECK(said("1.5kg") == "一点五公斤");
+    }
+
+    TEST_CASE("No.1 is said the English way, number one") {
+        check_cases({
+            {"世界No.1", "世界 nan ba wan"},
+            {"排名NO. 7", "排名 nan ba sai wen"},
+            {"排名No.12", "排名 nan ba tai fu"},
+        });
+        auto word = [](const char* english) { return *detail::english_word_syllables(english); };
+        auto joined = [](std::vector<std::vector<std::string>> words) {
+            std::vector<std::string> syllables;
+            for (const auto& w : words) syllables.insert(syllables.end(), w.begin(), w.end());
+            return syllables;
+        };
+        CHECK(detail::english_number_syllables("42") == joined({word("forty"), word("two")}));
+        CHECK(detail::english_number_syllables("07") == word("seven"));
+        CHECK(detail::english_number_syllables("101") == joined({word("one"), word("oh"), word("one")}));
+    }
+
     TEST_CASE("every letter name and every English reading is a syllable the aligner and the lips take") {
         for (char letter = 'A'; letter <= 'Z'; ++letter) {
             CAPTURE(letter);

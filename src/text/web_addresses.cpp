@@ -1,0 +1,148 @@
+#include "text/web_addresses.hpp"
+
+#include <algorithm>
+#include <string_view>
+
+namespace talkface::detail {
+
+namespace {
+
+bool is_digit(char32_t c) {
+    return c >= '0' && c <= '9';
+}
+
+bool is_alphanumeric(char32_t c) {
+    return is_ascii_letter(c) || is_digit(c);
+}
+
+char32_t value_at(const std::vector<CodePoint>& text, std::size_t i) {
+    return i < text.size() ? text[i].value : 0;
+}
+
+std::string lower_case(std::string_view word) {
+    std::string lower(word);
+    for (auto& letter : lower)
+        if (letter >= 'A' && letter <= 'Z') letter = static_cast<char>(letter - 'A' + 'a');
+    return lower;
+}
+
+// Top-level domains common enough that a host ending in one is an address without www or a scheme
+// (gov.cn, example.com); a rarer one needs either (www.example.museum).
+bool is_common_top_level(const std::string& label) {
+    constexpr std::string_view kDomains[] = {"com", "net", "org", "cn", "edu", "gov", "io",  "info", "biz", "mil",
+                                             "tw",  "hk",  "mo",  "sg", "uk",  "jp",  "kr",  "us",   "de",  "fr",
+                                             "me",  "tv",  "cc",  "co", "top", "xyz", "app", "dev",  "ai"};
+    const auto lower = lower_case(label);
+    return std::find(std::begin(kDomains), std::end(kDomains), lower) != std::end(kDomains);
+}
+
+// Letters, digits and punctuation of an address as said: a run of letters, of digits, or a mark.
+void append_said(std::vector<AddressPart>& parts, const std::vector<CodePoint>& text, std::size_t first,
+                 std::size_t end) {
+    for (auto i = first; i < end;) {
+        const auto c = text[i].value;
+        if (is_alphanumeric(c)) {
+            const bool letters = is_ascii_letter(c);
+            std::string run;
+            while (i < end && (letters ? is_ascii_letter(text[i].value) : is_digit(text[i].value)))
+                run += static_cast<char>(text[i++].value);
+            parts.push_back({letters ? AddressPart::Kind::letters : AddressPart::Kind::digits, std::move(run)});
+            continue;
+        }
+        const char* words = c == '.' ? "点" : c == '@' ? "艾特" : c == '-' ? "杠" : c == '_' ? "下划线" : c == '/' ? "斜杠" : "加";
+        parts.push_back({AddressPart::Kind::words, words});
+        ++i;
+    }
+}
+
+// A host at text[start]: labels of letters, digits and inner hyphens joined by dots. Returns its
+// end and its labels; the labels are empty if there is none. A dot not followed by a label is not
+// the host's (it ends the sentence).
+std::size_t host_end(const std::vector<CodePoint>& text, std::size_t start, std::vector<std::string>& labels) {
+    labels.clear();
+    auto i = start;
+    while (is_alphanumeric(value_at(text, i))) {
+        std::string label;
+        while (is_alphanumeric(value_at(text, i)) ||
+               (value_at(text, i) == '-' && is_alphanumeric(value_at(text, i + 1)) && !label.empty())) {
+            label += static_cast<char>(text[i++].value);
+        }
+        labels.push_back(std::move(label));
+        if (value_at(text, i) != '.' || !is_alphanumeric(value_at(text, i + 1))) break;
+        ++i;
+    }
+    return i;
+}
+
+bool is_all_letters(const std::string& label) {
+    return !label.empty() && std::all_of(label.begin(), label.end(), [](char c) { return is_ascii_letter(c); });
+}
+
+// A path after a host (/news/2026.html): slashes and what is between them, up to a character an
+// address does not hold or a dot that ends the sentence.
+std::size_t path_end(const std::vector<CodePoint>& text, std::size_t i) {
+    if (value_at(text, i) != '/') return i;
+    auto end = i;
+    for (auto k = i; k < text.size(); ++k) {
+        const auto c = text[k].value;
+        if (is_alphanumeric(c) || c == '/') {
+            end = k + 1;
+        } else if (!(c == '.' || c == '-' || c == '_')) {
+            break;
+        }
+    }
+    return end;
+}
+
+}  // namespace
+
+std::optional<WebAddress> read_web_address(const std::vector<CodePoint>& text, std::size_t start) {
+    if (start >= text.size()) return std::nullopt;
+    const auto previous = start == 0 ? 0 : text[start - 1].value;
+    if (text[start].value == '@') {
+        // A mention names someone right after the @ (@新华社, @Tom): a letter, digit or character.
+        const auto next = value_at(text, start + 1);
+        if (is_alphanumeric(previous) || !(is_alphanumeric(next) || next >= 0x2E80)) return std::nullopt;
+        return WebAddress{start + 1, {{AddressPart::Kind::words, "艾特"}}};
+    }
+    if (!is_alphanumeric(text[start].value) || is_alphanumeric(previous) || previous == '.' || previous == '@' ||
+        previous == '_' || previous == '-') {
+        return std::nullopt;
+    }
+    std::vector<std::string> labels;
+    WebAddress address;
+
+    // An e-mail address: a name of letters, digits and . _ - +, then @ and a host.
+    auto at = start;
+    while (is_alphanumeric(value_at(text, at)) || value_at(text, at) == '_' || value_at(text, at) == '+' ||
+           ((value_at(text, at) == '.' || value_at(text, at) == '-') && is_alphanumeric(value_at(text, at + 1)))) {
+        ++at;
+    }
+    if (value_at(text, at) == '@') {
+        const auto end = host_end(text, at + 1, labels);
+        if (labels.size() >= 2 && is_all_letters(labels.back())) {
+            append_said(address.parts, text, start, end);
+            address.end = end;
+            return address;
+        }
+    }
+
+    // A scheme, not said: https://, http://, ftp://.
+    auto host = start;
+    std::string scheme;
+    for (auto k = start; is_ascii_letter(value_at(text, k)); ++k) scheme += static_cast<char>(text[k].value);
+    scheme = lower_case(scheme);
+    const bool has_scheme = (scheme == "http" || scheme == "https" || scheme == "ftp") &&
+                            value_at(text, start + scheme.size()) == ':' && value_at(text, start + scheme.size() + 1) == '/' &&
+                            value_at(text, start + scheme.size() + 2) == '/';
+    if (has_scheme) host = start + scheme.size() + 3;
+    const auto end = host_end(text, host, labels);
+    if (labels.size() < 2 || !is_all_letters(labels.back())) return std::nullopt;
+    if (!has_scheme && lower_case(labels.front()) != "www" && !is_common_top_level(labels.back())) return std::nullopt;
+    const auto address_end = path_end(text, end);
+    append_said(address.parts, text, host, address_end);
+    address.end = address_end;
+    return address;
+}
+
+}  // namespace talkface::detail
