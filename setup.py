@@ -6,12 +6,15 @@ the package imports on first use. Nothing is written into the source tree, so a 
 installs: setuptools' build and egg-info folders and the CMake build go to a folder under the
 temporary directory named for this checkout (TALKFACE_PIP_BUILD_DIR overrides it).
 TALKFACE_CMAKE_BUILD_DIR, if set, is the CMake build folder; CMAKE_BUILD_PARALLEL_LEVEL sets the
-build's jobs as usual.
+build's jobs as usual; CMAKE_ARGS adds options to CMake's configure step, split as a shell splits
+them and given after talkface's own, so that they win (CMAKE_ARGS="-DCMAKE_BUILD_TYPE=Debug"): the
+variable conda-forge and scikit-build pass CMake options through pip with.
 """
 
 import hashlib
 import os
 import re
+import shlex
 import shutil
 import subprocess
 import sys
@@ -63,6 +66,7 @@ class CMakeBuild(build_ext):
                 "-DTALKFACE_BUILD_CLI=OFF",
                 "-DTALKFACE_INSTALL=OFF",
                 "-DBUILD_SHARED_LIBS=OFF",
+                *shlex.split(os.environ.get("CMAKE_ARGS", "")),
             ],
             check=True,
         )
