@@ -82,7 +82,17 @@ TEST_SUITE("announcer layout") {
     TEST_CASE("the caption never covers the mouth, wherever the face stands, else the refusal names why") {
         const FaceModel face = FaceModel::default_face();
         const StageBox canvas = canvas_of(face);
-        const std::vector<FaceState> frames = pose_grid(face);
+        // The caption is checked against the layout's mouth box, which the case above shows holds the
+        // mouth of every frame; the extreme poses give the box its size. (The whole pose grid here
+        // made this case 2.7 minutes long under the sanitizers, for 228 placements.)
+        std::vector<FaceState> frames;
+        for (const FaceState& state : pose_grid(face)) {
+            const Pose& pose = state.pose;
+            if (std::abs(pose.alpha_deg) + std::abs(pose.beta_deg) + std::abs(pose.gamma_deg) == 0.0 ||
+                (std::abs(pose.alpha_deg) == 15.0 && std::abs(pose.beta_deg) == 15.0 && std::abs(pose.gamma_deg) == 15.0))
+                frames.push_back(state);
+        }
+        REQUIRE(frames.size() == 9 * all_mouth_shapes().size());
         int below = 0, above = 0, refused = 0;
         for (double d : {30.0, 60.0, 90.0, 200.0}) {
             for (double y = 0.0; y <= 450.0; y += 25.0) {
