@@ -25,7 +25,9 @@ std::string describe_sentence(std::size_t sentence, const FrameSpan& span, const
 
 // Each sentence's speaking rate (speech frames per syllable, pauses inside left out) against the
 // others' and against what people can say; a sentence much slower than the others passes if its
-// voiced peaks (count_nuclei) leave no room for another sentence's syllables.
+// voiced peaks (count_nuclei) leave no room for another sentence's syllables, and one too fast only
+// on its speech frames passes if its whole span is not and its voiced peaks say its quiet syllables
+// were taken for pauses.
 // \throws talkface::AlignmentError naming the first sentence that does not fit, its text and times.
 void check_sentence_lengths(const std::vector<FrameSpan>& spans, const FeatureTrack& track, const LoudnessProfile& loudness,
                             const Timeline& transcript);

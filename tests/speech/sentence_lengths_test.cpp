@@ -77,4 +77,24 @@ TEST_SUITE("speech") {
             CHECK_THROWS_AS(check_sentence_lengths(fast, quick.track, quick.loudness, transcript), AlignmentError);
         }
     }
+
+    TEST_CASE("a sentence fast only because quiet syllables were taken for a pause passes when its voiced peaks are there") {
+        // Four syllables each, 1 s a sentence; 0.7 s of the third measured as a pause, so that its
+        // speech frames give 0.075 s a syllable against the others' 0.25 s.
+        const Timeline transcript = read_transcript("今天很好。我们走吧。他们来了。");
+        const std::vector<FrameSpan> spans = {{20, 120}, {170, 270}, {320, 420}};
+        BumpyTrack bumpy(500);
+        bumpy.loudness.pauses = {{120, 170}, {270, 320}, {330, 400}};
+        bumpy.bumps(spans[0], 4, 30.0f, 15.0f);
+        bumpy.bumps(spans[1], 4, 30.0f, 15.0f);
+        SUBCASE("a peak per syllable: its quiet syllables are there") {
+            bumpy.bumps(spans[2], 4, 30.0f, 15.0f);
+            CHECK_NOTHROW(check_sentence_lengths(spans, bumpy.track, bumpy.loudness, transcript));
+        }
+        SUBCASE("a peak for two syllables: the audio lacks some of its text") {
+            bumpy.bumps(spans[2], 2, 30.0f, 15.0f);
+            CHECK_THROWS_WITH_AS(check_sentence_lengths(spans, bumpy.track, bumpy.loudness, transcript),
+                                 doctest::Contains("sentence 3 (3.2-4.2 s"), AlignmentError);
+        }
+    }
 }
