@@ -4,7 +4,8 @@
 //
 //   align_bench CORPUS [--conditions clean,white10,...] [--dump SYLLABLES.tsv]   (every syllable's error, confidence)
 //   align_bench --file AUDIO TRANSCRIPT [--truth LIST]   (one file, for memory_bench.sh)
-//   align_bench --mismatch CORPUS [--conditions ...]      (wrong transcripts: detected, and false alarms)
+//   align_bench --mismatch CORPUS [--conditions ...]      (wrong transcripts: detected, and false alarms;
+//                                                          texts that lack a sentence or a sentence's end too)
 //
 // LIST names the truths of the passages joined into AUDIO, one "OFFSET_S<TAB>TRUTH.json" a line:
 // the onsets are then scored against them (the transcript may have lost its punctuation, so only
@@ -419,7 +420,8 @@ int run_file(const std::string& audio_path, const std::string& transcript_path, 
 // --mismatch: how often a wrong transcript is reported (AlignmentError) and how often a right one
 // is refused, on clips of one and two sentences cut from each passage at the middle of the pauses
 // around them, and on whole passages. Wrong texts: another sentence of the passage of the nearest
-// syllable count in place of one, or two sentences swapped.
+// syllable count in place of one, or two sentences swapped; and texts that lack what was said
+// (issue 13): a whole sentence of the passage left out, or the last 1-3 syllables of a sentence.
 struct Audio {
     std::vector<float> samples;  ///< interleaved
     int channels = 1;
@@ -451,11 +453,13 @@ struct MismatchCount {
 };
 
 bool throws_alignment_error(const talkface::SpeechAligner& aligner, const Audio& audio, std::size_t first_frame,
-                            std::size_t end_frame, const std::string& text, const std::string& where, bool is_right) {
+                            std::size_t end_frame, const talkface::Timeline& transcript, const std::string& where,
+                            bool is_right, bool report_missed) {
     const talkface::AudioView view{audio.samples.data() + first_frame * static_cast<std::size_t>(audio.channels),
                                    end_frame - first_frame, audio.channels, audio.rate_hz};
     try {
-        aligner.align(view, talkface::read_transcript(text));
+        aligner.align(view, transcript);
+        if (!is_right && report_missed) std::cerr << "align_bench: missed: " << where << "\n";
         return false;
     } catch (const talkface::AlignmentError& error) {
         if (is_right) std::cerr << "align_bench: false alarm: " << where << ": " << error.what() << "\n";
@@ -463,10 +467,47 @@ bool throws_alignment_error(const talkface::SpeechAligner& aligner, const Audio&
     }
 }
 
+// `transcript` without the last `count` syllables of its sentence `sentence` (which keeps at least
+// one); the written forms after them move up, those among them are left out.
+talkface::Timeline without_tail(const talkface::Timeline& transcript, std::size_t sentence, std::size_t count) {
+    talkface::Timeline result = transcript;
+    std::size_t end = 0, members = 0;
+    for (std::size_t i = 0; i < result.syllables.size(); ++i) {
+        if (result.syllables[i].sentence != sentence) continue;
+        end = i + 1;
+        ++members;
+    }
+    count = std::min(count, members > 0 ? members - 1 : 0);
+    const std::size_t first = end - count;
+    result.syllables.erase(result.syllables.begin() + static_cast<std::ptrdiff_t>(first),
+                           result.syllables.begin() + static_cast<std::ptrdiff_t>(end));
+    std::vector<talkface::WrittenForm> forms;
+    for (auto form : result.written_forms) {
+        if (form.first_syllable + form.syllable_count <= first) {
+            forms.push_back(form);
+        } else if (form.first_syllable >= end) {
+            form.first_syllable -= count;
+            forms.push_back(form);
+        }
+    }
+    result.written_forms = forms;
+    return result;
+}
+
+// Lines `lines` joined as a transcript, one sentence a line.
+std::string joined_lines(const std::vector<std::string>& lines) {
+    std::string text;
+    for (const auto& line : lines) text += line + "\n";
+    return text;
+}
+
 int run_mismatch(const fs::path& corpus, const std::string& only) {
     const auto conditions = corpus_conditions(corpus, only);
     const talkface::SpeechAligner aligner;
-    const char* const groups[] = {"1 sentence", "2 sentences", "passage"};
+    // The first three are cut by another sentence's text; the others lack what was said, and their
+    // right texts are those of the clips they were cut from (counted again beside them).
+    const char* const groups[] = {"1 sentence", "2 sentences", "passage", "1 tail-",
+                                  "passage tail-", "2 one left", "passage one left"};
     // counts[set][condition][group]
     std::map<std::string, std::map<std::string, std::map<std::string, MismatchCount>>> counts;
     for (const auto& condition : conditions) {
@@ -509,10 +550,14 @@ int run_mismatch(const fs::path& corpus, const std::string& only) {
             };
             auto& by_group = counts[truth.set][condition];
             const std::string name = audio_path.string();
-            auto run = [&](const char* group, std::size_t first, std::size_t end, const std::string& text, bool is_right,
-                           const std::string& what) {
+            auto run_transcript = [&](const char* group, std::size_t first, std::size_t end,
+                                      const talkface::Timeline& transcript, bool is_right, const std::string& what) {
                 MismatchCount& count = by_group[group];
-                const bool thrown = throws_alignment_error(aligner, audio, first, end, text, name + " " + what, is_right);
+                // A text that lacks what was said is named when it passes: the cases issue 13 is about.
+                const bool report_missed = std::string(group).find('-') != std::string::npos ||
+                                           std::string(group).find("left") != std::string::npos;
+                const bool thrown =
+                    throws_alignment_error(aligner, audio, first, end, transcript, name + " " + what, is_right, report_missed);
                 if (is_right) {
                     ++count.right;
                     count.refused += thrown;
@@ -520,54 +565,96 @@ int run_mismatch(const fs::path& corpus, const std::string& only) {
                     ++count.wrong;
                     count.detected += thrown;
                 }
+                return thrown;
+            };
+            auto run = [&](const char* group, std::size_t first, std::size_t end, const std::string& text, bool is_right,
+                           const std::string& what) {
+                return run_transcript(group, first, end, talkface::read_transcript(text), is_right, what);
+            };
+            // The right text's refusal counted again in a group of texts cut from it.
+            auto count_right = [&](const char* group, bool thrown) {
+                MismatchCount& count = by_group[group];
+                ++count.right;
+                count.refused += thrown;
             };
             for (std::size_t k = 0; k < n; ++k) {
-                run("1 sentence", clip_first(k), clip_end(k), lines[k], true, "sentence " + std::to_string(k + 1));
+                const std::string what = "sentence " + std::to_string(k + 1);
+                const bool right_thrown = run("1 sentence", clip_first(k), clip_end(k), lines[k], true, what);
                 const std::size_t other = replacement(k, k, k);
-                if (other < n)
-                    run("1 sentence", clip_first(k), clip_end(k), lines[other], false, "sentence " + std::to_string(k + 1));
+                if (other < n) run("1 sentence", clip_first(k), clip_end(k), lines[other], false, what);
+                // 1, 2 or 3 syllables, in turn.
+                const std::size_t tail = 1 + k % 3;
+                if (syllable_counts[k] > tail) {
+                    count_right("1 tail-", right_thrown);
+                    run_transcript("1 tail-", clip_first(k), clip_end(k), without_tail(talkface::read_transcript(lines[k]), 0, tail),
+                                   false, what + " less " + std::to_string(tail) + " syllables");
+                }
             }
             for (std::size_t k = 0; k + 1 < n; ++k) {
                 const std::string what = "sentences " + std::to_string(k + 1) + "-" + std::to_string(k + 2);
-                run("2 sentences", clip_first(k), clip_end(k + 1), lines[k] + "\n" + lines[k + 1], true, what);
+                const bool right_thrown = run("2 sentences", clip_first(k), clip_end(k + 1), lines[k] + "\n" + lines[k + 1], true, what);
                 run("2 sentences", clip_first(k), clip_end(k + 1), lines[k + 1] + "\n" + lines[k], false, what);
                 const std::size_t other = replacement(k + 1, k, k + 1);
                 if (other < n) run("2 sentences", clip_first(k), clip_end(k + 1), lines[k] + "\n" + lines[other], false, what);
+                // The first or the second left out, in turn.
+                const std::size_t left = k % 2 == 0 ? k : k + 1;
+                count_right("2 one left", right_thrown);
+                run("2 one left", clip_first(k), clip_end(k + 1), lines[left == k ? k + 1 : k], false,
+                    what + " without sentence " + std::to_string(left + 1));
             }
-            std::string whole, swapped, replaced;
+            std::vector<std::string> swapped = lines, replaced = lines;
             const std::size_t middle = n / 2;
             const std::size_t other = replacement(middle, middle, middle);
-            for (std::size_t k = 0; k < n; ++k) {
-                whole += lines[k] + "\n";
-                swapped += lines[k == 0 ? 1 : k == 1 ? 0 : k] + "\n";
-                replaced += lines[k == middle && other < n ? other : k] + "\n";
+            if (n >= 2) std::swap(swapped[0], swapped[1]);
+            if (other < n) replaced[middle] = lines[other];
+            const bool right_thrown = run("passage", 0, total_frames, joined_lines(lines), true, "passage");
+            if (n >= 2) run("passage", 0, total_frames, joined_lines(swapped), false, "passage swapped");
+            if (other < n) run("passage", 0, total_frames, joined_lines(replaced), false, "passage replaced");
+            if (n >= 3) {
+                // The first, the middle and the last sentence left out.
+                for (const std::size_t left : {std::size_t{0}, middle, n - 1}) {
+                    std::vector<std::string> kept = lines;
+                    kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(left));
+                    count_right("passage one left", right_thrown);
+                    run("passage one left", 0, total_frames, joined_lines(kept), false,
+                        "passage without sentence " + std::to_string(left + 1));
+                }
+                // The tail of the middle sentence, and of the one before the last.
+                const talkface::Timeline whole = talkface::read_transcript(joined_lines(lines));
+                for (const std::size_t k : {middle, n - 2}) {
+                    const std::size_t tail = k == middle ? 2 : 1;
+                    if (syllable_counts[k] <= tail) continue;
+                    count_right("passage tail-", right_thrown);
+                    run_transcript("passage tail-", 0, total_frames, without_tail(whole, k, tail), false,
+                                   "passage, sentence " + std::to_string(k + 1) + " less " + std::to_string(tail) + " syllables");
+                }
             }
-            run("passage", 0, total_frames, whole, true, "passage");
-            if (n >= 2) run("passage", 0, total_frames, swapped, false, "passage");
-            if (other < n) run("passage", 0, total_frames, replaced, false, "passage");
         }
         std::cerr << "align_bench: " << condition << " done\n";
     }
 
     std::printf("wrong transcripts on %s: detected = the aligner threw AlignmentError on a wrong text (another\n"
-                "sentence of the passage, of the nearest syllable count, in place of one; or two sentences swapped);\n"
+                "sentence of the passage, of the nearest syllable count, in place of one; or two sentences swapped;\n"
+                "\"tail-\": the last 1-3 syllables of a sentence left out; \"one left\": a whole sentence left out);\n"
                 "false alarm = it threw on the right text. Clips are cut at the middle of the pauses around them.\n",
                 corpus.string().c_str());
     for (const char* set : sets) {
         if (counts.find(set) == counts.end()) continue;
-        std::printf("\n%s sentences\n%-10s %-12s %16s %16s\n", set, "condition", "clip", "detected", "false alarms");
+        std::printf("\n%s sentences\n%-10s %-16s %16s %16s\n", set, "condition", "clip", "detected", "false alarms");
         std::map<std::string, MismatchCount> totals;
         for (const auto& condition : conditions) {
             for (const char* group : groups) {
                 const MismatchCount& count = counts[set][condition][group];
+                if (count.right == 0 && count.wrong == 0) continue;
                 totals[group].add(count);
-                std::printf("%-10s %-12s %9d/%-6d %9d/%-6d\n", condition.c_str(), group, count.detected, count.wrong,
+                std::printf("%-10s %-16s %9d/%-6d %9d/%-6d\n", condition.c_str(), group, count.detected, count.wrong,
                             count.refused, count.right);
             }
         }
         for (const char* group : groups) {
             const MismatchCount& count = totals[group];
-            std::printf("%-10s %-12s %9d/%-6d %9d/%-6d  (%s%% detected, %s%% false alarms)\n", "all", group, count.detected,
+            if (count.right == 0 && count.wrong == 0) continue;
+            std::printf("%-10s %-16s %9d/%-6d %9d/%-6d  (%s%% detected, %s%% false alarms)\n", "all", group, count.detected,
                         count.wrong, count.refused, count.right,
                         format_fixed(100.0 * count.detected / std::max(count.wrong, 1), 1).c_str(),
                         format_fixed(100.0 * count.refused / std::max(count.right, 1), 1).c_str());

@@ -34,6 +34,22 @@ constexpr double kMaxNucleiPerSyllable = 1.6;
 // person, r-clean and r-pink15; passages with a sentence added to their text). At this share or
 // more such a sentence is judged on its whole span.
 constexpr double kMinPeakShareOfQuietSpeech = 0.6;
+// A sentence missing from the transcript adds its voiced peaks to a neighbour's syllables: by a
+// third or more where the sentences are of 6-20 syllables (bench/ person's passages, one sentence
+// left out of the text: 1.3-2.0 times the recording's median per syllable), where right sentences
+// of one speaker stay within a quarter of the median (0.56-1.26, tuning passages, r-white20). More
+// than a fifth over, with a pause the text does not mark as long as a sentence's end, is that
+// evidence; without such a pause (the pause fell at a sentence end and the shift went on to the
+// next), half again over and said a fifth slower than the median sentence.
+constexpr double kMissingTextPeaksRatio = 1.2;
+constexpr double kStretchedPeaksRatio = 1.5;
+constexpr double kStretchedRateRatio = 1.2;
+// A pause between a sentence's syllables where the text has no comma is as long as a sentence's end
+// from this share of the recording's median pause between sentences, and at least this long: a
+// person's unmarked pauses inside a right sentence last up to 0.25 s (bench/ r-white20 tuning
+// passages), the pauses between sentences 0.4-1.0 s, and run-together sentences have none.
+constexpr double kSentencePauseShare = 0.6;
+constexpr double kMinSentencePauseS = 0.3;
 // A voiced peak: the low band (voicing) rises this far above the dips on both sides of it, and
 // stands this far above its floor (a faint ripple in a pause is not a syllable).
 constexpr float kNucleusProminenceDb = 3.0f;
@@ -219,6 +235,80 @@ void check_sentence_lengths(const std::vector<FrameSpan>& spans, const FeatureTr
                                  format_fixed(typical * kFrameStepS, 2) + " s per syllable; " + std::to_string(nuclei) +
                                  " voiced peaks)" + advice);
         }
+    }
+}
+
+void check_missing_text(const Timeline& aligned, const FeatureTrack& track, const LoudnessProfile& loudness,
+                        std::vector<std::string>& weak_findings) {
+    struct Measured {
+        std::size_t syllables = 0;
+        double speech_s = 0.0;       // its syllables' lengths, pauses left out
+        double unmarked_s = 0.0;     // the longest pause between two of them the text does not mark
+        std::size_t unmarked_after = 0;  // the syllable before it
+        FrameSpan span;
+        double peaks_per_syllable = 0.0;
+    };
+    const std::size_t n = aligned.sentences.size();
+    std::vector<Measured> sentences(n);
+    std::vector<double> sentence_pauses;
+    const auto& syllables = aligned.syllables;
+    for (std::size_t i = 0; i < syllables.size(); ++i) {
+        Measured& sentence = sentences[syllables[i].sentence];
+        if (sentence.syllables++ == 0) sentence.span.first_frame = static_cast<std::size_t>(syllables[i].start_s / kFrameStepS);
+        sentence.span.end_frame = static_cast<std::size_t>(std::ceil(syllables[i].end_s / kFrameStepS));
+        sentence.speech_s += syllables[i].end_s - syllables[i].start_s;
+        if (i + 1 == syllables.size()) continue;
+        const double pause_s = std::max(0.0, syllables[i + 1].start_s - syllables[i].end_s);
+        if (syllables[i + 1].sentence != syllables[i].sentence) {
+            sentence_pauses.push_back(pause_s);
+        } else if (!syllables[i].pause_after && pause_s > sentence.unmarked_s) {
+            sentence.unmarked_s = pause_s;
+            sentence.unmarked_after = i;
+        }
+    }
+    std::vector<double> rates, peaks;
+    for (auto& sentence : sentences) {
+        if (sentence.syllables == 0) continue;
+        sentence.span.end_frame = std::min(std::max(sentence.span.end_frame, sentence.span.first_frame + 1), track.frame_count);
+        sentence.peaks_per_syllable =
+            static_cast<double>(count_nuclei(track, loudness, sentence.span)) / static_cast<double>(sentence.syllables);
+        rates.push_back(sentence.speech_s / static_cast<double>(sentence.syllables));
+        peaks.push_back(sentence.peaks_per_syllable);
+    }
+    if (rates.size() < 3 || sentence_pauses.size() < 2) return;
+    const double typical_rate = median(rates);
+    const double typical_peaks = median(peaks);
+    const double sentence_pause_s = median(sentence_pauses);
+    if (!(typical_rate > 0.0 && typical_peaks > 0.0)) return;
+    const double long_pause_s = std::max(kMinSentencePauseS, kSentencePauseShare * sentence_pause_s);
+    for (std::size_t k = 0; k < n; ++k) {
+        const Measured& sentence = sentences[k];
+        if (sentence.syllables == 0) continue;
+        const double peaks_ratio = sentence.peaks_per_syllable / typical_peaks;
+        const double rate_ratio = sentence.speech_s / static_cast<double>(sentence.syllables) / typical_rate;
+        const bool has_long_pause = sentence.unmarked_s >= long_pause_s;
+        const bool is_stretched = rate_ratio >= kStretchedRateRatio && peaks_ratio >= kStretchedPeaksRatio;
+        if (!has_long_pause && !is_stretched) continue;
+        const std::string peaks_text = "its syllables hold " + format_fixed(sentence.peaks_per_syllable, 2) +
+                                       " voiced peaks each, the recording's sentences " + format_fixed(typical_peaks, 2);
+        const Syllable& before = syllables[sentence.unmarked_after];
+        const Syllable& after = syllables[sentence.unmarked_after + 1];
+        const std::string pause_text = "a pause of " + format_fixed(sentence.unmarked_s, 2) + " s (" +
+                                       format_fixed(before.end_s, 2) + "-" + format_fixed(after.start_s, 2) + " s) between \"" +
+                                       before.text + "\" and \"" + after.text + "\", where the text marks none, as long as the " +
+                                       format_fixed(sentence_pause_s, 2) + " s between its sentences";
+        const std::string description = describe_sentence(k, sentence.span, aligned);
+        if (has_long_pause && peaks_ratio >= kMissingTextPeaksRatio) {
+            throw AlignmentError(description + ": " + pause_text + ", and " + peaks_text +
+                                 "; is a sentence missing from the transcript here?");
+        }
+        if (is_stretched) {
+            throw AlignmentError(description + ": its syllables are said " + format_fixed(rate_ratio, 2) +
+                                 " times as slowly as the recording's typical sentence's, and " + peaks_text +
+                                 "; is a sentence or a phrase missing from the transcript here?");
+        }
+        weak_findings.push_back(description + ": " + pause_text + ", but " + peaks_text +
+                                ": a pause, not a missing sentence, as far as can be told: aligned");
     }
 }
 

@@ -32,6 +32,16 @@ std::string describe_sentence(std::size_t sentence, const FrameSpan& span, const
 void check_sentence_lengths(const std::vector<FrameSpan>& spans, const FeatureTrack& track, const LoudnessProfile& loudness,
                             const Timeline& transcript);
 
+// Speech the transcript lacks inside a sentence, judged on the syllables as aligned (`aligned`, a
+// file of three or more spoken sentences): a sentence missing from the text leaves its neighbour's
+// syllables stretched over two sentences' speech, holding more voiced peaks per syllable than the
+// speaker's other sentences and a pause as long as a sentence's end where the text marks none, or
+// said far slower than the others. A long unmarked pause alone (a speaker's hesitation) is not
+// that strong: it goes to `weak_findings`, with its evidence.
+// \throws talkface::AlignmentError naming the sentence, the pause and the peaks.
+void check_missing_text(const Timeline& aligned, const FeatureTrack& track, const LoudnessProfile& loudness,
+                        std::vector<std::string>& weak_findings);
+
 // Voiced peaks in `span`, about one per syllable (a landmark the audio gives whatever the text):
 // peaks of the low band, each standing out from the dips on both sides of it.
 std::size_t count_nuclei(const FeatureTrack& track, const LoudnessProfile& loudness, const FrameSpan& span);

@@ -268,6 +268,7 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
         check_own_fit(metrics, spans, transcript);
         check_syllable_lengths(metrics, spans, transcript);
         check_fit(metrics, spans, transcript);
+        check_missing_text(result, track, loudness, result.warnings);
     }
     set_sentence_times(spans, result);
     return result;

@@ -1,10 +1,13 @@
 // check_sentence_lengths and the voiced peaks it counts (issue 12): a person may say a sentence
 // more than twice as slowly as the others, a sentence missing from the transcript leaves one as
-// slow but with two sentences' syllables in it.
+// slow but with two sentences' syllables in it; check_missing_text finds such a sentence on the syllables
+// as aligned.
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <cstddef>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "speech/alignment_checks.hpp"
@@ -37,6 +40,21 @@ struct BumpyTrack {
         }
     }
 };
+
+// Syllables of `aligned` from `first` on placed at `times` (seconds), one pair each.
+void place(Timeline& aligned, std::size_t first, const std::vector<std::pair<double, double>>& times) {
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        aligned.syllables[first + i].start_s = times[i].first;
+        aligned.syllables[first + i].end_s = times[i].second;
+    }
+}
+
+// Four syllables of 0.2 s from `start`, a voiced peak each.
+void said_evenly(Timeline& aligned, BumpyTrack& bumpy, std::size_t first, double start) {
+    place(aligned, first, {{start, start + 0.2}, {start + 0.2, start + 0.4}, {start + 0.4, start + 0.6}, {start + 0.6, start + 0.8}});
+    const auto frame = static_cast<std::size_t>(std::lround(start / 0.01));
+    bumpy.bumps({frame, frame + 80}, 4, 30.0f, 15.0f);
+}
 
 }  // namespace
 
@@ -96,5 +114,64 @@ TEST_SUITE("speech") {
             CHECK_THROWS_WITH_AS(check_sentence_lengths(spans, bumpy.track, bumpy.loudness, transcript),
                                  doctest::Contains("sentence 3 (3.2-4.2 s"), AlignmentError);
         }
+    }
+
+    TEST_CASE("a sentence whose syllables hold another sentence's speech: its voiced peaks and a pause the text lacks") {
+        // Four sentences of four syllables, 0.6 s apart; the third, from 3 s on, is what varies.
+        Timeline aligned = read_transcript("今天很好。我们走吧。他们来了。明天见吧。");
+        REQUIRE(aligned.syllables.size() == 16);
+        BumpyTrack bumpy(700);
+        said_evenly(aligned, bumpy, 0, 0.2);
+        said_evenly(aligned, bumpy, 4, 1.6);
+        said_evenly(aligned, bumpy, 12, 5.8);
+        std::vector<std::string> findings;
+        SUBCASE("two syllables, a sentence's pause, two more, and two sentences' peaks: a sentence missing") {
+            place(aligned, 8, {{3.0, 3.4}, {3.4, 3.8}, {4.4, 4.8}, {4.8, 5.2}});
+            bumpy.bumps({300, 380}, 4, 30.0f, 15.0f);
+            bumpy.bumps({440, 520}, 4, 30.0f, 15.0f);
+            std::string message;
+            try {
+                check_missing_text(aligned, bumpy.track, bumpy.loudness, findings);
+            } catch (const AlignmentError& error) {
+                message = error.what();
+            }
+            CHECK(message.find("sentence 3 (3-5.2 s") != std::string::npos);
+            CHECK(message.find("a pause of 0.6 s (3.8-4.4 s)") != std::string::npos);
+            CHECK(message.find("is a sentence missing") != std::string::npos);
+        }
+        SUBCASE("the same pause with a peak per syllable: a hesitation, reported and aligned") {
+            place(aligned, 8, {{3.0, 3.2}, {3.2, 3.4}, {4.0, 4.2}, {4.2, 4.4}});
+            bumpy.bumps({300, 340}, 2, 30.0f, 15.0f);
+            bumpy.bumps({400, 440}, 2, 30.0f, 15.0f);
+            CHECK_NOTHROW(check_missing_text(aligned, bumpy.track, bumpy.loudness, findings));
+            REQUIRE(findings.size() == 1);
+            CHECK(findings[0].find("a pause of 0.6 s") != std::string::npos);
+        }
+        SUBCASE("no pause, but said twice as slowly with two peaks a syllable") {
+            place(aligned, 8, {{3.0, 3.4}, {3.4, 3.8}, {3.8, 4.2}, {4.2, 4.6}});
+            bumpy.bumps({300, 460}, 8, 30.0f, 15.0f);
+            CHECK_THROWS_WITH_AS(check_missing_text(aligned, bumpy.track, bumpy.loudness, findings),
+                                 doctest::Contains("2 times as slowly"), AlignmentError);
+        }
+        SUBCASE("said like the others: nothing found") {
+            said_evenly(aligned, bumpy, 8, 3.0);
+            CHECK_NOTHROW(check_missing_text(aligned, bumpy.track, bumpy.loudness, findings));
+            CHECK(findings.empty());
+        }
+    }
+
+    TEST_CASE("a long pause where the text has a comma is not missing text") {
+        Timeline aligned = read_transcript("今天很好。我们走吧。他们，来了。明天见吧。");
+        REQUIRE(aligned.syllables.size() == 16);
+        BumpyTrack bumpy(700);
+        said_evenly(aligned, bumpy, 0, 0.2);
+        said_evenly(aligned, bumpy, 4, 1.6);
+        said_evenly(aligned, bumpy, 12, 5.8);
+        place(aligned, 8, {{3.0, 3.2}, {3.2, 3.4}, {4.0, 4.2}, {4.2, 4.4}});
+        bumpy.bumps({300, 340}, 2, 30.0f, 15.0f);
+        bumpy.bumps({400, 440}, 2, 30.0f, 15.0f);
+        std::vector<std::string> findings;
+        CHECK_NOTHROW(check_missing_text(aligned, bumpy.track, bumpy.loudness, findings));
+        CHECK(findings.empty());
     }
 }
