@@ -205,17 +205,11 @@ MouthInside mouth_inside(const Layer& face) {
     std::vector<PaintedShape> painted;
     std::vector<Region> clips;
     for (const char* part : {"lips", "mouth-opening", "mouth-inside"}) list_painted(face, {shape_named(face, part)}, clips, painted);
-    double min_x = 1e300, min_y = 1e300, max_x = -1e300, max_y = -1e300;
-    for (const Point2& p : inside.opening) {
-        min_x = std::min(min_x, p.x);
-        min_y = std::min(min_y, p.y);
-        max_x = std::max(max_x, p.x);
-        max_y = std::max(max_y, p.y);
-    }
+    const Region box({inside.opening});
     constexpr int kSteps = 32;
     for (int i = 0; i <= kSteps; ++i) {
         for (int j = 0; j <= kSteps; ++j) {
-            const Point2 p{min_x + (max_x - min_x) * i / kSteps, min_y + (max_y - min_y) * j / kSteps};
+            const Point2 p{box.min_x + (box.max_x - box.min_x) * i / kSteps, box.min_y + (box.max_y - box.min_y) * j / kSteps};
             // The last painted shape that holds p is the one seen there: look from the top down.
             const PaintedShape* top = nullptr;
             for (auto shape = painted.rbegin(); shape != painted.rend() && top == nullptr; ++shape) {
@@ -518,13 +512,12 @@ TEST_SUITE("layer order") {
                             CAPTURE(part);
                             const double too_deep = part == "upper-teeth" ? -0.15 : 0.25;
                             const bool hangs = part == "upper-teeth" || part == "lower-teeth" || part == "tongue";
-                            std::size_t outside_opening = 0, deeper_than_allowed = 0;
-                            for (const Point2& p : points) {
-                                if (!is_inside(open.opening, p)) ++outside_opening;
-                                if (hangs && is_inside(open.opening, moved(p, too_deep))) ++deeper_than_allowed;
+                            CHECK(count_outside(open.opening, points) == 0);
+                            if (hangs) {
+                                CHECK(std::count_if(points.begin(), points.end(), [&](Point2 p) {
+                                          return is_inside(open.opening, moved(p, too_deep));
+                                      }) == 0);
                             }
-                            CHECK(outside_opening == 0);
-                            CHECK(deeper_than_allowed == 0);
                         }
                     }
                 }
