@@ -134,9 +134,15 @@ class Browser:
         self.settle()
 
     def settle(self):
-        """Two animation frames: style, layout and the script's scrolling have run."""
+        """Two animation frames: style, layout and the script's scrolling have run; then the CSS
+        transitions they started (the highlight fades in over 0.15 s) have ended or been replaced, so
+        that a screenshot on a loaded machine does not catch a colour half-way."""
         self.evaluate("new Promise(function (done) { requestAnimationFrame(function () { requestAnimationFrame("
                       "function () { done(true); }); }); })")
+        self.evaluate("Promise.all(document.getAnimations().filter(function (a) {"
+                      " return a instanceof CSSTransition; }).map(function (a) {"
+                      " return a.finished.catch(function () { return null; }); }))"
+                      ".then(function () { return true; })")
 
     def problems(self):
         """What the page threw or logged as an error since it was opened, each as "SOURCE: text":
