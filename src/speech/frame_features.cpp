@@ -1,17 +1,16 @@
 #include "speech/frame_features.hpp"
 
 #include <samplerate.h>
-#include <unsupported/Eigen/FFT>
 
 #include <algorithm>
 #include <cmath>
 #include <array>
-#include <complex>
 #include <cstdint>
 
 #include "audio/audio_source.hpp"
 #include "common/internal_error.hpp"
 #include "common/number_format.hpp"
+#include "speech/power_spectrum.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
@@ -22,8 +21,8 @@ constexpr std::size_t kBlockFrames = 8192;
 constexpr double kMostReservedS = 3600.0;
 constexpr std::size_t kHop = 160;       // 10 ms at 16 kHz
 constexpr std::size_t kWindow = 400;    // 25 ms
-constexpr std::size_t kFftSize = 512;
-constexpr std::size_t kBins = kFftSize / 2 + 1;
+constexpr std::size_t kFftSize = PowerSpectrum::kSize;
+constexpr std::size_t kBins = PowerSpectrum::kBins;
 constexpr int kMelFilters = 24;
 // Below this peak (-80 dBFS) there is no speech to align, only dither or digital silence.
 constexpr float kSilentPeak = 1e-4f;
@@ -75,7 +74,6 @@ public:
             for (int m = 0; m < kMelFilters; ++m)
                 dct_[static_cast<std::size_t>(c)][static_cast<std::size_t>(m)] =
                     static_cast<float>(std::cos(M_PI * c * (m + 0.5) / kMelFilters));
-        fft_.SetFlag(Eigen::FFT<float>::HalfSpectrum);
         // The first window reaches (kWindow - kHop) / 2 samples before time 0.
         pending_.assign((kWindow - kHop) / 2, 0.0f);
     }
@@ -120,15 +118,13 @@ private:
         const std::size_t hop_start = (kWindow - kHop) / 2;
         float peak = 0.0f;
         for (std::size_t i = hop_start; i < hop_start + kHop; ++i) peak = std::max(peak, std::fabs(samples[i]));
+        // frame_ past kWindow stays zero: the window zero-padded to the FFT's size.
         for (std::size_t i = 0; i < kWindow; ++i) frame_[i] = samples[i] * window_[i];
-        std::fill(frame_.begin() + kWindow, frame_.end(), 0.0f);
-        fft_.fwd(spectrum_, frame_);
-        for (std::size_t k = 0; k < kBins; ++k) power_[k] = std::norm(spectrum_[k]);
+        spectrum_.compute(frame_.data(), power_.data());
         // The spectrum's shape (the cepstra) is taken of the dithered frame; its levels (the bands
         // the loudness profile and the checks read) of the frame as it is.
         for (std::size_t i = 0; i < kWindow; ++i) frame_[i] = (samples[i] + dither()) * window_[i];
-        fft_.fwd(spectrum_, frame_);
-        for (std::size_t k = 0; k < kBins; ++k) dithered_power_[k] = std::norm(spectrum_[k]);
+        spectrum_.compute(frame_.data(), dithered_power_.data());
 
         auto band_db = [&](double low_hz, double high_hz) {
             const auto first = static_cast<std::size_t>(std::ceil(low_hz * kFftSize / kAnalysisRateHz));
@@ -164,15 +160,14 @@ private:
     std::vector<float> pending_;
     std::size_t samples_in_ = 0;
     std::array<float, kWindow> window_{};
-    std::vector<float> frame_ = std::vector<float>(kFftSize);
-    std::vector<std::complex<float>> spectrum_;
+    std::array<float, kFftSize> frame_{};
+    PowerSpectrum spectrum_;
     std::array<float, kBins> power_{};
     std::array<float, kBins> dithered_power_{};
     std::array<std::array<float, kBins>, kMelFilters> mel_weights_{};
     std::array<std::size_t, kMelFilters> mel_first_bin_{};  // each filter's non-zero bins
     std::array<std::size_t, kMelFilters> mel_end_bin_{};
     std::array<std::array<float, kMelFilters>, kCepstrumCount> dct_{};
-    Eigen::FFT<float> fft_;
 };
 
 // Streaming sample-rate conversion to kAnalysisRateHz. libsamplerate's linear converter: the
