@@ -49,6 +49,12 @@ std::optional<DataBytes> data_bytes_if_truncated(SNDFILE* file) {
     return std::nullopt;
 }
 
+// A data size a writer leaves when it cannot seek back to fill in the real one (FFmpeg writing a
+// WAV to a pipe states 0xFFFFFFFF, "as long as it goes"; some cap it at the signed maximum): no
+// promise that the file broke, so the data is read to the end of the file, as libsndfile's frame
+// count already says. (A size left at 0 gives no frames at all: see open_audio_file.)
+bool is_placeholder_size(std::size_t stated_bytes) { return stated_bytes == 0xFFFFFFFFu || stated_bytes == 0x7FFFFFFFu; }
+
 // The frames a cut-off data chunk promised: its stated bytes over a frame's bytes, or for a codec
 // of blocks (GSM 06.10, ADPCM), whose frames have no size of their own, the frames present scaled
 // by how much more the header states than the file holds.
@@ -191,12 +197,26 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
         throw ParseError(path, 0, 0, "", "unsupported header: " + std::to_string(info.channels) + " channels at " +
                                              std::to_string(info.samplerate) + " Hz");
     }
+    if (info.frames == SF_COUNT_MAX) {
+        // libsndfile found no length: in an Ogg stream, no complete last page (the file was cut);
+        // in a FLAC stream, no sample count (written to a pipe, a valid file). FFmpeg reads the
+        // latter to its real end; the former would be read as far as it goes and never called cut.
+        const bool is_ogg = (info.format & SF_FORMAT_TYPEMASK) == SF_FORMAT_OGG;
+        sf_close(file);
+        if (is_ogg)
+            throw FileError(path, "truncated: the Ogg stream breaks off inside a page, before its end; the file "
+                                  "was cut while it was copied or recorded");
+        return open_ffmpeg_file(path);
+    }
     auto promised = static_cast<std::size_t>(std::max<sf_count_t>(info.frames, 0));
-    if (const auto data_bytes = data_bytes_if_truncated(file))
+    if (const auto data_bytes = data_bytes_if_truncated(file); data_bytes && !is_placeholder_size(data_bytes->stated))
         promised = std::max(promised, frames_promised_by(info, bytes_per_frame(info), *data_bytes));
     if (promised == 0) {
+        // libsndfile reads nothing from a data chunk stated as 0 bytes, as a recorder stopped before
+        // it closed the file leaves it; FFmpeg reads what follows to the end of the file, and
+        // refuses a file with no sound after its header.
         sf_close(file);
-        throw InvalidArgument(path, "empty audio: the file has no frames");
+        return open_ffmpeg_file(path);
     }
     return std::make_unique<FileSource>(path, file, info, promised);
 }

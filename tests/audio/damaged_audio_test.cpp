@@ -3,7 +3,8 @@
 // cut to its header, its header followed by random bytes, cut in half, a length in its header made
 // huge. Reading and analysing each (as the aligner does) either throws a talkface::Error naming the
 // file or gives finite samples; nothing else escapes, nothing crashes, nothing takes long. A file
-// cut in half whose container states its length is called truncated.
+// cut in half whose container states its length is called truncated; one written to a pipe, whose
+// header leaves its length out, is read whole.
 #include <doctest/doctest.h>
 
 #include <chrono>
@@ -17,6 +18,7 @@
 #include "audio/audio_source.hpp"
 #include "common/made_by_command.hpp"
 #include "common/test_paths.hpp"
+#include "decoded_audio.hpp"
 #include "speech/frame_features.hpp"
 #include "talkface/errors.hpp"
 
@@ -169,6 +171,50 @@ TEST_SUITE("audio") {
                 }
             }
         }
+    }
+
+    TEST_CASE("a recording written to a pipe, its length left out of its header, is read whole") {
+        const std::string wav = whole(kContainers[0]);
+        const std::string flac = whole(kContainers[2]);
+        std::vector<std::pair<std::string, std::string>> streamed;
+        // FFmpeg writing a WAV to a pipe states 0xFFFFFFFF as the RIFF and data sizes; a recorder
+        // stopped before it closed the file leaves 0.
+        for (const std::uint32_t size : {0xFFFFFFFFu, 0u}) {
+            std::string bytes = wav;
+            put_le32(bytes, 4, size);
+            put_le32(bytes, bytes.find("data") + 4, size);
+            streamed.emplace_back("streamed.wav", bytes);
+        }
+        // A FLAC encoder writing to a pipe cannot come back to fill in STREAMINFO's sample count:
+        // it stays 0 (the low nibble of byte 21 and bytes 22-25).
+        std::string bytes = flac;
+        bytes[21] = static_cast<char>(bytes[21] & 0xF0);
+        for (std::size_t i = 22; i < 26; ++i) bytes[i] = '\0';
+        streamed.emplace_back("streamed.flac", bytes);
+
+        auto whole_source = detail::open_audio_file(test::output_path("whole_pcm.wav"));
+        const std::size_t whole_frames = test::read_all(*whole_source).size();
+        for (const auto& [file, content] : streamed) {
+            CAPTURE(file);
+            const std::string path = test::output_path(file);
+            write_bytes(path, content);
+            try {
+                auto source = detail::open_audio_file(path);
+                CHECK(test::read_all(*source).size() == whole_frames);
+            } catch (const Error& error) {
+                FAIL(std::string(error.what()));
+            }
+        }
+    }
+
+    TEST_CASE("an Ogg stream cut inside a page is called truncated, and the message says what happened") {
+        const std::string bytes = whole(kContainers[3]);
+        const std::string path = test::output_path("cut_vorbis.ogg");
+        write_bytes(path, bytes.substr(0, bytes.size() / 2));
+        const Outcome outcome = read_and_analyse(path);
+        CHECK(outcome.threw);
+        CHECK(outcome.message.find(path + ": truncated: the Ogg stream breaks off") != std::string::npos);
+        CHECK(outcome.message.find("9223372036854775807") == std::string::npos);
     }
 
     TEST_CASE("every container read whole is not called truncated") {
