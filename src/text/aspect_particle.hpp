@@ -1,6 +1,8 @@
 // The aspect particle 了 after a verb, which a cut into words by word frequencies alone cannot
 // see: the verb before it decides both the cut (看了 解说, not 看 了解 说) and the reading of
 // 还 (还了 huan2 le5, "returned": the adverb hai2 modifies a verb and never takes 了 itself).
+// And 了 that is not the particle: the idioms 还了得 and 还得了 ("how can this be tolerated"),
+// said so only where they end a clause (这还了得！), and 得 "must", which never takes 了.
 // docs/written-forms.md ("Words and polyphonic characters") lists the rules.
 #ifndef TALKFACE_TEXT_ASPECT_PARTICLE_HPP
 #define TALKFACE_TEXT_ASPECT_PARTICLE_HPP
@@ -13,18 +15,25 @@
 
 namespace talkface::detail {
 
+// True for a particle that closes a clause after what it says (吗 啊 吧 呢 ...: 这还得了吗, 早点还上吧).
+bool is_final_particle(std::string_view character);
+
 // False where the word characters[start, end) starts with 了 (了解, 了结) right after a
 // one-character verb that takes an object and 了 (看 听 做 写 ...), and its last character
 // starts a word with the character after it (解说, 解释, 解决): there 了 is the particle, the verb's
 // (看了解说 看了 解说, 听了解释 听了 解释). Elsewhere 了解 stays a word (去了解, 想了解, 很了解).
+// Also false for the idioms 还了得 and 还得了 (還了得 還得了) where they do not end the clause
+// (`ends_clause`: the run is followed by a pause or end mark or ends the text; a final particle
+// such as 吗 啊 may follow the idiom inside the run): 他还了得到的钱 is 还 了 得到, 他还得了第一名
+// 还 得了. And false for 还得 (hai2 dei3, "still must") right before 了: 得 "must" never takes 了,
+// so there 得 is the verb de2, "get" (还得了奖).
 bool may_start_word_here(const std::vector<std::string_view>& characters, std::size_t start, std::size_t end,
-                         const ReadingTables& tables);
+                         const ReadingTables& tables, bool ends_clause);
 
-// The reading of `word` when the next two characters of the run are `next` and `after_next`
-// (empty past its end), where the particle decides it: huan2 for 还 (還) before 了, except in the
-// idiom 还了得 ("how outrageous", hai2 liao3 de2). Empty elsewhere. The caller passes `next`
-// only where 了 is a word of its own: 还了解 (了解 a word) keeps the adverb.
-std::string_view reading_before_particle(std::string_view word, std::string_view next, std::string_view after_next);
+// The reading of `word` when the next character of the run is `next` (empty past its end), where the particle decides it: huan2 for 还 (還) before 了 (the idiom
+// 还了得, hai2 liao3 de5, is a word of its own where it stands). Empty elsewhere. The caller
+// passes `next` only where 了 is a word of its own: 还了解 (了解 a word) keeps the adverb.
+std::string_view reading_before_particle(std::string_view word, std::string_view next);
 
 }  // namespace talkface::detail
 

@@ -35,6 +35,12 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     {"nvidia", "ying1 wei3 da2"},
 };
 
+// English words that product names, games and rankings write in capitals and Mandarin speakers
+// say as words, read by the dictionary (TOP 10 top 十, PRO MAX, BOSS战, LOGO). Four or fewer
+// capitals are otherwise spelled: the dictionary has WHO, LED, CIA, PET, CAD, RAM as words too,
+// and those are acronyms in a Mandarin text, spelled (docs/written-forms.md).
+constexpr std::string_view kWordsInCapitals[] = {"top", "max", "pro", "mini", "plus", "boss", "logo", "bug", "ace"};
+
 std::string lower_case(std::string_view word) {
     std::string lower;
     for (const char letter : word) lower += letter >= 'A' && letter <= 'Z' ? static_cast<char>(letter - 'A' + 'a') : letter;
@@ -141,7 +147,8 @@ bool has_inner_acronym(std::string_view word) {
 bool is_said_as_word(std::string_view word) {
     const std::string key = lower_case(word);
     return std::any_of(std::begin(kSaidOtherwise), std::end(kSaidOtherwise),
-                       [&](const auto& entry) { return entry.first == key; });
+                       [&](const auto& entry) { return entry.first == key; }) ||
+           std::find(std::begin(kWordsInCapitals), std::end(kWordsInCapitals), key) != std::end(kWordsInCapitals);
 }
 
 std::vector<std::string> spelled_syllables(std::string_view word) {

@@ -32,8 +32,9 @@ bool is_all_capitals(std::string_view word);
 // a word, said letter by letter, not as the dictionary's word.
 bool has_inner_acronym(std::string_view word);
 
-// True where a word in capitals is said as a word, not letter by letter (COVID, SARS): the words
-// Mandarin speakers say their own way.
+// True where a word in capitals is said as a word, not letter by letter (COVID, SARS, TOP, MAX):
+// the words Mandarin speakers say their own way, and English words written in capitals for a
+// product, a game or a rank.
 bool is_said_as_word(std::string_view word);
 
 // A word nothing here reads (Zorblax), cut where its spelling puts syllables: one per group of

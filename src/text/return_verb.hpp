@@ -1,7 +1,8 @@
 // 还 (還) the verb huan2, "give back", where a cut into words cannot tell it from the adverb hai2
 // ("still"): the adverb modifies what follows it, a verb or an adjective, so 还 is the verb where
 // nothing follows it in its clause (借了要按时还), where it is asked as 还不还, and before a
-// person it is given back to (还我钱, 还你一个公道) or a debt (还房贷, 还外债). The words the
+// person it is given back to (还我钱, 还你一个公道) or a debt (还房贷, 还贷款, 还信用卡), and with a
+// complement that closes its clause (把钱还上, 还完了). The words the
 // phrase list reads (还钱 还给 还款 还书 ...) and 还 before the particle 了 (aspect_particle.hpp)
 // are read elsewhere. docs/written-forms.md ("Words and polyphonic characters") lists the rules.
 #ifndef TALKFACE_TEXT_RETURN_VERB_HPP

@@ -373,7 +373,7 @@ private:
 
     // An address's parts as said: capitals as elsewhere (an acronym letter by letter), letters as
     // a word the dictionary has (com, news), one by one where they are three or fewer (cn, qq,
-    // gov, www), as pinyin (zhangwei); digits one by one (163).
+    // gov, www) or have no vowel (html), as pinyin (zhangwei); digits one by one (163).
     std::vector<Syllable> address_syllables(const detail::WebAddress& address, const CodePoint& at) {
         std::vector<Syllable> syllables;
         auto append = [&](std::vector<Syllable> more) {
@@ -388,7 +388,8 @@ private:
                 append(latin_word_syllables(part.text, at));
             } else if (auto found = detail::english_word_syllables(part.text)) {
                 append(said_syllables(*found));
-            } else if (constexpr std::size_t kLongestSpelled = 3; part.text.size() <= kLongestSpelled) {
+            } else if (constexpr std::size_t kLongestSpelled = 3;
+                       part.text.size() <= kLongestSpelled || detail::spelled_syllables(part.text).empty()) {
                 append(said_syllables(detail::letter_syllables(part.text)));
             } else if (auto pinyin = address_pinyin(part.text)) {
                 append(std::move(*pinyin));
@@ -603,7 +604,7 @@ private:
         for (const auto& character : run) characters.push_back(character.text);
         std::vector<std::string> readings_of_run;
         std::size_t first = 0;
-        const auto lengths = detail::likeliest_words(characters, tables_);
+        const auto lengths = detail::likeliest_words(characters, tables_, ends_clause);
         std::vector<std::string> words;
         for (std::size_t w = 0, start = 0; w < lengths.size(); start += lengths[w++]) {
             words.emplace_back();
@@ -616,9 +617,7 @@ private:
             const bool has_readings = found != tables_.words.end() && !found->second.readings.empty();
             const auto next_word = w + 1 < lengths.size() && lengths[w + 1] == 1 ? characters[first + length]
                                                                                   : std::string_view();
-            const auto after_next = first + length + 1 < characters.size() ? characters[first + length + 1]
-                                                                            : std::string_view();
-            auto in_context = detail::reading_before_particle(word, next_word, after_next);
+            auto in_context = detail::reading_before_particle(word, next_word);
             if (in_context.empty()) in_context = detail::return_verb_reading(words, w, ends_clause);
             for (std::size_t k = 0; k < length; ++k) {
                 const auto& character = run[first + k];

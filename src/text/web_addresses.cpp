@@ -36,6 +36,16 @@ bool is_common_top_level(const std::string& label) {
     return std::find(std::begin(kDomains), std::end(kDomains), lower) != std::end(kDomains);
 }
 
+// Suffixes that make a dotted name a file's or a software library's name (index.html, Node.js,
+// Vue.js, setup.exe): read as an address is, the dot 点, not the end of a sentence.
+bool is_file_suffix(const std::string& label) {
+    constexpr std::string_view kSuffixes[] = {"js", "ts", "py", "html", "htm", "css", "json", "xml", "txt", "pdf",
+                                              "doc", "docx", "xls", "xlsx", "ppt", "pptx", "jpg", "jpeg", "png", "gif",
+                                              "wav", "mov", "exe", "zip", "md", "cpp", "java", "php", "yaml", "yml"};
+    const auto lower = lower_case(label);
+    return std::find(std::begin(kSuffixes), std::end(kSuffixes), lower) != std::end(kSuffixes);
+}
+
 // Letters, digits and punctuation of an address as said: a run of letters, of digits, or a mark.
 void append_said(std::vector<AddressPart>& parts, const std::vector<CodePoint>& text, std::size_t first,
                  std::size_t end) {
@@ -138,7 +148,10 @@ std::optional<WebAddress> read_web_address(const std::vector<CodePoint>& text, s
     if (has_scheme) host = start + scheme.size() + 3;
     const auto end = host_end(text, host, labels);
     if (labels.size() < 2 || !is_all_letters(labels.back())) return std::nullopt;
-    if (!has_scheme && lower_case(labels.front()) != "www" && !is_common_top_level(labels.back())) return std::nullopt;
+    if (!has_scheme && lower_case(labels.front()) != "www" && !is_common_top_level(labels.back()) &&
+        !is_file_suffix(labels.back())) {
+        return std::nullopt;
+    }
     const auto address_end = path_end(text, end);
     append_said(address.parts, text, host, address_end);
     address.end = address_end;

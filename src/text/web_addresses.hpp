@@ -29,8 +29,9 @@ struct WebAddress {
 
 // The address that starts at text[start] (width-folded code points), or nullopt: an e-mail
 // address (a name, @, a host of two or more labels), a web address (a scheme and a host, or a
-// host starting with www or ending with a common top-level domain such as com, cn, org), or a
-// lone @ before a name (a mention: @新华社). A dot that ends a sentence after the address is not taken.
+// host starting with www or ending with a common top-level domain such as com, cn, org), a file's
+// or a library's dotted name (index.html, Node.js: a suffix such as html, js, pdf), or a lone @
+// before a name (a mention: @新华社). A dot that ends a sentence after the address is not taken.
 std::optional<WebAddress> read_web_address(const std::vector<CodePoint>& text, std::size_t start);
 
 }  // namespace talkface::detail

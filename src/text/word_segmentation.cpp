@@ -9,7 +9,7 @@
 namespace talkface::detail {
 
 std::vector<std::size_t> likeliest_words(const std::vector<std::string_view>& characters,
-                                         const ReadingTables& tables) {
+                                         const ReadingTables& tables, bool ends_clause) {
     const auto count = characters.size();
     // Viterbi over the places between characters: best_cost[end] is the cheapest cut of the
     // first `end` characters, whose last word starts at word_start[end].
@@ -24,7 +24,7 @@ std::vector<std::size_t> likeliest_words(const std::vector<std::string_view>& ch
             word.clear();
             for (auto k = start; k < end; ++k) word += characters[k];
             const auto found = tables.words.find(word);
-            if (!may_start_word_here(characters, start, end, tables)) continue;
+            if (!may_start_word_here(characters, start, end, tables, ends_clause)) continue;
             long long cost = 0;
             if (found != tables.words.end()) {
                 cost = found->second.cost;

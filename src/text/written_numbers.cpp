@@ -2,6 +2,7 @@
 
 #include <string_view>
 
+#include "text/latin_words.hpp"
 #include "text/number_words.hpp"
 
 namespace talkface::detail {
@@ -162,6 +163,14 @@ bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t
     return false;
 }
 
+// A word earlier in the clause that names a change (涨幅, 增长, 上升, 同比): a + after it is not said.
+bool names_change(const std::vector<CodePoint>& text, std::size_t start) {
+    const std::string before = text_before(text, start, true);
+    for (const std::string_view word : {"涨", "漲", "跌", "增", "升", "降", "减", "減", "幅", "同比", "环比", "環比"})
+        if (before.find(word) != std::string::npos) return true;
+    return false;
+}
+
 // A naming word right before the number (房间号是1208, 编号：305): said digit by digit as a
 // room's number is.
 bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start) {
@@ -262,7 +271,9 @@ struct NumberContext {
     bool is_phone = false;      // a phone word earlier in the sentence
     bool is_named = false;      // a naming word right before it (房间号是1208)
     bool is_service_call = false;  // dialled or named (打110, 110报警)
-    bool is_model = false;      // right after the capitals of a model's name (C919, A380)
+    bool is_model = false;      // right after the capitals of a model's name (C919, A380) or a maker (波音737)
+    bool is_train = false;      // a train's number (G1234次)
+    bool names_type = false;    // before 型 or 式, a type's number (737型, 99式)
     bool is_generation = false;  // two digits right before 后 (90后, 00后)
     bool is_hundredths = false;  // right after the seconds of a time (9秒83)
 };
@@ -293,7 +304,7 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
     if (!number.has_separators) {
         const bool is_mobile = whole.size() == 11 && whole.front() == '1';
         // A phone word earlier in the sentence does not make an amount a phone number (这款手机售价5999元).
-        const bool counts = context.has_unit || takes_liang(context.next);
+        const bool counts = !context.is_train && (context.has_unit || takes_liang(context.next) || context.next == '%');
         if ((context.is_phone && whole.size() >= 3 && !counts) || is_mobile) {
             said.words = digit_words(whole, true);
             return said;
@@ -302,9 +313,11 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
             said.words = digit_words(whole);
             return said;
         }
-        // A generation (90后 九零后), the hundredths of a sprint (9秒83 九秒八三) and a model's
-        // number of three or more digits (C919 C九一九, A380) are said digit by digit.
-        if (!counts && (context.is_generation || context.is_hundredths || (context.is_model && whole.size() >= 3))) {
+        // A generation (90后 九零后), the hundredths of a sprint (9秒83 九秒八三), a model's
+        // number of three or more digits (C919 C九一九, A380, G1234次) and a type's of two or more
+        // (99式 九九式, 737型) are said digit by digit.
+        if (!counts && (context.is_generation || context.is_hundredths || (context.is_model && whole.size() >= 3) ||
+                        (context.names_type && whole.size() >= 2))) {
             said.words = digit_words(whole);
             return said;
         }
@@ -423,18 +436,59 @@ bool follows_date_or_time(const std::vector<CodePoint>& text, std::size_t mark) 
            is_digit_at(text, mark - 4);
 }
 
-// Right after the capitals that name a model, with nothing or a hyphen between (C919, A380,
-// B-52): one to three capitals that start a word.
+// Right after the capitals that name a model, with nothing, a hyphen or a space between (C919,
+// A380, B-52, RTX 4090): one to three capitals that start a word and are spelled (TOP in TOP 10
+// is the word top, a rank: latin_words.hpp).
 bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start) {
     auto i = start;
-    if (i > 0 && text[i - 1].value == '-') --i;
-    std::size_t capitals = 0;
+    if (i > 0 && (text[i - 1].value == '-' || text[i - 1].value == ' ')) --i;
+    std::string capitals;
     while (i > 0 && is_ascii_capital(value_at(text, i - 1))) {
         --i;
-        ++capitals;
+        capitals.insert(capitals.begin(), static_cast<char>(text[i].value));
     }
     constexpr std::size_t kMostCapitals = 3;
-    return capitals >= 1 && capitals <= kMostCapitals && (i == 0 || !is_ascii_letter(value_at(text, i - 1)));
+    return !capitals.empty() && capitals.size() <= kMostCapitals && !is_said_as_word(capitals) &&
+           (i == 0 || !is_ascii_letter(value_at(text, i - 1)));
+}
+
+// Right after the Chinese name of an aircraft's maker (波音737, 空客 320): its model's number.
+bool follows_aircraft_maker(const std::vector<CodePoint>& text, std::size_t start) {
+    auto i = start;
+    if (i > 0 && text[i - 1].value == ' ') --i;
+    const auto before = text_between(text, i >= 2 ? i - 2 : 0, i);
+    for (const std::string_view maker : {"波音", "空客", "麦道", "麥道", "商飞", "商飛"})
+        if (before == maker) return true;
+    return false;
+}
+
+// A train's number: one capital of a train's class (G D C Z T K L Y S) right before the digits and
+// 次 after them (G1234次 G一二三四次): 次 names the train there, it does not count.
+bool is_train_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    return start >= 1 && is_one_of(value_at(text, start - 1), U"GDCZTKLYS") &&
+           (start < 2 || !is_ascii_letter(value_at(text, start - 2))) && is_one_of(value_at(text, end), U"次");
+}
+
+// A season, or a school or financial year, written as two years that follow each other
+// (2024/25赛季, 2024-25, 2024-2025学年): the years digit by digit joined by 至, as sports and
+// school news read them (二零二四至二五赛季). A range of years before 年 stays a range
+// (2020-2025年 二零二零到二零二五年); two years that do not follow each other are not a season.
+std::optional<SpokenForm> read_season(const std::vector<CodePoint>& text, const WrittenNumber& first) {
+    const auto mark = value_at(text, first.end);
+    if (first.has_point || first.has_separators || first.whole.size() != 4 || !(first.whole[0] == '1' || first.whole[0] == '2') ||
+        !(mark == '/' || is_dash(mark))) {
+        return std::nullopt;
+    }
+    auto i = first.end + 1;
+    const auto second = digits_from(text, i);
+    const int next_year = std::stoi(first.whole) + 1;
+    const bool follows = (second.size() == 2 && std::stoi(second) == next_year % 100) ||
+                         (second.size() == 4 && std::stoi(second) == next_year);
+    if (!follows || value_at(text, i) == '.' || (value_at(text, i) == U'年' && value_at(text, i + 1) != U'度')) return std::nullopt;
+    SpokenForm form;
+    form.words = digit_words(first.whole) + "至" + digit_words(second);
+    form.end = i;
+    return form;
 }
 
 // A country calling code, +86: said 加八六 as the + key is named, with the phone number that
@@ -496,7 +550,10 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
 
     const auto number = parse_number(text, i);
     context.is_named = follows_name_word(text, start);
-    context.is_model = sign_words.empty() && currency == nullptr && follows_model_name(text, start);
+    context.is_model = sign_words.empty() && currency == nullptr &&
+                       (follows_model_name(text, start) || follows_aircraft_maker(text, start));
+    context.is_train = context.is_model && is_train_number(text, start, number.end);
+    context.names_type = is_one_of(value_at(text, number.end), U"型式");
     context.is_generation = number.whole.size() == 2 && !number.has_point && !number.has_separators &&
                             is_one_of(value_at(text, number.end), U"后後");
     context.is_hundredths = start >= 2 && text[start - 1].value == U'秒' && is_digit_at(text, start - 2);
@@ -521,6 +578,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     }
     if (sign_words.empty() && currency == nullptr) {
         if (auto date = read_numeric_date(text, number)) return date;
+        if (auto season = read_season(text, number)) return season;
         if (auto digits = read_dashed_digits(text, number, context.is_phone)) return digits;
     }
     if (value_at(text, number.end) == '/' && is_digit_at(text, number.end + 1) && !number.has_point) {
@@ -570,6 +628,13 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     for (auto& sign : signs) {
         if (sign == "负" && is_temperature) sign = "零下";
         if (sign == "正" && is_temperature) sign = "零上";
+    }
+    // A + before a percentage is a rise, said 涨 as market reports read it (腾讯+2.35% 腾讯涨百分之
+    // 二点三五); not said where the clause already names the change (涨幅+2.35%, 同比增长+5%) or
+    // after the first end of a range. A - stays 负 (增速-6.8% 增速负百分之六点八: 负增长).
+    if (is_percent || is_per_mille) {
+        for (std::size_t k = 0; k < signs.size(); ++k)
+            if (signs[k] == "正") signs[k] = k == 0 && !names_change(text, start) ? "涨" : "";
     }
     // ¥1,299.00 is 一千二百九十九元, $3.50 三点五美元: a price's trailing zeros are written, not said.
     for (auto& price : numbers) {

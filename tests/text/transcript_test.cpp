@@ -108,6 +108,29 @@ TEST_SUITE("transcript") {
         CHECK(toneless("我明天去机场还车") == "wo ming tian qu ji chang huan che");
     }
 
+    TEST_CASE("还得了 and 还了得 are the idiom of outrage only where they end a clause") {
+        // 得了 déliǎo, 了得 liǎo·de: 这还得了 "how can this be tolerated".
+        CHECK(toneless("这还得了！") == "zhe hai de liao");
+        CHECK(toneless("這還得了！") == "zhe hai de liao");
+        CHECK(toneless("那还得了吗？") == "na hai de liao ma");
+        CHECK(toneless("這還了得！") == "zhe hai liao de");
+        // Elsewhere 了 is the particle: 得 "get" takes it (得 "must" never does), 还了 is returned.
+        CHECK(toneless("他还得了第一名。") == "ta hai de le di yi ming");
+        CHECK(toneless("他还了得到的钱。") == "ta huan le de dao de qian");
+        CHECK(toneless("他還了得到的錢。") == "ta huan le de dao de qian");
+    }
+
+    TEST_CASE("还 before a debt or with a complement closing its clause is the verb") {
+        CHECK(toneless("我每个月都要还贷款。") == "wo mei ge yue dou yao huan dai kuan");
+        CHECK(toneless("记得还信用卡") == "ji de huan xin yong ka");
+        CHECK(toneless("他终于把钱还上了") == "ta zhong yu ba qian huan shang le");
+        CHECK(toneless("早点还完吧，") == "zao dian huan wan ba");
+        CHECK(toneless("早点还完了吗") == "zao dian huan wan le ma");
+        // The adverb: the complement starts a word with what follows, or does not close the clause.
+        CHECK(toneless("他还上学") == "ta hai shang xue");
+        CHECK(toneless("还完成了任务") == "hai wan cheng le ren wu");
+    }
+
     TEST_CASE("words the phrase list lacks or misreads come from tools/phrase_additions.tsv") {
         CHECK(toneless("他还没有还书") == "ta hai mei you huan shu");
         CHECK(toneless("他還沒有還書") == "ta hai mei you huan shu");

@@ -217,7 +217,7 @@ TEST_SUITE("written forms") {
             {"这款手机售价5999元", "这款手机售价五千九百九十九元"},
             {"5G网络", "五 ji网络"},
             {"第3季度GDP增长5.2%", "第三季度 ji di pi增长百分之五点二"},
-            {"2025-2026年度", "二零二五到二零二六年度"},
+            {"2025-2026年度", "二零二五至二零二六年度"},
             {"00后和90年代", "零零后和九十年代"},
             // A five-digit service number is a name where it does not count; 12345 and 10000 count too.
             {"在12306购票", "在幺二三零六购票"},
@@ -225,6 +225,37 @@ TEST_SUITE("written forms") {
             {"共有12306人", "共有一万二千三百零六人"},
             {"数到12345", "数到一万二千三百四十五"},
         });
+    }
+
+    TEST_CASE("seasons, model, type and train numbers, signed percentages, dotted names and words in capitals") {
+        check_cases({
+            // Two years that follow each other are a season or a school or financial year: 至.
+            {"2024/25赛季", "二零二四至二五赛季"},
+            {"2024-25賽季", "二零二四至二五賽季"},
+            {"2024-2025学年", "二零二四至二零二五学年"},
+            {"2020-2025年", "二零二零到二零二五年"},
+            {"2024/26", "二十六分之两千零二十四"},
+            // A model's number after its maker's name or before 型 式; a train's before 次.
+            {"波音737客机", "波音七三七客机"},
+            {"空客 320", "空客三二零"},
+            {"99式坦克", "九九式坦克"},
+            {"2型糖尿病", "二型糖尿病"},
+            {"G1234次列车", "ji一二三四次列车"},
+            {"RTX 4090显卡", "a er ti ai ke si四零九零显卡"},
+            {"CPU 100%", "xi pi you百分之一百"},
+            // + before a percentage: 涨, or nothing where the clause names the change; - is 负.
+            {"腾讯+2.35%", "腾讯涨百分之二点三五"},
+            {"涨幅+2.35%", "涨幅百分之二点三五"},
+            {"增速-6.8%", "增速负百分之六点八"},
+            // A file's or a library's dotted name: the dot is 点, not the end of a sentence.
+            {"我在学Node.js。", "我在学 nou de点 zhei ai si"},
+            {"打开index.html", "打开 yin dai si点 ai qi ti ai mu ai le"},
+            // English words in capitals for a rank or a product are words; acronyms stay spelled.
+            {"TOP100", "ta pu一百"},
+            {"TOP 10", "ta pu十"},
+            {"WHO", "da bu liu ai qi ou"},
+        });
+        CHECK(read_transcript("我在学Node.js。").sentences.size() == 1);
     }
 
     TEST_CASE("a word the dictionary lacks and without a vowel is spelled letter by letter, with a warning") {

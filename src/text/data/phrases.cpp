@@ -82823,6 +82823,7 @@ static const char* const kPhrasesText[] = {
     "还应\t1218\thai2 ying1\n"
     "还很\t1178\thai2 hen3\n"
     "还得\t1025\thai2 dei3\n"
+    "还得了\t1278\thai2 de2 liao3\n"
     "还得起\t1278\thuan2 de5 qi3\n"
     "还快\t1298\thai2 kuai4\n"
     "还怕\t1255\thai2 pa4\n"
@@ -84043,9 +84044,9 @@ static const char* const kPhrasesText[] = {
     "通行費\t1330\ttong1 xing2 fei4\n"
     "通行费\t1330\ttong1 xing2 fei4\n"
     "通訊\t1077\n"
+    ,
     "通訊員\t1182\n"
     "通訊社\t1298\n"
-    ,
     "通訊錄\t1199\n"
     "通許\t1299\n"
     "通話\t1131\n"
@@ -84969,6 +84970,7 @@ static const char* const kPhrasesText[] = {
     "還帶\t1263\thai2 dai4\n"
     "還很\t1178\thai2 hen3\n"
     "還得\t1025\thai2 dei3\n"
+    "還得了\t1278\thai2 de2 liao3\n"
     "還得起\t1278\thuan2 de5 qi3\n"
     "還快\t1298\thai2 kuai4\n"
     "還怕\t1255\thai2 pa4\n"
@@ -87893,10 +87895,10 @@ static const char* const kPhrasesText[] = {
     "长不大\t1309\tzhang3 bu4 da4\n"
     "长久\t1114\tchang2 jiu3\n"
     "长乐\t1255\tchang2 le4\n"
+    ,
     "长了\t1162\tzhang3 le5\n"
     "长于\t1313\tchang2 yu2\n"
     "长今\t1328\tchang2 jin1\n"
-    ,
     "长传\t1305\tchang2 chuan2\n"
     "长假\t1171\tchang2 jia3\n"
     "长兴\t1304\tchang2 xing4\n"
@@ -91906,12 +91908,12 @@ static const char* const kPhrasesText[] = {
     "飋\t1353\n"
     "飌\t1354\n"
     "风\t942\n"
+    ,
     "风中\t1197\n"
     "风之\t1287\n"
     "风云\t1138\n"
     "风云人物\t1297\n"
     "风俗\t1216\n"
-    ,
     "风儿\t1294\n"
     "风光\t1123\n"
     "风力\t1267\n"
