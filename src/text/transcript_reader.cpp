@@ -270,6 +270,11 @@ private:
             add_form(text, i, i + 1, read_words("每"));
             return i + 1;
         }
+        if (const auto relation = detail::said_relation(text, i); !relation.empty()) {
+            form_warnings_ = timeline_.warnings.size();
+            add_form(text, i, i + 1, read_words(std::string(relation)));
+            return i + 1;
+        }
         if (ends_sentence(c.value)) {
             append_text(c.text);
             sentence_ended_ = true;
@@ -348,7 +353,8 @@ private:
     }
 
     std::vector<Syllable> latin_word_syllables(const std::string& word, const CodePoint& at) {
-        if (detail::is_all_capitals(word) && !detail::is_said_as_word(word)) return read_capitals(word);
+        // A letter alone is a letter (选a, x=5), not the dictionary's word a or x (ai si).
+        if (word.size() == 1 || (detail::is_all_capitals(word) && !detail::is_said_as_word(word))) return read_capitals(word);
         if (detail::has_inner_acronym(word)) return read_word_parts(word, at);
         if (auto found = detail::english_word_syllables(word)) return said_syllables(*found);
         return read_word_parts(word, at);
@@ -486,20 +492,26 @@ private:
         return syllables;
     }
 
-    // A word the dictionary lacks as two words it has, the longer first part first (facebook:
-    // face book, google: go ogle): closer in length and sound than spelling it.
+    // A word the dictionary lacks as two words it has (facebook: face book, google: go ogle):
+    // closer in length and sound than spelling it. Of the splits, the one whose parts are nearest
+    // in length, and among those the longer first part: photoshop is photo shop, not photos hop.
     static std::optional<std::vector<std::string>> read_compound(const std::string& word) {
         constexpr std::size_t kShortestPart = 2;
+        std::optional<std::vector<std::string>> best;
+        std::size_t best_imbalance = word.size();
         for (auto split = word.size() < kShortestPart ? 0 : word.size() - kShortestPart; split >= kShortestPart;
              --split) {
+            const auto imbalance = split > word.size() - split ? 2 * split - word.size() : word.size() - 2 * split;
+            if (best && imbalance >= best_imbalance) continue;
             auto first = detail::english_word_syllables(word.substr(0, split));
             if (!first) continue;
             auto second = detail::english_word_syllables(word.substr(split));
             if (!second) continue;
             first->insert(first->end(), second->begin(), second->end());
-            return first;
+            best = std::move(first);
+            best_imbalance = imbalance;
         }
-        return std::nullopt;
+        return best;
     }
 
     // 行{hang2}: overrides the reading of the character right before the brace; 2026{两千零二十六}

@@ -452,6 +452,19 @@ bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start) {
            (i == 0 || !is_ascii_letter(value_at(text, i - 1)));
 }
 
+// Right after a word with a small letter, with nothing between (Tiger2024, user123): a user
+// name's or an ID's digits. (iPhone15 counts: fewer than three digits, as a model's do.)
+bool follows_glued_name(const std::vector<CodePoint>& text, std::size_t start) {
+    auto i = start;
+    bool has_small = false;
+    while (i > 0 && is_ascii_letter(value_at(text, i - 1))) {
+        --i;
+        const auto c = value_at(text, i);
+        has_small = has_small || (c >= 'a' && c <= 'z');
+    }
+    return i < start && has_small;
+}
+
 // Right after the Chinese name of an aircraft's maker (波音737, 空客 320): its model's number.
 bool follows_aircraft_maker(const std::vector<CodePoint>& text, std::size_t start) {
     auto i = start;
@@ -538,6 +551,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     const bool after_word = start > 0 && (is_digit_at(text, start - 1) || is_ascii_letter(value_at(text, start - 1)));
     if (currency == nullptr && (is_dash(first) || first == '+') && is_digit_at(text, i + 1) && !after_word) {
         sign_words = first == '+' ? "正" : "负";
+        // A bonus to a game's attribute, a word ending in 力 or 值 (攻击力+15, 经验值+50): 加.
+        if (first == '+' && start > 0 && is_one_of(text[start - 1].value, U"力值")) sign_words = "加";
         ++i;
     }
     if (!is_digit_at(text, i)) return std::nullopt;
@@ -551,7 +566,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     const auto number = parse_number(text, i);
     context.is_named = follows_name_word(text, start);
     context.is_model = sign_words.empty() && currency == nullptr &&
-                       (follows_model_name(text, start) || follows_aircraft_maker(text, start));
+                       (follows_model_name(text, start) || follows_aircraft_maker(text, start) ||
+                        follows_glued_name(text, start));
     context.is_train = context.is_model && is_train_number(text, start, number.end);
     context.names_type = is_one_of(value_at(text, number.end), U"型式");
     context.is_generation = number.whole.size() == 2 && !number.has_point && !number.has_separators &&
@@ -682,6 +698,23 @@ bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i) {
         if (!is_han(i - k)) return is_digit_at(text, i - k);
     }
     return i > kLongestUnit && is_digit_at(text, i - kLongestUnit - 1);
+}
+
+std::string_view said_relation(const std::vector<CodePoint>& text, std::size_t i) {
+    const auto sign = value_at(text, i);
+    const char* words = sign == '=' ? "等于" : sign == 0x2248 /*≈*/ ? "约等于" : sign == 0x2260 /*≠*/ ? "不等于" : nullptr;
+    if (sign == '+' && i > 0 && is_digit_at(text, i - 1) && is_digit_at(text, i + 1)) return "加";  // 1+1
+    if (words == nullptr) return {};
+    const auto is_term = [&](std::size_t k) {
+        const auto c = value_at(text, k);
+        return (c >= '0' && c <= '9') || is_ascii_letter(c) || (c >= 0x3400 && c <= 0x9FFF);
+    };
+    auto before = i;
+    while (before > 0 && text[before - 1].value == ' ') --before;
+    auto after = i + 1;
+    while (value_at(text, after) == ' ') ++after;
+    if (before == 0 || !is_term(before - 1) || !is_term(after)) return {};
+    return words;
 }
 
 }  // namespace talkface::detail

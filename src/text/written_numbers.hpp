@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "text/code_points.hpp"
@@ -30,6 +31,12 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
 // 二十五元每公斤, 3次/周): a number, one to three Chinese characters, the slash, a Chinese
 // character. Elsewhere a slash is not said (男/女).
 bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i);
+
+// What the relation sign at text[i] is said as where it stands between two terms (a letter, a
+// digit or a Chinese character on each side, spaces allowed): = 等于, ≈ 约等于, ≠ 不等于, as a
+// lesson reads x=5, and + between two digits 加 (1+1=2); empty elsewhere (a row of = under a
+// heading is not said).
+std::string_view said_relation(const std::vector<CodePoint>& text, std::size_t i);
 
 }  // namespace talkface::detail
 

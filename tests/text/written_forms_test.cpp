@@ -258,6 +258,22 @@ TEST_SUITE("written forms") {
         CHECK(read_transcript("我在学Node.js。").sentences.size() == 1);
     }
 
+    TEST_CASE("a lesson's relations, a letter alone, an ID's digits, a game's bonus, a compound word") {
+        check_cases({
+            {"答案是x=5。", "答案是 ai ke si等于五"},
+            {"1+1=2", "一加一等于二"},
+            {"x ≠ 0", "ai ke si不等于零"},
+            {"选a还是选b？", "选 ei还是选 bi"},
+            {"我的ID是Tiger2024", "我的 ai di是 tai ge二零二四"},
+            {"他用iPhone15拍照", "他用 ai feng十五拍照"},
+            {"攻击力+15", "攻击力加十五"},
+            {"经验值+50", "经验值加五十"},
+            {"温差+12", "温差正十二"},
+            // A compound the dictionary lacks: the split whose parts are nearest in length.
+            {"她用Photoshop修图", "她用 fou tou sha pu修图"},
+        });
+    }
+
     TEST_CASE("a word the dictionary lacks and without a vowel is spelled letter by letter, with a warning") {
         const auto timeline = read_transcript("用Xqzt吧", {}, "t.txt");
         CHECK(said(timeline) == "用 ai ke si qiu zei ti吧");
