@@ -118,11 +118,20 @@ std::vector<FrameSpan> choose_sentence_pauses(const LoudnessProfile& loudness, c
     double speech_frames = static_cast<double>(loudness.speech_end_frame - loudness.speech_first_frame);
     for (std::size_t i = 0; i < boundary_count; ++i) speech_frames -= static_cast<double>(lengths[i]);
     const double frames_per_syllable = std::max(5.0, speech_frames / static_cast<double>(total_syllables));
+    // paused_before[i]: the frames of pauses 0..i-1, for the pauses a sentence holds.
+    std::vector<std::size_t> paused_before(pauses.size() + 1, 0);
+    for (std::size_t i = 0; i < pauses.size(); ++i) paused_before[i + 1] = paused_before[i] + pauses[i].length();
 
-    auto sentence_score = [&](std::size_t first, std::size_t end, std::size_t sentence) {
+    // The sentence from frame first to end holds pauses inner_first..inner_end-1.
+    auto sentence_score = [&](std::size_t first, std::size_t end, std::size_t inner_first, std::size_t inner_end,
+                              std::size_t sentence) {
         // Far too short for its syllables, however the rest fits: a note of music before the first
-        // sentence, taken for a sentence, shifted every sentence after it by one.
-        if (end <= first || static_cast<double>(end - first) < kFastestFramesPerSyllable * static_cast<double>(syllables[sentence]))
+        // sentence, taken for a sentence, shifted every sentence after it by one. Its speech is
+        // what check_sentence_lengths counts, the frames outside the pauses it holds: music after
+        // the last word, cut in two by a rest, held a sentence at 7.4 frames a syllable, but 4.6 of speech.
+        if (end <= first) return kNegativeInfinity;
+        const std::size_t paused = paused_before[inner_end] - paused_before[inner_first];
+        if (static_cast<double>(end - first - paused) < kFastestFramesPerSyllable * static_cast<double>(syllables[sentence]))
             return kNegativeInfinity;
         const double expected = frames_per_syllable * static_cast<double>(syllables[sentence]);
         const double z = std::log(static_cast<double>(end - first) / expected) / kSentenceDurationSigma;
@@ -141,7 +150,7 @@ std::vector<FrameSpan> choose_sentence_pauses(const LoudnessProfile& loudness, c
     std::vector<double> score(boundary_count * pause_count, kNegativeInfinity);
     std::vector<std::size_t> previous(boundary_count * pause_count, 0);
     for (std::size_t c = 0; c + boundary_count <= pause_count; ++c)
-        score[c] = sentence_score(loudness.speech_first_frame, pauses[c].first_frame, 0) + pause_score(c);
+        score[c] = sentence_score(loudness.speech_first_frame, pauses[c].first_frame, 0, c, 0) + pause_score(c);
     for (std::size_t k = 1; k < boundary_count; ++k) {
         for (std::size_t c = k; c + boundary_count - k <= pause_count; ++c) {
             double best = kNegativeInfinity;
@@ -150,7 +159,7 @@ std::vector<FrameSpan> choose_sentence_pauses(const LoudnessProfile& loudness, c
                 if (too_long(pauses[p].end_frame, pauses[c].first_frame, k)) break;
                 const double candidate = score[(k - 1) * pause_count + p];
                 if (candidate == kNegativeInfinity) continue;
-                const double total = candidate + sentence_score(pauses[p].end_frame, pauses[c].first_frame, k);
+                const double total = candidate + sentence_score(pauses[p].end_frame, pauses[c].first_frame, p + 1, c, k);
                 if (total > best) { best = total; best_previous = p; }
             }
             if (best == kNegativeInfinity) continue;
@@ -163,7 +172,7 @@ std::vector<FrameSpan> choose_sentence_pauses(const LoudnessProfile& loudness, c
     for (std::size_t c = boundary_count - 1; c < pause_count; ++c) {
         const double candidate = score[(boundary_count - 1) * pause_count + c];
         if (candidate == kNegativeInfinity) continue;
-        const double total = candidate + sentence_score(pauses[c].end_frame, loudness.speech_end_frame, boundary_count);
+        const double total = candidate + sentence_score(pauses[c].end_frame, loudness.speech_end_frame, c + 1, pause_count, boundary_count);
         if (total > best) { best = total; last = c; }
     }
     // No cut gives every sentence room for its syllables: the pauses do not single the sentence

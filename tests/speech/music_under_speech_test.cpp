@@ -2,12 +2,14 @@
 // above its quietest moments, and the pauses under it must still be found (the floor, its quietest
 // 5%, is the music's rests: a threshold 6 dB over it lay inside the music); a cut that leaves a
 // sentence a stretch far too short for its syllables is never taken (one gave 14 syllables a note
-// of music before the speech, shifting every sentence after it). Then the whole aligner on six
-// sentences (tests/data/speech/two_sentences.wav three times over) under a tune made here at SNR
-// 15 dB (chords held through each bar, a melody, a kick, a hi-hat): its sentences start where
-// they do in quiet.
+// of music before the speech, shifting every sentence after it), nor one whose speech, the frames
+// outside the pauses it holds, is (music after the last word, split by a rest). Then the whole
+// aligner on six sentences (tests/data/speech/two_sentences.wav three times over) under a tune
+// made here at SNR 15 dB (chords held through each bar, a melody, a kick, a hi-hat): its
+// sentences start where they do in quiet.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -75,6 +77,30 @@ detail::FeatureTrack track_of(const std::vector<float>& levels_db) {
     return track;
 }
 
+// Four sentences of 13 syllables cut from `frames` frames of speech at 30 dB but in `pauses`, the
+// pauses found: each sentence's speech, the frames of its span outside the pauses it holds.
+std::vector<std::size_t> speech_of_four_sentences(std::size_t frames, const std::vector<detail::FrameSpan>& pauses) {
+    detail::LoudnessProfile loudness;
+    loudness.activity_threshold_db = 6.0f;
+    loudness.activity_db.assign(frames, 30.0f);
+    loudness.speech_first_frame = 0;
+    loudness.speech_end_frame = frames;
+    loudness.pauses = pauses;
+    for (const auto& pause : pauses)
+        std::fill(loudness.activity_db.begin() + static_cast<std::ptrdiff_t>(pause.first_frame),
+                  loudness.activity_db.begin() + static_cast<std::ptrdiff_t>(pause.end_frame), 0.0f);
+    const Timeline transcript = read_transcript("今天天气很好我们去公园散步。今天天气很好我们去公园散步。"
+                                                "今天天气很好我们去公园散步。今天天气很好我们去公园散步。");
+    const detail::SentenceCut cut = detail::cut_sentences(detail::FeatureTrack{}, loudness, transcript, AlignOptions{});
+    std::vector<std::size_t> speech;
+    for (const auto& span : cut.spans) {
+        speech.push_back(span.length());
+        for (const auto& pause : pauses)
+            if (pause.first_frame >= span.first_frame && pause.end_frame <= span.end_frame) speech.back() -= pause.length();
+    }
+    return speech;
+}
+
 }  // namespace
 
 TEST_SUITE("speech") {
@@ -108,24 +134,27 @@ TEST_SUITE("speech") {
     TEST_CASE("no sentence is cut to a stretch far too short for its syllables") {
         // A note of music before the speech (frames 0-5) and only three pauses found for the three
         // sentence ends: one end lies under the music. Cutting at every pause gives the first
-        // sentence, 12 syllables, 50 ms; that cut is not taken, and the syllables place the ends.
-        detail::LoudnessProfile loudness;
-        loudness.activity_threshold_db = 6.0f;
-        loudness.activity_db.assign(1200, 30.0f);
-        loudness.speech_first_frame = 0;
-        loudness.speech_end_frame = 1200;
-        loudness.pauses = {{5, 40}, {300, 340}, {600, 640}};
-        const Timeline transcript = read_transcript("今天天气很好我们去公园散步。今天天气很好我们去公园散步。"
-                                                    "今天天气很好我们去公园散步。今天天气很好我们去公园散步。");
-        REQUIRE(transcript.sentences.size() == 4);
-        const detail::SentenceCut cut = detail::cut_sentences(detail::FeatureTrack{}, loudness, transcript, AlignOptions{});
-        REQUIRE(cut.spans.size() == 4);
+        // sentence, 13 syllables, 50 ms; that cut is not taken, and the syllables place the ends.
+        const std::vector<std::size_t> speech = speech_of_four_sentences(1200, {{5, 40}, {300, 340}, {600, 640}});
+        REQUIRE(speech.size() == 4);
         for (std::size_t k = 0; k < 4; ++k) {
             CAPTURE(k);
-            CHECK(static_cast<double>(cut.spans[k].length()) >= detail::kFastestFramesPerSyllable * 12);
+            CHECK(static_cast<double>(speech[k]) >= detail::kFastestFramesPerSyllable * 13);
         }
     }
 
+    TEST_CASE("no sentence is cut to music after the speech that a rest splits, its speech too short for its syllables") {
+        // The pause before the fourth sentence lies under the music and is not found, and the
+        // music after the last word (frames 1000-1110) holds two rests. Cutting at the first of
+        // them gives the last sentence 100 frames, 7.7 a syllable, but 40 of them outside the rest
+        // it holds: check_sentence_lengths refuses that, and the cutter never takes it.
+        const std::vector<std::size_t> speech = speech_of_four_sentences(1110, {{250, 290}, {500, 540}, {1000, 1010}, {1020, 1080}});
+        REQUIRE(speech.size() == 4);
+        for (std::size_t k = 0; k < 4; ++k) {
+            CAPTURE(k);
+            CHECK(static_cast<double>(speech[k]) >= detail::kFastestFramesPerSyllable * 13);
+        }
+    }
 
     TEST_CASE("six sentences under a tune at SNR 15 dB are aligned as in quiet, none refused") {
         auto source = detail::open_audio_file(test::clip_path("two_sentences.wav"));
