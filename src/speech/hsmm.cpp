@@ -18,13 +18,6 @@ constexpr float kImpossible = -std::numeric_limits<float>::infinity();
 constexpr std::size_t kWindowFrames = 1500;
 constexpr double kWindowStateShare = 1.5;
 constexpr std::size_t kKeptWindowFrames = 1000;
-// How much a state's duration prior counts against the emissions. Each 10 ms frame scores as if
-// independent of the next, though a 25 ms window and the deltas make neighbours overlap, so a
-// run of frames weakly favouring a wrong class outvoted the priors: at weight 1 a run of syllables
-// slid a syllable early or late, squeezing some to a few frames and stretching one over a pause
-// (bench/ human running speech, a room and pink noise at 15 dB). Set on the tuning passages of
-// those two conditions: 1.25 and 1.75 help less, 2 refuses a right passage.
-constexpr double kDurationWeight = 1.5;
 // How far a window's vowels may be scaled to catch up with the speech (or let it catch up).
 constexpr double kMinPace = 0.5;
 constexpr double kMaxPace = 2.0;
@@ -61,7 +54,7 @@ std::size_t fill_duration_scores(const PhoneState& state, std::size_t frames, st
     const LogNormalDuration prior(state.median_frames, state.log_sigma);
     const double reference = state.is_optional ? 0.0 : prior.at(state.median_frames);
     for (std::size_t d = longest; d >= shortest && d > 0; --d) {
-        const double score = is_flat ? 0.0 : kDurationWeight * (prior.at(static_cast<double>(d)) - reference);
+        const double score = is_flat ? 0.0 : state.duration_weight * (prior.at(static_cast<double>(d)) - reference);
         reversed.push_back(static_cast<float>(score + state.entry_log_penalty + state.frame_log_penalty * static_cast<double>(d)));
     }
     return longest;
@@ -69,8 +62,8 @@ std::size_t fill_duration_scores(const PhoneState& state, std::size_t frames, st
 
 // Per frame past its longest explicit duration, what a state with a tail pays: the slope of its
 // log-normal prior there, so that the density goes on smoothly as a geometric tail, heavier than
-// the log-normal's own (pauses have a long tail; the slope is not weighted by kDurationWeight, so
-// that a speaker's long stop costs no more than it did).
+// the log-normal's own (pauses have a long tail; the slope is not weighted by
+// PhoneState::duration_weight, so that a speaker's long stop costs no more than it did).
 float tail_step(const PhoneState& state, std::size_t longest) {
     const double frames = static_cast<double>(longest);
     const double z = (std::log(frames) - std::log(state.median_frames)) / state.log_sigma;

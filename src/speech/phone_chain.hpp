@@ -51,6 +51,14 @@ inline bool is_pause(StateRole role) {
     return role == StateRole::edge_silence || role == StateRole::short_pause || role == StateRole::comma_pause;
 }
 
+// How much a state's duration prior counts against the emissions (PhoneState::duration_weight).
+// Each 10 ms frame scores as if independent of the next, though a 25 ms window and the deltas make
+// neighbours overlap, so a run of frames weakly favouring a wrong class outvoted the priors: at
+// weight 1 a run of syllables slid a syllable early or late, squeezing some to a few frames and
+// stretching one over a pause (bench/ human running speech, a room and pink noise at 15 dB). Set
+// on the tuning passages of those two conditions: 1.25 and 1.75 help less, 2 refuses a right one.
+inline constexpr double kDurationWeight = 1.5;
+
 struct PhoneState {
     PhoneClass phone_class = kSilence;
     StateRole role = StateRole::initial;
@@ -67,6 +75,7 @@ struct PhoneState {
     // alignment: a syllable the speech does not say). Optional states are skipped for nothing.
     double skip_log_penalty = -std::numeric_limits<double>::infinity();
     double frame_log_penalty = 0.0; // paid per frame held (generic speech fits every frame well)
+    double duration_weight = kDurationWeight; // how much its duration prior counts (hsmm.cpp)
 };
 
 // What a state of generic speech pays per frame held (PhoneState::frame_log_penalty), for a word

@@ -218,6 +218,11 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
 
     std::vector<SentenceChain> chains = group_chains(transcript, cut, spans);
     set_search_spans(track, loudness, chains);
+    // Lenient alignment's prices of a skipped syllable and of generic speech were set against the
+    // duration priors at weight 1 (lenient_chain.cpp, bench/ lenient_bench.py): it keeps them so.
+    if (is_lenient)
+        for (auto& chain : chains)
+            for (auto& state : chain.states) state.duration_weight = 1.0;
     const std::vector<bool> is_spoken = spoken_sentences_of(transcript);
     const auto spoken_sentences = static_cast<std::size_t>(std::count(is_spoken.begin(), is_spoken.end(), true));
 
