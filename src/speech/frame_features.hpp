@@ -14,6 +14,12 @@ class AudioSource;
 
 constexpr int kAnalysisRateHz = 16000;
 constexpr double kFrameStepS = 0.010;
+constexpr double kFramesPerSecond = 100.0;
+
+// When frame `frame` starts, as reported to the caller: divided rather than multiplied by
+// kFrameStepS, since 357 * 0.01 is 3.5700000000000003 and 357 / 100.0 the double nearest 3.57,
+// which a timeline's JSON then prints as 3.57.
+constexpr double frame_time_s(std::size_t frame) { return static_cast<double>(frame) / kFramesPerSecond; }
 
 // Columns of a feature frame.
 enum FeatureColumn : int {

@@ -325,7 +325,7 @@ void place_lenient(const SentenceChain& chain, const std::vector<StateSegment>& 
 
     const std::size_t offset = chain.searched.first_frame;
     auto time_s = [&](std::size_t frame) {
-        return std::min(track.duration_s, static_cast<double>(offset + frame) * kFrameStepS);
+        return std::min(track.duration_s, frame_time_s(offset + frame));
     };
     for (std::size_t g = 0; g < marked.size();) {
         // Neighbouring places join; two skipped syllables are neighbours across the generic
@@ -366,8 +366,8 @@ void place_lenient(const SentenceChain& chain, const std::vector<StateSegment>& 
             const auto bounds = loudness_boundaries(loudness, offset + first, offset + end, local_count);
             for (std::size_t k = 0; k < local_count; ++k) {
                 Syllable& syllable = result.syllables[global + k];
-                syllable.start_s = std::min(track.duration_s, static_cast<double>(bounds[k]) * kFrameStepS);
-                syllable.end_s = std::min(track.duration_s, static_cast<double>(bounds[k + 1]) * kFrameStepS);
+                syllable.start_s = std::min(track.duration_s, frame_time_s(bounds[k]));
+                syllable.end_s = std::min(track.duration_s, frame_time_s(bounds[k + 1]));
                 syllable.final_start_s = syllable.start_s + 0.3 * (syllable.end_s - syllable.start_s);
                 syllable.confidence = 0.0;
                 // Not measured: set_confidences leaves it at 0.

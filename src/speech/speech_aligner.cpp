@@ -194,7 +194,7 @@ void set_sentence_times(const std::vector<FrameSpan>& spans, Timeline& result) {
         const auto first = std::find_if(result.syllables.begin(), result.syllables.end(),
                                         [&](const Syllable& s) { return s.sentence == k; });
         if (first == result.syllables.end()) {
-            const double at = static_cast<double>(spans[k].first_frame) * kFrameStepS;
+            const double at = frame_time_s(spans[k].first_frame);
             result.sentences[k].start_s = result.sentences[k].end_s = at;
             continue;
         }

@@ -19,10 +19,9 @@ constexpr std::size_t kPauseBeforeBurstFrames = 20;
 
 void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores,
                      const FeatureTrack& track, Timeline& result, std::vector<double>& evidence) {
-    const double offset_s = static_cast<double>(chain.searched.first_frame) * kFrameStepS;
     // The last frame may run past the audio's last sample: no time is later than the audio's end.
     auto time_s = [&](std::size_t frame) {
-        return std::min(track.duration_s, offset_s + static_cast<double>(frame) * kFrameStepS);
+        return std::min(track.duration_s, frame_time_s(chain.searched.first_frame + frame));
     };
     std::vector<SyllableFrames> frames(chain.syllables.size());
     for (std::size_t local = 0; local < chain.syllables.size(); ++local) {
