@@ -39,19 +39,16 @@ def test_keyframes_of_the_align_json_are_the_bytes_of_keyframes_of_the_audio(tmp
     assert through_the_file == direct
 
 
-def test_times_rounded_to_milliseconds_would_move_key_frames(tmp_path):
-    """Why the document keeps every digit: the old `align --json` rounded to milliseconds, and the key
-    frames of such a document differ from those of the audio (this is what the test above guards)."""
+def test_align_json_prints_times_as_the_frames_they_are():
+    """Aligned times are whole 10 ms frames: the document prints 3.57, not 3.5700000000000003 (a
+    frame count times 0.01), while still keeping every digit a time has (shortest exact form)."""
     audio, transcript = clip("comma_pause")
     document = json.loads(run("align", audio, transcript, "--json", "--quiet"))
-    for syllable in document["syllables"]:
-        for key in ("start", "end", "final_start"):
-            if key in syllable:
-                syllable[key] = round(syllable[key], 3)
-    rounded = tmp_path / "rounded.json"
-    rounded.write_text(json.dumps(document, ensure_ascii=False), encoding="utf-8")
-    direct = run("keyframes", audio, transcript, "--seed", 11, "-o", "-")
-    assert run("keyframes", "--timeline", rounded, "--seed", 11, "-o", "-") != direct
+    times = [item[key] for part in ("sentences", "syllables") for item in document[part]
+             for key in ("start", "end", "final_start") if key in item]
+    assert times
+    for time in times:
+        assert len(repr(time).partition(".")[2]) <= 2, time
 
 
 def test_align_json_matches_its_golden_file():
