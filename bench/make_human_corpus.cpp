@@ -53,6 +53,8 @@ struct Condition {
     double min_ends_s = 0;    ///< each end gets min_ends_s..max_ends_s (drawn) more of the noise alone
     double max_ends_s = 0;
     bool is_phone = false;    ///< after the noise: the telephone band at 8 kHz, through the GSM 06.10 codec
+    double min_voice_semitones = 0;  ///< above 0: another voice (`v-`), each passage's shift drawn in
+    double max_voice_semitones = 0;  ///< [min, max] semitones, up or down (drawn), see with_voice
 };
 
 const Condition all_conditions[] = {
@@ -82,6 +84,20 @@ const Condition all_conditions[] = {
      "", true, 20, 3, 10},
     {"r-phone", "running speech, pink noise at SNR 30 dB, then the telephone band (300-3400 Hz) at 8 kHz through GSM 06.10",
      1.0, 1.5, Noise::pink, 30, "", true, 0, 0, 0, true},
+    // Another voice made of speaker 3's (issue 12, session 11): running speech whose pitch and
+    // formants are moved together by 2-4 semitones up or down (drawn per passage), and faster speech.
+    {"v-clean", "another voice (2-4 semitones up or down), running speech, white noise at SNR 30 dB", 1.0, 1.5,
+     Noise::white, 30, "", true, 0, 0, 0, false, 2, 4},
+    {"v-fast", "another voice, running speech at tempo 1.5-1.7, white noise at SNR 30 dB", 1.5, 1.7, Noise::white,
+     30, "", true, 0, 0, 0, false, 2, 4},
+    {"v-fast-white15", "another voice, tempo 1.5-1.7, white noise at SNR 15-20 dB", 1.5, 1.7, Noise::white, 15, "",
+     true, 20, 0, 0, false, 2, 4},
+    {"v-fast-pink15", "another voice, tempo 1.5-1.7, pink noise at SNR 15-20 dB", 1.5, 1.7, Noise::pink, 15, "", true,
+     20, 0, 0, false, 2, 4},
+    {"v-reverb", "another voice, running speech, room reverb (sox reverb 40 50 60)", 1.0, 1.5, Noise::none, 0,
+     "reverb 40 50 60 gain -n -3", true, 0, 0, 0, false, 2, 4},
+    {"v-fast-reverb", "another voice, tempo 1.5-1.7, room reverb (sox reverb 40 50 60)", 1.5, 1.7, Noise::none, 0,
+     "reverb 40 50 60 gain -n -3", true, 0, 0, 0, false, 2, 4},
 };
 
 // --- pinyin to gcin-voice's folders --------------------------------------------------------------
@@ -383,7 +399,7 @@ struct Recording {
 constexpr double kOverallGain = 0.7;
 
 Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, const RunningDelivery& running,
-                const Condition& condition, SyllableBank& bank, const std::string& where) {
+                const Condition& condition, SyllableBank& bank, const std::string& where, double voice_factor = 1.0) {
     Recording recording;
     recording.truth = transcript;
     recording.audio.sample_rate_hz = kRateHz;
@@ -402,6 +418,8 @@ Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, 
         end += to_samples(delivery.sentence_gaps_s[k]);
         const double tempo = condition.min_tempo + (condition.max_tempo - condition.min_tempo) * delivery.tempo_unit[k];
         recording.tempo.push_back(tempo);
+        // with_voice will play it `voice_factor` times faster: said that much slower here.
+        const double said_tempo = tempo / voice_factor;
         std::size_t sentence_first = transcript.syllables.size(), sentence_count = 0;
         for (std::size_t i = 0; i < transcript.syllables.size(); ++i) {
             if (transcript.syllables[i].sentence != k) continue;
@@ -422,7 +440,7 @@ Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, 
                                      transcript.syllables[i + 1].sentence != k;
             // Where in its sentence the syllable comes, 0 to 1: pitch and level fall along it.
             const double position = sentence_count > 1 ? static_cast<double>(i - sentence_first) / static_cast<double>(sentence_count - 1) : 0.0;
-            double pace = tempo * delivery.syllable_pace[i] * (is_running ? running.pace_jitter[i] : 1.0);
+            double pace = said_tempo * delivery.syllable_pace[i] * (is_running ? running.pace_jitter[i] : 1.0);
             double gain = kOverallGain * delivery.gain[i];
             if (reading.tone == 5) {
                 pace *= is_exact ? 1.2 : 1.7;
@@ -530,6 +548,21 @@ Recording with_ends(Recording recording, double lead_s, double trail_s) {
     return recording;
 }
 
+// `recording` as another voice: played `factor` times faster (sox `speed`, resampled), so its pitch
+// and its formants, a vocal tract's resonances, move together by `factor` (2-4 semitones: a
+// shorter or longer tract than speaker 3's, as between men, or a man and a woman); speak said it
+// `factor` times slower, so the pace is the condition's. The truth is scaled with it, exactly.
+Recording with_voice(Recording recording, double factor, const fs::path& work) {
+    const fs::path in = work / "voice-in.wav", out = work / "voice-out.wav";
+    talkface_bench::write_wav(in.string(), recording.audio);
+    talkface_bench::run_sox(in.string(), out.string(), "-b 16", "speed " + std::to_string(factor) + " rate -v 16k");
+    recording.audio = talkface_bench::read_wav(out.string());
+    for (auto& syllable : recording.truth.syllables) syllable.start_s /= factor, syllable.end_s /= factor;
+    for (auto& sentence : recording.truth.sentences) sentence.start_s /= factor, sentence.end_s /= factor;
+    recording.truth.duration_s = static_cast<double>(recording.audio.samples.size()) / kRateHz;
+    return recording;
+}
+
 // The condition applied to the joined speech: sox's effects, then noise at the condition's SNR,
 // then the telephone's band and codec. A condition that draws (its SNR, its ends) draws from
 // `noise_rng` before the noise does.
@@ -601,7 +634,13 @@ void make_corpus(const CorpusOptions& options) {
             // The noise comes from a stream of its own per passage and condition.
             std::seed_seq noise_seed{options.seed, static_cast<std::uint64_t>(p), condition_index};
             std::mt19937_64 noise_rng(noise_seed);
-            Recording recording = speak(transcript, deliveries[p], runnings[p], *condition, bank, passage.name);
+            double voice_factor = 1.0;
+            if (condition->max_voice_semitones > 0) {
+                const double semitones = talkface_bench::uniform(noise_rng, condition->min_voice_semitones, condition->max_voice_semitones);
+                voice_factor = std::pow(2.0, (talkface_bench::uniform(noise_rng, 0, 1) < 0.5 ? -semitones : semitones) / 12.0);
+            }
+            Recording recording = speak(transcript, deliveries[p], runnings[p], *condition, bank, passage.name, voice_factor);
+            if (voice_factor != 1.0) recording = with_voice(std::move(recording), voice_factor, work);
             if (condition->max_ends_s > 0) {
                 const double lead_s = talkface_bench::uniform(noise_rng, condition->min_ends_s, condition->max_ends_s);
                 recording = with_ends(std::move(recording), lead_s,
