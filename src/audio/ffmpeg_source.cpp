@@ -14,6 +14,7 @@ extern "C" {
 #include <vector>
 
 #include "audio/ffmpeg_messages.hpp"
+#include "audio/mp4_index.hpp"
 #include "common/number_format.hpp"
 #include "talkface/errors.hpp"
 
@@ -70,6 +71,10 @@ public:
         if (opened < 0) {
             if (opened == AVERROR(ENOENT) || opened == AVERROR(EACCES) || opened == AVERROR(EISDIR))
                 throw FileError(path_, ffmpeg_error_text(opened));
+            if (is_mp4_without_index(path_))
+                throw FileError(path_, "truncated: an MP4/M4A/MOV file without its index (the moov box), which "
+                                       "recorders and encoders write last; the file was cut while it was copied "
+                                       "or recorded, or is still being written");
             throw not_audio(ffmpeg_error_text(opened));
         }
         format_.reset(raw);

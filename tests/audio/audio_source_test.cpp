@@ -81,8 +81,9 @@ TEST_SUITE("audio") {
         const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         const std::string cut = test::output_path("cut_header.m4a");
         write_bytes(cut, bytes.substr(0, 200));
-        CHECK_THROWS_WITH_AS(detail::open_audio_file(cut), doctest::Contains((cut + ": not audio talkface can read").c_str()),
-                             ParseError);
+        CHECK_THROWS_WITH_AS(detail::open_audio_file(cut),
+                             doctest::Contains((cut + ": truncated: an MP4/M4A/MOV file without its index").c_str()),
+                             FileError);
 
         const std::string image = test::output_path("picture.mp3");
         write_bytes(image, std::string("\x89PNG\r\n\x1a\n", 8) + std::string(400, '\0'));

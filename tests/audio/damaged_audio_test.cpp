@@ -217,6 +217,33 @@ TEST_SUITE("audio") {
         CHECK(outcome.message.find("9223372036854775807") == std::string::npos);
     }
 
+    TEST_CASE("an MP4-family file cut before its index says so, one cut after it says how much is left") {
+        for (const char* file : {"phone.m4a", "clip.mov"}) {
+            CAPTURE(file);
+            const Container* container = nullptr;
+            for (const Container& candidate : kContainers)
+                if (std::string(candidate.file) == file) container = &candidate;
+            REQUIRE(container != nullptr);
+            const std::string bytes = whole(*container);
+            const std::string path = test::output_path(std::string("cut_") + file);
+            write_bytes(path, bytes.substr(0, bytes.size() / 2));
+            const Outcome outcome = read_and_analyse(path);
+            CHECK(outcome.threw);
+            CHECK_MESSAGE(outcome.message.find(path + ": truncated: an MP4/M4A/MOV file without its index") != std::string::npos,
+                          outcome.message);
+        }
+        const std::string indexed_first = test::output_path("cut_faststart.m4a");
+        const std::string bytes = whole(kContainers[8]);
+        write_bytes(indexed_first, bytes.substr(0, bytes.size() / 2));
+        const Outcome outcome = read_and_analyse(indexed_first);
+        CHECK(outcome.threw);
+        CHECK_MESSAGE(outcome.message.find("truncated: its header says the sound lasts") != std::string::npos, outcome.message);
+        // Bytes that are no MP4 at all are not called a cut one.
+        const std::string text = test::output_path("text_named.m4a");
+        write_bytes(text, "not a recording, a note saved under the wrong name\n");
+        CHECK(read_and_analyse(text).message.find("without its index") == std::string::npos);
+    }
+
     TEST_CASE("every container read whole is not called truncated") {
         for (const Container& container : kContainers) {
             const std::string file = container.file;
