@@ -89,7 +89,7 @@ void run_align(const AlignCommandOptions& options) {
         align_options.first_pause_start_s = pause.first;
         align_options.first_pause_end_s = pause.second;
     }
-    const talkface::Timeline transcript = talkface::load_transcript(options.transcript_path);
+    const talkface::Timeline transcript = load_transcript_to_time(options.transcript_path);
     const talkface::SpeechAligner aligner(align_options);
     talkface::Timeline timeline;
     {

@@ -93,7 +93,7 @@ void run_animate(const AnimateOptions& options, const std::string& audio_path, c
             std::filesystem::absolute(options.output_path).parent_path();
         linked_url = std::filesystem::relative(std::filesystem::absolute(audio_path), page_folder).generic_string();
     }
-    make_talking_face(options, audio_path, talkface::load_transcript(transcript_path), linked_url);
+    make_talking_face(options, audio_path, load_transcript_to_time(transcript_path), linked_url);
 }
 
 }  // namespace

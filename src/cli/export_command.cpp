@@ -37,7 +37,7 @@ void run_export(const ExportOptions& options) {
     const std::string& output_path = options.animate.output_path;
     // The format is settled before the long work, so that a wrong suffix fails at once.
     const std::string format = options.format.empty() ? talkface::export_format_for_path(output_path) : options.format;
-    const talkface::Timeline transcript = talkface::load_transcript(options.transcript_path);
+    const talkface::Timeline transcript = load_transcript_to_time(options.transcript_path);
     TalkingFace talking;
     {
         const std::unique_ptr<ProgressBar> bar = make_progress_bar(options.animate.quiet);

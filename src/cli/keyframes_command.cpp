@@ -139,7 +139,7 @@ std::vector<talkface::ExpressionEvent> read_events(const std::string& path) {
 
 talkface::Timeline timeline_for(const KeyframesOptions& options) {
     if (!options.timeline_path.empty()) return talkface::load_timeline_json(options.timeline_path);
-    const talkface::Timeline transcript = talkface::load_transcript(options.transcript_path);
+    const talkface::Timeline transcript = load_transcript_to_time(options.transcript_path);
     talkface::Timeline timeline = timed_speech(options.audio_path, transcript, options.timing);
     report_warnings(timeline);
     return timeline;

@@ -21,6 +21,21 @@ void add_timing_option(CLI::App& command, SpeechTiming& timing) {
         ->check(CLI::ExistingFile);
 }
 
+talkface::Timeline load_transcript_to_time(const std::string& path) {
+    talkface::Timeline transcript = talkface::load_transcript(path);
+    if (!transcript.syllables.empty()) return transcript;
+    if (transcript.sentences.empty() && transcript.warnings.empty())
+        throw talkface::InvalidArgument(path, "no text to align: the transcript holds no sentence");
+    std::string message = "no syllables to align: " + std::to_string(transcript.sentences.size()) +
+                          " sentences, none with a Mandarin reading";
+    if (!transcript.warnings.empty()) {
+        message += "; " + transcript.warnings.front();
+        if (transcript.warnings.size() > 1)
+            message += " (and " + std::to_string(transcript.warnings.size() - 1) + " more warnings)";
+    }
+    throw talkface::InvalidArgument(path, message);
+}
+
 talkface::Timeline timed_speech(const std::string& audio_path, const talkface::Timeline& transcript,
                                 const SpeechTiming& timing, const talkface::ProgressCallback& progress) {
     talkface::AlignOptions options;

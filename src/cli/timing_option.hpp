@@ -24,6 +24,11 @@ void add_timing_option(CLI::App& command, SpeechTiming& timing);
 // Adds --lenient alone (the align command has no --timing).
 void add_lenient_option(CLI::App& command, bool& lenient);
 
+// The transcript of a command that times it (talkface::load_transcript). Throws
+// talkface::InvalidArgument naming `path` for a transcript with no syllable to time (an empty file,
+// only punctuation or symbols), with the first thing the reader skipped, before any audio is read.
+talkface::Timeline load_transcript_to_time(const std::string& path);
+
 // The transcript spoken in `audio_path`: timed by the --timing file when there is one
 // (talkface::time_transcript: subtitle cues pin the aligner, lenient with --lenient), else aligned
 // (SpeechAligner::align_file, lenient with --lenient). Throws CLI::ValidationError (exit 2) for

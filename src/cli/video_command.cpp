@@ -173,7 +173,7 @@ void setup_video_command(CLI::App& app) {
     add_speech_arguments(*video, *audio_path, *transcript_path);
     add_video_options(*video, *options);
     video->callback([options, audio_path, transcript_path] {
-        make_video(*options, *audio_path, talkface::load_transcript(*transcript_path));
+        make_video(*options, *audio_path, load_transcript_to_time(*transcript_path));
     });
 }
 

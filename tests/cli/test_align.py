@@ -142,6 +142,23 @@ def test_unreadable_audio_exits_1_naming_it(tmp_path):
     assert_nothing_written(tmp_path, not_audio)
 
 
+@pytest.mark.parametrize("command", ["align", "keyframes"])
+@pytest.mark.parametrize("text,said", [
+    ("", "no text to align"),
+    ("。。。！！", "no text to align"),
+    ("🙂🙂", '"🙂" (U+1F642) has no Mandarin reading; skipped (and 1 more warnings)'),
+])
+def test_a_transcript_with_nothing_to_align_is_named_with_what_was_skipped(tmp_path, command, text, said):
+    audio, _ = clip("one_sentence")
+    transcript = tmp_path / "line.txt"
+    transcript.write_text(text, encoding="utf-8")
+    result = run(command, audio, transcript, "-o", tmp_path / "out")
+    assert result.returncode == 1
+    assert result.stderr.startswith(f"talkface: error: {transcript}: no ")
+    assert said in result.stderr
+    assert_nothing_written(tmp_path, transcript)
+
+
 @pytest.mark.parametrize("clip_name,text,named", [
     ("one_sentence", "我很好。", '"我很好。"'),                           # the wrong text: the sentence is named
     ("two_sentences", "今天下午有雨。我们明天再去吧。他们都很好。", "sentence"),  # an extra sentence

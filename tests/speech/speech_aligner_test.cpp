@@ -371,6 +371,16 @@ TEST_SUITE("SpeechAligner") {
         }
     }
 
+    TEST_CASE("a transcript with nothing to align says what its reader skipped") {
+        const SpeechAligner aligner;
+        const Timeline symbols = read_transcript("\xF0\x9F\x99\x82 \xE2\x99\xAA");  // a smiley, a note
+        CHECK_THROWS_WITH_AS(aligner.align_file(clip_path("one_sentence.wav"), symbols),
+                             doctest::Contains("no syllables to align (0 sentences, none with a Mandarin reading; <transcript>:1:1: "),
+                             InvalidArgument);
+        CHECK_THROWS_WITH_AS(aligner.align_file(clip_path("one_sentence.wav"), symbols),
+                             doctest::Contains("has no Mandarin reading; skipped (and 1 more warnings))"), InvalidArgument);
+    }
+
     TEST_CASE("unreadable, empty, silent and truncated audio name the file and what is wrong") {
         const SpeechAligner aligner;
         const Timeline transcript = read_transcript("ni3 hao3.");
