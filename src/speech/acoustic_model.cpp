@@ -37,9 +37,9 @@ void observe(const FeatureTrack& track, const LoudnessProfile& loudness, const F
     std::vector<float> energy(frames), low(frames), high(frames);
     for (std::size_t i = 0; i < frames; ++i) {
         const std::size_t t = span.first_frame + i;
-        energy[i] = std::max(0.0f, track.at(t, kEnergyDb) - loudness.energy_floor_db);
-        low[i] = std::max(0.0f, track.at(t, kLowBandDb) - loudness.low_floor_db);
-        high[i] = std::max(0.0f, track.at(t, kHighBandDb) - loudness.high_floor_db);
+        energy[i] = std::max(0.0f, track.at(t, kEnergyDb) - loudness.energy_sound_floor_db);
+        low[i] = std::max(0.0f, track.at(t, kLowBandDb) - loudness.low_sound_floor_db);
+        high[i] = std::max(0.0f, track.at(t, kHighBandDb) - loudness.high_sound_floor_db);
     }
     // Levels relative to this sentence's loud frames: the same sound reads the same at any gain
     // and any noise level (SPEC "Alignment": loudness above the noise floor).

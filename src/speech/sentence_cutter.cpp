@@ -35,6 +35,10 @@ constexpr float kNoiseWanderDb = 4.0f;
 constexpr double kSentenceDurationSigma = 0.35;
 constexpr double kPauseWeight = 1.5;
 constexpr double kNegativeInfinity = -std::numeric_limits<double>::infinity();
+// A frame of exact zeros reads 10 log10 of frame_features' energy floor (1e-10): -100 dB. Below
+// this it is digital silence, not a sound. The floor of what sound there is needs a few frames.
+constexpr float kDigitalSilenceDb = -99.0f;
+constexpr std::size_t kMinSoundFrames = 20;
 
 float percentile(std::vector<float> values, double fraction) {
     const auto index = static_cast<std::size_t>(fraction * static_cast<double>(values.size() - 1));
@@ -46,6 +50,14 @@ float column_percentile(const FeatureTrack& track, int column, double fraction) 
     std::vector<float> values(track.frame_count);
     for (std::size_t t = 0; t < track.frame_count; ++t) values[t] = track.at(t, column);
     return percentile(std::move(values), fraction);
+}
+
+// column_percentile over the frames that are not digital silence; `fallback` where too few are.
+float sound_percentile(const FeatureTrack& track, int column, double fraction, float fallback) {
+    std::vector<float> values;
+    for (std::size_t t = 0; t < track.frame_count; ++t)
+        if (track.at(t, kEnergyDb) > kDigitalSilenceDb) values.push_back(track.at(t, column));
+    return values.size() < kMinSoundFrames ? fallback : std::max(fallback, percentile(std::move(values), fraction));
 }
 
 std::string seconds(std::size_t frame) { return format_fixed(static_cast<double>(frame) * kFrameStepS, 2); }
@@ -222,6 +234,9 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     profile.low_floor_db = column_percentile(track, kLowBandDb, kFloorPercentile);
     profile.mid_floor_db = column_percentile(track, kMidBandDb, kFloorPercentile);
     profile.high_floor_db = column_percentile(track, kHighBandDb, kFloorPercentile);
+    profile.energy_sound_floor_db = sound_percentile(track, kEnergyDb, kFloorPercentile, profile.energy_floor_db);
+    profile.low_sound_floor_db = sound_percentile(track, kLowBandDb, kFloorPercentile, profile.low_floor_db);
+    profile.high_sound_floor_db = sound_percentile(track, kHighBandDb, kFloorPercentile, profile.high_floor_db);
     const std::size_t frames = track.frame_count;
     std::vector<float> raw(frames);
     for (std::size_t t = 0; t < frames; ++t) {

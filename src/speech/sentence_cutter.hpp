@@ -40,6 +40,12 @@ struct LoudnessProfile {
     float low_floor_db = 0.0f;
     float mid_floor_db = 0.0f;
     float high_floor_db = 0.0f;
+    // The same floors over the frames that hold any sound, for the acoustic observations: exact
+    // digital zeros (a recording padded with silence, a muted stretch) all read one level, far
+    // below any noise, and a floor there puts every sound near the loudest (measure_loudness).
+    float energy_sound_floor_db = 0.0f;
+    float low_sound_floor_db = 0.0f;
+    float high_sound_floor_db = 0.0f;
     float activity_threshold_db = 0.0f;     // a frame is speech when its activity is above this
     float speech_level_db = 0.0f;           // the activity of loud speech: its 95th percentile
     std::vector<float> activity_db;         // per frame: the loudest band above its floor, smoothed
