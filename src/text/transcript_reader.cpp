@@ -66,14 +66,15 @@ bool closes_quote(char32_t c) {
            c == 0xFE42 || c == 0xFE44;
 }
 
-// Punctuation that is not spoken (quotes, brackets, dashes, dots between names) stays in the
-// sentence text silently. Symbols a reader says aloud (% $ + = & @ #) are not here: they get a
+// Punctuation that is not spoken (quotes, brackets, dashes, dots between names, a tilde: GB/T
+// 15834's 连接号, which a chat line also writes to draw a word out, 好的～) stays in the sentence
+// text silently. Symbols a reader says aloud (% $ + = & @ #) are not here: they get a
 // warning like letters and digits, since the speech holds words the transcript lacks there.
 bool is_silent_punctuation(char32_t c) {
     const auto a = ascii_form(c);
     if (a < 0x80) {
         return a == '"' || a == '\'' || a == '(' || a == ')' || a == '[' || a == ']' || a == '<' ||
-               a == '>' || a == '-' || a == '_' || a == '/' || a == '\\' || a == '`' || a == '|';
+               a == '>' || a == '-' || a == '_' || a == '/' || a == '\\' || a == '`' || a == '|' || a == '~';
     }
     return c == 0xB7 /*·*/ || c == 0x30FB /*・*/ || (c >= 0x2010 && c <= 0x2027) ||
            (c >= 0x2032 && c <= 0x205E) || (c >= 0x3000 && c <= 0x303F) || (c >= 0xFE10 && c <= 0xFE1F) ||
@@ -132,9 +133,12 @@ std::string latin_spelling(const std::vector<CodePoint>& text, std::size_t start
     return spelling;
 }
 
+// The character as written: a full-width one (～) is named by its own code point, not the ASCII
+// form it is read as.
 std::string describe_character(const CodePoint& c) {
+    const auto written = decode_utf8(c.text, "<character>").front().value;
     char code[16];
-    std::snprintf(code, sizeof code, "U+%04X", static_cast<unsigned>(c.value));
+    std::snprintf(code, sizeof code, "U+%04X", static_cast<unsigned>(written));
     if (c.value < 0x20 || c.value == 0x7F) return code;
     return "\"" + std::string(c.text) + "\" (" + code + ")";
 }
@@ -270,9 +274,9 @@ private:
             add_form(text, i, i + 1, read_words("每"));
             return i + 1;
         }
-        if (const auto relation = detail::said_relation(text, i); !relation.empty()) {
+        if (const auto sign = detail::said_math_sign(text, i); !sign.empty()) {
             form_warnings_ = timeline_.warnings.size();
-            add_form(text, i, i + 1, read_words(std::string(relation)));
+            add_form(text, i, i + 1, read_words(std::string(sign)));
             return i + 1;
         }
         if (ends_sentence(c.value)) {
@@ -335,7 +339,9 @@ private:
             return start + 1;
         }
         std::string word = latin_spelling(text, start, end);
-        if (end + 1 < text.size() && text[end].value == '-' && is_ascii_letter(text[end + 1].value)) {
+        // A hyphen in a formula is a minus sign (a-b>0), not a join.
+        if (end + 1 < text.size() && text[end].value == '-' && is_ascii_letter(text[end + 1].value) &&
+            detail::said_math_sign(text, end).empty()) {
             const auto second_end = letters_end(end + 1);
             const auto joined = word + latin_spelling(text, end + 1, second_end);
             if (std::any_of(joined.begin(), joined.end(), [](char l) { return l >= 'a' && l <= 'z'; }) &&
@@ -389,7 +395,7 @@ private:
             if (part.kind == detail::AddressPart::Kind::words) {
                 append(read_words(part.text));
             } else if (part.kind == detail::AddressPart::Kind::digits) {
-                append(read_words(detail::digit_words(part.text)));
+                append(read_words(detail::digit_words(part.text, detail::is_named_service_number(part.text))));
             } else if (detail::is_all_capitals(part.text)) {
                 append(latin_word_syllables(part.text, at));
             } else if (auto found = detail::english_word_syllables(part.text)) {

@@ -1,5 +1,6 @@
 #include "text/written_numbers.hpp"
 
+#include <algorithm>
 #include <string_view>
 
 #include "text/latin_words.hpp"
@@ -56,8 +57,23 @@ WrittenNumber parse_number(const std::vector<CodePoint>& text, std::size_t i) {
     return number;
 }
 
+// A month and a day of it, each of one or two digits (a longer run is no date, and is not parsed
+// as a number: 2026-12-123456789012345678901 is read digit by digit, not thrown on).
+bool is_month_and_day(const std::string& month, const std::string& day) {
+    if (month.empty() || month.size() > 2 || day.empty() || day.size() > 2) return false;
+    const int month_value = std::stoi(month);
+    const int day_value = std::stoi(day);
+    return month_value >= 1 && month_value <= 12 && day_value >= 1 && day_value <= 31;
+}
+
 bool is_one_of(char32_t c, std::u32string_view set) {
     return set.find(c) != std::u32string_view::npos;
+}
+
+std::string text_between(const std::vector<CodePoint>& text, std::size_t first, std::size_t end) {
+    std::string between;
+    for (std::size_t i = first; i < std::min(end, text.size()); ++i) between += text[i].text;
+    return between;
 }
 
 // Measure words and magnitudes before which 2 is 两 (两本书, 两个, 两万, 两步, 两男三女). Not 月 号
@@ -75,6 +91,18 @@ bool names_by_digits(char32_t c) {
     return is_one_of(c, U"室房路号號");
 }
 
+// A room's or a building's name after the number at text[end): a word of up to three characters
+// ending in 室 (302会议室, 306教室: a measure word first, 200间教室, counts) or 大楼 大厦 (台北101
+// 大樓): the number names it as 305室 does.
+bool names_room_or_building(const std::vector<CodePoint>& text, std::size_t end) {
+    constexpr std::size_t kLongestWord = 3;  // characters: 会议室, 办公室
+    if (end >= text.size() || takes_liang(text[end].value)) return false;
+    for (std::size_t k = end; k < std::min(text.size(), end + kLongestWord); ++k)
+        if (is_one_of(text[k].value, U"室")) return true;
+    const auto word = text_between(text, end, end + 2);
+    return word == "大楼" || word == "大樓" || word == "大厦" || word == "大廈";
+}
+
 // Service and emergency numbers (110 police, 119 fire, 120 ambulance, 12345 the city's hotline,
 // 10086 a carrier, 95xxx a bank's line): said digit by digit with 幺 where they are dialled or
 // named (打110, 110报警), as cardinals where they count (120人, 时速120).
@@ -89,12 +117,6 @@ bool is_service_number(const std::string& digits) {
 // no one says 一万二千三百零六 of it. 12345 and 10000 are counts as often as names.
 bool is_named_anywhere(const std::string& digits) {
     return digits.size() == 5 && digits != "12345" && digits != "10000";
-}
-
-std::string text_between(const std::vector<CodePoint>& text, std::size_t first, std::size_t end) {
-    std::string between;
-    for (std::size_t i = first; i < std::min(end, text.size()); ++i) between += text[i].text;
-    return between;
 }
 
 bool ends_with(const std::string& text, std::string_view end) {
@@ -160,6 +182,24 @@ bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t
                                         "落后", "落後", "险胜", "險勝", "大胜", "大勝", "完胜", "完勝", "逆转", "逆轉",
                                         "告负", "告負", "胜", "勝", "负", "負", "赢", "贏", "输", "輸"})
         if (after.rfind(word, 0) == 0) return true;
+    return false;
+}
+
+// A day named by its date's digits (520 五二零, 618大促 六一八大促, 今天是1111): three or four digits
+// that are a month and a day, a festival's or a sale's word right after them or a day's before
+// them (今天是). Elsewhere such a number counts (520人, 股价涨到了520).
+bool names_a_day(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
+    const auto& digits = number.whole;
+    if (number.has_point || number.has_separators || digits.size() < 3 || digits.size() > 4) return false;
+    const auto month_length = digits.size() - 2;
+    if (!is_month_and_day(digits.substr(0, month_length), digits.substr(month_length))) return false;
+    const std::string after = text_between(text, number.end, number.end + 3);
+    for (const std::string_view word : {"节", "節", "大促", "促销", "促銷", "购物", "購物", "晚会", "晚會", "活动", "活動",
+                                        "当天", "當天", "这天", "這天", "那天", "快乐", "快樂", "狂欢", "狂歡", "表白"})
+        if (after.rfind(word, 0) == 0) return true;
+    const std::string before = text_before(text, start, true);
+    for (const std::string_view word : {"今天是", "明天是", "昨天是", "后天是", "後天是", "今天就是", "又到了", "迎来", "迎來"})
+        if (ends_with(before, word)) return true;
     return false;
 }
 
@@ -263,6 +303,8 @@ const Currency* currency_at(const std::vector<CodePoint>& text, std::size_t i, s
     return nullptr;
 }
 
+constexpr const char* kTooLongWarning = "a number of more than 16 digits; read digit by digit";
+
 // How one number is said, given what follows it.
 struct NumberContext {
     char32_t next = 0;          // the code point after the form ('%' counts as the unit)
@@ -272,7 +314,10 @@ struct NumberContext {
     bool is_named = false;      // a naming word right before it (房间号是1208)
     bool is_service_call = false;  // dialled or named (打110, 110报警)
     bool is_model = false;      // right after the capitals of a model's name (C919, A380) or a maker (波音737)
-    bool is_train = false;      // a train's number (G1234次)
+    bool is_train = false;      // a train's or a flight's number (G1234次, CA1831航班)
+    bool has_currency = false;  // a currency sign before it (¥666)
+    bool names_place = false;   // a room's or a building's name after it (302会议室, 101大楼)
+    bool names_day = false;     // a day named by its date's digits (618大促, 今天是520)
     bool names_type = false;    // before 型 or 式, a type's number (737型, 99式)
     bool is_generation = false;  // two digits right before 后 (90后, 00后)
     bool is_hundredths = false;  // right after the seconds of a time (9秒83)
@@ -298,7 +343,7 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
     }
     if (whole.size() > kMostCardinalDigits) {
         said.words = digit_words(whole);
-        said.warning = "a number of more than 16 digits; read digit by digit";
+        said.warning = kTooLongWarning;
         return said;
     }
     if (!number.has_separators) {
@@ -313,11 +358,20 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
             said.words = digit_words(whole);
             return said;
         }
+        // A train's or a flight's number is said digit by digit with 幺 for 1, as station and
+        // airport announcers say it (G101次 G幺零幺次, CA1831 C A 幺八三幺).
+        if (context.is_train) {
+            said.words = digit_words(whole, true);
+            return said;
+        }
         // A generation (90后 九零后), the hundredths of a sprint (9秒83 九秒八三), a model's
-        // number of three or more digits (C919 C九一九, A380, G1234次) and a type's of two or more
-        // (99式 九九式, 737型) are said digit by digit.
+        // number of three or more digits (C919 C九一九, A380) and a type's of two or more (99式
+        // 九九式, 737型), a day named by its date (618 六一八) and one digit said three or more
+        // times over, as a chat cheers (666 六六六, 888), are said digit by digit.
+        const bool is_one_digit_over = whole.size() >= 3 && whole.find_first_not_of(whole.front()) == std::string::npos;
         if (!counts && (context.is_generation || context.is_hundredths || (context.is_model && whole.size() >= 3) ||
-                        (context.names_type && whole.size() >= 2))) {
+                        (context.names_type && whole.size() >= 2) || context.names_day ||
+                        (is_one_digit_over && !context.has_currency && !context.is_ordinal))) {
             said.words = digit_words(whole);
             return said;
         }
@@ -330,7 +384,7 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
             said.words = digit_words(whole, true);
             return said;
         }
-        if (whole.size() >= 3 && (names_by_digits(context.next) || context.is_named)) {
+        if (whole.size() >= 3 && (names_by_digits(context.next) || context.is_named || (context.names_place && !counts))) {
             said.words = digit_words(whole);
             return said;
         }
@@ -384,6 +438,17 @@ bool is_dash(char32_t c) {
     return c == '-' || c == 0x2013 /*–*/ || c == 0x2014 /*—*/ || c == 0x2212 /*−*/;
 }
 
+// A sign of a relation between two terms, as a lesson writes it: = ≈ ≠ < > ≤ ≥.
+bool is_relation_sign(char32_t c) {
+    return is_one_of(c, U"=<>\u2248\u2260\u2264\u2265");
+}
+
+// A relation sign after text[end] (spaces allowed): the numbers before it are a lesson's terms.
+bool relation_follows(const std::vector<CodePoint>& text, std::size_t end) {
+    while (value_at(text, end) == ' ') ++end;
+    return is_relation_sign(value_at(text, end));
+}
+
 bool is_range_mark(char32_t c) {
     return is_dash(c) || c == '~' || c == 0x301C /*〜*/;
 }
@@ -399,11 +464,7 @@ std::optional<SpokenForm> read_numeric_date(const std::vector<CodePoint>& text, 
     if (month.empty() || month.size() > 2 || value_at(text, i) != separator) return std::nullopt;
     ++i;
     const auto day = digits_from(text, i);
-    const int month_value = month.empty() ? 0 : std::stoi(month);
-    const int day_value = day.empty() ? 0 : std::stoi(day);
-    if (day.empty() || day.size() > 2 || month_value < 1 || month_value > 12 || day_value < 1 || day_value > 31) {
-        return std::nullopt;
-    }
+    if (!is_month_and_day(month, day)) return std::nullopt;
     SpokenForm form;
     form.words = digit_words(year.whole) + "年" + cardinal_words(month, false) + "月" + cardinal_words(day, false) + "日";
     form.end = i;
@@ -423,7 +484,10 @@ std::optional<SpokenForm> read_dashed_digits(const std::vector<CodePoint>& text,
     const bool looks_like_phone = first.whole.front() == '0' || groups.size() >= 3 || is_phone;
     if (groups.size() < 2 || !looks_like_phone) return std::nullopt;
     SpokenForm form;
-    for (const auto& group : groups) form.words += digit_words(group, true);
+    for (const auto& group : groups) {
+        form.words += digit_words(group, true);
+        if (group.size() > kMostCardinalDigits && form.warning.empty()) form.warning = kTooLongWarning;
+    }
     form.end = i;
     return form;
 }
@@ -436,20 +500,26 @@ bool follows_date_or_time(const std::vector<CodePoint>& text, std::size_t mark) 
            is_digit_at(text, mark - 4);
 }
 
-// Right after the capitals that name a model, with nothing, a hyphen or a space between (C919,
-// A380, B-52, RTX 4090): one to three capitals that start a word and are spelled (TOP in TOP 10
-// is the word top, a rank: latin_words.hpp).
-bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start) {
+// The capitals of a model's name right before text[start], with nothing, a hyphen or a space
+// between (C919, A380, B-52, RTX 4090): one to three capitals that start a word and are spelled
+// (TOP in TOP 10 is the word top, a rank: latin_words.hpp), not after a digit (4K 120帧: the 4K is
+// a quantity, and 120 counts). Empty where there are none.
+std::string model_name_before(const std::vector<CodePoint>& text, std::size_t start) {
     auto i = start;
     if (i > 0 && (text[i - 1].value == '-' || text[i - 1].value == ' ')) --i;
     std::string capitals;
     while (i > 0 && is_ascii_capital(value_at(text, i - 1))) {
         --i;
-        capitals.insert(capitals.begin(), static_cast<char>(text[i].value));
+        capitals.insert(capitals.begin(), static_cast<char>(ascii_form(text[i].value)));
     }
     constexpr std::size_t kMostCapitals = 3;
-    return !capitals.empty() && capitals.size() <= kMostCapitals && !is_said_as_word(capitals) &&
-           (i == 0 || !is_ascii_letter(value_at(text, i - 1)));
+    const bool starts_word = i == 0 || !(is_ascii_letter(value_at(text, i - 1)) || is_digit_at(text, i - 1));
+    if (capitals.size() > kMostCapitals || is_said_as_word(capitals) || !starts_word) return {};
+    return capitals;
+}
+
+bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start) {
+    return !model_name_before(text, start).empty();
 }
 
 // Right after a word with a small letter, with nothing between (Tiger2024, user123): a user
@@ -476,10 +546,32 @@ bool follows_aircraft_maker(const std::vector<CodePoint>& text, std::size_t star
 }
 
 // A train's number: one capital of a train's class (G D C Z T K L Y S) right before the digits and
-// 次 after them (G1234次 G一二三四次): 次 names the train there, it does not count.
+// 次 after them (G1234次: 次 names the train there, it does not count) or 车次 before them in the
+// clause (车次：G101).
 bool is_train_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
-    return start >= 1 && is_one_of(value_at(text, start - 1), U"GDCZTKLYS") &&
-           (start < 2 || !is_ascii_letter(value_at(text, start - 2))) && is_one_of(value_at(text, end), U"次");
+    if (start < 1 || !is_one_of(value_at(text, start - 1), U"GDCZTKLYS") ||
+        (start >= 2 && is_ascii_letter(value_at(text, start - 2)))) {
+        return false;
+    }
+    const std::string before = text_before(text, start, true);
+    return is_one_of(value_at(text, end), U"次") || before.find("车次") != std::string::npos ||
+           before.find("車次") != std::string::npos;
+}
+
+// A flight's number: an airline's two capitals and three or four digits (CA1831, MU 5101), with
+// 航班 or 班机 right after it or earlier in the clause (航班号CA1831).
+bool is_flight_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    const auto digit_count = end - start;
+    if (model_name_before(text, start).size() != 2 || digit_count < 3 || digit_count > 4) return false;
+    const std::string after = text_between(text, end, end + 3);
+    const std::string before = text_before(text, start, true);
+    for (const std::string_view word : {"航班", "班机", "班機"}) {
+        if (after.rfind(word, 0) == 0 || after.rfind(std::string("次") + std::string(word), 0) == 0 ||
+            before.find(word) != std::string::npos) {
+            return true;
+        }
+    }
+    return false;
 }
 
 // A season, or a school or financial year, written as two years that follow each other
@@ -530,8 +622,66 @@ std::optional<SpokenForm> read_calling_code(const std::vector<CodePoint>& text, 
     if (!is_code) return std::nullopt;
     SpokenForm form;
     form.words = "加" + digit_words(code, true);
-    for (const auto& group : groups) form.words += digit_words(group, true);
+    for (const auto& group : groups) {
+        form.words += digit_words(group, true);
+        if (group.size() > kMostCardinalDigits && form.warning.empty()) form.warning = kTooLongWarning;
+    }
     form.end = end;
+    return form;
+}
+
+// Three or more groups of digits joined by dots: a date (2026.03.15: a four-digit year, a month
+// and a day, 二零二六年三月十五日), an IP address (four groups of up to three digits, each at most
+// 255: 192.168.1.1 一九二点一六八点一点一, digit by digit as it is read out) or a version (1.2.3
+// 一点二点三, 10.15.7 十点十五点七: each group a number, 点 between).
+std::optional<SpokenForm> read_dotted_groups(const std::vector<CodePoint>& text, std::size_t start) {
+    std::vector<std::string> groups;
+    auto i = start;
+    groups.push_back(digits_from(text, i));
+    while (value_at(text, i) == '.' && is_digit_at(text, i + 1)) {
+        ++i;
+        groups.push_back(digits_from(text, i));
+    }
+    constexpr std::size_t kFewestGroups = 3;
+    if (groups.size() < kFewestGroups) return std::nullopt;
+    SpokenForm form;
+    form.end = i;
+    if (groups.size() == 3 && groups[0].size() == 4 && is_month_and_day(groups[1], groups[2])) {
+        form.words = digit_words(groups[0]) + "年" + cardinal_words(groups[1], false) + "月" + cardinal_words(groups[2], false) + "日";
+        return form;
+    }
+    const bool is_ip_address = groups.size() == 4 && std::all_of(groups.begin(), groups.end(), [](const std::string& group) {
+                                   return group.size() <= 3 && std::stoi(group) <= 255;
+                               });
+    for (std::size_t k = 0; k < groups.size(); ++k) {
+        const auto& group = groups[k];
+        if (k > 0) form.words += "点";
+        if (group.size() > kMostCardinalDigits) {
+            form.words += digit_words(group);
+            form.warning = kTooLongWarning;
+        } else if (is_ip_address || (group.size() > 1 && group.front() == '0')) {
+            form.words += digit_words(group);
+        } else {
+            form.words += cardinal_words(group, false);
+        }
+    }
+    return form;
+}
+
+// A day named by its month and day with a middle dot between them, as an event is (3·15晚会 三一五
+// 晚会, 5·12地震 五一二, 9·11 九一一): digit by digit, the dot not said.
+std::optional<SpokenForm> read_dotted_day(const std::vector<CodePoint>& text, const WrittenNumber& month) {
+    const auto dot = value_at(text, month.end);
+    if (month.has_point || month.has_separators || !(dot == 0xB7 /*·*/ || dot == 0x30FB /*・*/ || dot == 0x2022 /*•*/) ||
+        !is_digit_at(text, month.end + 1)) {
+        return std::nullopt;
+    }
+    auto i = month.end + 1;
+    const auto day = digits_from(text, i);
+    if (!is_month_and_day(month.whole, day)) return std::nullopt;
+    SpokenForm form;
+    form.words = digit_words(month.whole) + digit_words(day);
+    form.end = i;
     return form;
 }
 
@@ -568,34 +718,50 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     context.is_model = sign_words.empty() && currency == nullptr &&
                        (follows_model_name(text, start) || follows_aircraft_maker(text, start) ||
                         follows_glued_name(text, start));
-    context.is_train = context.is_model && is_train_number(text, start, number.end);
+    context.is_train = context.is_model && !number.has_point && !number.has_separators &&
+                       (is_train_number(text, start, number.end) || is_flight_number(text, start, number.end));
+    context.has_currency = currency != nullptr;
+    context.names_place = names_room_or_building(text, number.end);
+    context.names_day = sign_words.empty() && currency == nullptr && names_a_day(text, start, number);
     context.names_type = is_one_of(value_at(text, number.end), U"型式");
     context.is_generation = number.whole.size() == 2 && !number.has_point && !number.has_separators &&
                             is_one_of(value_at(text, number.end), U"后後");
     context.is_hundredths = start >= 2 && text[start - 1].value == U'秒' && is_digit_at(text, start - 2);
     context.is_service_call = is_service_call(text, start, number.end);
     SpokenForm form;
+    // Two numbers said each alone with a word between: a score (3:1, and 2-1 where the clause
+    // speaks of a match: 2-1领先), a product (7×24 七乘二十四).
+    auto join_two = [&](const WrittenNumber& second, const char* joiner, const NumberContext& each) {
+        const auto first_said = say_number(number, each);
+        const auto second_said = say_number(second, each);
+        form.words = sign_words + first_said.words + joiner + second_said.words;
+        append_warning(form, first_said.warning);
+        append_warning(form, second_said.warning);
+        form.end = second.end;
+        return form;
+    };
     if (sign_words.empty() && currency == nullptr && value_at(text, number.end) == ':' &&
         is_digit_at(text, number.end + 1)) {
         auto second = parse_number(text, number.end + 1);
         if (!is_score(text, start, second.end)) {
             if (auto time = read_clock_time(text, number)) return time;
         }
-        form.words = say_number(number, context).words + "比" + say_number(second, context).words;
-        form.end = second.end;
-        return form;
+        return join_two(second, "比", context);
     }
-    // 7×24 七乘二十四: a product, each number said alone.
     if (is_one_of(value_at(text, number.end), U"×*") && is_digit_at(text, number.end + 1) && currency == nullptr) {
-        auto second = parse_number(text, number.end + 1);
-        form.words = sign_words + say_number(number, {}).words + "乘" + say_number(second, {}).words;
-        form.end = second.end;
-        return form;
+        return join_two(parse_number(text, number.end + 1), "乘", {});
     }
     if (sign_words.empty() && currency == nullptr) {
+        if (auto day = read_dotted_day(text, number)) return day;
+        if (auto dotted = read_dotted_groups(text, i)) return dotted;
         if (auto date = read_numeric_date(text, number)) return date;
         if (auto season = read_season(text, number)) return season;
         if (auto digits = read_dashed_digits(text, number, context.is_phone)) return digits;
+        if (is_dash(value_at(text, number.end)) && is_digit_at(text, number.end + 1)) {
+            auto second = parse_number(text, number.end + 1);
+            if (is_score(text, start, second.end)) return join_two(second, "比", {});
+            if (relation_follows(text, second.end)) return join_two(second, "减", {});  // 5-3=2
+        }
     }
     if (value_at(text, number.end) == '/' && is_digit_at(text, number.end + 1) && !number.has_point) {
         const auto denominator = parse_number(text, number.end + 1);
@@ -635,6 +801,15 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     std::size_t unit_end = end;
     const Unit* unit = unit_at(text, end, unit_end);
     context.next = value_at(text, end);
+    // A Latin unit after the number's 万 or 亿 (1.6万km² 一点六万平方公里) is said after it.
+    std::string magnitude_words;
+    if (unit == nullptr && currency == nullptr && is_one_of(context.next, U"万萬亿億")) {
+        const Unit* after_magnitude = unit_at(text, end + 1, unit_end);
+        if (after_magnitude != nullptr && after_magnitude->written != "%") {
+            unit = after_magnitude;
+            magnitude_words = is_one_of(context.next, U"万萬") ? "万" : "亿";
+        }
+    }
     context.has_unit = (unit != nullptr && unit->written != "%") || is_byte_unit_at(text, end);
     std::string unit_words = unit == nullptr ? "" : unit->words;
     const bool is_percent = unit != nullptr && unit->written == "%";
@@ -677,7 +852,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     }
     if (unit != nullptr) end = unit_end;
     if (is_per_mille) end += 1;
-    form.words += unit_words;
+    form.words += magnitude_words + unit_words;
     if (currency != nullptr) {
         // $5万 is 五万美元: the magnitude comes before the currency's name.
         if (is_one_of(value_at(text, end), U"万萬亿億千")) {
@@ -700,21 +875,90 @@ bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i) {
     return i > kLongestUnit && is_digit_at(text, i - kLongestUnit - 1);
 }
 
-std::string_view said_relation(const std::vector<CodePoint>& text, std::size_t i) {
-    const auto sign = value_at(text, i);
-    const char* words = sign == '=' ? "等于" : sign == 0x2248 /*≈*/ ? "约等于" : sign == 0x2260 /*≠*/ ? "不等于" : nullptr;
-    if (sign == '+' && i > 0 && is_digit_at(text, i - 1) && is_digit_at(text, i + 1)) return "加";  // 1+1
-    if (words == nullptr) return {};
-    const auto is_term = [&](std::size_t k) {
-        const auto c = value_at(text, k);
-        return (c >= '0' && c <= '9') || is_ascii_letter(c) || (c >= 0x3400 && c <= 0x9FFF);
+namespace {
+
+// Greek letters a lesson writes, said by the names Mandarin readers give them (π 派).
+std::string_view greek_letter_name(char32_t c) {
+    switch (c) {
+        case 0x3B1: return "阿尔法";        // α
+        case 0x3B2: return "贝塔";          // β
+        case 0x3B3: return "伽马";          // γ
+        case 0x394: case 0x3B4: return "德尔塔";  // Δ δ
+        case 0x3B8: return "西塔";          // θ
+        case 0x3BB: return "兰姆达";        // λ
+        case 0x3C0: return "派";            // π
+        case 0x3A3: case 0x3C3: return "西格马";  // Σ σ
+        case 0x3C6: return "斐";            // φ
+        case 0x3A9: case 0x3C9: return "欧米伽";  // Ω ω
+        default: return {};
+    }
+}
+
+// A term of a formula: a digit, a Latin or Greek letter, a closing bracket or a square (x², (a+b)).
+bool is_formula_term(char32_t c) {
+    return (c >= '0' && c <= '9') || is_ascii_letter(c) || !greek_letter_name(c).empty() || c == ')' || c == 0xB2 ||
+           c == 0xB3;
+}
+
+// A relation sign in the clause around text[i]: the signs in it are a formula's (a-b>0: 减).
+bool clause_has_relation(const std::vector<CodePoint>& text, std::size_t i) {
+    const auto ends_clause = [](char32_t c) {
+        return c == ',' || c == ';' || c == '!' || c == '?' || c == 0x3001 /*、*/ || c == 0x3002 /*。*/ || c == '\n';
     };
+    for (auto k = i; k < text.size() && !ends_clause(value_at(text, k)); ++k)
+        if (is_relation_sign(value_at(text, k))) return true;
+    for (auto k = i; k-- > 0 && !ends_clause(value_at(text, k));)
+        if (is_relation_sign(value_at(text, k))) return true;
+    return false;
+}
+
+}  // namespace
+
+bool is_named_service_number(const std::string& digits) {
+    return is_named_anywhere(digits) && is_service_number(digits);
+}
+
+std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t i) {
+    const auto sign = value_at(text, i);
+    if (const auto name = greek_letter_name(sign); !name.empty()) return name;
     auto before = i;
     while (before > 0 && text[before - 1].value == ' ') --before;
     auto after = i + 1;
     while (value_at(text, after) == ' ') ++after;
-    if (before == 0 || !is_term(before - 1) || !is_term(after)) return {};
-    return words;
+    const char32_t left = before > 0 ? value_at(text, before - 1) : 0;
+    const char32_t right = value_at(text, after);
+    const bool is_han_left = left >= 0x3400 && left <= 0x9FFF;
+    const bool is_han_right = right >= 0x3400 && right <= 0x9FFF;
+    const bool between_terms = is_formula_term(left) && is_formula_term(right);
+    switch (sign) {
+        case '=': case 0x2248: case 0x2260: {  // = ≈ ≠, between a character and a term too (答案是x=5, 等于号)
+            if (!(is_formula_term(left) || is_han_left) || !(is_formula_term(right) || is_han_right)) return {};
+            return sign == '=' ? "等于" : sign == 0x2248 ? "约等于" : "不等于";
+        }
+        case '>': return between_terms ? "大于" : "";  // ASCII < > around words are brackets: <标题>
+        case '<': return between_terms ? "小于" : "";
+        case 0x2265: return between_terms ? "大于等于" : "";  // ≥
+        case 0x2264: return between_terms ? "小于等于" : "";  // ≤
+        // + between two digits (1+1), two letters (A+B) or in a formula (x+1=3); - only in a formula,
+        // since a hyphen joins words and numbers elsewhere (Wi-Fi, B-52).
+        case '+': {
+            const bool letters = is_ascii_letter(left) && is_ascii_letter(right);
+            const bool digits = left >= '0' && left <= '9' && right >= '0' && right <= '9';
+            return between_terms && (letters || digits || clause_has_relation(text, i)) ? "加" : "";
+        }
+        case '-': case 0x2212: return between_terms && clause_has_relation(text, i) ? "减" : "";
+        case 0xD7: return between_terms ? "乘" : "";     // ×
+        case 0xF7: return between_terms ? "除以" : "";   // ÷
+        case 0x221A: return is_formula_term(right) || right == '(' ? "根号" : "";  // √2, √(x+1)
+        // A square or a cube after a term: x² x平方, 3² 三的平方.
+        case 0xB2: case 0xB3: {
+            if (!is_formula_term(left) || before != i) return {};
+            const bool after_digit = left >= '0' && left <= '9';
+            if (sign == 0xB2) return after_digit ? "的平方" : "平方";
+            return after_digit ? "的立方" : "立方";
+        }
+        default: return {};
+    }
 }
 
 }  // namespace talkface::detail

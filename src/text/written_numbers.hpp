@@ -32,11 +32,18 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
 // character. Elsewhere a slash is not said (男/女).
 bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i);
 
-// What the relation sign at text[i] is said as where it stands between two terms (a letter, a
-// digit or a Chinese character on each side, spaces allowed): = 等于, ≈ 约等于, ≠ 不等于, as a
-// lesson reads x=5, and + between two digits 加 (1+1=2); empty elsewhere (a row of = under a
-// heading is not said).
-std::string_view said_relation(const std::vector<CodePoint>& text, std::size_t i);
+// What the sign at text[i] of a formula is said as, as a lesson reads it; empty where it is not
+// said so. Between two terms (a digit, a letter or a closing bracket each side, spaces allowed):
+// = 等于, ≈ 约等于, ≠ 不等于 (a Chinese character may stand beside them too: 答案是x=5), > 大于,
+// < 小于, ≥ 大于等于, ≤ 小于等于, × 乘, ÷ 除以, + 加 between two digits or two letters (1+1, A+B)
+// or in a clause with a relation sign (x+y=10), - 减 only there (a-b>0; elsewhere a hyphen joins,
+// Wi-Fi). √ before a term is 根号, ² and ³ after one 平方 and 立方 (的平方 after a digit: 3²), and
+// a Greek letter is said by its name (π 派, α 阿尔法). A row of = under a heading is not said.
+std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t i);
+
+// True for a service number that is a name wherever it does not count (12306, 12315, 95588: five
+// digits), said digit by digit with 幺 for 1 also in a web address (www.12306.cn).
+bool is_named_service_number(const std::string& digits);
 
 }  // namespace talkface::detail
 

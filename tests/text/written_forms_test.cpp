@@ -240,7 +240,7 @@ TEST_SUITE("written forms") {
             {"空客 320", "空客三二零"},
             {"99式坦克", "九九式坦克"},
             {"2型糖尿病", "二型糖尿病"},
-            {"G1234次列车", "ji一二三四次列车"},
+            {"G1234次列车", "ji幺二三四次列车"},
             {"RTX 4090显卡", "a er ti ai ke si四零九零显卡"},
             {"CPU 100%", "xi pi you百分之一百"},
             // + before a percentage: 涨, or nothing where the clause names the change; - is 负.
@@ -406,6 +406,90 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("a train's or a flight's number is said digit by digit with 幺, as announcers say it") {
+        check_cases({
+            {"G101次列车", "ji幺零幺次列车"},
+            {"G1次", "ji幺次"},
+            {"车次：D2218", "车次 di二二幺八"},
+            {"CA1831航班", "xi ei幺八三幺航班"},
+            {"航班号MU5101", "航班号 ai mu you五幺零幺"},
+            // Without a flight's word it is a model's number, and a model's number keeps 一.
+            {"国产C919客机", "国产 xi九一九客机"},
+            {"MU5101", "ai mu you五一零一"},
+            {"RTX 4090显卡", "a er ti ai ke si四零九零显卡"},
+        });
+    }
+
+    TEST_CASE("a formula is read as a lesson reads it: signs between terms, roots, squares, Greek letters") {
+        check_cases({
+            {"已知x+y=10", "已知 ai ke si加 wai等于十"},
+            {"如果a-b>0", "如果 ei减 bi大于零"},
+            {"x-1=0", "ai ke si减一等于零"},
+            {"5-3=2", "五减三等于二"},
+            {"12÷3=4", "十二除以三等于四"},
+            {"求a×b", "求 ei乘 bi"},
+            {"x≥1，y≤2", "ai ke si大于等于一 wai小于等于二"},
+            {"A+B轮融资", "ei加 bi轮融资"},
+            {"π≈3.14", "派约等于三点一四"},
+            {"S=πr²", "ai si等于派 a er平方"},
+            {"√2约等于1.414", "根号二约等于一点四一四"},
+            {"3²=9", "三的平方等于九"},
+            {"α+β=90°", "阿尔法加贝塔等于九十度"},
+            // Outside a formula a hyphen joins, a dash is a range, angle brackets are brackets.
+            {"免费Wi-Fi", "免费 wai fa"},
+            {"3-5天", "三到五天"},
+            {"<通知>", "通知"},
+        });
+    }
+
+    TEST_CASE("dotted groups of digits: a date, an IP address, a version; a middle dot names a day") {
+        check_cases({
+            {"2026.03.15起施行", "二零二六年三月十五日起施行"},
+            {"地址是192.168.1.1", "地址是一九二点一六八点一点一"},
+            {"升级到1.2.3版本", "升级到一点二点三版本"},
+            {"macOS 10.15.7", "ma ke ou ai si十点十五点七"},
+            {"3.14", "三点一四"},
+            {"3·15晚会", "三一五晚会"},
+            {"5·12地震", "五一二地震"},
+            {"9・11事件", "九一一事件"},
+        });
+    }
+
+    TEST_CASE("a dash score, a number that names a day, a room or a building, and one digit said over") {
+        check_cases({
+            {"主队2-1领先", "主队二比一领先"},
+            {"比分3-0", "比分三比零"},
+            {"今天是520", "今天是五二零"},
+            {"618大促", "六一八大促"},
+            {"来了520人", "来了五百二十人"},
+            {"股价涨到了520", "股价涨到了五百二十"},
+            {"666，带带我", "六六六带带我"},
+            {"¥666", "六百六十六元"},
+            {"第111名", "第一百一十一名"},
+            {"请到302会议室", "请到三零二会议室"},
+            {"共有200间教室", "共有二百间教室"},
+            {"台北101大樓", "台北一零一大樓"},
+            {"面积约1.6万km²", "面积约一点六万平方公里"},
+            {"支持4K 120帧", "支持四 kei一百二十帧"},
+            {"请登录www.12306.cn", "请登录 da bu liu da bu liu da bu liu点幺二三零六点 xi en"},
+        });
+    }
+
+    TEST_CASE("a tilde is punctuation; a symbol without a reading is warned of by its own code point") {
+        check_cases({
+            {"好的呀～", "好的呀"},
+            {"嗯嗯~", "嗯嗯"},
+            {"3~5天", "三到五天"},
+        });
+        const auto emoji = read_transcript("今天好开心😄", {}, "t.txt");
+        CHECK(said(emoji) == "今天好开心");
+        REQUIRE(emoji.warnings.size() == 1);
+        CHECK(emoji.warnings[0] == "t.txt:1:6: \"😄\" (U+1F604) has no Mandarin reading; skipped");
+        const auto full_width = read_transcript("A＆B", {}, "t.txt");
+        REQUIRE(full_width.warnings.size() == 1);
+        CHECK(full_width.warnings[0] == "t.txt:1:2: \"＆\" (U+FF06) has no Mandarin reading; skipped");
+    }
+
     TEST_CASE("a country calling code is 加 and its digits, with the groups of the number after it") {
         check_cases({
             {"电话：+86 10 6512 3456", "电话加八六幺零六五幺二三四五六"},
@@ -544,6 +628,19 @@ TEST_SUITE("written forms") {
         const auto long_decimal = read_transcript(std::string(40, '9') + ".5");
         CHECK(long_decimal.syllables.size() == 42);
         CHECK(long_decimal.warnings.size() == 1);
+        // Every form a long run of digits can stand in is read digit by digit with a warning,
+        // never thrown on (a date's day was parsed as a number and overflowed).
+        const std::string long_run(24, '7');
+        for (const auto& form : {"2026-12-" + long_run, "2026/12/" + long_run, long_run + ":30", "3:" + long_run,
+                                 long_run + "×2", "1.2." + long_run, "2026.03." + long_run, long_run + "-3=1",
+                                 "比分" + long_run + "-1", "+86 " + long_run, "010-" + long_run, long_run + "万km",
+                                 "今天是" + long_run, long_run + "会议室", "CA" + long_run + "航班"}) {
+            CAPTURE(form);
+            const auto read = read_transcript(form);
+            CHECK(read.warnings.size() == 1);
+            CHECK(said(read).find(std::string(long_run.size(), ' ')) == std::string::npos);
+            CHECK(said(read).find("七七七七七七七七七七七七七七七七七七七七七七七七") != std::string::npos);
+        }
         const auto sixteen = read_transcript("1234567890123456");
         CHECK(sixteen.warnings.empty());
         CHECK(said(sixteen).find("万") != std::string::npos);
