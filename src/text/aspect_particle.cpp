@@ -70,6 +70,7 @@ bool may_start_word_here(const std::vector<std::string_view>& characters, std::s
 
 std::string_view reading_before_particle(std::string_view word, std::string_view next) {
     if ((word == "还" || word == "還") && next == "了") return "huan2";
+    if (word == "得" && next == "了") return "de2";
     return {};
 }
 

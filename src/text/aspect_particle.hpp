@@ -30,9 +30,13 @@ bool is_final_particle(std::string_view character);
 bool may_start_word_here(const std::vector<std::string_view>& characters, std::size_t start, std::size_t end,
                          const ReadingTables& tables, bool ends_clause);
 
-// The reading of `word` when the next character of the run is `next` (empty past its end), where the particle decides it: huan2 for 还 (還) before 了 (the idiom
-// 还了得, hai2 liao3 de5, is a word of its own where it stands). Empty elsewhere. The caller
-// passes `next` only where 了 is a word of its own: 还了解 (了解 a word) keeps the adverb.
+// The reading of `word` when the next character of the run is `next` (empty past its end), where
+// the particle decides it: huan2 for 还 (還) before 了 (the idiom 还了得, hai2 liao3 de5, is a word
+// of its own where it stands), and de2 for 得 before 了: the particle de5 never takes 了, so 得
+// there is the verb "get" (他还得了第一名, 得了感冒) or "enough" (得了，别说了), dé·le in the
+// Xiandai Hanyu Cidian (a potential complement, 受得了 shou4 de5 liao3, is a word of the table).
+// Empty elsewhere. The caller passes `next` only where 了 is a word of its own: 还了解 (了解 a
+// word) keeps the adverb.
 std::string_view reading_before_particle(std::string_view word, std::string_view next);
 
 }  // namespace talkface::detail

@@ -120,6 +120,22 @@ TEST_SUITE("transcript") {
         CHECK(toneless("他還了得到的錢。") == "ta huan le de dao de qian");
     }
 
+    TEST_CASE("得 before the particle 了 is the verb de2, and 得了 in 还得了 and 受得了 keeps liao") {
+        const auto pinyin = [](const std::string& transcript) {
+            std::string text;
+            for (const auto& syllable : read_transcript(transcript).syllables)
+                text += (text.empty() ? "" : " ") + syllable.pinyin;
+            return text;
+        };
+        // The particle de5 never takes 了: 得 is "get" (dé) or "enough" (得了 dé·le).
+        CHECK(pinyin("他还得了第一名。") == "ta1 hai2 de2 le5 di4 yi1 ming2");
+        CHECK(pinyin("他得了感冒") == "ta1 de2 le5 gan3 mao4");
+        CHECK(pinyin("得了，别说了。") == "de2 le5 bie2 shuo1 le5");
+        CHECK(pinyin("这还得了！") == "zhe4 hai2 de2 liao3");
+        CHECK(pinyin("我受得了") == "wo3 shou4 de5 liao3");
+        CHECK(pinyin("这个问题还得再讨论") == "zhe4 ge4 wen4 ti2 hai2 dei3 zai4 tao3 lun4");
+    }
+
     TEST_CASE("还 before a debt or with a complement closing its clause is the verb") {
         CHECK(toneless("我每个月都要还贷款。") == "wo mei ge yue dou yao huan dai kuan");
         CHECK(toneless("记得还信用卡") == "ji de huan xin yong ka");

@@ -17110,6 +17110,7 @@ static const char* const kPhrasesText[] = {
     "受尽\t1297\n"
     "受影响\t1222\n"
     "受影響\t1222\n"
+    "受得了\t1278\tshou4 de5 liao3\n"
     "受惊\t1329\n"
     "受惠\t1293\n"
     "受托\t1310\n"
@@ -18382,10 +18383,10 @@ static const char* const kPhrasesText[] = {
     "同名\t1198\n"
     "同喜\t1319\n"
     "同在\t1245\n"
+    ,
     "同埋\t1322\ttong2 mai2\n"
     "同城\t1221\n"
     "同夥\t1280\n"
-    ,
     "同好\t1309\n"
     "同学\t837\n"
     "同学会\t1296\ttong2 xue2 hui4\n"
@@ -22169,11 +22170,11 @@ static const char* const kPhrasesText[] = {
     "坙\t1348\n"
     "坚\t1172\n"
     "坚信\t1165\n"
+    ,
     "坚决\t1050\n"
     "坚决反对\t1258\n"
     "坚固\t1210\n"
     "坚守\t1186\n"
-    ,
     "坚定\t1092\n"
     "坚定不移\t1232\n"
     "坚实\t1163\n"
@@ -25607,11 +25608,11 @@ static const char* const kPhrasesText[] = {
     "好不\t1170\n"
     "好不好\t1041\n"
     "好不容易\t1125\n"
+    ,
     "好丑\t1306\n"
     "好东东\t1284\n"
     "好东西\t1118\n"
     "好主意\t1259\n"
-    ,
     "好久\t979\n"
     "好久不見\t1206\thao3 jiu3 bu4 jian4\n"
     "好久不见\t1206\thao3 jiu3 bu4 jian4\n"
@@ -29477,10 +29478,10 @@ static const char* const kPhrasesText[] = {
     "小钱\t1215\n"
     "小镇\t1160\n"
     "小队\t1250\n"
+    ,
     "小陈\t1243\n"
     "小院\t1294\n"
     "小陳\t1243\txiao3 chen2\n"
-    ,
     "小隊\t1250\n"
     "小雅\t1287\n"
     "小雞\t1210\n"
@@ -33189,12 +33190,12 @@ static const char* const kPhrasesText[] = {
     "弊端\t1195\n"
     "弋\t1296\n"
     "弌\t1332\n"
+    ,
     "弍\t1332\n"
     "式\t951\n"
     "式样\t1212\n"
     "式樣\t1212\n"
     "弐\t1344\n"
-    ,
     "弑\t1331\n"
     "弒\t1339\n"
     "弓\t1135\n"
@@ -34295,7 +34296,7 @@ static const char* const kPhrasesText[] = {
     "得不償失\t1288\tde5 bu4 chang2 shi1\n"
     "得不到\t1114\tde5 bu4 dao4\n"
     "得主\t1262\tde5 zhu3\n"
-    "得了\t1063\tde5 le5\n"
+    "得了\t1063\tde2 le5\n"
     "得人\t1321\tde5 ren2\n"
     "得以\t1081\tde5 yi3\n"
     "得住\t1238\tde5 zhu4\n"
@@ -37061,10 +37062,10 @@ static const char* const kPhrasesText[] = {
     "我在\t950\n"
     "我好\t1210\n"
     "我好想\t1241\n"
+    ,
     "我妈\t1075\n"
     "我媽\t1075\n"
     "我学会了\t1328\two3 xue2 hui4 le5\n"
-    ,
     "我學會了\t1328\two3 xue2 hui4 le5\n"
     "我家\t1030\two3 jia1\n"
     "我寫\t1215\n"
@@ -40939,10 +40940,10 @@ static const char* const kPhrasesText[] = {
     "搜\t1076\n"
     "搜出\t1314\n"
     "搜刮\t1316\n"
+    ,
     "搜寻\t1202\tsou1 xun2\n"
     "搜尋\t1202\tsou1 xun2\n"
     "搜房\t1216\n"
-    ,
     "搜房網\t1228\n"
     "搜房网\t1228\n"
     "搜救\t1252\n"
@@ -44599,11 +44600,11 @@ static const char* const kPhrasesText[] = {
     "時延\t1319\n"
     "時態\t1330\n"
     "時應\t1237\n"
+    ,
     "時應注意\t1305\n"
     "時才\t1237\n"
     "時政\t1297\n"
     "時效\t1268\n"
-    ,
     "時效性\t1308\n"
     "時日\t1256\n"
     "時時\t1189\n"
@@ -48417,9 +48418,9 @@ static const char* const kPhrasesText[] = {
     "楬\t1345\n"
     "業\t1334\n"
     "業主\t1038\n"
+    ,
     "業主大會\t1318\tye4 zhu3 da4 hui4\n"
     "業主論壇\t1303\n"
-    ,
     "業內\t1137\n"
     "業內人士\t1151\n"
     "業務\t856\n"
@@ -52359,11 +52360,11 @@ static const char* const kPhrasesText[] = {
     "流派\t1245\tliu2 pai4\n"
     "流浪\t1134\n"
     "流浪汉\t1309\n"
+    ,
     "流浪漢\t1309\n"
     "流浪狗\t1321\n"
     "流浪猫\t1324\n"
     "流浪者\t1331\n"
-    ,
     "流浪貓\t1324\n"
     "流淌\t1195\n"
     "流淚\t1129\n"
@@ -56522,12 +56523,12 @@ static const char* const kPhrasesText[] = {
     "牛头\t1253\n"
     "牛奶\t1077\n"
     "牛市\t1127\tniu2 shi4\n"
+    ,
     "牛排\t1242\n"
     "牛比\t1276\n"
     "牛津\t1267\n"
     "牛牛\t1185\n"
     "牛皮\t1244\n"
-    ,
     "牛皮癣\t1319\n"
     "牛皮癬\t1319\n"
     "牛粪\t1303\n"
@@ -60642,9 +60643,9 @@ static const char* const kPhrasesText[] = {
     "盞\t1344\n"
     "盟\t1152\n"
     "盟主\t1277\tmeng2 zhu3\n"
+    ,
     "盟军\t1278\tmeng2 jun1\n"
     "盟友\t1248\tmeng2 you5\n"
-    ,
     "盟国\t1313\tmeng2 guo2\n"
     "盟國\t1313\tmeng2 guo2\n"
     "盟軍\t1278\tmeng2 jun1\n"
@@ -64476,9 +64477,9 @@ static const char* const kPhrasesText[] = {
     "第三条\t1241\n"
     "第三條\t1241\n"
     "第三次\t1143\n"
+    ,
     "第三版\t1298\n"
     "第三產業\t1243\n"
-    ,
     "第三种\t1256\tdi4 san1 zhong3\n"
     "第三種\t1256\n"
     "第三章\t1213\n"
@@ -68361,8 +68362,8 @@ static const char* const kPhrasesText[] = {
     "网络技术\t1250\twang3 luo4 ji4 shu4\n"
     "网络推广\t1296\twang3 luo4 tui1 guang3\n"
     "网络时代\t1298\twang3 luo4 shi2 dai4\n"
-    "网络服务\t1259\twang3 luo4 fu2 wu5\n"
     ,
+    "网络服务\t1259\twang3 luo4 fu2 wu5\n"
     "网络游戏\t1130\twang3 luo4 you2 xi4\n"
     "网络版\t1258\twang3 luo4 ban3\n"
     "网络环境\t1261\twang3 luo4 huan2 jing4\n"
@@ -72506,10 +72507,10 @@ static const char* const kPhrasesText[] = {
     "药液\t1318\n"
     "药片\t1319\n"
     "药物\t1045\n"
+    ,
     "药物治疗\t1253\n"
     "药理\t1310\n"
     "药用\t1285\n"
-    ,
     "药监\t1308\n"
     "药监局\t1288\n"
     "药罐\t1297\n"
@@ -76534,10 +76535,10 @@ static const char* const kPhrasesText[] = {
     "討要\t1321\n"
     "討論\t910\n"
     "討論區\t1239\ttao3 lun4 qu1\n"
+    ,
     "討論會\t1304\ttao3 lun4 hui4\n"
     "討飯\t1331\n"
     "訏\t1340\n"
-    ,
     "訐\t1344\n"
     "訑\t1345\n"
     "訒\t1349\n"
@@ -80507,12 +80508,12 @@ static const char* const kPhrasesText[] = {
     "起點\t1105\n"
     "赸\t1348\n"
     "赹\t1354\n"
+    ,
     "赻\t1348\n"
     "赽\t1341\n"
     "趀\t1351\n"
     "趁\t1123\n"
     "趁早\t1261\n"
-    ,
     "趁机\t1204\n"
     "趁機\t1204\n"
     "趁热\t1324\n"
@@ -84042,9 +84043,9 @@ static const char* const kPhrasesText[] = {
     "通行證\t1206\ttong1 xing2 zheng4\n"
     "通行证\t1206\ttong1 xing2 zheng4\n"
     "通行費\t1330\ttong1 xing2 fei4\n"
+    ,
     "通行费\t1330\ttong1 xing2 fei4\n"
     "通訊\t1077\n"
-    ,
     "通訊員\t1182\n"
     "通訊社\t1298\n"
     "通訊錄\t1199\n"
@@ -87893,9 +87894,9 @@ static const char* const kPhrasesText[] = {
     "长\t876\n"
     "长三角\t1209\tchang2 san1 jiao3\n"
     "长不大\t1309\tzhang3 bu4 da4\n"
+    ,
     "长久\t1114\tchang2 jiu3\n"
     "长乐\t1255\tchang2 le4\n"
-    ,
     "长了\t1162\tzhang3 le5\n"
     "长于\t1313\tchang2 yu2\n"
     "长今\t1328\tchang2 jin1\n"
@@ -91903,12 +91904,12 @@ static const char* const kPhrasesText[] = {
     "飆升\t1204\n"
     "飇\t1354\n"
     "飈\t1268\n"
+    ,
     "飈車\t1303\tbiao1 che1\n"
     "飉\t1352\n"
     "飋\t1353\n"
     "飌\t1354\n"
     "风\t942\n"
-    ,
     "风中\t1197\n"
     "风之\t1287\n"
     "风云\t1138\n"
