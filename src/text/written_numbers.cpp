@@ -211,12 +211,12 @@ bool names_change(const std::vector<CodePoint>& text, std::size_t start) {
     return false;
 }
 
-// A naming word right before the number (房间号是1208, 编号：305): said digit by digit as a
-// room's number is.
+// A naming word right before the number (房间号是1208, 编号：305, and a code's: 密码是86753090,
+// 验证码：5408): said digit by digit as a room's number is.
 bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start) {
     std::size_t i = start;
     for (int skipped = 0; skipped < 2 && i > 0 && is_one_of(text[i - 1].value, U" 是为為：:\u3000"); ++skipped) --i;
-    return i > 0 && is_one_of(text[i - 1].value, U"号號室房");
+    return i > 0 && is_one_of(text[i - 1].value, U"号號室房码碼");
 }
 
 // A word earlier in the sentence that makes the numbers after it phone numbers.
@@ -262,8 +262,12 @@ const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size
             ++k;
         }
         if (written != unit.written) continue;
-        // A Latin unit must end the letters: 5kgs or 3mind are words, not units.
-        if (is_ascii_letter(static_cast<char32_t>(unit.written.back())) && is_ascii_letter(value_at(text, k))) continue;
+        // A Latin unit must end the letters: 5kgs or 3mind are words, not units; nor is a letter
+        // between two numbers one (5V5 五 V 五, a match of five against five).
+        if (is_ascii_letter(static_cast<char32_t>(unit.written.back())) &&
+            (is_ascii_letter(value_at(text, k)) || is_digit_at(text, k))) {
+            continue;
+        }
         if (best == nullptr || unit.written.size() > best->written.size()) {
             best = &unit;
             end = k;
@@ -780,6 +784,13 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     auto after_first = number.end;
     const bool first_is_percent = value_at(text, after_first) == '%';
     if (first_is_percent) ++after_first;  // 10%-20%
+    // The first end's 万 or 亿 before the range mark is said with it: 3万-5万元 三万到五万元.
+    std::string first_magnitude;
+    if (is_one_of(value_at(text, after_first), U"万萬亿億") && is_range_mark(value_at(text, after_first + 1)) &&
+        is_digit_at(text, after_first + 2)) {
+        first_magnitude = is_one_of(value_at(text, after_first), U"万萬") ? "万" : "亿";
+        ++after_first;
+    }
     if (is_range_mark(value_at(text, after_first))) {
         // The second number may carry its own sign: -8~-3℃ 零下八到零下三摄氏度.
         auto second_start = after_first + 1;
@@ -842,6 +853,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (is_percent) form.words += "百分之";
         if (is_per_mille) form.words += "千分之";
         form.words += said.words;
+        if (k == 0 && numbers.size() > 1) form.words += first_magnitude;
         if (said.is_year) {
             form.words += "年";
             // The 年 of a year belongs to the form; after a range, only the last takes it.

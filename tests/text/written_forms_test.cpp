@@ -475,6 +475,18 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("a code's digits one by one, a letter between two numbers no unit, a range of 万") {
+        check_cases({
+            {"密码是86753090", "密码是八六七五三零九零"},
+            {"验证码：5408", "验证码五四零八"},
+            {"我们5V5开黑", "我们五 wei五开黑"},
+            {"3V电池", "三伏电池"},
+            {"价格在3万-5万元之间", "价格在三万到五万元之间"},
+            {"3亿~5亿美元", "三亿到五亿美元"},
+            {"3-5万元", "三到五万元"},
+        });
+    }
+
     TEST_CASE("a tilde is punctuation; a symbol without a reading is warned of by its own code point") {
         check_cases({
             {"好的呀～", "好的呀"},
