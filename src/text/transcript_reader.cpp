@@ -81,6 +81,22 @@ bool is_silent_punctuation(char32_t c) {
            (c >= 0xFE30 && c <= 0xFE6B) || (c >= 0xFF5F && c <= 0xFF65);
 }
 
+// A # that opens or closes a topic (#春节快乐#, as Weibo and other posts mark one): a bracket, not
+// said; the topic between them is read. A # with no partner on its line (#5) is still a symbol.
+bool marks_topic(const std::vector<CodePoint>& text, std::size_t i) {
+    constexpr std::size_t kLongestTopic = 30;  // code points between the two marks
+    const auto is_mark = [&](std::size_t k) { return ascii_form(text[k].value) == '#'; };
+    const auto breaks_topic = [&](std::size_t k) {
+        const auto c = text[k].value;
+        return c == '\n' || c == ' ' || c == 0x3000 || ends_sentence(c);
+    };
+    for (std::size_t k = i + 1; k < text.size() && k <= i + kLongestTopic + 1 && !breaks_topic(k); ++k)
+        if (is_mark(k)) return k > i + 1;
+    for (std::size_t k = i; k-- > 0 && k + kLongestTopic + 1 >= i && !breaks_topic(k);)
+        if (is_mark(k)) return k + 1 < i;
+    return false;
+}
+
 bool is_pinyin_letter(char32_t c) {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == 0xFC /*ü*/ || c == 0xDC /*Ü*/;
 }
@@ -294,7 +310,7 @@ private:
         }
         if (is_pinyin_letter(c.value)) return read_token(text, i);
         append_text(c.text);
-        if (!is_silent_punctuation(c.value)) warn_no_reading(c);
+        if (!is_silent_punctuation(c.value) && !marks_topic(text, i)) warn_no_reading(c);
         return i + 1;
     }
 

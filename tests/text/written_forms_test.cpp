@@ -487,8 +487,10 @@ TEST_SUITE("written forms") {
         });
     }
 
-    TEST_CASE("a tilde is punctuation; a symbol without a reading is warned of by its own code point") {
+    TEST_CASE("a tilde and a topic's # are punctuation; a symbol without a reading is warned of by its own code point") {
         check_cases({
+            {"#春节快乐# 祝大家新年好！", "春节快乐祝大家新年好"},
+            {"＃话题＃", "话题"},
             {"好的呀～", "好的呀"},
             {"嗯嗯~", "嗯嗯"},
             {"3~5天", "三到五天"},
@@ -500,6 +502,9 @@ TEST_SUITE("written forms") {
         const auto full_width = read_transcript("A＆B", {}, "t.txt");
         REQUIRE(full_width.warnings.size() == 1);
         CHECK(full_width.warnings[0] == "t.txt:1:2: \"＆\" (U+FF06) has no Mandarin reading; skipped");
+        // A # with no partner on its line is a symbol.
+        CHECK(read_transcript("价格#5").warnings.size() == 1);
+        CHECK(read_transcript("# 标题 #").warnings.size() == 2);
     }
 
     TEST_CASE("a country calling code is 加 and its digits, with the groups of the number after it") {
