@@ -123,10 +123,13 @@ int main(int argc, char** argv) {
                 std::cout << "miss (" << sentence.set << ") " << sentence.text << "\n  expected " << want
                           << "\n  got      " << got << '\n';
             }
-            // make_corpus takes one sentence with no warnings (every syllable spoken and known).
+            // make_corpus takes one sentence with no warnings (every syllable spoken and known), and
+            // joins sentences into passages: one without an end mark (a chat line, 666，带带我～)
+            // would run on into the next, so it gets a full stop there.
             if (corpus.is_open()) {
                 if (read.warnings.empty() && read.sentences.size() == 1) {
-                    corpus << sentence.set << '\t' << sentence.text << '\n';
+                    const bool runs_on = talkface::read_transcript(sentence.text + "好。").sentences.size() == 1;
+                    corpus << sentence.set << '\t' << sentence.text << (runs_on ? "。" : "") << '\n';
                 } else {
                     ++left_out;
                 }
