@@ -442,7 +442,7 @@ TEST_SUITE("written forms") {
         });
     }
 
-    TEST_CASE("dotted groups of digits: a date, an IP address, a version; a middle dot names a day") {
+    TEST_CASE("dotted groups of digits are a date, an IP address or a version, and a middle dot names a day") {
         check_cases({
             {"2026.03.15起施行", "二零二六年三月十五日起施行"},
             {"地址是192.168.1.1", "地址是一九二点一六八点一点一"},
@@ -487,7 +487,7 @@ TEST_SUITE("written forms") {
         });
     }
 
-    TEST_CASE("a tilde and a topic's # are punctuation; a symbol without a reading is warned of by its own code point") {
+    TEST_CASE("a tilde and a topic's # are punctuation, and a symbol without a reading is warned of by its own code point") {
         check_cases({
             {"#春节快乐# 祝大家新年好！", "春节快乐祝大家新年好"},
             {"＃话题＃", "话题"},
