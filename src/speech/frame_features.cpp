@@ -10,6 +10,7 @@
 #include "audio/audio_source.hpp"
 #include "common/internal_error.hpp"
 #include "common/number_format.hpp"
+#include "speech/changing_spectrum.hpp"
 #include "speech/power_spectrum.hpp"
 #include "talkface/errors.hpp"
 
@@ -103,6 +104,7 @@ public:
             analyze_frame(pending_.data());
             pending_.erase(pending_.begin(), pending_.begin() + kHop);
         }
+        changing_.finish();
     }
 
 private:
@@ -159,9 +161,11 @@ private:
         row[kPeakAmplitude] = peak;
         track_.values.insert(track_.values.end(), row.begin(), row.end());
         ++track_.frame_count;
+        changing_.push(power_.data());
     }
 
     FeatureTrack& track_;
+    ChangingSpectrum changing_{track_};
     std::uint64_t dither_state_ = 0x9E3779B97F4A7C15ull;
     std::vector<float> pending_;
     std::size_t samples_in_ = 0;

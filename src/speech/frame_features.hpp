@@ -30,6 +30,8 @@ enum FeatureColumn : int {
     kMidBandDb,                     // 900-2500 Hz
     kHighBandDb,                    // 2500-8000 Hz: frication (2500-3400 survives a telephone band)
     kPeakAmplitude,                 // largest |sample| of the frame's 10 ms: Algorithm 3.1's "volume"
+    kChangeBandDb,                  // the band where a voice's changes are measured (changing_spectrum.hpp)
+    kChangingDb,                    // the power in it that changes
     kFeatureCount,
 };
 

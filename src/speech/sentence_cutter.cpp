@@ -7,6 +7,7 @@
 
 #include "common/number_format.hpp"
 #include "speech/alignment_checks.hpp"
+#include "speech/held_music.hpp"
 #include "speech/run_together.hpp"
 #include "talkface/errors.hpp"
 
@@ -260,6 +261,12 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     const float noise_level_db = percentile(profile.activity_db, kNoisePercentile);
     profile.activity_threshold_db =
         std::max({0.25f * speech_level_db, speech_level_db - 35.0f, kAboveFloorDb, noise_level_db + kNoiseWanderDb});
+    // Music held through the pauses is as loud as the quieter speech: where it is held, the frame
+    // is no louder than a pause can be.
+    const std::vector<bool> held = held_music_frames(track, profile.activity_db, profile.activity_threshold_db);
+    const float pause_db = std::nextafter(profile.activity_threshold_db, -std::numeric_limits<float>::infinity());
+    for (std::size_t t = 0; t < frames; ++t)
+        if (held[t]) profile.activity_db[t] = std::min(profile.activity_db[t], pause_db);
     std::size_t first_speech = 0;
     while (first_speech < frames && !is_speech_frame(profile, first_speech)) ++first_speech;
     std::size_t end_speech = frames;

@@ -1,0 +1,49 @@
+#include "speech/held_music.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace talkface::detail {
+
+namespace {
+
+// Digital silence reads -100 dB (frame_features' floor): frames that quiet hold no sound to judge.
+constexpr float kSoundDb = -90.0f;
+constexpr double kEnergyFloor = 1e-10;
+
+float median(std::vector<float> values) {
+    const auto middle = values.begin() + static_cast<std::ptrdiff_t>((values.size() - 1) / 2);
+    std::nth_element(values.begin(), middle, values.end());
+    return *middle;
+}
+
+}  // namespace
+
+std::vector<bool> held_music_frames(const FeatureTrack& track, const std::vector<float>& activity_db, float threshold_db) {
+    const std::size_t frames = track.frame_count;
+    std::vector<bool> held(frames, false);
+    // Running sums of the band's power and of its changing part, for the share over any window.
+    std::vector<double> band(frames + 1, 0.0);
+    std::vector<double> changing(frames + 1, 0.0);
+    for (std::size_t t = 0; t < frames; ++t) {
+        band[t + 1] = band[t] + std::pow(10.0, track.at(t, kChangeBandDb) / 10.0);
+        changing[t + 1] = changing[t] + std::pow(10.0, track.at(t, kChangingDb) / 10.0);
+    }
+    std::vector<float> share(frames);
+    std::vector<float> quiet_share;
+    std::vector<float> speech_db;
+    for (std::size_t t = 0; t < frames; ++t) {
+        const std::size_t first = t >= kHeldMusicHalfWindow ? t - kHeldMusicHalfWindow : 0;
+        const std::size_t end = std::min(frames, t + kHeldMusicHalfWindow + 1);
+        share[t] = static_cast<float>((changing[end] - changing[first]) / (band[end] - band[first] + kEnergyFloor));
+        if (activity_db[t] >= threshold_db) speech_db.push_back(activity_db[t]);
+        else if (track.at(t, kChangeBandDb) > kSoundDb) quiet_share.push_back(share[t]);
+    }
+    if (quiet_share.empty() || speech_db.empty() || median(quiet_share) >= kNoiseChangeShare) return held;
+    const float speech_median_db = median(speech_db);
+    for (std::size_t t = 0; t < frames; ++t)
+        held[t] = share[t] < kHeldMusicChangeShare && activity_db[t] < speech_median_db;
+    return held;
+}
+
+}  // namespace talkface::detail
