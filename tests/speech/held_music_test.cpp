@@ -101,11 +101,11 @@ TEST_SUITE("speech") {
         CHECK(changing_share(features_of(glide, rate), 10, 90) > 0.6);
     }
 
-    TEST_CASE("the pauses between sentences under a piano's ringing chords are found") {
+    TEST_CASE("the pauses between sentences under a piano's ringing chords are found whole") {
         // tests/data/speech/two_sentences.wav three times over, a piano under it at SNR 15 dB
         // against the speech's active level: six sentences, 0.9 s of music inside each copy and
         // 0.6 s between copies. Its struck chords ring through the pauses as loud as the quieter
-        // speech, and by loudness alone a pause is missed.
+        // speech.
         auto source = detail::open_audio_file(test::clip_path("two_sentences.wav"));
         const int rate = source->sample_rate_hz();
         const std::vector<float> once = test::read_all(*source);
@@ -137,9 +137,12 @@ TEST_SUITE("speech") {
         }
         for (const auto& [start_s, end_s] : gaps) {
             CAPTURE(start_s);
+            // One pause over most of the gap: by loudness alone the music's notes cut it in pieces
+            // (4.17-4.42 and 4.45-4.77 s), or shorten it by a third (6.15-6.81 s of 6.14-7.04 s).
             const bool found = std::any_of(loudness.pauses.begin(), loudness.pauses.end(), [&](const detail::FrameSpan& pause) {
-                return static_cast<double>(pause.first_frame) * detail::kFrameStepS >= start_s - 0.05 &&
-                       static_cast<double>(pause.end_frame) * detail::kFrameStepS <= end_s + 0.05;
+                const double first_s = static_cast<double>(pause.first_frame) * detail::kFrameStepS;
+                const double end_s_found = static_cast<double>(pause.end_frame) * detail::kFrameStepS;
+                return first_s >= start_s - 0.05 && end_s_found <= end_s + 0.05 && end_s_found - first_s >= 0.8 * (end_s - start_s);
             });
             CHECK(found);
         }
