@@ -3,6 +3,7 @@
 #ifndef TALKFACE_TESTS_SPEECH_CLIPS_HPP
 #define TALKFACE_TESTS_SPEECH_CLIPS_HPP
 
+#include <cmath>
 #include <cstddef>
 #include <fstream>
 #include <iterator>
@@ -29,6 +30,27 @@ inline std::vector<double> true_starts(const std::string& name) {
     for (std::size_t at = text.find("\"start\":", syllables); at != std::string::npos; at = text.find("\"start\":", at + 1))
         starts.push_back(std::stod(text.substr(at + 8)));
     return starts;
+}
+
+// `speech` with `noise` (of mean power 1, as long) under it at `snr_db` against the speech's active
+// level: the mean power of its loud (above -40 dBFS) 10 ms frames at `rate_hz`; both scaled by 0.7,
+// below clipping. Empty if no frame of the speech is loud.
+inline std::vector<float> mixed_at_snr(const std::vector<float>& speech, const std::vector<float>& noise, int rate_hz,
+                                       double snr_db) {
+    double speech_power = 0.0;
+    std::size_t active = 0;
+    const auto frame = static_cast<std::size_t>(rate_hz / 100);
+    for (std::size_t i = 0; i + frame <= speech.size(); i += frame) {
+        double power = 0.0;
+        for (std::size_t k = i; k < i + frame; ++k) power += static_cast<double>(speech[k]) * speech[k];
+        power /= static_cast<double>(frame);
+        if (power > 1e-4) speech_power += power, ++active;
+    }
+    if (active == 0) return {};
+    const double gain = std::sqrt(speech_power / static_cast<double>(active) / std::pow(10.0, snr_db / 10.0));
+    std::vector<float> mixed(speech.size());
+    for (std::size_t i = 0; i < speech.size(); ++i) mixed[i] = static_cast<float>(0.7 * (speech[i] + gain * noise[i]));
+    return mixed;
 }
 
 }  // namespace talkface::test

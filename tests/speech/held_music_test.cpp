@@ -111,20 +111,8 @@ TEST_SUITE("speech") {
         const std::vector<float> once = test::read_all(*source);
         std::vector<float> speech;
         for (int copy = 0; copy < 3; ++copy) speech.insert(speech.end(), once.begin(), once.end());
-        double speech_power = 0.0;
-        std::size_t active = 0;
-        const auto frame = static_cast<std::size_t>(rate / 100);
-        for (std::size_t i = 0; i + frame <= speech.size(); i += frame) {
-            double power = 0.0;
-            for (std::size_t k = i; k < i + frame; ++k) power += static_cast<double>(speech[k]) * speech[k];
-            power /= static_cast<double>(frame);
-            if (power > 1e-4) speech_power += power, ++active;
-        }
-        REQUIRE(active > 0);
-        const double gain = std::sqrt(speech_power / static_cast<double>(active) / std::pow(10.0, 15.0 / 10.0));
-        const std::vector<float> music = piano(speech.size(), rate);
-        std::vector<float> mixed(speech.size());
-        for (std::size_t i = 0; i < speech.size(); ++i) mixed[i] = static_cast<float>(0.7 * (speech[i] + gain * music[i]));
+        const std::vector<float> mixed = test::mixed_at_snr(speech, piano(speech.size(), rate), rate, 15.0);
+        REQUIRE(!mixed.empty());
 
         const detail::LoudnessProfile loudness = detail::measure_loudness(features_of(mixed, rate));
         // The five gaps between the six sentences (two_sentences.json: 1.69-2.59 s in each copy,

@@ -172,21 +172,8 @@ TEST_SUITE("speech") {
             speech.insert(speech.end(), once.begin(), once.end());
             text += sentences;
         }
-        // SNR against the speech's active level: the mean power of its loud (above -40 dBFS) samples' 10 ms frames.
-        double speech_power = 0.0;
-        std::size_t active = 0;
-        const auto frame = static_cast<std::size_t>(rate_hz / 100);
-        for (std::size_t i = 0; i + frame <= speech.size(); i += frame) {
-            double power = 0.0;
-            for (std::size_t k = i; k < i + frame; ++k) power += static_cast<double>(speech[k]) * speech[k];
-            power /= static_cast<double>(frame);
-            if (power > 1e-4) speech_power += power, ++active;
-        }
-        REQUIRE(active > 0);
-        const double gain = std::sqrt(speech_power / static_cast<double>(active) / std::pow(10.0, 15.0 / 10.0));
-        const std::vector<float> music = tune(speech.size(), rate_hz);
-        std::vector<float> mixed(speech.size());
-        for (std::size_t i = 0; i < speech.size(); ++i) mixed[i] = static_cast<float>(0.7 * (speech[i] + gain * music[i]));
+        const std::vector<float> mixed = test::mixed_at_snr(speech, tune(speech.size(), rate_hz), rate_hz, 15.0);
+        REQUIRE(!mixed.empty());
 
         const Timeline transcript = read_transcript(text);
         REQUIRE(transcript.sentences.size() == 2 * kCopies);
