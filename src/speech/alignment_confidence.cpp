@@ -20,9 +20,20 @@ constexpr std::size_t kNeighbours = 2;
 // conditions pooled (issue 12: at most 10% of the right ones flagged; a little under, so that a
 // small change of the aligner does not cross it; set again each time the aligner changes which
 // syllables are right); the slope spreads the evidence's usual range over most of 0..1.
-constexpr double kEvidenceAtLow = 0.052;
+constexpr double kEvidenceAtLow = 0.027;
 constexpr double kSlope = 10.0;
 constexpr double kRelativeShare = 0.5;
+// What a syllable's timing adds to its evidence (syllable_timing): the spectral change where it
+// starts, per unit of the landmarks' bonus; its length against the pace of the syllables around it
+// (kPaceSyllables either side), per unit of |log ratio|; and its states' lengths against their
+// priors, per unit of mean squared log-normal z. Set together on bench/'s human tuning passages
+// (session 11): a drifted syllable starts where the spectrum changes little, and the path squeezes
+// or stretches it and its sounds to make it fit. Each alone adds a little; within a factor of two
+// of these the figures move by a few syllables.
+constexpr double kBoundaryWeight = 0.05;
+constexpr double kPaceWeight = 0.2;
+constexpr double kStateLengthWeight = 0.02;
+constexpr std::size_t kPaceSyllables = 4;
 
 double log_sum_exp(const float* values, int count) {
     float largest = values[0];
@@ -59,6 +70,40 @@ std::vector<double> syllable_fits(const SentenceChain& chain, const std::vector<
         fits[i] = posterior - gap;
     }
     return fits;
+}
+
+std::vector<double> syllable_timing(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                                    const EmissionScores& scores, const std::vector<SyllableFrames>& frames) {
+    const std::size_t count = frames.size();
+    std::vector<double> expected(count, 0.0), squared_z(count, 0.0), states(count, 0.0);
+    for (const auto& state : chain.states)
+        if (state.syllable < count && !is_pause(state.role) && !state.is_optional) expected[state.syllable] += state.median_frames;
+    for (const auto& segment : path) {
+        const PhoneState& state = chain.states[segment.state];
+        if (state.syllable >= count || is_pause(state.role) || segment.end_frame <= segment.first_frame) continue;
+        const double z = (std::log(static_cast<double>(segment.end_frame - segment.first_frame)) - std::log(state.median_frames)) /
+                         state.log_sigma;
+        squared_z[state.syllable] += z * z;
+        states[state.syllable] += 1.0;
+    }
+    // Each syllable's length against its prior's: the pace it was said at, relative to its neighbours'.
+    std::vector<double> pace(count, 0.0);
+    for (std::size_t i = 0; i < count; ++i) {
+        const double length = static_cast<double>(std::max<std::size_t>(frames[i].end_frame - frames[i].first_frame, 1));
+        pace[i] = std::log(length / std::max(expected[i], 1.0));
+    }
+    std::vector<double> timing(count, 0.0);
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::size_t first = i > kPaceSyllables ? i - kPaceSyllables : 0;
+        std::vector<double> around(pace.begin() + static_cast<std::ptrdiff_t>(first),
+                                   pace.begin() + static_cast<std::ptrdiff_t>(std::min(count, i + kPaceSyllables + 1)));
+        const auto middle = around.begin() + static_cast<std::ptrdiff_t>(around.size() / 2);
+        std::nth_element(around.begin(), middle, around.end());
+        const double boundary = frames[i].first_frame < scores.boundary.size() ? scores.boundary[frames[i].first_frame] : 0.0;
+        const double state_z = states[i] > 0.0 ? squared_z[i] / states[i] : 0.0;
+        timing[i] = kBoundaryWeight * boundary - kPaceWeight * std::fabs(pace[i] - *middle) - kStateLengthWeight * state_z;
+    }
+    return timing;
 }
 
 std::vector<double> syllable_evidence(const std::vector<double>& fits) {

@@ -25,6 +25,14 @@ struct SyllableFrames {
 std::vector<double> syllable_fits(const SentenceChain& chain, const std::vector<StateSegment>& path,
                                   const EmissionScores& scores, const std::vector<SyllableFrames>& frames);
 
+// Per syllable of `chain` (holding `frames` on `path`), what its timing says of its place, added to
+// its fit: more where the spectrum changes at its start (EmissionScores::boundary), less the more
+// its length departs from the pace of the syllables around it (its length against its duration
+// prior's, relative to theirs) and the more the path squeezes or stretches its sounds against their
+// priors (a drifted syllable is fitted to speech not its own by bending its lengths).
+std::vector<double> syllable_timing(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                                    const EmissionScores& scores, const std::vector<SyllableFrames>& frames);
+
 // Per syllable, the evidence that it is where the path put it: its fit (syllable_fits) and its
 // neighbours' averaged (drift comes in runs: a syllable placed a syllable off pulls its neighbours
 // with it).

@@ -60,7 +60,10 @@ void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>
         syllable.final_start_s = time_s(final_first.value_or(first));
         frames[local] = {first, std::max(end, first + 1)};
     }
-    const auto placed = syllable_evidence(syllable_fits(chain, path, scores, frames));
+    std::vector<double> fits = syllable_fits(chain, path, scores, frames);
+    const std::vector<double> timing = syllable_timing(chain, path, scores, frames);
+    for (std::size_t local = 0; local < fits.size(); ++local) fits[local] += timing[local];
+    const auto placed = syllable_evidence(fits);
     for (std::size_t local = 0; local < chain.syllables.size(); ++local) evidence[chain.syllable_indices[local]] = placed[local];
 }
 

@@ -1,0 +1,133 @@
+#include <doctest/doctest.h>
+
+#include <random>
+#include <vector>
+
+#include "speech/alignment_confidence.hpp"
+#include "talkface/speech_aligner.hpp"
+
+using namespace talkface::detail;
+
+namespace {
+
+constexpr std::size_t kSyllables = 12;
+constexpr std::size_t kInitialFrames = 4;
+constexpr std::size_t kFinalFrames = 10;
+constexpr std::size_t kEdgeFrames = 20;
+// The syllable a drifted path places late, and by how much: 80 ms, the first syllable's worth of
+// its final given to the syllable before.
+constexpr std::size_t kDrifted = 6;
+constexpr std::size_t kDriftFrames = 8;
+
+PhoneState chain_state(PhoneClass phone_class, StateRole role, std::size_t syllable, double median_frames) {
+    PhoneState state;
+    state.phone_class = phone_class;
+    state.role = role;
+    state.syllable = syllable;
+    state.median_frames = median_frames;
+    state.log_sigma = 0.4;
+    state.max_frames = 120;
+    state.is_optional = role == StateRole::edge_silence;
+    return state;
+}
+
+// A sentence of sibilant + vowel syllables, the vowels taking turns so that a syllable moved onto
+// its neighbour's frames sounds wrong; emissions favour each frame's true class by 4 with noise of
+// ±1, and the spectrum changes (the landmarks' bonus) where each syllable starts, as speech does.
+struct Sentence {
+    SentenceChain chain;
+    std::vector<StateSegment> truth;
+    EmissionScores scores;
+};
+
+Sentence make_sentence() {
+    const PhoneClass vowels[] = {kVowelA, kVowelI, kVowelU, kVowelO};
+    Sentence sentence;
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> noise(-1.0f, 1.0f);
+    std::size_t frame = 0;
+    auto add = [&](const PhoneState& state, std::size_t frames) {
+        sentence.truth.push_back({sentence.chain.states.size(), frame, frame + frames});
+        sentence.chain.states.push_back(state);
+        for (std::size_t t = 0; t < frames; ++t, ++frame)
+            for (int c = 0; c < kPhoneClassCount; ++c)
+                sentence.scores.values.push_back((c == state.phone_class ? 0.0f : -4.0f) + noise(random));
+    };
+    add(chain_state(kSilence, StateRole::edge_silence, 0, 10.0), kEdgeFrames);
+    for (std::size_t s = 0; s < kSyllables; ++s) {
+        add(chain_state(kSibilant, StateRole::initial, s, static_cast<double>(kInitialFrames)), kInitialFrames);
+        add(chain_state(vowels[s % 4], StateRole::final, s, static_cast<double>(kFinalFrames)), kFinalFrames);
+    }
+    add(chain_state(kSilence, StateRole::edge_silence, kSyllables - 1, 10.0), kEdgeFrames);
+    sentence.scores.frame_count = frame;
+    sentence.scores.boundary.assign(frame + 1, 0.0f);
+    for (const StateSegment& segment : sentence.truth)
+        if (sentence.chain.states[segment.state].role == StateRole::initial) sentence.scores.boundary[segment.first_frame] = 1.0f;
+    return sentence;
+}
+
+// `truth` with syllable kDrifted starting kDriftFrames late: the final before it stretched over its
+// start, its own final squeezed.
+std::vector<StateSegment> drifted(std::vector<StateSegment> path) {
+    const std::size_t initial = 1 + 2 * kDrifted;
+    path[initial - 1].end_frame += kDriftFrames;
+    path[initial].first_frame += kDriftFrames;
+    path[initial].end_frame += kDriftFrames;
+    path[initial + 1].first_frame += kDriftFrames;
+    return path;
+}
+
+// Each syllable's confidence on `path`, as the aligner gives it.
+std::vector<double> confidences(const Sentence& sentence, const std::vector<StateSegment>& path) {
+    std::vector<SyllableFrames> frames(kSyllables, {sentence.scores.frame_count, 0});
+    for (const StateSegment& segment : path) {
+        const PhoneState& state = sentence.chain.states[segment.state];
+        if (is_pause(state.role)) continue;
+        frames[state.syllable].first_frame = std::min(frames[state.syllable].first_frame, segment.first_frame);
+        frames[state.syllable].end_frame = std::max(frames[state.syllable].end_frame, segment.end_frame);
+    }
+    std::vector<double> fits = syllable_fits(sentence.chain, path, sentence.scores, frames);
+    const std::vector<double> timing = syllable_timing(sentence.chain, path, sentence.scores, frames);
+    for (std::size_t i = 0; i < kSyllables; ++i) fits[i] += timing[i];
+    talkface::Timeline timeline;
+    timeline.syllables.resize(kSyllables);
+    set_confidences(syllable_evidence(fits), timeline);
+    std::vector<double> result;
+    for (const auto& syllable : timeline.syllables) result.push_back(syllable.confidence);
+    return result;
+}
+
+}  // namespace
+
+TEST_SUITE("alignment confidence") {
+    TEST_CASE("a syllable placed 80 ms late comes out below the threshold, the same syllable placed right above it") {
+        const Sentence sentence = make_sentence();
+        const auto right = confidences(sentence, sentence.truth);
+        const auto wrong = confidences(sentence, drifted(sentence.truth));
+        for (std::size_t i = 0; i < kSyllables; ++i) {
+            CAPTURE(i);
+            CHECK(right[i] >= talkface::kLowAlignmentConfidence);
+        }
+        CHECK(wrong[kDrifted] < talkface::kLowAlignmentConfidence);
+        CHECK(wrong[kDrifted] < right[kDrifted] - 0.2);
+    }
+
+    TEST_CASE("a syllable's timing counts against it where its length departs from its neighbours' pace") {
+        // Only the timing: emissions that fit the drifted path as well as the right one (every
+        // class alike) leave its length, its sounds' lengths and the spectrum's change to judge.
+        Sentence sentence = make_sentence();
+        std::fill(sentence.scores.values.begin(), sentence.scores.values.end(), 0.0f);
+        std::vector<SyllableFrames> right_frames, wrong_frames;
+        const auto wrong_path = drifted(sentence.truth);
+        for (std::size_t s = 0; s < kSyllables; ++s) {
+            right_frames.push_back({sentence.truth[1 + 2 * s].first_frame, sentence.truth[2 + 2 * s].end_frame});
+            wrong_frames.push_back({wrong_path[1 + 2 * s].first_frame, wrong_path[2 + 2 * s].end_frame});
+        }
+        const auto right = syllable_timing(sentence.chain, sentence.truth, sentence.scores, right_frames);
+        const auto wrong = syllable_timing(sentence.chain, wrong_path, sentence.scores, wrong_frames);
+        // The syllable stretched over the drifted one's start and the drifted one itself.
+        CHECK(wrong[kDrifted - 1] < right[kDrifted - 1]);
+        CHECK(wrong[kDrifted] < right[kDrifted]);
+        CHECK(wrong[0] == doctest::Approx(right[0]));
+    }
+}
