@@ -34,8 +34,9 @@ struct Syllable {
     double end_s = 0.0;
     /// Where its final (vowel) starts, when the aligner measured it; key frames use it.
     std::optional<double> final_start_s;
-    double confidence = 1.0;  ///< 0..1, how sure the aligner is of start_s and end_s; below
-                              ///< kLowAlignmentConfidence (speech_aligner.hpp) it may be >100 ms off
+    double confidence = 1.0;  ///< 0..1, how sure the aligner is of start_s and end_s (not a probability);
+                              ///< below kLowAlignmentConfidence (speech_aligner.hpp: what it
+                              ///< catches) it may be >100 ms off
     /// A pause the transcript marks right after this syllable (，、：), in which the mouth may rest.
     bool pause_after = false;
     /// Part of a word no table reads (an English word the dictionary lacks: "Zorblax"), said but

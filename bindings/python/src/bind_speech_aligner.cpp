@@ -118,10 +118,12 @@ Example:
 Aligns a recorded speech with its transcript (thesis chapter 3): each sentence gets start_s and end_s,
 each syllable start_s (where its initial consonant starts), end_s, final_start_s (where its vowel
 starts) and a confidence; the timeline's duration_s is the audio's length. A syllable whose confidence
-is below talkface.kLowAlignmentConfidence (0.5) is one to check: its start may be more than 100 ms off
-(the confidence is calibrated on the recording, so the threshold holds in noise and rooms too: on the
-benchmark's human speech one right syllable in ten falls below it, and about half of those more than
-100 ms off do). Audio is read in blocks: an
+is below talkface.kLowAlignmentConfidence (0.5) is one to check: its start may be more than 100 ms off.
+The confidence (not a probability) grows with the evidence for the syllable's place (its sounds' fit,
+a change of spectrum where it starts, lengths near their priors at the local pace, its neighbours'
+evidence) and is calibrated on the recording, so the threshold holds in noise and rooms too: on the
+benchmark's human speech it flags 9.6% of the syllables within 100 ms (3-21% per condition, a room the
+most) and catches 56% of those more than 100 ms off (held out: 8.2% and 45%). Audio is read in blocks: an
 hour of speech aligns in bounded memory.
 
 The GIL is released while aligning, so alignments on several threads run at once; one aligner may be
