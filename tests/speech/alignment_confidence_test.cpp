@@ -4,6 +4,7 @@
 #include <random>
 #include <vector>
 
+#include "common/chain_state.hpp"
 #include "speech/alignment_confidence.hpp"
 #include "talkface/speech_aligner.hpp"
 
@@ -20,16 +21,9 @@ constexpr std::size_t kEdgeFrames = 20;
 constexpr std::size_t kDrifted = 6;
 constexpr std::size_t kDriftFrames = 8;
 
+// The chain's states: up to 1.2 s each, only the edge silences optional.
 PhoneState chain_state(PhoneClass phone_class, StateRole role, std::size_t syllable, double median_frames) {
-    PhoneState state;
-    state.phone_class = phone_class;
-    state.role = role;
-    state.syllable = syllable;
-    state.median_frames = median_frames;
-    state.log_sigma = 0.4;
-    state.max_frames = 120;
-    state.is_optional = role == StateRole::edge_silence;
-    return state;
+    return talkface::test::chain_state(phone_class, role, syllable, median_frames, 120, role == StateRole::edge_silence);
 }
 
 // A sentence of sibilant + vowel syllables, the vowels taking turns so that a syllable moved onto

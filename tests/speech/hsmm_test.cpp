@@ -2,24 +2,14 @@
 
 #include <vector>
 
+#include "common/chain_state.hpp"
 #include "speech/hsmm.hpp"
 
 using namespace talkface::detail;
 
 namespace {
 
-PhoneState chain_state(PhoneClass phone_class, StateRole role, std::size_t syllable, double median_frames,
-                       std::size_t max_frames, bool is_optional) {
-    PhoneState state;
-    state.phone_class = phone_class;
-    state.role = role;
-    state.syllable = syllable;
-    state.median_frames = median_frames;
-    state.log_sigma = 0.4;
-    state.max_frames = max_frames;
-    state.is_optional = is_optional;
-    return state;
-}
+using talkface::test::chain_state;
 
 // A sentence of `syllables` sibilant + vowel syllables between edge silences, and emissions that
 // favour each planted segment's class by 5 per frame: the search must find exactly the plant.
