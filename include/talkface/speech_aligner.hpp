@@ -22,10 +22,10 @@ inline namespace v0 {
 /// their priors at the pace of the syllables around it; averaged with its neighbours' (drift comes
 /// in runs), and weighed half as it is and half against the recording's median, so that the
 /// threshold holds in noise and in a room nearly as in clean speech. It is not a probability. On
-/// the benchmark's human speech (bench/README.md, issue 12) the threshold flags 9.6% of the
-/// syllables within 100 ms (3-21% per recording condition, a room the most) and catches 56% of
-/// those more than 100 ms off (207 of 368); on the held-out passages, measured after it was set,
-/// 8.2% and 45% (29 of 64). On synthetic speech (espeak-ng) it flags 1-2% of right syllables.
+/// the benchmark's human speech (bench/README.md, issue 12) the threshold flags 9.0% of the
+/// syllables within 100 ms (2-21% per recording condition, a room the most) and catches 57% of
+/// those more than 100 ms off (179 of 315); on the held-out passages, measured after it was set,
+/// 7.6% and 47% (20 of 43). On synthetic speech (espeak-ng) it flags 1-2% of right syllables.
 constexpr double kLowAlignmentConfidence = 0.5;
 
 /// Audio samples the caller owns: `frame_count` frames of `channel_count` interleaved float samples

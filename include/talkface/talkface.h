@@ -652,8 +652,8 @@ TF_API tf_status tf_timeline_syllable_times(const tf_timeline *timeline, size_t 
  * evidence for the syllable's place: its sounds' fit, a change of spectrum where it starts, lengths
  * near their priors at the local pace, its neighbours' evidence; it is calibrated on the recording
  * (half against the recording's median), so the threshold holds across noise and rooms. On the
- * benchmark's human speech it flags 9.6% of the syllables within 100 ms (3-21% per condition, a
- * room the most) and catches 56% of those more than 100 ms off (held out: 8.2% and 45%)
+ * benchmark's human speech it flags 9.0% of the syllables within 100 ms (2-21% per condition, a
+ * room the most) and catches 57% of those more than 100 ms off (held out: 7.6% and 47%)
  * (bench/README.md). `talkface align --plot` draws such syllables in red. */
 #define TF_LOW_ALIGNMENT_CONFIDENCE 0.5
 

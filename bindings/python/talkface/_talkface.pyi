@@ -13,8 +13,8 @@ _FloatArray = numpy.typing.NDArray[numpy.float64]
 
 __version__: str
 kMaxPoseAngleDeg: float
-# A syllable whose confidence is below this (0.5) may be more than 100 ms off: check it (flags 9.6% of
-# right syllables, catches 56% of those >100 ms off on the benchmark's human speech; SpeechAligner).
+# A syllable whose confidence is below this (0.5) may be more than 100 ms off: check it (flags 9.0% of
+# right syllables, catches 57% of those >100 ms off on the benchmark's human speech; SpeechAligner).
 kLowAlignmentConfidence: float
 kGenericSpeechPinyin: str
 
