@@ -13,8 +13,8 @@ namespace talkface::detail {
 class AudioSource;
 
 constexpr int kAnalysisRateHz = 16000;
-constexpr double kFrameStepS = 0.010;
 constexpr double kFramesPerSecond = 100.0;
+constexpr double kFrameStepS = 1.0 / kFramesPerSecond;  // the double nearest 0.01, as the literal is
 
 // When frame `frame` starts, as reported to the caller: divided rather than multiplied by
 // kFrameStepS, since 357 * 0.01 is 3.5700000000000003 and 357 / 100.0 the double nearest 3.57,
