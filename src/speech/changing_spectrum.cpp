@@ -7,7 +7,6 @@ namespace talkface::detail {
 
 namespace {
 
-constexpr double kEnergyFloor = 1e-10;
 constexpr double kBinHz = static_cast<double>(kAnalysisRateHz) / PowerSpectrum::kSize;
 constexpr auto kFirstBin = static_cast<std::size_t>(kChangeBandLowHz / kBinHz) + 1;
 constexpr auto kEndBin = static_cast<std::size_t>(kChangeBandHighHz / kBinHz) + 1;
@@ -45,8 +44,8 @@ void ChangingSpectrum::write(std::size_t frame, const float* before, const float
         changing += std::max(0.0f, power[k] - kChangeRatio * held);
     }
     float* row = &track_.values[frame * kFeatureCount];
-    row[kChangeBandDb] = static_cast<float>(10.0 * std::log10(band + kEnergyFloor));
-    row[kChangingDb] = static_cast<float>(10.0 * std::log10(changing + kEnergyFloor));
+    row[kChangeBandDb] = static_cast<float>(10.0 * std::log10(band + kFeatureEnergyFloor));
+    row[kChangingDb] = static_cast<float>(10.0 * std::log10(changing + kFeatureEnergyFloor));
     written_ = frame + 1;
 }
 

@@ -27,7 +27,6 @@ constexpr std::size_t kBins = PowerSpectrum::kBins;
 constexpr int kMelFilters = 24;
 // Below this peak (-80 dBFS) there is no speech to align, only dither or digital silence.
 constexpr float kSilentPeak = 1e-4f;
-constexpr double kEnergyFloor = 1e-10;
 // Dither (standard deviation: 0.3 of a 16-bit step, about -100 dBFS) added to every sample of the
 // frame whose spectrum's shape (the cepstra) is taken, as a recording's own noise floor would be
 // (Kaldi dithers the same way). Digital silence (a synthesizer's closures, speech joined by an
@@ -139,7 +138,7 @@ private:
             const auto last = std::min(kBins - 1, static_cast<std::size_t>(high_hz * kFftSize / kAnalysisRateHz));
             double sum = 0.0;
             for (std::size_t k = first; k <= last; ++k) sum += power_[k];
-            return static_cast<float>(10.0 * std::log10(sum + kEnergyFloor));
+            return static_cast<float>(10.0 * std::log10(sum + kFeatureEnergyFloor));
         };
         std::array<float, kFeatureCount> row{};
         std::array<float, kMelFilters> log_mel{};
@@ -147,7 +146,7 @@ private:
             double sum = 0.0;
             for (std::size_t k = mel_first_bin_[m]; k < mel_end_bin_[m]; ++k)
                 sum += static_cast<double>(mel_weights_[m][k]) * dithered_power_[k];
-            log_mel[m] = static_cast<float>(std::log(sum + kEnergyFloor));
+            log_mel[m] = static_cast<float>(std::log(sum + kFeatureEnergyFloor));
         }
         for (std::size_t c = 0; c < kCepstrumCount; ++c) {
             float sum = 0.0f;

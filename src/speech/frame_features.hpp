@@ -15,6 +15,9 @@ class AudioSource;
 constexpr int kAnalysisRateHz = 16000;
 constexpr double kFramesPerSecond = 100.0;
 constexpr double kFrameStepS = 1.0 / kFramesPerSecond;  // the double nearest 0.01, as the literal is
+// Added to every power before its logarithm is taken, so that digital silence reads -100 dB (in
+// the dB columns) rather than minus infinity.
+constexpr double kFeatureEnergyFloor = 1e-10;
 
 // When frame `frame` starts, as reported to the caller: divided rather than multiplied by
 // kFrameStepS, since 357 * 0.01 is 3.5700000000000003 and 357 / 100.0 the double nearest 3.57,

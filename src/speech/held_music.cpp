@@ -9,7 +9,6 @@ namespace {
 
 // Digital silence reads -100 dB (frame_features' floor): frames that quiet hold no sound to judge.
 constexpr float kSoundDb = -90.0f;
-constexpr double kEnergyFloor = 1e-10;
 
 float median(std::vector<float> values) {
     const auto middle = values.begin() + static_cast<std::ptrdiff_t>((values.size() - 1) / 2);
@@ -35,7 +34,7 @@ std::vector<bool> held_music_frames(const FeatureTrack& track, const std::vector
     for (std::size_t t = 0; t < frames; ++t) {
         const std::size_t first = t >= kHeldMusicHalfWindow ? t - kHeldMusicHalfWindow : 0;
         const std::size_t end = std::min(frames, t + kHeldMusicHalfWindow + 1);
-        share[t] = static_cast<float>((changing[end] - changing[first]) / (band[end] - band[first] + kEnergyFloor));
+        share[t] = static_cast<float>((changing[end] - changing[first]) / (band[end] - band[first] + kFeatureEnergyFloor));
         if (activity_db[t] >= threshold_db) speech_db.push_back(activity_db[t]);
         else if (track.at(t, kChangeBandDb) > kSoundDb) quiet_share.push_back(share[t]);
     }
