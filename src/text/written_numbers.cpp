@@ -475,6 +475,15 @@ std::optional<SpokenForm> read_numeric_date(const std::vector<CodePoint>& text, 
     return form;
 }
 
+// A phone number's groups of digits, each said digit by digit with 幺 for 1; a group too long to be
+// read as a number carries the warning (once).
+void append_phone_groups(SpokenForm& form, const std::vector<std::string>& groups) {
+    for (const auto& group : groups) {
+        form.words += digit_words(group, true);
+        if (group.size() > kMostCardinalDigits && form.warning.empty()) form.warning = kTooLongWarning;
+    }
+}
+
 // 010-12345678, 0912-345-678: groups of digits joined by dashes, said digit by digit.
 std::optional<SpokenForm> read_dashed_digits(const std::vector<CodePoint>& text, const WrittenNumber& first,
                                              bool is_phone) {
@@ -488,10 +497,7 @@ std::optional<SpokenForm> read_dashed_digits(const std::vector<CodePoint>& text,
     const bool looks_like_phone = first.whole.front() == '0' || groups.size() >= 3 || is_phone;
     if (groups.size() < 2 || !looks_like_phone) return std::nullopt;
     SpokenForm form;
-    for (const auto& group : groups) {
-        form.words += digit_words(group, true);
-        if (group.size() > kMostCardinalDigits && form.warning.empty()) form.warning = kTooLongWarning;
-    }
+    append_phone_groups(form, groups);
     form.end = i;
     return form;
 }
@@ -626,10 +632,7 @@ std::optional<SpokenForm> read_calling_code(const std::vector<CodePoint>& text, 
     if (!is_code) return std::nullopt;
     SpokenForm form;
     form.words = "加" + digit_words(code, true);
-    for (const auto& group : groups) {
-        form.words += digit_words(group, true);
-        if (group.size() > kMostCardinalDigits && form.warning.empty()) form.warning = kTooLongWarning;
-    }
+    append_phone_groups(form, groups);
     form.end = end;
     return form;
 }
