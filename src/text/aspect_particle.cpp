@@ -65,7 +65,7 @@ bool may_start_word_here(const std::vector<std::string_view>& characters, std::s
     if (end - start < 2 || characters[start] != "了" || start == 0 || end >= characters.size()) return true;
     if (!is_verb_taking_particle(characters[start - 1])) return true;
     const std::string next_word = std::string(characters[end - 1]) + std::string(characters[end]);
-    return tables.words.count(next_word) == 0;
+    return !tables.word(next_word);
 }
 
 std::string_view reading_before_particle(std::string_view word, std::string_view next) {

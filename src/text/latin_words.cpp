@@ -72,22 +72,8 @@ void append_words(std::vector<std::string>& syllables, std::string_view words) {
 
 }  // namespace
 
-// A binary search of the sorted lines finds a word (a map of 100k words would cost
-// more memory than the text it indexes).
-const std::vector<std::string_view>& english_lines() {
-    static const std::vector<std::string_view> lines = [] {
-        std::vector<std::string_view> result;
-        const auto text = english_text();
-        for (std::size_t chunk = 0; chunk < text.chunk_count; ++chunk) {
-            std::string_view rest(text.chunks[chunk]);
-            while (!rest.empty()) {
-                const auto end = rest.find('\n');
-                result.push_back(rest.substr(0, end));
-                rest.remove_prefix(end == std::string_view::npos ? rest.size() : end + 1);
-            }
-        }
-        return result;
-    }();
+const SortedLines& english_lines() {
+    static const SortedLines lines(english_text());
     return lines;
 }
 
@@ -191,13 +177,10 @@ std::optional<std::vector<std::string>> english_word_syllables(std::string_view 
         append_words(syllables, said);
         return syllables;
     }
-    const auto& lines = english_lines();
-    const auto found = std::lower_bound(lines.begin(), lines.end(), key, [](std::string_view line, const std::string& k) {
-        return line.substr(0, line.find('\t')) < k;
-    });
-    if (found == lines.end() || found->substr(0, found->find('\t')) != key) return std::nullopt;
+    const auto found = english_lines().find(key);
+    if (!found) return std::nullopt;
     std::vector<std::string> syllables;
-    append_words(syllables, found->substr(found->find('\t') + 1));
+    append_words(syllables, *found);
     return syllables;
 }
 

@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "text/sorted_lines.hpp"
+
 namespace talkface::detail {
 
 // The numbered-pinyin syllables of ASCII letters said one by one ("CEO" -> xi1 yi4 ou1).
@@ -43,9 +45,9 @@ bool is_said_as_word(std::string_view word);
 // st, th ...): Zor blax. Empty if it has no vowel (Xkcd), which no one says as a word.
 std::vector<std::string> spelled_syllables(std::string_view word);
 
-// Every line of the English table, "word\tsyl1 syl2", sorted by word (for the lookup, and for a
-// test that checks every reading).
-const std::vector<std::string_view>& english_lines();
+// The English table, "word\tsyl1 syl2" sorted by word (for the lookup, and for a test that
+// checks every reading).
+const SortedLines& english_lines();
 
 }  // namespace talkface::detail
 

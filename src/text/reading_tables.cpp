@@ -10,85 +10,61 @@ namespace talkface::detail {
 
 namespace {
 
-std::vector<std::string_view> split(std::string_view text, char separator) {
-    std::vector<std::string_view> parts;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        const auto end = std::min(text.find(separator, start), text.size());
-        if (end > start) parts.push_back(text.substr(start, end - start));
-        start = end + 1;
-    }
-    return parts;
-}
-
-// Calls `visit(line)` for every line of an embedded table.
-template <typename Visit>
-void for_each_line(EmbeddedText text, Visit visit) {
-    for (std::size_t chunk = 0; chunk < text.chunk_count; ++chunk) {
-        for (const auto line : split(text.chunks[chunk], '\n')) visit(line);
-    }
-}
-
 std::size_t count_characters(std::string_view utf8) {
     return static_cast<std::size_t>(std::count_if(utf8.begin(), utf8.end(), [](char byte) {
         return (static_cast<unsigned char>(byte) & 0xC0U) != 0x80U;
     }));
 }
 
-// A table line is "key\treading reading ...". The generators guarantee the shape, so a line
-// without a tab is a build of mismatched files, not a user error.
-std::pair<std::string_view, std::vector<std::string_view>> parse_line(std::string_view line) {
-    const auto tab = line.find('\t');
-    if (tab == std::string_view::npos) {
-        throw internal_error("reading table line \"" +
-                                             std::string(line) + "\" has no tab");
+// "cost" or "cost\treadings" after a word of the phrase list. The generator guarantees the shape,
+// so another is a build of mismatched files, not a user error.
+Word parse_word(std::string_view word, std::string_view value) {
+    const auto line = [&] { return "phrase table line \"" + std::string(word) + "\t" + std::string(value) + "\""; };
+    const auto cost = SortedLines::key_of(value);
+    const auto readings = SortedLines::value_of(value);
+    const bool is_number = !cost.empty() && cost.size() < 7 &&
+                           std::all_of(cost.begin(), cost.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (!is_number || readings.find('\t') != std::string_view::npos) {
+        throw internal_error(line() + " is not word, cost, readings");
     }
-    return {line.substr(0, tab), split(line.substr(tab + 1), ' ')};
-}
-
-int parse_cost(std::string_view digits, std::string_view line) {
-    const bool is_number = !digits.empty() && digits.size() < 7 &&
-                           std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
-    if (!is_number) throw internal_error("phrase table line \"" + std::string(line) + "\" has no cost");
-    int cost = 0;
-    for (const char digit : digits) cost = cost * 10 + (digit - '0');
-    return cost;
-}
-
-ReadingTables build_tables() {
-    ReadingTables tables;
-    for_each_line(syllables_text(), [&](std::string_view line) { tables.toneless_syllables.insert(line); });
-    for_each_line(readings_text(), [&](std::string_view line) {
-        auto [character, readings] = parse_line(line);
-        tables.character_readings.emplace(character, std::move(readings));
-    });
-    // "詞語\tcost" or "詞語\tcost\tci2 yu3".
-    for_each_line(phrases_text(), [&](std::string_view line) {
-        const auto fields = split(line, '\t');
-        if (fields.size() < 2 || fields.size() > 3) {
-            throw internal_error("phrase table line \"" + std::string(line) + "\" is not word, cost, readings");
-        }
-        const auto word = fields[0];
-        Word entry;
-        entry.cost = parse_cost(fields[1], line);
-        if (fields.size() == 3) entry.readings = split(fields[2], ' ');
-        const auto characters = count_characters(word);
-        if (!entry.readings.empty() && entry.readings.size() != characters) {
-            throw internal_error("phrase table line \"" + std::string(line) + "\" has " +
-                                 std::to_string(entry.readings.size()) + " readings for " +
-                                 std::to_string(characters) + " characters");
-        }
-        tables.longest_word_characters = std::max(tables.longest_word_characters, characters);
-        if (characters == 1) tables.unknown_character_cost = std::max(tables.unknown_character_cost, entry.cost);
-        tables.words.emplace(word, std::move(entry));
-    });
-    return tables;
+    Word entry;
+    for (const char digit : cost) entry.cost = entry.cost * 10 + (digit - '0');
+    if (!readings.empty()) entry.readings = split_words(readings);
+    const auto characters = count_characters(word);
+    if (!entry.readings.empty() && entry.readings.size() != characters) {
+        throw internal_error(line() + " has " + std::to_string(entry.readings.size()) + " readings for " +
+                             std::to_string(characters) + " characters");
+    }
+    return entry;
 }
 
 }  // namespace
 
+ReadingTables::ReadingTables()
+    : characters_(readings_text()), words_(phrases_text()), syllables_(syllables_text()) {
+    for (const auto line : words_.lines()) {
+        const auto word = SortedLines::key_of(line);
+        const auto characters = count_characters(word);
+        longest_word_characters_ = std::max(longest_word_characters_, characters);
+        if (characters == 1) {
+            unknown_character_cost_ = std::max(unknown_character_cost_, parse_word(word, SortedLines::value_of(line)).cost);
+        }
+    }
+}
+
+std::vector<std::string_view> ReadingTables::readings(std::string_view character) const {
+    const auto found = characters_.find(character);
+    return found ? split_words(*found) : std::vector<std::string_view>();
+}
+
+std::optional<Word> ReadingTables::word(std::string_view word) const {
+    const auto found = words_.find(word);
+    if (!found) return std::nullopt;
+    return parse_word(word, *found);
+}
+
 const ReadingTables& reading_tables() {
-    static const ReadingTables tables = build_tables();
+    static const ReadingTables tables;
     return tables;
 }
 
@@ -118,7 +94,7 @@ std::string normalise_pinyin(std::string_view written) {
     } else if (letters == "lue" || letters == "nue") {
         letters[1] = 'v';
     }
-    if (reading_tables().toneless_syllables.count(letters) == 0) return {};
+    if (!reading_tables().is_toneless_syllable(letters)) return {};
     return letters + tone;
 }
 

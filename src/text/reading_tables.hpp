@@ -1,14 +1,15 @@
-// The character, phrase and syllable tables of the transcript reader, parsed once from the
-// embedded text (embedded_text.hpp) on first use.
+// The character, phrase and syllable tables of the transcript reader, searched in place in the
+// embedded text (embedded_text.hpp, sorted_lines.hpp), indexed once on first use.
 #ifndef TALKFACE_TEXT_READING_TABLES_HPP
 #define TALKFACE_TEXT_READING_TABLES_HPP
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
-#include <unordered_map>
-#include <unordered_set>
 #include <vector>
+
+#include "text/sorted_lines.hpp"
 
 namespace talkface::detail {
 
@@ -22,18 +23,40 @@ struct Word {
     std::vector<std::string_view> readings;
 };
 
-struct ReadingTables {
-    // UTF-8 character -> its readings in numbered pinyin, most frequent first.
-    std::unordered_map<std::string_view, std::vector<std::string_view>> character_readings;
-    // UTF-8 word -> its cost and readings.
-    std::unordered_map<std::string_view, Word> words;
-    std::size_t longest_word_characters = 0;
+class ReadingTables {
+public:
+    ReadingTables();
+
+    // Whether the UTF-8 character has a reading: what makes it a Han character to the reader.
+    bool has_readings(std::string_view character) const { return characters_.find(character).has_value(); }
+    // Its readings in numbered pinyin, most frequent first; empty if it has none.
+    std::vector<std::string_view> readings(std::string_view character) const;
+
+    // The UTF-8 word's cost and readings, if the phrase list has it. Throws an internal error for a
+    // line of the list that is not "word\tcost" or "word\tcost\treadings" (one per character).
+    std::optional<Word> word(std::string_view word) const;
+    // The most characters a word of the phrase list has.
+    std::size_t longest_word_characters() const { return longest_word_characters_; }
     // The cost of a character the phrase list lacks: that of its rarest one-character word.
-    int unknown_character_cost = 0;
-    std::unordered_set<std::string_view> toneless_syllables;
+    int unknown_character_cost() const { return unknown_character_cost_; }
+
+    // Whether a lowercase toneless syllable ("lv", "zhuang") is one Mandarin has.
+    bool is_toneless_syllable(std::string_view letters) const { return syllables_.find(letters).has_value(); }
+
+    // The tables' lines, for checks over every entry.
+    const SortedLines& character_lines() const { return characters_; }
+    const SortedLines& word_lines() const { return words_; }
+    const SortedLines& syllable_lines() const { return syllables_; }
+
+private:
+    SortedLines characters_;
+    SortedLines words_;
+    SortedLines syllables_;
+    std::size_t longest_word_characters_ = 0;
+    int unknown_character_cost_ = 0;
 };
 
-// The tables, built on first call; views point into the embedded text, which lives as long as
+// The tables, indexed on first call; views point into the embedded text, which lives as long as
 // the program. Thread-safe: a function-local static.
 const ReadingTables& reading_tables();
 

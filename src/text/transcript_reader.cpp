@@ -245,7 +245,7 @@ public:
         const auto text = width_folded(written);
         is_traditional_ = detail::is_traditional_text(text);
         has_han_ = std::any_of(text.begin(), text.end(),
-                               [&](const CodePoint& c) { return tables_.character_readings.count(c.text) != 0; });
+                               [&](const CodePoint& c) { return tables_.has_readings(c.text); });
         for (std::size_t i = 0; i < text.size();) i = read_item(text, i);
         close_sentence();
         return std::move(timeline_);
@@ -266,7 +266,7 @@ private:
             starts_paragraph_ = !timeline_.sentences.empty();
         }
         if (c.value == '{') return read_fix(text, i);
-        if (tables_.character_readings.count(c.text) != 0) {
+        if (tables_.has_readings(c.text)) {
             if (sentence_ended_) close_sentence();
             append_text(c.text);
             run_.push_back({&c, c.text, {}});
@@ -593,7 +593,7 @@ private:
             if (is_space(c.value)) {
                 flush();
                 ++i;
-            } else if (tables_.character_readings.count(c.text) != 0) {
+            } else if (tables_.has_readings(c.text)) {
                 run.push_back({nullptr, c.text, {}});
                 ++i;
             } else if (is_pinyin_letter(c.value)) {
@@ -647,8 +647,8 @@ private:
         for (std::size_t w = 0; w < lengths.size(); ++w) {
             const auto length = lengths[w];
             const auto& word = words[w];
-            const auto found = tables_.words.find(word);
-            const bool has_readings = found != tables_.words.end() && !found->second.readings.empty();
+            const auto found = tables_.word(word);
+            const bool has_readings = found && !found->readings.empty();
             const auto next_word = w + 1 < lengths.size() && lengths[w + 1] == 1 ? characters[first + length]
                                                                                   : std::string_view();
             auto in_context = detail::reading_before_particle(word, next_word);
@@ -659,8 +659,8 @@ private:
                 if (pinyin.empty() && k == 0 && !in_context.empty()) {
                     pinyin = in_context;
                 } else if (pinyin.empty()) {
-                    pinyin = has_readings ? std::string(found->second.readings[k])
-                                          : std::string(tables_.character_readings.at(character.text).front());
+                    pinyin = has_readings ? std::string(found->readings[k])
+                                          : std::string(tables_.readings(character.text).front());
                     check_table_reading(character, pinyin);
                 }
                 readings_of_run.push_back(std::move(pinyin));
@@ -681,7 +681,7 @@ private:
         const auto characters = decode_utf8(words, "<reading>");
         std::vector<HanCharacter> run;
         for (const auto& c : characters) {
-            if (tables_.character_readings.count(c.text) == 0) {
+            if (!tables_.has_readings(c.text)) {
                 throw detail::internal_error("the reading \"" + words +
                                                      "\" holds \"" + std::string(c.text) + "\", which has no reading");
             }

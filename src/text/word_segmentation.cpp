@@ -19,17 +19,17 @@ std::vector<std::size_t> likeliest_words(const std::vector<std::string_view>& ch
     best_cost[0] = 0;
     std::string word;
     for (std::size_t end = 1; end <= count; ++end) {
-        const auto longest = std::min(end, std::max<std::size_t>(tables.longest_word_characters, 1));
+        const auto longest = std::min(end, std::max<std::size_t>(tables.longest_word_characters(), 1));
         for (auto start = end - longest; start < end; ++start) {
             word.clear();
             for (auto k = start; k < end; ++k) word += characters[k];
-            const auto found = tables.words.find(word);
             if (!may_start_word_here(characters, start, end, tables, ends_clause)) continue;
+            const auto found = tables.word(word);
             long long cost = 0;
-            if (found != tables.words.end()) {
-                cost = found->second.cost;
+            if (found) {
+                cost = found->cost;
             } else if (end - start == 1) {
-                cost = tables.unknown_character_cost;
+                cost = tables.unknown_character_cost();
             } else {
                 continue;
             }

@@ -14,8 +14,8 @@
 namespace talkface::detail {
 
 // The length in characters of each word of the cut of `characters` (each one UTF-8 character)
-// whose words' costs (ReadingTables::words; a character the list lacks costs
-// unknown_character_cost) add up lowest; among equal cuts, the one with the longer last word.
+// whose words' costs (ReadingTables::word; a character the list lacks costs
+// unknown_character_cost()) add up lowest; among equal cuts, the one with the longer last word.
 // `ends_clause`: a pause or end mark follows the run, or it ends the text (aspect_particle.hpp:
 // the idioms said so only at a clause's end).
 std::vector<std::size_t> likeliest_words(const std::vector<std::string_view>& characters,

@@ -355,21 +355,25 @@ TEST_SUITE("transcript") {
     TEST_CASE("every reading in the built-in tables is a legal syllable") {
         const auto& tables = detail::reading_tables();
         // Standard Mandarin has about 410 toneless syllables; Unihan adds a few rare ones.
-        CHECK(tables.toneless_syllables.size() > 400);
-        CHECK(tables.toneless_syllables.size() < 430);
-        CHECK(tables.character_readings.size() > 40000);
-        CHECK(tables.words.size() > 90000);
-        for (const auto& [character, readings] : tables.character_readings) {
-            for (const auto reading : readings) {
-                CAPTURE(character);
-                CHECK(is_valid_pinyin(reading));
-            }
+        CHECK(tables.syllable_lines().lines().size() > 400);
+        CHECK(tables.syllable_lines().lines().size() < 430);
+        CHECK(tables.character_lines().lines().size() > 40000);
+        CHECK(tables.word_lines().lines().size() > 90000);
+        CHECK(tables.syllable_lines().keys_ascend());
+        CHECK(tables.character_lines().keys_ascend());
+        CHECK(tables.word_lines().keys_ascend());
+        for (const auto line : tables.character_lines().lines()) {
+            const auto character = detail::SortedLines::key_of(line);
+            CAPTURE(character);
+            CHECK_FALSE(tables.readings(character).empty());
+            for (const auto reading : tables.readings(character)) CHECK(is_valid_pinyin(reading));
         }
-        for (const auto& [phrase, word] : tables.words) {
-            for (const auto reading : word.readings) {
-                CAPTURE(phrase);
-                CHECK(is_valid_pinyin(reading));
-            }
+        for (const auto line : tables.word_lines().lines()) {
+            const auto phrase = detail::SortedLines::key_of(line);
+            CAPTURE(phrase);
+            const auto word = tables.word(phrase);
+            REQUIRE(word);
+            for (const auto reading : word->readings) CHECK(is_valid_pinyin(reading));
         }
     }
 
