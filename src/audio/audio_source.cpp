@@ -103,7 +103,7 @@ public:
     FileSource(const FileSource&) = delete;
     FileSource& operator=(const FileSource&) = delete;
 
-    std::size_t read(float* mono, std::size_t max_frames) override {
+    std::size_t read_frames(float* mono, std::size_t max_frames) override {
         const auto channels = static_cast<std::size_t>(info_.channels);
         // One channel is read straight into `mono`: mixing it copied each sample as it was (but for
         // a zero's sign, which no feature tells), at a cost as high as the rest of reading.
@@ -145,7 +145,7 @@ private:
 class ViewSource final : public AudioSource {
 public:
     explicit ViewSource(const AudioView& audio) : audio_(audio) {}
-    std::size_t read(float* mono, std::size_t max_frames) override {
+    std::size_t read_frames(float* mono, std::size_t max_frames) override {
         const auto channels = static_cast<std::size_t>(audio_.channel_count);
         const std::size_t frames = std::min(max_frames, audio_.frame_count - position_);
         const float* in = audio_.samples + position_ * channels;
@@ -168,6 +168,13 @@ private:
 };
 
 }  // namespace
+
+std::size_t AudioSource::read(float* mono, std::size_t max_frames) {
+    const std::size_t frames = read_frames(mono, max_frames);
+    for (std::size_t i = 0; i < frames; ++i)
+        if (!std::isfinite(mono[i])) mono[i] = 0.0f;
+    return frames;
+}
 
 std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
     std::array<char, 12> header{};

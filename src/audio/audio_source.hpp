@@ -16,16 +16,24 @@ namespace talkface::detail {
 class AudioSource {
 public:
     virtual ~AudioSource() = default;
-    // Fills `mono` with up to `max_frames` frames (channels averaged); 0 at the end.
+    // Fills `mono` with up to `max_frames` frames (channels averaged); 0 at the end. A sample that
+    // is not a number (NaN or an infinity: a damaged stream, a float WAV or a caller's array with a
+    // stray one) reads as 0, as a player plays it: every reader of audio (the features, the plot,
+    // the page's and the video's sound) gets finite samples, and one such sample cannot turn the
+    // features of the rest of the recording into NaN.
     // \throws talkface::FileError when the data ends before the header said it would (a WAV's data
     //         size, a container's exact length for its sound track: MP4, a LAME-tagged MP3, FLAC).
-    virtual std::size_t read(float* mono, std::size_t max_frames) = 0;
+    std::size_t read(float* mono, std::size_t max_frames);
     virtual int sample_rate_hz() const = 0;
     // Frames the source says it has; progress is measured against it. For what FFmpeg reads it is
     // the container's estimate, and read() goes on to the real end.
     virtual std::size_t frame_count() const = 0;
     // Names the audio in messages: the path, or "audio" for samples in memory.
     virtual const std::string& name() const = 0;
+
+private:
+    // read()'s frames as the source holds them, before non-numbers are made 0.
+    virtual std::size_t read_frames(float* mono, std::size_t max_frames) = 0;
 };
 
 // \throws talkface::FileError if the file is missing or cannot be opened, talkface::ParseError

@@ -121,7 +121,7 @@ public:
     FfmpegSource(const FfmpegSource&) = delete;
     FfmpegSource& operator=(const FfmpegSource&) = delete;
 
-    std::size_t read(float* mono, std::size_t max_frames) override {
+    std::size_t read_frames(float* mono, std::size_t max_frames) override {
         std::size_t written = 0;
         while (written < max_frames) {
             if (pending_position_ == pending_.size()) {
@@ -260,9 +260,7 @@ private:
         for (std::size_t i = skipped; i < count; ++i) {
             float sum = 0.0f;
             for (std::size_t c = 0; c < static_cast<std::size_t>(channels); ++c) sum += interleaved_[i * channels + c];
-            // A damaged stream can decode to infinities; the speech stage's sums must stay finite.
-            const float mean = sum / static_cast<float>(channels);
-            pending_[i - skipped] = std::isfinite(mean) ? mean : 0.0f;
+            pending_[i - skipped] = sum / static_cast<float>(channels);
         }
         frames_decoded_ += count;
     }

@@ -138,6 +138,30 @@ TEST_SUITE("audio") {
         CHECK(refused >= 3);
     }
 
+    TEST_CASE("a sample that is not a number reads as 0: the speech aligns as with a 0 there") {
+        const auto wav = detail::open_audio_file(speech_clip("one_sentence.wav"));
+        std::vector<float> zeroed = test::read_all(*wav);
+        std::vector<float> damaged = zeroed;
+        const std::size_t third = damaged.size() / 3;
+        damaged[third] = std::nanf("");
+        damaged[third + 1] = INFINITY;
+        damaged[2 * third] = -INFINITY;
+        for (const std::size_t i : {third, third + 1, 2 * third}) zeroed[i] = 0.0f;
+        const AudioView damaged_view{damaged.data(), damaged.size(), 1, wav->sample_rate_hz()};
+        const auto source = detail::open_audio_view(damaged_view);
+        for (const float sample : test::read_all(*source)) REQUIRE(std::isfinite(sample));
+
+        const Timeline transcript = load_transcript(speech_clip("one_sentence.txt"));
+        const SpeechAligner aligner;
+        const Timeline reference = aligner.align({zeroed.data(), zeroed.size(), 1, wav->sample_rate_hz()}, transcript);
+        const Timeline timeline = aligner.align(damaged_view, transcript);
+        REQUIRE(timeline.syllables.size() == reference.syllables.size());
+        for (std::size_t i = 0; i < timeline.syllables.size(); ++i) {
+            CAPTURE(i);
+            CHECK(timeline.syllables[i].start_s == reference.syllables[i].start_s);
+        }
+    }
+
     TEST_CASE("a directory is a file error, not a parse error") {
         const std::string folder = test::source_path("tests/data/audio");
         CHECK_THROWS_AS(detail::open_audio_file(folder), FileError);

@@ -39,7 +39,7 @@ talkface::AudioView view_of(const std::vector<float>& samples, int rate_hz) {
 // A source that fails half way, as a truncated file does.
 class FailingSource : public talkface::detail::AudioSource {
 public:
-    std::size_t read(float* mono, std::size_t max_frames) override {
+    std::size_t read_frames(float* mono, std::size_t max_frames) override {
         if (reads_++ > 2) throw talkface::FileError("broken.wav", "the data ends early");
         std::fill(mono, mono + max_frames, 0.1F);
         return max_frames;
