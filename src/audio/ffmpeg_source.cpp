@@ -114,7 +114,10 @@ public:
         frame_.reset(av_frame_alloc());
         if (!packet_ || !frame_) throw std::bad_alloc();
         // Decode up to the first samples now: a file that holds none is refused on opening.
-        if (!decode_next_frame()) throw InvalidArgument(path_, "empty audio: the sound track decodes to no samples");
+        if (!decode_next_frame()) {
+            if (last_refusal_ != 0) throw decode_error(last_refusal_);
+            throw InvalidArgument(path_, "empty audio: the sound track decodes to no samples");
+        }
     }
 
     ~FfmpegSource() override { av_channel_layout_uninit(&resampler_layout_); }
@@ -192,11 +195,22 @@ private:
             if (received == 0) {
                 mix_down(*frame_);
                 av_frame_unref(frame_.get());
+                fill_skipped_time();
                 if (!pending_.empty()) return true;
                 continue;
             }
-            if (received == AVERROR_EOF) return false;
-            if (received != AVERROR(EAGAIN)) throw decode_error(received);
+            if (received == AVERROR_EOF) {
+                // A recording that ends in undecodable packets still lasts to its end, once any
+                // sound came before; one that holds nothing else decodes to no samples.
+                if (frames_decoded_ == 0) return false;
+                pending_.clear();
+                pending_position_ = 0;
+                fill_skipped_time();
+                return !pending_.empty();
+            }
+            if (received == AVERROR(ENOMEM)) throw std::bad_alloc();
+            // Some decoders refuse a damaged packet here rather than when it is sent.
+            if (received != AVERROR(EAGAIN)) refuse_packet(received, last_packet_frames_);
             if (!send_next_packet()) return false;
         }
     }
@@ -218,10 +232,13 @@ private:
                 continue;
             }
             const int sent = avcodec_send_packet(codec_.get(), packet_.get());
+            last_packet_frames_ = packet_frames(packet_->duration);
             av_packet_unref(packet_.get());
-            // A damaged packet is skipped, as players do (a scratch in an MP3 is a click, not the end).
-            if (sent == AVERROR_INVALIDDATA) continue;
-            if (sent < 0) throw decode_error(sent);
+            if (sent == AVERROR(ENOMEM)) throw std::bad_alloc();
+            if (sent < 0) {
+                refuse_packet(sent, last_packet_frames_);
+                continue;
+            }
             return true;
         }
     }
@@ -232,6 +249,31 @@ private:
     }
 
     double seconds_read() const { return static_cast<double>(frames_decoded_) / sample_rate_hz_; }
+
+    // A packet the decoder refuses is skipped, as players do (a scratch in an MP3 is a click, not
+    // the end): damaged (decoders say so in many words: "invalid data", or AAC's bare -1, which
+    // reads "operation not permitted"), or of a kind this FFmpeg does not decode (AMR's
+    // comfort-noise frames, which phones send in pauses, are "not yet implemented"). Its time is
+    // kept as silence, or every syllable after it would be timed early.
+    void refuse_packet(int error, std::size_t frames) {
+        skipped_frames_ += frames;
+        last_refusal_ = error;
+    }
+
+    // A packet's length in samples (its duration in the stream's time base), 0 where unknown.
+    std::size_t packet_frames(std::int64_t duration) const {
+        if (duration <= 0) return 0;
+        const std::int64_t frames = av_rescale_q(duration, stream_->time_base, AVRational{1, sample_rate_hz_});
+        return frames > 0 ? static_cast<std::size_t>(frames) : 0;
+    }
+
+    // Puts the time of the packets skipped since the last frame, as silence, before pending_.
+    void fill_skipped_time() {
+        if (skipped_frames_ == 0) return;
+        pending_.insert(pending_.begin() + static_cast<std::ptrdiff_t>(pending_position_), skipped_frames_, 0.0f);
+        frames_decoded_ += skipped_frames_;
+        skipped_frames_ = 0;
+    }
 
     // Converts a decoded frame to interleaved float and averages its channels, as the libsndfile
     // reader does, so that a file gives the same samples whichever library reads it.
@@ -297,6 +339,9 @@ private:
     double stated_seconds_ = 0.0;
     std::size_t frames_decoded_ = 0;
     std::size_t frames_to_skip_ = 0;
+    std::size_t skipped_frames_ = 0;  // the time of refused packets not yet put in pending_
+    int last_refusal_ = 0;            // the decoder's error for the last packet it refused
+    std::size_t last_packet_frames_ = 0;  // the length of the last packet sent
     bool flushed_ = false;
     std::vector<float> interleaved_;
     std::vector<float> pending_;

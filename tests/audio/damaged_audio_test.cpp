@@ -244,6 +244,63 @@ TEST_SUITE("audio") {
         CHECK(read_and_analyse(text).message.find("without its index") == std::string::npos);
     }
 
+    TEST_CASE("a scratch inside an M4A's sound track is read as silence in its place: the recording keeps its length") {
+        // 2000 random bytes a third of the way in, as a bad sector or a broken download leaves them:
+        // FFmpeg's AAC decoder refuses the packets they hit (some with AAC's bare -1, "operation not
+        // permitted"), which a player plays as a click.
+        const std::string bytes = whole(kContainers[8]);
+        std::string scratched = bytes;
+        scratched.replace(bytes.size() / 3, 2000, random_bytes(2000, 3));
+        const std::string path = test::output_path("scratched_faststart.m4a");
+        write_bytes(path, scratched);
+        auto whole_source = detail::open_audio_file(test::output_path("whole_faststart.m4a"));
+        const std::size_t whole_frames = test::read_all(*whole_source).size();
+        try {
+            auto source = detail::open_audio_file(path);
+            const std::size_t frames = test::read_all(*source).size();
+            CHECK(static_cast<double>(frames) >= static_cast<double>(whole_frames) - 0.05 * source->sample_rate_hz());
+            CHECK(frames <= whole_frames);
+        } catch (const Error& error) {
+            FAIL(std::string(error.what()));
+        }
+    }
+
+    TEST_CASE("an AMR recording's comfort-noise and empty frames keep their time, as silence") {
+        // AMR-NB as phones store it ("#!AMR\n", then 20 ms frames, each a one-byte header): in a
+        // pause a phone sends comfort-noise (SID) frames, which FFmpeg does not decode ("not yet
+        // implemented"), or empty (NO_DATA) frames, which it calls invalid. Made here by hand, since
+        // FFmpeg has no AMR encoder: 1 s of 12.2 kb/s frames (their bits random: a noise), 1 s of
+        // either, 1 s of speech frames again.
+        const std::string speech_frame(1, '\x3C');  // frame type 7 (12.2 kb/s, 31 bytes follow), quality bit
+        const std::string sid_frame(1, '\x44');     // frame type 8 (SID, 5 bytes follow)
+        const std::string empty_frame(1, '\x7C');   // frame type 15 (NO_DATA, nothing follows)
+        for (const bool is_sid : {true, false}) {
+            CAPTURE(is_sid);
+            std::string bytes = "#!AMR\n";
+            std::uint32_t seed = 5;
+            for (int i = 0; i < 50; ++i) bytes += speech_frame + random_bytes(31, seed++);
+            for (int i = 0; i < 50; ++i) bytes += is_sid ? sid_frame + random_bytes(5, seed++) : empty_frame;
+            for (int i = 0; i < 50; ++i) bytes += speech_frame + random_bytes(31, seed++);
+            const std::string path = test::output_path(is_sid ? "pause_sid.amr" : "pause_no_data.amr");
+            write_bytes(path, bytes);
+            try {
+                auto source = detail::open_audio_file(path);
+                REQUIRE(source->sample_rate_hz() == 8000);
+                const std::vector<float> samples = test::read_all(*source);
+                CHECK(samples.size() == 3u * 8000u);
+                REQUIRE(samples.size() >= 3u * 8000u);
+                double pause_energy = 0.0;
+                double last_energy = 0.0;
+                for (std::size_t i = 8000; i < 16000; ++i) pause_energy += static_cast<double>(samples[i]) * samples[i];
+                for (std::size_t i = 16000; i < 24000; ++i) last_energy += static_cast<double>(samples[i]) * samples[i];
+                CHECK(pause_energy == 0.0);
+                CHECK(last_energy > 0.0);
+            } catch (const Error& error) {
+                FAIL(std::string(error.what()));
+            }
+        }
+    }
+
     TEST_CASE("every container read whole is not called truncated") {
         for (const Container& container : kContainers) {
             const std::string file = container.file;
