@@ -22,6 +22,20 @@ bool is_verb_taking_particle(std::string_view character) {
            std::end(kVerbsTakingParticle);
 }
 
+// One-character verbs that take the potential complement 得了 (吃得了, 走得了, 来得了吗): those
+// above, and verbs of motion, of bearing and of doing that take no particle before 了解. Not those
+// whose 得 makes a word meaning "gain" (赢得了冠军, 获得了: 了 the particle).
+constexpr std::string_view kVerbsTakingComplement[] = {
+    "来", "來", "去", "走", "跑", "搬", "飞", "飛", "爬", "跳", "过", "過", "回", "进", "進", "出", "上", "下",
+    "睡", "坐", "站", "住", "活", "干", "幹", "办", "辦", "管", "治", "忍", "扛", "撑", "撐", "赶", "趕", "救",
+    "帮", "幫", "抬", "提", "穿", "戴", "跟", "逃", "躲", "离", "離"};
+
+bool is_verb_taking_complement(std::string_view character) {
+    return is_verb_taking_particle(character) ||
+           std::find(std::begin(kVerbsTakingComplement), std::end(kVerbsTakingComplement), character) !=
+               std::end(kVerbsTakingComplement);
+}
+
 std::string joined(const std::vector<std::string_view>& characters, std::size_t start, std::size_t end) {
     std::string word;
     for (auto k = start; k < end; ++k) word += characters[k];
@@ -66,6 +80,23 @@ bool may_start_word_here(const std::vector<std::string_view>& characters, std::s
     if (!is_verb_taking_particle(characters[start - 1])) return true;
     const std::string next_word = std::string(characters[end - 1]) + std::string(characters[end]);
     return !tables.word(next_word);
+}
+
+bool is_potential_complement(const std::vector<std::string_view>& characters, const std::vector<std::size_t>& lengths,
+                             std::size_t i) {
+    if (i == 0 || i + 1 >= characters.size() || characters[i] != "得" || characters[i + 1] != "了" ||
+        !is_verb_taking_complement(characters[i - 1])) {
+        return false;
+    }
+    // The words holding 得 and 了: 得 alone, 得了, or the verb with 得 (吃得); 了 alone or in 得了.
+    std::size_t start = 0;
+    std::size_t w = 0;
+    while (start + lengths[w] <= i) start += lengths[w++];
+    const bool de_alone = lengths[w] == 1;
+    const bool de_le = lengths[w] == 2 && start == i;
+    const bool verb_de = lengths[w] == 2 && start + 1 == i;
+    if (de_le) return true;
+    return (de_alone || verb_de) && w + 1 < lengths.size() && lengths[w + 1] == 1;
 }
 
 std::string_view reading_before_particle(std::string_view word, std::string_view next) {

@@ -39,6 +39,13 @@ bool may_start_word_here(const std::vector<std::string_view>& characters, std::s
 // word) keeps the adverb.
 std::string_view reading_before_particle(std::string_view word, std::string_view next);
 
+// True where characters[i] is the 得 of a potential complement 得了 (de5 liao3, "able to"): right
+// after a one-character verb (吃得了吗, 我还走得了, 搬得了, 来得了), cut as 得了, 得 了 or the verb's
+// 吃得 and 了 (`lengths`: the run's words). Not after an adverb or a subject (他还得了第一名, 他得了
+// 感冒: the verb de2, reading_before_particle) nor inside a longer word (记得了, 获得了: 了 the particle).
+bool is_potential_complement(const std::vector<std::string_view>& characters, const std::vector<std::size_t>& lengths,
+                             std::size_t i);
+
 }  // namespace talkface::detail
 
 #endif

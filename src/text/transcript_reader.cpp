@@ -667,6 +667,12 @@ private:
             }
             first += length;
         }
+        // 得了 as a potential complement (吃得了吗 de5 liao3) is read across the words it is cut into.
+        for (std::size_t k = 0; k + 1 < run.size(); ++k) {
+            if (!detail::is_potential_complement(characters, lengths, k)) continue;
+            if (run[k].fix.empty()) readings_of_run[k] = "de5";
+            if (run[k + 1].fix.empty()) readings_of_run[k + 1] = "liao3";
+        }
         return readings_of_run;
     }
 

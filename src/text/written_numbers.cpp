@@ -82,7 +82,8 @@ bool takes_liang(char32_t c) {
     return is_one_of(c, U"个個本位名只隻条條张張件次天年岁歲人种種块塊元倍台臺部辆輛家份杯碗瓶双雙对對层層场場"
                         U"周週遍斤米千万萬亿億百项項篇首页頁座所间間节節门門架把支枝根片头頭匹颗顆粒趟套声聲句"
                         U"样樣章口股群批排队隊段堆吨噸升克里码碼毛角点點成分秒小公届屆期美港欧歐英"
-                        U"步下回圈眼拳脚腳刀枪槍盒包袋箱桶罐盘盤幅集册冊封轮輪局男女");
+                        U"步下回圈眼拳脚腳刀枪槍盒包袋箱桶罐盘盤幅集册冊封轮輪局男女"
+                        U"勺匙滴串束朵棵株盆锅鍋桌副顶頂艘");
 }
 
 // Words before which a number names a room, a bus route or a house, said digit by digit when it
@@ -200,6 +201,37 @@ bool names_a_day(const std::vector<CodePoint>& text, std::size_t start, const Wr
     const std::string before = text_before(text, start, true);
     for (const std::string_view word : {"今天是", "明天是", "昨天是", "后天是", "後天是", "今天就是", "又到了", "迎来", "迎來"})
         if (ends_with(before, word)) return true;
+    return false;
+}
+
+// Four digits before 年 name a year (2026年 二零二六年) unless they count years: a number past any
+// year a text names as a date (距今约5000年: no one dates by the year 5000), a year before the common
+// era, said as a count (公元前2070年 公元前两千零七十年), or a span with 历史 or 之久 after it (1200年
+// 历史, 3000年之久).
+bool counts_years(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
+    constexpr int kLatestYearNamed = 2100;
+    if (number.has_point || number.has_separators || number.whole.size() != 4 || value_at(text, number.end) != U'年')
+        return false;
+    if (std::stoi(number.whole) > kLatestYearNamed || ends_with(text_before(text, start, true), "公元前")) return true;
+    const std::string after = text_between(text, number.end + 1, number.end + 4);
+    for (const std::string_view word : {"历史", "歷史", "的历史", "的歷史", "之久"})
+        if (after.rfind(word, 0) == 0) return true;
+    return false;
+}
+
+// A bonus to a game's attribute (攻击力+15, 暴击率+5%, 防御+20, 攻击速度+10%): the + is 加, as a
+// game's screen is read. The attribute is a word ending in 力 or 值 (攻击力, 经验值), or one of the
+// stats games show, alone or with 率 after it (暴击率, 命中率).
+bool follows_game_attribute(const std::vector<CodePoint>& text, std::size_t start) {
+    if (start == 0) return false;
+    if (is_one_of(text[start - 1].value, U"力值")) return true;
+    std::string before = text_before(text, start, true);
+    if (ends_with(before, "率")) before.erase(before.size() - std::string_view("率").size());
+    for (const std::string_view stat : {"攻击", "攻擊", "攻速", "速度", "移速", "防御", "防禦", "护甲", "護甲", "魔抗",
+                                        "暴击", "暴擊", "暴伤", "暴傷", "闪避", "閃避", "命中", "生命", "血量", "法力",
+                                        "伤害", "傷害", "穿透", "吸血", "韧性", "韌性", "格挡", "格擋", "抗性", "敏捷",
+                                        "力量", "智力", "体质", "體質", "耐力", "精神", "经验", "經驗", "金币", "金幣"})
+        if (ends_with(before, stat)) return true;
     return false;
 }
 
@@ -325,6 +357,8 @@ struct NumberContext {
     bool names_type = false;    // before 型 or 式, a type's number (737型, 99式)
     bool is_generation = false;  // two digits right before 后 (90后, 00后)
     bool is_hundredths = false;  // right after the seconds of a time (9秒83)
+    bool is_grade = false;       // a respirator's filter grade (N95)
+    bool is_span_of_years = false;  // four digits before 年 that count years, not name one (距今约5000年)
 };
 
 struct SaidNumber {
@@ -372,14 +406,18 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
         // number of three or more digits (C919 C九一九, A380) and a type's of two or more (99式
         // 九九式, 737型), a day named by its date (618 六一八) and one digit said three or more
         // times over, as a chat cheers (666 六六六, 888), are said digit by digit.
+        // So is a chat's laugh, 2333 (a 2 and three or more 3s: 二三三三, after an emoticon's number).
         const bool is_one_digit_over = whole.size() >= 3 && whole.find_first_not_of(whole.front()) == std::string::npos;
-        if (!counts && (context.is_generation || context.is_hundredths || (context.is_model && whole.size() >= 3) ||
-                        (context.names_type && whole.size() >= 2) || context.names_day ||
-                        (is_one_digit_over && !context.has_currency && !context.is_ordinal))) {
+        const bool is_laugh = whole.size() >= 4 && whole.front() == '2' && whole.find_first_not_of('3', 1) == std::string::npos;
+        // A filter grade is a name before any word (N95口罩: 口 is no measure word there).
+        if (context.is_grade ||
+            (!counts && (context.is_generation || context.is_hundredths || (context.is_model && whole.size() >= 3) ||
+                         (context.names_type && whole.size() >= 2) || context.names_day ||
+                         ((is_one_digit_over || is_laugh) && !context.has_currency && !context.is_ordinal)))) {
             said.words = digit_words(whole);
             return said;
         }
-        if (whole.size() == 4 && (context.next == U'年')) {
+        if (whole.size() == 4 && (context.next == U'年') && !context.is_span_of_years) {
             said.words = digit_words(whole);
             said.is_year = true;
             return said;
@@ -511,12 +549,13 @@ bool follows_date_or_time(const std::vector<CodePoint>& text, std::size_t mark) 
 }
 
 // The capitals of a model's name right before text[start], with nothing, a hyphen or a space
-// between (C919, A380, B-52, RTX 4090): one to three capitals that start a word and are spelled
+// between (C919, A380, B-52, RTX 4090), or the middle dot of a licence plate (京A·12345, where the
+// digits are a name as a model's are): one to three capitals that start a word and are spelled
 // (TOP in TOP 10 is the word top, a rank: latin_words.hpp), not after a digit (4K 120帧: the 4K is
 // a quantity, and 120 counts). Empty where there are none.
 std::string model_name_before(const std::vector<CodePoint>& text, std::size_t start) {
     auto i = start;
-    if (i > 0 && (text[i - 1].value == '-' || text[i - 1].value == ' ')) --i;
+    if (i > 0 && is_one_of(text[i - 1].value, U"- \u00B7\u30FB")) --i;
     std::string capitals;
     while (i > 0 && is_ascii_capital(value_at(text, i - 1))) {
         --i;
@@ -530,6 +569,15 @@ std::string model_name_before(const std::vector<CodePoint>& text, std::size_t st
 
 bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start) {
     return !model_name_before(text, start).empty();
+}
+
+// A respirator's filter grade (N95, KN95, P99: a class N R P KN KP and 90, 95 or 99, the share of
+// particles it stops): a grade's name, said digit by digit (N九五), where a model's two digits count
+// (G20 G二十).
+bool is_filter_grade(const std::vector<CodePoint>& text, std::size_t start, const std::string& digits) {
+    const auto capitals = model_name_before(text, start);
+    const bool filter_class = capitals == "N" || capitals == "R" || capitals == "P" || capitals == "KN" || capitals == "KP";
+    return filter_class && (digits == "90" || digits == "95" || digits == "99");
 }
 
 // Right after a word with a small letter, with nothing between (Tiger2024, user123): a user
@@ -692,6 +740,58 @@ std::optional<SpokenForm> read_dotted_day(const std::vector<CodePoint>& text, co
     return form;
 }
 
+// A month and a day without a year, 9/18 (as Taiwan and Hong Kong write dates, and weather and
+// event notices everywhere): 九月十八日 where the clause places something in time, with a word of
+// time right after it (9/18起, 12/31前, 9/20晚间, 10/1至10/7) or 于 於 before it (请於12/31, not
+// 小于1/3). Elsewhere it is a fraction (1/3的学生, 1/2杯, 答案是3/4), and so are the knockout rounds
+// (1/8决赛: a word of time never follows).
+std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text, std::size_t start,
+                                             const WrittenNumber& month) {
+    if (month.has_point || month.has_separators || value_at(text, month.end) != '/') return std::nullopt;
+    auto i = month.end + 1;
+    const auto day = digits_from(text, i);
+    if (!is_month_and_day(month.whole, day) || value_at(text, i) == '.' || value_at(text, i) == '/') return std::nullopt;
+    bool in_time = false;
+    const std::string after = text_between(text, i, i + 2);
+    for (const std::string_view word : {"起", "前", "后", "後", "晚", "早", "上午", "下午", "中午", "凌晨", "夜", "当天",
+                                        "當天", "至", "到", "~", "～", "-", "(", "（", "星期", "周", "週", "礼拜", "禮拜"})
+        if (after.rfind(word, 0) == 0) in_time = true;
+    const auto before = text_before(text, start, true);
+    for (const std::string_view word : {"于", "於"}) {
+        if (!ends_with(before, word)) continue;
+        const auto rest = before.substr(0, before.size() - word.size());
+        bool compares = false;
+        for (const std::string_view comparing : {"小", "大", "等", "低", "高", "多", "少", "当", "當", "属", "屬", "至", "由",
+                                                 "对", "對", "关", "關", "相"})
+            compares = compares || ends_with(rest, comparing);
+        in_time = in_time || !compares;
+    }
+    if (!in_time) return std::nullopt;
+    SpokenForm form;
+    form.words = cardinal_words(month.whole, false) + "月" + cardinal_words(day, false) + "日";
+    form.end = i;
+    return form;
+}
+
+// A race's time, minutes and seconds with their tenths or hundredths (1:28.65 一分二十八秒六五,
+// 3:27.46): the seconds' decimal point is what a clock's minutes never have. A subtitle's timestamp
+// (00:01.500: minutes with a leading zero, thousandths) is no race's.
+std::optional<SpokenForm> read_race_time(const WrittenNumber& minutes, const WrittenNumber& seconds) {
+    constexpr std::size_t kLongestMinutes = 2;
+    constexpr std::size_t kLongestFraction = 2;
+    if (minutes.has_point || minutes.has_separators || minutes.whole.size() > kLongestMinutes ||
+        (minutes.whole.size() > 1 && minutes.whole.front() == '0') || !seconds.has_point || seconds.whole.size() != 2 ||
+        seconds.whole > "59" || seconds.fraction.size() > kLongestFraction) {
+        return std::nullopt;
+    }
+    SpokenForm form;
+    form.words = (minutes.whole == "2" ? std::string("两") : cardinal_words(minutes.whole, false)) + "分" +
+                 (seconds.whole.front() == '0' ? "零" + digit_words(seconds.whole.substr(1)) : cardinal_words(seconds.whole, false)) +
+                 "秒" + digit_words(seconds.fraction);
+    form.end = seconds.end;
+    return form;
+}
+
 }  // namespace
 
 std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, std::size_t start) {
@@ -705,11 +805,12 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     const Currency* currency = currency_at(text, i, i);
     std::string sign_words;
     const auto first = value_at(text, i);
-    const bool after_word = start > 0 && (is_digit_at(text, start - 1) || is_ascii_letter(value_at(text, start - 1)));
+    // After a term (a digit, a letter, a square: x²+2x) a + or a - joins it to the next, a sign no more.
+    const bool after_word = start > 0 && (is_digit_at(text, start - 1) || is_ascii_letter(value_at(text, start - 1)) ||
+                                          is_one_of(text[start - 1].value, U"\u00B2\u00B3"));
     if (currency == nullptr && (is_dash(first) || first == '+') && is_digit_at(text, i + 1) && !after_word) {
         sign_words = first == '+' ? "正" : "负";
-        // A bonus to a game's attribute, a word ending in 力 or 值 (攻击力+15, 经验值+50): 加.
-        if (first == '+' && start > 0 && is_one_of(text[start - 1].value, U"力值")) sign_words = "加";
+        if (first == '+' && follows_game_attribute(text, start)) sign_words = "加";
         ++i;
     }
     if (!is_digit_at(text, i)) return std::nullopt;
@@ -734,6 +835,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     context.is_generation = number.whole.size() == 2 && !number.has_point && !number.has_separators &&
                             is_one_of(value_at(text, number.end), U"后後");
     context.is_hundredths = start >= 2 && text[start - 1].value == U'秒' && is_digit_at(text, start - 2);
+    context.is_grade = context.is_model && is_filter_grade(text, start, number.whole);
+    context.is_span_of_years = counts_years(text, start, number);
     context.is_service_call = is_service_call(text, start, number.end);
     SpokenForm form;
     // Two numbers said each alone with a word between: a score (3:1, and 2-1 where the clause
@@ -751,6 +854,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         is_digit_at(text, number.end + 1)) {
         auto second = parse_number(text, number.end + 1);
         if (!is_score(text, start, second.end)) {
+            if (auto time = read_race_time(number, second)) return time;
             if (auto time = read_clock_time(text, number)) return time;
         }
         return join_two(second, "比", context);
@@ -769,6 +873,9 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
             if (is_score(text, start, second.end)) return join_two(second, "比", {});
             if (relation_follows(text, second.end)) return join_two(second, "减", {});  // 5-3=2
         }
+    }
+    if (sign_words.empty() && currency == nullptr) {
+        if (auto date = read_month_and_day(text, start, number)) return date;
     }
     if (value_at(text, number.end) == '/' && is_digit_at(text, number.end + 1) && !number.has_point) {
         const auto denominator = parse_number(text, number.end + 1);
@@ -855,7 +962,9 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (currency != nullptr) form.words += currency->before;
         if (is_percent) form.words += "百分之";
         if (is_per_mille) form.words += "千分之";
-        form.words += said.words;
+        // 100% is 百分之百, as it is said (百分之百的把握), not 百分之一百.
+        const auto& whole = numbers[k].whole;
+        form.words += is_percent && whole == "100" && !numbers[k].has_point ? "百" : said.words;
         if (k == 0 && numbers.size() > 1) form.words += first_magnitude;
         if (said.is_year) {
             form.words += "年";

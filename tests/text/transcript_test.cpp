@@ -136,6 +136,25 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("这个问题还得再讨论") == "zhe4 ge4 wen4 ti2 hai2 dei3 zai4 tao3 lun4");
     }
 
+    TEST_CASE("得了 after a one-character verb is the potential complement de5 liao3") {
+        const auto pinyin = [](const std::string& transcript) {
+            std::string text;
+            for (const auto& syllable : read_transcript(transcript).syllables)
+                text += (text.empty() ? "" : " ") + syllable.pinyin;
+            return text;
+        };
+        CHECK(pinyin("你吃得了吗？") == "ni3 chi1 de5 liao3 ma5");
+        CHECK(pinyin("我还走得了。") == "wo3 hai2 zou3 de5 liao3");
+        CHECK(pinyin("你搬得了吗") == "ni3 ban1 de5 liao3 ma5");
+        CHECK(pinyin("明天你来得了吗") == "ming2 tian1 ni3 lai2 de5 liao3 ma5");
+        CHECK(pinyin("他管得了这么多") == "ta1 guan3 de5 liao3 zhe4 me5 duo1");
+        // Not after an adverb or a subject, nor in a word of gain: 了 the particle there.
+        CHECK(pinyin("他得了第一名") == "ta1 de2 le5 di4 yi1 ming2");
+        CHECK(pinyin("他赢得了冠军").rfind("ta1 ying2 de5 le5", 0) == 0);
+        CHECK(pinyin("我记得了") == "wo3 ji4 de5 le5");
+        CHECK(pinyin("吃得{de2}了{le5}") == "chi1 de2 le5");
+    }
+
     TEST_CASE("还 before a debt or with a complement closing its clause is the verb") {
         CHECK(toneless("我每个月都要还贷款。") == "wo mei ge yue dou yao huan dai kuan");
         CHECK(toneless("记得还信用卡") == "ji de huan xin yong ka");

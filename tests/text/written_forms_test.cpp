@@ -242,7 +242,7 @@ TEST_SUITE("written forms") {
             {"2型糖尿病", "二型糖尿病"},
             {"G1234次列车", "ji幺二三四次列车"},
             {"RTX 4090显卡", "a er ti ai ke si四零九零显卡"},
-            {"CPU 100%", "xi pi you百分之一百"},
+            {"CPU 100%", "xi pi you百分之百"},
             // + before a percentage: 涨, or nothing where the clause names the change; - is 负.
             {"腾讯+2.35%", "腾讯涨百分之二点三五"},
             {"涨幅+2.35%", "涨幅百分之二点三五"},
@@ -271,6 +271,65 @@ TEST_SUITE("written forms") {
             {"温差+12", "温差正十二"},
             // A compound the dictionary lacks: the split whose parts are nearest in length.
             {"她用Photoshop修图", "她用 fou tou sha pu修图"},
+        });
+    }
+
+    TEST_CASE("a month and a day without a year are a date where the clause places something in time") {
+        check_cases({
+            {"9/18起将有强降雨", "九月十八日起将有强降雨"},
+            {"颱風預計9/20晚間登陸", "颱風預計九月二十日晚間登陸"},
+            {"請於12/31前完成報名", "請於十二月三十一日前完成報名"},
+            {"于3/8举行", "于三月八日举行"},
+            // Elsewhere a fraction: a measure word or 的 after it, a comparison's 于, the knockout rounds.
+            {"倒入1/2杯牛奶", "倒入二分之一杯牛奶"},
+            {"有1/3的学生", "有三分之一的学生"},
+            {"答案是3/4", "答案是四分之三"},
+            {"小于1/3", "小于三分之一"},
+            {"进入1/8决赛", "进入八分之一决赛"},
+            {"9/40", "四十分之九"},
+        });
+    }
+
+    TEST_CASE("a race's minutes, seconds and hundredths, a respirator's grade, and 2 before a range's measure word") {
+        check_cases({
+            {"成绩是1:28.65。", "成绩是一分二十八秒六五"},
+            {"以3:27.46夺冠", "以三分二十七秒四六夺冠"},
+            {"用时2:05.03", "用时两分零五秒零三"},
+            {"下午3:30", "下午三点三十分"},
+            // N95, KN95: a filter grade's name, digit by digit, before any word; other two digits count.
+            {"符合N95标准", "符合 en九五标准"},
+            {"戴KN95口罩", "戴 kei en九五口罩"},
+            {"G20峰会", "ji二十峰会"},
+            // 2 at the head of a range takes 两 where the last end's measure word does (勺 is one).
+            {"加入2-3勺白糖", "加入两到三勺白糖"},
+            {"2-3月", "二到三月"},
+            // A licence plate's middle dot: the digits after the capital are a name.
+            {"京A·12345", "京 ei一二三四五"},
+        });
+    }
+
+    TEST_CASE("100%, a game's bonus, a chat's laugh, a span of years, a + after a square") {
+        check_cases({
+            {"100%纯棉", "百分之百纯棉"},
+            {"增长100.5%", "增长百分之一百点五"},
+            {"10%-100%", "百分之十到百分之百"},
+            // + after a game's stat (alone or with 率) is 加; after a share's name it is a rise.
+            {"暴击率+5%", "暴击率加百分之五"},
+            {"攻击速度+10%", "攻击速度加百分之十"},
+            {"防御+20", "防御加二十"},
+            {"收益率+18%", "收益率涨百分之十八"},
+            // A 2 and three or more 3s: a laugh; 233 alone counts.
+            {"笑死我了233333", "笑死我了二三三三三三"},
+            {"2333", "二三三三"},
+            {"233人", "二百三十三人"},
+            // Four digits before 年 that count years.
+            {"距今约5000年", "距今约五千年"},
+            {"公元前2070年", "公元前两千零七十年"},
+            {"已有1200年历史", "已有一千二百年历史"},
+            {"2100年", "二一零零年"},
+            {"2026年", "二零二六年"},
+            // A + or - after a square joins two terms.
+            {"x²+2x+1=0", "ai ke si平方加二 ai ke si加一等于零"},
         });
     }
 
