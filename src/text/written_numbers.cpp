@@ -171,18 +171,48 @@ std::string text_before(const std::vector<CodePoint>& text, std::size_t start, b
     return before;
 }
 
+// The text after text[end) up to the next pause or end mark (the rest of the clause; 、 does not
+// end it: 6-3、6-4 获胜 is one clause).
+std::string text_after(const std::vector<CodePoint>& text, std::size_t end) {
+    std::string after;
+    for (auto i = end; i < text.size(); ++i) {
+        const auto c = ascii_form(text[i].value);
+        if (c == '.' || c == '!' || c == '?' || c == ';' || c == ',' || c == 0x3002 || c == '\n') break;
+        after += text[i].text;
+    }
+    return after;
+}
+
 // Two numbers joined by a colon are a score, not a clock time, where the sentence speaks of a
 // match: a score word earlier in the clause (比分是21:19) or a result right after (2:0战胜,
-// 21:19获胜). Without either, a colon that can be a time is one (下午3:30).
-bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+// 21:19获胜). Without either, a colon that can be a time is one (下午3:30). Joined by a dash
+// (`dashed`), they are a score where a result of two characters comes anywhere later in the clause
+// too, as a tennis result lists its sets first (6-3、6-4直落两盘获胜): a dash makes no clock time to
+// mistake, only a range, which the caller tells by its measure word (3-5天后获胜).
+bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t end, bool dashed = false) {
     const std::string before = text_before(text, start, true);
     for (const std::string_view word : {"比分", "比數", "比数", "战成", "戰成", "打成", "踢成"})
         if (before.find(word) != std::string::npos) return true;
     const std::string after = text_between(text, end, end + 2);
-    for (const std::string_view word : {"战胜", "戰勝", "击败", "擊敗", "获胜", "獲勝", "取胜", "取勝", "领先", "領先",
-                                        "落后", "落後", "险胜", "險勝", "大胜", "大勝", "完胜", "完勝", "逆转", "逆轉",
-                                        "告负", "告負", "胜", "勝", "负", "負", "赢", "贏", "输", "輸"})
+    constexpr std::string_view kResults[] = {"战胜", "戰勝", "击败", "擊敗", "获胜", "獲勝", "取胜", "取勝", "领先", "領先",
+                                             "落后", "落後", "险胜", "險勝", "大胜", "大勝", "完胜", "完勝", "逆转", "逆轉",
+                                             "告负", "告負", "胜", "勝", "负", "負", "赢", "贏", "输", "輸"};
+    for (const auto word : kResults)
         if (after.rfind(word, 0) == 0) return true;
+    if (!dashed) return false;
+    const std::string clause = text_after(text, end);
+    for (const auto word : kResults)
+        if (word.size() > std::string_view("胜").size() && clause.find(word) != std::string::npos) return true;
+    return false;
+}
+
+// A colon's time where the clause speaks of how long something took (跑出了2:05:30的成绩, 用时3:35):
+// a duration, 两小时零五分三十秒, 三分三十五秒, not a time of day.
+bool speaks_of_duration(const std::vector<CodePoint>& text, std::size_t start) {
+    const std::string before = text_before(text, start, true);
+    for (const std::string_view word : {"成绩", "成績", "用时", "用時", "耗时", "耗時", "历时", "歷時", "跑出", "游出",
+                                        "完赛", "完賽", "时长", "時長"})
+        if (before.find(word) != std::string::npos) return true;
     return false;
 }
 
@@ -244,20 +274,34 @@ bool names_change(const std::vector<CodePoint>& text, std::size_t start) {
 }
 
 // A naming word right before the number (房间号是1208, 编号：305, and a code's: 密码是86753090,
-// 验证码：5408): said digit by digit as a room's number is.
+// 验证码：5408), or a floor, a building or a staircase with its number before it (3楼302, 5栋1203,
+// 2单元301: the room's number follows): said digit by digit as a room's number is.
 bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start) {
     std::size_t i = start;
     for (int skipped = 0; skipped < 2 && i > 0 && is_one_of(text[i - 1].value, U" 是为為：:\u3000"); ++skipped) --i;
-    return i > 0 && is_one_of(text[i - 1].value, U"号號室房码碼");
+    if (i > 0 && is_one_of(text[i - 1].value, U"号號室房码碼")) return true;
+    if (start >= 2 && is_one_of(text[start - 1].value, U"楼樓栋棟层層") && is_digit_at(text, start - 2)) return true;
+    const auto staircase = text_between(text, start >= 2 ? start - 2 : 0, start);
+    return (staircase == "单元" || staircase == "單元") && start >= 3 && is_digit_at(text, start - 3);
 }
 
-// A word earlier in the sentence that makes the numbers after it phone numbers.
+// A word earlier in the sentence that makes the numbers after it phone numbers. 号码 after a card's,
+// a document's or an account's name is theirs (身份证号码, 银行卡号码, 护照号码, 订单号码): read out,
+// not dialled, so its digits are said with 一.
 bool follows_phone_word(const std::vector<CodePoint>& text, std::size_t start) {
     const std::string before = text_before(text, start, false);
-    for (const std::string_view word : {"电话", "電話", "手机", "手機", "号码", "號碼", "热线", "熱線", "拨打",
-                                        "撥打", "致电", "致電", "分机", "分機", "传真", "傳真", "座机", "座機",
-                                        "固话", "固話"}) {
+    for (const std::string_view word : {"电话", "電話", "手机", "手機", "热线", "熱線", "拨打", "撥打", "致电", "致電",
+                                        "分机", "分機", "传真", "傳真", "座机", "座機", "固话", "固話"}) {
         if (before.find(word) != std::string::npos) return true;
+    }
+    for (const std::string_view word : {"号码", "號碼"}) {
+        for (auto at = before.find(word); at != std::string::npos; at = before.find(word, at + 1)) {
+            const auto owner = before.substr(0, at);
+            bool not_a_phone = false;
+            for (const std::string_view document : {"证", "證", "卡", "照", "单", "單", "户", "戶", "票"})
+                not_a_phone = not_a_phone || ends_with(owner, document);
+            if (!not_a_phone) return true;
+        }
     }
     return false;
 }
@@ -446,12 +490,16 @@ void append_warning(SpokenForm& form, const std::string& warning) {
 }
 
 // 3:30 三点三十分, 10:05 十点零五分, 2:00 两点; nullopt when the text after the colon is not
-// minutes (3:2 is a score).
-std::optional<SpokenForm> read_clock_time(const std::vector<CodePoint>& text, const WrittenNumber& hour) {
+// minutes (3:2 is a score). A `duration` is said in its units: 2:05:30 两小时零五分三十秒 (hours,
+// minutes and seconds), 3:35 三分三十五秒 (minutes and seconds).
+std::optional<SpokenForm> read_clock_time(const std::vector<CodePoint>& text, const WrittenNumber& hour,
+                                          bool duration = false) {
     auto i = hour.end + 1;
     const auto minutes = digits_from(text, i);
-    if (hour.has_point || hour.has_separators || hour.whole.size() > 2 || std::stoi(hour.whole) > 24 ||
-        minutes.size() != 2 || minutes > "59") {
+    constexpr int kLastHour = 24;
+    constexpr int kLastMinute = 59;  // a duration's first part may be minutes (25:30 in a 5000 m race)
+    if (hour.has_point || hour.has_separators || hour.whole.size() > 2 ||
+        std::stoi(hour.whole) > (duration ? kLastMinute : kLastHour) || minutes.size() != 2 || minutes > "59") {
         return std::nullopt;
     }
     auto say_part = [](const std::string& digits, const char* unit) -> std::string {
@@ -460,10 +508,15 @@ std::optional<SpokenForm> read_clock_time(const std::vector<CodePoint>& text, co
         return cardinal_words(digits, false) + unit;
     };
     SpokenForm form;
-    form.words = (hour.whole == "2" ? std::string("两") : cardinal_words(hour.whole, false)) + "点" +
-                 say_part(minutes, "分");
-    if (value_at(text, i) == ':' && is_digit_at(text, i + 1) && is_digit_at(text, i + 2) &&
-        !is_digit_at(text, i + 3)) {
+    const auto first = hour.whole == "2" ? std::string("两") : cardinal_words(hour.whole, false);
+    const bool has_seconds = value_at(text, i) == ':' && is_digit_at(text, i + 1) && is_digit_at(text, i + 2) &&
+                             !is_digit_at(text, i + 3);
+    if (duration) {
+        form.words = first + (has_seconds ? "小时" : "分") + say_part(minutes, has_seconds ? "分" : "秒");
+    } else {
+        form.words = first + "点" + say_part(minutes, "分");
+    }
+    if (has_seconds) {
         auto k = i + 1;
         const auto seconds = digits_from(text, k);
         if (seconds <= "59") {
@@ -855,7 +908,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         auto second = parse_number(text, number.end + 1);
         if (!is_score(text, start, second.end)) {
             if (auto time = read_race_time(number, second)) return time;
-            if (auto time = read_clock_time(text, number)) return time;
+            if (auto time = read_clock_time(text, number, speaks_of_duration(text, start))) return time;
         }
         return join_two(second, "比", context);
     }
@@ -870,7 +923,9 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (auto digits = read_dashed_digits(text, number, context.is_phone)) return digits;
         if (is_dash(value_at(text, number.end)) && is_digit_at(text, number.end + 1)) {
             auto second = parse_number(text, number.end + 1);
-            if (is_score(text, start, second.end)) return join_two(second, "比", {});
+            // A measure word after the pair makes it a range (3-5天后获胜), whatever the clause says.
+            const bool may_be_listed_score = !takes_liang(value_at(text, second.end));
+            if (is_score(text, start, second.end, may_be_listed_score)) return join_two(second, "比", {});
             if (relation_follows(text, second.end)) return join_two(second, "减", {});  // 5-3=2
         }
     }

@@ -333,6 +333,25 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("a duration after a word of how long, a set list's scores, an ID's 号码, a room after its floor") {
+        check_cases({
+            {"他跑出了2:05:30的成绩", "他跑出了两小时零五分三十秒的成绩"},
+            {"用时25:30", "用时二十五分三十秒"},
+            {"下午2:05:30", "下午两点零五分三十秒"},
+            // A result later in the clause makes each dashed pair before it a score; a range stays one.
+            {"她以6-3、6-4直落两盘获胜", "她以六比三六比四直落两盘获胜"},
+            {"3-5天后获胜", "三到五天后获胜"},
+            {"3-5，最后获胜", "三到五最后获胜"},
+            // 号码 of a card or a document is read out with 一; a phone's is dialled with 幺.
+            {"身份证号码后四位是0317", "身份证号码后四位是零三一七"},
+            {"我的号码是0317", "我的号码是零三幺七"},
+            // A floor's, a building's or a staircase's number, then the room's.
+            {"会议在B栋3楼302举行", "会议在 bi栋三楼三零二举行"},
+            {"5栋2单元301", "五栋二单元三零一"},
+            {"3楼有200人", "三楼有二百人"},
+        });
+    }
+
     TEST_CASE("a word the dictionary lacks and without a vowel is spelled letter by letter, with a warning") {
         const auto timeline = read_transcript("用Xqzt吧", {}, "t.txt");
         CHECK(said(timeline) == "用 ai ke si qiu zei ti吧");
