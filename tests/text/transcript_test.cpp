@@ -29,6 +29,13 @@ std::string toneless(const std::string& transcript) {
     return toneless(read_transcript(transcript));
 }
 
+// The numbered readings of all syllables, space-separated, where a tone is what is checked.
+std::string pinyin(const std::string& transcript) {
+    std::string text;
+    for (const auto& syllable : read_transcript(transcript).syllables) text += (text.empty() ? "" : " ") + syllable.pinyin;
+    return text;
+}
+
 }  // namespace
 
 TEST_SUITE("transcript") {
@@ -121,12 +128,6 @@ TEST_SUITE("transcript") {
     }
 
     TEST_CASE("得 before the particle 了 is the verb de2, and 得了 in 还得了 and 受得了 keeps liao") {
-        const auto pinyin = [](const std::string& transcript) {
-            std::string text;
-            for (const auto& syllable : read_transcript(transcript).syllables)
-                text += (text.empty() ? "" : " ") + syllable.pinyin;
-            return text;
-        };
         // The particle de5 never takes 了: 得 is "get" (dé) or "enough" (得了 dé·le).
         CHECK(pinyin("他还得了第一名。") == "ta1 hai2 de2 le5 di4 yi1 ming2");
         CHECK(pinyin("他得了感冒") == "ta1 de2 le5 gan3 mao4");
@@ -137,12 +138,6 @@ TEST_SUITE("transcript") {
     }
 
     TEST_CASE("得了 after a one-character verb is the potential complement de5 liao3") {
-        const auto pinyin = [](const std::string& transcript) {
-            std::string text;
-            for (const auto& syllable : read_transcript(transcript).syllables)
-                text += (text.empty() ? "" : " ") + syllable.pinyin;
-            return text;
-        };
         CHECK(pinyin("你吃得了吗？") == "ni3 chi1 de5 liao3 ma5");
         CHECK(pinyin("我还走得了。") == "wo3 hai2 zou3 de5 liao3");
         CHECK(pinyin("你搬得了吗") == "ni3 ban1 de5 liao3 ma5");
