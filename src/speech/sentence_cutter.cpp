@@ -8,6 +8,7 @@
 #include "common/number_format.hpp"
 #include "speech/alignment_checks.hpp"
 #include "speech/held_music.hpp"
+#include "speech/repeating_accompaniment.hpp"
 #include "speech/run_together.hpp"
 #include "talkface/errors.hpp"
 
@@ -262,11 +263,16 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     profile.activity_threshold_db =
         std::max({0.25f * speech_level_db, speech_level_db - 35.0f, kAboveFloorDb, noise_level_db + kNoiseWanderDb});
     // Music held through the pauses is as loud as the quieter speech: where it is held, the frame
-    // is no louder than a pause can be.
+    // is no louder than a pause can be. So are a beat's hits between the pauses it cuts up, where
+    // the beat's repeats explain them.
     const std::vector<bool> held = held_music_frames(track, profile.activity_db, profile.activity_threshold_db);
     const float pause_db = std::nextafter(profile.activity_threshold_db, -std::numeric_limits<float>::infinity());
     for (std::size_t t = 0; t < frames; ++t)
         if (held[t]) profile.activity_db[t] = std::min(profile.activity_db[t], pause_db);
+    const std::vector<bool> repeated = repeated_hits_between_pauses(
+        profile.activity_db, profile.activity_threshold_db, accompaniment_period_frames(track, profile.high_sound_floor_db));
+    for (std::size_t t = 0; t < frames; ++t)
+        if (repeated[t]) profile.activity_db[t] = pause_db;
     std::size_t first_speech = 0;
     while (first_speech < frames && !is_speech_frame(profile, first_speech)) ++first_speech;
     std::size_t end_speech = frames;
