@@ -12,6 +12,7 @@
 
 #include "audio/audio_source.hpp"
 #include "audio/decoded_audio.hpp"
+#include "common/six_sentences.hpp"
 #include "common/speech_clips.hpp"
 #include "speech/frame_features.hpp"
 #include "speech/held_music.hpp"
@@ -106,33 +107,16 @@ TEST_SUITE("speech") {
         // against the speech's active level: six sentences, 0.9 s of music inside each copy and
         // 0.6 s between copies. Its struck chords ring through the pauses as loud as the quieter
         // speech.
-        auto source = detail::open_audio_file(test::clip_path("two_sentences.wav"));
-        const int rate = source->sample_rate_hz();
-        const std::vector<float> once = test::read_all(*source);
-        std::vector<float> speech;
-        for (int copy = 0; copy < 3; ++copy) speech.insert(speech.end(), once.begin(), once.end());
-        const std::vector<float> mixed = test::mixed_at_snr(speech, piano(speech.size(), rate), rate, 15.0);
+        const test::SixSentences six = test::six_sentences();
+        const std::vector<float> mixed = test::mixed_at_snr(six.samples, piano(six.samples.size(), six.rate_hz), six.rate_hz, 15.0);
         REQUIRE(!mixed.empty());
 
-        const detail::LoudnessProfile loudness = detail::measure_loudness(features_of(mixed, rate));
-        // The five gaps between the six sentences (two_sentences.json: 1.69-2.59 s in each copy,
-        // 4.15 s to the next copy's 0.3 s).
-        const double copy_s = static_cast<double>(once.size()) / rate;
-        std::vector<std::pair<double, double>> gaps;
-        for (int copy = 0; copy < 3; ++copy) {
-            gaps.emplace_back(copy * copy_s + 1.69, copy * copy_s + 2.59);
-            if (copy < 2) gaps.emplace_back(copy * copy_s + 4.15, (copy + 1) * copy_s + 0.3);
-        }
-        for (const auto& [start_s, end_s] : gaps) {
+        const detail::LoudnessProfile loudness = detail::measure_loudness(features_of(mixed, six.rate_hz));
+        for (const auto& [start_s, end_s] : six.gaps) {
             CAPTURE(start_s);
             // One pause over most of the gap: by loudness alone the music's notes cut it in pieces
             // (4.17-4.42 and 4.45-4.77 s), or shorten it by a third (6.15-6.81 s of 6.14-7.04 s).
-            const bool found = std::any_of(loudness.pauses.begin(), loudness.pauses.end(), [&](const detail::FrameSpan& pause) {
-                const double first_s = static_cast<double>(pause.first_frame) * detail::kFrameStepS;
-                const double end_s_found = static_cast<double>(pause.end_frame) * detail::kFrameStepS;
-                return first_s >= start_s - 0.05 && end_s_found <= end_s + 0.05 && end_s_found - first_s >= 0.8 * (end_s - start_s);
-            });
-            CHECK(found);
+            CHECK(test::is_found_whole(loudness.pauses, start_s, end_s, 0.8));
         }
     }
 }

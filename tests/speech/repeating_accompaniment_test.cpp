@@ -4,13 +4,13 @@
 // found whole.
 #include <doctest/doctest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "audio/audio_source.hpp"
 #include "audio/decoded_audio.hpp"
+#include "common/six_sentences.hpp"
 #include "common/speech_clips.hpp"
 #include "speech/frame_features.hpp"
 #include "speech/repeating_accompaniment.hpp"
@@ -68,24 +68,13 @@ std::vector<float> drums(std::size_t count, int rate_hz) {
     return kit;
 }
 
-// tests/data/speech/two_sentences.wav three times over: six sentences.
-std::vector<float> six_sentences(int& rate_hz, double& copy_s) {
-    auto source = detail::open_audio_file(test::clip_path("two_sentences.wav"));
-    rate_hz = source->sample_rate_hz();
-    const std::vector<float> once = test::read_all(*source);
-    copy_s = static_cast<double>(once.size()) / rate_hz;
-    std::vector<float> speech;
-    for (int copy = 0; copy < 3; ++copy) speech.insert(speech.end(), once.begin(), once.end());
-    return speech;
-}
-
 }  // namespace
 
 TEST_SUITE("speech") {
     TEST_CASE("a drum kit's onsets repeat with its beat, noise's and a voice's do not") {
-        int rate = 0;
-        double copy_s = 0.0;
-        const std::vector<float> speech = six_sentences(rate, copy_s);
+        const test::SixSentences six = test::six_sentences();
+        const int rate = six.rate_hz;
+        const std::vector<float>& speech = six.samples;
         std::vector<float> noise(speech.size());
         Noise source{99};
         for (float& v : noise) v = 0.1f * source.next();
@@ -104,28 +93,16 @@ TEST_SUITE("speech") {
     TEST_CASE("the pauses between sentences under a drum kit are found whole") {
         // SNR 15 dB against the speech's active level: the kit's hits in the pauses (1.69-2.59 s
         // of each copy, 4.15 s to the next copy's 0.3 s) are as loud as the quieter speech.
-        int rate = 0;
-        double copy_s = 0.0;
-        const std::vector<float> speech = six_sentences(rate, copy_s);
-        const std::vector<float> mixed = test::mixed_at_snr(speech, drums(speech.size(), rate), rate, 15.0);
+        const test::SixSentences six = test::six_sentences();
+        const std::vector<float> mixed = test::mixed_at_snr(six.samples, drums(six.samples.size(), six.rate_hz), six.rate_hz, 15.0);
         REQUIRE(!mixed.empty());
 
-        const detail::LoudnessProfile loudness = detail::measure_loudness(features_of(mixed, rate));
-        std::vector<std::pair<double, double>> gaps;
-        for (int copy = 0; copy < 3; ++copy) {
-            gaps.emplace_back(copy * copy_s + 1.69, copy * copy_s + 2.59);
-            if (copy < 2) gaps.emplace_back(copy * copy_s + 4.15, (copy + 1) * copy_s + 0.3);
-        }
-        for (const auto& [start_s, end_s] : gaps) {
+        const detail::LoudnessProfile loudness = detail::measure_loudness(features_of(mixed, six.rate_hz));
+        for (const auto& [start_s, end_s] : six.gaps) {
             CAPTURE(start_s);
-            // One pause over more than half of the gap: by loudness and change alone the hits cut it
-            // in pieces. The hits next to the speech stay with it.
-            const bool found = std::any_of(loudness.pauses.begin(), loudness.pauses.end(), [&](const detail::FrameSpan& pause) {
-                const double first_s = static_cast<double>(pause.first_frame) * detail::kFrameStepS;
-                const double end_s_found = static_cast<double>(pause.end_frame) * detail::kFrameStepS;
-                return first_s >= start_s - 0.05 && end_s_found <= end_s + 0.05 && end_s_found - first_s > 0.5 * (end_s - start_s);
-            });
-            CHECK(found);
+            // One pause over half the gap or more: by loudness and change alone the hits cut it in
+            // pieces. The hits next to the speech stay with it.
+            CHECK(test::is_found_whole(loudness.pauses, start_s, end_s, 0.5));
         }
     }
 }
