@@ -288,6 +288,19 @@ std::vector<PhoneState> build_phone_chain(const std::vector<const Syllable*>& sy
     return states;
 }
 
+bool has_marked_pause(const std::vector<PhoneState>& states) {
+    return std::any_of(states.begin(), states.end(), [](const PhoneState& state) { return state.role == StateRole::comma_pause; });
+}
+
+void keep_pauses_to_marks(std::vector<PhoneState>& states) {
+    if (!has_marked_pause(states)) return;
+    for (auto& state : states) {
+        if (state.role != StateRole::short_pause) continue;
+        state.has_tail = false;
+        state.max_frames = std::min(state.max_frames, kMaxUnmarkedPauseFrames);
+    }
+}
+
 void scale_vowels(std::vector<PhoneState>& states, double factor) {
     for (auto& state : states) {
         if (!state.stretches) continue;

@@ -90,6 +90,20 @@ constexpr double kGenericSpeechFrameLogPenalty = -0.1;
 std::vector<PhoneState> build_phone_chain(const std::vector<const Syllable*>& syllables, std::size_t frames,
                                           std::size_t speech_frames);
 
+// A pause the text does not mark lasts at most this long where the aligner keeps the text's pauses
+// to its marks (keep_pauses_to_marks, speech_aligner.cpp): 0.25 s, a breath between two words. A
+// longer pause is one the text marks, which an alignment a syllable or a phrase off gave to a
+// place the text does not. bench/ Session 12: 20-50 frames alike on the tuning passages, 15 lets
+// a right one be refused.
+inline constexpr std::size_t kMaxUnmarkedPauseFrames = 25;
+
+// Whether the chain's text marks a pause (a comma's or a sentence end's, StateRole::comma_pause).
+bool has_marked_pause(const std::vector<PhoneState>& states);
+
+// In a chain whose text marks pauses, every pause it does not mark lasts at most
+// kMaxUnmarkedPauseFrames, with no tail.
+void keep_pauses_to_marks(std::vector<PhoneState>& states);
+
 // Multiplies the duration priors of the vowels (the states that stretch with the speaking rate).
 void scale_vowels(std::vector<PhoneState>& states, double factor);
 

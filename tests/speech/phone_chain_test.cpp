@@ -2,6 +2,7 @@
 // pause, and a pause the text does not mark must not take it.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -68,5 +69,40 @@ TEST_SUITE("speech") {
         const auto path = viterbi_align(states, planted.emissions, workspace);
         REQUIRE_FALSE(path.empty());
         CHECK(syllable_start(states, path, 1) == true_start);
+    }
+}
+
+TEST_SUITE("speech") {
+    TEST_CASE("kept to the text's marks, a chain gives no long pause to a place its text does not mark") {
+        // 啊衣，啊衣。 said with no stop at the comma and 0.4 s of silence inside its second phrase.
+        Planted planted;
+        planted.add(20, kSilence);
+        planted.add(16, kVowelA);
+        planted.add(16, kVowelI);
+        planted.add(16, kVowelA);
+        planted.add(40, kSilence);
+        planted.add(16, kVowelI);
+        planted.add(20, kSilence);
+        const std::size_t frames = planted.emissions.frame_count;
+        auto longest_unmarked_pause = [&](const char* text, bool is_kept_to_marks) {
+            const Timeline transcript = read_transcript(text);
+            std::vector<const Syllable*> syllables;
+            for (const auto& syllable : transcript.syllables) syllables.push_back(&syllable);
+            std::vector<PhoneState> states = build_phone_chain(syllables, frames, frames - 80);
+            if (is_kept_to_marks) keep_pauses_to_marks(states);
+            ViterbiWorkspace workspace;
+            const auto path = viterbi_align(states, planted.emissions, workspace);
+            REQUIRE_FALSE(path.empty());
+            std::size_t longest = 0;
+            for (const auto& segment : path)
+                if (states[segment.state].role == StateRole::short_pause)
+                    longest = std::max(longest, segment.end_frame - segment.first_frame);
+            return longest;
+        };
+        // The audio's own path takes the silence where it is; kept to the marks it may not.
+        CHECK(longest_unmarked_pause("啊衣，啊衣。", false) >= 35);
+        CHECK(longest_unmarked_pause("啊衣，啊衣。", true) <= kMaxUnmarkedPauseFrames);
+        // A text that marks no pause (no comma, one sentence) keeps its speaker's pauses.
+        CHECK(longest_unmarked_pause("啊衣啊衣。", true) >= 35);
     }
 }
