@@ -795,9 +795,10 @@ std::optional<SpokenForm> read_dotted_day(const std::vector<CodePoint>& text, co
 
 // A month and a day without a year, 9/18 (as Taiwan and Hong Kong write dates, and weather and
 // event notices everywhere): 九月十八日 where the clause places something in time, with a word of
-// time right after it (9/18起, 12/31前, 9/20晚间, 10/1至10/7) or 于 於 before it (请於12/31, not
-// 小于1/3). Elsewhere it is a fraction (1/3的学生, 1/2杯, 答案是3/4), and so are the knockout rounds
-// (1/8决赛: a word of time never follows).
+// time right after it (9/18起, 12/31前, 9/20晚间, 9/18(週三)) or 于 於 before it (请於12/31, not
+// 小于1/3). A range mark after it is no sign: 1/3~1/2 is a range of fractions as often as 10/1-10/7
+// is one of days. Elsewhere it is a fraction (1/3的学生, 1/2杯, 答案是3/4), and so it is before 的, a measure
+// word or 决赛, the knockout rounds' (于1/4决赛中出局), whatever stands before it.
 std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text, std::size_t start,
                                              const WrittenNumber& month) {
     if (month.has_point || month.has_separators || value_at(text, month.end) != '/') return std::nullopt;
@@ -807,8 +808,11 @@ std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text,
     bool in_time = false;
     const std::string after = text_between(text, i, i + 2);
     for (const std::string_view word : {"起", "前", "后", "後", "晚", "早", "上午", "下午", "中午", "凌晨", "夜", "当天",
-                                        "當天", "至", "到", "~", "～", "-", "(", "（", "星期", "周", "週", "礼拜", "禮拜"})
+                                        "當天", "(", "（", "星期", "周", "週", "礼拜", "禮拜"})
         if (after.rfind(word, 0) == 0) in_time = true;
+    const bool is_fraction = after == "决赛" || after == "決賽" || value_at(text, i) == U'的' ||
+                             (i < text.size() && takes_liang(text[i].value));
+    if (!in_time && is_fraction) return std::nullopt;
     const auto before = text_before(text, start, true);
     for (const std::string_view word : {"于", "於"}) {
         if (!ends_with(before, word)) continue;
@@ -940,6 +944,19 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         append_warning(form, said_denominator.warning);
         append_warning(form, said_numerator.warning);
         form.end = denominator.end;
+        // A range of two fractions, 1/3~1/2 三分之一到二分之一 (the mark was left unsaid).
+        if (is_range_mark(value_at(text, form.end)) && is_digit_at(text, form.end + 1)) {
+            const auto upper = parse_number(text, form.end + 1);
+            if (!upper.has_point && value_at(text, upper.end) == '/' && is_digit_at(text, upper.end + 1)) {
+                const auto upper_denominator = parse_number(text, upper.end + 1);
+                const auto said_upper = say_number(upper, {});
+                const auto said_upper_denominator = say_number(upper_denominator, {});
+                form.words += "到" + said_upper_denominator.words + "分之" + said_upper.words;
+                append_warning(form, said_upper_denominator.warning);
+                append_warning(form, said_upper.warning);
+                form.end = upper_denominator.end;
+            }
+        }
         return form;
     }
 
