@@ -56,6 +56,12 @@ struct SentenceMetrics {
     // The largest such gap of its halves on models learned from the rest of the recording
     // (check_held_out_fit).
     double held_out_gap = 0.0;
+    // That gap of its second half alone, where a text that lacks its last syllables shows.
+    double held_out_end_gap = 0.0;
+    // How much better its text fits its speech than the same text fits the speech with its halves
+    // swapped (order_margin, text_fit.hpp), per frame, on the models re-estimated on the recording:
+    // files of one or two sentences, outside a room's tail (check_held_out_fit).
+    double order_margin = std::numeric_limits<double>::quiet_NaN();
     // fit_gap where the models were learned from this sentence itself: files of one or two
     // sentences (check_own_fit).
     double own_fit_gap = std::numeric_limits<double>::quiet_NaN();
@@ -88,8 +94,11 @@ void check_text_fit(const std::vector<SentenceMetrics>& metrics, const std::vect
 
 // The same gap for each sentence, its halves scored with models learned from the rest of the
 // recording (leave one out), against what a right text gives anywhere: this holds for a file of one
-// or two sentences, where the models re-estimated on the recording fit any text. A sentence of a
-// few syllables is too short for it: what is found there goes to `weak_findings`, with its evidence.
+// or two sentences, where the models re-estimated on the recording fit any text. Where the
+// sentence's order_margin was measured, the held-out gap refuses only if the margin confirms it or
+// it lies in the sentence's second half, and a margin as small as a wrong text's refuses alone; a
+// held-out gap neither confirms goes to `weak_findings`. A sentence of a few syllables is too short for either: what is
+// found there goes to `weak_findings`, with its evidence.
 // \throws talkface::AlignmentError naming the first sentence whose text does not fit its speech.
 void check_held_out_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                         const Timeline& transcript, std::vector<std::string>& weak_findings);

@@ -158,8 +158,8 @@ Reestimation reestimate(const FeatureTrack& track, const LoudnessProfile& loudne
 void measure_chain(const SentenceChain& chain, std::size_t w, const std::vector<StateSegment>& path,
                    const std::vector<float>& observations, const Reestimation& learned, std::size_t spoken_sentences,
                    const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
-                   EmissionScores& scores, Timeline& result, std::vector<double>& evidence, std::vector<FrameSpan>& spans,
-                   std::vector<SentenceMetrics>& metrics, bool is_checked) {
+                   EmissionScores& scores, ViterbiWorkspace& workspace, Timeline& result, std::vector<double>& evidence,
+                   std::vector<FrameSpan>& spans, std::vector<SentenceMetrics>& metrics, bool is_checked) {
     place_syllables(chain, path, scores, track, result, evidence);
     for (const auto& [k, share] : split_by_sentence(chain, path)) {
         if (chain.is_block()) spans[k] = aligned_span(result, chain, k);
@@ -171,7 +171,9 @@ void measure_chain(const SentenceChain& chain, std::size_t w, const std::vector<
     // check_syllable_lengths would refuse right texts. check_path judges on `scores` of the whole
     // recording's models, before held_out_fit_gaps overwrites them.
     const bool is_own_model = !chain.ends_in_tail && spoken_sentences <= kMaxHeldOutCheckSentences;
+    const double margin = is_own_model ? order_margin(chain, path, scores, workspace) : std::numeric_limits<double>::quiet_NaN();
     for (const auto& [k, share] : split_by_sentence(chain, path)) {
+        metrics[k].order_margin = margin;
         const auto stretches = stretches_of(chain, share);
         if (is_own_model) {
             metrics[k].own_fit_gap = metrics[k].fit_gap;
@@ -191,6 +193,7 @@ void measure_chain(const SentenceChain& chain, std::size_t w, const std::vector<
             if (halves[h].empty()) continue;
             const std::size_t k = chain.syllables[chain.states[halves[h].front().state].syllable]->sentence;
             metrics[k].held_out_gap = std::max(metrics[k].held_out_gap, gaps[h]);
+            if (h % 2 == 1) metrics[k].held_out_end_gap = std::max(0.0, gaps[h]);
         }
     }
 }
@@ -303,7 +306,7 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
         const auto path = align_chain(chains[w], scores, workspace, scores.frame_count, transcript);
         aligned.has_long_unmarked_pause = aligned.has_long_unmarked_pause || has_long_unmarked_pause(chains[w], path);
         measure_chain(chains[w], w, path, observations, learned, spoken_sentences, track, loudness, transcript, scores,
-                      result, evidence, spans, metrics, is_checked);
+                      workspace, result, evidence, spans, metrics, is_checked);
         report_pass(progress, kReestimationRounds, w, chains.size());
     }
     set_confidences(evidence, result);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 
 namespace talkface::detail {
@@ -12,6 +13,14 @@ namespace {
 // log-likelihood (bench/ tuning passages: at 2 right and wrong texts lie furthest apart in every
 // condition; at 5 they overlap).
 constexpr double kLoopSwitchPenalty = 2.0;
+
+// What the frames of `path` score on `scores`, pauses included.
+double path_score(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores) {
+    double sum = 0.0;
+    for (const auto& segment : path)
+        for (std::size_t t = segment.first_frame; t < segment.end_frame; ++t) sum += scores.at(t, chain.states[segment.state].phone_class);
+    return sum;
+}
 
 }  // namespace
 
@@ -69,6 +78,28 @@ double free_sounds_score(const EmissionScores& scores, std::size_t first, std::s
             best[static_cast<std::size_t>(c)] = std::max(best[static_cast<std::size_t>(c)], leader - kLoopSwitchPenalty) + scores.at(t, c);
     }
     return *std::max_element(best.begin(), best.end());
+}
+
+// The competitor of utterance verification's likelihood ratio, where the free loop of text_fit_gap
+// is not one: on models re-estimated on a file of a sentence or two, the text's path shaped the
+// models, and a wrong text fits about as well as free sounds do. The same text forced on its speech
+// out of order fits only where the sounds repeat, and a right text's path gains on that a great
+// deal, a wrong one's little: it fits its speech hardly better than any order of the text's sounds.
+double order_margin(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores,
+                    ViterbiWorkspace& workspace) {
+    const std::size_t frames = scores.frame_count;
+    if (frames == 0 || path.empty()) return std::numeric_limits<double>::quiet_NaN();
+    // The speech from frame frames - frames / 2 on, then the speech before it.
+    const auto first = scores.values.begin();
+    const auto middle = first + static_cast<std::ptrdiff_t>((frames - frames / 2) * kPhoneClassCount);
+    const auto end = first + static_cast<std::ptrdiff_t>(frames * kPhoneClassCount);
+    EmissionScores swapped;
+    swapped.frame_count = frames;
+    swapped.values.resize(frames * kPhoneClassCount);
+    std::rotate_copy(first, middle, end, swapped.values.begin());
+    const std::vector<StateSegment> rival = viterbi_align(chain.states, swapped, workspace, frames);
+    if (rival.empty()) return std::numeric_limits<double>::quiet_NaN();
+    return (path_score(chain, path, scores) - path_score(chain, rival, swapped)) / static_cast<double>(frames);
 }
 
 std::vector<std::vector<StateSegment>> split_in_halves(const SentenceChain& chain, const std::vector<StateSegment>& path) {

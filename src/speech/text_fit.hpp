@@ -25,6 +25,12 @@ double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>&
 // for each change of sound: what text_fit_gap compares a path with.
 double free_sounds_score(const EmissionScores& scores, std::size_t first, std::size_t end);
 
+// How much better, per frame, the chain's `path` fits `scores` than the chain's best path over the
+// same frames with their halves swapped (the second half's speech first): the text against its own
+// sounds in an order the speech does not have, on the same models. NaN if no path fits.
+double order_margin(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores,
+                    ViterbiWorkspace& workspace);
+
 // The path of a chain cut into its sentences' shares (a pause goes with the sentence before it),
 // each with the index of its sentence in the transcript.
 std::vector<std::pair<std::size_t, std::vector<StateSegment>>> split_by_sentence(const SentenceChain& chain,

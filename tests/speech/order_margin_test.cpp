@@ -1,0 +1,110 @@
+// order_margin and check_held_out_fit (issue 13): in a file of one or two sentences a right text
+// fits its speech far better than the same text fits the speech with its halves swapped, a wrong
+// text hardly better; a held-out gap in a sentence's first half that margin does not confirm is a
+// warning, not a refusal (bench/ a person's right one-sentence clips under music and noise were
+// refused on it alone).
+#include <doctest/doctest.h>
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "common/chain_state.hpp"
+#include "speech/alignment_checks.hpp"
+#include "speech/text_fit.hpp"
+#include "talkface/errors.hpp"
+#include "talkface/transcript.hpp"
+
+using namespace talkface;
+using namespace talkface::detail;
+
+namespace {
+
+using talkface::test::chain_state;
+
+// Speech of three sounds, 20 frames each, between 10 frames of silence: each frame favours its
+// own class by 4 over the others.
+EmissionScores three_sounds() {
+    EmissionScores scores;
+    const PhoneClass said[] = {kSilence, kVowelA, kSibilant, kVowelU, kSilence};
+    const std::size_t frames[] = {10, 20, 20, 20, 10};
+    for (std::size_t part = 0; part < 5; ++part)
+        for (std::size_t t = 0; t < frames[part]; ++t, ++scores.frame_count)
+            for (int c = 0; c < kPhoneClassCount; ++c) scores.values.push_back(c == said[part] ? -1.0f : -5.0f);
+    return scores;
+}
+
+// A chain of the sounds `text` says, between optional edge silences.
+SentenceChain chain_of(const std::vector<PhoneClass>& text) {
+    SentenceChain chain;
+    chain.states.push_back(chain_state(kSilence, StateRole::edge_silence, 0, 10.0, 40, true));
+    for (std::size_t s = 0; s < text.size(); ++s) chain.states.push_back(chain_state(text[s], StateRole::final, s, 20.0, 60, false));
+    chain.states.push_back(chain_state(kSilence, StateRole::edge_silence, text.size() - 1, 10.0, 40, true));
+    return chain;
+}
+
+double margin_of(const std::vector<PhoneClass>& text) {
+    const EmissionScores scores = three_sounds();
+    const SentenceChain chain = chain_of(text);
+    ViterbiWorkspace workspace;
+    const auto path = viterbi_align(chain.states, scores, workspace);
+    REQUIRE_FALSE(path.empty());
+    return order_margin(chain, path, scores, workspace);
+}
+
+// A sentence of 15 syllables in a file of one, measured as the aligner measures it.
+struct OneSentence {
+    Timeline transcript = read_transcript("老奶奶每天都在門口等孫子放學。");
+    std::vector<FrameSpan> spans = {{10, 310}};
+    std::vector<SentenceMetrics> metrics = std::vector<SentenceMetrics>(1);
+};
+
+}  // namespace
+
+TEST_SUITE("speech") {
+    TEST_CASE("the right text fits its speech far better than its halves swapped, a wrong one does not") {
+        const double right = margin_of({kVowelA, kSibilant, kVowelU});
+        const double wrong = margin_of({kVowelU, kVowelA, kSibilant});
+        CAPTURE(right);
+        CAPTURE(wrong);
+        CHECK(right > 1.0);
+        CHECK(wrong < right - 1.0);
+    }
+
+    TEST_CASE("a held-out gap in the first half the order margin does not confirm is a warning, not a refusal") {
+        OneSentence sentence;
+        std::vector<std::string> warnings;
+        sentence.metrics[0].held_out_gap = 0.62;
+        sentence.metrics[0].order_margin = 0.73;
+        CHECK_NOTHROW(check_held_out_fit(sentence.metrics, sentence.spans, sentence.transcript, warnings));
+        REQUIRE(warnings.size() == 1);
+        CHECK(warnings[0].find("0.73 per frame better than the same text fits the speech with its halves swapped") != std::string::npos);
+        CHECK(warnings[0].find("0.62 per frame better than its text") != std::string::npos);
+
+        // In its second half: a text that lacks its last syllables, whatever the margin.
+        sentence.metrics[0].held_out_end_gap = 0.62;
+        CHECK_THROWS_WITH_AS(check_held_out_fit(sentence.metrics, sentence.spans, sentence.transcript, warnings),
+                             doctest::Contains("on its second half, other sounds fit its speech 0.62 per frame better"), AlignmentError);
+        sentence.metrics[0].held_out_end_gap = 0.0;
+        sentence.metrics[0].order_margin = 0.31;
+        CHECK_THROWS_WITH_AS(check_held_out_fit(sentence.metrics, sentence.spans, sentence.transcript, warnings),
+                             doctest::Contains("0.31 per frame better than the same text fits the speech with its halves swapped"),
+                             AlignmentError);
+        // Not measured (a chain in a longer file): the held-out gap refuses alone, as before.
+        sentence.metrics[0].order_margin = std::numeric_limits<double>::quiet_NaN();
+        CHECK_THROWS_AS(check_held_out_fit(sentence.metrics, sentence.spans, sentence.transcript, warnings), AlignmentError);
+    }
+
+    TEST_CASE("a text that fits hardly better than its halves swapped is refused without a held-out gap") {
+        OneSentence sentence;
+        std::vector<std::string> warnings;
+        sentence.metrics[0].order_margin = 0.08;
+        CHECK_THROWS_WITH_AS(check_held_out_fit(sentence.metrics, sentence.spans, sentence.transcript, warnings),
+                             doctest::Contains("sentence 1 (0.1-3.1 s"), AlignmentError);
+        // A line of a few syllables is no such evidence.
+        sentence.transcript = read_transcript("我們走吧。");
+        CHECK_NOTHROW(check_held_out_fit(sentence.metrics, sentence.spans, sentence.transcript, warnings));
+        CHECK(warnings.empty());
+    }
+}
