@@ -20,12 +20,15 @@ inline namespace v0 {
 /// put it: how well its sounds fit their models (against a free sequence of sounds), whether the
 /// spectrum changes where it starts, and how far its length and its sounds' lengths depart from
 /// their priors at the pace of the syllables around it; averaged with its neighbours' (drift comes
-/// in runs), and weighed half as it is and half against the recording's median, so that the
-/// threshold holds in noise and in a room nearly as in clean speech. It is not a probability. On
-/// the benchmark's human speech (bench/README.md, issue 12) the threshold flags 9.0% of the
-/// syllables within 100 ms (2-21% per recording condition, a room the most) and catches 57% of
-/// those more than 100 ms off (179 of 315); on the held-out passages, measured after it was set,
-/// 7.6% and 47% (20 of 43). On synthetic speech (espeak-ng) it flags 1-2% of right syllables.
+/// in runs); less where the aligner's other searches start it elsewhere (its previous pass, and the
+/// search again with the sounds weighed less: a syllable the sounds hold stays put); and weighed
+/// half as it is and half against the recording's median, most of the rest against it too where
+/// that median is under a clean recording's, so that the threshold holds in noise and in a room
+/// as in clean speech. It is not a probability. On the benchmark's human speech (bench/README.md,
+/// issue 12) the threshold flags 9.0% of the syllables within 100 ms (3-13% per recording
+/// condition, a room 12%) and catches 62% of those more than 100 ms off (194 of 315); on the
+/// held-out passages, measured after it was set, 7.8% and 51% (22 of 43). On synthetic speech
+/// (espeak-ng) it flags 1-2% of right syllables.
 constexpr double kLowAlignmentConfidence = 0.5;
 
 /// Audio samples the caller owns: `frame_count` frames of `channel_count` interleaved float samples

@@ -650,11 +650,13 @@ TF_API tf_status tf_timeline_syllable_times(const tf_timeline *timeline, size_t 
 /* A syllable whose confidence is below this is one to check: its start may be more than 100 ms off
  * (talkface::kLowAlignmentConfidence). The confidence (0..1, not a probability) grows with the
  * evidence for the syllable's place: its sounds' fit, a change of spectrum where it starts, lengths
- * near their priors at the local pace, its neighbours' evidence; it is calibrated on the recording
- * (half against the recording's median), so the threshold holds across noise and rooms. On the
- * benchmark's human speech it flags 9.0% of the syllables within 100 ms (2-21% per condition, a
- * room the most) and catches 57% of those more than 100 ms off (held out: 7.6% and 47%)
- * (bench/README.md). `talkface align --plot` draws such syllables in red. */
+ * near their priors at the local pace, its neighbours' evidence, and whether the aligner's other
+ * searches (its previous pass, the sounds weighed less) start it at the same frame; it is
+ * calibrated on the recording (against the recording's median, more so in a room or in noise), so
+ * the threshold holds across noise and rooms. On the benchmark's human speech it flags 9.0% of the
+ * syllables within 100 ms (3-13% per condition, a room 12%) and catches 62% of those more than
+ * 100 ms off (held out: 7.8% and 51%) (bench/README.md). `talkface align --plot` draws such
+ * syllables in red. */
 #define TF_LOW_ALIGNMENT_CONFIDENCE 0.5
 
 /* Syllable `index`'s confidence (0..1; below TF_LOW_ALIGNMENT_CONFIDENCE: check it) and whether the

@@ -18,6 +18,23 @@ struct SyllableFrames {
     std::size_t end_frame = 0;
 };
 
+// Per syllable of `chain`, the frames its states hold on `path` (none: first_frame past end_frame).
+std::vector<SyllableFrames> frames_on_path(const SentenceChain& chain, const std::vector<StateSegment>& path);
+
+// The weight of the emissions (viterbi_align's emission_weight) in the second search whose
+// disagreement syllable_steadiness weighs: with the sounds at half, a syllable the sounds hold
+// stays where it was, and one the duration priors and its neighbours put there moves.
+constexpr double kLightSoundsWeight = 0.5;
+
+// Per syllable of `chain`, what other paths of it say of where `path` starts it, added to its
+// evidence (not its neighbours': the disagreement is the syllable's own): less, the more frames
+// (up to a cap) each of `other_paths` starts it earlier or later. A syllable whose start moves
+// between the aligner's last two passes, or when the sounds weigh less (kLightSoundsWeight), is
+// likely misplaced; unlike the fit, which a room or noise lowers for every syllable, the paths of
+// a right syllable agree there too. A syllable an other path does not place counts nothing.
+std::vector<double> syllable_steadiness(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                                        const std::vector<std::vector<StateSegment>>& other_paths);
+
 // Per syllable of `chain` (holding `frames` on `path`), how well the path fits it: how probable
 // the sound the path gives each frame is among all sounds (the mean posterior of its class), less
 // how much better a free sequence of sounds fits the syllable's stretch than the path does
@@ -43,6 +60,9 @@ std::vector<double> syllable_evidence(const std::vector<double>& fits);
 // every syllable's evidence is lower, and a threshold on the evidence alone flagged half of the
 // right syllables there and almost none in clean speech (issue 12: the threshold must hold across
 // conditions); the absolute half keeps a recording aligned badly throughout from looking normal.
+// A recording whose median is under a clean recording's has most of the shortfall given back
+// besides: half was not enough to keep a room from flagging a fifth of its right syllables, and
+// giving back more from every recording flagged more of the clean ones (espeak-ng's).
 void set_confidences(const std::vector<double>& evidence, Timeline& result);
 
 }  // namespace talkface::detail

@@ -95,10 +95,10 @@ float max_of_sums(const float* a, const float* b, std::size_t count) {
 // One search of states [first_state, end_state) over frames [first_frame, end_frame), starting in
 // first_state at first_frame. With `is_open_end` the path may stop in any state at end_frame (a
 // window of a longer search); otherwise it ends after the last state. Segments are in the frames
-// of `emissions`; empty if no path fits.
+// of `emissions`, each score multiplied by `emission_weight`; empty if no path fits.
 std::vector<StateSegment> search(const std::vector<PhoneState>& states, std::size_t first_state, std::size_t end_state,
-                                 const EmissionScores& emissions, std::size_t first_frame, std::size_t end_frame,
-                                 bool is_open_end, ViterbiWorkspace& workspace) {
+                                 const EmissionScores& emissions, double emission_weight, std::size_t first_frame,
+                                 std::size_t end_frame, bool is_open_end, ViterbiWorkspace& workspace) {
     const std::size_t frames = end_frame - first_frame;
     const std::size_t state_count = end_state - first_state;
     const std::size_t width = frames + 1;
@@ -112,7 +112,7 @@ std::vector<StateSegment> search(const std::vector<PhoneState>& states, std::siz
         const float* row = &emissions.values[(first_frame + t) * kPhoneClassCount];
         const float best = *std::max_element(row, row + kPhoneClassCount);
         for (std::size_t c = 0; c < kPhoneClassCount; ++c)
-            prefix[c * width + t + 1] = prefix[c * width + t] + static_cast<double>(row[c] - best);
+            prefix[c * width + t + 1] = prefix[c * width + t] + emission_weight * static_cast<double>(row[c] - best);
     }
     // entry[j][t]: best score of a path whose state j starts at frame t; finish[j][t]: of one whose
     // state j ends just before frame t. Which duration and which skip won is found again on the
@@ -242,7 +242,7 @@ ExpectedFrames expected_frames(const std::vector<PhoneState>& states, std::size_
 }  // namespace
 
 std::vector<StateSegment> viterbi_align(const std::vector<PhoneState>& states, const EmissionScores& emissions,
-                                        ViterbiWorkspace& workspace, std::size_t stop_frame) {
+                                        ViterbiWorkspace& workspace, std::size_t stop_frame, double emission_weight) {
     const std::size_t frames = emissions.frame_count;
     // Frames of audio per frame the priors expect, over the whole sentence (above 1 by its pauses).
     const ExpectedFrames whole = expected_frames(states, 0, states.size());
@@ -254,7 +254,7 @@ std::vector<StateSegment> viterbi_align(const std::vector<PhoneState>& states, c
     while (first_frame < stop_frame) {
         const std::size_t remaining_frames = frames - first_frame;
         if ((states.size() - first_state) * (remaining_frames + 1) <= kMaxSearchCells) {
-            const auto rest = search(states, first_state, states.size(), emissions, first_frame, frames, false, workspace);
+            const auto rest = search(states, first_state, states.size(), emissions, emission_weight, first_frame, frames, false, workspace);
             if (rest.empty()) return {};
             path.insert(path.end(), rest.begin(), rest.end());
             return path;
@@ -281,7 +281,8 @@ std::vector<StateSegment> viterbi_align(const std::vector<PhoneState>& states, c
         window_states.assign(states.begin() + static_cast<std::ptrdiff_t>(first_state),
                              states.begin() + static_cast<std::ptrdiff_t>(end_state));
         scale_vowels(window_states, pace);
-        auto window = search(window_states, 0, window_states.size(), emissions, first_frame, end_frame, !reaches_end, workspace);
+        auto window = search(window_states, 0, window_states.size(), emissions, emission_weight, first_frame, end_frame,
+                             !reaches_end, workspace);
         if (window.empty()) return {};
         for (auto& segment : window) segment.state += first_state;
         if (reaches_end) {

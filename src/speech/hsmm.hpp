@@ -53,10 +53,13 @@ constexpr std::size_t kMaxSearchCells = std::size_t{2} << 20;
 // The best path through all of `states` over all frames of `emissions` (each non-optional state
 // at least its min_frames). Empty if no path fits (too few frames for the chain).
 // A sentence searched in windows may stop early: once the path it keeps reaches `stop_frame`, it
-// returns that path, which ends inside the chain.
+// returns that path, which ends inside the chain. `emission_weight` multiplies every emission
+// score against the duration priors and boundary bonuses (1: as scored; alignment_confidence.hpp
+// searches again with the sounds weighing less, to see which syllables stay put).
 std::vector<StateSegment> viterbi_align(const std::vector<PhoneState>& states, const EmissionScores& emissions,
                                         ViterbiWorkspace& workspace,
-                                        std::size_t stop_frame = std::numeric_limits<std::size_t>::max());
+                                        std::size_t stop_frame = std::numeric_limits<std::size_t>::max(),
+                                        double emission_weight = 1.0);
 
 }  // namespace talkface::detail
 

@@ -46,10 +46,6 @@ constexpr double kMinRivalShare = 0.05;
 // syllable's onset or tail, or a breath, that generic speech fits a little better than the text.
 constexpr double kMinGenericSyllableShare = 0.75;
 
-bool is_syllable_state(const PhoneState& state) {
-    return !is_pause(state.role) && state.role != StateRole::generic_speech;
-}
-
 PhoneState generic_state(std::size_t syllable) {
     PhoneState state;
     state.phone_class = kGenericSpeech;
@@ -206,17 +202,6 @@ void set_evidence_beside(const SentenceChain& chain, const std::vector<StateSegm
 
 }  // namespace
 
-std::vector<SyllableFrames> frames_on_path(const SentenceChain& chain, const std::vector<StateSegment>& path) {
-    std::vector<SyllableFrames> frames(chain.syllables.size(), {std::numeric_limits<std::size_t>::max(), 0});
-    for (const StateSegment& segment : path) {
-        const PhoneState& state = chain.states[segment.state];
-        if (!is_syllable_state(state)) continue;
-        frames[state.syllable].first_frame = std::min(frames[state.syllable].first_frame, segment.first_frame);
-        frames[state.syllable].end_frame = std::max(frames[state.syllable].end_frame, segment.end_frame);
-    }
-    return frames;
-}
-
 void add_rival_shares(const SentenceChain& lenient, const std::vector<StateSegment>& path,
                       const std::vector<SyllableFrames>& plain_frames, const EmissionScores& scores,
                       std::vector<double>& shares) {
@@ -314,7 +299,7 @@ void place_lenient(const SentenceChain& chain, const std::vector<StateSegment>& 
         }
         text_path.push_back(segment);
     }
-    place_syllables(chain, text_path, scores, track, result, evidence);
+    place_syllables(chain, text_path, {}, scores, track, result, evidence);
     const std::vector<SyllableFrames> frames = frames_on_path(chain, path);
     const std::vector<bool> is_whole = whole_syllables(chain, path);
     for (std::size_t i = 0; i < count; ++i)

@@ -24,9 +24,6 @@ SentenceChain lenient_chain(const SentenceChain& chain);
 std::vector<double> fits_on_path(const SentenceChain& chain, const std::vector<StateSegment>& path,
                                  const EmissionScores& scores);
 
-// Per syllable of `chain`, the frames its states hold on `path` (none: first_frame past end_frame).
-std::vector<SyllableFrames> frames_on_path(const SentenceChain& chain, const std::vector<StateSegment>& path);
-
 // `shares` (per syllable; NaN: not measured) with the rival_share of each syllable the lenient
 // chain's `path` skips, over the frames it holds on the chain's plain path (`plain_frames`).
 void add_rival_shares(const SentenceChain& lenient, const std::vector<StateSegment>& path,

@@ -78,6 +78,11 @@ struct PhoneState {
     double duration_weight = kDurationWeight; // how much its duration prior counts (hsmm.cpp)
 };
 
+// A state of the text's syllable: neither a pause nor generic speech in its stead.
+inline bool is_syllable_state(const PhoneState& state) {
+    return !is_pause(state.role) && state.role != StateRole::generic_speech;
+}
+
 // What a state of generic speech pays per frame held (PhoneState::frame_log_penalty), for a word
 // no table reads and for lenient alignment's generic stretches alike; why 0.1: lenient_chain.cpp.
 constexpr double kGenericSpeechFrameLogPenalty = -0.1;

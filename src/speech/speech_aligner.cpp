@@ -109,11 +109,14 @@ std::vector<StateSegment> align_chain(const SentenceChain& chain, const Emission
 }
 
 // What the re-estimation learned: the models of the last round, and what its last round saw in
-// all and from each half of each sentence (per chain), for the leave-one-out check.
+// all and from each half of each sentence (per chain), for the leave-one-out check; and each
+// chain's path in the last round, on the round before's models, whose disagreement with the final
+// pass's path lowers a syllable's confidence (syllable_steadiness).
 struct Reestimation {
     AcousticModel model = AcousticModel::hand_set();
     ModelEstimator whole;
     std::vector<std::vector<ModelEstimator>> halves;
+    std::vector<std::vector<StateSegment>> last_paths;
 };
 
 // SPEC "Alignment": a first pass on the hand-set models, then kReestimationRounds rounds of
@@ -127,7 +130,10 @@ Reestimation reestimate(const FeatureTrack& track, const LoudnessProfile& loudne
     for (int pass = 0; pass < kReestimationRounds; ++pass) {
         const bool is_last_estimate = pass + 1 == kReestimationRounds;
         ModelEstimator estimator;
-        if (is_last_estimate) learned.halves.assign(chains.size(), {});
+        if (is_last_estimate) {
+            learned.halves.assign(chains.size(), {});
+            learned.last_paths.reserve(chains.size());
+        }
         for (std::size_t w = 0; w < chains.size(); ++w) {
             const SentenceChain& chain = chains[w];
             observe(track, loudness, chain.searched, observations);
@@ -143,6 +149,7 @@ Reestimation reestimate(const FeatureTrack& track, const LoudnessProfile& loudne
                 const auto halves = split_in_halves(chain, path);
                 learned.halves[w].assign(halves.size(), ModelEstimator());
                 for (std::size_t h = 0; h < halves.size(); ++h) learned.halves[w][h].add(observations, chain.states, halves[h]);
+                learned.last_paths.push_back(path);
             }
             report_pass(progress, pass, w, chains.size());
         }
@@ -152,15 +159,16 @@ Reestimation reestimate(const FeatureTrack& track, const LoudnessProfile& loudne
     return learned;
 }
 
-// The final pass over one chain, on the re-estimated models: its syllables placed in `result`,
-// what the checks judge of each of its sentences measured into `metrics`, and its path checked
-// (check_path) when `is_checked`.
+// The final pass over one chain, on the re-estimated models: its syllables placed in `result`
+// (with `other_paths` of it weighing in on their confidences), what the checks judge of each of
+// its sentences measured into `metrics`, and its path checked (check_path) when `is_checked`.
 void measure_chain(const SentenceChain& chain, std::size_t w, const std::vector<StateSegment>& path,
+                   const std::vector<std::vector<StateSegment>>& other_paths,
                    const std::vector<float>& observations, const Reestimation& learned, std::size_t spoken_sentences,
                    const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
                    EmissionScores& scores, ViterbiWorkspace& workspace, Timeline& result, std::vector<double>& evidence,
                    std::vector<FrameSpan>& spans, std::vector<SentenceMetrics>& metrics, bool is_checked) {
-    place_syllables(chain, path, scores, track, result, evidence);
+    place_syllables(chain, path, other_paths, scores, track, result, evidence);
     for (const auto& [k, share] : split_by_sentence(chain, path)) {
         if (chain.is_block()) spans[k] = aligned_span(result, chain, k);
         metrics[k].fit = speech_fit(chain, share, scores);
@@ -305,8 +313,12 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
         }
         const auto path = align_chain(chains[w], scores, workspace, scores.frame_count, transcript);
         aligned.has_long_unmarked_pause = aligned.has_long_unmarked_pause || has_long_unmarked_pause(chains[w], path);
-        measure_chain(chains[w], w, path, observations, learned, spoken_sentences, track, loudness, transcript, scores,
-                      workspace, result, evidence, spans, metrics, is_checked);
+        // The last round's path, and the search again with the sounds weighing less: where they
+        // start a syllable elsewhere, the sounds did not hold it there.
+        const std::vector<std::vector<StateSegment>> other_paths = {
+            learned.last_paths[w], viterbi_align(chains[w].states, scores, workspace, scores.frame_count, kLightSoundsWeight)};
+        measure_chain(chains[w], w, path, other_paths, observations, learned, spoken_sentences, track, loudness, transcript,
+                      scores, workspace, result, evidence, spans, metrics, is_checked);
         report_pass(progress, kReestimationRounds, w, chains.size());
     }
     set_confidences(evidence, result);

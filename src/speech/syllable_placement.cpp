@@ -17,7 +17,8 @@ constexpr std::size_t kPauseBeforeBurstFrames = 20;
 
 }  // namespace
 
-void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores,
+void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                     const std::vector<std::vector<StateSegment>>& other_paths, const EmissionScores& scores,
                      const FeatureTrack& track, Timeline& result, std::vector<double>& evidence) {
     // The last frame may run past the audio's last sample: no time is later than the audio's end.
     auto time_s = [&](std::size_t frame) {
@@ -64,7 +65,9 @@ void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>
     const std::vector<double> timing = syllable_timing(chain, path, scores, frames);
     for (std::size_t local = 0; local < fits.size(); ++local) fits[local] += timing[local];
     const auto placed = syllable_evidence(fits);
-    for (std::size_t local = 0; local < chain.syllables.size(); ++local) evidence[chain.syllable_indices[local]] = placed[local];
+    const auto steadiness = syllable_steadiness(chain, path, other_paths);
+    for (std::size_t local = 0; local < chain.syllables.size(); ++local)
+        evidence[chain.syllable_indices[local]] = placed[local] + steadiness[local];
 }
 
 std::vector<AlignedStretch> stretches_of(const SentenceChain& chain, const std::vector<StateSegment>& path) {

@@ -16,8 +16,11 @@ namespace talkface::detail {
 
 // Writes the syllables of one aligned chain into `result` (times in seconds of the recording),
 // and the evidence of their places into `evidence` (per syllable of the transcript), from which
-// set_confidences gives their confidences once every chain is placed.
-void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores,
+// set_confidences gives their confidences once every chain is placed; `other_paths` (of the same
+// chain, on the same frames; may be none) weigh in by where they start each syllable
+// (syllable_steadiness).
+void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                     const std::vector<std::vector<StateSegment>>& other_paths, const EmissionScores& scores,
                      const FeatureTrack& track, Timeline& result, std::vector<double>& evidence);
 
 // The path's syllables and pauses, in frames of the whole recording.

@@ -54,6 +54,8 @@ Sentence make_sentence() {
         add(chain_state(vowels[s % 4], StateRole::final, s, static_cast<double>(kFinalFrames)), kFinalFrames);
     }
     add(chain_state(kSilence, StateRole::edge_silence, kSyllables - 1, 10.0), kEdgeFrames);
+    static const std::vector<talkface::Syllable> syllables(kSyllables);
+    for (const auto& syllable : syllables) sentence.chain.syllables.push_back(&syllable);
     sentence.scores.frame_count = frame;
     sentence.scores.boundary.assign(frame + 1, 0.0f);
     for (const StateSegment& segment : sentence.truth)
@@ -124,5 +126,65 @@ TEST_SUITE("alignment confidence") {
         CHECK(wrong[kDrifted - 1] < right[kDrifted - 1]);
         CHECK(wrong[kDrifted] < right[kDrifted]);
         CHECK(wrong[0] == doctest::Approx(right[0]));
+    }
+
+    TEST_CASE("a syllable another path starts elsewhere loses evidence, the more frames the more, up to a cap") {
+        const Sentence sentence = make_sentence();
+        const auto drift = [&](std::size_t frames) {
+            auto path = sentence.truth;
+            const std::size_t initial = 1 + 2 * kDrifted;
+            path[initial - 1].end_frame += frames;
+            path[initial].first_frame += frames;
+            path[initial].end_frame += frames;
+            path[initial + 1].first_frame += frames;
+            return path;
+        };
+        const auto agreeing = syllable_steadiness(sentence.chain, sentence.truth, {sentence.truth});
+        const auto two_off = syllable_steadiness(sentence.chain, sentence.truth, {drift(2)});
+        const auto eight_off = syllable_steadiness(sentence.chain, sentence.truth, {drift(8)});
+        const auto twenty_off = syllable_steadiness(sentence.chain, sentence.truth, {drift(20)});
+        const auto both = syllable_steadiness(sentence.chain, sentence.truth, {drift(2), drift(8)});
+        for (std::size_t i = 0; i < kSyllables; ++i) {
+            CAPTURE(i);
+            CHECK(agreeing[i] == 0.0);
+            // Only the moved syllable's start counts: the one before it ends later but starts in place.
+            if (i != kDrifted) CHECK(eight_off[i] == 0.0);
+        }
+        CHECK(two_off[kDrifted] < 0.0);
+        CHECK(eight_off[kDrifted] < two_off[kDrifted]);
+        CHECK(twenty_off[kDrifted] == eight_off[kDrifted]);
+        CHECK(both[kDrifted] == doctest::Approx(two_off[kDrifted] + eight_off[kDrifted]));
+        // A path that does not place the syllables (none found) says nothing of them.
+        const auto none = syllable_steadiness(sentence.chain, sentence.truth, {{}});
+        CHECK(std::all_of(none.begin(), none.end(), [](double value) { return value == 0.0; }));
+    }
+
+    TEST_CASE("a room's evidence, lower throughout, keeps its right syllables' confidences near a clean recording's") {
+        // A clean recording's evidence, 0.3-0.8 (median 0.55, as the person's clean passages), and
+        // the same lowered by 0.3 throughout, as a room lowers it (median 0.25).
+        std::vector<double> clean, room;
+        for (std::size_t i = 0; i <= 100; ++i) {
+            clean.push_back(0.3 + 0.005 * static_cast<double>(i));
+            room.push_back(clean.back() - 0.3);
+        }
+        auto confidences_of = [](const std::vector<double>& evidence) {
+            talkface::Timeline timeline;
+            timeline.syllables.resize(evidence.size());
+            set_confidences(evidence, timeline);
+            return timeline;
+        };
+        const auto in_clean = confidences_of(clean);
+        const auto in_room = confidences_of(room);
+        std::size_t clean_low = 0, room_low = 0;
+        for (std::size_t i = 0; i < clean.size(); ++i) {
+            clean_low += in_clean.syllables[i].confidence < talkface::kLowAlignmentConfidence;
+            room_low += in_room.syllables[i].confidence < talkface::kLowAlignmentConfidence;
+        }
+        // Half given back (the relative share alone) flagged a third of the room's syllables.
+        CHECK(room_low <= clean_low + 15);
+        CHECK(in_room.syllables[50].confidence > in_clean.syllables[50].confidence - 0.1);
+        // Every syllable still ranks by its evidence, and a room still lowers it some.
+        CHECK(in_room.syllables[50].confidence < in_clean.syllables[50].confidence);
+        CHECK(in_room.syllables[10].confidence < in_room.syllables[50].confidence);
     }
 }

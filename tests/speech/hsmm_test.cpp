@@ -141,6 +141,33 @@ TEST_SUITE("HSMM search") {
         CHECK(path[2].first_frame == 16);
     }
 
+    TEST_CASE("the sounds weighed less against the priors move a boundary the priors dispute towards them") {
+        // The nasal above: at weight 1 the a takes two of its frames; with the sounds at a quarter
+        // the priors (a: 10 frames) give it back one, and with them weighed four times the a takes four.
+        PhoneState vowel_a = chain_state(kVowelA, StateRole::final, 0, 10.0, 40, false);
+        PhoneState nasal = chain_state(kNasal, StateRole::initial, 1, 6.0, 16, false);
+        PhoneState vowel_e = chain_state(kVowelE, StateRole::final, 1, 10.0, 40, false);
+        vowel_a.log_sigma = vowel_e.log_sigma = 0.5;
+        nasal.log_sigma = 0.45;
+        const std::vector<PhoneState> states = {vowel_a, nasal, vowel_e};
+        EmissionScores emissions;
+        emissions.frame_count = 26;
+        for (std::size_t t = 0; t < emissions.frame_count; ++t) {
+            const int truth = t < 10 ? kVowelA : t < 16 ? kNasal : kVowelE;
+            for (int c = 0; c < kPhoneClassCount; ++c)
+                emissions.values.push_back(c == truth ? 0.0f : truth == kNasal && c == kVowelA ? 0.8f : -5.0f);
+        }
+        ViterbiWorkspace workspace;
+        auto nasal_start = [&](double weight) {
+            const auto path = viterbi_align(states, emissions, workspace, emissions.frame_count, weight);
+            REQUIRE(path.size() == 3);
+            return path[1].first_frame;
+        };
+        CHECK(nasal_start(1.0) == 12);
+        CHECK(nasal_start(0.25) == 11);
+        CHECK(nasal_start(4.0) == 14);
+    }
+
     TEST_CASE("a chain longer than its frames has no path") {
         PlantedSentence sentence = plant(10);
         sentence.emissions.frame_count = 15;

@@ -14,7 +14,7 @@ _FloatArray = numpy.typing.NDArray[numpy.float64]
 __version__: str
 kMaxPoseAngleDeg: float
 # A syllable whose confidence is below this (0.5) may be more than 100 ms off: check it (flags 9.0% of
-# right syllables, catches 57% of those >100 ms off on the benchmark's human speech; SpeechAligner).
+# right syllables, catches 62% of those >100 ms off on the benchmark's human speech; SpeechAligner).
 kLowAlignmentConfidence: float
 kGenericSpeechPinyin: str
 
