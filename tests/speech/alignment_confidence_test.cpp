@@ -63,14 +63,14 @@ Sentence make_sentence() {
     return sentence;
 }
 
-// `truth` with syllable kDrifted starting kDriftFrames late: the final before it stretched over its
+// `truth` with syllable kDrifted starting `frames` late: the final before it stretched over its
 // start, its own final squeezed.
-std::vector<StateSegment> drifted(std::vector<StateSegment> path) {
+std::vector<StateSegment> drifted(std::vector<StateSegment> path, std::size_t frames = kDriftFrames) {
     const std::size_t initial = 1 + 2 * kDrifted;
-    path[initial - 1].end_frame += kDriftFrames;
-    path[initial].first_frame += kDriftFrames;
-    path[initial].end_frame += kDriftFrames;
-    path[initial + 1].first_frame += kDriftFrames;
+    path[initial - 1].end_frame += frames;
+    path[initial].first_frame += frames;
+    path[initial].end_frame += frames;
+    path[initial + 1].first_frame += frames;
     return path;
 }
 
@@ -130,15 +130,7 @@ TEST_SUITE("alignment confidence") {
 
     TEST_CASE("a syllable another path starts elsewhere loses evidence, the more frames the more, up to a cap") {
         const Sentence sentence = make_sentence();
-        const auto drift = [&](std::size_t frames) {
-            auto path = sentence.truth;
-            const std::size_t initial = 1 + 2 * kDrifted;
-            path[initial - 1].end_frame += frames;
-            path[initial].first_frame += frames;
-            path[initial].end_frame += frames;
-            path[initial + 1].first_frame += frames;
-            return path;
-        };
+        const auto drift = [&](std::size_t frames) { return drifted(sentence.truth, frames); };
         const auto agreeing = syllable_steadiness(sentence.chain, sentence.truth, {sentence.truth});
         const auto two_off = syllable_steadiness(sentence.chain, sentence.truth, {drift(2)});
         const auto eight_off = syllable_steadiness(sentence.chain, sentence.truth, {drift(8)});

@@ -38,6 +38,28 @@ PlantedSentence plant(std::size_t syllables) {
     return sentence;
 }
 
+// a (10 frames), n (6), e (10): a room's tail of the a over the n makes each n frame fit the a 0.8
+// better than the n.
+struct NasalAfterVowel {
+    std::vector<PhoneState> states;
+    EmissionScores emissions;
+
+    NasalAfterVowel() {
+        PhoneState vowel_a = chain_state(kVowelA, StateRole::final, 0, 10.0, 40, false);
+        PhoneState nasal = chain_state(kNasal, StateRole::initial, 1, 6.0, 16, false);
+        PhoneState vowel_e = chain_state(kVowelE, StateRole::final, 1, 10.0, 40, false);
+        vowel_a.log_sigma = vowel_e.log_sigma = 0.5;
+        nasal.log_sigma = 0.45;
+        states = {vowel_a, nasal, vowel_e};
+        emissions.frame_count = 26;
+        for (std::size_t t = 0; t < emissions.frame_count; ++t) {
+            const int truth = t < 10 ? kVowelA : t < 16 ? kNasal : kVowelE;
+            for (int c = 0; c < kPhoneClassCount; ++c)
+                emissions.values.push_back(c == truth ? 0.0f : truth == kNasal && c == kVowelA ? 0.8f : -5.0f);
+        }
+    }
+};
+
 void check_same_path(const std::vector<StateSegment>& path, const std::vector<StateSegment>& truth) {
     REQUIRE(path.size() == truth.size());
     for (std::size_t i = 0; i < truth.size(); ++i) {
@@ -118,48 +140,23 @@ TEST_SUITE("HSMM search") {
     }
 
     TEST_CASE("a nasal whose frames sound a little like the vowel before keeps its length") {
-        // a (10 frames), n (6), e (10): a room's tail of the a over the n makes each n frame fit
-        // the a 0.8 better than the n. Frame by frame the emissions would give the a three of the
-        // n's frames; the priors, weighted against frames that are not independent, leave it two.
-        PhoneState vowel_a = chain_state(kVowelA, StateRole::final, 0, 10.0, 40, false);
-        PhoneState nasal = chain_state(kNasal, StateRole::initial, 1, 6.0, 16, false);
-        PhoneState vowel_e = chain_state(kVowelE, StateRole::final, 1, 10.0, 40, false);
-        vowel_a.log_sigma = vowel_e.log_sigma = 0.5;
-        nasal.log_sigma = 0.45;
-        const std::vector<PhoneState> states = {vowel_a, nasal, vowel_e};
-        EmissionScores emissions;
-        emissions.frame_count = 26;
-        for (std::size_t t = 0; t < emissions.frame_count; ++t) {
-            const int truth = t < 10 ? kVowelA : t < 16 ? kNasal : kVowelE;
-            for (int c = 0; c < kPhoneClassCount; ++c)
-                emissions.values.push_back(c == truth ? 0.0f : truth == kNasal && c == kVowelA ? 0.8f : -5.0f);
-        }
+        // Frame by frame the emissions would give the a three of the n's frames; the priors,
+        // weighted against frames that are not independent, leave it two.
+        const NasalAfterVowel nasal;
         ViterbiWorkspace workspace;
-        const auto path = viterbi_align(states, emissions, workspace);
+        const auto path = viterbi_align(nasal.states, nasal.emissions, workspace);
         REQUIRE(path.size() == 3);
         CHECK(path[1].first_frame == 12);
         CHECK(path[2].first_frame == 16);
     }
 
-    TEST_CASE("the sounds weighed less against the priors move a boundary the priors dispute towards them") {
+    TEST_CASE("the weight of the sounds against the priors moves a boundary the two dispute") {
         // The nasal above: at weight 1 the a takes two of its frames; with the sounds at a quarter
         // the priors (a: 10 frames) give it back one, and with them weighed four times the a takes four.
-        PhoneState vowel_a = chain_state(kVowelA, StateRole::final, 0, 10.0, 40, false);
-        PhoneState nasal = chain_state(kNasal, StateRole::initial, 1, 6.0, 16, false);
-        PhoneState vowel_e = chain_state(kVowelE, StateRole::final, 1, 10.0, 40, false);
-        vowel_a.log_sigma = vowel_e.log_sigma = 0.5;
-        nasal.log_sigma = 0.45;
-        const std::vector<PhoneState> states = {vowel_a, nasal, vowel_e};
-        EmissionScores emissions;
-        emissions.frame_count = 26;
-        for (std::size_t t = 0; t < emissions.frame_count; ++t) {
-            const int truth = t < 10 ? kVowelA : t < 16 ? kNasal : kVowelE;
-            for (int c = 0; c < kPhoneClassCount; ++c)
-                emissions.values.push_back(c == truth ? 0.0f : truth == kNasal && c == kVowelA ? 0.8f : -5.0f);
-        }
+        const NasalAfterVowel nasal;
         ViterbiWorkspace workspace;
         auto nasal_start = [&](double weight) {
-            const auto path = viterbi_align(states, emissions, workspace, emissions.frame_count, weight);
+            const auto path = viterbi_align(nasal.states, nasal.emissions, workspace, nasal.emissions.frame_count, weight);
             REQUIRE(path.size() == 3);
             return path[1].first_frame;
         };
