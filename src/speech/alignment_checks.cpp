@@ -194,6 +194,8 @@ std::string quote_start(const std::string& text) {
     return "\"" + (end < text.size() ? text.substr(0, end) + "\xE2\x80\xA6" : text) + "\"";
 }
 
+std::string syllable_count(std::size_t count) { return std::to_string(count) + (count == 1 ? " syllable" : " syllables"); }
+
 std::string describe_sentence(std::size_t sentence, const FrameSpan& span, const Timeline& transcript) {
     return "sentence " + std::to_string(sentence + 1) + " (" + format_fixed(static_cast<double>(span.first_frame) * kFrameStepS, 2) +
            "-" + format_fixed(static_cast<double>(span.end_frame) * kFrameStepS, 2) + " s, " +
@@ -235,7 +237,7 @@ void check_sentence_lengths(const std::vector<FrameSpan>& spans, const FeatureTr
         const double whole_rate = static_cast<double>(spans[k].length()) / static_cast<double>(syllables[k]);
         if (is_fast(rates[k]) && !is_fast(whole_rate) && keeps_peaks(k)) continue;
         const double seconds_per_syllable = rates[k] * kFrameStepS;
-        const std::string heard = std::to_string(syllables[k]) + " syllables in " +
+        const std::string heard = syllable_count(syllables[k]) + " in " +
                                   format_fixed(rates[k] * static_cast<double>(syllables[k]) * kFrameStepS, 2) +
                                   " s of speech (" + format_fixed(seconds_per_syllable, 2) + " s each";
         const std::string advice = "; is a sentence missing from the transcript or from the audio, or is its text wrong?";
@@ -450,8 +452,8 @@ void check_held_out_fit(const std::vector<SentenceMetrics>& metrics, const std::
                                           format_fixed(metrics[k].held_out_gap, 2) + " per frame better than its text (at most " +
                                           format_fixed(kMaxHeldOutFitGap, 2) + " for a right text), but ";
         if (!is_long_enough) {
-            weak_findings.push_back(held_out_text + std::to_string(syllables[k]) +
-                                    " syllables are too few to tell a wrong text by: aligned");
+            weak_findings.push_back(held_out_text + syllable_count(syllables[k]) + (syllables[k] == 1 ? " is" : " are") +
+                                    " too few to tell a wrong text by: aligned");
             continue;
         }
         if (margin >= kMaxConfirmingOrderMargin && !(metrics[k].held_out_end_gap > kMaxHeldOutFitGap)) {

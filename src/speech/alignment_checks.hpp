@@ -23,6 +23,9 @@ std::string quote_start(const std::string& text);
 // `sentence 3 (12.40-15.20 s, "今天天氣很好，我們去公園散步吧。我們…")`.
 std::string describe_sentence(std::size_t sentence, const FrameSpan& span, const Timeline& transcript);
 
+// "1 syllable", "3 syllables": how messages count a sentence's syllables (a line of dialogue may have one).
+std::string syllable_count(std::size_t count);
+
 // Each sentence's speaking rate (speech frames per syllable, pauses inside left out) against the
 // others' and against what people can say; a sentence much slower than the others passes if its
 // voiced peaks (count_nuclei) leave no room for another sentence's syllables, and one too fast only

@@ -102,8 +102,8 @@ std::vector<StateSegment> align_chain(const SentenceChain& chain, const Emission
     std::vector<StateSegment> path = viterbi_align(chain.states, scores, workspace, stop_frame);
     if (path.empty()) {
         throw AlignmentError(describe_sentence(chain.first_sentence, chain.speech, transcript) + ": its " +
-                             std::to_string(chain.syllables.size()) +
-                             " syllables do not fit in so short a stretch of speech; check the transcript");
+                             syllable_count(chain.syllables.size()) + (chain.syllables.size() == 1 ? " does" : " do") +
+                             " not fit in so short a stretch of speech; check the transcript");
     }
     return path;
 }

@@ -96,6 +96,16 @@ TEST_SUITE("speech") {
         }
     }
 
+    TEST_CASE("a one-syllable line said too fast for a person is refused in the singular") {
+        // 嗯。 as espeak-ng says it: 0.05 s of sound (/work/corpus/sweep-short/espeak-en-bare.wav).
+        const Timeline transcript = read_transcript("嗯。");
+        const std::vector<FrameSpan> spans = {{1, 6}};
+        BumpyTrack bumpy(13);
+        bumpy.bumps(spans[0], 1, 30.0f, 15.0f);
+        CHECK_THROWS_WITH_AS(check_sentence_lengths(spans, bumpy.track, bumpy.loudness, transcript),
+                             doctest::Contains("): 1 syllable in 0.05 s of speech (0.05 s each"), AlignmentError);
+    }
+
     TEST_CASE("a sentence fast only because quiet syllables were taken for a pause passes when its voiced peaks are there") {
         // Four syllables each, 1 s a sentence; 0.7 s of the third measured as a pause, so that its
         // speech frames give 0.075 s a syllable against the others' 0.25 s.
