@@ -111,7 +111,7 @@ void run_align(const AlignCommandOptions& options) {
 void setup_align_command(CLI::App& app) {
     auto options = std::make_shared<AlignCommandOptions>();
     CLI::App* align = app.add_subcommand("align", "Find when each sentence and syllable of a transcript is spoken");
-    align->add_option("AUDIO", options->audio_path, "Speech: WAV, FLAC, Ogg, MP3, M4A, Opus or a video's sound track (MP4, MOV, MKV, WebM)")
+    align->add_option("AUDIO", options->audio_path, kSpeechFormatsHelp)
         ->required()
         ->check(CLI::ExistingFile);
     align->add_option("TRANSCRIPT", options->transcript_path,

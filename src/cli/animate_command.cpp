@@ -99,7 +99,7 @@ void run_animate(const AnimateOptions& options, const std::string& audio_path, c
 }  // namespace
 
 void add_speech_arguments(CLI::App& command, std::string& audio_path, std::string& transcript_path) {
-    command.add_option("AUDIO", audio_path, "Speech: WAV, FLAC, Ogg, MP3, M4A, Opus or a video's sound track (MP4, MOV, MKV, WebM)")
+    command.add_option("AUDIO", audio_path, kSpeechFormatsHelp)
         ->required()
         ->check(CLI::ExistingFile);
     command.add_option("TRANSCRIPT", transcript_path, "Its transcript, UTF-8 (as `talkface align` reads it)")

@@ -7,6 +7,10 @@
 
 namespace talkface_cli {
 
+// What each command that reads a speech says of its AUDIO argument: every format it reads.
+inline constexpr const char* kSpeechFormatsHelp =
+    "Speech: WAV, FLAC, Ogg, MP3, M4A, Opus, AMR (a phone's voice memo) or a video's sound track (MP4, MOV, MKV, WebM)";
+
 // `talkface render`: one face state drawn as an SVG file (render_command.cpp).
 void setup_render_command(CLI::App& app);
 

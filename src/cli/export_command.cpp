@@ -78,7 +78,7 @@ void setup_export_command(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "export",
         "Write a speech's timing for other tools: Rhubarb cues, Moho, Live2D, TextGrid, subtitles; the face as Lottie");
-    command->add_option("AUDIO", options->audio_path, "Recorded speech (WAV, FLAC, OGG)")
+    command->add_option("AUDIO", options->audio_path, kSpeechFormatsHelp)
         ->required()
         ->check(CLI::ExistingFile);
     command->add_option("TRANSCRIPT", options->transcript_path, "Its transcript, UTF-8")

@@ -187,7 +187,7 @@ void setup_keyframes_command(CLI::App& app) {
     auto options = std::make_shared<KeyframesOptions>();
     CLI::App* keyframes = app.add_subcommand(
         "keyframes", "Export the key frames (mouth shapes per time, blinks, brows, head moves) as JSON or TSV");
-    keyframes->add_option("AUDIO", options->audio_path, "Recorded speech (WAV, FLAC, Ogg, MP3, M4A, Opus, or a video's sound track)")
+    keyframes->add_option("AUDIO", options->audio_path, kSpeechFormatsHelp)
         ->check(CLI::ExistingFile);
     keyframes->add_option("TRANSCRIPT", options->transcript_path, "Its transcript, UTF-8")->check(CLI::ExistingFile);
     keyframes

@@ -266,37 +266,50 @@ TEST_SUITE("audio") {
     }
 
     TEST_CASE("an AMR recording's comfort-noise and empty frames keep their time, as silence") {
-        // AMR-NB as phones store it ("#!AMR\n", then 20 ms frames, each a one-byte header): in a
-        // pause a phone sends comfort-noise (SID) frames, which FFmpeg does not decode ("not yet
-        // implemented"), or empty (NO_DATA) frames, which it calls invalid. Made here by hand, since
-        // FFmpeg has no AMR encoder: 1 s of 12.2 kb/s frames (their bits random: a noise), 1 s of
-        // either, 1 s of speech frames again.
-        const std::string speech_frame(1, '\x3C');  // frame type 7 (12.2 kb/s, 31 bytes follow), quality bit
-        const std::string sid_frame(1, '\x44');     // frame type 8 (SID, 5 bytes follow)
-        const std::string empty_frame(1, '\x7C');   // frame type 15 (NO_DATA, nothing follows)
-        for (const bool is_sid : {true, false}) {
-            CAPTURE(is_sid);
-            std::string bytes = "#!AMR\n";
-            std::uint32_t seed = 5;
-            for (int i = 0; i < 50; ++i) bytes += speech_frame + random_bytes(31, seed++);
-            for (int i = 0; i < 50; ++i) bytes += is_sid ? sid_frame + random_bytes(5, seed++) : empty_frame;
-            for (int i = 0; i < 50; ++i) bytes += speech_frame + random_bytes(31, seed++);
-            const std::string path = test::output_path(is_sid ? "pause_sid.amr" : "pause_no_data.amr");
-            write_bytes(path, bytes);
-            try {
-                auto source = detail::open_audio_file(path);
-                REQUIRE(source->sample_rate_hz() == 8000);
-                const std::vector<float> samples = test::read_all(*source);
-                CHECK(samples.size() == 3u * 8000u);
-                REQUIRE(samples.size() >= 3u * 8000u);
-                double pause_energy = 0.0;
-                double last_energy = 0.0;
-                for (std::size_t i = 8000; i < 16000; ++i) pause_energy += static_cast<double>(samples[i]) * samples[i];
-                for (std::size_t i = 16000; i < 24000; ++i) last_energy += static_cast<double>(samples[i]) * samples[i];
-                CHECK(pause_energy == 0.0);
-                CHECK(last_energy > 0.0);
-            } catch (const Error& error) {
-                FAIL(std::string(error.what()));
+        // AMR as phones store it ("#!AMR\n" or "#!AMR-WB\n", then 20 ms frames, each a one-byte
+        // header: frame type << 3, quality bit 4): in a pause a phone sends comfort-noise (SID)
+        // frames, which FFmpeg does not decode ("not yet implemented"), or empty (NO_DATA, type 15)
+        // frames, which it calls invalid. Made here by hand, since FFmpeg has no AMR encoder: 1 s of
+        // the highest rate's frames (their bits random: a noise), 1 s of either, 1 s of speech again.
+        struct Amr {
+            const char* file;
+            const char* magic;
+            int rate_hz;
+            char speech_header;       // the highest rate: NB type 7 (12.2 kb/s), WB type 8 (23.85 kb/s)
+            std::size_t speech_bytes;
+            char sid_header;          // NB type 8, WB type 9
+        };
+        const Amr kinds[] = {{"pause.amr", "#!AMR\n", 8000, '\x3C', 31, '\x44'},
+                             {"pause.awb", "#!AMR-WB\n", 16000, '\x44', 60, '\x4C'}};
+        const char empty_header = '\x7C';
+        for (const Amr& kind : kinds) {
+            for (const bool is_sid : {true, false}) {
+                const std::string file = kind.file;
+                CAPTURE(file);
+                CAPTURE(is_sid);
+                std::string bytes = kind.magic;
+                std::uint32_t seed = 5;
+                for (int i = 0; i < 50; ++i) bytes += kind.speech_header + random_bytes(kind.speech_bytes, seed++);
+                for (int i = 0; i < 50; ++i) bytes += is_sid ? kind.sid_header + random_bytes(5, seed++) : std::string(1, empty_header);
+                for (int i = 0; i < 50; ++i) bytes += kind.speech_header + random_bytes(kind.speech_bytes, seed++);
+                const std::string path = test::output_path(std::string(is_sid ? "sid_" : "no_data_") + kind.file);
+                write_bytes(path, bytes);
+                try {
+                    auto source = detail::open_audio_file(path);
+                    const auto second = static_cast<std::size_t>(kind.rate_hz);
+                    REQUIRE(source->sample_rate_hz() == kind.rate_hz);
+                    const std::vector<float> samples = test::read_all(*source);
+                    CHECK(samples.size() == 3 * second);
+                    REQUIRE(samples.size() >= 3 * second);
+                    double pause_energy = 0.0;
+                    double last_energy = 0.0;
+                    for (std::size_t i = second; i < 2 * second; ++i) pause_energy += static_cast<double>(samples[i]) * samples[i];
+                    for (std::size_t i = 2 * second; i < 3 * second; ++i) last_energy += static_cast<double>(samples[i]) * samples[i];
+                    CHECK(pause_energy == 0.0);
+                    CHECK(last_energy > 0.0);
+                } catch (const Error& error) {
+                    FAIL(std::string(error.what()));
+                }
             }
         }
     }

@@ -75,6 +75,15 @@ def test_help_exits_0_and_lists_exit_codes():
     assert "render" in result.stdout
 
 
+def test_every_command_that_reads_a_speech_lists_the_same_formats():
+    # export listed "WAV, FLAC, OGG" while it read MP3, M4A, Opus and AMR as align does.
+    helps = {command: run(command, "--help").stdout for command in ("align", "animate", "video", "export", "keyframes")}
+    for command, text in helps.items():
+        audio = next(line for line in text.splitlines() if line.strip().startswith("AUDIO"))
+        for name in ("WAV", "FLAC", "Ogg", "MP3", "M4A", "Opus", "AMR", "MP4", "MOV", "MKV", "WebM"):
+            assert name in audio, f"{command}: {audio}"
+
+
 def test_version_prints_the_version():
     result = run("--version")
     assert result.returncode == 0
