@@ -1,5 +1,7 @@
 #include "common/utf8.hpp"
 
+#include "talkface/errors.hpp"
+
 namespace talkface::detail {
 
 void append_utf8(std::string& out, std::uint32_t code) {
@@ -18,6 +20,32 @@ void append_utf8(std::string& out, std::uint32_t code) {
         out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
         out += static_cast<char>(0x80 | (code & 0x3F));
     }
+}
+
+std::string utf8_from_marked_text(std::string_view text, const std::string& source) {
+    if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") return std::string(text.substr(3));
+    const bool is_big_endian = text.size() >= 2 && text[0] == '\xFE' && text[1] == '\xFF';
+    const bool is_little_endian = text.size() >= 2 && text[0] == '\xFF' && text[1] == '\xFE';
+    if (!is_big_endian && !is_little_endian) return std::string(text);
+    std::string out;
+    const auto unit = [&](std::size_t k) -> std::uint32_t {
+        const auto a = static_cast<unsigned char>(text[k]);
+        const auto b = static_cast<unsigned char>(text[k + 1]);
+        return is_big_endian ? (a << 8 | b) : (b << 8 | a);
+    };
+    for (std::size_t k = 2; k + 1 < text.size(); k += 2) {
+        std::uint32_t code = unit(k);
+        if (code >= 0xD800 && code < 0xDC00 && k + 3 < text.size()) {
+            const std::uint32_t low = unit(k + 2);
+            if (low >= 0xDC00 && low < 0xE000) {
+                code = 0x10000 + ((code - 0xD800) << 10) + (low - 0xDC00);
+                k += 2;
+            }
+        }
+        if (code >= 0xD800 && code < 0xE000) throw ParseError(source, 0, 0, "", "not UTF-16: half a surrogate pair");
+        append_utf8(out, code);
+    }
+    return out;
 }
 
 }  // namespace talkface::detail

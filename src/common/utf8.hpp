@@ -1,14 +1,22 @@
-// UTF-8 out: a code point appended as its bytes (the JSON reader's \u escapes, Praat's UTF-16 files).
+// UTF-8 out: a code point appended as its bytes (the JSON reader's \u escapes), and a text file's
+// bytes as UTF-8 whichever Unicode encoding its byte order mark names (Praat's and Windows' UTF-16).
 #ifndef TALKFACE_COMMON_UTF8_HPP
 #define TALKFACE_COMMON_UTF8_HPP
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 namespace talkface::detail {
 
 // Appends `code` (at most U+10FFFF, not a surrogate) to `out` as UTF-8.
 void append_utf8(std::string& out, std::uint32_t code);
+
+// A text file's bytes as UTF-8: a UTF-8 byte order mark dropped; UTF-16 with its byte order mark
+// (little or big endian: what Praat writes for a text that is not ASCII, and Windows Notepad's
+// "Unicode") converted; anything else as it is.
+// \throws talkface::ParseError naming `source` for half a surrogate pair.
+std::string utf8_from_marked_text(std::string_view text, const std::string& source);
 
 }  // namespace talkface::detail
 

@@ -11,6 +11,10 @@
 
 namespace talkface::detail {
 
+// A timing file's text as UTF-8, whichever Unicode encoding its byte order mark names
+// (utf8_from_marked_text). \throws FileError if it cannot be read.
+std::string read_timing_text(const std::string& path);
+
 // A Praat TextGrid (long or short text format, UTF-8 or UTF-16 with its byte order mark): the
 // intervals of the tier named "syllables", else "words" (as Montreal Forced Aligner names it),
 // else the only interval tier. \throws ParseError naming source:line and what was expected.

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/atomic_file.hpp"
+#include "common/utf8.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/timeline_json.hpp"
 #include "talkface/timing_formats.hpp"
@@ -89,7 +90,7 @@ Timeline read_timing_file(const std::string& path, const Timeline& transcript, d
                           const std::string& format) {
     const std::string chosen = format.empty() ? timing_format_for_path(path) : format;
     check_format(chosen);
-    return read_timing_string(detail::read_file(path), chosen, transcript, duration_s, path);
+    return read_timing_string(detail::read_timing_text(path), chosen, transcript, duration_s, path);
 }
 
 std::string write_timing_string(const Timeline& timeline, const std::string& format) {
@@ -104,3 +105,10 @@ std::string write_timing_string(const Timeline& timeline, const std::string& for
 
 }  // namespace v0
 }  // namespace talkface
+
+namespace talkface::detail {
+
+// Subtitle editors and Notepad on Windows save UTF-16 ("Unicode") as readily as UTF-8.
+std::string read_timing_text(const std::string& path) { return utf8_from_marked_text(read_file(path), path); }
+
+}  // namespace talkface::detail

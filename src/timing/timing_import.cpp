@@ -97,7 +97,7 @@ Timeline time_transcript(const std::string& timing_path, const std::string& audi
         return read_timing_file(timing_path, transcript, duration_s, chosen);
     }
 
-    const std::string text = detail::read_file(timing_path);
+    const std::string text = detail::read_timing_text(timing_path);
     const std::vector<detail::TimedUnit> cues = chosen == "srt" ? detail::read_subrip_units(text, timing_path)
                                                                 : detail::read_webvtt_units(text, timing_path);
     detail::check_unit_times(cues, duration_s, timing_path);

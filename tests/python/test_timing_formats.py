@@ -68,6 +68,20 @@ def test_srt_round_trips_the_sentences(tmp_path):
     assert (back.sentences[0].start_s, back.sentences[0].end_s) == (0.5, 1.5)
 
 
+@pytest.mark.parametrize("fmt, suffix", [("srt", "srt"), ("vtt", "vtt"), ("words-json", "json")])
+@pytest.mark.parametrize("encoding", ["utf-16", "utf-16-be", "utf-8-sig"])
+def test_a_file_saved_as_utf16_or_with_a_byte_order_mark_reads_as_its_utf8(tmp_path, fmt, suffix, encoding):
+    # What Windows Notepad's "Unicode" and subtitle editors save; the BOM says which.
+    text = talkface.write_timing_string(spoken(), fmt)
+    plain, marked = tmp_path / f"plain.{suffix}", tmp_path / f"marked.{suffix}"
+    plain.write_text(text, encoding="utf-8")
+    marked.write_bytes((b"\xfe\xff" if encoding == "utf-16-be" else b"") + text.encode(encoding))
+    transcript = talkface.read_transcript("你好，世界。")
+    want = talkface.read_timing_file(plain, transcript, 2.0)
+    got = talkface.read_timing_file(marked, transcript, 2.0)
+    assert [(s.start_s, s.end_s) for s in got.syllables] == [(s.start_s, s.end_s) for s in want.syllables]
+
+
 def test_a_timing_that_parts_from_the_transcript_names_the_place():
     words = '[{"text": "你好", "start": 0.5, "end": 1.0},\n {"text": "世間", "start": 1.0, "end": 1.5}]'
     with pytest.raises(talkface.ParseError, match=r'words\.json:2: "世間": "間" parts from the transcript at '
@@ -100,6 +114,11 @@ def test_time_transcript_pins_the_aligner_to_a_subtitle_cue(tmp_path):
     timeline = talkface.time_transcript(cue, clips / "one_sentence.wav", transcript)
     assert len(timeline.syllables) == len(transcript.syllables)
     assert all(0.6 - 1e-9 <= s.start_s < s.end_s <= 2.5 + 1e-9 for s in timeline.syllables)
+    # The same cue saved by Windows Notepad as "Unicode" (UTF-16 with its byte order mark).
+    notepad = tmp_path / "notepad.srt"
+    notepad.write_text(cue.read_text(encoding="utf-8"), encoding="utf-16")
+    again = talkface.time_transcript(notepad, clips / "one_sentence.wav", transcript)
+    assert [s.start_s for s in again.syllables] == [s.start_s for s in timeline.syllables]
 
 
 def test_time_transcript_takes_the_aligners_options_lenient_among_them(tmp_path):
