@@ -112,7 +112,7 @@ public:
                    const ProgressCallback& progress = {}) const;
 
     /// Aligns an audio file: WAV, FLAC, Ogg (any sample rate, 8 to 32 bit or float, mono or stereo)
-    /// through libsndfile; MP3 (read to its real end), AAC/M4A, Opus and the sound track of a video
+    /// through libsndfile; MP3 (read to its real end), AAC/M4A, Opus, AMR and the sound track of a video
     /// (MP4, MOV, MKV, WebM) through FFmpeg's libraries.
     /// \throws talkface::FileError if it cannot be opened or read (truncated); talkface::ParseError
     ///         naming the reason if it is not audio talkface can read, or a video has no sound track;

@@ -148,7 +148,7 @@ public:
 private:
     ParseError not_audio(const std::string& reason) const {
         return ParseError(path_, 0, 0, "",
-                          "not audio talkface can read (WAV, FLAC, Ogg, MP3, AAC/M4A, Opus, or the sound track of an "
+                          "not audio talkface can read (WAV, FLAC, Ogg, MP3, AAC/M4A, Opus, AMR, or the sound track of an "
                           "MP4, MOV, MKV or WebM video): " + reason);
     }
 
