@@ -107,7 +107,7 @@ AcousticModel AcousticModel::hand_set() {
     return model;
 }
 
-void AcousticModel::score(const std::vector<float>& observations, std::size_t frame_count, EmissionScores& scores) const {
+void AcousticModel::score(const float* observations, std::size_t frame_count, EmissionScores& scores) const {
     scores.frame_count = frame_count;
     scores.values.resize(frame_count * kPhoneClassCount);
     const std::size_t dims = columns_.size();

@@ -39,7 +39,9 @@ public:
     // The first pass's model: hand-set Gaussians on loudness, tilt and low band only.
     static AcousticModel hand_set();
 
-    void score(const std::vector<float>& observations, std::size_t frame_count, EmissionScores& scores) const;
+    // Scores `frame_count` frames of observations (kObservationCount floats a frame) from
+    // `observations` on: a stretch of a longer track is scored where it lies, not copied.
+    void score(const float* observations, std::size_t frame_count, EmissionScores& scores) const;
 
 private:
     std::vector<int> columns_;  // which observation columns the model uses

@@ -21,7 +21,7 @@ constexpr int kCepstra = 12;
 
 }  // namespace
 
-void set_boundary_bonus(const std::vector<float>& observations, std::size_t frame_count, EmissionScores& scores) {
+void set_boundary_bonus(const float* observations, std::size_t frame_count, EmissionScores& scores) {
     scores.boundary.assign(frame_count + 1, 0.0f);
     if (frame_count < 2) return;
     // The flux of a frame: the length of its cepstral deltas (a regression over +-2 frames).

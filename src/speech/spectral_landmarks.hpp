@@ -14,7 +14,7 @@ namespace talkface::detail {
 // EmissionScores::boundary of frames [0, frame_count) of `observations` (acoustic_model.hpp's
 // columns): what a state gains by starting at each frame, from how much faster the cepstra change
 // there than at the stretch's median frame; never a loss.
-void set_boundary_bonus(const std::vector<float>& observations, std::size_t frame_count, EmissionScores& scores);
+void set_boundary_bonus(const float* observations, std::size_t frame_count, EmissionScores& scores);
 
 }  // namespace talkface::detail
 

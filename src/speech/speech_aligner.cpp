@@ -137,7 +137,7 @@ Reestimation reestimate(const FeatureTrack& track, const LoudnessProfile& loudne
         for (std::size_t w = 0; w < chains.size(); ++w) {
             const SentenceChain& chain = chains[w];
             observe(track, loudness, chain.searched, observations);
-            learned.model.score(observations, chain.searched.length(), scores);
+            learned.model.score(observations.data(), chain.searched.length(), scores);
             // The hand-set models only start the re-estimation: on a sentence long enough to be
             // searched in windows (a transcript without punctuation), their weak evidence lets the
             // open-ended windows slip a syllable now and then, which adds up over an hour; its
@@ -287,7 +287,7 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
     ViterbiWorkspace workspace;
     for (std::size_t w = 0; w < chains.size(); ++w) {
         observe(track, loudness, chains[w].searched, observations);
-        learned.model.score(observations, chains[w].searched.length(), scores);
+        learned.model.score(observations.data(), chains[w].searched.length(), scores);
         if (is_lenient) {
             // A text with more syllables than the speech holds may have no plain path: no fits.
             const auto plain = viterbi_align(chains[w].states, scores, workspace, scores.frame_count);

@@ -134,17 +134,15 @@ std::vector<double> held_out_fit_gaps(const SentenceChain& chain, const std::vec
                                       const std::vector<float>& observations, const ModelEstimator& whole,
                                       const std::vector<ModelEstimator>& half_estimators, EmissionScores& scores) {
     std::vector<double> gaps(halves.size(), -std::numeric_limits<double>::infinity());
-    std::vector<float> half_observations;
     for (std::size_t h = 0; h < halves.size(); ++h) {
         if (halves[h].empty()) continue;
         ModelEstimator rest = whole;
         rest.subtract(half_estimators[h]);
-        // Only the half's own frames are scored: a chain of sentences run together is long.
+        // Only the half's own frames are scored, where they lie: a chain of sentences run together
+        // is long, and a copy of an hour's half would be the run's largest allocation.
         const std::size_t first = halves[h].front().first_frame;
         const std::size_t end = halves[h].back().end_frame;
-        half_observations.assign(observations.begin() + static_cast<std::ptrdiff_t>(first * kObservationCount),
-                                 observations.begin() + static_cast<std::ptrdiff_t>(end * kObservationCount));
-        rest.estimate(kReestimatedWeight).score(half_observations, end - first, scores);
+        rest.estimate(kReestimatedWeight).score(observations.data() + first * kObservationCount, end - first, scores);
         std::vector<StateSegment> shifted = halves[h];
         for (auto& segment : shifted) {
             segment.first_frame -= first;

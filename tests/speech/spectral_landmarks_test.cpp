@@ -17,7 +17,7 @@ TEST_SUITE("spectral landmarks") {
             for (int c = 0; c < 12; ++c) observations[t * kObservationCount + kDeltaCepstrum1 + c] = delta;
         }
         EmissionScores scores;
-        set_boundary_bonus(observations, frames, scores);
+        set_boundary_bonus(observations.data(), frames, scores);
         REQUIRE(scores.boundary.size() == frames + 1);
         std::size_t best = 0;
         for (std::size_t t = 0; t <= frames; ++t) {
