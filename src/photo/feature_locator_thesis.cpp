@@ -9,6 +9,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "common/order_statistics.hpp"
 #include "photo/photo_internal.hpp"
 
 namespace talkface::photo {
@@ -34,9 +35,7 @@ double median_of(const cv::Mat& gray, const cv::Mat& mask) {
             if (mask.empty() || mask.at<std::uint8_t>(y, x)) values.push_back(gray.at<std::uint8_t>(y, x));
         }
     }
-    if (values.empty()) return 0.0;
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2), values.end());
-    return values[values.size() / 2];
+    return values.empty() ? 0.0 : detail::upper_median(std::move(values));
 }
 
 cv::Vec3b median_colour(const cv::Mat& bgr, const cv::Mat& mask) {

@@ -13,6 +13,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "common/order_statistics.hpp"
 #include "photo/photo_internal.hpp"
 
 namespace talkface::photo {
@@ -38,10 +39,8 @@ std::vector<cv::Vec3b> collect(const cv::Mat& image, const cv::Mat& valid, const
     return values;
 }
 
-double channel_median(std::vector<double>& values) {
-    if (values.empty()) return 0.0;
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2), values.end());
-    return values[values.size() / 2];
+double channel_median(const std::vector<double>& values) {
+    return values.empty() ? 0.0 : detail::upper_median(values);
 }
 
 ColourModel model_of(const std::vector<cv::Vec3b>& values) {

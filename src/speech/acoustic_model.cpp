@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/order_statistics.hpp"
 #include "speech/spectral_landmarks.hpp"
 
 namespace talkface::detail {
@@ -17,10 +18,7 @@ constexpr double kPriorFrames = 30.0;
 constexpr double kVarianceFloorShare = 0.05;
 
 float level_percentile(std::vector<float> values, double fraction) {
-    if (values.empty()) return 0.0f;
-    const auto index = static_cast<std::size_t>(fraction * static_cast<double>(values.size() - 1));
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(index), values.end());
-    return values[index];
+    return values.empty() ? 0.0f : percentile_of(std::move(values), fraction);
 }
 
 int broad_group(int phone_class) {

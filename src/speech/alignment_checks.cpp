@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/number_format.hpp"
+#include "common/order_statistics.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
@@ -137,12 +138,6 @@ std::vector<std::size_t> syllables_per_sentence(const Timeline& transcript) {
     return syllables;
 }
 
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 // The refusal of a sentence whose speech other sounds fit `gap` per frame better than its text, on
 // models described by `models` ("" for the recording's own, re-estimated on every sentence).
 [[noreturn]] void refuse_text_fit(std::size_t k, const FrameSpan& span, const Timeline& transcript,
@@ -217,7 +212,7 @@ void check_sentence_lengths(const std::vector<FrameSpan>& spans, const FeatureTr
         rates[k] = speech / static_cast<double>(syllables[k]);
         spoken_rates.push_back(rates[k]);
     }
-    const double typical = spoken_rates.size() >= 3 ? median(spoken_rates) : 0.0;
+    const double typical = spoken_rates.size() >= 3 ? mean_median(spoken_rates) : 0.0;
     const auto is_fast = [&](double rate) {
         return rate < kFastestFramesPerSyllable || (typical > 0.0 && rate < typical / kMaxRateRatio);
     };
@@ -230,7 +225,7 @@ void check_sentence_lengths(const std::vector<FrameSpan>& spans, const FeatureTr
         std::vector<double> others;
         for (std::size_t j = 0; j < spans.size(); ++j)
             if (j != k && syllables[j] > 0) others.push_back(peaks_per_syllable(j));
-        return others.size() >= 2 && peaks_per_syllable(k) >= kMinPeakShareOfQuietSpeech * median(others);
+        return others.size() >= 2 && peaks_per_syllable(k) >= kMinPeakShareOfQuietSpeech * mean_median(others);
     };
     for (std::size_t k = 0; k < spans.size(); ++k) {
         if (syllables[k] == 0) continue;
@@ -294,9 +289,9 @@ void check_missing_text(const Timeline& aligned, const FeatureTrack& track, cons
         peaks.push_back(sentence.peaks_per_syllable);
     }
     if (rates.size() < 3 || sentence_pauses.size() < 2) return;
-    const double typical_rate = median(rates);
-    const double typical_peaks = median(peaks);
-    const double sentence_pause_s = median(sentence_pauses);
+    const double typical_rate = mean_median(rates);
+    const double typical_peaks = mean_median(peaks);
+    const double sentence_pause_s = mean_median(sentence_pauses);
     if (!(typical_rate > 0.0 && typical_peaks > 0.0)) return;
     const double long_pause_s = std::max(kMinSentencePauseS, kSentencePauseShare * sentence_pause_s);
     for (std::size_t k = 0; k < n; ++k) {
@@ -349,13 +344,10 @@ void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProf
         }
     }
     float speech_level_db = loudness.activity_threshold_db;
-    if (!spoken_db.empty()) {
-        std::nth_element(spoken_db.begin(), spoken_db.begin() + static_cast<std::ptrdiff_t>(spoken_db.size() / 2), spoken_db.end());
-        speech_level_db = spoken_db[spoken_db.size() / 2];
-    }
+    if (!spoken_db.empty()) speech_level_db = upper_median(std::move(spoken_db));
     // Where the syllables themselves fit speech no better than a pause, the models cannot tell
     // the two apart, and loudness alone decides.
-    const double syllable_gain = spoken_gains.empty() ? 0.0 : median(spoken_gains);
+    const double syllable_gain = spoken_gains.empty() ? 0.0 : mean_median(spoken_gains);
     const auto sounds_like_speech = [&](std::size_t first, std::size_t end) {
         if (!(syllable_gain > 0.0)) return true;
         double gain = 0.0;
@@ -425,7 +417,7 @@ void check_text_fit(const std::vector<SentenceMetrics>& metrics, const std::vect
     std::vector<double> gaps;
     for (std::size_t k = 0; k < metrics.size(); ++k)
         if (spans[k].length() > 0) gaps.push_back(metrics[k].fit_gap);
-    const double typical = gaps.size() >= 3 ? median(gaps) : -std::numeric_limits<double>::infinity();
+    const double typical = gaps.size() >= 3 ? mean_median(gaps) : -std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < metrics.size(); ++k) {
         const double gap = metrics[k].fit_gap;
         if (gap > kMaxTextFitGap && gap - typical > kMaxTextFitGapAboveTypical)
@@ -515,10 +507,10 @@ void check_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<Fr
     for (const auto& sentence : metrics)
         if (std::isfinite(sentence.fit)) fits.push_back(sentence.fit);
     if (fits.size() < 4) return;
-    const double typical = median(fits);
+    const double typical = mean_median(fits);
     std::vector<double> deviations;
     for (double fit : fits) deviations.push_back(std::fabs(fit - typical));
-    const double spread = 1.4826 * median(deviations);
+    const double spread = 1.4826 * mean_median(deviations);
     const double limit = typical - std::max(kFitOutlierSpread * spread, kFitOutlierMinimum);
     for (std::size_t k = 0; k < metrics.size(); ++k) {
         const double fit = metrics[k].fit;

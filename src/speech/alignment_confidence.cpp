@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "common/order_statistics.hpp"
 #include "speech/text_fit.hpp"
 
 namespace talkface::detail {
@@ -142,11 +143,10 @@ std::vector<double> syllable_timing(const SentenceChain& chain, const std::vecto
         const std::size_t first = i > kPaceSyllables ? i - kPaceSyllables : 0;
         std::vector<double> around(pace.begin() + static_cast<std::ptrdiff_t>(first),
                                    pace.begin() + static_cast<std::ptrdiff_t>(std::min(count, i + kPaceSyllables + 1)));
-        const auto middle = around.begin() + static_cast<std::ptrdiff_t>(around.size() / 2);
-        std::nth_element(around.begin(), middle, around.end());
+        const double typical_pace = upper_median(std::move(around));
         const double boundary = frames[i].first_frame < scores.boundary.size() ? scores.boundary[frames[i].first_frame] : 0.0;
         const double state_z = states[i] > 0.0 ? squared_z[i] / states[i] : 0.0;
-        timing[i] = kBoundaryWeight * boundary - kPaceWeight * std::fabs(pace[i] - *middle) - kStateLengthWeight * state_z;
+        timing[i] = kBoundaryWeight * boundary - kPaceWeight * std::fabs(pace[i] - typical_pace) - kStateLengthWeight * state_z;
     }
     return timing;
 }
@@ -170,9 +170,7 @@ void set_confidences(const std::vector<double>& evidence, Timeline& result) {
     for (const double value : evidence)
         if (!std::isnan(value)) placed.push_back(value);
     if (placed.empty()) return;
-    const auto middle = placed.begin() + static_cast<std::ptrdiff_t>(placed.size() / 2);
-    std::nth_element(placed.begin(), middle, placed.end());
-    const double median = *middle;
+    const double median = upper_median(std::move(placed));
     const double shift = kRelativeShare * median - kShortfallShare * std::max(0.0, kUsualMedian - median);
     for (std::size_t i = 0; i < evidence.size() && i < result.syllables.size(); ++i) {
         if (std::isnan(evidence[i])) continue;

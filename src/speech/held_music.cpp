@@ -3,18 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/order_statistics.hpp"
+
 namespace talkface::detail {
 
 namespace {
 
 // Digital silence reads -100 dB (frame_features' floor): frames that quiet hold no sound to judge.
 constexpr float kSoundDb = -90.0f;
-
-float median(std::vector<float> values) {
-    const auto middle = values.begin() + static_cast<std::ptrdiff_t>((values.size() - 1) / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    return *middle;
-}
 
 }  // namespace
 
@@ -38,8 +34,8 @@ std::vector<bool> held_music_frames(const FeatureTrack& track, const std::vector
         if (activity_db[t] >= threshold_db) speech_db.push_back(activity_db[t]);
         else if (track.at(t, kChangeBandDb) > kSoundDb) quiet_share.push_back(share[t]);
     }
-    if (quiet_share.empty() || speech_db.empty() || median(quiet_share) >= kNoiseChangeShare) return held;
-    const float speech_median_db = median(speech_db);
+    if (quiet_share.empty() || speech_db.empty() || lower_median(quiet_share) >= kNoiseChangeShare) return held;
+    const float speech_median_db = lower_median(speech_db);
     for (std::size_t t = 0; t < frames; ++t)
         held[t] = share[t] < kHeldMusicChangeShare && activity_db[t] < speech_median_db;
     return held;

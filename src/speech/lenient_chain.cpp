@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/number_format.hpp"
+#include "common/order_statistics.hpp"
 #include "speech/alignment_confidence.hpp"
 #include "speech/rival_syllables.hpp"
 #include "speech/syllable_placement.hpp"
@@ -125,12 +126,6 @@ std::vector<double> loudness_envelope(const LoudnessProfile& loudness, std::size
     return envelope;
 }
 
-double median_of(std::vector<double> values) {
-    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    return *middle;
-}
-
 // The fit under which a syllable's is an outlier among `fits` (those `is_counted`); none with
 // fewer than three, or none spread, to tell the usual spread from.
 double outlier_bound(const std::vector<double>& fits, const std::vector<bool>& is_counted) {
@@ -138,9 +133,9 @@ double outlier_bound(const std::vector<double>& fits, const std::vector<bool>& i
     for (std::size_t i = 0; i < fits.size(); ++i)
         if (is_counted[i]) counted.push_back(fits[i]);
     if (counted.size() < 3) return -std::numeric_limits<double>::infinity();
-    const double median = median_of(counted);
+    const double median = upper_median(counted);
     for (double& fit : counted) fit = std::abs(fit - median);
-    const double deviation = median_of(counted);
+    const double deviation = upper_median(counted);
     return deviation > 0.0 ? median - kOutlierDeviations * deviation : -std::numeric_limits<double>::infinity();
 }
 
@@ -266,7 +261,7 @@ std::vector<std::size_t> short_generic(const SentenceChain& lenient, const std::
     for (const SyllableFrames& frames : plain_frames)
         if (frames.end_frame > frames.first_frame) lengths.push_back(static_cast<double>(frames.end_frame - frames.first_frame));
     if (lengths.empty()) return {};
-    const double shortest = kMinGenericSyllableShare * median_of(lengths);
+    const double shortest = kMinGenericSyllableShare * upper_median(lengths);
     std::vector<std::size_t> short_states;
     for (const StateSegment& segment : path)
         if (lenient.states[segment.state].role == StateRole::generic_speech &&

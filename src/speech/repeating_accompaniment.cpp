@@ -4,17 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "common/order_statistics.hpp"
+
 namespace talkface::detail {
-
-namespace {
-
-float median(std::vector<float> values) {
-    const auto middle = values.begin() + static_cast<std::ptrdiff_t>((values.size() - 1) / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    return *middle;
-}
-
-}  // namespace
 
 double accompaniment_period_frames(const FeatureTrack& track, float high_floor_db) {
     const std::size_t frames = track.frame_count;
@@ -73,7 +65,7 @@ std::vector<bool> repeated_hits_between_pauses(const std::vector<float>& activit
     for (float db : activity_db)
         if (db >= threshold_db) speech_db.push_back(db);
     if (speech_db.empty()) return repeated;
-    const float speech_median_db = median(std::move(speech_db));
+    const float speech_median_db = lower_median(std::move(speech_db));
     const auto count = static_cast<std::ptrdiff_t>(frames);
     const auto is_explained = [&](std::size_t t) {
         if (activity_db[t] >= speech_median_db) return false;

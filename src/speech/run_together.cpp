@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "common/order_statistics.hpp"
+
 namespace talkface::detail {
 
 namespace {
@@ -81,9 +83,7 @@ bool are_sentence_ends_in_doubt(const std::vector<FrameSpan>& spans, const std::
     std::size_t shortest_cut = std::numeric_limits<std::size_t>::max();
     for (std::size_t k = 0; k + 1 < spans.size(); ++k) shortest_cut = std::min(shortest_cut, cut_pause(spans, k));
     if (shortest_cut <= *std::max_element(measures.longest_inside.begin(), measures.longest_inside.end())) return true;
-    std::vector<double> rates = measures.frames_per_syllable;
-    std::nth_element(rates.begin(), rates.begin() + static_cast<std::ptrdiff_t>(rates.size() / 2), rates.end());
-    const double typical = rates[rates.size() / 2];
+    const double typical = upper_median(measures.frames_per_syllable);
     return std::any_of(measures.frames_per_syllable.begin(), measures.frames_per_syllable.end(),
                        [&](double rate) { return is_outside_ratio(rate / typical, kMaxTypicalRateRatio); });
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/number_format.hpp"
+#include "common/order_statistics.hpp"
 #include "speech/alignment_checks.hpp"
 #include "speech/held_music.hpp"
 #include "speech/repeating_accompaniment.hpp"
@@ -42,16 +43,10 @@ constexpr double kNegativeInfinity = -std::numeric_limits<double>::infinity();
 constexpr float kDigitalSilenceDb = -99.0f;
 constexpr std::size_t kMinSoundFrames = 20;
 
-float percentile(std::vector<float> values, double fraction) {
-    const auto index = static_cast<std::size_t>(fraction * static_cast<double>(values.size() - 1));
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(index), values.end());
-    return values[index];
-}
-
 float column_percentile(const FeatureTrack& track, int column, double fraction) {
     std::vector<float> values(track.frame_count);
     for (std::size_t t = 0; t < track.frame_count; ++t) values[t] = track.at(t, column);
-    return percentile(std::move(values), fraction);
+    return percentile_of(std::move(values), fraction);
 }
 
 // column_percentile over the frames that are not digital silence; `fallback` where too few are.
@@ -59,7 +54,7 @@ float sound_percentile(const FeatureTrack& track, int column, double fraction, f
     std::vector<float> values;
     for (std::size_t t = 0; t < track.frame_count; ++t)
         if (track.at(t, kEnergyDb) > kDigitalSilenceDb) values.push_back(track.at(t, column));
-    return values.size() < kMinSoundFrames ? fallback : std::max(fallback, percentile(std::move(values), fraction));
+    return values.size() < kMinSoundFrames ? fallback : std::max(fallback, percentile_of(std::move(values), fraction));
 }
 
 std::string seconds(std::size_t frame) { return format_fixed(static_cast<double>(frame) * kFrameStepS, 2); }
@@ -257,9 +252,9 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     // the loud frames (a room's reverberation fills the pauses of a clean recording to there),
     // never less than kAboveFloorDb above the floor nor kNoiseWanderDb above the noise's typical
     // level (noise wanders by a few dB).
-    profile.speech_level_db = percentile(profile.activity_db, kSpeechPercentile);
+    profile.speech_level_db = percentile_of(profile.activity_db, kSpeechPercentile);
     const float speech_level_db = profile.speech_level_db;
-    const float noise_level_db = percentile(profile.activity_db, kNoisePercentile);
+    const float noise_level_db = percentile_of(profile.activity_db, kNoisePercentile);
     profile.activity_threshold_db =
         std::max({0.25f * speech_level_db, speech_level_db - 35.0f, kAboveFloorDb, noise_level_db + kNoiseWanderDb});
     // Music held through the pauses is as loud as the quieter speech: where it is held, the frame
@@ -292,7 +287,7 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     std::vector<float> speech_db;
     for (std::size_t t = first_speech; t < end_speech; ++t)
         if (is_speech_frame(profile, t)) speech_db.push_back(profile.activity_db[t]);
-    const float noise_below_db = speech_db.empty() ? 0.0f : percentile(speech_db, 0.5) - kUnspokenSpeechBelowDb;
+    const float noise_below_db = speech_db.empty() ? 0.0f : percentile_of(speech_db, 0.5) - kUnspokenSpeechBelowDb;
     const auto is_noise_only = [&](std::size_t first, std::size_t end) {
         return std::all_of(profile.activity_db.begin() + static_cast<std::ptrdiff_t>(first),
                            profile.activity_db.begin() + static_cast<std::ptrdiff_t>(end),

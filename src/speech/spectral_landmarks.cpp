@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/order_statistics.hpp"
 #include "speech/acoustic_model.hpp"
 
 namespace talkface::detail {
@@ -32,10 +33,7 @@ void set_boundary_bonus(const float* observations, std::size_t frame_count, Emis
         for (int c = 0; c < kCepstra; ++c) sum += static_cast<double>(row[c]) * row[c];
         flux[t] = static_cast<float>(std::sqrt(sum));
     }
-    std::vector<float> sorted = flux;
-    const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
-    std::nth_element(sorted.begin(), middle, sorted.end());
-    const double median = std::max(1e-3f, *middle);
+    const double median = std::max(1e-3f, upper_median(flux));
     // A state entered at frame t starts between frames t - 1 and t.
     for (std::size_t t = 1; t < frame_count; ++t) {
         const double ratio = 0.5 * (flux[t - 1] + flux[t]) / median;
