@@ -131,6 +131,28 @@ TEST_SUITE("speech") {
         CHECK(loudness.speech_first_frame + 3 >= gap);
     }
 
+    TEST_CASE("a click before the speech and after it is not speech") {
+        // A phone's record button: 20 ms as loud as the speech, 0.3 s before it and after it (bench/
+        // README, session 12's sweep: both voices were refused, the clicks taken for syllables).
+        std::vector<float> levels(20, 0.0f);
+        const auto append = [&](std::size_t frames, float level_db) { levels.insert(levels.end(), frames, level_db); };
+        append(3, 40.0f);
+        append(30, 0.0f);
+        const std::size_t speech_start = levels.size();
+        append(200, 30.0f);
+        append(50, 0.0f);
+        append(200, 30.0f);
+        const std::size_t speech_end = levels.size();
+        append(30, 0.0f);
+        append(3, 40.0f);
+        append(20, 0.0f);
+        const detail::LoudnessProfile loudness = detail::measure_loudness(track_of(levels));
+        CHECK(loudness.speech_first_frame + 3 >= speech_start);
+        CHECK(loudness.speech_end_frame <= speech_end + 3);
+        REQUIRE(loudness.pauses.size() == 1);
+        CHECK(loudness.pauses[0].first_frame + 3 >= speech_start + 200);
+    }
+
     TEST_CASE("no sentence is cut to a stretch far too short for its syllables") {
         // A note of music before the speech (frames 0-5) and only three pauses found for the three
         // sentence ends: one end lies under the music. Cutting at every pause gives the first
