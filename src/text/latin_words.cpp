@@ -62,12 +62,7 @@ bool is_usual_onset(std::string_view pair) {
 }
 
 void append_words(std::vector<std::string>& syllables, std::string_view words) {
-    std::size_t start = 0;
-    while (start < words.size()) {
-        const auto end = std::min(words.find(' ', start), words.size());
-        syllables.emplace_back(words.substr(start, end - start));
-        start = end + 1;
-    }
+    for (const auto word : split_words(words)) syllables.emplace_back(word);
 }
 
 }  // namespace
