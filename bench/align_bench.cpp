@@ -178,10 +178,13 @@ struct Target {
 };
 
 Target target_for(const std::string& condition) {
-    // v-: another voice made of speaker 3's (make_human_corpus), held to the same targets.
-    const bool is_human = condition.rfind("h-", 0) == 0 || condition.rfind("r-", 0) == 0 || condition.rfind("v-", 0) == 0;
+    // v-: another voice made of speaker 3's, w-: another person (make_human_corpus), held to the same
+    // targets; w-breathy and w-lenis are at SNR 30 dB, tempo up to 1.5.
+    const bool is_human = condition.rfind("h-", 0) == 0 || condition.rfind("r-", 0) == 0 ||
+                          condition.rfind("v-", 0) == 0 || condition.rfind("w-", 0) == 0;
     const std::string kind = is_human ? condition.substr(2) : "";
-    if (kind == "clean" || kind == "white30" || kind == "pink25" || kind == "fast") return {true, 20.0, 90.0, 97.0, false};
+    if (kind == "clean" || kind == "white30" || kind == "pink25" || kind == "fast" || kind == "breathy" || kind == "lenis")
+        return {true, 20.0, 90.0, 97.0, false};
     if (is_human) return {true, 0.0, 80.0, 95.0, false};
     if (condition == "clean" || condition == "white30") return {true, 20.0, 90.0, 0.0, true};
     if (condition == "white10") return {true, 0.0, 85.0, 0.0, true};

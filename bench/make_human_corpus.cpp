@@ -55,6 +55,9 @@ struct Condition {
     bool is_phone = false;    ///< after the noise: the telephone band at 8 kHz, through the GSM 06.10 codec
     double min_voice_semitones = 0;  ///< above 0: another voice (`v-`), each passage's shift drawn in
     double max_voice_semitones = 0;  ///< [min, max] semitones, up or down (drawn), see with_voice
+    bool is_other_person = false;    ///< `w-`: another person's voice and microphone, see draw_person
+    double max_breath_db = 0;        ///< below 0: breath under the voice, up to this level against it, see with_breath
+    bool is_lenis = false;           ///< an unaspirated stop's closure voiced through, see voice_through_closure
 };
 
 const Condition all_conditions[] = {
@@ -98,6 +101,19 @@ const Condition all_conditions[] = {
      "reverb 40 50 60 gain -n -3", true, 0, 0, 0, false, 2, 4},
     {"v-fast-reverb", "another voice, tempo 1.5-1.7, room reverb (sox reverb 40 50 60)", 1.5, 1.7, Noise::none, 0,
      "reverb 40 50 60 gain -n -3", true, 0, 0, 0, false, 2, 4},
+    // Another person (issue 12, session 13), where `v-` moves pitch and formants together: formants
+    // moved on their own, a pitch median and range of the person's own (praat's Change gender), a
+    // microphone's tilt and bandwidth, then a breathier voice and closures voiced through.
+    {"w-clean", "another person (formants, pitch, microphone of its own), running speech, white noise at SNR 30 dB",
+     1.0, 1.5, Noise::white, 30, "", true, 0, 0, 0, false, 0, 0, true},
+    {"w-fast", "another person, running speech at tempo 1.3-1.5, white noise at SNR 30 dB", 1.3, 1.5, Noise::white,
+     30, "", true, 0, 0, 0, false, 0, 0, true},
+    {"w-fast-pink15", "another person, tempo 1.3-1.5, pink noise at SNR 15-20 dB", 1.3, 1.5, Noise::pink, 15, "",
+     true, 20, 0, 0, false, 0, 0, true},
+    {"w-breathy", "another person, breathy (breath noise 12-20 dB under the voice), white noise at SNR 30 dB", 1.0,
+     1.5, Noise::white, 30, "", true, 0, 0, 0, false, 0, 0, true, -12},
+    {"w-lenis", "another person, closures of b d g j zh z voiced through, white noise at SNR 30 dB", 1.0, 1.5,
+     Noise::white, 30, "", true, 0, 0, 0, false, 0, 0, true, 0, true},
 };
 
 // --- pinyin to gcin-voice's folders --------------------------------------------------------------
@@ -171,6 +187,12 @@ Reading read_pinyin(const std::string& numbered, const std::string& where) {
 bool has_closure(const std::string& initial) {
     static const char* const stops[] = {"b", "p", "d", "t", "g", "k", "j", "q", "zh", "ch", "z", "c"};
     return std::find(std::begin(stops), std::end(stops), initial) != std::end(stops);
+}
+
+// The unaspirated stops and affricates: said quickly between vowels, many speakers voice them
+// right through their closure (the `w-lenis` condition).
+bool is_lenis(const std::string& initial) {
+    return initial == "b" || initial == "d" || initial == "g" || initial == "j" || initial == "zh" || initial == "z";
 }
 
 // m n l r and the zero initial: voicing runs on from the vowel before.
@@ -393,7 +415,28 @@ struct Recording {
     std::vector<bool> after_pause;
     std::vector<double> tempo;  ///< per sentence
     int fallbacks = 0;          ///< syllables spoken in another tone than the transcript's (not recorded)
+    std::map<std::string, double> drawn;  ///< what the condition drew for the passage (the person), for the truth file
 };
+
+// A closed tract still voiced: from `from` to `to` (a closure), the sound before it (`last_sound`,
+// mixed in at `last_at` with `last_gain`) goes on low-passed at 400 Hz (a one-pole filter: the
+// voice bar of a stop said between vowels, its formants gone) at a fifth of its level, 2 ms ramps
+// at either end. Where `last_sound` ends first, so does the voicing.
+void voice_through_closure(std::vector<float>& samples, std::size_t from, std::size_t to, const std::vector<float>& last_sound,
+                           std::size_t last_at, double last_gain) {
+    constexpr double kBarGain = 0.2;
+    constexpr std::size_t kRamp = kRateHz / 500;
+    const double alpha = 1.0 - std::exp(-2.0 * 3.141592653589793 * 400.0 / kRateHz);
+    double low = 0.0;
+    // The filter runs from 10 ms before the closure, so that it starts on the vowel's level.
+    const std::size_t warm = std::max(last_at, from >= kRateHz / 100 ? from - kRateHz / 100 : 0);
+    for (std::size_t n = warm; n < to && n - last_at < last_sound.size(); ++n) {
+        low += alpha * (last_sound[n - last_at] - low);
+        if (n < from) continue;
+        const double ramp = std::min(1.0, static_cast<double>(std::min(n - from, to - 1 - n)) / kRamp);
+        samples[n] += static_cast<float>(kBarGain * last_gain * ramp * low);
+    }
+}
 
 // The level of the joined speech: speaker 3's syllables are recorded near -10 dBFS at their peak.
 constexpr double kOverallGain = 0.7;
@@ -497,6 +540,8 @@ Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, 
             recording.after_pause[i] = after_pause;
             const std::size_t fade = is_voiced_join && at < end ? end - at : 0;
             if (samples.size() < at + sound.size()) samples.resize(at + sound.size(), 0.0f);
+            if (condition.is_lenis && is_running && !after_pause && is_lenis(reading.initial) && at > end)
+                voice_through_closure(samples, end, at, last_sound, last_at, last_gain);
             for (std::size_t n = 0; n < fade; ++n) {
                 const double share = 0.5 - 0.5 * std::cos(3.141592653589793 * static_cast<double>(n) / static_cast<double>(fade));
                 samples[at + n] = static_cast<float>(samples[at + n] * (1.0 - share) + share * gain * sound[n]);
@@ -531,6 +576,7 @@ std::string truth_json(const Recording& recording, const std::string& condition,
                                                    recording.truth, recording.after_pause);
     for (std::size_t k = 0; k < recording.tempo.size(); ++k)
         document["sentences"][k]["tempo"] = std::round(recording.tempo[k] * 1000.0) / 1000.0;
+    for (const auto& [name, value] : recording.drawn) document["drawn"][name] = std::round(value * 1000.0) / 1000.0;
     return document.dump(1) + "\n";
 }
 
@@ -560,6 +606,101 @@ Recording with_voice(Recording recording, double factor, const fs::path& work) {
     for (auto& syllable : recording.truth.syllables) syllable.start_s /= factor, syllable.end_s /= factor;
     for (auto& sentence : recording.truth.sentences) sentence.start_s /= factor, sentence.end_s /= factor;
     recording.truth.duration_s = static_cast<double>(recording.audio.samples.size()) / kRateHz;
+    return recording;
+}
+
+// Another person (`w-`), drawn per passage. `v-` moves pitch and formants together, as one vocal
+// tract scaled; people differ otherwise too:
+// - the formants alone move by a ratio of 1.08-1.20 (a shorter tract: a woman's, a child's) or
+//   0.86-0.93 (a longer one), up or down at even odds;
+// - the pitch has a median of its own, 95-240 Hz (log-uniform; speaker 3's is about 135 Hz), drawn
+//   apart from the formants, and a range of its own: its excursions 0.6-1.5 times speaker 3's;
+// - a microphone and room of its own: a shelf of -8 to +6 dB below 150 Hz (a thin microphone or
+//   a close one's boom), another above 3 kHz (muffled or bright), and half of the passages cut
+//   above 4.5-7 kHz (a cheap microphone, a compressed file);
+// - a breathier voice (`w-breathy`): breath noise that follows the voice's loudness, 12-20 dB under it.
+struct Person {
+    double formant_ratio = 1.0;
+    double pitch_median_hz = 0.0;
+    double pitch_range = 1.0;
+    double bass_db = 0.0;
+    double treble_db = 0.0;
+    double lowpass_hz = 0.0;  ///< 0: none
+    double breath_db = 0.0;   ///< 0: none
+};
+
+Person draw_person(const Condition& condition, std::mt19937_64& rng) {
+    using talkface_bench::uniform;
+    Person person;
+    person.formant_ratio = uniform(rng, 0, 1) < 0.5 ? uniform(rng, 1.08, 1.20) : uniform(rng, 0.86, 0.93);
+    person.pitch_median_hz = std::exp(uniform(rng, std::log(95.0), std::log(240.0)));
+    person.pitch_range = uniform(rng, 0.6, 1.5);
+    person.bass_db = uniform(rng, -8.0, 6.0);
+    person.treble_db = uniform(rng, -8.0, 6.0);
+    if (uniform(rng, 0, 1) < 0.5) person.lowpass_hz = uniform(rng, 4500.0, 7000.0);
+    if (condition.max_breath_db < 0) person.breath_db = uniform(rng, condition.max_breath_db - 8.0, condition.max_breath_db);
+    return person;
+}
+
+// praat's Change gender (the pitch found at 75-600 Hz): the sound resampled by the formant ratio,
+// then pitch-synchronous overlap-add (PSOLA) brings its length back and sets the new pitch median
+// and range, so every sound stays where it was and the truth stands as it is. Peak at 0.9 so
+// that nothing clips on the way to sox.
+constexpr const char* kChangeVoiceScript = R"(form Change voice
+  sentence in
+  sentence out
+  real formant_ratio 1
+  real pitch_median 0
+  real pitch_range 1
+endform
+Read from file: in$
+Change gender: 75, 600, formant_ratio, pitch_median, pitch_range, 1
+Scale peak: 0.9
+Save as WAV file: out$
+)";
+
+// `recording` as `person` says it into its microphone (praat, then sox's shelves and low-pass,
+// peak at -3 dBFS), with its breath. Times do not move. The breath's noise comes from `rng`.
+Recording with_person(Recording recording, const Person& person, const fs::path& work, std::mt19937_64& rng) {
+    const fs::path script = work / "change_voice.praat", in = work / "person-in.wav", changed = work / "person-changed.wav",
+                   out = work / "person-out.wav";
+    talkface_bench::write_text(script, kChangeVoiceScript);
+    talkface_bench::write_wav(in.string(), recording.audio);
+    const std::string command = "praat --run " + talkface_bench::quoted(script.string()) + " " +
+                                talkface_bench::quoted(in.string()) + " " + talkface_bench::quoted(changed.string()) + " " +
+                                std::to_string(person.formant_ratio) + " " + std::to_string(person.pitch_median_hz) + " " +
+                                std::to_string(person.pitch_range) + " >/dev/null";
+    if (std::system(command.c_str()) != 0) throw std::runtime_error("praat failed: " + command);
+    std::string effects = "bass " + std::to_string(person.bass_db) + " 150 treble " + std::to_string(person.treble_db) + " 3000";
+    if (person.lowpass_hz > 0) effects += " lowpass " + std::to_string(person.lowpass_hz);
+    talkface_bench::run_sox(changed.string(), out.string(), "-b 16", effects + " gain -n -3");
+    const std::size_t count = recording.audio.samples.size();
+    recording.audio = talkface_bench::read_wav(out.string());
+    if (recording.audio.samples.size() != count)
+        throw std::runtime_error("praat and sox changed the length of " + in.string() + ": its truth would not hold");
+    if (person.breath_db < 0) {
+        // Breath: white noise tilted up (a first difference: aspiration is a high sound), its
+        // level following the voice's over 20 ms, `breath_db` under it.
+        auto& samples = recording.audio.samples;
+        constexpr std::size_t kWindow = kRateHz / 50;
+        std::vector<double> power(samples.size() + 1, 0.0);
+        for (std::size_t n = 0; n < samples.size(); ++n) power[n + 1] = power[n] + double(samples[n]) * samples[n];
+        const double gain = std::pow(10.0, person.breath_db / 20.0) / std::sqrt(2.0);  // the difference doubles white noise's power
+        double last = talkface_bench::gaussian(rng);
+        std::vector<float> breathy = samples;
+        for (std::size_t n = 0; n < samples.size(); ++n) {
+            const std::size_t from = n >= kWindow / 2 ? n - kWindow / 2 : 0, to = std::min(samples.size(), n + kWindow / 2);
+            const double level = std::sqrt((power[to] - power[from]) / static_cast<double>(to - from));
+            const double white = talkface_bench::gaussian(rng);
+            breathy[n] += static_cast<float>(gain * level * (white - last));
+            last = white;
+        }
+        samples = std::move(breathy);
+    }
+    recording.drawn = {{"formant_ratio", person.formant_ratio}, {"pitch_median_hz", person.pitch_median_hz},
+                       {"pitch_range", person.pitch_range},     {"bass_db", person.bass_db},
+                       {"treble_db", person.treble_db},         {"lowpass_hz", person.lowpass_hz},
+                       {"breath_db", person.breath_db}};
     return recording;
 }
 
@@ -639,8 +780,10 @@ void make_corpus(const CorpusOptions& options) {
                 const double semitones = talkface_bench::uniform(noise_rng, condition->min_voice_semitones, condition->max_voice_semitones);
                 voice_factor = std::pow(2.0, (talkface_bench::uniform(noise_rng, 0, 1) < 0.5 ? -semitones : semitones) / 12.0);
             }
+            const Person person = condition->is_other_person ? draw_person(*condition, noise_rng) : Person{};
             Recording recording = speak(transcript, deliveries[p], runnings[p], *condition, bank, passage.name, voice_factor);
             if (voice_factor != 1.0) recording = with_voice(std::move(recording), voice_factor, work);
+            if (condition->is_other_person) recording = with_person(std::move(recording), person, work, noise_rng);
             if (condition->max_ends_s > 0) {
                 const double lead_s = talkface_bench::uniform(noise_rng, condition->min_ends_s, condition->max_ends_s);
                 recording = with_ends(std::move(recording), lead_s,

@@ -6,7 +6,7 @@
 # usage: cmake/install-deps.sh [build|test|bench]
 #   build  what the library, the command and the Python module need (default)
 #   test   that, plus what the tests drive: pytest, Pillow, headless Chromium, a venv for pip
-#   bench  that, plus what bench/ needs: espeak-ng (corpus), sox (conditions), GNU time (memory)
+#   bench  that, plus what bench/ needs: espeak-ng (corpus), sox (conditions), GNU time (memory), praat (another person's voice, make_human_corpus w-)
 set -eu
 
 build_packages="build-essential cmake pkg-config git libeigen3-dev libpugixml-dev libcli11-dev
@@ -42,7 +42,7 @@ python3-skimage python-matplotlib-data librsvg2-bin libdlib-data fonts-noto-cjk 
 python3-dask python3-distributed librlottie-dev"
 lottie_web_version="5.13.0"
 npm_prefix="${HOME}/.cache/talkface/npm"
-bench_packages="espeak-ng libespeak-ng-dev sox libsox-fmt-all time"
+bench_packages="espeak-ng libespeak-ng-dev sox libsox-fmt-all time praat"
 
 case "${1:-build}" in
   build) wanted=$build_packages ;;
