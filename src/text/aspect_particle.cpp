@@ -42,6 +42,12 @@ std::string joined(const std::vector<std::string_view>& characters, std::size_t 
     return word;
 }
 
+// Adverbs that the phrase list joins to 得 as a word (还得 hai2 dei3 "still must", 又得 也得 就得 都得 总得).
+bool is_adverb_with_must(std::string_view word) {
+    constexpr std::string_view kWords[] = {"还得", "還得", "又得", "也得", "就得", "都得", "总得", "總得"};
+    return std::find(std::begin(kWords), std::end(kWords), word) != std::end(kWords);
+}
+
 bool is_idiom_of_outrage(std::string_view word) {
     return word == "还了得" || word == "還了得" || word == "还得了" || word == "還得了";
 }
@@ -75,7 +81,9 @@ bool may_start_word_here(const std::vector<std::string_view>& characters, std::s
     const auto idiom = idiom_at_clause_end(characters, ends_clause);
     if (is_idiom_of_outrage(word)) return start == idiom;
     if (idiom != std::string::npos && start < idiom && end > idiom) return false;
-    if ((word == "还得" || word == "還得") && end < characters.size() && characters[end] == "了") return false;
+    // 得 "must" (dei3) never takes 了, so an adverb with 得 is no word before it: 他又得了第一名, 他也得了奖,
+    // 我们都得了感冒 are 得了 de2 le5 (got), as 他还得了第一名 is.
+    if (is_adverb_with_must(word) && end < characters.size() && characters[end] == "了") return false;
     if (end - start < 2 || characters[start] != "了" || start == 0 || end >= characters.size()) return true;
     if (!is_verb_taking_particle(characters[start - 1])) return true;
     const std::string next_word = std::string(characters[end - 1]) + std::string(characters[end]);

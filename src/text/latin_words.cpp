@@ -33,6 +33,10 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     {"covid", "kou1 wei2 de5"},
     {"sars", "sa4 si1"},
     {"nvidia", "ying1 wei3 da2"},
+    // Session 13: Tesla, which the 1998 dictionary lacks, is 特斯拉 as Mandarin speakers say it; an
+    // app is spelled, A P P, as mainland speakers say it (the dictionary's word gave a pu).
+    {"tesla", "te4 si1 la1"},
+    {"app", "ei1 pi1 pi1"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

@@ -282,8 +282,13 @@ private:
         if (auto form = detail::read_number_form(text, i)) {
             form_warnings_ = timeline_.warnings.size();
             if (!form->warning.empty()) warn(c, "\"" + written_text(text, i, form->end) + "\": " + form->warning);
-            add_form(text, i, form->end, read_words(form->words));
+            add_form(text, i, form->end, read_words(form->is_dialled ? with_local_one(form->words) : form->words));
             return form->end;
+        }
+        if (auto per = detail::read_per_unit(text, i)) {
+            form_warnings_ = timeline_.warnings.size();
+            add_form(text, i, per->end, read_words(per->words));
+            return per->end;
         }
         if (detail::slash_reads_per(text, i)) {
             form_warnings_ = timeline_.warnings.size();
@@ -377,6 +382,12 @@ private:
     std::vector<Syllable> latin_word_syllables(const std::string& word, const CodePoint& at) {
         // A letter alone is a letter (选a, x=5), not the dictionary's word a or x (ai si).
         if (word.size() == 1 || (detail::is_all_capitals(word) && !detail::is_said_as_word(word))) return read_capitals(word);
+        // Capitals and one small letter after them (PCIe) are an acronym's letters, said one by one (P C
+        // I E); no part of them is a word to say.
+        const bool is_acronym_with_small_end = word.size() >= 3 && word.back() >= 'a' && word.back() <= 'z' &&
+                                               detail::is_all_capitals(word.substr(0, word.size() - 1));
+        if (is_acronym_with_small_end && !detail::english_word_syllables(word))
+            return said_syllables(detail::letter_syllables(word));
         if (detail::has_inner_acronym(word)) return read_word_parts(word, at);
         if (auto found = detail::english_word_syllables(word)) return said_syllables(*found);
         return read_word_parts(word, at);
@@ -680,6 +691,17 @@ private:
         const auto readings = read_han(run_, ends_clause);
         for (std::size_t k = 0; k < run_.size(); ++k) add_syllable(std::string(run_[k].text), readings[k]);
         run_.clear();
+    }
+
+    // A dialled number's 1 is 幺 on the mainland (拨打119 幺幺九) and 一 in Taiwan (撥打119 一一九,
+    // 1999市民熱線 一九九九, 0800 lines), where 幺 is the military's and radio's: a Traditional
+    // transcript, mostly Taiwan's, gets 一 (a fix in place says 幺 where it is meant). A train's or a
+    // flight's number keeps the announcers' 幺 (複興號G1次: the mainland's trains, as announced).
+    std::string with_local_one(std::string words) const {
+        if (!is_traditional_) return words;
+        constexpr std::string_view kYao = "幺";
+        for (auto at = words.find(kYao); at != std::string::npos; at = words.find(kYao, at)) words.replace(at, kYao.size(), "一");
+        return words;
     }
 
     // The syllables of a form's reading in words (二零二六年), each character read by the tables.

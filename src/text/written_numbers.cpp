@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <string_view>
+#include <utility>
 
 #include "text/latin_words.hpp"
 #include "text/number_words.hpp"
@@ -105,11 +106,14 @@ bool names_room_or_building(const std::vector<CodePoint>& text, std::size_t end)
 }
 
 // Service and emergency numbers (110 police, 119 fire, 120 ambulance, 12345 the city's hotline,
-// 10086 a carrier, 95xxx a bank's line): said digit by digit with 幺 where they are dialled or
+// 10086 a carrier, 95xxx a bank's line; the government's 12xxx lines, 12123 traffic, 12366 tax,
+// 12393 medical insurance, 12395 sea rescue): said digit by digit with 幺 where they are dialled or
 // named (打110, 110报警), as cardinals where they count (120人, 时速120).
 bool is_service_number(const std::string& digits) {
-    for (const std::string_view number : {"110", "112", "114", "119", "120", "122", "999", "12110", "12306", "12315",
-                                          "12333", "12345", "12348", "12358", "12365", "12369", "10000", "10010", "10086"})
+    for (const std::string_view number : {"110", "112", "114", "119", "120", "122", "999", "12110", "12117", "12121",
+                                          "12123", "12306", "12308", "12309", "12315", "12318", "12320", "12328", "12333",
+                                          "12338", "12345", "12348", "12355", "12358", "12365", "12366", "12369", "12378",
+                                          "12380", "12388", "12393", "12395", "10000", "10010", "10086"})
         if (digits == number) return true;
     return digits.size() == 5 && (digits.rfind("95", 0) == 0 || digits.rfind("96", 0) == 0);
 }
@@ -196,7 +200,8 @@ bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t
     const std::string after = text_between(text, end, end + 2);
     constexpr std::string_view kResults[] = {"战胜", "戰勝", "击败", "擊敗", "获胜", "獲勝", "取胜", "取勝", "领先", "領先",
                                              "落后", "落後", "险胜", "險勝", "大胜", "大勝", "完胜", "完勝", "逆转", "逆轉",
-                                             "告负", "告負", "胜", "勝", "负", "負", "赢", "贏", "输", "輸"};
+                                             "告负", "告負", "战平", "戰平", "打平", "逼平", "胜", "勝", "负", "負", "赢",
+                                             "贏", "输", "輸"};
     for (const auto word : kResults)
         if (after.rfind(word, 0) == 0) return true;
     if (!dashed) return false;
@@ -319,6 +324,16 @@ constexpr Unit kUnits[] = {
     {"kW", "千瓦"}, {"W", "瓦"}, {"V", "伏"}, {"mAh", "毫安时"}, {"kWh", "千瓦时"}, {"km/h", "公里每小时"},
     {"m/s", "米每秒"}, {"m²", "平方米"}, {"km²", "平方公里"}, {"㎡", "平方米"}, {"㎞", "公里"}, {"㎏", "公斤"},
     {"℃", "摄氏度"}, {"℉", "华氏度"}, {"°C", "摄氏度"}, {"°F", "华氏度"}, {"°", "度"}, {"%", ""},
+    // Session 13: the units news writes of chips, networks, power, weather and blood tests, said by
+    // their Chinese names as newsreaders say them (3nm 三纳米, 950hPa 九百五十百帕, 50dB 五十分贝);
+    // bits per second by their names too (500Mbps 五百兆比特每秒; 千兆 for 1000Mbps is a fix in
+    // place), where KB MB GB are said as letters (is_byte_unit_at). μ is written as the Greek mu or
+    // the micro sign.
+    {"nm", "纳米"}, {"μm", "微米"}, {"µm", "微米"}, {"μg", "微克"}, {"µg", "微克"}, {"m³", "立方米"},
+    {"cm²", "平方厘米"}, {"cm³", "立方厘米"}, {"GHz", "吉赫兹"}, {"dB", "分贝"}, {"MW", "兆瓦"}, {"GW", "吉瓦"},
+    {"MWh", "兆瓦时"}, {"GWh", "吉瓦时"}, {"TWh", "太瓦时"}, {"kV", "千伏"}, {"mA", "毫安"}, {"Pa", "帕"},
+    {"hPa", "百帕"}, {"kPa", "千帕"}, {"MPa", "兆帕"}, {"kbps", "千比特每秒"}, {"Mbps", "兆比特每秒"},
+    {"Gbps", "吉比特每秒"}, {"mol", "摩尔"}, {"mmol", "毫摩尔"}, {"kcal", "千卡"},
 };
 
 // The unit written at text[i] (after at most one space when it is Latin), or nullptr.
@@ -403,11 +418,14 @@ struct NumberContext {
     bool is_hundredths = false;  // right after the seconds of a time (9秒83)
     bool is_grade = false;       // a respirator's filter grade (N95)
     bool is_span_of_years = false;  // four digits before 年 that count years, not name one (距今约5000年)
+    bool is_code = false;        // a stock's code, an index's or a programme's number (（600519）, 日经225, 985高校)
+    bool is_version = false;     // after a software's name or a v (Python 3.12, v2.15): a version
 };
 
 struct SaidNumber {
     std::string words;
     bool is_year = false;
+    bool is_dialled = false;  // a phone's or a service's number, 1 said 幺
     std::string warning;
 };
 
@@ -415,6 +433,14 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
     SaidNumber said;
     const auto& whole = number.whole;
     if (number.has_point) {
+        // A version's part after the point is a number (Python 3.12 三点十二, as 10.15.7 is 十点十五点七);
+        // a decimal's digits are said one by one (3.12 三点一二).
+        const bool counts = context.has_unit || takes_liang(context.next) || context.next == '%';
+        if (context.is_version && !counts && whole.size() <= kMostCardinalDigits && number.fraction.size() >= 2 &&
+            number.fraction.size() <= kMostCardinalDigits && number.fraction.front() != '0') {
+            said.words = cardinal_words(whole, false) + "点" + cardinal_words(number.fraction, false);
+            return said;
+        }
         if (whole.size() > kMostCardinalDigits) {
             said.words = digit_words(whole) + "点" + digit_words(number.fraction);
             said.warning = "more than 16 digits before the point; read digit by digit";
@@ -434,6 +460,7 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
         const bool counts = !context.is_train && (context.has_unit || takes_liang(context.next) || context.next == '%');
         if ((context.is_phone && whole.size() >= 3 && !counts) || is_mobile) {
             said.words = digit_words(whole, true);
+            said.is_dialled = true;
             return said;
         }
         if (whole.size() >= 2 && whole.front() == '0') {
@@ -453,9 +480,12 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
         // So is a chat's laugh, 2333 (a 2 and three or more 3s: 二三三三, after an emoticon's number).
         const bool is_one_digit_over = whole.size() >= 3 && whole.find_first_not_of(whole.front()) == std::string::npos;
         const bool is_laugh = whole.size() >= 4 && whole.front() == '2' && whole.find_first_not_of('3', 1) == std::string::npos;
-        // A filter grade is a name before any word (N95口罩: 口 is no measure word there).
+        // A filter grade is a name before any word (N95口罩: 口 is no measure word there). A round
+        // thousand after capitals is a tier, not a model (WTA 1000 一千, RTX 5000 五千).
+        const bool is_round_thousands = whole.size() >= 4 && whole.compare(whole.size() - 3, 3, "000") == 0;
         if (context.is_grade ||
-            (!counts && (context.is_generation || context.is_hundredths || (context.is_model && whole.size() >= 3) ||
+            (!counts && (context.is_generation || context.is_hundredths || context.is_code ||
+                         (context.is_model && whole.size() >= 3 && !is_round_thousands) ||
                          (context.names_type && whole.size() >= 2) || context.names_day ||
                          ((is_one_digit_over || is_laugh) && !context.has_currency && !context.is_ordinal)))) {
             said.words = digit_words(whole);
@@ -468,6 +498,7 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
         }
         if ((context.is_service_call || is_named_anywhere(whole)) && is_service_number(whole) && !counts) {
             said.words = digit_words(whole, true);
+            said.is_dialled = true;
             return said;
         }
         if (whole.size() >= 3 && (names_by_digits(context.next) || context.is_named || (context.names_place && !counts))) {
@@ -569,6 +600,7 @@ std::optional<SpokenForm> read_numeric_date(const std::vector<CodePoint>& text, 
 // A phone number's groups of digits, each said digit by digit with 幺 for 1; a group too long to be
 // read as a number carries the warning (once).
 void append_phone_groups(SpokenForm& form, const std::vector<std::string>& groups) {
+    form.is_dialled = true;
     for (const auto& group : groups) {
         form.words += digit_words(group, true);
         if (group.size() > kMostCardinalDigits && form.warning.empty()) form.warning = kTooLongWarning;
@@ -653,6 +685,61 @@ bool follows_aircraft_maker(const std::vector<CodePoint>& text, std::size_t star
     const auto before = text_between(text, i >= 2 ? i - 2 : 0, i);
     for (const std::string_view maker : {"波音", "空客", "麦道", "麥道", "商飞", "商飛"})
         if (before == maker) return true;
+    return false;
+}
+
+// A number that names by its digits what it stands for, said one by one with 一 for 1 (where no
+// measure word or unit makes it count):
+// - a stock's code alone in brackets after the company's name (贵州茅台（600519）, 台積電（2330）,
+//   腾讯控股(00700.HK)): four to six digits, a closing bracket or the exchange's suffix after them;
+// - the Nikkei's number (日经225 日经二二五, as Japanese and Chinese market news say it; the other
+//   indices count their shares: 沪深300 三百, 标普500 五百);
+// - a programme's number before its word (985高校, 211工程, 863计划), also in a list (985、211高校).
+bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
+    if (number.has_point || number.has_separators) return false;
+    const auto& digits = number.whole;
+    constexpr std::size_t kShortestCode = 4;
+    constexpr std::size_t kLongestCode = 6;
+    if (start > 0 && is_one_of(text[start - 1].value, U"(\uFF08") && digits.size() >= kShortestCode &&
+        digits.size() <= kLongestCode &&
+        (is_one_of(value_at(text, number.end), U")\uFF09") ||
+         (value_at(text, number.end) == '.' && is_ascii_capital(value_at(text, number.end + 1))))) {
+        return true;
+    }
+    const auto before = text_between(text, start >= 2 ? start - 2 : 0, start);
+    if (before == "日经" || before == "日經") return true;
+    if (digits.size() != 3) return false;
+    auto end = number.end;
+    // Past the rest of a list of such numbers (985、211高校) to the word they share.
+    while (value_at(text, end) == 0x3001 /*、*/ && is_digit_at(text, end + 1)) {
+        auto k = end + 1;
+        if (digits_from(text, k).size() != 3) return false;
+        end = k;
+    }
+    const auto after = text_between(text, end, end + 2);
+    for (const std::string_view word : {"工程", "计划", "計劃", "高校", "院校", "名校", "大学", "大學"})
+        if (after == word) return true;
+    return false;
+}
+
+// A version after a software's name and a space (Python 3.12, iOS 17.12: a word with a small
+// letter) or right after a v (v2.15, V3.12).
+bool follows_software_name(const std::vector<CodePoint>& text, std::size_t start) {
+    if (start == 0) return false;
+    if (is_one_of(value_at(text, start - 1), U"vV")) return start == 1 || !is_ascii_letter(value_at(text, start - 2));
+    return value_at(text, start - 1) == ' ' && start >= 2 && is_ascii_letter(value_at(text, start - 2)) &&
+           follows_glued_name(text, start - 1);
+}
+
+// The Chinese designation of an aircraft, a missile or a rocket before a hyphen (歼-20 歼二十, 运-20,
+// 东风-41, 长征-5): the hyphen joins, it is no minus sign.
+bool follows_designation(const std::vector<CodePoint>& text, std::size_t dash) {
+    if (dash == 0) return false;
+    if (is_one_of(text[dash - 1].value, U"歼殲运運轰轟直教")) return true;
+    const auto before = text_between(text, dash >= 2 ? dash - 2 : 0, dash);
+    for (const std::string_view name : {"东风", "東風", "长征", "長征", "红旗", "紅旗", "鹰击", "鷹擊", "巨浪", "空警",
+                                        "霹雳", "霹靂", "快舟"})
+        if (before == name) return true;
     return false;
 }
 
@@ -805,10 +892,28 @@ std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text,
     auto i = month.end + 1;
     const auto day = digits_from(text, i);
     if (!is_month_and_day(month.whole, day) || value_at(text, i) == '.' || value_at(text, i) == '/') return std::nullopt;
+    // A range of two days (10/1-10/7): the second day no earlier than the first (1/3~1/2 is no range
+    // of days), and the words after the second day decide for both.
+    auto first_end = i;
+    std::string second_day_words;
+    if (is_range_mark(value_at(text, i)) && is_digit_at(text, i + 1)) {
+        auto k = i + 1;
+        const auto second_month = digits_from(text, k);
+        if (value_at(text, k) == '/' && is_digit_at(text, k + 1)) {
+            ++k;
+            const auto second_day = digits_from(text, k);
+            if (is_month_and_day(second_month, second_day) && value_at(text, k) != '/' && value_at(text, k) != '.' &&
+                std::make_pair(std::stoi(second_month), std::stoi(second_day)) >=
+                    std::make_pair(std::stoi(month.whole), std::stoi(day))) {
+                second_day_words = "到" + cardinal_words(second_month, false) + "月" + cardinal_words(second_day, false) + "日";
+                i = k;
+            }
+        }
+    }
     bool in_time = false;
     const std::string after = text_between(text, i, i + 2);
     for (const std::string_view word : {"起", "前", "后", "後", "晚", "早", "上午", "下午", "中午", "凌晨", "夜", "当天",
-                                        "當天", "(", "（", "星期", "周", "週", "礼拜", "禮拜"})
+                                        "當天", "(", "（", "星期", "周", "週", "礼拜", "禮拜", "期间", "期間"})
         if (after.rfind(word, 0) == 0) in_time = true;
     const bool is_fraction = after == "决赛" || after == "決賽" || value_at(text, i) == U'的' ||
                              (i < text.size() && takes_liang(text[i].value));
@@ -825,8 +930,8 @@ std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text,
     }
     if (!in_time) return std::nullopt;
     SpokenForm form;
-    form.words = cardinal_words(month.whole, false) + "月" + cardinal_words(day, false) + "日";
-    form.end = i;
+    form.words = cardinal_words(month.whole, false) + "月" + cardinal_words(day, false) + "日" + second_day_words;
+    form.end = second_day_words.empty() ? first_end : i;
     return form;
 }
 
@@ -865,7 +970,9 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     // After a term (a digit, a letter, a square: x²+2x) a + or a - joins it to the next, a sign no more.
     const bool after_word = start > 0 && (is_digit_at(text, start - 1) || is_ascii_letter(value_at(text, start - 1)) ||
                                           is_one_of(text[start - 1].value, U"\u00B2\u00B3"));
-    if (currency == nullptr && (is_dash(first) || first == '+') && is_digit_at(text, i + 1) && !after_word) {
+    if (currency == nullptr && is_dash(first) && is_digit_at(text, i + 1) && follows_designation(text, start)) {
+        ++i;
+    } else if (currency == nullptr && (is_dash(first) || first == '+') && is_digit_at(text, i + 1) && !after_word) {
         sign_words = first == '+' ? "正" : "负";
         if (first == '+' && follows_game_attribute(text, start)) sign_words = "加";
         ++i;
@@ -895,6 +1002,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     context.is_grade = context.is_model && is_filter_grade(text, start, number.whole);
     context.is_span_of_years = counts_years(text, start, number);
     context.is_service_call = is_service_call(text, start, number.end);
+    context.is_code = sign_words.empty() && currency == nullptr && names_by_its_digits(text, i, number);
+    context.is_version = sign_words.empty() && currency == nullptr && follows_software_name(text, i);
     SpokenForm form;
     // Two numbers said each alone with a word between: a score (3:1, and 2-1 where the clause
     // speaks of a match: 2-1领先), a product (7×24 七乘二十四).
@@ -1044,9 +1153,28 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
             if (k + 1 < numbers.size()) form.words.erase(form.words.size() - std::string_view("年").size());
         }
         append_warning(form, said.warning);
+        form.is_dialled = form.is_dialled || said.is_dialled;
         if (said.is_year && k + 1 == numbers.size()) end += 1;
     }
     if (unit != nullptr) end = unit_end;
+    // A unit per another (7.0mmol/L 七点零毫摩尔每升, 35μg/m³ 三十五微克每立方米, 80mg/100ml 八十毫克每
+    // 一百毫升): 每 and the second unit, with its number where it has one (km/h and m/s are units of
+    // their own above).
+    if (unit != nullptr && unit->written != "%" && value_at(text, end) == '/') {
+        auto k = end + 1;
+        std::string divisor_words;
+        if (is_digit_at(text, k)) {
+            const auto divisor = parse_number(text, k);
+            divisor_words = say_number(divisor, {}).words;
+            k = divisor.end;
+        }
+        std::size_t per_end = k;
+        const Unit* per = value_at(text, k) == ' ' ? nullptr : unit_at(text, k, per_end);
+        if (per != nullptr && per->written != "%") {
+            unit_words += "每" + divisor_words + per->words;
+            end = per_end;
+        }
+    }
     if (is_per_mille) end += 1;
     form.words += magnitude_words + unit_words;
     if (currency != nullptr) {
@@ -1057,6 +1185,21 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         }
         form.words += currency->after;
     }
+    form.end = end;
+    return form;
+}
+
+std::optional<SpokenForm> read_per_unit(const std::vector<CodePoint>& text, std::size_t i) {
+    if (value_at(text, i) != '/' || i < 3 || value_at(text, i - 1) != 'B' || !is_one_of(value_at(text, i - 2), U"KMGTP"))
+        return std::nullopt;
+    auto number_end = i - 2;
+    if (value_at(text, number_end - 1) == ' ') --number_end;
+    if (!is_digit_at(text, number_end - 1) || value_at(text, i + 1) == ' ') return std::nullopt;
+    std::size_t end = i + 1;
+    const Unit* per = unit_at(text, i + 1, end);
+    if (per == nullptr || per->written == "%") return std::nullopt;
+    SpokenForm form;
+    form.words = std::string("每") + per->words;
     form.end = end;
     return form;
 }
@@ -1133,8 +1276,9 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
         }
         case '>': return between_terms ? "大于" : "";  // ASCII < > around words are brackets: <标题>
         case '<': return between_terms ? "小于" : "";
-        case 0x2265: return between_terms ? "大于等于" : "";  // ≥
-        case 0x2264: return between_terms ? "小于等于" : "";  // ≤
+        // ≥ and ≤ are never brackets: after a character too, before a term (含量≥80mg 含量大于等于八十毫克).
+        case 0x2265: return (is_formula_term(left) || is_han_left) && is_formula_term(right) ? "大于等于" : "";  // ≥
+        case 0x2264: return (is_formula_term(left) || is_han_left) && is_formula_term(right) ? "小于等于" : "";  // ≤
         // + between two digits (1+1), two letters (A+B) or in a formula (x+1=3); - only in a formula,
         // since a hyphen joins words and numbers elsewhere (Wi-Fi, B-52).
         case '+': {

@@ -18,6 +18,7 @@ struct SpokenForm {
     std::size_t end = 0;   // index past the written form in the code points
     std::string words;     // what is said, in Simplified characters: 二零二六年
     std::string warning;   // what the reader should know ("read digit by digit"), or ""
+    bool is_dialled = false;  // a phone's or a service's number (its 1 is 幺 on the mainland, 一 in Taiwan)
 };
 
 // The number form that starts at text[start] (a digit, full-width or not, or a sign or currency
@@ -26,6 +27,11 @@ struct SpokenForm {
 // starts there. Characters before it are looked at, not taken: 第 (an ordinal keeps 二), a phone
 // word earlier in the sentence (电话, 號碼: digits are said one by one, 1 as 幺).
 std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, std::size_t start);
+
+// The slash at text[i] between a byte unit after a number and a unit symbol (7,000MB/s 七千 MB 每秒,
+// 1GB/s): 每 and the unit's words, as the Latin reader says the byte unit's letters before it;
+// nullopt elsewhere.
+std::optional<SpokenForm> read_per_unit(const std::vector<CodePoint>& text, std::size_t i);
 
 // True where the slash at text[i] joins two units after a number and is said 每 (25元/公斤
 // 二十五元每公斤, 3次/周): a number, one to three Chinese characters, the slash, a Chinese
