@@ -222,6 +222,15 @@ bool looks_like_pinyin(const std::vector<CodePoint>& token) {
     return has_tone || !has_inner_capital;
 }
 
+// Small letters that start as only pinyin starts a word, x or q before i, or zh (xinhua, qingdao,
+// zhejiang): a Chinese name or place, read as pinyin, even where the English dictionary lists it
+// among its names (xinhua, which it says jin wa). English words that start with x or q do so
+// before other letters (xerox, quick).
+bool starts_as_pinyin_only(std::string_view letters) {
+    return letters.rfind("xi", 0) == 0 || letters.rfind("xu", 0) == 0 || letters.rfind("qi", 0) == 0 ||
+           letters.rfind("zh", 0) == 0;
+}
+
 bool has_tone_digit(const std::vector<CodePoint>& token) {
     return std::any_of(token.begin(), token.end(), [](const CodePoint& c) { return is_digit(c.value); });
 }
@@ -334,7 +343,8 @@ private:
         }
         const bool is_english_among_han =
             has_han_ && (detail::is_all_capitals(letters) ||
-                         (!has_tone_digit(token) && detail::english_word_syllables(latin_spelling(text, start, end))));
+                         (!has_tone_digit(token) && !starts_as_pinyin_only(letters) &&
+                          detail::english_word_syllables(latin_spelling(text, start, end))));
         if (options_.read_pinyin && looks_like_pinyin(token) && !is_english_among_han) syllables = split_pinyin(token);
         if (!syllables) return read_latin(text, start);
         for (const auto& c : token) append_text(c.text);
@@ -425,6 +435,8 @@ private:
                 append(read_words(detail::digit_words(part.text, detail::is_named_service_number(part.text))));
             } else if (detail::is_all_capitals(part.text)) {
                 append(latin_word_syllables(part.text, at));
+            } else if (auto pinyin = starts_as_pinyin_only(part.text) ? address_pinyin(part.text) : std::nullopt) {
+                append(std::move(*pinyin));
             } else if (auto found = detail::english_word_syllables(part.text)) {
                 append(said_syllables(*found));
             } else if (constexpr std::size_t kLongestSpelled = 3;

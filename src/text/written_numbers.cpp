@@ -84,7 +84,7 @@ bool takes_liang(char32_t c) {
                         U"周週遍斤米千万萬亿億百项項篇首页頁座所间間节節门門架把支枝根片头頭匹颗顆粒趟套声聲句"
                         U"样樣章口股群批排队隊段堆吨噸升克里码碼毛角点點成分秒小公届屆期美港欧歐英"
                         U"步下回圈眼拳脚腳刀枪槍盒包袋箱桶罐盘盤幅集册冊封轮輪局男女"
-                        U"勺匙滴串束朵棵株盆锅鍋桌副顶頂艘");
+                        U"勺匙滴串束朵棵株盆锅鍋桌副顶頂艘连連");
 }
 
 // Words before which a number names a room, a bus route or a house, said digit by digit when it
@@ -463,6 +463,12 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
             said.is_dialled = true;
             return said;
         }
+        // An hour written with two digits before 时 or 点 is the hour (06时 六时, 00时 零时), as the
+        // weather's and the timetables' 24-hour clock is read; elsewhere a leading zero is read out.
+        if (whole.size() == 2 && whole.front() == '0' && is_one_of(context.next, U"时時点點")) {
+            said.words = digit_words(whole.substr(1));
+            return said;
+        }
         if (whole.size() >= 2 && whole.front() == '0') {
             said.words = digit_words(whole);
             return said;
@@ -694,10 +700,15 @@ bool follows_aircraft_maker(const std::vector<CodePoint>& text, std::size_t star
 //   腾讯控股(00700.HK)): four to six digits, a closing bracket or the exchange's suffix after them;
 // - the Nikkei's number (日经225 日经二二五, as Japanese and Chinese market news say it; the other
 //   indices count their shares: 沪深300 三百, 标普500 五百);
-// - a programme's number before its word (985高校, 211工程, 863计划), also in a list (985、211高校).
+// - a programme's number before its word (985高校, 211工程, 863计划), also in a list (985、211高校);
+// - a video's resolution, lines and a p (1080P 一零八零P, 720p).
 bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
     if (number.has_point || number.has_separators) return false;
     const auto& digits = number.whole;
+    if ((digits.size() == 3 || digits.size() == 4) && is_one_of(value_at(text, number.end), U"pP") &&
+        !is_ascii_letter(value_at(text, number.end + 1))) {
+        return true;
+    }
     constexpr std::size_t kShortestCode = 4;
     constexpr std::size_t kLongestCode = 6;
     if (start > 0 && is_one_of(text[start - 1].value, U"(\uFF08") && digits.size() >= kShortestCode &&
@@ -918,7 +929,13 @@ std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text,
     const bool is_fraction = after == "决赛" || after == "決賽" || value_at(text, i) == U'的' ||
                              (i < text.size() && takes_liang(text[i].value));
     if (!in_time && is_fraction) return std::nullopt;
-    const auto before = text_before(text, start, true);
+    auto before = text_before(text, start, true);
+    // A word of time before it names what the day is (展会时间为12/3-12/5, 日期：9/18).
+    auto named = before;
+    while (!named.empty() && (ends_with(named, "为") || ends_with(named, "為") || ends_with(named, "是") ||
+                              ends_with(named, "：") || ends_with(named, ":") || ends_with(named, " ")))
+        named.erase(named.size() - (named.back() == ':' || named.back() == ' ' ? 1 : std::string_view("为").size()));
+    for (const std::string_view word : {"时间", "時間", "日期"}) in_time = in_time || ends_with(named, word);
     for (const std::string_view word : {"于", "於"}) {
         if (!ends_with(before, word)) continue;
         const auto rest = before.substr(0, before.size() - word.size());
@@ -1282,9 +1299,10 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
         // + between two digits (1+1), two letters (A+B) or in a formula (x+1=3); - only in a formula,
         // since a hyphen joins words and numbers elsewhere (Wi-Fi, B-52).
         case '+': {
-            const bool letters = is_ascii_letter(left) && is_ascii_letter(right);
-            const bool digits = left >= '0' && left <= '9' && right >= '0' && right <= '9';
-            return between_terms && (letters || digits || clause_has_relation(text, i)) ? "加" : "";
+            // A letter and a digit too: a sum of capacities (12GB+256GB 十二GB加二百五十六GB), 5G+AI.
+            const auto is_alphanumeric = [](char32_t c) { return is_ascii_letter(c) || (c >= '0' && c <= '9'); };
+            const bool alphanumeric = is_alphanumeric(left) && is_alphanumeric(right);
+            return between_terms && (alphanumeric || clause_has_relation(text, i)) ? "加" : "";
         }
         case '-': case 0x2212: return between_terms && clause_has_relation(text, i) ? "减" : "";
         case 0xD7: return between_terms ? "乘" : "";     // ×
