@@ -711,10 +711,11 @@ bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, 
     }
     constexpr std::size_t kShortestCode = 4;
     constexpr std::size_t kLongestCode = 6;
+    // A magnitude or a measure word after the bracket makes it a count's ((2000)万).
+    const bool closes = is_one_of(value_at(text, number.end), U")\uFF09") && !takes_liang(value_at(text, number.end + 1));
     if (start > 0 && is_one_of(text[start - 1].value, U"(\uFF08") && digits.size() >= kShortestCode &&
         digits.size() <= kLongestCode &&
-        (is_one_of(value_at(text, number.end), U")\uFF09") ||
-         (value_at(text, number.end) == '.' && is_ascii_capital(value_at(text, number.end + 1))))) {
+        (closes || (value_at(text, number.end) == '.' && is_ascii_capital(value_at(text, number.end + 1))))) {
         return true;
     }
     const auto before = text_between(text, start >= 2 ? start - 2 : 0, start);

@@ -133,6 +133,10 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("他得了感冒") == "ta1 de2 le5 gan3 mao4");
         CHECK(pinyin("得了，别说了。") == "de2 le5 bie2 shuo1 le5");
         CHECK(pinyin("这还得了！") == "zhe4 hai2 de2 liao3");
+        // 又得 也得 都得 are words of "must" (dei) in the phrase list; before 了 they are not (session 13).
+        CHECK(pinyin("他又得了第一名。") == "ta1 you4 de2 le5 di4 yi1 ming2");
+        CHECK(pinyin("他也得了奖。") == "ta1 ye3 de2 le5 jiang3");
+        CHECK(pinyin("我们都得了感冒。") == "wo3 men5 dou1 de2 le5 gan3 mao4");
         CHECK(pinyin("我受得了") == "wo3 shou4 de5 liao3");
         CHECK(pinyin("这个问题还得再讨论") == "zhe4 ge4 wen4 ti2 hai2 dei3 zai4 tao3 lun4");
     }

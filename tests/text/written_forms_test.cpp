@@ -569,6 +569,87 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("news units by their Chinese names, and a unit per another with 每") {
+        check_cases({
+            {"采用3nm工艺", "采用三纳米工艺"},
+            {"主频3.2GHz", "主频三点二吉赫兹"},
+            {"降噪50dB", "降噪五十分贝"},
+            {"装机1.2GW", "装机一点二吉瓦"},
+            {"气压950hPa", "气压九百五十百帕"},
+            {"提速至500Mbps", "提速至五百兆比特每秒"},
+            {"速率5.8Gbps", "速率五点八吉比特每秒"},
+            {"血糖7.0mmol/L", "血糖七点零毫摩尔每升"},
+            {"浓度35μg/m³", "浓度三十五微克每立方米"},
+            {"含量80mg/100ml", "含量八十毫克每一百毫升"},
+            {"读取速度7,000MB/s", "读取速度七千 ai mu bi每秒"},
+            {"12GB+256GB", "十二 ji bi加二百五十六 ji bi"},
+            {"限速120km/h", "限速一百二十公里每小时"},
+        });
+    }
+
+    TEST_CASE("a stock's code, the Nikkei's number, a programme's and a resolution are said digit by digit") {
+        check_cases({
+            {"宁德时代（300750）", "宁德时代三零零七五零"},
+            {"台積電（2330）", "台積電二三三零"},
+            {"人口（2000）万", "人口两千万"},
+            {"日经225指数", "日经二二五指数"},
+            {"沪深300指数", "沪深三百指数"},
+            {"985、211高校", "九八五二一一高校"},
+            {"211工程", "二一一工程"},
+            {"有985人", "有九百八十五人"},
+            {"支持1080P", "支持一零八零 pi"},
+            {"720p视频", "七二零 pi视频"},
+        });
+    }
+
+    TEST_CASE("a version after a software's name, a tier's round thousand, a designation's hyphen") {
+        check_cases({
+            {"要求Python 3.12", "要求 pai san三点十二"},
+            {"iOS 17.12", "ai ou ai si十七点十二"},
+            {"小数3.12", "小数三点一二"},
+            {"WTA 1000赛事", "da bu liu ti ei一千赛事"},
+            {"RTX 4090", "a er ti ai ke si四零九零"},
+            {"歼-20", "歼二十"},
+            {"东风-41", "东风四十一"},
+            {"气温-5℃", "气温零下五摄氏度"},
+            {"PCIe 5.0", "pi xi ai yi五点零"},
+        });
+    }
+
+    TEST_CASE("a range of two days, scores drawn, relations after a character, hours with a zero, 连") {
+        check_cases({
+            {"10/1-10/7期间", "十月一日到十月七日期间"},
+            {"于10/1-10/7举行", "于十月一日到十月七日举行"},
+            {"时间为12/3-12/5", "时间为十二月三日到十二月五日"},
+            {"1/3~1/2", "三分之一到二分之一"},
+            {"英超1-1战平", "英超一比一战平"},
+            {"含量≥80", "含量大于等于八十"},
+            {"06时发布", "六时发布"},
+            {"编号06", "编号零六"},
+            {"取得2连胜", "取得两连胜"},
+            {"交管12123", "交管幺二幺二三"},
+            {"股价12100点", "股价一万二千一百点"},
+        });
+    }
+
+    TEST_CASE("a dialled number's 1 is 一 in a Traditional transcript, as Taiwan says it; a train keeps 幺") {
+        check_cases({
+            {"如遇緊急狀況，請撥打119或110。", "如遇緊急狀況請撥打一一九或一一零"},
+            {"消費者可撥打免付費專線0800-211-511洽詢。", "消費者可撥打免付費專線零八零零二一一五一一洽詢"},
+            {"如发现火情，请立即拨打119报警。", "如发现火情请立即拨打幺幺九报警"},
+            {"複興號G1次列車從北京南站出發。", "複興號 ji幺次列車從北京南站出發"},
+        });
+    }
+
+    TEST_CASE("brands and words said their own way, and names that start as only pinyin does") {
+        check_cases({
+            {"Tesla汽车", "te si la汽车"},
+            {"下载App", "下载 ei pi pi"},
+            {"xinhua新闻", "xin hua新闻"},
+            {"来信请发送至news@xinhua.org", "来信请发送至 nu zi艾特 xin hua点 o ge"},
+        });
+    }
+
     TEST_CASE("a tilde and a topic's # are punctuation, and a symbol without a reading is warned of by its own code point") {
         check_cases({
             {"#春节快乐# 祝大家新年好！", "春节快乐祝大家新年好"},
