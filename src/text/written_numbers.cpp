@@ -711,8 +711,10 @@ bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, 
     }
     constexpr std::size_t kShortestCode = 4;
     constexpr std::size_t kLongestCode = 6;
-    // A magnitude or a measure word after the bracket makes it a count's ((2000)万).
-    const bool closes = is_one_of(value_at(text, number.end), U")\uFF09") && !takes_liang(value_at(text, number.end + 1));
+    // A magnitude after the bracket makes it a count's ((2000)万); a word after it may be anything
+    // (贵州茅台（600519）股价: 股 is no measure word there).
+    const bool closes = is_one_of(value_at(text, number.end), U")\uFF09") &&
+                        !is_one_of(value_at(text, number.end + 1), U"万萬亿億千百");
     if (start > 0 && is_one_of(text[start - 1].value, U"(\uFF08") && digits.size() >= kShortestCode &&
         digits.size() <= kLongestCode &&
         (closes || (value_at(text, number.end) == '.' && is_ascii_capital(value_at(text, number.end + 1))))) {

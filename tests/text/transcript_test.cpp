@@ -137,6 +137,10 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("他又得了第一名。") == "ta1 you4 de2 le5 di4 yi1 ming2");
         CHECK(pinyin("他也得了奖。") == "ta1 ye3 de2 le5 jiang3");
         CHECK(pinyin("我们都得了感冒。") == "wo3 men5 dou1 de2 le5 gan3 mao4");
+        // Elsewhere they are 得 "must", dei3 (tools/phrase_additions.tsv), and 得到 stays whole.
+        CHECK(pinyin("明天我也得去。") == "ming2 tian1 wo3 ye3 dei3 qu4");
+        CHECK(pinyin("下周他又得出差。") == "xia4 zhou1 ta1 you4 dei3 chu1 chai1");
+        CHECK(toneless("孩子们又得到了新玩具。") == "hai zi men you de dao le xin wan ju");
         CHECK(pinyin("我受得了") == "wo3 shou4 de5 liao3");
         CHECK(pinyin("这个问题还得再讨论") == "zhe4 ge4 wen4 ti2 hai2 dei3 zai4 tao3 lun4");
     }
