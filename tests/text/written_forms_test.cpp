@@ -633,7 +633,7 @@ TEST_SUITE("written forms") {
         });
     }
 
-    TEST_CASE("a dialled number's 1 is 一 in a Traditional transcript, as Taiwan says it; a train keeps 幺") {
+    TEST_CASE("a dialled number's 1 is 一 in a Traditional transcript, as Taiwan says it, and a train keeps 幺") {
         check_cases({
             {"如遇緊急狀況，請撥打119或110。", "如遇緊急狀況請撥打一一九或一一零"},
             {"消費者可撥打免付費專線0800-211-511洽詢。", "消費者可撥打免付費專線零八零零二一一五一一洽詢"},
