@@ -37,6 +37,8 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     // app is spelled, A P P, as mainland speakers say it (the dictionary's word gave a pu).
     {"tesla", "te4 si1 la1"},
     {"app", "ei1 pi1 pi1"},
+    // OPPO, a brand written in capitals, is said as a word, 欧珀 (not spelled O P P O).
+    {"oppo", "ou1 po1"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

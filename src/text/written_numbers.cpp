@@ -254,6 +254,20 @@ bool counts_years(const std::vector<CodePoint>& text, std::size_t start, const W
     return false;
 }
 
+// A year that names what follows it without 年 (2025财年, 2025赛季, 2026款, 2025届, 2024版, 2023级, 2026春晚,
+// 2030世界杯): digit by digit, as a year is (二零二五财年); a count elsewhere (2000人, 2000多).
+bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNumber& number) {
+    if (number.has_point || number.has_separators || number.whole.size() != 4 ||
+        !(number.whole.rfind("19", 0) == 0 || number.whole.rfind("20", 0) == 0)) {
+        return false;
+    }
+    const std::string after = text_between(text, number.end, number.end + 3);
+    for (const std::string_view word : {"财年", "財年", "赛季", "賽季", "款", "届", "屆", "级", "級", "版", "春晚", "世界杯",
+                                        "奥运", "奧運", "冬奥", "冬奧", "亚运", "亞運", "全运", "全運"})
+        if (after.rfind(word, 0) == 0) return true;
+    return false;
+}
+
 // A bonus to a game's attribute (攻击力+15, 暴击率+5%, 防御+20, 攻击速度+10%): the + is 加, as a
 // game's screen is read. The attribute is a word ending in 力 or 值 (攻击力, 经验值), or one of the
 // stats games show, alone or with 率 after it (暴击率, 命中率).
@@ -420,6 +434,7 @@ struct NumberContext {
     bool is_span_of_years = false;  // four digits before 年 that count years, not name one (距今约5000年)
     bool is_code = false;        // a stock's code, an index's or a programme's number (（600519）, 日经225, 985高校)
     bool is_version = false;     // after a software's name or a v (Python 3.12, v2.15): a version
+    bool names_year = false;     // a year before a word it names (2025财年, 2026款)
 };
 
 struct SaidNumber {
@@ -494,6 +509,10 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
                          (context.is_model && whole.size() >= 3 && !is_round_thousands) ||
                          (context.names_type && whole.size() >= 2) || context.names_day ||
                          ((is_one_digit_over || is_laugh) && !context.has_currency && !context.is_ordinal)))) {
+            said.words = digit_words(whole);
+            return said;
+        }
+        if (context.names_year) {
             said.words = digit_words(whole);
             return said;
         }
@@ -1024,6 +1043,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     context.is_service_call = is_service_call(text, start, number.end);
     context.is_code = sign_words.empty() && currency == nullptr && names_by_its_digits(text, i, number);
     context.is_version = sign_words.empty() && currency == nullptr && follows_software_name(text, i);
+    context.names_year =
+        sign_words.empty() && currency == nullptr && !context.is_ordinal && names_year_before_word(text, number);
     SpokenForm form;
     // Two numbers said each alone with a word between: a score (3:1, and 2-1 where the clause
     // speaks of a match: 2-1领先), a product (7×24 七乘二十四).
@@ -1308,6 +1329,12 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
             return between_terms && (alphanumeric || clause_has_relation(text, i)) ? "加" : "";
         }
         case '-': case 0x2212: return between_terms && clause_has_relation(text, i) ? "减" : "";
+        // A * before ST marks a share at risk of delisting (*ST康美), said 星 as market news says it.
+        case '*': {
+            const bool before_st = value_at(text, after) == 'S' && value_at(text, after + 1) == 'T' &&
+                                   !is_ascii_letter(value_at(text, after + 2));
+            return before_st ? "星" : "";
+        }
         case 0xD7: return between_terms ? "乘" : "";     // ×
         case 0xF7: return between_terms ? "除以" : "";   // ÷
         case 0x221A: return is_formula_term(right) || right == '(' ? "根号" : "";  // √2, √(x+1)

@@ -642,8 +642,22 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("a year before a word it names is said digit by digit, without 年") {
+        check_cases({
+            {"苹果2025财年营收创新高", "苹果二零二五财年营收创新高"},
+            {"2025赛季中超联赛", "二零二五赛季中超联赛"},
+            {"2025届毕业生", "二零二五届毕业生"},
+            {"教材为2024版", "教材为二零二四版"},
+            {"共2000人", "共两千人"},
+            {"约2000多人", "约两千多人"},
+            {"第2025届", "第二千零二十五届"},
+        });
+    }
+
     TEST_CASE("brands and words said their own way, and names that start as only pinyin does") {
         check_cases({
+            {"*ST康美今日复牌", "星 ai si ti康美今日复牌"},
+            {"OPPO手机", "ou po手机"},
             {"Tesla汽车", "te si la汽车"},
             {"下载App", "下载 ei pi pi"},
             {"xinhua新闻", "xin hua新闻"},
