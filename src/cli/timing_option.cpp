@@ -1,5 +1,6 @@
 #include "timing_option.hpp"
 
+#include "text/unread_transcript.hpp"
 
 namespace talkface_cli {
 
@@ -26,14 +27,7 @@ talkface::Timeline load_transcript_to_time(const std::string& path) {
     if (!transcript.syllables.empty()) return transcript;
     if (transcript.sentences.empty() && transcript.warnings.empty())
         throw talkface::InvalidArgument(path, "no text to align: the transcript holds no sentence");
-    std::string message = "no syllables to align: " + std::to_string(transcript.sentences.size()) +
-                          " sentences, none with a Mandarin reading";
-    if (!transcript.warnings.empty()) {
-        message += "; " + transcript.warnings.front();
-        if (transcript.warnings.size() > 1)
-            message += " (and " + std::to_string(transcript.warnings.size() - 1) + " more warnings)";
-    }
-    throw talkface::InvalidArgument(path, message);
+    throw talkface::InvalidArgument(path, "no syllables to align: " + talkface::detail::describe_unread_transcript(transcript));
 }
 
 talkface::Timeline timed_speech(const std::string& audio_path, const talkface::Timeline& transcript,

@@ -24,6 +24,7 @@
 #include "speech/syllable_placement.hpp"
 #include "speech/text_fit.hpp"
 #include "talkface/errors.hpp"
+#include "text/unread_transcript.hpp"
 
 namespace talkface {
 inline namespace v0 {
@@ -73,17 +74,8 @@ void report_pass(ProgressReporter& progress, int pass, std::size_t w, std::size_
 }
 
 void validate_transcript(const Timeline& transcript) {
-    if (transcript.syllables.empty()) {
-        // The reader's warnings name the file, line and character it skipped: the user's way to the cause.
-        std::string skipped;
-        if (!transcript.warnings.empty()) {
-            skipped = "; " + transcript.warnings.front();
-            if (transcript.warnings.size() > 1)
-                skipped += " (and " + std::to_string(transcript.warnings.size() - 1) + " more warnings)";
-        }
-        throw InvalidArgument("transcript", "no syllables to align (" + std::to_string(transcript.sentences.size()) +
-                                                " sentences, none with a Mandarin reading" + skipped + ")");
-    }
+    if (transcript.syllables.empty())
+        throw InvalidArgument("transcript", "no syllables to align (" + detail::describe_unread_transcript(transcript) + ")");
     std::size_t previous = 0;
     for (std::size_t i = 0; i < transcript.syllables.size(); ++i) {
         const std::size_t sentence = transcript.syllables[i].sentence;
