@@ -4,13 +4,16 @@
 #include <cstring>
 #include <new>
 #include <string>
+#include <type_traits>
 
+#include <dlfcn.h>
 #include <zlib.h>
 
 extern "C" {
 #include <libavfilter/avfilter.h>
 #include <libavfilter/buffersink.h>
 #include <libavfilter/buffersrc.h>
+#include <libavutil/macros.h>
 #include <libavutil/pixfmt.h>
 }
 
@@ -36,23 +39,84 @@ constexpr const char* kPaletteUse = "dither=none:diff_mode=rectangle:alpha_thres
 // least 57.2). A chat's GIF of a few seconds is made from all its frames, as before.
 constexpr std::size_t kSampleBytes = 32u << 20;
 
+// libavfilter is opened when the first GIF is made, not linked: with what it links in turn
+// (libplacebo, Vulkan, libepoxy, flite, pocketsphinx, rubberband, LAPACK...: 31 shared libraries
+// that nothing else in talkface needs) it cost every program that loads libtalkface about 80 M
+// instructions of dynamic linking at start, a third of what `talkface syllables` spent
+// (bench/README.md, "Session 13"), and only a GIF's palette uses it. The name carries the major
+// version the headers describe, so the calls below have the types they were compiled against.
+constexpr const char* kAvFilterLibrary = "libavfilter.so." AV_STRINGIFY(LIBAVFILTER_VERSION_MAJOR);
+
+}  // namespace
+
+// The libavfilter calls GifFrames makes, looked up once per process; the library stays loaded.
+struct AvFilterCalls {
+    decltype(&avfilter_graph_alloc) graph_alloc = nullptr;
+    decltype(&avfilter_graph_free) graph_free = nullptr;
+    decltype(&avfilter_get_by_name) get_by_name = nullptr;
+    decltype(&avfilter_graph_create_filter) graph_create_filter = nullptr;
+    decltype(&avfilter_link) link = nullptr;
+    decltype(&avfilter_graph_config) graph_config = nullptr;
+    decltype(&av_buffersrc_add_frame_flags) buffersrc_add_frame_flags = nullptr;
+    decltype(&av_buffersink_get_frame) buffersink_get_frame = nullptr;
+    std::string failure;  // why the library or a call could not be found; empty when all were
+};
+
+namespace {
+
+AvFilterCalls load_avfilter() {
+    AvFilterCalls calls;
+    void* library = dlopen(kAvFilterLibrary, RTLD_NOW | RTLD_LOCAL);
+    if (library == nullptr) {
+        const char* reason = dlerror();
+        calls.failure = reason != nullptr ? reason : std::string(kAvFilterLibrary) + " not found";
+        return calls;
+    }
+    const auto find = [&](auto& call, const char* name) {
+        call = reinterpret_cast<std::remove_reference_t<decltype(call)>>(dlsym(library, name));
+        if (call == nullptr && calls.failure.empty()) calls.failure = std::string(kAvFilterLibrary) + " has no " + name;
+    };
+    find(calls.graph_alloc, "avfilter_graph_alloc");
+    find(calls.graph_free, "avfilter_graph_free");
+    find(calls.get_by_name, "avfilter_get_by_name");
+    find(calls.graph_create_filter, "avfilter_graph_create_filter");
+    find(calls.link, "avfilter_link");
+    find(calls.graph_config, "avfilter_graph_config");
+    find(calls.buffersrc_add_frame_flags, "av_buffersrc_add_frame_flags");
+    find(calls.buffersink_get_frame, "av_buffersink_get_frame");
+    return calls;
+}
+
+// libavfilter's calls. \throws talkface::InvalidArgument naming `parameter` (the output file) if
+// they cannot be loaded.
+const AvFilterCalls& avfilter_calls(const std::string& parameter) {
+    static const AvFilterCalls calls = load_avfilter();  // thread-safe, once
+    if (!calls.failure.empty())
+        throw InvalidArgument(parameter, "an animated GIF (.gif) needs FFmpeg's " + std::string(kAvFilterLibrary) +
+                                             " (its palettegen and paletteuse filters), which could not be loaded: " +
+                                             calls.failure + "; install it (Debian: libavfilter" +
+                                             AV_STRINGIFY(LIBAVFILTER_VERSION_MAJOR) + ") or choose another format");
+    return calls;
+}
+
 }  // namespace
 
 struct GifFrames::Graph {
-    AVFilterGraph* graph = avfilter_graph_alloc();
+    const AvFilterCalls& avfilter;
+    AVFilterGraph* graph;
     std::vector<AVFilterContext*> sources;
     AVFilterContext* sink = nullptr;
 
-    Graph() {
+    explicit Graph(const AvFilterCalls& calls) : avfilter(calls), graph(calls.graph_alloc()) {
         if (graph == nullptr) throw std::bad_alloc();
     }
-    ~Graph() { avfilter_graph_free(&graph); }
+    ~Graph() { avfilter.graph_free(&graph); }
     Graph(const Graph&) = delete;
     Graph& operator=(const Graph&) = delete;
 
     AVFilterContext* add(const char* filter_name, const std::string& arguments) {
         AVFilterContext* context = nullptr;
-        check_ffmpeg(avfilter_graph_create_filter(&context, avfilter_get_by_name(filter_name), filter_name,
+        check_ffmpeg(avfilter.graph_create_filter(&context, avfilter.get_by_name(filter_name), filter_name,
                                                   arguments.c_str(), nullptr, graph),
                      filter_name);
         return context;
@@ -65,17 +129,17 @@ struct GifFrames::Graph {
         return source;
     }
     void link(AVFilterContext* from, AVFilterContext* to, unsigned to_pad = 0) {
-        check_ffmpeg(avfilter_link(from, 0, to, to_pad), "a filter link");
+        check_ffmpeg(avfilter.link(from, 0, to, to_pad), "a filter link");
     }
-    void configure() { check_ffmpeg(avfilter_graph_config(graph, nullptr), "the GIF palette's filters"); }
+    void configure() { check_ffmpeg(avfilter.graph_config(graph, nullptr), "the GIF palette's filters"); }
 
     void push(std::size_t source, AVFrame* frame) {
-        check_ffmpeg(av_buffersrc_add_frame_flags(sources[source], frame, AV_BUFFERSRC_FLAG_PUSH), "a GIF frame");
+        check_ffmpeg(avfilter.buffersrc_add_frame_flags(sources[source], frame, AV_BUFFERSRC_FLAG_PUSH), "a GIF frame");
     }
     // The frames the sink has ready, to `each`; false once it has given its last.
     bool drain(AVFrame* frame, const std::function<void(AVFrame*)>& each) {
         for (;;) {
-            const int got = av_buffersink_get_frame(sink, frame);
+            const int got = avfilter.buffersink_get_frame(sink, frame);
             if (got == AVERROR(EAGAIN)) return true;
             if (got == AVERROR_EOF) return false;
             check_ffmpeg(got, "a GIF frame");
@@ -85,8 +149,9 @@ struct GifFrames::Graph {
     }
 };
 
-GifFrames::GifFrames(int width, int height, bool transparent)
-    : width_(width), height_(height), transparent_(transparent), palette_graph_(std::make_unique<Graph>()),
+GifFrames::GifFrames(int width, int height, bool transparent, const std::string& parameter)
+    : width_(width), height_(height), transparent_(transparent), avfilter_(&avfilter_calls(parameter)),
+      palette_graph_(std::make_unique<Graph>(*avfilter_)),
       mapped_(av_frame_alloc()), last_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4, 0) {
     if (!mapped_) throw std::bad_alloc();
     Graph& graph = *palette_graph_;
@@ -148,7 +213,7 @@ void GifFrames::start_mapping(const FrameSink& each) {
     if (palette->width != 16 || palette->height != 16) check_ffmpeg(AVERROR_BUG, "the GIF palette");
     palette->pts = 0;
 
-    mapping_graph_ = std::make_unique<Graph>();
+    mapping_graph_ = std::make_unique<Graph>(*avfilter_);
     Graph& graph = *mapping_graph_;
     AVFilterContext* pictures = graph.add_source(width_, height_, transparent_ ? AV_PIX_FMT_RGBA : AV_PIX_FMT_RGB0);
     AVFilterContext* colours = graph.add_source(16, 16, static_cast<AVPixelFormat>(palette->format));

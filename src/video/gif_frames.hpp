@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 extern "C" {
@@ -28,13 +29,17 @@ struct AVFilterContext;
 
 namespace talkface::detail {
 
+struct AvFilterCalls;  // gif_frames.cpp
+
 class GifFrames {
 public:
     using FrameSink = std::function<void(AVFrame* frame)>;
 
     // `transparent`: pixels with alpha under half become GIF's transparent colour; otherwise alpha
     // is ignored.
-    GifFrames(int width, int height, bool transparent);
+    // \throws talkface::InvalidArgument naming `parameter` (the output file) if libavfilter, opened
+    //         here and not linked (gif_frames.cpp says why), cannot be loaded.
+    GifFrames(int width, int height, bool transparent, const std::string& parameter);
     ~GifFrames();
     GifFrames(const GifFrames&) = delete;
     GifFrames& operator=(const GifFrames&) = delete;
@@ -56,6 +61,7 @@ private:
     int width_;
     int height_;
     bool transparent_;
+    const AvFilterCalls* avfilter_;  // libavfilter's calls (gif_frames.cpp), loaded for the process
     std::unique_ptr<Graph> palette_graph_;  // until the palette is made
     std::unique_ptr<Graph> mapping_graph_;  // from then on
     FramePtr mapped_;

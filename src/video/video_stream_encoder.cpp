@@ -127,7 +127,7 @@ VideoStreamEncoder::VideoStreamEncoder(VideoFormat format, const VideoOptions& o
 
     packet_ = make_packet();
     if (format == VideoFormat::gif) {
-        gif_frames_.emplace(options.width_px, options.height_px, options.transparent);
+        gif_frames_.emplace(options.width_px, options.height_px, options.transparent, parameter);
         return;
     }
     if (is_yuv) {
