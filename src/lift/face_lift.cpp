@@ -6,6 +6,8 @@
 #include <utility>
 
 #include "common/number_format.hpp"
+#include "face/point_ids.hpp"
+#include "lift/lifted_point_index.hpp"
 #include "lift/local_frame.hpp"
 #include "talkface/errors.hpp"
 
@@ -182,3 +184,15 @@ FaceModel place_face(const FaceModel& face, Point2 origin, double d_px) {
 
 }  // namespace v0
 }  // namespace talkface
+
+namespace talkface::detail {
+
+std::optional<std::size_t> lifted_point_index(std::string_view id) {
+    if (id.size() != 1) return point_index(id);
+    const auto& extra_ids = additional_point_ids();
+    for (std::size_t i = 0; i < extra_ids.size(); ++i)
+        if (extra_ids[i][0] == id[0]) return FaceModel::kPointCount + i;
+    return std::nullopt;
+}
+
+}  // namespace talkface::detail

@@ -1,12 +1,16 @@
 // The hair and face layers: thesis Algorithm 2.2 steps 2-14, with Algorithm 2.3's substitutions
 // (contour points past 10 degrees, the nose bridge side) already chosen by project_face().
+#include <array>
 #include <cmath>
+#include <initializer_list>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "lift/lifted_point_index.hpp"
 #include "render/curves.hpp"
 #include "render/layers.hpp"
 #include "render/svg_text.hpp"
@@ -25,12 +29,18 @@ constexpr Rgb kPupilColour{0x11, 0x11, 0x11};
 constexpr Rgb kHighlightColour{0xff, 0xff, 0xff};
 constexpr Rgb kTeethColour{0xfa, 0xf7, 0xf0};
 
-std::vector<Point2> points_of(const ProjectedFace& face, const FacePaints& paints,
-                              const std::vector<std::string>& ids) {
+// The points of `ids` (string views, so that the fixed lists a frame draws build no strings).
+template <typename Ids>
+std::vector<Point2> points_of(const ProjectedFace& face, const FacePaints& paints, const Ids& ids) {
     std::vector<Point2> points;
-    points.reserve(ids.size());
-    for (const std::string& id : ids) points.push_back(paints.point(face, id));
+    points.reserve(std::size(ids));
+    for (const std::string_view id : ids) points.push_back(paints.point(face, id));
     return points;
+}
+
+std::vector<Point2> points_of(const ProjectedFace& face, const FacePaints& paints,
+                              std::initializer_list<std::string_view> ids) {
+    return points_of<std::initializer_list<std::string_view>>(face, paints, ids);
 }
 
 std::vector<Point2> points_of_hair(const ProjectedFace& face, const FacePaints& paints) {
@@ -118,10 +128,10 @@ void draw_nose(const ProjectedFace& face, const FacePaints& paints, Layer& layer
     // into the wing, the wings and the tip as one line arc(9.14, 9.2, 9.15, 9.1, 9.13),
     // and two nostrils, all one path; a look without outlines shades the bridge's side instead.
     const bool is_right = face.nose_bridge == NoseBridgeSide::right;
-    const std::vector<Point2> p =
-        points_of(face, paints,
-                  is_right ? std::vector<std::string>{"9.7", "C", "9.13", "9.1", "9.5", "9.15", "9.14"}
-                           : std::vector<std::string>{"9.6", "C", "9.14", "9.2", "9.4", "9.15", "9.13"});
+    using NoseIds = std::array<std::string_view, 7>;
+    constexpr NoseIds kRightSide{"9.7", "C", "9.13", "9.1", "9.5", "9.15", "9.14"};
+    constexpr NoseIds kLeftSide{"9.6", "C", "9.14", "9.2", "9.4", "9.15", "9.13"};
+    const std::vector<Point2> p = points_of(face, paints, is_right ? kRightSide : kLeftSide);
     // p: the bridge's top, C, the bridge's lower end, wing, nostril's bottom, tip, the other wing's top.
     if (paints.nose_shade.fill.kind != PaintKind::none) {
         Path shade;
@@ -138,8 +148,9 @@ void draw_nose(const ProjectedFace& face, const FacePaints& paints, Layer& layer
     }
     // The nostrils: small loops above the line, between the wing's bottom (9.4 / 9.5), D / E and
     // the tip.
-    for (const auto& ids : {std::vector<std::string>{"9.4", "D", "9.15", "9.2"},
-                            std::vector<std::string>{"9.5", "E", "9.15", "9.1"}}) {
+    constexpr std::array<std::array<std::string_view, 4>, 2> kNostrils{
+        {{"9.4", "D", "9.15", "9.2"}, {"9.5", "E", "9.15", "9.1"}}};
+    for (const auto& ids : kNostrils) {
         const std::vector<Point2> q = points_of(face, paints, ids);
         path.corner_cut_closed({lerp(q[0], q[3], 0.2), lerp(q[1], q[3], 0.15), lerp(q[1], q[2], 0.55)});
     }
@@ -148,8 +159,8 @@ void draw_nose(const ProjectedFace& face, const FacePaints& paints, Layer& layer
 
 void draw_eyebrows(const ProjectedFace& face, const FacePaints& paints, Layer& layer) {
     // Corner-cut arc(4.6, 4.4a, 4.4, 4.2) and arc(4.2, G, F, 4.6): one closed outline per brow.
-    const std::vector<std::vector<std::string>> brows{{"4.6", "4.4a", "4.4", "4.2", "G", "F"},
-                                                      {"4.5", "4.3a", "4.3", "4.1", "H", "I"}};
+    constexpr std::array<std::array<std::string_view, 6>, 2> brows{
+        {{"4.6", "4.4a", "4.4", "4.2", "G", "F"}, {"4.5", "4.3a", "4.3", "4.1", "H", "I"}}};
     constexpr std::string_view names[] = {"eyebrow-left", "eyebrow-right"};
     for (std::size_t i = 0; i < brows.size(); ++i) {
         Path outline;
@@ -160,7 +171,7 @@ void draw_eyebrows(const ProjectedFace& face, const FacePaints& paints, Layer& l
 
 // The names of one eye's parts (static text: the drawing model keeps views of it).
 struct EyeParts {
-    std::vector<std::string> outline;  // corner, top, corner, bottom
+    std::array<std::string_view, 4> outline;  // corner, top, corner, bottom
     const char* eyeball;
     const char* radius_fapu;
     std::string_view clip_id, outline_id, gradient_id;
@@ -397,8 +408,11 @@ Point2 ViewMap::apply(Point2 image_xy) const {
 }
 
 Point2 FacePaints::point(const ProjectedFace& face, std::string_view id) const {
-    const auto found = point_index.find(std::string(id));
-    return view.apply(found == point_index.end() ? face.point(id) : face.points[found->second].xy);
+    // project_face() keeps the lifted order (the 72 model points, then A .. S); a face built
+    // otherwise is searched by id.
+    const std::optional<std::size_t> index = lifted_point_index(id);
+    if (index && *index < face.points.size() && face.points[*index].id == id) return view.apply(face.points[*index].xy);
+    return view.apply(face.point(id));
 }
 
 std::vector<Point2> hair_layer_points(const ProjectedFace& face, const FacePaints& paints) {
@@ -417,7 +431,6 @@ FacePaints make_face_paints(const ProjectedFace& face, const LayerStyle& style) 
     const Paint none;
     FacePaints paints;
     paints.style = style;
-    for (std::size_t i = 0; i < face.points.size(); ++i) paints.point_index.emplace(face.points[i].id, i);
     if (style.look == FaceLook::flat) {
         // No outlines: what an outline told apart, a shade of the skin tells apart here (the ears
         // and, in the clothes layer, the neck, which meet the face's own skin).

@@ -6,7 +6,6 @@
 #include <optional>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
 #include "render/drawing.hpp"
@@ -53,8 +52,7 @@ private:
     double cos_ = 1.0, sin_ = 0.0;
 };
 
-// What every state of one face is drawn with: the style, the paints and gradients, and where each
-// point id stands in ProjectedFace::points (the same for every state of a face). An animation
+// What every state of one face is drawn with: the style, the paints and gradients. An animation
 // builds it once instead of once a frame, and sets its view per frame.
 struct FacePaints {
     LayerStyle style;  // in the view's units
@@ -64,7 +62,6 @@ struct FacePaints {
     ShapePaint eye_lid;     // the upper lids' band (its stroke width); none: no lid
     ShapePaint teeth, lower_teeth, tongue;   // inside the mouth, over mouth_opening's fill
     RadialGradient iris_gradient;            // of both irises
-    std::unordered_map<std::string, std::size_t> point_index;
     // A point of `face` by id, in the view. \throws talkface::InvalidArgument for an unknown id.
     Point2 point(const ProjectedFace& face, std::string_view id) const;
 };
