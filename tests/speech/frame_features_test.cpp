@@ -5,6 +5,7 @@
 
 #include "audio/audio_source.hpp"
 #include "speech/frame_features.hpp"
+#include "speech/xorshift.hpp"
 #include "talkface/speech_aligner.hpp"
 
 using namespace talkface;
@@ -55,5 +56,31 @@ TEST_SUITE("frame features") {
     TEST_CASE("the dither repeats: the same audio gives the same features") {
         const auto samples = tone_silence_tone();
         CHECK(features_of(samples).values == features_of(samples).values);
+    }
+
+    TEST_CASE("xorshift64 jumped 800 steps lands where 800 steps do, from any state") {
+        const XorshiftJump jump(800);
+        std::uint64_t start = 0x9E3779B97F4A7C15ull;
+        for (int trial = 0; trial < 20; ++trial) {
+            CAPTURE(trial);
+            std::uint64_t stepped = start;
+            for (int n = 0; n < 800; ++n) stepped = xorshift64(stepped);
+            CHECK(jump.apply(start) == stepped);
+            start = xorshift64(stepped ^ 0x5851F42D4C957F2Dull);
+        }
+    }
+
+    TEST_CASE("two xorshift64 states in the lanes of a vector step as each does alone") {
+        typedef std::uint64_t Lanes __attribute__((vector_size(16)));
+        std::uint64_t a = 1, b = 0xFFFFFFFFFFFFFFFFull;
+        Lanes lanes = {a, b};
+        for (int n = 0; n < 1000; ++n) {
+            a = xorshift64(a);
+            b = xorshift64(b);
+            lanes = xorshift64(lanes);
+            CAPTURE(n);
+            REQUIRE(lanes[0] == a);
+            REQUIRE(lanes[1] == b);
+        }
     }
 }
