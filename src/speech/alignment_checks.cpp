@@ -15,7 +15,12 @@ namespace talkface::detail {
 namespace {
 
 // Read speech runs at 3-8 syllables per second; a sentence below 1.4 or above 14 per second of
-// speech (kFastestFramesPerSyllable, sentence_cutter.hpp) is not the text it was given. Against the
+// speech (kFastestFramesPerSyllable, sentence_cutter.hpp) is not the text it was given, except that
+// its last syllable, drawn out before the pause, may last as long as any syllable
+// (kLongestSyllableFrames): a line of one syllable said alone takes up to 0.77 s of a person's
+// speech (bench/short_lines_bench.py, speaker 3 made 2-4 semitones lower, 誰？ and 走！; 1.01 s in
+// a room), more than 0.7 s. The bound is 1.2 s for one syllable, 0.95 s a syllable for two, 0.8 s
+// for five, and nearly 0.7 s for a long sentence. Against the
 // recording's own median a sentence may differ by a factor of 2 (emphasis, lists, a hurried aside)
 // but not more, unless it is slower and its voiced peaks say it holds no more syllables than its
 // text (count_nuclei).
@@ -241,7 +246,9 @@ void check_sentence_lengths(const std::vector<FrameSpan>& spans, const FeatureTr
                                   format_fixed(rates[k] * static_cast<double>(syllables[k]) * kFrameStepS, 2) +
                                   " s of speech (" + format_fixed(seconds_per_syllable, 2) + " s each";
         const std::string advice = "; is a sentence missing from the transcript or from the audio, or is its text wrong?";
-        if ((rates[k] < kFastestFramesPerSyllable && !is_one_syllable_alone) || rates[k] > kSlowestFramesPerSyllable) {
+        const double slowest = (static_cast<double>(syllables[k] - 1) * kSlowestFramesPerSyllable +
+                                static_cast<double>(kLongestSyllableFrames)) / static_cast<double>(syllables[k]);
+        if ((rates[k] < kFastestFramesPerSyllable && !is_one_syllable_alone) || rates[k] > slowest) {
             throw AlignmentError(describe_sentence(k, spans[k], transcript) + ": " + heard + ", outside what people say)" + advice);
         }
         if (typical > 0.0 && (rates[k] > kMaxRateRatio * typical || rates[k] < typical / kMaxRateRatio)) {
