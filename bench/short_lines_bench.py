@@ -186,6 +186,10 @@ KINDS = {"espeak": ("espeak", None), "person": ("person", None), "voice": ("voic
          "person-phone": ("person", "phone"), "espeak-phone": ("espeak", "phone")}
 
 
+# The spoken recordings this run has made.
+MADE = set()
+
+
 def record(kind, pinyin, stem, seed):
     """The bare and the padded recording of a line of `kind`, as paths. `seed` names the line: its
     voice, noise and SNR are drawn from streams seeded by it and the kind, so a line sounds the same
@@ -193,13 +197,16 @@ def record(kind, pinyin, stem, seed):
     voice, condition = KINDS[kind]
     speaker = "person" if voice == "voice" else voice
     source = f"{stem}-{speaker}.wav"
-    if not os.path.exists(source):
+    # Made once a run: a file left in OUT_DIR by an earlier run may hold another line.
+    if source not in MADE:
         VOICES[speaker](pinyin, source)
+        MADE.add(source)
     spoken = source
     if voice == "voice":
         spoken = f"{stem}-voice.wav"
-        if not os.path.exists(spoken):
+        if spoken not in MADE:
             moved_voice(source, spoken, random.Random(f"{seed}:voice"))
+            MADE.add(spoken)
     bare, padded = f"{stem}-{kind}.wav", f"{stem}-{kind}-padded.wav"
     if spoken != bare:
         run("sox", "-R", spoken, bare)
