@@ -717,6 +717,7 @@ bool follows_aircraft_maker(const std::vector<CodePoint>& text, std::size_t star
 // measure word or unit makes it count):
 // - a stock's code alone in brackets after the company's name (贵州茅台（600519）, 台積電（2330）,
 //   腾讯控股(00700.HK)): four to six digits, a closing bracket or the exchange's suffix after them;
+//   so is a year in a document's number (国发〔2024〕10号 国发二零二四十号);
 // - the Nikkei's number (日经225 日经二二五, as Japanese and Chinese market news say it; the other
 //   indices count their shares: 沪深300 三百, 标普500 五百);
 // - a programme's number before its word (985高校, 211工程, 863计划), also in a list (985、211高校);
@@ -732,9 +733,9 @@ bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, 
     constexpr std::size_t kLongestCode = 6;
     // A magnitude after the bracket makes it a count's ((2000)万); a word after it may be anything
     // (贵州茅台（600519）股价: 股 is no measure word there).
-    const bool closes = is_one_of(value_at(text, number.end), U")\uFF09") &&
+    const bool closes = is_one_of(value_at(text, number.end), U")\uFF09\u3015]") &&
                         !is_one_of(value_at(text, number.end + 1), U"万萬亿億千百");
-    if (start > 0 && is_one_of(text[start - 1].value, U"(\uFF08") && digits.size() >= kShortestCode &&
+    if (start > 0 && is_one_of(value_at(text, start - 1), U"(\u3014[") && digits.size() >= kShortestCode &&
         digits.size() <= kLongestCode &&
         (closes || (value_at(text, number.end) == '.' && is_ascii_capital(value_at(text, number.end + 1))))) {
         return true;
