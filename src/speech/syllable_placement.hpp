@@ -23,6 +23,18 @@ void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>
                      const std::vector<std::vector<StateSegment>>& other_paths, const EmissionScores& scores,
                      const FeatureTrack& track, Timeline& result, std::vector<double>& evidence);
 
+// Where a voiced join starts (a syllable whose initial is m n l r or none, its first state
+// `first` right after the vowel or nasal `before` of the syllable before, no pause between). The
+// path puts the boundary where the two sounds fit alike, the middle of the transition, while the
+// syllable starts (SPEC "Alignment") where the sound begins to turn towards it, when the mouth
+// begins to move. Per frame, the rise is how much better `first_class` fits than `before_class`;
+// it lies near one level (its median) over `before` and near another over `first`. Walking back
+// from the path's boundary, the transition goes on while the rise is above the level before by a
+// quarter of the step between the two; the join starts at the first frame that is not. Where `first_class` fits `first` no better than it fits
+// `before` (two sounds alike), the path's boundary.
+std::size_t voiced_join_start(const StateSegment& before, PhoneClass before_class, const StateSegment& first,
+                              PhoneClass first_class, const EmissionScores& scores);
+
 // The path's syllables and pauses, in frames of the whole recording.
 std::vector<AlignedStretch> stretches_of(const SentenceChain& chain, const std::vector<StateSegment>& path);
 
