@@ -101,7 +101,9 @@ void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>
             Syllable& previous = result.syllables[chain.syllable_indices[local - 1]];
             previous.end_s = std::min(previous.end_s, syllable.start_s);
         }
-        syllable.final_start_s = time_s(final_first.value_or(first));
+        // A syllable with no initial (y- w-, a vowel) starts with its final: the final moves with it.
+        const std::size_t final_frame = final_first.value_or(first);
+        syllable.final_start_s = time_s(final_frame == first ? start : final_frame);
         frames[local] = {first, std::max(end, first + 1)};
     }
     std::vector<double> fits = syllable_fits(chain, path, scores, frames);
