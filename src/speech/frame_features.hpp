@@ -18,6 +18,13 @@ constexpr double kFrameStepS = 1.0 / kFramesPerSecond;  // the double nearest 0.
 // Added to every power before its logarithm is taken, so that digital silence reads -100 dB (in
 // the dB columns) rather than minus infinity.
 constexpr double kFeatureEnergyFloor = 1e-10;
+// A frame whose level (any dB column: the whole band or part of it) is at most this holds no sound,
+// only digital silence: exact zeros read -100 dB, while a frame of zeros but one sample of a single
+// 16-bit step reads -66 dB (the whole band; -69 dB in held_music's 300-5000 Hz) where the window
+// weighs it fully and -88 dB (-90 dB) at the window's ends, which weigh it 0.08. So this tells
+// exact zeros, and float samples far below a 16-bit step, from any recorded sound. The sentence
+// cutter measures levels over the frames above it; held_music judges their changes.
+constexpr float kDigitalSilenceDb = -99.0f;
 
 // When frame `frame` starts, as reported to the caller: divided rather than multiplied by
 // kFrameStepS, since 357 * 0.01 is 3.5700000000000003 and 357 / 100.0 the double nearest 3.57,

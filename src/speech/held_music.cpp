@@ -7,13 +7,6 @@
 
 namespace talkface::detail {
 
-namespace {
-
-// Digital silence reads -100 dB (frame_features' floor): frames that quiet hold no sound to judge.
-constexpr float kSoundDb = -90.0f;
-
-}  // namespace
-
 std::vector<bool> held_music_frames(const FeatureTrack& track, const std::vector<float>& activity_db, float threshold_db) {
     const std::size_t frames = track.frame_count;
     std::vector<bool> held(frames, false);
@@ -32,7 +25,7 @@ std::vector<bool> held_music_frames(const FeatureTrack& track, const std::vector
         const std::size_t end = std::min(frames, t + kHeldMusicHalfWindow + 1);
         share[t] = static_cast<float>((changing[end] - changing[first]) / (band[end] - band[first] + kFeatureEnergyFloor));
         if (activity_db[t] >= threshold_db) speech_db.push_back(activity_db[t]);
-        else if (track.at(t, kChangeBandDb) > kSoundDb) quiet_share.push_back(share[t]);
+        else if (track.at(t, kChangeBandDb) > kDigitalSilenceDb) quiet_share.push_back(share[t]);  // frames of digital silence hold no change to judge
     }
     if (quiet_share.empty() || speech_db.empty() || lower_median(quiet_share) >= kNoiseChangeShare) return held;
     const float speech_median_db = lower_median(speech_db);

@@ -39,9 +39,7 @@ constexpr float kNoiseWanderDb = 4.0f;
 constexpr double kSentenceDurationSigma = 0.35;
 constexpr double kPauseWeight = 1.5;
 constexpr double kNegativeInfinity = -std::numeric_limits<double>::infinity();
-// A frame of exact zeros reads 10 log10 of frame_features' energy floor (1e-10): -100 dB. Below
-// this it is digital silence, not a sound. The floor of what sound there is needs a few frames.
-constexpr float kDigitalSilenceDb = -99.0f;
+// The floor of what sound there is (the frames above kDigitalSilenceDb) needs a few frames.
 constexpr std::size_t kMinSoundFrames = 20;
 
 float column_percentile(const FeatureTrack& track, int column, double fraction) {
