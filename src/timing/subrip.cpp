@@ -3,7 +3,6 @@
 // cues (a number line, "start --> end", text lines), whatever sentences they hold.
 #include <string>
 
-#include "talkface/errors.hpp"
 #include "timing/export_writers.hpp"
 #include "timing/import_readers.hpp"
 #include "timing/subtitle_cues.hpp"
@@ -29,12 +28,7 @@ std::vector<TimedUnit> read_subrip_units(std::string_view text, const std::strin
         std::size_t at = 0;
         if (block[0].text.find("-->") == std::string::npos) ++at;
         TimedUnit unit;
-        if (at >= block.size() || !read_cue_times(block[at].text, ',', unit.start_s, unit.end_s)) {
-            const TextLine& line = block[std::min(at, block.size() - 1)];
-            throw ParseError(source, line.line, 0, "",
-                             "expected a cue's times, HH:MM:SS,mmm --> HH:MM:SS,mmm, found \"" + line.text + "\"");
-        }
-        unit.line = block[at].line;
+        unit.line = read_cue_timing(block, at, ',', source, unit.start_s, unit.end_s);
         for (std::size_t k = at + 1; k < block.size(); ++k) {
             unit.text += (k > at + 1 ? "\n" : "") + without_markup(block[k].text);
         }

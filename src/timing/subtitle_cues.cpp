@@ -1,9 +1,11 @@
 #include "timing/subtitle_cues.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <utility>
 
+#include "talkface/errors.hpp"
 #include "timing/subtitle_time.hpp"
 
 namespace talkface::detail {
@@ -39,6 +41,8 @@ std::vector<std::vector<TextLine>> text_blocks(const std::vector<TextLine>& line
     return blocks;
 }
 
+namespace {
+
 bool read_cue_times(const std::string& line, char separator, double& start_s, double& end_s) {
     const std::size_t arrow = line.find(" --> ");
     if (arrow == std::string::npos) return false;
@@ -49,6 +53,19 @@ bool read_cue_times(const std::string& line, char separator, double& start_s, do
     start_s = *start;
     end_s = *end;
     return true;
+}
+
+}  // namespace
+
+int read_cue_timing(const std::vector<TextLine>& block, std::size_t at, char separator, const std::string& source,
+                    double& start_s, double& end_s) {
+    if (at >= block.size() || !read_cue_times(block[at].text, separator, start_s, end_s)) {
+        const TextLine& line = block[std::min(at, block.size() - 1)];
+        const std::string time = std::string("HH:MM:SS") + separator + "mmm";
+        throw ParseError(source, line.line, 0, "",
+                         "expected a cue's times, " + time + " --> " + time + ", found \"" + line.text + "\"");
+    }
+    return block[at].line;
 }
 
 std::string without_markup(const std::string& text) {

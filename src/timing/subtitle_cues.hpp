@@ -20,9 +20,12 @@ std::vector<TextLine> text_lines(std::string_view text);
 // The blocks of non-blank lines, in order.
 std::vector<std::vector<TextLine>> text_blocks(const std::vector<TextLine>& lines);
 
-// "00:00:01,250 --> 00:00:02,000" (cue settings may follow) into start_s and end_s; false if
-// the line is not a timing line with `separator` before the milliseconds.
-bool read_cue_times(const std::string& line, char separator, double& start_s, double& end_s);
+// The times of the cue whose timing line ("00:00:01,250 --> 00:00:02,000", cue settings may follow)
+// is line `at` of `block`, into start_s and end_s; returns that line's number.
+// \throws talkface::ParseError naming `source`, the line and the form expected (`separator` before
+//         the milliseconds) if the block has no line `at` or it is not a timing line.
+int read_cue_timing(const std::vector<TextLine>& block, std::size_t at, char separator, const std::string& source,
+                    double& start_s, double& end_s);
 
 // A cue's text without its markup: tags (<i>, </b>, <c.yellow>, <v Ann>) and SubRip's {\an8}
 // codes dropped, the entities &amp; &lt; &gt; &nbsp; replaced.

@@ -103,12 +103,7 @@ std::vector<TimedUnit> read_webvtt_units(std::string_view text, const std::strin
         }
         const std::size_t at = head.find("-->") == std::string::npos ? 1 : 0;  // an identifier line first
         TimedUnit unit;
-        if (at >= block.size() || !read_cue_times(block[at].text, '.', unit.start_s, unit.end_s)) {
-            const TextLine& line = block[std::min(at, block.size() - 1)];
-            throw ParseError(source, line.line, 0, "",
-                             "expected a cue's times, HH:MM:SS.mmm --> HH:MM:SS.mmm, found \"" + line.text + "\"");
-        }
-        unit.line = block[at].line;
+        unit.line = read_cue_timing(block, at, '.', source, unit.start_s, unit.end_s);
         read_payload(block, at + 1, unit);
         double previous_s = unit.start_s;
         for (const auto& inner : unit.inner_starts_s) {
