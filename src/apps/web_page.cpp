@@ -13,6 +13,7 @@
 #include "apps/apps.hpp"
 #include "apps/packed_animation.hpp"
 #include "apps/page_fonts.hpp"
+#include "audio/audio_source.hpp"
 #include "common/atomic_file.hpp"
 #include "common/number_format.hpp"
 #include "render/html_text.hpp"
@@ -217,11 +218,21 @@ std::string audio_element(const std::string& audio_path, const WebPageOptions& o
         encoding.low_rate_speech = true;
         source = detail::data_uri("audio/webm", detail::encode_audio_file(audio_path, encoding));
     } else {
+        // Named by the file, as every interface's user knows it, with what to do: the page would
+        // otherwise say only, in the browser, that the speech cannot be played.
+        const std::string as_it_is = options.audio == WebPageAudio::link ? "linked" : "embedded as it is";
         const std::string mime = detail::audio_mime_type(audio_path);
         if (mime.empty()) {
-            throw InvalidArgument("audio_path", "expected a .ogg, .oga, .opus, .wav, .flac, .mp3 or .m4a file to " +
-                                                    std::string(options.audio == WebPageAudio::link ? "link" : "embed") +
-                                                    " as it is, found \"" + audio_path + "\"");
+            throw InvalidArgument(audio_path, "cannot be " + as_it_is +
+                                                  ": browsers play .ogg, .oga, .opus, .wav, .flac, .mp3 and .m4a "
+                                                  "files; embed it compressed (the default), or convert it to one of those");
+        }
+        if (mime == "audio/wav") {
+            if (const std::string codec = detail::wav_codec_browsers_do_not_play(audio_path); !codec.empty())
+                throw InvalidArgument(audio_path, "cannot be " + as_it_is + ": its sound is " + codec +
+                                                      ", which browsers do not play (they play PCM, float, A-law and "
+                                                      "mu-law WAV); embed it compressed (the default), or convert it "
+                                                      "to 16-bit PCM");
         }
         if (options.audio == WebPageAudio::link) {
             if (!std::ifstream(audio_path, std::ios::binary)) throw FileError(audio_path, "cannot be opened");

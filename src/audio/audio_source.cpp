@@ -228,6 +228,26 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
     return std::make_unique<FileSource>(path, file, info, promised);
 }
 
+std::string wav_codec_browsers_do_not_play(const std::string& path) {
+    SF_INFO info{};
+    SNDFILE* file = sf_open(path.c_str(), SFM_READ, &info);
+    if (file == nullptr) return {};
+    sf_close(file);
+    const int type = info.format & SF_FORMAT_TYPEMASK;
+    if (type != SF_FORMAT_WAV && type != SF_FORMAT_WAVEX && type != SF_FORMAT_RF64) return {};
+    switch (info.format & SF_FORMAT_SUBMASK) {
+        case SF_FORMAT_PCM_U8: case SF_FORMAT_PCM_S8: case SF_FORMAT_PCM_16: case SF_FORMAT_PCM_24:
+        case SF_FORMAT_PCM_32: case SF_FORMAT_FLOAT: case SF_FORMAT_ULAW: case SF_FORMAT_ALAW:
+            return {};
+        default: break;
+    }
+    SF_FORMAT_INFO codec{};
+    codec.format = info.format & SF_FORMAT_SUBMASK;
+    if (sf_command(nullptr, SFC_GET_FORMAT_INFO, &codec, sizeof codec) != 0 || codec.name == nullptr)
+        return "codec " + std::to_string(codec.format);
+    return codec.name;
+}
+
 std::unique_ptr<AudioSource> open_audio_view(const AudioView& audio) {
     if (audio.frame_count == 0) throw InvalidArgument("audio.frame_count", "empty audio: no frames");
     if (audio.samples == nullptr) throw InvalidArgument("audio.samples", "null, with " + std::to_string(audio.frame_count) + " frames");

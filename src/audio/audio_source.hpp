@@ -41,6 +41,14 @@ private:
 //         sound track), talkface::InvalidArgument if it has no frames.
 std::unique_ptr<AudioSource> open_audio_file(const std::string& path);
 
+// The name of a WAV file's codec (libsndfile's: "GSM 6.10", "IMA ADPCM", "64 bit float") when it
+// is one browsers do not play, else empty (also for a file libsndfile cannot open: reading it
+// says why). Chromium 156 plays a WAV of 8- to 32-bit PCM, 32-bit float, A-law or mu-law, of any
+// channel count, RF64 too; it refuses GSM 06.10, IMA and Microsoft ADPCM and 64-bit float (each
+// tried as a data: URI in an <audio> element, bench/README.md "Session 13"). Firefox and Safari
+// play less: what Chromium refuses, none plays.
+std::string wav_codec_browsers_do_not_play(const std::string& path);
+
 // \throws talkface::InvalidArgument naming the field of `audio` that is malformed.
 std::unique_ptr<AudioSource> open_audio_view(const AudioView& audio);
 

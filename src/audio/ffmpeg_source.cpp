@@ -11,6 +11,7 @@ extern "C" {
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <vector>
 
 #include "audio/ffmpeg_messages.hpp"
@@ -39,6 +40,11 @@ constexpr const char* kFormats = "mp3,aac,mov,matroska,webm,ogg,flac,wav,w64,aif
 // these (encoder padding and priming are tens of milliseconds; a file cut off loses far more).
 constexpr double kLengthSlackS = 0.25;
 constexpr double kLengthSlackShare = 0.05;
+
+// How much later than the samples before it a frame's timestamp may lie before the difference is
+// taken for lost packets: Matroska stores milliseconds, and a lost packet shorter than this moves
+// no syllable out of the aligner's 50 ms.
+constexpr double kTimestampSlackS = 0.025;
 
 std::string seconds_text(double seconds) { return format_fixed(seconds, 3) + " s"; }
 
@@ -75,11 +81,14 @@ public:
                 throw FileError(path_, "truncated: an MP4/M4A/MOV file without its index (the moov box), which "
                                        "recorders and encoders write last; the file was cut while it was copied "
                                        "or recorded, or is still being written");
+            if (opened == AVERROR(EIO) || opened == AVERROR_EOF) throw cut_in_header();
             throw not_audio(ffmpeg_error_text(opened));
         }
         format_.reset(raw);
-        if (const int found = avformat_find_stream_info(format_.get(), nullptr); found < 0)
+        if (const int found = avformat_find_stream_info(format_.get(), nullptr); found < 0) {
+            if (found == AVERROR(EIO) || found == AVERROR_EOF) throw cut_in_header();
             throw not_audio(ffmpeg_error_text(found));
+        }
         const int stream = av_find_best_stream(format_.get(), AVMEDIA_TYPE_AUDIO, -1, -1, nullptr, 0);
         if (stream < 0) {
             bool has_video = false;
@@ -152,6 +161,17 @@ private:
                           "MP4, MOV, MKV or WebM video): " + reason);
     }
 
+    // A reader that runs out of bytes inside the container's header (Matroska says "Input/output
+    // error", others "End of file"): a file cut to its first bytes, as a copy or a download that
+    // stopped leaves it. Said so, with the file's size, rather than as FFmpeg's bare words.
+    FileError cut_in_header() const {
+        std::error_code size_error;
+        const auto bytes = std::filesystem::file_size(path_, size_error);
+        const std::string size = size_error ? std::string() : " after " + std::to_string(bytes) + " bytes";
+        return FileError(path_, "truncated: the file ends" + size + ", inside its header, before any sound; it "
+                                    "was cut while it was copied or recorded");
+    }
+
     // The container's length (the stream's, else the whole file's); at least 1, since progress
     // divides by it. Only an estimate: reading goes on to the real end.
     std::size_t estimate_frames() const {
@@ -193,6 +213,7 @@ private:
         while (true) {
             const int received = avcodec_receive_frame(codec_.get(), frame_.get());
             if (received == 0) {
+                skip_to_timestamp(*frame_);
                 mix_down(*frame_);
                 av_frame_unref(frame_.get());
                 fill_skipped_time();
@@ -265,6 +286,27 @@ private:
         if (duration <= 0) return 0;
         const std::int64_t frames = av_rescale_q(duration, stream_->time_base, AVRational{1, sample_rate_hz_});
         return frames > 0 ? static_cast<std::size_t>(frames) : 0;
+    }
+
+    // A frame whose timestamp lies later than the samples before it reach: the packets between were
+    // lost before the decoder saw them (a scratch inside an MKV or WebM loses the cluster it hits,
+    // and the demuxer goes on at the next one, whose timestamp says where it belongs). The gap is
+    // kept as silence, as a refused packet's time is. Time 0 is placed by the second frame: the
+    // first may have lost its start to the codec's delay (an MP3's LAME tag, Opus's pre-skip) and
+    // keep the timestamp of its whole. A gap within kTimestampSlackS is a container's rounding
+    // (Matroska's milliseconds), not a loss.
+    void skip_to_timestamp(const AVFrame& frame) {
+        const std::int64_t timestamp = frame.best_effort_timestamp;
+        if (timestamp == AV_NOPTS_VALUE) return;
+        const std::int64_t at = av_rescale_q(timestamp, stream_->time_base, AVRational{1, sample_rate_hz_});
+        const auto before = static_cast<std::int64_t>(frames_decoded_ + skipped_frames_);
+        if (timed_frames_ < 2) {
+            ++timed_frames_;
+            time_zero_frames_ = at - before;
+            return;
+        }
+        const std::int64_t gap = at - (time_zero_frames_ + before);
+        if (static_cast<double>(gap) > kTimestampSlackS * sample_rate_hz_) skipped_frames_ += static_cast<std::size_t>(gap);
     }
 
     // Puts the time of the packets skipped since the last frame, as silence, before pending_.
@@ -342,6 +384,8 @@ private:
     std::size_t skipped_frames_ = 0;  // the time of refused packets not yet put in pending_
     int last_refusal_ = 0;            // the decoder's error for the last packet it refused
     std::size_t last_packet_frames_ = 0;  // the length of the last packet sent
+    std::int64_t time_zero_frames_ = 0;  // a frame's timestamp in samples less the samples before it
+    int timed_frames_ = 0;               // frames with a timestamp seen, up to the 2 that place time 0
     bool flushed_ = false;
     std::vector<float> interleaved_;
     std::vector<float> pending_;

@@ -26,6 +26,11 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", talkface::version());
     app.footer(talkface_cli::exit_code_help());
     app.require_subcommand(1);
+    // Usage errors read as every other error (STYLE.md section 8): "talkface: error: " first, then
+    // CLI11's message (a missing file: "AUDIO: File does not exist: x.wav") and its pointer to --help.
+    app.failure_message([](const CLI::App* failed, const CLI::Error& error) {
+        return "talkface: error: " + CLI::FailureMessage::simple(failed, error);
+    });
 
     talkface_cli::setup_render_command(app);
     talkface_cli::setup_syllables_command(app);

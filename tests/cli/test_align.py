@@ -175,6 +175,17 @@ def test_mismatched_transcript_exits_1_naming_the_sentence_and_writes_nothing(tm
     assert_nothing_written(tmp_path, transcript)
 
 
+def test_a_missing_file_is_a_usage_error_said_as_every_error_is(tmp_path):
+    # STYLE.md section 8: every error reads "talkface: error: ...", the option's own check's too.
+    _, transcript = clip("one_sentence")
+    missing = tmp_path / "missing.wav"
+    result = run("align", missing, transcript, "--json")
+    assert result.returncode == 2
+    assert result.stderr.startswith("talkface: error: ")
+    assert str(missing) in result.stderr.splitlines()[0]
+    assert result.stdout == ""
+
+
 def test_option_out_of_range_is_a_usage_error():
     audio, transcript = clip("one_sentence")
     result = run("align", audio, transcript, "--c1", "0.2")

@@ -85,6 +85,35 @@ def test_animate_embeds_the_audio_as_it_is_when_asked(tmp_path):
     assert refused.returncode == 2 and "--audio-bitrate" in refused.stderr
 
 
+@pytest.mark.parametrize("embed", ["original", "link"])
+def test_a_recording_browsers_do_not_play_is_refused_as_it_is_with_advice(tmp_path, embed):
+    # A voice mail's GSM 06.10 WAV: the page was written and Chromium said, on it, that it could
+    # not play the speech. Refused, naming the file, the codec and what to do; no page written.
+    gsm = tmp_path / "voicemail.wav"
+    subprocess.run(["sox", SPEECH / "demo.ogg", "-r", "8000", "-c", "1", "-e", "gsm-full-rate", gsm], check=True)
+    page = tmp_path / "voicemail.html"
+    result = run("animate", gsm, SPEECH / "demo.txt", "--audio-embed", embed, "-o", page)
+    assert result.returncode == 1
+    assert result.stderr.startswith(f"talkface: error: {gsm}: cannot be "), result.stderr
+    assert "GSM 6.10" in result.stderr and "embed it compressed" in result.stderr
+    assert not page.exists()
+    # The default, compressed, plays it.
+    assert run("animate", gsm, SPEECH / "demo.txt", "-o", page).returncode == 0
+
+
+def test_a_format_no_browser_plays_is_refused_by_its_file_name(tmp_path):
+    # A phone's voice memo, AMR-NB: talkface reads it, no browser plays it. The message named the
+    # library's parameter ("audio_path"), not the file.
+    amr = tmp_path / "memo.amr"
+    subprocess.run(["sox", SPEECH / "demo.ogg", "-r", "8000", "-c", "1", amr], check=True)
+    page = tmp_path / "memo.html"
+    result = run("animate", amr, SPEECH / "demo.txt", "--audio-embed", "original", "-o", page)
+    assert result.returncode == 1
+    assert result.stderr.startswith(f"talkface: error: {amr}: cannot be embedded as it is"), result.stderr
+    assert "embed it compressed" in result.stderr and "audio_path" not in result.stderr
+    assert not page.exists()
+
+
 def test_animate_writes_the_bare_animation_as_svg(tmp_path):
     svg = tmp_path / "talk.svg"
     result = run("animate", SPEECH / "demo.ogg", SPEECH / "demo.txt", "--encoding", "frames", "-o", svg)

@@ -2,6 +2,7 @@ import base64
 import gzip
 import html as html_module
 import pathlib
+import subprocess
 import xml.dom.minidom
 
 import pytest
@@ -84,6 +85,18 @@ def test_the_audio_is_embedded_compressed_or_as_it_is(face, animation, timeline)
     with pytest.raises(talkface.InvalidArgument, match="audio_bitrate_bps"):
         talkface.build_web_page(talkface.SvgAnimator(face), animation, timeline, SPEECH,
                                 talkface.WebPageOptions(audio_bitrate_bps=200000))
+
+
+def test_a_wav_browsers_do_not_play_is_not_embedded_as_it_is(face, animation, timeline, tmp_path):
+    # GSM 06.10 in WAV, as voice mail stores it: the C++ check (apps/web_page.cpp) raises the
+    # matching exception here, naming the file and the codec.
+    gsm = tmp_path / "voicemail.wav"
+    subprocess.run(["sox", SPEECH, "-r", "8000", "-c", "1", "-e", "gsm-full-rate", gsm], check=True)
+    with pytest.raises(talkface.InvalidArgument, match=f"{gsm}: cannot be embedded as it is: its sound is GSM 6.10"):
+        talkface.build_web_page(talkface.SvgAnimator(face), animation, timeline, gsm,
+                                talkface.WebPageOptions(audio=talkface.WebPageAudio.original))
+    html = talkface.build_web_page(talkface.SvgAnimator(face), animation, timeline, gsm, talkface.WebPageOptions())
+    assert "data:audio/webm;base64," in html
 
 
 @pytest.mark.parametrize("app", [talkface.WebPageApp.plain, talkface.WebPageApp.announcer,

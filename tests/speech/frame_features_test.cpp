@@ -1,5 +1,6 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -51,6 +52,35 @@ TEST_SUITE("frame features") {
         // Digital silence gave every one of these frames the same cepstrum (variance 0): the silence
         // class learned a spike there, and a path holding the faintest sound in a pause lost to it.
         CHECK(variance > 0.01);
+    }
+
+    TEST_CASE("a DC offset is no sound: the levels, the spectrum and the peak are those without it") {
+        // A cheap recorder's offset of 0.3 of full scale leaked through the window into the energy
+        // band (from 60 Hz) and lifted every frame's peak by 0.3: the pauses read as loud as speech.
+        std::vector<float> faint = tone_silence_tone();
+        for (std::size_t i = 0; i < faint.size(); ++i)
+            faint[i] = 0.5f * faint[i] + 1e-3f * static_cast<float>(std::sin(0.37 * static_cast<double>(i)));  // a room
+        std::vector<float> offset = faint;
+        for (float& sample : offset) sample += 0.3f;
+        const FeatureTrack plain = features_of(faint);
+        const FeatureTrack shifted = features_of(offset);
+        REQUIRE(plain.frame_count == shifted.frame_count);
+        float loudest_db = -1e9f;
+        for (std::size_t t = 0; t < plain.frame_count; ++t) loudest_db = std::max(loudest_db, plain.at(t, kEnergyDb));
+        // Frames whose window lies inside the file (the first and last are padded with zeros, where
+        // an offset is a step).
+        for (std::size_t t = 2; t + 2 < plain.frame_count; ++t) {
+            CAPTURE(t);
+            // The offset is followed, not known: what it leaves moves the faint frames' levels by
+            // at most 2 dB (the offset itself lifted them by tens of dB).
+            for (const int level : {kEnergyDb, kLowBandDb, kMidBandDb, kHighBandDb})
+                CHECK(std::fabs(shifted.at(t, level) - plain.at(t, level)) < 2.0f);
+            // The spectrum's shape where there is sound to shape it (a faint frame's cepstra follow
+            // the dither).
+            for (int c = 0; c < kCepstrumCount && plain.at(t, kEnergyDb) > loudest_db - 20.0f; ++c)
+                CHECK(std::fabs(shifted.at(t, kCepstrum0 + c) - plain.at(t, kCepstrum0 + c)) < 0.03f * (10.0f + std::fabs(plain.at(t, kCepstrum0 + c))));
+            CHECK(std::fabs(shifted.at(t, kPeakAmplitude) - plain.at(t, kPeakAmplitude)) < 2e-3f);
+        }
     }
 
     TEST_CASE("the dither repeats: the same audio gives the same features") {

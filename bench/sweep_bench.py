@@ -1,0 +1,266 @@
+#!/usr/bin/env python3
+"""Recordings as people have them, and broken files (issue 13): the sweep, made reproducible.
+
+    bench/sweep_bench.py make OUT [--source DIR/NAME ...]   # the cases, from corpus passages
+    bench/sweep_bench.py run OUT TALKFACE [--case SUBSTRING] # % of onsets within 50 ms per case
+
+`make` builds each case from a corpus passage (a WAV, its transcript .txt and its truth .json, as
+make_corpus and make_human_corpus write them; by default gcin-voice speaker 3's r-clean tuning-001
+and espeak-ng's clean tuning-001) with sox and ffmpeg, as a phone, a recorder, an editor or a bad
+copy leaves them: narrowband telephone, A-law, GSM, AMR, MP3, Opus, AAC, video sound tracks,
+compression, clipping, dropouts, a notification beep, DC offsets, long silences, more channels,
+sample formats, WAV chunks, RF64; and files broken by a scratch or cut to their header. OUT/cases.tsv
+lists every case: its file, its transcript, its truth and how far the case moved the truth.
+
+`run` aligns every case with `TALKFACE align FILE TRANSCRIPT --json` and prints, per case, the % of
+syllable onsets within 50 and 100 ms of the truth, or the error (first line) for a refused case.
+A case is right when it aligns as well as the reference, or is refused with a message naming the
+file and the reason.
+"""
+import argparse
+import json
+import math
+import os
+import random
+import shutil
+import struct
+import subprocess
+import sys
+
+DEFAULT_SOURCES = [
+    ("person", "/work/corpus/human/r-clean/tuning-001"),
+    ("espeak", "/work/corpus/espeak/clean/tuning-001"),
+]
+
+
+def run(command):
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+
+
+def sox(*arguments):
+    run(["sox", "-R", "-V1", *arguments])
+
+
+def ffmpeg(*arguments):
+    run(["ffmpeg", "-nostdin", "-loglevel", "error", "-y", *arguments])
+
+
+def duration_s(path):
+    out = subprocess.run(["soxi", "-D", path], check=True, capture_output=True, text=True).stdout
+    return float(out)
+
+
+def scratched(source, target, share=1 / 3, count=2000, seed=3):
+    """`count` random bytes a `share` of the way into the file: a bad sector, a broken download."""
+    data = bytearray(open(source, "rb").read())
+    at = int(len(data) * share)
+    generator = random.Random(seed)
+    data[at:at + count] = bytes(generator.randrange(256) for _ in range(count))
+    open(target, "wb").write(bytes(data))
+
+
+def wav_with_chunks(source, target):
+    """A 16-bit WAV with a LIST/INFO chunk before its data and a cue chunk and a LIST/adtl label
+    after it, as editors (Audacity's labels, Sound Forge's markers) write them."""
+    data = open(source, "rb").read()
+    assert data[:4] == b"RIFF" and data[8:12] == b"WAVE"
+    chunks = []
+    at = 12
+    while at + 8 <= len(data):
+        kind, size = data[at:at + 4], struct.unpack("<I", data[at + 4:at + 8])[0]
+        chunks.append((kind, data[at + 8:at + 8 + size]))
+        at += 8 + size + (size & 1)
+
+    def chunk(kind, body):
+        return kind + struct.pack("<I", len(body)) + body + (b"\0" if len(body) & 1 else b"")
+
+    info = b"INFO" + chunk(b"INAM", b"phone memo\0") + chunk(b"ISFT", b"recorder 1.0\0")
+    cue = struct.pack("<I", 1) + struct.pack("<II4sIII", 1, 0, b"data", 0, 0, 8000)
+    adtl = b"adtl" + chunk(b"labl", struct.pack("<I", 1) + b"start\0")
+    body = b"WAVE"
+    for kind, content in chunks:
+        if kind == b"data":
+            body += chunk(b"LIST", info)
+        body += chunk(kind, content)
+    body += chunk(b"cue ", cue) + chunk(b"LIST", adtl)
+    open(target, "wb").write(b"RIFF" + struct.pack("<I", len(body)) + body)
+
+
+def make_cases(out, label, stem):
+    """The cases of one source passage; returns (case, file, shift_s) rows."""
+    wav, txt = stem + ".wav", stem + ".txt"
+    truth = json.load(open(stem + ".json"))
+    first_start = min(s["start"] for s in truth["syllables"])
+    last_end = max(s["end"] for s in truth["syllables"])
+    folder = os.path.join(out, label)
+    os.makedirs(folder, exist_ok=True)
+    rows = []
+
+    def path(name):
+        return os.path.join(folder, name)
+
+    def case(name, file, shift_s=0.0):
+        rows.append((f"{label}/{name}", file, txt, stem + ".json", shift_s))
+
+    ref = path("ref.wav")
+    sox(wav, "-b", "16", ref, "rate", "-v", "16k", "remix", "-")
+    case("16 kHz WAV (reference)", ref)
+    # A voice through a phone: the telephone band at 8 kHz, stored as each phone or voice mail does.
+    narrow = path("narrow.wav")
+    sox(ref, narrow, "sinc", "300-3400", "rate", "-v", "8k")
+    case("8 kHz 300-3400 Hz", narrow)
+    for name, options in [("alaw.wav", ["-e", "a-law"]), ("ulaw.wav", ["-e", "mu-law"]), ("gsm.wav", ["-e", "gsm-full-rate"])]:
+        sox(narrow, *options, path(name))
+        case(f"8 kHz {name}", path(name))
+    # AMR-NB through sox's libopencore-amrnb (-C is the mode: 7 is 12.2 kb/s, 0 is 4.75). Debian's
+    # sox and FFmpeg have no AMR-WB encoder: tests/audio/damaged_audio_test.cpp makes its frames by hand.
+    sox(narrow, "-t", "amr-nb", "-C", "7", path("phone.amr"))
+    case("AMR-NB 12.2 kb/s", path("phone.amr"))
+    sox(narrow, "-t", "amr-nb", "-C", "0", path("phone475.amr"))
+    case("AMR-NB 4.75 kb/s", path("phone475.amr"))
+    ffmpeg("-i", narrow, "-c:a", "libmp3lame", "-b:a", "16k", path("narrow.mp3"))
+    case("8 kHz MP3 16 kb/s", path("narrow.mp3"))
+    ffmpeg("-i", ref, "-c:a", "libopus", "-b:a", "12k", path("voice.opus"))
+    case("Opus 12 kb/s", path("voice.opus"))
+    ffmpeg("-i", ref, "-ac", "2", "-ar", "48000", "-c:a", "aac", "-b:a", "64k", path("phone.m4a"))
+    case("AAC 48 kHz stereo M4A", path("phone.m4a"))
+    # Heavy compression and a phone's automatic gain: the pauses' room pulled up to speech's level.
+    sox(ref, path("compand.wav"), "compand", "0.005,0.1", "6:-70,-70,-60,-20,-30,-12,0,-6", "-5", "-90", "0.05")
+    case("heavy compression (compand)", path("compand.wav"))
+    ffmpeg("-i", ref, "-af", "dynaudnorm=f=100:g=5:m=30", path("agc.wav"))
+    case("AGC (dynaudnorm, 30x gain)", path("agc.wav"))
+    sox(ref, path("clipped.wav"), "gain", "12")
+    case("clipped (+12 dB)", path("clipped.wav"))
+    sox(ref, path("clipped24.wav"), "gain", "24")
+    case("clipped (+24 dB)", path("clipped24.wav"))
+    # Dropouts: a call's lost packets, 60 ms of nothing once a second.
+    ffmpeg("-i", ref, "-af", "volume='if(lt(mod(t,1),0.06),0,1)':eval=frame", path("dropouts.wav"))
+    case("dropouts (60 ms a second)", path("dropouts.wav"))
+    # A notification beep (two 880 Hz tones of 80 ms, -12 dBFS) in the middle of the speech, and one
+    # 0.2 s before it.
+    middle = (first_start + last_end) / 2
+    for name, at in [("beep_middle.wav", middle), ("beep_before.wav", max(0.0, first_start - 0.3))]:
+        ffmpeg("-i", ref, "-f", "lavfi", "-i",
+               "sine=f=880:d=0.08:sample_rate=16000,volume=0.25,apad=pad_dur=0.06[a];"
+               "sine=f=880:d=0.08:sample_rate=16000,volume=0.25[b];[a][b]concat=v=0:a=1",
+               "-filter_complex", f"[1]adelay={int(at * 1000)}[beep];[0][beep]amix=inputs=2:duration=first:normalize=0",
+               path(name))
+        case(name.replace(".wav", "").replace("_", " "), path(name))
+    # Speech from the first sample to the last: the file cut at the truth's first onset and last end.
+    sox(ref, path("tight.wav"), "trim", f"{first_start:.4f}", f"={last_end:.4f}")
+    case("speech from the first sample to the last", path("tight.wav"), -first_start)
+    # Long silences: a minute of digital zeros, a minute of a faint room, before the speech.
+    sox(ref, path("silence60.wav"), "pad", "60", "0")
+    case("60 s of digital silence before", path("silence60.wav"), 60.0)
+    length = duration_s(ref)
+    sox("-n", "-r", "16k", "-b", "16", path("room.wav"), "synth", f"{60 + length:.3f}", "pinknoise", "vol", "0.003")
+    sox("-m", path("room.wav"), path("silence60.wav"), path("room60.wav"))
+    case("60 s of faint room before", path("room60.wav"), 60.0)
+    # Channels.
+    sox(ref, "-c", "2", path("stereo.wav"))
+    case("stereo, the same in both", path("stereo.wav"))
+    sox(ref, path("left.wav"), "remix", "1", "0")
+    case("stereo, right silent", path("left.wav"))
+    ffmpeg("-i", ref, "-af", "pan=5.1|FC=c0", path("surround.wav"))
+    case("5.1, speech in the centre only", path("surround.wav"))
+    # Sample formats.
+    for name, options in [("u8.wav", ["-b", "8", "-e", "unsigned"]), ("s24.wav", ["-b", "24"]),
+                          ("s32.wav", ["-b", "32"]), ("f32.wav", ["-e", "float", "-b", "32"]),
+                          ("f64.wav", ["-e", "float", "-b", "64"])]:
+        sox(ref, *options, path(name))
+        case(name.replace(".wav", " WAV"), path(name))
+    wav_with_chunks(ref, path("chunks.wav"))
+    case("WAV with LIST and cue chunks", path("chunks.wav"))
+    ffmpeg("-i", ref, "-rf64", "always", path("rf64.wav"))
+    case("RF64", path("rf64.wav"))
+    for level in (0.1, 0.3):
+        sox(ref, path(f"dc{level}.wav"), "vol", "0.6", "dcshift", str(level))
+        case(f"DC offset {level} (speech at 0.6)", path(f"dc{level}.wav"))
+    sox(ref, path("quiet50.wav"), "gain", "-n", "-50")
+    case("-50 dBFS peak", path("quiet50.wav"))
+    # Video sound tracks and broken files.
+    picture = ["-f", "lavfi", "-i", f"color=c=gray:s=16x16:r=2:d={length:.3f}"]
+    for name, codecs in [("clip.mkv", ["-c:v", "libvpx", "-b:v", "8k", "-c:a", "libopus", "-b:a", "16k"]),
+                         ("clip.webm", ["-c:v", "libvpx", "-b:v", "8k", "-c:a", "libopus", "-b:a", "16k"]),
+                         ("clip.mp4", ["-c:v", "libx264", "-crf", "40", "-c:a", "aac", "-b:a", "32k", "-movflags", "+faststart"])]:
+        ffmpeg(*picture, "-i", ref, *codecs, "-shortest", path(name))
+        case(name, path(name))
+        scratched(path(name), path("scratched_" + name))
+        case("scratched " + name, path("scratched_" + name))
+    ffmpeg("-i", ref, "-c:a", "libvorbis", "-q:a", "2", path("voice.ogg"))
+    case("Ogg Vorbis", path("voice.ogg"))
+    scratched(path("voice.ogg"), path("scratched_voice.ogg"))
+    case("scratched voice.ogg", path("scratched_voice.ogg"))
+    scratched(path("voice.opus"), path("scratched_voice.opus"))
+    case("scratched voice.opus", path("scratched_voice.opus"))
+    scratched(path("phone.m4a"), path("scratched_phone.m4a"))
+    case("scratched phone.m4a", path("scratched_phone.m4a"))
+    mkv = open(path("clip.mkv"), "rb").read()
+    open(path("header_only.mkv"), "wb").write(mkv[:200])
+    case("header-only MKV", path("header_only.mkv"))
+    ffmpeg(*picture, "-c:v", "libvpx", "-b:v", "8k", path("silent_video.webm"))
+    case("a video without sound", path("silent_video.webm"))
+    case("a missing file", path("missing.wav"))
+    return rows
+
+
+def make(args):
+    os.makedirs(args.out, exist_ok=True)
+    sources = [tuple(s.split("=", 1)) for s in args.source] if args.source else DEFAULT_SOURCES
+    rows = []
+    for label, stem in sources:
+        rows += make_cases(args.out, label, stem)
+    with open(os.path.join(args.out, "cases.tsv"), "w") as f:
+        for row in rows:
+            f.write("\t".join(str(v) for v in row) + "\n")
+    print(f"{len(rows)} cases in {args.out}/cases.tsv")
+
+
+def score(result, truth, shift_s):
+    errors = []
+    syllables = truth["syllables"]
+    if len(result["syllables"]) != len(syllables):
+        return None
+    for got, want in zip(result["syllables"], syllables):
+        errors.append(abs(got["start"] - (want["start"] + shift_s)))
+    within = lambda limit: 100.0 * sum(e <= limit for e in errors) / len(errors)
+    return within(0.05), within(0.1)
+
+
+def run_cases(args):
+    rows = [line.rstrip("\n").split("\t") for line in open(os.path.join(args.out, "cases.tsv"))]
+    print(f"{'case':52} {'50 ms':>6} {'100 ms':>6}  exit / message")
+    for name, file, txt, truth_path, shift in rows:
+        if args.case and args.case not in name:
+            continue
+        done = subprocess.run([args.talkface, "align", file, txt, "--json"], capture_output=True, text=True)
+        if done.returncode == 0:
+            scored = score(json.loads(done.stdout), json.load(open(truth_path)), float(shift))
+            if scored is None:
+                print(f"{name:52} {'?':>6} {'?':>6}  syllable count differs")
+            else:
+                print(f"{name:52} {scored[0]:6.1f} {scored[1]:6.1f}")
+        else:
+            message = (done.stderr.strip().splitlines() or ["(nothing on stderr)"])[0]
+            print(f"{name:52} {'-':>6} {'-':>6}  exit {done.returncode}: {message}")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    commands = parser.add_subparsers(dest="command", required=True)
+    maker = commands.add_parser("make")
+    maker.add_argument("out")
+    maker.add_argument("--source", action="append", help="LABEL=PATH/STEM of a corpus passage (.wav, .txt, .json)")
+    runner = commands.add_parser("run")
+    runner.add_argument("out")
+    runner.add_argument("talkface")
+    runner.add_argument("--case", help="only the cases whose name holds this")
+    args = parser.parse_args()
+    for tool in ("sox", "soxi", "ffmpeg"):
+        if shutil.which(tool) is None:
+            sys.exit(f"sweep_bench.py: {tool} is needed (cmake/install-deps.sh bench installs it)")
+    make(args) if args.command == "make" else run_cases(args)
+
+
+if __name__ == "__main__":
+    main()
