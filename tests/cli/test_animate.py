@@ -90,7 +90,8 @@ def test_a_recording_browsers_do_not_play_is_refused_as_it_is_with_advice(tmp_pa
     # A voice mail's GSM 06.10 WAV: the page was written and Chromium said, on it, that it could
     # not play the speech. Refused, naming the file, the codec and what to do; no page written.
     gsm = tmp_path / "voicemail.wav"
-    subprocess.run(["sox", SPEECH / "demo.ogg", "-r", "8000", "-c", "1", "-e", "gsm-full-rate", gsm], check=True)
+    subprocess.run(["ffmpeg", "-nostdin", "-loglevel", "error", "-i", SPEECH / "demo.ogg", "-ar", "8000", "-ac", "1",
+                    "-c:a", "libgsm_ms", gsm], check=True)
     page = tmp_path / "voicemail.html"
     result = run("animate", gsm, SPEECH / "demo.txt", "--audio-embed", embed, "-o", page)
     assert result.returncode == 1
@@ -102,14 +103,15 @@ def test_a_recording_browsers_do_not_play_is_refused_as_it_is_with_advice(tmp_pa
 
 
 def test_a_format_no_browser_plays_is_refused_by_its_file_name(tmp_path):
-    # A phone's voice memo, AMR-NB: talkface reads it, no browser plays it. The message named the
-    # library's parameter ("audio_path"), not the file.
-    amr = tmp_path / "memo.amr"
-    subprocess.run(["sox", SPEECH / "demo.ogg", "-r", "8000", "-c", "1", amr], check=True)
+    # A recording talkface reads and no browser plays (a phone's AMR memo took this path too; Debian's
+    # FFmpeg has no AMR encoder to make one here): the message named the library's parameter
+    # ("audio_path"), not the file.
+    memo = tmp_path / "memo.aiff"
+    subprocess.run(["ffmpeg", "-nostdin", "-loglevel", "error", "-i", SPEECH / "demo.ogg", memo], check=True)
     page = tmp_path / "memo.html"
-    result = run("animate", amr, SPEECH / "demo.txt", "--audio-embed", "original", "-o", page)
+    result = run("animate", memo, SPEECH / "demo.txt", "--audio-embed", "original", "-o", page)
     assert result.returncode == 1
-    assert result.stderr.startswith(f"talkface: error: {amr}: cannot be embedded as it is"), result.stderr
+    assert result.stderr.startswith(f"talkface: error: {memo}: cannot be embedded as it is"), result.stderr
     assert "embed it compressed" in result.stderr and "audio_path" not in result.stderr
     assert not page.exists()
 

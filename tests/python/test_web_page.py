@@ -91,7 +91,8 @@ def test_a_wav_browsers_do_not_play_is_not_embedded_as_it_is(face, animation, ti
     # GSM 06.10 in WAV, as voice mail stores it: the C++ check (apps/web_page.cpp) raises the
     # matching exception here, naming the file and the codec.
     gsm = tmp_path / "voicemail.wav"
-    subprocess.run(["sox", SPEECH, "-r", "8000", "-c", "1", "-e", "gsm-full-rate", gsm], check=True)
+    subprocess.run(["ffmpeg", "-nostdin", "-loglevel", "error", "-i", SPEECH, "-ar", "8000", "-ac", "1", "-c:a", "libgsm_ms",
+                    gsm], check=True)
     with pytest.raises(talkface.InvalidArgument, match=f"{gsm}: cannot be embedded as it is: its sound is GSM 6.10"):
         talkface.build_web_page(talkface.SvgAnimator(face), animation, timeline, gsm,
                                 talkface.WebPageOptions(audio=talkface.WebPageAudio.original))
