@@ -26,19 +26,29 @@ std::vector<SyllableFrames> frames_on_path(const SentenceChain& chain, const std
 // stays where it was, and one the duration priors and its neighbours put there moves.
 constexpr double kLightSoundsWeight = 0.5;
 
-// Per syllable of `chain`, what other paths of it say of where `path` starts it, added to its
-// evidence (not its neighbours': the disagreement is the syllable's own): less, the more frames
-// (up to a cap) each of `other_paths` starts it earlier or later. A syllable whose start moves
-// between the aligner's last two passes, or when the sounds weigh less (kLightSoundsWeight), is
-// likely misplaced; unlike the fit, which a room or noise lowers for every syllable, the paths of
-// a right syllable agree there too. A syllable an other path does not place counts nothing.
-std::vector<double> syllable_steadiness(const SentenceChain& chain, const std::vector<StateSegment>& path,
-                                        const std::vector<std::vector<StateSegment>>& other_paths);
+// Per syllable placed at `placed` (frames of a chain's search), what other searches of the same
+// frames say of where it starts, added to its evidence (not its neighbours': the disagreement is
+// the syllable's own): less, the more frames (up to a cap) each of `others` starts it earlier or
+// later. A syllable whose start moves between the aligner's last two passes, or when the sounds
+// weigh less (kLightSoundsWeight), is likely misplaced; unlike the fit, which a room or noise
+// lowers for every syllable, the paths of a right syllable agree there too. A syllable one of them
+// does not place (end_frame 0) counts nothing.
+std::vector<double> syllable_steadiness(const std::vector<SyllableFrames>& placed,
+                                        const std::vector<std::vector<SyllableFrames>>& others);
 
-// Per syllable of `chain` (holding `frames` on `path`), how well the path fits it: how probable
-// the sound the path gives each frame is among all sounds (the mean posterior of its class), less
-// how much better a free sequence of sounds fits the syllable's stretch than the path does
-// (text_fit_gap's loop, per frame).
+// How well a path fits a syllable's frames: how probable the sound the path gives each frame is
+// among all sounds (the mean posterior of its class), and how much better a free sequence of sounds
+// fits the syllable's stretch than the path does (text_fit_gap's loop, per frame).
+struct SyllableFit {
+    double posterior = 0.0;
+    double free_gap = 0.0;
+};
+
+// Per syllable of `chain` (holding `frames` on `path`), its SyllableFit.
+std::vector<SyllableFit> syllable_fit_parts(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                                            const EmissionScores& scores, const std::vector<SyllableFrames>& frames);
+
+// Per syllable of `chain`, its fit as one number: the posterior less the free sounds' gap.
 std::vector<double> syllable_fits(const SentenceChain& chain, const std::vector<StateSegment>& path,
                                   const EmissionScores& scores, const std::vector<SyllableFrames>& frames);
 
@@ -50,20 +60,34 @@ std::vector<double> syllable_fits(const SentenceChain& chain, const std::vector<
 std::vector<double> syllable_timing(const SentenceChain& chain, const std::vector<StateSegment>& path,
                                     const EmissionScores& scores, const std::vector<SyllableFrames>& frames);
 
-// Per syllable, the evidence that it is where the path put it: its fit (syllable_fits) and its
-// neighbours' averaged (drift comes in runs: a syllable placed a syllable off pulls its neighbours
-// with it).
-std::vector<double> syllable_evidence(const std::vector<double>& fits);
+// What one syllable's place rests on, gathered per chain (place_syllables) and weighed together
+// per recording (set_confidences).
+struct SyllableEvidence {
+    bool is_measured = false;  // false: no chain placed it, or lenient alignment fitted it as generic speech
+    std::size_t chain = 0;     // its chain: its neighbours' evidence joins its own within one
+    SyllableFit fit;
+    double timing = 0.0;      // syllable_timing
+    double steadiness = 0.0;  // syllable_steadiness
+};
 
-// Each syllable's confidence in 0..1 from its evidence (per syllable of the transcript; NaN for one
-// no chain placed), half as it is and half against the recording's median: in a room or in noise
-// every syllable's evidence is lower, and a threshold on the evidence alone flagged half of the
-// right syllables there and almost none in clean speech (issue 12: the threshold must hold across
-// conditions); the absolute half keeps a recording aligned badly throughout from looking normal.
-// A recording whose median is under a clean recording's has most of the shortfall given back
-// besides: half was not enough to keep a room from flagging a fifth of its right syllables, and
-// giving back more from every recording flagged more of the clean ones (espeak-ng's).
-void set_confidences(const std::vector<double>& evidence, Timeline& result);
+// Each measured syllable's confidence in 0..1 from its evidence (per syllable of the transcript;
+// one not measured is left as it is).
+//
+// The free sounds' gap is first scaled to a clean recording's spread where the recording's own is
+// wider: noise and music make the gap of every syllable, right or not, scatter more (its spread
+// over a recording's syllables, 0.066 on the person's clean passages, 0.08-0.09 at 15-20 dB SNR),
+// and unscaled it flagged up to 13% of the right syllables there against 3-6% in clean speech
+// (issue 12: the threshold must hold in every condition). Then a syllable's fit (posterior less
+// gap, plus its timing) is averaged with its neighbours' in its chain (drift comes in runs: a
+// syllable placed a syllable off pulls its neighbours with it), its steadiness added, and the sum
+// weighed half as it is and half against the recording's median: in a room or in noise every
+// syllable's evidence is lower, and a threshold on the evidence alone flagged half of the right
+// syllables there and almost none in clean speech; the absolute half keeps a recording aligned
+// badly throughout from looking normal. A recording whose median is under a clean recording's has
+// most of the shortfall given back besides: half was not enough to keep a room from flagging a
+// fifth of its right syllables, and giving back more from every recording flagged more of the
+// clean ones (espeak-ng's).
+void set_confidences(const std::vector<SyllableEvidence>& evidence, Timeline& result);
 
 }  // namespace talkface::detail
 

@@ -171,28 +171,27 @@ void add_outliers_beside(const std::vector<double>& fits, const std::vector<bool
     }
 }
 
-// The evidence of the syllables of a chain with a mismatch that are not in one (evidence not NaN),
-// measured again on the whole lenient `path` and among themselves: measured on the text's path
-// alone, the margins of a syllable beside generic speech read its frames as silence, and a
-// skipped syllable (no frames, fit 0) pulled its neighbours' evidence down, so that syllables
-// beside a mismatch, nearly all in place, came out with confidences under 0.1.
-void set_evidence_beside(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores,
-                         const Timeline& result, std::vector<double>& evidence) {
+// The fit of the syllables of a chain with a mismatch that are not in one (measured), measured
+// again on the whole lenient `path`: measured on the text's path alone, the margins of a syllable
+// beside generic speech read its frames as silence, so that syllables beside a mismatch, nearly
+// all in place, came out with confidences under 0.1. Their timing and steadiness stay the text
+// path's (place_syllables): generic speech has no duration prior of a syllable's.
+void set_fit_beside(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores,
+                    const Timeline& result, std::vector<SyllableEvidence>& evidence) {
     const auto offset = static_cast<long>(chain.searched.first_frame);
     std::vector<std::size_t> kept;
     std::vector<SyllableFrames> frames;
     for (std::size_t local = 0; local < chain.syllables.size(); ++local) {
         const std::size_t global = chain.syllable_indices[local];
-        if (std::isnan(evidence[global])) continue;
+        if (!evidence[global].is_measured) continue;
         const Syllable& syllable = result.syllables[global];
         const long first = std::max(0L, std::lround(syllable.start_s / kFrameStepS) - offset);
         const long end = std::max(first + 1, std::lround(syllable.end_s / kFrameStepS) - offset);
         kept.push_back(local);
         frames.push_back({static_cast<std::size_t>(first), static_cast<std::size_t>(end)});
     }
-    if (kept.empty()) return;
-    const std::vector<double> placed_evidence = syllable_evidence(syllable_fits(chain, path, scores, frames));
-    for (std::size_t k = 0; k < kept.size(); ++k) evidence[chain.syllable_indices[kept[k]]] = placed_evidence[k];
+    const std::vector<SyllableFit> fits = syllable_fit_parts(chain, path, scores, frames);
+    for (std::size_t k = 0; k < kept.size(); ++k) evidence[chain.syllable_indices[kept[k]]].fit = fits[k];
 }
 
 }  // namespace
@@ -280,9 +279,18 @@ void forbid_skips(SentenceChain& lenient, const std::vector<std::size_t>& syllab
             state.skip_log_penalty = -std::numeric_limits<double>::infinity();
 }
 
-void place_lenient(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores,
+bool takes_text_whole(const SentenceChain& lenient, const std::vector<StateSegment>& path) {
+    const std::vector<bool> is_whole = whole_syllables(lenient, path);
+    return std::all_of(is_whole.begin(), is_whole.end(), [](bool whole) { return whole; }) &&
+           std::none_of(path.begin(), path.end(), [&](const StateSegment& segment) {
+               return lenient.states[segment.state].role == StateRole::generic_speech;
+           });
+}
+
+void place_lenient(const SentenceChain& chain, std::size_t chain_index, const std::vector<StateSegment>& path,
+                   const std::vector<std::vector<SyllableFrames>>& other_frames, const EmissionScores& scores,
                    const FeatureTrack& track, const LoudnessProfile& loudness, Timeline& result,
-                   std::vector<double>& evidence) {
+                   std::vector<SyllableEvidence>& evidence) {
     const std::size_t count = chain.syllables.size();
     std::vector<StateSegment> text_path;
     std::vector<Marked> marked;
@@ -294,7 +302,7 @@ void place_lenient(const SentenceChain& chain, const std::vector<StateSegment>& 
         }
         text_path.push_back(segment);
     }
-    place_syllables(chain, text_path, {}, scores, track, result, evidence);
+    place_syllables(chain, chain_index, text_path, other_frames, scores, track, result, evidence);
     const std::vector<SyllableFrames> frames = frames_on_path(chain, path);
     const std::vector<bool> is_whole = whole_syllables(chain, path);
     for (std::size_t i = 0; i < count; ++i)
@@ -351,7 +359,7 @@ void place_lenient(const SentenceChain& chain, const std::vector<StateSegment>& 
                 syllable.final_start_s = syllable.start_s + 0.3 * (syllable.end_s - syllable.start_s);
                 syllable.confidence = 0.0;
                 // Not measured: set_confidences leaves it at 0.
-                evidence[global + k] = std::numeric_limits<double>::quiet_NaN();
+                evidence[global + k].is_measured = false;
             }
         } else {
             mismatch.first_syllable = after_place / 2 < count ? chain.syllable_indices[after_place / 2]
@@ -367,7 +375,7 @@ void place_lenient(const SentenceChain& chain, const std::vector<StateSegment>& 
             " (lenient alignment: fitted as generic speech, the mouth follows its loudness)");
         result.mismatches.push_back(std::move(mismatch));
     }
-    if (!marked.empty()) set_evidence_beside(chain, path, scores, result, evidence);
+    if (!marked.empty()) set_fit_beside(chain, path, scores, result, evidence);
 }
 
 }  // namespace talkface::detail

@@ -53,14 +53,20 @@ void forbid_states(SentenceChain& lenient, const std::vector<std::size_t>& state
 // `lenient` with `syllables` no longer skippable.
 void forbid_skips(SentenceChain& lenient, const std::vector<std::size_t>& syllables);
 
-// Places the syllables of a lenient chain's `path` in `result` with their `evidence` (as
-// place_syllables does), and for each stretch the path fits with generic speech or skips: a
-// TextMismatch in result.mismatches and a warning, its syllables spread over the stretch at its
-// loudness dips with confidence 0 (evidence NaN: set_confidences leaves them so). A syllable beside
-// a skipped one whose fit on `path` is an outlier of the chain's joins its mismatch.
-void place_lenient(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores,
+// Whether the lenient chain's `path` says the text as written: every syllable whole and no
+// generic speech.
+bool takes_text_whole(const SentenceChain& lenient, const std::vector<StateSegment>& path);
+
+// Places the syllables of a lenient chain's `path` (the `chain_index`th) in `result` with their
+// `evidence`, as place_syllables does, its timing and the disagreement of `other_frames` (other
+// searches' frames_on_path) included; and for each stretch the path fits with generic speech or
+// skips: a TextMismatch in result.mismatches and a warning, its syllables spread over the stretch
+// at its loudness dips with confidence 0 (not measured: set_confidences leaves them so). A
+// syllable beside a skipped one whose fit on `path` is an outlier of the chain's joins its mismatch.
+void place_lenient(const SentenceChain& chain, std::size_t chain_index, const std::vector<StateSegment>& path,
+                   const std::vector<std::vector<SyllableFrames>>& other_frames, const EmissionScores& scores,
                    const FeatureTrack& track, const LoudnessProfile& loudness, Timeline& result,
-                   std::vector<double>& evidence);
+                   std::vector<SyllableEvidence>& evidence);
 
 }  // namespace talkface::detail
 

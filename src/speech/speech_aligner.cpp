@@ -152,15 +152,15 @@ Reestimation reestimate(const FeatureTrack& track, const LoudnessProfile& loudne
 }
 
 // The final pass over one chain, on the re-estimated models: its syllables placed in `result`
-// (with `other_paths` of it weighing in on their confidences), what the checks judge of each of
+// (with `other_frames`, where other searches of it place them, weighing in on their confidences), what the checks judge of each of
 // its sentences measured into `metrics`, and its path checked (check_path) when `is_checked`.
 void measure_chain(const SentenceChain& chain, std::size_t w, const std::vector<StateSegment>& path,
-                   const std::vector<std::vector<StateSegment>>& other_paths,
+                   const std::vector<std::vector<SyllableFrames>>& other_frames,
                    const std::vector<float>& observations, const Reestimation& learned, std::size_t spoken_sentences,
                    const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
-                   EmissionScores& scores, ViterbiWorkspace& workspace, Timeline& result, std::vector<double>& evidence,
+                   EmissionScores& scores, ViterbiWorkspace& workspace, Timeline& result, std::vector<SyllableEvidence>& evidence,
                    std::vector<FrameSpan>& spans, std::vector<SentenceMetrics>& metrics, bool is_checked) {
-    place_syllables(chain, path, other_paths, scores, track, result, evidence);
+    place_syllables(chain, w, path, other_frames, scores, track, result, evidence);
     for (const auto& [k, share] : split_by_sentence(chain, path)) {
         if (chain.is_block()) spans[k] = aligned_span(result, chain, k);
         metrics[k].fit = speech_fit(chain, share, scores);
@@ -273,7 +273,7 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
     result.duration_s = track.duration_s;
     std::vector<SentenceMetrics>& metrics = aligned.metrics;
     metrics.assign(spans.size(), SentenceMetrics());
-    std::vector<double> evidence(transcript.syllables.size(), std::numeric_limits<double>::quiet_NaN());
+    std::vector<SyllableEvidence> evidence(transcript.syllables.size());
     std::vector<float> observations;
     EmissionScores scores;
     ViterbiWorkspace workspace;
@@ -299,7 +299,15 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
                 forbid_states(chain, generic);
                 path = align_chain(chain, scores, workspace, scores.frame_count, transcript);
             }
-            place_lenient(chain, path, scores, track, loudness, result, evidence);
+            // The other searches whose starts weigh in (syllable_steadiness), as for a plain chain:
+            // the lenient chain searched again with the sounds weighing less, and, where the path
+            // takes the text whole (no mismatch), the last round's path of the plain chain, the
+            // same text on the models one round older. Beside a mismatch the plain path is another
+            // reading of the speech (the text said whole), not an opinion on the lenient one.
+            std::vector<std::vector<SyllableFrames>> other_frames = {frames_on_path(
+                chain, viterbi_align(chain.states, scores, workspace, scores.frame_count, kLightSoundsWeight))};
+            if (takes_text_whole(chain, path)) other_frames.push_back(frames_on_path(chains[w], learned.last_paths[w]));
+            place_lenient(chain, w, path, other_frames, scores, track, loudness, result, evidence);
             report_pass(progress, kReestimationRounds, w, chains.size());
             continue;
         }
@@ -307,9 +315,10 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
         aligned.has_long_unmarked_pause = aligned.has_long_unmarked_pause || has_long_unmarked_pause(chains[w], path);
         // The last round's path, and the search again with the sounds weighing less: where they
         // start a syllable elsewhere, the sounds did not hold it there.
-        const std::vector<std::vector<StateSegment>> other_paths = {
-            learned.last_paths[w], viterbi_align(chains[w].states, scores, workspace, scores.frame_count, kLightSoundsWeight)};
-        measure_chain(chains[w], w, path, other_paths, observations, learned, spoken_sentences, track, loudness, transcript,
+        const std::vector<std::vector<SyllableFrames>> other_frames = {
+            frames_on_path(chains[w], learned.last_paths[w]),
+            frames_on_path(chains[w], viterbi_align(chains[w].states, scores, workspace, scores.frame_count, kLightSoundsWeight))};
+        measure_chain(chains[w], w, path, other_frames, observations, learned, spoken_sentences, track, loudness, transcript,
                       scores, workspace, result, evidence, spans, metrics, is_checked);
         report_pass(progress, kReestimationRounds, w, chains.size());
     }

@@ -48,9 +48,9 @@ std::size_t voiced_join_start(const StateSegment& before, PhoneClass before_clas
     return start;
 }
 
-void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>& path,
-                     const std::vector<std::vector<StateSegment>>& other_paths, const EmissionScores& scores,
-                     const FeatureTrack& track, Timeline& result, std::vector<double>& evidence) {
+void place_syllables(const SentenceChain& chain, std::size_t chain_index, const std::vector<StateSegment>& path,
+                     const std::vector<std::vector<SyllableFrames>>& other_frames, const EmissionScores& scores,
+                     const FeatureTrack& track, Timeline& result, std::vector<SyllableEvidence>& evidence) {
     // The last frame may run past the audio's last sample: no time is later than the audio's end.
     auto time_s = [&](std::size_t frame) {
         return std::min(track.duration_s, frame_time_s(chain.searched.first_frame + frame));
@@ -106,13 +106,11 @@ void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>
         syllable.final_start_s = time_s(final_frame == first ? start : final_frame);
         frames[local] = {first, std::max(end, first + 1)};
     }
-    std::vector<double> fits = syllable_fits(chain, path, scores, frames);
+    const std::vector<SyllableFit> fits = syllable_fit_parts(chain, path, scores, frames);
     const std::vector<double> timing = syllable_timing(chain, path, scores, frames);
-    for (std::size_t local = 0; local < fits.size(); ++local) fits[local] += timing[local];
-    const auto placed = syllable_evidence(fits);
-    const auto steadiness = syllable_steadiness(chain, path, other_paths);
+    const std::vector<double> steadiness = syllable_steadiness(frames_on_path(chain, path), other_frames);
     for (std::size_t local = 0; local < chain.syllables.size(); ++local)
-        evidence[chain.syllable_indices[local]] = placed[local] + steadiness[local];
+        evidence[chain.syllable_indices[local]] = {true, chain_index, fits[local], timing[local], steadiness[local]};
 }
 
 std::vector<AlignedStretch> stretches_of(const SentenceChain& chain, const std::vector<StateSegment>& path) {

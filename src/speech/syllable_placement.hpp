@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "speech/alignment_checks.hpp"
+#include "speech/alignment_confidence.hpp"
 #include "speech/frame_features.hpp"
 #include "speech/hsmm.hpp"
 #include "speech/sentence_chains.hpp"
@@ -14,14 +15,14 @@
 
 namespace talkface::detail {
 
-// Writes the syllables of one aligned chain into `result` (times in seconds of the recording),
-// and the evidence of their places into `evidence` (per syllable of the transcript), from which
-// set_confidences gives their confidences once every chain is placed; `other_paths` (of the same
-// chain, on the same frames; may be none) weigh in by where they start each syllable
-// (syllable_steadiness).
-void place_syllables(const SentenceChain& chain, const std::vector<StateSegment>& path,
-                     const std::vector<std::vector<StateSegment>>& other_paths, const EmissionScores& scores,
-                     const FeatureTrack& track, Timeline& result, std::vector<double>& evidence);
+// Writes the syllables of one aligned chain (the `chain_index`th) into `result` (times in seconds
+// of the recording), and the evidence of their places into `evidence` (per syllable of the
+// transcript), from which set_confidences gives their confidences once every chain is placed;
+// `other_frames` (per other search of the same chain's syllables on the same frames, frames_on_path;
+// may be none) weigh in by where they start each syllable (syllable_steadiness).
+void place_syllables(const SentenceChain& chain, std::size_t chain_index, const std::vector<StateSegment>& path,
+                     const std::vector<std::vector<SyllableFrames>>& other_frames, const EmissionScores& scores,
+                     const FeatureTrack& track, Timeline& result, std::vector<SyllableEvidence>& evidence);
 
 // Where a voiced join starts (a syllable whose initial is m n l r or none, its first state
 // `first` right after the vowel or nasal `before` of the syllable before, no pause between). The

@@ -147,7 +147,7 @@ TEST_SUITE("human speech") {
         CHECK(share_within(errors, 0.050) >= 0.7);
         // A syllable far off says so: its confidence is below the phrase's typical one. (Under
         // kLowAlignmentConfidence it need not be: calibrated on the recording, that threshold
-        // catches about half the syllables more than 100 ms off (57% of bench/'s human tuning
+        // catches about half the syllables more than 100 ms off (52% of bench/'s human tuning
         // ones) at one false alarm in ten.)
         if (errors[worst] > 0.100) {
             std::vector<double> confidences;
