@@ -435,8 +435,8 @@ private:
                 append(read_words(detail::digit_words(part.text, detail::is_named_service_number(part.text))));
             } else if (detail::is_all_capitals(part.text)) {
                 append(latin_word_syllables(part.text, at));
-            } else if (auto pinyin = starts_as_pinyin_only(part.text) ? address_pinyin(part.text) : std::nullopt) {
-                append(std::move(*pinyin));
+            } else if (auto name_pinyin = starts_as_pinyin_only(part.text) ? address_pinyin(part.text) : std::nullopt) {
+                append(std::move(*name_pinyin));
             } else if (auto found = detail::english_word_syllables(part.text)) {
                 append(said_syllables(*found));
             } else if (constexpr std::size_t kLongestSpelled = 3;
