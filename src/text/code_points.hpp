@@ -23,8 +23,11 @@ std::vector<CodePoint> decode_utf8(std::string_view text, const std::string& sou
 
 // Full-width ASCII forms (！？，Ａ１％) behave as their ASCII counterparts, and so does the ratio sign
 // ∶ (U+2236), which GB/T 15834 and news write for a colon between numbers (1∶0击败, 比例尺1∶50000).
+// Subscript digits are digits: a chemical formula's (CO₂ H₂O, read as CO2 H2O are, C O 二) and a
+// lesson's indices (x₁ x 一), as teachers read them (session 14; they were skipped with a warning).
 inline char32_t ascii_form(char32_t c) {
     if (c == 0x2236) return ':';
+    if (c >= 0x2080 && c <= 0x2089) return c - 0x2080 + '0';
     return c >= 0xFF01 && c <= 0xFF5E ? c - 0xFEE0 : c;
 }
 

@@ -42,11 +42,12 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers
-// say as words, read by the dictionary (TOP 10 top 十, PRO MAX, BOSS战, LOGO, HarmonyOS NEXT). Four or fewer
+// say as words, read by the dictionary (TOP 10 top 十, PRO MAX, BOSS战, LOGO, HarmonyOS NEXT, and a video
+// site's UP主, its uploader, a pu zhu, since session 14: it was spelled, you pi). Four or fewer
 // capitals are otherwise spelled: the dictionary has WHO, LED, CIA, PET, CAD, RAM as words too,
 // and those are acronyms in a Mandarin text, spelled (docs/written-forms.md).
 constexpr std::string_view kWordsInCapitals[] = {"top", "max", "pro", "mini", "plus", "boss", "logo", "bug", "ace",
-                                                   "next"};
+                                                   "next", "up"};
 
 std::string lower_case(std::string_view word) {
     std::string lower;

@@ -136,6 +136,23 @@ std::vector<CodePoint> width_folded(const std::vector<CodePoint>& text) {
     return folded;
 }
 
+// Whether the character next to a token (at `edge - 1` before it, step -1, or at `edge` after it,
+// step 1; spaces skipped) is a sign a formula writes between or before terms (= < > ≈ ≠ ≤ ≥ + ×
+// ÷ ∠ ⊥ ∥).
+bool touches_formula_sign(const std::vector<CodePoint>& text, std::size_t edge, int step) {
+    auto k = edge;
+    if (step < 0) {
+        while (k > 0 && text[k - 1].value == ' ') --k;
+        if (k == 0) return false;
+        --k;
+    } else {
+        while (k < text.size() && text[k].value == ' ') ++k;
+        if (k == text.size()) return false;
+    }
+    return std::u32string_view(U"=<>+×÷≈≠≤≥∠⊥∥").find(text[k].value) !=
+           std::u32string_view::npos;
+}
+
 // What a run of Latin letters spells, in ASCII (ｉＰｈｏｎｅ: iPhone), for the tables.
 std::string latin_spelling(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
     std::string spelling;
@@ -304,6 +321,11 @@ private:
             add_form(text, i, i + 1, read_words("每"));
             return i + 1;
         }
+        if (auto power = detail::read_power(text, i)) {  // after a letter or a bracket (x⁴, x^2)
+            form_warnings_ = timeline_.warnings.size();
+            add_form(text, i, power->end, read_words(power->words));
+            return power->end;
+        }
         if (const auto sign = detail::said_math_sign(text, i); !sign.empty()) {
             form_warnings_ = timeline_.warnings.size();
             add_form(text, i, i + 1, read_words(std::string(sign)));
@@ -345,7 +367,12 @@ private:
             has_han_ && (detail::is_all_capitals(letters) ||
                          (!has_tone_digit(token) && !starts_as_pinyin_only(letters) &&
                           detail::english_word_syllables(latin_spelling(text, start, end))));
-        if (options_.read_pinyin && looks_like_pinyin(token) && !is_english_among_han) syllables = split_pinyin(token);
+        // Capitals beside a formula's sign are a lesson's letters in a line without Chinese
+        // characters too (∠A=30° 角 A 等于三十度; session 14: A was the pinyin a).
+        const bool is_formula_letter = detail::is_all_capitals(letters) && !has_tone_digit(token) &&
+                                       (touches_formula_sign(text, start, -1) || touches_formula_sign(text, end, 1));
+        if (options_.read_pinyin && looks_like_pinyin(token) && !is_english_among_han && !is_formula_letter)
+            syllables = split_pinyin(token);
         if (!syllables) return read_latin(text, start);
         for (const auto& c : token) append_text(c.text);
         for (auto& syllable : *syllables)
@@ -380,6 +407,14 @@ private:
                 word = joined;
                 end = second_end;
             }
+        }
+        // A chat's laugh, h written three or more times (hhh, hhhhh), is read 哈 for each h.
+        constexpr std::size_t kShortestLaugh = 3;
+        if (word.size() >= kShortestLaugh && word.find_first_not_of('h') == std::string::npos) {
+            std::string laugh;
+            for (std::size_t k = 0; k < word.size(); ++k) laugh += "哈";
+            add_form(text, start, end, read_words(laugh));
+            return end;
         }
         if (auto number = number_sign(text, word, end)) {
             add_form(text, start, number->first, number->second);

@@ -348,7 +348,21 @@ constexpr Unit kUnits[] = {
     {"MWh", "兆瓦时"}, {"GWh", "吉瓦时"}, {"TWh", "太瓦时"}, {"kV", "千伏"}, {"mA", "毫安"}, {"Pa", "帕"},
     {"hPa", "百帕"}, {"kPa", "千帕"}, {"MPa", "兆帕"}, {"kbps", "千比特每秒"}, {"Mbps", "兆比特每秒"},
     {"Gbps", "吉比特每秒"}, {"mol", "摩尔"}, {"mmol", "毫摩尔"}, {"kcal", "千卡"},
+    // Session 14: the units a physics lesson writes, by the names it reads them by (220V 二百二十伏
+    // was there): 3.6×10⁶J 焦耳, 20N 牛, 0.5A 安, 10Ω 欧 (the Greek capital or the ohm sign), and
+    // the kilowatt-hour with its product dot (1kW·h 一千瓦时, as kWh is). J N A alone are units only
+    // where no Chinese word but 的 follows them (5A景区, a grade, and 3A游戏 are said 五A, 三A).
+    {"J", "焦耳"}, {"kJ", "千焦"}, {"N", "牛"}, {"A", "安"}, {"Ω", "欧"}, {"Ω", "欧"}, {"kΩ", "千欧"},
+    {"kW·h", "千瓦时"}, {"kW⋅h", "千瓦时"},
 };
+
+// A unit of one capital (J N A) that a grade or a name also writes after a number: a unit only
+// before 的 or anything but a Chinese character (0.5A。, 20N的力; not 5A景区).
+bool is_lone_capital_unit_at(const std::vector<CodePoint>& text, const Unit& unit, std::size_t end) {
+    if (unit.written != "J" && unit.written != "N" && unit.written != "A") return true;
+    const auto next = value_at(text, end);
+    return next == U'的' || next < 0x3400 || next > 0x9FFF;
+}
 
 // The unit written at text[i] (after at most one space when it is Latin), or nullptr.
 const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size_t& end) {
@@ -373,6 +387,7 @@ const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size
             (is_ascii_letter(value_at(text, k)) || is_digit_at(text, k))) {
             continue;
         }
+        if (!is_lone_capital_unit_at(text, unit, k)) continue;
         if (best == nullptr || unit.written.size() > best->written.size()) {
             best = &unit;
             end = k;
@@ -650,6 +665,26 @@ std::optional<SpokenForm> read_dashed_digits(const std::vector<CodePoint>& text,
     return form;
 }
 
+// A dash before a group of digits with a leading zero (A2024-0315, a document's, a case's or a
+// product's number) joins a code's parts: no count is written with a leading zero, so it is no
+// range. Each part is said digit by digit and the dash 杠, as codes are read out (session 14; it
+// was 到). A year and a month (2024-03) are left as they were.
+std::optional<SpokenForm> read_code_with_dash(const std::vector<CodePoint>& text, const WrittenNumber& first) {
+    if (first.has_point || first.has_separators || !is_dash(value_at(text, first.end)) ||
+        !is_digit_at(text, first.end + 1)) {
+        return std::nullopt;
+    }
+    auto i = first.end + 1;
+    const auto second = digits_from(text, i);
+    constexpr std::size_t kYearDigits = 4;
+    const bool year_and_month = first.whole.size() == kYearDigits && second.size() == 2 && is_month_and_day(second, "1");
+    if (second.size() < 2 || second.front() != '0' || year_and_month || value_at(text, i) == '.') return std::nullopt;
+    SpokenForm form;
+    form.words = digit_words(first.whole) + "杠" + digit_words(second);
+    form.end = i;
+    return form;
+}
+
 // Whether a range mark at `mark` follows a date or a clock time (9月1日-9月5日, 3点-5点, 12:00-14:00):
 // the first part of a range that ended the form before the mark, so the mark is 到, not a sign.
 bool follows_date_or_time(const std::vector<CodePoint>& text, std::size_t mark) {
@@ -703,12 +738,15 @@ bool follows_glued_name(const std::vector<CodePoint>& text, std::size_t start) {
     return i < start && has_small;
 }
 
-// Right after the Chinese name of an aircraft's maker (波音737, 空客 320): its model's number.
-bool follows_aircraft_maker(const std::vector<CodePoint>& text, std::size_t start) {
+// Right after the Chinese name of an aircraft's maker (波音737, 空客 320) or of a chip's series
+// (天玑9400 天玑九四零零, 骁龙888, 麒麟990, 鲲鹏920, 昇腾910, as reviews and news say them; session 14,
+// they counted): its model's number.
+bool follows_maker_name(const std::vector<CodePoint>& text, std::size_t start) {
     auto i = start;
     if (i > 0 && text[i - 1].value == ' ') --i;
     const auto before = text_between(text, i >= 2 ? i - 2 : 0, i);
-    for (const std::string_view maker : {"波音", "空客", "麦道", "麥道", "商飞", "商飛"})
+    for (const std::string_view maker : {"波音", "空客", "麦道", "麥道", "商飞", "商飛", "天玑", "天璣", "骁龙", "驍龍",
+                                         "麒麟", "鲲鹏", "鯤鵬", "昇腾", "昇騰", "飞腾", "飛騰", "龙芯", "龍芯"})
         if (before == maker) return true;
     return false;
 }
@@ -1028,7 +1066,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     const auto number = parse_number(text, i);
     context.is_named = follows_name_word(text, start);
     context.is_model = sign_words.empty() && currency == nullptr &&
-                       (follows_model_name(text, start) || follows_aircraft_maker(text, start) ||
+                       (follows_model_name(text, start) || follows_maker_name(text, start) ||
                         follows_glued_name(text, start));
     context.is_train = context.is_model && !number.has_point && !number.has_separators &&
                        (is_train_number(text, start, number.end) || is_flight_number(text, start, number.end));
@@ -1068,7 +1106,18 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         return join_two(second, "比", context);
     }
     if (is_one_of(value_at(text, number.end), U"×*") && is_digit_at(text, number.end + 1) && currency == nullptr) {
-        return join_two(parse_number(text, number.end + 1), "乘", {});
+        join_two(parse_number(text, number.end + 1), "乘", {});
+        // Scientific notation (3×10⁸m/s 三乘十的八次方米每秒): the power and a unit after it go with it.
+        if (auto power = read_power(text, form.end)) {
+            form.words += power->words;
+            form.end = power->end;
+            std::size_t unit_end = form.end;
+            if (const Unit* unit = unit_at(text, form.end, unit_end); unit != nullptr && unit->written != "%") {
+                form.words += unit->words;
+                form.end = unit_end;
+            }
+        }
+        return form;
     }
     if (sign_words.empty() && currency == nullptr) {
         if (auto day = read_dotted_day(text, number)) return day;
@@ -1076,6 +1125,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (auto date = read_numeric_date(text, number)) return date;
         if (auto season = read_season(text, number)) return season;
         if (auto digits = read_dashed_digits(text, number, context.is_phone)) return digits;
+        if (auto code = read_code_with_dash(text, number)) return code;
         if (is_dash(value_at(text, number.end)) && is_digit_at(text, number.end + 1)) {
             auto second = parse_number(text, number.end + 1);
             // A measure word after the pair makes it a range (3-5天后获胜), whatever the clause says.
@@ -1142,9 +1192,17 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         }
     }
     auto end = numbers.back().end;
+    // A power after one number (10⁵ 十的五次方, 2^10) is said before the unit after it (10⁵Pa).
+    std::string power_words;
+    if (numbers.size() == 1) {
+        if (auto power = read_power(text, end)) {
+            power_words = std::move(power->words);
+            end = power->end;
+        }
+    }
     std::size_t unit_end = end;
     const Unit* unit = unit_at(text, end, unit_end);
-    context.next = value_at(text, end);
+    context.next = value_at(text, numbers.back().end);
     // A Latin unit after the number's 万 or 亿 (1.6万km² 一点六万平方公里) is said after it.
     std::string magnitude_words;
     if (unit == nullptr && currency == nullptr && is_one_of(context.next, U"万萬亿億")) {
@@ -1154,7 +1212,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
             magnitude_words = is_one_of(context.next, U"万萬") ? "万" : "亿";
         }
     }
-    context.has_unit = (unit != nullptr && unit->written != "%") || is_byte_unit_at(text, end);
+    context.has_unit = power_words.empty() && ((unit != nullptr && unit->written != "%") || is_byte_unit_at(text, end));
     std::string unit_words = unit == nullptr ? "" : unit->words;
     const bool is_percent = unit != nullptr && unit->written == "%";
     const bool is_per_mille = end < text.size() && text[end].value == 0x2030 /*‰*/;
@@ -1218,7 +1276,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         }
     }
     if (is_per_mille) end += 1;
-    form.words += magnitude_words + unit_words;
+    form.words += power_words + magnitude_words + unit_words;
     if (currency != nullptr) {
         // $5万 is 五万美元: the magnitude comes before the currency's name.
         if (is_one_of(value_at(text, end), U"万萬亿億千")) {
@@ -1310,17 +1368,27 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
     const char32_t right = value_at(text, after);
     const bool is_han_left = left >= 0x3400 && left <= 0x9FFF;
     const bool is_han_right = right >= 0x3400 && right <= 0x9FFF;
+    // A relation's right side may be a signed term (x=-2 x等于负二, -3<-1 负三小于负一): the sign is
+    // the number's, read with it.
+    const bool signed_right = (is_dash(right) || right == '+') && is_formula_term(value_at(text, after + 1));
+    const bool relation_right = is_formula_term(right) || signed_right;
     const bool between_terms = is_formula_term(left) && is_formula_term(right);
     switch (sign) {
         case '=': case 0x2248: case 0x2260: {  // = ≈ ≠, between a character and a term too (答案是x=5, 等于号)
-            if (!(is_formula_term(left) || is_han_left) || !(is_formula_term(right) || is_han_right)) return {};
+            if (!(is_formula_term(left) || is_han_left) || !(relation_right || is_han_right)) return {};
             return sign == '=' ? "等于" : sign == 0x2248 ? "约等于" : "不等于";
         }
-        case '>': return between_terms ? "大于" : "";  // ASCII < > around words are brackets: <标题>
-        case '<': return between_terms ? "小于" : "";
+        // ASCII < > around words are brackets: <标题>
+        case '>': return is_formula_term(left) && relation_right ? "大于" : "";
+        case '<': return is_formula_term(left) && relation_right ? "小于" : "";
         // ≥ and ≤ are never brackets: after a character too, before a term (含量≥80mg 含量大于等于八十毫克).
-        case 0x2265: return (is_formula_term(left) || is_han_left) && is_formula_term(right) ? "大于等于" : "";  // ≥
-        case 0x2264: return (is_formula_term(left) || is_han_left) && is_formula_term(right) ? "小于等于" : "";  // ≤
+        case 0x2265: return (is_formula_term(left) || is_han_left) && relation_right ? "大于等于" : "";  // ≥
+        case 0x2264: return (is_formula_term(left) || is_han_left) && relation_right ? "小于等于" : "";  // ≤
+        // Geometry's signs as a lesson reads them (session 14): ∠A 角A, before a letter or a digit
+        // (∠1); AB⊥CD AB垂直于CD, AB∥CD AB平行于CD, between two terms.
+        case 0x2220: return is_formula_term(right) ? "角" : "";           // ∠
+        case 0x22A5: return between_terms ? "垂直于" : "";                 // ⊥
+        case 0x2225: case 0x2016: return between_terms ? "平行于" : "";    // ∥, and ‖ written for it
         // + between two digits (1+1), two letters (A+B) or in a formula (x+1=3); - only in a formula,
         // since a hyphen joins words and numbers elsewhere (Wi-Fi, B-52).
         case '+': {
@@ -1348,6 +1416,58 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
         }
         default: return {};
     }
+}
+
+namespace {
+
+// The digit a superscript writes (⁰ ¹ ² ³ ⁴ ... ⁹), or -1.
+int superscript_digit(char32_t c) {
+    switch (c) {
+        case 0x2070: return 0;
+        case 0xB9: return 1;
+        case 0xB2: return 2;
+        case 0xB3: return 3;
+        default: return c >= 0x2074 && c <= 0x2079 ? static_cast<int>(c - 0x2070) : -1;
+    }
+}
+
+}  // namespace
+
+std::optional<SpokenForm> read_power(const std::vector<CodePoint>& text, std::size_t i) {
+    if (i == 0 || !is_formula_term(value_at(text, i - 1))) return std::nullopt;
+    bool negative = false;
+    std::string exponent;
+    auto k = i;
+    if (value_at(text, k) == '^') {
+        ++k;
+        if (is_dash(value_at(text, k))) {
+            negative = true;
+            ++k;
+        }
+        exponent = digits_from(text, k);
+    } else {
+        if (value_at(text, k) == 0x207B /*⁻*/) {
+            negative = true;
+            ++k;
+        }
+        for (int digit = superscript_digit(value_at(text, k)); digit >= 0; digit = superscript_digit(value_at(text, k))) {
+            exponent += static_cast<char>('0' + digit);
+            ++k;
+        }
+        // A lone ² or ³ is said_math_sign's (平方 立方, and m² is a unit's).
+        if (!negative && (exponent == "2" || exponent == "3")) return std::nullopt;
+    }
+    constexpr std::size_t kLongestExponent = 3;
+    if (exponent.empty() || exponent.size() > kLongestExponent) return std::nullopt;
+    SpokenForm form;
+    form.end = k;
+    const bool after_digit = is_digit_at(text, i - 1);
+    if (!negative && (exponent == "2" || exponent == "3")) {
+        form.words = std::string(after_digit ? "的" : "") + (exponent == "2" ? "平方" : "立方");
+    } else {
+        form.words = std::string("的") + (negative ? "负" : "") + cardinal_words(exponent, false) + "次方";
+    }
+    return form;
 }
 
 }  // namespace talkface::detail

@@ -47,6 +47,12 @@ bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i);
 // a Greek letter is said by its name (π 派, α 阿尔法). A row of = under a heading is not said.
 std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t i);
 
+// A power written right after a term (a digit, a letter, a closing bracket) at text[i - 1]:
+// superscript digits (10⁸ 十的八次方, 10⁻³ 十的负三次方, x⁴ x的四次方) or a caret and digits as typed
+// (2^10 二的十次方, x^2 x平方, as x² is); a lone ² or ³ is said_math_sign's. nullopt where none starts
+// at text[i]. Session 14: the superscripts were skipped with a warning, the caret too.
+std::optional<SpokenForm> read_power(const std::vector<CodePoint>& text, std::size_t i);
+
 // True for a service number that is a name wherever it does not count (12306, 12315, 95588: five
 // digits), said digit by digit with 幺 for 1 also in a web address (www.12306.cn).
 bool is_named_service_number(const std::string& digits);

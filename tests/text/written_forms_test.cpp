@@ -669,6 +669,45 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("a lesson's powers, subscripts, signed terms after a relation, geometry's signs and physics units") {
+        check_cases({
+            {"10的5次方写作10⁵。", "十的五次方写作十的五次方"},
+            {"10⁻³", "十的负三次方"},
+            {"10¹²", "十的十二次方"},
+            {"光速约为3×10⁸m/s", "光速约为三乘十的八次方米每秒"},
+            {"约为1.01×10⁵Pa", "约为一点零一乘十的五次方帕"},
+            {"用2^10表示", "用二的十次方表示"},
+            {"x⁴", "ai ke si的四次方"},
+            {"x^2+1", "ai ke si平方加一"},
+            {"3²", "三的平方"},
+            {"面积为5m²", "面积为五平方米"},
+            {"化学式是CO₂", "化学式是 xi ou二"},
+            {"x₁和x₂", "ai ke si一和 ai ke si二"},
+            {"x=-2是方程的解", "ai ke si等于负二是方程的解"},
+            {"比较：-3<-1", "比较负三小于负一"},
+            {"∠A=30°", "角 ei等于三十度"},
+            {"AB⊥CD", "ei bi垂直于 xi di"},
+            {"1kW·h的电能", "一千瓦时的电能"},
+            {"等于3.6×10⁶J", "等于三点六乘十的六次方焦耳"},
+            {"重力是20N", "重力是二十牛"},
+            {"电流为0.5A。", "电流为零点五安"},
+            {"电阻R=10Ω", "电阻 a er等于十欧"},
+            {"5A景区", "五 ei景区"},
+        });
+    }
+
+    TEST_CASE("a chat's laugh, an uploader, a chip's model and a code's dash") {
+        check_cases({
+            {"hhh你太逗了", "哈哈哈你太逗了"},
+            {"大家好，我是UP主", "大家好我是 a pu主"},
+            {"搭载天玑9400芯片", "搭载天玑九四零零芯片"},
+            {"骁龙865", "骁龙八六五"},
+            {"麒麟9000", "麒麟九千"},
+            {"文件编号为A2024-0315", "文件编号为 ei二零二四杠零三一五"},
+            {"3-5天", "三到五天"},
+        });
+    }
+
     TEST_CASE("a tilde and a topic's # are punctuation, and a symbol without a reading is warned of by its own code point") {
         check_cases({
             {"#春节快乐# 祝大家新年好！", "春节快乐祝大家新年好"},
