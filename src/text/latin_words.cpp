@@ -39,6 +39,9 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     {"app", "ei1 pi1 pi1"},
     // OPPO, a brand written in capitals, is said as a word, 欧珀 (not spelled O P P O).
     {"oppo", "ou1 po1"},
+    // Session 14: Google, which the 1998 dictionary lacks (it was go + ogle, gou ou ge), is said as its
+    // Chinese name 谷歌 is, gu ge, as NVIDIA is 英伟达.
+    {"google", "gu3 ge1"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

@@ -504,14 +504,19 @@ private:
         return syllables;
     }
 
-    // Capitals: an acronym of up to kLongestAcronym letters is spelled (USB, CCTV, NASA); a longer
-    // run is a word where the dictionary has it (NASDAQ) or its spelling can be said (a name in
-    // capitals), and spelled where it cannot (HTTPS: no vowel, WCDMA: four consonants in a row).
+    // Capitals: an acronym of up to three letters is spelled (USB, CEO, WHO: the dictionary's who,
+    // led, pet are words written small); one of four is a word where the dictionary has it, as
+    // English says NASA, NATO, OPEC and APEC, and as Mandarin speakers do after it (session 14; they
+    // were spelled), and spelled where it lacks it (CCTV, HDMI). A longer run is a word where the
+    // dictionary has it (NASDAQ) or its spelling can be said (a name in capitals), and spelled
+    // where it cannot (HTTPS: no vowel, WCDMA: four consonants in a row).
     std::vector<Syllable> read_capitals(const std::string& word) const {
         constexpr std::size_t kLongestAcronym = 4;
         constexpr std::size_t kLongestSaidConsonants = 2;
-        if (word.size() > kLongestAcronym) {
+        if (word.size() >= kLongestAcronym) {
             if (auto found = detail::english_word_syllables(word)) return said_syllables(*found);
+        }
+        if (word.size() > kLongestAcronym) {
             std::size_t consonants = 0, longest = 0;
             for (const char letter : word) {
                 consonants = std::string_view("AEIOUY").find(letter) == std::string_view::npos ? consonants + 1 : 0;

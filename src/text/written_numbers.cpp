@@ -84,7 +84,9 @@ bool takes_liang(char32_t c) {
                         U"周週遍斤米千万萬亿億百项項篇首页頁座所间間节節门門架把支枝根片头頭匹颗顆粒趟套声聲句"
                         U"样樣章口股群批排队隊段堆吨噸升克里码碼毛角点點成分秒小公届屆期美港欧歐英"
                         U"步下回圈眼拳脚腳刀枪槍盒包袋箱桶罐盘盤幅集册冊封轮輪局男女"
-                        U"勺匙滴串束朵棵株盆锅鍋桌副顶頂艘连連");
+                        U"勺匙滴串束朵棵株盆锅鍋桌副顶頂艘连連"
+                        // A record's wins, losses and draws (3局2胜 三局两胜, 2胜1负 两胜一负; session 14).
+                        U"胜勝负負平");
 }
 
 // Words before which a number names a room, a bus route or a house, said digit by digit when it
@@ -353,7 +355,7 @@ constexpr Unit kUnits[] = {
     // the kilowatt-hour with its product dot (1kW·h 一千瓦时, as kWh is). J N A alone are units only
     // where no Chinese word but 的 follows them (5A景区, a grade, and 3A游戏 are said 五A, 三A).
     {"J", "焦耳"}, {"kJ", "千焦"}, {"N", "牛"}, {"A", "安"}, {"Ω", "欧"}, {"Ω", "欧"}, {"kΩ", "千欧"},
-    {"kW·h", "千瓦时"}, {"kW⋅h", "千瓦时"},
+    {"kW·h", "千瓦时"}, {"kW⋅h", "千瓦时"}, {"m/s²", "米每二次方秒"},
 };
 
 // A unit of one capital (J N A) that a grade or a name also writes after a number: a unit only
@@ -429,6 +431,18 @@ const Currency* currency_at(const std::vector<CodePoint>& text, std::size_t i, s
 
 constexpr const char* kTooLongWarning = "a number of more than 16 digits; read digit by digit";
 
+// Whether text[start, end) stands alone as a clause: at the start of the text or after a mark that
+// ends a clause (not a colon, which introduces a value), and before one or the end.
+bool stands_alone(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    constexpr std::u32string_view kClauseMarks = U"，,。.！!？?～~…\n";
+    auto before = start;
+    while (before > 0 && text[before - 1].value == ' ') --before;
+    auto after = end;
+    while (after < text.size() && text[after].value == ' ') ++after;
+    return (before == 0 || kClauseMarks.find(text[before - 1].value) != std::u32string_view::npos) &&
+           (after == text.size() || kClauseMarks.find(text[after].value) != std::u32string_view::npos);
+}
+
 // How one number is said, given what follows it.
 struct NumberContext {
     char32_t next = 0;          // the code point after the form ('%' counts as the unit)
@@ -450,6 +464,8 @@ struct NumberContext {
     bool is_code = false;        // a stock's code, an index's or a programme's number (（600519）, 日经225, 985高校)
     bool is_version = false;     // after a software's name or a v (Python 3.12, v2.15): a version
     bool names_year = false;     // a year before a word it names (2025财年, 2026款)
+    bool after_laugh = false;    // right after a laugh's character (哈哈233)
+    bool is_whole_clause = false;  // the number alone between clause marks (88，下次再聊)
 };
 
 struct SaidNumber {
@@ -515,7 +531,15 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
         // times over, as a chat cheers (666 六六六, 888), are said digit by digit.
         // So is a chat's laugh, 2333 (a 2 and three or more 3s: 二三三三, after an emoticon's number).
         const bool is_one_digit_over = whole.size() >= 3 && whole.find_first_not_of(whole.front()) == std::string::npos;
-        const bool is_laugh = whole.size() >= 4 && whole.front() == '2' && whole.find_first_not_of('3', 1) == std::string::npos;
+        // A chat's goodbye, 88 or 886 (拜拜, 拜拜了) as a clause of its own (88，下次再聊), is said digit by
+        // digit, 八八 (session 14); a bare 88 after a colon or in a clause counts (得分：88, 考了88分).
+        if ((whole == "88" || whole == "886") && context.is_whole_clause) {
+            said.words = digit_words(whole);
+            return said;
+        }
+        // 233 too, right after a laugh's character (哈哈哈233, 笑死233; session 14); elsewhere it counts (233人).
+        const bool is_laugh = whole.front() == '2' && whole.find_first_not_of('3', 1) == std::string::npos &&
+                              (whole.size() >= 4 || (whole.size() == 3 && context.after_laugh));
         // A filter grade is a name before any word (N95口罩: 口 is no measure word there). A round
         // thousand after capitals is a tier, not a model (WTA 1000 一千, RTX 5000 五千).
         const bool is_round_thousands = whole.size() >= 4 && whole.compare(whole.size() - 3, 3, "000") == 0;
@@ -997,6 +1021,13 @@ std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text,
                               ends_with(named, "：") || ends_with(named, ":") || ends_with(named, " ")))
         named.erase(named.size() - (named.back() == ':' || named.back() == ' ' ? 1 : std::string_view("为").size()));
     for (const std::string_view word : {"时间", "時間", "日期"}) in_time = in_time || ends_with(named, word);
+    // In brackets after a day of the week (本週三（12/4）, 周五(3/8)), as news dates an event.
+    if (ends_with(named, "（") || ends_with(named, "(")) {
+        named.erase(named.size() - (named.back() == '(' ? 1 : std::string_view("（").size()));
+        for (const std::string_view week : {"周", "週", "星期", "礼拜", "禮拜"})
+            for (const std::string_view weekday : {"一", "二", "三", "四", "五", "六", "日", "天"})
+                in_time = in_time || ends_with(named, std::string(week) + std::string(weekday));
+    }
     for (const std::string_view word : {"于", "於"}) {
         if (!ends_with(before, word)) continue;
         const auto rest = before.substr(0, before.size() - word.size());
@@ -1082,6 +1113,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     context.is_service_call = is_service_call(text, start, number.end);
     context.is_code = sign_words.empty() && currency == nullptr && names_by_its_digits(text, i, number);
     context.is_version = sign_words.empty() && currency == nullptr && follows_software_name(text, i);
+    context.after_laugh = sign_words.empty() && start > 0 && is_one_of(value_at(text, start - 1), U"哈呵嘿嘻笑死");
+    context.is_whole_clause = sign_words.empty() && currency == nullptr && stands_alone(text, start, number.end);
     context.names_year =
         sign_words.empty() && currency == nullptr && !context.is_ordinal && names_year_before_word(text, number);
     SpokenForm form;
@@ -1105,7 +1138,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         }
         return join_two(second, "比", context);
     }
-    if (is_one_of(value_at(text, number.end), U"×*") && is_digit_at(text, number.end + 1) && currency == nullptr) {
+    // A small x between two numbers is a times sign typed (4x400米接力, 1920x1080), said 乘 as × is.
+    if (is_one_of(value_at(text, number.end), U"×*x") && is_digit_at(text, number.end + 1) && currency == nullptr) {
         join_two(parse_number(text, number.end + 1), "乘", {});
         // Scientific notation (3×10⁸m/s 三乘十的八次方米每秒): the power and a unit after it go with it.
         if (auto power = read_power(text, form.end)) {
@@ -1387,6 +1421,7 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
         // Geometry's signs as a lesson reads them (session 14): ∠A 角A, before a letter or a digit
         // (∠1); AB⊥CD AB垂直于CD, AB∥CD AB平行于CD, between two terms.
         case 0x2220: return is_formula_term(right) ? "角" : "";           // ∠
+        case 0x25B3: return is_ascii_capital(right) ? "三角形" : "";       // △ABC 三角形ABC
         case 0x22A5: return between_terms ? "垂直于" : "";                 // ⊥
         case 0x2225: case 0x2016: return between_terms ? "平行于" : "";    // ∥, and ‖ written for it
         // + between two digits (1+1), two letters (A+B) or in a formula (x+1=3); - only in a formula,
@@ -1395,7 +1430,9 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
             // A letter and a digit too: a sum of capacities (12GB+256GB 十二GB加二百五十六GB), 5G+AI.
             const auto is_alphanumeric = [](char32_t c) { return is_ascii_letter(c) || (c >= '0' && c <= '9'); };
             const bool alphanumeric = is_alphanumeric(left) && is_alphanumeric(right);
-            return between_terms && (alphanumeric || clause_has_relation(text, i)) ? "加" : "";
+            // After a square or a cube, a sum of terms (a²+b²; session 14: said only beside a relation sign).
+            const bool after_power = is_one_of(left, U"\u00B2\u00B3");
+            return between_terms && (alphanumeric || after_power || clause_has_relation(text, i)) ? "加" : "";
         }
         case '-': case 0x2212: return between_terms && clause_has_relation(text, i) ? "减" : "";
         // A * before ST marks a share at risk of delisting (*ST康美), said 星 as market news says it.

@@ -415,7 +415,11 @@ TEST_SUITE("written forms") {
     TEST_CASE("a few capitals are an acronym, a longer run a word where it can be said") {
         check_cases({
             {"CCTV", "xi xi ti wei"},
-            {"NASA", "en ei ai si ei"},
+            {"NASA", "na se"},  // four capitals the dictionary has (session 14)
+            {"APEC会议", "ei pai ke会议"},
+            {"HDMI", "ai qi di ai mu ai"},
+            {"WHO", "da bu liu ai qi ou"},
+            {"Google发布", "gu ge发布"},
             {"HTTPS", "ai qi ti ti pi ai si"},  // no vowel
             {"WCDMA", "da bu liu xi di ai mu ei"},  // four consonants in a row
             {"COVID-19疫情", "kou wei de十九疫情"},
@@ -693,6 +697,11 @@ TEST_SUITE("written forms") {
             {"电流为0.5A。", "电流为零点五安"},
             {"电阻R=10Ω", "电阻 a er等于十欧"},
             {"5A景区", "五 ei景区"},
+            {"在△ABC中", "在三角形 ei bi xi中"},
+            {"g取9.8m/s²", "ji取九点八米每二次方秒"},
+            {"求a²+b²的值", "求 ei平方加 bi平方的值"},
+            {"男子4x400米接力", "男子四乘四百米接力"},
+            {"分辨率1920x1080", "分辨率一千九百二十乘一千零八十"},
         });
     }
 
@@ -705,6 +714,16 @@ TEST_SUITE("written forms") {
             {"麒麟9000", "麒麟九千"},
             {"文件编号为A2024-0315", "文件编号为 ei二零二四杠零三一五"},
             {"3-5天", "三到五天"},
+            {"哈哈哈233", "哈哈哈二三三"},
+            {"共233人", "共二百三十三人"},
+            {"88，下次再聊！", "八八下次再聊"},
+            {"886~", "八八六"},
+            {"他考了88分", "他考了八十八分"},
+            {"得分：88", "得分八十八"},
+            {"三局2胜", "三局两胜"},
+            {"2胜1负", "两胜一负"},
+            {"本週三（12/4）舉行", "本週三十二月四日舉行"},
+            {"周五(3/8)发布", "周五三月八日发布"},
         });
     }
 
