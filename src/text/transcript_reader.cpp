@@ -577,7 +577,7 @@ private:
         return syllables;
     }
 
-    // A word the dictionary lacks as two words it has (facebook: face book, google: go ogle):
+    // A word the dictionary lacks as two words it has (facebook: face book, photoshop: photo shop):
     // closer in length and sound than spelling it. Of the splits, the one whose parts are nearest
     // in length, and among those the longer first part: photoshop is photo shop, not photos hop.
     static std::optional<std::vector<std::string>> read_compound(const std::string& word) {
