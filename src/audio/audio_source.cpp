@@ -1,11 +1,15 @@
 #include "audio/audio_source.hpp"
 
+#include <ogg/ogg.h>
 #include <sndfile.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <map>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -80,8 +84,10 @@ std::size_t bytes_per_frame(const SF_INFO& info) {
 }
 
 // The containers libsndfile reads, by their first bytes: WAV (RIFF, RIFX, RF64, BW64), Wave64,
-// AIFF, AU, CAF, FLAC and Ogg. Everything else (MP3, M4A, video, and what is not audio at all) goes
-// to FFmpeg: libsndfile tries any unknown file as MP3 through mpg123, which prints "Illegal
+// AIFF, AU, CAF and Ogg. FLAC goes to FFmpeg: after a damaged frame libsndfile's FLAC reader stops
+// ("flac decoder lost sync": a scratch lost the rest of the recording), where FFmpeg's finds the next
+// frame and keeps the time between as silence; FLAC is lossless, so both give the same samples.
+// Everything else (MP3, M4A, video, and what is not audio at all) goes to FFmpeg too: libsndfile tries any unknown file as MP3 through mpg123, which prints "Illegal
 // Audio-MPEG-Header" on stderr for bad input, and its MP3 length is an estimate from the first
 // frame's bit rate (sox's MP3s at 22.05 and 44.1 kHz came out "truncated"); FFmpeg reads them to
 // the real end and prints nothing (ffmpeg_source.cpp).
@@ -91,8 +97,45 @@ bool is_sndfile_container(const std::array<char, 12>& header) {
                          start.substr(0, 4) == "BW64") && start.substr(8, 4) == "WAVE";
     const bool is_aiff = start.substr(0, 4) == "FORM" && (start.substr(8, 4) == "AIFF" || start.substr(8, 4) == "AIFC");
     return is_iff || is_aiff || start.substr(0, 4) == "riff" || start.substr(0, 4) == ".snd" ||
-           start.substr(0, 4) == "dns." || start.substr(0, 4) == "caff" || start.substr(0, 4) == "fLaC" ||
-           start.substr(0, 4) == "OggS";
+           start.substr(0, 4) == "dns." || start.substr(0, 4) == "caff" || start.substr(0, 4) == "OggS";
+}
+
+// Whether an Ogg file has a damaged page: bytes that are no page (libogg skips them to the next
+// capture pattern, checking each page's CRC), or a page missing from a stream's numbered sequence.
+// libsndfile drops such a page and goes on with the next, and the time the page held vanishes:
+// every syllable after a scratch came early, and the shortfall was called "truncated". FFmpeg's Ogg
+// reader gives the pages after it their granule positions, and the gap is kept as silence
+// (ffmpeg_source.cpp). A page cut off at the end is not damage here: open_audio_file says the file
+// was cut. One pass over the file's bytes, no decoding.
+bool has_damaged_ogg_page(const std::string& path) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (file == nullptr) return false;
+    ogg_sync_state sync;
+    ogg_sync_init(&sync);
+    std::map<long, long> next_page_of_stream;
+    bool damaged = false;
+    constexpr long kChunkBytes = 1 << 16;
+    while (!damaged) {
+        char* buffer = ogg_sync_buffer(&sync, kChunkBytes);
+        const std::size_t got = buffer ? std::fread(buffer, 1, kChunkBytes, file) : 0;
+        if (got == 0) break;
+        ogg_sync_wrote(&sync, static_cast<long>(got));
+        ogg_page page;
+        for (long seek = 0; !damaged && (seek = ogg_sync_pageseek(&sync, &page)) != 0;) {
+            if (seek < 0) {
+                damaged = true;
+                break;
+            }
+            const long serial = ogg_page_serialno(&page);
+            const long number = ogg_page_pageno(&page);
+            const auto next = next_page_of_stream.find(serial);
+            if (next != next_page_of_stream.end() && next->second != number) damaged = true;
+            next_page_of_stream[serial] = number + 1;
+        }
+    }
+    ogg_sync_clear(&sync);
+    std::fclose(file);
+    return damaged;
 }
 
 class FileSource final : public AudioSource {
@@ -114,11 +157,7 @@ public:
         }
         const sf_count_t got = sf_readf_float(file_, into, static_cast<sf_count_t>(max_frames));
         const auto frames = got > 0 ? static_cast<std::size_t>(got) : 0;
-        for (std::size_t i = 0; channels > 1 && i < frames; ++i) {
-            float sum = 0.0f;
-            for (std::size_t c = 0; c < channels; ++c) sum += interleaved_[i * channels + c];
-            mono[i] = sum / static_cast<float>(channels);
-        }
+        if (channels > 1) mixer_.mix(interleaved_.data(), frames, channels, mono);
         frames_read_ += frames;
         if (frames == 0 && frames_read_ < promised_frames_) {
             const std::string reason = sf_error(file_) != SF_ERR_NO_ERROR ? std::string(": ") + sf_strerror(file_) : "";
@@ -140,6 +179,7 @@ private:
     std::size_t promised_frames_;
     std::size_t frames_read_ = 0;
     std::vector<float> interleaved_;
+    ChannelMixer mixer_;
 };
 
 class ViewSource final : public AudioSource {
@@ -148,12 +188,7 @@ public:
     std::size_t read_frames(float* mono, std::size_t max_frames) override {
         const auto channels = static_cast<std::size_t>(audio_.channel_count);
         const std::size_t frames = std::min(max_frames, audio_.frame_count - position_);
-        const float* in = audio_.samples + position_ * channels;
-        for (std::size_t i = 0; i < frames; ++i) {
-            float sum = 0.0f;
-            for (std::size_t c = 0; c < channels; ++c) sum += in[i * channels + c];
-            mono[i] = sum / static_cast<float>(channels);
-        }
+        mixer_.mix(audio_.samples + position_ * channels, frames, channels, mono);
         position_ += frames;
         return frames;
     }
@@ -165,9 +200,52 @@ private:
     AudioView audio_;
     std::size_t position_ = 0;
     std::string name_ = "audio";
+    ChannelMixer mixer_;
 };
 
 }  // namespace
+
+// How strongly a channel must run against (or with) the first before it is turned over (or back):
+// voices recorded by two microphones correlate at +0.3 to +1 and one inverted at -0.3 to -1; a
+// channel that holds only noise or silence lies near 0 and is added as it is.
+constexpr double kOppositeCorrelation = 0.2;
+// Frames mixed before a channel may be turned over: over a few frames of two channels' independent
+// noise (the dither of espeak-ng's stereo corpus before its speech) the correlation swings past
+// +-0.2 by chance, and turned the second channel over for the first 0.4 s; over 1024 frames its
+// chance spread is 0.03 (1/sqrt(1024)), a sixth of the limit.
+constexpr std::size_t kFramesBeforeJudging = 1024;
+
+void ChannelMixer::mix(const float* interleaved, std::size_t frames, std::size_t channels, float* mono) {
+    if (channels == 1) {
+        std::copy_n(interleaved, frames, mono);
+        return;
+    }
+    if (sign_.size() != channels) {
+        energy_.assign(channels, 0.0);
+        with_first_.assign(channels, 0.0);
+        sign_.assign(channels, 1.0f);
+        first_energy_ = 0.0;
+        frames_mixed_ = 0;
+    }
+    for (std::size_t i = 0; i < frames; ++i) {
+        const float* frame = interleaved + i * channels;
+        const double first = frame[0];
+        first_energy_ += first * first;
+        float sum = frame[0];
+        for (std::size_t c = 1; c < channels; ++c) {
+            const double value = frame[c];
+            energy_[c] += value * value;
+            with_first_[c] += value * first;
+            // |correlation| > kOppositeCorrelation, squared: no square root per sample.
+            if (frames_mixed_ >= kFramesBeforeJudging &&
+                with_first_[c] * with_first_[c] > kOppositeCorrelation * kOppositeCorrelation * first_energy_ * energy_[c])
+                sign_[c] = with_first_[c] < 0.0 ? -1.0f : 1.0f;
+            sum += sign_[c] * frame[c];
+        }
+        mono[i] = sum / static_cast<float>(channels);
+        ++frames_mixed_;
+    }
+}
 
 std::size_t AudioSource::read(float* mono, std::size_t max_frames) {
     const std::size_t frames = read_frames(mono, max_frames);
@@ -204,10 +282,17 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
         throw ParseError(path, 0, 0, "", "unsupported header: " + std::to_string(info.channels) + " channels at " +
                                              std::to_string(info.samplerate) + " Hz");
     }
+    // First: a damaged page can also hide the stream's last page from libsndfile's length.
+    if ((info.format & SF_FORMAT_TYPEMASK) == SF_FORMAT_OGG && has_damaged_ogg_page(path)) {
+        sf_close(file);
+        FfmpegReading reading;
+        reading.keeps_stated_length = true;
+        return open_ffmpeg_file(path, reading);
+    }
     if (info.frames == SF_COUNT_MAX) {
-        // libsndfile found no length: in an Ogg stream, no complete last page (the file was cut);
-        // in a FLAC stream, no sample count (written to a pipe, a valid file). FFmpeg reads the
-        // latter to its real end; the former would be read as far as it goes and never called cut.
+        // libsndfile found no length: in an Ogg stream, no complete last page (the file was cut),
+        // which FFmpeg would read as far as it goes and never call cut; another container that
+        // states no length is FFmpeg's to read to its end.
         const bool is_ogg = (info.format & SF_FORMAT_TYPEMASK) == SF_FORMAT_OGG;
         sf_close(file);
         if (is_ogg)

@@ -1,5 +1,6 @@
-// Audio in, one block at a time, mixed down to mono: from a file through libsndfile (WAV, FLAC,
-// Ogg) or FFmpeg (MP3, AAC/M4A, Opus, a video's sound track), or from samples the caller holds.
+// Audio in, one block at a time, mixed down to mono: from a file through libsndfile (WAV, Ogg) or
+// FFmpeg (FLAC, MP3, AAC/M4A, Opus, a video's sound track, an Ogg file with a damaged page), or
+// from samples the caller holds.
 // Nothing here keeps the whole signal (the memory target of issue #4).
 #ifndef TALKFACE_AUDIO_AUDIO_SOURCE_HPP
 #define TALKFACE_AUDIO_AUDIO_SOURCE_HPP
@@ -12,6 +13,30 @@
 #include "talkface/speech_aligner.hpp"
 
 namespace talkface::detail {
+
+// Mixes frames of interleaved channels down to one, as every reader does. Channels are averaged,
+// but a channel that runs against the first one (a stereo file with one side's polarity inverted,
+// as a miswired microphone or a "wide" effect leaves it) is turned over before it is added: the
+// plain average of a voice and its inverse is nothing, and the recording read as silent. Whether a
+// channel runs against the first is judged on everything mixed so far (their normalised
+// correlation below -kOppositeCorrelation turns it over; above +kOppositeCorrelation turns it back;
+// not before kFramesBeforeJudging frames), so the choice settles at the first second of speech and
+// a block's size never changes it. A file
+// of one channel, or of channels that agree, mixes exactly as the plain average.
+class ChannelMixer {
+public:
+    // `mono[i]` gets the mix of frame i of `interleaved` (`frames` frames of `channels` samples).
+    void mix(const float* interleaved, std::size_t frames, std::size_t channels, float* mono);
+
+private:
+    // Sums over every frame mixed: the first channel's energy, each channel's energy and its
+    // product with the first. Doubles: an hour at 48 kHz is 1.7e8 products.
+    double first_energy_ = 0.0;
+    std::size_t frames_mixed_ = 0;
+    std::vector<double> energy_;
+    std::vector<double> with_first_;
+    std::vector<float> sign_;
+};
 
 class AudioSource {
 public:

@@ -66,7 +66,7 @@ struct ResamplerFreer {
 
 class FfmpegSource final : public AudioSource {
 public:
-    explicit FfmpegSource(std::string path) : path_(std::move(path)) {
+    FfmpegSource(std::string path, const FfmpegReading& reading) : path_(std::move(path)), reading_(reading) {
         quiet_ffmpeg_log();
         AVDictionary* options = nullptr;
         av_dict_set(&options, "format_whitelist", kFormats, 0);
@@ -138,6 +138,7 @@ public:
         while (written < max_frames) {
             if (pending_position_ == pending_.size()) {
                 if (!decode_next_frame()) {
+                    if (fill_lost_end()) continue;
                     check_whole();
                     break;
                 }
@@ -206,6 +207,21 @@ private:
         if (decoded_s >= stated_seconds_ - std::max(kLengthSlackS, kLengthSlackShare * stated_seconds_)) return;
         throw FileError(path_, "truncated: its header says the sound lasts " + seconds_text(stated_seconds_) +
                                    " but the data ends at " + seconds_text(decoded_s));
+    }
+
+    // At the end of a file known to be damaged inside: the sound short of the length its container
+    // states was lost with the damaged pages (the container's last page is whole: a cut file is
+    // refused before it gets here), and is kept as silence. True if there was such sound to fill.
+    bool fill_lost_end() {
+        if (!reading_.keeps_stated_length || end_filled_ || stated_seconds_ <= 0.0) return false;
+        end_filled_ = true;
+        const double missing_frames = stated_seconds_ * sample_rate_hz_ - static_cast<double>(frames_decoded_);
+        if (missing_frames <= kTimestampSlackS * sample_rate_hz_) return false;
+        pending_.clear();
+        pending_position_ = 0;
+        skipped_frames_ += static_cast<std::size_t>(std::llround(missing_frames));
+        fill_skipped_time();
+        return true;
     }
 
     // Decodes the next frame of the sound track into pending_ (mono); false at the end.
@@ -341,11 +357,8 @@ private:
         const std::size_t skipped = std::min(frames_to_skip_, count);
         frames_to_skip_ -= skipped;
         pending_.resize(count - skipped);
-        for (std::size_t i = skipped; i < count; ++i) {
-            float sum = 0.0f;
-            for (std::size_t c = 0; c < static_cast<std::size_t>(channels); ++c) sum += interleaved_[i * channels + c];
-            pending_[i - skipped] = sum / static_cast<float>(channels);
-        }
+        mixer_.mix(interleaved_.data() + skipped * static_cast<std::size_t>(channels), count - skipped,
+                   static_cast<std::size_t>(channels), pending_.data());
         frames_decoded_ += count;
     }
 
@@ -368,6 +381,8 @@ private:
     }
 
     std::string path_;
+    FfmpegReading reading_;
+    bool end_filled_ = false;  // fill_lost_end() has run
     std::unique_ptr<AVFormatContext, FormatCloser> format_;
     std::unique_ptr<AVCodecContext, CodecFreer> codec_;
     std::unique_ptr<AVPacket, PacketFreer> packet_;
@@ -388,12 +403,15 @@ private:
     int timed_frames_ = 0;               // frames with a timestamp seen, up to the 2 that place time 0
     bool flushed_ = false;
     std::vector<float> interleaved_;
+    ChannelMixer mixer_;
     std::vector<float> pending_;
     std::size_t pending_position_ = 0;
 };
 
 }  // namespace
 
-std::unique_ptr<AudioSource> open_ffmpeg_file(const std::string& path) { return std::make_unique<FfmpegSource>(path); }
+std::unique_ptr<AudioSource> open_ffmpeg_file(const std::string& path, const FfmpegReading& reading) {
+    return std::make_unique<FfmpegSource>(path, reading);
+}
 
 }  // namespace talkface::detail

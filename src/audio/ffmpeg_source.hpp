@@ -11,13 +11,21 @@
 
 namespace talkface::detail {
 
+// What a caller knows of the file before FFmpeg opens it.
+struct FfmpegReading {
+    // The file is known to be damaged inside (an Ogg page that fails its check): sound lost at its
+    // end is kept as silence up to the length its container states, as sound lost before the end
+    // is, rather than called a cut file.
+    bool keeps_stated_length = false;
+};
+
 // Opens the first audio stream FFmpeg finds in `path` and decodes its first samples, so that a file
 // with no sound at all is refused here rather than part way through the alignment. frame_count()
 // is the container's estimate; read() goes on to the real end.
 // \throws talkface::ParseError naming the file and the reason: not a format talkface reads, a video
 //         without a sound track, a codec FFmpeg cannot decode; talkface::FileError if it cannot be
 //         opened; talkface::InvalidArgument if it decodes to no samples.
-std::unique_ptr<AudioSource> open_ffmpeg_file(const std::string& path);
+std::unique_ptr<AudioSource> open_ffmpeg_file(const std::string& path, const FfmpegReading& reading = {});
 
 }  // namespace talkface::detail
 

@@ -113,4 +113,43 @@ TEST_SUITE("audio") {
         }
         CHECK(calls == 6);
     }
+
+    TEST_CASE("stereo with one side's polarity inverted reads as the voice, not as silence") {
+        // A miswired microphone or a "wide" effect leaves one channel the other's negative; their
+        // plain average is nothing, and the recording was refused as silent (-96 dBFS). In a WAV
+        // (libsndfile), an M4A (FFmpeg) and the caller's samples, the mix keeps the voice's level.
+        const auto wav = detail::open_audio_file(speech_clip("one_sentence.wav"));
+        const std::vector<float> mono = test::read_all(*wav);
+        const auto rms = [](const std::vector<float>& samples) {
+            double sum = 0.0;
+            for (const float sample : samples) sum += static_cast<double>(sample) * sample;
+            return std::sqrt(sum / static_cast<double>(samples.size()));
+        };
+        const std::string inverted = "-af 'pan=stereo|c0=c0|c1=-1*c0' ";
+        for (const std::string& path : {ffmpeg_made("inverted.wav", inverted + "-c:a pcm_s16le"),
+                                        ffmpeg_made("inverted.m4a", inverted + "-c:a aac -b:a 96k")}) {
+            CAPTURE(path);
+            const auto source = detail::open_audio_file(path);
+            CHECK(rms(test::read_all(*source)) >= 0.9 * rms(mono));
+        }
+        std::vector<float> interleaved;
+        for (const float sample : mono) interleaved.insert(interleaved.end(), {sample, -sample});
+        const auto view = detail::open_audio_view({interleaved.data(), mono.size(), 2, wav->sample_rate_hz()});
+        const std::vector<float> mixed = test::read_all(*view);
+        REQUIRE(mixed.size() == mono.size());
+        // Turned over once the first 1024 frames are mixed (their sum is nothing), and exact from there.
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < mono.size(); ++i) differing += mixed[i] != mono[i];
+        CHECK(differing <= 1024);
+
+        const Timeline transcript = load_transcript(speech_clip("one_sentence.txt"));
+        const SpeechAligner aligner;
+        const Timeline reference = aligner.align_file(speech_clip("one_sentence.wav"), transcript);
+        const Timeline timeline = aligner.align_file(test::output_path("inverted.wav"), transcript);
+        REQUIRE(timeline.syllables.size() == reference.syllables.size());
+        for (std::size_t i = 0; i < timeline.syllables.size(); ++i) {
+            CAPTURE(i);
+            CHECK(std::fabs(timeline.syllables[i].start_s - reference.syllables[i].start_s) <= 0.0101);
+        }
+    }
 }
