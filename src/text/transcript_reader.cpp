@@ -321,6 +321,11 @@ private:
             add_form(text, i, i + 1, read_words("每"));
             return i + 1;
         }
+        if (auto number = detail::read_number_character(text, i)) {  // ① Ⅱ ½
+            form_warnings_ = timeline_.warnings.size();
+            add_form(text, i, number->end, read_words(number->words));
+            return number->end;
+        }
         if (auto power = detail::read_power(text, i)) {  // after a letter or a bracket (x⁴, x^2)
             form_warnings_ = timeline_.warnings.size();
             add_form(text, i, power->end, read_words(power->words));
@@ -371,6 +376,12 @@ private:
         // characters too (∠A=30° 角 A 等于三十度; session 14: A was the pinyin a).
         const bool is_formula_letter = detail::is_all_capitals(letters) && !has_tone_digit(token) &&
                                        (touches_formula_sign(text, start, -1) || touches_formula_sign(text, end, 1));
+        // A game's level (Lv.50, LV50 among Chinese characters) is letters and a number, not the pinyin lü.
+        const auto after_letters = start + letters.size();
+        const bool is_level = (letters == "Lv" || letters == "LV" || letters == "lv") && after_letters + 1 < text.size() &&
+                              ((text[after_letters].value == '.' && is_digit(text[after_letters + 1].value)) ||
+                               (has_han_ && is_digit(text[after_letters].value) && is_digit(text[after_letters + 1].value)));
+        if (is_level) return read_latin(text, start);
         if (options_.read_pinyin && looks_like_pinyin(token) && !is_english_among_han && !is_formula_letter)
             syllables = split_pinyin(token);
         if (!syllables) return read_latin(text, start);
@@ -416,6 +427,17 @@ private:
             add_form(text, start, end, read_words(laugh));
             return end;
         }
+        // A game's level, Lv.50 (LV50, Lv 50): L V and the number, the dot not said (session 14; Lv was
+        // the pinyin lü and its dot ended the sentence).
+        if (word == "Lv" || word == "LV" || word == "lv") {
+            auto level_end = end;
+            if (level_end + 1 < text.size() && text[level_end].value == '.' && is_digit(text[level_end + 1].value))
+                ++level_end;
+            if (level_end < text.size() && (is_digit(text[level_end].value) || text[level_end].value == ' ')) {
+                add_form(text, start, level_end, said_syllables(detail::letter_syllables("LV")));
+                return level_end;
+            }
+        }
         if (auto number = number_sign(text, word, end)) {
             add_form(text, start, number->first, number->second);
             return number->first;
@@ -435,6 +457,13 @@ private:
             return said_syllables(detail::letter_syllables(word));
         if (detail::has_inner_acronym(word)) return read_word_parts(word, at);
         if (auto found = detail::english_word_syllables(word)) return said_syllables(*found);
+        // Small letters without a vowel but y (yyds, xswl, dbq): a chat's initials of a phrase's
+        // pinyin, said as their letters, as chat is read out (session 14; yyds was generic speech).
+        constexpr std::size_t kLongestInitials = 6;
+        const bool is_initials = word.size() >= 2 && word.size() <= kLongestInitials &&
+                                 std::all_of(word.begin(), word.end(), [](char l) { return l >= 'a' && l <= 'z'; }) &&
+                                 word.find_first_of("aeiou") == std::string::npos;
+        if (is_initials) return said_syllables(detail::letter_syllables(word));
         return read_word_parts(word, at);
     }
 

@@ -301,6 +301,8 @@ bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start) {
     std::size_t i = start;
     for (int skipped = 0; skipped < 2 && i > 0 && is_one_of(text[i - 1].value, U" 是为為：:\u3000"); ++skipped) --i;
     if (i > 0 && is_one_of(text[i - 1].value, U"号號室房码碼")) return true;
+    // A postcode after 邮编 (邮编100080 一零零零八零; session 14: it counted), as 邮政编码 is after 码.
+    if (const auto word = text_between(text, i >= 2 ? i - 2 : 0, i); word == "邮编" || word == "郵編") return true;
     if (start >= 2 && is_one_of(text[start - 1].value, U"楼樓栋棟层層") && is_digit_at(text, start - 2)) return true;
     const auto staircase = text_between(text, start >= 2 ? start - 2 : 0, start);
     return (staircase == "单元" || staircase == "單元") && start >= 3 && is_digit_at(text, start - 3);
@@ -534,6 +536,12 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
         // A chat's goodbye, 88 or 886 (拜拜, 拜拜了) as a clause of its own (88，下次再聊), is said digit by
         // digit, 八八 (session 14); a bare 88 after a colon or in a clause counts (得分：88, 考了88分).
         if ((whole == "88" || whole == "886") && context.is_whole_clause) {
+            said.words = digit_words(whole);
+            return said;
+        }
+        // A chat's vow, 1314 (一生一世) and 5201314, counting nothing, is said digit by digit (我爱你1314
+        // 一三一四; session 14), as 520 is where it names its day.
+        if ((whole == "1314" || whole == "5201314") && !counts && !context.has_currency && !context.is_ordinal) {
             said.words = digit_words(whole);
             return said;
         }
@@ -1095,6 +1103,9 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     context.is_phone = follows_phone_word(text, start);
 
     const auto number = parse_number(text, i);
+    // A chat's +1 as a clause of its own (+1，我也觉得), "me too", is 加一 (session 14; it was 正一).
+    if (sign_words == "正" && number.whole == "1" && !number.has_point && stands_alone(text, start, number.end))
+        sign_words = "加";
     context.is_named = follows_name_word(text, start);
     context.is_model = sign_words.empty() && currency == nullptr &&
                        (follows_model_name(text, start) || follows_maker_name(text, start) ||
@@ -1367,10 +1378,12 @@ std::string_view greek_letter_name(char32_t c) {
     }
 }
 
-// A term of a formula: a digit, a Latin or Greek letter, a closing bracket or a square (x², (a+b)).
+// A term of a formula: a digit, a Latin or Greek letter, a closing bracket or a square (x², (a+b)),
+// a degree or a percentage.
 bool is_formula_term(char32_t c) {
+    // A degree or a percentage ends a term too (sin30°=1/2, 25%=1/4; session 14: the = was skipped).
     return (c >= '0' && c <= '9') || is_ascii_letter(c) || !greek_letter_name(c).empty() || c == ')' || c == 0xB2 ||
-           c == 0xB3;
+           c == 0xB3 || c == 0xB0 || c == '%' || c == 0x2103 /*℃*/;
 }
 
 // A relation sign in the clause around text[i]: the signs in it are a formula's (a-b>0: 减).
@@ -1441,7 +1454,8 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
                                    !is_ascii_letter(value_at(text, after + 2));
             return before_st ? "星" : "";
         }
-        case 0xD7: return between_terms ? "乘" : "";     // ×
+        // × after a character too, before a number (经验值×2 经验值乘二, a game's bonus; session 14).
+        case 0xD7: return between_terms || (is_han_left && right >= '0' && right <= '9') ? "乘" : "";  // ×
         case 0xF7: return between_terms ? "除以" : "";   // ÷
         case 0x221A: return is_formula_term(right) || right == '(' ? "根号" : "";  // √2, √(x+1)
         // A square or a cube after a term: x² x平方, 3² 三的平方.
@@ -1469,6 +1483,37 @@ int superscript_digit(char32_t c) {
 }
 
 }  // namespace
+
+std::optional<SpokenForm> read_number_character(const std::vector<CodePoint>& text, std::size_t i) {
+    const auto c = value_at(text, i);
+    int number = 0;
+    if (c >= 0x2460 && c <= 0x2473) number = static_cast<int>(c - 0x2460) + 1;  // ① ... ⑳
+    if (c >= 0x2474 && c <= 0x2487) number = static_cast<int>(c - 0x2474) + 1;  // ⑴ ... ⒇
+    if (c >= 0x2488 && c <= 0x249B) number = static_cast<int>(c - 0x2488) + 1;  // ⒈ ... ⒛
+    if (c >= 0x2776 && c <= 0x277F) number = static_cast<int>(c - 0x2776) + 1;  // ❶ ... ❿
+    if (c >= 0x2780 && c <= 0x2793) number = static_cast<int>((c - 0x2780) % 10) + 1;  // ➀ ... ➉, ➊ ... ➓
+    if (c >= 0x2160 && c <= 0x216B) number = static_cast<int>(c - 0x2160) + 1;  // Ⅰ ... Ⅻ
+    if (c >= 0x2170 && c <= 0x217B) number = static_cast<int>(c - 0x2170) + 1;  // ⅰ ... ⅻ
+    SpokenForm form;
+    form.end = i + 1;
+    if (number > 0) {
+        form.words = cardinal_words(std::to_string(number), false);
+        return form;
+    }
+    // A fraction written as one character: its denominator 分之 its numerator, as 1/2 is.
+    constexpr std::pair<char32_t, const char*> kFractions[] = {
+        {0xBD, "二分之一"},   {0x2153, "三分之一"}, {0x2154, "三分之二"}, {0xBC, "四分之一"}, {0xBE, "四分之三"},
+        {0x2155, "五分之一"}, {0x2156, "五分之二"}, {0x2157, "五分之三"}, {0x2158, "五分之四"}, {0x2159, "六分之一"},
+        {0x215A, "六分之五"}, {0x2150, "七分之一"}, {0x215B, "八分之一"}, {0x215C, "八分之三"}, {0x215D, "八分之五"},
+        {0x215E, "八分之七"}, {0x2151, "九分之一"}, {0x2152, "十分之一"},
+    };
+    for (const auto& [written, said] : kFractions) {
+        if (c != written) continue;
+        form.words = said;
+        return form;
+    }
+    return std::nullopt;
+}
 
 std::optional<SpokenForm> read_power(const std::vector<CodePoint>& text, std::size_t i) {
     if (i == 0 || !is_formula_term(value_at(text, i - 1))) return std::nullopt;

@@ -47,6 +47,11 @@ bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i);
 // a Greek letter is said by its name (π 派, α 阿尔法). A row of = under a heading is not said.
 std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t i);
 
+// A number written as one character, as lessons and lists write them (session 14; they were skipped
+// with a warning): circled and bracketed ones (①水 一水, ⑴, ⒈, ❶), Roman numerals (第Ⅱ卷 第二卷, ⅲ)
+// and fractions (½ 二分之一, ¾ 四分之三); nullopt where text[i] is none.
+std::optional<SpokenForm> read_number_character(const std::vector<CodePoint>& text, std::size_t i);
+
 // A power written right after a term (a digit, a letter, a closing bracket) at text[i - 1]:
 // superscript digits (10⁸ 十的八次方, 10⁻³ 十的负三次方, x⁴ x的四次方) or a caret and digits as typed
 // (2^10 二的十次方, x^2 x平方, as x² is); a lone ² or ³ is said_math_sign's. nullopt where none starts

@@ -727,6 +727,28 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("numbers written as one character, a chat's +1, 1314, initials and levels, a postcode, × after a word") {
+        check_cases({
+            {"①水 ②二氧化碳", "一水二二氧化碳"},
+            {"⑴⒉❸", "一二三"},
+            {"第Ⅱ卷", "第二卷"},
+            {"ⅲ", "三"},
+            {"答案是½", "答案是二分之一"},
+            {"¾杯", "四分之三杯"},
+            {"sin30°=1/2", "xin三十度等于二分之一"},
+            {"25%=1/4", "百分之二十五等于四分之一"},
+            {"+1，我也觉得", "加一我也觉得"},
+            {"温差+1", "温差正一"},
+            {"我爱你1314", "我爱你一三一四"},
+            {"1314人", "一千三百一十四人"},
+            {"yyds！", "wai wai di ai si"},
+            {"等级到了Lv.50。", "等级到了 ai le wei五十"},
+            {"我LV50了", "我 ai le wei五十了"},
+            {"邮编100080", "邮编一零零零八零"},
+            {"经验值×2", "经验值乘二"},
+        });
+    }
+
     TEST_CASE("a tilde and a topic's # are punctuation, and a symbol without a reading is warned of by its own code point") {
         check_cases({
             {"#春节快乐# 祝大家新年好！", "春节快乐祝大家新年好"},
