@@ -61,6 +61,12 @@ struct SentenceMetrics {
     double held_out_gap = 0.0;
     // That gap of its second half alone, where a text that lacks its last syllables shows.
     double held_out_end_gap = 0.0;
+    // The median over its syllables of each one's gap on its half's held-out models, and over the
+    // syllables of its second half (NaN: not measured).
+    double held_out_median = std::numeric_limits<double>::quiet_NaN();
+    double held_out_end_median = std::numeric_limits<double>::quiet_NaN();
+    // Whether its last syllable gaps most of all its syllables on those models.
+    bool held_out_last_is_worst = false;
     // How much better its text fits its speech than the same text fits the speech with its halves
     // swapped (order_margin, text_fit.hpp), per frame, on the models re-estimated on the recording:
     // files of one or two sentences, outside a room's tail (check_held_out_fit).

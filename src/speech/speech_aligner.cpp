@@ -10,6 +10,7 @@
 
 #include "audio/audio_source.hpp"
 #include "common/number_format.hpp"
+#include "common/order_statistics.hpp"
 #include "speech/acoustic_model.hpp"
 #include "speech/alignment_checks.hpp"
 #include "speech/alignment_confidence.hpp"
@@ -192,8 +193,29 @@ void measure_chain(const SentenceChain& chain, std::size_t w, const std::vector<
         for (std::size_t h = 0; h < halves.size(); ++h) {
             if (halves[h].empty()) continue;
             const std::size_t k = chain.syllables[chain.states[halves[h].front().state].syllable]->sentence;
-            metrics[k].held_out_gap = std::max(metrics[k].held_out_gap, gaps[h]);
-            if (h % 2 == 1) metrics[k].held_out_end_gap = std::max(0.0, gaps[h]);
+            metrics[k].held_out_gap = std::max(metrics[k].held_out_gap, gaps.halves[h]);
+            if (h % 2 == 1) metrics[k].held_out_end_gap = std::max(0.0, gaps.halves[h]);
+        }
+        // The typical syllable's gap, of the whole sentence and of its second half: one noisy
+        // stretch (a note of music, a squeezed syllable) rules a half's gap but not its median.
+        std::vector<std::vector<double>> whole_gaps(metrics.size()), end_gaps(metrics.size());
+        for (std::size_t h = 0; h < halves.size(); ++h) {
+            std::size_t previous = chain.syllables.size();
+            for (const auto& segment : halves[h]) {
+                const std::size_t i = chain.states[segment.state].syllable;
+                if (i == previous || !std::isfinite(gaps.syllables[i])) continue;
+                previous = i;
+                const std::size_t k = chain.syllables[i]->sentence;
+                whole_gaps[k].push_back(gaps.syllables[i]);
+                if (h % 2 == 1) end_gaps[k].push_back(gaps.syllables[i]);
+            }
+        }
+        for (std::size_t k = 0; k < metrics.size(); ++k) {
+            if (whole_gaps[k].empty()) continue;
+            metrics[k].held_out_median = mean_median(whole_gaps[k]);
+            metrics[k].held_out_last_is_worst =
+                whole_gaps[k].back() >= *std::max_element(whole_gaps[k].begin(), whole_gaps[k].end());
+            if (!end_gaps[k].empty()) metrics[k].held_out_end_median = mean_median(end_gaps[k]);
         }
     }
 }

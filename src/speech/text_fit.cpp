@@ -130,10 +130,12 @@ std::vector<std::vector<StateSegment>> split_in_halves(const SentenceChain& chai
 // Models re-estimated on a recording fit whatever text shaped them, and on a file of a sentence or
 // two a wrong text shapes most of them; models that never saw these frames cannot bend to it.
 // `scores` is overwritten (an hour's scores are 19 MB: no second buffer).
-std::vector<double> held_out_fit_gaps(const SentenceChain& chain, const std::vector<std::vector<StateSegment>>& halves,
-                                      const std::vector<float>& observations, const ModelEstimator& whole,
-                                      const std::vector<ModelEstimator>& half_estimators, EmissionScores& scores) {
-    std::vector<double> gaps(halves.size(), -std::numeric_limits<double>::infinity());
+HeldOutGaps held_out_fit_gaps(const SentenceChain& chain, const std::vector<std::vector<StateSegment>>& halves,
+                              const std::vector<float>& observations, const ModelEstimator& whole,
+                              const std::vector<ModelEstimator>& half_estimators, EmissionScores& scores) {
+    HeldOutGaps gaps;
+    gaps.halves.assign(halves.size(), -std::numeric_limits<double>::infinity());
+    gaps.syllables.assign(chain.syllables.size(), std::numeric_limits<double>::quiet_NaN());
     for (std::size_t h = 0; h < halves.size(); ++h) {
         if (halves[h].empty()) continue;
         ModelEstimator rest = whole;
@@ -148,7 +150,17 @@ std::vector<double> held_out_fit_gaps(const SentenceChain& chain, const std::vec
             segment.first_frame -= first;
             segment.end_frame -= first;
         }
-        gaps[h] = text_fit_gap(chain, shifted, scores);
+        gaps.halves[h] = text_fit_gap(chain, shifted, scores);
+        // Each syllable's own gap on the same models (a pause goes with the syllable before it).
+        for (std::size_t i = 0; i < shifted.size();) {
+            const std::size_t syllable = chain.states[shifted[i].state].syllable;
+            std::size_t j = i;
+            while (j < shifted.size() && chain.states[shifted[j].state].syllable == syllable) ++j;
+            const std::vector<StateSegment> own(shifted.begin() + static_cast<std::ptrdiff_t>(i),
+                                                shifted.begin() + static_cast<std::ptrdiff_t>(j));
+            gaps.syllables[syllable] = text_fit_gap(chain, own, scores);
+            i = j;
+        }
     }
     return gaps;
 }

@@ -43,9 +43,13 @@ std::vector<std::vector<StateSegment>> split_in_halves(const SentenceChain& chai
 // text_fit_gap of each half (split_in_halves) scored with models learned from the rest of the
 // recording only (leave one out); an empty half gives minus infinity. `half_estimators` holds the
 // halves' shares of `whole`; `scores` is overwritten.
-std::vector<double> held_out_fit_gaps(const SentenceChain& chain, const std::vector<std::vector<StateSegment>>& halves,
-                                      const std::vector<float>& observations, const ModelEstimator& whole,
-                                      const std::vector<ModelEstimator>& half_estimators, EmissionScores& scores);
+struct HeldOutGaps {
+    std::vector<double> halves;     // per half, as split_in_halves numbers them
+    std::vector<double> syllables;  // per syllable of the chain, on its half's models; NaN: not scored
+};
+HeldOutGaps held_out_fit_gaps(const SentenceChain& chain, const std::vector<std::vector<StateSegment>>& halves,
+                              const std::vector<float>& observations, const ModelEstimator& whole,
+                              const std::vector<ModelEstimator>& half_estimators, EmissionScores& scores);
 
 }  // namespace talkface::detail
 

@@ -1,8 +1,8 @@
 // order_margin and check_held_out_fit (issue 13): in a file of one or two sentences a right text
 // fits its speech far better than the same text fits the speech with its halves swapped, a wrong
-// text hardly better; a held-out gap in a sentence's first half that margin does not confirm is a
+// text hardly better; a held-out gap that the sentence's typical syllable does not share is a
 // warning, not a refusal (bench/ a person's right one-sentence clips under music and noise were
-// refused on it alone).
+// refused on it alone), unless it lies in the second half with the last syllable worst of all.
 #include <doctest/doctest.h>
 
 #include <cstddef>
@@ -72,27 +72,43 @@ TEST_SUITE("speech") {
         CHECK(wrong < right - 1.0);
     }
 
-    TEST_CASE("a held-out gap in the first half the order margin does not confirm is a warning, not a refusal") {
+    TEST_CASE("a held-out gap its typical syllable does not share is a warning, not a refusal") {
         OneSentence sentence;
         std::vector<std::string> warnings;
+        // A person's right sentence under music: one stretch gaps, the typical syllable does not.
         sentence.metrics[0].held_out_gap = 0.62;
-        sentence.metrics[0].order_margin = 0.73;
+        sentence.metrics[0].held_out_end_gap = 0.62;
+        sentence.metrics[0].held_out_median = 0.2;
+        sentence.metrics[0].held_out_end_median = 0.3;
+        sentence.metrics[0].order_margin = 0.43;
         CHECK_NOTHROW(check_held_out_fit(sentence.metrics, sentence.spans, sentence.transcript, warnings));
         REQUIRE(warnings.size() == 1);
-        CHECK(warnings[0].find("0.73 per frame better than the same text fits the speech with its halves swapped") != std::string::npos);
+        CHECK(warnings[0].find("0.43 per frame better than the same text fits the speech with its halves swapped") != std::string::npos);
         CHECK(warnings[0].find("0.62 per frame better than its text") != std::string::npos);
+        CHECK(warnings[0].find("its typical syllable only 0.2,") != std::string::npos);
 
-        // In its second half: a text that lacks its last syllables, whatever the margin.
-        sentence.metrics[0].held_out_end_gap = 0.62;
+        // The typical syllable gaps more than the text gains over its halves swapped: another text.
+        sentence.metrics[0].held_out_median = 0.45;
         CHECK_THROWS_WITH_AS(check_held_out_fit(sentence.metrics, sentence.spans, sentence.transcript, warnings),
-                             doctest::Contains("on its second half, other sounds fit its speech 0.62 per frame better"), AlignmentError);
-        sentence.metrics[0].held_out_end_gap = 0.0;
-        sentence.metrics[0].order_margin = 0.31;
-        CHECK_THROWS_WITH_AS(check_held_out_fit(sentence.metrics, sentence.spans, sentence.transcript, warnings),
-                             doctest::Contains("0.31 per frame better than the same text fits the speech with its halves swapped"),
+                             doctest::Contains("other sounds fit its typical syllable 0.45 per frame better than its text, at most "
+                                               "0.43 for the right text"),
                              AlignmentError);
+        // A text that lacks its last syllables: its second half's typical syllable gaps, or the
+        // half gaps and its last syllable most of all, whatever the margin.
+        sentence.metrics[0].held_out_median = 0.2;
+        sentence.metrics[0].order_margin = 0.9;
+        sentence.metrics[0].held_out_end_median = 0.55;
+        CHECK_THROWS_WITH_AS(check_held_out_fit(sentence.metrics, sentence.spans, sentence.transcript, warnings),
+                             doctest::Contains("the typical syllable of its second half 0.55 per frame"), AlignmentError);
+        sentence.metrics[0].held_out_end_median = 0.3;
+        sentence.metrics[0].held_out_last_is_worst = true;
+        CHECK_THROWS_WITH_AS(check_held_out_fit(sentence.metrics, sentence.spans, sentence.transcript, warnings),
+                             doctest::Contains("its last syllable worst of all"), AlignmentError);
+        sentence.metrics[0].held_out_end_gap = 0.3;
+        CHECK_NOTHROW(check_held_out_fit(sentence.metrics, sentence.spans, sentence.transcript, warnings));
         // Not measured (a chain in a longer file): the held-out gap refuses alone, as before.
         sentence.metrics[0].order_margin = std::numeric_limits<double>::quiet_NaN();
+        sentence.metrics[0].held_out_median = std::numeric_limits<double>::quiet_NaN();
         CHECK_THROWS_AS(check_held_out_fit(sentence.metrics, sentence.spans, sentence.transcript, warnings), AlignmentError);
     }
 
