@@ -98,16 +98,16 @@ constexpr std::size_t kMinHeldOutSyllables = 6;
 constexpr double kMinOrderMargin = 0.12;
 // Each syllable's gap on its half's held-out models: a half's gap is ruled by its worst stretch (a
 // note of music, a y- syllable squeezed in noise), the median over the syllables by the typical
-// one. In noise a right text's typical syllable gaps as a wrong one's does, but its order margin
-// grows with it: a sentence whose typical syllable gaps more than its margin is refused. How well
+// one. In noise a right text's typical syllable gaps as a wrong one's does, but a wrong text's order
+// margin is small: a sentence whose typical syllable gaps more than its margin is refused. How well
 // that orders a person's right clips above wrong ones (area under the ROC curve, bench/ tuning,
-// against another sentence / two swapped): 0.94 / 0.94, where the larger half's gap gave 0.83 /
-// 0.88 (held out 0.93 / 0.93 against 0.77 / 0.84). A text that lacks its last 1-3 syllables is
-// otherwise right (its margin a right text's): its second half's syllables, drawn over the lost
-// ones, gap more, the typical one above kMaxTypicalEndGap (a person's right sentences: 95% under
-// 0.28, 99% under 0.44), or the half above kMaxHeldOutFitGap with the last syllable the worst of all (espeak-ng's
-// last syllable over two or three: 1.0-2.0). Replayed on the clips' dumped metrics (bench/README.md,
-// session 14).
+// against one sentence replaced / two sentences swapped or replaced): 0.94 / 0.94, where the larger
+// half's gap gave 0.83 / 0.88 (held out 0.93 / 0.93 against 0.77 / 0.84). A text that lacks its last
+// 1-3 syllables is otherwise right (its margin a right text's): its second half's syllables, drawn
+// over the lost ones, gap more, the typical one above kMaxTypicalEndGap (a person's right
+// sentences: 95% under 0.28, 99% under 0.44), or the half above kMaxHeldOutFitGap with the last
+// syllable the worst of all (espeak-ng's last syllable over two or three: 1.0-2.0). Replayed on the
+// clips' dumped metrics (bench/README.md, session 14).
 constexpr double kMaxTypicalEndGap = 0.5;
 // In a file of one or two sentences, on models re-estimated on it, the speech of a right text fits
 // a free sequence of sounds at most -0.05 per frame better than its text (bench/ tuning clips, every
