@@ -12,6 +12,9 @@
 #include "talkface/types.hpp"
 
 namespace talkface {
+namespace detail {
+struct FacePointEditor;  // the library's own access to a point by index (not API)
+}  // namespace detail
 inline namespace v0 {
 
 /// The colours a face is drawn with; part of the face file.
@@ -113,6 +116,11 @@ public:
     friend bool operator!=(const FaceModel& a, const FaceModel& b) { return !(a == b); }
 
 private:
+    friend struct detail::FacePointEditor;
+
+    // Throws InvalidArgument naming point `id` unless `image_xy` is finite and within kMaxCoordinatePx.
+    static void check_coordinates(std::string_view id, Point2 image_xy);
+
     // An all-zero face for default_face() and the file reader to fill in: the public default
     // constructor delegates to default_face(), so that cannot use it.
     struct Blank {};

@@ -4,9 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <array>
-#include <cstdint>
-#include <cstring>
 
 #include "face/fapu_measure.hpp"
 #include "common/internal_error.hpp"
@@ -20,17 +17,7 @@ inline namespace v0 {
 namespace {
 
 std::vector<std::string> make_point_ids() {
-    std::vector<std::string> ids;
-    for (std::size_t i = 1; i <= detail::kHairPointCount; ++i) ids.push_back("hair." + std::to_string(i));
-    for (const char* id :
-         {"11.1", "11.2a", "11.3a", "11.2", "11.3", "10.2", "10.8", "10.1", "10.7", "10.10", "10.9",
-          "2.1", "2.14", "2.13", "2.2", "2.3", "3.2", "3.4", "3.8", "3.12", "3.1", "3.3", "3.7", "3.11",
-          "4.2", "4.4", "4.4a", "4.6", "4.1", "4.3", "4.3a", "4.5", "8.1", "8.9", "8.10", "8.2", "8.4",
-          "8.3", "9.6", "9.7", "9.14", "9.13", "9.2", "9.1", "9.4", "9.5", "9.15", "EyeballLeft",
-          "EyeballRight"}) {
-        ids.emplace_back(id);
-    }
-    return ids;
+    return {detail::kPointIds.begin(), detail::kPointIds.end()};
 }
 
 std::optional<std::size_t> find_index(const std::vector<std::string>& names, std::string_view name) {
@@ -78,14 +65,18 @@ bool FaceModel::is_point_id(std::string_view id) { return detail::point_index(id
 
 Point2 FaceModel::point(std::string_view id) const { return points_[require_point(id)]; }
 
-void FaceModel::set_point(std::string_view id, Point2 image_xy) {
-    const std::size_t index = require_point(id);
+void FaceModel::check_coordinates(std::string_view id, Point2 image_xy) {
     const auto within = [](double value) { return std::isfinite(value) && std::abs(value) <= kMaxCoordinatePx; };
     if (!within(image_xy.x) || !within(image_xy.y)) {
         throw InvalidArgument("point \"" + std::string(id) + "\"",
                               "coordinates must be finite and within +-1e6 px, got (" + detail::format_shortest(image_xy.x) +
                                   ", " + detail::format_shortest(image_xy.y) + ")");
     }
+}
+
+void FaceModel::set_point(std::string_view id, Point2 image_xy) {
+    const std::size_t index = require_point(id);
+    check_coordinates(id, image_xy);
     points_[index] = image_xy;
 }
 
@@ -109,80 +100,15 @@ bool operator==(const FaceModel& a, const FaceModel& b) {
 // Declared in face/point_ids.hpp and face/fapu_measure.hpp, outside the inline namespace.
 namespace detail {
 
-namespace {
-
-// An id's first 8 bytes as one integer (zeros past its end), read with fixed-size copies.
-std::uint64_t packed_id(std::string_view id) {
-    std::uint64_t key = 0;
-    switch (std::min<std::size_t>(id.size(), 8)) {
-        case 8: std::memcpy(&key, id.data(), 8); break;
-        case 7: std::memcpy(&key, id.data(), 7); break;
-        case 6: std::memcpy(&key, id.data(), 6); break;
-        case 5: std::memcpy(&key, id.data(), 5); break;
-        case 4: std::memcpy(&key, id.data(), 4); break;
-        case 3: std::memcpy(&key, id.data(), 3); break;
-        case 2: std::memcpy(&key, id.data(), 2); break;
-        case 1: std::memcpy(&key, id.data(), 1); break;
-        default: break;
-    }
-    return key;
+std::optional<std::size_t> point_index(std::string_view id) {
+    const auto found = std::find(kPointIds.begin(), kPointIds.end(), id);
+    if (found == kPointIds.end()) return std::nullopt;
+    return static_cast<std::size_t>(found - kPointIds.begin());
 }
 
-// The 72 ids by their packed first 8 bytes (unique among them) in an open-addressed table of 256
-// slots, a quarter full: the slot is the key's Fibonacci hash, a collision takes the next slot.
-class PointIdTable {
-public:
-    PointIdTable() {
-        const auto& ids = ids_;
-        for (std::size_t i = 0; i < ids.size(); ++i) {
-            const std::uint64_t key = packed_id(ids[i]);
-            std::size_t slot = slot_of(key);
-            while (slots_[slot].index != kEmpty) {
-                if (slots_[slot].key == key) throw internal_error("two point ids share their first 8 bytes");
-                slot = (slot + 1) % kSlots;
-            }
-            slots_[slot] = {key, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(ids[i].size())};
-        }
-    }
-
-    std::optional<std::size_t> find(std::string_view id) const {
-        const std::uint64_t key = packed_id(id);
-        for (std::size_t slot = slot_of(key);; slot = (slot + 1) % kSlots) {
-            const Slot& entry = slots_[slot];
-            if (entry.index == kEmpty) return std::nullopt;
-            if (entry.key == key) {
-                // The key holds the first 8 bytes: a longer id is compared whole.
-                const bool same = entry.length == id.size() && (id.size() <= 8 || ids_[entry.index] == id);
-                if (!same) return std::nullopt;
-                return entry.index;
-            }
-        }
-    }
-
-private:
-    static constexpr std::size_t kSlots = 256;
-    static constexpr std::uint32_t kEmpty = 0xffffffffu;
-    struct Slot {
-        std::uint64_t key = 0;
-        std::uint32_t index = kEmpty;
-        std::uint32_t length = 0;
-    };
-    // 2^64 / the golden ratio: the top 8 bits of the product spread ids that differ in any byte.
-    static std::size_t slot_of(std::uint64_t key) { return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 56); }
-
-    const std::vector<std::string>& ids_ = FaceModel::point_ids();
-    std::array<Slot, kSlots> slots_{};
-};
-
-}  // namespace
-
-std::optional<std::size_t> point_index(std::string_view id) {
-    // Posing and drawing a face name its points by id, about 900 000 times in a 3-minute animation:
-    // a table of the ids' packed bytes instead of std::unordered_map<std::string_view>, whose
-    // general-purpose hash took 160 instructions a look-up, 4% of the 3 minutes with the drawing's
-    // own std::string map (bench/README.md, session 13).
-    static const PointIdTable table;
-    return table.find(id);
+void FacePointEditor::set_point(FaceModel& face, std::size_t index, Point2 image_xy) {
+    FaceModel::check_coordinates(kPointIds.at(index), image_xy);
+    face.points_[index] = image_xy;
 }
 
 std::optional<std::size_t> fapu_index(std::string_view name) {

@@ -51,7 +51,7 @@ bool is_hair_id(std::string_view id) {
 }
 
 double checked_d(const FaceModel& face) {
-    const double d = face.fapu("d");
+    const double d = face.fapus()[detail::kFapuD];
     if (!(std::isfinite(d) && d > 0.0)) {
         throw InvalidArgument(
             "FAPU \"d\"", "must be finite and positive to lift a face, got " + detail::format_shortest(d));
@@ -60,42 +60,53 @@ double checked_d(const FaceModel& face) {
 }
 
 Point2 eye_mid(const FaceModel& face) {
-    const Point2 left = face.point("EyeballLeft");
-    const Point2 right = face.point("EyeballRight");
+    constexpr std::size_t kLeft = detail::point_at("EyeballLeft"), kRight = detail::point_at("EyeballRight");
+    const Point2 left = face.points()[kLeft];
+    const Point2 right = face.points()[kRight];
     return {(left.x + right.x) / 2.0, (left.y + right.y) / 2.0};
 }
 
 // Algorithm 2.1 step 4, in image pixels, in additional_point_ids() order.
 std::vector<Point2> additional_points_image(const FaceModel& face, Point2 eye_mid_xy) {
-    auto p = [&](const char* id) { return face.point(id); };
-    const double eyebrow_h = face.fapu("EyebrowH");
-    const double eyebrow_h2 = face.fapu("EyebrowH2");
+    // Every frame lifts its face: its points are read at indices found when this is compiled.
+    using detail::point_at;
+    constexpr std::size_t k10_8 = point_at("10.8"), k10_7 = point_at("10.7"), k10_2 = point_at("10.2"),
+                          k10_1 = point_at("10.1"), k9_13 = point_at("9.13"), k9_14 = point_at("9.14"),
+                          k9_4 = point_at("9.4"), k9_5 = point_at("9.5"), k4_4a = point_at("4.4a"),
+                          k4_4 = point_at("4.4"), k4_3 = point_at("4.3"), k4_3a = point_at("4.3a"),
+                          k2_14 = point_at("2.14"), k2_1 = point_at("2.1"), k2_13 = point_at("2.13"),
+                          k3_12 = point_at("3.12"), k10_10 = point_at("10.10"), k3_7 = point_at("3.7"),
+                          k10_9 = point_at("10.9"), k11_2 = point_at("11.2"), k11_3 = point_at("11.3"),
+                          k8_4 = point_at("8.4"), k8_3 = point_at("8.3");
+    const auto& p = face.points();
+    const double eyebrow_h = face.fapus()[detail::kFapuEyebrowH];
+    const double eyebrow_h2 = face.fapus()[detail::kFapuEyebrowH2];
     // W_ear is "the distance between EyeMid and an ear". Table 2.1 puts A in front of the lobe's
     // contact point 10.8 (0.04 d against 0) and far in front of the ear's top 10.2 (-0.37 d), so A is
     // where the top of the ear meets the head: W_ear is measured horizontally to the contact points
     // 10.8 / 10.7, per side, and arc(10.8, 10.2, A) then outlines the ear's rim. Measured to 10.2
     // instead, A would sit right under the ear's top and the ear would be drawn as a sliver.
-    const double ear_left_w_px = eye_mid_xy.x - p("10.8").x;
-    const double ear_right_w_px = p("10.7").x - eye_mid_xy.x;
+    const double ear_left_w_px = eye_mid_xy.x - p[k10_8].x;
+    const double ear_right_w_px = p[k10_7].x - eye_mid_xy.x;
     return {
-        {eye_mid_xy.x - ear_left_w_px, (4.0 * p("10.2").y + p("10.8").y) / 5.0},                 // A
-        {eye_mid_xy.x + ear_right_w_px, (4.0 * p("10.1").y + p("10.7").y) / 5.0},                // B
-        {(p("9.13").x + p("9.14").x) / 2.0, (p("9.14").y + eye_mid_xy.y) / 2.0},                 // C
-        {(5.0 * p("9.4").x + p("9.5").x) / 6.0, p("9.4").y - (p("9.4").y - p("9.14").y) / 3.0},  // D
-        {(5.0 * p("9.5").x + p("9.4").x) / 6.0, p("9.5").y - (p("9.5").y - p("9.13").y) / 3.0},  // E
-        {p("4.4a").x, p("4.4a").y + eyebrow_h2 / 1.3},                                           // F
-        {p("4.4").x, p("4.4").y + eyebrow_h / 1.3},                                              // G
-        {p("4.3").x, p("4.3").y + eyebrow_h / 1.3},                                              // H
-        {p("4.3a").x, p("4.3a").y + eyebrow_h2 / 1.3},                                           // I
-        {(5.0 * p("2.14").x + p("2.1").x) / 6.0, p("2.14").y},                                   // J
-        {(5.0 * p("2.13").x + p("2.1").x) / 6.0, p("2.13").y},                                   // K
-        {(p("3.12").x + p("10.10").x) / 2.0, p("10.10").y},                                      // L
-        {(p("3.7").x + p("10.9").x) / 2.0, p("10.9").y},                                         // M
-        p("11.2"),                                                                               // N
-        p("11.3"),                                                                               // Q
-        p("8.4"),                                                                                // R
+        {eye_mid_xy.x - ear_left_w_px, (4.0 * p[k10_2].y + p[k10_8].y) / 5.0},              // A
+        {eye_mid_xy.x + ear_right_w_px, (4.0 * p[k10_1].y + p[k10_7].y) / 5.0},             // B
+        {(p[k9_13].x + p[k9_14].x) / 2.0, (p[k9_14].y + eye_mid_xy.y) / 2.0},               // C
+        {(5.0 * p[k9_4].x + p[k9_5].x) / 6.0, p[k9_4].y - (p[k9_4].y - p[k9_14].y) / 3.0},  // D
+        {(5.0 * p[k9_5].x + p[k9_4].x) / 6.0, p[k9_5].y - (p[k9_5].y - p[k9_13].y) / 3.0},  // E
+        {p[k4_4a].x, p[k4_4a].y + eyebrow_h2 / 1.3},                                        // F
+        {p[k4_4].x, p[k4_4].y + eyebrow_h / 1.3},                                           // G
+        {p[k4_3].x, p[k4_3].y + eyebrow_h / 1.3},                                           // H
+        {p[k4_3a].x, p[k4_3a].y + eyebrow_h2 / 1.3},                                        // I
+        {(5.0 * p[k2_14].x + p[k2_1].x) / 6.0, p[k2_14].y},                                 // J
+        {(5.0 * p[k2_13].x + p[k2_1].x) / 6.0, p[k2_13].y},                                 // K
+        {(p[k3_12].x + p[k10_10].x) / 2.0, p[k10_10].y},                                    // L
+        {(p[k3_7].x + p[k10_9].x) / 2.0, p[k10_9].y},                                       // M
+        p[k11_2],                                                                           // N
+        p[k11_3],                                                                           // Q
+        p[k8_4],                                                                            // R
         // SPEC: S is 8.3; the thesis prints 8.5, which is not a point of the model.
-        p("8.3"),  // S
+        p[k8_3],  // S
     };
 }
 
@@ -112,8 +123,8 @@ Point3 LiftedFace::local(std::string_view id) const {
 }
 
 const std::vector<std::string>& additional_point_ids() {
-    static const std::vector<std::string> ids = {"A", "B", "C", "D", "E", "F", "G", "H", "I",
-                                                 "J", "K", "L", "M", "N", "Q", "R", "S"};
+    static const std::vector<std::string> ids(detail::kAdditionalPointIds.begin(),
+                                              detail::kAdditionalPointIds.end());
     return ids;
 }
 
@@ -188,11 +199,9 @@ FaceModel place_face(const FaceModel& face, Point2 origin, double d_px) {
 namespace talkface::detail {
 
 std::optional<std::size_t> lifted_point_index(std::string_view id) {
-    if (id.size() != 1) return point_index(id);
-    const auto& extra_ids = additional_point_ids();
-    for (std::size_t i = 0; i < extra_ids.size(); ++i)
-        if (extra_ids[i][0] == id[0]) return FaceModel::kPointCount + i;
-    return std::nullopt;
+    const auto found = std::find(kLiftedPointIds.begin(), kLiftedPointIds.end(), id);
+    if (found == kLiftedPointIds.end()) return std::nullopt;
+    return static_cast<std::size_t>(found - kLiftedPointIds.begin());
 }
 
 }  // namespace talkface::detail

@@ -10,6 +10,7 @@
 #include "common/number_format.hpp"
 #include "face/point_ids.hpp"
 #include "lift/local_frame.hpp"
+#include "pose/contour_sides.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/face_lift.hpp"
 #include "talkface/rotation3d.hpp"
@@ -137,8 +138,8 @@ ProjectedFace project_face(const FaceModel& neutral, const FaceState& state) {
     for (std::size_t i = 0; i < detail::kHairPointCount; ++i) {
         hair_half_width = std::max(hair_half_width, std::abs(lifted.points[i].local.x));
     }
-    static const std::size_t eyeball_left_index = *detail::point_index("EyeballLeft");
-    static const std::size_t eyeball_right_index = *detail::point_index("EyeballRight");
+    constexpr std::size_t eyeball_left_index = detail::point_at("EyeballLeft");
+    constexpr std::size_t eyeball_right_index = detail::point_at("EyeballRight");
 
     const Point2 eyeball_left = face2d.points()[eyeball_left_index];
     const Point2 eyeball_right = face2d.points()[eyeball_right_index];
@@ -178,8 +179,8 @@ ProjectedFace project_face(const FaceModel& neutral, const FaceState& state) {
     // (x = x_p + x_o) mirrors the face, so its steps swap sides here: beta > 0 turns our face towards
     // the image left, that side's contour points (11.2, 10.10, 2.14, depth 0.27-0.42 d) slip behind
     // the cheek, and N, L, J (0.85-1.18 d) become the silhouette; beta < 0 mirrors it.
-    if (pose.beta_deg > kContourSwapDeg) projected.left_contour = {"N", "L", "J"};
-    if (pose.beta_deg < -kContourSwapDeg) projected.right_contour = {"Q", "M", "K"};
+    if (pose.beta_deg > kContourSwapDeg) projected.left_contour = detail::kLeftContourTurned.id_strings();
+    if (pose.beta_deg < -kContourSwapDeg) projected.right_contour = detail::kRightContourTurned.id_strings();
     // Algorithm 2.3 step 8, in the same un-mirrored frame: the thesis draws the bridge from 9.7 when
     // beta > 0 in its mirrored frame, which is our beta < 0; otherwise the frontal bridge from 9.6.
     projected.nose_bridge = pose.beta_deg < 0.0 ? NoseBridgeSide::right : NoseBridgeSide::left;
@@ -190,4 +191,25 @@ ProjectedFace project_face(const FaceModel& neutral, const FaceState& state) {
 }
 
 }  // namespace v0
+
+namespace detail {
+
+std::array<std::size_t, 3> contour_indices(const std::array<std::string, 3>& side) {
+    for (const ContourSide* known : {&kLeftContour, &kLeftContourTurned, &kRightContour, &kRightContourTurned}) {
+        if (std::equal(side.begin(), side.end(), known->ids.begin())) return known->indices;
+    }
+    std::array<std::size_t, 3> indices{};
+    for (std::size_t k = 0; k < side.size(); ++k) {
+        const std::optional<std::size_t> index = lifted_point_index(side[k]);
+        if (!index) {
+            throw InvalidArgument("contour point \"" + side[k] + "\"",
+                                  "not a point of a projected face; expected one of the 72 model ids "
+                                  "(FaceModel::point_ids()) or A .. S");
+        }
+        indices[k] = *index;
+    }
+    return indices;
+}
+
+}  // namespace detail
 }  // namespace talkface

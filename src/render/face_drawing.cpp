@@ -2,15 +2,15 @@
 // (contour points past 10 degrees, the nose bridge side) already chosen by project_face().
 #include <array>
 #include <cmath>
-#include <initializer_list>
 #include <iterator>
-#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "common/internal_error.hpp"
 #include "lift/lifted_point_index.hpp"
+#include "pose/contour_sides.hpp"
 #include "render/curves.hpp"
 #include "render/layers.hpp"
 #include "render/svg_text.hpp"
@@ -29,24 +29,33 @@ constexpr Rgb kPupilColour{0x11, 0x11, 0x11};
 constexpr Rgb kHighlightColour{0xff, 0xff, 0xff};
 constexpr Rgb kTeethColour{0xfa, 0xf7, 0xf0};
 
-// The points of `ids` (string views, so that the fixed lists a frame draws build no strings).
-template <typename Ids>
-std::vector<Point2> points_of(const ProjectedFace& face, const FacePaints& paints, const Ids& ids) {
+// Every frame draws the same points: the lists below name them by id and are resolved to their
+// indices in the lifted order when this is compiled (lift/lifted_point_index.hpp).
+using Indices3 = std::array<std::size_t, 3>;
+
+// The points at `indices`, in the view.
+template <std::size_t N>
+std::vector<Point2> points_of(const ProjectedFace& face, const FacePaints& paints, const std::array<std::size_t, N>& indices) {
     std::vector<Point2> points;
-    points.reserve(std::size(ids));
-    for (const std::string_view id : ids) points.push_back(paints.point(face, id));
+    points.reserve(N);
+    for (const std::size_t index : indices) points.push_back(paints.point(face, index));
     return points;
 }
 
-std::vector<Point2> points_of(const ProjectedFace& face, const FacePaints& paints,
-                              std::initializer_list<std::string_view> ids) {
-    return points_of<std::initializer_list<std::string_view>>(face, paints, ids);
+// The 23 hair points in polygon order, in the view: the first points of the lifted order.
+std::vector<Point2> points_of_hair(const ProjectedFace& face, const FacePaints& paints) {
+    std::vector<Point2> polygon;
+    polygon.reserve(kHairPointCount);
+    for (std::size_t i = 0; i < kHairPointCount; ++i) polygon.push_back(paints.point(face, i));
+    return polygon;
 }
 
-std::vector<Point2> points_of_hair(const ProjectedFace& face, const FacePaints& paints) {
-    std::vector<Point2> polygon = face.hair_polygon();
-    for (Point2& point : polygon) point = paints.view.apply(point);
-    return polygon;
+// The drawing reads a projected face at the indices of the lifted order, as project_face() makes it.
+void require_lifted_order(const ProjectedFace& face) {
+    if (face.points.size() != kLiftedPointCount) {
+        throw internal_error("a projected face of " + std::to_string(face.points.size()) + " points, not " +
+                             std::to_string(kLiftedPointCount) + " in the lifted order");
+    }
 }
 
 Shape path_shape(std::string_view name, Path path, const ShapePaint& paint) {
@@ -71,7 +80,7 @@ Point2 affine(Point2 origin, Point2 to_a, double s, Point2 to_b, double t) {
 constexpr double kEarCurve[4][2] = {{-0.41, -0.3}, {2.09, -0.065}, {1.41, 1.77}, {-0.5, 1.03}};
 
 // Each ear's upper contact point, top and lower contact point (image left, then right).
-constexpr const char* kEarPoints[2][3] = {{"A", "10.2", "10.8"}, {"B", "10.1", "10.7"}};
+constexpr std::array<Indices3, 2> kEarPoints{lifted_at({"A", "10.2", "10.8"}), lifted_at({"B", "10.1", "10.7"})};
 
 std::vector<Shape> draw_ears(const ProjectedFace& face, const FacePaints& paints) {
     // Thesis step 4's arc(10.8, 10.2, A) gives the ear's three points; drawn through them, it is a
@@ -80,7 +89,7 @@ std::vector<Shape> draw_ears(const ProjectedFace& face, const FacePaints& paints
     constexpr std::string_view names[] = {"ear-left", "ear-right"};
     std::vector<Shape> shapes;
     for (std::size_t i = 0; i < std::size(kEarPoints); ++i) {
-        const std::vector<Point2> points = points_of(face, paints, {kEarPoints[i][0], kEarPoints[i][1], kEarPoints[i][2]});
+        const std::vector<Point2> points = points_of(face, paints, kEarPoints[i]);
         const Point2 contact = points[0];
         const Point2 to_top{points[1].x - contact.x, points[1].y - contact.y};
         const Point2 to_lobe{points[2].x - contact.x, points[2].y - contact.y};
@@ -96,11 +105,12 @@ std::vector<Shape> draw_ears(const ProjectedFace& face, const FacePaints& paints
 void draw_face_contour(const ProjectedFace& face, const FacePaints& paints, Layer& layer) {
     // arc(11.2, 11.2a, 11.1, 11.3a, 11.3), arc(11.3, 10.9, 2.13), arc(2.13, 2.1, 2.14),
     // arc(2.14, 10.10, 11.2) as one closed curve: a face outline has no corners where they meet.
-    const auto& left = face.left_contour;
-    const auto& right = face.right_contour;
-    const std::vector<Point2> points =
-        points_of(face, paints,
-                  {left[1], left[0], "11.2a", "11.1", "11.3a", right[0], right[1], right[2], "2.1", left[2]});
+    // The sides are Algorithm 2.3's substitutions as project_face() chose them.
+    const Indices3 left = contour_indices(face.left_contour);
+    const Indices3 right = contour_indices(face.right_contour);
+    constexpr std::array<std::size_t, 4> kMiddle = lifted_at({"11.2a", "11.1", "11.3a", "2.1"});
+    const std::vector<Point2> points = points_of(face, paints, std::array<std::size_t, 10>{
+        left[1], left[0], kMiddle[0], kMiddle[1], kMiddle[2], right[0], right[1], right[2], kMiddle[3], left[2]});
     const std::vector<CubicSegment> segments = closed_curve_segments(points);
     // Drawn as two open paths, so that the jaw, which the chin 2.1 moves with every mouth shape, is
     // animated apart from the rest, which only the pose moves. The upper part runs from cheek to
@@ -128,9 +138,8 @@ void draw_nose(const ProjectedFace& face, const FacePaints& paints, Layer& layer
     // into the wing, the wings and the tip as one line arc(9.14, 9.2, 9.15, 9.1, 9.13),
     // and two nostrils, all one path; a look without outlines shades the bridge's side instead.
     const bool is_right = face.nose_bridge == NoseBridgeSide::right;
-    using NoseIds = std::array<std::string_view, 7>;
-    constexpr NoseIds kRightSide{"9.7", "C", "9.13", "9.1", "9.5", "9.15", "9.14"};
-    constexpr NoseIds kLeftSide{"9.6", "C", "9.14", "9.2", "9.4", "9.15", "9.13"};
+    constexpr std::array<std::size_t, 7> kRightSide = lifted_at({"9.7", "C", "9.13", "9.1", "9.5", "9.15", "9.14"});
+    constexpr std::array<std::size_t, 7> kLeftSide = lifted_at({"9.6", "C", "9.14", "9.2", "9.4", "9.15", "9.13"});
     const std::vector<Point2> p = points_of(face, paints, is_right ? kRightSide : kLeftSide);
     // p: the bridge's top, C, the bridge's lower end, wing, nostril's bottom, tip, the other wing's top.
     if (paints.nose_shade.fill.kind != PaintKind::none) {
@@ -139,7 +148,8 @@ void draw_nose(const ProjectedFace& face, const FacePaints& paints, Layer& layer
                                  lerp(lerp(p[1], p[5], 0.6), p[6], 0.25)});
         layer.elements.push_back(path_shape("nose-shade", std::move(shade), paints.nose_shade));
     }
-    const std::vector<Point2> bottom = points_of(face, paints, {"9.14", "9.2", "9.15", "9.1", "9.13"});
+    constexpr std::array<std::size_t, 5> kBottom = lifted_at({"9.14", "9.2", "9.15", "9.1", "9.13"});
+    const std::vector<Point2> bottom = points_of(face, paints, kBottom);
     const Point2 bridge_start = lerp(p[0], p[1], 0.5);
     Path path;
     if (paints.nose.stroke.kind != PaintKind::none) {
@@ -148,8 +158,8 @@ void draw_nose(const ProjectedFace& face, const FacePaints& paints, Layer& layer
     }
     // The nostrils: small loops above the line, between the wing's bottom (9.4 / 9.5), D / E and
     // the tip.
-    constexpr std::array<std::array<std::string_view, 4>, 2> kNostrils{
-        {{"9.4", "D", "9.15", "9.2"}, {"9.5", "E", "9.15", "9.1"}}};
+    constexpr std::array<std::array<std::size_t, 4>, 2> kNostrils{lifted_at({"9.4", "D", "9.15", "9.2"}),
+                                                                  lifted_at({"9.5", "E", "9.15", "9.1"})};
     for (const auto& ids : kNostrils) {
         const std::vector<Point2> q = points_of(face, paints, ids);
         path.corner_cut_closed({lerp(q[0], q[3], 0.2), lerp(q[1], q[3], 0.15), lerp(q[1], q[2], 0.55)});
@@ -159,8 +169,8 @@ void draw_nose(const ProjectedFace& face, const FacePaints& paints, Layer& layer
 
 void draw_eyebrows(const ProjectedFace& face, const FacePaints& paints, Layer& layer) {
     // Corner-cut arc(4.6, 4.4a, 4.4, 4.2) and arc(4.2, G, F, 4.6): one closed outline per brow.
-    constexpr std::array<std::array<std::string_view, 6>, 2> brows{
-        {{"4.6", "4.4a", "4.4", "4.2", "G", "F"}, {"4.5", "4.3a", "4.3", "4.1", "H", "I"}}};
+    constexpr std::array<std::array<std::size_t, 6>, 2> brows{lifted_at({"4.6", "4.4a", "4.4", "4.2", "G", "F"}),
+                                                              lifted_at({"4.5", "4.3a", "4.3", "4.1", "H", "I"})};
     constexpr std::string_view names[] = {"eyebrow-left", "eyebrow-right"};
     for (std::size_t i = 0; i < brows.size(); ++i) {
         Path outline;
@@ -171,9 +181,9 @@ void draw_eyebrows(const ProjectedFace& face, const FacePaints& paints, Layer& l
 
 // The names of one eye's parts (static text: the drawing model keeps views of it).
 struct EyeParts {
-    std::array<std::string_view, 4> outline;  // corner, top, corner, bottom
-    const char* eyeball;
-    const char* radius_fapu;
+    std::array<std::size_t, 4> outline;  // corner, top, corner, bottom
+    std::size_t eyeball;
+    FapuIndex radius_fapu;
     std::string_view clip_id, outline_id, gradient_id;
     std::string_view white, eyeball_group, outline_stroke, lid;
 };
@@ -181,9 +191,9 @@ struct EyeParts {
 // Image sides: left, then right.
 const std::vector<EyeParts>& eye_parts() {
     static const std::vector<EyeParts> parts{
-        {{"3.12", "3.2", "3.8", "3.4"}, "EyeballLeft", "r1", "tf-eye-left-clip", "tf-eye-left",
+        {lifted_at({"3.12", "3.2", "3.8", "3.4"}), lifted_at("EyeballLeft"), kFapuR1, "tf-eye-left-clip", "tf-eye-left",
          "tf-iris-left-gradient", "eye-left-white", "eyeball-left", "eye-left-outline", "eye-left-lid"},
-        {{"3.7", "3.1", "3.11", "3.3"}, "EyeballRight", "r2", "tf-eye-right-clip", "tf-eye-right",
+        {lifted_at({"3.7", "3.1", "3.11", "3.3"}), lifted_at("EyeballRight"), kFapuR2, "tf-eye-right-clip", "tf-eye-right",
          "tf-iris-right-gradient", "eye-right-white", "eyeball-right", "eye-right-outline", "eye-right-lid"}};
     return parts;
 }
@@ -246,8 +256,10 @@ struct HeadAxes {
 };
 
 HeadAxes head_axes(const ProjectedFace& face, const FacePaints& paints) {
-    const Point2 left = paints.point(face, "3.12"), right = paints.point(face, "3.7");
-    const Point2 frontal_left = face.face.point("3.12"), frontal_right = face.face.point("3.7");
+    constexpr std::size_t k3_12 = point_at("3.12"), k3_7 = point_at("3.7");
+    // The model points come first in the lifted order: the same index in both.
+    const Point2 left = paints.point(face, k3_12), right = paints.point(face, k3_7);
+    const Point2 frontal_left = face.face.points()[k3_12], frontal_right = face.face.points()[k3_7];
     const double angle = std::atan2(right.y - left.y, right.x - left.x) -
                          std::atan2(frontal_right.y - frontal_left.y, frontal_right.x - frontal_left.x);
     return {{std::cos(angle), std::sin(angle)}, {-std::sin(angle), std::cos(angle)}};
@@ -271,7 +283,7 @@ void draw_eyes(const ProjectedFace& face, const FacePaints& paints, const HeadAx
         layer.elements.push_back(reference_shape(eye.white, clip, paints.eye_white));
         // Clipped by the eye outline, so a closing lid hides iris and pupil (thesis 6.3.1).
         const Point2 pupil = paints.point(face, eye.eyeball);
-        const double iris_radius_px = face.face.fapu(eye.radius_fapu);
+        const double iris_radius_px = face.face.fapus()[eye.radius_fapu];
         const double iris_radius = paints.view.scale() * iris_radius_px;
         const double pupil_radius = kPupilToIrisRadius * iris_radius;
         // The light comes from the upper left of the image, whatever the view turns.
@@ -319,7 +331,8 @@ Shape clipped_group(std::string_view name, std::size_t clip, std::vector<Shape> 
 }
 
 void draw_mouth(const ProjectedFace& face, const FacePaints& paints, const HeadAxes& axes, Layer& layer) {
-    const std::vector<Point2> lips = points_of(face, paints, {"8.1", "8.9", "8.4", "8.2", "8.3", "8.10"});
+    constexpr std::array<std::size_t, 6> kLips = lifted_at({"8.1", "8.9", "8.4", "8.2", "8.3", "8.10"});
+    const std::vector<Point2> lips = points_of(face, paints, kLips);
     Path outer;
     outer.move_to(lips[0])
         .arc({lips[0], lips[1], lips[2]})
@@ -327,7 +340,8 @@ void draw_mouth(const ProjectedFace& face, const FacePaints& paints, const HeadA
         .arc({lips[4], lips[5], lips[0]})
         .close();
     // arc(R, 2.2, S) + arc(S, 2.3, R): R and S sit on the corners 8.4 and 8.3 (SPEC: S = 8.3).
-    const std::vector<Point2> inner_points = points_of(face, paints, {"R", "2.2", "S", "2.3"});
+    constexpr std::array<std::size_t, 4> kInner = lifted_at({"R", "2.2", "S", "2.3"});
+    const std::vector<Point2> inner_points = points_of(face, paints, kInner);
     Definition opening;
     opening.kind = DefinitionKind::clip_path;
     opening.id = "tf-mouth-clip";
@@ -347,7 +361,7 @@ void draw_mouth(const ProjectedFace& face, const FacePaints& paints, const HeadA
     // upper teeth, everywhere but the corners; under them (where the opening moved down by the
     // teeth's height reaches), the lower teeth, the tongue above them and the dark above that.
     const auto& [across, down] = axes;
-    const double mw = paints.view.scale() * face.face.fapu("MW0");
+    const double mw = paints.view.scale() * face.face.fapus()[kFapuMW0];
     const auto offset = [&](double across_mw, double down_mw) {
         return Point2{mw * (across_mw * across.x + down_mw * down.x), mw * (across_mw * across.y + down_mw * down.y)};
     };
@@ -407,19 +421,13 @@ Point2 ViewMap::apply(Point2 image_xy) const {
     return apply_to_offset({image_xy.x - origin_.x, image_xy.y - origin_.y});
 }
 
-Point2 FacePaints::point(const ProjectedFace& face, std::string_view id) const {
-    // project_face() keeps the lifted order (the 72 model points, then A .. S); a face built
-    // otherwise is searched by id.
-    const std::optional<std::size_t> index = lifted_point_index(id);
-    if (index && *index < face.points.size() && face.points[*index].id == id) return view.apply(face.points[*index].xy);
-    return view.apply(face.point(id));
-}
+Point2 FacePaints::point(const ProjectedFace& face, std::size_t index) const { return view.apply(face.points[index].xy); }
 
 std::vector<Point2> hair_layer_points(const ProjectedFace& face, const FacePaints& paints) {
-    std::vector<Point2> points = face.hair_polygon();
-    for (Point2& point : points) point = paints.view.apply(point);
-    for (const auto& ear : kEarPoints) {
-        for (const char* id : ear) points.push_back(paints.point(face, id));
+    require_lifted_order(face);
+    std::vector<Point2> points = points_of_hair(face, paints);
+    for (const Indices3& ear : kEarPoints) {
+        for (const std::size_t index : ear) points.push_back(paints.point(face, index));
     }
     return points;
 }
@@ -470,6 +478,7 @@ FacePaints make_face_paints(const ProjectedFace& face, const LayerStyle& style) 
 }
 
 Layer draw_hair_layer(const ProjectedFace& face, const FacePaints& paints) {
+    require_lifted_order(face);
     Path outline;
     outline.corner_cut_closed(points_of_hair(face, paints));
     Layer layer;
@@ -479,6 +488,7 @@ Layer draw_hair_layer(const ProjectedFace& face, const FacePaints& paints) {
 }
 
 Layer draw_face_layer(const ProjectedFace& face, const FacePaints& paints) {
+    require_lifted_order(face);
     Layer layer;
     draw_eye_definitions(face, paints, layer);
     draw_face_contour(face, paints, layer);

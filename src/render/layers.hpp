@@ -62,8 +62,8 @@ struct FacePaints {
     ShapePaint eye_lid;     // the upper lids' band (its stroke width); none: no lid
     ShapePaint teeth, lower_teeth, tongue;   // inside the mouth, over mouth_opening's fill
     RadialGradient iris_gradient;            // of both irises
-    // A point of `face` by id, in the view. \throws talkface::InvalidArgument for an unknown id.
-    Point2 point(const ProjectedFace& face, std::string_view id) const;
+    // The point of `face` at `index` in the lifted order (lift/lifted_point_index.hpp), in the view.
+    Point2 point(const ProjectedFace& face, std::size_t index) const;
 };
 
 // \throws talkface::InvalidArgument ("look") unless `look` is FaceLook::outlined or FaceLook::flat.

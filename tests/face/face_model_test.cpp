@@ -8,6 +8,7 @@
 
 #include "common/test_paths.hpp"
 #include "face/fapu_measure.hpp"
+#include "face/point_ids.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/face_model.hpp"
 
@@ -214,5 +215,36 @@ TEST_SUITE("FaceModel") {
         CHECK(face == FaceModel::default_face());
         CHECK(FaceModel::is_point_id("hair.23"));
         CHECK_FALSE(FaceModel::is_point_id("hair.24"));
+    }
+
+    TEST_CASE("a point id resolves to its index in point_ids(), at compile time and by search") {
+        // point_at() in a constant expression: the build itself checks these.
+        static_assert(detail::point_at("hair.1") == 0);
+        static_assert(detail::point_at("11.1") == detail::kHairPointCount);
+        static_assert(detail::point_at("EyeballRight") == FaceModel::kPointCount - 1);
+        const std::vector<std::string>& ids = FaceModel::point_ids();
+        REQUIRE(ids.size() == FaceModel::kPointCount);
+        for (std::size_t i = 0; i < ids.size(); ++i) {
+            CAPTURE(ids[i]);
+            CHECK(detail::point_at(ids[i]) == i);
+            CHECK(detail::point_index(ids[i]) == i);
+        }
+        for (const char* unknown : {"", "8.5", "hair.0", "hair.24", "EyeballLef", "EyeballLeftX", "8.4 "}) {
+            CAPTURE(unknown);
+            CHECK_FALSE(detail::point_index(unknown).has_value());
+            CHECK_THROWS(detail::point_at(unknown));
+        }
+    }
+
+    TEST_CASE("the pipeline's move by index checks a point as set_point does, naming it") {
+        FaceModel face;
+        constexpr std::size_t k2_2 = detail::point_at("2.2");
+        detail::FacePointEditor::set_point(face, k2_2, {12.5, -3.0});
+        CHECK(face.point("2.2") == Point2{12.5, -3.0});
+        CHECK_THROWS_WITH_AS(detail::FacePointEditor::set_point(face, k2_2, {NAN, 1.0}),
+                             doctest::Contains("point \"2.2\""), InvalidArgument);
+        CHECK_THROWS_WITH_AS(detail::FacePointEditor::set_point(face, k2_2, {1.0, -1.5e6}),
+                             doctest::Contains("-1500000"), InvalidArgument);
+        CHECK(face.point("2.2") == Point2{12.5, -3.0});
     }
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/test_paths.hpp"
+#include "lift/lifted_point_index.hpp"
 #include "lift/local_frame.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/face_lift.hpp"
@@ -269,5 +270,23 @@ TEST_SUITE("FaceLift") {
         }
         CHECK_THROWS_WITH_AS(place_face(face, {std::nan(""), 0.0}, 65.0), doctest::Contains("origin"),
                              InvalidArgument);
+    }
+
+    TEST_CASE("the lifted order's indices are where lift_face puts each point") {
+        static_assert(detail::lifted_at("A") == FaceModel::kPointCount);
+        static_assert(detail::lifted_at("S") == detail::kLiftedPointCount - 1);
+        const LiftedFace lifted = lift_face(FaceModel::default_face());
+        REQUIRE(lifted.points.size() == detail::kLiftedPointCount);
+        for (std::size_t i = 0; i < lifted.points.size(); ++i) {
+            const std::string& id = lifted.points[i].id;
+            CAPTURE(id);
+            CHECK(detail::lifted_at(id) == i);
+            CHECK(detail::lifted_point_index(id) == i);
+        }
+        CHECK(detail::lifted_at({"2.1", "N"}) == std::array<std::size_t, 2>{detail::point_at("2.1"), FaceModel::kPointCount + 13});
+        for (const char* unknown : {"O", "P", "T", "", "AB", "hair.24"}) {
+            CAPTURE(unknown);
+            CHECK_FALSE(detail::lifted_point_index(unknown).has_value());
+        }
     }
 }

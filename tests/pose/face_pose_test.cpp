@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "lift/lifted_point_index.hpp"
 #include "lift/local_frame.hpp"
+#include "pose/contour_sides.hpp"
 #include "pose/test_faces.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/face_lift.hpp"
@@ -258,6 +260,24 @@ TEST_SUITE("face pose") {
             CHECK(other.left_contour == left);
             CHECK(other.right_contour == std::array<std::string, 3>{"Q", "M", "K"});
         }
+    }
+
+    TEST_CASE("the drawing reads each contour side at the indices of its points") {
+        // project_face()'s sides, the four of Algorithm 2.3 steps 5-6, and any other ids by search.
+        const FaceModel neutral = FaceModel::default_face();
+        for (double beta_deg : {-15.0, 0.0, 15.0}) {
+            CAPTURE(beta_deg);
+            const ProjectedFace face = project_face(neutral, posed(0, beta_deg, 0));
+            for (const auto* side : {&face.left_contour, &face.right_contour}) {
+                const std::array<std::size_t, 3> indices = detail::contour_indices(*side);
+                for (std::size_t k = 0; k < 3; ++k) CHECK(face.points[indices[k]].id == (*side)[k]);
+            }
+        }
+        const std::array<std::string, 3> mixed{"N", "10.10", "K"};
+        CHECK(detail::contour_indices(mixed) ==
+              std::array<std::size_t, 3>{detail::lifted_at("N"), detail::lifted_at("10.10"), detail::lifted_at("K")});
+        CHECK_THROWS_WITH_AS(detail::contour_indices({"11.2", "10.11", "2.14"}), doctest::Contains("\"10.11\""),
+                             InvalidArgument);
     }
 
     TEST_CASE("the nose bridge is drawn from 9.6 unless the face turns to the image right") {
