@@ -72,9 +72,8 @@ void apply_dithered_window(const float* __restrict samples, const std::uint32_t*
         frame[i] = (samples[i] + (centred_uniform(first[i]) + centred_uniform(second[i])) * scale) * window[i];
 }
 
-// Two xorshift64 states, one per lane of a 128-bit vector (GCC's vector extension: SSE2 on x86-64).
+// Two frames' draws are made at once (xorshift.hpp).
 constexpr std::size_t kLanes = 2;
-typedef std::uint64_t Lanes __attribute__((vector_size(16)));
 
 // From one frame's first dither state to the next frame's: 2 draws a sample. Made by the compiler.
 constexpr XorshiftJump kDitherJump(2 * kWindow);
@@ -148,7 +147,7 @@ private:
     // deviation: the same sequence on every run, cheap enough for every sample. Frame by frame, in
     // order, sample i takes draws 2i and 2i + 1 of its frame's 2 kWindow. The steps of one sequence
     // follow each other, but a frame's first state is a fixed linear map of the frame before's
-    // (kDitherJump), so two frames' draws are made at once, one in each lane of a vector, and
+    // (kDitherJump), so two frames' draws are made at once, side by side (xorshift.hpp), and
     // apply_dithered_window() turns them into floats four at a time: the same numbers as one draw
     // after another, for 0.19 G instructions instead of 0.29 G in the 3 minutes (bench/README.md,
     // session 13).
@@ -162,16 +161,7 @@ private:
     }
 
     void draw_two_frames() {
-        Lanes state = {dither_state_, kDitherJump.apply(dither_state_)};
-        for (std::size_t i = 0; i < kWindow; ++i) {
-            for (std::size_t draw = 0; draw < 2; ++draw) {
-                state = xorshift64(state);
-                const Lanes top24 = state >> 40;
-                lane_draws_[0][draw][i] = static_cast<std::uint32_t>(top24[0]);
-                lane_draws_[1][draw][i] = static_cast<std::uint32_t>(top24[1]);
-            }
-        }
-        dither_state_ = state[1];
+        dither_state_ = detail::draw_two_frames<FastXorshiftPair>(dither_state_, kDitherJump, lane_draws_);
     }
     // Each draw is uniform in [-0.5, 0.5) (variance 1/12); two of them have variance 1/6.
     static constexpr float kDitherScale = 2.449489743f * kDitherStep;  // sqrt(6)

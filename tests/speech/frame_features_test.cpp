@@ -1,7 +1,9 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "audio/audio_source.hpp"
@@ -100,17 +102,49 @@ TEST_SUITE("frame features") {
         }
     }
 
-    TEST_CASE("two xorshift64 states in the lanes of a vector step as each does alone") {
-        typedef std::uint64_t Lanes __attribute__((vector_size(16)));
+    TEST_CASE("two xorshift64 states stepped as a pair step as each does alone, in either form") {
+        // FastXorshiftPair is the vector form on GCC and Clang; the portable form is built here too,
+        // so that what a compiler without the vector extension (MSVC) runs is tested on every build.
         std::uint64_t a = 1, b = 0xFFFFFFFFFFFFFFFFull;
-        Lanes lanes = {a, b};
+        XorshiftPair portable(a, b);
+        FastXorshiftPair fast(a, b);
         for (int n = 0; n < 1000; ++n) {
             a = xorshift64(a);
             b = xorshift64(b);
-            lanes = xorshift64(lanes);
+            portable.step();
+            fast.step();
             CAPTURE(n);
-            REQUIRE(lanes[0] == a);
-            REQUIRE(lanes[1] == b);
+            REQUIRE(portable.first() == a);
+            REQUIRE(portable.second() == b);
+            REQUIRE(fast.first() == a);
+            REQUIRE(fast.second() == b);
+        }
+    }
+
+    TEST_CASE("two frames' dither draws are one sequence's, the same in the portable and the fast form") {
+        constexpr std::size_t kSamples = 400;  // the features' window: 2 x 400 draws a frame
+        constexpr XorshiftJump jump(2 * kSamples);
+        using Draws = std::array<std::array<std::array<std::uint32_t, kSamples>, 2>, 2>;
+        for (std::uint64_t state : {0x9E3779B97F4A7C15ull, 1ull, 0xFFFFFFFFFFFFFFFFull}) {
+            CAPTURE(state);
+            Draws portable{}, fast{};
+            const std::uint64_t portable_next = draw_two_frames<XorshiftPair>(state, jump, portable);
+            const std::uint64_t fast_next = draw_two_frames<FastXorshiftPair>(state, jump, fast);
+            CHECK(portable == fast);
+            CHECK(portable_next == fast_next);
+            // One draw after another: frame 0's 800, then frame 1's, then where frame 2 starts.
+            std::uint64_t stepped = state;
+            bool same = true;
+            for (std::size_t frame = 0; frame < 2; ++frame) {
+                for (std::size_t i = 0; i < kSamples; ++i) {
+                    for (std::size_t k = 0; k < 2; ++k) {
+                        stepped = xorshift64(stepped);
+                        same = same && portable[frame][k][i] == static_cast<std::uint32_t>(stepped >> 40);
+                    }
+                }
+            }
+            CHECK(same);
+            CHECK(portable_next == stepped);
         }
     }
 }
