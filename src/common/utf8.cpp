@@ -1,5 +1,7 @@
 #include "common/utf8.hpp"
 
+#include <string>
+
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
@@ -27,6 +29,14 @@ std::string utf8_from_marked_text(std::string_view text, const std::string& sour
     const bool is_big_endian = text.size() >= 2 && text[0] == '\xFE' && text[1] == '\xFF';
     const bool is_little_endian = text.size() >= 2 && text[0] == '\xFF' && text[1] == '\xFE';
     if (!is_big_endian && !is_little_endian) return std::string(text);
+    // UTF-16 is 2-byte units: an odd last byte is half of one, a file cut short or not UTF-16 at all.
+    // Refused rather than dropped, so that nothing the user wrote goes missing without a word.
+    if (text.size() % 2 != 0) {
+        throw ParseError(source, 0, 0, "",
+                         "not UTF-16: an odd number of bytes (" + std::to_string(text.size()) +
+                             ", the byte order mark's 2 included), so the last byte is half a 16-bit unit; "
+                             "was the file cut short?");
+    }
     std::string out;
     const auto unit = [&](std::size_t k) -> std::uint32_t {
         const auto a = static_cast<unsigned char>(text[k]);

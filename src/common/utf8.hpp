@@ -15,7 +15,8 @@ void append_utf8(std::string& out, std::uint32_t code);
 // A text file's bytes as UTF-8: a UTF-8 byte order mark dropped; UTF-16 with its byte order mark
 // (little or big endian: what Praat writes for a text that is not ASCII, and Windows Notepad's
 // "Unicode") converted; anything else as it is.
-// \throws talkface::ParseError naming `source` for half a surrogate pair.
+// \throws talkface::ParseError naming `source` for UTF-16 with half a surrogate pair or an odd
+// number of bytes (its last byte half a unit: once dropped without a word, refused since session 14).
 std::string utf8_from_marked_text(std::string_view text, const std::string& source);
 
 }  // namespace talkface::detail

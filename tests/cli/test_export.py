@@ -178,6 +178,22 @@ def test_a_timing_that_parts_from_the_transcript_names_the_place_and_writes_noth
     assert sorted(p.name for p in tmp_path.iterdir()) == ["late.json", "words.json"]
 
 
+def test_a_utf16_timing_of_an_odd_number_of_bytes_is_refused_naming_it(tmp_path, aligned):
+    # Saved as Notepad's "Unicode" (UTF-16 with its byte order mark) it reads; a byte more is half a
+    # 16-bit unit, refused with the file's name instead of dropped.
+    words = [{"text": s["text"], "start": s["start"], "end": s["end"]} for s in aligned["syllables"]]
+    timing = tmp_path / "words.json"
+    timing.write_bytes(json.dumps(words, ensure_ascii=False).encode("utf-16"))
+    out = tmp_path / "cues.tsv"
+    assert run("export", AUDIO, TRANSCRIPT, "-o", out, "--timing", timing, "--quiet").returncode == 0
+    out.unlink()
+    timing.write_bytes(timing.read_bytes() + b"\n")
+    result = run("export", AUDIO, TRANSCRIPT, "-o", out, "--timing", timing)
+    assert result.returncode == 1
+    assert result.stderr.startswith(f"talkface: error: {timing}: not UTF-16: an odd number of bytes")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["words.json"]
+
+
 def test_lottie_is_the_face_itself_over_the_whole_speech(tmp_path):
     lottie = json.loads(export(tmp_path, "face.json", "--format", "lottie", "--fps", 20, "--seed", 3).read_text())
     assert (lottie["fr"], lottie["ip"]) == (20, 0)

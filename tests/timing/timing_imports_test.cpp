@@ -2,7 +2,10 @@
 // round trips through every format; refusals that name the file, the line and where the texts part.
 #include <doctest/doctest.h>
 
+#include <fstream>
 #include <string>
+
+#include "common/test_paths.hpp"
 
 #include "talkface/errors.hpp"
 #include "talkface/timing_formats.hpp"
@@ -204,5 +207,41 @@ TEST_SUITE("timing imports") {
                              talkface::InvalidArgument);
         CHECK_THROWS_WITH_AS(talkface::read_timing_string("", "ass", transcript(), 1.0), doctest::Contains("textgrid, srt"),
                              talkface::InvalidArgument);
+    }
+
+    TEST_CASE("a UTF-16 timing file reads as its UTF-8, and one of an odd number of bytes is refused, named") {
+        // "words.json" in UTF-16 little endian with its byte order mark, as Windows Notepad saves it.
+        const std::string json = R"([{"text":"你好世界再見","start":0.5,"end":2.0}])";
+        std::u16string units;
+        for (std::size_t k = 0; k < json.size();) {
+            const auto byte = static_cast<unsigned char>(json[k]);
+            const std::size_t length = byte < 0x80 ? 1 : 3;  // ASCII and the BMP's 3-byte characters only
+            char32_t code = length == 1 ? byte : (byte & 0x0Fu) << 12 | (static_cast<unsigned char>(json[k + 1]) & 0x3Fu) << 6 |
+                                                     (static_cast<unsigned char>(json[k + 2]) & 0x3Fu);
+            units += static_cast<char16_t>(code);
+            k += length;
+        }
+        std::string bytes = "\xFF\xFE";
+        for (const char16_t unit : units) {
+            bytes += static_cast<char>(unit & 0xFF);
+            bytes += static_cast<char>(unit >> 8);
+        }
+        const auto write = [](const std::string& path, const std::string& content) {
+            std::ofstream(path, std::ios::binary) << content;
+        };
+        const std::string whole = talkface::test::output_path("utf16_words.json");
+        write(whole, bytes);
+        const Timeline timeline = talkface::read_timing_file(whole, transcript(), 2.5);
+        CHECK(timeline.syllables.front().start_s == 0.5);
+        CHECK(timeline.syllables.back().end_s == 2.0);
+        // One byte more: half a unit, which was dropped without a word before.
+        const std::string odd = talkface::test::output_path("utf16_words_odd.json");
+        write(odd, bytes + "\n");
+        CHECK_THROWS_WITH_AS(talkface::read_timing_file(odd, transcript(), 2.5),
+                             doctest::Contains((odd + ": not UTF-16: an odd number of bytes (" +
+                                                std::to_string(bytes.size() + 1) + ", ").c_str()),
+                             ParseError);
+        // The TextGrid reader, which also reads strings as they are, refuses the same.
+        CHECK(error_of(std::string("\xFE\xFF\x00", 3), "textgrid").find("t: not UTF-16: an odd number of bytes (3, ") == 0);
     }
 }
