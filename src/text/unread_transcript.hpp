@@ -12,9 +12,11 @@
 // Exported from libtalkface though not in its installed headers, for the command: not API, may change.
 namespace talkface::detail {
 
-// "N sentences, none with a Mandarin reading", then the reader's first warning, which names the
-// file, line and character it skipped (the user's way to the cause), and how many more there are:
-// "; <transcript>:1:1: "★" (U+2605) has no Mandarin reading; skipped (and 2 more warnings)".
+// "N sentences, none with a Mandarin reading" ("1 sentence, with no Mandarin reading"), then the
+// reader's first warning, which names the file, line and character it skipped (the user's way to
+// the cause), and how many more there are:
+// "; <transcript>:1:1: "★" (U+2605) has no Mandarin reading; skipped (and 2 more warnings)"
+// ("and 1 more warning").
 TALKFACE_API std::string describe_unread_transcript(const Timeline& transcript);
 
 }  // namespace talkface::detail

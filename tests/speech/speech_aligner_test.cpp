@@ -378,7 +378,7 @@ TEST_SUITE("SpeechAligner") {
                              doctest::Contains("no syllables to align (0 sentences, none with a Mandarin reading; <transcript>:1:1: "),
                              InvalidArgument);
         CHECK_THROWS_WITH_AS(aligner.align_file(clip_path("one_sentence.wav"), symbols),
-                             doctest::Contains("has no Mandarin reading; skipped (and 1 more warnings))"), InvalidArgument);
+                             doctest::Contains("has no Mandarin reading; skipped (and 1 more warning))"), InvalidArgument);
     }
 
     TEST_CASE("unreadable, empty, silent and truncated audio name the file and what is wrong") {

@@ -7,6 +7,7 @@
 
 #include "common/test_paths.hpp"
 #include "text/reading_tables.hpp"
+#include "text/unread_transcript.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/transcript.hpp"
 
@@ -433,5 +434,22 @@ TEST_SUITE("transcript") {
         CHECK(sentence_count == 20);
         CHECK(syllable_count == 310);
         CHECK(wrong_count == 0);
+    }
+
+    TEST_CASE("a transcript with nothing to read is described with its counts in the singular or plural") {
+        Timeline transcript;
+        CHECK(detail::describe_unread_transcript(transcript) == "0 sentences, none with a Mandarin reading");
+        transcript.sentences.resize(1);
+        transcript.warnings = {"t.txt:1:1: \"★\" (U+2605) has no Mandarin reading; skipped"};
+        CHECK(detail::describe_unread_transcript(transcript) ==
+              "1 sentence, with no Mandarin reading; t.txt:1:1: \"★\" (U+2605) has no Mandarin reading; skipped");
+        transcript.sentences.resize(2);
+        transcript.warnings.push_back("t.txt:1:2: second");
+        CHECK(detail::describe_unread_transcript(transcript) ==
+              "2 sentences, none with a Mandarin reading; t.txt:1:1: \"★\" (U+2605) has no Mandarin reading; "
+              "skipped (and 1 more warning)");
+        transcript.warnings.push_back("t.txt:1:3: third");
+        CHECK(doctest::String(detail::describe_unread_transcript(transcript).c_str()) ==
+              doctest::Contains("skipped (and 2 more warnings)"));
     }
 }
