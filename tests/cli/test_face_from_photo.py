@@ -1,5 +1,7 @@
 """`talkface face-from-photo`: a face file and an overlay from a photo, errors with exit code 1."""
 import os
+import pathlib
+import shutil
 import struct
 import subprocess
 import xml.etree.ElementTree as ET
@@ -82,3 +84,39 @@ def test_a_truncated_photo_is_named_with_exit_1(tmp_path):
 def test_an_unknown_locator_is_a_usage_error(tmp_path):
     result = run("face-from-photo", ASTRONAUT, "-o", tmp_path / "f.xml", "--locator", "haar")
     assert result.returncode == 2
+
+
+def test_the_command_opens_the_photo_stage_only_for_this_command():
+    # No OpenCV, dlib or libtalkface_photo among what the command needs to start (a `talkface
+    # syllables` would pay some 50 M instructions to load them): face-from-photo's module links them.
+    needed = subprocess.run(["readelf", "-d", CLI], capture_output=True, text=True, check=True).stdout
+    assert "talkface_photo" not in needed and "opencv" not in needed and "dlib" not in needed
+
+
+def test_without_its_module_the_command_names_it_and_the_packages(tmp_path):
+    # The command copied away from the lib/talkface/ beside it finds libtalkface (its build run path)
+    # but not the module: every other command still runs, face-from-photo is refused with exit 1.
+    copy = tmp_path / "bin" / "talkface"
+    copy.parent.mkdir()
+    shutil.copy(CLI, copy)
+    assert subprocess.run([copy, "render", "-o", tmp_path / "face.svg"]).returncode == 0
+    blank = tmp_path / "blank.png"
+    write_grey_png(blank, 64, 64, 180)
+    result = subprocess.run([copy, "face-from-photo", blank, "-o", tmp_path / "face.xml"], capture_output=True,
+                            text=True, timeout=60)
+    assert result.returncode == 1
+    assert result.stderr.startswith(f"talkface: error: {tmp_path}/")  # LIBDIR/talkface/ beside bin/
+    assert "/talkface/talkface_face_from_photo.so: face-from-photo's module is missing" in result.stderr
+    assert not (tmp_path / "face.xml").exists()
+    # A module there that cannot be loaded (as when a library it links is missing): the loader's
+    # reason, and the Debian packages of what it links.
+    module = pathlib.Path(result.stderr[len("talkface: error: "):].split(": ")[0])
+    module.parent.mkdir(parents=True)
+    module.write_bytes(b"not a shared object\n")
+    result = subprocess.run([copy, "face-from-photo", blank, "-o", tmp_path / "face.xml"], capture_output=True,
+                            text=True, timeout=60)
+    assert result.returncode == 1
+    assert result.stderr.startswith(f"talkface: error: {module}: face-from-photo needs the photo stage, which could "
+                                    f"not be loaded ({module}: ")
+    assert "libopencv-objdetect406" in result.stderr
+    assert not (tmp_path / "face.xml").exists()

@@ -52,6 +52,16 @@ if [ -x "$prefix/bin/talkface" ]; then
   mkdir -p "$work_dir/run"
   (cd "$work_dir/run" && "$prefix/bin/talkface" render -o face.svg)
   grep -q '<svg' "$work_dir/run/face.svg"
+  # face-from-photo opens its module (LIBDIR/talkface/), which links the photo stage: here it loads
+  # and refuses a file that is no photo, naming it (not the module).
+  if "$prefix/bin/talkface" face-from-photo --help >/dev/null 2>&1; then
+    printf 'not a photo\n' >"$work_dir/run/photo.png"
+    if (cd "$work_dir/run" && "$prefix/bin/talkface" face-from-photo photo.png -o face.xml 2>photo.err); then
+      echo "face-from-photo read a file that is no photo" >&2; exit 1
+    fi
+    grep -q 'photo.png' "$work_dir/run/photo.err" && ! grep -q 'could not be loaded' "$work_dir/run/photo.err" ||
+      { echo "the installed face-from-photo did not run its module:" >&2; cat "$work_dir/run/photo.err" >&2; exit 1; }
+  fi
   echo "installed command: $("$prefix/bin/talkface" --version)"
 fi
 
