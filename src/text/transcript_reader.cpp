@@ -81,6 +81,22 @@ bool is_silent_punctuation(char32_t c) {
            (c >= 0xFE30 && c <= 0xFE6B) || (c >= 0xFF5F && c <= 0xFF65);
 }
 
+// The dot after a choice's letter (A.正确 B.错误, as a lesson's question lists its choices): a
+// capital A to H alone, the dot, and a Chinese character right after it. It ends no sentence and
+// is not said (session 14: the question was cut into a sentence at each choice).
+bool marks_choice(const std::vector<CodePoint>& text, std::size_t i) {
+    if (ascii_form(text[i].value) != '.' || i == 0 || i + 1 >= text.size()) return false;
+    const auto letter = ascii_form(text[i - 1].value);
+    if (letter < 'A' || letter > 'H') return false;
+    if (i >= 2) {
+        const auto before = ascii_form(text[i - 2].value);
+        if ((before >= 'A' && before <= 'Z') || (before >= 'a' && before <= 'z') || (before >= '0' && before <= '9'))
+            return false;
+    }
+    const auto next = text[i + 1].value;
+    return next >= 0x3400 && next <= 0x9FFF;
+}
+
 // A # that opens or closes a topic (#春节快乐#, as Weibo and other posts mark one): a bracket, not
 // said; the topic between them is read. A # with no partner on its line (#5) is still a symbol.
 bool marks_topic(const std::vector<CodePoint>& text, std::size_t i) {
@@ -334,6 +350,10 @@ private:
         if (const auto sign = detail::said_math_sign(text, i); !sign.empty()) {
             form_warnings_ = timeline_.warnings.size();
             add_form(text, i, i + 1, read_words(std::string(sign)));
+            return i + 1;
+        }
+        if (marks_choice(text, i)) {
+            append_text(c.text);
             return i + 1;
         }
         if (ends_sentence(c.value)) {

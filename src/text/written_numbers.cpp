@@ -1435,6 +1435,9 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
         // (∠1); AB⊥CD AB垂直于CD, AB∥CD AB平行于CD, between two terms.
         case 0x2220: return is_formula_term(right) ? "角" : "";           // ∠
         case 0x25B3: return is_ascii_capital(right) ? "三角形" : "";       // △ABC 三角形ABC
+        // ≌ and ∽ between two figures (△ABC≌△DEF 三角形ABC全等于三角形DEF).
+        case 0x224C: case 0x2245: return is_formula_term(left) && (is_formula_term(right) || right == 0x25B3) ? "全等于" : "";  // ≌ ≅
+        case 0x223D: return is_formula_term(left) && (is_formula_term(right) || right == 0x25B3) ? "相似于" : "";  // ∽
         case 0x22A5: return between_terms ? "垂直于" : "";                 // ⊥
         case 0x2225: case 0x2016: return between_terms ? "平行于" : "";    // ∥, and ‖ written for it
         // + between two digits (1+1), two letters (A+B) or in a formula (x+1=3); - only in a formula,

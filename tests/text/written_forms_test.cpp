@@ -746,7 +746,13 @@ TEST_SUITE("written forms") {
             {"我LV50了", "我 ai le wei五十了"},
             {"邮编100080", "邮编一零零零八零"},
             {"经验值×2", "经验值乘二"},
+            {"△ABC≌△DEF", "三角形 ei bi xi全等于三角形 di yi ai fu"},
+            {"△ABC∽△DEF", "三角形 ei bi xi相似于三角形 di yi ai fu"},
         });
+        // A choice's letter and its dot end no sentence (A.正确 B.错误); a dot before a space does.
+        CHECK(read_transcript("这是一道选择题：A.正确 B.错误").sentences.size() == 1);
+        CHECK(said("选择题：A.正确 B.错误") == "选择题 ei正确 bi错误");
+        CHECK(read_transcript("我选A. 然后交卷。").sentences.size() == 2);
     }
 
     TEST_CASE("a tilde and a topic's # are punctuation, and a symbol without a reading is warned of by its own code point") {
