@@ -86,7 +86,9 @@ bool takes_liang(char32_t c) {
                         U"步下回圈眼拳脚腳刀枪槍盒包袋箱桶罐盘盤幅集册冊封轮輪局男女"
                         U"勺匙滴串束朵棵株盆锅鍋桌副顶頂艘连連"
                         // A record's wins, losses and draws (3局2胜 三局两胜, 2胜1负 两胜一负; session 14).
-                        U"胜勝负負平");
+                        U"胜勝负負平"
+                        // A medal table's golds, silvers and bronzes (奪得2金5銅 兩金五銅; session 14).
+                        U"金银銀铜銅");
 }
 
 // Words before which a number names a room, a bus route or a house, said digit by digit when it
@@ -316,6 +318,21 @@ bool follows_phone_word(const std::vector<CodePoint>& text, std::size_t start) {
     for (const std::string_view word : {"电话", "電話", "手机", "手機", "热线", "熱線", "拨打", "撥打", "致电", "致電",
                                         "分机", "分機", "传真", "傳真", "座机", "座機", "固话", "固話"}) {
         if (before.find(word) != std::string::npos) return true;
+    }
+    // Right after an area code in brackets, (07)123-4567 and （02）2345-6789, as Taiwan writes a
+    // number: the rest is the number (session 14: 123-4567 was a range).
+    if (start >= 4 && is_one_of(value_at(text, start - 1), U")\uFF09")) {
+        auto k = start - 1;
+        std::size_t digits = 0;
+        while (k > 0 && is_digit_at(text, k - 1)) {
+            --k;
+            ++digits;
+        }
+        constexpr std::size_t kLongestAreaCode = 4;
+        if (digits >= 2 && digits <= kLongestAreaCode && value_at(text, k) == '0' && k > 0 &&
+            is_one_of(value_at(text, k - 1), U"(\uFF08")) {
+            return true;
+        }
     }
     for (const std::string_view word : {"号码", "號碼"}) {
         for (auto at = before.find(word); at != std::string::npos; at = before.find(word, at + 1)) {

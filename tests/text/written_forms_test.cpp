@@ -748,6 +748,9 @@ TEST_SUITE("written forms") {
             {"经验值×2", "经验值乘二"},
             {"△ABC≌△DEF", "三角形 ei bi xi全等于三角形 di yi ai fu"},
             {"△ABC∽△DEF", "三角形 ei bi xi相似于三角形 di yi ai fu"},
+            {"請洽(07)123-4567", "請洽零七一二三四五六七"},
+            {"台灣選手奪得2金5銅", "台灣選手奪得兩金五銅"},
+            {"价格(元)123-456", "价格元一百二十三到四百五十六"},
         });
         // A choice's letter and its dot end no sentence (A.正确 B.错误); a dot before a space does.
         CHECK(read_transcript("这是一道选择题：A.正确 B.错误").sentences.size() == 1);
