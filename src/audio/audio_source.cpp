@@ -247,6 +247,29 @@ void ChannelMixer::mix(const float* interleaved, std::size_t frames, std::size_t
     }
 }
 
+void AudioSource::note_lost_audio(std::size_t at_frame, std::size_t frames) {
+    const double rate_hz = sample_rate_hz();
+    const double start_s = static_cast<double>(at_frame) / rate_hz;
+    const double end_s = static_cast<double>(at_frame + frames) / rate_hz;
+    if (!lost_audio_.empty() && start_s <= lost_audio_.back().end_s + 1e-9) lost_audio_.back().end_s = end_s;
+    else lost_audio_.push_back({start_s, end_s});
+}
+
+std::string describe_lost_audio(const std::vector<LostAudio>& lost) {
+    if (lost.empty()) return {};
+    constexpr std::size_t kNamed = 3;
+    double total_s = 0.0;
+    std::string where;
+    for (std::size_t i = 0; i < lost.size(); ++i) {
+        total_s += lost[i].end_s - lost[i].start_s;
+        if (i >= kNamed) continue;
+        if (i > 0) where += i + 1 == lost.size() ? " and " : ", ";
+        where += format_fixed(lost[i].start_s, 3) + "-" + format_fixed(lost[i].end_s, 3) + " s";
+    }
+    if (lost.size() > kNamed) where += " and " + std::to_string(lost.size() - kNamed) + " more";
+    return format_fixed(total_s, 3) + " s of its sound could not be decoded, at " + where;
+}
+
 std::size_t AudioSource::read(float* mono, std::size_t max_frames) {
     const std::size_t frames = read_frames(mono, max_frames);
     for (std::size_t i = 0; i < frames; ++i)

@@ -38,6 +38,18 @@ private:
     std::vector<float> sign_;
 };
 
+// A stretch of a recording its reader could not decode because the file is damaged there (a packet
+// the decoder refused as invalid, an Ogg page or a FLAC frame that failed its check, a Matroska
+// cluster the demuxer skipped) and read as silence in its place, in seconds from the start.
+struct LostAudio {
+    double start_s = 0.0;
+    double end_s = 0.0;
+};
+
+// "3.360 s of its sound could not be decoded, at 6.619-9.979 s" (the first three stretches, then
+// how many more): what a message says of a damaged file's lost sound. Empty if none was lost.
+std::string describe_lost_audio(const std::vector<LostAudio>& lost);
+
 class AudioSource {
 public:
     virtual ~AudioSource() = default;
@@ -55,8 +67,16 @@ public:
     virtual std::size_t frame_count() const = 0;
     // Names the audio in messages: the path, or "audio" for samples in memory.
     virtual const std::string& name() const = 0;
+    // The stretches read as silence because the file is damaged there, in order, as far as read.
+    const std::vector<LostAudio>& lost_audio() const { return lost_audio_; }
+
+protected:
+    // Notes `frames` frames of silence read in place of damaged data from frame `at_frame` on,
+    // joined to the stretch before when they follow it.
+    void note_lost_audio(std::size_t at_frame, std::size_t frames);
 
 private:
+    std::vector<LostAudio> lost_audio_;
     // read()'s frames as the source holds them, before non-numbers are made 0.
     virtual std::size_t read_frames(float* mono, std::size_t max_frames) = 0;
 };

@@ -148,6 +148,7 @@ public:
             std::copy_n(pending_.data() + pending_position_, take, mono + written);
             pending_position_ += take;
             written += take;
+            frames_given_ += take;
         }
         return written;
     }
@@ -220,6 +221,7 @@ private:
         pending_.clear();
         pending_position_ = 0;
         skipped_frames_ += static_cast<std::size_t>(std::llround(missing_frames));
+        skipped_is_damage_ = true;
         fill_skipped_time();
         return true;
     }
@@ -270,6 +272,7 @@ private:
             }
             const int sent = avcodec_send_packet(codec_.get(), packet_.get());
             last_packet_frames_ = packet_frames(packet_->duration);
+            last_packet_is_pause_ = is_amr_pause(*packet_);
             av_packet_unref(packet_.get());
             if (sent == AVERROR(ENOMEM)) throw std::bad_alloc();
             if (sent < 0) {
@@ -295,6 +298,20 @@ private:
     void refuse_packet(int error, std::size_t frames) {
         skipped_frames_ += frames;
         last_refusal_ = error;
+        // What this FFmpeg does not decode (AMR's comfort noise, "not yet implemented") and AMR's
+        // empty pause frames (which it calls invalid) are no damage: the file is whole.
+        if (error != AVERROR_PATCHWELCOME && !last_packet_is_pause_ && frames > 0) skipped_is_damage_ = true;
+    }
+
+    // An AMR frame a phone sends in a pause instead of speech (discontinuous transmission): a
+    // comfort-noise description (SID: frame type 8 in AMR-NB, 9 in AMR-WB) or nothing at all
+    // (NO_DATA, type 15). The type is bits 3-6 of the frame's first byte (RFC 4867, 5.3).
+    bool is_amr_pause(const AVPacket& packet) const {
+        if (packet.size < 1 || packet.data == nullptr) return false;
+        const int type = (packet.data[0] >> 3) & 0x0F;
+        if (stream_->codecpar->codec_id == AV_CODEC_ID_AMR_NB) return type == 8 || type == 15;
+        if (stream_->codecpar->codec_id == AV_CODEC_ID_AMR_WB) return type == 9 || type == 15;
+        return false;
     }
 
     // A packet's length in samples (its duration in the stream's time base), 0 where unknown.
@@ -322,15 +339,28 @@ private:
             return;
         }
         const std::int64_t gap = at - (time_zero_frames_ + before);
-        if (static_cast<double>(gap) > kTimestampSlackS * sample_rate_hz_) skipped_frames_ += static_cast<std::size_t>(gap);
+        if (static_cast<double>(gap) > kTimestampSlackS * sample_rate_hz_) {
+            skipped_frames_ += static_cast<std::size_t>(gap);
+            skipped_is_damage_ = true;
+        } else if (gap < 0 && skipped_frames_ > 0) {
+            // The refused packets counted more time than the frame's timestamp leaves them: FFmpeg's
+            // AAC decoder, fed a scratched MP4, refused 9 packets but lost only 8 (the 9th error
+            // came with a frame), and every syllable after it came 64 ms late. The silence not yet
+            // given out is cut to what the timestamp says.
+            skipped_frames_ -= std::min(skipped_frames_, static_cast<std::size_t>(-gap));
+            if (skipped_frames_ == 0) skipped_is_damage_ = false;
+        }
     }
 
     // Puts the time of the packets skipped since the last frame, as silence, before pending_.
     void fill_skipped_time() {
         if (skipped_frames_ == 0) return;
+        // The silence goes where read_frames() stands: after every frame given out so far.
+        if (skipped_is_damage_) note_lost_audio(frames_given_, skipped_frames_);
         pending_.insert(pending_.begin() + static_cast<std::ptrdiff_t>(pending_position_), skipped_frames_, 0.0f);
         frames_decoded_ += skipped_frames_;
         skipped_frames_ = 0;
+        skipped_is_damage_ = false;
     }
 
     // Converts a decoded frame to interleaved float and averages its channels, as the libsndfile
@@ -397,6 +427,9 @@ private:
     std::size_t frames_decoded_ = 0;
     std::size_t frames_to_skip_ = 0;
     std::size_t skipped_frames_ = 0;  // the time of refused packets not yet put in pending_
+    bool skipped_is_damage_ = false;  // some of skipped_frames_ is lost to damage, not a codec's gap
+    bool last_packet_is_pause_ = false;  // the last packet sent is an AMR pause frame
+    std::size_t frames_given_ = 0;    // frames read_frames() has returned
     int last_refusal_ = 0;            // the decoder's error for the last packet it refused
     std::size_t last_packet_frames_ = 0;  // the length of the last packet sent
     std::int64_t time_zero_frames_ = 0;  // a frame's timestamp in samples less the samples before it

@@ -481,6 +481,15 @@ Timeline align_checked(const FeatureTrack& track, const Timeline& transcript, co
     }
 }
 
+// How much sound a damaged file must have lost before a refusal names the damage first: about a
+// syllable. A refusal after a smaller loss (a damaged AAC packet, 20-60 ms) is the transcript's
+// own, and the loss is said after it.
+constexpr double kLostAudioNamedFirstS = 0.2;
+
+// Aligns the whole of `source`. A file its reader found damaged (sound it could not decode, read as
+// silence in its place: LostAudio) gets a warning naming where, and a refusal says first that the
+// sound there is lost, for the text is not what is wrong. A warning begins with source.name() (only
+// a file loses sound); a refusal does not, its callers name the audio as they name it.
 Timeline align_source(AudioSource& source, const Timeline& transcript, const AlignOptions& options,
                       const std::vector<GivenSpan>& given_spans, const ProgressCallback& callback) {
     validate_transcript(transcript);
@@ -488,7 +497,25 @@ Timeline align_source(AudioSource& source, const Timeline& transcript, const Ali
     progress.report(0.0, "reading");
     const FeatureTrack track =
         analyze_audio(source, [&](double fraction) { progress.report(kReadingShare * fraction, "reading"); });
-    return align_checked(track, transcript, options, given_spans, progress);
+    const std::string lost = describe_lost_audio(source.lost_audio());
+    Timeline result;
+    try {
+        result = align_checked(track, transcript, options, given_spans, progress);
+    } catch (const AlignmentError& error) {
+        if (lost.empty()) throw;
+        double lost_s = 0.0;
+        for (const LostAudio& stretch : source.lost_audio()) lost_s += stretch.end_s - stretch.start_s;
+        if (lost_s < kLostAudioNamedFirstS)
+            throw AlignmentError(std::string(error.what()) + " (the file is also damaged: " + lost + ")");
+        throw AlignmentError("the file is damaged: " + lost +
+                             " (read as silence: the speech there is lost), and the rest cannot be aligned "
+                             "without it; --lenient (AlignOptions::lenient) aligns what it can and reports "
+                             "the rest. The aligner found: " + error.what());
+    }
+    if (!lost.empty())
+        result.warnings.push_back(source.name() + ": the file is damaged: " + lost +
+                                  "; read as silence there, the syllables after it keep their times");
+    return result;
 }
 
 }  // namespace
