@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -104,5 +105,60 @@ TEST_SUITE("speech") {
         CHECK(longest_unmarked_pause("啊衣，啊衣。", true) <= kMaxUnmarkedPauseFrames);
         // A text that marks no pause (no comma, one sentence) keeps its speaker's pauses.
         CHECK(longest_unmarked_pause("啊衣啊衣。", true) >= 35);
+    }
+}
+
+TEST_SUITE("speech") {
+    TEST_CASE("a stop after a nasal may release from the nasal's closure, with no silence between, where it is let") {
+        // 天都在: the n of 天 runs straight into the burst of 都 (the tongue already closed at the
+        // ridge), while 在's z has a closure of its own.
+        const Timeline transcript = read_transcript("天都在。");
+        std::vector<const Syllable*> syllables;
+        for (const auto& syllable : transcript.syllables) syllables.push_back(&syllable);
+        REQUIRE(syllables.size() == 3);
+        Planted planted;
+        planted.add(20, kSilence);
+        planted.add(2, kBurst);
+        planted.add(6, kAspiration);
+        planted.add(4, kVowelI);
+        planted.add(14, kVowelA);
+        planted.add(6, kNasal);
+        const std::size_t burst_of_du = planted.emissions.frame_count;
+        planted.add(2, kBurst);
+        planted.add(14, kVowelU);
+        planted.add(5, kSilence);
+        planted.add(5, kSibilant);
+        planted.add(14, kVowelA);
+        planted.add(6, kVowelI);
+        planted.add(20, kSilence);
+        const std::size_t frames = planted.emissions.frame_count;
+        auto start_of_du = [&](bool is_released) {
+            std::vector<PhoneState> states = build_phone_chain(syllables, frames, frames - 40);
+            if (is_released) let_closures_after_nasals_be_skipped(states);
+            ViterbiWorkspace workspace;
+            const auto path = viterbi_align(states, planted.emissions, workspace);
+            REQUIRE_FALSE(path.empty());
+            return syllable_start(states, path, 1);
+        };
+        // Made to pass a closure, the path takes one out of the nasal's frames; let release, it
+        // starts 都 at its burst.
+        CHECK(start_of_du(false) < burst_of_du);
+        CHECK(start_of_du(true) == burst_of_du);
+    }
+
+    TEST_CASE("only a closure right after a nasal may be skipped") {
+        const Timeline transcript = read_transcript("他都天在三。");
+        std::vector<const Syllable*> syllables;
+        for (const auto& syllable : transcript.syllables) syllables.push_back(&syllable);
+        std::vector<PhoneState> states = build_phone_chain(syllables, 200, 160);
+        let_closures_after_nasals_be_skipped(states);
+        std::vector<std::size_t> skippable, unskippable;
+        for (const auto& state : states) {
+            if (state.role != StateRole::closure) continue;
+            (std::isfinite(state.skip_log_penalty) ? skippable : unskippable).push_back(state.syllable);
+        }
+        // 都 after 他's a and 天 after 都's u keep their closures; 在 after 天's n may release from it.
+        CHECK(skippable == std::vector<std::size_t>{3});
+        CHECK(unskippable == std::vector<std::size_t>{1, 2});
     }
 }
