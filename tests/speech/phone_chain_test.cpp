@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <initializer_list>
+#include <utility>
 #include <vector>
 
 #include "speech/hsmm.hpp"
@@ -27,7 +29,19 @@ struct Planted {
             ++emissions.frame_count;
         }
     }
+    // Stretches one after another, each (frames, its class) as add() plants it.
+    void add_runs(std::initializer_list<std::pair<std::size_t, PhoneClass>> runs) {
+        for (const auto& [frames, best] : runs) add(frames, best);
+    }
 };
+
+// The syllables of `text`'s transcript as build_phone_chain takes them; `transcript` keeps them.
+std::vector<const Syllable*> syllables_of(const char* text, Timeline& transcript) {
+    transcript = read_transcript(text);
+    std::vector<const Syllable*> syllables;
+    for (const auto& syllable : transcript.syllables) syllables.push_back(&syllable);
+    return syllables;
+}
 
 // Where the path starts the first state of syllable `syllable`.
 std::size_t syllable_start(const std::vector<PhoneState>& states, const std::vector<StateSegment>& path, std::size_t syllable) {
@@ -112,25 +126,13 @@ TEST_SUITE("speech") {
     TEST_CASE("a stop after a nasal may release from the nasal's closure, with no silence between, where it is let") {
         // 天都在: the n of 天 runs straight into the burst of 都 (the tongue already closed at the
         // ridge), while 在's z has a closure of its own.
-        const Timeline transcript = read_transcript("天都在。");
-        std::vector<const Syllable*> syllables;
-        for (const auto& syllable : transcript.syllables) syllables.push_back(&syllable);
+        Timeline transcript;
+        const std::vector<const Syllable*> syllables = syllables_of("天都在。", transcript);
         REQUIRE(syllables.size() == 3);
         Planted planted;
-        planted.add(20, kSilence);
-        planted.add(2, kBurst);
-        planted.add(6, kAspiration);
-        planted.add(4, kVowelI);
-        planted.add(14, kVowelA);
-        planted.add(6, kNasal);
+        planted.add_runs({{20, kSilence}, {2, kBurst}, {6, kAspiration}, {4, kVowelI}, {14, kVowelA}, {6, kNasal}});
         const std::size_t burst_of_du = planted.emissions.frame_count;
-        planted.add(2, kBurst);
-        planted.add(14, kVowelU);
-        planted.add(5, kSilence);
-        planted.add(5, kSibilant);
-        planted.add(14, kVowelA);
-        planted.add(6, kVowelI);
-        planted.add(20, kSilence);
+        planted.add_runs({{2, kBurst}, {14, kVowelU}, {5, kSilence}, {5, kSibilant}, {14, kVowelA}, {6, kVowelI}, {20, kSilence}});
         const std::size_t frames = planted.emissions.frame_count;
         auto start_of_du = [&](bool is_released) {
             std::vector<PhoneState> states = build_phone_chain(syllables, frames, frames - 40);
@@ -147,9 +149,8 @@ TEST_SUITE("speech") {
     }
 
     TEST_CASE("only a closure right after a nasal may be skipped") {
-        const Timeline transcript = read_transcript("他都天在三。");
-        std::vector<const Syllable*> syllables;
-        for (const auto& syllable : transcript.syllables) syllables.push_back(&syllable);
+        Timeline transcript;
+        const std::vector<const Syllable*> syllables = syllables_of("他都天在三。", transcript);
         std::vector<PhoneState> states = build_phone_chain(syllables, 200, 160);
         let_closures_after_nasals_be_skipped(states);
         std::vector<std::size_t> skippable, unskippable;
