@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cerrno>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -136,6 +138,48 @@ bool has_damaged_ogg_page(const std::string& path) {
     ogg_sync_clear(&sync);
     std::fclose(file);
     return damaged;
+}
+
+// Whether a RIFF WAV's data chunk goes on past the size its header states: a recorder that writes
+// its header early and brings it up to date only now and then (or never, if it crashes) leaves a
+// data size of part of the data, and libsndfile reads only that part (the rest of the speech was
+// lost and the transcript blamed for it). Chunks may follow the data (LIST, cue, id3 ...): the data
+// is taken as longer only when what follows its stated end is no chunk, a 4-character id of
+// letters, digits, spaces or '_' with a size that fits in the file.
+bool has_data_past_stated_size(const std::string& path) {
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    if (!in) return false;
+    const auto file_bytes = static_cast<std::uint64_t>(in.tellg());
+    const auto le32 = [](const unsigned char* bytes) {
+        return static_cast<std::uint64_t>(bytes[0]) | static_cast<std::uint64_t>(bytes[1]) << 8 |
+               static_cast<std::uint64_t>(bytes[2]) << 16 | static_cast<std::uint64_t>(bytes[3]) << 24;
+    };
+    const auto is_chunk_at = [&](std::uint64_t at) {
+        unsigned char head[8];
+        in.clear();
+        in.seekg(static_cast<std::streamoff>(at));
+        if (!in.read(reinterpret_cast<char*>(head), 8)) return false;
+        for (int i = 0; i < 4; ++i)
+            if (!(std::isalnum(head[i]) || head[i] == ' ' || head[i] == '_')) return false;
+        return at + 8 + le32(head + 4) <= file_bytes;
+    };
+    std::uint64_t at = 12;
+    unsigned char head[8];
+    while (at + 8 <= file_bytes) {
+        in.clear();
+        in.seekg(static_cast<std::streamoff>(at));
+        if (!in.read(reinterpret_cast<char*>(head), 8)) return false;
+        const std::uint64_t size = le32(head + 4);
+        const std::uint64_t end = at + 8 + size + (size & 1);
+        if (std::memcmp(head, "data", 4) == 0) {
+            // A placeholder size (0, 0xFFFFFFFF) or one past the end of the file is libsndfile's
+            // case already (read to the end, or called truncated).
+            if (size == 0 || size >= 0x7FFFFFFFu || end + 8 > file_bytes) return false;
+            return !is_chunk_at(end) && !(size & 1 && is_chunk_at(end - 1));
+        }
+        at = end;
+    }
+    return false;
 }
 
 class FileSource final : public AudioSource {
@@ -290,6 +334,11 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
         if (probe.bad() || (probe.gcount() == 0 && errno != 0)) throw FileError(path, std::strerror(errno));
     }
     if (!is_sndfile_container(header)) return open_ffmpeg_file(path);
+    if (std::string_view(header.data(), 4) == "RIFF" && has_data_past_stated_size(path)) {
+        FfmpegReading reading;
+        reading.reads_past_stated_size = true;
+        return open_ffmpeg_file(path, reading);
+    }
     SF_INFO info{};
     SNDFILE* file = sf_open(path.c_str(), SFM_READ, &info);
     if (file == nullptr) {

@@ -71,6 +71,7 @@ public:
         AVDictionary* options = nullptr;
         av_dict_set(&options, "format_whitelist", kFormats, 0);
         av_dict_set(&options, "protocol_whitelist", "file", 0);
+        if (reading_.reads_past_stated_size) av_dict_set(&options, "ignore_length", "1", 0);
         AVFormatContext* raw = nullptr;
         const int opened = avformat_open_input(&raw, path_.c_str(), nullptr, &options);
         av_dict_free(&options);

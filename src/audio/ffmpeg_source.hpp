@@ -17,6 +17,9 @@ struct FfmpegReading {
     // end is kept as silence up to the length its container states, as sound lost before the end
     // is, rather than called a cut file.
     bool keeps_stated_length = false;
+    // The file is a WAV whose data chunk goes on past the size its header states (a header
+    // written early and never brought up to date): read to the end of the file.
+    bool reads_past_stated_size = false;
 };
 
 // Opens the first audio stream FFmpeg finds in `path` and decodes its first samples, so that a file

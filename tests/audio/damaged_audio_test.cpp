@@ -269,6 +269,36 @@ TEST_SUITE("audio") {
         }
     }
 
+    TEST_CASE("a WAV whose header states part of its data is read to its end, and a chunk after the data is not") {
+        // A recorder that writes its header early and brings it up to date now and then leaves a
+        // data size of part of the data when it stops without closing the file: libsndfile read
+        // only that part, and the rest of the speech was lost (the transcript was blamed).
+        const std::string bytes = whole(kContainers[0]);
+        const auto data = bytes.find("data");
+        REQUIRE(data != std::string::npos);
+        const std::uint32_t real_size = static_cast<std::uint8_t>(bytes[data + 4]) | static_cast<std::uint8_t>(bytes[data + 5]) << 8 |
+                                        static_cast<std::uint32_t>(static_cast<std::uint8_t>(bytes[data + 6])) << 16 |
+                                        static_cast<std::uint32_t>(static_cast<std::uint8_t>(bytes[data + 7])) << 24;
+        auto whole_source = detail::open_audio_file(test::output_path("whole_pcm.wav"));
+        const std::size_t whole_frames = test::read_all(*whole_source).size();
+        std::string stale = bytes;
+        put_le32(stale, data + 4, (real_size / 2) & ~3u);
+        const std::string stale_path = test::output_path("stale_header.wav");
+        write_bytes(stale_path, stale);
+        const auto source = detail::open_audio_file(stale_path);
+        CHECK(test::read_all(*source).size() == whole_frames);
+        // The same stated size with a LIST chunk where the data's stated end is: the chunk is the
+        // file's own, and the data is what the header says.
+        std::string with_chunk = bytes.substr(0, data + 8 + ((real_size / 2) & ~3u));
+        with_chunk += std::string("LIST") + std::string("\x04\0\0\0", 4) + "INFO";
+        put_le32(with_chunk, data + 4, (real_size / 2) & ~3u);
+        put_le32(with_chunk, 4, static_cast<std::uint32_t>(with_chunk.size() - 8));
+        const std::string chunk_path = test::output_path("list_after_half.wav");
+        write_bytes(chunk_path, with_chunk);
+        const auto chunk_source = detail::open_audio_file(chunk_path);
+        CHECK(test::read_all(*chunk_source).size() == ((real_size / 2) & ~3u) / 2);
+    }
+
     TEST_CASE("an Ogg stream cut inside a page is called truncated, and the message says what happened") {
         const std::string bytes = whole(kContainers[3]);
         const std::string path = test::output_path("cut_vorbis.ogg");
