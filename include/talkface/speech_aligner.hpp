@@ -21,18 +21,19 @@ inline namespace v0 {
 /// spectrum changes where it starts, and how far its length and its sounds' lengths depart from
 /// their priors at the pace of the syllables around it; averaged with its neighbours' (drift comes
 /// in runs); less where the aligner's other searches start it elsewhere (its previous pass, and the
-/// search again with the sounds weighed less: a syllable the sounds hold stays put); with the fit's
-/// free-sound gap scaled to a clean recording's spread where noise scatters it wider; and weighed
-/// half as it is and half against the recording's median, most of the rest against it too where
-/// that median is under a clean recording's, so that the threshold holds in noise and in a room
-/// as in clean speech. Lenient alignment (AlignOptions::lenient) weighs the same evidence. It is
-/// not a probability. The threshold is set so that no recording condition of the benchmark's human
-/// speech (bench/README.md, issue 12: noise, rooms, music, hum, phone, fast speech) has more than
-/// 10% of its syllables within 100 ms under it: 2.3-9.5% per condition, 6.6% pooled, catching
-/// 52% of those more than 100 ms off (159 of 306); on the held-out passages, measured after it was
-/// set, 2.7-9.0% and 49% (23 of 47); another voice (made of the same speaker's, not tuned on)
-/// 7.1-9.6% and 45%, held out 3.2-8.7% and 52%. On synthetic speech (espeak-ng) it flags 0-3.4% of
-/// right syllables per condition (0.8% pooled).
+/// search again with the sounds weighed less, once with the spectral landmarks and once without: a
+/// syllable the sounds hold stays put); with the fit's free-sound gap scaled to a clean recording's
+/// spread where noise scatters it wider; and weighed half as it is and half against the recording's
+/// median, most of the rest against it too where that median is under a clean recording's, so that
+/// the threshold holds in noise and in a room as in clean speech. Lenient alignment
+/// (AlignOptions::lenient) weighs the same evidence. It is not a probability. The threshold is set
+/// so that no recording condition of the benchmark's development speech (bench/README.md, issue 12:
+/// a person and two voices made of the same speaker's, in noise, rooms, music, hum, phone, fast
+/// speech) has more than 10% of its syllables within 100 ms under it: the person's 2.3-8.4% per
+/// condition, 5.9% pooled, catching 56% of those more than 100 ms off (167 of 296); on the held-out
+/// passages, measured after it was set, 2.5-9.5% and 55% (24 of 44); the other voices 6.2-9.4% and
+/// 48%, held out 3.0-9.2%. On synthetic speech (espeak-ng) it flags 0-2.9% of right syllables per
+/// condition (0.7% pooled).
 constexpr double kLowAlignmentConfidence = 0.5;
 
 /// Audio samples the caller owns: `frame_count` frames of `channel_count` interleaved float samples

@@ -651,14 +651,15 @@ TF_API tf_status tf_timeline_syllable_times(const tf_timeline *timeline, size_t 
  * (talkface::kLowAlignmentConfidence). The confidence (0..1, not a probability) grows with the
  * evidence for the syllable's place: its sounds' fit, a change of spectrum where it starts, lengths
  * near their priors at the local pace, its neighbours' evidence, and whether the aligner's other
- * searches (its previous pass, the sounds weighed less) start it at the same frame, lenient
- * alignment included; it is calibrated on the recording (the fit's scatter in noise scaled to a
- * clean recording's, then against the recording's median, more so in a room or in noise), so the
- * threshold holds per condition: on the benchmark's human speech no condition (noise, rooms,
- * music, phone, fast speech) has more than 10% of its syllables within 100 ms under it (2.3-9.5%,
- * 6.6% pooled), and it catches 52% of those more than 100 ms off (held out: 2.7-9.0%, 5.0% pooled,
- * and 49%; another voice 7.1-9.6% and 45%) (bench/README.md). `talkface align --plot` draws such
- * syllables in red. */
+ * searches (its previous pass, the sounds weighed less with and without the spectral landmarks)
+ * start it at the same frame, lenient alignment included; it is calibrated on the recording (the
+ * fit's scatter in noise scaled to a clean recording's, then against the recording's median, more
+ * so in a room or in noise), so the threshold holds per condition: on the benchmark's development
+ * speech (a person and two voices made of the same speaker's) no condition (noise, rooms, music,
+ * phone, fast speech) has more than 10% of its syllables within 100 ms under it (the person's
+ * 2.3-8.4%, 5.9% pooled), and it catches 56% of those more than 100 ms off (held out: 2.5-9.5%,
+ * 4.6% pooled, and 55%; the other voices 6.2-9.4% and 48%) (bench/README.md). `talkface align
+ * --plot` draws such syllables in red. */
 #define TF_LOW_ALIGNMENT_CONFIDENCE 0.5
 
 /* Syllable `index`'s confidence (0..1; below TF_LOW_ALIGNMENT_CONFIDENCE: check it) and whether the

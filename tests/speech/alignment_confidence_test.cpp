@@ -154,6 +154,29 @@ TEST_SUITE("alignment confidence") {
         CHECK(std::all_of(none.begin(), none.end(), [](double value) { return value == 0.0; }));
     }
 
+    TEST_CASE("a syllable only the landmarks hold where it starts is judged by a search without them too") {
+        // The spectrum changing strongly 3 frames before syllable kDrifted's start (and nowhere
+        // else): the search with the landmarks' bonus starts it on that change, against its sounds;
+        // the one without starts it where its sounds do. Measured against the first alone, a path
+        // that starts it on the change would look steady.
+        Sentence sentence = make_sentence();
+        const std::size_t start = sentence.truth[1 + 2 * kDrifted].first_frame;
+        const std::size_t early = start - 3;
+        sentence.scores.boundary.assign(sentence.scores.frame_count + 1, 0.0f);
+        sentence.scores.boundary[early] = 20.0f;
+        const std::vector<float> bonus = sentence.scores.boundary;
+        ViterbiWorkspace workspace;
+        const std::vector<std::vector<SyllableFrames>> searches = {
+            light_search(sentence.chain, sentence.scores, workspace, true),
+            light_search(sentence.chain, sentence.scores, workspace, false)};
+        CHECK(sentence.scores.boundary == bonus);
+        CHECK(searches[0][kDrifted].first_frame == early);
+        CHECK(searches[1][kDrifted].first_frame == start);
+        const auto held = searches[0];
+        CHECK(syllable_steadiness(held, {searches[0]})[kDrifted] == 0.0);
+        CHECK(syllable_steadiness(held, searches)[kDrifted] < 0.0);
+    }
+
     TEST_CASE("a room's evidence, lower throughout, keeps its right syllables' confidences near a clean recording's") {
         // A clean recording's evidence, 0.3-0.8 (median 0.55, as the person's clean passages), and
         // the same lowered by 0.3 throughout, as a room lowers it (median 0.25).
@@ -240,8 +263,7 @@ TEST_SUITE("alignment confidence") {
         track.duration_s = static_cast<double>(track.frame_count) * kFrameStepS;
         const LoudnessProfile loudness;
         ViterbiWorkspace workspace;
-        const std::vector<std::vector<SyllableFrames>> light = {frames_on_path(
-            lenient, viterbi_align(lenient.states, sentence.scores, workspace, sentence.scores.frame_count, kLightSoundsWeight))};
+        const std::vector<std::vector<SyllableFrames>> light = {light_search(lenient, sentence.scores, workspace, true)};
         auto confidences = [&](const std::vector<StateSegment>& path, const std::vector<std::vector<SyllableFrames>>& others) {
             talkface::Timeline result;
             result.syllables.resize(kSyllables);
