@@ -29,11 +29,11 @@ inline namespace v0 {
 /// (AlignOptions::lenient) weighs the same evidence. It is not a probability. The threshold is set
 /// so that no recording condition of the benchmark's development speech (bench/README.md, issue 12:
 /// a person and two voices made of the same speaker's, in noise, rooms, music, hum, phone, fast
-/// speech) has more than 10% of its syllables within 100 ms under it: the person's 2.3-8.4% per
-/// condition, 5.9% pooled, catching 56% of those more than 100 ms off (167 of 296); on the held-out
-/// passages, measured after it was set, 2.5-9.5% and 55% (24 of 44); the other voices 6.2-9.4% and
-/// 48%, held out 3.0-9.2%. On synthetic speech (espeak-ng) it flags 0-2.9% of right syllables per
-/// condition (0.7% pooled).
+/// speech) has more than 10% of its syllables within 100 ms under it: the person's 2.2-8.1% per
+/// condition, 4.8% pooled, catching 69% of those more than 100 ms off (204 of 296); on the held-out
+/// passages, measured after it was set, 2.0-9.2% and 57% (25 of 44); the other voices 4.8-9.3% and
+/// 62%, held out 1.5-9.2%. On synthetic speech (espeak-ng) it flags 0-2.3% of right syllables per
+/// condition (0.6% pooled).
 constexpr double kLowAlignmentConfidence = 0.5;
 
 /// Audio samples the caller owns: `frame_count` frames of `channel_count` interleaved float samples

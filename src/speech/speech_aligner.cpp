@@ -327,7 +327,7 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
             // last round's path of the plain chain, the same text on the models one round older.
             // Beside a mismatch the plain path is another reading of the speech (the text said
             // whole), not an opinion on the lenient one; and generic speech has no duration prior
-            // of a syllable's, so without the landmarks its edges wander with the sounds at half
+            // of a syllable's, so without the landmarks its edges wander with the sounds light
             // and move the right syllables beside it (tests/speech/lenient_test.cpp: 里 after the
             // word the transcript lacks).
             std::vector<std::vector<SyllableFrames>> other_frames = {light_search(chain, scores, workspace, true)};
