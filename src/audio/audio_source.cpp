@@ -299,19 +299,22 @@ void AudioSource::note_lost_audio(std::size_t at_frame, std::size_t frames) {
     else lost_audio_.push_back({start_s, end_s});
 }
 
+double lost_seconds(const std::vector<LostAudio>& lost) {
+    double total_s = 0.0;
+    for (const LostAudio& stretch : lost) total_s += stretch.end_s - stretch.start_s;
+    return total_s;
+}
+
 std::string describe_lost_audio(const std::vector<LostAudio>& lost) {
     if (lost.empty()) return {};
     constexpr std::size_t kNamed = 3;
-    double total_s = 0.0;
     std::string where;
-    for (std::size_t i = 0; i < lost.size(); ++i) {
-        total_s += lost[i].end_s - lost[i].start_s;
-        if (i >= kNamed) continue;
+    for (std::size_t i = 0; i < lost.size() && i < kNamed; ++i) {
         if (i > 0) where += i + 1 == lost.size() ? " and " : ", ";
         where += format_fixed(lost[i].start_s, 3) + "-" + format_fixed(lost[i].end_s, 3) + " s";
     }
     if (lost.size() > kNamed) where += " and " + std::to_string(lost.size() - kNamed) + " more";
-    return format_fixed(total_s, 3) + " s of its sound could not be decoded, at " + where;
+    return format_fixed(lost_seconds(lost), 3) + " s of its sound could not be decoded, at " + where;
 }
 
 std::size_t AudioSource::read(float* mono, std::size_t max_frames) {

@@ -46,6 +46,9 @@ struct LostAudio {
     double end_s = 0.0;
 };
 
+// The seconds of sound the stretches hold together.
+double lost_seconds(const std::vector<LostAudio>& lost);
+
 // "3.360 s of its sound could not be decoded, at 6.619-9.979 s" (the first three stretches, then
 // how many more): what a message says of a damaged file's lost sound. Empty if none was lost.
 std::string describe_lost_audio(const std::vector<LostAudio>& lost);

@@ -510,9 +510,7 @@ Timeline align_source(AudioSource& source, const Timeline& transcript, const Ali
         result = align_checked(track, transcript, options, given_spans, progress);
     } catch (const AlignmentError& error) {
         if (lost.empty()) throw;
-        double lost_s = 0.0;
-        for (const LostAudio& stretch : source.lost_audio()) lost_s += stretch.end_s - stretch.start_s;
-        if (lost_s < kLostAudioNamedFirstS)
+        if (lost_seconds(source.lost_audio()) < kLostAudioNamedFirstS)
             throw AlignmentError(std::string(error.what()) + " (the file is also damaged: " + lost + ")");
         throw AlignmentError("the file is damaged: " + lost +
                              " (read as silence: the speech there is lost), and the rest cannot be aligned "
