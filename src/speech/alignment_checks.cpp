@@ -70,12 +70,7 @@ constexpr float kNucleusAboveFloorDb = 10.0f;
 // it as well as free sounds do (fit_gap -0.05 to -0.09).
 constexpr double kFitOutlierSpread = 4.0;
 constexpr double kFitOutlierMinimum = 1.5;
-// A right text's speech fits a free sequence of sounds at most ~0.07 per frame better than its own
-// in a passage of five sentences (bench/ tuning passages, every condition, slow speech the
-// highest), up to 0.11 in an hour of them (the models, fitted to more voices, fit each less
-// closely); a swapped or replaced sentence of the same length 0.12-0.6 better (one in the 2200
-// tuning cases under 0.15), and at least 0.17 more than the recording's typical sentence.
-constexpr double kMaxTextFitGap = 0.15;
+// kMaxTextFitGap (alignment_checks.hpp), and this much above the recording's typical sentence.
 constexpr double kMaxTextFitGapAboveTypical = 0.15;
 // With models learned from the rest of the recording, the halves of a right sentence fit a free
 // sequence of sounds rarely more than 0.35 per frame better than their text (bench/ tuning clips

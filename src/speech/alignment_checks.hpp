@@ -95,6 +95,13 @@ struct AlignedStretch {
 void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProfile& loudness, const EmissionScores& scores,
                 std::size_t first_scored_frame, std::size_t sentence, const FrameSpan& span, const Timeline& transcript);
 
+// A right text's speech fits a free sequence of sounds at most ~0.07 per frame better than its own
+// in a passage of five sentences (bench/ tuning passages, every condition, slow speech the
+// highest), up to 0.11 in an hour of them (the models, fitted to more voices, fit each less
+// closely); a swapped or replaced sentence of the same length 0.12-0.6 better (one in the 2200
+// tuning cases under 0.15), and at least 0.17 more than the recording's typical sentence.
+constexpr double kMaxTextFitGap = 0.15;
+
 // How much better each sentence's speech fits a free sequence of sounds than its text's (per frame,
 // from the aligner), against what a right text gives.
 // \throws talkface::AlignmentError naming the first sentence whose text does not fit its speech.

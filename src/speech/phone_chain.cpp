@@ -301,6 +301,17 @@ void keep_pauses_to_marks(std::vector<PhoneState>& states) {
     }
 }
 
+void let_closures_after_nasals_be_skipped(std::vector<PhoneState>& states) {
+    for (std::size_t s = 1; s < states.size(); ++s) {
+        if (states[s].role != StateRole::closure) continue;
+        std::size_t before = s - 1;
+        while (before > 0 && is_pause(states[before].role)) --before;
+        const PhoneState& sound = states[before];
+        if (sound.phone_class == kNasal && sound.role == StateRole::final && sound.syllable + 1 == states[s].syllable)
+            states[s].skip_log_penalty = kClosureAfterNasalSkipLogPenalty;
+    }
+}
+
 void scale_vowels(std::vector<PhoneState>& states, double factor) {
     for (auto& state : states) {
         if (!state.stretches) continue;

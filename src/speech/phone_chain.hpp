@@ -109,6 +109,17 @@ bool has_marked_pause(const std::vector<PhoneState>& states);
 // kMaxUnmarkedPauseFrames, with no tail.
 void keep_pauses_to_marks(std::vector<PhoneState>& states);
 
+// What skipping the closure of a stop or affricate after a nasal costs where the aligner allows it
+// (let_closures_after_nasals_be_skipped): 3 nats, step 9b's priced skip (bench/README.md, sessions
+// 11 and 13), taken as it was measured then.
+inline constexpr double kClosureAfterNasalSkipLogPenalty = -3.0;
+
+// Lets the closure of each stop or affricate right after a nasal (n ng m ending the syllable
+// before; a short pause between them or none) be skipped for kClosureAfterNasalSkipLogPenalty:
+// the tongue or the lips, closed for the nasal, may release straight into the burst (天都 n + d,
+// 門口 n + k), with no silence between them.
+void let_closures_after_nasals_be_skipped(std::vector<PhoneState>& states);
+
 // Multiplies the duration priors of the vowels (the states that stretch with the speaking rate).
 void scale_vowels(std::vector<PhoneState>& states, double factor);
 

@@ -3,7 +3,10 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <initializer_list>
+#include <utility>
 #include <vector>
 
 #include "speech/hsmm.hpp"
@@ -26,7 +29,19 @@ struct Planted {
             ++emissions.frame_count;
         }
     }
+    // Stretches one after another, each (frames, its class) as add() plants it.
+    void add_runs(std::initializer_list<std::pair<std::size_t, PhoneClass>> runs) {
+        for (const auto& [frames, best] : runs) add(frames, best);
+    }
 };
+
+// The syllables of `text`'s transcript as build_phone_chain takes them; `transcript` keeps them.
+std::vector<const Syllable*> syllables_of(const char* text, Timeline& transcript) {
+    transcript = read_transcript(text);
+    std::vector<const Syllable*> syllables;
+    for (const auto& syllable : transcript.syllables) syllables.push_back(&syllable);
+    return syllables;
+}
 
 // Where the path starts the first state of syllable `syllable`.
 std::size_t syllable_start(const std::vector<PhoneState>& states, const std::vector<StateSegment>& path, std::size_t syllable) {
@@ -104,5 +119,47 @@ TEST_SUITE("speech") {
         CHECK(longest_unmarked_pause("啊衣，啊衣。", true) <= kMaxUnmarkedPauseFrames);
         // A text that marks no pause (no comma, one sentence) keeps its speaker's pauses.
         CHECK(longest_unmarked_pause("啊衣啊衣。", true) >= 35);
+    }
+}
+
+TEST_SUITE("speech") {
+    TEST_CASE("a stop after a nasal may release from the nasal's closure, with no silence between, where it is let") {
+        // 天都在: the n of 天 runs straight into the burst of 都 (the tongue already closed at the
+        // ridge), while 在's z has a closure of its own.
+        Timeline transcript;
+        const std::vector<const Syllable*> syllables = syllables_of("天都在。", transcript);
+        REQUIRE(syllables.size() == 3);
+        Planted planted;
+        planted.add_runs({{20, kSilence}, {2, kBurst}, {6, kAspiration}, {4, kVowelI}, {14, kVowelA}, {6, kNasal}});
+        const std::size_t burst_of_du = planted.emissions.frame_count;
+        planted.add_runs({{2, kBurst}, {14, kVowelU}, {5, kSilence}, {5, kSibilant}, {14, kVowelA}, {6, kVowelI}, {20, kSilence}});
+        const std::size_t frames = planted.emissions.frame_count;
+        auto start_of_du = [&](bool is_released) {
+            std::vector<PhoneState> states = build_phone_chain(syllables, frames, frames - 40);
+            if (is_released) let_closures_after_nasals_be_skipped(states);
+            ViterbiWorkspace workspace;
+            const auto path = viterbi_align(states, planted.emissions, workspace);
+            REQUIRE_FALSE(path.empty());
+            return syllable_start(states, path, 1);
+        };
+        // Made to pass a closure, the path takes one out of the nasal's frames; let release, it
+        // starts 都 at its burst.
+        CHECK(start_of_du(false) < burst_of_du);
+        CHECK(start_of_du(true) == burst_of_du);
+    }
+
+    TEST_CASE("only a closure right after a nasal may be skipped") {
+        Timeline transcript;
+        const std::vector<const Syllable*> syllables = syllables_of("他都天在三。", transcript);
+        std::vector<PhoneState> states = build_phone_chain(syllables, 200, 160);
+        let_closures_after_nasals_be_skipped(states);
+        std::vector<std::size_t> skippable, unskippable;
+        for (const auto& state : states) {
+            if (state.role != StateRole::closure) continue;
+            (std::isfinite(state.skip_log_penalty) ? skippable : unskippable).push_back(state.syllable);
+        }
+        // 都 after 他's a and 天 after 都's u keep their closures; 在 after 天's n may release from it.
+        CHECK(skippable == std::vector<std::size_t>{3});
+        CHECK(unskippable == std::vector<std::size_t>{1, 2});
     }
 }
