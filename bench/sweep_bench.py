@@ -13,7 +13,8 @@ sample formats, WAV chunks, RF64; and files broken by a scratch or cut to their 
 lists every case: its file, its transcript, its truth and how far the case moved the truth.
 
 `run` aligns every case with `TALKFACE align FILE TRANSCRIPT --json` and prints, per case, the % of
-syllable onsets within 50 and 100 ms of the truth, or the error (first line) for a refused case.
+syllable onsets within 50 and 100 ms of the truth, or the error (first line) for a refused case; an
+aligned case's warnings about its file (damage, a stale header) follow its figures, after "warns:".
 A case is right when it aligns as well as the reference, or is refused with a message naming the
 file and the reason.
 """
@@ -319,11 +320,15 @@ def run_cases(args):
             continue
         done = subprocess.run([args.talkface, "align", file, txt, "--json"], capture_output=True, text=True)
         if done.returncode == 0:
-            scored = score(json.loads(done.stdout), json.load(open(truth_path)), float(shift))
+            result = json.loads(done.stdout)
+            scored = score(result, json.load(open(truth_path)), float(shift))
+            # What the reader told the user of the file (damage, a stale header), without its path.
+            said = "".join(f"  warns: {w.replace(file + ': ', '', 1)}" for w in result["warnings"]
+                           if w.startswith(file + ": "))
             if scored is None:
-                print(f"{name:52} {'?':>6} {'?':>6}  syllable count differs")
+                print(f"{name:52} {'?':>6} {'?':>6}  syllable count differs{said}")
             else:
-                print(f"{name:52} {scored[0]:6.1f} {scored[1]:6.1f}")
+                print(f"{name:52} {scored[0]:6.1f} {scored[1]:6.1f}{said}")
         else:
             message = (done.stderr.strip().splitlines() or ["(nothing on stderr)"])[0]
             print(f"{name:52} {'-':>6} {'-':>6}  exit {done.returncode}: {message}")

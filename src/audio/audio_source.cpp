@@ -16,6 +16,7 @@
 #include <optional>
 #include <sstream>
 #include <string_view>
+#include <utility>
 
 #include "audio/ffmpeg_source.hpp"
 #include "common/number_format.hpp"
@@ -140,15 +141,24 @@ bool has_damaged_ogg_page(const std::string& path) {
     return damaged;
 }
 
-// Whether a RIFF WAV's data chunk goes on past the size its header states: a recorder that writes
-// its header early and brings it up to date only now and then (or never, if it crashes) leaves a
-// data size of part of the data, and libsndfile reads only that part (the rest of the speech was
-// lost and the transcript blamed for it). Chunks may follow the data (LIST, cue, id3 ...): the data
-// is taken as longer only when what follows its stated end is no chunk, a 4-character id of
-// letters, digits, spaces or '_' with a size that fits in the file.
-bool has_data_past_stated_size(const std::string& path) {
+// A RIFF WAV's data chunk that goes on past the size its header states: the bytes stated and the
+// bytes the file holds after the data's start, and the bytes a second of sound takes (the format
+// chunk's average rate; 0 if it states none).
+struct StaleDataSize {
+    std::uint64_t stated_bytes = 0;
+    std::uint64_t present_bytes = 0;
+    std::uint64_t bytes_per_second = 0;
+};
+
+// A RIFF WAV whose data chunk goes on past the size its header states: a recorder that writes its
+// header early and brings it up to date only now and then (or never, if it crashes) leaves a data
+// size of part of the data, and libsndfile reads only that part (the rest of the speech was lost
+// and the transcript blamed for it). Chunks may follow the data (LIST, cue, id3 ...): the data is
+// taken as longer only when what follows its stated end is no chunk, a 4-character id of letters,
+// digits, spaces or '_' with a size that fits in the file.
+std::optional<StaleDataSize> data_past_stated_size(const std::string& path) {
     std::ifstream in(path, std::ios::binary | std::ios::ate);
-    if (!in) return false;
+    if (!in) return std::nullopt;
     const auto file_bytes = static_cast<std::uint64_t>(in.tellg());
     const auto le32 = [](const unsigned char* bytes) {
         return static_cast<std::uint64_t>(bytes[0]) | static_cast<std::uint64_t>(bytes[1]) << 8 |
@@ -164,22 +174,44 @@ bool has_data_past_stated_size(const std::string& path) {
         return at + 8 + le32(head + 4) <= file_bytes;
     };
     std::uint64_t at = 12;
+    std::uint64_t bytes_per_second = 0;
     unsigned char head[8];
+    unsigned char format[12];
     while (at + 8 <= file_bytes) {
         in.clear();
         in.seekg(static_cast<std::streamoff>(at));
-        if (!in.read(reinterpret_cast<char*>(head), 8)) return false;
+        if (!in.read(reinterpret_cast<char*>(head), 8)) return std::nullopt;
         const std::uint64_t size = le32(head + 4);
         const std::uint64_t end = at + 8 + size + (size & 1);
+        // The format chunk's average bytes a second, at 8 of its 16 or more bytes.
+        if (std::memcmp(head, "fmt ", 4) == 0 && size >= 16 && in.read(reinterpret_cast<char*>(format), 12))
+            bytes_per_second = le32(format + 8);
         if (std::memcmp(head, "data", 4) == 0) {
             // A placeholder size (0, 0xFFFFFFFF) or one past the end of the file is libsndfile's
             // case already (read to the end, or called truncated).
-            if (size == 0 || size >= 0x7FFFFFFFu || end + 8 > file_bytes) return false;
-            return !is_chunk_at(end) && !(size & 1 && is_chunk_at(end - 1));
+            if (size == 0 || size >= 0x7FFFFFFFu || end + 8 > file_bytes) return std::nullopt;
+            if (is_chunk_at(end) || (size & 1 && is_chunk_at(end - 1))) return std::nullopt;
+            return StaleDataSize{size, file_bytes - (at + 8), bytes_per_second};
         }
         at = end;
     }
-    return false;
+    return std::nullopt;
+}
+
+// What the reader says of a stale WAV header: the sound it states and the sound the file holds.
+std::string describe_stale_size(const StaleDataSize& data) {
+    const std::string held = "its header states " + std::to_string(data.stated_bytes) + " bytes of sound, the file holds " +
+                             std::to_string(data.present_bytes);
+    const std::string said =
+        data.bytes_per_second == 0
+            ? held
+            : "its header states " +
+                  format_fixed(static_cast<double>(data.stated_bytes) / static_cast<double>(data.bytes_per_second), 1) +
+                  " s of sound, the file holds " +
+                  format_fixed(static_cast<double>(data.present_bytes) / static_cast<double>(data.bytes_per_second), 1) +
+                  " s";
+    return said + " (a header not brought up to date when the recording stopped, as a recorder that crashed or "
+                  "lost power leaves it); read to the end of the file";
 }
 
 class FileSource final : public AudioSource {
@@ -291,6 +323,8 @@ void ChannelMixer::mix(const float* interleaved, std::size_t frames, std::size_t
     }
 }
 
+void AudioSource::add_note(std::string note) { notes_.push_back(std::move(note)); }
+
 void AudioSource::note_lost_audio(std::size_t at_frame, std::size_t frames) {
     const double rate_hz = sample_rate_hz();
     const double start_s = static_cast<double>(at_frame) / rate_hz;
@@ -337,10 +371,14 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
         if (probe.bad() || (probe.gcount() == 0 && errno != 0)) throw FileError(path, std::strerror(errno));
     }
     if (!is_sndfile_container(header)) return open_ffmpeg_file(path);
-    if (std::string_view(header.data(), 4) == "RIFF" && has_data_past_stated_size(path)) {
-        FfmpegReading reading;
-        reading.reads_past_stated_size = true;
-        return open_ffmpeg_file(path, reading);
+    if (std::string_view(header.data(), 4) == "RIFF") {
+        if (const auto stale = data_past_stated_size(path)) {
+            FfmpegReading reading;
+            reading.reads_past_stated_size = true;
+            auto source = open_ffmpeg_file(path, reading);
+            source->add_note(describe_stale_size(*stale));
+            return source;
+        }
     }
     SF_INFO info{};
     SNDFILE* file = sf_open(path.c_str(), SFM_READ, &info);

@@ -72,6 +72,11 @@ public:
     virtual const std::string& name() const = 0;
     // The stretches read as silence because the file is damaged there, in order, as far as read.
     const std::vector<LostAudio>& lost_audio() const { return lost_audio_; }
+    // What the user should know of how the file was read, though no sound was lost ("its header
+    // states 9.7 s of sound, the file holds 19.5 s ...; read to the end of the file"), without the
+    // file's name: the aligner gives each to the Timeline's warnings, naming the file.
+    const std::vector<std::string>& notes() const { return notes_; }
+    void add_note(std::string note);
 
 protected:
     // Notes `frames` frames of silence read in place of damaged data from frame `at_frame` on,
@@ -80,6 +85,7 @@ protected:
 
 private:
     std::vector<LostAudio> lost_audio_;
+    std::vector<std::string> notes_;
     // read()'s frames as the source holds them, before non-numbers are made 0.
     virtual std::size_t read_frames(float* mono, std::size_t max_frames) = 0;
 };

@@ -542,8 +542,10 @@ constexpr double kLostAudioNamedFirstS = 0.2;
 
 // Aligns the whole of `source`. A file its reader found damaged (sound it could not decode, read as
 // silence in its place: LostAudio) gets a warning naming where, and a refusal says first that the
-// sound there is lost, for the text is not what is wrong. A warning begins with source.name() (only
-// a file loses sound); a refusal does not, its callers name the audio as they name it.
+// sound there is lost, for the text is not what is wrong. What else the reader says of how it read
+// the file (AudioSource::notes: a stale WAV header) is a warning too, and closes a refusal. A warning
+// begins with source.name() (only a file loses sound); a refusal does not, its callers name the
+// audio as they name it.
 Timeline align_source(AudioSource& source, const Timeline& transcript, const AlignOptions& options,
                       const std::vector<GivenSpan>& given_spans, const ProgressCallback& callback) {
     validate_transcript(transcript);
@@ -552,21 +554,25 @@ Timeline align_source(AudioSource& source, const Timeline& transcript, const Ali
     const FeatureTrack track =
         analyze_audio(source, [&](double fraction) { progress.report(kReadingShare * fraction, "reading"); });
     const std::string lost = describe_lost_audio(source.lost_audio());
+    std::string notes;
+    for (const std::string& note : source.notes()) notes += " (the file: " + note + ")";
     Timeline result;
     try {
         result = align_checked(track, transcript, options, given_spans, progress);
     } catch (const AlignmentError& error) {
-        if (lost.empty()) throw;
+        if (lost.empty() && notes.empty()) throw;
+        if (lost.empty()) throw AlignmentError(error.what() + notes);
         if (lost_seconds(source.lost_audio()) < kLostAudioNamedFirstS)
-            throw AlignmentError(std::string(error.what()) + " (the file is also damaged: " + lost + ")");
+            throw AlignmentError(std::string(error.what()) + " (the file is also damaged: " + lost + ")" + notes);
         throw AlignmentError("the file is damaged: " + lost +
                              " (read as silence: the speech there is lost), and the rest cannot be aligned "
                              "without it; --lenient (AlignOptions::lenient) aligns what it can and reports "
-                             "the rest. The aligner found: " + error.what());
+                             "the rest. The aligner found: " + error.what() + notes);
     }
     if (!lost.empty())
         result.warnings.push_back(source.name() + ": the file is damaged: " + lost +
                                   "; read as silence there, the syllables after it keep their times");
+    for (const std::string& note : source.notes()) result.warnings.push_back(source.name() + ": " + note);
     return result;
 }
 

@@ -287,6 +287,14 @@ TEST_SUITE("audio") {
         write_bytes(stale_path, stale);
         const auto source = detail::open_audio_file(stale_path);
         CHECK(test::read_all(*source).size() == whole_frames);
+        // Read whole, and said: the user learns the file's header is stale (it was silent).
+        REQUIRE(source->notes().size() == 1);
+        CHECK_MESSAGE(source->notes()[0].find("its header states 1.5 s of sound, the file holds 3.1 s") == 0,
+                      source->notes()[0]);
+        const Timeline aligned =
+            SpeechAligner().align_file(stale_path, load_transcript(test::source_path("tests/data/speech/one_sentence.txt")));
+        REQUIRE(aligned.warnings.size() == 1);
+        CHECK(aligned.warnings[0].find(stale_path + ": its header states 1.5 s of sound, the file holds 3.1 s") == 0);
         // The same stated size with a LIST chunk where the data's stated end is: the chunk is the
         // file's own, and the data is what the header says.
         std::string with_chunk = bytes.substr(0, data + 8 + ((real_size / 2) & ~3u));
@@ -297,6 +305,8 @@ TEST_SUITE("audio") {
         write_bytes(chunk_path, with_chunk);
         const auto chunk_source = detail::open_audio_file(chunk_path);
         CHECK(test::read_all(*chunk_source).size() == ((real_size / 2) & ~3u) / 2);
+        CHECK(chunk_source->notes().empty());
+        CHECK(whole_source->notes().empty());
     }
 
     TEST_CASE("an Ogg stream cut inside a page is called truncated, and the message says what happened") {

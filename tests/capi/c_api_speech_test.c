@@ -10,6 +10,7 @@
 #include "c_check.h"
 
 #define CLIP_DIR TALKFACE_SOURCE_DIR "/tests/data/speech/"
+#define AUDIO_DIR TALKFACE_SOURCE_DIR "/tests/data/audio/"
 
 /* 3.09 s, 16 kHz mono 16-bit: 小朋友們在公園裡放風箏。 (tests/data/speech/README.md) */
 static const char kClipPath[] = CLIP_DIR "one_sentence.wav";
@@ -487,6 +488,100 @@ static int test_a_cue_pinned_alignment_takes_lenient_options(void) {
     return failures;
 }
 
+/* Writes `path` as a copy of `source` with `count` pseudo-random bytes a `share` of the way in (the
+ * generator of tests/audio/damaged_audio_test.cpp), or, with `halve_data_size`, with its WAV data
+ * size halved; 0 on failure. */
+static int write_damaged_copy(const char *source, const char *path, double share, size_t count, int halve_data_size) {
+    unsigned char *bytes = NULL;
+    long size = 0;
+    size_t at;
+    size_t k;
+    uint32_t seed = 3;
+    int written = 0;
+    FILE *in = fopen(source, "rb");
+    FILE *out = NULL;
+    if (in == NULL) return 0;
+    if (fseek(in, 0, SEEK_END) == 0 && (size = ftell(in)) > 0 && fseek(in, 0, SEEK_SET) == 0)
+        bytes = malloc((size_t)size);
+    if (bytes != NULL && fread(bytes, 1, (size_t)size, in) == (size_t)size) {
+        at = (size_t)((double)size * share);
+        for (k = 0; k < count && at + k < (size_t)size; ++k) {
+            seed = seed * 1664525u + 1013904223u;
+            bytes[at + k] = (unsigned char)(seed >> 24);
+        }
+        if (halve_data_size) {
+            for (at = 12; at + 8 <= (size_t)size && memcmp(bytes + at, "data", 4) != 0; ++at) continue;
+            if (at + 8 <= (size_t)size) {
+                uint32_t data_size = (uint32_t)bytes[at + 4] | (uint32_t)bytes[at + 5] << 8 |
+                                     (uint32_t)bytes[at + 6] << 16 | (uint32_t)bytes[at + 7] << 24;
+                data_size = (data_size / 2) & ~3u;
+                for (k = 0; k < 4; ++k) bytes[at + 4 + k] = (unsigned char)(data_size >> (8 * k));
+            }
+        }
+        out = fopen(path, "wb");
+        written = out != NULL && fwrite(bytes, 1, (size_t)size, out) == (size_t)size;
+        if (out != NULL && fclose(out) != 0) written = 0;
+    }
+    free(bytes);
+    fclose(in);
+    return written;
+}
+
+/* The count of `timeline`'s warnings that begin with `prefix` and contain `needle`. */
+static size_t count_warnings(const tf_timeline *timeline, const char *prefix, const char *needle) {
+    size_t count = 0;
+    size_t found = 0;
+    size_t k;
+    const char *warning = NULL;
+    if (tf_timeline_warning_count(timeline, &count) != TF_OK) return 0;
+    for (k = 0; k < count; ++k)
+        if (tf_timeline_warning(timeline, k, &warning) == TF_OK && strncmp(warning, prefix, strlen(prefix)) == 0 &&
+            strstr(warning, needle) != NULL)
+            ++found;
+    return found;
+}
+
+/* Bad input (issue #13): a damaged file aligns with a warning naming where its sound was lost, or is
+ * refused saying so before what the aligner found; a stale WAV header is read whole and said. */
+static int test_damage_and_a_stale_header_are_said(void) {
+    static const char scratched_m4a[] = TF_TEST_OUTPUT_DIR "/scratched_phone.m4a";
+    static const char scratched_mp4[] = TF_TEST_OUTPUT_DIR "/scratched_clip.mp4";
+    static const char stale_wav[] = TF_TEST_OUTPUT_DIR "/stale_header.wav";
+    int failures = 0;
+    tf_timeline *transcript = NULL;
+    tf_timeline *aligned = NULL;
+    size_t count = 0;
+    CHECK_OK(tf_load_transcript(kTranscriptPath, &transcript));
+
+    /* The scratch costs the AAC decoder 0.64 s of packets: read as silence, the rest keeps its time. */
+    CHECK(write_damaged_copy(AUDIO_DIR "phone.m4a", scratched_m4a, 1.0 / 3.0, 2000, 0));
+    CHECK_OK(tf_align_file(scratched_m4a, transcript, NULL, NULL, NULL, &aligned));
+    CHECK_OK(tf_timeline_syllable_count(aligned, &count));
+    CHECK(count == kClipSyllables);
+    CHECK(count_warnings(aligned, TF_TEST_OUTPUT_DIR "/scratched_phone.m4a: the file is damaged: ",
+                         "s of its sound could not be decoded, at 1.") == 1);
+    tf_timeline_destroy(aligned);
+    aligned = NULL;
+
+    /* 0.7 s of 3.1 lost from a video's sound track: refused, the damage named before the text. */
+    CHECK(write_damaged_copy(AUDIO_DIR "clip.mp4", scratched_mp4, 1.0 / 3.0, 2000, 0));
+    CHECK_FAILS_WITH(tf_align_file(scratched_mp4, transcript, NULL, NULL, NULL, &aligned), TF_ERR_ALIGNMENT,
+                     "scratched_clip.mp4: the file is damaged: 0.");
+    CHECK(strstr(tf_last_error_message(), "s of its sound could not be decoded, at 0.") != NULL);
+    CHECK(aligned == NULL);
+
+    /* A recorder that stopped without bringing its header up to date: the data size states half. */
+    CHECK(write_damaged_copy(kClipPath, stale_wav, 0.0, 0, 1));
+    CHECK_OK(tf_align_file(stale_wav, transcript, NULL, NULL, NULL, &aligned));
+    CHECK_OK(tf_timeline_syllable_count(aligned, &count));
+    CHECK(count == kClipSyllables);
+    CHECK(count_warnings(aligned, TF_TEST_OUTPUT_DIR "/stale_header.wav: its header states 1.5 s of sound, "
+                                  "the file holds 3.1 s", "read to the end of the file") == 1);
+    tf_timeline_destroy(aligned);
+    tf_timeline_destroy(transcript);
+    return failures;
+}
+
 int main(void) {
     int failures = 0;
     failures += test_a_subtitle_cue_pins_the_syllables();
@@ -498,6 +593,7 @@ int main(void) {
     failures += test_progress_rises_and_a_non_zero_return_cancels();
     failures += test_options_are_checked_and_reach_the_aligner();
     failures += test_errors_name_the_file_the_sentence_and_the_argument();
+    failures += test_damage_and_a_stale_header_are_said();
     if (failures != 0) fprintf(stderr, "%d check(s) failed\n", failures);
     return failures == 0 ? 0 : 1;
 }

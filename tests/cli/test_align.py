@@ -5,14 +5,19 @@ import json
 import os
 import pathlib
 import subprocess
+import sys
 import xml.etree.ElementTree as ET
 
 import pytest
+
+sys.path.insert(0, str(pathlib.Path(__file__).parents[1] / "common"))
+import damaged_copies  # noqa: E402
 
 CLI = os.environ["TALKFACE_CLI"]
 SOURCE_DIR = pathlib.Path(os.environ.get("TALKFACE_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
 CLIPS_DIR = SOURCE_DIR / "tests" / "data" / "speech"
 CLIPS = {"one_sentence": "wav", "two_sentences": "wav", "comma_pause": "flac", "stereo_44k": "ogg"}
+AUDIO_DIR = SOURCE_DIR / "tests" / "data" / "audio"
 SVG_NS = "{http://www.w3.org/2000/svg}"
 
 # SPEC "Contracts"; `talkface align --help` documents the extra keys a syllable may carry.
@@ -272,3 +277,45 @@ def test_lenient_with_a_timing_file(tmp_path):
     assert result.returncode == 2
     assert f"--lenient: {words} (json) times every syllable itself" in result.stderr, result.stderr
     assert not out.exists()
+
+
+def test_a_damaged_file_aligns_with_a_warning_naming_where_its_sound_was_lost(tmp_path):
+    # The scratch costs the AAC decoder 0.64 s of packets: read as silence, the rest keeps its time.
+    audio = damaged_copies.scratched_copy(AUDIO_DIR / "phone.m4a", tmp_path / "scratched.m4a", 1 / 3)
+    _, transcript = clip("one_sentence")
+    result = run("align", audio, transcript, "--json", "--quiet")
+    assert result.returncode == 0, result.stderr
+    document = json.loads(result.stdout)
+    assert len(document["syllables"]) == 11
+    damage = [w for w in document["warnings"] if w.startswith(f"{audio}: the file is damaged: ")]
+    assert len(damage) == 1 and "s of its sound could not be decoded, at 1." in damage[0], document["warnings"]
+
+
+def test_a_damaged_file_refused_names_the_damage_before_the_text(tmp_path):
+    # 0.7 s of the clip's 3.1 s lost: the refusal says so first, not that the text is wrong.
+    audio = damaged_copies.scratched_copy(AUDIO_DIR / "clip.mp4", tmp_path / "scratched.mp4", 1 / 3)
+    _, transcript = clip("one_sentence")
+    result = run("align", audio, transcript, "--json", "-o", tmp_path / "out.json")
+    assert result.returncode == 1
+    assert result.stderr.startswith(f"talkface: error: {audio}: the file is damaged: "), result.stderr
+    assert "s of its sound could not be decoded, at 0." in result.stderr
+    assert "--lenient" in result.stderr and "The aligner found: sentence 1" in result.stderr
+    assert_nothing_written(tmp_path, audio)
+
+
+def test_a_stale_wav_header_is_read_whole_and_said(tmp_path):
+    # A recorder that stopped without bringing its header up to date: the data size states half.
+    audio = damaged_copies.stale_wav_copy(CLIPS_DIR / "one_sentence.wav", tmp_path / "stale.wav")
+    _, transcript = clip("one_sentence")
+    result = run("align", audio, transcript, "--json", "--quiet")
+    assert result.returncode == 0, result.stderr
+    document = json.loads(result.stdout)
+    assert len(document["syllables"]) == 11
+    assert abs(document["duration"] - truth("one_sentence")["duration"]) < 0.001
+    assert [w for w in document["warnings"] if w.startswith(str(audio))] == [
+        f"{audio}: its header states 1.5 s of sound, the file holds 3.1 s (a header not brought up to date when "
+        "the recording stopped, as a recorder that crashed or lost power leaves it); read to the end of the file"]
+    # The table form says it on stderr.
+    table = run("align", audio, transcript, "--quiet")
+    assert table.returncode == 0, table.stderr
+    assert f"talkface: warning: {audio}: its header states 1.5 s" in table.stderr

@@ -12,6 +12,9 @@ import pytest
 
 import talkface
 
+sys.path.insert(0, str(pathlib.Path(__file__).parents[1] / "common"))
+import damaged_copies  # noqa: E402
+
 CLIPS_DIR = pathlib.Path(__file__).parents[2] / "tests" / "data" / "speech"
 CLIP = CLIPS_DIR / "one_sentence.wav"  # 3.09 s, 16 kHz mono 16-bit: 小朋友們在公園裡放風箏。
 DURATION_S = 3.09052
@@ -278,3 +281,31 @@ def test_lenient_reports_speech_the_transcript_lacks_and_keeps_the_rest():
     made.loudness = [0.0, 1.0]
     assert made != talkface.TextMismatch(start_s=1.0, end_s=1.5, first_syllable=2, syllable_count=1, expected_text="好")
     assert talkface.TextMismatch(loudness=[0.5]).loudness == [0.5]
+
+
+AUDIO_DIR = pathlib.Path(__file__).parents[2] / "tests" / "data" / "audio"
+
+
+def test_a_damaged_file_warns_where_its_sound_was_lost_or_refuses_saying_so_first(tmp_path):
+    # The scratch costs the AAC decoder 0.64 s of packets: read as silence, the rest keeps its time.
+    audio = damaged_copies.scratched_copy(AUDIO_DIR / "phone.m4a", tmp_path / "scratched.m4a", 1 / 3)
+    aligned = talkface.SpeechAligner().align_file(audio, clip_transcript())
+    assert len(aligned.syllables) == 11
+    damage = [w for w in aligned.warnings if w.startswith(f"{audio}: the file is damaged: ")]
+    assert len(damage) == 1 and "s of its sound could not be decoded, at 1." in damage[0], aligned.warnings
+    # 0.7 s of 3.1 lost from a video's sound track: refused, the damage named before the text.
+    video = damaged_copies.scratched_copy(AUDIO_DIR / "clip.mp4", tmp_path / "scratched.mp4", 1 / 3)
+    with pytest.raises(talkface.AlignmentError, match=r"the file is damaged: 0\.\d+ s of its sound could not be "
+                                                      r"decoded, at 0\.\d+-1\.\d+ s \(read as silence"):
+        talkface.SpeechAligner().align_file(video, clip_transcript())
+
+
+def test_a_stale_wav_header_is_read_whole_and_said(tmp_path):
+    # A recorder that stopped without bringing its header up to date: the data size states half.
+    audio = damaged_copies.stale_wav_copy(CLIP, tmp_path / "stale.wav")
+    aligned = talkface.SpeechAligner().align_file(audio, clip_transcript())
+    assert aligned.duration_s == pytest.approx(DURATION_S, abs=0.01)
+    assert len(aligned.syllables) == 11
+    assert [w for w in aligned.warnings if w.startswith(str(audio))] == [
+        f"{audio}: its header states 1.5 s of sound, the file holds 3.1 s (a header not brought up to date when "
+        "the recording stopped, as a recorder that crashed or lost power leaves it); read to the end of the file"]
