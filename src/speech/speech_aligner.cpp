@@ -330,6 +330,16 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
             const auto plain = viterbi_align(chains[w].states, scores, workspace, scores.frame_count);
             const auto plain_fits = plain.empty() ? std::vector<double>{} : fits_on_path(chains[w], plain, scores);
             const auto plain_frames = plain.empty() ? std::vector<SyllableFrames>{} : frames_on_path(chains[w], plain);
+            // Each syllable's held-out gap on the plain path (lenient_chain.hpp judges skips and
+            // grows mismatches by it): models re-estimated on a wrong text learn its sounds from
+            // the speech that does not say them, those learned without its half have not.
+            std::vector<double> held_out_gaps;
+            if (!plain.empty()) {
+                EmissionScores held_out_scores;
+                held_out_gaps = held_out_fit_gaps(chains[w], split_in_halves(chains[w], plain), observations, learned.whole,
+                                                  learned.halves[w], held_out_scores)
+                                    .syllables;
+            }
             SentenceChain chain = lenient_chain(chains[w]);
             auto path = align_chain(chain, scores, workspace, scores.frame_count, transcript);
             // Each round forbids at least one more skip or generic stretch: it ends. Rival shares
@@ -337,7 +347,7 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
             std::vector<double> rival_shares;
             for (;;) {
                 add_rival_shares(chain, path, plain_frames, scores, rival_shares);
-                const auto skips = unsupported_skips(chain, path, plain_fits, rival_shares);
+                const auto skips = unsupported_skips(chain, path, plain_fits, rival_shares, held_out_gaps);
                 const auto generic = short_generic(chain, path, plain_frames);
                 if (skips.empty() && generic.empty()) break;
                 forbid_skips(chain, skips);
@@ -358,7 +368,7 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
                 other_frames.push_back(light_search(chain, scores, workspace, false));
                 other_frames.push_back(frames_on_path(chains[w], learned.last_paths[w]));
             }
-            place_lenient(chain, w, path, other_frames, scores, track, loudness, result, evidence);
+            place_lenient(chain, w, path, other_frames, held_out_gaps, scores, track, loudness, result, evidence);
             report_pass(progress, kReestimationRounds, w, chains.size());
             continue;
         }

@@ -271,7 +271,7 @@ TEST_SUITE("alignment confidence") {
             SentenceChain chain = lenient;
             chain.syllable_indices.resize(kSyllables);
             for (std::size_t i = 0; i < kSyllables; ++i) chain.syllable_indices[i] = i;
-            place_lenient(chain, 0, on_lenient_chain(path), others, sentence.scores, track, loudness, result, evidence);
+            place_lenient(chain, 0, on_lenient_chain(path), others, {}, sentence.scores, track, loudness, result, evidence);
             REQUIRE(result.mismatches.empty());
             set_confidences(evidence, result);
             return result;

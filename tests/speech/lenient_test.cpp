@@ -188,21 +188,21 @@ TEST_SUITE("speech") {
         const std::vector<double> rivalled(5, 0.3);
         const std::vector<detail::StateSegment> skips_2 = {{0, 0, 10}, {1, 10, 20}, {3, 20, 30}, {4, 30, 40}};
         const std::vector<double> usual = {1.0, 1.1, 0.9, 1.05, 0.95};
-        CHECK(detail::unsupported_skips(chain, skips_2, usual, rivalled) == std::vector<std::size_t>{2});
+        CHECK(detail::unsupported_skips(chain, skips_2, usual, rivalled, {}) == std::vector<std::size_t>{2});
         std::vector<double> outlier = usual;
         outlier[2] = 0.2;  // 16 median absolute deviations under the median
-        CHECK(detail::unsupported_skips(chain, skips_2, outlier, rivalled).empty());
+        CHECK(detail::unsupported_skips(chain, skips_2, outlier, rivalled, {}).empty());
         outlier = usual;
         outlier[3] = 0.2;  // its neighbour
-        CHECK(detail::unsupported_skips(chain, skips_2, outlier, rivalled).empty());
+        CHECK(detail::unsupported_skips(chain, skips_2, outlier, rivalled, {}).empty());
         // Two syllables skipped together are judged together, with the run's neighbours.
         const std::vector<detail::StateSegment> skips_2_3 = {{0, 0, 10}, {1, 10, 20}, {4, 20, 40}};
-        CHECK(detail::unsupported_skips(chain, skips_2_3, usual, rivalled) == std::vector<std::size_t>{2, 3});
+        CHECK(detail::unsupported_skips(chain, skips_2_3, usual, rivalled, {}) == std::vector<std::size_t>{2, 3});
         outlier = usual;
         outlier[4] = 0.2;
-        CHECK(detail::unsupported_skips(chain, skips_2_3, outlier, rivalled).empty());
+        CHECK(detail::unsupported_skips(chain, skips_2_3, outlier, rivalled, {}).empty());
         // No plain path (more syllables than the speech holds): nothing to judge by.
-        CHECK(detail::unsupported_skips(chain, skips_2, {}, rivalled).empty());
+        CHECK(detail::unsupported_skips(chain, skips_2, {}, rivalled, {}).empty());
 
         detail::forbid_skips(chain, {2});
         CHECK(std::isinf(chain.states[2].skip_log_penalty));
@@ -216,11 +216,67 @@ TEST_SUITE("speech") {
         std::vector<double> fits = {1.0, 1.1, 0.2, 1.05, 0.95};  // syllable 2 an outlier
         const double nan = std::numeric_limits<double>::quiet_NaN();
         // Its own text fits it better than every unlike syllable: a right syllable that fits badly.
-        CHECK(detail::unsupported_skips(chain, skips_2_3, fits, {0.0, 0.0, 0.0, 0.0, 0.0}) == std::vector<std::size_t>{2, 3});
+        CHECK(detail::unsupported_skips(chain, skips_2_3, fits, {0.0, 0.0, 0.0, 0.0, 0.0}, {}) == std::vector<std::size_t>{2, 3});
         // One of the run rivalled is enough (the path skips a changed word's syllables together).
-        CHECK(detail::unsupported_skips(chain, skips_2_3, fits, {0.0, 0.0, 0.0, 0.2, 0.0}).empty());
+        CHECK(detail::unsupported_skips(chain, skips_2_3, fits, {0.0, 0.0, 0.0, 0.2, 0.0}, {}).empty());
         // Not measured: judged on the fits alone.
-        CHECK(detail::unsupported_skips(chain, skips_2_3, fits, {nan, nan, nan, nan, nan}).empty());
+        CHECK(detail::unsupported_skips(chain, skips_2_3, fits, {nan, nan, nan, nan, nan}, {}).empty());
+    }
+
+    TEST_CASE("lenient: skipped syllables stay skipped only where one of them fits free sounds better than its text on held-out models") {
+        const Syllable syllable;
+        const detail::SentenceChain chain = one_state_syllables(syllable, 5, -20.0);
+        const std::vector<detail::StateSegment> skips_2_3 = {{0, 0, 10}, {1, 10, 20}, {4, 20, 40}};
+        const std::vector<double> fits = {1.0, 1.1, 0.2, 1.05, 0.95};  // syllable 2 an outlier
+        const std::vector<double> rivalled(5, 0.3);
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        // Free sounds fit neither skipped syllable better than its text: a right pair the path skipped.
+        CHECK(detail::unsupported_skips(chain, skips_2_3, fits, rivalled, {0.0, 0.0, 0.15, -0.1, 0.9}) ==
+              std::vector<std::size_t>{2, 3});
+        // One of the run gapped is enough (a neighbour outside it is not).
+        CHECK(detail::unsupported_skips(chain, skips_2_3, fits, rivalled, {0.0, 0.0, 0.15, 0.4, 0.0}).empty());
+        // Not measured: judged by the other rules alone.
+        CHECK(detail::unsupported_skips(chain, skips_2_3, fits, rivalled, {nan, nan, nan, nan, nan}).empty());
+        CHECK(detail::unsupported_skips(chain, skips_2_3, fits, rivalled, {}).empty());
+    }
+
+    TEST_CASE("lenient: a syllable beside a skipped one joins its mismatch where free sounds fit it far better than its text") {
+        // Six one-state syllables of 10 frames on scores alike everywhere (no fit is an outlier);
+        // the lenient path skips syllable 2 and takes syllable 3 over 5 frames.
+        const Syllable syllable;
+        const detail::SentenceChain plain = one_state_syllables(syllable, 6, -20.0);
+        detail::SentenceChain chain = detail::lenient_chain(plain);
+        chain.syllable_indices = {0, 1, 2, 3, 4, 5};
+        std::vector<std::size_t> state_of(6);
+        for (std::size_t s = 0; s < chain.states.size(); ++s)
+            if (chain.states[s].role != detail::StateRole::generic_speech) state_of[chain.states[s].syllable] = s;
+        const std::vector<detail::StateSegment> path = {
+            {state_of[0], 0, 10}, {state_of[1], 10, 20}, {state_of[3], 20, 25}, {state_of[4], 25, 40}, {state_of[5], 40, 50}};
+        detail::EmissionScores scores;
+        scores.frame_count = 50;
+        scores.values.assign(scores.frame_count * detail::kPhoneClassCount, 0.0f);
+        detail::FeatureTrack track;
+        track.frame_count = scores.frame_count;
+        track.values.assign(track.frame_count * detail::kFeatureCount, 0.0f);
+        track.duration_s = static_cast<double>(track.frame_count) * detail::kFrameStepS;
+        detail::LoudnessProfile loudness;
+        loudness.activity_db.assign(track.frame_count, 0.0f);
+        auto named = [&](const std::vector<double>& held_out_gaps) {
+            Timeline result;
+            result.syllables.resize(6);
+            result.sentences.resize(1);
+            std::vector<detail::SyllableEvidence> evidence(6);
+            detail::place_lenient(chain, 0, path, {}, held_out_gaps, scores, track, loudness, result, evidence);
+            REQUIRE(result.mismatches.size() == 1);
+            return std::make_pair(result.mismatches.front().first_syllable, result.mismatches.front().syllable_count);
+        };
+        // 3 gaps as a changed syllable does, 1 and 4 as right ones: the mismatch is 2 and 3.
+        CHECK(named({0.0, 0.1, 0.0, 0.9, 0.2, 0.0}) == std::make_pair(std::size_t{2}, std::size_t{2}));
+        // Under the bar, or not measured: 2 alone.
+        CHECK(named({0.0, 0.1, 0.0, 0.3, 0.2, 0.0}) == std::make_pair(std::size_t{2}, std::size_t{1}));
+        CHECK(named({}) == std::make_pair(std::size_t{2}, std::size_t{1}));
+        // It grows outward while neighbours gap: 1, 2 and 3.
+        CHECK(named({0.0, 0.8, 0.0, 0.9, 0.2, 0.0}) == std::make_pair(std::size_t{1}, std::size_t{3}));
     }
 
     TEST_CASE("lenient: a syllable's own text fits its stretch better than unlike syllables do, a wrong one does not") {
