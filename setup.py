@@ -2,7 +2,8 @@
 
 The library is built static (BUILD_SHARED_LIBS=OFF) into the extensions, so the wheel needs no
 libtalkface.so beside it; _talkface_photo (face from a photo, OpenCV) is a module of its own, which
-the package imports on first use. Nothing is written into the source tree, so a read-only checkout
+the package imports on first use, and FFmpeg's work is the library's module talkface/talkface_ffmpeg.so
+in the package, which the library opens on first use. Nothing is written into the source tree, so a read-only checkout
 installs: setuptools' build and egg-info folders and the CMake build go to a folder under the
 temporary directory named for this checkout (TALKFACE_PIP_BUILD_DIR overrides it).
 TALKFACE_CMAKE_BUILD_DIR, if set, is the CMake build folder; CMAKE_BUILD_PARALLEL_LEVEL sets the
@@ -82,6 +83,12 @@ class CMakeBuild(build_ext):
         target = Path(self.get_ext_fullpath(ext.name))
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(built, target)
+        if module == "_talkface":
+            # FFmpeg's module, which libtalkface (linked into _talkface) opens from talkface/ beside
+            # itself on first use (src/audio/ffmpeg_module.hpp); built with libtalkface.
+            ffmpeg_module = "talkface_ffmpeg" + sysconfig.get_config_var("SHLIB_SUFFIX")
+            (target.parent / "talkface").mkdir(exist_ok=True)
+            shutil.copyfile(build_dir / "src" / "talkface" / ffmpeg_module, target.parent / "talkface" / ffmpeg_module)
 
 
 setup(

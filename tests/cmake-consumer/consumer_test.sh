@@ -3,7 +3,8 @@
 # or build tree: builds and runs the consumer programs in project/ with find_package(talkface) and,
 # for the C one, with pkg-config talkface_c; runs the installed command (its run path is relative,
 # $ORIGIN/../lib, so no LD_LIBRARY_PATH) and imports the installed Python package; and checks that
-# libtalkface itself loads no OpenCV (the photo stage is libtalkface_photo).
+# libtalkface itself loads no OpenCV (the photo stage is libtalkface_photo) and links no FFmpeg (its
+# module does, opened by the C program's video frame, here from the install).
 # usage: consumer_test.sh BUILD_DIR CONSUMER_SOURCE_DIR WORK_DIR [C_COMPILER [PYTHON]]   (WORK_DIR is emptied)
 set -eu
 build_dir=$1
@@ -22,7 +23,9 @@ cmake -S "$consumer_dir" -B "$work_dir/build" -DCMAKE_PREFIX_PATH="$prefix" -DCM
   >"$work_dir/configure.log"
 cmake --build "$work_dir/build" --parallel 2 >"$work_dir/build.log"
 "$work_dir/build/consumer_cpp"
-"$work_dir/build/consumer_c"
+mkdir -p "$work_dir/run"
+"$work_dir/build/consumer_c" "$work_dir/run"
+test -s "$work_dir/run/frame-000000.png"
 if [ -e "$work_dir/build/consumer_photo" ]; then
   "$work_dir/build/consumer_photo"
 fi
@@ -35,7 +38,7 @@ LD_LIBRARY_PATH="$(PKG_CONFIG_PATH="$pc_dir" pkg-config --variable=libdir talkfa
   "$work_dir/consumer_c_pkgconfig"
 
 libdir=$(PKG_CONFIG_PATH="$pc_dir" pkg-config --variable=libdir talkface)
-# Its direct needs (FFmpeg's libraries, for video, bring libpng and libjpeg of their own).
+# Its direct needs.
 if readelf -d "$libdir/libtalkface.so" | grep NEEDED | grep -Ei 'opencv|dlib|png|jpeg'; then
   echo "libtalkface needs the photo stage's libraries (above); they belong to libtalkface_photo" >&2
   exit 1
@@ -44,6 +47,13 @@ if ldd "$libdir/libtalkface.so" | grep -Ei 'opencv|dlib'; then
   echo "libtalkface loads OpenCV or dlib (above); they belong to libtalkface_photo" >&2
   exit 1
 fi
+# FFmpeg's libraries are the FFmpeg module's (LIBDIR/talkface/), which libtalkface opens on first use.
+if readelf -d "$libdir/libtalkface.so" | grep NEEDED | grep -E 'libav|libsw'; then
+  echo "libtalkface links FFmpeg's libraries (above); they belong to its module, talkface_ffmpeg" >&2
+  exit 1
+fi
+test -f "$libdir/talkface/talkface_ffmpeg.so" ||
+  { echo "FFmpeg's module is not installed in $libdir/talkface/" >&2; exit 1; }
 
 # The installed command, from a folder of its own, found through its relative run path.
 if [ -x "$prefix/bin/talkface" ]; then

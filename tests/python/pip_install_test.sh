@@ -1,7 +1,8 @@
 #!/bin/sh
 # pip installs talkface into a fresh virtual environment from a read-only copy of the source tree,
 # checks that nothing was written into that copy (no build-pip/, no egg-info, no CMake build), and
-# imports the package from outside the tree, face from a photo included where it was built.
+# imports the package from outside the tree, face from a photo included where it was built, and
+# writes a video frame through FFmpeg's module.
 # usage: pip_install_test.sh PYTHON SOURCE_DIR WORK_DIR   (WORK_DIR is emptied first)
 set -eu
 python=$1
@@ -66,5 +67,12 @@ if any(location.parent.glob("_talkface_photo*.so")):
         raise AssertionError("a blank photo gave a face")
     except ValueError as error:
         assert "no face" in str(error), error
+# FFmpeg is the library'"'"'s module, talkface/talkface_ffmpeg.so in the package, opened on first use.
+import numpy
+writer = talkface.VideoWriter("frame.png", talkface.VideoOptions(width_px=16, height_px=16))
+writer.write_frame(numpy.full((16, 16, 4), 128, dtype=numpy.uint8))
+writer.finish()
+assert pathlib.Path("frame-000000.png").stat().st_size > 0
+assert (location.parent / "talkface" / "talkface_ffmpeg.so").is_file()
 print("talkface", talkface.__version__, "from", location.parent, "d =", d)
 '
