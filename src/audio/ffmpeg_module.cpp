@@ -46,7 +46,9 @@ const FfmpegModuleCalls* open_module() {
                               "the pages' audio and videos); install talkface whole (cmake --install puts it in "
                               "LIBDIR/talkface/, beside the library)");
     }
-    void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    // Lazily bound, as libtalkface bound FFmpeg when it linked it: binding every call of FFmpeg's
+    // 130-odd libraries now cost a page 14 M instructions more (FFmpeg's sonames carry its ABI).
+    void* module = dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);
     void* entry = module != nullptr ? dlsym(module, "talkface_ffmpeg_module_calls") : nullptr;
     if (entry == nullptr) {
         const char* reason = dlerror();
