@@ -38,6 +38,21 @@ constexpr double boundary_tolerance_s = 0.150;
 constexpr double target_speed = 500.0;
 const char* const sets[] = {"tuning", "held-out"};
 
+// Adds a count of another group of passages to one's own; appends its per-syllable figures.
+template <class T>
+void accumulate(T& sum, const T& other) {
+    sum += other;
+}
+template <class T>
+void accumulate(std::vector<T>& sum, const std::vector<T>& other) {
+    sum.insert(sum.end(), other.begin(), other.end());
+}
+// Each of `fields` of `other` accumulated into `sum`'s: the tallies' add().
+template <class Tally, class... Fields>
+void add_fields(Tally& sum, const Tally& other, Fields... fields) {
+    (accumulate(sum.*fields, other.*fields), ...);
+}
+
 /// What one method (the aligner or the baseline) got right on a group of passages.
 struct Score {
     int passages = 0;
@@ -51,15 +66,9 @@ struct Score {
     double cpu_s = 0;
 
     void add(const Score& other) {
-        passages += other.passages;
-        failed += other.failed;
-        errors_s.insert(errors_s.end(), other.errors_s.begin(), other.errors_s.end());
-        confidences.insert(confidences.end(), other.confidences.begin(), other.confidences.end());
-        aligned_errors_s.insert(aligned_errors_s.end(), other.aligned_errors_s.begin(), other.aligned_errors_s.end());
-        boundaries += other.boundaries;
-        boundaries_found += other.boundaries_found;
-        audio_s += other.audio_s;
-        cpu_s += other.cpu_s;
+        add_fields(*this, other, &Score::passages, &Score::failed, &Score::errors_s, &Score::confidences,
+                   &Score::aligned_errors_s, &Score::boundaries, &Score::boundaries_found, &Score::audio_s,
+                   &Score::cpu_s);
     }
 
     double median_ms() const {
@@ -462,10 +471,8 @@ struct MismatchCount {
     int right = 0, refused = 0;    ///< right transcripts, and those the aligner threw on
     int wrong = 0, detected = 0;   ///< wrong transcripts, and those it threw on
     void add(const MismatchCount& other) {
-        right += other.right;
-        refused += other.refused;
-        wrong += other.wrong;
-        detected += other.detected;
+        add_fields(*this, other, &MismatchCount::right, &MismatchCount::refused, &MismatchCount::wrong,
+                   &MismatchCount::detected);
     }
 };
 
@@ -701,25 +708,11 @@ struct LenientCount {
     int lacking_generic = 0;                         ///< their marks of speech lacking elsewhere
     std::vector<double> lacking_start_errors_s, lacking_end_errors_s;
     void add(const LenientCount& other) {
-        right_syllables += other.right_syllables;
-        right_marked += other.right_marked;
-        right_generic += other.right_generic;
-        words += other.words;
-        whole += other.whole;
-        in_part += other.in_part;
-        other_syllables += other.other_syllables;
-        other_marked += other.other_marked;
-        other_generic += other.other_generic;
-        start_errors_s.insert(start_errors_s.end(), other.start_errors_s.begin(), other.start_errors_s.end());
-        end_errors_s.insert(end_errors_s.end(), other.end_errors_s.begin(), other.end_errors_s.end());
-        lacking += other.lacking;
-        lacking_found += other.lacking_found;
-        lacking_syllables += other.lacking_syllables;
-        lacking_marked += other.lacking_marked;
-        lacking_generic += other.lacking_generic;
-        lacking_start_errors_s.insert(lacking_start_errors_s.end(), other.lacking_start_errors_s.begin(),
-                                      other.lacking_start_errors_s.end());
-        lacking_end_errors_s.insert(lacking_end_errors_s.end(), other.lacking_end_errors_s.begin(), other.lacking_end_errors_s.end());
+        using C = LenientCount;
+        add_fields(*this, other, &C::right_syllables, &C::right_marked, &C::right_generic, &C::words, &C::whole,
+                   &C::in_part, &C::other_syllables, &C::other_marked, &C::other_generic, &C::start_errors_s,
+                   &C::end_errors_s, &C::lacking, &C::lacking_found, &C::lacking_syllables, &C::lacking_marked,
+                   &C::lacking_generic, &C::lacking_start_errors_s, &C::lacking_end_errors_s);
     }
 };
 
@@ -957,15 +950,17 @@ int main(int argc, char** argv) {
         bool lenient_mode = false;
         for (int i = 1; i < argc; ++i) {
             const std::string arg = argv[i];
+            // The option's value, the next argument.
+            const auto value = [&]() -> std::string {
+                if (i + 1 >= argc) usage(arg + " needs a value");
+                return argv[++i];
+            };
             if (arg == "--conditions") {
-                if (i + 1 >= argc) usage("--conditions needs a value");
-                only = argv[++i];
+                only = value();
             } else if (arg == "--truth") {
-                if (i + 1 >= argc) usage("--truth needs a value");
-                truth_list = argv[++i];
+                truth_list = value();
             } else if (arg == "--dump") {
-                if (i + 1 >= argc) usage("--dump needs a value");
-                dump_path = argv[++i];
+                dump_path = value();
             } else if (arg == "--mismatch") {
                 mismatch_mode = true;
             } else if (arg == "--lenient") {
