@@ -1,0 +1,244 @@
+#include "text/dates_and_times.hpp"
+
+#include <utility>
+
+#include "text/number_words.hpp"
+
+namespace talkface::detail {
+
+bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t end, bool dashed) {
+    const std::string before = text_before(text, start, true);
+    for (const std::string_view word : {"比分", "比數", "比数", "战成", "戰成", "打成", "踢成"})
+        if (before.find(word) != std::string::npos) return true;
+    const std::string after = text_between(text, end, end + 2);
+    constexpr std::string_view kResults[] = {"战胜", "戰勝", "击败", "擊敗", "获胜", "獲勝", "取胜", "取勝", "领先", "領先",
+                                             "落后", "落後", "险胜", "險勝", "大胜", "大勝", "完胜", "完勝", "逆转", "逆轉",
+                                             "告负", "告負", "战平", "戰平", "打平", "逼平", "胜", "勝", "负", "負", "赢",
+                                             "贏", "输", "輸"};
+    for (const auto word : kResults)
+        if (after.rfind(word, 0) == 0) return true;
+    if (!dashed) return false;
+    const std::string clause = text_after(text, end);
+    for (const auto word : kResults)
+        if (word.size() > std::string_view("胜").size() && clause.find(word) != std::string::npos) return true;
+    return false;
+}
+
+bool speaks_of_duration(const std::vector<CodePoint>& text, std::size_t start) {
+    const std::string before = text_before(text, start, true);
+    for (const std::string_view word : {"成绩", "成績", "用时", "用時", "耗时", "耗時", "历时", "歷時", "跑出", "游出",
+                                        "完赛", "完賽", "时长", "時長"})
+        if (before.find(word) != std::string::npos) return true;
+    return false;
+}
+
+bool names_a_day(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
+    const auto& digits = number.whole;
+    if (number.has_point || number.has_separators || digits.size() < 3 || digits.size() > 4) return false;
+    const auto month_length = digits.size() - 2;
+    if (!is_month_and_day(digits.substr(0, month_length), digits.substr(month_length))) return false;
+    const std::string after = text_between(text, number.end, number.end + 3);
+    for (const std::string_view word : {"节", "節", "大促", "促销", "促銷", "购物", "購物", "晚会", "晚會", "活动", "活動",
+                                        "当天", "當天", "这天", "這天", "那天", "快乐", "快樂", "狂欢", "狂歡", "表白"})
+        if (after.rfind(word, 0) == 0) return true;
+    const std::string before = text_before(text, start, true);
+    for (const std::string_view word : {"今天是", "明天是", "昨天是", "后天是", "後天是", "今天就是", "又到了", "迎来", "迎來"})
+        if (ends_with(before, word)) return true;
+    return false;
+}
+
+bool counts_years(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
+    constexpr int kLatestYearNamed = 2100;
+    if (number.has_point || number.has_separators || number.whole.size() != 4 || value_at(text, number.end) != U'年')
+        return false;
+    if (std::stoi(number.whole) > kLatestYearNamed || ends_with(text_before(text, start, true), "公元前")) return true;
+    const std::string after = text_between(text, number.end + 1, number.end + 4);
+    for (const std::string_view word : {"历史", "歷史", "的历史", "的歷史", "之久"})
+        if (after.rfind(word, 0) == 0) return true;
+    return false;
+}
+
+bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNumber& number) {
+    if (number.has_point || number.has_separators || number.whole.size() != 4 ||
+        !(number.whole.rfind("19", 0) == 0 || number.whole.rfind("20", 0) == 0)) {
+        return false;
+    }
+    const std::string after = text_between(text, number.end, number.end + 3);
+    for (const std::string_view word : {"财年", "財年", "赛季", "賽季", "款", "届", "屆", "级", "級", "版", "春晚", "世界杯",
+                                        "奥运", "奧運", "冬奥", "冬奧", "亚运", "亞運", "全运", "全運"})
+        if (after.rfind(word, 0) == 0) return true;
+    return false;
+}
+
+std::optional<SpokenForm> read_clock_time(const std::vector<CodePoint>& text, const WrittenNumber& hour,
+                                          bool duration) {
+    auto i = hour.end + 1;
+    const auto minutes = digits_from(text, i);
+    constexpr int kLastHour = 24;
+    constexpr int kLastMinute = 59;  // a duration's first part may be minutes (25:30 in a 5000 m race)
+    if (hour.has_point || hour.has_separators || hour.whole.size() > 2 ||
+        std::stoi(hour.whole) > (duration ? kLastMinute : kLastHour) || minutes.size() != 2 || minutes > "59") {
+        return std::nullopt;
+    }
+    auto say_part = [](const std::string& digits, const char* unit) -> std::string {
+        if (digits == "00") return "";
+        if (digits.front() == '0') return std::string("零") + digit_words(digits.substr(1)) + unit;
+        return cardinal_words(digits, false) + unit;
+    };
+    SpokenForm form;
+    const auto first = hour.whole == "2" ? std::string("两") : cardinal_words(hour.whole, false);
+    const bool has_seconds = value_at(text, i) == ':' && is_digit_at(text, i + 1) && is_digit_at(text, i + 2) &&
+                             !is_digit_at(text, i + 3);
+    if (duration) {
+        form.words = first + (has_seconds ? "小时" : "分") + say_part(minutes, has_seconds ? "分" : "秒");
+    } else {
+        form.words = first + "点" + say_part(minutes, "分");
+    }
+    if (has_seconds) {
+        auto k = i + 1;
+        const auto seconds = digits_from(text, k);
+        if (seconds <= "59") {
+            if (minutes == "00" && seconds != "00") form.words += "零";
+            form.words += say_part(seconds, "秒");
+            i = k;
+        }
+    }
+    form.end = i;
+    return form;
+}
+
+std::optional<SpokenForm> read_numeric_date(const std::vector<CodePoint>& text, const WrittenNumber& year) {
+    const auto separator = value_at(text, year.end);
+    if (year.has_point || year.has_separators || year.whole.size() != 4 || !(separator == '-' || separator == '/')) {
+        return std::nullopt;
+    }
+    auto i = year.end + 1;
+    const auto month = digits_from(text, i);
+    if (month.empty() || month.size() > 2 || value_at(text, i) != separator) return std::nullopt;
+    ++i;
+    const auto day = digits_from(text, i);
+    if (!is_month_and_day(month, day)) return std::nullopt;
+    SpokenForm form;
+    form.words = digit_words(year.whole) + "年" + cardinal_words(month, false) + "月" + cardinal_words(day, false) + "日";
+    form.end = i;
+    return form;
+}
+
+bool follows_date_or_time(const std::vector<CodePoint>& text, std::size_t mark) {
+    if (mark >= 2 && is_one_of(text[mark - 1].value, U"年月日号號点點时時分秒")) return is_digit_at(text, mark - 2);
+    return mark >= 4 && is_digit_at(text, mark - 1) && is_digit_at(text, mark - 2) && value_at(text, mark - 3) == ':' &&
+           is_digit_at(text, mark - 4);
+}
+
+std::optional<SpokenForm> read_season(const std::vector<CodePoint>& text, const WrittenNumber& first) {
+    const auto mark = value_at(text, first.end);
+    if (first.has_point || first.has_separators || first.whole.size() != 4 || !(first.whole[0] == '1' || first.whole[0] == '2') ||
+        !(mark == '/' || is_dash(mark))) {
+        return std::nullopt;
+    }
+    auto i = first.end + 1;
+    const auto second = digits_from(text, i);
+    const int next_year = std::stoi(first.whole) + 1;
+    const bool follows = (second.size() == 2 && std::stoi(second) == next_year % 100) ||
+                         (second.size() == 4 && std::stoi(second) == next_year);
+    if (!follows || value_at(text, i) == '.' || (value_at(text, i) == U'年' && value_at(text, i + 1) != U'度')) return std::nullopt;
+    SpokenForm form;
+    form.words = digit_words(first.whole) + "至" + digit_words(second);
+    form.end = i;
+    return form;
+}
+
+std::optional<SpokenForm> read_dotted_day(const std::vector<CodePoint>& text, const WrittenNumber& month) {
+    const auto dot = value_at(text, month.end);
+    if (month.has_point || month.has_separators || !(dot == 0xB7 /*·*/ || dot == 0x30FB /*・*/ || dot == 0x2022 /*•*/) ||
+        !is_digit_at(text, month.end + 1)) {
+        return std::nullopt;
+    }
+    auto i = month.end + 1;
+    const auto day = digits_from(text, i);
+    if (!is_month_and_day(month.whole, day)) return std::nullopt;
+    SpokenForm form;
+    form.words = digit_words(month.whole) + digit_words(day);
+    form.end = i;
+    return form;
+}
+
+std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text, std::size_t start,
+                                             const WrittenNumber& month) {
+    if (month.has_point || month.has_separators || value_at(text, month.end) != '/') return std::nullopt;
+    auto i = month.end + 1;
+    const auto day = digits_from(text, i);
+    if (!is_month_and_day(month.whole, day) || value_at(text, i) == '.' || value_at(text, i) == '/') return std::nullopt;
+    // A range of two days (10/1-10/7): the second day no earlier than the first (1/3~1/2 is no range
+    // of days), and the words after the second day decide for both.
+    auto first_end = i;
+    std::string second_day_words;
+    if (is_range_mark(value_at(text, i)) && is_digit_at(text, i + 1)) {
+        auto k = i + 1;
+        const auto second_month = digits_from(text, k);
+        if (value_at(text, k) == '/' && is_digit_at(text, k + 1)) {
+            ++k;
+            const auto second_day = digits_from(text, k);
+            if (is_month_and_day(second_month, second_day) && value_at(text, k) != '/' && value_at(text, k) != '.' &&
+                std::make_pair(std::stoi(second_month), std::stoi(second_day)) >=
+                    std::make_pair(std::stoi(month.whole), std::stoi(day))) {
+                second_day_words = "到" + cardinal_words(second_month, false) + "月" + cardinal_words(second_day, false) + "日";
+                i = k;
+            }
+        }
+    }
+    bool in_time = false;
+    const std::string after = text_between(text, i, i + 2);
+    for (const std::string_view word : {"起", "前", "后", "後", "晚", "早", "上午", "下午", "中午", "凌晨", "夜", "当天",
+                                        "當天", "(", "（", "星期", "周", "週", "礼拜", "禮拜", "期间", "期間"})
+        if (after.rfind(word, 0) == 0) in_time = true;
+    const bool is_fraction = after == "决赛" || after == "決賽" || value_at(text, i) == U'的' ||
+                             (i < text.size() && takes_liang(text[i].value));
+    if (!in_time && is_fraction) return std::nullopt;
+    auto before = text_before(text, start, true);
+    // A word of time before it names what the day is (展会时间为12/3-12/5, 日期：9/18).
+    auto named = before;
+    while (!named.empty() && (ends_with(named, "为") || ends_with(named, "為") || ends_with(named, "是") ||
+                              ends_with(named, "：") || ends_with(named, ":") || ends_with(named, " ")))
+        named.erase(named.size() - (named.back() == ':' || named.back() == ' ' ? 1 : std::string_view("为").size()));
+    for (const std::string_view word : {"时间", "時間", "日期"}) in_time = in_time || ends_with(named, word);
+    // In brackets after a day of the week (本週三（12/4）, 周五(3/8)), as news dates an event.
+    if (ends_with(named, "（") || ends_with(named, "(")) {
+        named.erase(named.size() - (named.back() == '(' ? 1 : std::string_view("（").size()));
+        for (const std::string_view week : {"周", "週", "星期", "礼拜", "禮拜"})
+            for (const std::string_view weekday : {"一", "二", "三", "四", "五", "六", "日", "天"})
+                in_time = in_time || ends_with(named, std::string(week) + std::string(weekday));
+    }
+    for (const std::string_view word : {"于", "於"}) {
+        if (!ends_with(before, word)) continue;
+        const auto rest = before.substr(0, before.size() - word.size());
+        bool compares = false;
+        for (const std::string_view comparing : {"小", "大", "等", "低", "高", "多", "少", "当", "當", "属", "屬", "至", "由",
+                                                 "对", "對", "关", "關", "相"})
+            compares = compares || ends_with(rest, comparing);
+        in_time = in_time || !compares;
+    }
+    if (!in_time) return std::nullopt;
+    SpokenForm form;
+    form.words = cardinal_words(month.whole, false) + "月" + cardinal_words(day, false) + "日" + second_day_words;
+    form.end = second_day_words.empty() ? first_end : i;
+    return form;
+}
+
+std::optional<SpokenForm> read_race_time(const WrittenNumber& minutes, const WrittenNumber& seconds) {
+    constexpr std::size_t kLongestMinutes = 2;
+    constexpr std::size_t kLongestFraction = 2;
+    if (minutes.has_point || minutes.has_separators || minutes.whole.size() > kLongestMinutes ||
+        (minutes.whole.size() > 1 && minutes.whole.front() == '0') || !seconds.has_point || seconds.whole.size() != 2 ||
+        seconds.whole > "59" || seconds.fraction.size() > kLongestFraction) {
+        return std::nullopt;
+    }
+    SpokenForm form;
+    form.words = (minutes.whole == "2" ? std::string("两") : cardinal_words(minutes.whole, false)) + "分" +
+                 (seconds.whole.front() == '0' ? "零" + digit_words(seconds.whole.substr(1)) : cardinal_words(seconds.whole, false)) +
+                 "秒" + digit_words(seconds.fraction);
+    form.end = seconds.end;
+    return form;
+}
+
+}  // namespace talkface::detail

@@ -1,0 +1,84 @@
+// Dates, clock times, durations and scores as written (2026-12-01, 9/18, 3·15, 3:30, 2:05:30, 1:28.65,
+// 2024/25赛季, 2026年, 618): the part of the written-form reader that tells a time from a score
+// and says each (docs/written-forms.md).
+#ifndef TALKFACE_TEXT_DATES_AND_TIMES_HPP
+#define TALKFACE_TEXT_DATES_AND_TIMES_HPP
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "text/code_points.hpp"
+#include "text/written_number_scan.hpp"
+#include "text/written_numbers.hpp"
+
+namespace talkface::detail {
+
+// Two numbers joined by a colon are a score, not a clock time, where the sentence speaks of a
+// match: a score word earlier in the clause (比分是21:19) or a result right after (2:0战胜,
+// 21:19获胜). Without either, a colon that can be a time is one (下午3:30). Joined by a dash
+// (`dashed`), they are a score where a result of two characters comes anywhere later in the clause
+// too, as a tennis result lists its sets first (6-3、6-4直落两盘获胜): a dash makes no clock time to
+// mistake, only a range, which the caller tells by its measure word (3-5天后获胜).
+bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t end, bool dashed = false);
+
+// A colon's time where the clause speaks of how long something took (跑出了2:05:30的成绩, 用时3:35):
+// a duration, 两小时零五分三十秒, 三分三十五秒, not a time of day.
+bool speaks_of_duration(const std::vector<CodePoint>& text, std::size_t start);
+
+// A day named by its date's digits (520 五二零, 618大促 六一八大促, 今天是1111): three or four digits
+// that are a month and a day, a festival's or a sale's word right after them or a day's before
+// them (今天是). Elsewhere such a number counts (520人, 股价涨到了520).
+bool names_a_day(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
+
+// Four digits before 年 name a year (2026年 二零二六年) unless they count years: a number past any
+// year a text names as a date (距今约5000年: no one dates by the year 5000), a year before the common
+// era, said as a count (公元前2070年 公元前两千零七十年), or a span with 历史 or 之久 after it (1200年
+// 历史, 3000年之久).
+bool counts_years(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
+
+// A year that names what follows it without 年 (2025财年, 2025赛季, 2026款, 2025届, 2024版, 2023级, 2026春晚,
+// 2030世界杯): digit by digit, as a year is (二零二五财年); a count elsewhere (2000人, 2000多).
+bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNumber& number);
+
+// 3:30 三点三十分, 10:05 十点零五分, 2:00 两点; nullopt when the text after the colon is not
+// minutes (3:2 is a score). A `duration` is said in its units: 2:05:30 两小时零五分三十秒 (hours,
+// minutes and seconds), 3:35 三分三十五秒 (minutes and seconds).
+std::optional<SpokenForm> read_clock_time(const std::vector<CodePoint>& text, const WrittenNumber& hour,
+                                          bool duration = false);
+
+// 2026-12-01, 2026/12/1: a year, a month and a day.
+std::optional<SpokenForm> read_numeric_date(const std::vector<CodePoint>& text, const WrittenNumber& year);
+
+// Whether a range mark at `mark` follows a date or a clock time (9月1日-9月5日, 3点-5点, 12:00-14:00):
+// the first part of a range that ended the form before the mark, so the mark is 到, not a sign.
+bool follows_date_or_time(const std::vector<CodePoint>& text, std::size_t mark);
+
+// A season, or a school or financial year, written as two years that follow each other
+// (2024/25赛季, 2024-25, 2024-2025学年): the years digit by digit joined by 至, as sports and
+// school news read them (二零二四至二五赛季). A range of years before 年 stays a range
+// (2020-2025年 二零二零到二零二五年); two years that do not follow each other are not a season.
+std::optional<SpokenForm> read_season(const std::vector<CodePoint>& text, const WrittenNumber& first);
+
+// A day named by its month and day with a middle dot between them, as an event is (3·15晚会 三一五
+// 晚会, 5·12地震 五一二, 9·11 九一一): digit by digit, the dot not said.
+std::optional<SpokenForm> read_dotted_day(const std::vector<CodePoint>& text, const WrittenNumber& month);
+
+// A month and a day without a year, 9/18 (as Taiwan and Hong Kong write dates, and weather and
+// event notices everywhere): 九月十八日 where the clause places something in time, with a word of
+// time right after it (9/18起, 12/31前, 9/20晚间, 9/18(週三)) or 于 於 before it (请於12/31, not
+// 小于1/3). A range mark after it is no sign: 1/3~1/2 is a range of fractions as often as 10/1-10/7
+// is one of days. Elsewhere it is a fraction (1/3的学生, 1/2杯, 答案是3/4), and so it is before 的, a measure
+// word or 决赛, the knockout rounds' (于1/4决赛中出局), whatever stands before it.
+std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text, std::size_t start,
+                                             const WrittenNumber& month);
+
+// A race's time, minutes and seconds with their tenths or hundredths (1:28.65 一分二十八秒六五,
+// 3:27.46): the seconds' decimal point is what a clock's minutes never have. A subtitle's timestamp
+// (00:01.500: minutes with a leading zero, thousandths) is no race's.
+std::optional<SpokenForm> read_race_time(const WrittenNumber& minutes, const WrittenNumber& seconds);
+
+}  // namespace talkface::detail
+
+#endif

@@ -1,0 +1,349 @@
+#include "text/digit_codes.hpp"
+
+#include <algorithm>
+#include <string_view>
+
+#include "text/latin_words.hpp"
+#include "text/number_words.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+// Names of a service, said with its number: before it (客服热线10086) or after it (110报警).
+constexpr std::string_view kServiceWords[] = {"报警", "報警", "急救", "火警", "查号", "查號", "热线", "熱線", "电话",
+                                              "電話", "服务", "服務", "客服", "求助", "救护", "救護", "平台", "平臺",
+                                              "专线", "專線", "中心", "号码", "號碼"};
+
+// A phone number's groups of digits, each said digit by digit with 幺 for 1; a group too long to be
+// read as a number carries the warning (once).
+void append_phone_groups(SpokenForm& form, const std::vector<std::string>& groups) {
+    form.is_dialled = true;
+    for (const auto& group : groups) {
+        form.words += digit_words(group, true);
+        if (group.size() > kMostCardinalDigits && form.warning.empty()) form.warning = kTooLongWarning;
+    }
+}
+
+// The capitals of a model's name right before text[start], with nothing, a hyphen or a space
+// between (C919, A380, B-52, RTX 4090), or the middle dot of a licence plate (京A·12345, where the
+// digits are a name as a model's are): one to three capitals that start a word and are spelled
+// (TOP in TOP 10 is the word top, a rank: latin_words.hpp), not after a digit (4K 120帧: the 4K is
+// a quantity, and 120 counts). Empty where there are none.
+std::string model_name_before(const std::vector<CodePoint>& text, std::size_t start) {
+    auto i = start;
+    if (i > 0 && is_one_of(text[i - 1].value, U"- \u00B7\u30FB")) --i;
+    std::string capitals;
+    while (i > 0 && is_ascii_capital(value_at(text, i - 1))) {
+        --i;
+        capitals.insert(capitals.begin(), static_cast<char>(ascii_form(text[i].value)));
+    }
+    constexpr std::size_t kMostCapitals = 3;
+    const bool starts_word = i == 0 || !(is_ascii_letter(value_at(text, i - 1)) || is_digit_at(text, i - 1));
+    if (capitals.size() > kMostCapitals || is_said_as_word(capitals) || !starts_word) return {};
+    return capitals;
+}
+
+}  // namespace
+
+bool names_by_digits(char32_t c) {
+    return is_one_of(c, U"室房路号號");
+}
+
+bool names_room_or_building(const std::vector<CodePoint>& text, std::size_t end) {
+    constexpr std::size_t kLongestWord = 3;  // characters: 会议室, 办公室
+    if (end >= text.size() || takes_liang(text[end].value)) return false;
+    for (std::size_t k = end; k < std::min(text.size(), end + kLongestWord); ++k)
+        if (is_one_of(text[k].value, U"室")) return true;
+    const auto word = text_between(text, end, end + 2);
+    return word == "大楼" || word == "大樓" || word == "大厦" || word == "大廈";
+}
+
+bool is_service_number(const std::string& digits) {
+    for (const std::string_view number : {"110", "112", "114", "119", "120", "122", "999", "12110", "12117", "12121",
+                                          "12123", "12306", "12308", "12309", "12315", "12318", "12320", "12328", "12333",
+                                          "12338", "12345", "12348", "12355", "12358", "12365", "12366", "12369", "12378",
+                                          "12380", "12388", "12393", "12395", "10000", "10010", "10086"})
+        if (digits == number) return true;
+    return digits.size() == 5 && (digits.rfind("95", 0) == 0 || digits.rfind("96", 0) == 0);
+}
+
+bool is_named_anywhere(const std::string& digits) {
+    return digits.size() == 5 && digits != "12345" && digits != "10000";
+}
+
+bool is_service_call(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    constexpr std::size_t kLookBack = 12;  // code points: a dialling word and a service's name or two
+    std::string before = text_between(text, start >= kLookBack ? start - kLookBack : 0, start);
+    for (bool stripped = true; stripped;) {
+        stripped = false;
+        for (const std::string_view word : kServiceWords) {
+            if (ends_with(before, word)) {
+                before.erase(before.size() - word.size());
+                stripped = true;
+            }
+        }
+        for (const std::string_view word : {"给", "給", " "}) {
+            if (ends_with(before, word)) {
+                before.erase(before.size() - word.size());
+                stripped = true;
+            }
+        }
+    }
+    for (const std::string_view word : {"打", "拨", "撥", "叫", "call", "Call"})
+        if (ends_with(before, word)) return true;
+    const std::string after = text_between(text, end, end + 2);
+    for (const std::string_view word : kServiceWords)
+        if (after.rfind(word, 0) == 0) return true;
+    return false;
+}
+
+bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start) {
+    std::size_t i = start;
+    for (int skipped = 0; skipped < 2 && i > 0 && is_one_of(text[i - 1].value, U" 是为為：:\u3000"); ++skipped) --i;
+    if (i > 0 && is_one_of(text[i - 1].value, U"号號室房码碼")) return true;
+    // A postcode after 邮编 (邮编100080 一零零零八零; session 14: it counted), as 邮政编码 is after 码.
+    if (const auto word = text_between(text, i >= 2 ? i - 2 : 0, i); word == "邮编" || word == "郵編") return true;
+    if (start >= 2 && is_one_of(text[start - 1].value, U"楼樓栋棟层層") && is_digit_at(text, start - 2)) return true;
+    const auto staircase = text_between(text, start >= 2 ? start - 2 : 0, start);
+    return (staircase == "单元" || staircase == "單元") && start >= 3 && is_digit_at(text, start - 3);
+}
+
+bool follows_phone_word(const std::vector<CodePoint>& text, std::size_t start) {
+    const std::string before = text_before(text, start, false);
+    for (const std::string_view word : {"电话", "電話", "手机", "手機", "热线", "熱線", "拨打", "撥打", "致电", "致電",
+                                        "分机", "分機", "传真", "傳真", "座机", "座機", "固话", "固話"}) {
+        if (before.find(word) != std::string::npos) return true;
+    }
+    // Right after an area code in brackets, (07)123-4567 and （02）2345-6789, as Taiwan writes a
+    // number: the rest is the number (session 14: 123-4567 was a range).
+    if (start >= 4 && is_one_of(value_at(text, start - 1), U")\uFF09")) {
+        auto k = start - 1;
+        std::size_t digits = 0;
+        while (k > 0 && is_digit_at(text, k - 1)) {
+            --k;
+            ++digits;
+        }
+        constexpr std::size_t kLongestAreaCode = 4;
+        if (digits >= 2 && digits <= kLongestAreaCode && value_at(text, k) == '0' && k > 0 &&
+            is_one_of(value_at(text, k - 1), U"(\uFF08")) {
+            return true;
+        }
+    }
+    for (const std::string_view word : {"号码", "號碼"}) {
+        for (auto at = before.find(word); at != std::string::npos; at = before.find(word, at + 1)) {
+            const auto owner = before.substr(0, at);
+            bool not_a_phone = false;
+            for (const std::string_view document : {"证", "證", "卡", "照", "单", "單", "户", "戶", "票"})
+                not_a_phone = not_a_phone || ends_with(owner, document);
+            if (!not_a_phone) return true;
+        }
+    }
+    return false;
+}
+
+std::optional<SpokenForm> read_dashed_digits(const std::vector<CodePoint>& text, const WrittenNumber& first,
+                                             bool is_phone) {
+    if (first.has_point || first.has_separators) return std::nullopt;
+    std::vector<std::string> groups{first.whole};
+    auto i = first.end;
+    while (is_dash(value_at(text, i)) && is_digit_at(text, i + 1)) {
+        ++i;
+        groups.push_back(digits_from(text, i));
+    }
+    const bool looks_like_phone = first.whole.front() == '0' || groups.size() >= 3 || is_phone;
+    if (groups.size() < 2 || !looks_like_phone) return std::nullopt;
+    SpokenForm form;
+    append_phone_groups(form, groups);
+    form.end = i;
+    return form;
+}
+
+std::optional<SpokenForm> read_code_with_dash(const std::vector<CodePoint>& text, const WrittenNumber& first) {
+    if (first.has_point || first.has_separators || !is_dash(value_at(text, first.end)) ||
+        !is_digit_at(text, first.end + 1)) {
+        return std::nullopt;
+    }
+    auto i = first.end + 1;
+    const auto second = digits_from(text, i);
+    constexpr std::size_t kYearDigits = 4;
+    const bool year_and_month = first.whole.size() == kYearDigits && second.size() == 2 && is_month_and_day(second, "1");
+    if (second.size() < 2 || second.front() != '0' || year_and_month || value_at(text, i) == '.') return std::nullopt;
+    SpokenForm form;
+    form.words = digit_words(first.whole) + "杠" + digit_words(second);
+    form.end = i;
+    return form;
+}
+
+bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start) {
+    return !model_name_before(text, start).empty();
+}
+
+bool is_filter_grade(const std::vector<CodePoint>& text, std::size_t start, const std::string& digits) {
+    const auto capitals = model_name_before(text, start);
+    const bool filter_class = capitals == "N" || capitals == "R" || capitals == "P" || capitals == "KN" || capitals == "KP";
+    return filter_class && (digits == "90" || digits == "95" || digits == "99");
+}
+
+bool follows_glued_name(const std::vector<CodePoint>& text, std::size_t start) {
+    auto i = start;
+    bool has_small = false;
+    while (i > 0 && is_ascii_letter(value_at(text, i - 1))) {
+        --i;
+        const auto c = value_at(text, i);
+        has_small = has_small || (c >= 'a' && c <= 'z');
+    }
+    return i < start && has_small;
+}
+
+bool follows_maker_name(const std::vector<CodePoint>& text, std::size_t start) {
+    auto i = start;
+    if (i > 0 && text[i - 1].value == ' ') --i;
+    const auto before = text_between(text, i >= 2 ? i - 2 : 0, i);
+    for (const std::string_view maker : {"波音", "空客", "麦道", "麥道", "商飞", "商飛", "天玑", "天璣", "骁龙", "驍龍",
+                                         "麒麟", "鲲鹏", "鯤鵬", "昇腾", "昇騰", "飞腾", "飛騰", "龙芯", "龍芯"})
+        if (before == maker) return true;
+    return false;
+}
+
+bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
+    if (number.has_point || number.has_separators) return false;
+    const auto& digits = number.whole;
+    if ((digits.size() == 3 || digits.size() == 4) && is_one_of(value_at(text, number.end), U"pP") &&
+        !is_ascii_letter(value_at(text, number.end + 1))) {
+        return true;
+    }
+    constexpr std::size_t kShortestCode = 4;
+    constexpr std::size_t kLongestCode = 6;
+    // A magnitude after the bracket makes it a count's ((2000)万); a word after it may be anything
+    // (贵州茅台（600519）股价: 股 is no measure word there).
+    const bool closes = is_one_of(value_at(text, number.end), U")\uFF09\u3015]") &&
+                        !is_one_of(value_at(text, number.end + 1), U"万萬亿億千百");
+    if (start > 0 && is_one_of(value_at(text, start - 1), U"(\u3014[") && digits.size() >= kShortestCode &&
+        digits.size() <= kLongestCode &&
+        (closes || (value_at(text, number.end) == '.' && is_ascii_capital(value_at(text, number.end + 1))))) {
+        return true;
+    }
+    const auto before = text_between(text, start >= 2 ? start - 2 : 0, start);
+    if (before == "日经" || before == "日經") return true;
+    if (digits.size() != 3) return false;
+    auto end = number.end;
+    // Past the rest of a list of such numbers (985、211高校) to the word they share.
+    while (value_at(text, end) == 0x3001 /*、*/ && is_digit_at(text, end + 1)) {
+        auto k = end + 1;
+        if (digits_from(text, k).size() != 3) return false;
+        end = k;
+    }
+    const auto after = text_between(text, end, end + 2);
+    for (const std::string_view word : {"工程", "计划", "計劃", "高校", "院校", "名校", "大学", "大學"})
+        if (after == word) return true;
+    return false;
+}
+
+bool follows_software_name(const std::vector<CodePoint>& text, std::size_t start) {
+    if (start == 0) return false;
+    if (is_one_of(value_at(text, start - 1), U"vV")) return start == 1 || !is_ascii_letter(value_at(text, start - 2));
+    return value_at(text, start - 1) == ' ' && start >= 2 && is_ascii_letter(value_at(text, start - 2)) &&
+           follows_glued_name(text, start - 1);
+}
+
+bool follows_designation(const std::vector<CodePoint>& text, std::size_t dash) {
+    if (dash == 0) return false;
+    if (is_one_of(text[dash - 1].value, U"歼殲运運轰轟直教")) return true;
+    const auto before = text_between(text, dash >= 2 ? dash - 2 : 0, dash);
+    for (const std::string_view name : {"东风", "東風", "长征", "長征", "红旗", "紅旗", "鹰击", "鷹擊", "巨浪", "空警",
+                                        "霹雳", "霹靂", "快舟"})
+        if (before == name) return true;
+    return false;
+}
+
+bool is_train_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    if (start < 1 || !is_one_of(value_at(text, start - 1), U"GDCZTKLYS") ||
+        (start >= 2 && is_ascii_letter(value_at(text, start - 2)))) {
+        return false;
+    }
+    const std::string before = text_before(text, start, true);
+    return is_one_of(value_at(text, end), U"次") || before.find("车次") != std::string::npos ||
+           before.find("車次") != std::string::npos;
+}
+
+bool is_flight_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    const auto digit_count = end - start;
+    if (model_name_before(text, start).size() != 2 || digit_count < 3 || digit_count > 4) return false;
+    const std::string after = text_between(text, end, end + 3);
+    const std::string before = text_before(text, start, true);
+    for (const std::string_view word : {"航班", "班机", "班機"}) {
+        if (after.rfind(word, 0) == 0 || after.rfind(std::string("次") + std::string(word), 0) == 0 ||
+            before.find(word) != std::string::npos) {
+            return true;
+        }
+    }
+    return false;
+}
+
+std::optional<SpokenForm> read_calling_code(const std::vector<CodePoint>& text, std::size_t start) {
+    if (value_at(text, start) != '+' || !is_digit_at(text, start + 1)) return std::nullopt;
+    if (start > 0 && (is_digit_at(text, start - 1) || is_ascii_letter(value_at(text, start - 1)))) return std::nullopt;
+    auto i = start + 1;
+    const auto code = digits_from(text, i);
+    constexpr std::size_t kLongestCode = 3;
+    if (code.size() > kLongestCode || value_at(text, i) == '.' || value_at(text, i) == '%') return std::nullopt;
+    std::vector<std::string> groups;
+    auto end = i;
+    while ((value_at(text, end) == ' ' || is_dash(value_at(text, end))) && is_digit_at(text, end + 1)) {
+        auto k = end + 1;
+        groups.push_back(digits_from(text, k));
+        end = k;
+    }
+    std::size_t word_end = start;
+    for (int skipped = 0; skipped < 2 && word_end > 0 && is_one_of(text[word_end - 1].value, U" 是为為：:"); ++skipped)
+        --word_end;
+    const auto before = text_between(text, word_end >= 2 ? word_end - 2 : 0, word_end);
+    const bool is_code = !groups.empty() || follows_phone_word(text, start) || before == "区号" || before == "區號";
+    if (!is_code) return std::nullopt;
+    SpokenForm form;
+    form.words = "加" + digit_words(code, true);
+    append_phone_groups(form, groups);
+    form.end = end;
+    return form;
+}
+
+std::optional<SpokenForm> read_dotted_groups(const std::vector<CodePoint>& text, std::size_t start) {
+    std::vector<std::string> groups;
+    auto i = start;
+    groups.push_back(digits_from(text, i));
+    while (value_at(text, i) == '.' && is_digit_at(text, i + 1)) {
+        ++i;
+        groups.push_back(digits_from(text, i));
+    }
+    constexpr std::size_t kFewestGroups = 3;
+    if (groups.size() < kFewestGroups) return std::nullopt;
+    SpokenForm form;
+    form.end = i;
+    if (groups.size() == 3 && groups[0].size() == 4 && is_month_and_day(groups[1], groups[2])) {
+        form.words = digit_words(groups[0]) + "年" + cardinal_words(groups[1], false) + "月" + cardinal_words(groups[2], false) + "日";
+        return form;
+    }
+    const bool is_ip_address = groups.size() == 4 && std::all_of(groups.begin(), groups.end(), [](const std::string& group) {
+                                   return group.size() <= 3 && std::stoi(group) <= 255;
+                               });
+    for (std::size_t k = 0; k < groups.size(); ++k) {
+        const auto& group = groups[k];
+        if (k > 0) form.words += "点";
+        if (group.size() > kMostCardinalDigits) {
+            form.words += digit_words(group);
+            form.warning = kTooLongWarning;
+        } else if (is_ip_address || (group.size() > 1 && group.front() == '0')) {
+            form.words += digit_words(group);
+        } else {
+            form.words += cardinal_words(group, false);
+        }
+    }
+    return form;
+}
+
+bool is_named_service_number(const std::string& digits) {
+    return is_named_anywhere(digits) && is_service_number(digits);
+}
+
+}  // namespace talkface::detail

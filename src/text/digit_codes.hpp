@@ -1,0 +1,120 @@
+// Numbers that name by their digits, said one by one: phone and service numbers (幺 for 1 where
+// dialled), rooms and buildings, codes and stock codes, models, trains and flights, versions, IP
+// addresses: the part of the written-form reader that tells them from counts (docs/written-forms.md).
+#ifndef TALKFACE_TEXT_DIGIT_CODES_HPP
+#define TALKFACE_TEXT_DIGIT_CODES_HPP
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "text/code_points.hpp"
+#include "text/written_number_scan.hpp"
+#include "text/written_numbers.hpp"
+
+namespace talkface::detail {
+
+// Words before which a number names a room, a bus route or a house, said digit by digit when it
+// has three or more digits (305室 三零五室, 302路 三零二路).
+bool names_by_digits(char32_t c);
+
+// A room's or a building's name after the number at text[end): a word of up to three characters
+// ending in 室 (302会议室, 306教室: a measure word first, 200间教室, counts) or 大楼 大厦 (台北101
+// 大樓): the number names it as 305室 does.
+bool names_room_or_building(const std::vector<CodePoint>& text, std::size_t end);
+
+// Service and emergency numbers (110 police, 119 fire, 120 ambulance, 12345 the city's hotline,
+// 10086 a carrier, 95xxx a bank's line; the government's 12xxx lines, 12123 traffic, 12366 tax,
+// 12393 medical insurance, 12395 sea rescue): said digit by digit with 幺 where they are dialled or
+// named (打110, 110报警), as cardinals where they count (120人, 时速120).
+bool is_service_number(const std::string& digits);
+
+// A five-digit service number is a name wherever it does not count (12306购票, 12315投诉, 95588):
+// no one says 一万二千三百零六 of it. 12345 and 10000 are counts as often as names.
+bool is_named_anywhere(const std::string& digits);
+
+// A service number is dialled or named: a dialling word before it, with nothing between but
+// the service's name or 给 (打110, 拨打客服热线10086, 打给120), or a service's name right after
+// it (110报警, 120急救车).
+bool is_service_call(const std::vector<CodePoint>& text, std::size_t start, std::size_t end);
+
+// A naming word right before the number (房间号是1208, 编号：305, and a code's: 密码是86753090,
+// 验证码：5408), or a floor, a building or a staircase with its number before it (3楼302, 5栋1203,
+// 2单元301: the room's number follows): said digit by digit as a room's number is.
+bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start);
+
+// A word earlier in the sentence that makes the numbers after it phone numbers. 号码 after a card's,
+// a document's or an account's name is theirs (身份证号码, 银行卡号码, 护照号码, 订单号码): read out,
+// not dialled, so its digits are said with 一.
+bool follows_phone_word(const std::vector<CodePoint>& text, std::size_t start);
+
+// 010-12345678, 0912-345-678: groups of digits joined by dashes, said digit by digit.
+std::optional<SpokenForm> read_dashed_digits(const std::vector<CodePoint>& text, const WrittenNumber& first,
+                                             bool is_phone);
+
+// A dash before a group of digits with a leading zero (A2024-0315, a document's, a case's or a
+// product's number) joins a code's parts: no count is written with a leading zero, so it is no
+// range. Each part is said digit by digit and the dash 杠, as codes are read out (session 14; it
+// was 到). A year and a month (2024-03) are left as they were.
+std::optional<SpokenForm> read_code_with_dash(const std::vector<CodePoint>& text, const WrittenNumber& first);
+
+bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start);
+
+// A respirator's filter grade (N95, KN95, P99: a class N R P KN KP and 90, 95 or 99, the share of
+// particles it stops): a grade's name, said digit by digit (N九五), where a model's two digits count
+// (G20 G二十).
+bool is_filter_grade(const std::vector<CodePoint>& text, std::size_t start, const std::string& digits);
+
+// Right after a word with a small letter, with nothing between (Tiger2024, user123): a user
+// name's or an ID's digits. (iPhone15 counts: fewer than three digits, as a model's do.)
+bool follows_glued_name(const std::vector<CodePoint>& text, std::size_t start);
+
+// Right after the Chinese name of an aircraft's maker (波音737, 空客 320) or of a chip's series
+// (天玑9400 天玑九四零零, 骁龙888, 麒麟990, 鲲鹏920, 昇腾910, as reviews and news say them; session 14,
+// they counted): its model's number.
+bool follows_maker_name(const std::vector<CodePoint>& text, std::size_t start);
+
+// A number that names by its digits what it stands for, said one by one with 一 for 1 (where no
+// measure word or unit makes it count):
+// - a stock's code alone in brackets after the company's name (贵州茅台（600519）, 台積電（2330）,
+//   腾讯控股(00700.HK)): four to six digits, a closing bracket or the exchange's suffix after them;
+//   so is a year in a document's number (国发〔2024〕10号 国发二零二四十号);
+// - the Nikkei's number (日经225 日经二二五, as Japanese and Chinese market news say it; the other
+//   indices count their shares: 沪深300 三百, 标普500 五百);
+// - a programme's number before its word (985高校, 211工程, 863计划), also in a list (985、211高校);
+// - a video's resolution, lines and a p (1080P 一零八零P, 720p).
+bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
+
+// A version after a software's name and a space (Python 3.12, iOS 17.12: a word with a small
+// letter) or right after a v (v2.15, V3.12).
+bool follows_software_name(const std::vector<CodePoint>& text, std::size_t start);
+
+// The Chinese designation of an aircraft, a missile or a rocket before a hyphen (歼-20 歼二十, 运-20,
+// 东风-41, 长征-5): the hyphen joins, it is no minus sign.
+bool follows_designation(const std::vector<CodePoint>& text, std::size_t dash);
+
+// A train's number: one capital of a train's class (G D C Z T K L Y S) right before the digits and
+// 次 after them (G1234次: 次 names the train there, it does not count) or 车次 before them in the
+// clause (车次：G101).
+bool is_train_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t end);
+
+// A flight's number: an airline's two capitals and three or four digits (CA1831, MU 5101), with
+// 航班 or 班机 right after it or earlier in the clause (航班号CA1831).
+bool is_flight_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t end);
+
+// A country calling code, +86: said 加八六 as the + key is named, with the phone number that
+// follows it in groups (+86 10 6512 3456), digit by digit with 幺 for 1. A + and one to three
+// digits is one where a group follows, a phone word is earlier in the sentence, or 区号 stands
+// right before it; elsewhere it is a sign (+5 正五).
+std::optional<SpokenForm> read_calling_code(const std::vector<CodePoint>& text, std::size_t start);
+
+// Three or more groups of digits joined by dots: a date (2026.03.15: a four-digit year, a month
+// and a day, 二零二六年三月十五日), an IP address (four groups of up to three digits, each at most
+// 255: 192.168.1.1 一九二点一六八点一点一, digit by digit as it is read out) or a version (1.2.3
+// 一点二点三, 10.15.7 十点十五点七: each group a number, 点 between).
+std::optional<SpokenForm> read_dotted_groups(const std::vector<CodePoint>& text, std::size_t start);
+
+}  // namespace talkface::detail
+
+#endif

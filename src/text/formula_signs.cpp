@@ -1,0 +1,201 @@
+// A lesson's formulas as read aloud (x=5 x等于五, a²+b², √3, ∠A, 10⁸, 2^10, ①, Ⅱ, ½): the signs, powers and
+// number characters of the written-form reader (written_numbers.hpp declares them).
+
+#include "text/written_numbers.hpp"
+
+#include <string>
+
+#include "text/number_words.hpp"
+#include "text/written_number_scan.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+// Greek letters a lesson writes, said by the names Mandarin readers give them (π 派).
+std::string_view greek_letter_name(char32_t c) {
+    switch (c) {
+        case 0x3B1: return "阿尔法";        // α
+        case 0x3B2: return "贝塔";          // β
+        case 0x3B3: return "伽马";          // γ
+        case 0x394: case 0x3B4: return "德尔塔";  // Δ δ
+        case 0x3B8: return "西塔";          // θ
+        case 0x3BB: return "兰姆达";        // λ
+        case 0x3C0: return "派";            // π
+        case 0x3A3: case 0x3C3: return "西格马";  // Σ σ
+        case 0x3C6: return "斐";            // φ
+        case 0x3A9: case 0x3C9: return "欧米伽";  // Ω ω
+        default: return {};
+    }
+}
+
+// A term of a formula: a digit, a Latin or Greek letter, a closing bracket or a square (x², (a+b)),
+// a degree or a percentage.
+bool is_formula_term(char32_t c) {
+    // A degree or a percentage ends a term too (sin30°=1/2, 25%=1/4; session 14: the = was skipped).
+    return (c >= '0' && c <= '9') || is_ascii_letter(c) || !greek_letter_name(c).empty() || c == ')' || c == 0xB2 ||
+           c == 0xB3 || c == 0xB0 || c == '%' || c == 0x2103 /*℃*/;
+}
+
+// A relation sign in the clause around text[i]: the signs in it are a formula's (a-b>0: 减).
+bool clause_has_relation(const std::vector<CodePoint>& text, std::size_t i) {
+    const auto ends_clause = [](char32_t c) {
+        return c == ',' || c == ';' || c == '!' || c == '?' || c == 0x3001 /*、*/ || c == 0x3002 /*。*/ || c == '\n';
+    };
+    for (auto k = i; k < text.size() && !ends_clause(value_at(text, k)); ++k)
+        if (is_relation_sign(value_at(text, k))) return true;
+    for (auto k = i; k-- > 0 && !ends_clause(value_at(text, k));)
+        if (is_relation_sign(value_at(text, k))) return true;
+    return false;
+}
+
+// The digit a superscript writes (⁰ ¹ ² ³ ⁴ ... ⁹), or -1.
+int superscript_digit(char32_t c) {
+    switch (c) {
+        case 0x2070: return 0;
+        case 0xB9: return 1;
+        case 0xB2: return 2;
+        case 0xB3: return 3;
+        default: return c >= 0x2074 && c <= 0x2079 ? static_cast<int>(c - 0x2070) : -1;
+    }
+}
+
+}  // namespace
+
+std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t i) {
+    const auto sign = value_at(text, i);
+    if (const auto name = greek_letter_name(sign); !name.empty()) return name;
+    auto before = i;
+    while (before > 0 && text[before - 1].value == ' ') --before;
+    auto after = i + 1;
+    while (value_at(text, after) == ' ') ++after;
+    const char32_t left = before > 0 ? value_at(text, before - 1) : 0;
+    const char32_t right = value_at(text, after);
+    const bool is_han_left = left >= 0x3400 && left <= 0x9FFF;
+    const bool is_han_right = right >= 0x3400 && right <= 0x9FFF;
+    // A relation's right side may be a signed term (x=-2 x等于负二, -3<-1 负三小于负一): the sign is
+    // the number's, read with it.
+    const bool signed_right = (is_dash(right) || right == '+') && is_formula_term(value_at(text, after + 1));
+    const bool relation_right = is_formula_term(right) || signed_right;
+    const bool between_terms = is_formula_term(left) && is_formula_term(right);
+    switch (sign) {
+        case '=': case 0x2248: case 0x2260: {  // = ≈ ≠, between a character and a term too (答案是x=5, 等于号)
+            if (!(is_formula_term(left) || is_han_left) || !(relation_right || is_han_right)) return {};
+            return sign == '=' ? "等于" : sign == 0x2248 ? "约等于" : "不等于";
+        }
+        // ASCII < > around words are brackets: <标题>
+        case '>': return is_formula_term(left) && relation_right ? "大于" : "";
+        case '<': return is_formula_term(left) && relation_right ? "小于" : "";
+        // ≥ and ≤ are never brackets: after a character too, before a term (含量≥80mg 含量大于等于八十毫克).
+        case 0x2265: return (is_formula_term(left) || is_han_left) && relation_right ? "大于等于" : "";  // ≥
+        case 0x2264: return (is_formula_term(left) || is_han_left) && relation_right ? "小于等于" : "";  // ≤
+        // Geometry's signs as a lesson reads them (session 14): ∠A 角A, before a letter or a digit
+        // (∠1); AB⊥CD AB垂直于CD, AB∥CD AB平行于CD, between two terms.
+        case 0x2220: return is_formula_term(right) ? "角" : "";           // ∠
+        case 0x25B3: return is_ascii_capital(right) ? "三角形" : "";       // △ABC 三角形ABC
+        // ≌ and ∽ between two figures (△ABC≌△DEF 三角形ABC全等于三角形DEF).
+        case 0x224C: case 0x2245: return is_formula_term(left) && (is_formula_term(right) || right == 0x25B3) ? "全等于" : "";  // ≌ ≅
+        case 0x223D: return is_formula_term(left) && (is_formula_term(right) || right == 0x25B3) ? "相似于" : "";  // ∽
+        case 0x22A5: return between_terms ? "垂直于" : "";                 // ⊥
+        case 0x2225: case 0x2016: return between_terms ? "平行于" : "";    // ∥, and ‖ written for it
+        // + between two digits (1+1), two letters (A+B) or in a formula (x+1=3); - only in a formula,
+        // since a hyphen joins words and numbers elsewhere (Wi-Fi, B-52).
+        case '+': {
+            // A letter and a digit too: a sum of capacities (12GB+256GB 十二GB加二百五十六GB), 5G+AI.
+            const auto is_alphanumeric = [](char32_t c) { return is_ascii_letter(c) || (c >= '0' && c <= '9'); };
+            const bool alphanumeric = is_alphanumeric(left) && is_alphanumeric(right);
+            // After a square or a cube, a sum of terms (a²+b²; session 14: said only beside a relation sign).
+            const bool after_power = is_one_of(left, U"\u00B2\u00B3");
+            return between_terms && (alphanumeric || after_power || clause_has_relation(text, i)) ? "加" : "";
+        }
+        case '-': case 0x2212: return between_terms && clause_has_relation(text, i) ? "减" : "";
+        // A * before ST marks a share at risk of delisting (*ST康美), said 星 as market news says it.
+        case '*': {
+            const bool before_st = value_at(text, after) == 'S' && value_at(text, after + 1) == 'T' &&
+                                   !is_ascii_letter(value_at(text, after + 2));
+            return before_st ? "星" : "";
+        }
+        // × after a character too, before a number (经验值×2 经验值乘二, a game's bonus; session 14).
+        case 0xD7: return between_terms || (is_han_left && right >= '0' && right <= '9') ? "乘" : "";  // ×
+        case 0xF7: return between_terms ? "除以" : "";   // ÷
+        case 0x221A: return is_formula_term(right) || right == '(' ? "根号" : "";  // √2, √(x+1)
+        // A square or a cube after a term: x² x平方, 3² 三的平方.
+        case 0xB2: case 0xB3: {
+            if (!is_formula_term(left) || before != i) return {};
+            const bool after_digit = left >= '0' && left <= '9';
+            if (sign == 0xB2) return after_digit ? "的平方" : "平方";
+            return after_digit ? "的立方" : "立方";
+        }
+        default: return {};
+    }
+}
+
+std::optional<SpokenForm> read_number_character(const std::vector<CodePoint>& text, std::size_t i) {
+    const auto c = value_at(text, i);
+    int number = 0;
+    if (c >= 0x2460 && c <= 0x2473) number = static_cast<int>(c - 0x2460) + 1;  // ① ... ⑳
+    if (c >= 0x2474 && c <= 0x2487) number = static_cast<int>(c - 0x2474) + 1;  // ⑴ ... ⒇
+    if (c >= 0x2488 && c <= 0x249B) number = static_cast<int>(c - 0x2488) + 1;  // ⒈ ... ⒛
+    if (c >= 0x2776 && c <= 0x277F) number = static_cast<int>(c - 0x2776) + 1;  // ❶ ... ❿
+    if (c >= 0x2780 && c <= 0x2793) number = static_cast<int>((c - 0x2780) % 10) + 1;  // ➀ ... ➉, ➊ ... ➓
+    if (c >= 0x2160 && c <= 0x216B) number = static_cast<int>(c - 0x2160) + 1;  // Ⅰ ... Ⅻ
+    if (c >= 0x2170 && c <= 0x217B) number = static_cast<int>(c - 0x2170) + 1;  // ⅰ ... ⅻ
+    SpokenForm form;
+    form.end = i + 1;
+    if (number > 0) {
+        form.words = cardinal_words(std::to_string(number), false);
+        return form;
+    }
+    // A fraction written as one character: its denominator 分之 its numerator, as 1/2 is.
+    constexpr std::pair<char32_t, const char*> kFractions[] = {
+        {0xBD, "二分之一"},   {0x2153, "三分之一"}, {0x2154, "三分之二"}, {0xBC, "四分之一"}, {0xBE, "四分之三"},
+        {0x2155, "五分之一"}, {0x2156, "五分之二"}, {0x2157, "五分之三"}, {0x2158, "五分之四"}, {0x2159, "六分之一"},
+        {0x215A, "六分之五"}, {0x2150, "七分之一"}, {0x215B, "八分之一"}, {0x215C, "八分之三"}, {0x215D, "八分之五"},
+        {0x215E, "八分之七"}, {0x2151, "九分之一"}, {0x2152, "十分之一"},
+    };
+    for (const auto& [written, said] : kFractions) {
+        if (c != written) continue;
+        form.words = said;
+        return form;
+    }
+    return std::nullopt;
+}
+
+std::optional<SpokenForm> read_power(const std::vector<CodePoint>& text, std::size_t i) {
+    if (i == 0 || !is_formula_term(value_at(text, i - 1))) return std::nullopt;
+    bool negative = false;
+    std::string exponent;
+    auto k = i;
+    if (value_at(text, k) == '^') {
+        ++k;
+        if (is_dash(value_at(text, k))) {
+            negative = true;
+            ++k;
+        }
+        exponent = digits_from(text, k);
+    } else {
+        if (value_at(text, k) == 0x207B /*⁻*/) {
+            negative = true;
+            ++k;
+        }
+        for (int digit = superscript_digit(value_at(text, k)); digit >= 0; digit = superscript_digit(value_at(text, k))) {
+            exponent += static_cast<char>('0' + digit);
+            ++k;
+        }
+        // A lone ² or ³ is said_math_sign's (平方 立方, and m² is a unit's).
+        if (!negative && (exponent == "2" || exponent == "3")) return std::nullopt;
+    }
+    constexpr std::size_t kLongestExponent = 3;
+    if (exponent.empty() || exponent.size() > kLongestExponent) return std::nullopt;
+    SpokenForm form;
+    form.end = k;
+    const bool after_digit = is_digit_at(text, i - 1);
+    if (!negative && (exponent == "2" || exponent == "3")) {
+        form.words = std::string(after_digit ? "的" : "") + (exponent == "2" ? "平方" : "立方");
+    } else {
+        form.words = std::string("的") + (negative ? "负" : "") + cardinal_words(exponent, false) + "次方";
+    }
+    return form;
+}
+
+}  // namespace talkface::detail

@@ -1,0 +1,124 @@
+#include "text/units_and_money.hpp"
+
+#include "text/written_number_scan.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+// Latin unit symbols right after a number (5km, 2 kg). Case matters: m is metres, M is not a unit.
+constexpr Unit kUnits[] = {
+    {"km", "公里"}, {"m", "米"}, {"cm", "厘米"}, {"mm", "毫米"}, {"kg", "公斤"}, {"g", "克"},
+    {"mg", "毫克"}, {"t", "吨"}, {"ml", "毫升"}, {"mL", "毫升"}, {"L", "升"}, {"h", "小时"},
+    {"min", "分钟"}, {"s", "秒"}, {"ms", "毫秒"}, {"Hz", "赫兹"}, {"kHz", "千赫"}, {"MHz", "兆赫"},
+    {"kW", "千瓦"}, {"W", "瓦"}, {"V", "伏"}, {"mAh", "毫安时"}, {"kWh", "千瓦时"}, {"km/h", "公里每小时"},
+    {"m/s", "米每秒"}, {"m²", "平方米"}, {"km²", "平方公里"}, {"㎡", "平方米"}, {"㎞", "公里"}, {"㎏", "公斤"},
+    {"℃", "摄氏度"}, {"℉", "华氏度"}, {"°C", "摄氏度"}, {"°F", "华氏度"}, {"°", "度"}, {"%", ""},
+    // Session 13: the units news writes of chips, networks, power, weather and blood tests, said by
+    // their Chinese names as newsreaders say them (3nm 三纳米, 950hPa 九百五十百帕, 50dB 五十分贝);
+    // bits per second by their names too (500Mbps 五百兆比特每秒; 千兆 for 1000Mbps is a fix in
+    // place), where KB MB GB are said as letters (is_byte_unit_at). μ is written as the Greek mu or
+    // the micro sign.
+    {"nm", "纳米"}, {"μm", "微米"}, {"µm", "微米"}, {"μg", "微克"}, {"µg", "微克"}, {"m³", "立方米"},
+    {"cm²", "平方厘米"}, {"cm³", "立方厘米"}, {"GHz", "吉赫兹"}, {"dB", "分贝"}, {"MW", "兆瓦"}, {"GW", "吉瓦"},
+    {"MWh", "兆瓦时"}, {"GWh", "吉瓦时"}, {"TWh", "太瓦时"}, {"kV", "千伏"}, {"mA", "毫安"}, {"Pa", "帕"},
+    {"hPa", "百帕"}, {"kPa", "千帕"}, {"MPa", "兆帕"}, {"kbps", "千比特每秒"}, {"Mbps", "兆比特每秒"},
+    {"Gbps", "吉比特每秒"}, {"mol", "摩尔"}, {"mmol", "毫摩尔"}, {"kcal", "千卡"},
+    // Session 14: the units a physics lesson writes, by the names it reads them by (220V 二百二十伏
+    // was there): 3.6×10⁶J 焦耳, 20N 牛, 0.5A 安, 10Ω 欧 (the Greek capital or the ohm sign), and
+    // the kilowatt-hour with its product dot (1kW·h 一千瓦时, as kWh is). J N A alone are units only
+    // where no Chinese word but 的 follows them (5A景区, a grade, and 3A游戏 are said 五A, 三A).
+    {"J", "焦耳"}, {"kJ", "千焦"}, {"N", "牛"}, {"A", "安"}, {"Ω", "欧"}, {"Ω", "欧"}, {"kΩ", "千欧"},
+    {"kW·h", "千瓦时"}, {"kW⋅h", "千瓦时"}, {"m/s²", "米每二次方秒"},
+};
+
+// A unit of one capital (J N A) that a grade or a name also writes after a number: a unit only
+// before 的 or anything but a Chinese character (0.5A。, 20N的力; not 5A景区).
+bool is_lone_capital_unit_at(const std::vector<CodePoint>& text, const Unit& unit, std::size_t end) {
+    if (unit.written != "J" && unit.written != "N" && unit.written != "A") return true;
+    const auto next = value_at(text, end);
+    return next == U'的' || next < 0x3400 || next > 0x9FFF;
+}
+
+constexpr Currency kCurrencies[] = {
+    {U"NT$", "新台币", "元"}, {U"US$", "", "美元"}, {U"HK$", "", "港元"}, {U"S$", "", "新加坡元"},
+    {U"$", "", "美元"},      {U"¥", "", "元"},     {U"￥", "", "元"},     {U"€", "", "欧元"},
+    {U"£", "", "英镑"},
+};
+
+}  // namespace
+
+const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size_t& end) {
+    const auto start = value_at(text, i) == ' ' && is_ascii_letter(value_at(text, i + 1)) ? i + 1 : i;
+    const Unit* best = nullptr;
+    for (const auto& unit : kUnits) {
+        std::string written;
+        std::size_t k = start;
+        while (k < text.size() && written.size() < unit.written.size()) {
+            const auto c = ascii_form(text[k].value);  // ％ is %
+            if (c < 0x80) {
+                written += static_cast<char>(c);
+            } else {
+                written += text[k].text;
+            }
+            ++k;
+        }
+        if (written != unit.written) continue;
+        // A Latin unit must end the letters: 5kgs or 3mind are words, not units; nor is a letter
+        // between two numbers one (5V5 五 V 五, a match of five against five).
+        if (is_ascii_letter(static_cast<char32_t>(unit.written.back())) &&
+            (is_ascii_letter(value_at(text, k)) || is_digit_at(text, k))) {
+            continue;
+        }
+        if (!is_lone_capital_unit_at(text, unit, k)) continue;
+        if (best == nullptr || unit.written.size() > best->written.size()) {
+            best = &unit;
+            end = k;
+        }
+    }
+    return best;
+}
+
+bool is_byte_unit_at(const std::vector<CodePoint>& text, std::size_t i) {
+    if (value_at(text, i) == ' ') ++i;
+    return is_one_of(value_at(text, i), U"KMGTP") && value_at(text, i + 1) == 'B' && !is_ascii_letter(value_at(text, i + 2));
+}
+
+const Currency* currency_at(const std::vector<CodePoint>& text, std::size_t i, std::size_t& end) {
+    for (const auto& currency : kCurrencies) {
+        std::size_t k = 0;
+        while (k < currency.written.size() && i + k < text.size() && text[i + k].value == currency.written[k]) ++k;
+        if (k == currency.written.size() && is_digit_at(text, i + k)) {
+            end = i + k;
+            return &currency;
+        }
+    }
+    return nullptr;
+}
+
+std::optional<SpokenForm> read_per_unit(const std::vector<CodePoint>& text, std::size_t i) {
+    if (value_at(text, i) != '/' || i < 3 || value_at(text, i - 1) != 'B' || !is_one_of(value_at(text, i - 2), U"KMGTP"))
+        return std::nullopt;
+    auto number_end = i - 2;
+    if (value_at(text, number_end - 1) == ' ') --number_end;
+    if (!is_digit_at(text, number_end - 1) || value_at(text, i + 1) == ' ') return std::nullopt;
+    std::size_t end = i + 1;
+    const Unit* per = unit_at(text, i + 1, end);
+    if (per == nullptr || per->written == "%") return std::nullopt;
+    SpokenForm form;
+    form.words = std::string("每") + per->words;
+    form.end = end;
+    return form;
+}
+
+bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i) {
+    const auto is_han = [&](std::size_t k) { return k < text.size() && text[k].value >= 0x3400 && text[k].value <= 0x9FFF; };
+    if (value_at(text, i) != '/' || !is_han(i + 1)) return false;
+    constexpr std::size_t kLongestUnit = 3;  // characters: 元, 美元, 平方米
+    for (std::size_t k = 1; k <= kLongestUnit && k <= i; ++k) {
+        if (!is_han(i - k)) return is_digit_at(text, i - k);
+    }
+    return i > kLongestUnit && is_digit_at(text, i - kLongestUnit - 1);
+}
+
+}  // namespace talkface::detail

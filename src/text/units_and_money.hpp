@@ -1,0 +1,37 @@
+// Units and money written beside a number (5km, 25℃, 3nm, 256GB, 25元/公斤, ¥199, NT$300, HK$5):
+// the part of the written-form reader that finds them and names them as newsreaders and lessons
+// say them (docs/written-forms.md).
+#ifndef TALKFACE_TEXT_UNITS_AND_MONEY_HPP
+#define TALKFACE_TEXT_UNITS_AND_MONEY_HPP
+
+#include <cstddef>
+#include <string_view>
+#include <vector>
+
+#include "text/code_points.hpp"
+
+namespace talkface::detail {
+
+struct Unit {
+    std::string_view written;
+    const char* words;
+};
+
+// The unit written at text[i] (after at most one space when it is Latin), or nullptr.
+const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size_t& end);
+
+// KB MB GB TB PB after a number (256GB, 2 TB): a unit, so the number counts (两 TB, not a phone
+// number's digits), said as its letters, which the Latin reader reads after the number.
+bool is_byte_unit_at(const std::vector<CodePoint>& text, std::size_t i);
+
+struct Currency {
+    std::u32string_view written;
+    const char* before;  // said before the amount
+    const char* after;   // said after it
+};
+
+const Currency* currency_at(const std::vector<CodePoint>& text, std::size_t i, std::size_t& end);
+
+}  // namespace talkface::detail
+
+#endif

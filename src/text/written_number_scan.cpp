@@ -1,0 +1,117 @@
+#include "text/written_number_scan.hpp"
+
+#include <algorithm>
+
+namespace talkface::detail {
+
+bool is_digit_at(const std::vector<CodePoint>& text, std::size_t i) {
+    if (i >= text.size()) return false;
+    const auto c = ascii_form(text[i].value);
+    return c >= '0' && c <= '9';
+}
+
+char32_t value_at(const std::vector<CodePoint>& text, std::size_t i) {
+    return i < text.size() ? ascii_form(text[i].value) : 0;
+}
+
+std::string digits_from(const std::vector<CodePoint>& text, std::size_t& i) {
+    std::string digits;
+    while (is_digit_at(text, i)) digits += static_cast<char>(ascii_form(text[i++].value));
+    return digits;
+}
+
+WrittenNumber parse_number(const std::vector<CodePoint>& text, std::size_t i) {
+    WrittenNumber number;
+    number.whole = digits_from(text, i);
+    // Thousands separators: an ASCII comma and exactly three digits (1,234,567). The ideographic
+    // comma ，stays a pause: 1，2，3 is a list.
+    if (number.whole.size() <= 3) {
+        while (i + 3 < text.size() + 1 && text[i].value == ',' && is_digit_at(text, i + 1) &&
+               is_digit_at(text, i + 2) && is_digit_at(text, i + 3) && !is_digit_at(text, i + 4)) {
+            for (std::size_t k = 1; k <= 3; ++k) number.whole += static_cast<char>(ascii_form(text[i + k].value));
+            number.has_separators = true;
+            i += 4;
+        }
+    }
+    if (value_at(text, i) == '.' && is_digit_at(text, i + 1)) {
+        ++i;
+        number.has_point = true;
+        number.fraction = digits_from(text, i);
+    }
+    number.end = i;
+    return number;
+}
+
+bool is_month_and_day(const std::string& month, const std::string& day) {
+    if (month.empty() || month.size() > 2 || day.empty() || day.size() > 2) return false;
+    const int month_value = std::stoi(month);
+    const int day_value = std::stoi(day);
+    return month_value >= 1 && month_value <= 12 && day_value >= 1 && day_value <= 31;
+}
+
+bool is_one_of(char32_t c, std::u32string_view set) {
+    return set.find(c) != std::u32string_view::npos;
+}
+
+std::string text_between(const std::vector<CodePoint>& text, std::size_t first, std::size_t end) {
+    std::string between;
+    for (std::size_t i = first; i < std::min(end, text.size()); ++i) between += text[i].text;
+    return between;
+}
+
+bool takes_liang(char32_t c) {
+    return is_one_of(c, U"个個本位名只隻条條张張件次天年岁歲人种種块塊元倍台臺部辆輛家份杯碗瓶双雙对對层層场場"
+                        U"周週遍斤米千万萬亿億百项項篇首页頁座所间間节節门門架把支枝根片头頭匹颗顆粒趟套声聲句"
+                        U"样樣章口股群批排队隊段堆吨噸升克里码碼毛角点點成分秒小公届屆期美港欧歐英"
+                        U"步下回圈眼拳脚腳刀枪槍盒包袋箱桶罐盘盤幅集册冊封轮輪局男女"
+                        U"勺匙滴串束朵棵株盆锅鍋桌副顶頂艘连連"
+                        // A record's wins, losses and draws (3局2胜 三局两胜, 2胜1负 两胜一负; session 14).
+                        U"胜勝负負平"
+                        // A medal table's golds, silvers and bronzes (奪得2金5銅 兩金五銅; session 14).
+                        U"金银銀铜銅");
+}
+
+bool ends_with(const std::string& text, std::string_view end) {
+    return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+std::string text_before(const std::vector<CodePoint>& text, std::size_t start, bool clause_only) {
+    std::string before;
+    for (std::size_t i = start; i-- > 0;) {
+        const auto c = ascii_form(text[i].value);
+        if (c == '.' || c == '!' || c == '?' || c == ';' || c == 0x3002 || c == '\n') break;
+        if (clause_only && (c == ',' || c == 0x3001 /*、*/)) break;
+        before.insert(0, text[i].text);
+    }
+    return before;
+}
+
+std::string text_after(const std::vector<CodePoint>& text, std::size_t end) {
+    std::string after;
+    for (auto i = end; i < text.size(); ++i) {
+        const auto c = ascii_form(text[i].value);
+        if (c == '.' || c == '!' || c == '?' || c == ';' || c == ',' || c == 0x3002 || c == '\n') break;
+        after += text[i].text;
+    }
+    return after;
+}
+
+void append_warning(SpokenForm& form, const std::string& warning) {
+    if (warning.empty()) return;
+    if (!form.warning.empty()) form.warning += "; ";
+    form.warning += warning;
+}
+
+bool is_dash(char32_t c) {
+    return c == '-' || c == 0x2013 /*–*/ || c == 0x2014 /*—*/ || c == 0x2212 /*−*/;
+}
+
+bool is_relation_sign(char32_t c) {
+    return is_one_of(c, U"=<>\u2248\u2260\u2264\u2265");
+}
+
+bool is_range_mark(char32_t c) {
+    return is_dash(c) || c == '~' || c == 0x301C /*〜*/;
+}
+
+}  // namespace talkface::detail
