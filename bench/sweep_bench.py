@@ -273,6 +273,12 @@ def make_cases(out, label, stem):
     case("scratched phone.m4a", path("scratched_phone.m4a"))
     scratched(path("cover.mp3"), path("scratched_cover.mp3"))
     case("scratched cover.mp3", path("scratched_cover.mp3"))
+    # The scratch above hits the cover art (a third of that file is the picture); these hit the
+    # sound: a phone's call recorder at 8 kHz (LAME-tagged), sox's untagged MP3, a VBR one.
+    sox(narrow, "-C", "16", path("narrow_sox.mp3"))
+    for name in ["narrow.mp3", "narrow_sox.mp3", "vbr.mp3"]:
+        scratched(path(name), path("scratched_" + name))
+        case("scratched " + name + " (in its sound)", path("scratched_" + name))
     sox(ref, path("voice.flac"))
     scratched(path("voice.flac"), path("scratched_voice.flac"))
     case("scratched voice.flac", path("scratched_voice.flac"))
