@@ -22,22 +22,29 @@ struct SyllableFrames {
 std::vector<SyllableFrames> frames_on_path(const SentenceChain& chain, const std::vector<StateSegment>& path);
 
 // The weight of the emissions (viterbi_align's emission_weight) in the searches whose
-// disagreement syllable_steadiness weighs (light_search): with the sounds at a quarter, a
-// syllable the sounds hold stays where it was, and one the duration priors and its neighbours put
-// there moves. A quarter rather than session 12's half (bench/ Session 14, replayed from dumped
-// starts of searches at 0.25-0.7, then measured): the person's tuning syllables >100 ms off
-// caught 167 -> 204 of 296 with no condition of any voice over 9.5%; 0.35 caught 180, 0.7 163.
-constexpr double kLightSoundsWeight = 0.25;
+// disagreement syllable_steadiness weighs (light_search): with the sounds light, a syllable the
+// sounds hold stays where it was, and one the duration priors and its neighbours put there moves.
+// The lighter, the more such a syllable moves, down to where right ones start to move too
+// (bench/ Session 14 and 15, replayed from dumped starts of searches at 0.1-0.7, then measured):
+// the person's tuning syllables >100 ms off caught at 0.7 163 of 296, 0.5 167, 0.25 204, 0.15
+// 214 (the v- and w- voices gaining too), with no tuning condition of any voice over 9.5%; at 0.1
+// 220 but a held-out condition at 10% and fewer of the w- voice's.
+constexpr double kLightSoundsWeight = 0.15;
+// The same for a lenient chain (lenient alignment), kept at session 14's quarter: its states weigh
+// the duration priors at 1, not as a plain chain's, and at 0.15 the person's tuning syllables >100
+// ms off caught with `--lenient` fell 264 -> 255 of 443, held out 43 -> 35 of 75.
+constexpr double kLenientLightSoundsWeight = 0.25;
 
-// Where `chain` searched again on `scores` with the sounds at kLightSoundsWeight places its
-// syllables, with the landmarks' bonus (EmissionScores::boundary) or without it (set aside and
-// restored before it returns). syllable_steadiness weighs both: the landmarks pull a boundary onto
+// Where `chain` searched again on `scores` with the sounds at `sounds_weight` (kLightSoundsWeight,
+// or kLenientLightSoundsWeight for a lenient chain) places its syllables, with the landmarks'
+// bonus (EmissionScores::boundary) or without it (set aside and restored before it returns).
+// syllable_steadiness weighs both: the landmarks pull a boundary onto
 // any frame where the spectrum changes, so a syllable drifted onto its neighbour's change stays
 // there in the search with them; without them only the sounds and the duration priors hold it
 // (bench/ Session 14: 167 of the person's 296 tuning syllables >100 ms off caught against 160, at
 // fewer of the right ones flagged).
 std::vector<SyllableFrames> light_search(const SentenceChain& chain, EmissionScores& scores, ViterbiWorkspace& workspace,
-                                         bool with_landmarks);
+                                         double sounds_weight, bool with_landmarks);
 
 // Per syllable placed at `placed` (frames of a chain's search), what other searches of the same
 // frames say of where it starts, added to its evidence (not its neighbours': the disagreement is
@@ -99,8 +106,9 @@ struct SyllableEvidence {
 // badly throughout from looking normal. A recording whose median is under a clean recording's has
 // most of the shortfall given back besides: half was not enough to keep a room from flagging a
 // fifth of its right syllables, and giving back more from every recording flagged more of the
-// clean ones (espeak-ng's).
-void set_confidences(const std::vector<SyllableEvidence>& evidence, Timeline& result);
+// clean ones (espeak-ng's). `is_lenient`: the evidence came from lenient alignment, whose light
+// searches weigh the sounds otherwise (kLenientLightSoundsWeight) and which is calibrated on its own.
+void set_confidences(const std::vector<SyllableEvidence>& evidence, bool is_lenient, Timeline& result);
 
 }  // namespace talkface::detail
 

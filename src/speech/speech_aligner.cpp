@@ -363,9 +363,9 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
             // of a syllable's, so without the landmarks its edges wander with the sounds light
             // and move the right syllables beside it (tests/speech/lenient_test.cpp: 里 after the
             // word the transcript lacks).
-            std::vector<std::vector<SyllableFrames>> other_frames = {light_search(chain, scores, workspace, true)};
+            std::vector<std::vector<SyllableFrames>> other_frames = {light_search(chain, scores, workspace, kLenientLightSoundsWeight, true)};
             if (takes_text_whole(chain, path)) {
-                other_frames.push_back(light_search(chain, scores, workspace, false));
+                other_frames.push_back(light_search(chain, scores, workspace, kLenientLightSoundsWeight, false));
                 other_frames.push_back(frames_on_path(chains[w], learned.last_paths[w]));
             }
             place_lenient(chain, w, path, other_frames, held_out_gaps, scores, track, loudness, result, evidence);
@@ -377,14 +377,14 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
         // The last round's path, and the searches again with the sounds weighing less, with and
         // without the landmarks' bonus: where they start a syllable elsewhere, the sounds did not
         // hold it there.
-        const std::vector<std::vector<SyllableFrames>> other_frames = {light_search(chains[w], scores, workspace, true),
-                                                                       light_search(chains[w], scores, workspace, false),
+        const std::vector<std::vector<SyllableFrames>> other_frames = {light_search(chains[w], scores, workspace, kLightSoundsWeight, true),
+                                                                       light_search(chains[w], scores, workspace, kLightSoundsWeight, false),
                                                                        frames_on_path(chains[w], learned.last_paths[w])};
         measure_chain(chains[w], w, path, other_frames, observations, learned, spoken_sentences, track, loudness, transcript,
                       scores, workspace, result, evidence, spans, metrics, is_checked);
         report_pass(progress, kReestimationRounds, w, chains.size());
     }
-    set_confidences(evidence, result);
+    set_confidences(evidence, is_lenient, result);
     return aligned;
 }
 

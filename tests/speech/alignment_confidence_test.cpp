@@ -90,7 +90,7 @@ std::vector<double> confidences(const Sentence& sentence, const std::vector<Stat
     for (std::size_t i = 0; i < kSyllables; ++i) evidence.push_back({true, 0, fits[i], timing[i], 0.0});
     talkface::Timeline timeline;
     timeline.syllables.resize(kSyllables);
-    set_confidences(evidence, timeline);
+    set_confidences(evidence, false, timeline);
     std::vector<double> result;
     for (const auto& syllable : timeline.syllables) result.push_back(syllable.confidence);
     return result;
@@ -167,8 +167,8 @@ TEST_SUITE("alignment confidence") {
         const std::vector<float> bonus = sentence.scores.boundary;
         ViterbiWorkspace workspace;
         const std::vector<std::vector<SyllableFrames>> searches = {
-            light_search(sentence.chain, sentence.scores, workspace, true),
-            light_search(sentence.chain, sentence.scores, workspace, false)};
+            light_search(sentence.chain, sentence.scores, workspace, kLightSoundsWeight, true),
+            light_search(sentence.chain, sentence.scores, workspace, kLightSoundsWeight, false)};
         CHECK(sentence.scores.boundary == bonus);
         CHECK(searches[0][kDrifted].first_frame == early);
         CHECK(searches[1][kDrifted].first_frame == start);
@@ -191,7 +191,7 @@ TEST_SUITE("alignment confidence") {
             for (std::size_t i = 0; i < fits.size(); ++i) evidence.push_back({true, i, {fits[i], 0.0}, 0.0, 0.0});
             talkface::Timeline timeline;
             timeline.syllables.resize(fits.size());
-            set_confidences(evidence, timeline);
+            set_confidences(evidence, false, timeline);
             return timeline;
         };
         const auto in_clean = confidences_of(clean);
@@ -222,7 +222,7 @@ TEST_SUITE("alignment confidence") {
             }
             talkface::Timeline timeline;
             timeline.syllables.resize(evidence.size());
-            set_confidences(evidence, timeline);
+            set_confidences(evidence, false, timeline);
             return timeline;
         };
         const auto clean = confidences_of(1.0);
@@ -243,7 +243,7 @@ TEST_SUITE("alignment confidence") {
         // Emissions that fit every class alike leave a syllable's timing and the other searches to
         // judge its place: a lenient path that says the text whole with syllable kDrifted 80 ms
         // late, placed as the aligner places a lenient chain's path (place_lenient), against the
-        // chain searched again with the sounds weighing less (kLightSoundsWeight), which follows
+        // chain searched again with the sounds weighing less (kLenientLightSoundsWeight), which follows
         // the duration priors and starts it in place. Lenient confidences had neither term.
         Sentence sentence = make_sentence();
         std::fill(sentence.scores.values.begin(), sentence.scores.values.end(), 0.0f);
@@ -263,7 +263,8 @@ TEST_SUITE("alignment confidence") {
         track.duration_s = static_cast<double>(track.frame_count) * kFrameStepS;
         const LoudnessProfile loudness;
         ViterbiWorkspace workspace;
-        const std::vector<std::vector<SyllableFrames>> light = {light_search(lenient, sentence.scores, workspace, true)};
+        const std::vector<std::vector<SyllableFrames>> light = {
+            light_search(lenient, sentence.scores, workspace, kLenientLightSoundsWeight, true)};
         auto confidences = [&](const std::vector<StateSegment>& path, const std::vector<std::vector<SyllableFrames>>& others) {
             talkface::Timeline result;
             result.syllables.resize(kSyllables);
@@ -273,7 +274,7 @@ TEST_SUITE("alignment confidence") {
             for (std::size_t i = 0; i < kSyllables; ++i) chain.syllable_indices[i] = i;
             place_lenient(chain, 0, on_lenient_chain(path), others, {}, sentence.scores, track, loudness, result, evidence);
             REQUIRE(result.mismatches.empty());
-            set_confidences(evidence, result);
+            set_confidences(evidence, true, result);
             return result;
         };
         const auto right = confidences(sentence.truth, light);
