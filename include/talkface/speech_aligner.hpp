@@ -29,11 +29,11 @@ inline namespace v0 {
 /// (AlignOptions::lenient) weighs the same evidence. It is not a probability. The threshold is set
 /// so that no recording condition of the benchmark's development speech (bench/README.md, issue 12:
 /// a person and two voices made of the same speaker's, in noise, rooms, music, hum, phone, fast
-/// speech) has more than 10% of its syllables within 100 ms under it: the person's 2.2-8.1% per
-/// condition, 4.8% pooled, catching 69% of those more than 100 ms off (204 of 296); on the held-out
-/// passages, measured after it was set, 2.0-9.2% and 57% (25 of 44); the other voices 4.8-9.3% and
-/// 62%, held out 1.5-9.2%. On synthetic speech (espeak-ng) it flags 0-2.3% of right syllables per
-/// condition (0.6% pooled).
+/// speech) has more than 10% of its syllables within 100 ms under it: the person's 1.8-8.1% per
+/// condition, 4.5% pooled, catching 72% of those more than 100 ms off (212 of 296); on the held-out
+/// passages, measured after it was set, 1.5-9.2% and 59% (26 of 44); the other voices 4.0-9.0% and
+/// 64%, held out 1.5-7.4%. On synthetic speech (espeak-ng) it flags 0-2.5% of right syllables per
+/// condition (0.7% pooled).
 constexpr double kLowAlignmentConfidence = 0.5;
 
 /// Audio samples the caller owns: `frame_count` frames of `channel_count` interleaved float samples

@@ -657,8 +657,8 @@ TF_API tf_status tf_timeline_syllable_times(const tf_timeline *timeline, size_t 
  * so in a room or in noise), so the threshold holds per condition: on the benchmark's development
  * speech (a person and two voices made of the same speaker's) no condition (noise, rooms, music,
  * phone, fast speech) has more than 10% of its syllables within 100 ms under it (the person's
- * 2.2-8.1%, 4.8% pooled), and it catches 69% of those more than 100 ms off (held out: 2.0-9.2%,
- * 3.5% pooled, and 57%; the other voices 4.8-9.3% and 62%) (bench/README.md). `talkface align
+ * 1.8-8.1%, 4.5% pooled), and it catches 72% of those more than 100 ms off (held out: 1.5-9.2%,
+ * 3.2% pooled, and 59%; the other voices 4.0-9.0% and 64%) (bench/README.md). `talkface align
  * --plot` draws such syllables in red. */
 #define TF_LOW_ALIGNMENT_CONFIDENCE 0.5
 

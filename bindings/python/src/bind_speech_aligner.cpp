@@ -125,8 +125,8 @@ evidence, whether the aligner's other searches start it at the same frame; lenie
 the same) and is calibrated on the recording, so the threshold holds per condition: on the benchmark's
 development speech (a person and two voices made of the same speaker's) no condition (noise, rooms,
 music, phone, fast speech) has more than 10% of its syllables within 100 ms under it (the person's
-2.2-8.1%, 4.8% pooled), and it catches 69% of those more than 100 ms off (held out: 2.0-9.2% and 57%;
-the other voices 4.8-9.3% and 62%). Audio is read in blocks: an
+1.8-8.1%, 4.5% pooled), and it catches 72% of those more than 100 ms off (held out: 1.5-9.2% and 59%;
+the other voices 4.0-9.0% and 64%). Audio is read in blocks: an
 hour of speech aligns in bounded memory.
 
 The GIL is released while aligning, so alignments on several threads run at once; one aligner may be
