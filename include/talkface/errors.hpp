@@ -77,7 +77,8 @@ private:
     std::string parameter_;
 };
 
-/// Audio and transcript cannot be matched (a missing sentence, the wrong text).
+/// Audio and transcript cannot be matched (a missing sentence, the wrong text, a text that lacks
+/// its last words).
 class TALKFACE_API AlignmentError : public Error {
 public:
     explicit AlignmentError(const std::string& message);

@@ -59,7 +59,8 @@ enum class SentenceCutMode : int {
 };
 
 /// What the aligner does when the audio does not sound like its transcript (a missing or extra
-/// sentence, the wrong text). A finding names the sentence, its time span and the evidence (how far
+/// sentence, the wrong text, a sentence alone in its file whose text lacks its last words: speech
+/// runs on 0.4 s or more past its last syllable that generic speech fits better). A finding names the sentence, its time span and the evidence (how far
 /// the measure lies past what a right text gives). A line of a few syllables gives weak evidence:
 /// what is found there is a warning in every mode, never a refusal.
 enum class CheckMode : int {
@@ -109,7 +110,7 @@ public:
     /// Aligns samples in memory.
     /// \throws talkface::InvalidArgument for an empty or malformed view or an empty transcript.
     /// \throws talkface::AlignmentError when audio and transcript do not match (a missing or extra
-    ///         sentence, the wrong text), naming the sentence and the time where it was noticed;
+    ///         sentence, the wrong text, a text that lacks its last words), naming the sentence and the time where it was noticed;
     ///         with CheckMode::warn or off only when no alignment can be made at all (more
     ///         syllables than the speech can hold, no speech).
     /// \throws talkface::Cancelled if `progress` returned false.

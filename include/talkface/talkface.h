@@ -810,7 +810,9 @@ TF_API tf_status tf_align_options_set_c1(tf_align_options *options, double c1);
  * Errors: TF_ERR_INVALID_ARGUMENT naming c2 if out of range, or for a NULL options. */
 TF_API tf_status tf_align_options_set_c2(tf_align_options *options, double c2);
 
-/* What the aligner does when the audio does not sound like its transcript; values equal
+/* What the aligner does when the audio does not sound like its transcript (a missing or extra
+ * sentence, the wrong text, a sentence alone in its file whose text lacks its last words: speech
+ * runs on 0.4 s or more past its last syllable that generic speech fits better); values equal
  * talkface::CheckMode. A finding names the sentence, its times and the evidence; a line of a few
  * syllables gives weak evidence, reported as a warning of the timeline in every mode. */
 typedef enum tf_check_mode {
@@ -870,7 +872,8 @@ TF_API tf_status tf_timeline_mismatch_loudness(const tf_timeline *timeline, size
  *         TF_ERR_PARSE if it is not audio talkface reads; TF_ERR_INVALID_ARGUMENT if it is empty,
  *         the transcript has no syllables, or audio_path, transcript or out is NULL (named);
  *         TF_ERR_ALIGNMENT naming the file, the sentence and its times when audio and transcript do
- *         not match (a missing or extra sentence, the wrong text);
+ *         not match (a missing or extra sentence, the wrong text, a text that lacks its last
+ *         words);
  *         TF_ERR_CANCELLED if progress returned non-zero. */
 TF_API tf_status tf_align_file(const char *audio_path, const tf_timeline *transcript,
                                const tf_align_options *options, tf_progress_fn progress, void *user_data,

@@ -139,7 +139,8 @@ void setup_align_command(CLI::App& app) {
         ->check(CLI::Range(1.0, 1.5))
         ->capture_default_str();
     align->add_option("--check", options->check,
-                      "What a transcript that does not match the audio does: refuse (strong evidence stops the "
+                      "What a transcript that does not match the audio does (a missing or extra sentence, the wrong "
+                      "text, a text that lacks its last words): refuse (strong evidence stops the "
                       "alignment), warn (a warning, aligned anyway) or off")
         ->transform(CLI::CheckedTransformer(std::map<std::string, talkface::CheckMode>{
             {"refuse", talkface::CheckMode::refuse}, {"warn", talkface::CheckMode::warn}, {"off", talkface::CheckMode::off}}))

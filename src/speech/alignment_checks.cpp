@@ -104,6 +104,13 @@ constexpr double kMinOrderMargin = 0.12;
 // syllable the worst of all (espeak-ng's last syllable over two or three: 1.0-2.0). Replayed on the
 // clips' dumped metrics (bench/README.md, session 14).
 constexpr double kMaxTypicalEndGap = 0.5;
+// With generic speech free to follow a sentence's last syllable (lenient alignment's price), a
+// person's right sentence alone in a file leaves it 0.15 s or more in 6 of 1620 tuning clips, 0.4 s
+// or more in 1 (r-music tuning-007: 1.23 s, music after the voice); a text that lacks its last 1-3
+// syllables gives it the lost syllables' speech, 0.4 s or more in 83 of the 1620 that the other
+// checks pass (a person's 18 conditions; bench/README.md, session 15). 0.4 s is two syllables'
+// worth: a right text's last syllable drawn out keeps its own speech.
+constexpr std::size_t kMaxUnspokenTailFrames = 40;
 // In a file of one or two sentences, on models re-estimated on it, the speech of a right text fits
 // a free sequence of sounds at most -0.05 per frame better than its text (bench/ tuning clips, every
 // condition but a room's tail, which the aligner leaves out): the text's path shaped the models.
@@ -493,6 +500,22 @@ void check_held_out_fit(const std::vector<SentenceMetrics>& metrics, const std::
         // No order margin (a chain of sentences run together in a longer file): the half's gap alone.
         refuse_text_fit(k, spans[k], transcript, "with models learned from the rest of the recording, on half of it, ",
                         metrics[k].held_out_gap, kMaxHeldOutFitGap);
+    }
+}
+
+void check_unspoken_tail(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
+                         const Timeline& transcript) {
+    const std::vector<std::size_t> syllables = syllables_per_sentence(transcript);
+    for (std::size_t k = 0; k < metrics.size(); ++k) {
+        if (syllables[k] < kMinHeldOutSyllables || metrics[k].unspoken_tail_frames < kMaxUnspokenTailFrames) continue;
+        const auto last = std::find_if(transcript.syllables.rbegin(), transcript.syllables.rend(),
+                                       [&](const Syllable& syllable) { return syllable.sentence == k; });
+        throw AlignmentError(describe_sentence(k, spans[k], transcript) + ": the audio has " +
+                             format_fixed(static_cast<double>(metrics[k].unspoken_tail_frames) * kFrameStepS, 2) +
+                             " s of speech after its last syllable \"" + last->text + "\" (" + last->pinyin +
+                             ") that other sounds fit better than its text (under " +
+                             format_fixed(static_cast<double>(kMaxUnspokenTailFrames) * kFrameStepS, 2) +
+                             " s for the right text); does the text lack its last words?");
     }
 }
 

@@ -67,6 +67,9 @@ struct SentenceMetrics {
     double held_out_end_median = std::numeric_limits<double>::quiet_NaN();
     // Whether its last syllable gaps most of all its syllables on those models.
     bool held_out_last_is_worst = false;
+    // Frames of speech after its last syllable that generic speech takes on the re-estimated
+    // models (unspoken_tail_frames, text_fit.hpp): files of one sentence, outside a room's tail.
+    std::size_t unspoken_tail_frames = 0;
     // How much better its text fits its speech than the same text fits the speech with its halves
     // swapped (order_margin, text_fit.hpp), per frame, on the models re-estimated on the recording:
     // files of one or two sentences, outside a room's tail (check_held_out_fit).
@@ -118,6 +121,12 @@ void check_text_fit(const std::vector<SentenceMetrics>& metrics, const std::vect
 // \throws talkface::AlignmentError naming the first sentence whose text does not fit its speech.
 void check_held_out_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                         const Timeline& transcript, std::vector<std::string>& weak_findings);
+
+// A sentence of a file of one whose speech runs on past its last syllable, where generic speech
+// fits it better than the text: a text that lacks its last words.
+// \throws talkface::AlignmentError naming the sentence, its last syllable and how much speech follows it.
+void check_unspoken_tail(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
+                         const Timeline& transcript);
 
 // check_text_fit for a file of one or two sentences, where the models were learned from these very
 // sentences and shaped by their text: on them a right text's path fits at least as well as a free

@@ -64,21 +64,6 @@ constexpr double kMinHeldOutGapBeside = 0.5;
 // 124, 32, 246, 231).
 constexpr double kMinHeldOutGapSkipped = 0.2;
 
-PhoneState generic_state(std::size_t syllable) {
-    PhoneState state;
-    state.phone_class = kGenericSpeech;
-    state.role = StateRole::generic_speech;
-    state.syllable = syllable;
-    state.median_frames = kGenericMedianFrames;
-    state.log_sigma = 0.8;
-    state.min_frames = 5;
-    state.max_frames = kGenericMaxFrames;
-    state.is_optional = true;
-    state.has_tail = true;
-    state.entry_log_penalty = kGenericEntryLogPenalty;
-    state.frame_log_penalty = kGenericSpeechFrameLogPenalty;
-    return state;
-}
 
 // A place in the chain's order: 2 i + 1 is syllable i, 2 i + 2 the generic speech after it, 0
 // the generic speech before the first syllable.
@@ -218,6 +203,22 @@ void set_fit_beside(const SentenceChain& chain, const std::vector<StateSegment>&
 
 }  // namespace
 
+PhoneState generic_speech_state(std::size_t syllable) {
+    PhoneState state;
+    state.phone_class = kGenericSpeech;
+    state.role = StateRole::generic_speech;
+    state.syllable = syllable;
+    state.median_frames = kGenericMedianFrames;
+    state.log_sigma = 0.8;
+    state.min_frames = 5;
+    state.max_frames = kGenericMaxFrames;
+    state.is_optional = true;
+    state.has_tail = true;
+    state.entry_log_penalty = kGenericEntryLogPenalty;
+    state.frame_log_penalty = kGenericSpeechFrameLogPenalty;
+    return state;
+}
+
 void add_rival_shares(const SentenceChain& lenient, const std::vector<StateSegment>& path,
                       const std::vector<SyllableFrames>& plain_frames, const EmissionScores& scores,
                       std::vector<double>& shares) {
@@ -239,11 +240,11 @@ SentenceChain lenient_chain(const SentenceChain& chain) {
         if (is_syllable_state(state))
             state.skip_log_penalty = kSkipSyllableLogPenalty / static_cast<double>(states_per_syllable[state.syllable]);
         lenient.states.push_back(state);
-        if (s == 0) lenient.states.push_back(generic_state(0));
+        if (s == 0) lenient.states.push_back(generic_speech_state(0));
         const bool ends_syllable = is_syllable_state(state) &&
                                    (s + 1 == chain.states.size() || !is_syllable_state(chain.states[s + 1]) ||
                                     chain.states[s + 1].syllable != state.syllable);
-        if (ends_syllable) lenient.states.push_back(generic_state(state.syllable));
+        if (ends_syllable) lenient.states.push_back(generic_speech_state(state.syllable));
     }
     return lenient;
 }

@@ -16,6 +16,10 @@
 
 namespace talkface::detail {
 
+// An optional state of generic speech after syllable `syllable` (an index into the chain's
+// syllables), at the price lenient alignment pays for speech the text does not say.
+PhoneState generic_speech_state(std::size_t syllable);
+
 // `chain` with its states made lenient: every syllable's states skippable at a cost, and an
 // optional generic-speech state after the leading silence and after every syllable.
 SentenceChain lenient_chain(const SentenceChain& chain);

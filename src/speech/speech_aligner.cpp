@@ -173,6 +173,10 @@ void measure_chain(const SentenceChain& chain, std::size_t w, const std::vector<
     // recording's models, before held_out_fit_gaps overwrites them.
     const bool is_own_model = !chain.ends_in_tail && spoken_sentences <= kMaxHeldOutCheckSentences;
     const double margin = is_own_model ? order_margin(chain, path, scores, workspace) : std::numeric_limits<double>::quiet_NaN();
+    // Alone in its file, a sentence's speech after its last syllable is judged against generic
+    // speech: beside another sentence it would take that one's start.
+    if (is_own_model && spoken_sentences == 1)
+        metrics[chain.syllables.back()->sentence].unspoken_tail_frames = unspoken_tail_frames(chain, scores, workspace);
     for (const auto& [k, share] : split_by_sentence(chain, path)) {
         metrics[k].order_margin = margin;
         const auto stretches = stretches_of(chain, share);
@@ -443,6 +447,7 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
         if (has_blocks) check_sentence_lengths(spans, track, loudness, transcript);
         check_text_fit(metrics, spans, transcript);
         check_held_out_fit(metrics, spans, transcript, result.warnings);
+        check_unspoken_tail(metrics, spans, transcript);
         check_own_fit(metrics, spans, transcript);
         check_syllable_lengths(metrics, spans, transcript);
         check_fit(metrics, spans, transcript);

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "speech/lenient_chain.hpp"
+
 namespace talkface::detail {
 
 namespace {
@@ -100,6 +102,21 @@ double order_margin(const SentenceChain& chain, const std::vector<StateSegment>&
     const std::vector<StateSegment> rival = viterbi_align(chain.states, swapped, workspace, frames);
     if (rival.empty()) return std::numeric_limits<double>::quiet_NaN();
     return (path_score(chain, path, scores) - path_score(chain, rival, swapped)) / static_cast<double>(frames);
+}
+
+// A text that lacks its last syllables has its speech drawn over them (the vowels scale with the
+// speech, so no one syllable stands out); with generic speech free to follow the text, the lost
+// syllables' speech goes to it, where a right text's last syllable keeps its own.
+std::size_t unspoken_tail_frames(const SentenceChain& chain, const EmissionScores& scores, ViterbiWorkspace& workspace) {
+    std::size_t at = chain.states.size();
+    while (at > 0 && chain.states[at - 1].role == StateRole::edge_silence) --at;
+    if (at == 0 || scores.frame_count == 0) return 0;
+    std::vector<PhoneState> states = chain.states;
+    states.insert(states.begin() + static_cast<std::ptrdiff_t>(at), generic_speech_state(states[at - 1].syllable));
+    std::size_t frames = 0;
+    for (const auto& segment : viterbi_align(states, scores, workspace, scores.frame_count))
+        if (states[segment.state].role == StateRole::generic_speech) frames += segment.end_frame - segment.first_frame;
+    return frames;
 }
 
 std::vector<std::vector<StateSegment>> split_in_halves(const SentenceChain& chain, const std::vector<StateSegment>& path) {

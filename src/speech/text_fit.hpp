@@ -31,6 +31,11 @@ double free_sounds_score(const EmissionScores& scores, std::size_t first, std::s
 double order_margin(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores,
                     ViterbiWorkspace& workspace);
 
+// How many frames of the chain's speech its best path gives to generic speech placed after its
+// last syllable, before its closing silence (generic_speech_state, lenient alignment's price), on
+// `scores`: speech after the text's end that the text does not account for. 0 if none.
+std::size_t unspoken_tail_frames(const SentenceChain& chain, const EmissionScores& scores, ViterbiWorkspace& workspace);
+
 // The path of a chain cut into its sentences' shares (a pause goes with the sentence before it),
 // each with the index of its sentence in the transcript.
 std::vector<std::pair<std::size_t, std::vector<StateSegment>>> split_by_sentence(const SentenceChain& chain,

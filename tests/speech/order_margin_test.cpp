@@ -112,6 +112,30 @@ TEST_SUITE("speech") {
         CHECK_THROWS_AS(check_held_out_fit(sentence.metrics, sentence.spans, sentence.transcript, warnings), AlignmentError);
     }
 
+    TEST_CASE("speech after a text's last syllable goes to generic speech only where the text lacks it") {
+        const EmissionScores scores = three_sounds();
+        ViterbiWorkspace workspace;
+        // The right text: its last syllable keeps its own speech.
+        CHECK(unspoken_tail_frames(chain_of({kVowelA, kSibilant, kVowelU}), scores, workspace) == 0);
+        // The text without its last sound: the u's 20 frames are speech it does not account for.
+        const std::size_t lost = unspoken_tail_frames(chain_of({kVowelA, kSibilant}), scores, workspace);
+        CAPTURE(lost);
+        CHECK(lost >= 15);
+        CHECK(lost <= 25);
+    }
+
+    TEST_CASE("a sentence alone in its file with speech after its last syllable is refused, naming it") {
+        OneSentence sentence;
+        sentence.metrics[0].unspoken_tail_frames = 39;
+        CHECK_NOTHROW(check_unspoken_tail(sentence.metrics, sentence.spans, sentence.transcript));
+        sentence.metrics[0].unspoken_tail_frames = 52;
+        CHECK_THROWS_WITH_AS(check_unspoken_tail(sentence.metrics, sentence.spans, sentence.transcript),
+                             doctest::Contains("0.52 s of speech after its last syllable \"學\" (xue2)"), AlignmentError);
+        // A line of a few syllables is no such evidence.
+        sentence.transcript = read_transcript("我們走吧。");
+        CHECK_NOTHROW(check_unspoken_tail(sentence.metrics, sentence.spans, sentence.transcript));
+    }
+
     TEST_CASE("a text that fits hardly better than its halves swapped is refused without a held-out gap") {
         OneSentence sentence;
         std::vector<std::string> warnings;

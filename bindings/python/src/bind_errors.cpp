@@ -119,7 +119,8 @@ or item that was wrong (e.g. "beta_deg", "points", 'FAPU "MW0"').
                                                ErrorCode::invalid_argument);
 
     classes.alignment_error = new_error_class(m, "AlignmentError", R"doc(
-Audio and transcript cannot be matched (a missing sentence, the wrong text).
+Audio and transcript cannot be matched (a missing sentence, the wrong text, a text that lacks its
+last words).
 )doc",
                                               py::make_tuple(classes.error), ErrorCode::alignment);
 

@@ -47,7 +47,9 @@ Example:
         .value("first_pause", SentenceCutMode::first_pause);
 
     py::enum_<CheckMode>(m, "CheckMode", R"doc(
-What the aligner does when the audio does not sound like its transcript: refuse (the default: strong
+What the aligner does when the audio does not sound like its transcript (a missing or extra sentence,
+the wrong text, a sentence alone in its file whose text lacks its last words: speech runs on 0.4 s or
+more past its last syllable that generic speech fits better): refuse (the default: strong
 evidence raises talkface.AlignmentError), warn (the finding goes to Timeline.warnings and the
 syllables are aligned as with the checks off) or off (no checks). A finding names the sentence, its
 times and the evidence; a line of a few syllables gives weak evidence, a warning in every mode.
@@ -184,7 +186,7 @@ Raises:
     talkface.ParseError: it is not audio talkface reads.
     talkface.InvalidArgument: the audio is empty or silent, or the transcript has no syllables.
     talkface.AlignmentError: audio and transcript do not match (a missing or extra sentence, the wrong
-        text); the message names the file, the sentence and its times.
+        text, a text that lacks its last words); the message names the file, the sentence and its times.
     talkface.Cancelled: progress returned False.
 
 Example:
