@@ -392,19 +392,48 @@ private:
     // and the demuxer goes on at the next one, whose timestamp says where it belongs). The gap is
     // kept as silence, as a refused packet's time is. Time 0 is placed by the second frame: the
     // first may have lost its start to the codec's delay (an MP3's LAME tag, Opus's pre-skip) and
-    // keep the timestamp of its whole. A gap within kTimestampSlackS is a container's rounding
+    // keep the timestamp of its whole. The first frame is held to where the stream says its sound
+    // starts (keep_lost_start). A gap within kTimestampSlackS is a container's rounding
     // (Matroska's milliseconds), not a loss.
     void skip_to_timestamp(const AVFrame& frame) {
         const std::int64_t timestamp = frame.best_effort_timestamp;
         if (timestamp == AV_NOPTS_VALUE) return;
         const std::int64_t at = av_rescale_q(timestamp, stream_->time_base, AVRational{1, sample_rate_hz_});
-        const auto before = static_cast<std::int64_t>(frames_decoded_ + skipped_frames_);
         if (timed_frames_ < 2) {
+            if (timed_frames_ == 0) keep_lost_start(at);
+            // Packets refused between the first two frames are held to their timestamps as later
+            // ones are (the first frame's may be off by a codec's delay, a few milliseconds).
+            else if (skipped_frames_ > 0)
+                keep_gap(at - (time_zero_frames_ + static_cast<std::int64_t>(frames_decoded_ + skipped_frames_)));
             ++timed_frames_;
-            time_zero_frames_ = at - before;
+            time_zero_frames_ = at - static_cast<std::int64_t>(frames_decoded_ + skipped_frames_);
             return;
         }
-        const std::int64_t gap = at - (time_zero_frames_ + before);
+        keep_gap(at - (time_zero_frames_ + static_cast<std::int64_t>(frames_decoded_ + skipped_frames_)));
+    }
+
+    // The first frame's timestamp against where the stream's sound starts, in a file damaged
+    // before it: a scratch in the first frames (the first Ogg page of sound after Vorbis's headers,
+    // the first AAC packets of an MP4) lost them, and the first frame decoded placed time 0, so
+    // every syllable came early by what was lost (1 s after a lost Ogg page), or late where AAC
+    // refused one packet more than it lost (64 ms). The start is the stream's start_time as FFmpeg
+    // reads it from the container (an MP4's index), except in a damaged Ogg file
+    // (FfmpegReading::keeps_stated_length), whose start FFmpeg takes from the first page it can
+    // read: there it is 0, where an Ogg stream's granule positions begin. Only after damage (a
+    // damaged Ogg file, packets refused before the first frame): in a whole file the first frame
+    // may lie past start_time by a decoder's delay (WMA's by 64 ms), which the second frame's
+    // placing of time 0 already takes out.
+    void keep_lost_start(std::int64_t at) {
+        std::int64_t start = 0;
+        if (!reading_.keeps_stated_length) {
+            if (stream_->start_time == AV_NOPTS_VALUE || skipped_frames_ == 0) return;
+            start = av_rescale_q(stream_->start_time, stream_->time_base, AVRational{1, sample_rate_hz_});
+        }
+        keep_gap(at - (start + static_cast<std::int64_t>(frames_decoded_ + skipped_frames_)));
+    }
+
+    // `gap`: how much later than the samples before it a frame's timestamp places it.
+    void keep_gap(std::int64_t gap) {
         if (static_cast<double>(gap) > kTimestampSlackS * sample_rate_hz_) {
             skipped_frames_ += static_cast<std::size_t>(gap);
             skipped_is_damage_ = true;

@@ -15,7 +15,8 @@ namespace talkface::detail {
 struct FfmpegReading {
     // The file is known to be damaged inside (an Ogg page that fails its check): sound lost at its
     // end is kept as silence up to the length its container states, as sound lost before the end
-    // is, rather than called a cut file.
+    // is, rather than called a cut file, and sound lost at its start from time 0 (where Ogg's
+    // granule positions begin) to its first page read.
     bool keeps_stated_length = false;
     // The file is a WAV whose data chunk goes on past the size its header states (a header
     // written early and never brought up to date): read to the end of the file.
