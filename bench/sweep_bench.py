@@ -267,6 +267,13 @@ def make_cases(out, label, stem):
     case("Ogg Vorbis", path("voice.ogg"))
     scratched(path("voice.ogg"), path("scratched_voice.ogg"))
     case("scratched voice.ogg", path("scratched_voice.ogg"))
+    # The same from inside its first page of sound (after Vorbis's headers): a loss at the start.
+    ogg = open(path("voice.ogg"), "rb").read()
+    page = ogg.find(b"OggS")
+    while struct.unpack("<q", ogg[page + 6:page + 14])[0] <= 0:
+        page = ogg.find(b"OggS", page + 4)
+    scratched(path("voice.ogg"), path("scratched_start_voice.ogg"), share=(page + 40) / len(ogg))
+    case("scratched voice.ogg in its first page of sound", path("scratched_start_voice.ogg"))
     scratched(path("voice.opus"), path("scratched_voice.opus"))
     case("scratched voice.opus", path("scratched_voice.opus"))
     scratched(path("phone.m4a"), path("scratched_phone.m4a"))
