@@ -90,7 +90,7 @@ def legal_syllable(initial, final):
     return "a"
 
 
-def map_word(syllables):
+def map_word(syllables, spelling=""):
     """[(phones, stress), ...] from the dictionary -> numbered pinyin syllables."""
     result = []
     for index, (phones, stress) in enumerate(syllables):
@@ -108,6 +108,10 @@ def map_word(syllables):
             onset = onset[:-1]
         initial = INITIALS[onset[0]] if onset else ""
         final = VOWELS[vowel]
+        # A final unstressed schwa written a (NASA, pizza, data, Toyota) is said a, as Mandarin says
+        # those words and writes their loans (纳萨, 比萨, 丰田 tuo you ta, 阿尔法): session 15, it was e.
+        if index + 1 == len(syllables) > 1 and vowel == "ax" and not coda and spelling.endswith("a"):
+            final = "a"
         nasal = next((phone for phone in coda if phone in ("n", "m", "ng")), None)
         if nasal is not None:
             final = NASAL.get((final, "n" if nasal == "m" else nasal), final)
@@ -136,7 +140,7 @@ def main():
                 continue
             syllables = [(phones.split(), int(stress)) for phones, stress in SYLLABLE.findall(match.group(2))]
             if syllables:
-                words[word] = map_word(syllables)
+                words[word] = map_word(syllables, word)
     for word, readings in words.items():
         for reading in readings:
             assert is_legal_toneless(reading[:-1]), (word, reading)

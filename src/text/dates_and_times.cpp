@@ -14,7 +14,9 @@ bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t
     constexpr std::string_view kResults[] = {"战胜", "戰勝", "击败", "擊敗", "获胜", "獲勝", "取胜", "取勝", "领先", "領先",
                                              "落后", "落後", "险胜", "險勝", "大胜", "大勝", "完胜", "完勝", "逆转", "逆轉",
                                              "告负", "告負", "战平", "戰平", "打平", "逼平", "胜", "勝", "负", "負", "赢",
-                                             "贏", "输", "輸"};
+                                             "贏", "输", "輸",
+                                             // Session 15: a loss said by the loser's side (1-2不敌, 惜败; it was a range).
+                                             "不敌", "不敵", "惜败", "惜敗", "憾负", "憾負", "力克"};
     for (const auto word : kResults)
         if (after.rfind(word, 0) == 0) return true;
     if (!dashed) return false;
@@ -86,7 +88,9 @@ std::optional<SpokenForm> read_clock_time(const std::vector<CodePoint>& text, co
         return cardinal_words(digits, false) + unit;
     };
     SpokenForm form;
-    const auto first = hour.whole == "2" ? std::string("两") : cardinal_words(hour.whole, false);
+    // A 24-hour clock's leading zero is not said (02:00 两点, as 2:00 is; session 15: it was 二点).
+    const auto hour_digits = hour.whole.size() == 2 && hour.whole.front() == '0' ? hour.whole.substr(1) : hour.whole;
+    const auto first = hour_digits == "2" ? std::string("两") : cardinal_words(hour_digits, false);
     const bool has_seconds = value_at(text, i) == ':' && is_digit_at(text, i + 1) && is_digit_at(text, i + 2) &&
                              !is_digit_at(text, i + 3);
     if (duration) {

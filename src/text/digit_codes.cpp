@@ -346,4 +346,27 @@ bool is_named_service_number(const std::string& digits) {
     return is_named_anywhere(digits) && is_service_number(digits);
 }
 
+std::size_t past_exchange_suffix(const std::vector<CodePoint>& text, std::size_t end) {
+    if (value_at(text, end) != '.') return end;
+    auto k = end + 1;
+    while (is_ascii_capital(value_at(text, k))) ++k;
+    constexpr std::size_t kLongestSuffix = 3;  // HK SH SZ TW, TWO (Taipei Exchange)
+    const auto letters = k - end - 1;
+    if (letters == 0 || letters > kLongestSuffix) return end;
+    return is_one_of(value_at(text, k), U")\uFF09\u3015]") ? k : end;
+}
+
+std::optional<SpokenForm> read_floor(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
+    constexpr std::size_t kMostFloorDigits = 3;
+    if (number.has_point || number.has_separators || number.whole.size() > kMostFloorDigits || number.whole.front() == '0' ||
+        (start > 0 && is_ascii_letter(value_at(text, start - 1))) || value_at(text, number.end) != 'F' ||
+        is_ascii_letter(value_at(text, number.end + 1)) || is_digit_at(text, number.end + 1)) {
+        return std::nullopt;
+    }
+    SpokenForm form;
+    form.words = cardinal_words(number.whole, false) + "楼";
+    form.end = number.end + 1;
+    return form;
+}
+
 }  // namespace talkface::detail

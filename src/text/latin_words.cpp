@@ -42,6 +42,10 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     // Session 14: Google, which the 1998 dictionary lacks (it was go + ogle, gou ou ge), is said as its
     // Chinese name 谷歌 is, gu ge, as NVIDIA is 英伟达.
     {"google", "gu3 ge1"},
+    // Session 15: sin is the sine of a formula (sin30°, sin x), said by its English name 赛因 sai yin
+    // as classrooms say it; the dictionary's word, sin, gave xin. cos (kou si) and tan (the pinyin tan)
+    // are said as written, as they are in class.
+    {"sin", "sai4 yin1"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

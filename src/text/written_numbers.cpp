@@ -29,6 +29,12 @@ bool follows_game_attribute(const std::vector<CodePoint>& text, std::size_t star
     return false;
 }
 
+// A word for a temperature earlier in the sentence (气温, 低温, 温度, 氣溫): a 度 after a number is one.
+bool speaks_of_temperature(const std::vector<CodePoint>& text, std::size_t start) {
+    const std::string before = text_before(text, start, false);
+    return before.find("温") != std::string::npos || before.find("溫") != std::string::npos;
+}
+
 // A word earlier in the clause that names a change (涨幅, 增长, 上升, 同比): a + after it is not said.
 bool names_change(const std::vector<CodePoint>& text, std::size_t start) {
     const std::string before = text_before(text, start, true);
@@ -64,7 +70,7 @@ struct NumberContext {
     bool names_day = false;     // a day named by its date's digits (618大促, 今天是520)
     bool names_type = false;    // before 型 or 式, a type's number (737型, 99式)
     bool is_generation = false;  // two digits right before 后 (90后, 00后)
-    bool is_hundredths = false;  // right after the seconds of a time (9秒83)
+    bool is_hundredths = false;  // right after the seconds of a time (9秒83) or a jump's metres (8米22)
     bool is_grade = false;       // a respirator's filter grade (N95)
     bool is_span_of_years = false;  // four digits before 年 that count years, not name one (距今约5000年)
     bool is_code = false;        // a stock's code, an index's or a programme's number (（600519）, 日经225, 985高校)
@@ -243,7 +249,11 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     context.names_type = is_one_of(value_at(text, number.end), U"型式");
     context.is_generation = number.whole.size() == 2 && !number.has_point && !number.has_separators &&
                             is_one_of(value_at(text, number.end), U"后後");
-    context.is_hundredths = start >= 2 && text[start - 1].value == U'秒' && is_digit_at(text, start - 2);
+    // The hundredths after a sprint's seconds (9秒83), and the centimetres after a jump's or a throw's
+    // metres (8米22 八米二二, 1米75; session 15: 二十二), two digits and no unit of their own after them.
+    const bool after_metres = text[start > 0 ? start - 1 : 0].value == U'米' && number.whole.size() == 2 &&
+                              !number.has_point && !is_one_of(value_at(text, number.end), U"厘公分毫");
+    context.is_hundredths = start >= 2 && (text[start - 1].value == U'秒' || after_metres) && is_digit_at(text, start - 2);
     context.is_grade = context.is_model && is_filter_grade(text, start, number.whole);
     context.is_span_of_years = counts_years(text, start, number);
     context.is_service_call = is_service_call(text, start, number.end);
@@ -292,6 +302,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     if (sign_words.empty() && currency == nullptr) {
         if (auto day = read_dotted_day(text, number)) return day;
         if (auto dotted = read_dotted_groups(text, i)) return dotted;
+        if (auto floor = read_floor(text, i, number)) return floor;
         if (auto date = read_numeric_date(text, number)) return date;
         if (auto season = read_season(text, number)) return season;
         if (auto digits = read_dashed_digits(text, number, context.is_phone)) return digits;
@@ -362,6 +373,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         }
     }
     auto end = numbers.back().end;
+    if (context.is_code && numbers.size() == 1) end = past_exchange_suffix(text, end);
     // A power after one number (10⁵ 十的五次方, 2^10) is said before the unit after it (10⁵Pa).
     std::string power_words;
     if (numbers.size() == 1) {
@@ -386,8 +398,10 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     std::string unit_words = unit == nullptr ? "" : unit->words;
     const bool is_percent = unit != nullptr && unit->written == "%";
     const bool is_per_mille = end < text.size() && text[end].value == 0x2030 /*‰*/;
-    const bool is_temperature = unit != nullptr && std::string_view(unit->words).find("氏度") != std::string_view::npos;
-    // A temperature's sign is said 零下 or 零上 (-3℃ 零下三摄氏度, +5℃ 零上五摄氏度).
+    // A temperature's sign is said 零下 or 零上 (-3℃ 零下三摄氏度, +5℃ 零上五摄氏度), before 度 too where the
+    // sentence speaks of a temperature (气温降至-2.5度 零下二点五度; session 15: it was 负).
+    const bool is_temperature = unit != nullptr ? std::string_view(unit->words).find("氏度") != std::string_view::npos
+                                                : context.next == U'度' && speaks_of_temperature(text, start);
     for (auto& sign : signs) {
         if (sign == "负" && is_temperature) sign = "零下";
         if (sign == "正" && is_temperature) sign = "零上";
