@@ -151,7 +151,13 @@ std::optional<SpokenForm> read_dashed_digits(const std::vector<CodePoint>& text,
         ++i;
         groups.push_back(digits_from(text, i));
     }
-    const bool looks_like_phone = first.whole.front() == '0' || groups.size() >= 3 || is_phone;
+    // An area code and a number have seven digits or more (02-23456789, 010-12345678); 0-0 and 0-3
+    // are a score's or a range's (session 15: 0-0 was said 零零).
+    constexpr std::size_t kFewestPhoneDigits = 7;
+    std::size_t digit_count = 0;
+    for (const auto& group : groups) digit_count += group.size();
+    const bool looks_like_phone =
+        (first.whole.front() == '0' && digit_count >= kFewestPhoneDigits) || groups.size() >= 3 || is_phone;
     if (groups.size() < 2 || !looks_like_phone) return std::nullopt;
     SpokenForm form;
     append_phone_groups(form, groups);

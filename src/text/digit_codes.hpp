@@ -49,7 +49,8 @@ bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start);
 // not dialled, so its digits are said with 一.
 bool follows_phone_word(const std::vector<CodePoint>& text, std::size_t start);
 
-// 010-12345678, 0912-345-678: groups of digits joined by dashes, said digit by digit.
+// 010-12345678, 0912-345-678: groups of digits joined by dashes, said digit by digit (a first group
+// with a leading zero and seven digits or more in all, or three groups, or a phone word before).
 std::optional<SpokenForm> read_dashed_digits(const std::vector<CodePoint>& text, const WrittenNumber& first,
                                              bool is_phone);
 

