@@ -5,6 +5,7 @@
 
 #include "text/latin_words.hpp"
 #include "text/number_words.hpp"
+#include "text/web_addresses.hpp"
 
 namespace talkface::detail {
 
@@ -230,6 +231,9 @@ bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, 
         (closes || (value_at(text, number.end) == '.' && is_ascii_capital(value_at(text, number.end + 1))))) {
         return true;
     }
+    // A code with its exchange's suffix, in brackets or not (港股00700.HK; session 15).
+    if (digits.size() >= kShortestCode && digits.size() <= kLongestCode && past_exchange_suffix(text, number.end) != number.end)
+        return true;
     const auto before = text_between(text, start >= 2 ? start - 2 : 0, start);
     if (before == "日经" || before == "日經") return true;
     if (digits.size() != 3) return false;
@@ -355,11 +359,9 @@ bool is_named_service_number(const std::string& digits) {
 std::size_t past_exchange_suffix(const std::vector<CodePoint>& text, std::size_t end) {
     if (value_at(text, end) != '.') return end;
     auto k = end + 1;
-    while (is_ascii_capital(value_at(text, k))) ++k;
-    constexpr std::size_t kLongestSuffix = 3;  // HK SH SZ TW, TWO (Taipei Exchange)
-    const auto letters = k - end - 1;
-    if (letters == 0 || letters > kLongestSuffix) return end;
-    return is_one_of(value_at(text, k), U")\uFF09\u3015]") ? k : end;
+    std::string letters;
+    while (is_ascii_capital(value_at(text, k))) letters += static_cast<char>(value_at(text, k++));
+    return is_exchange_suffix(letters) && !is_ascii_letter(value_at(text, k)) && !is_digit_at(text, k) ? k : end;
 }
 
 std::optional<SpokenForm> read_floor(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {

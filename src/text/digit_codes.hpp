@@ -116,9 +116,9 @@ std::optional<SpokenForm> read_calling_code(const std::vector<CodePoint>& text, 
 // 一点二点三, 10.15.7 十点十五点七: each group a number, 点 between).
 std::optional<SpokenForm> read_dotted_groups(const std::vector<CodePoint>& text, std::size_t start);
 
-// Past a stock code's exchange suffix (00700.HK, 600519.SH, 2330.TW: a dot and one to three capitals
-// before the closing bracket), which is not said, as market news reads the code (session 15: it was
-// 点 H K): where the code's form ends; `end` itself where no suffix follows.
+// Past a stock code's exchange suffix (00700.HK, 600519.SH, 2330.TW: a dot and an exchange's capitals,
+// is_exchange_suffix), which is not said, as market news reads the code (session 15: it was 点 H K):
+// where the code's form ends; `end` itself where no suffix follows.
 std::size_t past_exchange_suffix(const std::vector<CodePoint>& text, std::size_t end);
 
 // A floor written with an F after its number, as Taiwan, Hong Kong and shopping centres write it (2F

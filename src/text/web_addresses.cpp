@@ -106,6 +106,12 @@ std::size_t path_end(const std::vector<CodePoint>& text, std::size_t i) {
 
 }  // namespace
 
+bool is_exchange_suffix(std::string_view letters) {
+    for (const std::string_view suffix : {"HK", "SH", "SS", "SZ", "BJ", "TW", "TWO"})
+        if (letters == suffix) return true;
+    return false;
+}
+
 std::optional<WebAddress> read_web_address(const std::vector<CodePoint>& text, std::size_t start) {
     if (start >= text.size()) return std::nullopt;
     const auto previous = start == 0 ? 0 : text[start - 1].value;
@@ -148,16 +154,13 @@ std::optional<WebAddress> read_web_address(const std::vector<CodePoint>& text, s
     if (has_scheme) host = start + scheme.size() + 3;
     const auto end = host_end(text, host, labels);
     if (labels.size() < 2 || !is_all_letters(labels.back())) return std::nullopt;
-    // A stock's code and its exchange in capitals (00700.HK, 600519.SH, 2330.TW) is no address, which is
-    // written small: the number reader says the code and leaves the suffix unsaid (session 15: it was
-    // read as an address, 零零七零零点 H K).
-    const auto is_capitals = [](const std::string& label) {
-        return std::all_of(label.begin(), label.end(), [](char c) { return is_ascii_capital(c); });
-    };
+    // A stock's code and its exchange (00700.HK, 600519.SH, 2330.TW) is no address: the number reader
+    // says the code and leaves the suffix unsaid (session 15: it was read as an address, 零零七零零点 H K).
     const auto is_digits = [](const std::string& label) {
         return std::all_of(label.begin(), label.end(), [](char c) { return is_digit(c); });
     };
-    if (!has_scheme && labels.size() == 2 && is_digits(labels.front()) && is_capitals(labels.back())) return std::nullopt;
+    if (!has_scheme && labels.size() == 2 && is_digits(labels.front()) && is_exchange_suffix(labels.back()))
+        return std::nullopt;
     if (!has_scheme && lower_case(labels.front()) != "www" && !is_common_top_level(labels.back()) &&
         !is_file_suffix(labels.back())) {
         return std::nullopt;

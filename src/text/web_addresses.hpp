@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "text/code_points.hpp"
@@ -33,6 +34,11 @@ struct WebAddress {
 // or a library's dotted name (index.html, Node.js: a suffix such as html, js, pdf), or a lone @
 // before a name (a mention: @新华社). A dot that ends a sentence after the address is not taken.
 std::optional<WebAddress> read_web_address(const std::vector<CodePoint>& text, std::size_t start);
+
+// True for the suffix of a stock exchange after a code, in capitals (HK Hong Kong; SH and SS
+// Shanghai; SZ Shenzhen; BJ Beijing; TW and TWO Taiwan: 00700.HK, 600519.SH, 2330.TW): digits and
+// such a suffix are a stock's code, no address (session 15).
+bool is_exchange_suffix(std::string_view letters);
 
 }  // namespace talkface::detail
 
