@@ -115,3 +115,15 @@ def test_an_invalid_reading_fix_fails_naming_it(tmp_path):
 
 def test_a_missing_transcript_is_a_usage_error(tmp_path):
     assert run("syllables", tmp_path / "missing.txt").returncode == 2
+
+
+def test_news_forms_show_what_they_became(tmp_path):
+    # Session 15: a stock code's exchange suffix is not said, a floor written nF is n楼.
+    path = write(tmp_path, "腾讯控股（00700.HK）的门店在2F。")
+    plain = run("syllables", path)
+    assert plain.returncode == 0, plain.stderr
+    assert "00700.HK -> 零零七零零\tling2 ling2 qi1 ling2 ling2" in plain.stdout
+    assert "2F -> 二楼\ter4 lou2" in plain.stdout
+    document = json.loads(run("syllables", path, "--json").stdout)
+    assert [f["text"] for f in document["written_forms"]] == ["00700.HK", "2F"]
+    assert "".join(s["text"] for s in document["syllables"]) == "腾讯控股零零七零零的门店在二楼"

@@ -69,6 +69,14 @@ def test_written_forms_are_read_aloud_and_kept_beside_their_syllables():
     assert timeline.warnings == []
 
 
+def test_news_forms_read_as_newsreaders_say_them():
+    # Session 15: the exchange's suffix unsaid, a floor nF, a jump's centimetres, -2.5度 of weather.
+    timeline = talkface.read_transcript("台積電（2330.TW）在5F，他跳出8米22，氣溫-2.5度。")
+    assert [f.text for f in timeline.written_forms] == ["2330.TW", "5F", "8", "22", "-2.5"]
+    assert "".join(s.text for s in timeline.syllables) == "台積電二三三零在五樓他跳出八米二二氣溫零下二點五度"
+    assert timeline.warnings == []
+
+
 def test_full_width_letters_are_read_as_their_ascii_forms():
     timeline = talkface.read_transcript("公司的ＣＥＯ说，ＧＤＰ增长５．３％。")
     assert [f.text for f in timeline.written_forms] == ["ＣＥＯ", "ＧＤＰ", "５．３％"]
