@@ -112,6 +112,27 @@ TEST_SUITE("speech") {
         CHECK_THROWS_AS(check_held_out_fit(sentence.metrics, sentence.spans, sentence.transcript, warnings), AlignmentError);
     }
 
+    TEST_CASE("a sentence of 6-7 syllables gets no lost-tail clause: its first half is too little to learn from") {
+        // 88，下次再聊！ as espeak-ng says it, alone in its file: both second-half clauses would fire.
+        const Timeline transcript = read_transcript("八八，下次再聊！");
+        const std::vector<FrameSpan> spans = {{10, 130}};
+        std::vector<SentenceMetrics> metrics(1);
+        metrics[0].held_out_gap = 0.74;
+        metrics[0].held_out_end_gap = 0.74;
+        metrics[0].held_out_median = 0.2;
+        metrics[0].held_out_end_median = 0.6;
+        metrics[0].held_out_last_is_worst = true;
+        metrics[0].order_margin = 0.5;
+        std::vector<std::string> warnings;
+        CHECK_NOTHROW(check_held_out_fit(metrics, spans, transcript, warnings));
+        REQUIRE(warnings.size() == 1);
+        CHECK(warnings[0].find("0.74 per frame better than its text") != std::string::npos);
+        // Two syllables more and the same measures refuse it as a text that lacks its last words.
+        const Timeline longer = read_transcript("八八，下次再聊天吧！");
+        CHECK_THROWS_WITH_AS(check_held_out_fit(metrics, spans, longer, warnings),
+                             doctest::Contains("does the text lack its last words"), AlignmentError);
+    }
+
     TEST_CASE("speech after a text's last syllable goes to generic speech only where the text lacks it") {
         const EmissionScores scores = three_sounds();
         ViterbiWorkspace workspace;
