@@ -64,7 +64,6 @@ constexpr double kMinHeldOutGapBeside = 0.5;
 // 124, 32, 246, 231).
 constexpr double kMinHeldOutGapSkipped = 0.2;
 
-
 // A place in the chain's order: 2 i + 1 is syllable i, 2 i + 2 the generic speech after it, 0
 // the generic speech before the first syllable.
 std::size_t place_of(const PhoneState& state, bool is_leading) {
@@ -151,6 +150,15 @@ std::vector<bool> whole_syllables(const SentenceChain& chain, const std::vector<
     std::vector<bool> is_whole(chain.syllables.size());
     for (std::size_t i = 0; i < is_whole.size(); ++i) is_whole[i] = states_on_path[i] == states_per_syllable[i];
     return is_whole;
+}
+
+// Whether a syllable of [first, end) has a value (per syllable, as unsupported_skips takes
+// rival shares and held-out gaps) of at least `bound`, or none to judge it by (NaN or missing): a
+// syllable not judged does not speak against the skip.
+bool reaches_or_unjudged(const std::vector<double>& values, std::size_t first, std::size_t end, double bound) {
+    for (std::size_t i = first; i < end; ++i)
+        if (i >= values.size() || std::isnan(values[i]) || values[i] >= bound) return true;
+    return false;
 }
 
 // Syllables of the text's path (`is_whole`) next to a syllable it skips whose fit on the whole
@@ -268,12 +276,8 @@ std::vector<std::size_t> unsupported_skips(const SentenceChain& lenient, const s
         bool is_outlier = false;
         for (std::size_t j = first > 0 ? first - 1 : 0; j < std::min(is_whole.size(), end + 1); ++j)
             if (plain_fits[j] < bound) is_outlier = true;
-        bool is_rivalled = false;
-        for (std::size_t i = first; i < end; ++i)
-            if (i >= rival_shares.size() || std::isnan(rival_shares[i]) || rival_shares[i] >= kMinRivalShare) is_rivalled = true;
-        bool is_gapped = false;
-        for (std::size_t i = first; i < end; ++i)
-            if (i >= held_out_gaps.size() || std::isnan(held_out_gaps[i]) || held_out_gaps[i] >= kMinHeldOutGapSkipped) is_gapped = true;
+        const bool is_rivalled = reaches_or_unjudged(rival_shares, first, end, kMinRivalShare);
+        const bool is_gapped = reaches_or_unjudged(held_out_gaps, first, end, kMinHeldOutGapSkipped);
         if (!is_outlier || !is_rivalled || !is_gapped)
             for (std::size_t i = first; i < end; ++i) unsupported.push_back(i);
         first = end;

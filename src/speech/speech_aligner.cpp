@@ -271,11 +271,11 @@ double total_fit_gap(const CutAlignment& aligned) {
 }
 
 // The sentences whose text fits their speech so much worse than free sounds do that check_text_fit
-// would refuse them (kMaxTextFitGap), each with its gap; empty if none.
-std::vector<std::pair<std::size_t, double>> poorly_fitting(const std::vector<SentenceMetrics>& metrics) {
-    std::vector<std::pair<std::size_t, double>> poor;
+// would refuse them (kMaxTextFitGap); empty if none.
+std::vector<std::size_t> poorly_fitting(const std::vector<SentenceMetrics>& metrics) {
+    std::vector<std::size_t> poor;
     for (std::size_t k = 0; k < metrics.size(); ++k)
-        if (metrics[k].fit_gap > kMaxTextFitGap) poor.emplace_back(k, metrics[k].fit_gap);
+        if (metrics[k].fit_gap > kMaxTextFitGap) poor.push_back(k);
     return poor;
 }
 
@@ -286,8 +286,8 @@ std::vector<std::pair<std::size_t, double>> poorly_fitting(const std::vector<Sen
 // through: kept wherever its gap fell, a sentence replaced inside a person's passage was caught
 // 451 -> 418 of 648 times; with this, as often as without the third alignment (espeak-ng's wrong
 // clips aligned a third time: 2 of 738 came under 0, both caught by another check; bench/ Session 14).
-bool fits_as_well_as_free_sounds(const CutAlignment& aligned, const std::vector<std::pair<std::size_t, double>>& poor) {
-    return std::all_of(poor.begin(), poor.end(), [&](const auto& entry) { return aligned.metrics[entry.first].fit_gap <= 0.0; });
+bool fits_as_well_as_free_sounds(const CutAlignment& aligned, const std::vector<std::size_t>& poor) {
+    return std::all_of(poor.begin(), poor.end(), [&](std::size_t k) { return aligned.metrics[k].fit_gap <= 0.0; });
 }
 
 // The syllables of every sentence of `cut`, aligned sentence by sentence (neighbours that run on,
