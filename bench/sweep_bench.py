@@ -263,6 +263,13 @@ def make_cases(out, label, stem):
         case(name, path(name))
         scratched(path(name), path("scratched_" + name))
         case("scratched " + name, path("scratched_" + name))
+    # A WebM whose clusters are as long as the recording (FFmpeg's default 5 s clusters hold a short
+    # clip or a voice message whole): a scratch half way in loses the rest of the cluster, and no
+    # cluster after it says where the sound belonged.
+    ffmpeg(*picture, "-i", ref, "-c:v", "libvpx", "-b:v", "8k", "-c:a", "libopus", "-b:a", "16k",
+           "-cluster_time_limit", "60000", "-shortest", path("one_cluster.webm"))
+    scratched(path("one_cluster.webm"), path("scratched_one_cluster.webm"), share=1 / 2)
+    case("scratched one_cluster.webm (half way in)", path("scratched_one_cluster.webm"))
     ffmpeg("-i", ref, "-c:a", "libvorbis", "-q:a", "2", path("voice.ogg"))
     case("Ogg Vorbis", path("voice.ogg"))
     scratched(path("voice.ogg"), path("scratched_voice.ogg"))

@@ -10,6 +10,7 @@ extern "C" {
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <vector>
@@ -206,9 +207,48 @@ private:
         if (format_->duration_estimation_method == AVFMT_DURATION_FROM_BITRATE) return 0.0;
         if (stream_->duration != AV_NOPTS_VALUE && stream_->duration > 0)
             return static_cast<double>(stream_->duration) * av_q2d(stream_->time_base);
+        if (const double tagged_s = matroska_track_seconds(); tagged_s > 0.0) return tagged_s;
         if (format_->nb_streams == 1 && format_->duration != AV_NOPTS_VALUE && format_->duration > 0)
             return static_cast<double>(format_->duration) / AV_TIME_BASE;
         return 0.0;
+    }
+
+    // A Matroska track's length as its DURATION tag states it ("00:00:03.098000000"), which
+    // FFmpeg's muxer and mkvmerge write for every track (Matroska has no per-track duration field);
+    // 0 where there is none (a browser's MediaRecorder writes no length at all).
+    double matroska_track_seconds() const {
+        if (std::strncmp(format_->iformat->name, "matroska", 8) != 0) return 0.0;
+        const AVDictionaryEntry* tag = av_dict_get(stream_->metadata, "DURATION", nullptr, 0);
+        if (tag == nullptr) return 0.0;
+        unsigned hours = 0, minutes = 0;
+        double seconds = 0.0;
+        if (std::sscanf(tag->value, "%u:%u:%lf", &hours, &minutes, &seconds) != 3 || minutes >= 60 || seconds < 0.0 ||
+            seconds >= 60.0)
+            return 0.0;
+        return hours * 3600.0 + minutes * 60.0 + seconds;
+    }
+
+    // Whether a Matroska demuxer stopped short of its sound's end because the file is damaged
+    // there, not cut: a scratch inside a cluster makes it skip the rest of that cluster, and a file
+    // of one cluster (FFmpeg's default clusters are 5 s: a short clip, a voice message) or a scratch
+    // in the last one loses the rest of its sound with nothing after it to say where it belonged.
+    // Told from a cut file by the bytes left after the last packet read: a cut file ends where its
+    // packets do, a damaged one still holds the bytes of what is missing (at least half of what the
+    // missing time takes at the file's own rate). Its end is the track's stated length, else the
+    // file's (only an upper bound where a video's sound ends before its picture).
+    double damaged_matroska_end_seconds() const {
+        if (std::strncmp(format_->iformat->name, "matroska", 8) != 0 || packets_end_byte_ < 0) return 0.0;
+        const double file_s = format_->duration != AV_NOPTS_VALUE && format_->duration > 0
+                                  ? static_cast<double>(format_->duration) / AV_TIME_BASE
+                                  : 0.0;
+        const double end_s = stated_seconds_ > 0.0 ? stated_seconds_ : file_s;
+        const std::int64_t file_bytes = avio_size(format_->pb);
+        const double missing_s = end_s - seconds_read();
+        if (file_s <= 0.0 || file_bytes <= 0 || missing_s <= std::max(kLengthSlackS, kLengthSlackShare * end_s))
+            return 0.0;
+        const double unread_bytes = static_cast<double>(file_bytes - packets_end_byte_);
+        const double missing_bytes = missing_s * static_cast<double>(file_bytes) / file_s;
+        return unread_bytes >= 0.5 * missing_bytes ? end_s : 0.0;
     }
 
     // At the end of the data: a sound track well short of the length its container states was cut
@@ -227,9 +267,11 @@ private:
     // states was lost with the damaged pages (the container's last page is whole: a cut file is
     // refused before it gets here), and is kept as silence. True if there was such sound to fill.
     bool fill_lost_end() {
-        if (!reading_.keeps_stated_length || end_filled_ || stated_seconds_ <= 0.0) return false;
+        if (end_filled_) return false;
         end_filled_ = true;
-        const double missing_frames = stated_seconds_ * sample_rate_hz_ - static_cast<double>(frames_decoded_);
+        const double end_s = reading_.keeps_stated_length ? stated_seconds_ : damaged_matroska_end_seconds();
+        if (end_s <= 0.0) return false;
+        const double missing_frames = end_s * sample_rate_hz_ - static_cast<double>(frames_decoded_);
         if (missing_frames <= kTimestampSlackS * sample_rate_hz_) return false;
         pending_.clear();
         pending_position_ = 0;
@@ -279,6 +321,7 @@ private:
             }
             if (got < 0) throw ParseError(path_, 0, 0, "", "cannot read past " + seconds_text(seconds_read()) + ": " +
                                                                 ffmpeg_error_text(got));
+            if (packet_->pos >= 0) packets_end_byte_ = std::max(packets_end_byte_, packet_->pos + packet_->size);
             if (packet_->stream_index != stream_->index) {
                 av_packet_unref(packet_.get());
                 continue;
@@ -529,6 +572,7 @@ private:
     std::size_t last_packet_frames_ = 0;  // the length of the last packet sent
     std::int64_t time_zero_frames_ = 0;  // a frame's timestamp in samples less the samples before it
     int timed_frames_ = 0;               // frames with a timestamp seen, up to the 2 that place time 0
+    std::int64_t packets_end_byte_ = -1;  // the furthest byte of the file a packet (of any stream) reached
     std::int64_t next_packet_byte_ = -1;  // where the last packet of the sound track ended in the file
     int mp3_packets_judged_ = 0;          // packets that judged whether an MP3's bit rate is constant
     bool mp3_rate_is_constant_ = true;

@@ -49,8 +49,9 @@ const Container kContainers[] = {
     {"faststart.m4a", "-c:a aac -b:a 32k -movflags +faststart", true},
     {"clip.mp4", "-c:v libx264 -crf 40 -c:a aac -b:a 24k -shortest -movflags +faststart", true},
     {"clip.mov", "-c:v libx264 -crf 40 -c:a aac -b:a 24k -shortest", false},
-    {"clip.mkv", "-c:v libvpx -b:v 8k -c:a libopus -b:a 16k -shortest", false},
-    {"clip.webm", "-c:v libvpx -b:v 8k -c:a libopus -b:a 16k -shortest", false},
+    // FFmpeg's Matroska muxer states each track's length in a DURATION tag, near the start.
+    {"clip.mkv", "-c:v libvpx -b:v 8k -c:a libopus -b:a 16k -shortest", true},
+    {"clip.webm", "-c:v libvpx -b:v 8k -c:a libopus -b:a 16k -shortest", true},
     {"voice.mka", "-c:a libopus -b:a 16k", true},
 };
 
@@ -384,6 +385,43 @@ TEST_SUITE("audio") {
             {"voice500.mka", "-c:a libopus -b:a 16k -cluster_time_limit 500", true},
         };
         for (const Container& container : clustered) check_scratch_keeps_time(container);
+    }
+
+    TEST_CASE("a scratch in a Matroska or WebM file of one cluster loses the rest of its sound, and says where") {
+        // FFmpeg's default clusters (5 s) put a short clip or a voice message in one cluster; the
+        // demuxer skips the rest of the cluster a scratch hits, and with nothing after it, the sound
+        // just ended there: the clip aligned on with silence and no word of the damage (or, with
+        // its sound alone, was called cut). The file still holds the bytes of what is missing,
+        // which a cut file does not: the time up to the track's stated length is kept as silence
+        // and named as lost.
+        for (const Container& container : {kContainers[11], kContainers[12], kContainers[13]}) {
+            for (const double share : {0.5, 0.7}) {
+                const std::string file = container.file;
+                CAPTURE(file);
+                CAPTURE(share);
+                const std::string bytes = whole(container);
+                std::string scratched = bytes;
+                scratched.replace(static_cast<std::size_t>(static_cast<double>(bytes.size()) * share), 2000, random_bytes(2000, 3));
+                const std::string path = test::output_path("scratched_" + std::to_string(static_cast<int>(share * 10)) + "_" + file);
+                write_bytes(path, scratched);
+                auto whole_source = detail::open_audio_file(test::output_path("whole_" + file));
+                const double whole_s = static_cast<double>(test::read_all(*whole_source).size()) / whole_source->sample_rate_hz();
+                try {
+                    auto source = detail::open_audio_file(path);
+                    const double read_s = static_cast<double>(test::read_all(*source).size()) / source->sample_rate_hz();
+                    CHECK(std::fabs(read_s - whole_s) <= 0.03);
+                    const std::vector<detail::LostAudio>& lost = source->lost_audio();
+                    REQUIRE(lost.size() == 1);
+                    // The rest of the recording is lost: the stretch runs to its end, from inside it.
+                    CHECK(lost[0].start_s > 0.5);
+                    CHECK(lost[0].start_s < share * whole_s);
+                    CHECK(std::fabs(lost[0].end_s - read_s) <= 1e-6);
+                    check_damage_named(path, "one_sentence.txt");
+                } catch (const Error& error) {
+                    FAIL(std::string(error.what()));
+                }
+            }
+        }
     }
 
     TEST_CASE("a scratch inside an Ogg Vorbis, an Ogg Opus or a FLAC file loses what it hit but keeps its time") {

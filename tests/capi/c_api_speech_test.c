@@ -546,6 +546,7 @@ static size_t count_warnings(const tf_timeline *timeline, const char *prefix, co
 static int test_damage_and_a_stale_header_are_said(void) {
     static const char scratched_m4a[] = TF_TEST_OUTPUT_DIR "/scratched_phone.m4a";
     static const char scratched_mp4[] = TF_TEST_OUTPUT_DIR "/scratched_clip.mp4";
+    static const char scratched_webm[] = TF_TEST_OUTPUT_DIR "/scratched_clip.webm";
     static const char stale_wav[] = TF_TEST_OUTPUT_DIR "/stale_header.wav";
     int failures = 0;
     tf_timeline *transcript = NULL;
@@ -569,6 +570,15 @@ static int test_damage_and_a_stale_header_are_said(void) {
                      "scratched_clip.mp4: the file is damaged: 0.");
     CHECK(strstr(tf_last_error_message(), "s of its sound could not be decoded, at 0.") != NULL);
     CHECK(aligned == NULL);
+
+    /* A WebM of one cluster scratched half way in: the demuxer skips the rest of the cluster, and the
+     * sound up to the track's stated 3.098 s is named as lost. */
+    CHECK(write_damaged_copy(AUDIO_DIR "clip.webm", scratched_webm, 0.5, 2000, 0));
+    CHECK_OK(tf_align_file(scratched_webm, transcript, NULL, NULL, NULL, &aligned));
+    CHECK(count_warnings(aligned, TF_TEST_OUTPUT_DIR "/scratched_clip.webm: the file is damaged: ",
+                         "s of its sound could not be decoded, at 1.373-3.098 s") == 1);
+    tf_timeline_destroy(aligned);
+    aligned = NULL;
 
     /* A recorder that stopped without bringing its header up to date: the data size states half. */
     CHECK(write_damaged_copy(kClipPath, stale_wav, 0.0, 0, 1));

@@ -289,6 +289,14 @@ def test_a_damaged_file_aligns_with_a_warning_naming_where_its_sound_was_lost(tm
     assert len(document["syllables"]) == 11
     damage = [w for w in document["warnings"] if w.startswith(f"{audio}: the file is damaged: ")]
     assert len(damage) == 1 and "s of its sound could not be decoded, at 1." in damage[0], document["warnings"]
+    # A WebM of one cluster scratched half way in: the demuxer skips the rest of the cluster, and
+    # the sound up to the track's stated 3.098 s is named as lost (it aligned on with silence,
+    # nothing said).
+    webm = damaged_copies.scratched_copy(AUDIO_DIR / "clip.webm", tmp_path / "scratched.webm", 1 / 2)
+    result = run("align", webm, transcript, "--json", "--quiet")
+    assert result.returncode == 0, result.stderr
+    damage = [w for w in json.loads(result.stdout)["warnings"] if w.startswith(f"{webm}: the file is damaged: ")]
+    assert len(damage) == 1 and "s of its sound could not be decoded, at 1.373-3.098 s" in damage[0], result.stdout
 
 
 def test_a_damaged_file_refused_names_the_damage_before_the_text(tmp_path):

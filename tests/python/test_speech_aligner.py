@@ -298,6 +298,12 @@ def test_a_damaged_file_warns_where_its_sound_was_lost_or_refuses_saying_so_firs
     with pytest.raises(talkface.AlignmentError, match=r"the file is damaged: 0\.\d+ s of its sound could not be "
                                                       r"decoded, at 0\.\d+-1\.\d+ s \(read as silence"):
         talkface.SpeechAligner().align_file(video, clip_transcript())
+    # A WebM of one cluster scratched half way in: the demuxer skips the rest of the cluster, and
+    # the sound up to the track's stated 3.098 s is named as lost.
+    webm = damaged_copies.scratched_copy(AUDIO_DIR / "clip.webm", tmp_path / "scratched.webm", 1 / 2)
+    aligned = talkface.SpeechAligner().align_file(webm, clip_transcript())
+    damage = [w for w in aligned.warnings if w.startswith(f"{webm}: the file is damaged: ")]
+    assert len(damage) == 1 and "s of its sound could not be decoded, at 1.373-3.098 s" in damage[0], aligned.warnings
 
 
 def test_a_stale_wav_header_is_read_whole_and_said(tmp_path):
