@@ -263,6 +263,9 @@ def make_cases(out, label, stem):
         case(name, path(name))
         scratched(path(name), path("scratched_" + name))
         case("scratched " + name, path("scratched_" + name))
+    # The same MP4 (+faststart: its index, the moov box, first) scratched inside its index.
+    scratched(path("clip.mp4"), path("scratched_index_clip.mp4"), share=1 / 100)
+    case("scratched clip.mp4 in its index (faststart)", path("scratched_index_clip.mp4"))
     # A WebM whose clusters are as long as the recording (FFmpeg's default 5 s clusters hold a short
     # clip or a voice message whole): a scratch half way in loses the rest of the cluster, and no
     # cluster after it says where the sound belonged.

@@ -96,18 +96,20 @@ public:
                                        "recorders and encoders write last; the file was cut while it was copied "
                                        "or recorded, or is still being written");
             if (opened == AVERROR(EIO) || opened == AVERROR_EOF) throw cut_in_header();
-            throw not_audio(ffmpeg_error_text(opened));
+            throw unreadable_index_or_not_audio(ffmpeg_error_text(opened));
         }
         format_.reset(raw);
         if (const int found = avformat_find_stream_info(format_.get(), nullptr); found < 0) {
             if (found == AVERROR(EIO) || found == AVERROR_EOF) throw cut_in_header();
-            throw not_audio(ffmpeg_error_text(found));
+            throw unreadable_index_or_not_audio(ffmpeg_error_text(found));
         }
         const int stream = av_find_best_stream(format_.get(), AVMEDIA_TYPE_AUDIO, -1, -1, nullptr, 0);
         if (stream < 0) {
             bool has_video = false;
             for (unsigned i = 0; i < format_->nb_streams; ++i)
                 has_video |= format_->streams[i]->codecpar->codec_type == AVMEDIA_TYPE_VIDEO;
+            if (const std::string damage = broken_index(); !damage.empty())
+                throw ParseError(path_, 0, 0, "", damage + ", and no sound track can be found in what is left of it");
             if (has_video) throw ParseError(path_, 0, 0, "", "a video without a sound track: nothing to align");
             throw not_audio("no audio stream in the " + std::string(format_->iformat->name) + " file");
         }
@@ -121,9 +123,13 @@ public:
         if (!codec_) throw std::bad_alloc();
         if (const int copied = avcodec_parameters_to_context(codec_.get(), parameters); copied < 0)
             throw not_audio(ffmpeg_error_text(copied));
-        if (const int ready = avcodec_open2(codec_.get(), codec, nullptr); ready < 0)
+        if (const int ready = avcodec_open2(codec_.get(), codec, nullptr); ready < 0) {
+            if (const std::string damage = broken_index(); !damage.empty())
+                throw ParseError(path_, 0, 0, "", damage + " (cannot decode its " + codec->name + " sound track: " +
+                                                       ffmpeg_error_text(ready) + ")");
             throw ParseError(path_, 0, 0, "", std::string("cannot decode its ") + codec->name + " sound track: " +
                                                    ffmpeg_error_text(ready));
+        }
         sample_rate_hz_ = codec_->sample_rate;
         if (sample_rate_hz_ <= 0 || codec_->ch_layout.nb_channels <= 0 || codec_->ch_layout.nb_channels > kMaxChannels)
             throw ParseError(path_, 0, 0, "", "unsupported sound track: " + std::to_string(codec_->ch_layout.nb_channels) +
@@ -138,6 +144,8 @@ public:
         if (!packet_ || !frame_) throw std::bad_alloc();
         // Decode up to the first samples now: a file that holds none is refused on opening.
         if (!decode_next_frame()) {
+            if (const std::string damage = broken_index(); !damage.empty())
+                throw ParseError(path_, 0, 0, "", damage + ", and its sound track decodes to no samples from what is left of it");
             if (last_refusal_ != 0) throw decode_error(last_refusal_);
             throw InvalidArgument(path_, "empty audio: the sound track decodes to no samples");
         }
@@ -175,6 +183,35 @@ private:
         return ParseError(path_, 0, 0, "",
                           "not audio talkface can read (WAV, FLAC, Ogg, MP3, AAC/M4A, Opus, AMR, or the sound track of an "
                           "MP4, MOV, MKV or WebM video): " + reason);
+    }
+
+    // What is wrong with an MP4-family file (MP4, M4A, MOV, 3GP) whose index (the moov box, at its
+    // start in a file written for streaming, "faststart") breaks inside its box structure, as a
+    // scratch or a bad sector there leaves it: "the file is damaged: its index (...) breaks at byte
+    // N". FFmpeg then finds no sound track ("a video without a sound track" was said of a damaged
+    // one), finds "Invalid data", or indexes less sound than the file states. Empty for any other
+    // file. Only asked once something has failed.
+    std::string broken_index() const {
+        const std::optional<Mp4Index> index = find_mp4_index(path_);
+        if (!index || !index->broken_at_byte) return {};
+        return "the file is damaged: its index (the moov box, bytes " + std::to_string(index->start_byte) + "-" +
+               std::to_string(index->end_byte) + ", which says where its sound and picture lie) breaks at byte " +
+               std::to_string(*index->broken_at_byte);
+    }
+
+    // FFmpeg cannot open a file: an MP4-family file with an index whose boxes hold together but
+    // whose tables FFmpeg refuses ("Invalid data": a scratch inside the table of sample sizes) is
+    // damaged there, as one whose boxes break is; anything else is no audio talkface reads.
+    ParseError unreadable_index_or_not_audio(const std::string& reason) const {
+        if (const std::string damage = broken_index(); !damage.empty())
+            return ParseError(path_, 0, 0, "", damage + " (" + reason + ")");
+        if (const std::optional<Mp4Index> index = find_mp4_index(path_))
+            return ParseError(path_, 0, 0, "",
+                              "its index (the moov box, bytes " + std::to_string(index->start_byte) + "-" +
+                                  std::to_string(index->end_byte) + ", which says where its sound and picture lie) "
+                                  "cannot be read: " + reason + "; the file is damaged there, or was written by a "
+                                  "program FFmpeg does not read");
+        return not_audio(reason);
     }
 
     // A reader that runs out of bytes inside the container's header (Matroska says "Input/output
@@ -259,6 +296,9 @@ private:
         if (stated_seconds_ <= 0.0) return;
         const double decoded_s = seconds_read();
         if (decoded_s >= stated_seconds_ - std::max(kLengthSlackS, kLengthSlackShare * stated_seconds_)) return;
+        if (const std::string damage = broken_index(); !damage.empty())
+            throw ParseError(path_, 0, 0, "", damage + ", and the sound it indexes ends at " + seconds_text(decoded_s) +
+                                                   " of the " + seconds_text(stated_seconds_) + " it states");
         throw FileError(path_, "truncated: its header says the sound lasts " + seconds_text(stated_seconds_) +
                                    " but the data ends at " + seconds_text(decoded_s));
     }

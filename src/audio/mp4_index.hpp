@@ -4,6 +4,8 @@
 #ifndef TALKFACE_AUDIO_MP4_INDEX_HPP
 #define TALKFACE_AUDIO_MP4_INDEX_HPP
 
+#include <cstdint>
+#include <optional>
 #include <string>
 
 namespace talkface::detail {
@@ -14,6 +16,22 @@ namespace talkface::detail {
 // copied or recorded, or one still being written, lacks it. False for anything else, including a
 // file that cannot be read (the caller reports that).
 bool is_mp4_without_index(const std::string& path);
+
+// Where an MP4-family file's index (its top-level "moov" box) lies, in bytes from the file's start,
+// and the first byte where its box structure breaks, if it does.
+struct Mp4Index {
+    std::uint64_t start_byte = 0;
+    std::uint64_t end_byte = 0;
+    std::optional<std::uint64_t> broken_at_byte;
+};
+
+// The index of a file that opens with an "ftyp" box and holds a "moov" box among its top-level
+// boxes; nullopt for anything else. The index's box structure is walked through the boxes that
+// hold boxes (trak, mdia, minf, stbl ...): a box whose type is not four characters, or whose size
+// runs past its parent's end or leaves part of it over, breaks it, as a scratch or a bad sector
+// inside the index leaves it (FFmpeg then finds no sound track, or "Invalid data"). A table's
+// entries are not checked, only the boxes around them.
+std::optional<Mp4Index> find_mp4_index(const std::string& path);
 
 }  // namespace talkface::detail
 

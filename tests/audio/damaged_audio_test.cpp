@@ -503,6 +503,27 @@ TEST_SUITE("audio") {
         }
     }
 
+    TEST_CASE("a scratch in an MP4's index is called damage there, not a video without sound or invalid data") {
+        // A file written for streaming (+faststart) has its index (moov) first, where a scratch hides
+        // the sound track ("a video without a sound track: nothing to align"), makes FFmpeg refuse
+        // the file ("not audio talkface can read: Invalid data found") or cuts its sound short
+        // ("truncated"). Each of these breaks the index's boxes, which the message names.
+        const std::string bytes = whole(kContainers[9]);
+        REQUIRE(bytes.substr(36, 4) == "moov");
+        for (const double share : {0.005, 0.02, 0.05, 0.1}) {
+            CAPTURE(share);
+            std::string scratched = bytes;
+            scratched.replace(static_cast<std::size_t>(static_cast<double>(bytes.size()) * share), 2000, random_bytes(2000, 3));
+            const std::string path = test::output_path("scratched_index_" + std::to_string(static_cast<int>(share * 1000)) + ".mp4");
+            write_bytes(path, scratched);
+            const Outcome outcome = read_and_analyse(path);
+            CHECK(outcome.threw);
+            CHECK_MESSAGE(outcome.message.find(path + ": the file is damaged: its index (the moov box, bytes 32-") == 0,
+                          outcome.message);
+            CHECK_MESSAGE(outcome.message.find(") breaks at byte ") != std::string::npos, outcome.message);
+        }
+    }
+
     TEST_CASE("an MKV cut to its header says what is wrong, naming the file") {
         const std::string bytes = whole(kContainers[11]);
         const std::string path = test::output_path("header_only.mkv");

@@ -547,6 +547,7 @@ static int test_damage_and_a_stale_header_are_said(void) {
     static const char scratched_m4a[] = TF_TEST_OUTPUT_DIR "/scratched_phone.m4a";
     static const char scratched_mp4[] = TF_TEST_OUTPUT_DIR "/scratched_clip.mp4";
     static const char scratched_webm[] = TF_TEST_OUTPUT_DIR "/scratched_clip.webm";
+    static const char scratched_index_mp4[] = TF_TEST_OUTPUT_DIR "/scratched_index_clip.mp4";
     static const char stale_wav[] = TF_TEST_OUTPUT_DIR "/stale_header.wav";
     int failures = 0;
     tf_timeline *transcript = NULL;
@@ -579,6 +580,14 @@ static int test_damage_and_a_stale_header_are_said(void) {
                          "s of its sound could not be decoded, at 1.373-3.098 s") == 1);
     tf_timeline_destroy(aligned);
     aligned = NULL;
+
+    /* 100 bytes scratched inside a video's index (moov, at the end of this file) hide its sound
+     * track: called damaged there, not "a video without a sound track". */
+    CHECK(write_damaged_copy(AUDIO_DIR "clip.mp4", scratched_index_mp4, 0.95, 100, 0));
+    CHECK_FAILS_WITH(tf_align_file(scratched_index_mp4, transcript, NULL, NULL, NULL, &aligned), TF_ERR_PARSE,
+                     "scratched_index_clip.mp4: the file is damaged: its index (the moov box, bytes 10710-12464, "
+                     "which says where its sound and picture lie) breaks at byte 11834, and no sound track");
+    CHECK(aligned == NULL);
 
     /* A recorder that stopped without bringing its header up to date: the data size states half. */
     CHECK(write_damaged_copy(kClipPath, stale_wav, 0.0, 0, 1));

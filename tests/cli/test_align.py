@@ -237,6 +237,19 @@ def test_a_video_without_sound_exits_1_saying_so():
     assert result.stderr.startswith(f"talkface: error: {audio}: a video without a sound track")
 
 
+def test_a_video_whose_index_is_damaged_is_called_damaged_not_soundless(tmp_path):
+    # 100 bytes scratched inside the index (moov, at the end of this file) hide its sound track:
+    # it was called "a video without a sound track".
+    audio = damaged_copies.scratched_copy(AUDIO_DIR / "clip.mp4", tmp_path / "scratched.mp4", 0.95, count=100)
+    _, transcript = clip("one_sentence")
+    result = run("align", audio, transcript, "--quiet")
+    assert result.returncode == 1
+    assert result.stderr.startswith(
+        f"talkface: error: {audio}: the file is damaged: its index (the moov box, bytes 10710-12464, which says "
+        "where its sound and picture lie) breaks at byte 11834, and no sound track can be found in what is left "
+        "of it"), result.stderr
+
+
 def test_lenient_aligns_a_text_a_word_off_and_reports_the_stretch(tmp_path):
     audio = CLIPS_DIR / "lenient_espeak.flac"  # says 公园, which this transcript lacks
     transcript = tmp_path / "lacks.txt"

@@ -306,6 +306,16 @@ def test_a_damaged_file_warns_where_its_sound_was_lost_or_refuses_saying_so_firs
     assert len(damage) == 1 and "s of its sound could not be decoded, at 1.373-3.098 s" in damage[0], aligned.warnings
 
 
+def test_a_video_whose_index_is_damaged_is_called_damaged_not_soundless(tmp_path):
+    # 100 bytes scratched inside the index (moov, at the end of this file) hide its sound track:
+    # it was called "a video without a sound track".
+    video = damaged_copies.scratched_copy(AUDIO_DIR / "clip.mp4", tmp_path / "scratched.mp4", 0.95, count=100)
+    with pytest.raises(talkface.ParseError, match=r"the file is damaged: its index \(the moov box, bytes 10710-12464, "
+                                                  r"which says where its sound and picture lie\) breaks at byte 11834, "
+                                                  r"and no sound track can be found"):
+        talkface.SpeechAligner().align_file(video, clip_transcript())
+
+
 def test_a_stale_wav_header_is_read_whole_and_said(tmp_path):
     # A recorder that stopped without bringing its header up to date: the data size states half.
     audio = damaged_copies.stale_wav_copy(CLIP, tmp_path / "stale.wav")
