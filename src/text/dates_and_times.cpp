@@ -34,6 +34,63 @@ bool speaks_of_duration(const std::vector<CodePoint>& text, std::size_t start) {
     return false;
 }
 
+bool names_place_in_recording(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    if (is_one_of(value_at(text, end), U"处處")) return true;
+    const std::string before = text_before(text, start, true);
+    for (const std::string_view word : {"进度条", "進度條", "时间轴", "時間軸", "时间线", "時間線", "拖到", "拉到", "跳到", "快进到",
+                                        "快轉到"})
+        if (before.find(word) != std::string::npos) return true;
+    return false;
+}
+
+namespace {
+
+// hh:mm:ss,mmm or hh:mm:ss.mmm (SRT, WebVTT) at text[i]; where it ends, or i.
+std::size_t past_cue_time(const std::vector<CodePoint>& text, std::size_t i) {
+    auto k = i;
+    for (int part = 0; part < 3; ++part) {
+        if (part > 0 && value_at(text, k++) != ':') return i;
+        if (digits_from(text, k).size() != 2) return i;
+    }
+    if (!is_one_of(value_at(text, k), U",.")) return i;
+    ++k;
+    return digits_from(text, k).size() == 3 ? k : i;
+}
+
+}  // namespace
+
+std::optional<std::size_t> past_subtitle_timing(const std::vector<CodePoint>& text, std::size_t start) {
+    // A lyric's time tag, [mm:ss] or [mm:ss.xx], in its brackets at the start of a line or after
+    // another tag ([00:12.00][01:30.00]); elsewhere a time in brackets is said (会议[12:30]开始).
+    const bool opens_line = start == 1 || (start >= 2 && is_one_of(value_at(text, start - 2), U"\n]"));
+    if (start > 0 && value_at(text, start - 1) == '[' && opens_line) {
+        auto k = start;
+        if (digits_from(text, k).size() == 2 && value_at(text, k) == ':') {
+            ++k;
+            if (digits_from(text, k).size() == 2) {
+                if (value_at(text, k) == '.') {
+                    ++k;
+                    const auto fraction = digits_from(text, k);
+                    if (fraction.empty() || fraction.size() > 3) return std::nullopt;
+                }
+                if (value_at(text, k) == ']') return k;
+            }
+        }
+        return std::nullopt;
+    }
+    // A cue's times, with the arrow and the second time where they follow.
+    auto end = past_cue_time(text, start);
+    if (end == start) return std::nullopt;
+    auto k = end;
+    while (value_at(text, k) == ' ') ++k;
+    if (text_between(text, k, k + 3) == "-->") {
+        k += 3;
+        while (value_at(text, k) == ' ') ++k;
+        if (const auto second = past_cue_time(text, k); second != k) end = second;
+    }
+    return end;
+}
+
 bool names_a_day(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
     const auto& digits = number.whole;
     if (number.has_point || number.has_separators || digits.size() < 3 || digits.size() > 4) return false;
@@ -111,9 +168,18 @@ std::optional<SpokenForm> read_clock_time(const std::vector<CodePoint>& text, co
     return form;
 }
 
+bool is_republic_year(const std::string& digits) {
+    return digits.size() == 3 && digits.front() == '1';
+}
+
+std::string said_year(const std::string& digits) {
+    return (is_republic_year(digits) ? cardinal_words(digits, false) : digit_words(digits)) + "年";
+}
+
 std::optional<SpokenForm> read_numeric_date(const std::vector<CodePoint>& text, const WrittenNumber& year) {
     const auto separator = value_at(text, year.end);
-    if (year.has_point || year.has_separators || year.whole.size() != 4 || !(separator == '-' || separator == '/')) {
+    if (year.has_point || year.has_separators || !(year.whole.size() == 4 || is_republic_year(year.whole)) ||
+        !(separator == '-' || separator == '/')) {
         return std::nullopt;
     }
     auto i = year.end + 1;
@@ -123,8 +189,16 @@ std::optional<SpokenForm> read_numeric_date(const std::vector<CodePoint>& text, 
     const auto day = digits_from(text, i);
     if (!is_month_and_day(month, day)) return std::nullopt;
     SpokenForm form;
-    form.words = digit_words(year.whole) + "年" + cardinal_words(month, false) + "月" + cardinal_words(day, false) + "日";
+    form.words = said_year(year.whole) + cardinal_words(month, false) + "月" + cardinal_words(day, false) + "日";
     form.end = i;
+    // A range of two such dates (113/09/01~113/09/30, 2026-12-01~2026-12-05): the mark is 到, as after
+    // any date (session 16; the mark was left to the second date, which it made a sign or skipped).
+    if (is_range_mark(value_at(text, i)) && is_digit_at(text, i + 1)) {
+        if (auto last = read_numeric_date(text, parse_number(text, i + 1))) {
+            form.words += "到" + last->words;
+            form.end = last->end;
+        }
+    }
     return form;
 }
 

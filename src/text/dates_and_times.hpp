@@ -27,6 +27,17 @@ bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t
 // a duration, 两小时零五分三十秒, 三分三十五秒, not a time of day.
 bool speaks_of_duration(const std::vector<CodePoint>& text, std::size_t start);
 
+// A place in a recording (视频1:23处 一分二十三秒处, 进度条拉到12:45): minutes and seconds, not a time of
+// day, where 处 follows the time or the clause speaks of a player's progress bar (进度条 时间轴 拉到 跳到).
+bool names_place_in_recording(const std::vector<CodePoint>& text, std::size_t start, std::size_t end);
+
+// A year of the Republic of China written with three digits (113 for 2024), as Taiwan dates its
+// papers (113/12/31, 113.10.15): counted, 一百一十三年, as 民國113年 is.
+bool is_republic_year(const std::string& digits);
+
+// A date's year as said: four digits one by one (二零二六年), a year of the Republic counted.
+std::string said_year(const std::string& digits);
+
 // A day named by its date's digits (520 五二零, 618大促 六一八大促, 今天是1111): three or four digits
 // that are a month and a day, a festival's or a sale's word right after them or a day's before
 // them (今天是). Elsewhere such a number counts (520人, 股价涨到了520).
@@ -48,7 +59,8 @@ bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNum
 std::optional<SpokenForm> read_clock_time(const std::vector<CodePoint>& text, const WrittenNumber& hour,
                                           bool duration = false);
 
-// 2026-12-01, 2026/12/1: a year, a month and a day.
+// 2026-12-01, 2026/12/1, and Taiwan's 113/12/31 (a year of the Republic): a year, a month and a day,
+// and a range of two of them (113/09/01~113/09/30 ... 到 ...).
 std::optional<SpokenForm> read_numeric_date(const std::vector<CodePoint>& text, const WrittenNumber& year);
 
 // Whether a range mark at `mark` follows a date or a clock time (9月1日-9月5日, 3点-5点, 12:00-14:00):

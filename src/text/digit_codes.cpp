@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string_view>
 
+#include "text/dates_and_times.hpp"
 #include "text/latin_words.hpp"
 #include "text/number_words.hpp"
 #include "text/web_addresses.hpp"
@@ -189,7 +190,10 @@ bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start) {
 bool is_filter_grade(const std::vector<CodePoint>& text, std::size_t start, const std::string& digits) {
     const auto capitals = model_name_before(text, start);
     const bool filter_class = capitals == "N" || capitals == "R" || capitals == "P" || capitals == "KN" || capitals == "KP";
-    return filter_class && (digits == "90" || digits == "95" || digits == "99");
+    // An enclosure's protection rating (IP68 IP六八, IP54): its two digits rate dust (0-6) and water
+    // (0-9) apart, and are said so (session 16: IP六十八).
+    const bool rates_protection = capitals == "IP" && digits.size() == 2 && digits.front() <= '6';
+    return rates_protection || (filter_class && (digits == "90" || digits == "95" || digits == "99"));
 }
 
 bool follows_glued_name(const std::vector<CodePoint>& text, std::size_t start) {
@@ -252,6 +256,12 @@ bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, 
 
 bool follows_software_name(const std::vector<CodePoint>& text, std::size_t start) {
     if (start == 0) return false;
+    // A version named as one (新版本13.24 十三点二十四, 版本号：2.3.10; session 16: 十三点二四).
+    auto word_end = start;
+    for (int skipped = 0; skipped < 2 && word_end > 0 && is_one_of(text[word_end - 1].value, U" 是为為：:"); ++skipped)
+        --word_end;
+    for (const std::string_view word : {"版本", "版本号", "版本號"})
+        if (ends_with(text_between(text, word_end >= 3 ? word_end - 3 : 0, word_end), word)) return true;
     if (is_one_of(value_at(text, start - 1), U"vV")) return start == 1 || !is_ascii_letter(value_at(text, start - 2));
     return value_at(text, start - 1) == ' ' && start >= 2 && is_ascii_letter(value_at(text, start - 2)) &&
            follows_glued_name(text, start - 1);
@@ -330,8 +340,12 @@ std::optional<SpokenForm> read_dotted_groups(const std::vector<CodePoint>& text,
     if (groups.size() < kFewestGroups) return std::nullopt;
     SpokenForm form;
     form.end = i;
-    if (groups.size() == 3 && groups[0].size() == 4 && is_month_and_day(groups[1], groups[2])) {
-        form.words = digit_words(groups[0]) + "年" + cardinal_words(groups[1], false) + "月" + cardinal_words(groups[2], false) + "日";
+    // A year of the Republic (113.10.15 一百一十三年十月十五日, as Taiwan's notices date them; session 16:
+    // a version, 一百一十三点十点十五), but not after a software's name (Firefox 115.3.1 is its version).
+    const bool dates = groups[0].size() == 4 || (is_republic_year(groups[0]) && !follows_software_name(text, start) &&
+                                                 !follows_glued_name(text, start));
+    if (groups.size() == 3 && dates && is_month_and_day(groups[1], groups[2])) {
+        form.words = said_year(groups[0]) + cardinal_words(groups[1], false) + "月" + cardinal_words(groups[2], false) + "日";
         return form;
     }
     const bool is_ip_address = groups.size() == 4 && std::all_of(groups.begin(), groups.end(), [](const std::string& group) {

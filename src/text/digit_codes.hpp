@@ -63,8 +63,8 @@ std::optional<SpokenForm> read_code_with_dash(const std::vector<CodePoint>& text
 bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start);
 
 // A respirator's filter grade (N95, KN95, P99: a class N R P KN KP and 90, 95 or 99, the share of
-// particles it stops): a grade's name, said digit by digit (N九五), where a model's two digits count
-// (G20 G二十).
+// particles it stops) or an enclosure's protection rating (IP68, IP54): a grade's name, said digit
+// by digit (N九五, IP六八), where a model's two digits count (G20 G二十).
 bool is_filter_grade(const std::vector<CodePoint>& text, std::size_t start, const std::string& digits);
 
 // Right after a word with a small letter, with nothing between (Tiger2024, user123): a user
@@ -88,7 +88,7 @@ bool follows_maker_name(const std::vector<CodePoint>& text, std::size_t start);
 bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
 
 // A version after a software's name and a space (Python 3.12, iOS 17.12: a word with a small
-// letter) or right after a v (v2.15, V3.12).
+// letter), right after a v (v2.15, V3.12) or after 版本 (新版本13.24, 版本号：2.3.10).
 bool follows_software_name(const std::vector<CodePoint>& text, std::size_t start);
 
 // The Chinese designation of an aircraft, a missile or a rocket before a hyphen (歼-20 歼二十, 运-20,

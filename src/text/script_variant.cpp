@@ -10,10 +10,14 @@ namespace {
 // word. Characters both scripts use (台 后 里 只) are left out, so that neither side counts them.
 constexpr std::u32string_view kSimplifiedOnly =
     U"们个这会说时国对学来为书点两万亿号电话几么还过请开门长东车见机关发经变种让钱湾气温与从体问题听欢乐买卖进华"
-    U"实现业务员语线区当报纸头应该条场动汉阳红风云飞鸟鱼马龙";
+    U"实现业务员语线区当报纸头应该条场动汉阳红风云飞鸟鱼马龙"
+    // Words of addresses, buildings and notices, so that a short line of Taiwan's or Hong Kong's
+    // (台北101大樓89F觀景台, 1樓大廳見) is told by them (session 16: it had none of the above).
+    U"楼观厅厦馆价际专询处码邮编统营厂层";
 constexpr std::u32string_view kTraditionalOnly =
     U"們個這會說時國對學來為書點兩萬億號電話幾麼還過請開門長東車見機關發經變種讓錢灣氣溫與從體問題聽歡樂買賣進華"
-    U"實現業務員語線區當報紙頭應該條場動漢陽紅風雲飛鳥魚馬龍";
+    U"實現業務員語線區當報紙頭應該條場動漢陽紅風雲飛鳥魚馬龍"
+    U"樓觀廳廈館價際專詢處碼郵編統營廠層";
 
 // The characters of the written forms' readings that Traditional writes otherwise.
 constexpr std::pair<std::string_view, std::string_view> kReadingCharacters[] = {

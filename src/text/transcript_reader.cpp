@@ -321,6 +321,11 @@ private:
             add_form(text, i, address->end, address_syllables(*address, c));
             return address->end;
         }
+        // A subtitle's or a lyric's timing is no speech: kept in the sentence's text, not said.
+        if (const auto timing_end = detail::past_subtitle_timing(text, i)) {
+            append_text(written_text(text, i, *timing_end));
+            return *timing_end;
+        }
         if (auto form = detail::read_number_form(text, i)) {
             form_warnings_ = timeline_.warnings.size();
             if (!form->warning.empty()) warn(c, "\"" + written_text(text, i, form->end) + "\": " + form->warning);

@@ -43,6 +43,78 @@ bool names_change(const std::vector<CodePoint>& text, std::size_t start) {
     return false;
 }
 
+// A 度 after a number measures degrees (两度) where the sentence speaks of a temperature (气温只有2度),
+// the clause of an angle (夹角是2度, 旋转2度), or an amount closes it (2度左右, 2度以上, 2度。); before a
+// burn's or a frostbite's word it grades the injury (2度烫伤 二度烫伤), and elsewhere it may count
+// times (2度夺冠 二度夺冠), so it stays 二 (session 16; 2度 was always 二度).
+bool measures_degrees(const std::vector<CodePoint>& text, std::size_t start, std::size_t degree) {
+    if (value_at(text, degree) != U'度') return false;
+    const std::string after = text_between(text, degree + 1, degree + 3);
+    for (const std::string_view injury : {"烧伤", "燒傷", "烫伤", "燙傷", "灼伤", "灼傷", "冻伤", "凍傷"})
+        if (after == injury) return false;
+    if (speaks_of_temperature(text, start)) return true;
+    const std::string before = text_before(text, start, true);
+    for (const std::string_view angle : {"角", "旋转", "旋轉", "转", "轉", "偏", "倾斜", "傾斜", "斜"})
+        if (before.find(angle) != std::string::npos) return true;
+    for (const std::string_view amount : {"左右", "以上", "以下", "以内", "以內", "之间", "之間", "的"})
+        if (after.rfind(amount, 0) == 0) return true;
+    constexpr std::u32string_view kClauseEnds = U"，,。.！!？?；;、)）";
+    return degree + 1 >= text.size() || kClauseEnds.find(text[degree + 1].value) != std::u32string_view::npos;
+}
+
+// A game's record of kills, deaths and assists (战绩0-10, KDA 5-2-10), each part said with 杠 between, as
+// players read it out (零杠十; session 16: a range, 零到十). Up to three parts of one or two digits,
+// where 战绩 or KDA stands earlier in the clause.
+std::optional<SpokenForm> read_game_record(const std::vector<CodePoint>& text, std::size_t start,
+                                           const WrittenNumber& first) {
+    constexpr std::size_t kMostParts = 3;
+    constexpr std::size_t kMostDigits = 2;
+    if (first.has_point || first.has_separators || first.whole.size() > kMostDigits) return std::nullopt;
+    const std::string before = text_before(text, start, true);
+    if (before.find("战绩") == std::string::npos && before.find("戰績") == std::string::npos &&
+        before.find("KDA") == std::string::npos) {
+        return std::nullopt;
+    }
+    SpokenForm form;
+    form.words = cardinal_words(first.whole, false);
+    auto i = first.end;
+    std::size_t parts = 1;
+    while (parts < kMostParts && is_dash(value_at(text, i)) && is_digit_at(text, i + 1)) {
+        auto k = i + 1;
+        const auto part = digits_from(text, k);
+        if (part.size() > kMostDigits || value_at(text, k) == '.') break;
+        form.words += "杠" + cardinal_words(part, false);
+        i = k;
+        ++parts;
+    }
+    if (parts < 2 || is_digit_at(text, i) || is_dash(value_at(text, i))) return std::nullopt;
+    form.end = i;
+    return form;
+}
+
+bool is_han(char32_t c) {
+    return (c >= 0x4E00 && c <= 0x9FFF) || (c >= 0x3400 && c <= 0x4DBF);
+}
+
+// A result between two teams' names (曼城2-1阿森纳, 上海海港3-3北京国安, 皇马3-0巴萨): a range is written
+// from its low end up, so two whole numbers that fall or stay level between two names are a score
+// (session 16; they were a range, 二到一). Not after 第, nor before a measure word or a word of a
+// date, a time, a floor or a degree (3-1日, 5-3楼).
+bool is_result_between_names(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& first,
+                             const WrittenNumber& second) {
+    if (first.has_point || first.has_separators || second.has_point || second.has_separators || start == 0) return false;
+    const auto before = text[start - 1].value;
+    const auto after = value_at(text, second.end);
+    if (!is_han(before) || before == U'第' || !is_han(after) || takes_liang(after) ||
+        is_one_of(after, U"年月日号號时時点點分秒度楼樓层層室栋棟届屆期")) {
+        return false;
+    }
+    const auto first_value = first.whole.size() <= kMostCardinalDigits ? std::stoull(first.whole) : 0;
+    const auto second_value = second.whole.size() <= kMostCardinalDigits ? std::stoull(second.whole) : 1;
+    return first.whole.size() <= kMostCardinalDigits && second.whole.size() <= kMostCardinalDigits &&
+           first_value >= second_value;
+}
+
 // Whether text[start, end) stands alone as a clause: at the start of the text or after a mark that
 // ends a clause (not a colon, which introduces a value), and before one or the end.
 bool stands_alone(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
@@ -79,6 +151,7 @@ struct NumberContext {
     bool names_year = false;     // a year before a word it names (2025财年, 2026款)
     bool after_laugh = false;    // right after a laugh's character (哈哈233)
     bool is_whole_clause = false;  // the number alone between clause marks (88，下次再聊)
+    bool measures_degrees = false;  // before a 度 of a temperature or an angle (2度左右 两度)
 };
 
 struct SaidNumber {
@@ -190,7 +263,8 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
             return said;
         }
     }
-    if (whole == "2" && !context.is_ordinal && !context.is_model && (context.has_unit || takes_liang(context.next))) {
+    if (whole == "2" && !context.is_ordinal && !context.is_model &&
+        (context.has_unit || takes_liang(context.next) || context.measures_degrees)) {
         said.words = "两";
         return said;
     }
@@ -286,7 +360,11 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         auto second = parse_number(text, number.end + 1);
         if (!is_score(text, start, second.end)) {
             if (auto time = read_race_time(number, second)) return time;
-            if (auto time = read_clock_time(text, number, speaks_of_duration(text, start))) return time;
+            // The end of the time's last part (1:23处, 1:02:03处), where a place in a recording names itself.
+            auto time_end = second.end;
+            while (value_at(text, time_end) == ':' && is_digit_at(text, time_end + 1)) time_end = parse_number(text, time_end + 1).end;
+            const bool duration = speaks_of_duration(text, start) || names_place_in_recording(text, start, time_end);
+            if (auto time = read_clock_time(text, number, duration)) return time;
         }
         return join_two(second, "比", context);
     }
@@ -311,13 +389,15 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (auto floor = read_floor(text, i, number)) return floor;
         if (auto date = read_numeric_date(text, number)) return date;
         if (auto season = read_season(text, number)) return season;
+        if (auto record = read_game_record(text, start, number)) return record;
         if (auto digits = read_dashed_digits(text, number, context.is_phone)) return digits;
         if (auto code = read_code_with_dash(text, number)) return code;
         if (is_dash(value_at(text, number.end)) && is_digit_at(text, number.end + 1)) {
             auto second = parse_number(text, number.end + 1);
             // A measure word after the pair makes it a range (3-5天后获胜), whatever the clause says.
             const bool may_be_listed_score = !takes_liang(value_at(text, second.end));
-            if (is_score(text, start, second.end, may_be_listed_score)) return join_two(second, "比", {});
+            if (is_score(text, start, second.end, may_be_listed_score) || is_result_between_names(text, start, number, second))
+                return join_two(second, "比", {});
             if (relation_follows(text, second.end)) return join_two(second, "减", {});  // 5-3=2
         }
     }
@@ -401,6 +481,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         }
     }
     context.has_unit = power_words.empty() && ((unit != nullptr && unit->written != "%") || is_byte_unit_at(text, end));
+    context.measures_degrees = unit == nullptr && power_words.empty() && measures_degrees(text, start, end);
     std::string unit_words = unit == nullptr ? "" : unit->words;
     const bool is_percent = unit != nullptr && unit->written == "%";
     const bool is_per_mille = end < text.size() && text[end].value == 0x2030 /*‰*/;

@@ -32,6 +32,13 @@ struct SpokenForm {
 // word earlier in the sentence (电话, 號碼: digits are said one by one, 1 as 幺).
 std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, std::size_t start);
 
+// A subtitle's or a lyric's timing at text[start], which is no speech and is not said: a cue's
+// times, hh:mm:ss,mmm (SRT) or hh:mm:ss.mmm (WebVTT), with the arrow and the second time after it
+// (00:01:23,450 --> 00:01:25,900), or a lyric's time tag inside its brackets ([00:12.50], LRC).
+// Where the timing ends, or nullopt (session 16: they were read as clock times, 零点零一分...).
+// Defined in dates_and_times.cpp.
+std::optional<std::size_t> past_subtitle_timing(const std::vector<CodePoint>& text, std::size_t start);
+
 // The slash at text[i] between a byte unit after a number and a unit symbol (7,000MB/s 七千 MB 每秒,
 // 1GB/s): 每 and the unit's words, as the Latin reader says the byte unit's letters before it;
 // nullopt elsewhere.

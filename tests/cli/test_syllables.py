@@ -127,3 +127,21 @@ def test_news_forms_show_what_they_became(tmp_path):
     document = json.loads(run("syllables", path, "--json").stdout)
     assert [f["text"] for f in document["written_forms"]] == ["00700.HK", "2F"]
     assert "".join(s["text"] for s in document["syllables"]) == "腾讯控股零零七零零的门店在二楼"
+
+
+def test_subtitle_timings_video_places_scores_and_degrees(tmp_path):
+    # Session 16: a lyric's time tag is not said, a place in a video is minutes and seconds, a falling
+    # score between two teams is a score, 2度 of weather is 两度, and a short line of Taiwan's shows 樓.
+    path = write(tmp_path, "[00:12.50]视频1:23处，曼城2-1阿森纳，气温只有2度。")
+    plain = run("syllables", path)
+    assert plain.returncode == 0, plain.stderr
+    assert "1:23 -> 一分二十三秒\tyi1 fen1 er4 shi2 san1 miao3" in plain.stdout
+    assert "2-1 -> 二比一\ter4 bi3 yi1" in plain.stdout
+    assert "2 -> 两\tliang3" in plain.stdout
+    document = json.loads(run("syllables", path, "--json").stdout)
+    assert document["sentences"][0]["text"].startswith("[00:12.50]视频")
+    assert [f["text"] for f in document["written_forms"]] == ["1:23", "2-1", "2"]
+    assert document["syllables"][0]["text"] == "视"
+    taiwan = run("syllables", write(tmp_path, "台北101大樓89F觀景台，113/12/31截止。"))
+    assert "89F -> 八十九樓\tba1 shi2 jiu3 lou2" in taiwan.stdout
+    assert "113/12/31 -> 一百一十三年十二月三十一日" in taiwan.stdout

@@ -77,6 +77,17 @@ def test_news_forms_read_as_newsreaders_say_them():
     assert timeline.warnings == []
 
 
+def test_game_records_ratings_dates_of_the_republic_and_versions():
+    # Session 16: a game's record with 杠, an IP rating digit by digit, Taiwan's 113.10.15, a version after 版本.
+    timeline = talkface.read_transcript("戰績0-10。防水等級IP68。113.10.15公告。新版本13.24。")
+    assert [f.text for f in timeline.written_forms] == ["0-10", "IP", "68", "113.10.15", "13.24"]
+    assert "".join(s.text for s in timeline.syllables) == "戰績零杠十防水等級aipi六八一百一十三年十月十五日公告新版本十三点二十四"
+    assert timeline.warnings == []
+    cue = talkface.read_transcript("00:01:23,450 --> 00:01:25,900 你终于来了")
+    assert [s.text for s in cue.syllables] == ["你", "终", "于", "来", "了"]
+    assert cue.sentences[0].text.startswith("00:01:23,450 -->")
+
+
 def test_full_width_letters_are_read_as_their_ascii_forms():
     timeline = talkface.read_transcript("公司的ＣＥＯ说，ＧＤＰ增长５．３％。")
     assert [f.text for f in timeline.written_forms] == ["ＣＥＯ", "ＧＤＰ", "５．３％"]

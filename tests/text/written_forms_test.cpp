@@ -925,6 +925,48 @@ TEST_SUITE("written forms") {
         CHECK(said("会议在2F{二楼}") == "会议在二楼");
     }
 
+    TEST_CASE("subtitles' timings, a place in a video, scores between teams, a game's record, versions, IP ratings, the Republic's dates, 2度") {
+        // Each row failed on main e095aa7 but the ones that show the rule's limits (session 16, dev6's tuning misses).
+        check_cases({
+            {"[00:12.50]我们一起走过的路", "我们一起走过的路"},
+            {"[00:12.00][01:30.00]副歌", "副歌"},
+            {"00:01:23,450 --> 00:01:25,900 你终于来了", "你终于来了"},
+            {"00:00:01.000 --> 00:00:04.000 你好", "你好"},
+            {"会议[12:30]开始", "会议十二点三十分开始"},
+            {"视频1:23处有彩蛋", "视频一分二十三秒处有彩蛋"},
+            {"进度条拉到12:45", "进度条拉到十二分四十五秒"},
+            {"下午3:30开会", "下午三点三十分开会"},
+            {"英超第20轮：曼城2-1阿森纳", "英超第二十轮曼城二比一阿森纳"},
+            {"上海海港3-3北京国安", "上海海港三比三北京国安"},
+            {"增长了2-3倍", "增长了两到三倍"},
+            {"连续5-3天", "连续五到三天"},
+            {"战绩0-10，带不动", "战绩零杠十带不动"},
+            {"这把战绩5-2-10", "这把战绩五杠二杠十"},
+            {"每周5-10次", "每周五到十次"},
+            {"新版本13.24更新了", "新版本十三点二十四更新了"},
+            {"蓝牙版本升级到5.3", "蓝牙版本升级到五点三"},
+            {"防水等级IP68", "防水等级 ai pi六八"},
+            {"申請期限至113/12/31止", "申請期限至一百一十三年十二月三十一日止"},
+            {"113.10.15公告", "一百一十三年十月十五日公告"},
+            {"2026-12-01~2026-12-05", "二零二六年十二月一日到二零二六年十二月五日"},
+            {"升级到v115.3.1", "升级到 wei一百一十五点三点一"},
+            {"今天最低气温只有2度", "今天最低气温只有两度"},
+            {"夹角是2度", "夹角是两度"},
+            {"路面温度下降2度左右", "路面温度下降两度左右"},
+            {"他的手臂是2度烫伤", "他的手臂是二度烫伤"},
+            {"他2度夺冠", "他二度夺冠"},
+        });
+        // A short line of Taiwan's shows its readings in Traditional characters (樓, not 楼).
+        CHECK(said("台北101大樓89F觀景台") == "台北一零一大樓八十九樓觀景台");
+        CHECK(said("1樓大廳見") == "一樓大廳見");
+        // The timing stays in the sentence's text; nothing of it is said or warned about.
+        const auto cue = read_transcript("00:01:23,450 --> 00:01:25,900 你终于来了");
+        CHECK(cue.sentences.at(0).text == "00:01:23,450 --> 00:01:25,900 你终于来了");
+        CHECK(cue.syllables.size() == 5);
+        CHECK(cue.warnings.empty());
+        CHECK(said("今天最低气温只有2{二}度") == "今天最低气温只有二度");
+    }
+
     TEST_CASE("a fix right after a written form replaces its reading, in characters or pinyin") {
         CHECK(said("2026{两千零二十六}年") == "两千零二十六年");
         CHECK(pinyin_of("OK{ou1 kei4}") == "ou1 kei4");
