@@ -117,14 +117,19 @@ def test_a_missing_transcript_is_a_usage_error(tmp_path):
     assert run("syllables", tmp_path / "missing.txt").returncode == 2
 
 
-def test_news_forms_show_what_they_became(tmp_path):
-    # Session 15: a stock code's exchange suffix is not said, a floor written nF is n楼.
-    path = write(tmp_path, "腾讯控股（00700.HK）的门店在2F。")
+def listing_and_document(tmp_path, text):
+    """`talkface syllables` on a transcript of `text`: the plain listing and the --json document."""
+    path = write(tmp_path, text)
     plain = run("syllables", path)
     assert plain.returncode == 0, plain.stderr
-    assert "00700.HK -> 零零七零零\tling2 ling2 qi1 ling2 ling2" in plain.stdout
-    assert "2F -> 二楼\ter4 lou2" in plain.stdout
-    document = json.loads(run("syllables", path, "--json").stdout)
+    return plain.stdout, json.loads(run("syllables", path, "--json").stdout)
+
+
+def test_news_forms_show_what_they_became(tmp_path):
+    # Session 15: a stock code's exchange suffix is not said, a floor written nF is n楼.
+    plain, document = listing_and_document(tmp_path, "腾讯控股（00700.HK）的门店在2F。")
+    assert "00700.HK -> 零零七零零\tling2 ling2 qi1 ling2 ling2" in plain
+    assert "2F -> 二楼\ter4 lou2" in plain
     assert [f["text"] for f in document["written_forms"]] == ["00700.HK", "2F"]
     assert "".join(s["text"] for s in document["syllables"]) == "腾讯控股零零七零零的门店在二楼"
 
@@ -132,16 +137,13 @@ def test_news_forms_show_what_they_became(tmp_path):
 def test_subtitle_timings_video_places_scores_and_degrees(tmp_path):
     # Session 16: a lyric's time tag is not said, a place in a video is minutes and seconds, a falling
     # score between two teams is a score, 2度 of weather is 两度, and a short line of Taiwan's shows 樓.
-    path = write(tmp_path, "[00:12.50]视频1:23处，曼城2-1阿森纳，气温只有2度。")
-    plain = run("syllables", path)
-    assert plain.returncode == 0, plain.stderr
-    assert "1:23 -> 一分二十三秒\tyi1 fen1 er4 shi2 san1 miao3" in plain.stdout
-    assert "2-1 -> 二比一\ter4 bi3 yi1" in plain.stdout
-    assert "2 -> 两\tliang3" in plain.stdout
-    document = json.loads(run("syllables", path, "--json").stdout)
+    plain, document = listing_and_document(tmp_path, "[00:12.50]视频1:23处，曼城2-1阿森纳，气温只有2度。")
+    assert "1:23 -> 一分二十三秒\tyi1 fen1 er4 shi2 san1 miao3" in plain
+    assert "2-1 -> 二比一\ter4 bi3 yi1" in plain
+    assert "2 -> 两\tliang3" in plain
     assert document["sentences"][0]["text"].startswith("[00:12.50]视频")
     assert [f["text"] for f in document["written_forms"]] == ["1:23", "2-1", "2"]
     assert document["syllables"][0]["text"] == "视"
-    taiwan = run("syllables", write(tmp_path, "台北101大樓89F觀景台，113/12/31截止。"))
-    assert "89F -> 八十九樓\tba1 shi2 jiu3 lou2" in taiwan.stdout
-    assert "113/12/31 -> 一百一十三年十二月三十一日" in taiwan.stdout
+    taiwan, _ = listing_and_document(tmp_path, "台北101大樓89F觀景台，113/12/31截止。")
+    assert "89F -> 八十九樓\tba1 shi2 jiu3 lou2" in taiwan
+    assert "113/12/31 -> 一百一十三年十二月三十一日" in taiwan
