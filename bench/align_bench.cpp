@@ -700,6 +700,7 @@ struct LenientCount {
     int right_syllables = 0, right_marked = 0;  ///< right texts' syllables, and those a mismatch names
     int right_generic = 0;                      ///< "speech the transcript lacks" marks on right texts
     int words = 0, whole = 0, in_part = 0;      ///< changed words, and those found
+    int exact = 0;                              ///< words found whole whose marks name no other syllable
     int other_syllables = 0, other_marked = 0;  ///< the changed texts' other syllables, and those named
     int other_generic = 0;                      ///< marks on changed texts that neither name nor overlap the word
     std::vector<double> start_errors_s, end_errors_s;  ///< of the marks over a word found
@@ -710,7 +711,7 @@ struct LenientCount {
     void add(const LenientCount& other) {
         using C = LenientCount;
         add_fields(*this, other, &C::right_syllables, &C::right_marked, &C::right_generic, &C::words, &C::whole,
-                   &C::in_part, &C::other_syllables, &C::other_marked, &C::other_generic, &C::start_errors_s,
+                   &C::in_part, &C::exact, &C::other_syllables, &C::other_marked, &C::other_generic, &C::start_errors_s,
                    &C::end_errors_s, &C::lacking, &C::lacking_found, &C::lacking_syllables, &C::lacking_marked,
                    &C::lacking_generic, &C::lacking_start_errors_s, &C::lacking_end_errors_s);
     }
@@ -757,10 +758,10 @@ void print_lenient_row(const std::string& condition, const LenientCount& count) 
         std::sort(values.begin(), values.end());
         return format_fixed(1000.0 * values[values.size() / 2], 0);
     };
-    std::printf("%-16s %5d/%-5d %6s %4d | %4d/%-4d %4d %4d  %5d/%-5d %6s %4d  %5s %5s | %4d/%-4d %5d/%-5d %4d  %5s %5s\n",
+    std::printf("%-16s %5d/%-5d %6s %4d | %4d/%-4d %4d %4d %5d  %5d/%-5d %6s %4d  %5s %5s | %4d/%-4d %5d/%-5d %4d  %5s %5s\n",
                 condition.c_str(), count.right_marked, count.right_syllables,
                 share(count.right_marked, count.right_syllables).c_str(), count.right_generic, count.whole, count.words,
-                count.in_part, count.words - count.whole - count.in_part, count.other_marked, count.other_syllables,
+                count.in_part, count.words - count.whole - count.in_part, count.exact, count.other_marked, count.other_syllables,
                 share(count.other_marked, count.other_syllables).c_str(), count.other_generic,
                 median_ms(count.start_errors_s).c_str(), median_ms(count.end_errors_s).c_str(), count.lacking_found,
                 count.lacking, count.lacking_marked, count.lacking_syllables, count.lacking_generic,
@@ -838,6 +839,7 @@ int run_lenient(const fs::path& corpus, const std::string& only, const std::stri
                 ++count.words;
                 count.other_syllables += static_cast<int>(result.syllables.size()) - 2;
                 bool names[2] = {false, false};
+                bool names_beside = false;  // a mismatch that names the word names another syllable too
                 double first_s = std::numeric_limits<double>::infinity(), last_s = -first_s;
                 bool is_hit = false;
                 for (const auto& mismatch : result.mismatches) {
@@ -848,6 +850,7 @@ int run_lenient(const fs::path& corpus, const std::string& only, const std::stri
                         if (i == word || i == word + 1) names[i - word] = true;
                         else ++count.other_marked;
                     }
+                    if (covers && (mismatch.first_syllable < word || end > word + 2)) names_beside = true;
                     if (covers || overlaps) {
                         is_hit = true;
                         first_s = std::min(first_s, mismatch.start_s);
@@ -858,6 +861,7 @@ int run_lenient(const fs::path& corpus, const std::string& only, const std::stri
                 }
                 if (names[0] && names[1]) ++count.whole;
                 else if (is_hit) ++count.in_part;
+                if (names[0] && names[1] && !names_beside) ++count.exact;
                 // Every word not found whole is named, with the marks made, to read them.
                 if (!(names[0] && names[1])) {
                     std::cerr << "align_bench: " << (is_hit ? "in part" : "missed") << ": " << audio_path.string() << " sentence "
@@ -906,15 +910,16 @@ int run_lenient(const fs::path& corpus, const std::string& only, const std::stri
                 "two neighbouring characters near its middle changed into another word (%s, %s, %s, %s in turn).\n"
                 "right: syllables a mismatch names on the right texts (false marks), and marks of speech the\n"
                 "transcript lacks; changed words found whole (both syllables named), in part (one named, or a mark\n"
-                "over the word's true span naming neither) or missed; the changed texts' other syllables named\n"
-                "(false marks) and their marks elsewhere; the median start and end error (ms) of the marks found.\n"
+                "over the word's true span naming neither) or missed, and exact: whole, its mismatch naming no other\n"
+                "syllable; the changed texts' other syllables named (false marks) and their marks elsewhere; the\n"
+                "median start and end error (ms) of the marks found.\n"
                 "lacking: the same word left out of the text, found where a mark overlaps its true span; the\n"
                 "syllables a mismatch names there (all right ones), marks elsewhere, errors of the marks found.\n",
                 corpus.string().c_str(), substitutes[0], substitutes[1], substitutes[2], substitutes[3]);
     for (const char* set : sets) {
         if (counts.find(set) == counts.end()) continue;
-        std::printf("\n%s\n%-16s %11s %6s %4s | %9s %4s %4s  %11s %6s %4s  %5s %5s | %9s %11s %4s  %5s %5s\n", set,
-                    "condition", "right named", "", "lack", "changed", "part", "miss", "others named", "", "else", "start",
+        std::printf("\n%s\n%-16s %11s %6s %4s | %9s %4s %4s %5s  %11s %6s %4s  %5s %5s | %9s %11s %4s  %5s %5s\n", set,
+                    "condition", "right named", "", "lack", "changed", "part", "miss", "exact", "others named", "", "else", "start",
                     "end", "lacking", "named", "else", "start", "end");
         LenientCount total;
         for (const auto& condition : conditions) {

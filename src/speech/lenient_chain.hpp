@@ -44,7 +44,9 @@ void add_rival_shares(const SentenceChain& lenient, const std::vector<StateSegme
 // held_out_fit_gaps on the plain path; NaN or missing: not judged so) of kMinHeldOutGapSkipped. A
 // person's syllable that fits the models a little worse than most, in a right text, costs less
 // skipped than fitted, yet on the plain path it fits within the chain's usual spread, or, where it
-// is an outlier, still better than nearly every unlike syllable; a changed word does neither.
+// is an outlier, still better than nearly every unlike syllable; a changed word does neither. Of
+// a run kept, the syllables at its ends that gap under kMinHeldOutGapAtEdge (from each end inward)
+// are returned too: right neighbours the path skipped with a changed word.
 std::vector<std::size_t> unsupported_skips(const SentenceChain& lenient, const std::vector<StateSegment>& path,
                                            const std::vector<double>& plain_fits, const std::vector<double>& rival_shares,
                                            const std::vector<double>& held_out_gaps);
@@ -69,9 +71,9 @@ bool takes_text_whole(const SentenceChain& lenient, const std::vector<StateSegme
 // searches' frames_on_path) included; and for each stretch the path fits with generic speech or
 // skips: a TextMismatch in result.mismatches and a warning, its syllables spread over the stretch
 // at its loudness dips with confidence 0 (not measured: set_confidences leaves them so). A
-// syllable beside a skipped one whose fit on `path` is an outlier of the chain's, or whose held-out
-// gap (`held_out_gaps`, as unsupported_skips takes them) is above kMinHeldOutGapBeside, joins its
-// mismatch.
+// syllable beside a skipped one whose fit on `path` is an outlier of the chain's and whose held-out
+// gap (`held_out_gaps`, as unsupported_skips takes them) is not under kMinHeldOutGapAtEdge, or
+// whose held-out gap is above kMinHeldOutGapBeside, joins its mismatch.
 void place_lenient(const SentenceChain& chain, std::size_t chain_index, const std::vector<StateSegment>& path,
                    const std::vector<std::vector<SyllableFrames>>& other_frames, const std::vector<double>& held_out_gaps, const EmissionScores& scores,
                    const FeatureTrack& track, const LoudnessProfile& loudness, Timeline& result,
