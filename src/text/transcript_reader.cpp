@@ -97,6 +97,24 @@ bool marks_choice(const std::vector<CodePoint>& text, std::size_t i) {
     return next >= 0x3400 && next <= 0x9FFF;
 }
 
+// The dot after a list item's number (积分榜：1.利物浦 68分 2.阿森纳 65分, as a table or a list numbers its
+// rows): one or two digits at the start of a line or after a space or a colon, the dot, and a Chinese
+// character right after it. It ends no sentence and is not said (session 16: the table was cut into a
+// sentence at each row). A number after a word (增长了3.接下来) still ends its sentence.
+bool marks_list_item(const std::vector<CodePoint>& text, std::size_t i) {
+    constexpr std::size_t kMostDigits = 2;
+    if (ascii_form(text[i].value) != '.' || i == 0 || i + 1 >= text.size()) return false;
+    auto k = i;
+    while (k > 0 && i - k < kMostDigits + 1 && ascii_form(text[k - 1].value) >= '0' && ascii_form(text[k - 1].value) <= '9') --k;
+    if (k == i || i - k > kMostDigits) return false;
+    if (k > 0) {
+        const auto before = ascii_form(text[k - 1].value);
+        if (!(before == '\n' || before == ' ' || before == ':' || before == 0x3000)) return false;
+    }
+    const auto next = text[i + 1].value;
+    return next >= 0x3400 && next <= 0x9FFF;
+}
+
 // A # that opens or closes a topic (#春节快乐#, as Weibo and other posts mark one): a bracket, not
 // said; the topic between them is read. A # with no partner on its line (#5) is still a symbol.
 bool marks_topic(const std::vector<CodePoint>& text, std::size_t i) {
@@ -357,7 +375,7 @@ private:
             add_form(text, i, i + 1, read_words(std::string(sign)));
             return i + 1;
         }
-        if (marks_choice(text, i)) {
+        if (marks_choice(text, i) || marks_list_item(text, i)) {
             append_text(c.text);
             return i + 1;
         }

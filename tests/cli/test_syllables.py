@@ -147,3 +147,5 @@ def test_subtitle_timings_video_places_scores_and_degrees(tmp_path):
     taiwan, _ = listing_and_document(tmp_path, "台北101大樓89F觀景台，113/12/31截止。")
     assert "89F -> 八十九樓\tba1 shi2 jiu3 lou2" in taiwan
     assert "113/12/31 -> 一百一十三年十二月三十一日" in taiwan
+    _, table = listing_and_document(tmp_path, "积分榜：1.利物浦 68分 2.阿森纳 65分")
+    assert [s["text"] for s in table["sentences"]] == ["积分榜：1.利物浦 68分 2.阿森纳 65分"]

@@ -968,6 +968,11 @@ TEST_SUITE("written forms") {
         CHECK(cue.syllables.size() == 5);
         CHECK(cue.warnings.empty());
         CHECK(said("今天最低气温只有2{二}度") == "今天最低气温只有二度");
+        // A list item's number and its dot end no sentence (a results table's rows); after a word they do.
+        const auto table = read_transcript("积分榜：1.利物浦 68分 2.阿森纳 65分");
+        CHECK(table.sentences.size() == 1);
+        CHECK(said(table) == "积分榜一利物浦六十八分二阿森纳六十五分");
+        CHECK(read_transcript("今年增长了3.接下来看天气").sentences.size() == 2);
     }
 
     TEST_CASE("a fix right after a written form replaces its reading, in characters or pinyin") {
