@@ -286,6 +286,12 @@ def make_cases(out, label, stem):
     case("scratched voice.ogg in its first page of sound", path("scratched_start_voice.ogg"))
     scratched(path("voice.opus"), path("scratched_voice.opus"))
     case("scratched voice.opus", path("scratched_voice.opus"))
+    # The same from 40 bytes into a page near its end (the fourth from last), inside the page's
+    # segment table: the header then claims more bytes than the file holds.
+    opus = open(path("voice.opus"), "rb").read()
+    pages = [at for at in range(len(opus)) if opus.startswith(b"OggS", at)]
+    scratched(path("voice.opus"), path("scratched_header_voice.opus"), share=(pages[-4] + 40) / len(opus))
+    case("scratched voice.opus in a page's header near its end", path("scratched_header_voice.opus"))
     scratched(path("phone.m4a"), path("scratched_phone.m4a"))
     case("scratched phone.m4a", path("scratched_phone.m4a"))
     scratched(path("cover.mp3"), path("scratched_cover.mp3"))

@@ -103,20 +103,46 @@ bool is_sndfile_container(const std::array<char, 12>& header) {
            start.substr(0, 4) == "dns." || start.substr(0, 4) == "caff" || start.substr(0, 4) == "OggS";
 }
 
+// Whether `bytes` hold a whole Ogg page (its CRC checked) anywhere.
+bool holds_ogg_page(const char* bytes, std::size_t count) {
+    ogg_sync_state sync;
+    ogg_sync_init(&sync);
+    char* buffer = ogg_sync_buffer(&sync, static_cast<long>(count));
+    bool found = false;
+    if (buffer != nullptr) {
+        std::memcpy(buffer, bytes, count);
+        ogg_sync_wrote(&sync, static_cast<long>(count));
+        ogg_page page;
+        for (long seek = 0; !found && (seek = ogg_sync_pageseek(&sync, &page)) != 0;) found = seek > 0;
+    }
+    ogg_sync_clear(&sync);
+    return found;
+}
+
+// What a walk over an Ogg file's pages found damaged.
+struct OggDamage {
+    // The byte where a page begins whose header claims more bytes than the file holds (a scratch
+    // in its segment table), with whole pages after it; -1 if none.
+    std::int64_t overlong_page_byte = -1;
+};
+
 // Whether an Ogg file has a damaged page: bytes that are no page (libogg skips them to the next
-// capture pattern, checking each page's CRC), or a page missing from a stream's numbered sequence.
-// libsndfile drops such a page and goes on with the next, and the time the page held vanishes:
-// every syllable after a scratch came early, and the shortfall was called "truncated". FFmpeg's Ogg
-// reader gives the pages after it their granule positions, and the gap is kept as silence
-// (ffmpeg_source.cpp). A page cut off at the end is not damage here: open_audio_file says the file
-// was cut. One pass over the file's bytes, no decoding.
-bool has_damaged_ogg_page(const std::string& path) {
+// capture pattern, checking each page's CRC), a page missing from a stream's numbered sequence, or
+// a page whose header claims more bytes than the file holds while whole pages follow it (libogg
+// waits for the rest of it to the end of the file, as for a cut file's last page: the scratched
+// file was called cut). libsndfile drops a damaged page and goes on with the next, and the time the
+// page held vanishes: every syllable after a scratch came early, and the shortfall was called
+// "truncated". FFmpeg's Ogg reader gives the pages after it their granule positions, and the gap
+// is kept as silence (ffmpeg_source.cpp). A page cut off at the end, with nothing after it, is not
+// damage here: open_audio_file says the file was cut. One pass over the file's bytes, no decoding.
+std::optional<OggDamage> find_damaged_ogg_page(const std::string& path) {
     std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (file == nullptr) return false;
+    if (file == nullptr) return std::nullopt;
     ogg_sync_state sync;
     ogg_sync_init(&sync);
     std::map<long, long> next_page_of_stream;
     bool damaged = false;
+    std::int64_t walked_bytes = 0;  // bytes libogg has skipped or returned as pages
     constexpr long kChunkBytes = 1 << 16;
     while (!damaged) {
         char* buffer = ogg_sync_buffer(&sync, kChunkBytes);
@@ -125,6 +151,7 @@ bool has_damaged_ogg_page(const std::string& path) {
         ogg_sync_wrote(&sync, static_cast<long>(got));
         ogg_page page;
         for (long seek = 0; !damaged && (seek = ogg_sync_pageseek(&sync, &page)) != 0;) {
+            walked_bytes += seek < 0 ? -seek : seek;
             if (seek < 0) {
                 damaged = true;
                 break;
@@ -136,9 +163,19 @@ bool has_damaged_ogg_page(const std::string& path) {
             next_page_of_stream[serial] = number + 1;
         }
     }
+    OggDamage damage;
+    // At the end, libogg still holds the bytes of a page it waits for: whole pages after its start
+    // say its header lied (a cut file's last page has none).
+    const long waiting = sync.fill - sync.returned;
+    if (!damaged && waiting > 4 && holds_ogg_page(reinterpret_cast<const char*>(sync.data) + sync.returned + 1,
+                                                  static_cast<std::size_t>(waiting - 1))) {
+        damaged = true;
+        damage.overlong_page_byte = walked_bytes;
+    }
     ogg_sync_clear(&sync);
     std::fclose(file);
-    return damaged;
+    if (!damaged) return std::nullopt;
+    return damage;
 }
 
 // A RIFF WAV's data chunk that goes on past the size its header states: the bytes stated and the
@@ -396,11 +433,14 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
                                              std::to_string(info.samplerate) + " Hz");
     }
     // First: a damaged page can also hide the stream's last page from libsndfile's length.
-    if ((info.format & SF_FORMAT_TYPEMASK) == SF_FORMAT_OGG && has_damaged_ogg_page(path)) {
-        sf_close(file);
-        FfmpegReading reading;
-        reading.keeps_stated_length = true;
-        return open_ffmpeg_file(path, reading);
+    if ((info.format & SF_FORMAT_TYPEMASK) == SF_FORMAT_OGG) {
+        if (const auto damage = find_damaged_ogg_page(path)) {
+            sf_close(file);
+            FfmpegReading reading;
+            reading.keeps_stated_length = true;
+            reading.overlong_ogg_page_byte = damage->overlong_page_byte;
+            return open_ffmpeg_file(path, reading);
+        }
     }
     if (info.frames == SF_COUNT_MAX) {
         // libsndfile found no length: in an Ogg stream, no complete last page (the file was cut),

@@ -77,6 +77,59 @@ struct ResamplerFreer {
     void operator()(SwrContext* context) const { swr_free(&context); }
 };
 
+// A file read through FFmpeg with the 4 bytes at `hidden_byte` read as zeros: the capture pattern
+// ("OggS") of an Ogg page whose header claims more bytes than the file holds, so that FFmpeg's Ogg
+// reader looks for the next page instead of waiting for this one to the end of the file.
+class HidingReader {
+public:
+    HidingReader(const std::string& path, std::int64_t hidden_byte) : hidden_byte_(hidden_byte) {
+        file_ = std::fopen(path.c_str(), "rb");
+        if (file_ == nullptr) return;
+        constexpr int kBufferBytes = 1 << 16;
+        auto* buffer = static_cast<unsigned char*>(av_malloc(kBufferBytes));
+        if (buffer != nullptr) context_ = avio_alloc_context(buffer, kBufferBytes, 0, this, &read, nullptr, &seek);
+        if (context_ == nullptr) {
+            av_free(buffer);
+            throw std::bad_alloc();
+        }
+    }
+    ~HidingReader() {
+        if (context_ != nullptr) av_freep(&context_->buffer);
+        avio_context_free(&context_);
+        if (file_ != nullptr) std::fclose(file_);
+    }
+    HidingReader(const HidingReader&) = delete;
+    HidingReader& operator=(const HidingReader&) = delete;
+    // Null if the file could not be opened (FFmpeg then opens it by its path and says why not).
+    AVIOContext* context() const { return context_; }
+
+private:
+    static int read(void* opaque, std::uint8_t* buffer, int size) {
+        auto* reader = static_cast<HidingReader*>(opaque);
+        const std::int64_t at = ftello(reader->file_);
+        const std::size_t got = std::fread(buffer, 1, static_cast<std::size_t>(size), reader->file_);
+        if (got == 0) return AVERROR_EOF;
+        for (std::int64_t byte = reader->hidden_byte_; byte < reader->hidden_byte_ + 4; ++byte)
+            if (byte >= at && byte < at + static_cast<std::int64_t>(got)) buffer[byte - at] = 0;
+        return static_cast<int>(got);
+    }
+    static std::int64_t seek(void* opaque, std::int64_t offset, int whence) {
+        auto* reader = static_cast<HidingReader*>(opaque);
+        if (whence & AVSEEK_SIZE) {
+            const std::int64_t at = ftello(reader->file_);
+            if (fseeko(reader->file_, 0, SEEK_END) != 0) return -1;
+            const std::int64_t size = ftello(reader->file_);
+            return fseeko(reader->file_, at, SEEK_SET) == 0 ? size : -1;
+        }
+        if (fseeko(reader->file_, offset, whence & ~AVSEEK_FORCE) != 0) return -1;
+        return ftello(reader->file_);
+    }
+
+    std::FILE* file_ = nullptr;
+    AVIOContext* context_ = nullptr;
+    std::int64_t hidden_byte_;
+};
+
 class FfmpegSource final : public AudioSource {
 public:
     FfmpegSource(std::string path, const FfmpegReading& reading) : path_(std::move(path)), reading_(reading) {
@@ -86,6 +139,15 @@ public:
         av_dict_set(&options, "protocol_whitelist", "file", 0);
         if (reading_.reads_past_stated_size) av_dict_set(&options, "ignore_length", "1", 0);
         AVFormatContext* raw = nullptr;
+        if (reading_.overlong_ogg_page_byte >= 0) {
+            hiding_reader_ = std::make_unique<HidingReader>(path_, reading_.overlong_ogg_page_byte);
+            if (hiding_reader_->context() != nullptr) {
+                raw = avformat_alloc_context();
+                if (raw == nullptr) throw std::bad_alloc();
+                raw->pb = hiding_reader_->context();
+                raw->flags |= AVFMT_FLAG_CUSTOM_IO;
+            }
+        }
         const int opened = avformat_open_input(&raw, path_.c_str(), nullptr, &options);
         av_dict_free(&options);
         if (opened < 0) {
@@ -591,6 +653,8 @@ private:
     std::string path_;
     FfmpegReading reading_;
     bool end_filled_ = false;  // fill_lost_end() has run
+    // Before format_, which reads through it and is closed first.
+    std::unique_ptr<HidingReader> hiding_reader_;
     std::unique_ptr<AVFormatContext, FormatCloser> format_;
     std::unique_ptr<AVCodecContext, CodecFreer> codec_;
     std::unique_ptr<AVPacket, PacketFreer> packet_;

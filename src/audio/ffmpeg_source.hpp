@@ -4,6 +4,7 @@
 #ifndef TALKFACE_AUDIO_FFMPEG_SOURCE_HPP
 #define TALKFACE_AUDIO_FFMPEG_SOURCE_HPP
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -21,6 +22,11 @@ struct FfmpegReading {
     // The file is a WAV whose data chunk goes on past the size its header states (a header
     // written early and never brought up to date): read to the end of the file.
     bool reads_past_stated_size = false;
+    // Where an Ogg page begins whose header claims more bytes than the file holds, with whole pages
+    // after it (a scratch in its segment table); -1 if none. FFmpeg's Ogg reader would wait for the
+    // page to the end of the file and stop there (its 2 s after it lost, the file's length stated
+    // as 1 s): the page's capture pattern is hidden from it, and it goes on at the next page.
+    std::int64_t overlong_ogg_page_byte = -1;
 };
 
 // Opens the first audio stream FFmpeg finds in `path` and decodes its first samples, so that a file

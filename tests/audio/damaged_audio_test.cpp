@@ -453,6 +453,18 @@ TEST_SUITE("audio") {
         }
     }
 
+    TEST_CASE("a scratch in an Ogg page's header that claims more than the file holds is damage, not a cut") {
+        // The random bytes hit a page's segment table: the header then claims more bytes than the
+        // file holds, and libogg (and FFmpeg's Ogg reader) waited for the page to the end of the
+        // file: the file was called cut ("truncated: the Ogg stream breaks off inside a page").
+        // Whole pages after it say it is not; the page is skipped and its second kept as silence.
+        const std::string bytes = whole(kContainers[4]);
+        const std::size_t page = bytes.find("OggS", bytes.size() / 3 - 200);
+        REQUIRE(page != std::string::npos);
+        // 40 bytes in: past the 27 bytes of the page's header, inside its segment table.
+        check_scratch_keeps_time(kContainers[4], static_cast<double>(page + 40) / static_cast<double>(bytes.size()));
+    }
+
     TEST_CASE("a scratch in the first frames of sound keeps its time: time 0 is where the stream starts") {
         // The first frame decoded placed time 0: a scratch in the first Ogg page of sound after
         // Vorbis's headers lost it, and every syllable came early by the page's time.
