@@ -2,7 +2,6 @@
 // and 5.5 (finals, bottom row), each zoomed on the lower face.
 //
 //   mouth_shapes OUT.svg [FACE.xml]     the built-in default face when no file is given
-#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <fstream>
@@ -12,6 +11,7 @@
 
 #include <talkface/talkface.hpp>
 
+#include "common/mouth_zoom.hpp"
 #include "common/nested_svg.hpp"
 
 namespace {
@@ -31,25 +31,8 @@ int main(int argc, char** argv) {
     try {
         const talkface::FaceModel face =
             argc == 3 ? talkface::FaceModel::load(argv[2]) : talkface::FaceModel::default_face();
-        const double d = face.fapu("d");
-
-        // The zoom: from just above the nose tip to below the lowest chin of all 12 shapes, centred on
-        // the mouth. The documents' user space is the face's image space, so face points place it.
-        double chin_y = face.point("2.1").y;
-        for (talkface::MouthShape shape : talkface::all_mouth_shapes()) {
-            talkface::FaceState state;
-            state.mouth = talkface::mouth_controls(face, shape);
-            chin_y = std::max(chin_y, talkface::project_face(face, state).point("2.1").y);
-        }
-        const double top = face.point("9.15").y - 0.45 * d;
-        const double zoom_height = chin_y + 0.2 * d - top;
-        const double zoom_width = zoom_height * 1.25;
-        const double centre_x = (face.point("8.4").x + face.point("8.3").x) / 2.0;
-        const std::string view_box = talkface_samples::svg_number(centre_x - zoom_width / 2) + " " +
-                                     talkface_samples::svg_number(top) + " " +
-                                     talkface_samples::svg_number(zoom_width) + " " +
-                                     talkface_samples::svg_number(zoom_height);
-        const double cell_height = kCellWidth * zoom_height / zoom_width;
+        const talkface_samples::MouthZoom zoom = talkface_samples::mouth_zoom(face);
+        const double cell_height = kCellWidth * zoom.height / zoom.width;
         const double row_height = cell_height + kLabelHeight + kGap;
         const double width = kColumns * (kCellWidth + kGap) + kGap;
         const double height = 2 * row_height + kGap;
@@ -69,7 +52,7 @@ int main(int argc, char** argv) {
             const double y = kGap + row * row_height;
             talkface::FaceState state;
             state.mouth = talkface::mouth_controls(face, shape);
-            const talkface_samples::Cell cell{x, y, kCellWidth, cell_height, view_box};
+            const talkface_samples::Cell cell{x, y, kCellWidth, cell_height, zoom.view_box};
             sheet += talkface_samples::nest_svg(animator.render_svg(state), cell,
                                                 "shape" + std::to_string(index) + "-");
             sheet += "<text x=\"" + talkface_samples::svg_number(x + kCellWidth / 2) + "\" y=\"" +

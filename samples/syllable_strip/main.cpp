@@ -3,7 +3,6 @@
 // mouth shape whose key frame falls on it.
 //
 //   syllable_strip OUT.svg [WORD ...]     words 願望 and 波濤 when none are given
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -15,6 +14,7 @@
 
 #include <talkface/talkface.hpp>
 
+#include "common/mouth_zoom.hpp"
 #include "common/nested_svg.hpp"
 
 namespace {
@@ -61,23 +61,8 @@ int main(int argc, char** argv) {
         std::vector<std::string> words(argv + 2, argv + argc);
         if (words.empty()) words = {"願望", "波濤"};
         const talkface::FaceModel face = talkface::FaceModel::default_face();
-        const double d = face.fapu("d");
-
-        // The zoom of samples/mouth_shapes: from above the nose tip to below the lowest chin.
-        double chin_y = face.point("2.1").y;
-        for (talkface::MouthShape shape : talkface::all_mouth_shapes()) {
-            talkface::FaceState state;
-            state.mouth = talkface::mouth_controls(face, shape);
-            chin_y = std::max(chin_y, talkface::project_face(face, state).point("2.1").y);
-        }
-        const double top = face.point("9.15").y - 0.45 * d;
-        const double zoom_height = chin_y + 0.2 * d - top;
-        const double zoom_width = zoom_height * 1.25;
-        const double centre_x = (face.point("8.4").x + face.point("8.3").x) / 2.0;
-        const std::string view_box =
-            talkface_samples::svg_number(centre_x - zoom_width / 2) + " " + talkface_samples::svg_number(top) + " " +
-            talkface_samples::svg_number(zoom_width) + " " + talkface_samples::svg_number(zoom_height);
-        const double cell_height = kCellWidth * zoom_height / zoom_width;
+        const talkface_samples::MouthZoom zoom = talkface_samples::mouth_zoom(face);
+        const double cell_height = kCellWidth * zoom.height / zoom.width;
         const double row_height = cell_height + kLabelHeight + kGap;
 
         talkface::LipSyncOptions options;
@@ -105,7 +90,7 @@ int main(int argc, char** argv) {
                 if (frame > 0 && frame % kColumns == 0) y += row_height;
                 talkface::FaceState state;
                 state.mouth = mouths[frame];
-                const talkface_samples::Cell cell{x, y, kCellWidth, cell_height, view_box};
+                const talkface_samples::Cell cell{x, y, kCellWidth, cell_height, zoom.view_box};
                 body += talkface_samples::nest_svg(animator.render_svg(state), cell,
                                                    "f" + std::to_string(cell_index++) + "-");
                 const double time_s = static_cast<double>(frame) / kFps;
