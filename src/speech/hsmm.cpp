@@ -93,134 +93,178 @@ float max_of_sums(const float* a, const float* b, std::size_t count) {
 }
 
 // One search of states [first_state, end_state) over frames [first_frame, end_frame), starting in
-// first_state at first_frame. With `is_open_end` the path may stop in any state at end_frame (a
-// window of a longer search); otherwise it ends after the last state. Segments are in the frames
-// of `emissions`, each score multiplied by `emission_weight`; empty if no path fits.
-std::vector<StateSegment> search(const std::vector<PhoneState>& states, std::size_t first_state, std::size_t end_state,
-                                 const EmissionScores& emissions, double emission_weight, std::size_t first_frame,
-                                 std::size_t end_frame, bool is_open_end, ViterbiWorkspace& workspace) {
-    const std::size_t frames = end_frame - first_frame;
-    const std::size_t state_count = end_state - first_state;
-    const std::size_t width = frames + 1;
+// first_state at first_frame, in three steps: the emissions summed per class, the tables filled
+// state by state (the way forward), and the best path read back from them (the way back).
+// Segments are in the frames of `emissions`, each score multiplied by `emission_weight`.
+class SegmentSearch {
+public:
+    SegmentSearch(const std::vector<PhoneState>& states, std::size_t first_state, std::size_t end_state,
+                  const EmissionScores& emissions, std::size_t first_frame, std::size_t end_frame,
+                  ViterbiWorkspace& workspace)
+        : states_(states), first_state_(first_state), state_count_(end_state - first_state), emissions_(emissions),
+          first_frame_(first_frame), frames_(end_frame - first_frame), width_(frames_ + 1), workspace_(workspace) {}
+
     // Prefix sums per class: the emission of any span is one subtraction. Each frame's best class
     // is subtracted first (every path pays one emission per frame, so no decision changes): the
     // sums along good paths then stay small, where float keeps its resolution.
-    auto& prefix = workspace.prefix;
-    // Generic speech scores each frame as its best class does: its row is all zeros.
-    prefix.assign(static_cast<std::size_t>(kPhoneClassCount + 1) * width, 0.0);
-    for (std::size_t t = 0; t < frames; ++t) {
-        const float* row = &emissions.values[(first_frame + t) * kPhoneClassCount];
-        const float best = *std::max_element(row, row + kPhoneClassCount);
-        for (std::size_t c = 0; c < kPhoneClassCount; ++c)
-            prefix[c * width + t + 1] = prefix[c * width + t] + emission_weight * static_cast<double>(row[c] - best);
+    void sum_emissions(double emission_weight) {
+        auto& prefix = workspace_.prefix;
+        // Generic speech scores each frame as its best class does: its row is all zeros.
+        prefix.assign(static_cast<std::size_t>(kPhoneClassCount + 1) * width_, 0.0);
+        for (std::size_t t = 0; t < frames_; ++t) {
+            const float* row = &emissions_.values[(first_frame_ + t) * kPhoneClassCount];
+            const float best = *std::max_element(row, row + kPhoneClassCount);
+            for (std::size_t c = 0; c < kPhoneClassCount; ++c)
+                prefix[c * width_ + t + 1] = prefix[c * width_ + t] + emission_weight * static_cast<double>(row[c] - best);
+        }
     }
+
     // entry[j][t]: best score of a path whose state j starts at frame t; finish[j][t]: of one whose
     // state j ends just before frame t. Which duration and which skip won is found again on the
     // way back, so only these two tables are kept.
-    auto& entry = workspace.entry;
-    auto& finish = workspace.finish;
-    auto& entry_minus_prefix = workspace.entry_minus_prefix;
-    auto& duration_score = workspace.duration_score;
-    entry.resize(state_count * width);
-    finish.resize(state_count * width);
-    entry_minus_prefix.resize(width);
-    std::fill(entry.begin(), entry.begin() + static_cast<std::ptrdiff_t>(width), kImpossible);
-    entry[0] = 0.0f;
-
-    // Fills entry_minus_prefix for state j and the duration table; returns the longest duration.
-    auto prepare_state = [&](std::size_t j) {
-        const PhoneState& state = states[first_state + j];
-        const double* class_prefix = &prefix[prefix_row(state.phone_class) * width];
-        const float* entry_row = &entry[j * width];
-        for (std::size_t t = 0; t <= frames; ++t)
-            entry_minus_prefix[t] = entry_row[t] == kImpossible ? kImpossible : static_cast<float>(entry_row[t] - class_prefix[t]);
-        return fill_duration_scores(state, frames, duration_score);
-    };
-    for (std::size_t j = 0; j < state_count; ++j) {
-        const PhoneState& state = states[first_state + j];
-        float* entry_row = &entry[j * width];
-        if (j > 0) {
-            const float* previous_finish = &finish[(j - 1) * width];
-            const float* previous_entry = &entry[(j - 1) * width];
-            const float skip = skip_score(states[first_state + j - 1]);
-            // A skipped state passes on the bonus its predecessor's finish already got at t.
-            for (std::size_t t = 0; t <= frames; ++t) {
-                const float arrived = previous_finish[t] + boundary_bonus(emissions, first_frame + t);
-                entry_row[t] = skip == kImpossible ? arrived : std::max(arrived, previous_entry[t] + skip);
+    void fill_tables() {
+        auto& entry = workspace_.entry;
+        auto& finish = workspace_.finish;
+        const auto& entry_minus_prefix = workspace_.entry_minus_prefix;
+        const auto& duration_score = workspace_.duration_score;
+        entry.resize(state_count_ * width_);
+        finish.resize(state_count_ * width_);
+        workspace_.entry_minus_prefix.resize(width_);
+        std::fill(entry.begin(), entry.begin() + static_cast<std::ptrdiff_t>(width_), kImpossible);
+        entry[0] = 0.0f;
+        for (std::size_t j = 0; j < state_count_; ++j) {
+            const PhoneState& state = states_[first_state_ + j];
+            float* entry_row = &entry[j * width_];
+            if (j > 0) {
+                const float* previous_finish = &finish[(j - 1) * width_];
+                const float* previous_entry = &entry[(j - 1) * width_];
+                const float skip = skip_score(states_[first_state_ + j - 1]);
+                // A skipped state passes on the bonus its predecessor's finish already got at t.
+                for (std::size_t t = 0; t <= frames_; ++t) {
+                    const float arrived = previous_finish[t] + boundary_bonus(emissions_, first_frame_ + t);
+                    entry_row[t] = skip == kImpossible ? arrived : std::max(arrived, previous_entry[t] + skip);
+                }
             }
-        }
-        const std::size_t longest = prepare_state(j);
-        const std::size_t shortest = longest + 1 - duration_score.size();
-        const double* class_prefix = &prefix[prefix_row(state.phone_class) * width];
-        float* finish_row = &finish[j * width];
-        const std::size_t first_entry =
-            static_cast<std::size_t>(std::find_if(entry_row, entry_row + width, [](float v) { return v != kImpossible; }) - entry_row);
-        const std::size_t first_finish = duration_score.empty() ? width : std::min(width, first_entry + shortest);
-        std::fill(finish_row, finish_row + first_finish, kImpossible);
-        // tail: the best entry_minus_prefix[t - d] + (d - longest) * step over d > longest.
-        const bool has_tail = state.has_tail && !duration_score.empty();
-        const float step = has_tail ? tail_step(state, longest) : 0.0f;
-        float tail = kImpossible;
-        for (std::size_t t = first_finish; t <= frames; ++t) {
-            // d runs from min(longest, t) down to shortest: entries t - d, durations reversed.
-            const std::size_t skipped = t >= longest ? 0 : longest - t;
-            float best = max_of_sums(&entry_minus_prefix[t + skipped - longest], &duration_score[skipped],
-                                     duration_score.size() - skipped);
-            if (has_tail && t > longest) {
-                tail = std::max(tail, entry_minus_prefix[t - longest - 1]) + step;
-                best = std::max(best, tail + duration_score[0]);
-            }
-            finish_row[t] = best == kImpossible ? kImpossible : static_cast<float>(class_prefix[t] + best);
-        }
-    }
-
-    std::size_t j = state_count - 1;
-    std::size_t t = frames;
-    bool is_skipped = false;
-    if (is_open_end) {
-        for (std::size_t k = 0; k < state_count; ++k)
-            if (finish[k * width + t] > finish[j * width + t]) j = k;
-        if (finish[j * width + t] == kImpossible) return {};
-    } else {
-        const float skip = skip_score(states[first_state + j]);
-        is_skipped = skip != kImpossible && entry[j * width + t] + skip > finish[j * width + t];
-        if (!is_skipped && finish[j * width + t] == kImpossible) return {};
-    }
-    std::vector<StateSegment> segments;
-    for (;;) {
-        if (!is_skipped) {
             const std::size_t longest = prepare_state(j);
             const std::size_t shortest = longest + 1 - duration_score.size();
-            float best = kImpossible;
-            std::size_t best_frames = shortest;
-            for (std::size_t d = shortest; d <= std::min(longest, t); ++d) {
-                const float total = entry_minus_prefix[t - d] + duration_score[longest - d];
+            const double* class_prefix = &workspace_.prefix[prefix_row(state.phone_class) * width_];
+            float* finish_row = &finish[j * width_];
+            const std::size_t first_entry = static_cast<std::size_t>(
+                std::find_if(entry_row, entry_row + width_, [](float v) { return v != kImpossible; }) - entry_row);
+            const std::size_t first_finish = duration_score.empty() ? width_ : std::min(width_, first_entry + shortest);
+            std::fill(finish_row, finish_row + first_finish, kImpossible);
+            // tail: the best entry_minus_prefix[t - d] + (d - longest) * step over d > longest.
+            const bool has_tail = state.has_tail && !duration_score.empty();
+            const float step = has_tail ? tail_step(state, longest) : 0.0f;
+            float tail = kImpossible;
+            for (std::size_t t = first_finish; t <= frames_; ++t) {
+                // d runs from min(longest, t) down to shortest: entries t - d, durations reversed.
+                const std::size_t skipped = t >= longest ? 0 : longest - t;
+                float best = max_of_sums(&entry_minus_prefix[t + skipped - longest], &duration_score[skipped],
+                                         duration_score.size() - skipped);
+                if (has_tail && t > longest) {
+                    tail = std::max(tail, entry_minus_prefix[t - longest - 1]) + step;
+                    best = std::max(best, tail + duration_score[0]);
+                }
+                finish_row[t] = best == kImpossible ? kImpossible : static_cast<float>(class_prefix[t] + best);
+            }
+        }
+    }
+
+    // The best path, read back from the last frame. With `is_open_end` it may stop in any state at
+    // the last frame (a window of a longer search); otherwise it ends after the last state. Empty
+    // if no path fits.
+    std::vector<StateSegment> trace_back(bool is_open_end) {
+        const auto& entry = workspace_.entry;
+        const auto& finish = workspace_.finish;
+        std::size_t j = state_count_ - 1;
+        std::size_t t = frames_;
+        bool is_skipped = false;
+        if (is_open_end) {
+            for (std::size_t k = 0; k < state_count_; ++k)
+                if (finish[k * width_ + t] > finish[j * width_ + t]) j = k;
+            if (finish[j * width_ + t] == kImpossible) return {};
+        } else {
+            const float skip = skip_score(states_[first_state_ + j]);
+            is_skipped = skip != kImpossible && entry[j * width_ + t] + skip > finish[j * width_ + t];
+            if (!is_skipped && finish[j * width_ + t] == kImpossible) return {};
+        }
+        std::vector<StateSegment> segments;
+        for (;;) {
+            if (!is_skipped) {
+                const std::size_t best_frames = best_duration(j, t);
+                segments.push_back({first_state_ + j, first_frame_ + t - best_frames, first_frame_ + t});
+                t -= best_frames;
+            }
+            if (j == 0) break;
+            const float skip = skip_score(states_[first_state_ + j - 1]);
+            const float arrived = finish[(j - 1) * width_ + t] + boundary_bonus(emissions_, first_frame_ + t);
+            is_skipped = skip != kImpossible && entry[(j - 1) * width_ + t] + skip > arrived;
+            --j;
+        }
+        std::reverse(segments.begin(), segments.end());
+        return segments;
+    }
+
+private:
+    // Fills entry_minus_prefix for state j and the duration table; returns the longest duration.
+    std::size_t prepare_state(std::size_t j) {
+        const PhoneState& state = states_[first_state_ + j];
+        const double* class_prefix = &workspace_.prefix[prefix_row(state.phone_class) * width_];
+        const float* entry_row = &workspace_.entry[j * width_];
+        auto& entry_minus_prefix = workspace_.entry_minus_prefix;
+        for (std::size_t t = 0; t <= frames_; ++t)
+            entry_minus_prefix[t] = entry_row[t] == kImpossible ? kImpossible : static_cast<float>(entry_row[t] - class_prefix[t]);
+        return fill_duration_scores(state, frames_, workspace_.duration_score);
+    }
+
+    // How many frames state j held on the best path that ends it just before frame t: the
+    // duration the way forward chose there, found again.
+    std::size_t best_duration(std::size_t j, std::size_t t) {
+        const auto& entry_minus_prefix = workspace_.entry_minus_prefix;
+        const auto& duration_score = workspace_.duration_score;
+        const std::size_t longest = prepare_state(j);
+        const std::size_t shortest = longest + 1 - duration_score.size();
+        float best = kImpossible;
+        std::size_t best_frames = shortest;
+        for (std::size_t d = shortest; d <= std::min(longest, t); ++d) {
+            const float total = entry_minus_prefix[t - d] + duration_score[longest - d];
+            if (total > best) {
+                best = total;
+                best_frames = d;
+            }
+        }
+        if (states_[first_state_ + j].has_tail && !duration_score.empty()) {
+            const float step = tail_step(states_[first_state_ + j], longest);
+            for (std::size_t d = longest + 1; d <= t; ++d) {
+                const float total = entry_minus_prefix[t - d] + duration_score[0] + static_cast<float>(d - longest) * step;
                 if (total > best) {
                     best = total;
                     best_frames = d;
                 }
             }
-            if (states[first_state + j].has_tail && !duration_score.empty()) {
-                const float step = tail_step(states[first_state + j], longest);
-                for (std::size_t d = longest + 1; d <= t; ++d) {
-                    const float total = entry_minus_prefix[t - d] + duration_score[0] + static_cast<float>(d - longest) * step;
-                    if (total > best) {
-                        best = total;
-                        best_frames = d;
-                    }
-                }
-            }
-            segments.push_back({first_state + j, first_frame + t - best_frames, first_frame + t});
-            t -= best_frames;
         }
-        if (j == 0) break;
-        const float skip = skip_score(states[first_state + j - 1]);
-        const float arrived = finish[(j - 1) * width + t] + boundary_bonus(emissions, first_frame + t);
-        is_skipped = skip != kImpossible && entry[(j - 1) * width + t] + skip > arrived;
-        --j;
+        return best_frames;
     }
-    std::reverse(segments.begin(), segments.end());
-    return segments;
+
+    const std::vector<PhoneState>& states_;
+    std::size_t first_state_;
+    std::size_t state_count_;
+    const EmissionScores& emissions_;
+    std::size_t first_frame_;
+    std::size_t frames_;
+    std::size_t width_;
+    ViterbiWorkspace& workspace_;
+};
+
+// The best path of one search (SegmentSearch); empty if no path fits.
+std::vector<StateSegment> search(const std::vector<PhoneState>& states, std::size_t first_state, std::size_t end_state,
+                                 const EmissionScores& emissions, double emission_weight, std::size_t first_frame,
+                                 std::size_t end_frame, bool is_open_end, ViterbiWorkspace& workspace) {
+    SegmentSearch segment_search(states, first_state, end_state, emissions, first_frame, end_frame, workspace);
+    segment_search.sum_emissions(emission_weight);
+    segment_search.fill_tables();
+    return segment_search.trace_back(is_open_end);
 }
 
 // Frames the priors expect of states [first, end): the sum of the medians of those a path must
