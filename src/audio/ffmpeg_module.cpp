@@ -28,8 +28,10 @@ std::filesystem::path this_library() {
 }
 
 // The module's path: talkface/ beside the library (src/CMakeLists.txt puts it there in the build
-// tree, in an install and in the Python package). A program linked with a static libtalkface from
-// an install finds it where the install put it.
+// tree, in an install and in the Python package). A program linked with a static libtalkface is
+// the file holding this code: talkface/ beside the program, else where the build that made the
+// archive installs the module (its CMAKE_INSTALL_PREFIX, compiled in; `cmake --install --prefix`
+// elsewhere cannot move a path compiled into the program).
 std::string module_path() {
     const std::filesystem::path beside = (this_library().parent_path() / TALKFACE_FFMPEG_MODULE).lexically_normal();
 #ifdef TALKFACE_STATIC_DEFINE
@@ -42,9 +44,18 @@ std::string module_path() {
 const FfmpegModuleCalls* open_module() {
     const std::string path = module_path();
     if (!std::filesystem::exists(path)) {
+#ifdef TALKFACE_STATIC_DEFINE
+        throw FileError(path, std::string("FFmpeg's module is missing (it reads MP3, M4A, Opus and a video's sound, "
+                                          "and writes the pages' audio and videos); a program linked with the static "
+                                          "libtalkface looks for it in talkface/ beside itself and at ") +
+                                  TALKFACE_INSTALLED_FFMPEG_MODULE +
+                                  ", where the build that made the library installs it; installed elsewhere "
+                                  "(cmake --install --prefix), copy LIBDIR/talkface/ beside the program");
+#else
         throw FileError(path, "FFmpeg's module is missing (it reads MP3, M4A, Opus and a video's sound, and writes "
                               "the pages' audio and videos); install talkface whole (cmake --install puts it in "
                               "LIBDIR/talkface/, beside the library)");
+#endif
     }
     // Lazily bound, as libtalkface bound FFmpeg when it linked it: binding every call of FFmpeg's
     // 130-odd libraries now cost a page 14 M instructions more (FFmpeg's sonames carry its ABI).

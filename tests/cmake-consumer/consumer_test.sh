@@ -14,14 +14,8 @@ c_compiler=${4:-cc}
 python=${5:-}
 prefix="$work_dir/prefix"
 
-rm -rf "$work_dir"
-mkdir -p "$work_dir"
-cmake --install "$build_dir" --prefix "$prefix" >"$work_dir/install.log"
-unset LD_LIBRARY_PATH PYTHONPATH
-
-cmake -S "$consumer_dir" -B "$work_dir/build" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
-  >"$work_dir/configure.log"
-cmake --build "$work_dir/build" --parallel 2 >"$work_dir/build.log"
+. "$(dirname "$0")/install_and_build.sh"
+install_and_build_consumer "$build_dir" "$consumer_dir" "$work_dir"
 "$work_dir/build/consumer_cpp"
 mkdir -p "$work_dir/run"
 "$work_dir/build/consumer_c" "$work_dir/run"
