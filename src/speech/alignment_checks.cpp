@@ -72,13 +72,8 @@ constexpr double kFitOutlierSpread = 4.0;
 constexpr double kFitOutlierMinimum = 1.5;
 // kMaxTextFitGap (alignment_checks.hpp), and this much above the recording's typical sentence.
 constexpr double kMaxTextFitGapAboveTypical = 0.15;
-// With models learned from the rest of the recording, the halves of a right sentence fit a free
-// sequence of sounds rarely more than 0.35 per frame better than their text (bench/ tuning clips
-// of one and two sentences and passages, every condition; a room's tail is left out by the
-// aligner), a replaced or swapped sentence mostly more: at 0.35, 0.3% of right one-sentence clips
-// are refused and 26% of wrong ones found; with two sentences 0.1% and 74%.
-constexpr double kMaxHeldOutFitGap = 0.35;
-// A line of a few syllables is no such evidence: its halves hold one to three syllables, the rest
+// The held-out halves' gap (kMaxHeldOutFitGap, alignment_checks.hpp) refuses a sentence alone only
+// from this many syllables. A line of a few syllables is no such evidence: its halves hold one to three syllables, the rest
 // of the recording has next to nothing to learn their sounds from, and a right text's halves gap by
 // up to 3.8 (bench/short_lines_bench.py, tuning lines of 1-5 syllables, espeak-ng and a person:
 // 45 of 144 right lines refused). The bench's sentences, on which the limit holds, have 6 or more.
@@ -437,6 +432,12 @@ void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProf
         throw AlignmentError(describe_sentence(sentence, span, transcript) + ": the syllable " + near + " would span a silence at " +
                              where + "; the transcript does not match the audio here (a missing sentence, or the wrong text?)");
     }
+}
+
+bool fits_as_well_as_free_sounds(const std::vector<SentenceMetrics>& metrics, const std::vector<std::size_t>& poor) {
+    return std::all_of(poor.begin(), poor.end(), [&](std::size_t k) {
+        return metrics[k].fit_gap <= 0.0 && !(metrics[k].held_out_gap > kMaxHeldOutFitGap);
+    });
 }
 
 void check_text_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,

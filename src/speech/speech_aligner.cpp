@@ -279,17 +279,6 @@ std::vector<std::size_t> poorly_fitting(const std::vector<SentenceMetrics>& metr
     return poor;
 }
 
-// Whether every sentence `poor` names fits its text in `aligned` at least as well as a free
-// sequence of sounds does (a text fit gap of at most 0). A right text whose path had slipped comes
-// back to that (a person's tuning passages, 0.18 and 0.22 per frame to -0.02 and -0.03); a wrong
-// one, given the same freedom, falls part of the way, and under the check's limit it was let
-// through: kept wherever its gap fell, a sentence replaced inside a person's passage was caught
-// 451 -> 418 of 648 times; with this, as often as without the third alignment (espeak-ng's wrong
-// clips aligned a third time: 2 of 738 came under 0, both caught by another check; bench/ Session 14).
-bool fits_as_well_as_free_sounds(const CutAlignment& aligned, const std::vector<std::size_t>& poor) {
-    return std::all_of(poor.begin(), poor.end(), [&](std::size_t k) { return aligned.metrics[k].fit_gap <= 0.0; });
-}
-
 // The syllables of every sentence of `cut`, aligned sentence by sentence (neighbours that run on,
 // together), and, when `is_checked`, check_path on each path; when `is_lenient`, the final pass on
 // lenient chains (lenient_chain.hpp). With `is_kept_to_marks`, keep_pauses_to_marks on every chain;
@@ -410,9 +399,11 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
 // such refusal of a person's right text since session 11). It is aligned again with the closure
 // after a nasal skippable in every chain (the models learned on those paths too), and the new
 // alignment kept if the poorly fitting sentences then fit their texts as well as free sounds do
-// (fits_as_well_as_free_sounds). Skippable everywhere and always, such closures lost held-out
-// passages that are one slip from another place (sessions 11-13); here only an alignment the
-// check would refuse is made again, and no other passage of any corpus moves.
+// and, in a file of one or two sentences (whose models its own path shaped), within a right text's
+// gap on models learned from the rest of the recording (fits_as_well_as_free_sounds,
+// alignment_checks.hpp). Skippable everywhere and always, such closures lost held-out passages
+// that are one slip from another place (sessions 11-13); here only an alignment the check would
+// refuse is made again, and no other passage of any corpus moves.
 Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
                    const SentenceCut& cut, ProgressReporter& progress, bool is_checked, bool is_lenient) {
     const bool has_blocks = std::find(cut.runs_on.begin(), cut.runs_on.end(), true) != cut.runs_on.end();
@@ -435,7 +426,7 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
         try {
             CutAlignment released =
                 align_chains(track, loudness, transcript, cut, progress, is_checked, is_lenient, is_kept_to_marks, true);
-            if (fits_as_well_as_free_sounds(released, poor)) aligned = std::move(released);
+            if (fits_as_well_as_free_sounds(released.metrics, poor)) aligned = std::move(released);
         } catch (const AlignmentError&) {
             // A check refuses the new paths: the alignment before stands, for the checks to judge.
         }
