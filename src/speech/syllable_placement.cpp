@@ -21,6 +21,18 @@ constexpr std::size_t kPauseBeforeBurstFrames = 20;
 // 0.25 place alike on the w- tuning rows.
 constexpr double kTransitionShare = 0.25;
 
+// A syllable with no initial joined to a voiced sound (syllable_valley_start): its energy valley is
+// looked for up to 6 frames before where the path and voiced_join_start put it (a cross-fade of
+// 30-80 ms, the path's boundary near its middle: bench/ Session 16 measured 4, 6 and 8 on the
+// tuning rows, 6 placed best), and counts where it lies at least 3 dB under the louder side's
+// quieter peak, each side's peak taken over 10 frames (a syllable's nucleus lies within 100 ms).
+constexpr std::size_t kValleySearchFrames = 6;
+constexpr std::size_t kValleySideFrames = 10;
+constexpr float kValleyDepthDb = 3.0f;
+// A valley's floor: the frames within 1 dB of its lowest (the frame-to-frame scatter of a held
+// sound; a WAV and its MP3 or Opus place 公園's 園 alike).
+constexpr float kValleyFloorDb = 1.0f;
+
 bool is_voiced_class(PhoneClass phone_class) {
     return phone_class == kNasal || phone_class == kLiquid || (phone_class >= kVowelA && phone_class <= kVowelApical);
 }
@@ -46,6 +58,29 @@ std::size_t voiced_join_start(const StateSegment& before, PhoneClass before_clas
     // Half of `before`'s frames at least lie at or under its level, so the walk stops inside it.
     while (start > before.first_frame && rise(start - 1) > threshold) --start;
     return start;
+}
+
+std::size_t syllable_valley_start(const FeatureTrack& track, std::size_t offset, std::size_t lowest, std::size_t start) {
+    const std::size_t first = std::max(lowest, start >= kValleySearchFrames ? start - kValleySearchFrames : 0);
+    const std::size_t end = std::min(track.frame_count - std::min(track.frame_count, offset), start + 2);
+    if (end < first + 3) return start;
+    auto level = [&](std::size_t t) { return track.at(offset + t, kEnergyDb); };
+    std::size_t valley = first;
+    for (std::size_t t = first + 1; t < end; ++t)
+        if (level(t) < level(valley)) valley = t;
+    // A level still falling at the search's first frame, or still rising past the start, is no valley.
+    if (valley == first || valley + 1 == end) return start;
+    float before = level(valley), after = level(valley);
+    for (std::size_t t = valley - std::min(valley, kValleySideFrames); t < valley; ++t) before = std::max(before, level(t));
+    for (std::size_t t = valley + 1; t <= valley + kValleySideFrames && offset + t < track.frame_count; ++t)
+        after = std::max(after, level(t));
+    if (std::min(before, after) - level(valley) < kValleyDepthDb) return start;
+    // A flat floor (a nasal coda) ends where the level begins to rise: its lowest frame would move
+    // with a codec's rounding.
+    std::size_t rise = valley;
+    for (std::size_t t = valley + 1; t + 1 < end; ++t)
+        if (level(t) < level(valley) + kValleyFloorDb) rise = t;
+    return rise;
 }
 
 void place_syllables(const SentenceChain& chain, std::size_t chain_index, const std::vector<StateSegment>& path,
@@ -80,10 +115,19 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
                 first = segment_first;
                 start = first;
                 const PhoneState* before = p > 0 ? &chain.states[path[p - 1].state] : nullptr;
-                if (before && before->syllable + 1 == local && !is_pause(before->role) && state.role != StateRole::closure &&
-                    is_voiced_class(before->phone_class) && is_voiced_class(state.phone_class) &&
-                    before->phone_class != state.phone_class)
+                const bool is_voiced_join = before && before->syllable + 1 == local && !is_pause(before->role) &&
+                                            state.role != StateRole::closure && is_voiced_class(before->phone_class) &&
+                                            is_voiced_class(state.phone_class);
+                if (is_voiced_join && before->phone_class != state.phone_class)
                     start = voiced_join_start(path[p - 1], before->phone_class, path[p], state.phone_class, scores);
+                if (is_voiced_join && state.role == StateRole::final) {
+                    // No earlier than the syllable before's vowel: its final's first frame.
+                    std::size_t q = p - 1;
+                    while (q > 0 && chain.states[path[q - 1].state].syllable == before->syllable &&
+                           chain.states[path[q - 1].state].role == StateRole::final)
+                        --q;
+                    start = syllable_valley_start(track, chain.searched.first_frame, path[q].first_frame + 1, start);
+                }
                 has_start = true;
             }
             end = path[p].end_frame;

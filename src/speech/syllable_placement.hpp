@@ -36,6 +36,19 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
 std::size_t voiced_join_start(const StateSegment& before, PhoneClass before_class, const StateSegment& first,
                               PhoneClass first_class, const EmissionScores& scores);
 
+// Where a syllable with no initial (y-, w-, a vowel) joined to the voiced sound before it starts:
+// such a syllable has no sound of its own to begin with, only a turn of the vowel or nasal before
+// towards its own, and the path puts its boundary late in that turn (in the middle of it, or, where
+// the two vowels are alike, as i to yi, where the durations put it), while SPEC "Alignment" starts
+// the syllable where the turn starts. Between two syllables' nuclei the level falls to a valley
+// (the syllable boundary a phonetician takes between two voiced sounds, and where a join's
+// cross-fade begins). `start` is where the syllable starts so far, `lowest` the first frame it may
+// move to (after the syllable before's vowel begins), both counted from frame `offset` of `track`.
+// Returns the lowest-level frame within kValleySearchFrames before `start` (or `start` itself)
+// where it is a valley at least kValleyDepthDb deep (the last frame of its floor, where the level
+// begins to rise), else `start`: never later.
+std::size_t syllable_valley_start(const FeatureTrack& track, std::size_t offset, std::size_t lowest, std::size_t start);
+
 // The path's syllables and pauses, in frames of the whole recording.
 std::vector<AlignedStretch> stretches_of(const SentenceChain& chain, const std::vector<StateSegment>& path);
 

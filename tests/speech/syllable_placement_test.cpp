@@ -1,9 +1,11 @@
 // Where a voiced join starts (issue 12): a syllable whose initial is voiced (m n l r, none) runs on
 // from the vowel before; the path's boundary lies where the two sounds fit alike, the middle of
-// the transition, and the syllable starts where the transition does.
+// the transition, and the syllable starts where the transition does; one with no initial (y- w-,
+// a vowel) at the level's valley between the two vowels.
 #include <doctest/doctest.h>
 
 #include <cstddef>
+#include <functional>
 
 #include "speech/hsmm.hpp"
 #include "speech/syllable_placement.hpp"
@@ -18,6 +20,25 @@ void add_frame(EmissionScores& emissions, float rise) {
     for (int c = 0; c < kPhoneClassCount; ++c)
         emissions.values.push_back(c == kVowelA ? 0.0f : c == kVowelI ? rise : -20.0f);
     ++emissions.frame_count;
+}
+
+// A feature track of `frames` frames whose whole-band level is `level_db(frame)`.
+FeatureTrack level_track(std::size_t frames, const std::function<float(std::size_t)>& level_db) {
+    FeatureTrack track;
+    track.frame_count = frames;
+    track.duration_s = static_cast<double>(frames) * kFrameStepS;
+    track.values.assign(frames * kFeatureCount, 0.0f);
+    for (std::size_t t = 0; t < frames; ++t) track.values[t * kFeatureCount + kEnergyDb] = level_db(t);
+    return track;
+}
+
+// Two nuclei at -20 dB with a valley between them at frame `valley` (of the track), `depth_db`
+// under them, its sides falling and rising over 4 frames.
+FeatureTrack two_nuclei(std::size_t valley, float depth_db) {
+    return level_track(60, [=](std::size_t t) {
+        const double distance = t > valley ? static_cast<double>(t - valley) : static_cast<double>(valley - t);
+        return -20.0f - (distance < 4.0 ? depth_db * static_cast<float>(1.0 - distance / 4.0) : 0.0f);
+    });
 }
 
 }  // namespace
@@ -46,5 +67,42 @@ TEST_SUITE("speech") {
         for (int t = 0; t < 20; ++t) add_frame(emissions, -5.0f);
         const StateSegment before{0, 0, 20}, first{1, 20, 40};
         CHECK(voiced_join_start(before, kVowelA, first, kVowelI, emissions) == 20);
+    }
+
+    TEST_CASE("a syllable with no initial starts at the valley between its vowel and the one before") {
+        // 是一: the path puts 一 at frame 25 of the chain (frame 30 of the track), three frames
+        // after the valley where the level is 10 dB under both vowels.
+        const FeatureTrack track = two_nuclei(27, 10.0f);
+        CHECK(syllable_valley_start(track, 5, 1, 25) == 22);
+        // Where the path put it already.
+        CHECK(syllable_valley_start(track, 5, 1, 22) == 22);
+        // Six frames back at most: a valley seven frames before is not looked at, and the search's
+        // first frame, still on the valley's rising side, is no valley.
+        CHECK(syllable_valley_start(track, 5, 1, 29) == 29);
+        // A valley right after the start would move the syllable later: it stays.
+        CHECK(syllable_valley_start(track, 5, 1, 21) == 21);
+    }
+
+    TEST_CASE("after a nasal's flat floor a syllable with no initial starts where the level begins to rise") {
+        // 公園: ng holds 12 dB under the vowels for frames 18-23 of the track, wavering by 0.3 dB, then
+        // 園 rises. The path put 園 at frame 26 (chain frame 24, offset 2); the floor's lowest frame
+        // in the search is track frame 21, its last 23 (chain frame 21).
+        const FeatureTrack track = level_track(60, [](std::size_t t) {
+            if (t < 18 || t > 23) return -20.0f;
+            return t % 2 == 0 ? -32.0f : -32.3f;
+        });
+        CHECK(syllable_valley_start(track, 2, 1, 24) == 21);
+    }
+
+    TEST_CASE("a syllable with no initial stays where a shallow dip or the syllable before's vowel leaves it") {
+        // 2 dB is a vowel's own wavering, not a boundary.
+        CHECK(syllable_valley_start(two_nuclei(27, 2.0f), 5, 1, 25) == 25);
+        // The valley lies before the first frame it may move to (the vowel before starts there).
+        CHECK(syllable_valley_start(two_nuclei(27, 10.0f), 5, 23, 25) == 25);
+        // A level that only rises holds no valley.
+        const FeatureTrack rising = level_track(60, [](std::size_t t) { return -40.0f + static_cast<float>(t) * 0.5f; });
+        CHECK(syllable_valley_start(rising, 5, 1, 25) == 25);
+        // The search stays inside the track: a start near its end.
+        CHECK(syllable_valley_start(two_nuclei(27, 10.0f), 5, 1, 54) == 54);
     }
 }
