@@ -29,6 +29,8 @@ public:
     void mix(const float* interleaved, std::size_t frames, std::size_t channels, float* mono);
 
 private:
+    // mix() for two channels.
+    void mix_stereo(const float* interleaved, std::size_t frames, float* mono);
     // Sums over every frame mixed: the first channel's energy, each channel's energy and its
     // product with the first. Doubles: an hour at 48 kHz is 1.7e8 products.
     double first_energy_ = 0.0;

@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -165,5 +166,50 @@ TEST_SUITE("audio") {
     TEST_CASE("a directory is a file error, not a parse error") {
         const std::string folder = test::source_path("tests/data/audio");
         CHECK_THROWS_AS(detail::open_audio_file(folder), FileError);
+    }
+
+    TEST_CASE("two channels mix as the rule for any count says, sample for sample, in blocks of any size") {
+        // ChannelMixer mixes stereo in a loop of its own (its sums held in registers): it must give
+        // the samples the rule gives, written here one frame at a time: channels averaged, the second
+        // turned over while its correlation with the first, over every frame so far, is below -0.2
+        // (back above +0.2), from frame 1024 on. The signal turns the side over and back: 0.3 s of
+        // two independent noises, 1 s of a tone with the right side inverted, 2 s with it agreeing.
+        constexpr int kRateHz = 16000;
+        std::vector<float> interleaved;
+        std::uint32_t seed = 11;
+        const auto noise = [&seed] { return static_cast<float>(static_cast<int>((seed = seed * 1664525u + 1013904223u) >> 16) - 32768) / 3.3e6f; };
+        for (int i = 0; i < 3 * kRateHz / 10; ++i) interleaved.insert(interleaved.end(), {noise(), noise()});
+        for (int i = 0; i < 3 * kRateHz; ++i) {
+            const float tone = 0.3f * static_cast<float>(std::sin(2.0 * M_PI * 220.0 * i / kRateHz)) + noise();
+            interleaved.insert(interleaved.end(), {tone, (i < kRateHz ? -0.7f : 0.9f) * tone + noise()});
+        }
+        const std::size_t frames = interleaved.size() / 2;
+        std::vector<float> expected(frames);
+        double first_energy = 0.0, energy = 0.0, with_first = 0.0;
+        float sign = 1.0f;
+        int turns = 0;
+        for (std::size_t i = 0; i < frames; ++i) {
+            const double first = interleaved[2 * i], second = interleaved[2 * i + 1];
+            first_energy += first * first;
+            energy += second * second;
+            with_first += second * first;
+            const float before = sign;
+            if (i >= 1024 && with_first * with_first > 0.2 * 0.2 * first_energy * energy) sign = with_first < 0.0 ? -1.0f : 1.0f;
+            turns += sign != before;
+            float sum = interleaved[2 * i];
+            sum += sign * interleaved[2 * i + 1];
+            expected[i] = sum / 2.0f;
+        }
+        REQUIRE(turns == 2);
+        for (const std::size_t block : {std::size_t{1}, std::size_t{7}, std::size_t{1000}, std::size_t{4096}, frames}) {
+            CAPTURE(block);
+            detail::ChannelMixer mixer;
+            std::vector<float> mixed(frames);
+            for (std::size_t at = 0; at < frames; at += block)
+                mixer.mix(interleaved.data() + 2 * at, std::min(block, frames - at), 2, mixed.data() + at);
+            std::size_t differing = 0;
+            for (std::size_t i = 0; i < frames; ++i) differing += mixed[i] != expected[i];
+            CHECK(differing == 0);
+        }
     }
 }
