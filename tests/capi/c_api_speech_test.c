@@ -547,6 +547,7 @@ static int test_damage_and_a_stale_header_are_said(void) {
     static const char scratched_m4a[] = TF_TEST_OUTPUT_DIR "/scratched_phone.m4a";
     static const char scratched_mp4[] = TF_TEST_OUTPUT_DIR "/scratched_clip.mp4";
     static const char scratched_webm[] = TF_TEST_OUTPUT_DIR "/scratched_clip.webm";
+    static const char scratched_opus[] = TF_TEST_OUTPUT_DIR "/scratched_voice.opus";
     static const char scratched_index_mp4[] = TF_TEST_OUTPUT_DIR "/scratched_index_clip.mp4";
     static const char stale_wav[] = TF_TEST_OUTPUT_DIR "/stale_header.wav";
     int failures = 0;
@@ -580,6 +581,13 @@ static int test_damage_and_a_stale_header_are_said(void) {
                          "s of its sound could not be decoded, at 1.373-3.098 s") == 1);
     tf_timeline_destroy(aligned);
     aligned = NULL;
+
+    /* A scratch in an Ogg page's header (its segment table, 40 bytes into the page at byte 1920): the
+     * page claims more bytes than the file holds; it was called cut. Its second is named as lost. */
+    CHECK(write_damaged_copy(AUDIO_DIR "voice.opus", scratched_opus, 1960.5 / 5869.0, 2000, 0));
+    CHECK_FAILS_WITH(tf_align_file(scratched_opus, transcript, NULL, NULL, NULL, &aligned), TF_ERR_ALIGNMENT,
+                     "scratched_voice.opus: the file is damaged: 1 s of its sound could not be decoded, at 1.014-2.014 s");
+    CHECK(aligned == NULL);
 
     /* 100 bytes scratched inside a video's index (moov, at the end of this file) hide its sound
      * track: called damaged there, not "a video without a sound track". */

@@ -322,6 +322,14 @@ def test_a_damaged_file_refused_names_the_damage_before_the_text(tmp_path):
     assert "s of its sound could not be decoded, at 0." in result.stderr
     assert "--lenient" in result.stderr and "The aligner found: sentence 1" in result.stderr
     assert_nothing_written(tmp_path, audio)
+    # A scratch in an Ogg page's header (its segment table, 40 bytes into the page at byte 1920):
+    # the page claims more bytes than the file holds; it was called cut ("truncated: the Ogg
+    # stream breaks off inside a page"). The page's second is named as lost.
+    opus = damaged_copies.scratched_copy(AUDIO_DIR / "voice.opus", tmp_path / "scratched.opus", 1960.5 / 5869)
+    result = run("align", opus, transcript, "--json", "-o", tmp_path / "out.json")
+    assert result.returncode == 1
+    assert result.stderr.startswith(f"talkface: error: {opus}: the file is damaged: 1 s of its sound could not be "
+                                    "decoded, at 1.014-2.014 s"), result.stderr
 
 
 def test_a_stale_wav_header_is_read_whole_and_said(tmp_path):

@@ -304,6 +304,12 @@ def test_a_damaged_file_warns_where_its_sound_was_lost_or_refuses_saying_so_firs
     aligned = talkface.SpeechAligner().align_file(webm, clip_transcript())
     damage = [w for w in aligned.warnings if w.startswith(f"{webm}: the file is damaged: ")]
     assert len(damage) == 1 and "s of its sound could not be decoded, at 1.373-3.098 s" in damage[0], aligned.warnings
+    # A scratch in an Ogg page's header (its segment table, 40 bytes into the page at byte 1920): the
+    # page claims more bytes than the file holds; it was called cut. Its second is named as lost.
+    opus = damaged_copies.scratched_copy(AUDIO_DIR / "voice.opus", tmp_path / "scratched.opus", 1960.5 / 5869)
+    with pytest.raises(talkface.AlignmentError, match=r"the file is damaged: 1 s of its sound could not be "
+                                                      r"decoded, at 1\.014-2\.014 s \(read as silence"):
+        talkface.SpeechAligner().align_file(opus, clip_transcript())
 
 
 def test_a_video_whose_index_is_damaged_is_called_damaged_not_soundless(tmp_path):
