@@ -68,7 +68,10 @@ bool takes_liang(char32_t c) {
                         // A record's wins, losses and draws (3局2胜 三局两胜, 2胜1负 两胜一负; session 14).
                         U"胜勝负負平"
                         // A medal table's golds, silvers and bronzes (奪得2金5銅 兩金五銅; session 14).
-                        U"金银銀铜銅");
+                        U"金银銀铜銅"
+                        // A golfer's strokes, goals, medals, votes, questions, meals, trains, doses and
+                        // nights (2杆优势 两杆, 进了2球, 2枚金牌, 2票, 2道题, 2顿饭, 2列, 打了2针, 住2晚; session 16).
+                        U"杆桿球枚票道顿頓列针針晚夜");
 }
 
 bool ends_with(const std::string& text, std::string_view end) {
