@@ -354,7 +354,12 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     context.is_code = sign_words.empty() && currency == nullptr && names_by_its_digits(text, i, number);
     context.is_version = sign_words.empty() && currency == nullptr &&
                          (follows_software_name(text, i) || ends_range_of_versions(text, i));
-    context.after_laugh = sign_words.empty() && start > 0 && is_one_of(value_at(text, start - 1), U"哈呵嘿嘻笑死");
+    // Or after a chat's final particle, closing its line (太离谱了吧233, 好好笑啊233; session 16: 二百三十三).
+    const auto after_number = value_at(text, number.end);
+    const bool closes_clause = number.end >= text.size() || is_one_of(after_number, U"，,。.！!？?～~…\n ");
+    context.after_laugh = sign_words.empty() && start > 0 &&
+                          (is_one_of(value_at(text, start - 1), U"哈呵嘿嘻笑死") ||
+                           (closes_clause && is_one_of(value_at(text, start - 1), U"吧啊呀呢嘛哦啦")));
     context.is_whole_clause = sign_words.empty() && currency == nullptr && stands_alone(text, start, number.end);
     context.names_year =
         sign_words.empty() && currency == nullptr && !context.is_ordinal && names_year_before_word(text, number);
@@ -570,6 +575,14 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
             ++end;
         }
         form.words += currency->after;
+    }
+    // A count shown as "or more", 99+ (a chat's unread messages, 18+ of an age rating), said 加 as it is
+    // read out (session 16: the + was skipped with a warning). Not before a term (1+1 is a sum).
+    const auto after_plus = value_at(text, end + 1);
+    if (currency == nullptr && unit == nullptr && value_at(text, end) == '+' && !is_digit_at(text, end + 1) &&
+        !is_ascii_letter(after_plus) && !is_one_of(after_plus, U" +(（")) {
+        form.words += "加";
+        ++end;
     }
     form.end = end;
     return form;
