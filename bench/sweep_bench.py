@@ -169,15 +169,19 @@ def make_cases(out, label, stem):
     ffmpeg("-i", ref, "-af", "volume='if(lt(mod(t,1),0.06),0,1)':eval=frame", path("dropouts.wav"))
     case("dropouts (60 ms a second)", path("dropouts.wav"))
     # A notification beep (two 880 Hz tones of 80 ms, -12 dBFS) in the middle of the speech, and one
-    # 0.2 s before it.
+    # starting 0.3 s before it (ending 80 ms before the first onset); and a recorder's start beep
+    # 0.6 s before the speech, the passage padded by a second of digital silence.
     middle = (first_start + last_end) / 2
-    for name, at in [("beep_middle.wav", middle), ("beep_before.wav", max(0.0, first_start - 0.3))]:
-        ffmpeg("-i", ref, "-f", "lavfi", "-i",
+    sox(ref, path("padded1.wav"), "pad", "1", "0")
+    for name, source, at, shift in [("beep_middle.wav", ref, middle, 0.0),
+                                    ("beep_before.wav", ref, max(0.0, first_start - 0.3), 0.0),
+                                    ("beep_0.6s_before.wav", path("padded1.wav"), first_start + 1.0 - 0.6, 1.0)]:
+        ffmpeg("-i", source, "-f", "lavfi", "-i",
                "sine=f=880:d=0.08:sample_rate=16000,volume=0.25,apad=pad_dur=0.06[a];"
                "sine=f=880:d=0.08:sample_rate=16000,volume=0.25[b];[a][b]concat=v=0:a=1",
                "-filter_complex", f"[1]adelay={int(at * 1000)}[beep];[0][beep]amix=inputs=2:duration=first:normalize=0",
                path(name))
-        case(name.replace(".wav", "").replace("_", " "), path(name))
+        case(name.replace(".wav", "").replace("_", " "), path(name), shift)
     # Speech from the first sample to the last: the file cut at the truth's first onset and last end.
     sox(ref, path("tight.wav"), "trim", f"{first_start:.4f}", f"={last_end:.4f}")
     case("speech from the first sample to the last", path("tight.wav"), -first_start)

@@ -225,9 +225,27 @@ private:
         row[kMidBandDb] = band_db(900.0, 2500.0);
         row[kHighBandDb] = band_db(2500.0, 8000.0);
         row[kPeakAmplitude] = peak;
+        set_line(row);
         track_.values.insert(track_.values.end(), row.begin(), row.end());
         ++track_.frame_count;
         changing_.push(power_.data());
+    }
+
+    // kLineShare and kLineBin of the frame's power (not dithered), over 60-8000 Hz, as kEnergyDb.
+    void set_line(std::array<float, kFeatureCount>& row) const {
+        constexpr auto first = static_cast<std::size_t>((60 * kFftSize + kAnalysisRateHz - 1) / kAnalysisRateHz);
+        constexpr std::size_t last = kBins - 1;
+        std::size_t strongest = first;
+        double band = 0.0;
+        for (std::size_t k = first; k <= last; ++k) {
+            band += power_[k];
+            if (power_[k] > power_[strongest]) strongest = k;
+        }
+        double line = 0.0;
+        for (std::size_t k = std::max(first, strongest - std::min(strongest, kLineHalfBins)); k <= std::min(last, strongest + kLineHalfBins); ++k)
+            line += power_[k];
+        row[kLineShare] = band > 0.0 ? static_cast<float>(line / band) : 0.0f;
+        row[kLineBin] = static_cast<float>(strongest);
     }
 
     FeatureTrack& track_;

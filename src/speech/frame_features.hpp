@@ -42,8 +42,14 @@ enum FeatureColumn : int {
     kPeakAmplitude,                 // largest |sample| of the frame's 10 ms: Algorithm 3.1's "volume"
     kChangeBandDb,                  // the band where a voice's changes are measured (changing_spectrum.hpp)
     kChangingDb,                    // the power in it that changes
+    kLineShare,                     // the share of the 60-8000 Hz power within kLineHalfBins of its strongest bin
+    kLineBin,                       // that bin (PowerSpectrum's, 31.25 Hz apart): where a steady tone lies (steady_tone.hpp)
     kFeatureCount,
 };
+
+// A sine's power, through the 25 ms Hamming window zero-padded to 512 points, lies within 2 bins
+// of its strongest one (the window's main lobe): kLineShare is 1 for a steady tone.
+constexpr std::size_t kLineHalfBins = 2;
 
 // Frame t covers [t, t + 1) * kFrameStepS of the audio; its analysis window is centred there.
 struct FeatureTrack {

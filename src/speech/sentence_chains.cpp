@@ -72,11 +72,16 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
     for (std::size_t w = 0; w < chains.size(); ++w) {
         SentenceChain& chain = chains[w];
         const FrameSpan& speech = chain.speech;
-        const std::size_t lower = std::max(chain.limit.first_frame,
-                                           w == 0 ? 0 : (chains[w - 1].speech.end_frame + speech.first_frame) / 2);
-        const std::size_t upper = std::min(chain.limit.end_frame, w + 1 == chains.size()
-                                                                      ? track.frame_count
-                                                                      : (speech.end_frame + chains[w + 1].speech.first_frame + 1) / 2);
+        std::size_t lower = std::max(chain.limit.first_frame,
+                                     w == 0 ? 0 : (chains[w - 1].speech.end_frame + speech.first_frame) / 2);
+        std::size_t upper = std::min(chain.limit.end_frame, w + 1 == chains.size()
+                                                                ? track.frame_count
+                                                                : (speech.end_frame + chains[w + 1].speech.first_frame + 1) / 2);
+        // Nor across a steady tone (a beep just before the speech is no syllable's).
+        for (const FrameSpan& tone : loudness.tones) {
+            if (tone.end_frame <= speech.first_frame) lower = std::max(lower, tone.end_frame);
+            if (tone.first_frame >= speech.end_frame) upper = std::min(upper, tone.first_frame);
+        }
         chain.searched.first_frame = std::max(lower, speech.first_frame > kEdgeFrames ? speech.first_frame - kEdgeFrames : 0);
         // A sentence that ends in a room's tail is searched only a little past the voice's end, and
         // its vowels are scaled to the voiced part: the tail is not speech to spread them over.

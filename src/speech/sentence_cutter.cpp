@@ -11,6 +11,7 @@
 #include "speech/held_music.hpp"
 #include "speech/repeating_accompaniment.hpp"
 #include "speech/run_together.hpp"
+#include "speech/steady_tone.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
@@ -239,14 +240,17 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
         raw[t] = std::max({track.at(t, kLowBandDb) - profile.low_floor_db, track.at(t, kMidBandDb) - profile.mid_floor_db,
                            track.at(t, kHighBandDb) - profile.high_floor_db, 0.0f});
     }
-    profile.activity_db.resize(frames);
-    for (std::size_t t = 0; t < frames; ++t) {
-        const std::size_t first = t >= kSmoothingFrames / 2 ? t - kSmoothingFrames / 2 : 0;
-        const std::size_t end = std::min(frames, t + kSmoothingFrames / 2 + 1);
-        float sum = 0.0f;
-        for (std::size_t i = first; i < end; ++i) sum += raw[i];
-        profile.activity_db[t] = sum / static_cast<float>(end - first);
-    }
+    const auto smooth = [&] {
+        profile.activity_db.resize(frames);
+        for (std::size_t t = 0; t < frames; ++t) {
+            const std::size_t first = t >= kSmoothingFrames / 2 ? t - kSmoothingFrames / 2 : 0;
+            const std::size_t end = std::min(frames, t + kSmoothingFrames / 2 + 1);
+            float sum = 0.0f;
+            for (std::size_t i = first; i < end; ++i) sum += raw[i];
+            profile.activity_db[t] = sum / static_cast<float>(end - first);
+        }
+    };
+    smooth();
     // Between the noise and the speech: a quarter of the way up in dB, and at most 35 dB below
     // the loud frames (a room's reverberation fills the pauses of a clean recording to there),
     // never less than kAboveFloorDb above the floor nor kNoiseWanderDb above the noise's typical
@@ -256,6 +260,19 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     const float noise_level_db = percentile_of(profile.activity_db, kNoisePercentile);
     profile.activity_threshold_db =
         std::max({0.25f * speech_level_db, speech_level_db - 35.0f, kAboveFloorDb, noise_level_db + kNoiseWanderDb});
+    // A steady tone (a beep) as loud as speech is no speech: its frames read as the floor, and the
+    // threshold stays where the recording's levels put it. Quieter tones (a hum in the pauses) are
+    // left: they are no speech already.
+    const std::vector<bool> tone = steady_tone_frames(track);
+    bool has_tone = false;
+    for (std::size_t t = 0; t < frames; ++t) {
+        if (!tone[t] || raw[t] < profile.activity_threshold_db) continue;
+        raw[t] = 0.0f;
+        has_tone = true;
+        if (profile.tones.empty() || profile.tones.back().end_frame < t) profile.tones.push_back({t, t + 1});
+        else profile.tones.back().end_frame = t + 1;
+    }
+    if (has_tone) smooth();
     // Music held through the pauses is as loud as the quieter speech: where it is held, the frame
     // is no louder than a pause can be. So are a beat's hits between the pauses it cuts up, where
     // the beat's repeats explain them.

@@ -50,6 +50,7 @@ struct LoudnessProfile {
     float speech_level_db = 0.0f;           // the activity of loud speech: its 95th percentile
     std::vector<float> activity_db;         // per frame: the loudest band above its floor, smoothed
     std::vector<FrameSpan> pauses;          // runs of non-speech, at least kMinPauseS, in order
+    std::vector<FrameSpan> tones;           // runs of a steady tone as loud as speech (steady_tone.hpp), in order
     std::size_t speech_first_frame = 0;     // first and one past the last speech frame
     std::size_t speech_end_frame = 0;
 };
