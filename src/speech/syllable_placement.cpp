@@ -29,6 +29,15 @@ constexpr double kTransitionShare = 0.25;
 constexpr std::size_t kValleySearchFrames = 6;
 constexpr std::size_t kValleySideFrames = 10;
 constexpr float kValleyDepthDb = 3.0f;
+// Where no valley lies that near, one twice as deep is looked for up to 20 frames back, after the
+// syllable before's loudest frame: the path often gives the syllable before the new one's first
+// frames (會有 快又 包往 蘇我: the valley 7-12 frames before its start, 10-20 dB deep). bench/
+// Session 17 measured 8 to 50 frames back at 4 to 10 dB on the person's tuning rows: 20 and 6
+// placed best (50 gained nothing: 是一 whose path is a whole syllable late, in a plateau of i
+// 20-36 frames long). Without the peak, espeak-ng's 有一 moved to 有's own onset (its y is
+// weaker than its ou), 180 ms early in 19 conditions.
+constexpr std::size_t kFarValleySearchFrames = 20;
+constexpr float kFarValleyDepthDb = 6.0f;
 // A valley's floor: the frames within 1 dB of its lowest (the frame-to-frame scatter of a held
 // sound; a WAV and its MP3 or Opus place 公園's 園 alike).
 constexpr float kValleyFloorDb = 1.0f;
@@ -60,27 +69,46 @@ std::size_t voiced_join_start(const StateSegment& before, PhoneClass before_clas
     return start;
 }
 
-std::size_t syllable_valley_start(const FeatureTrack& track, std::size_t offset, std::size_t lowest, std::size_t start) {
-    const std::size_t first = std::max(lowest, start >= kValleySearchFrames ? start - kValleySearchFrames : 0);
-    const std::size_t end = std::min(track.frame_count - std::min(track.frame_count, offset), start + 2);
-    if (end < first + 3) return start;
+namespace {
+
+// The valley of the level in frames [first, end) counted from frame `offset` of `track`, as
+// syllable_valley_start takes it, where it lies at least `depth_db` under the quieter of its sides'
+// peaks; none: `end`.
+std::size_t level_valley(const FeatureTrack& track, std::size_t offset, std::size_t first, std::size_t end, float depth_db) {
+    if (end < first + 3) return end;
     auto level = [&](std::size_t t) { return track.at(offset + t, kEnergyDb); };
     std::size_t valley = first;
     for (std::size_t t = first + 1; t < end; ++t)
         if (level(t) < level(valley)) valley = t;
     // A level still falling at the search's first frame, or still rising past the start, is no valley.
-    if (valley == first || valley + 1 == end) return start;
+    if (valley == first || valley + 1 == end) return end;
     float before = level(valley), after = level(valley);
     for (std::size_t t = valley - std::min(valley, kValleySideFrames); t < valley; ++t) before = std::max(before, level(t));
     for (std::size_t t = valley + 1; t <= valley + kValleySideFrames && offset + t < track.frame_count; ++t)
         after = std::max(after, level(t));
-    if (std::min(before, after) - level(valley) < kValleyDepthDb) return start;
+    if (std::min(before, after) - level(valley) < depth_db) return end;
     // A flat floor (a nasal coda) ends where the level begins to rise: its lowest frame would move
     // with a codec's rounding.
     std::size_t rise = valley;
     for (std::size_t t = valley + 1; t + 1 < end; ++t)
         if (level(t) < level(valley) + kValleyFloorDb) rise = t;
     return rise;
+}
+
+}  // namespace
+
+std::size_t syllable_valley_start(const FeatureTrack& track, std::size_t offset, std::size_t lowest, std::size_t start) {
+    const std::size_t end = std::min(track.frame_count - std::min(track.frame_count, offset), start + 2);
+    auto search_from = [&](std::size_t frames) { return std::max(lowest, start >= frames ? start - frames : 0); };
+    const std::size_t near = level_valley(track, offset, search_from(kValleySearchFrames), end, kValleyDepthDb);
+    if (near != end) return near;
+    // That far back a valley may be the syllable before's own onset (有一: the y of 有 is weaker
+    // than its ou): the one between the two nuclei lies after the syllable before's loudest frame.
+    std::size_t peak = lowest;
+    for (std::size_t t = lowest; t < std::min(start, end); ++t)
+        if (track.at(offset + t, kEnergyDb) > track.at(offset + peak, kEnergyDb)) peak = t;
+    const std::size_t far = level_valley(track, offset, std::max(peak, search_from(kFarValleySearchFrames)), end, kFarValleyDepthDb);
+    return far != end ? far : start;
 }
 
 void place_syllables(const SentenceChain& chain, std::size_t chain_index, const std::vector<StateSegment>& path,

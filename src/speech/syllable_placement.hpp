@@ -46,7 +46,10 @@ std::size_t voiced_join_start(const StateSegment& before, PhoneClass before_clas
 // move to (after the syllable before's vowel begins), both counted from frame `offset` of `track`.
 // Returns the lowest-level frame within kValleySearchFrames before `start` (or `start` itself)
 // where it is a valley at least kValleyDepthDb deep (the last frame of its floor, where the level
-// begins to rise), else `start`: never later.
+// begins to rise); where there is none, the same within kFarValleySearchFrames and after the
+// loudest frame from `lowest` on (the syllable before's nucleus) where it is kFarValleyDepthDb deep
+// (after a short syllable the path starts the next one late by more than a turn's width); else
+// `start`: never later.
 std::size_t syllable_valley_start(const FeatureTrack& track, std::size_t offset, std::size_t lowest, std::size_t start);
 
 // The path's syllables and pauses, in frames of the whole recording.

@@ -76,9 +76,14 @@ TEST_SUITE("speech") {
         CHECK(syllable_valley_start(track, 5, 1, 25) == 22);
         // Where the path put it already.
         CHECK(syllable_valley_start(track, 5, 1, 22) == 22);
-        // Six frames back at most: a valley seven frames before is not looked at, and the search's
+        // Seven frames back (after a short syllable the path starts the next one late): a valley
+        // this deep is still taken, one of 5 dB only within six frames.
+        CHECK(syllable_valley_start(track, 5, 1, 29) == 22);
+        CHECK(syllable_valley_start(two_nuclei(27, 5.0f), 5, 1, 25) == 22);
+        CHECK(syllable_valley_start(two_nuclei(27, 5.0f), 5, 1, 29) == 29);
+        // Twenty frames back at most: a valley 21 frames before is not looked at, and the search's
         // first frame, still on the valley's rising side, is no valley.
-        CHECK(syllable_valley_start(track, 5, 1, 29) == 29);
+        CHECK(syllable_valley_start(track, 5, 1, 43) == 43);
         // A valley right after the start would move the syllable later: it stays.
         CHECK(syllable_valley_start(track, 5, 1, 21) == 21);
     }
