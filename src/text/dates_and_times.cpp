@@ -3,13 +3,20 @@
 #include <utility>
 
 #include "text/number_words.hpp"
+#include "text/script_variant.hpp"
 
 namespace talkface::detail {
 
 bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t end, bool dashed) {
     const std::string before = text_before(text, start, true);
-    for (const std::string_view word : {"比分", "比數", "比数", "战成", "戰成", "打成", "踢成"})
+    // A tie-break (抢七7-5) and a set or a game named right before the pair (第2盘6-4, 首局11-9, 决胜局,
+    // not 结局 or 布局) name a score too (session 17: 七到五).
+    for (const std::string_view word : {"比分", "比數", "比数", "战成", "戰成", "打成", "踢成", "抢七", "搶七", "抢十", "搶十"})
         if (before.find(word) != std::string::npos) return true;
+    if (start >= 2 && is_one_of(text[start - 1].value, U"盘盤局") &&
+        (is_digit_at(text, start - 2) || is_one_of(text[start - 2].value, U"首次胜勝")) && !takes_liang(value_at(text, end))) {
+        return true;
+    }
     const std::string after = text_between(text, end, end + 2);
     constexpr std::string_view kResults[] = {"战胜", "戰勝", "击败", "擊敗", "获胜", "獲勝", "取胜", "取勝", "领先", "領先",
                                              "落后", "落後", "险胜", "險勝", "大胜", "大勝", "完胜", "完勝", "逆转", "逆轉",
@@ -98,7 +105,9 @@ bool names_a_day(const std::vector<CodePoint>& text, std::size_t start, const Wr
     if (!is_month_and_day(digits.substr(0, month_length), digits.substr(month_length))) return false;
     const std::string after = text_between(text, number.end, number.end + 3);
     for (const std::string_view word : {"节", "節", "大促", "促销", "促銷", "购物", "購物", "晚会", "晚會", "活动", "活動",
-                                        "当天", "當天", "这天", "這天", "那天", "快乐", "快樂", "狂欢", "狂歡", "表白"})
+                                        "当天", "當天", "这天", "這天", "那天", "快乐", "快樂", "狂欢", "狂歡", "表白",
+                                        // A disaster named by its day (921大地震 九二一, 512地震; session 17).
+                                        "大地震", "地震", "事件"})
         if (after.rfind(word, 0) == 0) return true;
     const std::string before = text_before(text, start, true);
     for (const std::string_view word : {"今天是", "明天是", "昨天是", "后天是", "後天是", "今天就是", "又到了", "迎来", "迎來"})
@@ -124,7 +133,9 @@ bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNum
     }
     const std::string after = text_between(text, number.end, number.end + 3);
     for (const std::string_view word : {"财年", "財年", "赛季", "賽季", "款", "届", "屆", "级", "級", "版", "春晚", "世界杯",
-                                        "奥运", "奧運", "冬奥", "冬奧", "亚运", "亞運", "全运", "全運"})
+                                        "奥运", "奧運", "冬奥", "冬奧", "亚运", "亞運", "全运", "全運",
+                                        // An exam's year (#2024高考#, 2025考研, 2026国考; session 17).
+                                        "高考", "中考", "考研", "国考", "國考", "学测", "學測"})
         if (after.rfind(word, 0) == 0) return true;
     return false;
 }
@@ -178,7 +189,11 @@ std::string said_year(const std::string& digits) {
 
 std::optional<SpokenForm> read_numeric_date(const std::vector<CodePoint>& text, const WrittenNumber& year) {
     const auto separator = value_at(text, year.end);
-    if (year.has_point || year.has_separators || !(year.whole.size() == 4 || is_republic_year(year.whole)) ||
+    // A two-digit year of the Republic with slashes (99/12/31, 88/9/21), as Taiwan dates its papers,
+    // in a Traditional transcript (below); elsewhere two digits and slashes are left to the fractions.
+    const bool may_be_short_republic_year = year.whole.size() == 2 && year.whole.front() != '0' && separator == '/';
+    if (year.has_point || year.has_separators ||
+        !(year.whole.size() == 4 || is_republic_year(year.whole) || may_be_short_republic_year) ||
         !(separator == '-' || separator == '/')) {
         return std::nullopt;
     }
@@ -188,8 +203,11 @@ std::optional<SpokenForm> read_numeric_date(const std::vector<CodePoint>& text, 
     ++i;
     const auto day = digits_from(text, i);
     if (!is_month_and_day(month, day)) return std::nullopt;
+    // Counted, as 民國99年 is (session 17: 99/12/31 was 十二分之九十九 and 三十一).
+    if (may_be_short_republic_year && !is_traditional_text(text)) return std::nullopt;
     SpokenForm form;
-    form.words = said_year(year.whole) + cardinal_words(month, false) + "月" + cardinal_words(day, false) + "日";
+    form.words = (may_be_short_republic_year ? cardinal_words(year.whole, false) + "年" : said_year(year.whole)) +
+                 cardinal_words(month, false) + "月" + cardinal_words(day, false) + "日";
     form.end = i;
     // A range of two such dates (113/09/01~113/09/30, 2026-12-01~2026-12-05): the mark is 到, as after
     // any date (session 16; the mark was left to the second date, which it made a sign or skipped).

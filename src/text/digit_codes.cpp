@@ -43,6 +43,9 @@ std::string model_name_before(const std::vector<CodePoint>& text, std::size_t st
     constexpr std::size_t kMostCapitals = 3;
     const bool starts_word = i == 0 || !(is_ascii_letter(value_at(text, i - 1)) || is_digit_at(text, i - 1));
     if (capitals.size() > kMostCapitals || is_said_as_word(capitals) || !starts_word) return {};
+    // An index's name, whose number is its value (AQI 152 一百五十二, CPI 102; session 17: 一五二).
+    for (const std::string_view index : {"AQI", "CPI", "PPI", "PMI", "BMI"})
+        if (capitals == index) return {};
     return capitals;
 }
 
@@ -275,6 +278,17 @@ bool follows_designation(const std::vector<CodePoint>& text, std::size_t dash) {
                                         "霹雳", "霹靂", "快舟"})
         if (before == name) return true;
     return false;
+}
+
+bool follows_element(const std::vector<CodePoint>& text, std::size_t start) {
+    // The elements whose names are one character, Simplified and Traditional, but gold, silver, copper,
+    // iron, tin and lead, whose names are common words too (黄金999 is a purity, 地铁 a railway).
+    constexpr std::u32string_view kElements =
+        U"氢氦锂铍硼碳氮氧氟氖钠镁铝硅磷硫氯氩钾钙钪钛钒铬锰钴镍锌镓锗砷硒溴氪铷锶钇锆铌钼锝钌铑钯镉铟锑碲碘氙"
+        U"铯钡镧铈镨钕钷钐铕钆铽镝钬铒铥镱镥铪钽钨铼锇铱铂汞铊铋钋砹氡钫镭锕钍镤铀镎钚镅锔锫锎锿镄钔锘铹"
+        U"鋰鈹鈉鎂鋁矽鉀鈣鈧鈦釩鉻錳鈷鎳鋅鎵鍺銣鍶釔鋯鈮鉬鎝釕銠鈀鎘銦銻碲銫鋇鑭鈰鐠釹鉕釤銪釓鋱鏑鈥鉺銩鐿鎦"
+        U"鉿鉭鎢錸鋨銥鉑鉈鉍釙砈鍅鐳錒釷鏷鈾錼鈽鋂鋦鉳鉲鑀鐨鍆鍩鐒";
+    return start > 0 && kElements.find(text[start - 1].value) != std::u32string_view::npos;
 }
 
 bool is_train_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {

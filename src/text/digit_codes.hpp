@@ -95,6 +95,10 @@ bool follows_software_name(const std::vector<CodePoint>& text, std::size_t start
 // 东风-41, 长征-5): the hyphen joins, it is no minus sign.
 bool follows_designation(const std::vector<CodePoint>& text, std::size_t dash);
 
+// A chemical element's name right before text[start] (碳-14, 铀-235, 碘131): an isotope's mass number,
+// joined to it by a hyphen, which is no minus sign, and said as a model's number is (碳十四, 铀二三五).
+bool follows_element(const std::vector<CodePoint>& text, std::size_t start);
+
 // A train's number: one capital of a train's class (G D C Z T K L Y S) right before the digits and
 // 次 after them (G1234次: 次 names the train there, it does not count) or 车次 before them in the
 // clause (车次：G101).

@@ -13,11 +13,14 @@ constexpr std::u32string_view kSimplifiedOnly =
     U"实现业务员语线区当报纸头应该条场动汉阳红风云飞鸟鱼马龙"
     // Words of addresses, buildings and notices, so that a short line of Taiwan's or Hong Kong's
     // (台北101大樓89F觀景台, 1樓大廳見) is told by them (session 16: it had none of the above).
-    U"楼观厅厦馆价际专询处码邮编统营厂层";
+    U"楼观厅厦馆价际专询处码邮编统营厂层"
+    // And of payments, dates and notices (繳費期限：99/12/31前; session 17: it had none of the above).
+    U"缴费于预约办单证";
 constexpr std::u32string_view kTraditionalOnly =
     U"們個這會說時國對學來為書點兩萬億號電話幾麼還過請開門長東車見機關發經變種讓錢灣氣溫與從體問題聽歡樂買賣進華"
     U"實現業務員語線區當報紙頭應該條場動漢陽紅風雲飛鳥魚馬龍"
-    U"樓觀廳廈館價際專詢處碼郵編統營廠層";
+    U"樓觀廳廈館價際專詢處碼郵編統營廠層"
+    U"繳費於預約辦單證";
 
 // The characters of the written forms' readings that Traditional writes otherwise.
 constexpr std::pair<std::string_view, std::string_view> kReadingCharacters[] = {

@@ -170,6 +170,57 @@ std::vector<CodePoint> width_folded(const std::vector<CodePoint>& text) {
     return folded;
 }
 
+// Whether text[start] stands in a chemical formula, as a chemistry lesson writes one (H2SO4, Fe2O3,
+// C6H12O6, NaCl): the run of ASCII letters and digits around it is element symbols (a capital and at
+// most one small letter, from the periodic table) with their counts, a coefficient allowed before
+// (2H2O), and it shows itself a formula: a count between two symbols (Fe2O3, H2O; Win10 has its
+// digits only at the end), or, where a symbol has a small letter and none is counted (NaCl, NaOH), a
+// word of chemistry in the sentence (溶液 反应 分子 离子 ...). Each letter is then said by its name,
+// small ones too (Fe ai fu yi), and each count as a number (C6H12O6 C六H十二O六), as lessons read
+// them (session 17: Fe was the pinyin fei, and a formula's O the pinyin o in a line without Chinese).
+bool in_chemical_formula(const std::vector<CodePoint>& text, std::size_t start) {
+    static constexpr std::string_view kSymbols[] = {
+        "H",  "He", "Li", "Be", "B",  "C",  "N",  "O",  "F",  "Ne", "Na", "Mg", "Al", "Si", "P",  "S",  "Cl", "Ar", "K",
+        "Ca", "Sc", "Ti", "V",  "Cr", "Mn", "Fe", "Co", "Ni", "Cu", "Zn", "Ga", "Ge", "As", "Se", "Br", "Kr", "Rb", "Sr",
+        "Y",  "Zr", "Nb", "Mo", "Tc", "Ru", "Rh", "Pd", "Ag", "Cd", "In", "Sn", "Sb", "Te", "I",  "Xe", "Cs", "Ba", "La",
+        "Ce", "Pr", "Nd", "Pm", "Sm", "Eu", "Gd", "Tb", "Dy", "Ho", "Er", "Tm", "Yb", "Lu", "Hf", "Ta", "W",  "Re", "Os",
+        "Ir", "Pt", "Au", "Hg", "Tl", "Pb", "Bi", "Po", "At", "Rn", "Fr", "Ra", "Ac", "Th", "Pa", "U",  "Np", "Pu", "Am"};
+    auto is_symbol = [](std::string_view symbol) {
+        return std::find(std::begin(kSymbols), std::end(kSymbols), symbol) != std::end(kSymbols);
+    };
+    auto in_run = [&](std::size_t k) { return is_ascii_letter(text[k].value) || is_digit(text[k].value); };
+    auto first = start;
+    while (first > 0 && in_run(first - 1)) --first;
+    auto end = start;
+    while (end < text.size() && in_run(end)) ++end;
+    auto k = first;
+    while (k < end && is_digit(text[k].value)) ++k;  // a coefficient (2H2O)
+    std::size_t symbols = 0;
+    bool counted_between = false;
+    bool has_small = false;
+    while (k < end) {
+        if (!is_ascii_capital(text[k].value)) return false;
+        std::string symbol(1, static_cast<char>(text[k].value));
+        if (k + 1 < end && text[k + 1].value >= 'a' && text[k + 1].value <= 'z') symbol += static_cast<char>(text[k + 1].value);
+        if (!is_symbol(symbol)) return false;
+        has_small = has_small || symbol.size() == 2;
+        k += symbol.size();
+        ++symbols;
+        const auto count_start = k;
+        while (k < end && is_digit(text[k].value)) ++k;
+        counted_between = counted_between || (k > count_start && k < end);
+    }
+    if (symbols < 2) return false;
+    if (counted_between) return true;
+    if (!has_small) return false;
+    std::string sentence;
+    for (const auto& c : text) sentence += c.text;
+    for (const std::string_view word : {"溶液", "溶于", "溶於", "反应", "反應", "化学", "化學", "分子", "离子", "離子",
+                                        "浓度", "濃度", "摩尔", "摩爾", "晶体", "晶體", "沉淀", "电解", "電解"})
+        if (sentence.find(word) != std::string::npos) return true;
+    return false;
+}
+
 // Whether the character next to a token (at `edge - 1` before it, step -1, or at `edge` after it,
 // step 1; spaces skipped) is a sign a formula writes between or before terms (= < > ≈ ≠ ≤ ≥ + ×
 // ÷ ∠ ⊥ ∥).
@@ -417,7 +468,8 @@ private:
                           detail::english_word_syllables(latin_spelling(text, start, end))));
         // Capitals beside a formula's sign are a lesson's letters in a line without Chinese
         // characters too (∠A=30° 角 A 等于三十度; session 14: A was the pinyin a).
-        const bool is_formula_letter = detail::is_all_capitals(letters) && !has_tone_digit(token) &&
+        // With a count after it too (2H2+O2=2H2O: O2 was the pinyin o2; session 17).
+        const bool is_formula_letter = detail::is_all_capitals(letters) &&
                                        (touches_formula_sign(text, start, -1) || touches_formula_sign(text, end, 1));
         // A game's level (Lv.50, LV50 among Chinese characters) is letters and a number, not the pinyin lü.
         const auto after_letters = start + letters.size();
@@ -425,6 +477,7 @@ private:
                               ((text[after_letters].value == '.' && is_digit(text[after_letters + 1].value)) ||
                                (has_han_ && is_digit(text[after_letters].value) && is_digit(text[after_letters + 1].value)));
         if (is_level) return read_latin(text, start);
+        if (in_chemical_formula(text, start)) return read_latin(text, start);
         if (options_.read_pinyin && looks_like_pinyin(token) && !is_english_among_han && !is_formula_letter)
             syllables = split_pinyin(token);
         if (!syllables) return read_latin(text, start);
@@ -451,6 +504,10 @@ private:
             return start + 1;
         }
         std::string word = latin_spelling(text, start, end);
+        if (in_chemical_formula(text, start)) {
+            add_form(text, start, end, said_syllables(detail::letter_syllables(word)));
+            return end;
+        }
         // A hyphen in a formula is a minus sign (a-b>0), not a join.
         if (end + 1 < text.size() && text[end].value == '-' && is_ascii_letter(text[end + 1].value) &&
             detail::said_math_sign(text, end).empty()) {
@@ -492,6 +549,10 @@ private:
     std::vector<Syllable> latin_word_syllables(const std::string& word, const CodePoint& at) {
         // A letter alone is a letter (选a, x=5), not the dictionary's word a or x (ai si).
         if (word.size() == 1 || (detail::is_all_capitals(word) && !detail::is_said_as_word(word))) return read_capitals(word);
+        // A small letter and a capital (pH, as chemistry writes it) are letters, P H (session 17: the
+        // dictionary's word ph, pi ei qi).
+        if (word.size() == 2 && word.front() >= 'a' && word.front() <= 'z' && is_ascii_capital(static_cast<char32_t>(word.back())))
+            return said_syllables(detail::letter_syllables(word));
         // Capitals and one small letter after them (PCIe) are an acronym's letters, said one by one (P C
         // I E); no part of them is a word to say.
         const bool is_acronym_with_small_end = word.size() >= 3 && word.back() >= 'a' && word.back() <= 'z' &&

@@ -20,14 +20,41 @@ std::string digits_from(const std::vector<CodePoint>& text, std::size_t& i) {
     return digits;
 }
 
+namespace {
+
+// A full-width comma at text[comma] between a group of one to three digits (`first`) and three more
+// is a thousands separator where the writing shows one: a first group of one digit (1，200人), a round
+// group after it (12，500, 3，000), a further group or a decimal part (1，234，567, 1，299.50), or money
+// (¥1，280, 1，299元). Elsewhere it is the comma between two clauses it is written as (他考了68，123人参加
+// 六十八，一百二十三人; session 17: 六万八千一百二十三). Fix either in place.
+bool full_width_comma_separates(const std::vector<CodePoint>& text, std::size_t first_start, const std::string& first,
+                                std::size_t comma) {
+    if (first.size() == 1) return true;
+    if (value_at(text, comma + 2) == '0' && value_at(text, comma + 3) == '0') return true;
+    const auto after = comma + 4;
+    const auto next = value_at(text, after);
+    if ((next == ',' || next == '.') && is_digit_at(text, after + 1)) return true;
+    if (first_start > 0 && is_one_of(value_at(text, first_start - 1), U"$¥￥€£")) return true;
+    const auto word = text_between(text, after, after + 2);
+    for (const std::string_view money : {"元", "圆", "圓", "块", "塊", "美元", "港元", "欧元", "歐元", "日元", "万元", "萬元"})
+        if (word.rfind(money, 0) == 0) return true;
+    return false;
+}
+
+}  // namespace
+
 WrittenNumber parse_number(const std::vector<CodePoint>& text, std::size_t i) {
     WrittenNumber number;
+    const auto first_start = i;
     number.whole = digits_from(text, i);
-    // Thousands separators: an ASCII comma and exactly three digits (1,234,567). The ideographic
-    // comma ，stays a pause: 1，2，3 is a list.
+    // Thousands separators: a comma and exactly three digits (1,234,567). The ideographic comma 、
+    // stays a pause (1、2、3 is a list), and so does a full-width comma where the writing does not
+    // show a separator (above).
     if (number.whole.size() <= 3) {
         while (i + 3 < text.size() + 1 && text[i].value == ',' && is_digit_at(text, i + 1) &&
-               is_digit_at(text, i + 2) && is_digit_at(text, i + 3) && !is_digit_at(text, i + 4)) {
+               is_digit_at(text, i + 2) && is_digit_at(text, i + 3) && !is_digit_at(text, i + 4) &&
+               (number.has_separators || text[i].text != "，" ||
+                full_width_comma_separates(text, first_start, number.whole, i))) {
             for (std::size_t k = 1; k <= 3; ++k) number.whole += static_cast<char>(ascii_form(text[i + k].value));
             number.has_separators = true;
             i += 4;
@@ -71,7 +98,9 @@ bool takes_liang(char32_t c) {
                         U"金银銀铜銅"
                         // A golfer's strokes, goals, medals, votes, questions, meals, trains, doses and
                         // nights (2杆优势 两杆, 进了2球, 2枚金牌, 2票, 2道题, 2顿饭, 2列, 打了2针, 住2晚; session 16).
-                        U"杆桿球枚票道顿頓列针針晚夜");
+                        U"杆桿球枚票道顿頓列针針晚夜"
+                        // A recipe's cloves and spoons (2-3瓣蒜 两到三瓣, 2汤匙 两汤匙, 2茶匙; session 17).
+                        U"瓣汤湯茶");
 }
 
 bool ends_with(const std::string& text, std::string_view end) {

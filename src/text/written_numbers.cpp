@@ -62,6 +62,28 @@ bool measures_degrees(const std::vector<CodePoint>& text, std::size_t start, std
     return degree + 1 >= text.size() || kClauseEnds.find(text[degree + 1].value) != std::u32string_view::npos;
 }
 
+// A radio band right before a number (FM103.9, AM 639, 调频97.4; one space allowed): a station's frequency.
+bool follows_station_band(const std::vector<CodePoint>& text, std::size_t start) {
+    auto i = start;
+    if (i > 0 && text[i - 1].value == ' ') --i;
+    if (i >= 2 && value_at(text, i - 1) == 'M' && is_one_of(value_at(text, i - 2), U"FA") &&
+        (i == 2 || !is_ascii_letter(value_at(text, i - 3)))) {
+        return true;
+    }
+    const auto before = text_between(text, i >= 2 ? i - 2 : 0, i);
+    return before == "调频" || before == "調頻" || before == "调幅" || before == "調幅";
+}
+
+// Whether the sentence around text[start, end) speaks of a sports season or a league's table.
+bool speaks_of_season(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    std::string sentence = text_before(text, start, false);
+    for (auto i = end; i < text.size() && !is_one_of(value_at(text, i), U"\u3002.!?;\n"); ++i) sentence += text[i].text;
+    for (const std::string_view word : {"赛季", "賽季", "常规赛", "常規賽", "例行赛", "例行賽", "季后赛", "季後賽", "排名",
+                                        "联盟", "聯盟", "东部", "東部", "西部", "胜率", "勝率", "积分榜", "積分榜"})
+        if (sentence.find(word) != std::string::npos) return true;
+    return false;
+}
+
 // A game's record of kills, deaths and assists (战绩0-10, KDA 5-2-10), each part said with 杠 between, as
 // players read it out (零杠十; session 16: a range, 零到十). Up to three parts of one or two digits,
 // where 战绩 or KDA stands earlier in the clause.
@@ -88,6 +110,13 @@ std::optional<SpokenForm> read_game_record(const std::vector<CodePoint>& text, s
         ++parts;
     }
     if (parts < 2 || is_digit_at(text, i) || is_dash(value_at(text, i))) return std::nullopt;
+    // A season's record of wins and losses (湖人目前战绩30-12，排名西部第2; 本赛季战绩45-37) is said
+    // 三十胜十二负, as newsreaders say it (session 17: 三十杠十二): two parts where the sentence speaks
+    // of a season or a table (赛季 常规赛 季后赛 排名 联盟 东部 西部 胜率 积分榜).
+    if (parts == 2 && speaks_of_season(text, start, i)) {
+        auto k = first.end + 1;
+        form.words = cardinal_words(first.whole, false) + "胜" + cardinal_words(digits_from(text, k), false) + "负";
+    }
     form.end = i;
     return form;
 }
@@ -166,6 +195,7 @@ struct NumberContext {
     bool after_laugh = false;    // right after a laugh's character (哈哈233)
     bool is_whole_clause = false;  // the number alone between clause marks (88，下次再聊)
     bool measures_degrees = false;  // before a 度 of a temperature or an angle (2度左右 两度)
+    bool is_frequency = false;   // a station's frequency after FM, AM or 调频 (FM103.9 一零三点九)
 };
 
 struct SaidNumber {
@@ -179,6 +209,12 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
     SaidNumber said;
     const auto& whole = number.whole;
     if (number.has_point) {
+        // A station's frequency is said as stations name themselves, digit by digit before the point
+        // too (FM103.9 一零三点九, 调频97.4 九七点四; session 17: 一百零三点九).
+        if (context.is_frequency && whole.size() <= 3) {
+            said.words = digit_words(whole) + "点" + digit_words(number.fraction);
+            return said;
+        }
         // A version's part after the point is a number (Python 3.12 三点十二, as 10.15.7 is 十点十五点七);
         // a decimal's digits are said one by one (3.12 三点一二).
         const bool counts = context.has_unit || takes_liang(context.next) || context.next == '%';
@@ -308,7 +344,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     // After a term (a digit, a letter, a square: x²+2x) a + or a - joins it to the next, a sign no more.
     const bool after_word = start > 0 && (is_digit_at(text, start - 1) || is_ascii_letter(value_at(text, start - 1)) ||
                                           is_one_of(text[start - 1].value, U"\u00B2\u00B3"));
-    if (currency == nullptr && is_dash(first) && is_digit_at(text, i + 1) && follows_designation(text, start)) {
+    if (currency == nullptr && is_dash(first) && is_digit_at(text, i + 1) &&
+        (follows_designation(text, start) || follows_element(text, start))) {
         ++i;
     } else if (currency == nullptr && (is_dash(first) || first == '+') && is_digit_at(text, i + 1) && !after_word) {
         sign_words = first == '+' ? "正" : "负";
@@ -334,7 +371,13 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
                               is_one_of(value_at(text, number.end), U"号號");
     context.is_model = sign_words.empty() && currency == nullptr &&
                        (follows_model_name(text, start) || follows_maker_name(text, start) ||
-                        follows_glued_name(text, start));
+                        follows_glued_name(text, start) ||
+                        // An isotope's number after a hyphen (碳-14), or of three digits or more glued to
+                        // a radioactive element's name, which names its isotopes (铀235, 铯137; 钠500毫克 and
+                        // 补钙2片 count).
+                        (follows_element(text, start) &&
+                         (is_dash(value_at(text, start)) ||
+                          (number.whole.size() >= 3 && start > 0 && is_one_of(text[start - 1].value, U"铀鈾钚鈽铯銫锶鍶钴鈷碘镭鐳氡钍釷镅鋂钋釙")))));
     context.is_train = context.is_model && !number.has_point && !number.has_separators &&
                        (is_train_number(text, start, number.end) || is_flight_number(text, start, number.end));
     context.has_currency = currency != nullptr;
@@ -352,8 +395,11 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     context.is_span_of_years = counts_years(text, start, number);
     context.is_service_call = is_service_call(text, start, number.end);
     context.is_code = sign_words.empty() && currency == nullptr && names_by_its_digits(text, i, number);
+    context.is_frequency = sign_words.empty() && currency == nullptr && follows_station_band(text, start);
     context.is_version = sign_words.empty() && currency == nullptr &&
                          (follows_software_name(text, i) || ends_range_of_versions(text, i));
+    // A version before 后 is no generation (升级到Android 15后 十五后; session 17: 一五后).
+    if (context.is_version) context.is_generation = false;
     // Or after a chat's final particle, closing its line (太离谱了吧233, 好好笑啊233; session 16: 二百三十三).
     const auto after_number = value_at(text, number.end);
     const bool closes_clause = number.end >= text.size() || is_one_of(after_number, U"，,。.！!？?～~…\n ");
