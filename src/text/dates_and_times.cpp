@@ -36,7 +36,9 @@ bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t
 bool speaks_of_duration(const std::vector<CodePoint>& text, std::size_t start) {
     const std::string before = text_before(text, start, true);
     for (const std::string_view word : {"成绩", "成績", "用时", "用時", "耗时", "耗時", "历时", "歷時", "跑出", "游出",
-                                        "完赛", "完賽", "时长", "時長"})
+                                        "完赛", "完賽", "时长", "時長",
+                                        // The time left on a game's clock (第4节还剩2:35; session 17: 两点三十五分).
+                                        "还剩", "還剩", "剩余", "剩餘", "倒计时", "倒計時"})
         if (before.find(word) != std::string::npos) return true;
     return false;
 }
@@ -132,6 +134,10 @@ bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNum
         return false;
     }
     const std::string after = text_between(text, number.end, number.end + 3);
+    // A year's quarter or half (2024Q4 二零二四 Q 四, 2025H1; session 17: 两千零二十四).
+    if (after.size() >= 2 && is_one_of(value_at(text, number.end), U"QH") && is_digit_at(text, number.end + 1) &&
+        !is_digit_at(text, number.end + 2))
+        return true;
     for (const std::string_view word : {"财年", "財年", "赛季", "賽季", "款", "届", "屆", "级", "級", "版", "春晚", "世界杯",
                                         "奥运", "奧運", "冬奥", "冬奧", "亚运", "亞運", "全运", "全運",
                                         // An exam's year (#2024高考#, 2025考研, 2026国考; session 17).

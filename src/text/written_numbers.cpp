@@ -432,7 +432,16 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
             const bool duration = speaks_of_duration(text, start) || names_place_in_recording(text, start, time_end);
             if (auto time = read_clock_time(text, number, duration)) return time;
         }
-        return join_two(second, "比", context);
+        join_two(second, "比", context);
+        // A ratio of three parts or more (糖、醋、生抽按2:1:1 二比一比一; session 17: the last 比 was lost).
+        while (value_at(text, form.end) == ':' && is_digit_at(text, form.end + 1)) {
+            const auto part = parse_number(text, form.end + 1);
+            const auto part_said = say_number(part, context);
+            form.words += "比" + part_said.words;
+            append_warning(form, part_said.warning);
+            form.end = part.end;
+        }
+        return form;
     }
     // A small x between two numbers is a times sign typed (4x400米接力, 1920x1080), said 乘 as × is.
     if (is_one_of(value_at(text, number.end), U"×*x") && is_digit_at(text, number.end + 1) && currency == nullptr) {
@@ -566,9 +575,16 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         for (std::size_t k = 0; k < signs.size(); ++k)
             if (signs[k] == "正") signs[k] = k == 0 && !names_change(text, start) ? "涨" : "";
     }
-    // ¥1,299.00 is 一千二百九十九元, $3.50 三点五美元: a price's trailing zeros are written, not said.
+    // ¥1,299.00 is 一千二百九十九元, $3.50 三点五美元: a price's trailing zeros are written, not said,
+    // and so where a currency's word follows (报15.60元 十五点六元; session 17: 十五点六零元).
+    bool is_price = currency != nullptr;
+    if (unit == nullptr && !is_price) {
+        const auto after = text_between(text, end, end + 2);
+        for (const std::string_view money : {"元", "圆", "圓", "块", "塊", "美元", "港元", "欧元", "歐元", "日元", "英镑", "英鎊"})
+            is_price = is_price || after.rfind(money, 0) == 0;
+    }
     for (auto& price : numbers) {
-        if (currency == nullptr || !price.has_point) continue;
+        if (!is_price || !price.has_point) continue;
         price.fraction.erase(price.fraction.find_last_not_of('0') + 1);
         price.has_point = !price.fraction.empty();
     }
