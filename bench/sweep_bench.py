@@ -165,8 +165,10 @@ def make_cases(out, label, stem):
     case("clipped (+12 dB)", path("clipped.wav"))
     sox(ref, path("clipped24.wav"), "gain", "24")
     case("clipped (+24 dB)", path("clipped24.wav"))
-    # Dropouts: a call's lost packets, 60 ms of nothing once a second.
-    ffmpeg("-i", ref, "-af", "volume='if(lt(mod(t,1),0.06),0,1)':eval=frame", path("dropouts.wav"))
+    # Dropouts: a call's lost packets, 60 ms of nothing once a second. The volume is judged every 16
+    # samples (1 ms): judged per block as ffmpeg hands them on (128 ms), the case held 128 ms of
+    # zeros 11 times in its 19.5 s, not 60 ms every second (sessions 13-16).
+    ffmpeg("-i", ref, "-af", "asetnsamples=n=16:p=0,volume='if(lt(mod(t,1),0.06),0,1)':eval=frame", path("dropouts.wav"))
     case("dropouts (60 ms a second)", path("dropouts.wav"))
     # A notification beep (two 880 Hz tones of 80 ms, -12 dBFS) in the middle of the speech, and one
     # starting 0.3 s before it (ending 80 ms before the first onset); and a recorder's start beep
