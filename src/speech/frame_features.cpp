@@ -81,7 +81,7 @@ constexpr XorshiftJump kDitherJump(2 * kWindow);
 // Streams 16 kHz samples into feature frames; frame t's window is centred on t * kHop + kHop / 2.
 class FrameAnalyzer {
 public:
-    explicit FrameAnalyzer(FeatureTrack& track) : track_(track) {
+    FrameAnalyzer(FeatureTrack& track, bool with_pitch) : track_(track), with_pitch_(with_pitch) {
         for (std::size_t i = 0; i < kWindow; ++i)
             window_[i] = static_cast<float>(0.54 - 0.46 * std::cos(2.0 * M_PI * static_cast<double>(i) / (kWindow - 1)));
         const double low_mel = hz_to_mel(100.0);
@@ -229,6 +229,11 @@ private:
         track_.values.insert(track_.values.end(), row.begin(), row.end());
         ++track_.frame_count;
         changing_.push(power_.data());
+        if (with_pitch_) {
+            // Each frame's window ends a hop after the one before's: its last hop is new.
+            const bool is_first = track_.pitch.empty();
+            track_.pitch.push_back(pitch_.push(is_first ? samples : samples + kWindow - kHop, is_first ? kWindow : kHop));
+        }
     }
 
     // kLineShare and kLineBin of the frame's power (not dithered), over 60-8000 Hz, as kEnergyDb.
@@ -249,6 +254,8 @@ private:
     }
 
     FeatureTrack& track_;
+    bool with_pitch_ = false;
+    PitchTracker pitch_;
     ChangingSpectrum changing_{track_};
     std::uint64_t dither_state_ = 0x9E3779B97F4A7C15ull;
     std::array<std::array<std::array<std::uint32_t, kWindow>, 2>, kLanes> lane_draws_{};  // two frames' draws
@@ -317,13 +324,13 @@ private:
 
 }  // namespace
 
-FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)>& on_progress) {
+FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)>& on_progress, bool with_pitch) {
     FeatureTrack track;
     // Room for the frames the source says it has, up to an hour's: a damaged header may promise
     // years (a FLAC's sample count, an MP3's frame count), and reserving them threw bad_alloc.
     const double promised_s = std::min(static_cast<double>(source.frame_count()) / source.sample_rate_hz(), kMostReservedS);
     track.values.reserve(static_cast<std::size_t>(promised_s / kFrameStepS + 2) * kFeatureCount);
-    FrameAnalyzer analyzer(track);
+    FrameAnalyzer analyzer(track, with_pitch);
     Resampler resampler(source.sample_rate_hz());
     std::vector<float> block(kBlockFrames);
     std::size_t frames_read = 0;

@@ -8,6 +8,8 @@
 #include <memory>
 #include <vector>
 
+#include "speech/pitch_track.hpp"
+
 namespace talkface::detail {
 
 class AudioSource;
@@ -57,6 +59,8 @@ struct FeatureTrack {
     std::size_t frame_count = 0;
     double duration_s = 0.0;
     float peak_amplitude = 0.0f;  // of the whole input, before resampling
+    // Per frame, the voice's pitch (pitch_track.hpp), where analyze_audio was asked for it; else empty.
+    std::vector<PitchFrame> pitch;
 
     float at(std::size_t frame, int column) const {
         return values[frame * kFeatureCount + static_cast<std::size_t>(column)];
@@ -66,7 +70,8 @@ struct FeatureTrack {
 // Reads `source` to the end in blocks, resamples to kAnalysisRateHz and computes the features.
 // `on_progress(fraction)` is called after each block (it may throw to cancel).
 // \throws talkface::InvalidArgument naming the audio if it is silent; what the source throws.
-FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)>& on_progress);
+// With `with_pitch`, FeatureTrack::pitch too.
+FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)>& on_progress, bool with_pitch = false);
 
 }  // namespace talkface::detail
 

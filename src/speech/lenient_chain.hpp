@@ -20,9 +20,16 @@ namespace talkface::detail {
 // syllables), at the price lenient alignment pays for speech the text does not say.
 PhoneState generic_speech_state(std::size_t syllable);
 
-// `chain` with its states made lenient: every syllable's states skippable at a cost, and an
-// optional generic-speech state after the leading silence and after every syllable.
-SentenceChain lenient_chain(const SentenceChain& chain);
+// Per syllable, whether the speech says another syllable there by two measures that do not
+// share their evidence: its held-out gap (held_out_fit_gaps, per syllable of the plain path) and
+// its tone gap (tone_gaps, tone_contour.hpp) are both high (lenient_chain.cpp gives the bars).
+// Missing or NaN: not.
+std::vector<bool> heard_otherwise(const std::vector<double>& held_out_gaps, const std::vector<double>& tone_gaps);
+
+// `chain` with its states made lenient: every syllable's states skippable at a cost (less for a
+// syllable `is_heard_otherwise`, heard_otherwise), and an optional generic-speech state after the
+// leading silence and after every syllable.
+SentenceChain lenient_chain(const SentenceChain& chain, const std::vector<bool>& is_heard_otherwise = {});
 
 // Per syllable of `chain`, its fit (syllable_fits) over the frames its states hold on `path`.
 std::vector<double> fits_on_path(const SentenceChain& chain, const std::vector<StateSegment>& path,
@@ -46,10 +53,11 @@ void add_rival_shares(const SentenceChain& lenient, const std::vector<StateSegme
 // skipped than fitted, yet on the plain path it fits within the chain's usual spread, or, where it
 // is an outlier, still better than nearly every unlike syllable; a changed word does neither. Of
 // a run kept, the syllables at its ends that gap under kMinHeldOutGapAtEdge (from each end inward)
-// are returned too: right neighbours the path skipped with a changed word.
+// are returned too: right neighbours the path skipped with a changed word. A run that holds a
+// syllable `is_heard_otherwise` (heard_otherwise) is kept, but for its edges.
 std::vector<std::size_t> unsupported_skips(const SentenceChain& lenient, const std::vector<StateSegment>& path,
                                            const std::vector<double>& plain_fits, const std::vector<double>& rival_shares,
-                                           const std::vector<double>& held_out_gaps);
+                                           const std::vector<double>& held_out_gaps, const std::vector<bool>& is_heard_otherwise = {});
 
 // The generic-speech states of `lenient` that `path` holds for less than most of a syllable of the
 // chain's plain path (`plain_frames`: frames_on_path of the path without leniency).

@@ -24,6 +24,7 @@
 #include "speech/sentence_cutter.hpp"
 #include "speech/syllable_placement.hpp"
 #include "speech/text_fit.hpp"
+#include "speech/tone_contour.hpp"
 #include "talkface/errors.hpp"
 #include "text/unread_transcript.hpp"
 
@@ -279,6 +280,47 @@ std::vector<std::size_t> poorly_fitting(const std::vector<SentenceMetrics>& metr
     return poor;
 }
 
+// Per chain, per syllable, its tone_gaps (tone_contour.hpp) on the chains' `plain_paths`: the shape
+// of each syllable's final against the tones of every chain's syllables.
+std::vector<std::vector<double>> tone_gaps_of_chains(const std::vector<SentenceChain>& chains,
+                                                     const std::vector<std::vector<StateSegment>>& plain_paths,
+                                                     const FeatureTrack& track) {
+    // Each syllable's final, in the track's frames.
+    std::vector<std::vector<SyllableFrames>> finals(chains.size());
+    std::vector<std::size_t> voiced_candidates;
+    for (std::size_t w = 0; w < chains.size(); ++w) {
+        finals[w].assign(chains[w].syllables.size(), {std::numeric_limits<std::size_t>::max(), 0});
+        for (const StateSegment& segment : plain_paths[w]) {
+            const PhoneState& state = chains[w].states[segment.state];
+            if (state.role != StateRole::final) continue;
+            SyllableFrames& frames = finals[w][state.syllable];
+            frames.first_frame = std::min(frames.first_frame, chains[w].searched.first_frame + segment.first_frame);
+            frames.end_frame = std::max(frames.end_frame, chains[w].searched.first_frame + segment.end_frame);
+            for (std::size_t t = segment.first_frame; t < segment.end_frame; ++t)
+                voiced_candidates.push_back(chains[w].searched.first_frame + t);
+        }
+    }
+    const double reference_hz = median_voiced_hz(track, voiced_candidates);
+    std::vector<ToneShape> shapes;
+    std::vector<std::string> pinyin;
+    std::vector<std::size_t> sentences;
+    for (std::size_t w = 0; w < chains.size(); ++w)
+        for (std::size_t i = 0; i < chains[w].syllables.size(); ++i) {
+            const SyllableFrames& frames = finals[w][i];
+            shapes.push_back(frames.first_frame < frames.end_frame ? tone_shape(track, frames.first_frame, frames.end_frame, reference_hz)
+                                                                   : ToneShape{});
+            const Syllable& syllable = *chains[w].syllables[i];
+            pinyin.push_back(syllable.generic_speech ? std::string() : syllable.pinyin);
+            sentences.push_back(syllable.sentence);
+        }
+    const std::vector<double> all = tone_gaps(shapes, pinyin, sentences);
+    std::vector<std::vector<double>> gaps(chains.size());
+    std::size_t k = 0;
+    for (std::size_t w = 0; w < chains.size(); ++w)
+        for (std::size_t i = 0; i < chains[w].syllables.size(); ++i) gaps[w].push_back(all[k++]);
+    return gaps;
+}
+
 // The syllables of every sentence of `cut`, aligned sentence by sentence (neighbours that run on,
 // together), and, when `is_checked`, check_path on each path; when `is_lenient`, the final pass on
 // lenient chains (lenient_chain.hpp). With `is_kept_to_marks`, keep_pauses_to_marks on every chain;
@@ -315,12 +357,23 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
     std::vector<float> observations;
     EmissionScores scores;
     ViterbiWorkspace workspace;
+    // Lenient alignment: every chain's plain path first, for the tones of the whole recording.
+    std::vector<std::vector<StateSegment>> plain_paths;
+    std::vector<std::vector<double>> chain_tone_gaps;
+    if (is_lenient) {
+        for (std::size_t w = 0; w < chains.size(); ++w) {
+            observe(track, loudness, chains[w].searched, observations);
+            learned.model.score(observations.data(), chains[w].searched.length(), scores);
+            plain_paths.push_back(viterbi_align(chains[w].states, scores, workspace, scores.frame_count));
+        }
+        chain_tone_gaps = tone_gaps_of_chains(chains, plain_paths, track);
+    }
     for (std::size_t w = 0; w < chains.size(); ++w) {
         observe(track, loudness, chains[w].searched, observations);
         learned.model.score(observations.data(), chains[w].searched.length(), scores);
         if (is_lenient) {
             // A text with more syllables than the speech holds may have no plain path: no fits.
-            const auto plain = viterbi_align(chains[w].states, scores, workspace, scores.frame_count);
+            const auto& plain = plain_paths[w];
             const auto plain_fits = plain.empty() ? std::vector<double>{} : fits_on_path(chains[w], plain, scores);
             const auto plain_frames = plain.empty() ? std::vector<SyllableFrames>{} : frames_on_path(chains[w], plain);
             // Each syllable's held-out gap on the plain path (lenient_chain.hpp judges skips and
@@ -333,14 +386,15 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
                                                   learned.halves[w], held_out_scores)
                                     .syllables;
             }
-            SentenceChain chain = lenient_chain(chains[w]);
+            const std::vector<bool> is_heard_otherwise = heard_otherwise(held_out_gaps, chain_tone_gaps[w]);
+            SentenceChain chain = lenient_chain(chains[w], is_heard_otherwise);
             auto path = align_chain(chain, scores, workspace, scores.frame_count, transcript);
             // Each round forbids at least one more skip or generic stretch: it ends. Rival shares
             // are measured only for the syllables a path skips (50 small searches each).
             std::vector<double> rival_shares;
             for (;;) {
                 add_rival_shares(chain, path, plain_frames, scores, rival_shares);
-                const auto skips = unsupported_skips(chain, path, plain_fits, rival_shares, held_out_gaps);
+                const auto skips = unsupported_skips(chain, path, plain_fits, rival_shares, held_out_gaps, is_heard_otherwise);
                 const auto generic = short_generic(chain, path, plain_frames);
                 if (skips.empty() && generic.empty()) break;
                 forbid_skips(chain, skips);
@@ -558,7 +612,7 @@ Timeline align_source(AudioSource& source, const Timeline& transcript, const Ali
     ProgressReporter progress(callback);
     progress.report(0.0, "reading");
     const FeatureTrack track =
-        analyze_audio(source, [&](double fraction) { progress.report(kReadingShare * fraction, "reading"); });
+        analyze_audio(source, [&](double fraction) { progress.report(kReadingShare * fraction, "reading"); }, options.lenient);
     const std::string lost = describe_lost_audio(source.lost_audio());
     std::string notes;
     for (const std::string& note : source.notes()) notes += " (the file: " + note + ")";

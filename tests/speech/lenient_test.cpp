@@ -302,6 +302,35 @@ TEST_SUITE("speech") {
         CHECK(detail::unsupported_skips(chain, skips_1_to_3, fits, rivalled, {0.0, 0.15, 0.9, 0.12, 0.0}).empty());
     }
 
+    TEST_CASE("lenient: a syllable whose held-out gap and tone both say another skips for less, and its run stays skipped") {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        // Both gaps high: heard as another syllable; either alone, or a tone not judged, not.
+        CHECK(detail::heard_otherwise({0.0, 1.4, 1.4, 0.2, 1.4}, {0.0, 4.0, 1.0, 6.0, nan}) ==
+              std::vector<bool>{false, true, false, false, false});
+        CHECK(detail::heard_otherwise({1.4, 1.4}, {}) == std::vector<bool>{false, false});
+        // Its skip costs half another's.
+        const Syllable syllable;
+        detail::SentenceChain chain = one_state_syllables(syllable, 5, -20.0);
+        for (auto& state : chain.states) state.skip_log_penalty = -std::numeric_limits<double>::infinity();
+        const detail::SentenceChain lenient = detail::lenient_chain(chain, {false, false, true, false, false});
+        std::vector<double> skips;
+        for (const auto& state : lenient.states)
+            if (detail::is_syllable_state(state)) skips.push_back(state.skip_log_penalty);
+        REQUIRE(skips.size() == 5);
+        CHECK(skips[2] == doctest::Approx(0.5 * skips[1]));
+        CHECK(skips[0] == skips[1]);
+        // A run with no outlier of the plain path's fits, none rivalled, is kept where one of its
+        // syllables is heard as another (its edges are still judged by their held-out gaps).
+        const std::vector<detail::StateSegment> skips_2_3 = {{0, 0, 10}, {1, 10, 20}, {4, 20, 40}};
+        const std::vector<double> usual = {1.0, 1.1, 0.9, 1.05, 0.95};
+        const std::vector<double> unrivalled(5, 0.0);
+        const std::vector<double> gaps = {0.0, 0.0, 1.4, 0.6, 0.0};
+        CHECK(detail::unsupported_skips(chain, skips_2_3, usual, unrivalled, gaps) == std::vector<std::size_t>{2, 3});
+        CHECK(detail::unsupported_skips(chain, skips_2_3, usual, unrivalled, gaps, {false, false, true, false, false}).empty());
+        CHECK(detail::unsupported_skips(chain, skips_2_3, usual, unrivalled, {0.0, 0.0, 1.4, 0.05, 0.0},
+                                        {false, false, true, false, false}) == std::vector<std::size_t>{3});
+    }
+
     TEST_CASE("lenient: a syllable beside a skipped one joins its mismatch where free sounds fit it far better than its text") {
         const SkipBesideCase test_case;
         auto named = [&](const std::vector<double>& held_out_gaps) { return test_case.named(held_out_gaps); };
