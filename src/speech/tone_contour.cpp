@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "common/order_statistics.hpp"
+
 namespace talkface::detail {
 
 namespace {
@@ -18,11 +20,6 @@ constexpr std::size_t kTones = 4;
 constexpr double kFoldSemitones = 9.0;
 
 bool is_voiced(const PitchFrame& frame) { return frame.voicing >= kMinVoicing && frame.hz > 0.0f; }
-
-double median(std::vector<double> values) {
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2), values.end());
-    return values[values.size() / 2];
-}
 
 // The tones a syllable may be said in (bit t - 1 for tone t): its own, and where Mandarin changes
 // it before another syllable (a third tone before a third tone rises; 一 and 不 vary); none for a
@@ -45,7 +42,7 @@ double median_voiced_hz(const FeatureTrack& track, const std::vector<std::size_t
     std::vector<double> hz;
     for (const std::size_t t : frames)
         if (t < track.pitch.size() && is_voiced(track.pitch[t])) hz.push_back(track.pitch[t].hz);
-    return hz.empty() ? 0.0 : median(hz);
+    return hz.empty() ? 0.0 : upper_median(hz);
 }
 
 ToneShape tone_shape(const FeatureTrack& track, std::size_t first, std::size_t end, double reference_hz) {
@@ -64,7 +61,7 @@ ToneShape tone_shape(const FeatureTrack& track, std::size_t first, std::size_t e
     if (semitones.size() < kMinVoicedFrames) return shape;
     for (std::size_t k = 0; k < 3; ++k) {
         const std::size_t from = k * semitones.size() / 3, to = std::max(from + 1, (k + 1) * semitones.size() / 3);
-        shape.semitones[k] = median(std::vector<double>(semitones.begin() + static_cast<std::ptrdiff_t>(from),
+        shape.semitones[k] = upper_median(std::vector<double>(semitones.begin() + static_cast<std::ptrdiff_t>(from),
                                                         semitones.begin() + static_cast<std::ptrdiff_t>(to)));
     }
     shape.is_measured = true;
