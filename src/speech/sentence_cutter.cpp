@@ -264,15 +264,13 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     // threshold stays where the recording's levels put it. Quieter tones (a hum in the pauses) are
     // left: they are no speech already.
     const std::vector<bool> tone = steady_tone_frames(track);
-    bool has_tone = false;
     for (std::size_t t = 0; t < frames; ++t) {
         if (!tone[t] || raw[t] < profile.activity_threshold_db) continue;
         raw[t] = 0.0f;
-        has_tone = true;
         if (profile.tones.empty() || profile.tones.back().end_frame < t) profile.tones.push_back({t, t + 1});
         else profile.tones.back().end_frame = t + 1;
     }
-    if (has_tone) smooth();
+    if (!profile.tones.empty()) smooth();
     // Music held through the pauses is as loud as the quieter speech: where it is held, the frame
     // is no louder than a pause can be. So are a beat's hits between the pauses it cuts up, where
     // the beat's repeats explain them.
