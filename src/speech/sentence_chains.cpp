@@ -86,7 +86,8 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
         // A sentence that ends in a room's tail is searched only a little past the voice's end, and
         // its vowels are scaled to the voiced part: the tail is not speech to spread them over.
         const std::size_t voiced_end = end_before_tail(track, speech.first_frame, speech.end_frame);
-        chain.ends_in_tail = voiced_end + kRoomTailFrames <= speech.end_frame;
+        chain.tail_frames = speech.end_frame - voiced_end;
+        chain.ends_in_tail = chain.tail_frames >= kRoomTailFrames;
         chain.searched.end_frame =
             std::min(upper, voiced_end < speech.end_frame ? voiced_end + kTailEdgeFrames : speech.end_frame + kEdgeFrames);
         chain.states = build_phone_chain(chain.syllables, chain.searched.length(),

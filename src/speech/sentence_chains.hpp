@@ -24,7 +24,8 @@ struct SentenceChain {
     std::vector<const Syllable*> syllables;
     std::vector<std::size_t> syllable_indices;
     std::vector<PhoneState> states;
-    bool ends_in_tail = false;  // its last sound rings on in a room (end_before_tail cut a tail off)
+    std::size_t tail_frames = 0;  // how far end_before_tail moved its end (a room's tail, a fade)
+    bool ends_in_tail = false;    // its last sound rings on in a room (end_before_tail cut a tail off)
 
     bool is_block() const { return end_sentence > first_sentence + 1; }
 };

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -19,6 +20,7 @@
 #include "speech/hsmm.hpp"
 #include "speech/lenient_chain.hpp"
 #include "speech/phone_chain.hpp"
+#include "speech/room_closures.hpp"
 #include "speech/run_together.hpp"
 #include "speech/sentence_chains.hpp"
 #include "speech/sentence_cutter.hpp"
@@ -246,6 +248,9 @@ void set_sentence_times(const std::vector<FrameSpan>& spans, Timeline& result) {
 // One alignment of a cut's sentences, before the checks judge it.
 struct CutAlignment {
     Timeline result;
+    // In a room (room_closures.hpp), the syllables placed again with the closures ringing: given
+    // out in the end, while every check reads `result`, the silent closures' placement.
+    std::optional<Timeline> room_result;
     std::vector<FrameSpan> spans;
     std::vector<SentenceMetrics> metrics;
     // A final path gave a pause the text does not mark more than kMaxUnmarkedPauseFrames, in a
@@ -324,7 +329,9 @@ std::vector<std::vector<double>> tone_gaps_of_chains(const std::vector<SentenceC
 // The syllables of every sentence of `cut`, aligned sentence by sentence (neighbours that run on,
 // together), and, when `is_checked`, check_path on each path; when `is_lenient`, the final pass on
 // lenient chains (lenient_chain.hpp). With `is_kept_to_marks`, keep_pauses_to_marks on every chain;
-// with `is_nasal_release_allowed`, let_closures_after_nasals_be_skipped on every chain.
+// with `is_nasal_release_allowed`, let_closures_after_nasals_be_skipped on every chain. In a room
+// (is_room), each chain is also placed with its closures ringing (let_closures_ring), on the same
+// models, into `room_result`.
 CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
                           const SentenceCut& cut, ProgressReporter& progress, bool is_checked, bool is_lenient,
                           bool is_kept_to_marks, bool is_nasal_release_allowed) {
@@ -351,6 +358,9 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
     Timeline& result = aligned.result;
     result = transcript;
     result.duration_s = track.duration_s;
+    // Lenient alignment places its syllables on chains of its own (lenient_chain.hpp).
+    if (!is_lenient && is_room(chains)) aligned.room_result = result;
+    std::vector<SyllableEvidence> room_evidence(aligned.room_result ? transcript.syllables.size() : 0);
     std::vector<SentenceMetrics>& metrics = aligned.metrics;
     metrics.assign(spans.size(), SentenceMetrics());
     std::vector<SyllableEvidence> evidence(transcript.syllables.size());
@@ -427,13 +437,34 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
         const std::vector<std::vector<SyllableFrames>> other_frames = {light_search(chains[w], scores, workspace, kLightSoundsWeight, true),
                                                                        light_search(chains[w], scores, workspace, kLightSoundsWeight, false),
                                                                        frames_on_path(chains[w], learned.last_paths[w])};
+        if (aligned.room_result) {
+            // Before measure_chain, which leaves held-out models' scores in `scores`.
+            SentenceChain ringing = chains[w];
+            let_closures_ring(ringing.states);
+            const auto room_path = align_chain(ringing, scores, workspace, scores.frame_count, transcript);
+            const std::vector<std::vector<SyllableFrames>> room_other_frames = {
+                light_search(ringing, scores, workspace, kLightSoundsWeight, true),
+                light_search(ringing, scores, workspace, kLightSoundsWeight, false), other_frames.back()};
+            place_syllables(ringing, w, room_path, room_other_frames, scores, track, *aligned.room_result,
+                            room_evidence);
+        }
         measure_chain(chains[w], w, path, other_frames, observations, learned, spoken_sentences, track, loudness, transcript,
                       scores, workspace, result, evidence, spans, metrics, is_checked);
         report_pass(progress, kReestimationRounds, w, chains.size());
     }
     set_confidences(evidence, is_lenient, result);
+    if (aligned.room_result) set_confidences(room_evidence, false, *aligned.room_result);
     return aligned;
 }
+
+// An alignment's syllables as the checks read them, on the silent closures' paths (`checked`), and,
+// in a room, as they are given out, placed with the closures ringing (`in_room`, room_closures.hpp):
+// the room's paths fit a wrong text as well as the right one, so that the confirmation of a cut
+// (align_confirmed) and the block retry (align_track) read only the silent closures' placement.
+struct AlignedTimelines {
+    Timeline checked;
+    std::optional<Timeline> in_room;
+};
 
 // The syllables of every sentence of `cut` (align_chains), and, when `is_checked`, the checks
 // that audio and transcript belong together.
@@ -458,8 +489,9 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
 // alignment_checks.hpp). Skippable everywhere and always, such closures lost held-out passages
 // that are one slip from another place (sessions 11-13); here only an alignment the check would
 // refuse is made again, and no other passage of any corpus moves.
-Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
-                   const SentenceCut& cut, ProgressReporter& progress, bool is_checked, bool is_lenient) {
+AlignedTimelines align_cut(const FeatureTrack& track, const LoudnessProfile& loudness,
+                           const Timeline& transcript, const SentenceCut& cut, ProgressReporter& progress,
+                           bool is_checked, bool is_lenient) {
     const bool has_blocks = std::find(cut.runs_on.begin(), cut.runs_on.end(), true) != cut.runs_on.end();
     if (!has_blocks && is_checked) check_sentence_lengths(cut.spans, track, loudness, transcript);
     CutAlignment aligned = align_chains(track, loudness, transcript, cut, progress, is_checked, is_lenient, false, false);
@@ -499,7 +531,21 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
         check_missing_text(result, track, loudness, result.warnings);
     }
     set_sentence_times(spans, result);
-    return std::move(result);
+    AlignedTimelines timelines{std::move(result), std::nullopt};
+    if (aligned.room_result) {
+        Timeline in_room = timelines.checked;
+        for (std::size_t i = 0; i < in_room.syllables.size(); ++i) {
+            const Syllable& placed = aligned.room_result->syllables[i];
+            Syllable& syllable = in_room.syllables[i];
+            syllable.start_s = placed.start_s;
+            syllable.final_start_s = placed.final_start_s;
+            syllable.end_s = placed.end_s;
+            syllable.confidence = placed.confidence;
+        }
+        set_sentence_times(spans, in_room);
+        timelines.in_room = std::move(in_room);
+    }
+    return timelines;
 }
 
 // align_cut, where a sentence end that ran on keeps its chain only if the chain's syllables move
@@ -507,19 +553,21 @@ Timeline align_cut(const FeatureTrack& track, const LoudnessProfile& loudness, c
 // sentence end they leave in its pause confirms the cut, and one they move off a pause the text
 // does not account for is a wrong text's doing. Then the sentences are aligned apart again, as
 // the checks know them best.
-Timeline align_confirmed(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
-                         const SentenceCut& cut, const std::vector<bool>& is_spoken, ProgressReporter& progress,
-                         bool is_checked, bool is_lenient) {
-    Timeline result = align_cut(track, loudness, transcript, cut, progress, is_checked, is_lenient);
+AlignedTimelines align_confirmed(const FeatureTrack& track, const LoudnessProfile& loudness,
+                                 const Timeline& transcript, const SentenceCut& cut,
+                                 const std::vector<bool>& is_spoken, ProgressReporter& progress,
+                                 bool is_checked, bool is_lenient) {
+    AlignedTimelines aligned = align_cut(track, loudness, transcript, cut, progress, is_checked, is_lenient);
     SentenceCut confirmed = cut;
     for (const auto& [k, next] : spoken_neighbours(is_spoken)) {
         // Too few pauses: the cutter chose none for this end, and the chain is all there is.
         const bool has_cut_pause = cut.spans[k].end_frame <= cut.spans[next].first_frame;
         if (cut.runs_on[k] && has_cut_pause &&
-            !(moves_sentence_end(cut, result, k, next) && is_cut_pause_in_text(cut, result, k, next)))
+            !(moves_sentence_end(cut, aligned.checked, k, next) &&
+              is_cut_pause_in_text(cut, aligned.checked, k, next)))
             confirmed.runs_on[k] = false;
     }
-    if (confirmed.runs_on == cut.runs_on) return result;
+    if (confirmed.runs_on == cut.runs_on) return aligned;
     return align_cut(track, loudness, transcript, confirmed, progress, is_checked, is_lenient);
 }
 
@@ -537,7 +585,7 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
     const std::vector<bool> is_spoken = spoken_sentences_of(transcript);
     const auto spoken_sentences = static_cast<std::size_t>(std::count(is_spoken.begin(), is_spoken.end(), true));
     const std::size_t stretches = loudness.pauses.size() + 1;
-    Timeline result;
+    AlignedTimelines result;
     try {
         result = align_confirmed(track, loudness, transcript, cut, is_spoken, progress, is_checked, options.lenient);
     } catch (const AlignmentError& error) {
@@ -567,14 +615,14 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
         // either way it was the text, not the cut, that the checks refused.
         bool has_moved_end = false;
         for (const auto& [k, next] : spoken_neighbours(is_spoken)) {
-            if (!moves_sentence_end(cut, result, k, next)) continue;
-            if (!is_cut_pause_in_text(cut, result, k, next)) throw error;
+            if (!moves_sentence_end(cut, result.checked, k, next)) continue;
+            if (!is_cut_pause_in_text(cut, result.checked, k, next)) throw error;
             has_moved_end = true;
         }
         if (!has_moved_end) throw error;
     }
     progress.report(1.0, "syllables");
-    return result;
+    return result.in_room ? std::move(*result.in_room) : std::move(result.checked);
 }
 
 // AlignOptions::check: refuse, as the checks find; warn, the alignment the checks refused made
