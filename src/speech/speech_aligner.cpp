@@ -326,6 +326,16 @@ std::vector<std::vector<double>> tone_gaps_of_chains(const std::vector<SentenceC
     return gaps;
 }
 
+// What lenient alignment measures of a chain on its plain path (the chain aligned without
+// leniency) before its lenient pass: the chain's scores, each syllable's fit and frames on that
+// path, and its held-out gap (lenient_chain.hpp); empty where the chain has no plain path.
+struct LenientEvidence {
+    EmissionScores scores;
+    std::vector<double> plain_fits;
+    std::vector<SyllableFrames> plain_frames;
+    std::vector<double> held_out_gaps;
+};
+
 // The syllables of every sentence of `cut`, aligned sentence by sentence (neighbours that run on,
 // together), and, when `is_checked`, check_path on each path; when `is_lenient`, the final pass on
 // lenient chains (lenient_chain.hpp). With `is_kept_to_marks`, keep_pauses_to_marks on every chain;
@@ -367,49 +377,55 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
     std::vector<float> observations;
     EmissionScores scores;
     ViterbiWorkspace workspace;
-    // Lenient alignment: every chain's plain path first, for the tones of the whole recording.
-    std::vector<std::vector<StateSegment>> plain_paths;
+    // Lenient alignment: every chain's plain path first, for the tones of the whole recording, and
+    // with it what the lenient pass judges its skips by; each chain's scores are kept for that pass,
+    // not measured twice.
+    std::vector<LenientEvidence> lenient_evidence;
     std::vector<std::vector<double>> chain_tone_gaps;
     if (is_lenient) {
+        std::vector<std::vector<StateSegment>> plain_paths;
         for (std::size_t w = 0; w < chains.size(); ++w) {
             observe(track, loudness, chains[w].searched, observations);
-            learned.model.score(observations.data(), chains[w].searched.length(), scores);
-            plain_paths.push_back(viterbi_align(chains[w].states, scores, workspace, scores.frame_count));
+            LenientEvidence& found = lenient_evidence.emplace_back();
+            learned.model.score(observations.data(), chains[w].searched.length(), found.scores);
+            plain_paths.push_back(
+                viterbi_align(chains[w].states, found.scores, workspace, found.scores.frame_count));
+            // A text with more syllables than the speech holds may have no plain path: no fits.
+            const auto& plain = plain_paths.back();
+            if (plain.empty()) continue;
+            found.plain_fits = fits_on_path(chains[w], plain, found.scores);
+            found.plain_frames = frames_on_path(chains[w], plain);
+            // Each syllable's held-out gap on the plain path (lenient_chain.hpp judges skips and
+            // grows mismatches by it): models re-estimated on a wrong text learn its sounds from
+            // the speech that does not say them, those learned without its half have not.
+            EmissionScores held_out_scores;
+            found.held_out_gaps =
+                held_out_fit_gaps(chains[w], split_in_halves(chains[w], plain), observations, learned.whole,
+                                  learned.halves[w], held_out_scores)
+                    .syllables;
         }
         chain_tone_gaps = tone_gaps_of_chains(chains, plain_paths, track);
     }
     for (std::size_t w = 0; w < chains.size(); ++w) {
-        observe(track, loudness, chains[w].searched, observations);
-        learned.model.score(observations.data(), chains[w].searched.length(), scores);
         if (is_lenient) {
-            // A text with more syllables than the speech holds may have no plain path: no fits.
-            const auto& plain = plain_paths[w];
-            const auto plain_fits = plain.empty() ? std::vector<double>{} : fits_on_path(chains[w], plain, scores);
-            const auto plain_frames = plain.empty() ? std::vector<SyllableFrames>{} : frames_on_path(chains[w], plain);
-            // Each syllable's held-out gap on the plain path (lenient_chain.hpp judges skips and
-            // grows mismatches by it): models re-estimated on a wrong text learn its sounds from
-            // the speech that does not say them, those learned without its half have not.
-            std::vector<double> held_out_gaps;
-            if (!plain.empty()) {
-                EmissionScores held_out_scores;
-                held_out_gaps = held_out_fit_gaps(chains[w], split_in_halves(chains[w], plain), observations, learned.whole,
-                                                  learned.halves[w], held_out_scores)
-                                    .syllables;
-            }
+            EmissionScores& chain_scores = lenient_evidence[w].scores;
+            const auto& plain_fits = lenient_evidence[w].plain_fits;
+            const auto& plain_frames = lenient_evidence[w].plain_frames;
+            const auto& held_out_gaps = lenient_evidence[w].held_out_gaps;
             const std::vector<bool> is_heard_otherwise = heard_otherwise(held_out_gaps, chain_tone_gaps[w]);
             SentenceChain chain = lenient_chain(chains[w], is_heard_otherwise);
-            auto path = align_chain(chain, scores, workspace, scores.frame_count, transcript);
+            auto path = align_chain(chain, chain_scores, workspace, chain_scores.frame_count, transcript);
             // Each round forbids at least one more skip or generic stretch: it ends. Rival shares
             // are measured only for the syllables a path skips (50 small searches each).
             std::vector<double> rival_shares;
             for (;;) {
-                add_rival_shares(chain, path, plain_frames, scores, rival_shares);
+                add_rival_shares(chain, path, plain_frames, chain_scores, rival_shares);
                 const auto skips = unsupported_skips(chain, path, plain_fits, rival_shares, held_out_gaps, is_heard_otherwise);
                 const auto generic = short_generic(chain, path, plain_frames);
                 if (skips.empty() && generic.empty()) break;
                 forbid_skips(chain, skips);
                 forbid_states(chain, generic);
-                path = align_chain(chain, scores, workspace, scores.frame_count, transcript);
+                path = align_chain(chain, chain_scores, workspace, chain_scores.frame_count, transcript);
             }
             // The other searches whose starts weigh in (syllable_steadiness), as for a plain chain:
             // the lenient chain searched again with the sounds weighing less, and, where the path
@@ -420,15 +436,22 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
             // of a syllable's, so without the landmarks its edges wander with the sounds light
             // and move the right syllables beside it (tests/speech/lenient_test.cpp: 里 after the
             // word the transcript lacks).
-            std::vector<std::vector<SyllableFrames>> other_frames = {light_search(chain, scores, workspace, kLenientLightSoundsWeight, true)};
+            std::vector<std::vector<SyllableFrames>> other_frames = {
+                light_search(chain, chain_scores, workspace, kLenientLightSoundsWeight, true)};
             if (takes_text_whole(chain, path)) {
-                other_frames.push_back(light_search(chain, scores, workspace, kLenientLightSoundsWeight, false));
+                other_frames.push_back(
+                    light_search(chain, chain_scores, workspace, kLenientLightSoundsWeight, false));
                 other_frames.push_back(frames_on_path(chains[w], learned.last_paths[w]));
             }
-            place_lenient(chain, w, path, other_frames, held_out_gaps, scores, track, loudness, result, evidence);
+            place_lenient(chain, w, path, other_frames, held_out_gaps, chain_scores, track, loudness, result,
+                          evidence);
+            // Its scores are not needed again: the memory goes back chain by chain.
+            chain_scores = EmissionScores();
             report_pass(progress, kReestimationRounds, w, chains.size());
             continue;
         }
+        observe(track, loudness, chains[w].searched, observations);
+        learned.model.score(observations.data(), chains[w].searched.length(), scores);
         const auto path = align_chain(chains[w], scores, workspace, scores.frame_count, transcript);
         aligned.has_long_unmarked_pause = aligned.has_long_unmarked_pause || has_long_unmarked_pause(chains[w], path);
         // The last round's path, and the searches again with the sounds weighing less, with and
