@@ -30,6 +30,9 @@ constexpr Unit kUnits[] = {
     // where no Chinese word but 的 follows them (5A景区, a grade, and 3A游戏 are said 五A, 三A).
     {"J", "焦耳"}, {"kJ", "千焦"}, {"N", "牛"}, {"A", "安"}, {"Ω", "欧"}, {"Ω", "欧"}, {"kΩ", "千欧"},
     {"kW·h", "千瓦时"}, {"kW⋅h", "千瓦时"}, {"m/s²", "米每二次方秒"},
+    // Session 18: a blood pressure's unit, as a doctor reads it (140/90mmHg 毫米汞柱), and a game's or a
+    // screen's frame rate (60fps 六十帧每秒; it was spelled, F P S).
+    {"mmHg", "毫米汞柱"}, {"fps", "帧每秒"},
 };
 
 // A unit of one capital (J N A) that a grade or a name also writes after a number: a unit only

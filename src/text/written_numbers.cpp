@@ -62,6 +62,16 @@ bool measures_degrees(const std::vector<CodePoint>& text, std::size_t start, std
     return degree + 1 >= text.size() || kClauseEnds.find(text[degree + 1].value) != std::u32string_view::npos;
 }
 
+// Two numbers about a slash are a blood pressure, the higher 比 the lower as a doctor reads them, before
+// its unit (140/90mmHg) or where the clause names one (血压130/85); elsewhere they are a fraction.
+bool is_blood_pressure(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    std::size_t unit_end = end;
+    const Unit* unit = unit_at(text, end, unit_end);
+    if (unit != nullptr && unit->written == "mmHg") return true;
+    const std::string before = text_before(text, start, true);
+    return before.find("血压") != std::string::npos || before.find("血壓") != std::string::npos;
+}
+
 // A radio band right before a number (FM103.9, AM 639, 调频97.4; one space allowed): a station's frequency.
 bool follows_station_band(const std::vector<CodePoint>& text, std::size_t start) {
     auto i = start;
@@ -313,6 +323,13 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
             return said;
         }
     }
+    // A discount of two digits is said digit by digit (95折 九五折, 75折 七五折), as shops call it; one digit
+    // or one with a point counts (8折, 3.8折 三点八折).
+    if (whole.size() == 2 && !number.has_point && context.next == U'折' && whole[0] != '0' &&
+        whole[1] != '0') {
+        said.words = digit_words(whole);
+        return said;
+    }
     if (whole == "2" && !context.is_ordinal && !context.is_model &&
         (context.has_unit || takes_liang(context.next) || context.measures_degrees)) {
         said.words = "两";
@@ -481,6 +498,13 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     }
     if (value_at(text, number.end) == '/' && is_digit_at(text, number.end + 1) && !number.has_point) {
         const auto denominator = parse_number(text, number.end + 1);
+        if (sign_words.empty() && currency == nullptr && is_blood_pressure(text, start, denominator.end)) {
+            join_two(denominator, "比", {});
+            if (const Unit* unit = unit_at(text, form.end, form.end);
+                unit != nullptr && unit->written == "mmHg")
+                form.words += unit->words;
+            return form;
+        }
         const auto said_denominator = say_number(denominator, {});
         const auto said_numerator = say_number(number, {});
         form.words = sign_words + said_denominator.words + "分之" + said_numerator.words;
@@ -630,6 +654,12 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     }
     if (is_per_mille) end += 1;
     form.words += power_words + magnitude_words + unit_words;
+    // A colon after a quantity and before a number is a strength's ratio (注射液2ml:0.1g 两毫升比零点一克;
+    // session 18: the colon was a pause and its 比 lost); the number after it is read as its own form.
+    if (unit != nullptr && unit->written != "%" && value_at(text, end) == ':' && is_digit_at(text, end + 1)) {
+        form.words += "比";
+        ++end;
+    }
     if (currency != nullptr) {
         // $5万 is 五万美元: the magnitude comes before the currency's name.
         if (is_one_of(value_at(text, end), U"万萬亿億千")) {
@@ -640,11 +670,16 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     }
     // A count shown as "or more", 99+ (a chat's unread messages, 18+ of an age rating), said 加 as it is
     // read out (session 16: the + was skipped with a warning). Not before a term (1+1 is a sum).
-    const auto after_plus = value_at(text, end + 1);
-    if (currency == nullptr && unit == nullptr && value_at(text, end) == '+' && !is_digit_at(text, end + 1) &&
-        !is_ascii_letter(after_plus) && !is_one_of(after_plus, U" +(（")) {
+    // So after the count's 万 or 亿 (已售10万+件 十万加件; session 18: the + was skipped).
+    const bool plus_after_magnitude =
+        unit == nullptr && is_one_of(value_at(text, end), U"万萬亿億") && value_at(text, end + 1) == '+';
+    const auto plus = plus_after_magnitude ? end + 1 : end;
+    const auto after_plus = value_at(text, plus + 1);
+    if (currency == nullptr && unit == nullptr && value_at(text, plus) == '+' &&
+        !is_digit_at(text, plus + 1) && !is_ascii_letter(after_plus) && !is_one_of(after_plus, U" +(（")) {
+        if (plus_after_magnitude) form.words += text[end].text;
         form.words += "加";
-        ++end;
+        end = plus + 1;
     }
     form.end = end;
     return form;
