@@ -399,6 +399,10 @@ std::optional<SpokenForm> read_floor(const std::vector<CodePoint>& text, std::si
         is_ascii_letter(value_at(text, number.end + 1)) || is_digit_at(text, number.end + 1)) {
         return std::nullopt;
     }
+    // A seat's row and letter (您的座位是7车12F号 十二 F 号): 号 after it, or a carriage right before it.
+    const bool after_carriage =
+        start >= 2 && is_one_of(text[start - 1].value, U"车車") && is_digit_at(text, start - 2);
+    if (is_one_of(value_at(text, number.end + 1), U"号號") || after_carriage) return std::nullopt;
     SpokenForm form;
     form.words = cardinal_words(number.whole, false) + "楼";
     form.end = number.end + 1;

@@ -128,7 +128,8 @@ std::size_t past_exchange_suffix(const std::vector<CodePoint>& text, std::size_t
 // A floor written with an F after its number, as Taiwan, Hong Kong and shopping centres write it (2F
 // 二楼, 89F 八十九楼, 1F 一楼): the number as an ordinal is said, and 楼 for the F (session 15: it
 // was 二 F). Up to three digits after no letter (B1F is a basement's), a capital F that ends the
-// letters (°F and 100℉ are Fahrenheit's, a unit). nullopt elsewhere.
+// letters (°F and 100℉ are Fahrenheit's, a unit), and no seat's (12F号, 7车12F; session 18: 十二楼).
+// nullopt elsewhere.
 std::optional<SpokenForm> read_floor(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
 
 }  // namespace talkface::detail

@@ -1051,6 +1051,16 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("a seat's row and letter is no floor") {
+        // Seen in dev8's held-out part (session 18): 12F was a floor, 十二楼.
+        check_cases({
+            {"您的座位是7车12F号", "您的座位是七车十二 ai fu号"},
+            {"座位在5车3F", "座位在五车三 ai fu"},
+            // A floor stays one: no 号 after it and no carriage before it.
+            {"餐厅在12F", "餐厅在十二楼"},
+        });
+    }
+
     TEST_CASE("a fix right after a written form replaces its reading, in characters or pinyin") {
         CHECK(said("2026{两千零二十六}年") == "两千零二十六年");
         CHECK(pinyin_of("OK{ou1 kei4}") == "ou1 kei4");
