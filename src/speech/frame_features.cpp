@@ -11,6 +11,7 @@
 #include "common/internal_error.hpp"
 #include "common/number_format.hpp"
 #include "speech/changing_spectrum.hpp"
+#include "speech/dropout_finder.hpp"
 #include "speech/power_spectrum.hpp"
 #include "speech/xorshift.hpp"
 #include "talkface/errors.hpp"
@@ -21,8 +22,6 @@ namespace {
 
 constexpr std::size_t kBlockFrames = 8192;
 constexpr double kMostReservedS = 3600.0;
-constexpr std::size_t kHop = 160;       // 10 ms at 16 kHz
-constexpr std::size_t kWindow = 400;    // 25 ms
 constexpr std::size_t kFftSize = PowerSpectrum::kSize;
 constexpr std::size_t kBins = PowerSpectrum::kBins;
 constexpr int kMelFilters = 24;
@@ -46,16 +45,16 @@ constexpr float kDitherStep = 0.3f / 32768.0f;
 // two_sentences.wav's right text refused ("does not sound like its text"), though espeak-ng's
 // corpus gained (median 9.1 -> 8.2 ms on clean). An offset of 0.1 aligned as well as none (bench/
 // sweep); 0.3 did not.
-constexpr float kOffsetStep = static_cast<float>(kHop) / kAnalysisRateHz / 10.0f;
+constexpr float kOffsetStep = static_cast<float>(kHopSamples) / kAnalysisRateHz / 10.0f;
 constexpr float kOffsetFloor = 0.02f;
 
 double hz_to_mel(double hz) { return 2595.0 * std::log10(1.0 + hz / 700.0); }
 double mel_to_hz(double mel) { return 700.0 * (std::pow(10.0, mel / 2595.0) - 1.0); }
 
-// frame[i] = samples[i] * window[i] over kWindow samples; restrict, so that the compiler, which
+// frame[i] = samples[i] * window[i] over kWindowSamples samples; restrict, so that the compiler, which
 // could not tell the three apart, vectorizes it.
 void apply_window(const float* __restrict samples, const float* __restrict window, float* __restrict frame) {
-    for (std::size_t i = 0; i < kWindow; ++i) frame[i] = samples[i] * window[i];
+    for (std::size_t i = 0; i < kWindowSamples; ++i) frame[i] = samples[i] * window[i];
 }
 
 // A uniform draw in [-0.5, 0.5) from the top 24 bits of a xorshift64 state (`top24` = state >> 40):
@@ -68,7 +67,7 @@ inline float centred_uniform(std::uint32_t top24) { return static_cast<float>(to
 void apply_dithered_window(const float* __restrict samples, const std::uint32_t* __restrict first,
                            const std::uint32_t* __restrict second, float scale, const float* __restrict window,
                            float* __restrict frame) {
-    for (std::size_t i = 0; i < kWindow; ++i)
+    for (std::size_t i = 0; i < kWindowSamples; ++i)
         frame[i] = (samples[i] + (centred_uniform(first[i]) + centred_uniform(second[i])) * scale) * window[i];
 }
 
@@ -76,14 +75,14 @@ void apply_dithered_window(const float* __restrict samples, const std::uint32_t*
 constexpr std::size_t kLanes = 2;
 
 // From one frame's first dither state to the next frame's: 2 draws a sample. Made by the compiler.
-constexpr XorshiftJump kDitherJump(2 * kWindow);
+constexpr XorshiftJump kDitherJump(2 * kWindowSamples);
 
-// Streams 16 kHz samples into feature frames; frame t's window is centred on t * kHop + kHop / 2.
+// Streams 16 kHz samples into feature frames; frame t's window is centred on t * kHopSamples + kHopSamples / 2.
 class FrameAnalyzer {
 public:
     FrameAnalyzer(FeatureTrack& track, bool with_pitch) : track_(track), with_pitch_(with_pitch) {
-        for (std::size_t i = 0; i < kWindow; ++i)
-            window_[i] = static_cast<float>(0.54 - 0.46 * std::cos(2.0 * M_PI * static_cast<double>(i) / (kWindow - 1)));
+        for (std::size_t i = 0; i < kWindowSamples; ++i)
+            window_[i] = static_cast<float>(0.54 - 0.46 * std::cos(2.0 * M_PI * static_cast<double>(i) / (kWindowSamples - 1)));
         const double low_mel = hz_to_mel(100.0);
         const double high_mel = hz_to_mel(7600.0);
         std::array<double, kMelFilters + 2> edges_bin{};
@@ -111,8 +110,8 @@ public:
             for (int m = 0; m < kMelFilters; ++m)
                 dct_[static_cast<std::size_t>(c)][static_cast<std::size_t>(m)] =
                     static_cast<float>(std::cos(M_PI * c * (m + 0.5) / kMelFilters));
-        // The first window reaches (kWindow - kHop) / 2 samples before time 0.
-        pending_.assign((kWindow - kHop) / 2, 0.0f);
+        // The first window reaches kWindowLeadSamples before time 0.
+        pending_.assign(kWindowLeadSamples, 0.0f);
     }
 
     void push(const float* samples, std::size_t count) {
@@ -124,20 +123,20 @@ public:
         pending_.insert(pending_.end(), samples, samples + count);
         samples_in_ += count;
         std::size_t start = 0;
-        while (pending_.size() - start >= kWindow) {
+        while (pending_.size() - start >= kWindowSamples) {
             analyze_frame(&pending_[start]);
-            start += kHop;
+            start += kHopSamples;
         }
         pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(start));
     }
 
     // Pads with zeros so that every 10 ms of input has its frame.
     void finish() {
-        const std::size_t wanted = (samples_in_ + kHop - 1) / kHop;
+        const std::size_t wanted = (samples_in_ + kHopSamples - 1) / kHopSamples;
         while (track_.frame_count < wanted) {
-            pending_.resize(std::max(pending_.size(), kWindow), 0.0f);
+            pending_.resize(std::max(pending_.size(), kWindowSamples), 0.0f);
             analyze_frame(pending_.data());
-            pending_.erase(pending_.begin(), pending_.begin() + kHop);
+            pending_.erase(pending_.begin(), pending_.begin() + kHopSamples);
         }
         changing_.finish();
     }
@@ -145,14 +144,14 @@ public:
 private:
     // Triangular noise (the sum of two uniform draws of xorshift64) of kDitherStep's standard
     // deviation: the same sequence on every run, cheap enough for every sample. Frame by frame, in
-    // order, sample i takes draws 2i and 2i + 1 of its frame's 2 kWindow. The steps of one sequence
+    // order, sample i takes draws 2i and 2i + 1 of its frame's 2 kWindowSamples. The steps of one sequence
     // follow each other, but a frame's first state is a fixed linear map of the frame before's
     // (kDitherJump), so two frames' draws are made at once, side by side (xorshift.hpp), and
     // apply_dithered_window() turns them into floats four at a time: the same numbers as one draw
     // after another, for 0.19 G instructions instead of 0.29 G in the 3 minutes (bench/README.md,
     // session 13).
     // This frame's draws: [0] the first of each sample's two, [1] the second.
-    const std::array<std::array<std::uint32_t, kWindow>, 2>& take_dither_draws() {
+    const std::array<std::array<std::uint32_t, kWindowSamples>, 2>& take_dither_draws() {
         if (next_lane_ == kLanes) {
             draw_two_frames();
             next_lane_ = 0;
@@ -177,21 +176,21 @@ private:
     // samples' own, bit for bit.
     const float* without_offset(const float* samples) {
         float sum = 0.0f;
-        for (std::size_t i = 0; i < kWindow; ++i) sum += samples[i];
-        offset_ += kOffsetStep * (sum / static_cast<float>(kWindow) - offset_);
+        for (std::size_t i = 0; i < kWindowSamples; ++i) sum += samples[i];
+        offset_ += kOffsetStep * (sum / static_cast<float>(kWindowSamples) - offset_);
         if (std::fabs(offset_) < kOffsetFloor) return samples;
         // A frame of one value throughout is digital silence, whatever the value: it stays silent.
-        const bool is_constant = std::all_of(samples, samples + kWindow, [&](float v) { return v == samples[0]; });
-        for (std::size_t i = 0; i < kWindow; ++i) centred_[i] = is_constant ? 0.0f : samples[i] - offset_;
+        const bool is_constant = std::all_of(samples, samples + kWindowSamples, [&](float v) { return v == samples[0]; });
+        for (std::size_t i = 0; i < kWindowSamples; ++i) centred_[i] = is_constant ? 0.0f : samples[i] - offset_;
         return centred_.data();
     }
 
     void analyze_frame(const float* raw_samples) {
         const float* samples = without_offset(raw_samples);
-        const std::size_t hop_start = (kWindow - kHop) / 2;
+        const std::size_t hop_start = kWindowLeadSamples;
         float peak = 0.0f;
-        for (std::size_t i = hop_start; i < hop_start + kHop; ++i) peak = std::max(peak, std::fabs(samples[i]));
-        // frame_ past kWindow stays zero: the window zero-padded to the FFT's size.
+        for (std::size_t i = hop_start; i < hop_start + kHopSamples; ++i) peak = std::max(peak, std::fabs(samples[i]));
+        // frame_ past kWindowSamples stays zero: the window zero-padded to the FFT's size.
         apply_window(samples, window_.data(), frame_.data());
         spectrum_.compute(frame_.data(), power_.data());
         // The spectrum's shape (the cepstra) is taken of the dithered frame; its levels (the bands
@@ -232,7 +231,7 @@ private:
         if (with_pitch_) {
             // Each frame's window ends a hop after the one before's: its last hop is new.
             const bool is_first = track_.pitch.empty();
-            track_.pitch.push_back(pitch_.push(is_first ? samples : samples + kWindow - kHop, is_first ? kWindow : kHop));
+            track_.pitch.push_back(pitch_.push(is_first ? samples : samples + kWindowSamples - kHopSamples, is_first ? kWindowSamples : kHopSamples));
         }
     }
 
@@ -258,13 +257,13 @@ private:
     PitchTracker pitch_;
     ChangingSpectrum changing_{track_};
     std::uint64_t dither_state_ = 0x9E3779B97F4A7C15ull;
-    std::array<std::array<std::array<std::uint32_t, kWindow>, 2>, kLanes> lane_draws_{};  // two frames' draws
+    std::array<std::array<std::array<std::uint32_t, kWindowSamples>, 2>, kLanes> lane_draws_{};  // two frames' draws
     std::size_t next_lane_ = kLanes;  // the lane the next frame takes; kLanes: none drawn yet
     std::vector<float> pending_;
     std::size_t samples_in_ = 0;
-    std::array<float, kWindow> window_{};
+    std::array<float, kWindowSamples> window_{};
     float offset_ = 0.0f;                   // the recording's DC offset as followed so far
-    std::array<float, kWindow> centred_{};  // a frame less the offset
+    std::array<float, kWindowSamples> centred_{};  // a frame less the offset
     std::array<float, kFftSize> frame_{};
     PowerSpectrum spectrum_;
     std::array<float, kBins> power_{};
@@ -335,7 +334,11 @@ FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)
     std::vector<float> block(kBlockFrames);
     std::size_t frames_read = 0;
     float peak = 0.0f;
-    auto sink = [&](const float* samples, std::size_t count) { analyzer.push(samples, count); };
+    DropoutFinder dropouts;
+    auto sink = [&](const float* samples, std::size_t count) {
+        analyzer.push(samples, count);
+        dropouts.push(samples, count);
+    };
     for (;;) {
         const std::size_t count = source.read(block.data(), block.size());
         for (std::size_t i = 0; i < count; ++i) peak = std::max(peak, std::fabs(block[i]));
@@ -346,6 +349,7 @@ FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)
             on_progress(std::min(1.0, static_cast<double>(frames_read) / static_cast<double>(source.frame_count())));
     }
     analyzer.finish();
+    track.dropouts = dropouts.finish();
     track.peak_amplitude = peak;
     track.duration_s = static_cast<double>(frames_read) / source.sample_rate_hz();
     if (frames_read == 0) throw InvalidArgument(source.name(), "empty audio: no frames");

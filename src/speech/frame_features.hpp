@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "speech/dropout_finder.hpp"
 #include "speech/pitch_track.hpp"
 
 namespace talkface::detail {
@@ -17,6 +18,11 @@ class AudioSource;
 constexpr int kAnalysisRateHz = 16000;
 constexpr double kFramesPerSecond = 100.0;
 constexpr double kFrameStepS = 1.0 / kFramesPerSecond;  // the double nearest 0.01, as the literal is
+// Frame t's analysis window: the kWindowSamples samples of the kAnalysisRateHz stream from
+// t * kHopSamples - kWindowLeadSamples on (zeros before the stream starts), centred on its 10 ms.
+constexpr std::size_t kHopSamples = 160;
+constexpr std::size_t kWindowSamples = 400;
+constexpr std::size_t kWindowLeadSamples = (kWindowSamples - kHopSamples) / 2;
 // Added to every power before its logarithm is taken, so that digital silence reads -100 dB (in
 // the dB columns) rather than minus infinity.
 constexpr double kFeatureEnergyFloor = 1e-10;
@@ -61,6 +67,8 @@ struct FeatureTrack {
     float peak_amplitude = 0.0f;  // of the whole input, before resampling
     // Per frame, the voice's pitch (pitch_track.hpp), where analyze_audio was asked for it; else empty.
     std::vector<PitchFrame> pitch;
+    // Where the stream lost packets (dropout_finder.hpp), in order: conceal_dropouts' to draw over.
+    std::vector<Dropout> dropouts;
 
     float at(std::size_t frame, int column) const {
         return values[frame * kFeatureCount + static_cast<std::size_t>(column)];
@@ -70,7 +78,7 @@ struct FeatureTrack {
 // Reads `source` to the end in blocks, resamples to kAnalysisRateHz and computes the features.
 // `on_progress(fraction)` is called after each block (it may throw to cancel).
 // \throws talkface::InvalidArgument naming the audio if it is silent; what the source throws.
-// With `with_pitch`, FeatureTrack::pitch too.
+// With `with_pitch`, FeatureTrack::pitch too. FeatureTrack::dropouts are found as the samples stream by.
 FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)>& on_progress, bool with_pitch = false);
 
 }  // namespace talkface::detail

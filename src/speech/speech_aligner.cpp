@@ -15,6 +15,7 @@
 #include "speech/acoustic_model.hpp"
 #include "speech/alignment_checks.hpp"
 #include "speech/alignment_confidence.hpp"
+#include "speech/dropout_concealment.hpp"
 #include "speech/frame_features.hpp"
 #include "speech/given_spans_alignment.hpp"
 #include "speech/hsmm.hpp"
@@ -682,8 +683,9 @@ Timeline align_source(AudioSource& source, const Timeline& transcript, const Ali
     validate_transcript(transcript);
     ProgressReporter progress(callback);
     progress.report(0.0, "reading");
-    const FeatureTrack track =
+    FeatureTrack track =
         analyze_audio(source, [&](double fraction) { progress.report(kReadingShare * fraction, "reading"); }, options.lenient);
+    conceal_dropouts(track);
     const std::string lost = describe_lost_audio(source.lost_audio());
     std::string notes;
     for (const std::string& note : source.notes()) notes += " (the file: " + note + ")";

@@ -1,0 +1,24 @@
+// Dropouts concealed (issue 13, dropout_finder.hpp): the frames a dropout's zeros take are drawn
+// straight from the frame before it to the frame after, as if the sound had gone on, which it did.
+// Only inside speech: a run of zeros cut on both sides is also what a synthetic drum leaves
+// between its hits (bench/ m-drums: 166 runs in its passages pass the finder's rule, and the
+// levels either side tell them from dropouts no better), and filling those in filled the voice's
+// pauses; 162 of them lie outside every sentence, in the pauses the loudness profile finds.
+#ifndef TALKFACE_SPEECH_DROPOUT_CONCEALMENT_HPP
+#define TALKFACE_SPEECH_DROPOUT_CONCEALMENT_HPP
+
+#include "speech/frame_features.hpp"
+
+namespace talkface::detail {
+
+// A dropout takes the frames whose analysis window holds kTakenShare of its zeros.
+constexpr double kTakenShare = 0.25;
+
+// Conceals those of track.dropouts that lie inside the speech measure_loudness finds in `track`:
+// after its start and before its end, in no pause but one that their own frames make; the others
+// are left as they are. The caller measures the loudness again.
+void conceal_dropouts(FeatureTrack& track);
+
+}  // namespace talkface::detail
+
+#endif
