@@ -652,13 +652,14 @@ TF_API tf_status tf_timeline_syllable_times(const tf_timeline *timeline, size_t 
  * evidence for the syllable's place: its sounds' fit, a change of spectrum where it starts, lengths
  * near their priors at the local pace, its neighbours' evidence, and whether the aligner's other
  * searches (its previous pass, the sounds weighed less with and without the spectral landmarks)
- * start it at the same frame, lenient alignment included; it is calibrated on the recording (the
+ * start it at the same frame, lenient alignment included, and how sure the search is of its start
+ * (strict alignment); it is calibrated on the recording (the
  * fit's scatter in noise scaled to a clean recording's, then against the recording's median, more
  * so in a room or in noise), so the threshold holds per condition: on the benchmark's development
  * speech (a person and two voices made of the same speaker's) no condition (noise, rooms, music,
  * phone, fast speech) has more than 10% of its syllables within 100 ms under it (the person's
- * 1.8-8.1%, 4.5% pooled), and it catches 72% of those more than 100 ms off (held out: 1.5-9.2%,
- * 3.2% pooled, and 59%; the other voices 4.0-9.0% and 64%) (bench/README.md). `talkface align
+ * 2.8-8.3%, 5.3% pooled), and it catches 74% of those more than 100 ms off (held out: 3.0-9.5%,
+ * 4.1% pooled, and 73%; the other voices 5.5-9.0% and 65%) (bench/README.md). `talkface align
  * --plot` draws such syllables in red. */
 #define TF_LOW_ALIGNMENT_CONFIDENCE 0.5
 

@@ -56,6 +56,17 @@ std::vector<SyllableFrames> light_search(const SentenceChain& chain, EmissionSco
 std::vector<double> syllable_steadiness(const std::vector<SyllableFrames>& placed,
                                         const std::vector<std::vector<SyllableFrames>>& others);
 
+// Per syllable of `chain`, how sure the search is of where `path` starts it, from the best whole
+// path starting the syllable's first state on `path` at each frame (`marginals`): of the starts
+// within 15 frames of the path's, each weighed by exp(its score less the best's, over 3), the
+// share within a frame of it. A syllable whose start the search cannot
+// decide (its sounds fit a start a few frames away as well) is as likely misplaced as one other
+// searches move, and the share sees it without searching again with the sounds lighter (bench/
+// Session 17 and 18: the person's tuning syllables >100 ms off caught 207 -> 214 of 290). 1 (sure)
+// for every syllable where `marginals` is empty (a chain searched in windows).
+std::vector<double> start_sureness(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                                   const EntryMaxMarginals& marginals);
+
 // How well a path fits a syllable's frames: how probable the sound the path gives each frame is
 // among all sounds (the mean posterior of its class), and how much better a free sequence of sounds
 // fits the syllable's stretch than the path does (text_fit_gap's loop, per frame).
@@ -88,6 +99,7 @@ struct SyllableEvidence {
     SyllableFit fit;
     double timing = 0.0;      // syllable_timing
     double steadiness = 0.0;  // syllable_steadiness
+    double sureness = 1.0;    // start_sureness; 1 where not measured (lenient alignment)
 };
 
 // Each measured syllable's confidence in 0..1 from its evidence (per syllable of the transcript;
@@ -99,7 +111,8 @@ struct SyllableEvidence {
 // and unscaled it flagged up to 13% of the right syllables there against 3-6% in clean speech
 // (issue 12: the threshold must hold in every condition). Then a syllable's fit (posterior less
 // gap, plus its timing) is averaged with its neighbours' in its chain (drift comes in runs: a
-// syllable placed a syllable off pulls its neighbours with it), its steadiness added, and the sum
+// syllable placed a syllable off pulls its neighbours with it), its steadiness added and its
+// unsureness (1 - sureness, weighed by kUnsureWeight) taken off, and the sum
 // weighed half as it is and half against the recording's median: in a room or in noise every
 // syllable's evidence is lower, and a threshold on the evidence alone flagged half of the right
 // syllables there and almost none in clean speech; the absolute half keeps a recording aligned

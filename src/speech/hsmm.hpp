@@ -61,6 +61,29 @@ std::vector<StateSegment> viterbi_align(const std::vector<PhoneState>& states, c
                                         std::size_t stop_frame = std::numeric_limits<std::size_t>::max(),
                                         double emission_weight = 1.0);
 
+// For each state j of a chain searched whole and each frame t of its search (0 to frame_count), the
+// score of the best whole path on which state j starts at frame t and holds it: against the
+// path's own score, how much worse the search finds each other start of a state
+// (alignment_confidence.hpp: start_sureness). State-major, `width` frames a state. Only paths on
+// which the state and every later one start within 30 frames of their starts on the path are
+// searched (a start further off: minus infinity): a start moved further is as surely wrong, and
+// the search costs the bands' width, not the sentence's.
+struct EntryMaxMarginals {
+    std::size_t width = 0;
+    std::vector<float> values;  // empty: the chain was searched in windows (too long for these tables)
+    float at(std::size_t state, std::size_t frame) const { return values[state * width + frame]; }
+};
+
+// The path viterbi_align finds (the sounds at full weight, over all frames), and its
+// EntryMaxMarginals in `marginals`: the path search's own table of the best way to each state's
+// entry is kept, and one search more, over the chain and the frames reversed and only near the
+// path, gives the best way from there to the end (bench/ Session 18: two whole searches more cost
+// session 17's aligner 29% of its speed; this costs 2-3% of its instructions).
+std::vector<StateSegment> viterbi_align_with_marginals(const std::vector<PhoneState>& states,
+                                                       const EmissionScores& emissions,
+                                                       ViterbiWorkspace& workspace,
+                                                       EntryMaxMarginals& marginals);
+
 }  // namespace talkface::detail
 
 #endif

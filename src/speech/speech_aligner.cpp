@@ -92,11 +92,14 @@ void validate_transcript(const Timeline& transcript) {
     }
 }
 
-// A chain's best path on `scores`.
+// A chain's best path on `scores`; with `marginals`, over all frames, with its EntryMaxMarginals.
 // \throws talkface::AlignmentError if its syllables do not fit in its stretch of speech.
-std::vector<StateSegment> align_chain(const SentenceChain& chain, const EmissionScores& scores, ViterbiWorkspace& workspace,
-                                      std::size_t stop_frame, const Timeline& transcript) {
-    std::vector<StateSegment> path = viterbi_align(chain.states, scores, workspace, stop_frame);
+std::vector<StateSegment> align_chain(const SentenceChain& chain, const EmissionScores& scores,
+                                      ViterbiWorkspace& workspace, std::size_t stop_frame,
+                                      const Timeline& transcript, EntryMaxMarginals* marginals = nullptr) {
+    std::vector<StateSegment> path =
+        marginals ? viterbi_align_with_marginals(chain.states, scores, workspace, *marginals)
+                  : viterbi_align(chain.states, scores, workspace, stop_frame);
     if (path.empty()) {
         throw AlignmentError(describe_sentence(chain.first_sentence, chain.speech, transcript) + ": its " +
                              syllable_count(chain.syllables.size()) + (chain.syllables.size() == 1 ? " does" : " do") +
@@ -378,6 +381,7 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
     std::vector<float> observations;
     EmissionScores scores;
     ViterbiWorkspace workspace;
+    EntryMaxMarginals marginals, room_marginals;
     // Lenient alignment: every chain's plain path first, for the tones of the whole recording, and
     // with it what the lenient pass judges its skips by; each chain's scores are kept for that pass,
     // not measured twice.
@@ -453,7 +457,7 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
         }
         observe(track, loudness, chains[w].searched, observations);
         learned.model.score(observations.data(), chains[w].searched.length(), scores);
-        const auto path = align_chain(chains[w], scores, workspace, scores.frame_count, transcript);
+        const auto path = align_chain(chains[w], scores, workspace, scores.frame_count, transcript, &marginals);
         aligned.has_long_unmarked_pause = aligned.has_long_unmarked_pause || has_long_unmarked_pause(chains[w], path);
         // The last round's path, and the searches again with the sounds weighing less, with and
         // without the landmarks' bonus: where they start a syllable elsewhere, the sounds did not
@@ -465,15 +469,22 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
             // Before measure_chain, which leaves held-out models' scores in `scores`.
             SentenceChain ringing = chains[w];
             let_closures_ring(ringing.states);
-            const auto room_path = align_chain(ringing, scores, workspace, scores.frame_count, transcript);
+            const auto room_path =
+                align_chain(ringing, scores, workspace, scores.frame_count, transcript, &room_marginals);
             const std::vector<std::vector<SyllableFrames>> room_other_frames = {
                 light_search(ringing, scores, workspace, kLightSoundsWeight, true),
                 light_search(ringing, scores, workspace, kLightSoundsWeight, false), other_frames.back()};
             place_syllables(ringing, w, room_path, room_other_frames, scores, track, *aligned.room_result,
                             room_evidence);
+            const std::vector<double> room_sureness = start_sureness(ringing, room_path, room_marginals);
+            for (std::size_t local = 0; local < room_sureness.size(); ++local)
+                room_evidence[ringing.syllable_indices[local]].sureness = room_sureness[local];
         }
         measure_chain(chains[w], w, path, other_frames, observations, learned, spoken_sentences, track, loudness, transcript,
                       scores, workspace, result, evidence, spans, metrics, is_checked);
+        const std::vector<double> sureness = start_sureness(chains[w], path, marginals);
+        for (std::size_t local = 0; local < sureness.size(); ++local)
+            evidence[chains[w].syllable_indices[local]].sureness = sureness[local];
         report_pass(progress, kReestimationRounds, w, chains.size());
     }
     set_confidences(evidence, is_lenient, result);

@@ -1,6 +1,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -75,8 +76,10 @@ std::vector<StateSegment> drifted(std::vector<StateSegment> path, std::size_t fr
     return path;
 }
 
-// Each syllable's confidence on `path`, as the aligner gives it.
-std::vector<double> confidences(const Sentence& sentence, const std::vector<StateSegment>& path) {
+// Each syllable's confidence on `path`, as the aligner gives it (with each syllable's start_sureness
+// where given).
+std::vector<double> confidences(const Sentence& sentence, const std::vector<StateSegment>& path,
+                                const std::vector<double>& sureness = std::vector<double>(kSyllables, 1.0)) {
     std::vector<SyllableFrames> frames(kSyllables, {sentence.scores.frame_count, 0});
     for (const StateSegment& segment : path) {
         const PhoneState& state = sentence.chain.states[segment.state];
@@ -87,7 +90,8 @@ std::vector<double> confidences(const Sentence& sentence, const std::vector<Stat
     const std::vector<SyllableFit> fits = syllable_fit_parts(sentence.chain, path, sentence.scores, frames);
     const std::vector<double> timing = syllable_timing(sentence.chain, path, sentence.scores, frames);
     std::vector<SyllableEvidence> evidence;
-    for (std::size_t i = 0; i < kSyllables; ++i) evidence.push_back({true, 0, fits[i], timing[i], 0.0});
+    for (std::size_t i = 0; i < kSyllables; ++i)
+        evidence.push_back({true, 0, fits[i], timing[i], 0.0, sureness[i]});
     talkface::Timeline timeline;
     timeline.syllables.resize(kSyllables);
     set_confidences(evidence, false, timeline);
@@ -175,6 +179,48 @@ TEST_SUITE("alignment confidence") {
         const auto held = searches[0];
         CHECK(syllable_steadiness(held, {searches[0]})[kDrifted] == 0.0);
         CHECK(syllable_steadiness(held, searches)[kDrifted] < 0.0);
+    }
+
+    TEST_CASE(
+        "a syllable whose start the search cannot decide is less sure of it, and comes out lower, than one "
+        "it can") {
+        // Over the 4 frames either side of syllable kDrifted's start the sibilant and the vowel
+        // before fit alike, and no landmark marks the change: the path starts it somewhere there,
+        // and the search finds starts a frame or two away nearly as good.
+        Sentence sentence = make_sentence();
+        const std::size_t start = sentence.truth[1 + 2 * kDrifted].first_frame;
+        const PhoneClass before = sentence.chain.states[2 * kDrifted].phone_class;
+        for (std::size_t t = start - 4; t < start + 4; ++t) {
+            float* row = &sentence.scores.values[t * kPhoneClassCount];
+            row[kSibilant] = row[before] = 0.0f;
+        }
+        sentence.scores.boundary[start] = 0.0f;
+        ViterbiWorkspace workspace;
+        EntryMaxMarginals marginals;
+        const auto path =
+            viterbi_align_with_marginals(sentence.chain.states, sentence.scores, workspace, marginals);
+        const std::vector<double> sureness = start_sureness(sentence.chain, path, marginals);
+        REQUIRE(sureness.size() == kSyllables);
+        for (std::size_t i = 0; i < kSyllables; ++i) {
+            CAPTURE(i);
+            CHECK(sureness[i] > 0.0);
+            CHECK(sureness[i] <= 1.0);
+            if (i != kDrifted) CHECK(sureness[kDrifted] < sureness[i] - 0.2);
+        }
+        // Every fit here is good, so the confidences lie high on the logistic: its log-odds show the step.
+        const auto sure = confidences(sentence, path);
+        const auto measured = confidences(sentence, path, sureness);
+        auto log_odds_lost = [&](std::size_t i) {
+            return std::log(sure[i] / (1.0 - sure[i])) - std::log(measured[i] / (1.0 - measured[i]));
+        };
+        CHECK(log_odds_lost(kDrifted) > 1.0);
+        for (std::size_t i = 0; i < kSyllables; ++i) {
+            CAPTURE(i);
+            if (i != kDrifted) CHECK(log_odds_lost(i) < 0.3);
+        }
+        // Without marginals (a chain searched in windows) every syllable counts as sure.
+        const auto unmeasured = start_sureness(sentence.chain, path, EntryMaxMarginals{});
+        CHECK(std::all_of(unmeasured.begin(), unmeasured.end(), [](double value) { return value == 1.0; }));
     }
 
     TEST_CASE("a room's evidence, lower throughout, keeps its right syllables' confidences near a clean recording's") {

@@ -60,6 +60,19 @@ struct NasalAfterVowel {
     }
 };
 
+// Two vowels of one class (duration medians 10 and 20 frames) over 30 frames that fit it alike:
+// the emissions say nothing of where the second starts.
+struct TwoAlikeVowels {
+    std::vector<PhoneState> states = {chain_state(kVowelA, StateRole::final, 0, 10.0, 40, false),
+                                      chain_state(kVowelA, StateRole::final, 1, 20.0, 40, false)};
+    EmissionScores emissions;
+
+    TwoAlikeVowels() {
+        emissions.frame_count = 30;
+        emissions.values.assign(30 * kPhoneClassCount, -1.0f);
+    }
+};
+
 void check_same_path(const std::vector<StateSegment>& path, const std::vector<StateSegment>& truth) {
     REQUIRE(path.size() == truth.size());
     for (std::size_t i = 0; i < truth.size(); ++i) {
@@ -120,11 +133,9 @@ TEST_SUITE("HSMM search") {
         // Two vowels of one class over 30 frames: the emissions say nothing of where the second
         // starts, the priors (medians 10 and 20 frames) put it at frame 9; a landmark at frame 16 moves it
         // there, and a bonus smaller than what the priors lose there does not.
-        std::vector<PhoneState> states = {chain_state(kVowelA, StateRole::final, 0, 10.0, 40, false),
-                                          chain_state(kVowelA, StateRole::final, 1, 20.0, 40, false)};
-        EmissionScores emissions;
-        emissions.frame_count = 30;
-        emissions.values.assign(30 * kPhoneClassCount, -1.0f);
+        TwoAlikeVowels vowels;
+        const auto& states = vowels.states;
+        auto& emissions = vowels.emissions;
         ViterbiWorkspace workspace;
         auto second_start = [&] {
             const auto path = viterbi_align(states, emissions, workspace);
@@ -163,6 +174,63 @@ TEST_SUITE("HSMM search") {
         CHECK(nasal_start(1.0) == 12);
         CHECK(nasal_start(0.25) == 11);
         CHECK(nasal_start(4.0) == 14);
+    }
+
+    TEST_CASE(
+        "the best whole path through each state's start scores the path's own score where the path starts "
+        "it, less elsewhere") {
+        // The planted sentence with landmarks' bonuses on some frames (paid by the state entered
+        // there, in either direction of the search): the forward tables and the reversed search
+        // must meet at the same score, that of the best path, at every state's start on it.
+        PlantedSentence sentence = plant(20);
+        sentence.emissions.boundary.assign(sentence.emissions.frame_count + 1, 0.0f);
+        for (std::size_t t = 0; t <= sentence.emissions.frame_count; t += 7)
+            sentence.emissions.boundary[t] = 0.5f;
+        ViterbiWorkspace workspace;
+        EntryMaxMarginals marginals;
+        const auto path =
+            viterbi_align_with_marginals(sentence.states, sentence.emissions, workspace, marginals);
+        check_same_path(path, viterbi_align(sentence.states, sentence.emissions, workspace));
+        REQUIRE(marginals.width == sentence.emissions.frame_count + 1);
+        const float best = marginals.at(path.front().state, path.front().first_frame);
+        for (const StateSegment& segment : path) {
+            CAPTURE(segment.state);
+            CHECK(marginals.at(segment.state, segment.first_frame) == doctest::Approx(best).epsilon(1e-5));
+            // A frame either way gives a frame a class the emissions score 5 lower (the duration
+            // priors give some back).
+            for (std::size_t moved = 1; moved <= 15; ++moved) {
+                if (segment.first_frame >= moved)
+                    CHECK(marginals.at(segment.state, segment.first_frame - moved) < best - 3.0f);
+                if (segment.first_frame + moved < marginals.width)
+                    CHECK(marginals.at(segment.state, segment.first_frame + moved) < best - 3.0f);
+            }
+        }
+    }
+
+    TEST_CASE(
+        "where the sounds cannot tell a state's start, its other starts score nearly as well as the path's") {
+        // The two vowels of one class above: only the duration priors place the second's start.
+        TwoAlikeVowels vowels;
+        const auto& states = vowels.states;
+        auto& emissions = vowels.emissions;
+        ViterbiWorkspace workspace;
+        EntryMaxMarginals marginals;
+        const auto path = viterbi_align_with_marginals(states, emissions, workspace, marginals);
+        REQUIRE(path.size() == 2);
+        const float best = marginals.at(1, path[1].first_frame);
+        CHECK(marginals.at(1, path[1].first_frame - 1) > best - 0.5f);
+        CHECK(marginals.at(1, path[1].first_frame + 1) > best - 0.5f);
+        CHECK(marginals.at(1, path[1].first_frame + 1) <= best);
+    }
+
+    TEST_CASE("a sentence searched in windows has no marginals, and the same path") {
+        const PlantedSentence sentence = plant(600);
+        ViterbiWorkspace workspace;
+        EntryMaxMarginals marginals;
+        check_same_path(
+            viterbi_align_with_marginals(sentence.states, sentence.emissions, workspace, marginals),
+            sentence.truth);
+        CHECK(marginals.values.empty());
     }
 
     TEST_CASE("a chain longer than its frames has no path") {

@@ -123,12 +123,13 @@ starts) and a confidence; the timeline's duration_s is the audio's length. A syl
 is below talkface.kLowAlignmentConfidence (0.5) is one to check: its start may be more than 100 ms off.
 The confidence (not a probability) grows with the evidence for the syllable's place (its sounds' fit,
 a change of spectrum where it starts, lengths near their priors at the local pace, its neighbours'
-evidence, whether the aligner's other searches start it at the same frame; lenient alignment weighs
-the same) and is calibrated on the recording, so the threshold holds per condition: on the benchmark's
+evidence, whether the aligner's other searches start it at the same frame, how sure the search is of
+its start; lenient alignment weighs the same but the last) and is calibrated on the recording, so the
+threshold holds per condition: on the benchmark's
 development speech (a person and two voices made of the same speaker's) no condition (noise, rooms,
 music, phone, fast speech) has more than 10% of its syllables within 100 ms under it (the person's
-1.8-8.1%, 4.5% pooled), and it catches 72% of those more than 100 ms off (held out: 1.5-9.2% and 59%;
-the other voices 4.0-9.0% and 64%). Audio is read in blocks: an
+2.8-8.3%, 5.3% pooled), and it catches 74% of those more than 100 ms off (held out: 3.0-9.5% and 73%;
+the other voices 5.5-9.0% and 65%). Audio is read in blocks: an
 hour of speech aligns in bounded memory.
 
 The GIL is released while aligning, so alignments on several threads run at once; one aligner may be
