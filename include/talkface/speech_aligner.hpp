@@ -31,9 +31,9 @@ inline namespace v0 {
 /// calibrated apart. It is not a probability. The threshold is set so that no recording condition
 /// of the benchmark's development speech (bench/README.md, issue 12: a person and two voices made
 /// of the same speaker's, in noise, rooms, music, hum, phone, fast speech) has more than 10% of its
-/// syllables within 100 ms under it: the person's 2.8-8.3% per condition, 5.3% pooled, catching 74%
-/// of those more than 100 ms off (214 of 290); on the held-out passages, measured after it was set,
-/// 3.0-9.5% and 73% (32 of 44); the other voices 5.5-9.0% and 65%, held out 2.5-7.4%. On synthetic
+/// syllables within 100 ms under it: the person's 2.8-7.5% per condition, 5.2% pooled, catching 74%
+/// of those more than 100 ms off (204 of 276); on the held-out passages, measured after it was set,
+/// 2.5-9.9% and 72% (28 of 39); the other voices 5.5-7.8% and 67%, held out 2.5-8.4%. On synthetic
 /// speech (espeak-ng) it flags 0.3-3.1% of right syllables per condition (1.0% pooled).
 constexpr double kLowAlignmentConfidence = 0.5;
 
