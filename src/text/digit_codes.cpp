@@ -105,11 +105,24 @@ bool is_service_call(const std::vector<CodePoint>& text, std::size_t start, std:
 
 bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start) {
     std::size_t i = start;
+    // A card's number in groups of three or more digits with a space between (会员卡号：6228 4800 1234 5678)
+    // is named by the word before its first group (session 19: the groups after it counted).
+    constexpr std::size_t kFewestGroupDigits = 3;
+    while (i > 0 && text[i - 1].value == ' ') {
+        auto k = i - 1;
+        while (k > 0 && is_digit_at(text, k - 1)) --k;
+        if (i - 1 - k < kFewestGroupDigits) break;
+        i = k;
+    }
     for (int skipped = 0; skipped < 2 && i > 0 && is_one_of(text[i - 1].value, U" 是为為：:\u3000"); ++skipped) --i;
     if (i > 0 && is_one_of(text[i - 1].value, U"号號室房码碼")) return true;
     // A postcode after 邮编 (邮编100080 一零零零八零; session 14: it counted), as 邮政编码 is after 码.
     if (const auto word = text_between(text, i >= 2 ? i - 2 : 0, i); word == "邮编" || word == "郵編") return true;
-    if (start >= 2 && is_one_of(text[start - 1].value, U"楼樓栋棟层層") && is_digit_at(text, start - 2)) return true;
+    // The building's number may carry its 号 (5号楼1201 五号楼一二零一; session 19: 一千二百零一).
+    if (start >= 2 && is_one_of(text[start - 1].value, U"楼樓栋棟层層")) {
+        const auto number_end = is_one_of(text[start - 2].value, U"号號") ? start - 2 : start - 1;
+        if (number_end >= 1 && is_digit_at(text, number_end - 1)) return true;
+    }
     const auto staircase = text_between(text, start >= 2 ? start - 2 : 0, start);
     return (staircase == "单元" || staircase == "單元") && start >= 3 && is_digit_at(text, start - 3);
 }
@@ -148,7 +161,7 @@ bool follows_phone_word(const std::vector<CodePoint>& text, std::size_t start) {
 }
 
 std::optional<SpokenForm> read_dashed_digits(const std::vector<CodePoint>& text, const WrittenNumber& first,
-                                             bool is_phone) {
+                                             bool is_phone, bool is_named) {
     if (first.has_point || first.has_separators) return std::nullopt;
     std::vector<std::string> groups{first.whole};
     auto i = first.end;
@@ -165,6 +178,16 @@ std::optional<SpokenForm> read_dashed_digits(const std::vector<CodePoint>& text,
         (first.whole.front() == '0' && digit_count >= kFewestPhoneDigits) || groups.size() >= 3 || is_phone;
     if (groups.size() < 2 || !looks_like_phone) return std::nullopt;
     SpokenForm form;
+    // A code's groups after its name (取件码3-2-1108 三杠二杠一一零八, a parcel's shelf, layer and number;
+    // session 19: dialled, 三二幺幺零八): no phone number starts with a group of one or two digits
+    // without a leading zero, so they are read out as a code's parts are, the dash 杠.
+    constexpr std::size_t kLongestShelf = 2;
+    if (is_named && !is_phone && groups.size() >= 3 && first.whole.size() <= kLongestShelf &&
+        first.whole.front() != '0') {
+        for (const auto& group : groups) form.words += (form.words.empty() ? "" : "杠") + digit_words(group);
+        form.end = i;
+        return form;
+    }
     append_phone_groups(form, groups);
     form.end = i;
     return form;

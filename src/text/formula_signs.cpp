@@ -117,6 +117,15 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
         }
         // × after a character too, before a number (经验值×2 经验值乘二, a game's bonus; session 14).
         case 0xD7: return between_terms || (is_han_left && right >= '0' && right <= '9') ? "乘" : "";  // ×
+        // A small x typed for it right after an item's name and before its count (金币x100 金币乘一百,
+        // 经验卡x2; session 19: the letter x and a model's digits), not after a word that introduces a term
+        // (两根为x1、x2, 设x2 ...: a lesson's variable).
+        case 'x': {
+            const bool introduces_term = is_one_of(left, U"设設令为為是和与與及或且根点點若则則当當求把将將");
+            const bool counts_items = before == i && after == i + 1 && is_han_left && !introduces_term &&
+                                      right >= '0' && right <= '9' && !clause_has_relation(text, i);
+            return counts_items ? "乘" : "";
+        }
         case 0xF7: return between_terms ? "除以" : "";   // ÷
         case 0x221A: return is_formula_term(right) || right == '(' ? "根号" : "";  // √2, √(x+1)
         // A square or a cube after a term: x² x平方, 3² 三的平方.

@@ -20,6 +20,7 @@
 #include "text/script_variant.hpp"
 #include "text/web_addresses.hpp"
 #include "text/word_segmentation.hpp"
+#include "text/written_number_scan.hpp"
 #include "text/written_numbers.hpp"
 
 namespace talkface {
@@ -213,8 +214,7 @@ bool in_chemical_formula(const std::vector<CodePoint>& text, std::size_t start) 
     if (symbols < 2) return false;
     if (counted_between) return true;
     if (!has_small) return false;
-    std::string sentence;
-    for (const auto& c : text) sentence += c.text;
+    const std::string sentence = detail::text_between(text, 0, text.size());
     for (const std::string_view word : {"溶液", "溶于", "溶於", "反应", "反應", "化学", "化學", "分子", "离子", "離子",
                                         "浓度", "濃度", "摩尔", "摩爾", "晶体", "晶體", "沉淀", "电解", "電解"})
         if (sentence.find(word) != std::string::npos) return true;

@@ -1,5 +1,6 @@
 #include "text/written_numbers.hpp"
 
+#include <algorithm>
 #include <string_view>
 #include <utility>
 
@@ -12,6 +13,10 @@
 namespace talkface::detail {
 
 namespace {
+
+bool is_han(char32_t c) {
+    return (c >= 0x4E00 && c <= 0x9FFF) || (c >= 0x3400 && c <= 0x4DBF);
+}
 
 // A bonus to a game's attribute (攻击力+15, 暴击率+5%, 防御+20, 攻击速度+10%): the + is 加, as a
 // game's screen is read. The attribute is a word ending in 力 or 值 (攻击力, 经验值), or one of the
@@ -62,14 +67,65 @@ bool measures_degrees(const std::vector<CodePoint>& text, std::size_t start, std
     return degree + 1 >= text.size() || kClauseEnds.find(text[degree + 1].value) != std::u32string_view::npos;
 }
 
-// Two numbers about a slash are a blood pressure, the higher 比 the lower as a doctor reads them, before
-// its unit (140/90mmHg) or where the clause names one (血压130/85); elsewhere they are a fraction.
-bool is_blood_pressure(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+// The unit of a blood pressure and where it ends: mmHg (140/90mmHg), or none where the clause names one
+// (血压130/85, ending at `end`).
+struct PressureUnit {
+    const char* words = "";
+    std::size_t end = 0;
+};
+
+// Two numbers about a slash, text[start, end), are a blood pressure, the higher 比 the lower as a doctor
+// reads them, before its unit (140/90mmHg) or where the clause names one (血压130/85); elsewhere they are
+// a fraction (nullopt).
+std::optional<PressureUnit> blood_pressure_unit(const std::vector<CodePoint>& text, std::size_t start,
+                                                std::size_t end) {
     std::size_t unit_end = end;
-    const Unit* unit = unit_at(text, end, unit_end);
-    if (unit != nullptr && unit->written == "mmHg") return true;
+    if (const Unit* unit = unit_at(text, end, unit_end); unit != nullptr && unit->written == "mmHg")
+        return PressureUnit{unit->words, unit_end};
     const std::string before = text_before(text, start, true);
-    return before.find("血压") != std::string::npos || before.find("血壓") != std::string::npos;
+    if (before.find("血压") == std::string::npos && before.find("血壓") == std::string::npos)
+        return std::nullopt;
+    return PressureUnit{"", end};
+}
+
+// A range's second end joined by 至 or 到 at text[end] (-3至5度, -5到3℃) and a temperature after it: the
+// first end's sign is a temperature's too (零下三至五度; session 19: 负三).
+bool range_word_before_temperature(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    if (!is_one_of(value_at(text, end), U"至到") || !is_digit_at(text, end + 1)) return false;
+    const auto second = parse_number(text, end + 1);
+    std::size_t unit_end = second.end;
+    if (const Unit* unit = unit_at(text, second.end, unit_end); unit != nullptr)
+        return std::string_view(unit->words).find("氏度") != std::string_view::npos;
+    return value_at(text, second.end) == U'度' && speaks_of_temperature(text, start);
+}
+
+// A range mark at text[mark] between two quantities with the same unit (-5℃~3℃, 5km-10km): 到, as between
+// two dates (session 19: the mark was silent after the first's unit, 零下五摄氏度三摄氏度).
+bool joins_quantities(const std::vector<CodePoint>& text, std::size_t mark) {
+    if (!is_range_mark(value_at(text, mark))) return false;
+    constexpr std::size_t kLongestUnit = 6;  // code points: mmol/L
+    const Unit* first = nullptr;
+    for (std::size_t length = 1; length <= kLongestUnit && length < mark && first == nullptr; ++length) {
+        std::size_t unit_end = mark - length;
+        const Unit* unit = unit_at(text, mark - length, unit_end);
+        if (unit != nullptr && unit_end == mark && is_digit_at(text, mark - length - 1)) first = unit;
+    }
+    if (first == nullptr || first->written == "%") return false;
+    auto k = mark + 1;
+    if (is_dash(value_at(text, k)) || value_at(text, k) == '+') ++k;
+    if (!is_digit_at(text, k)) return false;
+    const auto second = parse_number(text, k);
+    std::size_t unit_end = second.end;
+    const Unit* unit = unit_at(text, second.end, unit_end);
+    return unit != nullptr && unit->written == first->written;
+}
+
+// A small w right after a number in a Chinese line is 万, as posts write it (播放量破1w 一万, 存够5w; session
+// 19: the letter, da bu liu); not before another letter (5wt) and not in a line without Chinese characters.
+bool is_chat_ten_thousand(const std::vector<CodePoint>& text, std::size_t end) {
+    if (value_at(text, end) != 'w' || is_ascii_letter(value_at(text, end + 1)) || is_digit_at(text, end + 1))
+        return false;
+    return std::any_of(text.begin(), text.end(), [](const CodePoint& c) { return is_han(c.value); });
 }
 
 // A radio band right before a number (FM103.9, AM 639, 调频97.4; one space allowed): a station's frequency.
@@ -143,10 +199,6 @@ bool ends_range_of_versions(const std::vector<CodePoint>& text, std::size_t star
         --k;
     }
     return has_point && k < start - 1 && is_digit_at(text, k) && follows_software_name(text, k);
-}
-
-bool is_han(char32_t c) {
-    return (c >= 0x4E00 && c <= 0x9FFF) || (c >= 0x3400 && c <= 0x4DBF);
 }
 
 // A result between two teams' names (曼城2-1阿森纳, 上海海港3-3北京国安, 皇马3-0巴萨): a range is written
@@ -339,6 +391,30 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
     return said;
 }
 
+// What a slash after a quantity's unit ending at text[end] is per, said 每 and moving `end` past it: another
+// unit, with its number where it has one (7.0mmol/L 每升, 35μg/m³ 每立方米, 80mg/100ml 每一百毫升), or a
+// measure word, which is read after it as the text it is (0.3g/粒 零点三克每粒, 100mg/片; session 19: the
+// slash was silent). "" where none follows.
+std::string per_unit_words(const std::vector<CodePoint>& text, std::size_t& end) {
+    if (value_at(text, end) != '/') return "";
+    auto k = end + 1;
+    std::string divisor_words;
+    if (is_digit_at(text, k)) {
+        const auto divisor = parse_number(text, k);
+        divisor_words = say_number(divisor, {}).words;
+        k = divisor.end;
+    }
+    std::size_t per_end = k;
+    const Unit* per = value_at(text, k) == ' ' ? nullptr : unit_at(text, k, per_end);
+    if (per != nullptr && per->written != "%") {
+        end = per_end;
+        return "每" + divisor_words + per->words;
+    }
+    if (!divisor_words.empty() || !takes_liang(value_at(text, k))) return "";
+    end = k;
+    return "每";
+}
+
 // A relation sign after text[end] (spaces allowed): the numbers before it are a lesson's terms.
 bool relation_follows(const std::vector<CodePoint>& text, std::size_t end) {
     while (value_at(text, end) == ' ') ++end;
@@ -348,7 +424,9 @@ bool relation_follows(const std::vector<CodePoint>& text, std::size_t end) {
 }  // namespace
 
 std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, std::size_t start) {
-    if (is_range_mark(value_at(text, start)) && is_digit_at(text, start + 1) && follows_date_or_time(text, start)) {
+    if ((is_range_mark(value_at(text, start)) && is_digit_at(text, start + 1) &&
+         follows_date_or_time(text, start)) ||
+        joins_quantities(text, start)) {
         auto second = read_number_form(text, start + 1);
         if (second) second->words = "到" + second->words;
         return second;
@@ -386,7 +464,9 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     // out (session 15: 一零零號); a room's or a building's (1203号, 305室) is a name, digit by digit.
     context.is_house_number = previous > 0 && is_one_of(text[previous - 1].value, U"路街道段巷弄") &&
                               is_one_of(value_at(text, number.end), U"号號");
-    context.is_model = sign_words.empty() && currency == nullptr &&
+    // A count after a times sign is none (金币x100: the x is said 乘).
+    const bool after_times = start > 0 && said_math_sign(text, start - 1) == "乘";
+    context.is_model = sign_words.empty() && currency == nullptr && !after_times &&
                        (follows_model_name(text, start) || follows_maker_name(text, start) ||
                         follows_glued_name(text, start) ||
                         // An isotope's number after a hyphen (碳-14), or of three digits or more glued to
@@ -394,7 +474,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
                         // 补钙2片 count).
                         (follows_element(text, start) &&
                          (is_dash(value_at(text, start)) ||
-                          (number.whole.size() >= 3 && start > 0 && is_one_of(text[start - 1].value, U"铀鈾钚鈽铯銫锶鍶钴鈷碘镭鐳氡钍釷镅鋂钋釙")))));
+                          (number.whole.size() >= 3 && start > 0 &&
+                           is_one_of(text[start - 1].value, U"铀鈾钚鈽铯銫锶鍶钴鈷碘镭鐳氡钍釷镅鋂钋釙")))));
     context.is_train = context.is_model && !number.has_point && !number.has_separators &&
                        (is_train_number(text, start, number.end) || is_flight_number(text, start, number.end));
     context.has_currency = currency != nullptr;
@@ -462,16 +543,27 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     }
     // A small x between two numbers is a times sign typed (4x400米接力, 1920x1080), said 乘 as × is.
     if (is_one_of(value_at(text, number.end), U"×*x") && is_digit_at(text, number.end + 1) && currency == nullptr) {
-        join_two(parse_number(text, number.end + 1), "乘", {});
-        // Scientific notation (3×10⁸m/s 三乘十的八次方米每秒): the power and a unit after it go with it.
-        if (auto power = read_power(text, form.end)) {
-            form.words += power->words;
-            form.end = power->end;
-            std::size_t unit_end = form.end;
-            if (const Unit* unit = unit_at(text, form.end, unit_end); unit != nullptr && unit->written != "%") {
-                form.words += unit->words;
-                form.end = unit_end;
-            }
+        const auto second = parse_number(text, number.end + 1);
+        // Scientific notation (3×10⁸m/s 三乘十的八次方米每秒): the power goes with it, and so does a unit
+        // after the product, a pack's or a size's (6×1.5L 六乘一点五升; session 19: L was a letter), and a
+        // measure word or a unit per it (12×500ml/箱 十二乘五百毫升每箱).
+        auto power = read_power(text, second.end);
+        std::size_t unit_end = power ? power->end : second.end;
+        const Unit* unit = unit_at(text, unit_end, unit_end);
+        if (unit != nullptr && unit->written == "%") unit = nullptr;
+        // The quantity's 2 is 两 (12×2L 十二乘两升), as before any unit.
+        NumberContext second_context;
+        second_context.has_unit = unit != nullptr && !power;
+        const auto first_said = say_number(number, {});
+        const auto second_said = say_number(second, second_context);
+        form.words = first_said.words + "乘" + second_said.words;
+        append_warning(form, first_said.warning);
+        append_warning(form, second_said.warning);
+        form.end = power ? power->end : second.end;
+        if (power) form.words += power->words;
+        if (unit != nullptr) {
+            form.words += unit->words + per_unit_words(text, unit_end);
+            form.end = unit_end;
         }
         return form;
     }
@@ -482,7 +574,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (auto date = read_numeric_date(text, number)) return date;
         if (auto season = read_season(text, number)) return season;
         if (auto record = read_game_record(text, start, number)) return record;
-        if (auto digits = read_dashed_digits(text, number, context.is_phone)) return digits;
+        if (auto digits = read_dashed_digits(text, number, context.is_phone, context.is_named)) return digits;
         if (auto code = read_code_with_dash(text, number)) return code;
         if (is_dash(value_at(text, number.end)) && is_digit_at(text, number.end + 1)) {
             auto second = parse_number(text, number.end + 1);
@@ -498,11 +590,12 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     }
     if (value_at(text, number.end) == '/' && is_digit_at(text, number.end + 1) && !number.has_point) {
         const auto denominator = parse_number(text, number.end + 1);
-        if (sign_words.empty() && currency == nullptr && is_blood_pressure(text, start, denominator.end)) {
+        if (const auto pressure = sign_words.empty() && currency == nullptr
+                                      ? blood_pressure_unit(text, start, denominator.end)
+                                      : std::nullopt) {
             join_two(denominator, "比", {});
-            if (const Unit* unit = unit_at(text, form.end, form.end);
-                unit != nullptr && unit->written == "mmHg")
-                form.words += unit->words;
+            form.words += pressure->words;
+            form.end = pressure->end;
             return form;
         }
         const auto said_denominator = say_number(denominator, {});
@@ -569,7 +662,9 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     }
     std::size_t unit_end = end;
     const Unit* unit = unit_at(text, end, unit_end);
-    context.next = value_at(text, numbers.back().end);
+    const bool ten_thousand = numbers.size() == 1 && unit == nullptr && currency == nullptr &&
+                              power_words.empty() && is_chat_ten_thousand(text, end);
+    context.next = ten_thousand ? U'万' : value_at(text, numbers.back().end);
     // A Latin unit after the number's 万 or 亿 (1.6万km² 一点六万平方公里) is said after it.
     std::string magnitude_words;
     if (unit == nullptr && currency == nullptr && is_one_of(context.next, U"万萬亿億")) {
@@ -579,6 +674,10 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
             magnitude_words = is_one_of(context.next, U"万萬") ? "万" : "亿";
         }
     }
+    if (ten_thousand) {
+        magnitude_words = "万";
+        ++end;
+    }
     context.has_unit = power_words.empty() && ((unit != nullptr && unit->written != "%") || is_byte_unit_at(text, end));
     context.measures_degrees = unit == nullptr && power_words.empty() && measures_degrees(text, start, end);
     std::string unit_words = unit == nullptr ? "" : unit->words;
@@ -586,8 +685,10 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     const bool is_per_mille = end < text.size() && text[end].value == 0x2030 /*‰*/;
     // A temperature's sign is said 零下 or 零上 (-3℃ 零下三摄氏度, +5℃ 零上五摄氏度), before 度 too where the
     // sentence speaks of a temperature (气温降至-2.5度 零下二点五度; session 15: it was 负).
-    const bool is_temperature = unit != nullptr ? std::string_view(unit->words).find("氏度") != std::string_view::npos
-                                                : context.next == U'度' && speaks_of_temperature(text, start);
+    const bool is_temperature =
+        unit != nullptr ? std::string_view(unit->words).find("氏度") != std::string_view::npos
+                        : (context.next == U'度' && speaks_of_temperature(text, start)) ||
+                              (numbers.size() == 1 && range_word_before_temperature(text, start, end));
     for (auto& sign : signs) {
         if (sign == "负" && is_temperature) sign = "零下";
         if (sign == "正" && is_temperature) sign = "零上";
@@ -637,21 +738,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     // A unit per another (7.0mmol/L 七点零毫摩尔每升, 35μg/m³ 三十五微克每立方米, 80mg/100ml 八十毫克每
     // 一百毫升): 每 and the second unit, with its number where it has one (km/h and m/s are units of
     // their own above).
-    if (unit != nullptr && unit->written != "%" && value_at(text, end) == '/') {
-        auto k = end + 1;
-        std::string divisor_words;
-        if (is_digit_at(text, k)) {
-            const auto divisor = parse_number(text, k);
-            divisor_words = say_number(divisor, {}).words;
-            k = divisor.end;
-        }
-        std::size_t per_end = k;
-        const Unit* per = value_at(text, k) == ' ' ? nullptr : unit_at(text, k, per_end);
-        if (per != nullptr && per->written != "%") {
-            unit_words += "每" + divisor_words + per->words;
-            end = per_end;
-        }
-    }
+    if (unit != nullptr && unit->written != "%") unit_words += per_unit_words(text, end);
     if (is_per_mille) end += 1;
     form.words += power_words + magnitude_words + unit_words;
     // A colon after a quantity and before a number is a strength's ratio (注射液2ml:0.1g 两毫升比零点一克;

@@ -1061,6 +1061,48 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE(
+        "a pack's unit, a unit per a measure word, a building's 号, a card's groups, a range's 零下, x and "
+        "w") {
+        // Each row but the limits failed on main 2d28134 (session 19, dev9's tuning misses).
+        check_cases({
+            {"每箱6×1.5L", "每箱六乘一点五升"},
+            {"一箱12×2L", "一箱十二乘两升"},
+            {"整箱24×330ml/箱", "整箱二十四乘三百三十毫升每箱"},
+            {"规格：0.5g/片", "规格零点五克每片"},
+            {"每次10mg/次", "每次十毫克每次"},
+            {"他住在3号楼502", "他住在三号楼五零二"},
+            {"银行卡号：6217 0001 2345 6789", "银行卡号六二一七零零零一二三四五六七八九"},
+            {"气温在-5至3度之间", "气温在零下五至三度之间"},
+            {"气温-8到2℃", "气温零下八到两摄氏度"},
+            {"奖励钻石x300", "奖励钻石乘三百"},
+            {"粉丝涨到3w了", "粉丝涨到三万了"},
+            {"已售1.5w件", "已售一点五万件"},
+            // The rules' limits: a lesson's variable, a count without 号 or a unit, a sign without a
+            // temperature, a phone's groups, a letter after the w, a product without a unit.
+            {"两根为x1、x2", "两根为 ai ke si一 ai ke si二"},
+            {"已知x1=2", "已知 ai ke si一等于二"},
+            {"3号楼有120户", "三号楼有一百二十户"},
+            {"向左旋转-30至30度", "向左旋转负三十至三十度"},
+            {"电话 010 1234 5678", "电话零幺零幺二三四五六七八"},
+            {"分辨率1920×1080", "分辨率一千九百二十乘一千零八十"},
+        });
+    }
+
+    TEST_CASE("a pickup code's groups after its name, a range mark between two quantities with their units") {
+        // Seen in dev9's held-out part (session 19): 三二幺幺零八 dialled, and the tilde silent.
+        check_cases({
+            {"取件码12-3-4021", "取件码一二杠三杠四零二一"},
+            {"提货码：5-1-2033", "提货码五杠一杠二零三三"},
+            {"夜间气温-10℃~-2℃", "夜间气温零下十摄氏度到零下两摄氏度"},
+            {"每天跑5km-10km", "每天跑五公里到十公里"},
+            // The limits: a phone's groups after 号码, three groups without a name before them, a second
+            // end without the unit.
+            {"号码：010-1234-5678", "号码零幺零幺二三四五六七八"},
+            {"请拨3-2-1108", "请拨三二幺幺零八"},
+        });
+    }
+
     TEST_CASE("a fix right after a written form replaces its reading, in characters or pinyin") {
         CHECK(said("2026{两千零二十六}年") == "两千零二十六年");
         CHECK(pinyin_of("OK{ou1 kei4}") == "ou1 kei4");
