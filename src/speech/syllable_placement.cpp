@@ -104,9 +104,14 @@ std::size_t syllable_valley_start(const FeatureTrack& track, std::size_t offset,
     if (near != end) return near;
     // That far back a valley may be the syllable before's own onset (有一: the y of 有 is weaker
     // than its ou): the one between the two nuclei lies after the syllable before's loudest frame.
+    // That frame is looked for before the level's rise into `start`: where the path starts the
+    // syllable late, its own onset rises there already, louder than the syllable before (包忘).
+    auto level = [&](std::size_t t) { return track.at(offset + t, kEnergyDb); };
+    std::size_t rise_foot = std::min(start, end);
+    while (rise_foot < end && rise_foot > lowest + 1 && level(rise_foot - 1) < level(rise_foot)) --rise_foot;
     std::size_t peak = lowest;
-    for (std::size_t t = lowest; t < std::min(start, end); ++t)
-        if (track.at(offset + t, kEnergyDb) > track.at(offset + peak, kEnergyDb)) peak = t;
+    for (std::size_t t = lowest; t < rise_foot; ++t)
+        if (level(t) > level(peak)) peak = t;
     const std::size_t far = level_valley(track, offset, std::max(peak, search_from(kFarValleySearchFrames)), end, kFarValleyDepthDb);
     return far != end ? far : start;
 }

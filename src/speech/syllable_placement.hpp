@@ -47,9 +47,10 @@ std::size_t voiced_join_start(const StateSegment& before, PhoneClass before_clas
 // Returns the lowest-level frame within kValleySearchFrames before `start` (or `start` itself)
 // where it is a valley at least kValleyDepthDb deep (the last frame of its floor, where the level
 // begins to rise); where there is none, the same within kFarValleySearchFrames and after the
-// loudest frame from `lowest` on (the syllable before's nucleus) where it is kFarValleyDepthDb deep
-// (after a short syllable the path starts the next one late by more than a turn's width); else
-// `start`: never later.
+// loudest frame from `lowest` to the foot of the level's rise into `start` (the syllable before's
+// nucleus: the syllable's own onset, rising there, may be louder) where it is kFarValleyDepthDb
+// deep (after a short syllable the path starts the next one late by more than a turn's width);
+// else `start`: never later.
 std::size_t syllable_valley_start(const FeatureTrack& track, std::size_t offset, std::size_t lowest, std::size_t start);
 
 // The path's syllables and pauses, in frames of the whole recording.

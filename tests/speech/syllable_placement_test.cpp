@@ -88,6 +88,26 @@ TEST_SUITE("speech") {
         CHECK(syllable_valley_start(track, 5, 1, 21) == 21);
     }
 
+    TEST_CASE("a far valley lies after the nucleus before it, even where the next syllable is louder") {
+        // 包忘: 包's vowel at -20 dB, a valley 10 dB deep at frame 22, then 忘 rising 2 dB a frame
+        // past -20 dB; the path put 忘 at frame 31, nine frames after the valley. 忘's own rise
+        // into frame 31 is louder than 包: 包's nucleus is the loudest frame before that rise.
+        const FeatureTrack louder_after = level_track(60, [](std::size_t t) {
+            if (t < 18) return -20.0f;
+            if (t <= 26) return -30.0f + 2.5f * static_cast<float>(t > 22 ? t - 22 : 22 - t);
+            return -20.0f + 2.0f * static_cast<float>(t - 26);
+        });
+        CHECK(syllable_valley_start(louder_after, 0, 1, 31) == 22);
+        // 有一: 有's weak y (-26 dB) dips to -34 dB before its ou (-20 dB), which runs flat into 一.
+        // That dip is 有's own onset, before its nucleus: 一 stays where the path put it.
+        const FeatureTrack own_onset = level_track(60, [](std::size_t t) {
+            if (t < 5) return -26.0f;
+            if (t < 8) return t == 6 ? -34.0f : -30.0f;
+            return -20.0f;
+        });
+        CHECK(syllable_valley_start(own_onset, 0, 1, 25) == 25);
+    }
+
     TEST_CASE("after a nasal's flat floor a syllable with no initial starts where the level begins to rise") {
         // 公園: ng holds 12 dB under the vowels for frames 18-23 of the track, wavering by 0.3 dB, then
         // 園 rises. The path put 園 at frame 26 (chain frame 24, offset 2); the floor's lowest frame
