@@ -400,12 +400,28 @@ void ChannelMixer::mix_stereo(const float* interleaved, std::size_t frames, floa
 
 void AudioSource::add_note(std::string note) { notes_.push_back(std::move(note)); }
 
-void AudioSource::note_lost_audio(std::size_t at_frame, std::size_t frames) {
-    const double rate_hz = sample_rate_hz();
+namespace {
+
+// Adds frames [at_frame, at_frame + frames) of a source at `rate_hz` to `stretches`, joined to the
+// last stretch when they follow it.
+template <class Stretch>
+void add_stretch(std::vector<Stretch>& stretches, double rate_hz, std::size_t at_frame, std::size_t frames) {
     const double start_s = static_cast<double>(at_frame) / rate_hz;
     const double end_s = static_cast<double>(at_frame + frames) / rate_hz;
-    if (!lost_audio_.empty() && start_s <= lost_audio_.back().end_s + 1e-9) lost_audio_.back().end_s = end_s;
-    else lost_audio_.push_back({start_s, end_s});
+    if (!stretches.empty() && start_s <= stretches.back().end_s + 1e-9)
+        stretches.back().end_s = end_s;
+    else
+        stretches.push_back({start_s, end_s});
+}
+
+}  // namespace
+
+void AudioSource::note_lost_audio(std::size_t at_frame, std::size_t frames) {
+    add_stretch(lost_audio_, sample_rate_hz(), at_frame, frames);
+}
+
+void AudioSource::note_codec_pause(std::size_t at_frame, std::size_t frames) {
+    add_stretch(codec_pauses_, sample_rate_hz(), at_frame, frames);
 }
 
 double lost_seconds(const std::vector<LostAudio>& lost) {

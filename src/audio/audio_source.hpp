@@ -48,6 +48,16 @@ struct LostAudio {
     double end_s = 0.0;
 };
 
+// A stretch of a recording its codec marks as a pause with no sound to decode, read as silence in
+// its place, in seconds from the start: the frames an AMR phone sends while its voice detector
+// hears no speech (discontinuous transmission: a comfort-noise description, or no data), which
+// this FFmpeg does not decode. The file is whole there: its zeros are the pause the phone heard,
+// not sound lost (a dropout, dropout_finder.hpp).
+struct CodecPause {
+    double start_s = 0.0;
+    double end_s = 0.0;
+};
+
 // The seconds of sound the stretches hold together.
 double lost_seconds(const std::vector<LostAudio>& lost);
 
@@ -74,6 +84,8 @@ public:
     virtual const std::string& name() const = 0;
     // The stretches read as silence because the file is damaged there, in order, as far as read.
     const std::vector<LostAudio>& lost_audio() const { return lost_audio_; }
+    // The stretches read as silence where the codec marks a pause, in order, as far as read.
+    const std::vector<CodecPause>& codec_pauses() const { return codec_pauses_; }
     // What the user should know of how the file was read, though no sound was lost ("its header
     // states 9.7 s of sound, the file holds 19.5 s ...; read to the end of the file"), without the
     // file's name: the aligner gives each to the Timeline's warnings, naming the file.
@@ -84,9 +96,12 @@ protected:
     // Notes `frames` frames of silence read in place of damaged data from frame `at_frame` on,
     // joined to the stretch before when they follow it.
     void note_lost_audio(std::size_t at_frame, std::size_t frames);
+    // The same for `frames` frames of silence read in place of a codec's pause frames.
+    void note_codec_pause(std::size_t at_frame, std::size_t frames);
 
 private:
     std::vector<LostAudio> lost_audio_;
+    std::vector<CodecPause> codec_pauses_;
     std::vector<std::string> notes_;
     // read()'s frames as the source holds them, before non-numbers are made 0.
     virtual std::size_t read_frames(float* mono, std::size_t max_frames) = 0;

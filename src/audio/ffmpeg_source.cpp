@@ -390,8 +390,13 @@ private:
             if (received == 0) {
                 skip_to_timestamp(*frame_);
                 mix_down(*frame_);
+                const std::size_t frame_samples = pending_.size();
                 av_frame_unref(frame_.get());
                 fill_skipped_time();
+                // AMR-WB's decoder writes an empty pause frame's silence itself (a frame a packet;
+                // the pause frames it refuses, and AMR-NB's, are refuse_packet's): a pause too.
+                if (last_packet_is_pause_ && frame_samples > 0)
+                    note_codec_pause(frames_given_ + pending_.size() - frame_samples, frame_samples);
                 if (!pending_.empty()) return true;
                 continue;
             }
@@ -466,6 +471,7 @@ private:
         // What this FFmpeg does not decode (AMR's comfort noise, "not yet implemented") and AMR's
         // empty pause frames (which it calls invalid) are no damage: the file is whole.
         if (error != AVERROR_PATCHWELCOME && !last_packet_is_pause_ && frames > 0) skipped_is_damage_ = true;
+        if (frames > 0) skipped_is_pause_ = skipped_is_pause_ && last_packet_is_pause_;
     }
 
     // An AMR frame a phone sends in a pause instead of speech (discontinuous transmission): a
@@ -597,10 +603,13 @@ private:
         if (skipped_frames_ == 0) return;
         // The silence goes where read_frames() stands: after every frame given out so far.
         if (skipped_is_damage_) note_lost_audio(frames_given_, skipped_frames_);
+        else if (skipped_is_pause_)
+            note_codec_pause(frames_given_, skipped_frames_);
         pending_.insert(pending_.begin() + static_cast<std::ptrdiff_t>(pending_position_), skipped_frames_, 0.0f);
         frames_decoded_ += skipped_frames_;
         skipped_frames_ = 0;
         skipped_is_damage_ = false;
+        skipped_is_pause_ = true;
     }
 
     // Converts a decoded frame to interleaved float and averages its channels, as the libsndfile
@@ -671,6 +680,7 @@ private:
     std::size_t skipped_frames_ = 0;  // the time of refused packets not yet put in pending_
     bool skipped_is_damage_ = false;  // some of skipped_frames_ is lost to damage, not a codec's gap
     bool last_packet_is_pause_ = false;  // the last packet sent is an AMR pause frame
+    bool skipped_is_pause_ = true;       // every packet refused since the last frame is an AMR pause frame
     std::size_t frames_given_ = 0;    // frames read_frames() has returned
     int last_refusal_ = 0;            // the decoder's error for the last packet it refused
     std::size_t last_packet_frames_ = 0;  // the length of the last packet sent

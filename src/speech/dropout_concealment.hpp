@@ -14,9 +14,10 @@ namespace talkface::detail {
 // A dropout takes the frames whose analysis window holds kTakenShare of its zeros.
 constexpr double kTakenShare = 0.25;
 
-// Conceals those of track.dropouts that lie inside the speech measure_loudness finds in `track`:
-// after its start and before its end, in no pause but one that their own frames make; the others
-// are left as they are. The caller measures the loudness again.
+// Conceals those of track.dropouts that cut the voice inside the speech measure_loudness finds in
+// `track`: after its start and before its end, with speech either side, or on one side a
+// syllable's (dropout_concealment.cpp); the others are left as they are. The caller measures the
+// loudness again.
 void conceal_dropouts(FeatureTrack& track);
 
 }  // namespace talkface::detail

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "audio/audio_source.hpp"
+
 namespace talkface::detail {
 
 void DropoutFinder::push(const float* samples, std::size_t count) {
@@ -62,6 +64,19 @@ std::vector<Dropout> DropoutFinder::finish() {
     for (const auto& candidate : waiting_) judge(candidate);
     waiting_.clear();
     return std::move(found_);
+}
+
+std::vector<Dropout> outside_codec_pauses(std::vector<Dropout> dropouts,
+                                          const std::vector<CodecPause>& pauses, int rate_hz) {
+    const auto meets_pause = [&](const Dropout& dropout) {
+        const double first_s = static_cast<double>(dropout.first_sample) / rate_hz;
+        const double end_s = static_cast<double>(dropout.end_sample) / rate_hz;
+        return std::any_of(pauses.begin(), pauses.end(), [&](const CodecPause& pause) {
+            return first_s < pause.end_s && pause.start_s < end_s;
+        });
+    };
+    dropouts.erase(std::remove_if(dropouts.begin(), dropouts.end(), meets_pause), dropouts.end());
+    return dropouts;
 }
 
 }  // namespace talkface::detail

@@ -35,6 +35,16 @@ constexpr std::size_t kSideSamples = 320;
 constexpr float kCutShare = 0.05f;
 constexpr float kCleanCutShare = 0.1f;
 
+struct CodecPause;
+
+// `dropouts` of a stream at `rate_hz` but for those that meet a stretch of `pauses`: the zeros read
+// in place of a codec's pause frames are a pause its encoder heard, not lost sound, and an encoder
+// hears one inside a stop's closure too (espeak-ng's closure before 究 jiu1 in AMR-NB at 4.75 kb/s,
+// one 20 ms frame of them, cut on both sides by the codec's ringing: drawn over, the closure
+// filled and the syllable came 40 ms late; bench/README.md, sweep sessions 18-19).
+std::vector<Dropout> outside_codec_pauses(std::vector<Dropout> dropouts,
+                                          const std::vector<CodecPause>& pauses, int rate_hz);
+
 // Finds the dropouts of a 16 kHz stream as it is pushed, holding only the last kSideSamples of it.
 class DropoutFinder {
 public:

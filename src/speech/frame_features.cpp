@@ -349,7 +349,7 @@ FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)
             on_progress(std::min(1.0, static_cast<double>(frames_read) / static_cast<double>(source.frame_count())));
     }
     analyzer.finish();
-    track.dropouts = dropouts.finish();
+    track.dropouts = outside_codec_pauses(dropouts.finish(), source.codec_pauses(), kAnalysisRateHz);
     track.peak_amplitude = peak;
     track.duration_s = static_cast<double>(frames_read) / source.sample_rate_hz();
     if (frames_read == 0) throw InvalidArgument(source.name(), "empty audio: no frames");

@@ -591,6 +591,10 @@ TEST_SUITE("audio") {
                     CHECK(last_energy > 0.0);
                     // A phone's pause is no damage: nothing is reported lost.
                     CHECK(source->lost_audio().empty());
+                    // It is noted as the codec's pause: its zeros are no dropout (dropout_finder.hpp).
+                    REQUIRE(source->codec_pauses().size() == 1);
+                    CHECK(source->codec_pauses()[0].start_s == doctest::Approx(1.0));
+                    CHECK(source->codec_pauses()[0].end_s == doctest::Approx(2.0));
                 } catch (const Error& error) {
                     FAIL(std::string(error.what()));
                 }
