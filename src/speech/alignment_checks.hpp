@@ -79,6 +79,10 @@ struct SentenceMetrics {
     double own_fit_gap = std::numeric_limits<double>::quiet_NaN();
     // syllable_length_spread, in the same files (check_syllable_lengths).
     double length_spread = std::numeric_limits<double>::quiet_NaN();
+    // The mean over its syllables of their tone gaps (tone_contour.hpp) on its path: a room's
+    // passages of three sentences or more, where it is the witness that lets a right text through
+    // check_text_fit (kMaxRoomToneGap). NaN: not measured, or too few syllables judged.
+    double tone_gap = std::numeric_limits<double>::quiet_NaN();
 };
 
 // One stretch of an aligned sentence, in frames of the whole recording.
@@ -132,7 +136,8 @@ constexpr double kMaxHeldOutFitGap = 0.35;
 bool fits_as_well_as_free_sounds(const std::vector<SentenceMetrics>& metrics, const std::vector<std::size_t>& poor);
 
 // How much better each sentence's speech fits a free sequence of sounds than its text's (per frame,
-// from the aligner), against what a right text gives.
+// from the aligner), against what a right text gives. A room's sentence whose pitch says its text's
+// tones (SentenceMetrics::tone_gap under kMaxRoomToneGap) is not refused on the gap alone.
 // \throws talkface::AlignmentError naming the first sentence whose text does not fit its speech.
 void check_text_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                     const Timeline& transcript);

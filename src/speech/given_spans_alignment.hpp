@@ -6,21 +6,21 @@
 #ifndef TALKFACE_SPEECH_GIVEN_SPANS_ALIGNMENT_HPP
 #define TALKFACE_SPEECH_GIVEN_SPANS_ALIGNMENT_HPP
 
+#include <string>
 #include <vector>
 
-#include "audio/audio_source.hpp"
 #include "speech/sentence_cutter.hpp"
 #include "talkface/progress.hpp"
 #include "talkface/timeline.hpp"
 
 namespace talkface::detail {
 
-// The transcript aligned with the recording `source` reads from its start, each sentence's
+// The transcript aligned with the recording at `audio_path`, each sentence's
 // syllables inside its span of `sentence_spans_s` (one per sentence; given_sentence_cut says how
 // they are read), as `options` (checked as SpeechAligner's constructor does) say otherwise, their
 // sentence_cut aside.
 // \throws as SpeechAligner::align_file, and talkface::InvalidArgument as given_sentence_cut.
-Timeline align_in_given_spans(AudioSource& source, const Timeline& transcript,
+Timeline align_in_given_spans(const std::string& audio_path, const Timeline& transcript,
                               const std::vector<GivenSpan>& sentence_spans_s, const AlignOptions& options,
                               const ProgressCallback& progress = {});
 

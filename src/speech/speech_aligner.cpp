@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -43,12 +45,22 @@ using namespace detail;
 constexpr int kReestimationRounds = 3;
 // Files of at most this many sentences get the leave-one-out check (held_out_fit_gaps).
 constexpr std::size_t kMaxHeldOutCheckSentences = 2;
+// A room's sentence's tone gap (SentenceMetrics::tone_gap) is measured in files of at least this
+// many spoken sentences, the tones learned mostly from the others' syllables (in a file of one or
+// two a wrong text's own syllables teach them), and from this many of its syllables judged.
+constexpr std::size_t kMinToneWitnessSentences = 3;
+constexpr std::size_t kMinToneWitnessSyllables = 3;
 // How much of a long sentence the first pass, on hand-set models, aligns: two minutes.
 constexpr std::size_t kBootstrapFrames = 12000;
 // Shares of the job's progress: reading and features, cutting, the alignment passes.
 constexpr double kReadingShare = 0.45;
 constexpr double kCuttingShare = 0.05;
 constexpr double kProgressStep = 0.002;
+
+// Thrown where check_text_fit refuses a sentence of a room's file of kMinToneWitnessSentences or
+// more and the pitch was not measured: with it the sentence's tones may witness for its text
+// (align_source reads the recording again). Not an AlignmentError: no refusal's handler takes it.
+struct ToneWitnessWanted {};
 
 class ProgressReporter {
 public:
@@ -330,6 +342,26 @@ std::vector<std::vector<double>> tone_gaps_of_chains(const std::vector<SentenceC
     return gaps;
 }
 
+// Each sentence's SentenceMetrics::tone_gap on the chains' `paths`: the mean of its syllables' tone
+// gaps, where at least kMinToneWitnessSyllables were judged.
+void set_tone_gaps(const std::vector<SentenceChain>& chains,
+                   const std::vector<std::vector<StateSegment>>& paths, const FeatureTrack& track,
+                   std::vector<SentenceMetrics>& metrics) {
+    const std::vector<std::vector<double>> gaps = tone_gaps_of_chains(chains, paths, track);
+    std::vector<double> sum(metrics.size(), 0.0);
+    std::vector<std::size_t> judged(metrics.size(), 0);
+    for (std::size_t w = 0; w < chains.size(); ++w)
+        for (std::size_t i = 0; i < chains[w].syllables.size(); ++i) {
+            if (!std::isfinite(gaps[w][i])) continue;
+            const std::size_t k = chains[w].syllables[i]->sentence;
+            sum[k] += gaps[w][i];
+            ++judged[k];
+        }
+    for (std::size_t k = 0; k < metrics.size(); ++k)
+        if (judged[k] >= kMinToneWitnessSyllables)
+            metrics[k].tone_gap = sum[k] / static_cast<double>(judged[k]);
+}
+
 // What lenient alignment measures of a chain on its plain path (the chain aligned without
 // leniency) before its lenient pass: the chain's scores, each syllable's fit and frames on that
 // path, and its held-out gap (lenient_chain.hpp); empty where the chain has no plain path.
@@ -382,6 +414,10 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
     EmissionScores scores;
     ViterbiWorkspace workspace;
     EntryMaxMarginals marginals, room_marginals;
+    // The checks' paths of a room's chains, for the tones' witness.
+    const bool is_tone_witnessed = aligned.room_result && is_checked &&
+                                   spoken_sentences >= kMinToneWitnessSentences && !track.pitch.empty();
+    std::vector<std::vector<StateSegment>> checked_paths(is_tone_witnessed ? chains.size() : 0);
     // Lenient alignment: every chain's plain path first, for the tones of the whole recording, and
     // with it what the lenient pass judges its skips by; each chain's scores are kept for that pass,
     // not measured twice.
@@ -459,6 +495,7 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
         learned.model.score(observations.data(), chains[w].searched.length(), scores);
         const auto path = align_chain(chains[w], scores, workspace, scores.frame_count, transcript, &marginals);
         aligned.has_long_unmarked_pause = aligned.has_long_unmarked_pause || has_long_unmarked_pause(chains[w], path);
+        if (is_tone_witnessed) checked_paths[w] = path;
         // The last round's path, and the searches again with the sounds weighing less, with and
         // without the landmarks' bonus: where they start a syllable elsewhere, the sounds did not
         // hold it there.
@@ -487,6 +524,7 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
             evidence[chains[w].syllable_indices[local]].sureness = sureness[local];
         report_pass(progress, kReestimationRounds, w, chains.size());
     }
+    if (is_tone_witnessed) set_tone_gaps(chains, checked_paths, track, metrics);
     set_confidences(evidence, is_lenient, result);
     if (aligned.room_result) set_confidences(room_evidence, false, *aligned.room_result);
     return aligned;
@@ -557,7 +595,16 @@ AlignedTimelines align_cut(const FeatureTrack& track, const LoudnessProfile& lou
     Timeline& result = aligned.result;
     if (is_checked) {
         if (has_blocks) check_sentence_lengths(spans, track, loudness, transcript);
-        check_text_fit(metrics, spans, transcript);
+        try {
+            check_text_fit(metrics, spans, transcript);
+        } catch (const AlignmentError&) {
+            const std::vector<bool> is_spoken = spoken_sentences_of(transcript);
+            if (aligned.room_result && track.pitch.empty() &&
+                static_cast<std::size_t>(std::count(is_spoken.begin(), is_spoken.end(), true)) >=
+                    kMinToneWitnessSentences)
+                throw ToneWitnessWanted();
+            throw;
+        }
         check_held_out_fit(metrics, spans, transcript, result.warnings);
         check_unspoken_tail(metrics, spans, transcript);
         check_own_fit(metrics, spans, transcript);
@@ -683,30 +730,46 @@ Timeline align_checked(const FeatureTrack& track, const Timeline& transcript, co
 // own, and the loss is said after it.
 constexpr double kLostAudioNamedFirstS = 0.2;
 
-// Aligns the whole of `source`. A file its reader found damaged (sound it could not decode, read as
-// silence in its place: LostAudio) gets a warning naming where, and a refusal says first that the
-// sound there is lost, for the text is not what is wrong. What else the reader says of how it read
-// the file (AudioSource::notes: a stale WAV header) is a warning too, and closes a refusal. A warning
-// begins with source.name() (only a file loses sound); a refusal does not, its callers name the
-// audio as they name it.
-Timeline align_source(AudioSource& source, const Timeline& transcript, const AlignOptions& options,
-                      const std::vector<GivenSpan>& given_spans, const ProgressCallback& callback) {
+// Aligns the whole of the recording `open` gives. A file its reader found damaged (sound it could
+// not decode, read as silence in its place: LostAudio) gets a warning naming where, and a refusal
+// says first that the sound there is lost, for the text is not what is wrong. What else the reader
+// says of how it read the file (AudioSource::notes: a stale WAV header) is a warning too, and
+// closes a refusal. A warning begins with the source's name() (only a file loses sound); a refusal
+// does not, its callers name the audio as they name it.
+//
+// The voice's pitch is measured as the audio is read only for lenient alignment; where a room's
+// sentence is to be refused and its pitch may witness for its text (ToneWitnessWanted), the
+// recording is read again, from `open`, with the pitch, and aligned again: that costs a second
+// reading only there (the pitch costs 9% more instructions on every recording, bench/README.md
+// Session 19). The second reading reports no progress: the bar stays where the alignment left it.
+Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open, const Timeline& transcript,
+                      const AlignOptions& options, const std::vector<GivenSpan>& given_spans,
+                      const ProgressCallback& callback) {
     validate_transcript(transcript);
     ProgressReporter progress(callback);
     progress.report(0.0, "reading");
-    FeatureTrack track =
-        analyze_audio(source, [&](double fraction) { progress.report(kReadingShare * fraction, "reading"); }, options.lenient);
+    std::unique_ptr<AudioSource> source = open();
+    FeatureTrack track = analyze_audio(
+        *source, [&](double fraction) { progress.report(kReadingShare * fraction, "reading"); },
+        options.lenient);
     conceal_dropouts(track);
-    const std::string lost = describe_lost_audio(source.lost_audio());
+    const std::string lost = describe_lost_audio(source->lost_audio());
     std::string notes;
-    for (const std::string& note : source.notes()) notes += " (the file: " + note + ")";
+    for (const std::string& note : source->notes()) notes += " (the file: " + note + ")";
     Timeline result;
     try {
-        result = align_checked(track, transcript, options, given_spans, progress);
+        try {
+            result = align_checked(track, transcript, options, given_spans, progress);
+        } catch (const ToneWitnessWanted&) {
+            source = open();
+            track = analyze_audio(*source, {}, true);
+            conceal_dropouts(track);
+            result = align_checked(track, transcript, options, given_spans, progress);
+        }
     } catch (const AlignmentError& error) {
         if (lost.empty() && notes.empty()) throw;
         if (lost.empty()) throw AlignmentError(error.what() + notes);
-        if (lost_seconds(source.lost_audio()) < kLostAudioNamedFirstS)
+        if (lost_seconds(source->lost_audio()) < kLostAudioNamedFirstS)
             throw AlignmentError(std::string(error.what()) + " (the file is also damaged: " + lost + ")" + notes);
         throw AlignmentError("the file is damaged: " + lost +
                              " (read as silence: the speech there is lost), and the rest cannot be aligned "
@@ -714,9 +777,9 @@ Timeline align_source(AudioSource& source, const Timeline& transcript, const Ali
                              "the rest. The aligner found: " + error.what() + notes);
     }
     if (!lost.empty())
-        result.warnings.push_back(source.name() + ": the file is damaged: " + lost +
+        result.warnings.push_back(source->name() + ": the file is damaged: " + lost +
                                   "; read as silence there, the syllables after it keep their times");
-    for (const std::string& note : source.notes()) result.warnings.push_back(source.name() + ": " + note);
+    for (const std::string& note : source->notes()) result.warnings.push_back(source->name() + ": " + note);
     return result;
 }
 
@@ -751,16 +814,16 @@ SpeechAligner& SpeechAligner::operator=(SpeechAligner&&) noexcept = default;
 const AlignOptions& SpeechAligner::options() const { return impl_->options; }
 
 Timeline SpeechAligner::align(const AudioView& audio, const Timeline& transcript, const ProgressCallback& progress) const {
-    const auto source = open_audio_view(audio);
-    return align_source(*source, transcript, impl_->options, {}, progress);
+    return align_source([&] { return open_audio_view(audio); }, transcript, impl_->options, {}, progress);
 }
 
 Timeline SpeechAligner::align_file(const std::string& audio_path, const Timeline& transcript,
                                    const ProgressCallback& progress) const {
     validate_transcript(transcript);
-    const auto source = open_audio_file(audio_path);
+    std::unique_ptr<AudioSource> first = open_audio_file(audio_path);
     try {
-        return align_source(*source, transcript, impl_->options, {}, progress);
+        return align_source([&] { return first ? std::move(first) : open_audio_file(audio_path); },
+                            transcript, impl_->options, {}, progress);
     } catch (const AlignmentError& error) {
         // Name the audio: the times in the message are in this file.
         throw AlignmentError(audio_path + ": " + error.what());
@@ -772,14 +835,17 @@ Timeline SpeechAligner::align_file(const std::string& audio_path, const Timeline
 
 namespace talkface::detail {
 
-Timeline align_in_given_spans(AudioSource& source, const Timeline& transcript,
+Timeline align_in_given_spans(const std::string& audio_path, const Timeline& transcript,
                               const std::vector<GivenSpan>& sentence_spans_s, const AlignOptions& options,
                               const ProgressCallback& progress) {
     validate_transcript(transcript);
+    std::unique_ptr<AudioSource> first = open_audio_file(audio_path);
+    const std::string name = first->name();
     try {
-        return align_source(source, transcript, options, sentence_spans_s, progress);
+        return align_source([&] { return first ? std::move(first) : open_audio_file(audio_path); },
+                            transcript, options, sentence_spans_s, progress);
     } catch (const AlignmentError& error) {
-        throw AlignmentError(source.name() + ": " + error.what());
+        throw AlignmentError(name + ": " + error.what());
     }
 }
 

@@ -112,8 +112,8 @@ Timeline time_transcript(const std::string& timing_path, const std::string& audi
         if (options.lenient) refuse_lenient(timing_path, "vtt with a timestamp per syllable");
         return detail::time_matched_units(transcript, cues, ranges, duration_s, detail::UnitKind::cues);
     }
-    Timeline timeline =
-        detail::align_in_given_spans(*audio, transcript, sentence_spans(transcript, cues, ranges), checked.options(), progress);
+    Timeline timeline = detail::align_in_given_spans(
+        audio_path, transcript, sentence_spans(transcript, cues, ranges), checked.options(), progress);
     for (std::size_t c = 0; c < cues.size(); ++c) {
         if (ranges[c].first < ranges[c].second) keep_inside(timeline, ranges[c].first, ranges[c].second, cues[c]);
     }
