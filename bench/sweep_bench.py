@@ -10,7 +10,8 @@ and espeak-ng's clean tuning-001) with sox and ffmpeg, as a phone, a recorder, a
 copy leaves them: narrowband telephone, A-law, GSM, AMR, MP3, Opus, AAC, video sound tracks,
 compression, clipping, dropouts, a notification beep, DC offsets, long silences, more channels,
 sample formats, WAV chunks, RF64; and files broken by a scratch or cut to their header. OUT/cases.tsv
-lists every case: its file, its transcript, its truth and how far the case moved the truth.
+lists every case: its file, its transcript, its truth and how far the case moved the truth
+(and by what it scaled its times).
 
 `run` aligns every case with `TALKFACE align FILE TRANSCRIPT --json` and prints, per case, the % of
 syllable onsets within 50 and 100 ms of the truth, or the error (first line) for a refused case; an
@@ -104,6 +105,17 @@ def with_wav_sizes(source, target, riff_size=None, data_size=None):
     open(target, "wb").write(bytes(data))
 
 
+def with_wav_rate(source, target, factor):
+    """A copy of a 16-bit WAV whose header states `factor` times its sample rate (and byte rate)."""
+    data = bytearray(open(source, "rb").read())
+    assert data[12:16] == b"fmt "
+    rate = round(struct.unpack("<I", data[24:28])[0] * factor)
+    block = struct.unpack("<H", data[32:34])[0]
+    data[24:28] = struct.pack("<I", rate)
+    data[28:32] = struct.pack("<I", rate * block)
+    open(target, "wb").write(bytes(data))
+
+
 def with_xing_frames(source, target, share):
     """A VBR MP3 whose Xing/Info header states `share` of its frames: a header written before the
     encoder finished, or two recordings joined with `cat` (the first one's header stays)."""
@@ -131,8 +143,8 @@ def make_cases(out, label, stem):
     def path(name):
         return os.path.join(folder, name)
 
-    def case(name, file, shift_s=0.0):
-        rows.append((f"{label}/{name}", file, txt, stem + ".json", shift_s))
+    def case(name, file, shift_s=0.0, scale=1.0):
+        rows.append((f"{label}/{name}", file, txt, stem + ".json", shift_s, scale))
 
     ref = path("ref.wav")
     sox(wav, "-b", "16", ref, "rate", "-v", "16k", "remix", "-")
@@ -165,6 +177,14 @@ def make_cases(out, label, stem):
     case("clipped (+12 dB)", path("clipped.wav"))
     sox(ref, path("clipped24.wav"), "gain", "24")
     case("clipped (+24 dB)", path("clipped24.wav"))
+    # Clipped hard: a recorder's gain far too high, the voice a square wave but for its quiet ends.
+    sox(ref, path("clipped40.wav"), "gain", "40")
+    case("clipped hard (+40 dB)", path("clipped40.wav"))
+    # A rate mismatch: 44.1 kHz sound stored as 48 kHz (a capture card, an editor's wrong project
+    # rate) plays 8.8% fast and high; here the header's rate is raised by 48/44.1, and every time of
+    # the truth shrinks by 44.1/48.
+    with_wav_rate(ref, path("fast.wav"), 48000 / 44100)
+    case("rate in the header 48/44.1 too high (plays fast)", path("fast.wav"), 0.0, 44100 / 48000)
     # Dropouts: a call's lost packets, 60 ms of nothing once a second. The volume is judged every 16
     # samples (1 ms): judged per block as ffmpeg hands them on (128 ms), the case held 128 ms of
     # zeros 11 times in its 19.5 s, not 60 ms every second (sessions 13-16).
@@ -269,6 +289,13 @@ def make_cases(out, label, stem):
         case(name, path(name))
         scratched(path(name), path("scratched_" + name))
         case("scratched " + name, path("scratched_" + name))
+    # A video whose sound track starts 0.5 s after its picture (a camera or screen recorder that
+    # starts the sound late, an editor's offset): players play silence until then, so the times
+    # a user lays over the video are the picture's.
+    for name, codecs in [("offset_clip.mp4", ["-c:v", "libx264", "-crf", "40", "-c:a", "aac", "-b:a", "32k"]),
+                         ("offset_clip.mkv", ["-c:v", "libvpx", "-b:v", "8k", "-c:a", "libopus", "-b:a", "16k"])]:
+        ffmpeg(*picture, "-itsoffset", "0.5", "-i", ref, "-map", "0:v", "-map", "1:a", *codecs, path(name))
+        case(name.replace("offset_", "") + ", its sound starting 0.5 s after its picture", path(name), 0.5)
     # The same MP4 (+faststart: its index, the moov box, first) scratched inside its index.
     scratched(path("clip.mp4"), path("scratched_index_clip.mp4"), share=1 / 100)
     case("scratched clip.mp4 in its index (faststart)", path("scratched_index_clip.mp4"))
@@ -334,15 +361,16 @@ def make(args):
     print(f"{len(rows)} cases in {args.out}/cases.tsv")
 
 
-def score(result, truth, shift_s):
-    """% of onsets within 50 and 100 ms; an onset the case cut off (a recording started late) is
-    held to the file's start, where an aligner can at best put it."""
+def score(result, truth, shift_s, scale):
+    """% of onsets within 50 and 100 ms of the truth's times times `scale` plus `shift_s`; an onset
+    the case cut off (a recording started late) is held to the file's start, where an aligner can
+    at best put it."""
     errors = []
     syllables = truth["syllables"]
     if len(result["syllables"]) != len(syllables):
         return None
     for got, want in zip(result["syllables"], syllables):
-        errors.append(abs(got["start"] - max(want["start"] + shift_s, 0.0)))
+        errors.append(abs(got["start"] - max(want["start"] * scale + shift_s, 0.0)))
     within = lambda limit: 100.0 * sum(e <= limit for e in errors) / len(errors)
     return within(0.05), within(0.1)
 
@@ -350,13 +378,13 @@ def score(result, truth, shift_s):
 def run_cases(args):
     rows = [line.rstrip("\n").split("\t") for line in open(os.path.join(args.out, "cases.tsv"))]
     print(f"{'case':52} {'50 ms':>6} {'100 ms':>6}  exit / message")
-    for name, file, txt, truth_path, shift in rows:
+    for name, file, txt, truth_path, shift, *scale in rows:
         if args.case and args.case not in name:
             continue
         done = subprocess.run([args.talkface, "align", file, txt, "--json"], capture_output=True, text=True)
         if done.returncode == 0:
             result = json.loads(done.stdout)
-            scored = score(result, json.load(open(truth_path)), float(shift))
+            scored = score(result, json.load(open(truth_path)), float(shift), float(scale[0]) if scale else 1.0)
             # What the reader told the user of the file (damage, a stale header), without its path.
             said = "".join(f"  warns: {w.replace(file + ': ', '', 1)}" for w in result["warnings"]
                            if w.startswith(file + ": "))

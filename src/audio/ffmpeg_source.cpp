@@ -13,6 +13,7 @@ extern "C" {
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <vector>
 
 #include "audio/ffmpeg_messages.hpp"
@@ -211,6 +212,7 @@ public:
             if (last_refusal_ != 0) throw decode_error(last_refusal_);
             throw InvalidArgument(path_, "empty audio: the sound track decodes to no samples");
         }
+        keep_picture_lead();
     }
 
     ~FfmpegSource() override { av_channel_layout_uninit(&resampler_layout_); }
@@ -581,6 +583,39 @@ private:
             start = av_rescale_q(stream_->start_time, stream_->time_base, AVRational{1, sample_rate_hz_});
         }
         keep_gap(at - (start + static_cast<std::int64_t>(frames_decoded_ + skipped_frames_)));
+    }
+
+    // A video whose sound track starts after its picture (a camera or a screen recorder that starts
+    // its sound late, an editor's offset): players play silence until the sound starts, and the
+    // times a user lays over the video, or a page plays with it (--audio-embed original), are the
+    // picture's; counted from the sound's own start, every syllable came early by the offset (0.5 s
+    // in the sweep's case). The sound's start as the container states it (to which keep_lost_start
+    // holds a first frame after damage) is placed against the earliest start of a picture stream (a
+    // cover picture in an MP3 or an M4A is none), the time before it read as silence, and the user
+    // told.
+    void keep_picture_lead() {
+        if (stream_->start_time == AV_NOPTS_VALUE) return;
+        std::int64_t picture_start = std::numeric_limits<std::int64_t>::max();
+        for (unsigned i = 0; i < format_->nb_streams; ++i) {
+            const AVStream* picture = format_->streams[i];
+            if (picture->codecpar->codec_type != AVMEDIA_TYPE_VIDEO ||
+                (picture->disposition & AV_DISPOSITION_ATTACHED_PIC) != 0 ||
+                picture->start_time == AV_NOPTS_VALUE)
+                continue;
+            picture_start = std::min(picture_start, av_rescale_q(picture->start_time, picture->time_base,
+                                                                 AVRational{1, sample_rate_hz_}));
+        }
+        if (picture_start == std::numeric_limits<std::int64_t>::max()) return;
+        const std::int64_t lead =
+            av_rescale_q(stream_->start_time, stream_->time_base, AVRational{1, sample_rate_hz_}) -
+            picture_start;
+        if (static_cast<double>(lead) <= kTimestampSlackS * sample_rate_hz_) return;
+        // Nothing is given out yet: the first frame (and any silence before it) is all of pending_.
+        pending_.insert(pending_.begin(), static_cast<std::size_t>(lead), 0.0f);
+        frames_decoded_ += static_cast<std::size_t>(lead);
+        time_zero_frames_ -= lead;
+        add_note("its sound track starts " + seconds_text(static_cast<double>(lead) / sample_rate_hz_) +
+                 " after its picture; read as silence until then, so that the times are the video's");
     }
 
     // `gap`: how much later than the samples before it a frame's timestamp places it.

@@ -6,6 +6,7 @@
 // Each reads to its real end in step with the WAV, and each phone call aligns as the WAV does.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -150,6 +151,41 @@ TEST_SUITE("audio") {
         for (std::size_t i = 0; i < timeline.syllables.size(); ++i) {
             CAPTURE(i);
             CHECK(std::fabs(timeline.syllables[i].start_s - reference.syllables[i].start_s) <= 0.0101);
+        }
+    }
+
+    TEST_CASE("a video whose sound starts 0.5 s after its picture is read with the picture's time") {
+        // A camera or screen recorder that starts its sound late: players play silence until it
+        // starts. On 2d28134 the sound was read from its own start, every syllable 0.44-0.49 s early
+        // against the video (the MP4's first AAC frame is the encoder's delay, 64 ms).
+        const Timeline transcript = load_transcript(speech_clip("one_sentence.txt"));
+        const SpeechAligner aligner;
+        const Timeline reference = aligner.align_file(speech_clip("one_sentence.wav"), transcript);
+        for (const std::string& file : {std::string("late_sound.mp4"), std::string("late_sound.mkv")}) {
+            CAPTURE(file);
+            const std::string codecs =
+                file == "late_sound.mp4" ? "-c:v libx264 -c:a aac -b:a 64k" : "-c:v libvpx -c:a libopus";
+            const std::string path =
+                test::made_by_command(file,
+                                      "ffmpeg -nostdin -loglevel error -y -f lavfi -i "
+                                      "color=c=gray:s=16x16:r=2:d=3.6 -itsoffset 0.5 -i '" +
+                                          speech_clip("one_sentence.wav") + "' -map 0:v -map 1:a " + codecs);
+            const auto source = detail::open_audio_file(path);
+            const std::vector<float> samples = test::read_all(*source);
+            const auto silent = static_cast<std::size_t>(0.4 * source->sample_rate_hz());
+            REQUIRE(samples.size() > silent);
+            CHECK(std::all_of(samples.begin(), samples.begin() + static_cast<std::ptrdiff_t>(silent),
+                              [](float sample) { return sample == 0.0f; }));
+            REQUIRE(source->notes().size() == 1);
+            CHECK_MESSAGE(source->notes()[0].find("after its picture") != std::string::npos,
+                          source->notes()[0]);
+            const Timeline timeline = aligner.align_file(path, transcript);
+            REQUIRE(timeline.syllables.size() == reference.syllables.size());
+            for (std::size_t i = 0; i < timeline.syllables.size(); ++i) {
+                CAPTURE(i);
+                CHECK(std::fabs(timeline.syllables[i].start_s - (reference.syllables[i].start_s + 0.5)) <=
+                      0.0301);
+            }
         }
     }
 }
