@@ -23,18 +23,19 @@ inline namespace v0 {
 /// in runs); less where the aligner's other searches start it elsewhere (its previous pass, and the
 /// search again with the sounds weighed less, once with the spectral landmarks and once without: a
 /// syllable the sounds hold stays put); less where the search is unsure of its start (it finds
-/// starts a frame or more away nearly as good as its own); with the fit's free-sound gap scaled to
-/// a clean recording's spread where noise scatters it wider; and weighed half as it is and half
-/// against the recording's median, most of the rest against it too where that median is under a
-/// clean recording's, so that the threshold holds in noise and in a room as in clean speech.
+/// starts a frame or more away nearly as good as its own), and less again where it finds starts
+/// 100 ms or more away nearly as good (a syllable placed a syllable off); with the fit's free-sound
+/// gap scaled to a clean recording's spread where noise scatters it wider; and weighed half as it
+/// is and half against the recording's median, most of the rest against it too where that median
+/// is under a clean recording's, so that the threshold holds in noise and in a room as in clean speech.
 /// Lenient alignment (AlignOptions::lenient) weighs the same evidence but the search's sureness,
 /// calibrated apart. It is not a probability. The threshold is set so that no recording condition
 /// of the benchmark's development speech (bench/README.md, issue 12: a person and two voices made
 /// of the same speaker's, in noise, rooms, music, hum, phone, fast speech) has more than 10% of its
-/// syllables within 100 ms under it: the person's 2.8-7.5% per condition, 5.2% pooled, catching 74%
-/// of those more than 100 ms off (204 of 276); on the held-out passages, measured after it was set,
-/// 2.5-9.9% and 72% (28 of 39); the other voices 5.5-7.8% and 67%, held out 2.5-8.4%. On synthetic
-/// speech (espeak-ng) it flags 0.3-3.1% of right syllables per condition (1.0% pooled).
+/// syllables within 100 ms under it: the person's 3.0-7.8% per condition, 5.2% pooled, catching 79%
+/// of those more than 100 ms off (217 of 276); on the held-out passages, measured after it was set,
+/// 2.0-8.9% and 82% (32 of 39); the other voices 5.3-7.5% and 73%, held out 2.2-7.6%. On synthetic
+/// speech (espeak-ng) it flags 0.4-2.9% of right syllables per condition (1.1% pooled).
 constexpr double kLowAlignmentConfidence = 0.5;
 
 /// Audio samples the caller owns: `frame_count` frames of `channel_count` interleaved float samples

@@ -658,8 +658,8 @@ TF_API tf_status tf_timeline_syllable_times(const tf_timeline *timeline, size_t 
  * so in a room or in noise), so the threshold holds per condition: on the benchmark's development
  * speech (a person and two voices made of the same speaker's) no condition (noise, rooms, music,
  * phone, fast speech) has more than 10% of its syllables within 100 ms under it (the person's
- * 2.8-7.5%, 5.2% pooled), and it catches 74% of those more than 100 ms off (held out: 2.5-9.9%,
- * 4.0% pooled, and 72%; the other voices 5.5-7.8% and 67%) (bench/README.md). `talkface align
+ * 3.0-7.8%, 5.2% pooled), and it catches 79% of those more than 100 ms off (held out: 2.0-8.9%,
+ * 4.1% pooled, and 82%; the other voices 5.3-7.5% and 73%) (bench/README.md). `talkface align
  * --plot` draws such syllables in red. */
 #define TF_LOW_ALIGNMENT_CONFIDENCE 0.5
 

@@ -124,7 +124,7 @@ void setup_align_command(CLI::App& app) {
                     "\"warnings\":[...]}, times in seconds (docs/timeline-format.md); a confidence below 0.5 "
                     "(talkface::kLowAlignmentConfidence) marks a syllable to check: its start may be more than "
                     "100 ms off (on the benchmark's human speech that flags at most 10% of right syllables in "
-                    "every condition, 5.2% pooled, and catches 74% of those more than 100 ms off)");
+                    "every condition, 5.2% pooled, and catches 79% of those more than 100 ms off)");
     align->add_option("--plot", options->plot_path,
                       "Also draw the waveform, sentences and syllables as an SVG file (syllables to check, with a "
                       "confidence below 0.5, in red)");

@@ -24,9 +24,11 @@ constexpr double kMaxPace = 2.0;
 // The search over the reversed chain (viterbi_align_with_marginals) lets each state start at most
 // this many frames from where the path starts it: twice the reach of start_sureness (15 frames),
 // so that a start moved to the edge of that reach still has room for the states after it to
-// follow. Against the whole search: align_bench's tables the same on all four corpora; of 4797
-// confidences of h-reverb, r-reverb and r-music 31 higher, 22 by under 0.01, the most by 0.14
-// (0.32 -> 0.46), none across kLowAlignmentConfidence.
+// follow; far_start_share weighs every start the band holds (a start 100-300 ms off, where a
+// syllable placed a syllable off belongs). Against the whole search: align_bench's tables the same
+// on all four corpora; of 4797 confidences of h-reverb, r-reverb and r-music 31 higher, 22 by under
+// 0.01, the most by 0.14 (0.32 -> 0.46), none across kLowAlignmentConfidence (session 18, before
+// far_start_share).
 constexpr std::size_t kMarginalBandFrames = 30;
 
 // Frames [first, end) of a search.

@@ -514,14 +514,20 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
             place_syllables(ringing, w, room_path, room_other_frames, scores, track, *aligned.room_result,
                             room_evidence);
             const std::vector<double> room_sureness = start_sureness(ringing, room_path, room_marginals);
-            for (std::size_t local = 0; local < room_sureness.size(); ++local)
+            const std::vector<double> room_far = far_start_share(ringing, room_path, room_marginals);
+            for (std::size_t local = 0; local < room_sureness.size(); ++local) {
                 room_evidence[ringing.syllable_indices[local]].sureness = room_sureness[local];
+                room_evidence[ringing.syllable_indices[local]].far_start = room_far[local];
+            }
         }
         measure_chain(chains[w], w, path, other_frames, observations, learned, spoken_sentences, track, loudness, transcript,
                       scores, workspace, result, evidence, spans, metrics, is_checked);
         const std::vector<double> sureness = start_sureness(chains[w], path, marginals);
-        for (std::size_t local = 0; local < sureness.size(); ++local)
+        const std::vector<double> far = far_start_share(chains[w], path, marginals);
+        for (std::size_t local = 0; local < sureness.size(); ++local) {
             evidence[chains[w].syllable_indices[local]].sureness = sureness[local];
+            evidence[chains[w].syllable_indices[local]].far_start = far[local];
+        }
         report_pass(progress, kReestimationRounds, w, chains.size());
     }
     if (is_tone_witnessed) set_tone_gaps(chains, checked_paths, track, metrics);

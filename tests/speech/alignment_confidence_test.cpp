@@ -77,9 +77,10 @@ std::vector<StateSegment> drifted(std::vector<StateSegment> path, std::size_t fr
 }
 
 // Each syllable's confidence on `path`, as the aligner gives it (with each syllable's start_sureness
-// where given).
+// and far_start_share where given).
 std::vector<double> confidences(const Sentence& sentence, const std::vector<StateSegment>& path,
-                                const std::vector<double>& sureness = std::vector<double>(kSyllables, 1.0)) {
+                                const std::vector<double>& sureness = std::vector<double>(kSyllables, 1.0),
+                                const std::vector<double>& far = std::vector<double>(kSyllables, 0.0)) {
     std::vector<SyllableFrames> frames(kSyllables, {sentence.scores.frame_count, 0});
     for (const StateSegment& segment : path) {
         const PhoneState& state = sentence.chain.states[segment.state];
@@ -91,7 +92,7 @@ std::vector<double> confidences(const Sentence& sentence, const std::vector<Stat
     const std::vector<double> timing = syllable_timing(sentence.chain, path, sentence.scores, frames);
     std::vector<SyllableEvidence> evidence;
     for (std::size_t i = 0; i < kSyllables; ++i)
-        evidence.push_back({true, 0, fits[i], timing[i], 0.0, sureness[i]});
+        evidence.push_back({true, 0, fits[i], timing[i], 0.0, sureness[i], far[i]});
     talkface::Timeline timeline;
     timeline.syllables.resize(kSyllables);
     set_confidences(evidence, false, timeline);
@@ -221,6 +222,50 @@ TEST_SUITE("alignment confidence") {
         // Without marginals (a chain searched in windows) every syllable counts as sure.
         const auto unmeasured = start_sureness(sentence.chain, path, EntryMaxMarginals{});
         CHECK(std::all_of(unmeasured.begin(), unmeasured.end(), [](double value) { return value == 1.0; }));
+    }
+
+    TEST_CASE(
+        "a syllable whose sounds fit a start 100 ms away nearly as well is likely placed far off, and "
+        "comes out lower, than one its sounds hold") {
+        // Syllables kDrifted - 2 to kDrifted + 2 said under a burst of noise (every class alike, no
+        // landmark): only their duration priors place them, and starts of theirs 10 frames or more
+        // from the path's are nearly as good (and of the syllable after, whose start the noise
+        // borders); further away the sounds hold each start.
+        Sentence sentence = make_sentence();
+        const std::size_t first = sentence.truth[1 + 2 * (kDrifted - 2)].first_frame;
+        const std::size_t end = sentence.truth[2 + 2 * (kDrifted + 2)].end_frame;
+        std::fill(sentence.scores.values.begin() + static_cast<std::ptrdiff_t>(first * kPhoneClassCount),
+                  sentence.scores.values.begin() + static_cast<std::ptrdiff_t>(end * kPhoneClassCount), 0.0f);
+        std::fill(sentence.scores.boundary.begin() + static_cast<std::ptrdiff_t>(first + 1),
+                  sentence.scores.boundary.begin() + static_cast<std::ptrdiff_t>(end), 0.0f);
+        ViterbiWorkspace workspace;
+        EntryMaxMarginals marginals;
+        const auto path =
+            viterbi_align_with_marginals(sentence.chain.states, sentence.scores, workspace, marginals);
+        const std::vector<double> far = far_start_share(sentence.chain, path, marginals);
+        const std::vector<double> sureness = start_sureness(sentence.chain, path, marginals);
+        REQUIRE(far.size() == kSyllables);
+        const auto near_only = confidences(sentence, path, sureness);
+        const auto measured = confidences(sentence, path, sureness, far);
+        auto log_odds_lost = [&](std::size_t i) {
+            return std::log(near_only[i] / (1.0 - near_only[i])) -
+                   std::log(measured[i] / (1.0 - measured[i]));
+        };
+        for (std::size_t i = 0; i < kSyllables; ++i) {
+            CAPTURE(i);
+            CHECK(far[i] >= 0.0);
+            CHECK(far[i] < 1.0);
+            if (i + 2 >= kDrifted && i <= kDrifted + 2) {
+                CHECK(far[i] > 0.3);
+                CHECK(log_odds_lost(i) > 2.0);
+            } else if (i + 3 < kDrifted || i > kDrifted + 3) {
+                CHECK(far[i] < 0.05);
+                CHECK(log_odds_lost(i) < 0.3);
+            }
+        }
+        // Without marginals (a chain searched in windows) no start counts as far off.
+        const auto unmeasured = far_start_share(sentence.chain, path, EntryMaxMarginals{});
+        CHECK(std::all_of(unmeasured.begin(), unmeasured.end(), [](double value) { return value == 0.0; }));
     }
 
     TEST_CASE("a room's evidence, lower throughout, keeps its right syllables' confidences near a clean recording's") {

@@ -128,8 +128,8 @@ its start; lenient alignment weighs the same but the last) and is calibrated on 
 threshold holds per condition: on the benchmark's
 development speech (a person and two voices made of the same speaker's) no condition (noise, rooms,
 music, phone, fast speech) has more than 10% of its syllables within 100 ms under it (the person's
-2.8-7.5%, 5.2% pooled), and it catches 74% of those more than 100 ms off (held out: 2.5-9.9% and 72%;
-the other voices 5.5-7.8% and 67%). Audio is read in blocks: an
+3.0-7.8%, 5.2% pooled), and it catches 79% of those more than 100 ms off (held out: 2.0-8.9% and 82%;
+the other voices 5.3-7.5% and 73%). Audio is read in blocks: an
 hour of speech aligns in bounded memory.
 
 The GIL is released while aligning, so alignments on several threads run at once; one aligner may be

@@ -76,7 +76,7 @@ Args:
     confidence (float): 0..1, how sure the aligner is of the times (not a probability); below
         talkface.kLowAlignmentConfidence (0.5) the syllable may be more than 100 ms off: check it (on
         the benchmark's human speech that flags at most 10% of right syllables in every condition,
-        5.2% pooled, and catches 74% of those more than 100 ms off; SpeechAligner says more).
+        5.2% pooled, and catches 79% of those more than 100 ms off; SpeechAligner says more).
     pause_after (bool): the transcript marks a pause after it (，、：).
     generic_speech (bool): part of a word no table reads (an English word the dictionary lacks): the
         aligner fits it as any speech; its pinyin is talkface.kGenericSpeechPinyin ("de5"), which only

@@ -15,7 +15,7 @@ __version__: str
 kMaxPoseAngleDeg: float
 # A syllable whose confidence is below this (0.5) may be more than 100 ms off: check it (flags at most
 # 10% of right syllables in every condition of the benchmark's human speech, 5.2% pooled, and catches
-# 74% of those >100 ms off; SpeechAligner).
+# 79% of those >100 ms off; SpeechAligner).
 kLowAlignmentConfidence: float
 kGenericSpeechPinyin: str
 
