@@ -40,6 +40,15 @@ bool speaks_of_temperature(const std::vector<CodePoint>& text, std::size_t start
     return before.find("温") != std::string::npos || before.find("溫") != std::string::npos;
 }
 
+// A number at text[start] with `unit` after it (or none) and `next` the code point after it is a
+// temperature: its unit is degrees Celsius or Fahrenheit (℃ 摄氏度, ℉ 华氏度), or a bare 度 where the
+// sentence speaks of a temperature.
+bool is_temperature_reading(const std::vector<CodePoint>& text, std::size_t start, const Unit* unit,
+                            char32_t next) {
+    if (unit != nullptr) return std::string_view(unit->words).find("氏度") != std::string_view::npos;
+    return next == U'度' && speaks_of_temperature(text, start);
+}
+
 // A word earlier in the clause that names a change (涨幅, 增长, 上升, 同比): a + after it is not said.
 bool names_change(const std::vector<CodePoint>& text, std::size_t start) {
     const std::string before = text_before(text, start, true);
@@ -94,9 +103,8 @@ bool range_word_before_temperature(const std::vector<CodePoint>& text, std::size
     if (!is_one_of(value_at(text, end), U"至到") || !is_digit_at(text, end + 1)) return false;
     const auto second = parse_number(text, end + 1);
     std::size_t unit_end = second.end;
-    if (const Unit* unit = unit_at(text, second.end, unit_end); unit != nullptr)
-        return std::string_view(unit->words).find("氏度") != std::string_view::npos;
-    return value_at(text, second.end) == U'度' && speaks_of_temperature(text, start);
+    const Unit* unit = unit_at(text, second.end, unit_end);
+    return is_temperature_reading(text, start, unit, value_at(text, second.end));
 }
 
 // A range mark at text[mark] between two quantities with the same unit (-5℃~3℃, 5km-10km): 到, as between
@@ -686,9 +694,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     // A temperature's sign is said 零下 or 零上 (-3℃ 零下三摄氏度, +5℃ 零上五摄氏度), before 度 too where the
     // sentence speaks of a temperature (气温降至-2.5度 零下二点五度; session 15: it was 负).
     const bool is_temperature =
-        unit != nullptr ? std::string_view(unit->words).find("氏度") != std::string_view::npos
-                        : (context.next == U'度' && speaks_of_temperature(text, start)) ||
-                              (numbers.size() == 1 && range_word_before_temperature(text, start, end));
+        is_temperature_reading(text, start, unit, context.next) ||
+        (unit == nullptr && numbers.size() == 1 && range_word_before_temperature(text, start, end));
     for (auto& sign : signs) {
         if (sign == "负" && is_temperature) sign = "零下";
         if (sign == "正" && is_temperature) sign = "零上";
