@@ -53,6 +53,11 @@ bool counts_years(const std::vector<CodePoint>& text, std::size_t start, const W
 // 2030世界杯): digit by digit, as a year is (二零二五财年); a count elsewhere (2000人, 2000多).
 bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNumber& number);
 
+// A year listed before another with 、 (2022、2023年 二零二二、二零二三年, 2024、2025赛季): four digits
+// whose list ends on a year said as one (before 年 and not counting years, or before a word it names);
+// the last takes the 年 (session 20: the first counted, 两千零二十二).
+bool lists_year(const std::vector<CodePoint>& text, const WrittenNumber& number);
+
 // 3:30 三点三十分, 10:05 十点零五分, 2:00 两点; nullopt when the text after the colon is not
 // minutes (3:2 is a score). A `duration` is said in its units: 2:05:30 两小时零五分三十秒 (hours,
 // minutes and seconds), 3:35 三分三十五秒 (minutes and seconds).

@@ -116,6 +116,7 @@ bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start) {
     }
     for (int skipped = 0; skipped < 2 && i > 0 && is_one_of(text[i - 1].value, U" 是为為：:\u3000"); ++skipped) --i;
     if (i > 0 && is_one_of(text[i - 1].value, U"号號室房码碼")) return true;
+    if (follows_book_number(text, start)) return true;
     // A postcode after 邮编 (邮编100080 一零零零八零; session 14: it counted), as 邮政编码 is after 码.
     if (const auto word = text_between(text, i >= 2 ? i - 2 : 0, i); word == "邮编" || word == "郵編") return true;
     // The building's number may carry its 号 (5号楼1201 五号楼一二零一; session 19: 一千二百零一).
@@ -160,8 +161,18 @@ bool follows_phone_word(const std::vector<CodePoint>& text, std::size_t start) {
     return false;
 }
 
+bool follows_book_number(const std::vector<CodePoint>& text, std::size_t start) {
+    auto i = start;
+    for (int skipped = 0; skipped < 2 && i > 0 && is_one_of(text[i - 1].value, U" ：:"); ++skipped) --i;
+    constexpr std::size_t kNameLetters = 4;
+    if (i < kNameLetters || (i > kNameLetters && is_ascii_letter(value_at(text, i - kNameLetters - 1))))
+        return false;
+    const auto name = text_between(text, i - kNameLetters, i);
+    return name == "ISBN" || name == "ISSN";
+}
+
 std::optional<SpokenForm> read_dashed_digits(const std::vector<CodePoint>& text, const WrittenNumber& first,
-                                             bool is_phone, bool is_named) {
+                                             bool is_phone, bool is_named, bool is_book) {
     if (first.has_point || first.has_separators) return std::nullopt;
     std::vector<std::string> groups{first.whole};
     auto i = first.end;
@@ -182,8 +193,9 @@ std::optional<SpokenForm> read_dashed_digits(const std::vector<CodePoint>& text,
     // session 19: dialled, 三二幺幺零八): no phone number starts with a group of one or two digits
     // without a leading zero, so they are read out as a code's parts are, the dash 杠.
     constexpr std::size_t kLongestShelf = 2;
-    if (is_named && !is_phone && groups.size() >= 3 && first.whole.size() <= kLongestShelf &&
-        first.whole.front() != '0') {
+    if ((is_named && !is_phone && groups.size() >= 3 && first.whole.size() <= kLongestShelf &&
+         first.whole.front() != '0') ||
+        is_book) {
         for (const auto& group : groups) form.words += (form.words.empty() ? "" : "杠") + digit_words(group);
         form.end = i;
         return form;

@@ -52,9 +52,14 @@ bool follows_phone_word(const std::vector<CodePoint>& text, std::size_t start);
 // 010-12345678, 0912-345-678: groups of digits joined by dashes, said digit by digit (a first group
 // with a leading zero and seven digits or more in all, or three groups, or a phone word before).
 // After a naming word (is_named: 取件码3-2-1108) three groups or more that start with one or two
-// digits are a code's, said with 杠 between and 1 as 一.
+// digits are a code's, said with 杠 between and 1 as 一, and so are a book's number's groups
+// (is_book: ISBN 978-7-02-008701-9).
 std::optional<SpokenForm> read_dashed_digits(const std::vector<CodePoint>& text, const WrittenNumber& first,
-                                             bool is_phone, bool is_named);
+                                             bool is_phone, bool is_named, bool is_book);
+
+// Right after ISBN or ISSN (a space or a colon between allowed): a book's or a journal's number, read out
+// digit by digit with 1 as 一, its dashes 杠, as a code's (session 20: dialled, 幺, the dashes unsaid).
+bool follows_book_number(const std::vector<CodePoint>& text, std::size_t start);
 
 // A dash before a group of digits with a leading zero (A2024-0315, a document's, a case's or a
 // product's number) joins a code's parts: no count is written with a leading zero, so it is no

@@ -127,6 +127,11 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
             return counts_items ? "乘" : "";
         }
         case 0xF7: return between_terms ? "除以" : "";   // ÷
+        // An arrow between two words or terms names where something goes (北京→上海 北京到上海, a route's
+        // stops; session 20: skipped with a warning).
+        case 0x2192:
+            return (is_formula_term(left) || is_han_left) && (is_formula_term(right) || is_han_right) ? "到"
+                                                                                                      : "";
         case 0x221A: return is_formula_term(right) || right == '(' ? "根号" : "";  // √2, √(x+1)
         // A square or a cube after a term: x² x平方, 3² 三的平方.
         case 0xB2: case 0xB3: {

@@ -560,13 +560,18 @@ private:
         if (is_acronym_with_small_end && !detail::english_word_syllables(word))
             return said_syllables(detail::letter_syllables(word));
         if (detail::has_inner_acronym(word)) return read_word_parts(word, at);
-        if (auto found = detail::english_word_syllables(word)) return said_syllables(*found);
         // Small letters without a vowel but y (yyds, xswl, dbq): a chat's initials of a phrase's
         // pinyin, said as their letters, as chat is read out (session 14; yyds was generic speech).
         constexpr std::size_t kLongestInitials = 6;
         const bool is_initials = word.size() >= 2 && word.size() <= kLongestInitials &&
                                  std::all_of(word.begin(), word.end(), [](char l) { return l >= 'a' && l <= 'z'; }) &&
                                  word.find_first_of("aeiou") == std::string::npos;
+        // Without a y either, the dictionary's word is an abbreviation Mandarin speakers spell
+        // (湖人vs勇士 V S, 5ppm, bbq; session 20: vs was the dictionary's wa se zi); with a y it may be a
+        // word (my, sky).
+        if (is_initials && word.find('y') == std::string::npos)
+            return said_syllables(detail::letter_syllables(word));
+        if (auto found = detail::english_word_syllables(word)) return said_syllables(*found);
         if (is_initials) return said_syllables(detail::letter_syllables(word));
         return read_word_parts(word, at);
     }

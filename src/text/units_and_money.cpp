@@ -1,5 +1,7 @@
 #include "text/units_and_money.hpp"
 
+#include <string>
+
 #include "text/written_number_scan.hpp"
 
 namespace talkface::detail {
@@ -43,6 +45,25 @@ bool is_lone_capital_unit_at(const std::vector<CodePoint>& text, const Unit& uni
     return next == U'的' || next < 0x3400 || next > 0x9FFF;
 }
 
+// A lamp's or a charger's watts written small (功率5w, 65w快充), as posts write them: the watt where the
+// sentence speaks of power (功率 充电 快充 闪充 超充 瓦 输出), and a chat's 万 elsewhere (存够5w; session 20:
+// a charger's 5w was 五万).
+constexpr Unit kSmallWatt = {"w", "瓦"};
+
+bool is_small_watt_at(const std::vector<CodePoint>& text, std::size_t i) {
+    if (value_at(text, i) != 'w' || !is_digit_at(text, i - 1) || is_ascii_letter(value_at(text, i + 1)) ||
+        is_digit_at(text, i + 1)) {
+        return false;
+    }
+    std::string sentence = text_before(text, i, false);
+    for (auto k = i; k < text.size() && !is_one_of(value_at(text, k), U"\u3002.!?！？;；\n"); ++k)
+        sentence += text[k].text;
+    for (const std::string_view word :
+         {"功率", "充电", "充電", "快充", "闪充", "閃充", "超充", "瓦", "输出", "輸出"})
+        if (sentence.find(word) != std::string::npos) return true;
+    return false;
+}
+
 constexpr Currency kCurrencies[] = {
     {U"NT$", "新台币", "元"}, {U"US$", "", "美元"}, {U"HK$", "", "港元"}, {U"S$", "", "新加坡元"},
     {U"$", "", "美元"},      {U"¥", "", "元"},     {U"￥", "", "元"},     {U"€", "", "欧元"},
@@ -78,6 +99,10 @@ const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size
             best = &unit;
             end = k;
         }
+    }
+    if (best == nullptr && start == i && i > 0 && is_small_watt_at(text, i)) {
+        best = &kSmallWatt;
+        end = i + 1;
     }
     return best;
 }

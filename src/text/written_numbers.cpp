@@ -128,12 +128,37 @@ bool joins_quantities(const std::vector<CodePoint>& text, std::size_t mark) {
     return unit != nullptr && unit->written == first->written;
 }
 
-// A small w right after a number in a Chinese line is 万, as posts write it (播放量破1w 一万, 存够5w; session
-// 19: the letter, da bu liu); not before another letter (5wt) and not in a line without Chinese characters.
-bool is_chat_ten_thousand(const std::vector<CodePoint>& text, std::size_t end) {
-    if (value_at(text, end) != 'w' || is_ascii_letter(value_at(text, end + 1)) || is_digit_at(text, end + 1))
+// Whether the clause around text[end] speaks of a picture's size (分辨率, 视频, 屏, 画质): a k after a number
+// there is a resolution's (4k屏), not a thousand.
+bool speaks_of_picture(const std::vector<CodePoint>& text, std::size_t end) {
+    const std::string clause = text_before(text, end, true) + text_after(text, end);
+    for (const std::string_view word :
+         {"分辨", "视频", "視頻", "屏", "画质", "畫質", "电视", "電視", "帧", "幀"})
+        if (clause.find(word) != std::string::npos) return true;
+    return false;
+}
+
+// The magnitude a chat writes as a small letter right after a number in a Chinese line, as posts write
+// it: w 万 (播放量破1w 一万, 存够5w; session 19: the letter, da bu liu) and k 千 (月薪8k 八千; session 20:
+// the letter, kei), "" where there is none. Not before another letter (5wt) or a digit, not in a line
+// without Chinese characters, and a k not where the clause speaks of a picture (4k屏 is a resolution's).
+std::string_view chat_magnitude(const std::vector<CodePoint>& text, std::size_t end) {
+    const auto letter = value_at(text, end);
+    if (!is_one_of(letter, U"wk") || is_ascii_letter(value_at(text, end + 1)) || is_digit_at(text, end + 1))
+        return {};
+    if (!std::any_of(text.begin(), text.end(), [](const CodePoint& c) { return is_han(c.value); })) return {};
+    if (letter == 'w') return "万";
+    return speaks_of_picture(text, end) ? std::string_view{} : "千";
+}
+
+// A chat's +1 that closes its clause after a person (我+1, 楼上+1): "me too", 加一, as a +1 standing alone
+// is (session 20: 正一). 温差+1 keeps its sign.
+bool agrees_after_person(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    if (start == 0 || !(end >= text.size() || is_one_of(value_at(text, end), U"，,。.！!？?～~…\n ")))
         return false;
-    return std::any_of(text.begin(), text.end(), [](const CodePoint& c) { return is_han(c.value); });
+    if (is_one_of(text[start - 1].value, U"我你他她俺咱们們")) return true;
+    const auto before = text_between(text, start >= 2 ? start - 2 : 0, start);
+    return before == "楼上" || before == "樓上" || before == "楼主" || before == "樓主";
 }
 
 // A radio band right before a number (FM103.9, AM 639, 调频97.4; one space allowed): a station's frequency.
@@ -349,6 +374,15 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
             said.words = digit_words(whole);
             return said;
         }
+        // A pair of digits written twice over as a clause of its own (9494，我也是这么想的: 就是就是, a
+        // chat's agreement), digit by digit as 88 is (session 20: 九千四百九十四); a year standing so reads
+        // alike.
+        const bool is_pair_over =
+            whole.size() == 4 && whole[0] != whole[1] && whole.compare(0, 2, whole, 2, 2) == 0;
+        if (is_pair_over && context.is_whole_clause) {
+            said.words = digit_words(whole);
+            return said;
+        }
         // 233 too, right after a laugh's character (哈哈哈233, 笑死233; session 14); elsewhere it counts (233人).
         const bool is_laugh = whole.front() == '2' && whole.find_first_not_of('3', 1) == std::string::npos &&
                               (whole.size() >= 4 || (whole.size() == 3 && context.after_laugh));
@@ -450,7 +484,13 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     if (currency == nullptr && is_dash(first) && is_digit_at(text, i + 1) &&
         (follows_designation(text, start) || follows_element(text, start))) {
         ++i;
-    } else if (currency == nullptr && (is_dash(first) || first == '+') && is_digit_at(text, i + 1) && !after_word) {
+    } else if (currency == nullptr && is_one_of(first, U"\u00B1\u2191\u2193") && is_digit_at(text, i + 1)) {
+        // ± is 正负, as a tolerance is read (误差±0.5mm); an arrow before a change is the rise or the fall
+        // it draws, 涨 and 跌, as market reports read ↑3.2% and ↓1.5% (session 20: skipped with a warning).
+        sign_words = first == 0xB1 ? "正负" : first == 0x2191 ? "涨" : "跌";
+        ++i;
+    } else if (currency == nullptr && (is_dash(first) || first == '+') && is_digit_at(text, i + 1) &&
+               !after_word) {
         sign_words = first == '+' ? "正" : "负";
         if (first == '+' && follows_game_attribute(text, start)) sign_words = "加";
         ++i;
@@ -465,7 +505,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
 
     const auto number = parse_number(text, i);
     // A chat's +1 as a clause of its own (+1，我也觉得), "me too", is 加一 (session 14; it was 正一).
-    if (sign_words == "正" && number.whole == "1" && !number.has_point && stands_alone(text, start, number.end))
+    if (sign_words == "正" && number.whole == "1" && !number.has_point &&
+        (stands_alone(text, start, number.end) || agrees_after_person(text, start, number.end)))
         sign_words = "加";
     context.is_named = follows_name_word(text, start);
     // A house's number right after its street (文化路一段100號, 中山路128号) counts, as addresses are read
@@ -513,8 +554,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
                           (is_one_of(value_at(text, start - 1), U"哈呵嘿嘻笑死") ||
                            (closes_clause && is_one_of(value_at(text, start - 1), U"吧啊呀呢嘛哦啦")));
     context.is_whole_clause = sign_words.empty() && currency == nullptr && stands_alone(text, start, number.end);
-    context.names_year =
-        sign_words.empty() && currency == nullptr && !context.is_ordinal && names_year_before_word(text, number);
+    context.names_year = sign_words.empty() && currency == nullptr && !context.is_ordinal &&
+                         (names_year_before_word(text, number) || lists_year(text, number));
     SpokenForm form;
     // Two numbers said each alone with a word between: a score (3:1, and 2-1 where the clause
     // speaks of a match: 2-1领先), a product (7×24 七乘二十四).
@@ -582,7 +623,9 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (auto date = read_numeric_date(text, number)) return date;
         if (auto season = read_season(text, number)) return season;
         if (auto record = read_game_record(text, start, number)) return record;
-        if (auto digits = read_dashed_digits(text, number, context.is_phone, context.is_named)) return digits;
+        if (auto digits = read_dashed_digits(text, number, context.is_phone, context.is_named,
+                                             follows_book_number(text, start)))
+            return digits;
         if (auto code = read_code_with_dash(text, number)) return code;
         if (is_dash(value_at(text, number.end)) && is_digit_at(text, number.end + 1)) {
             auto second = parse_number(text, number.end + 1);
@@ -670,9 +713,13 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     }
     std::size_t unit_end = end;
     const Unit* unit = unit_at(text, end, unit_end);
-    const bool ten_thousand = numbers.size() == 1 && unit == nullptr && currency == nullptr &&
-                              power_words.empty() && is_chat_ten_thousand(text, end);
-    context.next = ten_thousand ? U'万' : value_at(text, numbers.back().end);
+    const auto chat_letter =
+        numbers.size() == 1 && unit == nullptr && currency == nullptr && power_words.empty()
+            ? chat_magnitude(text, end)
+            : std::string_view{};
+    context.next = chat_letter.empty()   ? value_at(text, numbers.back().end)
+                   : chat_letter == "万" ? U'万'
+                                         : U'千';
     // A Latin unit after the number's 万 or 亿 (1.6万km² 一点六万平方公里) is said after it.
     std::string magnitude_words;
     if (unit == nullptr && currency == nullptr && is_one_of(context.next, U"万萬亿億")) {
@@ -682,8 +729,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
             magnitude_words = is_one_of(context.next, U"万萬") ? "万" : "亿";
         }
     }
-    if (ten_thousand) {
-        magnitude_words = "万";
+    if (!chat_letter.empty()) {
+        magnitude_words = chat_letter;
         ++end;
     }
     context.has_unit = power_words.empty() && ((unit != nullptr && unit->written != "%") || is_byte_unit_at(text, end));
@@ -726,8 +773,10 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (k > 0) form.words += "到";
         form.words += signs[k];
         if (currency != nullptr) form.words += currency->before;
-        if (is_percent) form.words += "百分之";
-        if (is_per_mille) form.words += "千分之";
+        // The sign written on each end is said on each (10%-20% 百分之十到百分之二十), once where only the
+        // last carries it (3-5% 百分之三到五, as newsreaders say it; session 20: 百分之三到百分之五).
+        if (is_percent && (k == 0 || first_is_percent)) form.words += "百分之";
+        if (is_per_mille && k == 0) form.words += "千分之";
         // 100% is 百分之百, as it is said (百分之百的把握), not 百分之一百.
         const auto& whole = numbers[k].whole;
         form.words += is_percent && whole == "100" && !numbers[k].has_point ? "百" : said.words;
