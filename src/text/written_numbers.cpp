@@ -26,10 +26,13 @@ bool follows_game_attribute(const std::vector<CodePoint>& text, std::size_t star
     if (is_one_of(text[start - 1].value, U"力值")) return true;
     std::string before = text_before(text, start, true);
     if (ends_with(before, "率")) before.erase(before.size() - std::string_view("率").size());
-    for (const std::string_view stat : {"攻击", "攻擊", "攻速", "速度", "移速", "防御", "防禦", "护甲", "護甲", "魔抗",
-                                        "暴击", "暴擊", "暴伤", "暴傷", "闪避", "閃避", "命中", "生命", "血量", "法力",
-                                        "伤害", "傷害", "穿透", "吸血", "韧性", "韌性", "格挡", "格擋", "抗性", "敏捷",
-                                        "力量", "智力", "体质", "體質", "耐力", "精神", "经验", "經驗", "金币", "金幣"})
+    for (const std::string_view stat :
+         {"攻击", "攻擊", "攻速", "速度", "移速", "防御", "防禦", "护甲", "護甲", "魔抗", "暴击", "暴擊",
+          "暴伤", "暴傷", "闪避", "閃避", "命中", "生命", "血量", "法力", "伤害", "傷害", "穿透", "吸血",
+          "韧性", "韌性", "格挡", "格擋", "抗性", "敏捷", "力量", "智力", "体质", "體質", "耐力", "精神",
+          "经验", "經驗", "金币", "金幣",
+          // An item's upgrade level (装备强化+12 加十二; session 20: 正十二).
+          "强化", "強化", "精炼", "精煉"})
         if (ends_with(before, stat)) return true;
     return false;
 }
