@@ -256,6 +256,16 @@ bool is_result_between_names(const std::vector<CodePoint>& text, std::size_t sta
            first_value >= second_value;
 }
 
+// A + between a word and a number where the clause before it holds a number of its own: it joins two
+// quantities, 加, as a spec sheet lists its parts (5000万像素主摄+1200万超广角, 16GB内存+1TB硬盘; session 20:
+// 正一千二百). A sign alone in its clause keeps its reading (温差+12 正十二), and a change in percent is a
+// rise (Q3净利润同比增长+15.2%: the Q3 is no quantity added to).
+bool adds_to_quantity(const std::vector<CodePoint>& text, std::size_t start) {
+    if (start == 0 || value_at(text, start) != '+' || !is_han(text[start - 1].value)) return false;
+    const std::string before = text_before(text, start, true);
+    return before.find_first_of("0123456789") != std::string::npos;
+}
+
 // Whether text[start, end) stands alone as a clause: at the start of the text or after a mark that
 // ends a clause (not a colon, which introduces a value), and before one or the end.
 bool stands_alone(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
@@ -750,6 +760,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (sign == "负" && is_temperature) sign = "零下";
         if (sign == "正" && is_temperature) sign = "零上";
     }
+    if (signs.front() == "正" && !is_percent && !is_per_mille && adds_to_quantity(text, start))
+        signs.front() = "加";
     // A + before a percentage is a rise, said 涨 as market reports read it (腾讯+2.35% 腾讯涨百分之
     // 二点三五); not said where the clause already names the change (涨幅+2.35%, 同比增长+5%) or
     // after the first end of a range. A - stays 负 (增速-6.8% 增速负百分之六点八: 负增长).

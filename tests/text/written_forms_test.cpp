@@ -1119,8 +1119,9 @@ TEST_SUITE("written forms") {
             {"本书ISBN 978-7-02-008701-9", "本书 ai ai si bi en九七八杠七杠零二杠零零八七零一杠九"},
             {"ISBN 9787020087019", "ai ai si bi en九七八七零二零零八七零一九"},
             {"湖人vs勇士", "湖人 wei ai si勇士"},
-            // Found by hand, in no set: an item's upgrade level.
+            // Found by hand, in no set: an item's upgrade level, a spec sheet's sum of parts.
             {"装备强化+12成功", "装备强化加十二成功"},
+            {"5000万像素主摄+1200万超广角", "五千万像素主摄加一千二百万超广角"},
             // The rules' limits: a sign on each end, a chat's w without a word of power, a k of a picture,
             // a sign that closes no agreement, a count listed before another, a pair that counts.
             {"增长10%-20%", "增长百分之十到百分之二十"},
