@@ -221,6 +221,26 @@ std::optional<SpokenForm> read_code_with_dash(const std::vector<CodePoint>& text
     return form;
 }
 
+std::optional<SpokenForm> read_series_and_model(const std::vector<CodePoint>& text, std::size_t start,
+                                                const WrittenNumber& first) {
+    constexpr std::size_t kMostSeriesCharacters = 2;
+    if (first.has_point || first.has_separators || first.whole.size() > kMostSeriesCharacters ||
+        !is_dash(value_at(text, first.end))) {
+        return std::nullopt;
+    }
+    auto letters = start;
+    while (letters > 0 && is_ascii_letter(value_at(text, letters - 1))) --letters;
+    if (letters == start || start - letters > kMostSeriesCharacters) return std::nullopt;
+    auto k = first.end + 1;
+    const auto model = digits_from(text, k);
+    constexpr std::size_t kFewestModelDigits = 3;
+    if (model.size() < kFewestModelDigits || !is_ascii_capital(value_at(text, k))) return std::nullopt;
+    SpokenForm form;
+    form.words = cardinal_words(first.whole, false) + digit_words(model);
+    form.end = k;
+    return form;
+}
+
 bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start) {
     return !model_name_before(text, start).empty();
 }

@@ -67,6 +67,13 @@ bool follows_book_number(const std::vector<CodePoint>& text, std::size_t start);
 // was 到). A year and a month (2024-03) are left as they were.
 std::optional<SpokenForm> read_code_with_dash(const std::vector<CodePoint>& text, const WrittenNumber& first);
 
+// A processor's series and model joined by a hyphen (i7-13700H, R7-7840HS, i5-12400F): one or two letters
+// and the series' one or two digits (`first`, at text[start]), the hyphen, and a model's number of three or
+// more digits with its capital suffix. The series counts, the model is said digit by digit and the hyphen
+// not at all, as reviews read them (i七 一三七零零 H; session 20: a range, 七到一三七零零).
+std::optional<SpokenForm> read_series_and_model(const std::vector<CodePoint>& text, std::size_t start,
+                                                const WrittenNumber& first);
+
 bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start);
 
 // A respirator's filter grade (N95, KN95, P99: a class N R P KN KP and 90, 95 or 99, the share of

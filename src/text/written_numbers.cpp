@@ -636,6 +636,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (auto date = read_numeric_date(text, number)) return date;
         if (auto season = read_season(text, number)) return season;
         if (auto record = read_game_record(text, start, number)) return record;
+        if (auto model = read_series_and_model(text, i, number)) return model;
         if (auto digits = read_dashed_digits(text, number, context.is_phone, context.is_named,
                                              follows_book_number(text, start)))
             return digits;

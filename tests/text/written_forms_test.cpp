@@ -1122,6 +1122,7 @@ TEST_SUITE("written forms") {
             // Found by hand, in no set: an item's upgrade level, a spec sheet's sum of parts.
             {"装备强化+12成功", "装备强化加十二成功"},
             {"5000万像素主摄+1200万超广角", "五千万像素主摄加一千二百万超广角"},
+            {"CPU是i7-13700H", "xi pi you是 ai七一三七零零 ai qi"},
             // The rules' limits: a sign on each end, a chat's w without a word of power, a k of a picture,
             // a sign that closes no agreement, a count listed before another, a pair that counts.
             {"增长10%-20%", "增长百分之十到百分之二十"},
