@@ -44,8 +44,10 @@ void add_rival_shares(const SentenceChain& lenient, const std::vector<StateSegme
 // The syllables of runs the lenient chain's `path` skips (neighbours skipped together) where
 // neither one of them nor a neighbour of the run fits the chain's plain path (`plain_fits`:
 // fits_on_path of the path without leniency) as an outlier of the chain's: more than
-// kOutlierDeviations (lenient_chain.cpp) median absolute deviations under the median; or where no
-// syllable of the run is beaten on its plain-path stretch by at least kMinRivalShare of the unlike
+// kOutlierDeviations (lenient_chain.cpp) median absolute deviations under the median, and no
+// syllable of the run has a held-out gap (`held_out_gaps`, below) above kMinHeldOutGapUnlike,
+// which stands for an outlier where noise spreads the fits; or where no syllable of the run is
+// beaten on its plain-path stretch by at least kMinRivalShare of the unlike
 // syllables (`rival_shares`, per syllable, add_rival_shares; NaN or missing: not judged so); or
 // where no syllable of the run has a held-out gap (`held_out_gaps`, per syllable: the syllables of
 // held_out_fit_gaps on the plain path; NaN or missing: not judged so) of kMinHeldOutGapSkipped. A

@@ -248,6 +248,27 @@ TEST_SUITE("speech") {
         CHECK(chain.states[3].skip_log_penalty == -20.0);
     }
 
+    TEST_CASE("lenient: a skipped syllable that held-out models hear as another stands for an outlier") {
+        // Five one-state syllables whose plain-path fits spread as in noise (none an outlier); the
+        // lenient path skips syllable 2, rivalled.
+        const Syllable syllable;
+        const detail::SentenceChain chain = one_state_syllables(syllable, 5, -20.0);
+        const std::vector<detail::StateSegment> skips_2 = {{0, 0, 10}, {1, 10, 20}, {3, 20, 30}, {4, 30, 40}};
+        const std::vector<double> usual = {1.0, 1.1, 0.9, 1.05, 0.95};
+        const std::vector<double> rivalled(5, 0.3);
+        // Held-out models that never heard its text hear another syllable: kept.
+        CHECK(detail::unsupported_skips(chain, skips_2, usual, rivalled, {0.0, 0.0, 1.4, 0.0, 0.0}).empty());
+        // A gap a right syllable in noise has: judged by the fits, which do not support the skip.
+        CHECK(detail::unsupported_skips(chain, skips_2, usual, rivalled, {0.0, 0.0, 0.9, 0.0, 0.0}) ==
+              std::vector<std::size_t>{2});
+        // A neighbour's gap is its own, not the skipped syllable's.
+        CHECK(detail::unsupported_skips(chain, skips_2, usual, rivalled, {0.0, 0.0, 0.5, 1.4, 0.0}) ==
+              std::vector<std::size_t>{2});
+        // Still rivalled or not kept: its own text fits it better than every unlike syllable.
+        CHECK(detail::unsupported_skips(chain, skips_2, usual, std::vector<double>(5, 0.0),
+                                        {0.0, 0.0, 1.4, 0.0, 0.0}) == std::vector<std::size_t>{2});
+    }
+
     TEST_CASE("lenient: an outlier stays skipped only where unlike syllables fit its stretch better than its text") {
         const Syllable syllable;
         detail::SentenceChain chain = one_state_syllables(syllable, 5, -20.0);
