@@ -312,7 +312,8 @@ struct Delivery {
 // - syllables differ in level (standard deviation 4 dB), a light tone 6 dB weaker;
 // - inside a phrase a syllable runs into the one before: 60% of joins overlap by up to 40 ms (the
 //   next sound starts under the last one's end, no dip between them), the rest leave a gap of up
-//   to 30 ms; a stop or affricate after speech is preceded by its closure, 20-60 ms of silence;
+//   to 30 ms; no overlap starts before the middle of the vowel before (see speak); a stop or
+//   affricate after speech is preceded by its closure, 20-60 ms of silence;
 // - a comma's pause lasts 0.15-0.35 s, a sentence's 0.4-1.0 s.
 Delivery draw_delivery(const talkface::Timeline& transcript, std::mt19937_64& rng) {
     using talkface_bench::gaussian;
@@ -342,8 +343,9 @@ Delivery draw_delivery(const talkface::Timeline& transcript, std::mt19937_64& rn
 // - a syllable's decay is cut short where the next begins: 60-85% of its sound is heard, the rest
 //   is spoken over (the next syllable starts there, with a 10 ms fade of the one before);
 // - a voiced initial (m n l r, or none) loses the first 10-40 ms of its recorded attack, then
-//   cross-fades with the vowel before over 30-70 ms; other initials overlap the one before by up to
-//   30 ms or follow after up to 15 ms; a stop's or affricate's closure lasts 0-40 ms;
+//   cross-fades with the vowel before over 30-70 ms, from no earlier than the middle of its heard
+//   part; other initials overlap the one before by up to 30 ms or follow after up to 15 ms; a
+//   stop's or affricate's closure lasts 0-40 ms;
 // - the pace jitters per syllable (standard deviation 0.12 of its log) on top of the wandering of
 //   Delivery, and the last syllable of a phrase is said 0.75 times as fast;
 // - the pitch falls through a sentence by 100-300 cents (declination), from a level of its own
@@ -438,6 +440,36 @@ void voice_through_closure(std::vector<float>& samples, std::size_t from, std::s
     }
 }
 
+// Where the vowel of a recorded syllable begins: the first 5 ms frame whose level below 1 kHz (a
+// second-order Butterworth low-pass, the power over the 20 ms around the frame, longer than a pitch
+// period) comes within 10 dB of the syllable's loudest. A vowel's first formant lies there; the
+// voiceless initials (s sh x f h, aspiration, a burst) carry little below 1 kHz and stay 20 dB and
+// more under it, while m n l r, voiced, mostly count with the vowel as the syllable's sonorant part.
+std::size_t vowel_start(const std::vector<float>& sound) {
+    constexpr std::size_t kHop = kRateHz / 200, kHalfWindow = kRateHz / 100;
+    const double k = std::tan(3.141592653589793 * 1000.0 / kRateHz), q = std::sqrt(0.5);
+    const double norm = 1.0 / (1.0 + k / q + k * k);
+    const double b0 = k * k * norm, a1 = 2.0 * (k * k - 1.0) * norm, a2 = (1.0 - k / q + k * k) * norm;
+    std::vector<double> power(sound.size() + 1, 0.0);
+    double x1 = 0, x2 = 0, y1 = 0, y2 = 0;
+    for (std::size_t n = 0; n < sound.size(); ++n) {
+        const double y = b0 * (sound[n] + 2.0 * x1 + x2) - a1 * y1 - a2 * y2;
+        x2 = x1, x1 = sound[n], y2 = y1, y1 = y;
+        power[n + 1] = power[n] + y * y;
+    }
+    std::vector<double> level;
+    for (std::size_t centre = kHop / 2; centre < sound.size(); centre += kHop) {
+        const std::size_t from = centre > kHalfWindow ? centre - kHalfWindow : 0,
+                          to = std::min(sound.size(), centre + kHalfWindow);
+        level.push_back((power[to] - power[from]) / static_cast<double>(to - from));
+    }
+    if (level.empty()) return 0;
+    const double loudest = *std::max_element(level.begin(), level.end());
+    std::size_t frame = 0;
+    while (level[frame] < loudest * 0.1) ++frame;
+    return frame * kHop;
+}
+
 // The level of the joined speech: speaker 3's syllables are recorded near -10 dBFS at their peak.
 constexpr double kOverallGain = 0.7;
 
@@ -455,6 +487,7 @@ Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, 
     std::vector<float> last_sound;
     double last_gain = 0.0;
     std::size_t last_at = 0;
+    std::size_t last_vowel = 0;  // where its vowel begins, counted from last_at
     const auto to_samples = [](double seconds) { return static_cast<std::size_t>(std::lround(seconds * kRateHz)); };
     const auto seconds = [](std::size_t at) { return static_cast<double>(at) / kRateHz; };
     for (std::size_t k = 0; k < transcript.sentences.size(); ++k) {
@@ -531,9 +564,14 @@ Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, 
             } else if (!after_pause) {
                 // A voiced initial (m n l r, or none: a vowel, y-, w-) after a vowel is voiced right
                 // through: the two cross-fade over the whole overlap, with no dip and no attack.
+                // An overlap starts no earlier than the middle of the heard part of the vowel before:
+                // a listener hears that syllable's vowel before the next sound grows in, and a light
+                // 了 or 的, or a 是 that is mostly sh, is not spoken over from its first frames.
                 const double join = is_voiced_join ? (is_running ? running.voiced_join_s[i] : delivery.voiced_join_s[i])
                                                     : (is_running ? running.join_s[i] : delivery.join_s[i]);
-                at = join >= 0 ? end + to_samples(join) : end - std::min(to_samples(-join), sound.size() / 4);
+                const std::size_t vowel_middle = std::min(end, last_at + (last_vowel + end - last_at) / 2);
+                at = join >= 0 ? end + to_samples(join)
+                               : std::max(end - std::min(to_samples(-join), sound.size() / 4), vowel_middle);
                 start = at;
             }
             syllable.start_s = seconds(start);
@@ -548,6 +586,7 @@ Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, 
             }
             for (std::size_t n = fade; n < sound.size(); ++n) samples[at + n] += static_cast<float>(gain) * sound[n];
             end = at + sound.size();
+            last_vowel = vowel_start(sound);
             last_sound = std::move(sound);
             last_gain = gain;
             last_at = at;
