@@ -61,6 +61,18 @@ tf_status tf_load_transcript(const char* path, tf_timeline** out) {
     });
 }
 
+tf_status tf_load_transcript_with(const char* path, const char* encoding, int keep_directions,
+                                  tf_timeline** out) {
+    return guard([&] {
+        require_non_null(path, "path");
+        require_non_null(out, "out");
+        talkface::TranscriptOptions options;
+        options.encoding = encoding != nullptr ? encoding : "";
+        options.keep_directions = keep_directions != 0;
+        *out = new tf_timeline{talkface::load_transcript(path, options)};
+    });
+}
+
 tf_status tf_timeline_create(tf_timeline** out) {
     return guard([&] {
         require_non_null(out, "out");

@@ -573,10 +573,24 @@ typedef struct tf_timeline tf_timeline;
 TF_API tf_status tf_read_transcript(const char *text, size_t length, const char *source_name,
                                     tf_timeline **out);
 
-/* Reads a transcript file as tf_read_transcript does; messages name `path`.
- * Errors: TF_ERR_FILE if it cannot be read; TF_ERR_PARSE as tf_read_transcript;
- *         TF_ERR_INVALID_ARGUMENT if path or out is NULL. */
+/* Reads a transcript file as tf_read_transcript does; messages name `path`. The file may be UTF-8,
+ * UTF-16 or UTF-32 with a byte order mark, or SRT or WebVTT subtitles or a Praat TextGrid, whose
+ * text is read (talkface::load_transcript in transcript.hpp has the rules). A bracket of sounds and
+ * actions, （笑） [掌声], and a dialogue's speaker labels, 主持人：, are left out with a warning.
+ * Errors: TF_ERR_FILE if it cannot be read; TF_ERR_PARSE as tf_read_transcript, for a malformed
+ *         subtitle or TextGrid, and for bytes that are not UTF-8 (the message names the encodings
+ *         that read them as Chinese: GB18030, Big5, UTF-16; load such a file with
+ *         tf_load_transcript_with); TF_ERR_INVALID_ARGUMENT if path or out is NULL. */
 TF_API tf_status tf_load_transcript(const char *path, tf_timeline **out);
+
+/* tf_load_transcript of a file in `encoding` when it has no byte order mark: any name iconv
+ * knows, "gb18030" (GBK, GB2312), "big5", "big5-hkscs", "utf-16le", ...; NULL or "" means UTF-8.
+ * keep_directions non-zero reads stage directions and speaker labels as text.
+ * Errors: as tf_load_transcript; TF_ERR_INVALID_ARGUMENT naming "encoding" for a name iconv does
+ *         not know; TF_ERR_PARSE naming the line, column and byte offset where the bytes stop
+ *         being text in `encoding`. */
+TF_API tf_status tf_load_transcript_with(const char *path, const char *encoding, int keep_directions,
+                                         tf_timeline **out);
 
 /* A new empty timeline, to fill with tf_timeline_add_sentence / _add_syllable (a timeline read
  * from an `align` JSON document, say). Errors: TF_ERR_INVALID_ARGUMENT if out is NULL. */

@@ -23,6 +23,17 @@ struct TranscriptOptions {
     /// Read runs of Latin letters that spell Mandarin syllables ("ni3 hao3", "ni3hao3", "nihao")
     /// as syllables; when false they are read as letters or English words like any other Latin.
     bool read_pinyin = true;
+    /// Read stage directions and speaker labels as text. By default (false) they are not said:
+    /// a bracket holding only sounds and actions, （笑） (掌声) [音乐] 【众人鼓掌】 [laughter], and,
+    /// where two lines or more start with one and the text is a dialogue, a name and a colon at a
+    /// line's start (主持人： A: 小明：), which also ends the sentence before it. Each is left out
+    /// of the syllables and the sentence text with a Timeline::warnings entry (a label once, with
+    /// how many lines it starts). docs/transcripts.md has the rules.
+    bool keep_directions = false;
+    /// load_transcript() only: the file's encoding when it has no byte order mark, any name
+    /// glibc's iconv knows: "gb18030" (or "gbk", "gb2312"), "big5", "big5-hkscs", "utf-16le", ...;
+    /// "" (the default) means UTF-8. A byte order mark (UTF-8, UTF-16 or UTF-32) always decides.
+    std::string encoding;
 };
 
 /// Reads a transcript: UTF-8 text in Traditional or Simplified characters, or numbered pinyin.
@@ -67,8 +78,23 @@ struct TranscriptOptions {
 TALKFACE_API Timeline read_transcript(std::string_view utf8_text, const TranscriptOptions& options = {},
                                       const std::string& source_name = "<transcript>");
 
-/// Reads a transcript file; messages name `path`.
-/// \throws talkface::FileError if the file cannot be read, and what read_transcript() throws.
+/// Reads a transcript file; messages name `path`. The file is text as read_transcript() reads it,
+/// in UTF-8, UTF-16 or UTF-32 with a byte order mark, or in options.encoding; or subtitles or a
+/// TextGrid, whose text is read (docs/transcripts.md):
+/// - SubRip (.srt: a cue number, then "00:00:01,000 --> 00:00:02,500") and WebVTT ("WEBVTT" first):
+///   cue numbers, times, identifiers, notes and markup (<i>, {\an8}) are dropped; each cue ends a
+///   sentence, unless its text runs on (ends with ， 、 ： , : or a dash). Cue times are not used:
+///   pass the same file as a timing (time_transcript(), --timing) to keep each sentence in its cue.
+/// - A Praat TextGrid: the intervals of its "sentences" tier, one sentence each; else those of its
+///   "syllables" or "words" tier (or its only interval tier), a sentence ending at an empty
+///   interval (a silence) of 0.3 s or more.
+/// Warnings and errors name the file's own lines.
+/// \throws talkface::FileError if the file cannot be read; talkface::InvalidArgument naming
+///         "encoding" for an encoding iconv does not know; talkface::ParseError naming the line,
+///         column and byte offset where the bytes stop being text in their encoding (when it is
+///         not named and they are not UTF-8, the message says which encodings read them as Chinese,
+///         GB18030, Big5 or UTF-16, with what each reads), for a subtitle or TextGrid that is
+///         malformed (naming the line), and what read_transcript() throws.
 TALKFACE_API Timeline load_transcript(const std::string& path, const TranscriptOptions& options = {});
 
 /// True if `syllable` is a legal Mandarin syllable in numbered pinyin: a toneless syllable of

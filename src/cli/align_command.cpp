@@ -23,7 +23,7 @@ namespace {
 
 struct AlignCommandOptions {
     std::string audio_path;
-    std::string transcript_path;
+    TranscriptArgument transcript;
     bool json = false;
     std::string plot_path;
     std::string first_pause_text;
@@ -89,7 +89,7 @@ void run_align(const AlignCommandOptions& options) {
         align_options.first_pause_start_s = pause.first;
         align_options.first_pause_end_s = pause.second;
     }
-    const talkface::Timeline transcript = load_transcript_to_time(options.transcript_path);
+    const talkface::Timeline transcript = load_transcript_to_time(options.transcript);
     const talkface::SpeechAligner aligner(align_options);
     talkface::Timeline timeline;
     {
@@ -114,10 +114,7 @@ void setup_align_command(CLI::App& app) {
     align->add_option("AUDIO", options->audio_path, kSpeechFormatsHelp)
         ->required()
         ->check(CLI::ExistingFile);
-    align->add_option("TRANSCRIPT", options->transcript_path,
-                      "UTF-8 text, Traditional or Simplified, or numbered pinyin; fix a reading in place: 行{hang2}")
-        ->required()
-        ->check(CLI::ExistingFile);
+    add_transcript_argument(*align, options->transcript, kTranscriptHelp)->required();
     align->add_flag("--json", options->json,
                     "Print the timeline JSON: {\"version\":1, \"sentences\":[{text,start,end}], \"syllables\":[{text,"
                     "pinyin,start,end,sentence,final_start,confidence,pause_after}], \"duration\":s, "

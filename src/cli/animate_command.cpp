@@ -85,7 +85,8 @@ talkface::WebPageOptions page_options(const AnimateOptions& options) {
     return page;
 }
 
-void run_animate(const AnimateOptions& options, const std::string& audio_path, const std::string& transcript_path) {
+void run_animate(const AnimateOptions& options, const std::string& audio_path,
+                 const TranscriptArgument& transcript) {
     std::string linked_url;
     if (options.audio == talkface::WebPageAudio::link) {
         // The page links the audio where it lies, relative to the page's folder.
@@ -93,18 +94,16 @@ void run_animate(const AnimateOptions& options, const std::string& audio_path, c
             std::filesystem::absolute(options.output_path).parent_path();
         linked_url = std::filesystem::relative(std::filesystem::absolute(audio_path), page_folder).generic_string();
     }
-    make_talking_face(options, audio_path, load_transcript_to_time(transcript_path), linked_url);
+    make_talking_face(options, audio_path, load_transcript_to_time(transcript), linked_url);
 }
 
 }  // namespace
 
-void add_speech_arguments(CLI::App& command, std::string& audio_path, std::string& transcript_path) {
+void add_speech_arguments(CLI::App& command, std::string& audio_path, TranscriptArgument& transcript) {
     command.add_option("AUDIO", audio_path, kSpeechFormatsHelp)
         ->required()
         ->check(CLI::ExistingFile);
-    command.add_option("TRANSCRIPT", transcript_path, "Its transcript, UTF-8 (as `talkface align` reads it)")
-        ->required()
-        ->check(CLI::ExistingFile);
+    add_transcript_argument(command, transcript, "Its transcript (as `talkface align` reads it)")->required();
 }
 
 void add_style_options(CLI::App& command, StyleOptions& options) {
@@ -258,13 +257,13 @@ void make_talking_face(const AnimateOptions& options, const std::string& audio_p
 void setup_animate_command(CLI::App& app) {
     auto options = std::make_shared<AnimateOptions>();
     auto audio_path = std::make_shared<std::string>();
-    auto transcript_path = std::make_shared<std::string>();
+    auto transcript = std::make_shared<TranscriptArgument>();
     CLI::App* animate = app.add_subcommand(
         "animate", "Make a web page where the face talks in sync with a speech (or the bare SVG animation)");
-    add_speech_arguments(*animate, *audio_path, *transcript_path);
+    add_speech_arguments(*animate, *audio_path, *transcript);
     add_page_options(*animate, *options);
     add_timing_option(*animate, options->timing);
-    animate->callback([options, audio_path, transcript_path] { run_animate(*options, *audio_path, *transcript_path); });
+    animate->callback([options, audio_path, transcript] { run_animate(*options, *audio_path, *transcript); });
 }
 
 }  // namespace talkface_cli

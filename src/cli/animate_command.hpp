@@ -22,8 +22,9 @@ struct StyleOptions {
     std::vector<std::string> without;  // event kinds not simulated
 };
 
-// Adds the AUDIO and TRANSCRIPT arguments (existing files) of the commands that animate a speech.
-void add_speech_arguments(CLI::App& command, std::string& audio_path, std::string& transcript_path);
+// Adds the AUDIO and TRANSCRIPT arguments (existing files) of the commands that animate a speech, and
+// the transcript's options.
+void add_speech_arguments(CLI::App& command, std::string& audio_path, TranscriptArgument& transcript);
 
 // Adds --style and --without to `command`.
 void add_style_options(CLI::App& command, StyleOptions& options);

@@ -21,7 +21,7 @@ namespace {
 
 struct ExportOptions {
     std::string audio_path;
-    std::string transcript_path;
+    TranscriptArgument transcript;
     std::string format;
     AnimateOptions animate;  // face, look, fps, seed, style, output, timing (and --lenient), quiet
 };
@@ -37,7 +37,7 @@ void run_export(const ExportOptions& options) {
     const std::string& output_path = options.animate.output_path;
     // The format is settled before the long work, so that a wrong suffix fails at once.
     const std::string format = options.format.empty() ? talkface::export_format_for_path(output_path) : options.format;
-    const talkface::Timeline transcript = load_transcript_to_time(options.transcript_path);
+    const talkface::Timeline transcript = load_transcript_to_time(options.transcript);
     TalkingFace talking;
     {
         const std::unique_ptr<ProgressBar> bar = make_progress_bar(options.animate.quiet);
@@ -81,9 +81,8 @@ void setup_export_command(CLI::App& app) {
     command->add_option("AUDIO", options->audio_path, kSpeechFormatsHelp)
         ->required()
         ->check(CLI::ExistingFile);
-    command->add_option("TRANSCRIPT", options->transcript_path, "Its transcript, UTF-8")
-        ->required()
-        ->check(CLI::ExistingFile);
+    add_transcript_argument(*command, options->transcript, "Its transcript (as `talkface align` reads it)")
+        ->required();
     command
         ->add_option("-o,--output", options->animate.output_path,
                      "Output file (- is stdout, with --format); its suffix picks the format: .tsv .xml .dat "

@@ -27,7 +27,7 @@ using Json = nlohmann::json;
 
 struct KeyframesOptions {
     std::string audio_path;
-    std::string transcript_path;
+    TranscriptArgument transcript;
     std::string timeline_path;
     SpeechTiming timing;
     std::uint64_t seed = 0;
@@ -139,14 +139,14 @@ std::vector<talkface::ExpressionEvent> read_events(const std::string& path) {
 
 talkface::Timeline timeline_for(const KeyframesOptions& options) {
     if (!options.timeline_path.empty()) return talkface::load_timeline_json(options.timeline_path);
-    const talkface::Timeline transcript = load_transcript_to_time(options.transcript_path);
+    const talkface::Timeline transcript = load_transcript_to_time(options.transcript);
     talkface::Timeline timeline = timed_speech(options.audio_path, transcript, options.timing);
     report_warnings(timeline);
     return timeline;
 }
 
 void run_keyframes(const KeyframesOptions& options) {
-    const bool has_audio_form = !options.audio_path.empty() && !options.transcript_path.empty();
+    const bool has_audio_form = !options.audio_path.empty() && !options.transcript.path.empty();
     if (has_audio_form == !options.timeline_path.empty()) {
         throw CLI::ValidationError("keyframes", "give either AUDIO TRANSCRIPT or --timeline TIMELINE.json");
     }
@@ -189,7 +189,7 @@ void setup_keyframes_command(CLI::App& app) {
         "keyframes", "Export the key frames (mouth shapes per time, blinks, brows, head moves) as JSON or TSV");
     keyframes->add_option("AUDIO", options->audio_path, kSpeechFormatsHelp)
         ->check(CLI::ExistingFile);
-    keyframes->add_option("TRANSCRIPT", options->transcript_path, "Its transcript, UTF-8")->check(CLI::ExistingFile);
+    add_transcript_argument(*keyframes, options->transcript, "Its transcript (as `talkface align` reads it)");
     keyframes
         ->add_option("--timeline", options->timeline_path,
                      "An aligned timeline (the timeline JSON of `talkface align --json`) instead of AUDIO TRANSCRIPT")

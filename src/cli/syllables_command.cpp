@@ -9,13 +9,14 @@
 
 #include "commands.hpp"
 #include "error_report.hpp"
+#include "transcript_option.hpp"
 
 namespace talkface_cli {
 
 namespace {
 
 struct SyllablesOptions {
-    std::string transcript_path;
+    TranscriptArgument transcript;
     bool json = false;
     bool no_pinyin_input = false;
 };
@@ -62,9 +63,9 @@ void print_plain(const talkface::Timeline& timeline) {
 }
 
 void run_syllables(const SyllablesOptions& options) {
-    talkface::TranscriptOptions transcript_options;
+    talkface::TranscriptOptions transcript_options = options.transcript.options;
     transcript_options.read_pinyin = !options.no_pinyin_input;
-    const auto timeline = talkface::load_transcript(options.transcript_path, transcript_options);
+    const auto timeline = talkface::load_transcript(options.transcript.path, transcript_options);
     if (options.json) {
         talkface::TimelineJsonOptions json_options;
         json_options.with_times = false;
@@ -81,12 +82,7 @@ void setup_syllables_command(CLI::App& app) {
     auto options = std::make_shared<SyllablesOptions>();
     CLI::App* syllables = app.add_subcommand(
         "syllables", "Show a transcript's sentences and each character's reading, to check before aligning");
-    syllables
-        ->add_option(
-            "TRANSCRIPT", options->transcript_path,
-            "UTF-8 text, Traditional or Simplified, or numbered pinyin; fix a reading in place: 行{hang2}")
-        ->required()
-        ->check(CLI::ExistingFile);
+    add_transcript_argument(*syllables, options->transcript, kTranscriptHelp)->required();
     syllables->add_flag("--json", options->json,
                         "Print the timeline JSON without times: {\"version\":1, \"sentences\":[{text}], "
                         "\"syllables\":[{text,pinyin,sentence,pause_after,generic_speech (only when true)}], "

@@ -22,8 +22,9 @@ void add_timing_option(CLI::App& command, SpeechTiming& timing) {
         ->check(CLI::ExistingFile);
 }
 
-talkface::Timeline load_transcript_to_time(const std::string& path) {
-    talkface::Timeline transcript = talkface::load_transcript(path);
+talkface::Timeline load_transcript_to_time(const TranscriptArgument& transcript_file) {
+    const std::string& path = transcript_file.path;
+    talkface::Timeline transcript = talkface::load_transcript(path, transcript_file.options);
     if (!transcript.syllables.empty()) return transcript;
     if (transcript.sentences.empty() && transcript.warnings.empty())
         throw talkface::InvalidArgument(path, "no text to align: the transcript holds no sentence");

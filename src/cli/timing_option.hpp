@@ -10,6 +10,8 @@
 #include <CLI/CLI.hpp>
 #include <talkface/talkface.hpp>
 
+#include "transcript_option.hpp"
+
 namespace talkface_cli {
 
 // How a command times its speech.
@@ -25,9 +27,9 @@ void add_timing_option(CLI::App& command, SpeechTiming& timing);
 void add_lenient_option(CLI::App& command, bool& lenient);
 
 // The transcript of a command that times it (talkface::load_transcript). Throws
-// talkface::InvalidArgument naming `path` for a transcript with no syllable to time (an empty file,
+// talkface::InvalidArgument naming its path for a transcript with no syllable to time (an empty file,
 // only punctuation or symbols), with the first thing the reader skipped, before any audio is read.
-talkface::Timeline load_transcript_to_time(const std::string& path);
+talkface::Timeline load_transcript_to_time(const TranscriptArgument& transcript_file);
 
 // The transcript spoken in `audio_path`: timed by the --timing file when there is one
 // (talkface::time_transcript: subtitle cues pin the aligner, lenient with --lenient), else aligned

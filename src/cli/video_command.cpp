@@ -167,13 +167,13 @@ bool is_video_output(const std::string& path) {
 void setup_video_command(CLI::App& app) {
     auto options = std::make_shared<VideoCommandOptions>();
     auto audio_path = std::make_shared<std::string>();
-    auto transcript_path = std::make_shared<std::string>();
+    auto transcript = std::make_shared<TranscriptArgument>();
     CLI::App* video = app.add_subcommand(
         "video", "Make a video of the face talking in sync with a speech (MP4, WebM, animated WebP or GIF, or PNG frames)");
-    add_speech_arguments(*video, *audio_path, *transcript_path);
+    add_speech_arguments(*video, *audio_path, *transcript);
     add_video_options(*video, *options);
-    video->callback([options, audio_path, transcript_path] {
-        make_video(*options, *audio_path, load_transcript_to_time(*transcript_path));
+    video->callback([options, audio_path, transcript] {
+        make_video(*options, *audio_path, load_transcript_to_time(*transcript));
     });
 }
 

@@ -24,8 +24,40 @@ void append_utf8(std::string& out, std::uint32_t code) {
     }
 }
 
+namespace {
+
+// UTF-32 with its byte order mark (FF FE 00 00 or 00 00 FE FF): 4-byte units, each a code point.
+std::string utf8_from_utf32(std::string_view text, bool is_big_endian, const std::string& source) {
+    if (text.size() % 4 != 0) {
+        throw ParseError(
+            source, 0, 0, "",
+            "not UTF-32: " + std::to_string(text.size()) +
+                " bytes (the byte order mark's 4 included) is not a whole number of 32-bit units; "
+                "was the file cut short?");
+    }
+    std::string out;
+    for (std::size_t k = 4; k + 3 < text.size(); k += 4) {
+        std::uint32_t code = 0;
+        for (std::size_t b = 0; b < 4; ++b) {
+            const auto byte = static_cast<unsigned char>(text[k + (is_big_endian ? b : 3 - b)]);
+            code = code << 8 | byte;
+        }
+        if (code > 0x10FFFF || (code >= 0xD800 && code < 0xE000)) {
+            throw ParseError(source, 0, 0, "byte offset " + std::to_string(k),
+                             "not UTF-32: " + std::to_string(code) + " is not a Unicode character");
+        }
+        append_utf8(out, code);
+    }
+    return out;
+}
+
+}  // namespace
+
 std::string utf8_from_marked_text(std::string_view text, const std::string& source) {
     if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") return std::string(text.substr(3));
+    // UTF-32 LE's mark starts as UTF-16 LE's does: it is told first.
+    if (text.substr(0, 4) == std::string_view("\xFF\xFE\0\0", 4)) return utf8_from_utf32(text, false, source);
+    if (text.substr(0, 4) == std::string_view("\0\0\xFE\xFF", 4)) return utf8_from_utf32(text, true, source);
     const bool is_big_endian = text.size() >= 2 && text[0] == '\xFE' && text[1] == '\xFF';
     const bool is_little_endian = text.size() >= 2 && text[0] == '\xFF' && text[1] == '\xFE';
     if (!is_big_endian && !is_little_endian) return std::string(text);

@@ -5,10 +5,10 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
 #include <optional>
 #include <vector>
 
-#include "common/atomic_file.hpp"
 #include "common/internal_error.hpp"
 #include "talkface/errors.hpp"
 #include "text/aspect_particle.hpp"
@@ -17,7 +17,9 @@
 #include "text/number_words.hpp"
 #include "text/reading_tables.hpp"
 #include "text/return_verb.hpp"
+#include "text/script_marks.hpp"
 #include "text/script_variant.hpp"
+#include "text/transcript_cut.hpp"
 #include "text/web_addresses.hpp"
 #include "text/word_segmentation.hpp"
 #include "text/written_number_scan.hpp"
@@ -352,17 +354,80 @@ public:
     TranscriptReader(const TranscriptOptions& options, const std::string& source_name)
         : options_(options), source_name_(source_name), tables_(detail::reading_tables()) {}
 
-    Timeline read(const std::vector<CodePoint>& written) {
+    // `lines_ending_sentences`: lines after which a sentence ends whatever its marks (a subtitle's
+    // cues). With them, the lines between are the file's other lines blanked, no paragraph's end.
+    Timeline read(const std::vector<CodePoint>& written,
+                  const std::optional<std::vector<int>>& lines_ending_sentences = {}) {
         const auto text = width_folded(written);
         is_traditional_ = detail::is_traditional_text(text);
         has_han_ = std::any_of(text.begin(), text.end(),
                                [&](const CodePoint& c) { return tables_.has_readings(c.text); });
-        for (std::size_t i = 0; i < text.size();) i = read_item(text, i);
+        const auto marks =
+            options_.keep_directions ? std::vector<detail::ScriptMark>() : detail::find_script_marks(text);
+        warn_script_marks(text, marks);
+        auto mark = marks.begin();
+        int last_line = 0;  // of the last code point that is not a space
+        for (std::size_t i = 0; i < text.size();) {
+            if (lines_ending_sentences && text[i].value == '\n' &&
+                pending_space_.find('\n') != std::string::npos) {
+                ++i;
+                continue;
+            }
+            const bool starts_line = !is_space(text[i].value) && text[i].line != last_line;
+            if (starts_line && lines_ending_sentences &&
+                std::binary_search(lines_ending_sentences->begin(), lines_ending_sentences->end(),
+                                   last_line)) {
+                break_sentence();
+            }
+            if (!is_space(text[i].value)) last_line = text[i].line;
+            while (mark != marks.end() && mark->begin < i) ++mark;
+            if (mark != marks.end() && mark->begin == i) {
+                // A new speaker starts a new sentence, as a line break alone does not.
+                if (mark->is_label) break_sentence();
+                i = mark->end;
+                continue;
+            }
+            i = read_item(text, i);
+        }
         close_sentence();
         return std::move(timeline_);
     }
 
 private:
+    // Each stage direction left out, and each speaker's label once, with how many lines it starts.
+    void warn_script_marks(const std::vector<CodePoint>& text, const std::vector<detail::ScriptMark>& marks) {
+        constexpr const char* kKeep =
+            "; left out (TranscriptOptions::keep_directions, --keep-directions, keeps it)";
+        const auto written = [&](const detail::ScriptMark& mark) {
+            auto out = written_text(text, mark.begin, mark.end);
+            while (!out.empty() && out.back() == ' ') out.pop_back();
+            return out;
+        };
+        std::map<std::string, std::size_t> label_lines;
+        for (const auto& mark : marks) {
+            if (mark.is_label) ++label_lines[written(mark)];
+        }
+        for (const auto& mark : marks) {
+            const auto name = written(mark);
+            if (!mark.is_label) {
+                warn(text[mark.begin], "\"" + name + "\" is a stage direction, not said" + kKeep);
+                continue;
+            }
+            auto& lines = label_lines[name];
+            if (lines == 0) continue;  // warned at its first line
+            warn(text[mark.begin], "\"" + name + "\" is a speaker's label (" + std::to_string(lines) +
+                                       (lines == 1 ? " line" : " lines") + "), not said" + kKeep);
+            lines = 0;
+        }
+    }
+
+    // Ends the sentence here; a blank line before what follows still starts a paragraph.
+    void break_sentence() {
+        const auto space = pending_space_;
+        close_sentence();
+        pending_space_ = space;
+    }
+
     // Reads the item starting at text[i]; returns where the next one starts.
     std::size_t read_item(const std::vector<CodePoint>& text, std::size_t i) {
         const auto& c = text[i];
@@ -1016,10 +1081,6 @@ Timeline read_transcript(std::string_view utf8_text, const TranscriptOptions& op
     return TranscriptReader(options, source_name).read(code_points);
 }
 
-Timeline load_transcript(const std::string& path, const TranscriptOptions& options) {
-    return read_transcript(detail::read_file(path), options, path);
-}
-
 bool is_valid_pinyin(std::string_view syllable) {
     return !syllable.empty() && syllable.back() >= '1' && syllable.back() <= '5' &&
            detail::normalise_pinyin(syllable) == syllable;
@@ -1027,3 +1088,13 @@ bool is_valid_pinyin(std::string_view syllable) {
 
 }  // namespace v0
 }  // namespace talkface
+
+namespace talkface::detail {
+
+Timeline read_transcript_cut(std::string_view utf8_text, const TranscriptOptions& options,
+                             const std::string& source_name, const std::vector<int>& lines_ending_sentences) {
+    return TranscriptReader(options, source_name)
+        .read(decode_utf8(utf8_text, source_name), lines_ending_sentences);
+}
+
+}  // namespace talkface::detail

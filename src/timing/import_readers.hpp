@@ -20,6 +20,14 @@ std::string read_timing_text(const std::string& path);
 // else the only interval tier. \throws ParseError naming source:line and what was expected.
 std::vector<TimedUnit> read_textgrid_units(std::string_view text, const std::string& source);
 
+// What a TextGrid given as a transcript is read from: the intervals of its "sentences" tier
+// (is_sentences), else those read_textgrid_units reads. \throws as read_textgrid_units.
+struct TextGridText {
+    std::vector<TimedUnit> intervals;
+    bool is_sentences = false;
+};
+TextGridText read_textgrid_text_units(std::string_view text, const std::string& source);
+
 // SubRip cues. \throws ParseError naming source:line and what was expected.
 std::vector<TimedUnit> read_subrip_units(std::string_view text, const std::string& source);
 

@@ -210,7 +210,9 @@ struct Tier {
 
 }  // namespace
 
-std::vector<TimedUnit> read_textgrid_units(std::string_view text, const std::string& source) {
+namespace {
+
+std::vector<Tier> read_tiers(std::string_view text, const std::string& source) {
     TokenReader reader(praat_tokens(utf8_from_marked_text(text, source), source), source);
     if (reader.string("File type = \"ooTextFile\"").text != "ooTextFile") reader.fail("File type = \"ooTextFile\"");
     const Token& object_class = reader.string("Object class = \"TextGrid\"");
@@ -251,29 +253,48 @@ std::vector<TimedUnit> read_textgrid_units(std::string_view text, const std::str
         }
         tiers.push_back(std::move(tier));
     }
-    std::string names;
-    const Tier* chosen = nullptr;
-    std::size_t interval_tiers = 0;
-    for (const char* wanted : {"syllables", "words"}) {
-        for (const Tier& tier : tiers) {
-            if (chosen == nullptr && tier.is_interval && tier.name == wanted) chosen = &tier;
-        }
+    return tiers;
+}
+
+const Tier* tier_named(const std::vector<Tier>& tiers, const char* name) {
+    for (const Tier& tier : tiers) {
+        if (tier.is_interval && tier.name == name) return &tier;
     }
+    return nullptr;
+}
+
+const Tier& syllables_or_words(const std::vector<Tier>& tiers, const std::string& source) {
+    for (const char* wanted : {"syllables", "words"}) {
+        if (const Tier* tier = tier_named(tiers, wanted)) return *tier;
+    }
+    std::string names;
+    const Tier* only = nullptr;
+    std::size_t interval_tiers = 0;
     for (const Tier& tier : tiers) {
         names += (names.empty() ? "\"" : ", \"") + tier.name + "\"";
-        if (tier.is_interval) ++interval_tiers;
-    }
-    if (chosen == nullptr && interval_tiers == 1) {
-        for (const Tier& tier : tiers) {
-            if (tier.is_interval) chosen = &tier;
+        if (tier.is_interval) {
+            ++interval_tiers;
+            only = &tier;
         }
     }
-    if (chosen == nullptr) {
+    if (interval_tiers != 1) {
         throw ParseError(source, 0, 0, "",
                          "expected an interval tier named \"syllables\" or \"words\" (or only one interval tier), "
                          "found " + (names.empty() ? std::string("no tiers") : "tiers " + names));
     }
-    return chosen->intervals;
+    return *only;
+}
+
+}  // namespace
+
+std::vector<TimedUnit> read_textgrid_units(std::string_view text, const std::string& source) {
+    return syllables_or_words(read_tiers(text, source), source).intervals;
+}
+
+TextGridText read_textgrid_text_units(std::string_view text, const std::string& source) {
+    const auto tiers = read_tiers(text, source);
+    if (const Tier* sentences = tier_named(tiers, "sentences")) return {sentences->intervals, true};
+    return {syllables_or_words(tiers, source).intervals, false};
 }
 
 }  // namespace talkface::detail

@@ -9,7 +9,9 @@
 
 #include "common/number_format.hpp"
 #include "talkface/errors.hpp"
+#include "text/code_points.hpp"
 #include "text/reading_tables.hpp"
+#include "text/script_marks.hpp"
 #include "timing/timed_units.hpp"
 
 namespace talkface::detail {
@@ -182,14 +184,51 @@ void check_unit_times(const std::vector<TimedUnit>& units, double duration_s, co
     }
 }
 
-std::vector<std::pair<std::size_t, std::size_t>> unit_syllable_ranges(const Timeline& transcript,
-                                                                      const std::vector<TimedUnit>& units,
-                                                                      const std::string& source) {
+namespace {
+
+std::vector<std::pair<std::size_t, std::size_t>> matched_ranges(const Timeline& transcript,
+                                                                const std::vector<TimedUnit>& units,
+                                                                const std::string& source) {
     Matcher matcher(transcript, source);
     std::vector<std::pair<std::size_t, std::size_t>> ranges;
     for (const TimedUnit& unit : units) ranges.push_back(matcher.match(unit));
     matcher.finish(units.empty() ? nullptr : &units.back());
     return ranges;
+}
+
+// `text` without the stage directions the transcript reader leaves out (script_marks.hpp).
+std::string without_directions(const std::string& text) {
+    auto code_points = decode_utf8(text, "<timing>");
+    for (CodePoint& c : code_points) c.value = ascii_form(c.value);
+    std::string out;
+    std::size_t at = 0;
+    for (const ScriptMark& mark : find_script_marks(code_points)) {
+        if (mark.is_label) continue;
+        for (; at < mark.begin; ++at) out += code_points[at].text;
+        at = mark.end;
+    }
+    for (; at < code_points.size(); ++at) out += code_points[at].text;
+    return out;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::size_t, std::size_t>> unit_syllable_ranges(const Timeline& transcript,
+                                                                      const std::vector<TimedUnit>& units,
+                                                                      const std::string& source) {
+    try {
+        return matched_ranges(transcript, units, source);
+    } catch (const ParseError&) {
+        // A transcript read from the same subtitles left their stage directions out, 笑 of （笑）
+        // is no syllable of it: matched again without them, the first error stands if that fails too.
+        std::vector<TimedUnit> unsaid = units;
+        for (TimedUnit& unit : unsaid) unit.text = without_directions(unit.text);
+        try {
+            return matched_ranges(transcript, unsaid, source);
+        } catch (const ParseError&) {
+        }
+        throw;
+    }
 }
 
 Timeline match_timed_units(const Timeline& transcript, const std::vector<TimedUnit>& units, double duration_s,

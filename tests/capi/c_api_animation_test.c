@@ -177,6 +177,32 @@ static int test_transcript_errors_name_where(void) {
     return failures;
 }
 
+/* A Chinese Windows user's file (GB18030, 你好。) is refused naming its encoding, and read once it is named.
+ */
+static int test_a_legacy_encoding_is_named_or_refused(void) {
+    int failures = 0;
+    tf_timeline* timeline = NULL;
+    const char* path = TF_TEST_OUTPUT_DIR "/gb18030_transcript.txt";
+    FILE* file = fopen(path, "wb");
+    const char* pinyin = NULL;
+    size_t count = 0;
+    CHECK(file != NULL);
+    if (file == NULL) return failures;
+    fputs("\xc4\xe3\xba\xc3\xa1\xa3", file);
+    fclose(file);
+    CHECK_FAILS_WITH(tf_load_transcript(path, &timeline), TF_ERR_PARSE, "it reads as gb18030");
+    CHECK(timeline == NULL);
+    CHECK_FAILS_WITH(tf_load_transcript_with(path, "klingon", 0, &timeline), TF_ERR_INVALID_ARGUMENT,
+                     "encoding");
+    CHECK_OK(tf_load_transcript_with(path, "gb18030", 0, &timeline));
+    CHECK_OK(tf_timeline_syllable_count(timeline, &count));
+    CHECK(count == 2);
+    CHECK_OK(tf_timeline_syllable(timeline, 0, NULL, &pinyin, NULL));
+    CHECK(pinyin != NULL && strcmp(pinyin, "ni3") == 0);
+    tf_timeline_destroy(timeline);
+    return failures;
+}
+
 static int test_built_timeline_reads_back_and_writes_align_json(void) {
     int failures = 0;
     tf_timeline *timeline = new_spoken_timeline();
@@ -819,6 +845,7 @@ int main(void) {
     failures += test_an_address_is_one_written_form();
     failures += test_full_width_letters_are_read_as_ascii_letters();
     failures += test_transcript_errors_name_where();
+    failures += test_a_legacy_encoding_is_named_or_refused();
     failures += test_paragraphs_of_the_transcript_are_kept();
     failures += test_a_word_no_table_reads_is_generic_speech();
     failures += test_built_timeline_reads_back_and_writes_align_json();

@@ -104,7 +104,48 @@ def test_invalid_utf8_fails_naming_the_byte_offset(tmp_path):
     result = run("syllables", write(tmp_path, b"ab\n\xe4\xbd\xa0\xff"), "--json")
     assert result.returncode == 1
     assert result.stdout == ""
-    assert "transcript.txt:2:2: byte offset 6: invalid UTF-8" in result.stderr
+    assert "transcript.txt:2:2: byte offset 6: not UTF-8 (the byte 0xFF starts no character)" in result.stderr
+
+
+def test_a_gbk_or_big5_file_is_refused_naming_its_encoding_and_read_when_named(tmp_path):
+    for text, encoding in [("长期下来，伤害不断累积。", "gb18030"), ("長期下來，傷害不斷累積。", "big5")]:
+        path = write(tmp_path, text.encode(encoding), f"{encoding}.txt")
+        refused = run("syllables", path)
+        assert refused.returncode == 1
+        assert f"it reads as {encoding} (" in refused.stderr and f'"{text}"' in refused.stderr
+        assert f"--transcript-encoding {encoding}" in refused.stderr
+        read = run("syllables", path, "--transcript-encoding", encoding, "--json")
+        assert read.returncode == 0, read.stderr
+        assert json.loads(read.stdout)["sentences"] == [{"text": text}]
+    assert "is not an encoding" in run("syllables", path, "--transcript-encoding", "klingon").stderr
+
+
+def test_notepad_unicode_files_are_read(tmp_path):
+    for codec in ["utf-16", "utf-16-be", "utf-32"]:
+        data = "你好。".encode(codec)
+        if codec == "utf-16-be":
+            data = b"\xfe\xff" + data
+        result = run("syllables", write(tmp_path, data, f"{codec}.txt"), "--json")
+        assert result.returncode == 0, result.stderr
+        assert json.loads(result.stdout)["sentences"] == [{"text": "你好。"}]
+
+
+def test_subtitles_as_the_transcript_give_their_text_not_their_numbers_and_times(tmp_path):
+    srt = "1\n00:00:01,000 --> 00:00:02,000\n<i>大家好</i>\n\n2\n00:00:02,500 --> 00:00:04,000\n{\\an8}欢迎收看\n"
+    document = json.loads(run("syllables", write(tmp_path, srt, "subs.srt"), "--json").stdout)
+    assert document["sentences"] == [{"text": "大家好"}, {"text": "欢迎收看"}]
+    assert "".join(s["text"] for s in document["syllables"]) == "大家好欢迎收看"
+
+
+def test_a_scripts_directions_and_labels_are_left_out_with_warnings_unless_kept(tmp_path):
+    path = write(tmp_path, "主持人：大家好（笑）\n嘉宾：[掌声] 你好\n主持人：欢迎。\n")
+    result = run("syllables", path, "--json")
+    document = json.loads(result.stdout)
+    assert "".join(s["text"] for s in document["syllables"]) == "大家好你好欢迎"
+    assert len(document["sentences"]) == 3
+    assert any('"主持人：" is a speaker\'s label (2 lines)' in w for w in document["warnings"])
+    kept = json.loads(run("syllables", path, "--json", "--keep-directions").stdout)
+    assert "".join(s["text"] for s in kept["syllables"]) == "主持人大家好笑嘉宾掌声你好主持人欢迎"
 
 
 def test_an_invalid_reading_fix_fails_naming_it(tmp_path):

@@ -156,6 +156,28 @@ def test_load_transcript_reads_a_file_and_names_a_missing_one(tmp_path):
     assert caught.value.filename == str(tmp_path / "missing.txt")
 
 
+def test_load_transcript_reads_a_named_encoding_and_refuses_a_guess(tmp_path):
+    path = tmp_path / "big5.txt"
+    path.write_bytes("銀行很好。".encode("big5"))
+    with pytest.raises(talkface.ParseError, match="it reads as big5"):
+        talkface.load_transcript(path)
+    assert "".join(s.text for s in talkface.load_transcript(path, encoding="big5").syllables) == "銀行很好"
+    with pytest.raises(talkface.InvalidArgument, match="encoding"):
+        talkface.load_transcript(path, encoding="klingon")
+
+
+def test_subtitles_and_directions(tmp_path):
+    path = tmp_path / "subs.srt"
+    path.write_text("1\n00:00:01,000 --> 00:00:02,000\n大家好（笑）\n\n2\n00:00:02,500 --> 00:00:03,000\n再见\n",
+                    encoding="utf-8")
+    timeline = talkface.load_transcript(path)
+    assert [s.text for s in timeline.sentences] == ["大家好", "再见"]
+    assert "stage direction" in timeline.warnings[0]
+    kept = talkface.load_transcript(path, keep_directions=True)
+    assert "".join(s.text for s in kept.syllables) == "大家好笑再见"
+    assert len(talkface.read_transcript("A：你好\nB：你好\n", keep_directions=True).syllables) == 6
+
+
 def test_is_valid_pinyin_and_syllable_mouth_shapes():
     assert talkface.is_valid_pinyin("hang2")
     assert not talkface.is_valid_pinyin("hxng2")

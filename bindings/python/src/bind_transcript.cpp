@@ -6,9 +6,12 @@ namespace talkface::python {
 
 namespace {
 
-TranscriptOptions transcript_options(bool read_pinyin) {
+TranscriptOptions transcript_options(bool read_pinyin, bool keep_directions,
+                                     const std::string& encoding = "") {
     TranscriptOptions options;
     options.read_pinyin = read_pinyin;
+    options.keep_directions = keep_directions;
+    options.encoding = encoding;
     return options;
 }
 
@@ -244,23 +247,27 @@ Example:
 
     m.def(
         "read_transcript",
-        [](std::string_view text, const std::string& source_name, bool read_pinyin) {
+        [](std::string_view text, const std::string& source_name, bool read_pinyin, bool keep_directions) {
             py::gil_scoped_release release;
-            return read_transcript(text, transcript_options(read_pinyin), source_name);
+            return read_transcript(text, transcript_options(read_pinyin, keep_directions), source_name);
         },
-        py::arg("text"), py::arg("source_name") = "<transcript>", py::arg("read_pinyin") = true, R"doc(
+        py::arg("text"), py::arg("source_name") = "<transcript>", py::arg("read_pinyin") = true,
+        py::arg("keep_directions") = false, R"doc(
 Reads a transcript (Traditional or Simplified characters, or numbered pinyin) into sentences and
 syllables, times all 0. Sentences end at 。！？；… and . ! ? ;. A polyphonic character is read by the
 built-in phrase table; fix a reading in place: 行{hang2}. Written forms are read as a native reader
 says them (2026年 二零二六年, 85% 百分之八十五, AI ei ai, iPhone ai feng; docs/written-forms.md), each
 kept in Timeline.written_forms; fix one in place: 2026{两千零二十六}. Characters without a reading
-are skipped and reported in Timeline.warnings ("source:line:column: ...").
+are skipped and reported in Timeline.warnings ("source:line:column: ..."). A script's stage
+directions (a bracket of sounds and actions: （笑） [掌声] 【音乐】) and, in a dialogue, its speaker
+labels at line starts (主持人： A:) are not said: left out with a warning (docs/transcripts.md).
 
 Args:
     text (str): the transcript.
     source_name (str): names the text in messages.
     read_pinyin (bool): read runs of Latin letters that spell Mandarin syllables as syllables
         (otherwise as letters or English words).
+    keep_directions (bool): read stage directions and speaker labels as text.
 
 Raises:
     talkface.ParseError: a reading fix that is not Mandarin (行{hxng2}, 5{★}), an unclosed "{"
@@ -273,17 +280,34 @@ Example:
 )doc");
     m.def(
         "load_transcript",
-        [](const std::filesystem::path& path, bool read_pinyin) {
+        [](const std::filesystem::path& path, bool read_pinyin, const std::string& encoding,
+           bool keep_directions) {
             const std::string transcript_path = path.string();
             py::gil_scoped_release release;
-            return load_transcript(transcript_path, transcript_options(read_pinyin));
+            return load_transcript(transcript_path,
+                                   transcript_options(read_pinyin, keep_directions, encoding));
         },
-        py::arg("path"), py::arg("read_pinyin") = true, R"doc(
-Reads a UTF-8 transcript file as read_transcript() does; messages name the path.
+        py::arg("path"), py::arg("read_pinyin") = true, py::arg("encoding") = "",
+        py::arg("keep_directions") = false,
+        R"doc(
+Reads a transcript file as read_transcript() does; messages name the path. The file is UTF-8,
+UTF-16 or UTF-32 with a byte order mark, or in `encoding`; or SRT or WebVTT subtitles or a Praat
+TextGrid, whose text is read: a sentence per cue (unless its text runs on, ending in ， or :), cue
+numbers, times and markup dropped (docs/transcripts.md).
+
+Args:
+    path (str | os.PathLike): the file.
+    read_pinyin (bool): as read_transcript().
+    encoding (str): the file's encoding when it has no byte order mark, a name iconv knows:
+        "gb18030" (GBK), "big5", "big5-hkscs", "utf-16le", ...; "" means UTF-8.
+    keep_directions (bool): as read_transcript().
 
 Raises:
     talkface.FileError: the file cannot be read (also an OSError).
-    talkface.ParseError: as read_transcript().
+    talkface.InvalidArgument: an encoding iconv does not know.
+    talkface.ParseError: as read_transcript(); bytes not in the encoding (not UTF-8: the message
+        names the encodings that read them as Chinese, GB18030, Big5 or UTF-16); a malformed
+        subtitle or TextGrid.
 
 Example:
     >>> timeline = talkface.load_transcript("story.txt")

@@ -1,0 +1,197 @@
+#include "text/script_marks.hpp"
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace talkface::detail {
+
+namespace {
+
+// Sounds and actions that subtitles, interview transcripts and scripts write in brackets, in
+// Simplified and Traditional characters, and English's.
+constexpr std::string_view kDirectionWords[] = {
+    "笑",     "大笑",     "微笑",     "苦笑",     "冷笑",      "偷笑",      "笑声",    "笑聲",   "哄笑",
+    "掌声",   "掌聲",     "鼓掌",     "拍手",     "欢呼",      "歡呼",      "欢呼声",  "歡呼聲", "尖叫",
+    "口哨",   "音乐",     "音樂",     "背景音乐", "背景音樂",  "配乐",      "配樂",    "音效",   "歌声",
+    "歌聲",   "唱",       "哼唱",     "叹气",     "嘆氣",      "歎氣",      "叹息",    "嘆息",   "咳嗽",
+    "清嗓子", "哭",       "哭泣",     "哭声",     "哭聲",      "抽泣",      "哽咽",    "停顿",   "停頓",
+    "沉默",   "静默",     "靜默",     "喘气",     "喘氣",      "喘息",      "吸气",    "吸氣",   "呼吸",
+    "杂音",   "雜音",     "噪音",     "听不清",   "聽不清",    "画外音",    "畫外音",  "旁白",   "独白",
+    "獨白",   "内心独白", "內心獨白", "铃声",     "鈴聲",      "敲门声",    "敲門聲",  "片头",   "片頭",
+    "片尾",   "转场",     "轉場",     "点头",     "點頭",      "摇头",      "搖頭",    "鞠躬",   "laughter",
+    "laughs", "laughing", "laugh",    "applause", "clapping",  "cheering",  "cheers",  "music",  "singing",
+    "sighs",  "sigh",     "coughs",   "cough",    "inaudible", "crosstalk", "silence", "pause",  "noise"};
+
+// Who makes the sound, before it; how it goes on, after it: 众人笑 全场鼓掌 掌声响起.
+constexpr std::string_view kDirectionModifiers[] = {
+    "众",   "眾",   "众人", "眾人", "全场", "全場", "观众", "觀眾",       "现场",     "現場", "大家", "轻",
+    "輕",   "轻轻", "輕輕", "低声", "低聲", "热烈", "熱烈", "起",         "响起",     "響起", "声",   "聲",
+    "不断", "不斷", "渐弱", "漸弱", "渐起", "漸起", "停",   "background", "audience", "soft", "loud"};
+
+constexpr std::size_t kLongestDirection = 16;  // code points between the brackets
+constexpr std::size_t kLongestLabel = 8;       // code points before the colon
+
+char32_t closing_bracket(char32_t open) {
+    switch (open) {
+        case '(':
+            return ')';
+        case '[':
+            return ']';
+        case 0x3010:
+            return 0x3011;  // 【】
+        case 0x3014:
+            return 0x3015;  // 〔〕
+        case 0x3016:
+            return 0x3017;  // 〖〗
+        default:
+            return 0;
+    }
+}
+
+bool is_direction_separator(char32_t c) {
+    return c == ' ' || c == 0x3000 || c == 0x3001 /*、*/ || c == ',' || c == '/' || c == '&';
+}
+
+// Whether `piece` (lowercase) is direction words and modifiers, one word of the first kind at least.
+bool is_direction_piece(std::string_view piece) {
+    // best[k]: piece[0, k) is cut into listed words; whether one of them is a sound or action.
+    std::vector<int> best(piece.size() + 1, -1);
+    best[0] = 0;
+    for (std::size_t k = 0; k < piece.size(); ++k) {
+        if (best[k] < 0) continue;
+        for (const auto& list :
+             {std::make_pair(std::begin(kDirectionWords), std::end(kDirectionWords)),
+              std::make_pair(std::begin(kDirectionModifiers), std::end(kDirectionModifiers))}) {
+            const int found = list.first == std::begin(kDirectionWords) ? 1 : 0;
+            for (auto word = list.first; word != list.second; ++word) {
+                if (piece.compare(k, word->size(), *word) == 0)
+                    best[k + word->size()] = std::max(best[k + word->size()], best[k] | found);
+            }
+        }
+    }
+    return best[piece.size()] == 1;
+}
+
+bool is_direction(const std::vector<CodePoint>& text, std::size_t open, std::size_t close) {
+    std::string piece;
+    bool has_piece = false;
+    for (std::size_t k = open + 1; k <= close; ++k) {
+        const char32_t c = text[k].value;
+        if (k == close || is_direction_separator(c)) {
+            if (!piece.empty()) {
+                if (!is_direction_piece(piece)) return false;
+                has_piece = true;
+            }
+            piece.clear();
+            continue;
+        }
+        if (c < 0x80) {
+            piece += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+        } else {
+            piece += text[k].text;
+        }
+    }
+    return has_piece;
+}
+
+void add_directions(const std::vector<CodePoint>& text, std::vector<ScriptMark>& marks) {
+    for (std::size_t open = 0; open < text.size(); ++open) {
+        const char32_t closing = closing_bracket(text[open].value);
+        if (closing == 0) continue;
+        for (std::size_t k = open + 1; k < text.size() && k <= open + kLongestDirection + 1; ++k) {
+            if (text[k].value == '\n' || closing_bracket(text[k].value) != 0) break;
+            if (text[k].value != closing) continue;
+            if (is_direction(text, open, k)) {
+                marks.push_back({open, k + 1, false});
+                open = k;
+            }
+            break;
+        }
+    }
+}
+
+bool is_label_character(char32_t c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == ' ' ||
+           c == '_' || c == '-' || c == 0xB7 /*·*/ || (c >= 0x3400 && c <= 0x9FFF);
+}
+
+// A verb of saying at a name's end makes it a sentence's start (他说：), not a name.
+bool ends_with_saying(std::string_view name) {
+    for (std::string_view verb :
+         {"说", "說", "道", "讲", "講", "称", "稱", "曰", "表示", "指出", "认为", "認為", "强调", "強調"}) {
+        if (name.size() >= verb.size() && name.compare(name.size() - verb.size(), verb.size(), verb) == 0)
+            return true;
+    }
+    return false;
+}
+
+struct Label {
+    std::string name;
+    ScriptMark mark;
+};
+
+// The label that starts the line at text[start], if it has one.
+std::optional<Label> label_at(const std::vector<CodePoint>& text, std::size_t start) {
+    std::size_t k = start;
+    std::string name;
+    bool has_letter = false;
+    while (k < text.size() && k - start <= kLongestLabel && is_label_character(text[k].value)) {
+        has_letter = has_letter || (!(text[k].value >= '0' && text[k].value <= '9') && text[k].value != ' ');
+        name += text[k].text;
+        ++k;
+    }
+    if (k == start || k - start > kLongestLabel || k >= text.size() || text[k].value != ':')
+        return std::nullopt;
+    if (!has_letter || text[k - 1].value == ' ' || ends_with_saying(name)) return std::nullopt;
+    // A clock time's colon (10:30) or a ratio's is no label's.
+    if (text[k - 1].value >= '0' && text[k - 1].value <= '9' && k + 1 < text.size() &&
+        text[k + 1].value >= '0' && text[k + 1].value <= '9') {
+        return std::nullopt;
+    }
+    auto end = k + 1;
+    while (end < text.size() &&
+           (text[end].value == ' ' || text[end].value == 0x3000 || text[end].value == '\t'))
+        ++end;
+    return Label{name, {start, end, true}};
+}
+
+void add_labels(const std::vector<CodePoint>& text, std::vector<ScriptMark>& marks) {
+    std::vector<Label> labels;
+    std::size_t lines = 0;
+    for (std::size_t k = 0; k < text.size();) {
+        auto start = k;
+        while (start < text.size() &&
+               (text[start].value == ' ' || text[start].value == 0x3000 || text[start].value == '\t'))
+            ++start;
+        auto end = start;
+        while (end < text.size() && text[end].value != '\n') ++end;
+        if (end > start && text[start].value != '\r') {
+            ++lines;
+            if (auto label = label_at(text, start)) labels.push_back(std::move(*label));
+        }
+        k = end + 1;
+    }
+    if (labels.size() < 2) return;
+    std::map<std::string, std::size_t> counts;
+    for (const Label& label : labels) ++counts[label.name];
+    const bool repeats =
+        std::any_of(counts.begin(), counts.end(), [](const auto& entry) { return entry.second >= 2; });
+    if (!repeats && labels.size() * 2 < lines) return;
+    for (const Label& label : labels) marks.push_back(label.mark);
+}
+
+}  // namespace
+
+std::vector<ScriptMark> find_script_marks(const std::vector<CodePoint>& text) {
+    std::vector<ScriptMark> marks;
+    add_labels(text, marks);
+    add_directions(text, marks);
+    std::sort(marks.begin(), marks.end(),
+              [](const ScriptMark& a, const ScriptMark& b) { return a.begin < b.begin; });
+    return marks;
+}
+
+}  // namespace talkface::detail

@@ -1,0 +1,36 @@
+// What a script writes that nobody says: stage directions in brackets （笑） [掌声] 【音乐】 and the
+// speaker labels a dialogue starts its lines with (主持人： A: 小明：). The transcript reader leaves
+// them out with a warning, unless TranscriptOptions::keep_directions.
+#ifndef TALKFACE_TEXT_SCRIPT_MARKS_HPP
+#define TALKFACE_TEXT_SCRIPT_MARKS_HPP
+
+#include <cstddef>
+#include <vector>
+
+#include "text/code_points.hpp"
+
+namespace talkface::detail {
+
+// text[begin, end): a stage direction with its brackets, or a speaker label with its colon and
+// the spaces after it.
+struct ScriptMark {
+    std::size_t begin = 0;
+    std::size_t end = 0;
+    bool is_label = false;
+};
+
+// The marks of `text` (code points as the reader folds them: full-width forms as ASCII), in order.
+// - A stage direction: a bracket, ( [ （ ［ 【 〔 〖, closed on its line, holding only words of
+//   sounds and actions (笑 掌声 鼓掌 音乐 叹气 咳嗽 停顿 画外音 ..., laughter applause music ...,
+//   with 众人 全场 观众 before and 起 声 不断 after them), separated by 、，, or spaces. A bracket
+//   of anything else (（包邮） (2330)) is text and read.
+// - A speaker label: at a line's start, a name of 1 to 8 characters (Chinese characters, Latin
+//   letters, digits, spaces between; not digits alone, not a verb of saying such as 他说) and a
+//   colon; only where two lines or more start so, and the text is a dialogue: a label names two
+//   lines or more, or half the lines that are not blank start with one. One line alone
+//   (客服热线：400-800-1234) is text.
+std::vector<ScriptMark> find_script_marks(const std::vector<CodePoint>& text);
+
+}  // namespace talkface::detail
+
+#endif

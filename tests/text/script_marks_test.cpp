@@ -1,0 +1,79 @@
+// Stage directions and speaker labels: left out of what is said, with a warning, where a script
+// writes them by convention; read as text where the same signs are the text's own.
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "talkface/transcript.hpp"
+
+using namespace talkface;
+
+namespace {
+
+std::string said(const Timeline& timeline) {
+    std::string text;
+    for (const auto& syllable : timeline.syllables) text += syllable.text;
+    return text;
+}
+
+std::string said(const std::string& transcript) {
+    return said(read_transcript(transcript));
+}
+
+bool warns_of(const Timeline& timeline, const std::string& part) {
+    for (const auto& warning : timeline.warnings) {
+        if (warning.find(part) != std::string::npos) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+TEST_SUITE("stage directions and speaker labels") {
+    TEST_CASE("a bracket of sounds and actions is not said, in every kind of bracket") {
+        for (const std::string direction :
+             {"（笑）", "(笑)", "[掌声]", "【音乐】", "〔鼓掌〕", "（众人大笑）", "［背景音乐］",
+              "（掌声、笑声）", "[Laughter]", "（全场掌声响起）", "（掌聲）"}) {
+            CAPTURE(direction);
+            const auto timeline = read_transcript("今天天气很好" + direction + "我们去公园。");
+            CHECK(said(timeline) == "今天天气很好我们去公园");
+            CHECK(warns_of(timeline, "\"" + direction + "\" is a stage direction, not said"));
+            CHECK(timeline.sentences.at(0).text.find(direction) == std::string::npos);
+        }
+    }
+
+    TEST_CASE("a bracket of anything else is text, said as before") {
+        CHECK(said("这件衣服八十八元（包邮）。") == "这件衣服八十八元包邮");
+        CHECK(said("【紧急通知】明天停课一天。") == "紧急通知明天停课一天");
+        CHECK(said("他笑着说（笑得很开心）好。") == "他笑着说笑得很开心好");
+        CHECK(said("（笑）") == "");
+    }
+
+    TEST_CASE("keep_directions reads them") {
+        TranscriptOptions options;
+        options.keep_directions = true;
+        const auto timeline = read_transcript("主持人：好（笑）。\n主持人：对。", options);
+        CHECK(said(timeline) == "主持人好笑主持人对");
+        CHECK(timeline.warnings.empty());
+    }
+
+    TEST_CASE("a dialogue's labels are not said, each warned of once, and a new speaker starts a sentence") {
+        const auto timeline = read_transcript("主持人：大家好\n小明：你好\n主持人：欢迎你。\nA: 谢谢\n");
+        CHECK(said(timeline) == "大家好你好欢迎你谢谢");
+        REQUIRE(timeline.sentences.size() == 4);
+        CHECK(timeline.sentences[0].text == "大家好");
+        CHECK(timeline.sentences[1].text == "你好");
+        CHECK(warns_of(timeline, "<transcript>:1:1: \"主持人：\" is a speaker's label (2 lines), not said"));
+        CHECK(warns_of(timeline, "<transcript>:2:1: \"小明：\" is a speaker's label (1 line)"));
+        CHECK(timeline.warnings.size() == 3);
+    }
+
+    TEST_CASE("one line with a colon, a verb of saying, or a clock time is no dialogue") {
+        CHECK(said("客服热线：幺二三。") == "客服热线幺二三");
+        CHECK(said("他说：好的。\n她说：不行。") == "他说好的她说不行");
+        CHECK(said("10:30 到了。\n11:30 走了。").find("点") != std::string::npos);
+        // Two labels in a long text that is no dialogue: most lines do not start with one.
+        CHECK(said("第一段很长。\n第二段也长。\n注意：小心。\n第三段。\n提示：慢走。") ==
+              "第一段很长第二段也长注意小心第三段提示慢走");
+    }
+}
