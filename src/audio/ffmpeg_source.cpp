@@ -17,6 +17,7 @@ extern "C" {
 #include <vector>
 
 #include "audio/ffmpeg_messages.hpp"
+#include "audio/mp3_toc.hpp"
 #include "audio/mp4_index.hpp"
 #include "common/number_format.hpp"
 #include "talkface/errors.hpp"
@@ -59,6 +60,10 @@ constexpr int kLargestMp3FrameBytes = 1441;
 // The packets (of a variable-rate MP3) whose bytes a sample estimate the time of bytes no frame
 // holds: about a second.
 constexpr double kMp3RecentPackets = 32.0;
+
+// How far a variable-rate MP3's table of contents may place a byte from where the packets before
+// it reach, as a share of that, and still be the stream's own.
+constexpr double kMp3TocSlackShare = 0.1;
 
 std::string seconds_text(double seconds) { return format_fixed(seconds, 3) + " s"; }
 
@@ -194,6 +199,10 @@ public:
                                                    ffmpeg_error_text(ready));
         }
         sample_rate_hz_ = codec_->sample_rate;
+        if (parameters->codec_id == AV_CODEC_ID_MP3) {
+            mp3_toc_ = read_mp3_toc_file(path_);
+            if (mp3_toc_ && mp3_toc_->is_variable_rate) mp3_rate_is_constant_ = false;
+        }
         if (sample_rate_hz_ <= 0 || codec_->ch_layout.nb_channels <= 0 || codec_->ch_layout.nb_channels > kMaxChannels)
             throw ParseError(path_, 0, 0, "", "unsupported sound track: " + std::to_string(codec_->ch_layout.nb_channels) +
                                                    " channels at " + std::to_string(sample_rate_hz_) + " Hz");
@@ -497,10 +506,14 @@ private:
     // are summed, and given out as lost once they reach kTimestampSlackS (a frame's padding byte
     // is a fraction of a millisecond and evens out). A variable rate (packets of other sizes
     // among the first kMp3PacketsToJudgeRate) gives its frames any size: there only the bytes
-    // between packets and those of a packet larger than any MP3 frame count, beyond a frame's, at
-    // the rate of the kMp3RecentPackets packets before them, an estimate: the sweep's two scratches
-    // of a VBR MP3 (2000 bytes hitting frames of 0.21 s) read as 0.23 and 0.34 s lost, where
-    // nothing was counted before (every later syllable came 0.18 s early). 0 for every other codec.
+    // between packets and those of a packet larger than any MP3 frame count, beyond a frame's:
+    // their time is what the stream's table of contents (mp3_toc.hpp) gives the bytes from the
+    // packet before to the end of this one, where it places the packets before where they reach
+    // (toc_agrees_at); else an estimate at the rate of the kMp3RecentPackets packets before them,
+    // which misses where the lost frames were larger or smaller than those: the sweep's two
+    // scratches of a VBR MP3 (2000 bytes hitting frames of 0.21 s) read as 0.23 and 0.34 s lost by
+    // the rate, where nothing was counted before (every later syllable came 0.18 s early).
+    // 0 for every other codec.
     std::size_t mp3_bytes_lost(const AVPacket& packet) {
         const std::int64_t next_byte = next_packet_byte_;
         next_packet_byte_ = packet.pos >= 0 ? packet.pos + packet.size : -1;
@@ -513,24 +526,42 @@ private:
         if (mp3_packets_judged_ < kMp3PacketsToJudgeRate) {
             ++mp3_packets_judged_;
             mp3_rate_is_constant_ &= packet.pos == next_byte && std::fabs(packet.size - frame_bytes) <= 1.0;
+            mp3_frames_before_ += packet_length;
             return 0;
         }
         const double bytes_between = static_cast<double>(packet.pos - next_byte);
         if (mp3_rate_is_constant_)
             mp3_lost_frames_ += (bytes_between + packet.size) * frames_per_byte - packet_length;
         else if (bytes_between > 0.0 || packet.size > kLargestMp3FrameBytes) {
-            // Bytes a sample over the recent packets, else the stream's average.
-            const double recent_frames_per_byte =
-                mp3_recent_bytes_ > 0.0 ? mp3_recent_frames_ / mp3_recent_bytes_ : frames_per_byte;
-            mp3_lost_frames_ += (bytes_between + packet.size) * recent_frames_per_byte - packet_length;
+            if (toc_agrees_at(next_byte)) {
+                mp3_lost_frames_ += std::max(0.0, mp3_toc_->sample_at(packet.pos + packet.size) -
+                                                      mp3_toc_->sample_at(next_byte) - packet_length);
+            } else {
+                // Bytes a sample over the recent packets, else the stream's average.
+                const double recent_frames_per_byte =
+                    mp3_recent_bytes_ > 0.0 ? mp3_recent_frames_ / mp3_recent_bytes_ : frames_per_byte;
+                mp3_lost_frames_ += (bytes_between + packet.size) * recent_frames_per_byte - packet_length;
+            }
         } else {
             mp3_recent_bytes_ += packet.size - mp3_recent_bytes_ / kMp3RecentPackets;
             mp3_recent_frames_ += packet_length - mp3_recent_frames_ / kMp3RecentPackets;
         }
+        mp3_frames_before_ += packet_length;
         if (mp3_lost_frames_ <= kTimestampSlackS * sample_rate_hz_) return 0;
         const auto lost = static_cast<std::size_t>(std::llround(mp3_lost_frames_));
+        mp3_frames_before_ += static_cast<double>(lost);
         mp3_lost_frames_ = 0.0;
         return lost;
+    }
+
+    // Whether a variable-rate MP3's table of contents (mp3_toc.hpp) places the byte `file_byte`
+    // where the packets before it reach, within kMp3TocSlackShare of that: a header written
+    // before its encoder finished, or the first of two files joined, states another stream.
+    bool toc_agrees_at(std::int64_t file_byte) const {
+        if (!mp3_toc_) return false;
+        const double reached = mp3_frames_before_;
+        return std::fabs(mp3_toc_->sample_at(file_byte) - reached) <=
+               kMp3TocSlackShare * reached + kLengthSlackS * sample_rate_hz_;
     }
 
     // A packet's length in samples (its duration in the stream's time base), 0 where unknown.
@@ -728,6 +759,8 @@ private:
     double mp3_lost_frames_ = 0.0;        // an MP3's bytes no frame holds, as samples, not yet given out
     double mp3_recent_bytes_ = 0.0;       // a variable-rate MP3's recent packets' bytes (decaying sum)
     double mp3_recent_frames_ = 0.0;      // and their samples
+    double mp3_frames_before_ = 0.0;      // an MP3's samples up to the last packet, lost ones with them
+    std::optional<Mp3Toc> mp3_toc_;       // a variable-rate MP3's table of contents, if it has one
     bool flushed_ = false;
     std::vector<float> interleaved_;
     ChannelMixer mixer_;
