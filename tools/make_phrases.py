@@ -9,7 +9,9 @@ Sources (licences in docs/data-licences.md):
                                   Pinyin IME phrase list, Apache 2.0. Simplified, toneless.
   opencc (command, s2t and s2tw)  Debian opencc, Apache 2.0: Traditional forms of those phrases.
   Unihan readings                 via make_readings.py: decoding the ids and choosing tones.
-  tools/phrase_additions.tsv      words the list lacks or reads wrong, with their readings.
+  tools/phrase_additions.tsv      words the list lacks or reads wrong, with their readings: among
+                                  them the words with a light tone (喜欢 xi3 huan5), which a
+                                  toneless list cannot tell.
 Run: /usr/bin/python3 tools/make_phrases.py
 """
 
@@ -140,15 +142,39 @@ def to_traditional(phrases, config):
     return converted
 
 
-def numbered_reading(character, toneless, unihan, fallback_character):
-    """The character's most frequent reading with this toneless spelling (the tone is a guess
-    the lips never see); a Traditional form without readings borrows its Simplified form's."""
+def numbered_reading(character, toneless, unihan, fallback_character, after_first):
+    """The character's most frequent full reading with this toneless spelling; its light one if
+    it has no full one, if it is a particle (make_readings.LIGHT_PARTICLES: 好吧, 是吗, 除了; 酒吧
+    and 干吗 are in phrase_additions.tsv), or if it is a suffix (make_readings.LIGHT_SUFFIXES)
+    after the word's first character (桌子, 我们, 觉得; 子女 and 得到 keep the full tone). A
+    Traditional form without readings borrows its Simplified form's."""
     for source in (character, fallback_character):
         if source in unihan:
-            for reading in make_readings.ordered_readings(unihan[source]):
-                if reading[:-1] == toneless:
-                    return reading
+            spelled = [reading for reading in make_readings.ordered_readings(source, unihan[source])
+                       if reading[:-1] == toneless]
+            full = [reading for reading in spelled if not reading.endswith("5")]
+            light = [reading for reading in spelled if reading.endswith("5")]
+            if light and (not full or source in make_readings.LIGHT_PARTICLES or
+                          (after_first and source in make_readings.LIGHT_SUFFIXES)):
+                return light[0]
+            if full:
+                return full[0]
     return None
+
+
+def with_known_words(word, readings, additions):
+    """The readings of a word with those of the additions inside it laid over them, the longest
+    first: a compound says a word the way the word is said alone (好朋友 and 朋友们 as 朋友 peng2
+    you5, 知识分子 as 知识 zhi1 shi5 and 分子 fen4 zi3)."""
+    readings = list(readings)
+    settled = [False] * len(word)
+    for length in range(len(word) - 1, 1, -1):
+        for start in range(len(word) - length + 1):
+            known = additions.get(word[start:start + length])
+            if known and not any(settled[start:start + length]):
+                readings[start:start + length] = known
+                settled[start:start + length] = [True] * length
+    return readings
 
 
 def main():
@@ -178,8 +204,8 @@ def main():
     for config in ("s2t.json", "s2tw.json"):
         forms.extend(zip(to_traditional(words, config), words))
 
-    def first_toneless(character):
-        return make_readings.ordered_readings(unihan[character])[0][:-1]
+    def first_reading(character):
+        return make_readings.ordered_readings(character, unihan[character])[0] if character in unihan else None
 
     table = {}
     unreadable = 0
@@ -187,20 +213,25 @@ def main():
         if form in table or len(form) != len(source):
             continue
         syllables = simplified[source]
-        # A word whose characters all take their first reading needs no readings of its own: it
-        # is there for its cost, which decides how the words around it are cut. One that settles
-        # a polyphonic character carries its readings.
-        settles = len(form) > 1 and any(
-            c in unihan and (len(make_readings.modern_toneless(unihan[c])) > 1 or first_toneless(c) != s)
+        # A word whose characters all take their first reading, tones included, needs no readings
+        # of its own: it is there for its cost, which decides how the words around it are cut. One
+        # that settles a polyphonic character, or a tone, carries its readings.
+        polyphonic = len(form) > 1 and any(
+            c in unihan and (len(make_readings.modern_toneless(unihan[c])) > 1 or first_reading(c)[:-1] != s)
             for c, s in zip(form, syllables))
-        readings = []
-        if settles and source in additions:
+        if source in additions:
             readings = additions[source]
-        elif settles:
-            readings = [numbered_reading(c, s, unihan, f) for c, s, f in zip(form, syllables, source)]
-            if None in readings:
+        else:
+            readings = [numbered_reading(c, s, unihan, f, k > 0)
+                        for k, (c, s, f) in enumerate(zip(form, syllables, source))]
+            if None in readings and polyphonic:
                 unreadable += 1  # pyzy reads a character in a way no Unihan field knows: not trusted
                 continue
+            if None not in readings:
+                readings = with_known_words(source, readings, additions)
+        as_characters = not polyphonic and readings == [first_reading(c) for c in form]
+        if len(form) == 1 or None in readings or as_characters:
+            readings = []
         table[form] = (costs[source], readings)
     lines = [f"{form}\t{cost}" + (f"\t{' '.join(readings)}" if readings else "")
              for form, (cost, readings) in sorted(table.items())]

@@ -7,8 +7,9 @@ License for data files, see docs/data-licences.md). Run from anywhere: /usr/bin/
 
 Reading order per character: kHanyuPinlu by its corpus frequency (the only field with counts),
 then kMandarin (first value: zh-Hans; second: zh-Hant), then the dictionaries kTGHZ2013,
-kXHC1983, kHanyuPinyin in the order they list readings. The first reading is what a character
-gets when no phrase covers it.
+kXHC1983, kHanyuPinyin in the order they list readings; a light tone (5) after the full ones,
+except for the particles and suffixes below. The first reading is what a character gets when no
+phrase covers it.
 """
 
 import bz2
@@ -30,6 +31,27 @@ OUTPUT = os.path.join(ROOT, "src", "text", "data", "readings.cpp")
 # archaic readings, so it only breaks ties and fills characters nothing else covers.
 MODERN_FIELDS = ("kHanyuPinlu", "kMandarin", "kTGHZ2013", "kXHC1983")
 ALL_FIELDS = MODERN_FIELDS + ("kHanyuPinyin",)
+
+# Characters whose light tone is a grammatical word of its own or a suffix, said light nearly
+# wherever it stands: their light reading stays first. kHanyuPinlu counts readings in running
+# text, so 130 characters led with a light tone they take only inside a few words (欢 in 喜欢, 息
+# in 消息, 识 in 认识, 友 in 朋友, 西 in 东西): read alone, or in 欢迎 信息 识别 友谊 西安, they take
+# their full tone, and those words carry their light tone themselves (make_phrases.py and
+# phrase_additions.tsv).
+LIGHT_PARTICLES = {
+    # Structural and aspect particles: 的 地 (得 is among the suffixes), 了 着 (著 in Traditional text).
+    "的", "地", "了", "着", "著",
+    # Sentence-final and modal particles.
+    "吗", "嗎", "呢", "吧", "啊", "呀", "啦", "嘛", "呗", "唄", "喽", "嘍", "哇", "哩", "咧", "呐", "吶",
+    "嘞", "么", "麼", "嚜", "噷",
+}
+# Suffixes, 得 after a verb (觉得, 说得) and the locative 裡 (Traditional; 屋裡, 這裡, 哪裡): light after
+# a word's first character (桌子, 我们, 一会儿), full where they begin one (子女, 儿童, 得到, 裡面);
+# make_phrases.py reads them so, the words where they are full after the first (电子, 女儿, 获得)
+# listed in phrase_additions.tsv. Alone they are the suffix of a word the list lacks. (The
+# Simplified 里 is also the unit li3 of 公里, so it is not among them.)
+LIGHT_SUFFIXES = {"子", "儿", "兒", "们", "們", "得", "裡"}
+LIGHT_FIRST = LIGHT_PARTICLES | LIGHT_SUFFIXES
 
 
 def _field_readings(field, value):
@@ -72,13 +94,27 @@ def load_unihan():
     return table
 
 
-def ordered_readings(fields):
+def ordered_readings(character, fields):
+    """The character's readings, most frequent first, a light tone after the full ones unless
+    the character is a particle or suffix (LIGHT_FIRST)."""
     readings = []
     for field in ALL_FIELDS:
         for reading in fields.get(field, []):
             if reading not in readings:
                 readings.append(reading)
-    return readings
+    # A reading the 2013 standard dictionary (kTGHZ2013) gives alone, with the first one's spelling
+    # and another full tone, is the standard one now (迹 jì, 绩 jì, 甚 shèn, 框 kuàng, where
+    # kHanyuPinlu's corpus of the 1980s and kMandarin keep jī, jī, shén, kuāng).
+    standard = fields.get("kTGHZ2013", [])
+    if (len(standard) == 1 and not standard[0].endswith("5") and readings[0][:-1] == standard[0][:-1]
+            and readings[0] != standard[0] and not readings[0].endswith("5")):
+        readings.remove(standard[0])
+        readings.insert(0, standard[0])
+    if character in LIGHT_FIRST:
+        return readings
+    full = [reading for reading in readings if not reading.endswith("5")]
+    light = [reading for reading in readings if reading.endswith("5")]
+    return full + light if full else readings
 
 
 def modern_toneless(fields):
@@ -97,7 +133,7 @@ def main():
     syllables = set()
     lines = []
     for character in sorted(table):
-        readings = ordered_readings(table[character])
+        readings = ordered_readings(character, table[character])
         syllables.update(reading[:-1] for reading in readings)
         lines.append(f"{character}\t{' '.join(readings)}")
     illegal = sorted(s for s in syllables if not pinyin_rules.is_legal_toneless(s))

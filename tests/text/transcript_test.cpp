@@ -1,15 +1,17 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/test_paths.hpp"
-#include "text/reading_tables.hpp"
-#include "text/unread_transcript.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/transcript.hpp"
+#include "text/reading_tables.hpp"
+#include "text/unread_transcript.hpp"
 
 using namespace talkface;
 
@@ -33,7 +35,8 @@ std::string toneless(const std::string& transcript) {
 // The numbered readings of all syllables, space-separated, where a tone is what is checked.
 std::string pinyin(const std::string& transcript) {
     std::string text;
-    for (const auto& syllable : read_transcript(transcript).syllables) text += (text.empty() ? "" : " ") + syllable.pinyin;
+    for (const auto& syllable : read_transcript(transcript).syllables)
+        text += (text.empty() ? "" : " ") + syllable.pinyin;
     return text;
 }
 
@@ -154,7 +157,7 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("他管得了这么多") == "ta1 guan3 de5 liao3 zhe4 me5 duo1");
         // Not after an adverb or a subject, nor in a word of gain: 了 the particle there.
         CHECK(pinyin("他得了第一名") == "ta1 de2 le5 di4 yi1 ming2");
-        CHECK(pinyin("他赢得了冠军").rfind("ta1 ying2 de5 le5", 0) == 0);
+        CHECK(pinyin("他赢得了冠军").rfind("ta1 ying2 de2 le5", 0) == 0);  // 赢得 yíngdé, a word of gain
         CHECK(pinyin("我记得了") == "wo3 ji4 de5 le5");
         CHECK(pinyin("吃得{de2}了{le5}") == "chi1 de2 le5");
     }
@@ -179,6 +182,65 @@ TEST_SUITE("transcript") {
         CHECK(toneless("他衣锦还乡") == "ta yi jin huan xiang");
         // The words around them are cut as before.
         CHECK(toneless("我和面包店的老板很熟") == "wo he mian bao dian de lao ban hen shu");
+    }
+
+    TEST_CASE("a light tone is said in the words that have it, the full tone elsewhere (issue 13)") {
+        CHECK(pinyin("欢迎") == "huan1 ying2");
+        CHECK(pinyin("喜欢") == "xi3 huan5");
+        CHECK(pinyin("歡迎光臨") == "huan1 ying2 guang1 lin2");
+        CHECK(pinyin("我很喜歡") == "wo3 hen3 xi3 huan5");
+        CHECK(pinyin("信息") == "xin4 xi1");
+        CHECK(pinyin("消息") == "xiao1 xi5");
+        CHECK(pinyin("服务") == "fu2 wu4");
+        CHECK(pinyin("西安") == "xi1 an1");
+        CHECK(pinyin("买东西") == "mai3 dong1 xi5");
+        CHECK(pinyin("东西方") == "dong1 xi1 fang1");
+        CHECK(pinyin("训练") == "xun4 lian4");
+        CHECK(pinyin("识别") == "shi2 bie2");
+        CHECK(pinyin("认识") == "ren4 shi5");
+        // A compound says a word of tools/phrase_additions.tsv as the word is said alone.
+        CHECK(pinyin("好朋友") == "hao3 peng2 you5");
+        CHECK(pinyin("知识分子") == "zhi1 shi5 fen4 zi3");
+    }
+
+    TEST_CASE(
+        "particles are light, and a suffix is light after a word's first character, full at its start") {
+        CHECK(pinyin("我们的") == "wo3 men5 de5");
+        CHECK(pinyin("好了吗") == "hao3 le5 ma5");
+        CHECK(pinyin("孩子") == "hai2 zi5");
+        CHECK(pinyin("子女") == "zi3 nv3");
+        CHECK(pinyin("电子") == "dian4 zi3");
+        CHECK(pinyin("儿童") == "er2 tong2");
+        CHECK(pinyin("女儿") == "nv3 er2");
+        CHECK(pinyin("觉得") == "jue2 de5");
+        CHECK(pinyin("得到") == "de2 dao4");
+        CHECK(pinyin("获得") == "huo4 de2");
+        CHECK(pinyin("好得多") == "hao3 de5 duo1");
+        CHECK(pinyin("公園裡") == "gong1 yuan2 li5");
+        CHECK(pinyin("裡面") == "li3 mian4");
+    }
+
+    TEST_CASE("a character's first reading is a full tone unless it is a particle or a suffix") {
+        // tools/make_readings.py's LIGHT_FIRST: the characters whose light tone is a grammatical
+        // word or a suffix. Before issue 13, 130 characters led with a light tone (欢 息 识 务 西 ...).
+        const std::string light_first =
+            "的地了着著吗嗎呢吧啊呀啦嘛呗唄喽嘍哇哩咧呐吶嘞么麼嚜噷子儿兒们們得裡";
+        const auto& tables = detail::reading_tables();
+        for (const auto line : tables.character_lines().lines()) {
+            const auto character = detail::SortedLines::key_of(line);
+            const auto readings = tables.readings(character);
+            const bool has_full = std::any_of(readings.begin(), readings.end(),
+                                              [](std::string_view reading) { return reading.back() != '5'; });
+            if (!has_full || light_first.find(character) != std::string::npos) continue;
+            CAPTURE(character);
+            CHECK(readings.front().back() != '5');
+        }
+    }
+
+    TEST_CASE("a tone the 2013 standard dictionary gives alone is the first reading") {
+        CHECK(pinyin("成绩") == "cheng2 ji4");
+        CHECK(pinyin("事迹") == "shi4 ji4");
+        CHECK(pinyin("甚至") == "shen4 zhi4");
     }
 
     TEST_CASE("syllables carry the character, numbered pinyin and their sentence") {
@@ -244,7 +306,8 @@ TEST_SUITE("transcript") {
     }
 
     TEST_CASE("a blank line starts a paragraph, and ends a sentence left open") {
-        const auto timeline = read_transcript("\n\n春曉\n \r\n春眠不覺曉。處處聞啼鳥。\n夜來風雨聲，\n\n花落知多少？");
+        const auto timeline =
+            read_transcript("\n\n春曉\n \r\n春眠不覺曉。處處聞啼鳥。\n夜來風雨聲，\n\n花落知多少？");
         REQUIRE(timeline.sentences.size() == 5);
         CHECK(timeline.sentences[0].text == "春曉");
         CHECK(timeline.sentences[1].text == "春眠不覺曉。");
@@ -325,7 +388,8 @@ TEST_SUITE("transcript") {
         CHECK(toneless(timeline) == "de san hao");
         CHECK(timeline.syllables.at(0).generic_speech);
         REQUIRE(timeline.warnings.size() == 1);
-        CHECK(timeline.warnings[0].find("\"ni\" is not in the English pronouncing dictionary") != std::string::npos);
+        CHECK(timeline.warnings[0].find("\"ni\" is not in the English pronouncing dictionary") !=
+              std::string::npos);
     }
 
     TEST_CASE("characters without a reading are reported with line and column, not dropped silently") {
@@ -442,7 +506,8 @@ TEST_SUITE("transcript") {
         transcript.sentences.resize(1);
         transcript.warnings = {"t.txt:1:1: \"★\" (U+2605) has no Mandarin reading; skipped"};
         CHECK(detail::describe_unread_transcript(transcript) ==
-              "1 sentence, with no Mandarin reading; t.txt:1:1: \"★\" (U+2605) has no Mandarin reading; skipped");
+              "1 sentence, with no Mandarin reading; t.txt:1:1: \"★\" (U+2605) has no Mandarin reading; "
+              "skipped");
         transcript.sentences.resize(2);
         transcript.warnings.push_back("t.txt:1:2: second");
         CHECK(detail::describe_unread_transcript(transcript) ==
