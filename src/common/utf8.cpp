@@ -26,6 +26,17 @@ void append_utf8(std::string& out, std::uint32_t code) {
 
 namespace {
 
+// The byte order marks: U+FEFF in each Unicode encoding.
+constexpr std::string_view kUtf8Mark("\xEF\xBB\xBF", 3);
+constexpr std::string_view kUtf16LeMark("\xFF\xFE", 2);
+constexpr std::string_view kUtf16BeMark("\xFE\xFF", 2);
+constexpr std::string_view kUtf32LeMark("\xFF\xFE\0\0", 4);
+constexpr std::string_view kUtf32BeMark("\0\0\xFE\xFF", 4);
+
+bool starts_with_mark(std::string_view text, std::string_view mark) {
+    return text.substr(0, mark.size()) == mark;
+}
+
 // UTF-32 with its byte order mark (FF FE 00 00 or 00 00 FE FF): 4-byte units, each a code point.
 std::string utf8_from_utf32(std::string_view text, bool is_big_endian, const std::string& source) {
     if (text.size() % 4 != 0) {
@@ -53,13 +64,20 @@ std::string utf8_from_utf32(std::string_view text, bool is_big_endian, const std
 
 }  // namespace
 
+bool has_byte_order_mark(std::string_view text) {
+    for (const std::string_view mark : {kUtf8Mark, kUtf16LeMark, kUtf16BeMark, kUtf32LeMark, kUtf32BeMark}) {
+        if (starts_with_mark(text, mark)) return true;
+    }
+    return false;
+}
+
 std::string utf8_from_marked_text(std::string_view text, const std::string& source) {
-    if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") return std::string(text.substr(3));
+    if (starts_with_mark(text, kUtf8Mark)) return std::string(text.substr(kUtf8Mark.size()));
     // UTF-32 LE's mark starts as UTF-16 LE's does: it is told first.
-    if (text.substr(0, 4) == std::string_view("\xFF\xFE\0\0", 4)) return utf8_from_utf32(text, false, source);
-    if (text.substr(0, 4) == std::string_view("\0\0\xFE\xFF", 4)) return utf8_from_utf32(text, true, source);
-    const bool is_big_endian = text.size() >= 2 && text[0] == '\xFE' && text[1] == '\xFF';
-    const bool is_little_endian = text.size() >= 2 && text[0] == '\xFF' && text[1] == '\xFE';
+    if (starts_with_mark(text, kUtf32LeMark)) return utf8_from_utf32(text, false, source);
+    if (starts_with_mark(text, kUtf32BeMark)) return utf8_from_utf32(text, true, source);
+    const bool is_big_endian = starts_with_mark(text, kUtf16BeMark);
+    const bool is_little_endian = starts_with_mark(text, kUtf16LeMark);
     if (!is_big_endian && !is_little_endian) return std::string(text);
     // UTF-16 is 2-byte units: an odd last byte is half of one, a file cut short or not UTF-16 at all.
     // Refused rather than dropped, so that nothing the user wrote goes missing without a word.

@@ -13,6 +13,10 @@ namespace talkface::detail {
 // Appends `code` (at most U+10FFFF, not a surrogate) to `out` as UTF-8.
 void append_utf8(std::string& out, std::uint32_t code);
 
+// Whether `text` starts with a byte order mark (UTF-8, UTF-16 or UTF-32, either byte order), which
+// names its encoding.
+bool has_byte_order_mark(std::string_view text);
+
 // A text file's bytes as UTF-8: a UTF-8 byte order mark dropped; UTF-16 or UTF-32 with its byte
 // order mark (little or big endian: what Praat writes for a text that is not ASCII, Windows
 // Notepad's "Unicode" and "Unicode big endian") converted; anything else as it is.

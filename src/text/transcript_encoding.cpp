@@ -205,10 +205,7 @@ bool is_utf8_name(const std::string& name) {
 
 std::string transcript_utf8(std::string_view bytes, const std::string& encoding, const std::string& source) {
     const std::string name = lowercase(encoding);
-    const bool has_mark = bytes.substr(0, 3) == "\xEF\xBB\xBF" || bytes.substr(0, 2) == "\xFF\xFE" ||
-                          bytes.substr(0, 2) == "\xFE\xFF" ||
-                          bytes.substr(0, 4) == std::string_view("\0\0\xFE\xFF", 4);
-    if (has_mark) return utf8_from_marked_text(bytes, source);
+    if (has_byte_order_mark(bytes)) return utf8_from_marked_text(bytes, source);
     if (is_utf8_name(name)) {
         try {
             decode_utf8(bytes, source);
