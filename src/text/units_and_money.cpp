@@ -55,9 +55,7 @@ bool is_small_watt_at(const std::vector<CodePoint>& text, std::size_t i) {
         is_digit_at(text, i + 1)) {
         return false;
     }
-    std::string sentence = text_before(text, i, false);
-    for (auto k = i; k < text.size() && !is_one_of(value_at(text, k), U"\u3002.!?！？;；\n"); ++k)
-        sentence += text[k].text;
+    const std::string sentence = text_before(text, i, false) + text_after(text, i, false);
     for (const std::string_view word :
          {"功率", "充电", "充電", "快充", "闪充", "閃充", "超充", "瓦", "输出", "輸出"})
         if (sentence.find(word) != std::string::npos) return true;

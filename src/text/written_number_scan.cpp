@@ -118,11 +118,12 @@ std::string text_before(const std::vector<CodePoint>& text, std::size_t start, b
     return before;
 }
 
-std::string text_after(const std::vector<CodePoint>& text, std::size_t end) {
+std::string text_after(const std::vector<CodePoint>& text, std::size_t end, bool clause_only) {
     std::string after;
     for (auto i = end; i < text.size(); ++i) {
         const auto c = ascii_form(text[i].value);
-        if (c == '.' || c == '!' || c == '?' || c == ';' || c == ',' || c == 0x3002 || c == '\n') break;
+        if (c == '.' || c == '!' || c == '?' || c == ';' || c == 0x3002 || c == '\n') break;
+        if (clause_only && c == ',') break;
         after += text[i].text;
     }
     return after;

@@ -50,8 +50,9 @@ bool ends_with(const std::string& text, std::string_view end);
 std::string text_before(const std::vector<CodePoint>& text, std::size_t start, bool clause_only);
 
 // The text after text[end) up to the next pause or end mark (the rest of the clause; 、 does not
-// end it: 6-3、6-4 获胜 is one clause).
-std::string text_after(const std::vector<CodePoint>& text, std::size_t end);
+// end it: 6-3、6-4 获胜 is one clause), or without `clause_only` up to the next end mark or line
+// break (the rest of the sentence).
+std::string text_after(const std::vector<CodePoint>& text, std::size_t end, bool clause_only = true);
 
 constexpr const char* kTooLongWarning = "a number of more than 16 digits; read digit by digit";
 
