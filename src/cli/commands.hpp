@@ -14,8 +14,7 @@ inline constexpr const char* kSpeechFormatsHelp =
 // What `align` and `syllables` say of their TRANSCRIPT argument: every form of transcript they read.
 inline constexpr const char* kTranscriptHelp =
     "Text, Traditional or Simplified, or numbered pinyin (fix a reading in place: 行{hang2}), in UTF-8, "
-    "UTF-16 "
-    "or UTF-32 with a byte order mark, or --transcript-encoding; or SRT or WebVTT subtitles or a TextGrid, "
+    "UTF-16 or UTF-32 with a byte order mark, or --transcript-encoding; or SRT or WebVTT subtitles or a TextGrid, "
     "whose text is read";
 
 // `talkface render`: one face state drawn as an SVG file (render_command.cpp).

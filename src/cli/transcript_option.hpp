@@ -16,8 +16,8 @@ struct TranscriptArgument {
     talkface::TranscriptOptions options;
 };
 
-// Adds the positional TRANSCRIPT (an existing file; `help` says what it is), --encoding and
-// --keep-directions to `command`, bound to `transcript`; returns the positional.
+// Adds the positional TRANSCRIPT (an existing file; `help` says what it is), --transcript-encoding
+// and --keep-directions to `command`, bound to `transcript`; returns the positional.
 CLI::Option* add_transcript_argument(CLI::App& command, TranscriptArgument& transcript,
                                      const std::string& help);
 

@@ -62,15 +62,15 @@ bool is_direction_piece(std::string_view piece) {
     best[0] = 0;
     for (std::size_t k = 0; k < piece.size(); ++k) {
         if (best[k] < 0) continue;
-        for (const auto& list :
-             {std::make_pair(std::begin(kDirectionWords), std::end(kDirectionWords)),
-              std::make_pair(std::begin(kDirectionModifiers), std::end(kDirectionModifiers))}) {
-            const int found = list.first == std::begin(kDirectionWords) ? 1 : 0;
-            for (auto word = list.first; word != list.second; ++word) {
-                if (piece.compare(k, word->size(), *word) == 0)
-                    best[k + word->size()] = std::max(best[k + word->size()], best[k] | found);
+        // `found`: 1 for a sound or action, 0 for a modifier.
+        const auto extend = [&](const auto& words, int found) {
+            for (const std::string_view word : words) {
+                if (piece.compare(k, word.size(), word) == 0)
+                    best[k + word.size()] = std::max(best[k + word.size()], best[k] | found);
             }
-        }
+        };
+        extend(kDirectionWords, 1);
+        extend(kDirectionModifiers, 0);
     }
     return best[piece.size()] == 1;
 }
@@ -113,6 +113,11 @@ void add_directions(const std::vector<CodePoint>& text, std::vector<ScriptMark>&
     }
 }
 
+// A space that may stand between a line's start and its label, or between a label and its words.
+bool is_line_space(char32_t c) {
+    return c == ' ' || c == 0x3000 || c == '\t';
+}
+
 bool is_label_character(char32_t c) {
     return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == ' ' ||
            c == '_' || c == '-' || c == 0xB7 /*·*/ || (c >= 0x3400 && c <= 0x9FFF);
@@ -152,9 +157,7 @@ std::optional<Label> label_at(const std::vector<CodePoint>& text, std::size_t st
         return std::nullopt;
     }
     auto end = k + 1;
-    while (end < text.size() &&
-           (text[end].value == ' ' || text[end].value == 0x3000 || text[end].value == '\t'))
-        ++end;
+    while (end < text.size() && is_line_space(text[end].value)) ++end;
     return Label{name, {start, end, true}};
 }
 
@@ -163,9 +166,7 @@ void add_labels(const std::vector<CodePoint>& text, std::vector<ScriptMark>& mar
     std::size_t lines = 0;
     for (std::size_t k = 0; k < text.size();) {
         auto start = k;
-        while (start < text.size() &&
-               (text[start].value == ' ' || text[start].value == 0x3000 || text[start].value == '\t'))
-            ++start;
+        while (start < text.size() && is_line_space(text[start].value)) ++start;
         auto end = start;
         while (end < text.size() && text[end].value != '\n') ++end;
         if (end > start && text[start].value != '\r') {
