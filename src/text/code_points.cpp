@@ -6,9 +6,10 @@
 
 namespace talkface::detail {
 
-std::vector<CodePoint> decode_utf8(std::string_view text, const std::string& source_name) {
-    std::vector<CodePoint> code_points;
-    code_points.reserve(text.size());
+namespace {
+
+// Appends `text`'s code points to `code_points` when given, up to the first fault, which it returns.
+std::optional<Utf8Fault> decode_into(std::string_view text, std::vector<CodePoint>* code_points) {
     int line = 1;
     int column = 1;
     std::size_t offset = text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;
@@ -42,13 +43,11 @@ std::vector<CodePoint> decode_utf8(std::string_view text, const std::string& sou
         }
         // Overlong forms, UTF-16 surrogates and values past U+10FFFF are not characters.
         if (length == 0 || value < minimum || (value >= 0xD800 && value <= 0xDFFF) || value > 0x10FFFF) {
-            char byte_text[8];
-            std::snprintf(byte_text, sizeof byte_text, "0x%02X", static_cast<unsigned>(lead));
-            throw ParseError(source_name, line, column, "byte offset " + std::to_string(offset),
-                             std::string("invalid UTF-8: the sequence starting with byte ") + byte_text +
-                                 " is not a character; save the transcript as UTF-8");
+            return Utf8Fault{offset, line, column};
         }
-        code_points.push_back({value, text.substr(offset, length), line, column});
+        if (code_points != nullptr) {
+            code_points->push_back({value, text.substr(offset, length), line, column});
+        }
         offset += length;
         if (value == '\n') {
             ++line;
@@ -57,7 +56,28 @@ std::vector<CodePoint> decode_utf8(std::string_view text, const std::string& sou
             ++column;
         }
     }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<CodePoint> decode_utf8(std::string_view text, const std::string& source_name) {
+    std::vector<CodePoint> code_points;
+    code_points.reserve(text.size());
+    if (const auto fault = decode_into(text, &code_points)) {
+        char byte_text[8];
+        std::snprintf(byte_text, sizeof byte_text, "0x%02X",
+                      static_cast<unsigned>(text[fault->offset]) & 0xFFU);
+        throw ParseError(source_name, fault->line, fault->column,
+                         "byte offset " + std::to_string(fault->offset),
+                         std::string("invalid UTF-8: the sequence starting with byte ") + byte_text +
+                             " is not a character; save the transcript as UTF-8");
+    }
     return code_points;
+}
+
+std::optional<Utf8Fault> find_utf8_fault(std::string_view text) {
+    return decode_into(text, nullptr);
 }
 
 }  // namespace talkface::detail

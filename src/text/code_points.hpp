@@ -3,6 +3,8 @@
 #ifndef TALKFACE_TEXT_CODE_POINTS_HPP
 #define TALKFACE_TEXT_CODE_POINTS_HPP
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,10 +18,21 @@ struct CodePoint {
     int column = 1;  // in characters
 };
 
+// Where a text stops being UTF-8: the first byte that does not start a character.
+struct Utf8Fault {
+    std::size_t offset = 0;  // in bytes, from the text's start
+    int line = 1;
+    int column = 1;  // in characters
+};
+
 // Decodes UTF-8 (a leading byte order mark skipped); views point into `text`.
 // \throws talkface::ParseError naming `source_name`, the line, column and byte offset of the
 //         first byte that does not start a character.
 std::vector<CodePoint> decode_utf8(std::string_view text, const std::string& source_name);
+
+// The first fault decode_utf8 would throw for, or none: for a caller that words the error itself
+// (a transcript's reader names the legacy encodings the bytes could be).
+std::optional<Utf8Fault> find_utf8_fault(std::string_view text);
 
 // Full-width ASCII forms (！？，Ａ１％) behave as their ASCII counterparts, and so does the ratio sign
 // ∶ (U+2236), which GB/T 15834 and news write for a colon between numbers (1∶0击败, 比例尺1∶50000).

@@ -207,13 +207,11 @@ std::string transcript_utf8(std::string_view bytes, const std::string& encoding,
     const std::string name = lowercase(encoding);
     if (has_byte_order_mark(bytes)) return utf8_from_marked_text(bytes, source);
     if (is_utf8_name(name)) {
-        try {
-            decode_utf8(bytes, source);
-        } catch (const ParseError& error) {
-            const std::size_t offset = std::stoul(error.item().substr(error.item().rfind(' ') + 1));
-            throw ParseError(source, error.line(), error.column(), error.item(),
-                             "not UTF-8 (the byte " + byte_name(static_cast<unsigned char>(bytes[offset])) +
-                                 " starts no character); " + legacy_readings(bytes));
+        if (const auto fault = find_utf8_fault(bytes)) {
+            throw ParseError(
+                source, fault->line, fault->column, "byte offset " + std::to_string(fault->offset),
+                "not UTF-8 (the byte " + byte_name(static_cast<unsigned char>(bytes[fault->offset])) +
+                    " starts no character); " + legacy_readings(bytes));
         }
         return std::string(bytes);
     }
