@@ -157,9 +157,12 @@ def mean_square(path):
 
 def moved_voice(path, out, rng):
     """speaker 3 made into another voice: pitch and formants moved together by 2-4 semitones, up or
-    down (align_bench's v- conditions, bench/make_human_corpus.cpp with_voice)."""
+    down (align_bench's v- conditions, bench/make_human_corpus.cpp with_voice). Returns the factor it
+    is played faster by: every time in it is that many times earlier."""
     semitones = rng.uniform(2.0, 4.0) * rng.choice((-1, 1))
-    run("sox", "-R", path, "-b", "16", out, "speed", f"{2 ** (semitones / 12):.6f}", "rate", "-v", "16k")
+    factor = float(f"{2 ** (semitones / 12):.6f}")
+    run("sox", "-R", path, "-b", "16", out, "speed", f"{factor:.6f}", "rate", "-v", "16k")
+    return factor
 
 
 def in_room(path):
@@ -194,7 +197,7 @@ def record(kind, pinyin, stem, seed):
     """The bare and the padded recording of a line of `kind`, as paths. `seed` names the line: its
     voice, noise and SNR are drawn from streams seeded by it and the kind, so a line sounds the same
     whatever other kinds are asked for."""
-    voice, condition = KINDS[kind]
+    voice = KINDS[kind][0]
     speaker = "person" if voice == "voice" else voice
     source = f"{stem}-{speaker}.wav"
     # Made once a run: a file left in OUT_DIR by an earlier run may hold another line.
@@ -211,9 +214,16 @@ def record(kind, pinyin, stem, seed):
     if spoken != bare:
         run("sox", "-R", spoken, bare)
     pad(bare, padded)
+    apply_condition(kind, bare, padded, mean_square(spoken), seed)
+    return bare, padded
+
+
+def apply_condition(kind, bare, padded, power, seed):
+    """`kind`'s noise, room or phone on the bare and the padded recording of line `seed`, in place;
+    `power` is the spoken line's mean square (the noise's SNR is set against it)."""
+    condition = KINDS[kind][1]
     if condition is None:
-        return bare, padded
-    power = mean_square(spoken)
+        return
     draw = random.Random(f"{seed}:{kind}")
     colour, snr_db = draw.choice(("white", "pink")), draw.uniform(15.0, 20.0)
     for path, framing in ((bare, "bare"), (padded, "padded")):
@@ -224,7 +234,6 @@ def record(kind, pinyin, stem, seed):
             in_room(path)
         else:
             over_phone(path, power, noise_rng)
-    return bare, padded
 
 
 def wrong_text(lines, k):
