@@ -130,6 +130,47 @@ def with_xing_frames(source, target, share):
     open(target, "wb").write(bytes(data))
 
 
+def mp3_frame_size(header):
+    """The bytes of the MPEG Layer III frame whose 4-byte header is `header` (MPEG-1, -2 and -2.5:
+    from its bit rate, its sample rate and its padding bit)."""
+    assert header[0] == 0xFF and header[1] & 0xE0 == 0xE0, "no frame header"
+    version = header[1] >> 3 & 3
+    rate = [44100, 48000, 32000][header[2] >> 2 & 3] >> {3: 0, 2: 1, 0: 2}[version]
+    mpeg1_kbps = [0, 32, 40, 48, 56, 64, 80, 96, 112, 128, 160, 192, 224, 256, 320]
+    mpeg2_kbps = [0, 8, 16, 24, 32, 40, 48, 56, 64, 80, 96, 112, 128, 144, 160]
+    kbps = (mpeg1_kbps if version == 3 else mpeg2_kbps)[header[2] >> 4]
+    return (144 if version == 3 else 72) * kbps * 1000 // rate + (header[2] >> 1 & 1)
+
+
+def with_vbri_header(source, target, frames_per_entry=8, entry_bytes=2, scale=1):
+    """A VBR MP3 as Fraunhofer's encoder writes one: a first frame holding a VBRI header (32 bytes
+    after the frame's header: "VBRI", version 1, delay, quality, the stream's bytes and frames, the
+    table's entries, scale, bytes an entry and frames an entry, then the table: the bytes of each
+    `frames_per_entry` frames over `scale`) before the frames of `source`, an MP3 with no Xing or
+    Info frame (ffmpeg -write_xing 0, -id3v2_version 0). No Debian encoder writes VBRI."""
+    data = open(source, "rb").read()
+    sizes, at = [], 0
+    while at + 4 <= len(data):
+        sizes.append(mp3_frame_size(data[at:at + 4]))
+        at += sizes[-1]
+    table = [sum(sizes[k:k + frames_per_entry]) // scale for k in range(0, len(sizes), frames_per_entry)]
+
+    def fields(stream_bytes):
+        return (b"VBRI" + struct.pack(">HHHII", 1, 1105, 75, stream_bytes, len(sizes))
+                + struct.pack(">HHHH", len(table), scale, entry_bytes, frames_per_entry)
+                + b"".join(entry.to_bytes(entry_bytes, "big") for entry in table))
+
+    # The header's frame: the first frame's header at the lowest bit rate whose frame holds the fields.
+    first = bytearray(data[:4])
+    for index in range(1, 15):
+        first[2] = first[2] & 0x0D | index << 4  # that bit rate, no padding
+        header_size = mp3_frame_size(first)
+        if header_size >= 36 + len(fields(0)):
+            break
+    frame = bytes(first) + bytes(32) + fields(header_size + len(data))
+    open(target, "wb").write(frame + bytes(header_size - len(frame)) + data)
+
+
 def make_cases(out, label, stem):
     """The cases of one source passage; returns (case, file, shift_s) rows."""
     wav, txt = stem + ".wav", stem + ".txt"
@@ -256,6 +297,12 @@ def make_cases(out, label, stem):
     case("VBR MP3 (Xing header)", path("vbr.mp3"))
     with_xing_frames(path("vbr.mp3"), path("vbr_short_header.mp3"), 0.5)
     case("VBR MP3, Xing header states half", path("vbr_short_header.mp3"))
+    # The same as Fraunhofer's encoder writes it: a VBRI header, whose table gives the bytes of
+    # each 8 frames (0.21 s), in place of LAME's Xing header (session 21).
+    ffmpeg("-i", ref, "-c:a", "libmp3lame", "-q:a", "5", "-ar", "44100", "-write_xing", "0", "-id3v2_version", "0",
+           path("vbr_bare.mp3"))
+    with_vbri_header(path("vbr_bare.mp3"), path("vbri.mp3"))
+    case("VBR MP3 (VBRI header)", path("vbri.mp3"))
     sox(ref, path("inverted.wav"), "remix", "1", "1i")
     case("stereo, one channel phase-inverted", path("inverted.wav"))
     sox("-n", "-r", "16k", "-b", "16", path("hiss.wav"), "synth", f"{length:.3f}", "whitenoise", "vol", "0.01")
@@ -280,6 +327,41 @@ def make_cases(out, label, stem):
     sox(ref, path("silence60_after.wav"), "pad", "0", "60")
     sox("-m", path("room.wav"), path("silence60_after.wav"), path("room60_after.wav"))
     case("60 s of faint room after", path("room60_after.wav"))
+    # Phone apps as users send their recordings on (session 21). WhatsApp's voice notes are Opus in
+    # Ogg at 16 kHz, mono, for speech (.ogg, .opus); Telegram's Opus at 48 kHz (.oga); an Android
+    # recorder's AAC in 3GP; a call recorder's telephone band at 8 kHz under a phone's automatic
+    # gain, fast enough to pump (10 ms frames, the pauses' hiss pulled up 20x).
+    ffmpeg("-i", ref, "-ac", "1", "-ar", "16000", "-c:a", "libopus", "-b:a", "16k", "-application", "voip",
+           path("whatsapp.ogg"))
+    case("WhatsApp voice note: Opus 16 kHz voip in .ogg", path("whatsapp.ogg"))
+    ffmpeg("-i", ref, "-ac", "1", "-ar", "48000", "-c:a", "libopus", "-b:a", "32k", "-f", "ogg", path("telegram.oga"))
+    case("Telegram voice message: Opus 48 kHz in .oga", path("telegram.oga"))
+    ffmpeg("-i", ref, "-ac", "1", "-c:a", "aac", "-b:a", "24k", path("android_aac.3gp"))
+    case("Android recorder: AAC in 3GP", path("android_aac.3gp"))
+    ffmpeg("-i", narrow, "-af", "dynaudnorm=f=10:g=3:m=20", path("call_agc.wav"))
+    case("call recording: 8 kHz 300-3400 Hz, AGC pumping", path("call_agc.wav"))
+    # A long quiet lead: 20 s of a faint room (a recorder started early, left in a pocket), then a
+    # click (the phone picked up, 10 ms of noise at -6 dBFS) 0.5 s before the speech.
+    sox(ref, path("padded20.wav"), "pad", "20", "0")
+    sox("-n", "-r", "16k", "-b", "16", path("room20.wav"), "synth", f"{20 + length:.3f}", "pinknoise", "vol", "0.003")
+    sox("-n", "-r", "16k", "-b", "16", path("click.wav"), "synth", "0.01", "whitenoise", "vol", "0.5",
+        "pad", f"{20 + first_start - 0.5:.3f}", "0")
+    sox("-m", path("room20.wav"), path("padded20.wav"), path("click.wav"), path("lead_click.wav"))
+    case("20 s of faint room, a click 0.5 s before the speech", path("lead_click.wav"), 20.0)
+    # A WeChat or QQ voice message: SILK v3 ("#!SILK_V3" after WeChat's byte 2, then frames of a
+    # 2-byte length and their bytes), often named .amr. No encoder in Debian: the frames here are
+    # random bytes, for talkface only has to say what it is.
+    generator = random.Random(5)
+    silk = b"\x02#!SILK_V3"
+    for _ in range(int(length * 50)):
+        size = generator.randrange(20, 60)
+        silk += struct.pack("<h", size) + bytes(generator.randrange(256) for _ in range(size))
+    open(path("wechat.amr"), "wb").write(silk + b"\xff\xff")
+    case("WeChat voice message (SILK v3, named .amr)", path("wechat.amr"))
+    # A WAV whose header states more than it holds: a recorder that wrote the size it meant to
+    # record, then crashed.
+    with_wav_sizes(ref, path("overstated.wav"), None, lambda real: real * 2)
+    case("WAV data size twice its data (recorder crashed)", path("overstated.wav"))
     # Video sound tracks and broken files.
     picture = ["-f", "lavfi", "-i", f"color=c=gray:s=16x16:r=2:d={length:.3f}"]
     for name, codecs in [("clip.mkv", ["-c:v", "libvpx", "-b:v", "8k", "-c:a", "libopus", "-b:a", "16k"]),
@@ -332,7 +414,7 @@ def make_cases(out, label, stem):
     # The scratch above hits the cover art (a third of that file is the picture); these hit the
     # sound: a phone's call recorder at 8 kHz (LAME-tagged), sox's untagged MP3, a VBR one.
     sox(narrow, "-C", "16", path("narrow_sox.mp3"))
-    for name in ["narrow.mp3", "narrow_sox.mp3", "vbr.mp3"]:
+    for name in ["narrow.mp3", "narrow_sox.mp3", "vbr.mp3", "vbri.mp3"]:
         scratched(path(name), path("scratched_" + name))
         case("scratched " + name + " (in its sound)", path("scratched_" + name))
     sox(ref, path("voice.flac"))

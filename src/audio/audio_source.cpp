@@ -103,6 +103,14 @@ bool is_sndfile_container(const std::array<char, 12>& header) {
            start.substr(0, 4) == "dns." || start.substr(0, 4) == "caff" || start.substr(0, 4) == "OggS";
 }
 
+// A voice message as WeChat and QQ save it (.silk, often named .amr or .slk): "#!SILK_V3", after a
+// byte 0x02 in WeChat's, then the frames of Skype's SILK codec, which FFmpeg has no decoder for
+// (it decodes SILK only inside Opus). FFmpeg called it "Invalid data found when processing input".
+bool is_silk_voice_message(const std::array<char, 12>& header) {
+    const std::string_view start(header.data(), header.size());
+    return start.substr(0, 9) == "#!SILK_V3" || start.substr(0, 10) == "\x02#!SILK_V3";
+}
+
 // Whether `bytes` hold a whole Ogg page (its CRC checked) anywhere.
 bool holds_ogg_page(const char* bytes, std::size_t count) {
     ogg_sync_state sync;
@@ -461,6 +469,11 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
         // A directory opens as a stream and fails on the first read (EISDIR).
         if (probe.bad() || (probe.gcount() == 0 && errno != 0)) throw FileError(path, std::strerror(errno));
     }
+    if (is_silk_voice_message(header))
+        throw ParseError(
+            path, 0, 0, "",
+            "a voice message in SILK v3, the codec of WeChat's and QQ's voice messages, which talkface "
+            "cannot decode (nor can FFmpeg); convert it to WAV or MP3 with a SILK v3 decoder first");
     if (!is_sndfile_container(header)) return open_ffmpeg_file(path);
     if (std::string_view(header.data(), 4) == "RIFF") {
         if (const auto stale = data_past_stated_size(path)) {

@@ -507,12 +507,13 @@ private:
     // is a fraction of a millisecond and evens out). A variable rate (packets of other sizes
     // among the first kMp3PacketsToJudgeRate) gives its frames any size: there only the bytes
     // between packets and those of a packet larger than any MP3 frame count, beyond a frame's:
-    // their time is what the stream's table of contents (mp3_toc.hpp) gives the bytes from the
-    // packet before to the end of this one, where it places the packets before where they reach
-    // (toc_agrees_at); else an estimate at the rate of the kMp3RecentPackets packets before them,
-    // which misses where the lost frames were larger or smaller than those: the sweep's two
-    // scratches of a VBR MP3 (2000 bytes hitting frames of 0.21 s) read as 0.23 and 0.34 s lost by
-    // the rate, where nothing was counted before (every later syllable came 0.18 s early).
+    // their time is what the stream's table of contents (mp3_toc.hpp: a Xing or a VBRI header)
+    // gives the bytes from the packet before to the end of this one, where it places the packets
+    // before where they reach (toc_agrees_at); else an estimate at the rate of the
+    // kMp3RecentPackets packets before them, which misses where the lost frames were larger or
+    // smaller than those: the sweep's two scratches of a VBR MP3 (2000 bytes hitting frames of
+    // 0.21 s) read as 0.23 and 0.34 s lost by the rate, where nothing was counted before (every
+    // later syllable came 0.18 s early).
     // 0 for every other codec.
     std::size_t mp3_bytes_lost(const AVPacket& packet) {
         const std::int64_t next_byte = next_packet_byte_;
@@ -526,6 +527,7 @@ private:
         if (mp3_packets_judged_ < kMp3PacketsToJudgeRate) {
             ++mp3_packets_judged_;
             mp3_rate_is_constant_ &= packet.pos == next_byte && std::fabs(packet.size - frame_bytes) <= 1.0;
+            follow_toc(packet, packet_length);
             mp3_frames_before_ += packet_length;
             return 0;
         }
@@ -534,8 +536,13 @@ private:
             mp3_lost_frames_ += (bytes_between + packet.size) * frames_per_byte - packet_length;
         else if (bytes_between > 0.0 || packet.size > kLargestMp3FrameBytes) {
             if (toc_agrees_at(next_byte)) {
-                mp3_lost_frames_ += std::max(0.0, mp3_toc_->sample_at(packet.pos + packet.size) -
-                                                      mp3_toc_->sample_at(next_byte) - packet_length);
+                // Where a table's points lie on frames (VBRI), the stretch the packets reached is
+                // placed by them, and only the scratch's end is read between points.
+                const double start = mp3_toc_->points_on_frames && mp3_toc_followed_
+                                         ? mp3_frames_before_ - mp3_toc_offset_
+                                         : mp3_toc_->sample_at(next_byte);
+                mp3_lost_frames_ +=
+                    std::max(0.0, mp3_toc_->sample_at(packet.pos + packet.size) - start - packet_length);
             } else {
                 // Bytes a sample over the recent packets, else the stream's average.
                 const double recent_frames_per_byte =
@@ -543,6 +550,7 @@ private:
                 mp3_lost_frames_ += (bytes_between + packet.size) * recent_frames_per_byte - packet_length;
             }
         } else {
+            follow_toc(packet, packet_length);
             mp3_recent_bytes_ += packet.size - mp3_recent_bytes_ / kMp3RecentPackets;
             mp3_recent_frames_ += packet_length - mp3_recent_frames_ / kMp3RecentPackets;
         }
@@ -552,6 +560,23 @@ private:
         mp3_frames_before_ += static_cast<double>(lost);
         mp3_lost_frames_ = 0.0;
         return lost;
+    }
+
+    // Holds a variable-rate MP3's table of contents to a whole packet: at the last table point
+    // inside it, the samples the packets reach (as mp3_frames_before_ counts them, the packet's
+    // own linear in its bytes) less the table's sample there.
+    void follow_toc(const AVPacket& packet, double packet_length) {
+        if (!mp3_toc_ || packet.size <= 0) return;
+        const std::vector<Mp3Toc::Point>& points = mp3_toc_->points;
+        const auto start = static_cast<double>(packet.pos);
+        const double end = start + packet.size;
+        while (mp3_toc_point_ < points.size() && points[mp3_toc_point_].byte < start) ++mp3_toc_point_;
+        for (; mp3_toc_point_ < points.size() && points[mp3_toc_point_].byte < end; ++mp3_toc_point_) {
+            const Mp3Toc::Point& point = points[mp3_toc_point_];
+            mp3_toc_offset_ =
+                mp3_frames_before_ + (point.byte - start) / packet.size * packet_length - point.sample;
+            mp3_toc_followed_ = true;
+        }
     }
 
     // Whether a variable-rate MP3's table of contents (mp3_toc.hpp) places the byte `file_byte`
@@ -761,6 +786,9 @@ private:
     double mp3_recent_frames_ = 0.0;      // and their samples
     double mp3_frames_before_ = 0.0;      // an MP3's samples up to the last packet, lost ones with them
     std::optional<Mp3Toc> mp3_toc_;       // a variable-rate MP3's table of contents, if it has one
+    std::size_t mp3_toc_point_ = 0;       // the first point of mp3_toc_ past the packets read
+    double mp3_toc_offset_ = 0.0;         // the packets' samples less the table's at the last point passed
+    bool mp3_toc_followed_ = false;       // a point of mp3_toc_ lay inside a whole packet
     bool flushed_ = false;
     std::vector<float> interleaved_;
     ChannelMixer mixer_;

@@ -1,15 +1,17 @@
 #include "audio/mp3_toc.hpp"
 
 #include <algorithm>
+#include <array>
 #include <fstream>
 
 namespace talkface::detail {
 
 namespace {
 
-std::uint32_t big_endian(std::string_view bytes, std::size_t at) {
+// `count` bytes (1-4) at `at`, most significant first.
+std::uint32_t big_endian(std::string_view bytes, std::size_t at, std::size_t count = 4) {
     std::uint32_t value = 0;
-    for (std::size_t k = 0; k < 4; ++k) value = value << 8 | static_cast<unsigned char>(bytes[at + k]);
+    for (std::size_t k = 0; k < count; ++k) value = value << 8 | static_cast<unsigned char>(bytes[at + k]);
     return value;
 }
 
@@ -22,16 +24,132 @@ std::size_t after_id3(std::string_view file) {
     return 10 + size + (has_footer ? 10 : 0);
 }
 
+// What an MPEG Layer III frame's 4-byte header says of the frame.
+struct Mp3FrameHeader {
+    int version = 0;  // 3 MPEG-1, 2 MPEG-2, 0 MPEG-2.5
+    bool is_mono = false;
+    std::size_t samples = 0;  // a frame's samples: 1152 (MPEG-1), 576
+    std::size_t bytes = 0;    // the frame's own size, padding byte included; 0 in free format
+};
+
+// The header at the start of `bytes` (at least 4), if it is an MPEG Layer III frame's.
+std::optional<Mp3FrameHeader> read_mp3_frame_header(std::string_view bytes) {
+    if (bytes.size() < 4) return std::nullopt;
+    const auto first = static_cast<unsigned char>(bytes[0]);
+    const auto second = static_cast<unsigned char>(bytes[1]);
+    const auto third = static_cast<unsigned char>(bytes[2]);
+    if (first != 0xFF || (second & 0xE0) != 0xE0) return std::nullopt;
+    Mp3FrameHeader header;
+    header.version = (second >> 3) & 3;
+    const int layer = (second >> 1) & 3;  // 1 Layer III
+    const int bitrate_index = third >> 4;
+    const int rate_index = (third >> 2) & 3;
+    if (header.version == 1 || layer != 1 || bitrate_index == 15 || rate_index == 3) return std::nullopt;
+    header.is_mono = ((static_cast<unsigned char>(bytes[3]) >> 6) & 3) == 3;
+    const bool is_mpeg1 = header.version == 3;
+    header.samples = is_mpeg1 ? 1152 : 576;
+    constexpr std::array<int, 15> kMpeg1Kbps{0,   32,  40,  48,  56,  64,  80, 96,
+                                             112, 128, 160, 192, 224, 256, 320};
+    constexpr std::array<int, 15> kMpeg2Kbps{0, 8, 16, 24, 32, 40, 48, 56, 64, 80, 96, 112, 128, 144, 160};
+    constexpr std::array<int, 3> kMpeg1Hz{44100, 48000, 32000};
+    const int rate_hz = kMpeg1Hz[static_cast<std::size_t>(rate_index)] >> (is_mpeg1              ? 0
+                                                                           : header.version == 2 ? 1
+                                                                                                 : 2);
+    const int kbps = (is_mpeg1 ? kMpeg1Kbps : kMpeg2Kbps)[static_cast<std::size_t>(bitrate_index)];
+    // A slot is a byte in Layer III: 144 of them a kb/s per kHz in MPEG-1, 72 in MPEG-2 and 2.5.
+    const int padding = (third >> 1) & 1;
+    if (kbps > 0)
+        header.bytes = static_cast<std::size_t>((is_mpeg1 ? 144 : 72) * kbps * 1000 / rate_hz + padding);
+    return header;
+}
+
+// The Xing or Info header's table after the first frame's side information (`at`).
+std::optional<Mp3Toc> read_xing_toc(std::string_view file, std::int64_t file_size, std::size_t start,
+                                    const Mp3FrameHeader& header, std::size_t at) {
+    if (file.size() < at + 8 || (file.substr(at, 4) != "Xing" && file.substr(at, 4) != "Info"))
+        return std::nullopt;
+    const std::uint32_t flags = big_endian(file, at + 4);
+    constexpr std::uint32_t kFrames = 1;
+    constexpr std::uint32_t kBytes = 2;
+    constexpr std::uint32_t kTable = 4;
+    if ((flags & kFrames) == 0 || (flags & kTable) == 0) return std::nullopt;
+    Mp3Toc toc;
+    toc.is_variable_rate = file.substr(at, 4) == "Xing";
+    at += 8;
+    if (file.size() < at + 4) return std::nullopt;
+    const double samples = static_cast<double>(big_endian(file, at)) * static_cast<double>(header.samples);
+    at += 4;
+    const auto first_byte = static_cast<std::int64_t>(start);
+    std::int64_t stream_bytes = file_size - first_byte;
+    if ((flags & kBytes) != 0) {
+        if (file.size() < at + 4) return std::nullopt;
+        stream_bytes = big_endian(file, at);
+        at += 4;
+    }
+    constexpr std::size_t kEntries = 100;
+    if (file.size() < at + kEntries || samples <= 0.0 || stream_bytes <= 0) return std::nullopt;
+    const auto entries = file.substr(at, kEntries);
+    if (!std::is_sorted(entries.begin(), entries.end(), [](char a, char b) {
+            return static_cast<unsigned char>(a) < static_cast<unsigned char>(b);
+        }))
+        return std::nullopt;
+    for (std::size_t k = 0; k < kEntries; ++k)
+        toc.points.push_back({static_cast<double>(first_byte) + static_cast<unsigned char>(entries[k]) *
+                                                                    static_cast<double>(stream_bytes) / 256.0,
+                              static_cast<double>(k) / 100.0 * samples});
+    toc.points.push_back({static_cast<double>(first_byte + stream_bytes), samples});
+    return toc;
+}
+
+// The VBRI header's table, 32 bytes after the first frame's header (whatever its channels).
+// Its fields, big-endian: "VBRI", version (1), delay, quality, the stream's bytes and frames (2, 2,
+// 2, 4, 4 bytes), then the table's entries, their scale, an entry's bytes (1-4) and the frames an
+// entry covers (2 bytes each), then the entries: the bytes each stretch of frames takes, over the
+// scale. The stretches start with the frame after the header's own (which FFmpeg does not decode).
+std::optional<Mp3Toc> read_vbri_toc(std::string_view file, std::size_t start, const Mp3FrameHeader& header) {
+    std::size_t at = start + 4 + 32;
+    constexpr std::size_t kFieldsBytes = 26;
+    if (file.size() < at + kFieldsBytes || file.substr(at, 4) != "VBRI" || big_endian(file, at + 4, 2) != 1 ||
+        header.bytes == 0)
+        return std::nullopt;
+    const std::uint32_t frames = big_endian(file, at + 14);
+    const std::uint32_t entries = big_endian(file, at + 18, 2);
+    const std::uint32_t scale = big_endian(file, at + 20, 2);
+    const std::uint32_t entry_bytes = big_endian(file, at + 22, 2);
+    const std::uint32_t frames_per_entry = big_endian(file, at + 24, 2);
+    at += kFieldsBytes;
+    if (frames == 0 || entries == 0 || scale == 0 || entry_bytes < 1 || entry_bytes > 4 ||
+        frames_per_entry == 0 || file.size() < at + static_cast<std::size_t>(entries) * entry_bytes)
+        return std::nullopt;
+    Mp3Toc toc;
+    toc.is_variable_rate = true;
+    toc.points_on_frames = true;
+    double byte = static_cast<double>(start + header.bytes);
+    toc.points.push_back({byte, 0.0});
+    for (std::uint32_t k = 0; k < entries; ++k) {
+        byte += static_cast<double>(big_endian(file, at + k * entry_bytes, entry_bytes)) * scale;
+        // The last entry may cover fewer frames than the others.
+        const double frames_before = std::min<double>(static_cast<double>(k + 1) * frames_per_entry, frames);
+        toc.points.push_back({byte, frames_before * static_cast<double>(header.samples)});
+    }
+    if (toc.points.back().byte <= toc.points.front().byte) return std::nullopt;
+    return toc;
+}
+
 }  // namespace
 
 double Mp3Toc::sample_at(std::int64_t file_byte) const {
-    const double at = static_cast<double>(file_byte - first_byte) * 256.0 / static_cast<double>(stream_bytes);
-    std::size_t entry = 0;
-    while (entry + 1 < entries.size() && entries[entry + 1] <= at) ++entry;
-    const double low = entries[entry];
-    const double high = entry + 1 < entries.size() ? entries[entry + 1] : 256.0;
-    const double within = high > low ? std::clamp((at - low) / (high - low), 0.0, 1.0) : 0.0;
-    return (static_cast<double>(entry) + within) / 100.0 * samples;
+    if (points.empty()) return 0.0;
+    const auto byte = static_cast<double>(file_byte);
+    // The last point at or before the byte (the first if none is), and the one after it.
+    const auto after = std::upper_bound(points.begin() + 1, points.end(), byte,
+                                        [](double value, const Point& point) { return value < point.byte; });
+    if (after == points.end()) return points.back().sample;
+    const Point& low = *(after - 1);
+    const Point& high = *after;
+    const double within =
+        high.byte > low.byte ? std::clamp((byte - low.byte) / (high.byte - low.byte), 0.0, 1.0) : 0.0;
+    return low.sample + within * (high.sample - low.sample);
 }
 
 std::optional<Mp3Toc> read_mp3_toc(std::string_view file, std::int64_t file_size) {
@@ -43,41 +161,13 @@ std::optional<Mp3Toc> read_mp3_toc(std::string_view file, std::int64_t file_size
                                         (static_cast<unsigned char>(file[start + 1]) & 0xE0) == 0xE0))
         ++start;
     if (start + 4 > search_end) return std::nullopt;
-    const auto second = static_cast<unsigned char>(file[start + 1]);
-    const int version = (second >> 3) & 3;  // 3 MPEG-1, 2 MPEG-2, 0 MPEG-2.5
-    const int layer = (second >> 1) & 3;    // 1 Layer III
-    if (version == 1 || layer != 1) return std::nullopt;
-    const bool is_mono = ((static_cast<unsigned char>(file[start + 3]) >> 6) & 3) == 3;
-    // The header follows the frame's header and its side information, whose size these decide.
-    const std::size_t side_info = version == 3 ? (is_mono ? 17 : 32) : (is_mono ? 9 : 17);
-    std::size_t at = start + 4 + side_info;
-    if (file.size() < at + 8 || (file.substr(at, 4) != "Xing" && file.substr(at, 4) != "Info"))
-        return std::nullopt;
-    const std::uint32_t flags = big_endian(file, at + 4);
-    constexpr std::uint32_t kFrames = 1;
-    constexpr std::uint32_t kBytes = 2;
-    constexpr std::uint32_t kTable = 4;
-    if ((flags & kFrames) == 0 || (flags & kTable) == 0) return std::nullopt;
-    at += 8;
-    Mp3Toc toc;
-    toc.first_byte = static_cast<std::int64_t>(start);
-    toc.is_variable_rate = file.substr(at - 8, 4) == "Xing";
-    const std::size_t samples_per_frame = version == 3 ? 1152 : 576;
-    if (file.size() < at + 4) return std::nullopt;
-    toc.samples = static_cast<double>(big_endian(file, at)) * static_cast<double>(samples_per_frame);
-    at += 4;
-    toc.stream_bytes = file_size - toc.first_byte;
-    if ((flags & kBytes) != 0) {
-        if (file.size() < at + 4) return std::nullopt;
-        toc.stream_bytes = big_endian(file, at);
-        at += 4;
-    }
-    if (file.size() < at + toc.entries.size() || toc.samples <= 0.0 || toc.stream_bytes <= 0)
-        return std::nullopt;
-    for (std::size_t k = 0; k < toc.entries.size(); ++k)
-        toc.entries[k] = static_cast<unsigned char>(file[at + k]);
-    if (!std::is_sorted(toc.entries.begin(), toc.entries.end())) return std::nullopt;
-    return toc;
+    const std::optional<Mp3FrameHeader> header = read_mp3_frame_header(file.substr(start, 4));
+    if (!header) return std::nullopt;
+    // The Xing header follows the frame's header and its side information, whose size these decide.
+    const std::size_t side_info =
+        header->version == 3 ? (header->is_mono ? 17 : 32) : (header->is_mono ? 9 : 17);
+    if (auto xing = read_xing_toc(file, file_size, start, *header, start + 4 + side_info)) return xing;
+    return read_vbri_toc(file, start, *header);
 }
 
 std::optional<Mp3Toc> read_mp3_toc_file(const std::string& path) {

@@ -114,6 +114,62 @@ std::string with_huge_length(const std::string& file, std::string bytes) {
     return bytes;
 }
 
+// The bytes of the MPEG Layer III frame whose header starts at `at` (MPEG-1, -2 or -2.5).
+std::size_t mp3_frame_bytes(const std::string& bytes, std::size_t at) {
+    const auto second = static_cast<std::uint8_t>(bytes[at + 1]);
+    const auto third = static_cast<std::uint8_t>(bytes[at + 2]);
+    const int version = second >> 3 & 3;  // 3 MPEG-1, 2 MPEG-2, 0 MPEG-2.5
+    const int mpeg1_kbps[] = {0, 32, 40, 48, 56, 64, 80, 96, 112, 128, 160, 192, 224, 256, 320};
+    const int mpeg2_kbps[] = {0, 8, 16, 24, 32, 40, 48, 56, 64, 80, 96, 112, 128, 144, 160};
+    const int mpeg1_hz[] = {44100, 48000, 32000};
+    const int rate_hz = mpeg1_hz[third >> 2 & 3] >> (version == 3 ? 0 : version == 2 ? 1 : 2);
+    const int kbps = (version == 3 ? mpeg1_kbps : mpeg2_kbps)[third >> 4];
+    return static_cast<std::size_t>((version == 3 ? 144 : 72) * kbps * 1000 / rate_hz + (third >> 1 & 1));
+}
+
+// Fraunhofer's VBRI header, as its encoder writes it in a variable-rate MP3's first frame (no Debian
+// encoder does): `bare`, an MP3 stream with no tag and no Xing frame, after a frame that holds, 32
+// bytes past its header, "VBRI", version 1, delay, quality, the stream's bytes and frames, the
+// table's entries, scale, bytes an entry and frames an entry, then the table: the bytes each
+// `frames_per_entry` frames take, over `scale`, times `lie` (a table of another stream).
+std::string with_vbri_header(const std::string& bare, unsigned frames_per_entry, unsigned entry_bytes,
+                             unsigned scale, unsigned lie = 1) {
+    std::vector<std::size_t> sizes;
+    for (std::size_t at = 0; at + 4 <= bare.size(); at += sizes.back()) {
+        REQUIRE(static_cast<std::uint8_t>(bare[at]) == 0xFF);
+        sizes.push_back(mp3_frame_bytes(bare, at));
+    }
+    std::string table;
+    unsigned entries = 0;
+    for (std::size_t first = 0; first < sizes.size(); first += frames_per_entry, ++entries) {
+        std::size_t stretch = 0;
+        for (std::size_t k = first; k < std::min(sizes.size(), first + frames_per_entry); ++k)
+            stretch += sizes[k];
+        const std::size_t entry = stretch / scale * lie;
+        REQUIRE(entry < (std::size_t{1} << (8 * entry_bytes)));
+        for (unsigned i = entry_bytes; i-- > 0;) table += static_cast<char>(entry >> (8 * i));
+    }
+    auto be16 = [](unsigned value) {
+        return std::string{static_cast<char>(value >> 8), static_cast<char>(value)};
+    };
+    std::string fields = "VBRI" + be16(1) + be16(1105) + be16(75) + std::string(4, '\0') +
+                         std::string(4, '\0') + be16(entries) + be16(scale) + be16(entry_bytes) +
+                         be16(frames_per_entry) + table;
+    // The first frame's header at the lowest bit rate whose frame holds the fields, unpadded.
+    std::string frame = bare.substr(0, 4);
+    for (int index = 1; index < 15; ++index) {
+        frame[2] = static_cast<char>((static_cast<std::uint8_t>(frame[2]) & 0x0D) | index << 4);
+        if (mp3_frame_bytes(frame, 0) >= 36 + fields.size()) break;
+    }
+    const std::size_t frame_bytes = mp3_frame_bytes(frame, 0);
+    REQUIRE(frame_bytes >= 36 + fields.size());
+    put_be32(fields, 10, static_cast<std::uint32_t>(frame_bytes + bare.size()));
+    put_be32(fields, 14, static_cast<std::uint32_t>(sizes.size()));
+    frame += std::string(32, '\0') + fields;
+    frame.resize(frame_bytes, '\0');
+    return frame + bare;
+}
+
 struct Outcome {
     bool threw = false;
     std::string message;
@@ -160,7 +216,7 @@ void check_damage_named(const std::string& path, const std::string& transcript) 
 // what follows the scratch is where it was (the last second's loudness lines up).
 // `max_lag_steps`: how far (in the envelope's 5 ms steps) the last second may lie from the whole's.
 void check_scratch_keeps_time(const Container& container, double share = 1.0 / 3.0, std::uint32_t seed = 3,
-                              int max_lag_steps = 1) {
+                              int max_lag_steps = 1, double max_length_error_s = 0.03) {
     const std::string file = container.file;
     CAPTURE(file);
     CAPTURE(share);
@@ -180,7 +236,7 @@ void check_scratch_keeps_time(const Container& container, double share = 1.0 / 3
         const int rate_hz = source->sample_rate_hz();
         const int whole_rate_hz = whole_source->sample_rate_hz();
         CHECK(std::fabs(static_cast<double>(samples.size()) / rate_hz -
-                        static_cast<double>(whole_samples.size()) / whole_rate_hz) <= 0.03);
+                        static_cast<double>(whole_samples.size()) / whole_rate_hz) <= max_length_error_s);
         const auto second = static_cast<std::size_t>(rate_hz);
         const auto whole_second = static_cast<std::size_t>(whole_rate_hz);
         REQUIRE(samples.size() > 2 * second);
@@ -463,6 +519,55 @@ TEST_SUITE("audio") {
         const Container vbr{"vbr.mp3", "-c:a libmp3lame -q:a 5 -ar 44100", true};
         for (const double share : {0.2, 0.3, 1.0 / 3.0, 0.4, 0.45, 0.5, 0.55, 0.6, 0.7})
             check_scratch_keeps_time(vbr, share, 3, 4);
+    }
+
+    TEST_CASE(
+        "a scratch inside a variable-rate MP3 keeps its time by the table of contents of its VBRI header") {
+        // Fraunhofer's encoder writes its table in another layout than LAME's Xing header: the bytes
+        // of each stretch of a fixed number of frames, in entries of 1-4 bytes over a scale. Without
+        // it the bytes a scratch leaves took the time of the packets before them: the file read up
+        // to 60 ms long (0.2, 0.4, 0.45 and 0.5 over 30 ms). The places the Xing header's test
+        // scratches, each layout an entry can have. The scratch's end is placed between two
+        // entries: to a frame or two where an entry covers 4 or 8 frames (0.1-0.2 s), and there
+        // the length is held to 45 ms (0.55 reads 36-42 ms short: the frames the random bytes cut
+        // in two are refused whole).
+        const Container bare{"vbr_bare.mp3",
+                             "-c:a libmp3lame -q:a 5 -ar 44100 -write_xing 0 -id3v2_version 0", false};
+        const std::string stream = whole(bare);
+        struct Layout {
+            unsigned frames_per_entry, entry_bytes, scale;
+            double length_error_s;
+        };
+        for (const Layout layout :
+             {Layout{1, 2, 1, 0.03}, Layout{2, 4, 1, 0.03}, Layout{4, 1, 8, 0.045}, Layout{8, 3, 2, 0.045}}) {
+            CAPTURE(layout.frames_per_entry);
+            CAPTURE(layout.entry_bytes);
+            const std::string file = "vbri" + std::to_string(layout.frames_per_entry) + ".mp3";
+            write_bytes(test::output_path("whole_" + file),
+                        with_vbri_header(stream, layout.frames_per_entry, layout.entry_bytes, layout.scale));
+            for (const double share : {0.2, 0.3, 1.0 / 3.0, 0.4, 0.45, 0.5, 0.55, 0.6, 0.7})
+                check_scratch_keeps_time({file.c_str(), "", true}, share, 3, 4, layout.length_error_s);
+        }
+    }
+
+    TEST_CASE("a VBRI table of another stream is not trusted: the scratch is placed as without a table") {
+        // The table is held to where the packets before the scratch reach, as a Xing table is (a
+        // header written before the encoder finished, the first of two files joined).
+        const Container bare{"vbr_bare.mp3",
+                             "-c:a libmp3lame -q:a 5 -ar 44100 -write_xing 0 -id3v2_version 0", false};
+        const std::string stream = whole(bare);
+        const std::string lying = with_vbri_header(stream, 4, 2, 1, 2);
+        const std::size_t header_bytes = lying.size() - stream.size();
+        const auto scratch_at = static_cast<std::size_t>(static_cast<double>(stream.size()) * 0.45);
+        std::string scratched_stream = stream;
+        scratched_stream.replace(scratch_at, 2000, random_bytes(2000, 3));
+        std::string scratched_lying = lying;
+        scratched_lying.replace(header_bytes + scratch_at, 2000, random_bytes(2000, 3));
+        write_bytes(test::output_path("scratched_bare.mp3"), scratched_stream);
+        write_bytes(test::output_path("scratched_lying_vbri.mp3"), scratched_lying);
+        auto without_table = detail::open_audio_file(test::output_path("scratched_bare.mp3"));
+        auto with_lying_table = detail::open_audio_file(test::output_path("scratched_lying_vbri.mp3"));
+        CHECK(test::read_all(*with_lying_table).size() == test::read_all(*without_table).size());
     }
 
     TEST_CASE("a scratch in an Ogg page's header that claims more than the file holds is damage, not a cut") {
