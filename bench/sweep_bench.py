@@ -327,6 +327,7 @@ def make_cases(out, label, stem):
     sox(ref, path("silence60_after.wav"), "pad", "0", "60")
     sox("-m", path("room.wav"), path("silence60_after.wav"), path("room60_after.wav"))
     case("60 s of faint room after", path("room60_after.wav"))
+    picture = ["-f", "lavfi", "-i", f"color=c=gray:s=16x16:r=2:d={length:.3f}"]
     # Phone apps as users send their recordings on (session 21). WhatsApp's voice notes are Opus in
     # Ogg at 16 kHz, mono, for speech (.ogg, .opus); Telegram's Opus at 48 kHz (.oga); an Android
     # recorder's AAC in 3GP; a call recorder's telephone band at 8 kHz under a phone's automatic
@@ -338,6 +339,14 @@ def make_cases(out, label, stem):
     case("Telegram voice message: Opus 48 kHz in .oga", path("telegram.oga"))
     ffmpeg("-i", ref, "-ac", "1", "-c:a", "aac", "-b:a", "24k", path("android_aac.3gp"))
     case("Android recorder: AAC in 3GP", path("android_aac.3gp"))
+    # AAC where the container does not state the encoder's delay (an MP4's edit list does): a raw
+    # AAC file (ADTS), as an Android recorder's AAC setting and call recorders write it, and a
+    # screen recorder's MKV (OBS's default sound).
+    ffmpeg("-i", ref, "-ac", "1", "-c:a", "aac", "-b:a", "32k", path("recorder.aac"))
+    case("raw AAC (.aac, ADTS)", path("recorder.aac"))
+    ffmpeg(*picture, "-i", ref, "-c:v", "libvpx", "-b:v", "8k", "-c:a", "aac", "-b:a", "32k", "-shortest",
+           path("screen.mkv"))
+    case("AAC in MKV (a screen recorder's)", path("screen.mkv"))
     ffmpeg("-i", narrow, "-af", "dynaudnorm=f=10:g=3:m=20", path("call_agc.wav"))
     case("call recording: 8 kHz 300-3400 Hz, AGC pumping", path("call_agc.wav"))
     # A long quiet lead: 20 s of a faint room (a recorder started early, left in a pocket), then a
@@ -363,7 +372,6 @@ def make_cases(out, label, stem):
     with_wav_sizes(ref, path("overstated.wav"), None, lambda real: real * 2)
     case("WAV data size twice its data (recorder crashed)", path("overstated.wav"))
     # Video sound tracks and broken files.
-    picture = ["-f", "lavfi", "-i", f"color=c=gray:s=16x16:r=2:d={length:.3f}"]
     for name, codecs in [("clip.mkv", ["-c:v", "libvpx", "-b:v", "8k", "-c:a", "libopus", "-b:a", "16k"]),
                          ("clip.webm", ["-c:v", "libvpx", "-b:v", "8k", "-c:a", "libopus", "-b:a", "16k"]),
                          ("clip.mp4", ["-c:v", "libx264", "-crf", "40", "-c:a", "aac", "-b:a", "32k", "-movflags", "+faststart"])]:

@@ -14,6 +14,7 @@ extern "C" {
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <string_view>
 #include <vector>
 
 #include "audio/ffmpeg_messages.hpp"
@@ -33,6 +34,14 @@ constexpr int kMaxChannels = 64;
 // the encoder behind sox, ffmpeg and Audacity alike, delays by 576 samples, and the decoder adds
 // 529: the numbers a LAME tag would carry.
 constexpr std::size_t kUntaggedMp3DelayFrames = 576 + 529;
+
+// An AAC-LC encoder's delay, at the least: the first frame it writes overlaps 1024 samples before
+// the sound (the codec's frame overlap; FFmpeg's encoder delays by exactly this, Apple's by 1088
+// more). An MP4's edit list states the delay and FFmpeg drops it (or, where the sound starts
+// after the picture, times it before the sound's start); a raw AAC file (ADTS: an Android
+// recorder's and many call recorders' .aac), a Matroska or an AVI file cannot state it, and
+// every syllable came 64 ms late at 16 kHz.
+constexpr std::size_t kAacFrameOverlapFrames = 1024;
 
 // Demuxers for recordings people have: MP3, raw AAC, MP4/M4A/MOV (one demuxer), Matroska/WebM,
 // Ogg (Opus), FLAC, WAV and a few more. Whitelisted because FFmpeg also has demuxers (playlists,
@@ -444,6 +453,8 @@ private:
                 av_packet_unref(packet_.get());
                 continue;
             }
+            if (!first_packet_sent_) cut_unstated_aac_delay(*packet_);
+            first_packet_sent_ = true;
             const std::size_t lost_frames = mp3_bytes_lost(*packet_);
             const int sent = avcodec_send_packet(codec_.get(), packet_.get());
             last_packet_frames_ = packet_frames(packet_->duration);
@@ -462,6 +473,18 @@ private:
             }
             return true;
         }
+    }
+
+    // The sound track's first packet: an AAC-LC stream in a container that cannot state the
+    // encoder's delay (raw AAC, Matroska, AVI) starts with the delay, which is cut
+    // (kAacFrameOverlapFrames), unless FFmpeg marks samples to skip on it.
+    void cut_unstated_aac_delay(const AVPacket& packet) {
+        const AVCodecParameters* parameters = stream_->codecpar;
+        if (parameters->codec_id != AV_CODEC_ID_AAC || parameters->profile != FF_PROFILE_AAC_LOW) return;
+        const std::string_view container = format_->iformat->name;
+        if (container != "aac" && container != "avi" && container.rfind("matroska", 0) != 0) return;
+        if (av_packet_get_side_data(&packet, AV_PKT_DATA_SKIP_SAMPLES, nullptr) != nullptr) return;
+        frames_to_skip_ = kAacFrameOverlapFrames;
     }
 
     ParseError decode_error(int code) const {
@@ -790,6 +813,7 @@ private:
     double mp3_toc_offset_ = 0.0;         // the packets' samples less the table's at the last point passed
     bool mp3_toc_followed_ = false;       // a point of mp3_toc_ lay inside a whole packet
     bool flushed_ = false;
+    bool first_packet_sent_ = false;  // of the sound track
     std::vector<float> interleaved_;
     ChannelMixer mixer_;
     std::vector<float> pending_;

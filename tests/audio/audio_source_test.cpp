@@ -16,6 +16,7 @@
 
 #include "audio/audio_source.hpp"
 #include "audio/decoded_audio.hpp"
+#include "common/made_by_command.hpp"
 #include "common/test_paths.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/speech_aligner.hpp"
@@ -92,6 +93,24 @@ TEST_SUITE("audio") {
 
         CHECK_THROWS_WITH_AS(SpeechAligner().align_file(silent_video, read_transcript("ni3 hao3.")),
                              doctest::Contains("without a sound track"), ParseError);
+    }
+
+    TEST_CASE("AAC whose container does not state the encoder's delay starts where the WAV does") {
+        // An MP4's edit list states the delay an AAC encoder puts before the sound, and FFmpeg
+        // drops it; a raw AAC file (ADTS, an Android recorder's .aac), Matroska (a screen
+        // recorder's MKV) and AVI do not, and the speech came 64 ms late.
+        const std::string speech = speech_clip("one_sentence.wav");
+        const auto wav = detail::open_audio_file(speech);
+        const std::vector<double> reference = test::envelope(test::read_all(*wav), wav->sample_rate_hz());
+        for (const std::string name : {"adts.aac", "aac.mkv", "aac.avi", "aac.m4a"}) {
+            CAPTURE(name);
+            const std::string path = test::made_by_command(
+                "delay_" + name, "ffmpeg -nostdin -loglevel error -y -i '" + speech + "' -c:a aac -b:a 32k");
+            const auto source = detail::open_audio_file(path);
+            const std::vector<float> samples = test::read_all(*source);
+            CHECK(std::abs(test::best_lag(reference, test::envelope(samples, source->sample_rate_hz()))) <=
+                  1);
+        }
     }
 
     TEST_CASE("a WeChat or QQ voice message in SILK v3 is named as such, not as bytes that are no audio") {
