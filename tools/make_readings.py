@@ -53,6 +53,13 @@ LIGHT_PARTICLES = {
 LIGHT_SUFFIXES = {"子", "儿", "兒", "们", "們", "得", "裡"}
 LIGHT_FIRST = LIGHT_PARTICLES | LIGHT_SUFFIXES
 
+# Characters whose reading where no word covers them is not the one kHanyuPinlu counts first, decided
+# by usage (session 21). 长: zhǎng (1879) leads cháng (1179) through 部长 校长 家长 长大 成长 增长, words
+# the phrase list reads themselves, as it reads the verb's common forms (长了 长得 长出 长满 长高 长着);
+# what is left uncovered is mostly the adjective (友谊长存, 这条路长约, 长袖), and the 2013 standard
+# dictionary (kTGHZ2013) lists cháng first. The list's words keep their readings either way.
+FIRST_BY_USAGE = {"长": "chang2", "長": "chang2"}
+
 
 def _field_readings(field, value):
     """Marked readings of one Unihan field, in the field's order."""
@@ -110,6 +117,9 @@ def ordered_readings(character, fields):
             and readings[0] != standard[0] and not readings[0].endswith("5")):
         readings.remove(standard[0])
         readings.insert(0, standard[0])
+    if character in FIRST_BY_USAGE:
+        readings.remove(FIRST_BY_USAGE[character])
+        readings.insert(0, FIRST_BY_USAGE[character])
     if character in LIGHT_FIRST:
         return readings
     full = [reading for reading in readings if not reading.endswith("5")]

@@ -35,10 +35,19 @@ bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t
 
 bool speaks_of_duration(const std::vector<CodePoint>& text, std::size_t start) {
     const std::string before = text_before(text, start, true);
-    for (const std::string_view word : {"成绩", "成績", "用时", "用時", "耗时", "耗時", "历时", "歷時", "跑出", "游出",
-                                        "完赛", "完賽", "时长", "時長",
-                                        // The time left on a game's clock (第4节还剩2:35; session 17: 两点三十五分).
-                                        "还剩", "還剩", "剩余", "剩餘", "倒计时", "倒計時"})
+    for (const std::string_view word :
+         {"成绩", "成績", "用时", "用時", "耗时", "耗時", "历时", "歷時", "跑出", "游出", "完赛", "完賽",
+          "时长", "時長",
+          // The time left on a game's clock (第4节还剩2:35; session 17: 两点三十五分).
+          "还剩", "還剩", "剩余", "剩餘", "倒计时", "倒計時",
+          // A game's clear time (通关时间：02:35; session 21: 两点三十五分).
+          "通关", "通關"})
+        if (before.find(word) != std::string::npos) return true;
+    // A queue's wait as its screen shows it, minutes written with two digits (预计等待时间05:20 五分二十秒,
+    // 00:45 四十五秒; session 21: 五点二十分): a wait to a time of day is written without the zero
+    // (等待时间：12:30开始).
+    if (value_at(text, start) != '0') return false;
+    for (const std::string_view word : {"等待", "等候", "排队", "排隊"})
         if (before.find(word) != std::string::npos) return true;
     return false;
 }
@@ -186,7 +195,10 @@ std::optional<SpokenForm> read_clock_time(const std::vector<CodePoint>& text, co
     const bool has_seconds = value_at(text, i) == ':' && is_digit_at(text, i + 1) && is_digit_at(text, i + 2) &&
                              !is_digit_at(text, i + 3);
     if (duration) {
-        form.words = first + (has_seconds ? "小时" : "分") + say_part(minutes, has_seconds ? "分" : "秒");
+        // No minutes are not said (00:45 四十五秒), as a countdown reads; hours and minutes keep theirs.
+        const bool no_minutes = !has_seconds && hour_digits == "0" && minutes != "00";
+        form.words = (no_minutes ? "" : first + (has_seconds ? "小时" : "分")) +
+                     say_part(minutes, has_seconds ? "分" : "秒");
     } else {
         form.words = first + "点" + say_part(minutes, "分");
     }

@@ -23,8 +23,9 @@ namespace talkface::detail {
 // mistake, only a range, which the caller tells by its measure word (3-5天后获胜).
 bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t end, bool dashed = false);
 
-// A colon's time where the clause speaks of how long something took (跑出了2:05:30的成绩, 用时3:35):
-// a duration, 两小时零五分三十秒, 三分三十五秒, not a time of day.
+// A colon's time where the clause speaks of how long something took (跑出了2:05:30的成绩, 用时3:35,
+// 通关时间：02:35) or waits as a timer shows it (预计等待时间05:20): a duration, 两小时零五分三十秒,
+// 三分三十五秒, not a time of day.
 bool speaks_of_duration(const std::vector<CodePoint>& text, std::size_t start);
 
 // A place in a recording (视频1:23处 一分二十三秒处, 进度条拉到12:45): minutes and seconds, not a time of

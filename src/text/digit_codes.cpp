@@ -27,11 +27,20 @@ void append_phone_groups(SpokenForm& form, const std::vector<std::string>& group
     }
 }
 
+// Whether text[i] is inside a licence plate's letters and digits, after its province's character, a capital
+// and the middle dot (沪A·8K321): the digits after a letter there are the plate's too, said one by one
+// (八 K 三二一; session 21: 三百二十一).
+bool in_licence_plate(const std::vector<CodePoint>& text, std::size_t i) {
+    while (i > 0 && (is_ascii_letter(value_at(text, i - 1)) || is_digit_at(text, i - 1))) --i;
+    return i >= 3 && is_one_of(text[i - 1].value, U"\u00B7\u30FB") && is_ascii_capital(text[i - 2].value) &&
+           text[i - 3].value >= 0x4E00 && text[i - 3].value <= 0x9FFF;
+}
+
 // The capitals of a model's name right before text[start], with nothing, a hyphen or a space
 // between (C919, A380, B-52, RTX 4090), or the middle dot of a licence plate (京A·12345, where the
 // digits are a name as a model's are): one to three capitals that start a word and are spelled
 // (TOP in TOP 10 is the word top, a rank: latin_words.hpp), not after a digit (4K 120帧: the 4K is
-// a quantity, and 120 counts). Empty where there are none.
+// a quantity, and 120 counts) but inside a licence plate (沪A·8K321). Empty where there are none.
 std::string model_name_before(const std::vector<CodePoint>& text, std::size_t start) {
     auto i = start;
     if (i > 0 && is_one_of(text[i - 1].value, U"- \u00B7\u30FB")) --i;
@@ -41,7 +50,9 @@ std::string model_name_before(const std::vector<CodePoint>& text, std::size_t st
         capitals.insert(capitals.begin(), static_cast<char>(ascii_form(text[i].value)));
     }
     constexpr std::size_t kMostCapitals = 3;
-    const bool starts_word = i == 0 || !(is_ascii_letter(value_at(text, i - 1)) || is_digit_at(text, i - 1));
+    const bool starts_word = i == 0 ||
+                             !(is_ascii_letter(value_at(text, i - 1)) || is_digit_at(text, i - 1)) ||
+                             in_licence_plate(text, i);
     if (capitals.size() > kMostCapitals || is_said_as_word(capitals) || !starts_word) return {};
     // An index's name, whose number is its value (AQI 152 一百五十二, CPI 102; session 17: 一五二).
     for (const std::string_view index : {"AQI", "CPI", "PPI", "PMI", "BMI"})
@@ -237,6 +248,27 @@ std::optional<SpokenForm> read_series_and_model(const std::vector<CodePoint>& te
     if (model.size() < kFewestModelDigits || !is_ascii_capital(value_at(text, k))) return std::nullopt;
     SpokenForm form;
     form.words = cardinal_words(first.whole, false) + digit_words(model);
+    form.end = k;
+    return form;
+}
+
+std::optional<SpokenForm> read_model_variant(const std::vector<CodePoint>& text, const WrittenNumber& model) {
+    constexpr std::size_t kFewestModelDigits = 3;
+    if (model.has_point || model.has_separators || model.whole.size() < kFewestModelDigits ||
+        !is_dash(value_at(text, model.end)) || !is_digit_at(text, model.end + 1)) {
+        return std::nullopt;
+    }
+    auto k = model.end + 1;
+    const auto variant = digits_from(text, k);
+    constexpr std::size_t kLongestVariant = 4;
+    const bool is_round = variant.size() >= 3 && variant.size() <= kLongestVariant &&
+                          variant.front() != '0' && variant.compare(variant.size() - 2, 2, "00") == 0;
+    // Or one digit, a variant of a newer family (737-8, 777-9: 七三七八; session 21: a score between names,
+    // 七百三十七比八).
+    const bool is_digit_variant = variant.size() == 1 && variant != "0";
+    if (!(is_round || is_digit_variant) || value_at(text, k) == '.') return std::nullopt;
+    SpokenForm form;
+    form.words = digit_words(model.whole) + cardinal_words(variant, false);
     form.end = k;
     return form;
 }

@@ -74,6 +74,12 @@ std::optional<SpokenForm> read_code_with_dash(const std::vector<CodePoint>& text
 std::optional<SpokenForm> read_series_and_model(const std::vector<CodePoint>& text, std::size_t start,
                                                 const WrittenNumber& first);
 
+// An aircraft's variant after its model's number (`model`, three or more digits after a model's name:
+// A320-200, 波音737-800, A350-1000): a hyphen and a round hundred or thousand, counted, or one digit (737-8),
+// the model said digit by digit and the hyphen not at all, as pilots and spotters say them (A三二零二百,
+// 七三七八百, 七三七八; session 21: a range, 三二零到二零零).
+std::optional<SpokenForm> read_model_variant(const std::vector<CodePoint>& text, const WrittenNumber& model);
+
 bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start);
 
 // A respirator's filter grade (N95, KN95, P99: a class N R P KN KP and 90, 95 or 99, the share of

@@ -160,6 +160,20 @@ std::optional<SpokenForm> read_number_character(const std::vector<CodePoint>& te
         form.words = cardinal_words(std::to_string(number), false);
         return form;
     }
+    // A rating drawn in stars, two or more of ★ and ☆ in a row, is said by its filled ones, 星 (★★★★☆ 四星,
+    // ★★★★★级 五星级, as a review is read; session 21: skipped with a warning). A star alone is left as it
+    // was, a mark without a reading.
+    auto stars_end = i;
+    int filled = 0;
+    while (is_one_of(value_at(text, stars_end), U"\u2605\u2606")) {
+        filled += value_at(text, stars_end) == 0x2605 ? 1 : 0;
+        ++stars_end;
+    }
+    if (stars_end - i >= 2 && filled > 0) {
+        form.words = cardinal_words(std::to_string(filled), false) + "星";
+        form.end = stars_end;
+        return form;
+    }
     // A fraction written as one character: its denominator 分之 its numerator, as 1/2 is.
     constexpr std::pair<char32_t, const char*> kFractions[] = {
         {0xBD, "二分之一"},   {0x2153, "三分之一"}, {0x2154, "三分之二"}, {0xBC, "四分之一"}, {0xBE, "四分之三"},

@@ -638,6 +638,14 @@ private:
             return said_syllables(detail::letter_syllables(word));
         if (auto found = detail::english_word_syllables(word)) return said_syllables(*found);
         if (is_initials) return said_syllables(detail::letter_syllables(word));
+        // Three small letters or fewer that the dictionary lacks and that spell no pinyin (orz, a chat's
+        // kneeling figure; abc, ufo) are their letters, as three capitals are: too short to be said as a word
+        // (session 21: generic speech). Pinyin read as Latin (ni with read_pinyin off) stays generic speech.
+        constexpr std::size_t kLongestSpelledSmall = 3;
+        if (word.size() <= kLongestSpelledSmall &&
+            std::all_of(word.begin(), word.end(), [](char l) { return l >= 'a' && l <= 'z'; }) &&
+            !split_pinyin(decode_utf8(word, "<word>")))
+            return said_syllables(detail::letter_syllables(word));
         return read_word_parts(word, at);
     }
 
@@ -758,6 +766,13 @@ private:
             // A part in capitals is an acronym or a word in capitals (iOS: i + OS, ou ai si).
             if (part.size() > 1 && detail::is_all_capitals(part)) {
                 for (auto& syllable : read_capitals(part)) syllables.push_back(std::move(syllable));
+                continue;
+            }
+            // A letter alone is the letter (mRNA: M R N A; session 21: the dictionary's m, an), as a word of
+            // one letter is.
+            if (part.size() == 1) {
+                for (auto& syllable : said_syllables(detail::letter_syllables(part)))
+                    syllables.push_back(std::move(syllable));
                 continue;
             }
             auto found = parts.size() > 1 ? detail::english_word_syllables(part) : std::nullopt;

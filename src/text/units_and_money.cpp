@@ -46,15 +46,21 @@ bool is_lone_capital_unit_at(const std::vector<CodePoint>& text, const Unit& uni
 }
 
 // A lamp's or a charger's watts written small (功率5w, 65w快充), as posts write them: the watt where the
-// sentence speaks of power (功率 充电 快充 闪充 超充 瓦 输出), and a chat's 万 elsewhere (存够5w; session 20:
-// a charger's 5w was 五万).
+// sentence speaks of power (功率 充电 快充 闪充 超充 瓦 输出) or the clause names a lamp (5w的台灯, 灯泡才3w,
+// 吸顶灯, LED灯; session 21: 五万; not a lantern show's 灯会 灯光), and a chat's 万 elsewhere (存够5w,
+// 粉丝破5w) and before a measure word, which counts what the 万 counts (吸引了5w人, 卖出5w台).
 constexpr Unit kSmallWatt = {"w", "瓦"};
 
 bool is_small_watt_at(const std::vector<CodePoint>& text, std::size_t i) {
     if (value_at(text, i) != 'w' || !is_digit_at(text, i - 1) || is_ascii_letter(value_at(text, i + 1)) ||
-        is_digit_at(text, i + 1)) {
+        is_digit_at(text, i + 1) || takes_liang(value_at(text, i + 1))) {
         return false;
     }
+    const std::string clause = text_before(text, i, true) + text_after(text, i);
+    for (const std::string_view lamp :
+         {"台灯", "檯燈", "枱燈", "灯泡", "燈泡", "灯管", "燈管", "灯具", "燈具", "灯珠", "燈珠", "顶灯",
+          "頂燈", "路灯", "路燈", "夜灯", "夜燈", "射灯", "射燈", "筒灯", "筒燈", "D灯",  "D燈"})
+        if (clause.find(lamp) != std::string::npos) return true;
     const std::string sentence = text_before(text, i, false) + text_after(text, i, false);
     for (const std::string_view word :
          {"功率", "充电", "充電", "快充", "闪充", "閃充", "超充", "瓦", "输出", "輸出"})

@@ -31,6 +31,8 @@ bool follows_game_attribute(const std::vector<CodePoint>& text, std::size_t star
           "暴伤", "暴傷", "闪避", "閃避", "命中", "生命", "血量", "法力", "伤害", "傷害", "穿透", "吸血",
           "韧性", "韌性", "格挡", "格擋", "抗性", "敏捷", "力量", "智力", "体质", "體質", "耐力", "精神",
           "经验", "經驗", "金币", "金幣",
+          // A ranked game's points won (今天上分+50 加五十; session 21: 正五十).
+          "上分", "积分", "積分",
           // An item's upgrade level (装备强化+12 加十二; session 20: 正十二).
           "强化", "強化", "精炼", "精煉"})
         if (ends_with(before, stat)) return true;
@@ -141,15 +143,30 @@ bool speaks_of_picture(const std::vector<CodePoint>& text, std::size_t end) {
     return false;
 }
 
+// Whether the sentence around text[end] speaks of running, a race or a walk (跑 马拉松 配速 越野 徒步 骑行
+// 健走 竞走): a k after a number there is the kilometres a runner counts (跑了个5k, 5K趣味跑), not a
+// thousand.
+bool speaks_of_running(const std::vector<CodePoint>& text, std::size_t end) {
+    const std::string sentence = text_before(text, end, false) + text_after(text, end, false);
+    for (const std::string_view word :
+         {"跑", "马拉松", "馬拉松", "配速", "越野", "徒步", "骑行", "騎行", "健走", "竞走", "競走"})
+        if (sentence.find(word) != std::string::npos) return true;
+    return false;
+}
+
 // The magnitude a chat writes as a small letter right after a number in a Chinese line, as posts write
 // it: w 万 (播放量破1w 一万, 存够5w; session 19: the letter, da bu liu) and k 千 (月薪8k 八千; session 20:
 // the letter, kei), "" where there is none. Not before another letter (5wt) or a digit, not in a line
 // without Chinese characters, and a k not where the clause speaks of a picture (4k屏 is a resolution's).
+// Where the sentence speaks of running, a k, small or capital, is a runner's kilometres, 公里 (跑了个5k
+// 五公里, 10K 十公里; session 21: 五千, and the capital a letter), as km is said.
 std::string_view chat_magnitude(const std::vector<CodePoint>& text, std::size_t end) {
     const auto letter = value_at(text, end);
-    if (!is_one_of(letter, U"wk") || is_ascii_letter(value_at(text, end + 1)) || is_digit_at(text, end + 1))
+    if (!is_one_of(letter, U"wkK") || is_ascii_letter(value_at(text, end + 1)) || is_digit_at(text, end + 1))
         return {};
     if (!std::any_of(text.begin(), text.end(), [](const CodePoint& c) { return is_han(c.value); })) return {};
+    if (letter != 'w' && speaks_of_running(text, end)) return "公里";
+    if (letter == 'K') return {};
     if (letter == 'w') return "万";
     return speaks_of_picture(text, end) ? std::string_view{} : "千";
 }
@@ -563,9 +580,12 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     // Or after a chat's final particle, closing its line (太离谱了吧233, 好好笑啊233; session 16: 二百三十三).
     const auto after_number = value_at(text, number.end);
     const bool closes_clause = number.end >= text.size() || is_one_of(after_number, U"，,。.！!？?～~…\n ");
-    context.after_laugh = sign_words.empty() && start > 0 &&
-                          (is_one_of(value_at(text, start - 1), U"哈呵嘿嘻笑死") ||
-                           (closes_clause && is_one_of(value_at(text, start - 1), U"吧啊呀呢嘛哦啦")));
+    // Or closing a clause that laughs (笑死我了233; session 21: 二百三十三).
+    context.after_laugh =
+        sign_words.empty() && start > 0 &&
+        (is_one_of(value_at(text, start - 1), U"哈呵嘿嘻笑死") ||
+         (closes_clause && (is_one_of(value_at(text, start - 1), U"吧啊呀呢嘛哦啦") ||
+                            text_before(text, start, true).find("笑") != std::string::npos)));
     context.is_whole_clause = sign_words.empty() && currency == nullptr && stands_alone(text, start, number.end);
     context.names_year = sign_words.empty() && currency == nullptr && !context.is_ordinal &&
                          (names_year_before_word(text, number) || lists_year(text, number));
@@ -637,6 +657,9 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (auto season = read_season(text, number)) return season;
         if (auto record = read_game_record(text, start, number)) return record;
         if (auto model = read_series_and_model(text, i, number)) return model;
+        if (auto variant =
+                context.is_model && !context.is_train ? read_model_variant(text, number) : std::nullopt)
+            return variant;
         if (auto digits = read_dashed_digits(text, number, context.is_phone, context.is_named,
                                              follows_book_number(text, start)))
             return digits;
@@ -731,9 +754,10 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         numbers.size() == 1 && unit == nullptr && currency == nullptr && power_words.empty()
             ? chat_magnitude(text, end)
             : std::string_view{};
-    context.next = chat_letter.empty()   ? value_at(text, numbers.back().end)
-                   : chat_letter == "万" ? U'万'
-                                         : U'千';
+    context.next = chat_letter.empty()     ? value_at(text, numbers.back().end)
+                   : chat_letter == "万"   ? U'万'
+                   : chat_letter == "公里" ? U'公'
+                                           : U'千';
     // A Latin unit after the number's 万 or 亿 (1.6万km² 一点六万平方公里) is said after it.
     std::string magnitude_words;
     if (unit == nullptr && currency == nullptr && is_one_of(context.next, U"万萬亿億")) {

@@ -60,7 +60,8 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
 
 // A number written as one character, as lessons and lists write them (session 14; they were skipped
 // with a warning): circled and bracketed ones (①水 一水, ⑴, ⒈, ❶), Roman numerals (第Ⅱ卷 第二卷, ⅲ)
-// and fractions (½ 二分之一, ¾ 四分之三); nullopt where text[i] is none.
+// and fractions (½ 二分之一, ¾ 四分之三), and a rating drawn in stars, said by its filled ones (★★★★☆ 四星;
+// session 21); nullopt where text[i] is none.
 std::optional<SpokenForm> read_number_character(const std::vector<CodePoint>& text, std::size_t i);
 
 // A power written right after a term (a digit, a letter, a closing bracket) at text[i - 1]:

@@ -243,6 +243,17 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("甚至") == "shen4 zhi4");
     }
 
+    TEST_CASE("长 where no word covers it is chang2, the adjective, and the verb zhang3 comes in words") {
+        // Session 21 (tools/make_readings.py FIRST_BY_USAGE): 友谊长存 was zhang3, kHanyuPinlu's first
+        // reading.
+        CHECK(pinyin("友谊长存") == "you3 yi4 chang2 cun2");
+        CHECK(pinyin("這條路長約三公里") == "zhe4 tiao2 lu4 chang2 yue1 san1 gong1 li3");
+        CHECK(toneless("他长得很高") == "ta zhang de hen gao");
+        CHECK(toneless("孩子长大了") == "hai zi zhang da le");
+        CHECK(toneless("校长和家长") == "xiao zhang he jia zhang");
+        CHECK(toneless("她是家里的长女") == "ta shi jia li de zhang nv");
+    }
+
     TEST_CASE("syllables carry the character, numbered pinyin and their sentence") {
         const auto timeline = read_transcript("銀行。女兒");
         REQUIRE(timeline.syllables.size() == 4);
