@@ -41,6 +41,11 @@ constexpr float kFarValleyDepthDb = 6.0f;
 // A valley's floor: the frames within 1 dB of its lowest (the frame-to-frame scatter of a held
 // sound; a WAV and its MP3 or Opus place 公園's 園 alike).
 constexpr float kValleyFloorDb = 1.0f;
+// A turn out of an apical vowel (apical_vowel_turn): the landmarks' bonus (2 ln of the cepstral
+// flux over the sentence's median frame's, spectral_landmarks.cpp) rising 0.5 from its trough, the
+// flux by a quarter (e^0.25); a bonus of 0.5 within a frame of the path's start says the path found
+// a turn itself. bench/ Session 21 measured 0.25 and 1 beside it on the person's tuning rows.
+constexpr float kTurnRise = 0.5f;
 
 bool is_voiced_class(PhoneClass phone_class) {
     return phone_class == kNasal || phone_class == kLiquid || (phone_class >= kVowelA && phone_class <= kVowelApical);
@@ -116,6 +121,26 @@ std::size_t syllable_valley_start(const FeatureTrack& track, std::size_t offset,
     return far != end ? far : start;
 }
 
+std::size_t apical_vowel_turn(const EmissionScores& scores, std::size_t vowel_first, std::size_t start) {
+    const std::vector<float>& bonus = scores.boundary;
+    if (start < 1 || start + 1 >= bonus.size() || vowel_first >= start) return start;
+    if (std::max({bonus[start - 1], bonus[start], bonus[start + 1]}) >= kTurnRise) return start;
+    // Past the vowel's onset, where the change from the sound before it falls.
+    std::size_t t = vowel_first;
+    while (t + 1 < start && bonus[t + 1] <= bonus[t]) ++t;
+    std::size_t turn = start;
+    while (t + 1 < start) {
+        const float trough = bonus[t];
+        const std::size_t rise = t + 1;
+        while (t + 1 < start && bonus[t + 1] >= bonus[t]) ++t;
+        // A rise still going at the path's start is the path's own turn.
+        if (t + 1 >= start) break;
+        if (bonus[t] - trough >= kTurnRise) turn = rise;
+        while (t + 1 < start && bonus[t + 1] <= bonus[t]) ++t;
+    }
+    return turn;
+}
+
 void place_syllables(const SentenceChain& chain, std::size_t chain_index, const std::vector<StateSegment>& path,
                      const std::vector<std::vector<SyllableFrames>>& other_frames, const EmissionScores& scores,
                      const FeatureTrack& track, Timeline& result, std::vector<SyllableEvidence>& evidence) {
@@ -153,6 +178,8 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
                                             is_voiced_class(state.phone_class);
                 if (is_voiced_join && before->phone_class != state.phone_class)
                     start = voiced_join_start(path[p - 1], before->phone_class, path[p], state.phone_class, scores);
+                if (is_voiced_join && before->phone_class == kVowelApical)
+                    start = std::min(start, apical_vowel_turn(scores, path[p - 1].first_frame, first));
                 if (is_voiced_join && state.role == StateRole::final) {
                     // No earlier than the syllable before's vowel: its final's first frame.
                     std::size_t q = p - 1;

@@ -36,6 +36,18 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
 std::size_t voiced_join_start(const StateSegment& before, PhoneClass before_class, const StateSegment& first,
                               PhoneClass first_class, const EmissionScores& scores);
 
+// Where a voiced join after an apical vowel (the rime of zi ci si zhi chi shi ri, its state `vowel_first`
+// on) starts, the path having started it at `start`. The apical class, learned on the recording
+// from a few syllables, fits the next syllable's i, ɛ and n about as well as their own classes do
+// (是一, 十年), so the path may run the vowel on over them and start the next syllable a whole
+// vowel late (100-250 ms). The rime is one steady vowel: past its onset its spectrum holds until it
+// turns into the next sound. Where the spectrum holds at the path's start (the landmarks' bonus,
+// spectral_landmarks.hpp, stays under kTurnRise within a frame of it), the syllable starts where
+// the last turn between the vowel's onset and `start` begins to rise (the bonus rising kTurnRise or
+// more from its trough); where the path's start is at a turn, or no turn lies before it, `start`:
+// never later.
+std::size_t apical_vowel_turn(const EmissionScores& scores, std::size_t vowel_first, std::size_t start);
+
 // Where a syllable with no initial (y-, w-, a vowel) joined to the voiced sound before it starts:
 // such a syllable has no sound of its own to begin with, only a turn of the vowel or nasal before
 // towards its own, and the path puts its boundary late in that turn (in the middle of it, or, where

@@ -130,4 +130,25 @@ TEST_SUITE("speech") {
         // The search stays inside the track: a start near its end.
         CHECK(syllable_valley_start(two_nuclei(27, 10.0f), 5, 1, 54) == 54);
     }
+
+    TEST_CASE("after an apical vowel a syllable started in a held sound starts at the turn before it") {
+        // 是一: the landmarks' bonus falls from 是's onset (frames 0-3), holds at 0 over its vowel,
+        // rises and falls again where it turns into 一's i (frames 15-18), and holds over the i.
+        EmissionScores scores;
+        scores.frame_count = 40;
+        scores.boundary.assign(41, 0.0f);
+        const float onset[] = {3.0f, 2.0f, 1.0f}, turn[] = {0.4f, 1.5f, 1.8f, 0.6f};
+        for (std::size_t t = 0; t < 3; ++t) scores.boundary[t] = onset[t];
+        for (std::size_t t = 0; t < 4; ++t) scores.boundary[15 + t] = turn[t];
+        // The path started 一 at frame 30, inside the i: it starts where the turn rises.
+        CHECK(apical_vowel_turn(scores, 0, 30) == 15);
+        // At the turn the path's own start stands.
+        CHECK(apical_vowel_turn(scores, 0, 17) == 17);
+        // The vowel's own onset is no turn, nor a ripple of the held vowel.
+        CHECK(apical_vowel_turn(scores, 5, 14) == 14);
+        scores.boundary[16] = 0.3f;
+        scores.boundary[17] = 0.2f;
+        scores.boundary[15] = scores.boundary[18] = 0.0f;
+        CHECK(apical_vowel_turn(scores, 0, 30) == 30);
+    }
 }
