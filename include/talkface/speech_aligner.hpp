@@ -66,7 +66,11 @@ enum class SentenceCutMode : int {
 /// the measure lies past what a right text gives). A line of a few syllables gives weak evidence:
 /// what is found there is a warning in every mode, never a refusal.
 enum class CheckMode : int {
-    /// The default: strong evidence refuses the alignment (talkface::AlignmentError).
+    /// The default: strong evidence refuses the alignment (talkface::AlignmentError). Where the
+    /// samples fall against the analysis frames moves the evidence a little, so a refusal must
+    /// hold at two of three readings a quarter of a frame apart: a file of one or two sentences
+    /// is always read twice (three times where the two differ), a longer one again only where
+    /// its first reading refuses. The result is the same on every run.
     refuse = 0,
     /// Strong evidence is reported in Timeline::warnings and the alignment is returned, as it
     /// comes out with the checks off.

@@ -364,7 +364,8 @@ private:
 
 }  // namespace
 
-FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)>& on_progress, bool with_pitch) {
+FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)>& on_progress,
+                           bool with_pitch, std::size_t skipped_samples) {
     FeatureTrack track;
     // Room for the frames the source says it has, up to an hour's: a damaged header may promise
     // years (a FLAC's sample count, an MP3's frame count), and reserving them threw bad_alloc.
@@ -376,7 +377,13 @@ FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)
     std::size_t frames_read = 0;
     float peak = 0.0f;
     DropoutFinder dropouts;
+    std::size_t left_to_skip = skipped_samples;
     auto sink = [&](const float* samples, std::size_t count) {
+        const std::size_t skipped = std::min(left_to_skip, count);
+        left_to_skip -= skipped;
+        samples += skipped;
+        count -= skipped;
+        if (count == 0) return;
         analyzer.push(samples, count);
         dropouts.push(samples, count);
     };
@@ -392,7 +399,8 @@ FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)
     analyzer.finish();
     track.dropouts = outside_codec_pauses(dropouts.finish(), source.codec_pauses(), kAnalysisRateHz);
     track.peak_amplitude = peak;
-    track.duration_s = static_cast<double>(frames_read) / source.sample_rate_hz();
+    track.duration_s = std::max(0.0, static_cast<double>(frames_read) / source.sample_rate_hz() -
+                                         static_cast<double>(skipped_samples) / kAnalysisRateHz);
     if (frames_read == 0) throw InvalidArgument(source.name(), "empty audio: no frames");
     if (!(peak >= kSilentPeak)) {
         const std::string level = peak > 0.0f ? format_fixed(20.0 * std::log10(peak), 1) + " dBFS" : "all zero";

@@ -79,7 +79,10 @@ struct FeatureTrack {
 // `on_progress(fraction)` is called after each block (it may throw to cancel).
 // \throws talkface::InvalidArgument naming the audio if it is silent; what the source throws.
 // With `with_pitch`, FeatureTrack::pitch too. FeatureTrack::dropouts are found as the samples stream by.
-FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)>& on_progress, bool with_pitch = false);
+// `skipped_samples` of the kAnalysisRateHz stream are left unread first: the frames fall that much
+// later against the recording (its times are then earlier by skipped_samples / kAnalysisRateHz).
+FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)>& on_progress,
+                           bool with_pitch = false, std::size_t skipped_samples = 0);
 
 }  // namespace talkface::detail
 
