@@ -47,6 +47,14 @@ constexpr float kValleyFloorDb = 1.0f;
 // a turn itself. bench/ Session 21 measured 0.25 and 1 beside it on the person's tuning rows.
 constexpr float kTurnRise = 0.5f;
 
+// Whether `phone_class` scores at least as well as `own_class` on every frame of `segment`.
+bool fits_throughout(const StateSegment& segment, PhoneClass phone_class, PhoneClass own_class,
+                     const EmissionScores& scores) {
+    for (std::size_t t = segment.first_frame; t < segment.end_frame; ++t)
+        if (scores.at(t, phone_class) < scores.at(t, own_class)) return false;
+    return true;
+}
+
 bool is_voiced_class(PhoneClass phone_class) {
     return phone_class == kNasal || phone_class == kLiquid || (phone_class >= kVowelA && phone_class <= kVowelApical);
 }
@@ -180,6 +188,16 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
                     start = voiced_join_start(path[p - 1], before->phone_class, path[p], state.phone_class, scores);
                 if (is_voiced_join && before->phone_class == kVowelApical)
                     start = std::min(start, apical_vowel_turn(scores, path[p - 1].first_frame, first));
+                // A light syllable's one vowel that the new sound fits as well on each of its frames
+                // was not heard apart from it: only the turn into it (了一, 的预; bench/ Session 21).
+                const bool is_one_vowel =
+                    is_voiced_join && before->role == StateRole::final && before->phone_class >= kVowelA &&
+                    !(p >= 2 && chain.states[path[p - 2].state].syllable == before->syllable &&
+                      chain.states[path[p - 2].state].role == StateRole::final);
+                if (is_one_vowel && before->phone_class != state.phone_class &&
+                    chain.syllables[local - 1]->pinyin.back() == '5' &&
+                    fits_throughout(path[p - 1], state.phone_class, before->phone_class, scores))
+                    start = std::min(start, path[p - 1].first_frame);
                 if (is_voiced_join && state.role == StateRole::final) {
                     // No earlier than the syllable before's vowel: its final's first frame.
                     std::size_t q = p - 1;

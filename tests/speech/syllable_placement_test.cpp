@@ -6,7 +6,10 @@
 
 #include <cstddef>
 #include <functional>
+#include <string>
+#include <vector>
 
+#include "common/chain_state.hpp"
 #include "speech/hsmm.hpp"
 #include "speech/syllable_placement.hpp"
 
@@ -40,6 +43,56 @@ FeatureTrack two_nuclei(std::size_t valley, float depth_db) {
         return -20.0f - (distance < 4.0 ? depth_db * static_cast<float>(1.0 - distance / 4.0) : 0.0f);
     });
 }
+
+// 了一 as a chain and its path: silence (frames 0-9), 了's l (10-14) and e (15-19), 一's i (20-39),
+// silence (40-49). Every class scores -20 on a frame but the path's own (0); on the e, i scores
+// `i_on_e[t]` as well, and e -10 on the i. `le` is 了's pinyin.
+struct LightJoin {
+    std::vector<talkface::Syllable> syllables;
+    SentenceChain chain;
+    std::vector<StateSegment> path;
+    EmissionScores scores;
+    FeatureTrack track;
+
+    LightJoin(const std::string& le, const std::vector<float>& i_on_e) {
+        syllables.resize(2);
+        syllables[0].text = "了";
+        syllables[0].pinyin = le;
+        syllables[1].text = "一";
+        syllables[1].pinyin = "yi1";
+        const PhoneClass classes[] = {kSilence, kLiquid, kVowelE, kVowelI, kSilence};
+        const StateRole roles[] = {StateRole::edge_silence, StateRole::initial, StateRole::final,
+                                   StateRole::final, StateRole::edge_silence};
+        const std::size_t of_syllable[] = {0, 0, 0, 1, 1}, frames[] = {10, 5, 5, 20, 10};
+        std::size_t frame = 0;
+        for (std::size_t s = 0; s < 5; ++s) {
+            chain.states.push_back(talkface::test::chain_state(
+                classes[s], roles[s], of_syllable[s], static_cast<double>(frames[s]), 100, s == 0 || s == 4));
+            path.push_back({s, frame, frame + frames[s]});
+            for (std::size_t t = 0; t < frames[s]; ++t, ++frame)
+                for (int c = 0; c < kPhoneClassCount; ++c) {
+                    float score = c == classes[s] ? 0.0f : -20.0f;
+                    if (classes[s] == kVowelE && c == kVowelI) score = i_on_e[t];
+                    if (classes[s] == kVowelI && c == kVowelE) score = -10.0f;
+                    scores.values.push_back(score);
+                }
+        }
+        scores.frame_count = frame;
+        for (const auto& syllable : syllables) chain.syllables.push_back(&syllable);
+        chain.syllable_indices = {0, 1};
+        chain.speech = chain.searched = chain.limit = {0, frame};
+        track = level_track(frame, [](std::size_t) { return -20.0f; });
+    }
+
+    // Where place_syllables starts 一, in frames.
+    double yi_start_frames() const {
+        talkface::Timeline result;
+        result.syllables = syllables;
+        std::vector<SyllableEvidence> evidence(syllables.size());
+        place_syllables(chain, 0, path, {}, scores, track, result, evidence);
+        return result.syllables[1].start_s / kFrameStepS;
+    }
+};
 
 }  // namespace
 
@@ -150,5 +203,15 @@ TEST_SUITE("speech") {
         scores.boundary[17] = 0.2f;
         scores.boundary[15] = scores.boundary[18] = 0.0f;
         CHECK(apical_vowel_turn(scores, 0, 30) == 30);
+    }
+
+    TEST_CASE("after a light vowel the next sound fits throughout, the next syllable starts with it") {
+        // A light 了 said quickly and weakly: its e is only the turn into 一's i, which fits each of
+        // its frames as well (of the rise towards i no step to walk back over). 一 starts with it.
+        const std::vector<float> turn = {0.0f, 0.5f, 0.5f, 0.5f, 0.5f};
+        CHECK(LightJoin("le5", turn).yi_start_frames() == doctest::Approx(15.0));
+        // 了 with a tone of its own is heard apart; one e frame the i fits worse is a vowel of its own.
+        CHECK(LightJoin("le4", turn).yi_start_frames() == doctest::Approx(20.0));
+        CHECK(LightJoin("le5", {0.5f, 0.5f, -0.5f, 0.5f, 0.5f}).yi_start_frames() == doctest::Approx(20.0));
     }
 }
