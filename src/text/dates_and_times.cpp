@@ -8,11 +8,24 @@
 namespace talkface::detail {
 
 bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t end, bool dashed) {
+    // A pair listed after a score is one too (比分为25-18、25-20: the clause named the first; session 22:
+    // 二十五到二十).
+    if (start >= 4 && value_at(text, start - 1) == 0x3001 /*、*/) {
+        auto first = start - 1;
+        while (first > 0 && is_digit_at(text, first - 1)) --first;
+        if (first + 1 < start && first >= 2 && is_dash(value_at(text, first - 1)) &&
+            is_digit_at(text, first - 2)) {
+            first -= 1;
+            while (first > 0 && is_digit_at(text, first - 1)) --first;
+            if (is_score(text, first, start - 1, dashed)) return true;
+        }
+    }
     const std::string before = text_before(text, start, true);
     // A tie-break (抢七7-5) and a set or a game named right before the pair (第2盘6-4, 首局11-9, 决胜局,
     // not 结局 or 布局) name a score too (session 17: 七到五).
-    for (const std::string_view word : {"比分", "比數", "比数", "战成", "戰成", "打成", "踢成", "抢七", "搶七", "抢十", "搶十"})
-        if (before.find(word) != std::string::npos) return true;
+    if (contains_any(
+            before, {"比分", "比數", "比数", "战成", "戰成", "打成", "踢成", "抢七", "搶七", "抢十", "搶十"}))
+        return true;
     if (start >= 2 && is_one_of(text[start - 1].value, U"盘盤局") &&
         (is_digit_at(text, start - 2) || is_one_of(text[start - 2].value, U"首次胜勝")) && !takes_liang(value_at(text, end))) {
         return true;
@@ -35,30 +48,25 @@ bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t
 
 bool speaks_of_duration(const std::vector<CodePoint>& text, std::size_t start) {
     const std::string before = text_before(text, start, true);
-    for (const std::string_view word :
-         {"成绩", "成績", "用时", "用時", "耗时", "耗時", "历时", "歷時", "跑出", "游出", "完赛", "完賽",
-          "时长", "時長",
-          // The time left on a game's clock (第4节还剩2:35; session 17: 两点三十五分).
-          "还剩", "還剩", "剩余", "剩餘", "倒计时", "倒計時",
-          // A game's clear time (通关时间：02:35; session 21: 两点三十五分).
-          "通关", "通關"})
-        if (before.find(word) != std::string::npos) return true;
+    if (contains_any(before, {"成绩", "成績", "用时", "用時", "耗时", "耗時", "历时", "歷時", "跑出", "游出",
+                              "完赛", "完賽", "时长", "時長",
+                              // The time left on a game's clock (第4节还剩2:35; session 17: 两点三十五分).
+                              "还剩", "還剩", "剩余", "剩餘", "倒计时", "倒計時",
+                              // A game's clear time (通关时间：02:35; session 21: 两点三十五分).
+                              "通关", "通關"}))
+        return true;
     // A queue's wait as its screen shows it, minutes written with two digits (预计等待时间05:20 五分二十秒,
     // 00:45 四十五秒; session 21: 五点二十分): a wait to a time of day is written without the zero
     // (等待时间：12:30开始).
     if (value_at(text, start) != '0') return false;
-    for (const std::string_view word : {"等待", "等候", "排队", "排隊"})
-        if (before.find(word) != std::string::npos) return true;
-    return false;
+    return contains_any(before, {"等待", "等候", "排队", "排隊"});
 }
 
 bool names_place_in_recording(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
     if (is_one_of(value_at(text, end), U"处處")) return true;
     const std::string before = text_before(text, start, true);
-    for (const std::string_view word : {"进度条", "進度條", "时间轴", "時間軸", "时间线", "時間線", "拖到", "拉到", "跳到", "快进到",
-                                        "快轉到"})
-        if (before.find(word) != std::string::npos) return true;
-    return false;
+    return contains_any(before, {"进度条", "進度條", "时间轴", "時間軸", "时间线", "時間線", "拖到", "拉到",
+                                 "跳到", "快进到", "快轉到"});
 }
 
 namespace {
@@ -115,11 +123,12 @@ bool names_a_day(const std::vector<CodePoint>& text, std::size_t start, const Wr
     const auto month_length = digits.size() - 2;
     if (!is_month_and_day(digits.substr(0, month_length), digits.substr(month_length))) return false;
     const std::string after = text_between(text, number.end, number.end + 3);
-    for (const std::string_view word : {"节", "節", "大促", "促销", "促銷", "购物", "購物", "晚会", "晚會", "活动", "活動",
-                                        "当天", "當天", "这天", "這天", "那天", "快乐", "快樂", "狂欢", "狂歡", "表白",
-                                        // A disaster named by its day (921大地震 九二一, 512地震; session 17).
-                                        "大地震", "地震", "事件"})
-        if (after.rfind(word, 0) == 0) return true;
+    if (starts_with_any(after,
+                        {"节", "節", "大促", "促销", "促銷", "购物", "購物", "晚会", "晚會", "活动", "活動",
+                         "当天", "當天", "这天", "這天", "那天", "快乐", "快樂", "狂欢", "狂歡", "表白",
+                         // A disaster named by its day (921大地震 九二一, 512地震; session 17).
+                         "大地震", "地震", "事件"}))
+        return true;
     const std::string before = text_before(text, start, true);
     for (const std::string_view word : {"今天是", "明天是", "昨天是", "后天是", "後天是", "今天就是", "又到了", "迎来", "迎來"})
         if (ends_with(before, word)) return true;
@@ -132,9 +141,7 @@ bool counts_years(const std::vector<CodePoint>& text, std::size_t start, const W
         return false;
     if (std::stoi(number.whole) > kLatestYearNamed || ends_with(text_before(text, start, true), "公元前")) return true;
     const std::string after = text_between(text, number.end + 1, number.end + 4);
-    for (const std::string_view word : {"历史", "歷史", "的历史", "的歷史", "之久"})
-        if (after.rfind(word, 0) == 0) return true;
-    return false;
+    return starts_with_any(after, {"历史", "歷史", "的历史", "的歷史", "之久"});
 }
 
 bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNumber& number) {
@@ -147,12 +154,10 @@ bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNum
     if (after.size() >= 2 && is_one_of(value_at(text, number.end), U"QH") && is_digit_at(text, number.end + 1) &&
         !is_digit_at(text, number.end + 2))
         return true;
-    for (const std::string_view word : {"财年", "財年", "赛季", "賽季", "款", "届", "屆", "级", "級", "版", "春晚", "世界杯",
-                                        "奥运", "奧運", "冬奥", "冬奧", "亚运", "亞運", "全运", "全運",
-                                        // An exam's year (#2024高考#, 2025考研, 2026国考; session 17).
-                                        "高考", "中考", "考研", "国考", "國考", "学测", "學測"})
-        if (after.rfind(word, 0) == 0) return true;
-    return false;
+    return starts_with_any(after, {"财年", "財年", "赛季", "賽季", "款", "届", "屆", "级", "級", "版", "春晚",
+                                   "世界杯", "奥运", "奧運", "冬奥", "冬奧", "亚运", "亞運", "全运", "全運",
+                                   // An exam's year (#2024高考#, 2025考研, 2026国考; session 17).
+                                   "高考", "中考", "考研", "国考", "國考", "学测", "學測"});
 }
 
 bool lists_year(const std::vector<CodePoint>& text, const WrittenNumber& number) {
@@ -319,11 +324,10 @@ std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text,
             }
         }
     }
-    bool in_time = false;
     const std::string after = text_between(text, i, i + 2);
-    for (const std::string_view word : {"起", "前", "后", "後", "晚", "早", "上午", "下午", "中午", "凌晨", "夜", "当天",
-                                        "當天", "(", "（", "星期", "周", "週", "礼拜", "禮拜", "期间", "期間"})
-        if (after.rfind(word, 0) == 0) in_time = true;
+    bool in_time = starts_with_any(
+        after, {"起",   "前",   "后", "後", "晚",   "早", "上午", "下午", "中午", "凌晨", "夜",
+                "当天", "當天", "(",  "（", "星期", "周", "週",   "礼拜", "禮拜", "期间", "期間"});
     const bool is_fraction = after == "决赛" || after == "決賽" || value_at(text, i) == U'的' ||
                              (i < text.size() && takes_liang(text[i].value));
     if (!in_time && is_fraction) return std::nullopt;
@@ -357,6 +361,18 @@ std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text,
     return form;
 }
 
+namespace {
+
+// Whole minutes and seconds of two digits as a race's clock is read: 两分, 零五秒 for 05.
+std::string minutes_and_seconds_words(const WrittenNumber& minutes, const WrittenNumber& seconds) {
+    return (minutes.whole == "2" ? std::string("两") : cardinal_words(minutes.whole, false)) + "分" +
+           (seconds.whole.front() == '0' ? "零" + digit_words(seconds.whole.substr(1))
+                                         : cardinal_words(seconds.whole, false)) +
+           "秒";
+}
+
+}  // namespace
+
 std::optional<SpokenForm> read_race_time(const WrittenNumber& minutes, const WrittenNumber& seconds) {
     constexpr std::size_t kLongestMinutes = 2;
     constexpr std::size_t kLongestFraction = 2;
@@ -366,10 +382,25 @@ std::optional<SpokenForm> read_race_time(const WrittenNumber& minutes, const Wri
         return std::nullopt;
     }
     SpokenForm form;
-    form.words = (minutes.whole == "2" ? std::string("两") : cardinal_words(minutes.whole, false)) + "分" +
-                 (seconds.whole.front() == '0' ? "零" + digit_words(seconds.whole.substr(1)) : cardinal_words(seconds.whole, false)) +
-                 "秒" + digit_words(seconds.fraction);
+    form.words = minutes_and_seconds_words(minutes, seconds) + digit_words(seconds.fraction);
     form.end = seconds.end;
+    return form;
+}
+
+std::optional<SpokenForm> read_primed_time(const std::vector<CodePoint>& text, const WrittenNumber& minutes) {
+    constexpr std::size_t kLongestMinutes = 2;
+    if (minutes.has_point || minutes.has_separators || minutes.whole.size() > kLongestMinutes ||
+        !is_one_of(value_at(text, minutes.end), U"'\u2032") || !is_digit_at(text, minutes.end + 1)) {
+        return std::nullopt;
+    }
+    const auto seconds = parse_number(text, minutes.end + 1);
+    if (seconds.has_point || seconds.has_separators || seconds.whole.size() != 2 || seconds.whole > "59" ||
+        !is_one_of(value_at(text, seconds.end), U"\"\u2033")) {
+        return std::nullopt;
+    }
+    SpokenForm form;
+    form.words = minutes_and_seconds_words(minutes, seconds);
+    form.end = seconds.end + 1;
     return form;
 }
 

@@ -97,6 +97,10 @@ std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text,
 // (00:01.500: minutes with a leading zero, thousandths) is no race's.
 std::optional<SpokenForm> read_race_time(const WrittenNumber& minutes, const WrittenNumber& seconds);
 
+// Minutes and seconds written with primes, 5'30" or 6′10″ (a runner's pace, a lap, an angle's minutes):
+// 五分三十秒, the seconds of two digits below 60 and closed by their double prime (6'2" is no time).
+std::optional<SpokenForm> read_primed_time(const std::vector<CodePoint>& text, const WrittenNumber& minutes);
+
 }  // namespace talkface::detail
 
 #endif

@@ -141,10 +141,9 @@ bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start) {
 
 bool follows_phone_word(const std::vector<CodePoint>& text, std::size_t start) {
     const std::string before = text_before(text, start, false);
-    for (const std::string_view word : {"电话", "電話", "手机", "手機", "热线", "熱線", "拨打", "撥打", "致电", "致電",
-                                        "分机", "分機", "传真", "傳真", "座机", "座機", "固话", "固話"}) {
-        if (before.find(word) != std::string::npos) return true;
-    }
+    if (contains_any(before, {"电话", "電話", "手机", "手機", "热线", "熱線", "拨打", "撥打", "致电", "致電",
+                              "分机", "分機", "传真", "傳真", "座机", "座機", "固话", "固話"}))
+        return true;
     // Right after an area code in brackets, (07)123-4567 and （02）2345-6789, as Taiwan writes a
     // number: the rest is the number (session 14: 123-4567 was a range).
     if (start >= 4 && is_one_of(value_at(text, start - 1), U")\uFF09")) {
@@ -384,8 +383,7 @@ bool is_train_number(const std::vector<CodePoint>& text, std::size_t start, std:
         return false;
     }
     const std::string before = text_before(text, start, true);
-    return is_one_of(value_at(text, end), U"次") || before.find("车次") != std::string::npos ||
-           before.find("車次") != std::string::npos;
+    return is_one_of(value_at(text, end), U"次") || contains_any(before, {"车次", "車次"});
 }
 
 bool is_flight_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {

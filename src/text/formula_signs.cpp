@@ -60,6 +60,19 @@ int superscript_digit(char32_t c) {
     }
 }
 
+// A clause that rates, around a single star from text[start) to text[end): a word of rating before it
+// (评分 打分 评价 差评 好评), 级 or a verdict's 好评 差评 after it, or a verb giving it right before it
+// (给 打了) where the star closes its clause (只能给★，; 请给☆标记的题目 marks).
+bool rates(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    const std::string before = text_before(text, start, true);
+    const bool closes_clause = end >= text.size() || is_one_of(value_at(text, end), U"，,。.！!？?；;、 \n");
+    return contains_any(before, {"评分", "評分", "打分", "评价", "評價", "评级", "評級", "好评", "好評",
+                                 "差评", "差評"}) ||
+           starts_with_any(text_between(text, end, end + 2), {"级", "級", "好评", "好評", "差评", "差評"}) ||
+           (closes_clause &&
+            (ends_with(before, "给") || ends_with(before, "給") || ends_with(before, "打了")));
+}
+
 }  // namespace
 
 std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t i) {
@@ -161,16 +174,18 @@ std::optional<SpokenForm> read_number_character(const std::vector<CodePoint>& te
         return form;
     }
     // A rating drawn in stars, two or more of ★ and ☆ in a row, is said by its filled ones, 星 (★★★★☆ 四星,
-    // ★★★★★级 五星级, as a review is read; session 21: skipped with a warning). A star alone is left as it
-    // was, a mark without a reading.
+    // ★★★★★级 五星级, as a review is read; session 21: skipped with a warning), a row all empty 零星
+    // (☆☆☆☆☆, a reviewer's none; session 22: skipped). A star alone rates only where its clause does
+    // (评分：★ 一星, 只能给★); elsewhere it is a decoration (★重要通知★), said nothing and warned of as
+    // a mark without a reading.
     auto stars_end = i;
     int filled = 0;
     while (is_one_of(value_at(text, stars_end), U"\u2605\u2606")) {
         filled += value_at(text, stars_end) == 0x2605 ? 1 : 0;
         ++stars_end;
     }
-    if (stars_end - i >= 2 && filled > 0) {
-        form.words = cardinal_words(std::to_string(filled), false) + "星";
+    if (stars_end - i >= 2 || (stars_end > i && rates(text, i, stars_end))) {
+        form.words = (filled > 0 ? cardinal_words(std::to_string(filled), false) : std::string("零")) + "星";
         form.end = stars_end;
         return form;
     }

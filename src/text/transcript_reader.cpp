@@ -134,6 +134,21 @@ bool marks_topic(const std::vector<CodePoint>& text, std::size_t i) {
     return false;
 }
 
+// A $ that tags a stock's ticker ($TSLA, $AAPL, as posts and market news cite one): one to five capitals
+// right after it and no letter or digit on either side, a tag not said; the ticker's letters are read
+// (session 22: the $ was skipped with a warning). $5 stays dollars.
+bool marks_ticker(const std::vector<CodePoint>& text, std::size_t i) {
+    constexpr std::size_t kLongestTicker = 5;
+    const auto is_word_character = [&](std::size_t k) {
+        const auto c = ascii_form(text[k].value);
+        return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
+    };
+    if (ascii_form(text[i].value) != '$' || (i > 0 && is_word_character(i - 1))) return false;
+    auto k = i + 1;
+    while (k < text.size() && ascii_form(text[k].value) >= 'A' && ascii_form(text[k].value) <= 'Z') ++k;
+    return k > i + 1 && k - i - 1 <= kLongestTicker && (k == text.size() || !is_word_character(k));
+}
+
 bool is_pinyin_letter(char32_t c) {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == 0xFC /*ü*/ || c == 0xDC /*Ü*/;
 }
@@ -217,10 +232,9 @@ bool in_chemical_formula(const std::vector<CodePoint>& text, std::size_t start) 
     if (counted_between) return true;
     if (!has_small) return false;
     const std::string sentence = detail::text_between(text, 0, text.size());
-    for (const std::string_view word : {"溶液", "溶于", "溶於", "反应", "反應", "化学", "化學", "分子", "离子", "離子",
-                                        "浓度", "濃度", "摩尔", "摩爾", "晶体", "晶體", "沉淀", "电解", "電解"})
-        if (sentence.find(word) != std::string::npos) return true;
-    return false;
+    return detail::contains_any(
+        sentence, {"溶液", "溶于", "溶於", "反应", "反應", "化学", "化學", "分子", "离子", "離子", "浓度",
+                   "濃度", "摩尔", "摩爾", "晶体", "晶體", "沉淀", "电解", "電解"});
 }
 
 // Whether the character next to a token (at `edge - 1` before it, step -1, or at `edge` after it,
@@ -510,7 +524,8 @@ private:
         }
         if (is_pinyin_letter(c.value)) return read_token(text, i);
         append_text(c.text);
-        if (!is_silent_punctuation(c.value) && !marks_topic(text, i)) warn_no_reading(c);
+        if (!is_silent_punctuation(c.value) && !marks_topic(text, i) && !marks_ticker(text, i))
+            warn_no_reading(c);
         return i + 1;
     }
 

@@ -57,15 +57,13 @@ bool is_small_watt_at(const std::vector<CodePoint>& text, std::size_t i) {
         return false;
     }
     const std::string clause = text_before(text, i, true) + text_after(text, i);
-    for (const std::string_view lamp :
-         {"台灯", "檯燈", "枱燈", "灯泡", "燈泡", "灯管", "燈管", "灯具", "燈具", "灯珠", "燈珠", "顶灯",
-          "頂燈", "路灯", "路燈", "夜灯", "夜燈", "射灯", "射燈", "筒灯", "筒燈", "D灯",  "D燈"})
-        if (clause.find(lamp) != std::string::npos) return true;
+    if (contains_any(clause, {"台灯", "檯燈", "枱燈", "灯泡", "燈泡", "灯管", "燈管", "灯具",
+                              "燈具", "灯珠", "燈珠", "顶灯", "頂燈", "路灯", "路燈", "夜灯",
+                              "夜燈", "射灯", "射燈", "筒灯", "筒燈", "D灯",  "D燈"}))
+        return true;
     const std::string sentence = text_before(text, i, false) + text_after(text, i, false);
-    for (const std::string_view word :
-         {"功率", "充电", "充電", "快充", "闪充", "閃充", "超充", "瓦", "输出", "輸出"})
-        if (sentence.find(word) != std::string::npos) return true;
-    return false;
+    return contains_any(sentence,
+                        {"功率", "充电", "充電", "快充", "闪充", "閃充", "超充", "瓦", "输出", "輸出"});
 }
 
 constexpr Currency kCurrencies[] = {

@@ -5,6 +5,7 @@
 #define TALKFACE_TEXT_WRITTEN_NUMBER_SCAN_HPP
 
 #include <cstddef>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -44,6 +45,10 @@ std::string text_between(const std::vector<CodePoint>& text, std::size_t first, 
 bool takes_liang(char32_t c);
 
 bool ends_with(const std::string& text, std::string_view end);
+
+// Whether any of `words` stands in `text` (the clause names a score, a lamp, a race ...), or starts it.
+bool contains_any(std::string_view text, std::initializer_list<std::string_view> words);
+bool starts_with_any(std::string_view text, std::initializer_list<std::string_view> words);
 
 // The text before text[start] back to the last end mark or line break (the sentence so far), and
 // with `clause_only` to the last pause mark too.

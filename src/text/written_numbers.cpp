@@ -42,7 +42,7 @@ bool follows_game_attribute(const std::vector<CodePoint>& text, std::size_t star
 // A word for a temperature earlier in the sentence (气温, 低温, 温度, 氣溫): a 度 after a number is one.
 bool speaks_of_temperature(const std::vector<CodePoint>& text, std::size_t start) {
     const std::string before = text_before(text, start, false);
-    return before.find("温") != std::string::npos || before.find("溫") != std::string::npos;
+    return contains_any(before, {"温", "溫"});
 }
 
 // A number at text[start] with `unit` after it (or none) and `next` the code point after it is a
@@ -57,9 +57,8 @@ bool is_temperature_reading(const std::vector<CodePoint>& text, std::size_t star
 // A word earlier in the clause that names a change (涨幅, 增长, 上升, 同比): a + after it is not said.
 bool names_change(const std::vector<CodePoint>& text, std::size_t start) {
     const std::string before = text_before(text, start, true);
-    for (const std::string_view word : {"涨", "漲", "跌", "增", "升", "降", "减", "減", "幅", "同比", "环比", "環比"})
-        if (before.find(word) != std::string::npos) return true;
-    return false;
+    return contains_any(before,
+                        {"涨", "漲", "跌", "增", "升", "降", "减", "減", "幅", "同比", "环比", "環比"});
 }
 
 // A 度 after a number measures degrees (两度) where the sentence speaks of a temperature (气温只有2度),
@@ -73,10 +72,8 @@ bool measures_degrees(const std::vector<CodePoint>& text, std::size_t start, std
         if (after == injury) return false;
     if (speaks_of_temperature(text, start)) return true;
     const std::string before = text_before(text, start, true);
-    for (const std::string_view angle : {"角", "旋转", "旋轉", "转", "轉", "偏", "倾斜", "傾斜", "斜"})
-        if (before.find(angle) != std::string::npos) return true;
-    for (const std::string_view amount : {"左右", "以上", "以下", "以内", "以內", "之间", "之間", "的"})
-        if (after.rfind(amount, 0) == 0) return true;
+    if (contains_any(before, {"角", "旋转", "旋轉", "转", "轉", "偏", "倾斜", "傾斜", "斜"})) return true;
+    if (starts_with_any(after, {"左右", "以上", "以下", "以内", "以內", "之间", "之間", "的"})) return true;
     constexpr std::u32string_view kClauseEnds = U"，,。.！!？?；;、)）";
     return degree + 1 >= text.size() || kClauseEnds.find(text[degree + 1].value) != std::u32string_view::npos;
 }
@@ -97,8 +94,7 @@ std::optional<PressureUnit> blood_pressure_unit(const std::vector<CodePoint>& te
     if (const Unit* unit = unit_at(text, end, unit_end); unit != nullptr && unit->written == "mmHg")
         return PressureUnit{unit->words, unit_end};
     const std::string before = text_before(text, start, true);
-    if (before.find("血压") == std::string::npos && before.find("血壓") == std::string::npos)
-        return std::nullopt;
+    if (!contains_any(before, {"血压", "血壓"})) return std::nullopt;
     return PressureUnit{"", end};
 }
 
@@ -137,10 +133,7 @@ bool joins_quantities(const std::vector<CodePoint>& text, std::size_t mark) {
 // there is a resolution's (4k屏), not a thousand.
 bool speaks_of_picture(const std::vector<CodePoint>& text, std::size_t end) {
     const std::string clause = text_before(text, end, true) + text_after(text, end);
-    for (const std::string_view word :
-         {"分辨", "视频", "視頻", "屏", "画质", "畫質", "电视", "電視", "帧", "幀"})
-        if (clause.find(word) != std::string::npos) return true;
-    return false;
+    return contains_any(clause, {"分辨", "视频", "視頻", "屏", "画质", "畫質", "电视", "電視", "帧", "幀"});
 }
 
 // Whether the sentence around text[end] speaks of running, a race or a walk (跑 马拉松 配速 越野 徒步 骑行
@@ -148,10 +141,8 @@ bool speaks_of_picture(const std::vector<CodePoint>& text, std::size_t end) {
 // thousand.
 bool speaks_of_running(const std::vector<CodePoint>& text, std::size_t end) {
     const std::string sentence = text_before(text, end, false) + text_after(text, end, false);
-    for (const std::string_view word :
-         {"跑", "马拉松", "馬拉松", "配速", "越野", "徒步", "骑行", "騎行", "健走", "竞走", "競走"})
-        if (sentence.find(word) != std::string::npos) return true;
-    return false;
+    return contains_any(
+        sentence, {"跑", "马拉松", "馬拉松", "配速", "越野", "徒步", "骑行", "騎行", "健走", "竞走", "競走"});
 }
 
 // The magnitude a chat writes as a small letter right after a number in a Chinese line, as posts write
@@ -197,10 +188,9 @@ bool follows_station_band(const std::vector<CodePoint>& text, std::size_t start)
 bool speaks_of_season(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
     std::string sentence = text_before(text, start, false);
     for (auto i = end; i < text.size() && !is_one_of(value_at(text, i), U"\u3002.!?;\n"); ++i) sentence += text[i].text;
-    for (const std::string_view word : {"赛季", "賽季", "常规赛", "常規賽", "例行赛", "例行賽", "季后赛", "季後賽", "排名",
-                                        "联盟", "聯盟", "东部", "東部", "西部", "胜率", "勝率", "积分榜", "積分榜"})
-        if (sentence.find(word) != std::string::npos) return true;
-    return false;
+    return contains_any(
+        sentence, {"赛季", "賽季", "常规赛", "常規賽", "例行赛", "例行賽", "季后赛", "季後賽", "排名", "联盟",
+                   "聯盟", "东部", "東部", "西部", "胜率", "勝率", "积分榜", "積分榜"});
 }
 
 // A game's record of kills, deaths and assists (战绩0-10, KDA 5-2-10), each part said with 杠 between, as
@@ -212,15 +202,18 @@ std::optional<SpokenForm> read_game_record(const std::vector<CodePoint>& text, s
     constexpr std::size_t kMostDigits = 2;
     if (first.has_point || first.has_separators || first.whole.size() > kMostDigits) return std::nullopt;
     const std::string before = text_before(text, start, true);
-    if (before.find("战绩") == std::string::npos && before.find("戰績") == std::string::npos &&
-        before.find("KDA") == std::string::npos) {
-        return std::nullopt;
-    }
+    if (!contains_any(before, {"战绩", "戰績", "KDA"})) return std::nullopt;
     SpokenForm form;
     form.words = cardinal_words(first.whole, false);
     auto i = first.end;
     std::size_t parts = 1;
-    while (parts < kMostParts && is_dash(value_at(text, i)) && is_digit_at(text, i + 1)) {
+    // The parts are set off by dashes, or by slashes where all three stand (KDA 12/3/5 十二杠三杠五; session
+    // 22: 五分之十二; 3/5 stays a fraction).
+    const bool slashed = value_at(text, first.end) == '/';
+    const auto is_part_mark = [&](std::size_t k) {
+        return slashed ? value_at(text, k) == '/' : is_dash(value_at(text, k));
+    };
+    while (parts < kMostParts && is_part_mark(i) && is_digit_at(text, i + 1)) {
         auto k = i + 1;
         const auto part = digits_from(text, k);
         if (part.size() > kMostDigits || value_at(text, k) == '.') break;
@@ -228,7 +221,7 @@ std::optional<SpokenForm> read_game_record(const std::vector<CodePoint>& text, s
         i = k;
         ++parts;
     }
-    if (parts < 2 || is_digit_at(text, i) || is_dash(value_at(text, i))) return std::nullopt;
+    if (parts < (slashed ? kMostParts : 2) || is_digit_at(text, i) || is_part_mark(i)) return std::nullopt;
     // A season's record of wins and losses (湖人目前战绩30-12，排名西部第2; 本赛季战绩45-37) is said
     // 三十胜十二负, as newsreaders say it (session 17: 三十杠十二): two parts where the sentence speaks
     // of a season or a table (赛季 常规赛 季后赛 排名 联盟 东部 西部 胜率 积分榜).
@@ -321,6 +314,7 @@ struct NumberContext {
     bool is_whole_clause = false;  // the number alone between clause marks (88，下次再聊)
     bool measures_degrees = false;  // before a 度 of a temperature or an angle (2度左右 两度)
     bool is_frequency = false;   // a station's frequency after FM, AM or 调频 (FM103.9 一零三点九)
+    bool is_count_over = false;  // a + after it and no term after that (99+ 九十九加; 666+1 is a sum)
 };
 
 struct SaidNumber {
@@ -391,7 +385,10 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
         // 九九式, 737型), a day named by its date (618 六一八) and one digit said three or more
         // times over, as a chat cheers (666 六六六, 888), are said digit by digit.
         // So is a chat's laugh, 2333 (a 2 and three or more 3s: 二三三三, after an emoticon's number).
-        const bool is_one_digit_over = whole.size() >= 3 && whole.find_first_not_of(whole.front()) == std::string::npos;
+        // A count shown as "or more" counts (999+条消息 九百九十九加).
+        const bool is_one_digit_over = whole.size() >= 3 &&
+                                       whole.find_first_not_of(whole.front()) == std::string::npos &&
+                                       !context.is_count_over;
         // A chat's goodbye, 88 or 886 (拜拜, 拜拜了) as a clause of its own (88，下次再聊), is said digit by
         // digit, 八八 (session 14); a bare 88 after a colon or in a clause counts (得分：88, 考了88分).
         if ((whole == "88" || whole == "886") && context.is_whole_clause) {
@@ -656,6 +653,10 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (auto date = read_numeric_date(text, number)) return date;
         if (auto season = read_season(text, number)) return season;
         if (auto record = read_game_record(text, start, number)) return record;
+        if (auto time = read_primed_time(text, number)) {
+            time->words += per_unit_words(text, time->end);
+            return time;
+        }
         if (auto model = read_series_and_model(text, i, number)) return model;
         if (auto variant =
                 context.is_model && !context.is_train ? read_model_variant(text, number) : std::nullopt)
@@ -758,6 +759,9 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
                    : chat_letter == "万"   ? U'万'
                    : chat_letter == "公里" ? U'公'
                                            : U'千';
+    context.is_count_over = chat_letter.empty() && context.next == '+' &&
+                            !is_digit_at(text, numbers.back().end + 1) &&
+                            !is_ascii_letter(value_at(text, numbers.back().end + 1));
     // A Latin unit after the number's 万 or 亿 (1.6万km² 一点六万平方公里) is said after it.
     std::string magnitude_words;
     if (unit == nullptr && currency == nullptr && is_one_of(context.next, U"万萬亿億")) {

@@ -1169,6 +1169,36 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE(
+        "empty star rows, a rating star, a pace in primes, KDA in slashes, 999+, listed scores, tickers") {
+        // Each row but the limits failed on main b61459a (session 22, dev12's tuning misses).
+        check_cases({
+            {"这家店我只给☆☆☆☆☆", "这家店我只给零星"},
+            {"差评☆☆☆☆☆，再也不来了", "差评零星再也不来了"},
+            {"评分：★，不推荐", "评分一星不推荐"},
+            {"他今天配速5'30\"", "他今天配速五分三十秒"},
+            {"半马平均配速4'45\"/km", "半马平均配速四分四十五秒每公里"},
+            {"她的配速稳定在6′05″", "她的配速稳定在六分零五秒"},
+            {"我KDA 12/3/5", "我 kei di ei十二杠三杠五"},
+            {"群里有999+条消息", "群里有九百九十九加条消息"},
+            {"比分为25-18、25-20、25-22", "比分为二十五比十八二十五比二十二十五比二十二"},
+            {"特斯拉（$TSLA）大涨", "特斯拉 ti ai si ai le ei大涨"},
+            // The rules' limits: a height in feet and inches, a record of two
+            // parts, a cheer of one digit, a list of ranges, dollars.
+            {"他身高6'2\"", "他身高六二"},
+            {"战绩3/5", "战绩五分之三"},
+            {"666，太秀了", "六六六太秀了"},
+            {"666+1", "六六六加一"},
+            {"第5-8名、第10-12名", "第五到八名第十到十二名"},
+            {"一杯$5", "一杯五美元"},
+        });
+        // A lone star where nothing rates is a decoration or a mark, unsaid and warned of.
+        const auto decorated = read_transcript("★重要通知★ 请给☆标记的题目打钩。", {}, "t.txt");
+        CHECK(said(decorated) == "重要通知请给标记的题目打钩");
+        CHECK(decorated.warnings.size() == 3);
+        CHECK(read_transcript("特斯拉（$TSLA）大涨。", {}, "t.txt").warnings.empty());
+    }
+
     TEST_CASE("a fix right after a written form replaces its reading, in characters or pinyin") {
         CHECK(said("2026{两千零二十六}年") == "两千零二十六年");
         CHECK(pinyin_of("OK{ou1 kei4}") == "ou1 kei4");
