@@ -47,6 +47,16 @@ constexpr float kValleyFloorDb = 1.0f;
 // a turn itself. bench/ Session 21 measured 0.25 and 1 beside it on the person's tuning rows.
 constexpr float kTurnRise = 0.5f;
 
+// The noise's own high band (pause_high_band_reach): the level the high band of the path's pauses
+// stays under on nine frames in ten, where they hold at least 10 frames. A frame above it is one
+// the noise alone reaches one time in ten. A steady noise (hiss, a fan, hum, a phone line's) holds
+// its high band within 6 dB from its tenth to its ninetieth percentile (white and pink noise: 1-2
+// dB); music and drums swing by 8-100 dB, and a frame under their reach says nothing of whether a
+// sibilant sounds there.
+constexpr double kNoiseReachShare = 0.9;
+constexpr std::size_t kMinNoiseFrames = 10;
+constexpr float kSteadyNoiseSpreadDb = 6.0f;
+
 // Whether `phone_class` scores at least as well as `own_class` on every frame of `segment`.
 bool fits_throughout(const StateSegment& segment, PhoneClass phone_class, PhoneClass own_class,
                      const EmissionScores& scores) {
@@ -149,6 +159,29 @@ std::size_t apical_vowel_turn(const EmissionScores& scores, std::size_t vowel_fi
     return turn;
 }
 
+float pause_high_band_reach(const FeatureTrack& track, const SentenceChain& chain,
+                            const std::vector<StateSegment>& path) {
+    const std::size_t offset = chain.searched.first_frame;
+    std::vector<float> levels;
+    for (const StateSegment& segment : path)
+        if (is_pause(chain.states[segment.state].role))
+            for (std::size_t t = segment.first_frame; t < segment.end_frame && offset + t < track.frame_count;
+                 ++t)
+                levels.push_back(track.at(offset + t, kHighBandDb));
+    if (levels.size() < kMinNoiseFrames) return std::numeric_limits<float>::infinity();
+    const float reach = percentile_of(levels, kNoiseReachShare);
+    if (reach - percentile_of(std::move(levels), 1.0 - kNoiseReachShare) > kSteadyNoiseSpreadDb)
+        return std::numeric_limits<float>::infinity();
+    return reach;
+}
+
+std::size_t sibilant_onset(const FeatureTrack& track, std::size_t offset, std::size_t first, std::size_t end,
+                           float noise_reach_db) {
+    for (std::size_t t = first; t < end && offset + t < track.frame_count; ++t)
+        if (track.at(offset + t, kHighBandDb) > noise_reach_db) return first + (t - first) / 2;
+    return first;
+}
+
 void place_syllables(const SentenceChain& chain, std::size_t chain_index, const std::vector<StateSegment>& path,
                      const std::vector<std::vector<SyllableFrames>>& other_frames, const EmissionScores& scores,
                      const FeatureTrack& track, Timeline& result, std::vector<SyllableEvidence>& evidence) {
@@ -157,6 +190,7 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
         return std::min(track.duration_s, frame_time_s(chain.searched.first_frame + frame));
     };
     std::vector<SyllableFrames> frames(chain.syllables.size());
+    const float noise_reach_db = pause_high_band_reach(track, chain, path);
     for (std::size_t local = 0; local < chain.syllables.size(); ++local) {
         Syllable& syllable = result.syllables[chain.syllable_indices[local]];
         // `first` is the path's start, `start` the syllable's (a voiced join's moved back).
@@ -198,6 +232,15 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
                     chain.syllables[local - 1]->pinyin.back() == '5' &&
                     fits_throughout(path[p - 1], state.phone_class, before->phone_class, scores))
                     start = std::min(start, path[p - 1].first_frame);
+                // s sh x right after the sound before: no closure, no pause (a short one before a
+                // fricative lasts 150 ms at least, phone_chain.cpp).
+                const char initial =
+                    chain.syllables[local]->pinyin.empty() ? '\0' : chain.syllables[local]->pinyin[0];
+                if (before && before->syllable + 1 == local && !is_pause(before->role) &&
+                    state.role == StateRole::initial && state.phone_class == kSibilant &&
+                    (initial == 's' || initial == 'x'))
+                    start = sibilant_onset(track, chain.searched.first_frame, first, path[p].end_frame,
+                                           noise_reach_db);
                 if (is_voiced_join && state.role == StateRole::final) {
                     // No earlier than the syllable before's vowel: its final's first frame.
                     std::size_t q = p - 1;
@@ -219,9 +262,9 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
         syllable.start_s = time_s(start);
         syllable.end_s = time_s(std::max(end, first + 1));
         // A syllable ends where the next starts.
-        if (start < first) {
+        if (start != first) {
             Syllable& previous = result.syllables[chain.syllable_indices[local - 1]];
-            previous.end_s = std::min(previous.end_s, syllable.start_s);
+            previous.end_s = start < first ? std::min(previous.end_s, syllable.start_s) : syllable.start_s;
         }
         // A syllable with no initial (y- w-, a vowel) starts with its final: the final moves with it.
         const std::size_t final_frame = final_first.value_or(first);

@@ -65,6 +65,30 @@ std::size_t apical_vowel_turn(const EmissionScores& scores, std::size_t vowel_fi
 // else `start`: never later.
 std::size_t syllable_valley_start(const FeatureTrack& track, std::size_t offset, std::size_t lowest, std::size_t start);
 
+// The level the noise's own high band (2.5-8 kHz, frication's) reaches: its kNoiseReachShare
+// percentile over the frames of `path`'s pauses (edge silences and pauses between syllables of
+// `chain`); +infinity where they hold fewer than kMinNoiseFrames frames, or where the noise is not
+// steady (its level there spreads over more than kSteadyNoiseSpreadDb between that percentile and
+// the one as far from the bottom: music, drums).
+float pause_high_band_reach(const FeatureTrack& track, const SentenceChain& chain,
+                            const std::vector<StateSegment>& path);
+
+// Where a sibilant (s sh x) right after the sound before starts, the path having started it at
+// `first` (its state's frames [first, end), counted from frame `offset` of `track`). A sibilant is
+// heard as frication in the high band. In noise its weak onset, and the tail of the sound before
+// as it decays, sound like the noise alone; the path may not put a pause that short before a
+// fricative (a weak fricative's start would go to it: phone_chain.cpp) and gives those frames to
+// the sibilant, which then starts 50-100 ms early where a vowel's tail decays under the noise
+// (bench/ Session 22). Where the high band on the path's first frames stays within
+// `noise_reach_db` (pause_high_band_reach), the frication is first heard at the first frame above
+// it; which of the frames heard as noise before it were the sound before's and which the
+// sibilant's the recording does not tell, so the sibilant starts halfway between, off by at most
+// half that stretch either way. Never earlier than `first`; where no frame before `end` rises
+// above the noise's reach, `first`. Not f or h: their frication is weak and low for the high band,
+// which in noise they seldom lift above its reach before their vowel (bench/ Session 22: moved late).
+std::size_t sibilant_onset(const FeatureTrack& track, std::size_t offset, std::size_t first, std::size_t end,
+                           float noise_reach_db);
+
 // The path's syllables and pauses, in frames of the whole recording.
 std::vector<AlignedStretch> stretches_of(const SentenceChain& chain, const std::vector<StateSegment>& path);
 

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -44,55 +45,92 @@ FeatureTrack two_nuclei(std::size_t valley, float depth_db) {
     });
 }
 
-// 了一 as a chain and its path: silence (frames 0-9), 了's l (10-14) and e (15-19), 一's i (20-39),
-// silence (40-49). Every class scores -20 on a frame but the path's own (0); on the e, i scores
-// `i_on_e[t]` as well, and e -10 on the i. `le` is 了's pinyin.
-struct LightJoin {
+// Two syllables as a chain and its path: each state's class, role, syllable and frames in order,
+// an edge silence first and last. Every class scores -20 on a frame but the path's own (0); every
+// column of the feature track is -20 dB.
+struct MadeJoin {
+    struct Part {
+        PhoneClass phone_class;
+        StateRole role;
+        std::size_t syllable;
+        std::size_t frames;
+    };
     std::vector<talkface::Syllable> syllables;
     SentenceChain chain;
     std::vector<StateSegment> path;
     EmissionScores scores;
     FeatureTrack track;
 
-    LightJoin(const std::string& le, const std::vector<float>& i_on_e) {
-        syllables.resize(2);
-        syllables[0].text = "了";
-        syllables[0].pinyin = le;
-        syllables[1].text = "一";
-        syllables[1].pinyin = "yi1";
-        const PhoneClass classes[] = {kSilence, kLiquid, kVowelE, kVowelI, kSilence};
-        const StateRole roles[] = {StateRole::edge_silence, StateRole::initial, StateRole::final,
-                                   StateRole::final, StateRole::edge_silence};
-        const std::size_t of_syllable[] = {0, 0, 0, 1, 1}, frames[] = {10, 5, 5, 20, 10};
+    MadeJoin(const std::vector<std::string>& pinyins, const std::vector<Part>& parts) {
+        for (const std::string& pinyin : pinyins) {
+            syllables.emplace_back();
+            syllables.back().pinyin = pinyin;
+        }
         std::size_t frame = 0;
-        for (std::size_t s = 0; s < 5; ++s) {
+        for (const Part& part : parts) {
+            const bool is_edge = part.role == StateRole::edge_silence;
             chain.states.push_back(talkface::test::chain_state(
-                classes[s], roles[s], of_syllable[s], static_cast<double>(frames[s]), 100, s == 0 || s == 4));
-            path.push_back({s, frame, frame + frames[s]});
-            for (std::size_t t = 0; t < frames[s]; ++t, ++frame)
-                for (int c = 0; c < kPhoneClassCount; ++c) {
-                    float score = c == classes[s] ? 0.0f : -20.0f;
-                    if (classes[s] == kVowelE && c == kVowelI) score = i_on_e[t];
-                    if (classes[s] == kVowelI && c == kVowelE) score = -10.0f;
-                    scores.values.push_back(score);
-                }
+                part.phone_class, part.role, part.syllable, static_cast<double>(part.frames), 100, is_edge));
+            path.push_back({chain.states.size() - 1, frame, frame + part.frames});
+            for (std::size_t t = 0; t < part.frames; ++t, ++frame)
+                for (int c = 0; c < kPhoneClassCount; ++c)
+                    scores.values.push_back(c == part.phone_class ? 0.0f : -20.0f);
         }
         scores.frame_count = frame;
         for (const auto& syllable : syllables) chain.syllables.push_back(&syllable);
-        chain.syllable_indices = {0, 1};
+        for (std::size_t i = 0; i < syllables.size(); ++i) chain.syllable_indices.push_back(i);
         chain.speech = chain.searched = chain.limit = {0, frame};
         track = level_track(frame, [](std::size_t) { return -20.0f; });
+        for (float& value : track.values) value = -20.0f;
     }
 
-    // Where place_syllables starts 一, in frames.
-    double yi_start_frames() const {
+    float& score(std::size_t frame, int phone_class) {
+        return scores.values[frame * kPhoneClassCount + static_cast<std::size_t>(phone_class)];
+    }
+
+    // The syllables as place_syllables places them (times in frames: start_s / kFrameStepS).
+    std::vector<talkface::Syllable> placed() const {
         talkface::Timeline result;
         result.syllables = syllables;
         std::vector<SyllableEvidence> evidence(syllables.size());
         place_syllables(chain, 0, path, {}, scores, track, result, evidence);
-        return result.syllables[1].start_s / kFrameStepS;
+        return result.syllables;
     }
 };
+
+// 了一: silence (frames 0-9), 了's l (10-14) and e (15-19), 一's i (20-39), silence (40-49). On the
+// e, i scores `i_on_e[t]`, and e -10 on the i. `le` is 了's pinyin. Where 一 starts, in frames.
+double light_join_start(const std::string& le, const std::vector<float>& i_on_e) {
+    MadeJoin join({le, "yi1"}, {{kSilence, StateRole::edge_silence, 0, 10},
+                                {kLiquid, StateRole::initial, 0, 5},
+                                {kVowelE, StateRole::final, 0, 5},
+                                {kVowelI, StateRole::final, 1, 20},
+                                {kSilence, StateRole::edge_silence, 1, 10}});
+    for (std::size_t t = 0; t < 5; ++t) join.score(15 + t, kVowelI) = i_on_e[t];
+    for (std::size_t t = 20; t < 40; ++t) join.score(t, kVowelE) = -10.0f;
+    return join.placed()[1].start_s / kFrameStepS;
+}
+
+// 安心 (an1 xin1, its coda left out): silence (frames 0-14), 安's a (15-34), 心's x (35-49) and i
+// (50-64), silence (65-79). The high band is noise's, -5 and -4.5 dB by turns (its reach in the
+// pauses: -4.5), but on the vowels (-2 dB) and on the x from frame 35 + `unheard` on (+5 dB): the
+// sibilant's first `unheard` frames, and 安's tail, sound like the noise.
+MadeJoin sibilant_join(std::size_t unheard) {
+    MadeJoin join({"an1", "xin1"}, {{kSilence, StateRole::edge_silence, 0, 15},
+                                    {kVowelA, StateRole::final, 0, 20},
+                                    {kSibilant, StateRole::initial, 1, 15},
+                                    {kVowelI, StateRole::final, 1, 15},
+                                    {kSilence, StateRole::edge_silence, 1, 15}});
+    for (std::size_t t = 0; t < join.track.frame_count; ++t) {
+        const bool is_vowel = (t >= 15 && t < 35) || (t >= 50 && t < 65);
+        const bool is_frication = t >= 35 + unheard && t < 50;
+        join.track.values[t * kFeatureCount + kHighBandDb] = is_vowel       ? -2.0f
+                                                             : is_frication ? 5.0f
+                                                             : t % 2 == 0   ? -5.0f
+                                                                            : -4.5f;
+    }
+    return join;
+}
 
 }  // namespace
 
@@ -209,9 +247,44 @@ TEST_SUITE("speech") {
         // A light 了 said quickly and weakly: its e is only the turn into 一's i, which fits each of
         // its frames as well (of the rise towards i no step to walk back over). 一 starts with it.
         const std::vector<float> turn = {0.0f, 0.5f, 0.5f, 0.5f, 0.5f};
-        CHECK(LightJoin("le5", turn).yi_start_frames() == doctest::Approx(15.0));
+        CHECK(light_join_start("le5", turn) == doctest::Approx(15.0));
         // 了 with a tone of its own is heard apart; one e frame the i fits worse is a vowel of its own.
-        CHECK(LightJoin("le4", turn).yi_start_frames() == doctest::Approx(20.0));
-        CHECK(LightJoin("le5", {0.5f, 0.5f, -0.5f, 0.5f, 0.5f}).yi_start_frames() == doctest::Approx(20.0));
+        CHECK(light_join_start("le4", turn) == doctest::Approx(20.0));
+        CHECK(light_join_start("le5", {0.5f, 0.5f, -0.5f, 0.5f, 0.5f}) == doctest::Approx(20.0));
+    }
+
+    TEST_CASE("a sibilant whose first frames sound like the noise starts halfway to its heard frication") {
+        // The path starts 心's x at frame 35; its frication rises above the noise's reach at 43.
+        // Which of frames 35-42 were 安's decaying tail and which the x's weak onset is not heard:
+        // the x starts halfway (39), where 安 ends.
+        const auto placed = sibilant_join(8).placed();
+        CHECK(placed[1].start_s / kFrameStepS == doctest::Approx(39.0));
+        CHECK(placed[0].end_s == doctest::Approx(placed[1].start_s));
+        // Frication heard from the path's start, or never above the noise (a weak one): the path's start.
+        CHECK(sibilant_join(0).placed()[1].start_s / kFrameStepS == doctest::Approx(35.0));
+        CHECK(sibilant_join(15).placed()[1].start_s / kFrameStepS == doctest::Approx(35.0));
+    }
+
+    TEST_CASE("a sibilant's onset is looked for only where the noise's reach is measured") {
+        FeatureTrack track = level_track(30, [](std::size_t) { return -20.0f; });
+        for (float& value : track.values) value = -20.0f;
+        for (std::size_t t = 20; t < 30; ++t) track.values[t * kFeatureCount + kHighBandDb] = 5.0f;
+        CHECK(sibilant_onset(track, 0, 10, 30, -4.5f) == 15);
+        CHECK(sibilant_onset(track, 0, 10, 20, -4.5f) == 10);
+        CHECK(sibilant_onset(track, 0, 10, 30, std::numeric_limits<float>::infinity()) == 10);
+        // The path's pauses hold fewer than 10 frames: no reach.
+        const MadeJoin join = sibilant_join(8);
+        std::vector<StateSegment> no_pauses(join.path.begin() + 1, join.path.end() - 1);
+        CHECK(pause_high_band_reach(join.track, join.chain, no_pauses) ==
+              std::numeric_limits<float>::infinity());
+        CHECK(pause_high_band_reach(join.track, join.chain, join.path) == doctest::Approx(-4.5f));
+        // Drums in the pauses, 15 dB apart: no steady noise to hear the frication against.
+        MadeJoin drums = sibilant_join(8);
+        for (std::size_t t = 0; t < drums.track.frame_count; ++t)
+            if (t < 15 || t >= 65)
+                drums.track.values[t * kFeatureCount + kHighBandDb] = t % 3 == 0 ? -5.0f : -20.0f;
+        CHECK(pause_high_band_reach(drums.track, drums.chain, drums.path) ==
+              std::numeric_limits<float>::infinity());
+        CHECK(drums.placed()[1].start_s / kFrameStepS == doctest::Approx(35.0));
     }
 }
