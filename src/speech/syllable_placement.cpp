@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string_view>
 
 #include "common/order_statistics.hpp"
 #include "speech/alignment_confidence.hpp"
@@ -46,6 +47,19 @@ constexpr float kValleyFloorDb = 1.0f;
 // flux by a quarter (e^0.25); a bonus of 0.5 within a frame of the path's start says the path found
 // a turn itself. bench/ Session 21 measured 0.25 and 1 beside it on the person's tuning rows.
 constexpr float kTurnRise = 0.5f;
+// A syllable after a pause whose initial the path holds longer than its duration prior's median
+// times exp(this many of its spreads), about the longest 2% of such sounds, took the sound before
+// it too (onset_after_pause).
+constexpr double kOverlongInitialSpreads = 2.0;
+
+// Whether a syllable whose first state is `initial` starts with a stop's burst: b d g p t k, and
+// after a pause (no closure) the affricates z zh j c ch q, whose burst their frication follows,
+// weaker at first.
+bool opens_with_burst(const PhoneState& initial, const Syllable& syllable) {
+    return initial.phone_class == kBurst ||
+           (initial.phone_class == kSibilant && !syllable.pinyin.empty() &&
+            std::string_view("zcjqZCJQ").find(syllable.pinyin[0]) != std::string_view::npos);
+}
 
 // The noise's own high band (pause_high_band_reach): the level the high band of the path's pauses
 // stays under on nine frames in ten, where they hold at least 10 frames. A frame above it is one
@@ -182,6 +196,21 @@ std::size_t sibilant_onset(const FeatureTrack& track, std::size_t offset, std::s
     return first;
 }
 
+std::size_t onset_after_pause(const FeatureTrack& track, std::size_t offset, const PhoneState& initial,
+                              const StateSegment& segment) {
+    const std::size_t first = segment.first_frame;
+    const double frames = static_cast<double>(segment.end_frame - first);
+    if (frames <= initial.median_frames * std::exp(kOverlongInitialSpreads * initial.log_sigma)) return first;
+    auto level = [&](std::size_t t) { return track.at(offset + t, kEnergyDb); };
+    std::size_t lowest = first;
+    for (std::size_t t = first + 1; t < segment.end_frame; ++t)
+        if (level(t) < level(lowest)) lowest = t;
+    std::size_t floor_end = lowest;
+    for (std::size_t t = lowest + 1; t < segment.end_frame; ++t)
+        if (level(t) < level(lowest) + kValleyFloorDb) floor_end = t;
+    return lowest == first ? first : floor_end;
+}
+
 void place_syllables(const SentenceChain& chain, std::size_t chain_index, const std::vector<StateSegment>& path,
                      const std::vector<std::vector<SyllableFrames>>& other_frames, const EmissionScores& scores,
                      const FeatureTrack& track, Timeline& result, std::vector<SyllableEvidence>& evidence) {
@@ -241,6 +270,10 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
                     (initial == 's' || initial == 'x'))
                     start = sibilant_onset(track, chain.searched.first_frame, first, path[p].end_frame,
                                            noise_reach_db);
+                const bool is_after_pause = p == 0 || is_pause(chain.states[path[p - 1].state].role);
+                if (is_after_pause && state.role == StateRole::initial &&
+                    !opens_with_burst(state, *chain.syllables[local]))
+                    start = onset_after_pause(track, chain.searched.first_frame, state, path[p]);
                 if (is_voiced_join && state.role == StateRole::final) {
                     // No earlier than the syllable before's vowel: its final's first frame.
                     std::size_t q = p - 1;

@@ -89,6 +89,23 @@ float pause_high_band_reach(const FeatureTrack& track, const SentenceChain& chai
 std::size_t sibilant_onset(const FeatureTrack& track, std::size_t offset, std::size_t first, std::size_t end,
                            float noise_reach_db);
 
+// Where a syllable after a pause (a sentence's first, or a phrase's after a comma) starts, its
+// initial `initial` held by `segment` on the path (frames counted from frame `offset` of `track`).
+// The silence class is learned on the recording's pauses and closures, and the sound just before a
+// sentence may fit the initial's class better: a room's tail of the sentence before (a nasal), a
+// note (a liquid), a drum (a sibilant). The path then gives the initial that sound too, up to its
+// longest, and the sentence starts 150-200 ms early (bench/ espeak-ng reverb, music20, song15).
+// Where the initial holds more frames than its duration prior's median times
+// exp(kOverlongInitialSpreads spreads), the syllable starts at the last frame of the level's lowest
+// stretch within them (within kValleyFloorDb of its lowest frame), where the sound rises into the
+// initial: the sound before decays or holds there. Where the lowest frame is the first (a sound
+// held from its onset on), or the initial is no longer than that, the path's start. place_syllables
+// asks it only of an initial that sounds from its first frame on, not of a burst's (b d g p t k,
+// and after a pause z zh j c ch q, whose frication after the burst may start weaker: a wrong text's
+// 这 started in the dip after its burst, 80 ms late, and a missing sentence went unnoticed).
+std::size_t onset_after_pause(const FeatureTrack& track, std::size_t offset, const PhoneState& initial,
+                              const StateSegment& segment);
+
 // The path's syllables and pauses, in frames of the whole recording.
 std::vector<AlignedStretch> stretches_of(const SentenceChain& chain, const std::vector<StateSegment>& path);
 

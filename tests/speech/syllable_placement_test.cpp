@@ -4,6 +4,7 @@
 // a vowel) at the level's valley between the two vowels.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -12,9 +13,13 @@
 
 #include "common/chain_state.hpp"
 #include "speech/hsmm.hpp"
+#include "speech/phone_chain.hpp"
 #include "speech/syllable_placement.hpp"
+#include "talkface/timeline.hpp"
 
 using namespace talkface::detail;
+using talkface::Syllable;
+using talkface::Timeline;
 
 namespace {
 
@@ -132,6 +137,36 @@ MadeJoin sibilant_join(std::size_t unheard) {
     return join;
 }
 
+// A syllable alone after a pause (`pinyin`, an initial and a), searched from frame 100 of a
+// 200-frame track whose level is `level_db(frame)`, on a path that holds the edge silence for
+// frames 0-10 of the search, the initial for 10 to `vowel`, a from `vowel` to 50 and the edge
+// silence to 60: where place_syllables starts it, in frames of the search.
+std::size_t placed_start(const char* pinyin, PhoneClass initial, std::size_t vowel,
+                         const std::function<float(std::size_t)>& level_db) {
+    Timeline transcript;
+    transcript.sentences.push_back({});
+    Syllable syllable;
+    syllable.pinyin = pinyin;
+    transcript.syllables.push_back(syllable);
+    SentenceChain chain;
+    chain.end_sentence = 1;
+    chain.searched = {100, 160};
+    chain.syllables = {&transcript.syllables[0]};
+    chain.syllable_indices = {0};
+    chain.states = build_phone_chain(chain.syllables, 60, 40);
+    REQUIRE(chain.states.size() == 4);
+    REQUIRE(chain.states[1].phone_class == initial);
+    const std::vector<StateSegment> path = {{0, 0, 10}, {1, 10, vowel}, {2, vowel, 50}, {3, 50, 60}};
+    EmissionScores scores;
+    scores.frame_count = 60;
+    scores.values.assign(60 * kPhoneClassCount, -1.0f);
+    const FeatureTrack track = level_track(200, level_db);
+    Timeline result = transcript;
+    std::vector<SyllableEvidence> evidence(1);
+    place_syllables(chain, 0, path, {}, scores, track, result, evidence);
+    return static_cast<std::size_t>(std::lround(result.syllables[0].start_s / kFrameStepS)) -
+           chain.searched.first_frame;
+}
 }  // namespace
 
 TEST_SUITE("speech") {
@@ -286,5 +321,34 @@ TEST_SUITE("speech") {
         CHECK(pause_high_band_reach(drums.track, drums.chain, drums.path) ==
               std::numeric_limits<float>::infinity());
         CHECK(drums.placed()[1].start_s / kFrameStepS == doctest::Approx(35.0));
+    }
+
+    TEST_CASE(
+        "a sentence's first initial held over a room's tail before it starts where its own sound rises") {
+        // The sentence before rings on into the pause, falling from -20 dB by 1.5 dB a frame
+        // (frames 10-23 of the search); m rises out of it at frame 24 (-15 dB), a follows at 26.
+        // The path gave m the tail too: 16 frames, past its prior's 6 times exp(2 x 0.45).
+        const auto room = [](std::size_t t) {
+            if (t < 110) return -50.0f;
+            if (t < 124) return -20.0f - 1.5f * static_cast<float>(t - 110);
+            return t < 126 ? -15.0f : 0.0f;
+        };
+        CHECK(placed_start("ma1", kNasal, 26, room) == 23);
+        // A nasal held that long from its own onset (the level rising, never below its first
+        // frame) starts where the path put it.
+        const auto held = [](std::size_t t) {
+            return t < 110 ? -50.0f : t < 126 ? -15.0f + 0.2f * static_cast<float>(t - 110) : 0.0f;
+        };
+        CHECK(placed_start("ma1", kNasal, 26, held) == 10);
+        // An m of 12 frames is one the prior allows: the path's start stands, whatever lies under it.
+        CHECK(placed_start("ma1", kNasal, 22, room) == 10);
+        // An affricate after a pause opens with its burst, its frication weaker at first: the dip
+        // after the burst is its own, and 扎 starts at the burst however long the path holds it.
+        const auto burst = [](std::size_t t) {
+            if (t < 110) return -50.0f;
+            if (t < 112) return -10.0f;
+            return t < 126 ? -30.0f + static_cast<float>(t - 112) : 0.0f;
+        };
+        CHECK(placed_start("zha1", kSibilant, 26, burst) == 10);
     }
 }
