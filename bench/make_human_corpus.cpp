@@ -38,6 +38,15 @@ constexpr const char* kSpeakerFile = "3.ogg";
 // a sentence at a careful pace a syllable takes about 0.25 s (4 a second): tempo 1.0 is that pace,
 // and 1.5 gives the 0.15-0.17 s syllables of fast speech.
 constexpr double kCitationToCareful = 1.6;
+// No syllable inside a phrase is heard for less than this, from its start to the next one's: the
+// next does not start, nor cut its tail, earlier. A light (neutral-tone) syllable is said in about
+// half a full one's time, its shortness its chief mark (bench/README.md Session 22 has the
+// sources), and an initial and a vowel each take a gesture of their own. The speaker's substituted
+// light syllables (nai4 for nai5, quickened 1.7 times, their tails cut) and the next voiced
+// initials' cross-fades had left some at 20-45 ms (老奶奶's second 奶 at 25 ms). 60 ms lies well
+// under half a full syllable of the fastest speech here (`r-fast` 169 ms, `v-fast` 149 ms at the
+// median), so that only those move.
+constexpr double kMinSyllableS = 0.06;
 const char* const kDefaultVoiceDir = "/usr/share/gcin-voice/ogg";
 
 struct Condition {
@@ -488,6 +497,7 @@ Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, 
     double last_gain = 0.0;
     std::size_t last_at = 0;
     std::size_t last_vowel = 0;  // where its vowel begins, counted from last_at
+    std::size_t last_start = 0;  // its start in the truth
     const auto to_samples = [](double seconds) { return static_cast<std::size_t>(std::lround(seconds * kRateHz)); };
     const auto seconds = [](std::size_t at) { return static_cast<double>(at) / kRateHz; };
     for (std::size_t k = 0; k < transcript.sentences.size(); ++k) {
@@ -541,7 +551,10 @@ Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, 
             const bool is_voiced_join = !after_pause && is_voiced_onset(reading.initial);
             if (is_running && !after_pause) {
                 // The last syllable's decay is spoken over: it ends (a 10 ms fade) where this one begins.
-                const std::size_t heard = last_at + static_cast<std::size_t>(running.tail_keep[i] * static_cast<double>(last_sound.size()));
+                const std::size_t heard =
+                    std::max(last_at + static_cast<std::size_t>(running.tail_keep[i] *
+                                                                static_cast<double>(last_sound.size())),
+                             std::min(end, last_start + to_samples(kMinSyllableS)));
                 if (heard < end) {
                     const std::size_t fade = std::min<std::size_t>(kRateHz / 100, heard - last_at);
                     for (std::size_t n = heard - fade; n < end; ++n) {
@@ -560,7 +573,8 @@ Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, 
             std::size_t at = end;
             std::size_t start = end;
             if (!after_pause && has_closure(reading.initial)) {
-                at = end + to_samples(is_running ? running.closure_s[i] : delivery.closure_s[i]);
+                start = std::max(end, last_start + to_samples(kMinSyllableS));
+                at = start + to_samples(is_running ? running.closure_s[i] : delivery.closure_s[i]);
             } else if (!after_pause) {
                 // A voiced initial (m n l r, or none: a vowel, y-, w-) after a vowel is voiced right
                 // through: the two cross-fade over the whole overlap, with no dip and no attack.
@@ -572,6 +586,7 @@ Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, 
                 const std::size_t vowel_middle = std::min(end, last_at + (last_vowel + end - last_at) / 2);
                 at = join >= 0 ? end + to_samples(join)
                                : std::max(end - std::min(to_samples(-join), sound.size() / 4), vowel_middle);
+                at = std::max(at, std::min(end, last_start + to_samples(kMinSyllableS)));
                 start = at;
             }
             syllable.start_s = seconds(start);
@@ -590,6 +605,7 @@ Recording speak(const talkface::Timeline& transcript, const Delivery& delivery, 
             last_sound = std::move(sound);
             last_gain = gain;
             last_at = at;
+            last_start = start;
             syllable.end_s = seconds(end);
             // A syllable ends where the next starts, or at its last sound before a pause.
             if (!is_first && !after_pause) recording.truth.syllables[i - 1].end_s = syllable.start_s;
