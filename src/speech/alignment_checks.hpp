@@ -171,7 +171,8 @@ void check_own_fit(const std::vector<SentenceMetrics>& metrics, const std::vecto
 double syllable_length_spread(const std::vector<AlignedStretch>& stretches);
 
 // Each sentence's syllable_length_spread against what one voice's syllables show: a wrong text
-// forced onto the speech squeezes some syllables and stretches others. NaN: a sentence not checked.
+// forced onto the speech squeezes some syllables and stretches others. NaN: a sentence not checked;
+// nor is a sentence of one or two syllables, whose lengths hold no rhythm to judge.
 // \throws talkface::AlignmentError naming the first sentence whose syllables vary too much.
 void check_syllable_lengths(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                             const Timeline& transcript);

@@ -322,6 +322,15 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     while (leading < trailing && is_not_speech(first_speech, pauses[leading].first_frame)) first_speech = pauses[leading++].end_frame;
     while (trailing > leading && is_not_speech(pauses[trailing - 1].end_frame, end_speech)) end_speech = pauses[--trailing].first_frame;
     profile.pauses.assign(pauses.begin() + static_cast<std::ptrdiff_t>(leading), pauses.begin() + static_cast<std::ptrdiff_t>(trailing));
+    // Quiet shorter than a pause between the recording's edges and its speech is the speech's own
+    // weak edge, as such a gap inside it is a closure. Where there is no pause at all, the floors
+    // are the speech's weakest sound (a line cut to its sound: 好's h, which then reads as
+    // silence); digital zeros at an edge are a pause of their own, however short.
+    profile.is_cut_to_sound = first_speech < end_speech && profile.pauses.empty() &&
+                              first_speech < min_pause_frames && frames - end_speech < min_pause_frames &&
+                              track.at(0, kEnergyDb) > kDigitalSilenceDb &&
+                              track.at(frames - 1, kEnergyDb) > kDigitalSilenceDb;
+    if (profile.is_cut_to_sound) first_speech = 0, end_speech = frames;
     profile.speech_first_frame = first_speech;
     profile.speech_end_frame = end_speech;
     return profile;

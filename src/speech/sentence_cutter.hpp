@@ -53,6 +53,9 @@ struct LoudnessProfile {
     std::vector<FrameSpan> tones;           // runs of a steady tone as loud as speech (steady_tone.hpp), in order
     std::size_t speech_first_frame = 0;     // first and one past the last speech frame
     std::size_t speech_end_frame = 0;
+    // No pause anywhere, not even at its edges (a line cut to its sound): its speech runs from its
+    // first frame to its last, and its floors are its own weakest sound, not noise.
+    bool is_cut_to_sound = false;
 };
 
 LoudnessProfile measure_loudness(const FeatureTrack& track);

@@ -39,6 +39,23 @@ sox -R -V1 wrong_short_line_padded.wav wrong_short_line.flac
 rm wrong_short_line_raw.wav wrong_short_line_bare.wav wrong_short_line_padded.wav
 printf '好啊。\n' > wrong_short_line.txt
 
+# A line cut to its sound (issues 12 and 13: a game's line as its file holds it, no silence
+# around it): espeak-ng says 好, whose h starts the file; its truth moved with the cut.
+"$make_corpus" --clip bare_line --rate-wpm 200 --pitch 50 "好。"
+python3 - <<'PY'
+import json, subprocess
+truth = json.load(open("bare_line.json"))
+start, end = truth["sentences"][0]["start"], truth["sentences"][0]["end"]
+subprocess.run(["sox", "-R", "-V1", "bare_line.wav", "bare_line.flac", "trim", str(start), "=" + str(end)], check=True)
+truth["duration"] = round(end - start, 5)
+for item in truth["sentences"] + truth["syllables"]:
+    item["start"], item["end"] = round(item["start"] - start, 5), round(item["end"] - start, 5)
+with open("bare_line.json", "w") as out:
+    json.dump(truth, out, ensure_ascii=False, indent=1)
+    out.write("\n")
+PY
+rm bare_line.wav
+
 # A transcript a word off (issue #13, --lenient): espeak-ng says 公园 where the transcript has
 # 学校 (lenient_test.cpp also gives it the transcript without 公园).
 "$make_corpus" --clip lenient_espeak --rate-wpm 190 --pitch 50 "小朋友们在公园里放风筝。"
