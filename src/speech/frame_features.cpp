@@ -63,6 +63,11 @@ constexpr double kMostClippedShare = 0.98;  // where the gain stops growing (37 
 
 // The share of the window's samples that lie in runs of kClipRunSamples or more at kClipLevel.
 double clipped_share(const float* samples) {
+    // Nearly every frame has no sample at the clip: a count the compiler vectorizes tells it in a
+    // tenth of the runs' scan.
+    std::size_t at_clip = 0;
+    for (std::size_t i = 0; i < kWindowSamples; ++i) at_clip += std::fabs(samples[i]) >= kClipLevel ? 1 : 0;
+    if (at_clip < kClipRunSamples) return 0.0;
     std::size_t clipped = 0, run = 0;
     for (std::size_t i = 0; i <= kWindowSamples; ++i) {
         if (i < kWindowSamples && std::fabs(samples[i]) >= kClipLevel) {

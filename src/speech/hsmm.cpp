@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -48,12 +49,26 @@ struct LogNormalDuration {
         : log_median(std::log(median_frames)), log_sigma(sigma), log_of_log_sigma(std::log(sigma)) {}
 
     // log of the density at d frames, up to a constant shared by every path.
-    double at(double frames) const {
-        const double log_frames = std::log(frames);
+    double at(double frames) const { return at_log(std::log(frames)); }
+    // The same, given log(d).
+    double at_log(double log_frames) const {
         const double z = (log_frames - log_median) / log_sigma;
         return -log_frames - 0.5 * z * z - log_of_log_sigma;
     }
 };
+
+// log(d) of a whole number of frames, from a table made once for the durations the priors reach
+// (a vowel's longest is 3.5 times its median, a comma's pause 200 frames): every search took one
+// logarithm per duration of every state, a twentieth of its work.
+constexpr std::size_t kTabledFrames = 2048;
+double log_of_frames(std::size_t frames) {
+    static const std::vector<double> logs = [] {
+        std::vector<double> table(kTabledFrames, -std::numeric_limits<double>::infinity());
+        for (std::size_t d = 1; d < kTabledFrames; ++d) table[d] = std::log(static_cast<double>(d));
+        return table;
+    }();
+    return frames < kTabledFrames ? logs[frames] : std::log(static_cast<double>(frames));
+}
 
 // Fills `reversed` with the duration scores of `state` for d = longest down to shortest, the
 // order in which the search reads the entries before a frame. Returns the longest duration.
@@ -69,7 +84,8 @@ std::size_t fill_duration_scores(const PhoneState& state, std::size_t frames, st
     const LogNormalDuration prior(state.median_frames, state.log_sigma);
     const double reference = state.is_optional ? 0.0 : prior.at(state.median_frames);
     for (std::size_t d = longest; d >= shortest && d > 0; --d) {
-        const double score = is_flat ? 0.0 : state.duration_weight * (prior.at(static_cast<double>(d)) - reference);
+        const double score =
+            is_flat ? 0.0 : state.duration_weight * (prior.at_log(log_of_frames(d)) - reference);
         reversed.push_back(static_cast<float>(score + state.entry_log_penalty + state.frame_log_penalty * static_cast<double>(d)));
     }
     return longest;
@@ -105,6 +121,19 @@ float max_of_sums(const float* a, const float* b, std::size_t count) {
     using Floats = Eigen::Map<const Eigen::ArrayXf>;
     const auto size = static_cast<Eigen::Index>(count);
     return (Floats(a, size) + Floats(b, size)).maxCoeff();
+}
+
+// max_of_sums for kSumBlockFrames frames side by side: out[k] = max over i < count of
+// a[k + i] + b[i]. The frames' maxima are kept in registers while the durations run, so that each
+// sum is one packet's lane, not a reduction per frame (the search's costliest part, bench/README.md
+// Session 22); every sum is the same float addition as in max_of_sums, and the maximum exact.
+constexpr std::size_t kSumBlockFrames = 16;
+void max_of_sums_block(const float* a, const float* b, std::size_t count, float* out) {
+    using Block = Eigen::Array<float, kSumBlockFrames, 1>;
+    Block best = Block::Constant(kImpossible);
+    for (std::size_t i = 0; i < count; ++i) best = best.max(Eigen::Map<const Block>(a + i) + b[i]);
+    Eigen::Map<Block> result(out);
+    result = best;
 }
 
 // One search of states [first_state, end_state) over frames [first_frame, end_frame), starting in
@@ -159,11 +188,16 @@ public:
                 const float* previous_finish = &finish[(j - 1) * width_];
                 const float* previous_entry = &entry[(j - 1) * width_];
                 const float skip = skip_score(states_[first_state_ + j - 1]);
-                // A skipped state passes on the bonus its predecessor's finish already got at t.
-                for (std::size_t t = 0; t <= frames_; ++t) {
-                    const float arrived = previous_finish[t] + boundary_bonus(emissions_, first_frame_ + t);
-                    entry_row[t] = skip == kImpossible ? arrived : std::max(arrived, previous_entry[t] + skip);
-                }
+                // A skipped state passes on the bonus its predecessor's finish already got at t. In
+                // Eigen's packets (its max is std::max's, lane by lane).
+                using Row = Eigen::Map<Eigen::ArrayXf>;
+                using ConstRow = Eigen::Map<const Eigen::ArrayXf>;
+                const auto size = static_cast<Eigen::Index>(width_);
+                Row entries(entry_row, size);
+                entries = ConstRow(previous_finish, size);
+                if (!emissions_.boundary.empty())
+                    entries += ConstRow(&emissions_.boundary[first_frame_], size);
+                if (skip != kImpossible) entries = entries.max(ConstRow(previous_entry, size) + skip);
             }
             const std::size_t longest = prepare_state(j);
             const std::size_t shortest = longest + 1 - duration_score.size();
@@ -185,16 +219,28 @@ public:
             if (has_tail)
                 for (std::size_t t = std::max(first_finish, longest + 1); t < from; ++t)
                     tail = std::max(tail, entry_minus_prefix[t - longest - 1]) + step;
-            for (std::size_t t = from; t < to; ++t) {
+            std::array<float, kSumBlockFrames> bests{};
+            for (std::size_t t = from; t < to;) {
                 // d runs from min(longest, t) down to shortest: entries t - d, durations reversed.
-                const std::size_t skipped = t >= longest ? 0 : longest - t;
-                float best = max_of_sums(&entry_minus_prefix[t + skipped - longest], &duration_score[skipped],
-                                         duration_score.size() - skipped);
-                if (has_tail && t > longest) {
-                    tail = std::max(tail, entry_minus_prefix[t - longest - 1]) + step;
-                    best = std::max(best, tail + duration_score[0]);
+                std::size_t block = 1;
+                if (t >= longest && t + kSumBlockFrames <= to) {
+                    max_of_sums_block(&entry_minus_prefix[t - longest], duration_score.data(),
+                                      duration_score.size(), bests.data());
+                    block = kSumBlockFrames;
+                } else {
+                    const std::size_t skipped = t >= longest ? 0 : longest - t;
+                    bests[0] = max_of_sums(&entry_minus_prefix[t + skipped - longest],
+                                           &duration_score[skipped], duration_score.size() - skipped);
                 }
-                finish_row[t] = best == kImpossible ? kImpossible : static_cast<float>(class_prefix[t] + best);
+                for (std::size_t k = 0; k < block; ++k, ++t) {
+                    float best = bests[k];
+                    if (has_tail && t > longest) {
+                        tail = std::max(tail, entry_minus_prefix[t - longest - 1]) + step;
+                        best = std::max(best, tail + duration_score[0]);
+                    }
+                    finish_row[t] =
+                        best == kImpossible ? kImpossible : static_cast<float>(class_prefix[t] + best);
+                }
             }
         }
     }
@@ -235,23 +281,29 @@ public:
     }
 
 private:
-    // Fills entry_minus_prefix for state j and the duration table; returns the longest duration.
-    std::size_t prepare_state(std::size_t j) {
+    // Fills entry_minus_prefix for state j over frames [first, end) (all of them by default) and the
+    // duration table; returns the longest duration.
+    std::size_t prepare_state(std::size_t j, std::size_t first = 0, std::size_t end = kAllFrames) {
         const PhoneState& state = states_[first_state_ + j];
         const double* class_prefix = &workspace_.prefix[prefix_row(state.phone_class) * width_];
         const float* entry_row = &workspace_.entry[j * width_];
         auto& entry_minus_prefix = workspace_.entry_minus_prefix;
-        for (std::size_t t = 0; t <= frames_; ++t)
+        for (std::size_t t = first; t < std::min(end, width_); ++t)
             entry_minus_prefix[t] = entry_row[t] == kImpossible ? kImpossible : static_cast<float>(entry_row[t] - class_prefix[t]);
         return fill_duration_scores(state, frames_, workspace_.duration_score);
     }
+    static constexpr std::size_t kAllFrames = std::numeric_limits<std::size_t>::max();
 
     // How many frames state j held on the best path that ends it just before frame t: the
     // duration the way forward chose there, found again.
     std::size_t best_duration(std::size_t j, std::size_t t) {
         const auto& entry_minus_prefix = workspace_.entry_minus_prefix;
         const auto& duration_score = workspace_.duration_score;
-        const std::size_t longest = prepare_state(j);
+        // Only the entries a duration ending at t reaches back to: the way back reads one frame a
+        // state, and the whole row for each cost a twelfth as much as the way forward.
+        const PhoneState& state = states_[first_state_ + j];
+        const std::size_t reach = state.has_tail ? t : std::min(t, std::min(state.max_frames, frames_));
+        const std::size_t longest = prepare_state(j, t - reach, t);
         const std::size_t shortest = longest + 1 - duration_score.size();
         float best = kImpossible;
         std::size_t best_frames = shortest;
