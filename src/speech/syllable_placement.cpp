@@ -226,6 +226,10 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
         std::size_t first = 0, end = 0, start = 0;
         std::optional<std::size_t> final_first;
         bool has_start = false;
+        // Whether the syllable runs on from the one before, no pause between: only then does a
+        // moved start move that one's end (after a pause, or as a chain's first, nothing before it
+        // is this syllable's to move).
+        bool runs_on = false;
         for (std::size_t p = 0; p < path.size(); ++p) {
             const PhoneState& state = chain.states[path[p].state];
             if (state.syllable != local || is_pause(state.role)) continue;
@@ -244,8 +248,9 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
                 first = segment_first;
                 start = first;
                 const PhoneState* before = p > 0 ? &chain.states[path[p - 1].state] : nullptr;
-                const bool is_voiced_join = before && before->syllable + 1 == local && !is_pause(before->role) &&
-                                            state.role != StateRole::closure && is_voiced_class(before->phone_class) &&
+                runs_on = before && before->syllable + 1 == local && !is_pause(before->role);
+                const bool is_voiced_join = runs_on && state.role != StateRole::closure &&
+                                            is_voiced_class(before->phone_class) &&
                                             is_voiced_class(state.phone_class);
                 if (is_voiced_join && before->phone_class != state.phone_class)
                     start = voiced_join_start(path[p - 1], before->phone_class, path[p], state.phone_class, scores);
@@ -265,8 +270,7 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
                 // fricative lasts 150 ms at least, phone_chain.cpp).
                 const char initial =
                     chain.syllables[local]->pinyin.empty() ? '\0' : chain.syllables[local]->pinyin[0];
-                if (before && before->syllable + 1 == local && !is_pause(before->role) &&
-                    state.role == StateRole::initial && state.phone_class == kSibilant &&
+                if (runs_on && state.role == StateRole::initial && state.phone_class == kSibilant &&
                     (initial == 's' || initial == 'x'))
                     start = sibilant_onset(track, chain.searched.first_frame, first, path[p].end_frame,
                                            noise_reach_db);
@@ -295,7 +299,7 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
         syllable.start_s = time_s(start);
         syllable.end_s = time_s(std::max(end, first + 1));
         // A syllable ends where the next starts.
-        if (start != first) {
+        if (start != first && runs_on) {
             Syllable& previous = result.syllables[chain.syllable_indices[local - 1]];
             previous.end_s = start < first ? std::min(previous.end_s, syllable.start_s) : syllable.start_s;
         }

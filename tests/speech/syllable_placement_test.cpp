@@ -351,4 +351,24 @@ TEST_SUITE("speech") {
         };
         CHECK(placed_start("zha1", kSibilant, 26, burst) == 10);
     }
+
+    TEST_CASE("an initial after a comma's pause that starts late leaves the syllable before as it ended") {
+        // 啊，媽: silence (frames 0-9), a (10-24), the comma's pause (25-34), m (35-50) and a
+        // (51-65), silence (66-75). A room's tail falls through m's first frames to frame 48,
+        // where m rises out of it; m's prior (6 frames) is far shorter than the 16 the path gave.
+        MadeJoin comma({"a1", "ma1"}, {{kSilence, StateRole::edge_silence, 0, 10},
+                                       {kVowelA, StateRole::final, 0, 15},
+                                       {kSilence, StateRole::comma_pause, 0, 10},
+                                       {kNasal, StateRole::initial, 1, 16},
+                                       {kVowelA, StateRole::final, 1, 15},
+                                       {kSilence, StateRole::edge_silence, 1, 10}});
+        comma.chain.states[3].median_frames = 6.0;
+        comma.chain.states[3].log_sigma = 0.45;
+        for (std::size_t t = 35; t < 49; ++t)
+            comma.track.values[t * kFeatureCount + kEnergyDb] = -20.0f - 1.5f * static_cast<float>(t - 35);
+        const std::vector<Syllable> placed = comma.placed();
+        CHECK(placed[1].start_s / kFrameStepS == doctest::Approx(48.0));
+        // The pause lies between them: 啊 still ends where its vowel did, not where 媽 now starts.
+        CHECK(placed[0].end_s / kFrameStepS == doctest::Approx(25.0));
+    }
 }
