@@ -404,4 +404,27 @@ std::optional<SpokenForm> read_primed_time(const std::vector<CodePoint>& text, c
     return form;
 }
 
+std::optional<SpokenForm> read_feet_and_inches(const std::vector<CodePoint>& text, std::size_t start,
+                                               const WrittenNumber& feet) {
+    if (feet.has_point || feet.has_separators || feet.whole.size() != 1 || feet.whole == "0" ||
+        !is_one_of(value_at(text, feet.end), U"'\u2032") || !is_digit_at(text, feet.end + 1)) {
+        return std::nullopt;
+    }
+    const auto inches = parse_number(text, feet.end + 1);
+    if (inches.has_point || inches.has_separators || !is_one_of(value_at(text, inches.end), U"\"\u2033")) {
+        return std::nullopt;
+    }
+    const bool speaks_of_height =
+        contains_any(text_before(text, start, true), {"身高", "个子", "個子", "身材", "个头", "個頭"});
+    if (inches.whole.size() != 1 && !((inches.whole == "10" || inches.whole == "11") && speaks_of_height))
+        return std::nullopt;
+    const auto count = [](const std::string& digits) {
+        return digits == "2" ? std::string("两") : cardinal_words(digits, false);
+    };
+    SpokenForm form;
+    form.words = count(feet.whole) + "英尺" + count(inches.whole) + "英寸";
+    form.end = inches.end + 1;
+    return form;
+}
+
 }  // namespace talkface::detail

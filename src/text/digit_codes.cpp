@@ -75,6 +75,28 @@ bool names_room_or_building(const std::vector<CodePoint>& text, std::size_t end)
     return word == "大楼" || word == "大樓" || word == "大厦" || word == "大廈";
 }
 
+bool names_landmark_after_city(const std::vector<CodePoint>& text, std::size_t start,
+                               const WrittenNumber& number) {
+    constexpr std::size_t kFewestDigits = 3;
+    constexpr std::size_t kMostDigits = 4;
+    // A round thousand counts, as after a model's capitals (上海3000 三千).
+    if (number.has_point || number.has_separators || number.whole.size() < kFewestDigits ||
+        number.whole.size() > kMostDigits || ends_with(number.whole, "000")) {
+        return false;
+    }
+    const auto next = value_at(text, number.end);
+    if (takes_liang(next) || is_one_of(next, U"多余餘来來几幾强強以%") || is_ascii_letter(next)) return false;
+    // A city the country's news and its posts name landmarks after; its 市 may be written too.
+    auto before = text_between(text, start >= 4 ? start - 4 : 0, start);
+    if (ends_with(before, "市")) before.erase(before.size() - std::string_view("市").size());
+    return ends_with_any(
+        before, {"北京", "上海", "天津", "重庆", "重慶", "广州", "廣州", "深圳", "杭州", "南京", "武汉",
+                 "武漢", "成都", "西安", "长沙", "長沙", "苏州", "蘇州", "郑州", "鄭州", "青岛", "青島",
+                 "厦门", "廈門", "大连", "大連", "沈阳", "瀋陽", "济南", "濟南", "香港", "澳门", "澳門",
+                 "台北", "臺北", "新北", "台中", "臺中", "台南", "臺南", "高雄", "桃园", "桃園", "新竹",
+                 "东京", "東京", "首尔", "首爾", "纽约", "紐約", "伦敦", "倫敦", "巴黎"});
+}
+
 bool is_service_number(const std::string& digits) {
     for (const std::string_view number : {"110", "112", "114", "119", "120", "122", "999", "12110", "12117", "12121",
                                           "12123", "12306", "12308", "12309", "12315", "12318", "12320", "12328", "12333",

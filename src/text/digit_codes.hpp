@@ -24,6 +24,12 @@ bool names_by_digits(char32_t c);
 // 大樓): the number names it as 305室 does.
 bool names_room_or_building(const std::vector<CodePoint>& text, std::size_t end);
 
+// A landmark or a district named by its number right after its city's name (台北101, 北京798, 台北市101): a
+// number of three or four digits that counts nothing (no measure word, magnitude, 多 余 强 or 以上 after it:
+// 上海101人, 北京300多所, 深圳500强 count), said digit by digit as its name is.
+bool names_landmark_after_city(const std::vector<CodePoint>& text, std::size_t start,
+                               const WrittenNumber& number);
+
 // Service and emergency numbers (110 police, 119 fire, 120 ambulance, 12345 the city's hotline,
 // 10086 a carrier, 95xxx a bank's line; the government's 12xxx lines, 12123 traffic, 12366 tax,
 // 12393 medical insurance, 12395 sea rescue): said digit by digit with 幺 where they are dialled or

@@ -111,15 +111,20 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
         case 0x223D: return is_formula_term(left) && (is_formula_term(right) || right == 0x25B3) ? "相似于" : "";  // ∽
         case 0x22A5: return between_terms ? "垂直于" : "";                 // ⊥
         case 0x2225: case 0x2016: return between_terms ? "平行于" : "";    // ∥, and ‖ written for it
-        // + between two digits (1+1), two letters (A+B) or in a formula (x+1=3); - only in a formula,
-        // since a hyphen joins words and numbers elsewhere (Wi-Fi, B-52).
+        // + between two digits (1+1), two letters (A+B), two words or in a formula (x+1=3); - only in a
+        // formula, since a hyphen joins words and numbers elsewhere (Wi-Fi, B-52).
         case '+': {
             // A letter and a digit too: a sum of capacities (12GB+256GB 十二GB加二百五十六GB), 5G+AI.
             const auto is_alphanumeric = [](char32_t c) { return is_ascii_letter(c) || (c >= '0' && c <= '9'); };
             const bool alphanumeric = is_alphanumeric(left) && is_alphanumeric(right);
             // After a square or a cube, a sum of terms (a²+b²; session 14: said only beside a relation sign).
             const bool after_power = is_one_of(left, U"\u00B2\u00B3");
-            return between_terms && (alphanumeric || after_power || clause_has_relation(text, i)) ? "加" : "";
+            // Between two words, a post's or a menu's "and also" (关注+转发 关注加转发, 汉堡+可乐; session
+            // 22: skipped with a warning).
+            return (between_terms && (alphanumeric || after_power || clause_has_relation(text, i))) ||
+                           (is_han_left && is_han_right)
+                       ? "加"
+                       : "";
         }
         case '-': case 0x2212: return between_terms && clause_has_relation(text, i) ? "减" : "";
         // A * before ST marks a share at risk of delisting (*ST康美), said 星 as market news says it.

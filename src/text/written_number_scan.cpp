@@ -86,6 +86,12 @@ bool starts_with_any(std::string_view text, std::initializer_list<std::string_vi
                        [text](std::string_view word) { return text.substr(0, word.size()) == word; });
 }
 
+bool ends_with_any(std::string_view text, std::initializer_list<std::string_view> words) {
+    return std::any_of(words.begin(), words.end(), [text](std::string_view word) {
+        return text.size() >= word.size() && text.substr(text.size() - word.size()) == word;
+    });
+}
+
 bool is_one_of(char32_t c, std::u32string_view set) {
     return set.find(c) != std::u32string_view::npos;
 }
@@ -97,20 +103,24 @@ std::string text_between(const std::vector<CodePoint>& text, std::size_t first, 
 }
 
 bool takes_liang(char32_t c) {
-    return is_one_of(c, U"个個本位名只隻条條张張件次天年岁歲人种種块塊元倍台臺部辆輛家份杯碗瓶双雙对對层層场場"
-                        U"周週遍斤米千万萬亿億百项項篇首页頁座所间間节節门門架把支枝根片头頭匹颗顆粒趟套声聲句"
-                        U"样樣章口股群批排队隊段堆吨噸升克里码碼毛角点點成分秒小公届屆期美港欧歐英"
-                        U"步下回圈眼拳脚腳刀枪槍盒包袋箱桶罐盘盤幅集册冊封轮輪局男女"
-                        U"勺匙滴串束朵棵株盆锅鍋桌副顶頂艘连連"
-                        // A record's wins, losses and draws (3局2胜 三局两胜, 2胜1负 两胜一负; session 14).
-                        U"胜勝负負平"
-                        // A medal table's golds, silvers and bronzes (奪得2金5銅 兩金五銅; session 14).
-                        U"金银銀铜銅"
-                        // A golfer's strokes, goals, medals, votes, questions, meals, trains, doses and
-                        // nights (2杆优势 两杆, 进了2球, 2枚金牌, 2票, 2道题, 2顿饭, 2列, 打了2针, 住2晚; session 16).
-                        U"杆桿球枚票道顿頓列针針晚夜"
-                        // A recipe's cloves and spoons (2-3瓣蒜 两到三瓣, 2汤匙 两汤匙, 2茶匙; session 17).
-                        U"瓣汤湯茶");
+    return is_one_of(
+        c,
+        U"个個本位名只隻条條张張件次天年岁歲人种種块塊元倍台臺部辆輛家份杯碗瓶双雙对對层層场場"
+        U"周週遍斤米千万萬亿億百项項篇首页頁座所间間节節门門架把支枝根片头頭匹颗顆粒趟套声聲句"
+        U"样樣章口股群批排队隊段堆吨噸升克里码碼毛角点點成分秒小公届屆期美港欧歐英"
+        U"步下回圈眼拳脚腳刀枪槍盒包袋箱桶罐盘盤幅集册冊封轮輪局男女"
+        U"勺匙滴串束朵棵株盆锅鍋桌副顶頂艘连連"
+        // A record's wins, losses and draws (3局2胜 三局两胜, 2胜1负 两胜一负; session 14).
+        U"胜勝负負平"
+        // A medal table's golds, silvers and bronzes (奪得2金5銅 兩金五銅; session 14).
+        U"金银銀铜銅"
+        // A golfer's strokes, goals, medals, votes, questions, meals, trains, doses and
+        // nights (2杆优势 两杆, 进了2球, 2枚金牌, 2票, 2道题, 2顿饭, 2列, 打了2针, 住2晚; session 16).
+        U"杆桿球枚票道顿頓列针針晚夜"
+        // A recipe's cloves and spoons (2-3瓣蒜 两到三瓣, 2汤匙 两汤匙, 2茶匙; session 17).
+        U"瓣汤湯茶"
+        // Taiwan's trillion, a magnitude as 万 and 亿 are (2兆 兩兆; session 23: 二兆).
+        U"兆");
 }
 
 bool ends_with(const std::string& text, std::string_view end) {

@@ -46,9 +46,11 @@ bool takes_liang(char32_t c);
 
 bool ends_with(const std::string& text, std::string_view end);
 
-// Whether any of `words` stands in `text` (the clause names a score, a lamp, a race ...), or starts it.
+// Whether any of `words` stands in `text` (the clause names a score, a lamp, a race ...), starts it or ends
+// it.
 bool contains_any(std::string_view text, std::initializer_list<std::string_view> words);
 bool starts_with_any(std::string_view text, std::initializer_list<std::string_view> words);
+bool ends_with_any(std::string_view text, std::initializer_list<std::string_view> words);
 
 // The text before text[start] back to the last end mark or line break (the sentence so far), and
 // with `clause_only` to the last pause mark too.

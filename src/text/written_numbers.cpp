@@ -195,14 +195,19 @@ bool speaks_of_season(const std::vector<CodePoint>& text, std::size_t start, std
 
 // A game's record of kills, deaths and assists (战绩0-10, KDA 5-2-10), each part said with 杠 between, as
 // players read it out (零杠十; session 16: a range, 零到十). Up to three parts of one or two digits,
-// where 战绩 or KDA stands earlier in the clause.
+// where 战绩 or KDA stands earlier in the clause, or right after one player's pronoun with the record
+// closing its clause (这把我0-8， 零杠八; session 23: a range, 零到八): a range closing a clause has a word
+// to count (3-5天), and a team's 我们2-1 and a match's 决赛他3-1 are scores.
 std::optional<SpokenForm> read_game_record(const std::vector<CodePoint>& text, std::size_t start,
                                            const WrittenNumber& first) {
     constexpr std::size_t kMostParts = 3;
     constexpr std::size_t kMostDigits = 2;
     if (first.has_point || first.has_separators || first.whole.size() > kMostDigits) return std::nullopt;
     const std::string before = text_before(text, start, true);
-    if (!contains_any(before, {"战绩", "戰績", "KDA"})) return std::nullopt;
+    const bool names_record = contains_any(before, {"战绩", "戰績", "KDA"});
+    const bool after_player =
+        start > 0 && is_one_of(text[start - 1].value, U"我你他她") && !contains_any(before, {"赛", "賽"});
+    if (!names_record && !after_player) return std::nullopt;
     SpokenForm form;
     form.words = cardinal_words(first.whole, false);
     auto i = first.end;
@@ -222,6 +227,8 @@ std::optional<SpokenForm> read_game_record(const std::vector<CodePoint>& text, s
         ++parts;
     }
     if (parts < (slashed ? kMostParts : 2) || is_digit_at(text, i) || is_part_mark(i)) return std::nullopt;
+    if (!names_record && !(i >= text.size() || is_one_of(text[i].value, U"，,。.！!？?；;～~…\n ")))
+        return std::nullopt;
     // A season's record of wins and losses (湖人目前战绩30-12，排名西部第2; 本赛季战绩45-37) is said
     // 三十胜十二负, as newsreaders say it (session 17: 三十杠十二): two parts where the sentence speaks
     // of a season or a table (赛季 常规赛 季后赛 排名 联盟 东部 西部 胜率 积分榜).
@@ -299,7 +306,8 @@ struct NumberContext {
     bool is_model = false;      // right after the capitals of a model's name (C919, A380) or a maker (波音737)
     bool is_train = false;      // a train's or a flight's number (G1234次, CA1831航班)
     bool has_currency = false;  // a currency sign before it (¥666)
-    bool names_place = false;   // a room's or a building's name after it (302会议室, 101大楼)
+    bool names_place =
+        false;  // a room's or a building's name after it (302会议室, 101大楼), a city's before it (台北101)
     bool names_day = false;     // a day named by its date's digits (618大促, 今天是520)
     bool names_type = false;    // before 型 or 式, a type's number (737型, 99式)
     bool is_generation = false;  // two digits right before 后 (90后, 00后)
@@ -315,6 +323,7 @@ struct NumberContext {
     bool measures_degrees = false;  // before a 度 of a temperature or an angle (2度左右 两度)
     bool is_frequency = false;   // a station's frequency after FM, AM or 调频 (FM103.9 一零三点九)
     bool is_count_over = false;  // a + after it and no term after that (99+ 九十九加; 666+1 is a sum)
+    bool after_times = false;  // right after a times sign, a count of items (金币×888 乘八百八十八)
 };
 
 struct SaidNumber {
@@ -358,7 +367,8 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
     if (!number.has_separators) {
         const bool is_mobile = whole.size() == 11 && whole.front() == '1';
         // A phone word earlier in the sentence does not make an amount a phone number (这款手机售价5999元).
-        const bool counts = !context.is_train && (context.has_unit || takes_liang(context.next) || context.next == '%');
+        const bool counts = !context.is_train && (context.has_unit || takes_liang(context.next) ||
+                                                  context.next == '%' || context.after_times);
         if ((context.is_phone && whole.size() >= 3 && !counts) || is_mobile) {
             said.words = digit_words(whole, true);
             said.is_dialled = true;
@@ -542,6 +552,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
                               is_one_of(value_at(text, number.end), U"号號");
     // A count after a times sign is none (金币x100: the x is said 乘).
     const bool after_times = start > 0 && said_math_sign(text, start - 1) == "乘";
+    context.after_times = after_times;
     context.is_model = sign_words.empty() && currency == nullptr && !after_times &&
                        (follows_model_name(text, start) || follows_maker_name(text, start) ||
                         follows_glued_name(text, start) ||
@@ -555,7 +566,9 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     context.is_train = context.is_model && !number.has_point && !number.has_separators &&
                        (is_train_number(text, start, number.end) || is_flight_number(text, start, number.end));
     context.has_currency = currency != nullptr;
-    context.names_place = names_room_or_building(text, number.end);
+    context.names_place = names_room_or_building(text, number.end) ||
+                          (sign_words.empty() && currency == nullptr && !context.is_ordinal &&
+                           names_landmark_after_city(text, start, number));
     context.names_day = sign_words.empty() && currency == nullptr && names_a_day(text, start, number);
     context.names_type = is_one_of(value_at(text, number.end), U"型式");
     context.is_generation = number.whole.size() == 2 && !number.has_point && !number.has_separators &&
@@ -653,6 +666,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (auto date = read_numeric_date(text, number)) return date;
         if (auto season = read_season(text, number)) return season;
         if (auto record = read_game_record(text, start, number)) return record;
+        if (auto height = read_feet_and_inches(text, start, number)) return height;
         if (auto time = read_primed_time(text, number)) {
             time->words += per_unit_words(text, time->end);
             return time;
