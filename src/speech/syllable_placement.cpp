@@ -70,6 +70,12 @@ bool opens_with_burst(const PhoneState& initial, const Syllable& syllable) {
 constexpr double kNoiseReachShare = 0.9;
 constexpr std::size_t kMinNoiseFrames = 10;
 constexpr float kSteadyNoiseSpreadDb = 6.0f;
+// A sound is heard above the noise where the high band stays over the noise's reach this many
+// frames running. The noise alone passes its reach one frame in ten: over the 5-20 frames before a
+// sibilant's frication is heard, a single frame over it comes by chance most of the time (the
+// sibilant then started a frame or two after the path, still early), three running seldom.
+// bench/ Session 23 measured 1 to 4 on the person's tuning rows.
+constexpr std::size_t kHeardFrames = 3;
 
 // Whether `phone_class` scores at least as well as `own_class` on every frame of `segment`.
 bool fits_throughout(const StateSegment& segment, PhoneClass phone_class, PhoneClass own_class,
@@ -191,8 +197,11 @@ float pause_high_band_reach(const FeatureTrack& track, const SentenceChain& chai
 
 std::size_t sibilant_onset(const FeatureTrack& track, std::size_t offset, std::size_t first, std::size_t end,
                            float noise_reach_db) {
-    for (std::size_t t = first; t < end && offset + t < track.frame_count; ++t)
-        if (track.at(offset + t, kHighBandDb) > noise_reach_db) return first + (t - first) / 2;
+    std::size_t run = 0;
+    for (std::size_t t = first; t < end + kHeardFrames - 1 && offset + t < track.frame_count; ++t) {
+        run = track.at(offset + t, kHighBandDb) > noise_reach_db ? run + 1 : 0;
+        if (run == kHeardFrames) return first + (t + 1 - kHeardFrames - first) / 2;
+    }
     return first;
 }
 

@@ -80,11 +80,12 @@ float pause_high_band_reach(const FeatureTrack& track, const SentenceChain& chai
 // fricative (a weak fricative's start would go to it: phone_chain.cpp) and gives those frames to
 // the sibilant, which then starts 50-100 ms early where a vowel's tail decays under the noise
 // (bench/ Session 22). Where the high band on the path's first frames stays within
-// `noise_reach_db` (pause_high_band_reach), the frication is first heard at the first frame above
-// it; which of the frames heard as noise before it were the sound before's and which the
-// sibilant's the recording does not tell, so the sibilant starts halfway between, off by at most
-// half that stretch either way. Never earlier than `first`; where no frame before `end` rises
-// above the noise's reach, `first`. Not f or h: their frication is weak and low for the high band,
+// `noise_reach_db` (pause_high_band_reach), the frication is first heard where the high band rises
+// above it and stays there (kHeardFrames running: the noise alone passes its reach on one frame in
+// ten, bench/ Session 23); which of the frames heard as noise before it were the sound before's and
+// which the sibilant's the recording does not tell, so the sibilant starts halfway between, off by
+// at most half that stretch either way. Never earlier than `first`; where no such run starts before
+// `end`, `first`. Not f or h: their frication is weak and low for the high band,
 // which in noise they seldom lift above its reach before their vowel (bench/ Session 22: moved late).
 std::size_t sibilant_onset(const FeatureTrack& track, std::size_t offset, std::size_t first, std::size_t end,
                            float noise_reach_db);

@@ -300,6 +300,21 @@ TEST_SUITE("speech") {
         CHECK(sibilant_join(15).placed()[1].start_s / kFrameStepS == doctest::Approx(35.0));
     }
 
+    TEST_CASE("a frame of the noise over its reach is not yet the sibilant's frication") {
+        // The noise passes its reach one frame in ten: at frame 36, and at 40 and 41, two running.
+        // The frication is heard from 43, where the high band stays over the reach: 心 starts halfway
+        // (39), not halfway to frame 36 (35).
+        MadeJoin join = sibilant_join(8);
+        for (const std::size_t t : {36, 40, 41}) join.track.values[t * kFeatureCount + kHighBandDb] = -3.0f;
+        CHECK(join.placed()[1].start_s / kFrameStepS == doctest::Approx(39.0));
+        // A run of frication that starts on the sibilant's last frame still counts, though it runs on
+        // into the vowel.
+        FeatureTrack track = level_track(30, [](std::size_t) { return -20.0f; });
+        for (float& value : track.values) value = -20.0f;
+        for (std::size_t t = 19; t < 30; ++t) track.values[t * kFeatureCount + kHighBandDb] = 5.0f;
+        CHECK(sibilant_onset(track, 0, 10, 20, -4.5f) == 14);
+    }
+
     TEST_CASE("a sibilant's onset is looked for only where the noise's reach is measured") {
         FeatureTrack track = level_track(30, [](std::size_t) { return -20.0f; });
         for (float& value : track.values) value = -20.0f;
