@@ -547,15 +547,12 @@ private:
         const double frames_per_byte = 8.0 * sample_rate_hz_ / static_cast<double>(bit_rate);
         const auto packet_length = static_cast<double>(packet_frames(packet.duration));
         const double frame_bytes = packet_length / frames_per_byte;
+        const double bytes_between = static_cast<double>(packet.pos - next_byte);
         if (mp3_packets_judged_ < kMp3PacketsToJudgeRate) {
             ++mp3_packets_judged_;
             mp3_rate_is_constant_ &= packet.pos == next_byte && std::fabs(packet.size - frame_bytes) <= 1.0;
             follow_toc(packet, packet_length);
-            mp3_frames_before_ += packet_length;
-            return 0;
-        }
-        const double bytes_between = static_cast<double>(packet.pos - next_byte);
-        if (mp3_rate_is_constant_)
+        } else if (mp3_rate_is_constant_)
             mp3_lost_frames_ += (bytes_between + packet.size) * frames_per_byte - packet_length;
         else if (bytes_between > 0.0 || packet.size > kLargestMp3FrameBytes) {
             if (toc_agrees_at(next_byte)) {
@@ -577,11 +574,13 @@ private:
             mp3_recent_bytes_ += packet.size - mp3_recent_bytes_ / kMp3RecentPackets;
             mp3_recent_frames_ += packet_length - mp3_recent_frames_ / kMp3RecentPackets;
         }
-        mp3_frames_before_ += packet_length;
-        if (mp3_lost_frames_ <= kTimestampSlackS * sample_rate_hz_) return 0;
-        const auto lost = static_cast<std::size_t>(std::llround(mp3_lost_frames_));
-        mp3_frames_before_ += static_cast<double>(lost);
-        mp3_lost_frames_ = 0.0;
+        std::size_t lost = 0;
+        if (mp3_lost_frames_ > kTimestampSlackS * sample_rate_hz_) {
+            lost = static_cast<std::size_t>(std::llround(mp3_lost_frames_));
+            mp3_lost_frames_ = 0.0;
+        }
+        // Whole numbers of samples, far below 2^53: the sum is exact.
+        mp3_frames_before_ += packet_length + static_cast<double>(lost);
         return lost;
     }
 
