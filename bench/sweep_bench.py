@@ -371,6 +371,9 @@ def make_cases(out, label, stem):
     # record, then crashed.
     with_wav_sizes(ref, path("overstated.wav"), None, lambda real: real * 2)
     case("WAV data size twice its data (recorder crashed)", path("overstated.wav"))
+    # Session 23: a dictaphone's MP3 inside a WAV.
+    ffmpeg("-i", ref, "-c:a", "libmp3lame", "-b:a", "32k", "-f", "wav", path("mp3_in.wav"))
+    case("MP3 inside a WAV (a dictaphone's)", path("mp3_in.wav"))
     # Video sound tracks and broken files.
     for name, codecs in [("clip.mkv", ["-c:v", "libvpx", "-b:v", "8k", "-c:a", "libopus", "-b:a", "16k"]),
                          ("clip.webm", ["-c:v", "libvpx", "-b:v", "8k", "-c:a", "libopus", "-b:a", "16k"]),

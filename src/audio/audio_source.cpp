@@ -499,6 +499,25 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
         throw ParseError(path, 0, 0, "", "unsupported header: " + std::to_string(info.channels) + " channels at " +
                                              std::to_string(info.samplerate) + " Hz");
     }
+    // MPEG audio inside a WAV (a dictaphone's, a broadcast system's): libsndfile's length is the
+    // same estimate as for a bare MP3's, and it called a whole file truncated 26 ms short of it;
+    // FFmpeg reads it to its real end, as it does a bare MP3, but states no length for it, so a
+    // data chunk cut short is told here.
+    if (const int codec = info.format & SF_FORMAT_SUBMASK; codec == SF_FORMAT_MPEG_LAYER_I ||
+                                                           codec == SF_FORMAT_MPEG_LAYER_II ||
+                                                           codec == SF_FORMAT_MPEG_LAYER_III) {
+        const auto data_bytes = data_bytes_if_truncated(file);
+        const auto held = static_cast<std::size_t>(std::max<sf_count_t>(info.frames, 0));
+        sf_close(file);
+        if (data_bytes && !is_placeholder_size(data_bytes->stated))
+            throw FileError(path,
+                            "truncated: the header states " + std::to_string(data_bytes->stated) +
+                                " bytes of MPEG sound (about " +
+                                seconds_text(frames_promised_by(info, 0, *data_bytes), info.samplerate) +
+                                ") but the file holds " + std::to_string(data_bytes->present) + " (about " +
+                                seconds_text(held, info.samplerate) + ")");
+        return open_ffmpeg_file(path);
+    }
     // First: a damaged page can also hide the stream's last page from libsndfile's length.
     if ((info.format & SF_FORMAT_TYPEMASK) == SF_FORMAT_OGG) {
         if (const auto damage = find_damaged_ogg_page(path)) {

@@ -53,6 +53,8 @@ const Container kContainers[] = {
     {"clip.mkv", "-c:v libvpx -b:v 8k -c:a libopus -b:a 16k -shortest", true},
     {"clip.webm", "-c:v libvpx -b:v 8k -c:a libopus -b:a 16k -shortest", true},
     {"voice.mka", "-c:a libopus -b:a 16k", true},
+    // A dictaphone's MP3 inside a WAV, whose data chunk states its bytes.
+    {"mp3_in.wav", "-c:a libmp3lame -b:a 32k", true},
 };
 
 bool is_video(const std::string& file) { return file.rfind("clip", 0) == 0; }

@@ -2,7 +2,8 @@
 // rather than committed (issue #13): MP3 at every common rate from 8 to 48 kHz, with and without
 // the LAME tag that says how long it is; a phone's M4A (AAC in MP4, stereo at 44.1 kHz); Opus at
 // 8 kHz; and phone calls: the telephone band at 8 kHz, as 16-bit WAV, through GSM 06.10 (in WAV, as
-// voice mail stores it, read by libsndfile; in QuickTime, read by FFmpeg) and as a low-rate MP3.
+// voice mail stores it, read by libsndfile; in QuickTime, read by FFmpeg) and as a low-rate MP3;
+// MP3 inside a WAV.
 // Each reads to its real end in step with the WAV, and each phone call aligns as the WAV does.
 #include <doctest/doctest.h>
 
@@ -61,6 +62,9 @@ const std::vector<Made>& recordings() {
         files.push_back({ffmpeg_made("call_mp3.mp3", std::string(kPhoneBand) + " -c:a libmp3lame -b:a 16k"), 8000, true});
         // GSM 06.10 in WAV (Microsoft's packing, as voice mail and sox store it) is libsndfile's to read.
         files.push_back({ffmpeg_made("call_gsm.wav", std::string(kPhoneBand) + " -c:a libgsm_ms"), 8000, true});
+        // MP3 inside a WAV, as dictaphones and broadcast systems write it: libsndfile's length is an
+        // estimate (a whole file was called truncated 26 ms short of it), FFmpeg's is the real one.
+        files.push_back({ffmpeg_made("mp3_in.wav", "-c:a libmp3lame -b:a 32k -f wav"), 16000});
         return files;
     }();
     return made;
