@@ -371,9 +371,40 @@ def make_cases(out, label, stem):
     # record, then crashed.
     with_wav_sizes(ref, path("overstated.wav"), None, lambda real: real * 2)
     case("WAV data size twice its data (recorder crashed)", path("overstated.wav"))
-    # Session 23: a dictaphone's MP3 inside a WAV.
+    # Session 23: what a browser, a camcorder, a TV recorder and a dictaphone write. A browser's
+    # MediaRecorder: Chrome's Opus at 48 kHz in a live WebM (no duration, no index, sizes unknown),
+    # Safari's AAC in a fragmented MP4. A video's 48 kHz stereo sound after 30 s of silence (a
+    # talk's recording before the talk). A camcorder's AVCHD .mts (AC-3 in an MPEG transport
+    # stream), a TV recording's .ts and an old camera's or a DVD's .mpg (MP2), with a picture; a
+    # dictaphone's MP3 inside a WAV.
+    ffmpeg("-i", ref, "-ac", "1", "-ar", "48000", "-c:a", "libopus", "-b:a", "32k", "-f", "webm", "-live", "1",
+           path("mediarecorder.webm"))
+    case("browser MediaRecorder: Opus in a live WebM", path("mediarecorder.webm"))
+    ffmpeg("-i", ref, "-ac", "1", "-ar", "48000", "-c:a", "aac", "-b:a", "64k", "-movflags",
+           "frag_keyframe+empty_moov+default_base_moof", path("fragmented.mp4"))
+    case("browser MediaRecorder: AAC in a fragmented MP4", path("fragmented.mp4"))
+    sox(ref, path("padded30.wav"), "pad", "30", "0")
+    lead_picture = ["-f", "lavfi", "-i", f"color=c=gray:s=16x16:r=2:d={30 + length:.3f}"]
+    ffmpeg(*lead_picture, "-i", path("padded30.wav"), "-c:v", "libx264", "-crf", "40", "-c:a", "aac", "-ar", "48000",
+           "-ac", "2", "-b:a", "96k", "-shortest", path("lead30.mp4"))
+    case("video, AAC 48 kHz stereo after 30 s of silence", path("lead30.mp4"), 30.0)
+    for name, codecs in [("camcorder.mts", ["-c:v", "libx264", "-crf", "40", "-c:a", "ac3", "-ac", "2", "-b:a", "128k", "-f", "mpegts"]),
+                         ("tv.ts", ["-c:v", "mpeg2video", "-r", "25", "-c:a", "mp2", "-b:a", "128k", "-f", "mpegts"]),
+                         ("camera.mpg", ["-c:v", "mpeg1video", "-r", "25", "-c:a", "mp2", "-b:a", "128k", "-f", "mpeg"])]:
+        ffmpeg(*picture, "-i", ref, "-ar", "48000", *codecs, "-shortest", path(name))
+        case(name, path(name))
     ffmpeg("-i", ref, "-c:a", "libmp3lame", "-b:a", "32k", "-f", "wav", path("mp3_in.wav"))
     case("MP3 inside a WAV (a dictaphone's)", path("mp3_in.wav"))
+    # Cut mid-frame a second after the speech (a download or a copy broken off): refused, naming
+    # where the sound ends and how long the header said it was.
+    sox(ref, path("tail.wav"), "pad", "0", "1")
+    for name, encode in [("tail.mp3", ["-c:a", "libmp3lame", "-b:a", "32k"]), ("tail.flac", []),
+                         ("tail.opus", ["-c:a", "libopus", "-b:a", "16k"])]:
+        ffmpeg("-i", path("tail.wav"), *encode, path(name))
+    for name in ["tail.wav", "tail.mp3", "tail.flac", "tail.opus"]:
+        data = open(path(name), "rb").read()
+        open(path("cut_" + name), "wb").write(data[:int(len(data) * (last_end + 0.5) / (length + 1)) + 7])
+        case(f"{name.replace('tail.', '')} cut mid-frame after the speech", path("cut_" + name))
     # Video sound tracks and broken files.
     for name, codecs in [("clip.mkv", ["-c:v", "libvpx", "-b:v", "8k", "-c:a", "libopus", "-b:a", "16k"]),
                          ("clip.webm", ["-c:v", "libvpx", "-b:v", "8k", "-c:a", "libopus", "-b:a", "16k"]),

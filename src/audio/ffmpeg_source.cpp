@@ -43,10 +43,21 @@ constexpr std::size_t kUntaggedMp3DelayFrames = 576 + 529;
 // every syllable came 64 ms late at 16 kHz.
 constexpr std::size_t kAacFrameOverlapFrames = 1024;
 
+// The same for MPEG Layer II (a TV recording's, a DVD's or an old camera's MP2) and AC-3 (a
+// camcorder's AVCHD, a film's track), whose transport streams, program streams and bare files
+// state no delay at all: MP2's analysis and synthesis filter banks delay it by 481 samples
+// (FFmpeg's encoder and twolame, sox's, alike: 10 ms at 48 kHz), AC-3's by its block overlap,
+// 256 (FFmpeg's three encoders alike).
+constexpr std::size_t kMp2FilterBankDelayFrames = 481;
+constexpr std::size_t kAc3BlockOverlapFrames = 256;
+
 // Demuxers for recordings people have: MP3, raw AAC, MP4/M4A/MOV (one demuxer), Matroska/WebM,
-// Ogg (Opus), FLAC, WAV and a few more. Whitelisted because FFmpeg also has demuxers (playlists,
-// concat lists, image sequences) that open other files named inside the input.
-constexpr const char* kFormats = "mp3,aac,mov,matroska,webm,ogg,flac,wav,w64,aiff,caf,avi,asf,amr,au";
+// Ogg (Opus), FLAC, WAV, MPEG transport and program streams (a camcorder's AVCHD .mts and .m2ts, a
+// TV recording's .ts, a DVD's .vob and an old camera's .mpg, with MP2 or AC-3 sound), raw AC-3 and
+// a few more. Whitelisted because FFmpeg also has demuxers (playlists, concat lists, image
+// sequences) that open other files named inside the input.
+constexpr const char* kFormats =
+    "mp3,aac,mov,matroska,webm,ogg,flac,wav,w64,aiff,caf,avi,asf,amr,au,mpegts,mpeg,ac3,eac3";
 
 // How far short of its stated length a sound track may end and still be whole: the larger of
 // these (encoder padding and priming are tens of milliseconds; a file cut off loses far more).
@@ -262,9 +273,11 @@ public:
 
 private:
     ParseError not_audio(const std::string& reason) const {
-        return ParseError(path_, 0, 0, "",
-                          "not audio talkface can read (WAV, FLAC, Ogg, MP3, AAC/M4A, Opus, AMR, or the sound track of an "
-                          "MP4, MOV, MKV or WebM video): " + reason);
+        return ParseError(
+            path_, 0, 0, "",
+            "not audio talkface can read (WAV, FLAC, Ogg, MP3, AAC/M4A, Opus, AMR, or the sound track of an "
+            "MP4, MOV, MKV, WebM, MPEG-TS or MPEG video): " +
+                reason);
     }
 
     // What is wrong with an MP4-family file (MP4, M4A, MOV, 3GP) whose index (the moov box, at its
@@ -453,7 +466,7 @@ private:
                 av_packet_unref(packet_.get());
                 continue;
             }
-            if (!first_packet_sent_) cut_unstated_aac_delay(*packet_);
+            if (!first_packet_sent_) cut_unstated_delay(*packet_);
             first_packet_sent_ = true;
             const std::size_t lost_frames = mp3_bytes_lost(*packet_);
             const int sent = avcodec_send_packet(codec_.get(), packet_.get());
@@ -475,16 +488,31 @@ private:
         }
     }
 
-    // The sound track's first packet: an AAC-LC stream in a container that cannot state the
-    // encoder's delay (raw AAC, Matroska, AVI) starts with the delay, which is cut
-    // (kAacFrameOverlapFrames), unless FFmpeg marks samples to skip on it.
-    void cut_unstated_aac_delay(const AVPacket& packet) {
-        const AVCodecParameters* parameters = stream_->codecpar;
-        if (parameters->codec_id != AV_CODEC_ID_AAC || parameters->profile != FF_PROFILE_AAC_LOW) return;
-        const std::string_view container = format_->iformat->name;
-        if (container != "aac" && container != "avi" && container.rfind("matroska", 0) != 0) return;
+    // The sound track's first packet: a stream in a container that cannot state the encoder's
+    // delay starts with the delay, which is cut (unstated_delay_frames), unless FFmpeg marks
+    // samples to skip on it.
+    void cut_unstated_delay(const AVPacket& packet) {
         if (av_packet_get_side_data(&packet, AV_PKT_DATA_SKIP_SAMPLES, nullptr) != nullptr) return;
-        frames_to_skip_ = kAacFrameOverlapFrames;
+        if (const std::size_t delay = unstated_delay_frames(); delay > 0) frames_to_skip_ = delay;
+    }
+
+    // Every container but the MP4 family's states no delay (raw AAC, Matroska, AVI, MPEG
+    // transport and program streams, bare MP2 and AC-3); an MP4's edit list states it (or, where
+    // the sound starts after the picture, times it before the sound's start).
+    std::size_t unstated_delay_frames() const {
+        if (std::string_view(format_->iformat->name).rfind("mov", 0) == 0) return 0;
+        const AVCodecParameters* parameters = stream_->codecpar;
+        switch (parameters->codec_id) {
+            case AV_CODEC_ID_AAC:
+                return parameters->profile == FF_PROFILE_AAC_LOW ? kAacFrameOverlapFrames : 0;
+            case AV_CODEC_ID_MP2:
+                return kMp2FilterBankDelayFrames;
+            case AV_CODEC_ID_AC3:
+            case AV_CODEC_ID_EAC3:
+                return kAc3BlockOverlapFrames;
+            default:
+                return 0;
+        }
     }
 
     ParseError decode_error(int code) const {

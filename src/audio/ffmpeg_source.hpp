@@ -1,7 +1,7 @@
 // Audio files libsndfile does not read, or reads wrongly, through FFmpeg's libraries: MP3 (whose
-// length libsndfile only estimates, bare or inside a WAV), AAC/M4A, Opus, and the sound track of a
-// video file (MP4, MOV, MKV, WebM). Decoded one packet at a time; only src/audio/ sees FFmpeg's
-// types (issue #13).
+// length libsndfile only estimates, bare or inside a WAV), AAC/M4A, Opus, AC-3, and the sound track
+// of a video file (MP4, MOV, MKV, WebM, MPEG-TS, MPEG). Decoded one packet at a time; only
+// src/audio/ sees FFmpeg's types (issue #13).
 #ifndef TALKFACE_AUDIO_FFMPEG_SOURCE_HPP
 #define TALKFACE_AUDIO_FFMPEG_SOURCE_HPP
 

@@ -9,7 +9,8 @@ namespace talkface_cli {
 
 // What each command that reads a speech says of its AUDIO argument: every format it reads.
 inline constexpr const char* kSpeechFormatsHelp =
-    "Speech: WAV, FLAC, Ogg, MP3, M4A, Opus, AMR (a phone's voice memo) or a video's sound track (MP4, MOV, MKV, WebM)";
+    "Speech: WAV, FLAC, Ogg, MP3, M4A, Opus, AMR (a phone's voice memo) or a video's sound track (MP4, MOV, "
+    "MKV, WebM, MPEG-TS, MPEG)";
 
 // What `align` and `syllables` say of their TRANSCRIPT argument: every form of transcript they read.
 inline constexpr const char* kTranscriptHelp =

@@ -55,6 +55,11 @@ const Container kContainers[] = {
     {"voice.mka", "-c:a libopus -b:a 16k", true},
     // A dictaphone's MP3 inside a WAV, whose data chunk states its bytes.
     {"mp3_in.wav", "-c:a libmp3lame -b:a 32k", true},
+    // A camcorder's AC-3 and a TV recording's MP2 in MPEG transport streams, an old camera's
+    // video with MP2 in a program stream: none states its length.
+    {"camcorder.mts", "-ar 48000 -c:a ac3 -b:a 96k", false},
+    {"tv.ts", "-ar 48000 -c:a mp2 -b:a 128k", false},
+    {"clip_camera.mpg", "-r 25 -c:v mpeg1video -ar 48000 -c:a mp2 -b:a 128k -shortest", false},
 };
 
 bool is_video(const std::string& file) { return file.rfind("clip", 0) == 0; }

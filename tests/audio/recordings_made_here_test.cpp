@@ -3,7 +3,7 @@
 // the LAME tag that says how long it is; a phone's M4A (AAC in MP4, stereo at 44.1 kHz); Opus at
 // 8 kHz; and phone calls: the telephone band at 8 kHz, as 16-bit WAV, through GSM 06.10 (in WAV, as
 // voice mail stores it, read by libsndfile; in QuickTime, read by FFmpeg) and as a low-rate MP3;
-// MP3 inside a WAV.
+// MP3 inside a WAV; AC-3 and MP2 in MPEG transport and program streams, and a bare AC-3 track.
 // Each reads to its real end in step with the WAV, and each phone call aligns as the WAV does.
 #include <doctest/doctest.h>
 
@@ -65,6 +65,16 @@ const std::vector<Made>& recordings() {
         // MP3 inside a WAV, as dictaphones and broadcast systems write it: libsndfile's length is an
         // estimate (a whole file was called truncated 26 ms short of it), FFmpeg's is the real one.
         files.push_back({ffmpeg_made("mp3_in.wav", "-c:a libmp3lame -b:a 32k -f wav"), 16000});
+        // A camcorder's AVCHD file (AC-3 in an MPEG transport stream), a TV recording's MP2 in one,
+        // an old camera's or a DVD's MPEG program stream, and a film's bare AC-3 track: at 48 kHz,
+        // their codecs' frames are 24-32 ms.
+        files.push_back(
+            {ffmpeg_made("camcorder.mts", "-ar 48000 -ac 2 -c:a ac3 -b:a 128k -f mpegts"), 48000});
+        files.push_back({ffmpeg_made("broadcast.ts", "-ar 48000 -c:a mp2 -b:a 128k -f mpegts"), 48000});
+        files.push_back({ffmpeg_made("camera.mpg", "-ar 48000 -c:a mp2 -b:a 128k -f mpeg"), 48000});
+        files.push_back({ffmpeg_made("film.ac3", "-ar 48000 -c:a ac3 -b:a 96k -f ac3"), 48000});
+        // A stream's segment as a download tool saves it: AAC in an MPEG transport stream.
+        files.push_back({ffmpeg_made("stream.ts", "-ar 44100 -c:a aac -b:a 64k -f mpegts"), 44100});
         return files;
     }();
     return made;
