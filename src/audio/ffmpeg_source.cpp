@@ -498,9 +498,13 @@ private:
 
     // Every container but the MP4 family's states no delay (raw AAC, Matroska, AVI, MPEG
     // transport and program streams, bare MP2 and AC-3); an MP4's edit list states it (or, where
-    // the sound starts after the picture, times it before the sound's start).
+    // the sound starts after the picture, times it before the sound's start), and one whose whole
+    // index holds none (a fragmented MP4, a browser's MediaRecorder's as FFmpeg writes it) does not.
     std::size_t unstated_delay_frames() const {
-        if (std::string_view(format_->iformat->name).rfind("mov", 0) == 0) return 0;
+        if (std::string_view(format_->iformat->name).rfind("mov", 0) == 0) {
+            const std::optional<Mp4Index> index = find_mp4_index(path_);
+            if (!index || index->broken_at_byte || index->has_edit_list) return 0;
+        }
         const AVCodecParameters* parameters = stream_->codecpar;
         switch (parameters->codec_id) {
             case AV_CODEC_ID_AAC:

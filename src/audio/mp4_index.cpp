@@ -31,8 +31,10 @@ bool is_box_type(const unsigned char* type) {
 }
 
 // The first byte in [start, end) of `file` where the boxes stop tiling the range exactly, or
-// nullopt if they tile it; boxes that hold boxes are walked into. Reads box headers only.
-std::optional<std::uint64_t> first_broken_box(std::ifstream& file, std::uint64_t start, std::uint64_t end) {
+// nullopt if they tile it; boxes that hold boxes are walked into, and `edit_list` set where an
+// "elst" is among them. Reads box headers only.
+std::optional<std::uint64_t> first_broken_box(std::ifstream& file, std::uint64_t start, std::uint64_t end,
+                                              bool& edit_list) {
     std::uint64_t position = start;
     while (position < end) {
         std::array<unsigned char, 16> header{};
@@ -47,8 +49,12 @@ std::optional<std::uint64_t> first_broken_box(std::ifstream& file, std::uint64_t
             header_size = 16;
         }
         if (size < header_size || size > end - position) return position;
-        if (holds_boxes(std::string(reinterpret_cast<const char*>(header.data() + 4), 4)))
-            if (const auto broken = first_broken_box(file, position + header_size, position + size)) return broken;
+        const std::string type(reinterpret_cast<const char*>(header.data() + 4), 4);
+        edit_list |= type == "elst";
+        if (holds_boxes(type))
+            if (const auto broken =
+                    first_broken_box(file, position + header_size, position + size, edit_list))
+                return broken;
         position += size;
     }
     return std::nullopt;
@@ -107,9 +113,10 @@ std::optional<Mp4Index> find_mp4_index(const std::string& path) {
     // size is what broke); a size too small to hold its own header breaks at its start.
     const std::uint64_t end = std::min(walk.index_start + std::max(walk.index_size, walk.index_header_size), file_size);
     Mp4Index index{walk.index_start, end, std::nullopt};
-    index.broken_at_byte = walk.index_size < walk.index_header_size
-                               ? std::optional<std::uint64_t>(walk.index_start)
-                               : first_broken_box(file, walk.index_start + walk.index_header_size, end);
+    index.broken_at_byte =
+        walk.index_size < walk.index_header_size
+            ? std::optional<std::uint64_t>(walk.index_start)
+            : first_broken_box(file, walk.index_start + walk.index_header_size, end, index.has_edit_list);
     return index;
 }
 

@@ -23,6 +23,9 @@ struct Mp4Index {
     std::uint64_t start_byte = 0;
     std::uint64_t end_byte = 0;
     std::optional<std::uint64_t> broken_at_byte;
+    // Whether an edit list ("elst") lies among the boxes walked: where none does (a fragmented MP4
+    // as FFmpeg 5.1 writes it), nothing states an encoder's delay.
+    bool has_edit_list = false;
 };
 
 // The index of a file that opens with an "ftyp" box and holds a "moov" box among its top-level

@@ -75,6 +75,12 @@ const std::vector<Made>& recordings() {
         files.push_back({ffmpeg_made("film.ac3", "-ar 48000 -c:a ac3 -b:a 96k -f ac3"), 48000});
         // A stream's segment as a download tool saves it: AAC in an MPEG transport stream.
         files.push_back({ffmpeg_made("stream.ts", "-ar 44100 -c:a aac -b:a 64k -f mpegts"), 44100});
+        // A browser's MediaRecorder's AAC in a fragmented MP4, whose index holds no edit list.
+        files.push_back(
+            {ffmpeg_made("mediarecorder.mp4",
+                         "-ar 48000 -c:a aac -b:a 64k -movflags frag_keyframe+empty_moov+default_base_moof "
+                         "-f mp4"),
+             48000});
         return files;
     }();
     return made;
