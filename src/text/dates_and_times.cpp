@@ -71,6 +71,12 @@ bool names_place_in_recording(const std::vector<CodePoint>& text, std::size_t st
 
 namespace {
 
+// A count of hours, minutes, feet or inches before its word (两点, 两分, 两英寸), with 两 for 2 as
+// before a measure word (两本书).
+std::string count_words(const std::string& digits) {
+    return digits == "2" ? std::string("两") : cardinal_words(digits, false);
+}
+
 // hh:mm:ss,mmm or hh:mm:ss.mmm (SRT, WebVTT) at text[i]; where it ends, or i.
 std::size_t past_cue_time(const std::vector<CodePoint>& text, std::size_t i) {
     auto k = i;
@@ -129,10 +135,8 @@ bool names_a_day(const std::vector<CodePoint>& text, std::size_t start, const Wr
                          // A disaster named by its day (921大地震 九二一, 512地震; session 17).
                          "大地震", "地震", "事件"}))
         return true;
-    const std::string before = text_before(text, start, true);
-    for (const std::string_view word : {"今天是", "明天是", "昨天是", "后天是", "後天是", "今天就是", "又到了", "迎来", "迎來"})
-        if (ends_with(before, word)) return true;
-    return false;
+    return ends_with_any(text_before(text, start, true), {"今天是", "明天是", "昨天是", "后天是", "後天是",
+                                                          "今天就是", "又到了", "迎来", "迎來"});
 }
 
 bool counts_years(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
@@ -196,7 +200,7 @@ std::optional<SpokenForm> read_clock_time(const std::vector<CodePoint>& text, co
     SpokenForm form;
     // A 24-hour clock's leading zero is not said (02:00 两点, as 2:00 is; session 15: it was 二点).
     const auto hour_digits = hour.whole.size() == 2 && hour.whole.front() == '0' ? hour.whole.substr(1) : hour.whole;
-    const auto first = hour_digits == "2" ? std::string("两") : cardinal_words(hour_digits, false);
+    const auto first = count_words(hour_digits);
     const bool has_seconds = value_at(text, i) == ':' && is_digit_at(text, i + 1) && is_digit_at(text, i + 2) &&
                              !is_digit_at(text, i + 3);
     if (duration) {
@@ -334,10 +338,9 @@ std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text,
     auto before = text_before(text, start, true);
     // A word of time before it names what the day is (展会时间为12/3-12/5, 日期：9/18).
     auto named = before;
-    while (!named.empty() && (ends_with(named, "为") || ends_with(named, "為") || ends_with(named, "是") ||
-                              ends_with(named, "：") || ends_with(named, ":") || ends_with(named, " ")))
+    while (!named.empty() && ends_with_any(named, {"为", "為", "是", "：", ":", " "}))
         named.erase(named.size() - (named.back() == ':' || named.back() == ' ' ? 1 : std::string_view("为").size()));
-    for (const std::string_view word : {"时间", "時間", "日期"}) in_time = in_time || ends_with(named, word);
+    in_time = in_time || ends_with_any(named, {"时间", "時間", "日期"});
     // In brackets after a day of the week (本週三（12/4）, 周五(3/8)), as news dates an event.
     if (ends_with(named, "（") || ends_with(named, "(")) {
         named.erase(named.size() - (named.back() == '(' ? 1 : std::string_view("（").size()));
@@ -365,7 +368,7 @@ namespace {
 
 // Whole minutes and seconds of two digits as a race's clock is read: 两分, 零五秒 for 05.
 std::string minutes_and_seconds_words(const WrittenNumber& minutes, const WrittenNumber& seconds) {
-    return (minutes.whole == "2" ? std::string("两") : cardinal_words(minutes.whole, false)) + "分" +
+    return count_words(minutes.whole) + "分" +
            (seconds.whole.front() == '0' ? "零" + digit_words(seconds.whole.substr(1))
                                          : cardinal_words(seconds.whole, false)) +
            "秒";
@@ -418,11 +421,8 @@ std::optional<SpokenForm> read_feet_and_inches(const std::vector<CodePoint>& tex
         contains_any(text_before(text, start, true), {"身高", "个子", "個子", "身材", "个头", "個頭"});
     if (inches.whole.size() != 1 && !((inches.whole == "10" || inches.whole == "11") && speaks_of_height))
         return std::nullopt;
-    const auto count = [](const std::string& digits) {
-        return digits == "2" ? std::string("两") : cardinal_words(digits, false);
-    };
     SpokenForm form;
-    form.words = count(feet.whole) + "英尺" + count(inches.whole) + "英寸";
+    form.words = count_words(feet.whole) + "英尺" + count_words(inches.whole) + "英寸";
     form.end = inches.end + 1;
     return form;
 }

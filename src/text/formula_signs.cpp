@@ -69,8 +69,7 @@ bool rates(const std::vector<CodePoint>& text, std::size_t start, std::size_t en
     return contains_any(before, {"评分", "評分", "打分", "评价", "評價", "评级", "評級", "好评", "好評",
                                  "差评", "差評"}) ||
            starts_with_any(text_between(text, end, end + 2), {"级", "級", "好评", "好評", "差评", "差評"}) ||
-           (closes_clause &&
-            (ends_with(before, "给") || ends_with(before, "給") || ends_with(before, "打了")));
+           (closes_clause && ends_with_any(before, {"给", "給", "打了"}));
 }
 
 }  // namespace

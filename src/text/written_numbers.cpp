@@ -306,8 +306,7 @@ struct NumberContext {
     bool is_model = false;      // right after the capitals of a model's name (C919, A380) or a maker (波音737)
     bool is_train = false;      // a train's or a flight's number (G1234次, CA1831航班)
     bool has_currency = false;  // a currency sign before it (¥666)
-    bool names_place =
-        false;  // a room's or a building's name after it (302会议室, 101大楼), a city's before it (台北101)
+    bool names_place = false;  // a room's or building's name after it (302会议室), a city's before (台北101)
     bool names_day = false;     // a day named by its date's digits (618大促, 今天是520)
     bool names_type = false;    // before 型 or 式, a type's number (737型, 99式)
     bool is_generation = false;  // two digits right before 后 (90后, 00后)
