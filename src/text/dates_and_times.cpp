@@ -7,19 +7,32 @@
 
 namespace talkface::detail {
 
-bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t end, bool dashed) {
-    // A pair listed after a score is one too (比分为25-18、25-20: the clause named the first; session 22:
-    // 二十五到二十).
-    if (start >= 4 && value_at(text, start - 1) == 0x3001 /*、*/) {
-        auto first = start - 1;
-        while (first > 0 && is_digit_at(text, first - 1)) --first;
-        if (first + 1 < start && first >= 2 && is_dash(value_at(text, first - 1)) &&
-            is_digit_at(text, first - 2)) {
-            first -= 1;
-            while (first > 0 && is_digit_at(text, first - 1)) --first;
-            if (is_score(text, first, start - 1, dashed)) return true;
-        }
-    }
+namespace {
+
+// A pair of whole numbers joined by a dash that ends right before text[end] (the 6-4 of 6-4、): where it
+// starts, or nullopt.
+std::optional<std::size_t> dashed_pair_before(const std::vector<CodePoint>& text, std::size_t end) {
+    auto first = end;
+    while (first > 0 && is_digit_at(text, first - 1)) --first;
+    if (first == end || first < 2 || !is_dash(value_at(text, first - 1)) || !is_digit_at(text, first - 2))
+        return std::nullopt;
+    first -= 1;
+    while (first > 0 && is_digit_at(text, first - 1)) --first;
+    return first;
+}
+
+// A pair of whole numbers joined by a dash that starts at text[start] (the 3-6 of 、3-6): where it ends,
+// or nullopt.
+std::optional<std::size_t> dashed_pair_from(const std::vector<CodePoint>& text, std::size_t start) {
+    auto end = start;
+    if (digits_from(text, end).empty() || !is_dash(value_at(text, end))) return std::nullopt;
+    ++end;
+    if (digits_from(text, end).empty()) return std::nullopt;
+    return end;
+}
+
+// Whether the clause names the pair text[start, end) a score by itself, without the pairs listed beside it.
+bool names_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t end, bool dashed) {
     const std::string before = text_before(text, start, true);
     // A tie-break (抢七7-5) and a set or a game named right before the pair (第2盘6-4, 首局11-9, 决胜局,
     // not 结局 or 布局) name a score too (session 17: 七到五).
@@ -43,6 +56,29 @@ bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t
     const std::string clause = text_after(text, end);
     for (const auto word : kResults)
         if (word.size() > std::string_view("胜").size() && clause.find(word) != std::string::npos) return true;
+    return false;
+}
+
+}  // namespace
+
+bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t end, bool dashed) {
+    if (names_score(text, start, end, dashed)) return true;
+    // A pair listed with a score, 、 between them, is one too: after it (比分为25-18、25-20: the clause named
+    // the first; session 22: 二十五到二十), or before it, as a list of sets ends with its result (他以6-4、
+    // 3-6、7-5赢下比赛; session 24: 六到四、三到六). A measure word after a later pair makes it a range.
+    constexpr char32_t kListMark = 0x3001;  // 、
+    for (auto at = start; at > 0 && value_at(text, at - 1) == kListMark;) {
+        const auto first = dashed_pair_before(text, at - 1);
+        if (!first) break;
+        if (names_score(text, *first, at - 1, dashed)) return true;
+        at = *first;
+    }
+    for (auto at = end; value_at(text, at) == kListMark;) {
+        const auto last = dashed_pair_from(text, at + 1);
+        if (!last) break;
+        if (names_score(text, at + 1, *last, dashed && !takes_liang(value_at(text, *last)))) return true;
+        at = *last;
+    }
     return false;
 }
 

@@ -1227,6 +1227,17 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("a pair listed before a score is one too, as a list of sets ends with its result") {
+        // The first two rows failed on main 5842241 (session 23's held-out miss: 六到四、三到六).
+        check_cases({
+            {"他以6-4、3-6、7-5赢下比赛。", "他以六比四三比六七比五赢下比赛"},
+            {"她以2-6、6-3、6-4胜出", "她以二比六六比三六比四胜出"},
+            // The rule's limits: a list of ranges, a range closing a list (a measure word after it).
+            {"第5-8名、第10-12名", "第五到八名第十到十二名"},
+            {"每组3-5、5-7人", "每组三到五五到七人"},
+        });
+    }
+
     TEST_CASE("a fix right after a written form replaces its reading, in characters or pinyin") {
         CHECK(said("2026{两千零二十六}年") == "两千零二十六年");
         CHECK(pinyin_of("OK{ou1 kei4}") == "ou1 kei4");
