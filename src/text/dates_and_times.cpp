@@ -43,6 +43,13 @@ bool names_score(const std::vector<CodePoint>& text, std::size_t start, std::siz
         (is_digit_at(text, start - 2) || is_one_of(text[start - 2].value, U"首次胜勝")) && !takes_liang(value_at(text, end))) {
         return true;
     }
+    // A player's result in a clause naming a match (决赛他3-1， 三比一; session 24: 三到一): one player's
+    // pronoun right before the pair, which closes its clause. Outside a match the pair is a game's record
+    // (这把我0-8， 零杠八).
+    if (start > 0 && is_one_of(text[start - 1].value, U"我你他她") && contains_any(before, {"赛", "賽"}) &&
+        (end >= text.size() || is_one_of(text[end].value, U"，,。.！!？?；;～~…\n "))) {
+        return true;
+    }
     const std::string after = text_between(text, end, end + 2);
     constexpr std::string_view kResults[] = {"战胜", "戰勝", "击败", "擊敗", "获胜", "獲勝", "取胜", "取勝", "领先", "領先",
                                              "落后", "落後", "险胜", "險勝", "大胜", "大勝", "完胜", "完勝", "逆转", "逆轉",
