@@ -30,6 +30,8 @@ const char* const kLetterNames[26] = {
 constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     {"email", "yi1 mei4 er5"},
     {"e-mail", "yi1 mei4 er5"},
+    // Session 24: mail alone and in a brand (Gmail, Hotmail) as in 伊妹儿; the mapping drops a final l, mei.
+    {"mail", "mei4 er5"},
     {"covid", "kou1 wei2 de5"},
     {"sars", "sa4 si1"},
     {"nvidia", "ying1 wei3 da2"},
@@ -191,6 +193,25 @@ std::optional<std::vector<std::string>> english_word_syllables(std::string_view 
     if (!found) return std::nullopt;
     std::vector<std::string> syllables;
     append_words(syllables, *found);
+    return syllables;
+}
+
+std::optional<std::vector<std::string>> letter_and_word_syllables(std::string_view word) {
+    constexpr std::size_t kShortestWord = 3;
+    // Pairs that start an English word with a silent letter (know, gnome, psalm, pneumonia, rhyme), and a
+    // name's Mc (McLaren), said Mac.
+    constexpr std::string_view kOtherOnsets[] = {"kn", "gn", "ps", "pn", "rh", "mc"};
+    const std::string lower = lower_case(word);
+    if (lower.size() < 1 + kShortestWord || is_vowel_at(lower, 0) || is_vowel_at(lower, 1) || lower[1] == 'y')
+        return std::nullopt;
+    const auto pair = std::string_view(lower).substr(0, 2);
+    if (is_usual_onset(pair) ||
+        std::find(std::begin(kOtherOnsets), std::end(kOtherOnsets), pair) != std::end(kOtherOnsets))
+        return std::nullopt;
+    auto rest = english_word_syllables(word.substr(1));
+    if (!rest) return std::nullopt;
+    auto syllables = letter_syllables(word.substr(0, 1));
+    syllables.insert(syllables.end(), rest->begin(), rest->end());
     return syllables;
 }
 

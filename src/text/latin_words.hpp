@@ -22,6 +22,12 @@ std::vector<std::string> letter_syllables(std::string_view letters);
 // the dictionary does not have it.
 std::optional<std::vector<std::string>> english_word_syllables(std::string_view word);
 
+// A word the dictionary lacks, made of a consonant letter and a word it has, where the letter starts
+// no English syllable with the one after it (Gmail's gm, Xbox's xb, vlog's vl): the letter's name and
+// the word's syllables (Gmail ji4 mei4 er5), as Mandarin speakers say a brand so made; nullopt where
+// the word is not so made.
+std::optional<std::vector<std::string>> letter_and_word_syllables(std::string_view word);
+
 // The syllables of a number said in English, as Mandarin speakers say No.1 (number one): 0 to 99
 // as English number words (twelve, forty two), a longer number digit by digit (one oh one).
 // `digits` are ASCII 0-9, at least one.

@@ -791,6 +791,8 @@ private:
                 continue;
             }
             auto found = parts.size() > 1 ? detail::english_word_syllables(part) : std::nullopt;
+            // A letter before a word (Gmail: G mail; session 24: generic speech of one syllable).
+            if (!found) found = detail::letter_and_word_syllables(part);
             if (!found) found = read_compound(part);
             std::vector<Syllable> read;
             if (found) {

@@ -1249,6 +1249,22 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE(
+        "a consonant letter before a word the dictionary has, starting no syllable with it, is the letter "
+        "and the word") {
+        // Each row but the last failed on main 5842241 (one syllable of generic speech each, with a warning;
+        // mail alone mei).
+        check_cases({
+            {"我把文件发到你的Gmail了。", "我把文件发到你的 ji mei er了"},
+            {"新买的Xbox到了", "新买的 ai ke si ba si到了"},
+            {"她在拍vlog", "她在拍 wei lo ge"},
+            // mail alone as in email, 伊妹儿; the rule's limit: a name's Mc the dictionary has.
+            {"请发mail给我", "请发 mei er给我"},
+            {"McLaren车队", "me kai ren车队"},
+        });
+        CHECK(read_transcript("我把文件发到你的Gmail了。", {}, "t.txt").warnings.empty());
+    }
+
     TEST_CASE("a fix right after a written form replaces its reading, in characters or pinyin") {
         CHECK(said("2026{两千零二十六}年") == "两千零二十六年");
         CHECK(pinyin_of("OK{ou1 kei4}") == "ou1 kei4");
