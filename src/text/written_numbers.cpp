@@ -552,7 +552,12 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     // A count after a times sign is none (金币x100: the x is said 乘).
     const bool after_times = start > 0 && said_math_sign(text, start - 1) == "乘";
     context.after_times = after_times;
-    context.is_model = sign_words.empty() && currency == nullptr && !after_times &&
+    // A motorway's stake, K and its kilometres, a + and the metres past them (K1234+500), counts, as
+    // traffic reports read it: K 一千二百三十四加五百 (session 24: a model's digits, 一二三四).
+    const bool is_stake = start > 0 && value_at(text, start - 1) == 'K' &&
+                          (start == 1 || !is_ascii_letter(value_at(text, start - 2))) &&
+                          value_at(text, number.end) == '+' && is_digit_at(text, number.end + 1);
+    context.is_model = sign_words.empty() && currency == nullptr && !after_times && !is_stake &&
                        (follows_model_name(text, start) || follows_maker_name(text, start) ||
                         follows_glued_name(text, start) ||
                         // An isotope's number after a hyphen (碳-14), or of three digits or more glued to

@@ -1265,6 +1265,19 @@ TEST_SUITE("written forms") {
         CHECK(read_transcript("我把文件发到你的Gmail了。", {}, "t.txt").warnings.empty());
     }
 
+    TEST_CASE("a motorway's stake, K and its kilometres, a + and the metres, counts") {
+        // The first two rows failed on main 5842241 (a model's digits: K 一二三四, K 一零八).
+        check_cases({
+            {"G15沈海高速K1234+500处双向封闭", "ji十五沈海高速 kei一千二百三十四加五百处双向封闭"},
+            {"京港澳高速K108+300处", "京港澳高速 kei一百零八加三百处"},
+            // The rule's limits: a model's number without the +, two capitals before it, a stake of two
+            // digits.
+            {"K1234次列车", "kei幺二三四次列车"},
+            {"SK1234+5", "ai si kei一二三四加五"},
+            {"K35+200处", "kei三十五加二百处"},
+        });
+    }
+
     TEST_CASE("a fix right after a written form replaces its reading, in characters or pinyin") {
         CHECK(said("2026{两千零二十六}年") == "两千零二十六年");
         CHECK(pinyin_of("OK{ou1 kei4}") == "ou1 kei4");
