@@ -61,8 +61,8 @@ bool opens_with_burst(const PhoneState& initial, const Syllable& syllable) {
             std::string_view("zcjqZCJQ").find(syllable.pinyin[0]) != std::string_view::npos);
 }
 
-// The noise's own high band (pause_high_band_reach): the level the high band of the path's pauses
-// stays under on nine frames in ten, where they hold at least 10 frames. A frame above it is one
+// The noise's own level in a band (pause_noise_reach): the level the band stays under on nine
+// frames in ten of the path's pauses, where they hold at least 10 frames. A frame above it is one
 // the noise alone reaches one time in ten. A steady noise (hiss, a fan, hum, a phone line's) holds
 // its high band within 6 dB from its tenth to its ninetieth percentile (white and pink noise: 1-2
 // dB); music and drums swing by 8-100 dB, and a frame under their reach says nothing of whether a
@@ -179,15 +179,15 @@ std::size_t apical_vowel_turn(const EmissionScores& scores, std::size_t vowel_fi
     return turn;
 }
 
-float pause_high_band_reach(const FeatureTrack& track, const SentenceChain& chain,
-                            const std::vector<StateSegment>& path) {
+float pause_noise_reach(const FeatureTrack& track, const SentenceChain& chain,
+                        const std::vector<StateSegment>& path, FeatureColumn column) {
     const std::size_t offset = chain.searched.first_frame;
     std::vector<float> levels;
     for (const StateSegment& segment : path)
         if (is_pause(chain.states[segment.state].role))
             for (std::size_t t = segment.first_frame; t < segment.end_frame && offset + t < track.frame_count;
                  ++t)
-                levels.push_back(track.at(offset + t, kHighBandDb));
+                levels.push_back(track.at(offset + t, column));
     if (levels.size() < kMinNoiseFrames) return std::numeric_limits<float>::infinity();
     const float reach = percentile_of(levels, kNoiseReachShare);
     if (reach - percentile_of(std::move(levels), 1.0 - kNoiseReachShare) > kSteadyNoiseSpreadDb)
@@ -202,6 +202,14 @@ std::size_t sibilant_onset(const FeatureTrack& track, std::size_t offset, std::s
         run = track.at(offset + t, kHighBandDb) > noise_reach_db ? run + 1 : 0;
         if (run == kHeardFrames) return first + (t + 1 - kHeardFrames - first) / 2;
     }
+    return first;
+}
+
+std::size_t closure_after_tail(const FeatureTrack& track, std::size_t offset, std::size_t first,
+                               std::size_t burst, float noise_reach_db) {
+    if (!(noise_reach_db > kDigitalSilenceDb)) return first;
+    for (std::size_t t = first; t < burst && offset + t < track.frame_count; ++t)
+        if (track.at(offset + t, kEnergyDb) <= noise_reach_db) return t;
     return first;
 }
 
@@ -228,7 +236,8 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
         return std::min(track.duration_s, frame_time_s(chain.searched.first_frame + frame));
     };
     std::vector<SyllableFrames> frames(chain.syllables.size());
-    const float noise_reach_db = pause_high_band_reach(track, chain, path);
+    const float noise_reach_db = pause_noise_reach(track, chain, path, kHighBandDb);
+    const float noise_level_reach_db = pause_noise_reach(track, chain, path, kEnergyDb);
     for (std::size_t local = 0; local < chain.syllables.size(); ++local) {
         Syllable& syllable = result.syllables[chain.syllable_indices[local]];
         // `first` is the path's start, `start` the syllable's (a voiced join's moved back).
@@ -283,6 +292,11 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
                     (initial == 's' || initial == 'x'))
                     start = sibilant_onset(track, chain.searched.first_frame, first, path[p].end_frame,
                                            noise_reach_db);
+                // A room's closures ring with the vowel before (room_closures.hpp): scored as any
+                // sound, not as silence, and the tail there is the room's, not the noise's.
+                if (runs_on && state.role == StateRole::closure && state.phone_class == kSilence)
+                    start = closure_after_tail(track, chain.searched.first_frame, first, path[p].end_frame,
+                                               noise_level_reach_db);
                 const bool is_after_pause = p == 0 || is_pause(chain.states[path[p - 1].state].role);
                 if (is_after_pause && state.role == StateRole::initial &&
                     !opens_with_burst(state, *chain.syllables[local]))

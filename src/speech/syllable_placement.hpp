@@ -65,13 +65,13 @@ std::size_t apical_vowel_turn(const EmissionScores& scores, std::size_t vowel_fi
 // else `start`: never later.
 std::size_t syllable_valley_start(const FeatureTrack& track, std::size_t offset, std::size_t lowest, std::size_t start);
 
-// The level the noise's own high band (2.5-8 kHz, frication's) reaches: its kNoiseReachShare
-// percentile over the frames of `path`'s pauses (edge silences and pauses between syllables of
-// `chain`); +infinity where they hold fewer than kMinNoiseFrames frames, or where the noise is not
-// steady (its level there spreads over more than kSteadyNoiseSpreadDb between that percentile and
-// the one as far from the bottom: music, drums).
-float pause_high_band_reach(const FeatureTrack& track, const SentenceChain& chain,
-                            const std::vector<StateSegment>& path);
+// The level the noise's own `column` reaches (the high band, 2.5-8 kHz, frication's; the whole
+// band): its kNoiseReachShare percentile over the frames of `path`'s pauses (edge silences and
+// pauses between syllables of `chain`); +infinity where they hold fewer than kMinNoiseFrames frames,
+// or where the noise is not steady (its level there spreads over more than kSteadyNoiseSpreadDb
+// between that percentile and the one as far from the bottom: music, drums).
+float pause_noise_reach(const FeatureTrack& track, const SentenceChain& chain,
+                        const std::vector<StateSegment>& path, FeatureColumn column);
 
 // Where a sibilant (s sh x) right after the sound before starts, the path having started it at
 // `first` (its state's frames [first, end), counted from frame `offset` of `track`). A sibilant is
@@ -80,15 +80,29 @@ float pause_high_band_reach(const FeatureTrack& track, const SentenceChain& chai
 // fricative (a weak fricative's start would go to it: phone_chain.cpp) and gives those frames to
 // the sibilant, which then starts 50-100 ms early where a vowel's tail decays under the noise
 // (bench/ Session 22). Where the high band on the path's first frames stays within
-// `noise_reach_db` (pause_high_band_reach), the frication is first heard where the high band rises
-// above it and stays there (kHeardFrames running: the noise alone passes its reach on one frame in
-// ten, bench/ Session 23); which of the frames heard as noise before it were the sound before's and
-// which the sibilant's the recording does not tell, so the sibilant starts halfway between, off by
-// at most half that stretch either way. Never earlier than `first`; where no such run starts before
-// `end`, `first`. Not f or h: their frication is weak and low for the high band,
-// which in noise they seldom lift above its reach before their vowel (bench/ Session 22: moved late).
+// `noise_reach_db` (pause_noise_reach of the high band), the frication is first heard where the high band
+// rises above it and stays there (kHeardFrames running: the noise alone passes its reach on one frame in ten,
+// bench/ Session 23); which of the frames heard as noise before it were the sound before's and which the
+// sibilant's the recording does not tell, so the sibilant starts halfway between, off by at most half that
+// stretch either way. Never earlier than `first`; where no such run starts before `end`, `first`. Not f or h:
+// their frication is weak and low for the high band, which in noise they seldom lift above its reach before
+// their vowel (bench/ Session 22: moved late).
 std::size_t sibilant_onset(const FeatureTrack& track, std::size_t offset, std::size_t first, std::size_t end,
                            float noise_reach_db);
+
+// Where the closure of a stop or affricate right after the sound before (z zh j c ch q b d g p t k
+// after speech, SPEC) starts, the path having started it at `first` and its burst at `burst`
+// (frames counted from frame `offset` of `track`). The closure's silence class is learned on the
+// recording's pauses, noise and all, and in noise (15-20 dB) the vowel's decaying tail, a few dB
+// over the noise, fits it as well: the path starts the closure where the vowel falls towards the
+// noise, 50-150 ms before its sound ends (bench/ Session 23, the early closures). The vowel is
+// still heard while the whole band's level is over `noise_reach_db` (pause_noise_reach of the whole
+// band, the level the noise alone passes one frame in ten): the closure starts at the first frame at
+// or under it. Where none lies before `burst` (a voiced closure; a noise too unsteady to have a
+// reach), or where the pauses are digital silence (an editor's: the silence class fits the closure
+// from its first silent frame), `first`. Never earlier than `first`.
+std::size_t closure_after_tail(const FeatureTrack& track, std::size_t offset, std::size_t first,
+                               std::size_t burst, float noise_reach_db);
 
 // Where a syllable after a pause (a sentence's first, or a phrase's after a comma) starts, its
 // initial `initial` held by `segment` on the path (frames counted from frame `offset` of `track`).

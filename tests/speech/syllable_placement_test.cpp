@@ -137,6 +137,28 @@ MadeJoin sibilant_join(std::size_t unheard) {
     return join;
 }
 
+// 大哥 (da4 ge1): silence (frames 0-14), 大's a (15-34), 哥's closure (35-46), burst (47-48) and e
+// (49-63), silence (64-78). The whole band is the noise's, -41 and -40 dB by turns (its reach in
+// the pauses: -40), but on the vowels (-10 dB), the burst (-15 dB) and on the closure's first
+// `tail` frames, where 大's tail sounds over the noise (-34 dB).
+MadeJoin closure_join(std::size_t tail) {
+    MadeJoin join({"da4", "ge1"}, {{kSilence, StateRole::edge_silence, 0, 15},
+                                   {kVowelA, StateRole::final, 0, 20},
+                                   {kSilence, StateRole::closure, 1, 12},
+                                   {kBurst, StateRole::initial, 1, 2},
+                                   {kVowelE, StateRole::final, 1, 15},
+                                   {kSilence, StateRole::edge_silence, 1, 15}});
+    for (std::size_t t = 0; t < join.track.frame_count; ++t) {
+        const bool is_vowel = (t >= 15 && t < 35) || (t >= 49 && t < 64);
+        join.track.values[t * kFeatureCount + kEnergyDb] = is_vowel                   ? -10.0f
+                                                           : t >= 47 && t < 49        ? -15.0f
+                                                           : t >= 35 && t < 35 + tail ? -34.0f
+                                                           : t % 2 == 0               ? -41.0f
+                                                                                      : -40.0f;
+    }
+    return join;
+}
+
 // A syllable alone after a pause (`pinyin`, an initial and a), searched from frame 100 of a
 // 200-frame track whose level is `level_db(frame)`, on a path that holds the edge silence for
 // frames 0-10 of the search, the initial for 10 to `vowel`, a from `vowel` to 50 and the edge
@@ -325,17 +347,38 @@ TEST_SUITE("speech") {
         // The path's pauses hold fewer than 10 frames: no reach.
         const MadeJoin join = sibilant_join(8);
         std::vector<StateSegment> no_pauses(join.path.begin() + 1, join.path.end() - 1);
-        CHECK(pause_high_band_reach(join.track, join.chain, no_pauses) ==
+        CHECK(pause_noise_reach(join.track, join.chain, no_pauses, kHighBandDb) ==
               std::numeric_limits<float>::infinity());
-        CHECK(pause_high_band_reach(join.track, join.chain, join.path) == doctest::Approx(-4.5f));
+        CHECK(pause_noise_reach(join.track, join.chain, join.path, kHighBandDb) == doctest::Approx(-4.5f));
         // Drums in the pauses, 15 dB apart: no steady noise to hear the frication against.
         MadeJoin drums = sibilant_join(8);
         for (std::size_t t = 0; t < drums.track.frame_count; ++t)
             if (t < 15 || t >= 65)
                 drums.track.values[t * kFeatureCount + kHighBandDb] = t % 3 == 0 ? -5.0f : -20.0f;
-        CHECK(pause_high_band_reach(drums.track, drums.chain, drums.path) ==
+        CHECK(pause_noise_reach(drums.track, drums.chain, drums.path, kHighBandDb) ==
               std::numeric_limits<float>::infinity());
         CHECK(drums.placed()[1].start_s / kFrameStepS == doctest::Approx(35.0));
+    }
+
+    TEST_CASE("a closure after a vowel in noise starts where the vowel's tail is no longer over the noise") {
+        auto ge_start = [](const MadeJoin& join) { return join.placed()[1].start_s / kFrameStepS; };
+        // The path starts 哥's closure at frame 35; 大's tail sounds over the noise's reach to frame 38.
+        const MadeJoin heard = closure_join(4);
+        CHECK(ge_start(heard) == doctest::Approx(39.0));
+        CHECK(heard.placed()[0].end_s / kFrameStepS == doctest::Approx(39.0));
+        // The tail under the reach from the path's start on, or over it up to the burst (a voiced
+        // closure): the path's start.
+        CHECK(ge_start(closure_join(0)) == doctest::Approx(35.0));
+        CHECK(ge_start(closure_join(12)) == doctest::Approx(35.0));
+        // Pauses of digital silence: no noise to hear the tail over.
+        MadeJoin edited = closure_join(4);
+        for (std::size_t t = 0; t < edited.track.frame_count; ++t)
+            if (t < 15 || t >= 64) edited.track.values[t * kFeatureCount + kEnergyDb] = -100.0f;
+        CHECK(ge_start(edited) == doctest::Approx(35.0));
+        // A room's closure, scored as any sound (room_closures.hpp): its tail is the room's.
+        MadeJoin room = closure_join(4);
+        room.chain.states[2].phone_class = kGenericSpeech;
+        CHECK(ge_start(room) == doctest::Approx(35.0));
     }
 
     TEST_CASE(
