@@ -91,6 +91,9 @@ struct AlignedStretch {
     std::size_t end_frame = 0;
     bool is_pause = false;       // a pause or the silence around the sentence
     std::size_t syllable = 0;    // index into Timeline::syllables (pauses: the one before)
+    // A syllable with no initial (y-, w-, a vowel) whose final follows the voiced end of the
+    // syllable before with no pause: nothing in the sound marks where one ends and the other starts.
+    bool is_joined_on = false;
 };
 
 // Speech the transcript has no syllable for (a long run of speech inside a pause of the path) or
@@ -167,12 +170,14 @@ void check_own_fit(const std::vector<SentenceMetrics>& metrics, const std::vecto
                    const Timeline& transcript);
 
 // How much the lengths of a sentence's syllables (pauses left out) vary: the standard deviation of
-// their logarithms.
+// their logarithms; 0 for fewer than three lengths, one ratio and no rhythm. In a short line a
+// syllable joined on (AlignedStretch::is_joined_on) may also count with the one before as one
+// length, where the path's boundary between them says nothing of the rhythm: the line's spread is
+// the lesser of the two readings.
 double syllable_length_spread(const std::vector<AlignedStretch>& stretches);
 
 // Each sentence's syllable_length_spread against what one voice's syllables show: a wrong text
-// forced onto the speech squeezes some syllables and stretches others. NaN: a sentence not checked;
-// nor is a sentence of one or two syllables, whose lengths hold no rhythm to judge.
+// forced onto the speech squeezes some syllables and stretches others. NaN: a sentence not checked.
 // \throws talkface::AlignmentError naming the first sentence whose syllables vary too much.
 void check_syllable_lengths(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                             const Timeline& transcript);

@@ -340,17 +340,21 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
 
 std::vector<AlignedStretch> stretches_of(const SentenceChain& chain, const std::vector<StateSegment>& path) {
     std::vector<AlignedStretch> stretches;
-    for (const auto& segment : path) {
-        const PhoneState& state = chain.states[segment.state];
+    for (std::size_t p = 0; p < path.size(); ++p) {
+        const PhoneState& state = chain.states[path[p].state];
         const bool is_pause_state = is_pause(state.role);
         const std::size_t syllable = chain.syllable_indices[state.syllable];
-        const std::size_t first = chain.searched.first_frame + segment.first_frame;
-        const std::size_t end = chain.searched.first_frame + segment.end_frame;
+        const std::size_t first = chain.searched.first_frame + path[p].first_frame;
+        const std::size_t end = chain.searched.first_frame + path[p].end_frame;
         if (!stretches.empty() && stretches.back().is_pause == is_pause_state && stretches.back().syllable == syllable) {
             stretches.back().end_frame = end;
-        } else {
-            stretches.push_back({first, end, is_pause_state, syllable});
+            continue;
         }
+        const PhoneState* before = p > 0 ? &chain.states[path[p - 1].state] : nullptr;
+        const bool is_joined_on = !is_pause_state && state.role == StateRole::final && before &&
+                                  before->syllable + 1 == state.syllable && !is_pause(before->role) &&
+                                  is_voiced_class(before->phone_class);
+        stretches.push_back({first, end, is_pause_state, syllable, is_joined_on});
     }
     return stretches;
 }
