@@ -68,6 +68,22 @@ TEST_SUITE("stage directions and speaker labels") {
         CHECK(timeline.warnings.size() == 3);
     }
 
+    TEST_CASE("a form's fields and a notice's headings are said, in a dialogue too, and a seat is a label") {
+        const auto form = read_transcript(
+            "收件地址：杭州市西湖区文三路478号。\n当前版本：v3.10.2。\n错误代码：404，页面未找到。\n"
+            "本轮得分：98分，暂列第1。");
+        CHECK(said(form).find("收件地址") == 0);
+        CHECK(said(form).find("当前版本") != std::string::npos);
+        CHECK(said(form).find("本轮得分") != std::string::npos);
+        CHECK(form.warnings.empty());
+        // A form's people are its fields too.
+        CHECK(said("收件人：张三\n联系电话：幺二三\n寄件人：李四\n") == "收件人张三联系电话幺二三寄件人李四");
+        CHECK(said("通知：明天停课。\n时间：上午八点\n地点：操场") == "通知明天停课时间上午八点地点操场");
+        const auto news = read_transcript("主持人：大家好\n记者：我在现场\n主持人：请讲\n地点：北京\n");
+        CHECK(said(news) == "大家好我在现场请讲地点北京");
+        CHECK(said("1号：我是好人\n2号：我不信\n1号：真的") == "我是好人我不信真的");
+    }
+
     TEST_CASE("one line with a colon, a verb of saying, or a clock time is no dialogue") {
         CHECK(said("客服热线：幺二三。") == "客服热线幺二三");
         CHECK(said("他说：好的。\n她说：不行。") == "他说好的她说不行");
