@@ -43,10 +43,13 @@ bool names_score(const std::vector<CodePoint>& text, std::size_t start, std::siz
         (is_digit_at(text, start - 2) || is_one_of(text[start - 2].value, U"首次胜勝")) && !takes_liang(value_at(text, end))) {
         return true;
     }
-    // A player's result in a clause naming a match (决赛他3-1， 三比一; session 24: 三到一): one player's
-    // pronoun right before the pair, which closes its clause. Outside a match the pair is a game's record
-    // (这把我0-8， 零杠八).
-    if (start > 0 && is_one_of(text[start - 1].value, U"我你他她") && contains_any(before, {"赛", "賽"}) &&
+    // A player's or a side's result in a clause naming a match (决赛他3-1， 决赛他们3-1， 三比一; session 24:
+    // 三到一): a pronoun right before the pair, which closes its clause. Outside a match one player's pair
+    // is a game's record (这把我0-8， 零杠八).
+    const auto pronoun_at = [&](std::size_t k) { return is_one_of(text[k].value, U"我你他她"); };
+    const bool after_pronoun = start > 0 && (pronoun_at(start - 1) || (start > 1 && is_one_of(text[start - 1].value, U"们們") &&
+                                                                        pronoun_at(start - 2)));
+    if (after_pronoun && contains_any(before, {"赛", "賽"}) &&
         (end >= text.size() || is_one_of(text[end].value, U"，,。.！!？?；;～~…\n "))) {
         return true;
     }

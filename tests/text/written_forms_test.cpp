@@ -1249,6 +1249,14 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("a side's pronoun (他们 她們) before such a pair is a player's") {
+        check_cases({
+            {"决赛他们3-1，", "决赛他们三比一"},
+            {"比賽她們2-0。", "比賽她們二比零"},
+            {"决赛他们3-5天后到", "决赛他们三到五天后到"},
+        });
+    }
+
     TEST_CASE(
         "a consonant letter before a word the dictionary has, starting no syllable with it, is the letter "
         "and the word") {
