@@ -116,7 +116,7 @@ TEST_SUITE("audio") {
     TEST_CASE("a WeChat or QQ voice message in SILK v3 is named as such, not as bytes that are no audio") {
         // FFmpeg has no decoder for SILK outside Opus, and said "Invalid data found when processing
         // input". WeChat saves its voice messages with a byte 2 before the mark (often named .amr).
-        for (const std::string mark : {std::string("\x02#!SILK_V3"), std::string("#!SILK_V3")}) {
+        for (const std::string& mark : {std::string("\x02#!SILK_V3"), std::string("#!SILK_V3")}) {
             const std::string message = test::output_path(mark.size() == 10 ? "wechat.amr" : "qq.silk");
             write_bytes(message, mark + std::string("\x14\0", 2) + std::string(20, '\x5a'));
             CHECK_THROWS_WITH_AS(detail::open_audio_file(message),
