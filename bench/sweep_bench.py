@@ -395,6 +395,20 @@ def make_cases(out, label, stem):
         case(name, path(name))
     ffmpeg("-i", ref, "-c:a", "libmp3lame", "-b:a", "32k", "-f", "wav", path("mp3_in.wav"))
     case("MP3 inside a WAV (a dictaphone's)", path("mp3_in.wav"))
+    # Several sound tracks: a screen recorder's (OBS writes the desktop's sound and the microphone's
+    # as two tracks, the first empty where nothing played), the desktop's music first, and three
+    # (music, an empty track, the voice). The music: a held chord under a plucked line, 8 notes in 3 s.
+    silence = ["-f", "lavfi", "-i", f"anullsrc=r=48000:cl=stereo:d={length:.3f}"]
+    music = ["-f", "lavfi", "-i", "aevalsrc=0.06*sin(2*PI*220*t)+0.04*sin(2*PI*277.2*t)+0.04*sin(2*PI*329.6*t)"
+             "+0.2*(0.1+0.9*exp(-6*mod(t\\,0.375)))*sin(2*PI*t*440*pow(2\\,floor(mod(t/0.375\\,5))*2/12))"
+             f":s=48000:d={length:.3f}"]
+    voice = ["-i", ref]
+    for name, inputs in [("tracks_silent_voice.mp4", silence + voice), ("tracks_music_voice.mkv", music + voice),
+                         ("tracks_music_silent_voice.mp4", music + silence + voice)]:
+        maps = ["-map", "0:v"] + [arg for i in range(inputs.count("-i")) for arg in ("-map", f"{i + 1}:a")]
+        ffmpeg(*picture, *inputs, *maps, "-ar", "48000", "-c:v", "libx264", "-crf", "40", "-c:a", "aac", "-b:a", "64k",
+               "-shortest", path(name))
+        case(f"{name}: {name.split('.')[0].replace('tracks_', '').replace('_', ', ')} tracks", path(name))
     # Cut mid-frame a second after the speech (a download or a copy broken off): refused, naming
     # where the sound ends and how long the header said it was.
     sox(ref, path("tail.wav"), "pad", "0", "1")

@@ -125,7 +125,9 @@ public:
 
     /// Aligns an audio file: WAV, FLAC, Ogg (any sample rate, 8 to 32 bit or float, mono or stereo)
     /// through libsndfile; MP3 (read to its real end), AAC/M4A, Opus, AMR and the sound track of a video
-    /// (MP4, MOV, MKV, WebM) through FFmpeg's libraries.
+    /// (MP4, MOV, MKV, WebM) through FFmpeg's libraries. Of several sound tracks (a screen recorder's
+    /// desktop and microphone), the default one unless it is silent or another sounds more like
+    /// speech; Timeline::warnings says which was read.
     /// \throws talkface::FileError if it cannot be opened or read (truncated); talkface::ParseError
     ///         naming the reason if it is not audio talkface can read, or a video has no sound track;
     ///         talkface::InvalidArgument if it is empty or silent; and as align().

@@ -877,7 +877,8 @@ TF_API tf_status tf_timeline_mismatch_loudness(const tf_timeline *timeline, size
                                                size_t *out_count, double *out_step_s);
 
 /* Aligns an audio file (WAV, FLAC, Ogg, MP3, AAC/M4A, Opus, AMR, AC-3, or the sound track of an MP4, MOV,
- * MKV, WebM, MPEG-TS or MPEG video; any rate, mono or stereo) with `transcript` (from tf_read_transcript /
+ * MKV, WebM, MPEG-TS or MPEG video; any rate, mono or stereo; of several sound tracks, the one that sounds like
+ * speech, named in the timeline's warnings) with `transcript` (from tf_read_transcript /
  * tf_load_transcript) into a new timeline *out: the transcript's sentences and syllables with their times, seconds (syllable start = where its initial
  * consonant starts; final start and confidence set), and the audio's duration. The audio is read in
  * blocks: an hour of speech aligns in bounded memory. `options` NULL means the defaults; `progress`

@@ -30,9 +30,10 @@ struct FfmpegReading {
     std::int64_t overlong_ogg_page_byte = -1;
 };
 
-// Opens the first audio stream FFmpeg finds in `path` and decodes its first samples, so that a file
-// with no sound at all is refused here rather than part way through the alignment. frame_count()
-// is the container's estimate; read() goes on to the real end.
+// Opens the audio stream FFmpeg would play in `path` (of several, the one that sounds like speech:
+// its notes() say which) and decodes its first samples, so that a file with no sound at all is
+// refused here rather than part way through the alignment. frame_count() is the container's
+// estimate; read() goes on to the real end.
 // \throws talkface::ParseError naming the file and the reason: not a format talkface reads, a video
 //         without a sound track, a codec FFmpeg cannot decode; talkface::FileError if it cannot be
 //         opened; talkface::InvalidArgument if it decodes to no samples.

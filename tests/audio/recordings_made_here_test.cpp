@@ -86,6 +86,17 @@ const std::vector<Made>& recordings() {
     return made;
 }
 
+// Every syllable of `timeline` starts within `tolerance_s` of `reference`'s, moved by `shift_s`.
+void check_starts_as(const Timeline& timeline, const Timeline& reference, double shift_s,
+                     double tolerance_s) {
+    REQUIRE(timeline.syllables.size() == reference.syllables.size());
+    for (std::size_t i = 0; i < timeline.syllables.size(); ++i) {
+        CAPTURE(i);
+        CHECK(std::fabs(timeline.syllables[i].start_s - (reference.syllables[i].start_s + shift_s)) <=
+              tolerance_s);
+    }
+}
+
 }  // namespace
 
 TEST_SUITE("audio") {
@@ -167,11 +178,7 @@ TEST_SUITE("audio") {
         const SpeechAligner aligner;
         const Timeline reference = aligner.align_file(speech_clip("one_sentence.wav"), transcript);
         const Timeline timeline = aligner.align_file(test::output_path("inverted.wav"), transcript);
-        REQUIRE(timeline.syllables.size() == reference.syllables.size());
-        for (std::size_t i = 0; i < timeline.syllables.size(); ++i) {
-            CAPTURE(i);
-            CHECK(std::fabs(timeline.syllables[i].start_s - reference.syllables[i].start_s) <= 0.0101);
-        }
+        check_starts_as(timeline, reference, 0.0, 0.0101);
     }
 
     TEST_CASE("a video whose sound starts 0.5 s after its picture is read with the picture's time") {
@@ -200,12 +207,59 @@ TEST_SUITE("audio") {
             CHECK_MESSAGE(source->notes()[0].find("after its picture") != std::string::npos,
                           source->notes()[0]);
             const Timeline timeline = aligner.align_file(path, transcript);
-            REQUIRE(timeline.syllables.size() == reference.syllables.size());
-            for (std::size_t i = 0; i < timeline.syllables.size(); ++i) {
-                CAPTURE(i);
-                CHECK(std::fabs(timeline.syllables[i].start_s - (reference.syllables[i].start_s + 0.5)) <=
-                      0.0301);
-            }
+            check_starts_as(timeline, reference, 0.5, 0.0301);
         }
+    }
+}
+
+TEST_SUITE("audio") {
+    TEST_CASE("of several sound tracks, the one with the speech is read, and the user is told which") {
+        // OBS writes the desktop's sound and the microphone's as two tracks, the first empty where
+        // nothing played: on 5842241 the first was read, and the recording refused as silent.
+        const auto wav = detail::open_audio_file(speech_clip("one_sentence.wav"));
+        const std::vector<float> reference = test::read_all(*wav);
+        const std::vector<double> reference_loudness = test::envelope(reference, wav->sample_rate_hz());
+        const std::string picture = "-f lavfi -i color=c=gray:s=16x16:r=2:d=3.6 ";
+        const std::string silence = "-f lavfi -i anullsrc=r=48000:cl=stereo:d=3.6 ";
+        // A held chord under a plucked line.
+        const std::string music =
+            "-f lavfi -i 'aevalsrc=0.05*sin(2*PI*220*t)+0.2*(0.1+0.9*exp(-6*mod(t\\,0.375)))*"
+            "sin(2*PI*t*440*pow(2\\,floor(mod(t/0.375\\,5))*2/12)):s=48000:d=3.6' ";
+        const std::string voice = "-i '" + speech_clip("one_sentence.wav") + "' ";
+        struct Tracks {
+            std::string name;
+            std::string inputs;
+            std::string maps;
+            std::string said;
+        };
+        const std::vector<Tracks> files = {
+            {"screen_recording.mkv", silence + voice, "-map 0:v -map 1:a -map 2:a",
+             "it has 2 sound tracks: the second was read, for the first is silent; to align another"},
+            {"music_first.mp4", music + voice, "-map 0:v -map 1:a -map 2:a",
+             "it has 2 sound tracks: the second was read, for it sounds more like speech than the first; to "
+             "align another"},
+            {"three_tracks.mp4", music + silence + voice, "-map 0:v -map 1:a -map 2:a -map 3:a",
+             "it has 3 sound tracks: the third was read, for it sounds more like speech than the first; the "
+             "other: the second (silent)"},
+            // A film's languages, each speech: the default track, the first, is read.
+            {"two_voices.mkv", voice + voice, "-map 0:v -map 1:a -map 2:a",
+             "it has 2 sound tracks: the first was read; the other: the second"}};
+        for (const Tracks& tracks : files) {
+            CAPTURE(tracks.name);
+            const std::string path = test::made_by_command(
+                tracks.name, "ffmpeg -nostdin -loglevel error -y " + picture + tracks.inputs + tracks.maps +
+                                 " -c:v libx264 -c:a aac -b:a 64k -shortest");
+            const auto source = detail::open_audio_file(path);
+            const std::vector<float> samples = test::read_all(*source);
+            CHECK(std::abs(test::best_lag(reference_loudness,
+                                          test::envelope(samples, source->sample_rate_hz()))) <= 1);
+            REQUIRE(source->notes().size() == 1);
+            CHECK_MESSAGE(source->notes()[0].find(tracks.said) == 0, source->notes()[0]);
+        }
+        const Timeline transcript = load_transcript(speech_clip("one_sentence.txt"));
+        const SpeechAligner aligner;
+        const Timeline reference_timeline = aligner.align_file(speech_clip("one_sentence.wav"), transcript);
+        const Timeline timeline = aligner.align_file(test::output_path("screen_recording.mkv"), transcript);
+        check_starts_as(timeline, reference_timeline, 0.0, 0.0301);
     }
 }

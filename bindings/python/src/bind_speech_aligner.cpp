@@ -172,7 +172,8 @@ Example:
             },
             py::arg("path"), py::arg("transcript"), py::arg("progress") = py::none(), R"doc(
 Aligns an audio file (WAV, FLAC, Ogg, MP3, AAC/M4A, Opus, AMR, AC-3, or a video's sound track: MP4, MOV,
-MKV, WebM, MPEG-TS, MPEG; any rate, mono or stereo) with its transcript. Releases the GIL while it works.
+MKV, WebM, MPEG-TS, MPEG; any rate, mono or stereo; of several sound tracks, the one that sounds like speech,
+named in the result's warnings) with its transcript. Releases the GIL while it works.
 
 Args:
     path (str | os.PathLike): the audio file.
