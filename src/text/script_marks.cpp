@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include "text/written_number_scan.hpp"
+
 namespace talkface::detail {
 
 namespace {
@@ -123,41 +125,28 @@ bool is_label_character(char32_t c) {
            c == '_' || c == '-' || c == 0xB7 /*·*/ || (c >= 0x3400 && c <= 0x9FFF);
 }
 
-bool ends_with(std::string_view name, std::string_view end) {
-    return name.size() >= end.size() && name.compare(name.size() - end.size(), end.size(), end) == 0;
-}
-
 // A verb of saying at a name's end makes it a sentence's start (他说：), not a name.
 bool ends_with_saying(std::string_view name) {
-    for (std::string_view verb :
-         {"说", "說", "道", "讲", "講", "称", "稱", "曰", "表示", "指出", "认为", "認為", "强调", "強調"}) {
-        if (ends_with(name, verb)) return true;
-    }
-    return false;
+    return ends_with_any(name, {"说", "說", "道", "讲", "講", "称", "稱", "曰", "表示", "指出", "认为",
+                                "認為", "强调", "強調"});
 }
-
-// A form's field or a notice's heading names a thing, and a Chinese compound's head is its last
-// morpheme: 收件地址 联系电话 错误代码 本轮得分 当前版本 营业时间 are an address, a number, a code, a
-// score, a version and a time whatever comes before. A speaker's label names a person or role
-// (主持人 记者 嘉宾 队友 小明 A), whose heads are none of these.
-constexpr std::string_view kFieldHeads[] = {
-    "址", "号", "號", "码", "碼", "话", "話", "线", "線", "间", "間", "期", "限", "价", "價",
-    "格", "量", "分", "名", "数", "數", "点", "點", "率", "额", "額", "本", "标", "標", "励",
-    "勵", "榜", "法", "步", "课", "課", "轮", "輪", "报", "報", "赛", "賽", "态", "態", "型"};
-
-// Fields and headings whose heads also end roles (编: 小编 主编, 机: 司机, 警: 民警), or are no
-// attribute, named whole.
-constexpr std::string_view kFieldNames[] = {"邮编", "郵編", "手机", "手機", "预警", "預警",
-                                            "计算", "計算", "方程", "大小", "注意", "提示",
-                                            "说明", "說明", "备注", "備註", "通知", "公告"};
 
 bool is_field_name(std::string_view name) {
     // A seat's number names a player (1号：, 12号：).
     const auto digits = name.find_first_not_of("0123456789");
     if (digits > 0 && name.substr(digits) == "号") return false;
-    const auto ends_name = [&](std::string_view end) { return ends_with(name, end); };
-    return std::any_of(std::begin(kFieldHeads), std::end(kFieldHeads), ends_name) ||
-           std::any_of(std::begin(kFieldNames), std::end(kFieldNames), ends_name);
+    // A form's field or a notice's heading names a thing, and a Chinese compound's head is its last
+    // morpheme: 收件地址 联系电话 错误代码 本轮得分 当前版本 营业时间 are an address, a number, a code, a
+    // score, a version and a time whatever comes before. A speaker's label names a person or role
+    // (主持人 记者 嘉宾 队友 小明 A), whose heads are none of these.
+    return ends_with_any(name, {"址", "号", "號", "码", "碼", "话", "話", "线", "線", "间", "間", "期",
+                                "限", "价", "價", "格", "量", "分", "名", "数", "數", "点", "點", "率",
+                                "额", "額", "本", "标", "標", "励", "勵", "榜", "法", "步", "课", "課",
+                                "轮", "輪", "报", "報", "赛", "賽", "态", "態", "型"}) ||
+           // Fields and headings whose heads also end roles (编: 小编 主编, 机: 司机, 警: 民警), or are no
+           // attribute, named whole.
+           ends_with_any(name, {"邮编", "郵編", "手机", "手機", "预警", "預警", "计算", "計算", "方程",
+                                "大小", "注意", "提示", "说明", "說明", "备注", "備註", "通知", "公告"});
 }
 
 struct Label {
