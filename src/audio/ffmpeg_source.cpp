@@ -132,6 +132,59 @@ struct ResamplerFreer {
     void operator()(SwrContext* context) const { swr_free(&context); }
 };
 
+// A decoded frame's samples as float with its channels averaged (ChannelMixer), as the libsndfile
+// reader gives them, so that a file gives the same samples whichever library reads it. Sample
+// format conversion only (same rate, same channels): the speech stage resamples.
+class FrameMixer {
+public:
+    FrameMixer() = default;
+    ~FrameMixer() { av_channel_layout_uninit(&layout_); }
+    FrameMixer(const FrameMixer&) = delete;
+    FrameMixer& operator=(const FrameMixer&) = delete;
+
+    // Whether `frame`'s sample format and channels can be converted (a converter made for them).
+    bool takes(const AVFrame& frame) {
+        if (converter_ && frame.format == format_ &&
+            av_channel_layout_compare(&frame.ch_layout, &layout_) == 0)
+            return true;
+        av_channel_layout_uninit(&layout_);
+        if (av_channel_layout_copy(&layout_, &frame.ch_layout) < 0) throw std::bad_alloc();
+        SwrContext* raw = nullptr;
+        // FFmpeg 5.1 takes the layouts by non-const pointer; the copy stands for both.
+        const int made =
+            swr_alloc_set_opts2(&raw, &layout_, AV_SAMPLE_FMT_FLT, frame.sample_rate, &layout_,
+                                static_cast<AVSampleFormat>(frame.format), frame.sample_rate, 0, nullptr);
+        converter_.reset(raw);
+        format_ = frame.format;
+        if (made < 0 || swr_init(converter_.get()) < 0) converter_.reset();
+        return converter_ != nullptr;
+    }
+
+    // Converts `frame` (which takes() accepted) and puts the mix of its samples after the first
+    // `skip` in `mono`; returns how many it converted, skipped ones included, or FFmpeg's error.
+    int mix(const AVFrame& frame, std::size_t skip, std::vector<float>& mono) {
+        const auto channels = static_cast<std::size_t>(frame.ch_layout.nb_channels);
+        interleaved_.resize(static_cast<std::size_t>(frame.nb_samples) * channels);
+        auto* out = reinterpret_cast<std::uint8_t*>(interleaved_.data());
+        const int converted =
+            swr_convert(converter_.get(), &out, frame.nb_samples,
+                        const_cast<const std::uint8_t**>(frame.extended_data), frame.nb_samples);
+        if (converted < 0) return converted;
+        const auto count = static_cast<std::size_t>(converted);
+        skip = std::min(skip, count);
+        mono.resize(count - skip);
+        mixer_.mix(interleaved_.data() + skip * channels, count - skip, channels, mono.data());
+        return converted;
+    }
+
+private:
+    std::unique_ptr<SwrContext, ResamplerFreer> converter_;
+    AVChannelLayout layout_{};
+    int format_ = -1;
+    std::vector<float> interleaved_;
+    ChannelMixer mixer_;
+};
+
 // One sound track's loudness, frame by frame, decoded from its packets as they come.
 class TrackHearing {
 public:
@@ -149,7 +202,6 @@ public:
         if (!frame_) throw std::bad_alloc();
         frame_samples_ = std::max(1, static_cast<int>(kLoudnessFrameS * codec_->sample_rate));
     }
-    ~TrackHearing() { av_channel_layout_uninit(&layout_); }
     TrackHearing(const TrackHearing&) = delete;
     TrackHearing& operator=(const TrackHearing&) = delete;
 
@@ -178,9 +230,9 @@ public:
         std::vector<double> sums(frames_.size() + 1, 0.0);
         for (std::size_t i = 0; i < frames_.size(); ++i) sums[i + 1] = sums[i] + frames_[i];
         const auto window = static_cast<std::size_t>(kLowEnergyWindowS / kLoudnessFrameS);
+        const std::size_t span = std::min(window, frames_.size());
         std::size_t low = 0;
         for (std::size_t i = 0; i < frames_.size(); ++i) {
-            const std::size_t span = std::min(window, frames_.size());
             const std::size_t begin = std::min(i - std::min(i, window / 2), frames_.size() - span);
             const std::size_t end = begin + span;
             const double mean = (sums[end] - sums[begin]) / static_cast<double>(end - begin);
@@ -197,29 +249,7 @@ private:
     void add(const AVFrame& frame) {
         const int channels = frame.ch_layout.nb_channels;
         if (frame.nb_samples <= 0 || channels <= 0 || channels > kMaxChannels) return;
-        if (!resampler_ || frame.format != format_ ||
-            av_channel_layout_compare(&frame.ch_layout, &layout_) != 0) {
-            av_channel_layout_uninit(&layout_);
-            if (av_channel_layout_copy(&layout_, &frame.ch_layout) < 0) throw std::bad_alloc();
-            SwrContext* raw = nullptr;
-            const int made =
-                swr_alloc_set_opts2(&raw, &layout_, AV_SAMPLE_FMT_FLT, frame.sample_rate, &layout_,
-                                    static_cast<AVSampleFormat>(frame.format), frame.sample_rate, 0, nullptr);
-            resampler_.reset(raw);
-            format_ = frame.format;
-            if (made < 0 || swr_init(resampler_.get()) < 0) {
-                resampler_.reset();
-                return;
-            }
-        }
-        interleaved_.resize(static_cast<std::size_t>(frame.nb_samples) * static_cast<std::size_t>(channels));
-        auto* out = reinterpret_cast<std::uint8_t*>(interleaved_.data());
-        const int converted =
-            swr_convert(resampler_.get(), &out, frame.nb_samples,
-                        const_cast<const std::uint8_t**>(frame.extended_data), frame.nb_samples);
-        if (converted <= 0) return;
-        mono_.resize(static_cast<std::size_t>(converted));
-        mixer_.mix(interleaved_.data(), mono_.size(), static_cast<std::size_t>(channels), mono_.data());
+        if (!mixer_.takes(frame) || mixer_.mix(frame, 0, mono_) <= 0) return;
         for (const float sample : mono_) {
             energy_ += static_cast<double>(sample) * sample;
             if (++samples_ < frame_samples_) continue;
@@ -233,11 +263,7 @@ private:
     bool past_hearing_ = false;
     std::unique_ptr<AVCodecContext, CodecFreer> codec_;
     std::unique_ptr<AVFrame, FrameFreer> frame_;
-    std::unique_ptr<SwrContext, ResamplerFreer> resampler_;
-    AVChannelLayout layout_{};
-    int format_ = -1;
-    ChannelMixer mixer_;
-    std::vector<float> interleaved_;
+    FrameMixer mixer_;
     std::vector<float> mono_;
     int frame_samples_ = 1;
     int samples_ = 0;
@@ -363,7 +389,6 @@ public:
         keep_picture_lead();
     }
 
-    ~FfmpegSource() override { av_channel_layout_uninit(&resampler_layout_); }
     FfmpegSource(const FfmpegSource&) = delete;
     FfmpegSource& operator=(const FfmpegSource&) = delete;
 
@@ -973,8 +998,7 @@ private:
         skipped_is_pause_ = true;
     }
 
-    // Converts a decoded frame to interleaved float and averages its channels, as the libsndfile
-    // reader does, so that a file gives the same samples whichever library reads it.
+    // The frame's samples, its channels averaged (FrameMixer), into pending_.
     void mix_down(const AVFrame& frame) {
         pending_.clear();
         pending_position_ = 0;
@@ -986,38 +1010,17 @@ private:
         const int channels = frame.ch_layout.nb_channels;
         if (channels <= 0 || channels > kMaxChannels)
             throw ParseError(path_, 0, 0, "", std::to_string(channels) + " channels at " + seconds_text(seconds_read()));
-        if (!resampler_ || frame.format != resampler_format_ || av_channel_layout_compare(&frame.ch_layout, &resampler_layout_) != 0)
-            make_resampler(frame);
-        interleaved_.resize(static_cast<std::size_t>(frame.nb_samples) * static_cast<std::size_t>(channels));
-        auto* out = reinterpret_cast<std::uint8_t*>(interleaved_.data());
-        const int converted = swr_convert(resampler_.get(), &out, frame.nb_samples,
-                                          const_cast<const std::uint8_t**>(frame.extended_data), frame.nb_samples);
+        if (!mixer_.takes(frame)) {
+            const char* format = av_get_sample_fmt_name(static_cast<AVSampleFormat>(frame.format));
+            throw ParseError(
+                path_, 0, 0, "",
+                std::string("cannot convert its samples (") + (format ? format : "unknown format") + ")");
+        }
+        const int converted = mixer_.mix(frame, frames_to_skip_, pending_);
         if (converted < 0) throw decode_error(converted);
         const auto count = static_cast<std::size_t>(converted);
-        const std::size_t skipped = std::min(frames_to_skip_, count);
-        frames_to_skip_ -= skipped;
-        pending_.resize(count - skipped);
-        mixer_.mix(interleaved_.data() + skipped * static_cast<std::size_t>(channels), count - skipped,
-                   static_cast<std::size_t>(channels), pending_.data());
+        frames_to_skip_ -= std::min(frames_to_skip_, count);
         frames_decoded_ += count;
-    }
-
-    // Sample format conversion only (same rate, same channels): the speech stage resamples.
-    void make_resampler(const AVFrame& frame) {
-        av_channel_layout_uninit(&resampler_layout_);
-        if (av_channel_layout_copy(&resampler_layout_, &frame.ch_layout) < 0) throw std::bad_alloc();
-        SwrContext* raw = nullptr;
-        // FFmpeg 5.1 takes the layouts by non-const pointer; the copy stands for both.
-        const int made = swr_alloc_set_opts2(&raw, &resampler_layout_, AV_SAMPLE_FMT_FLT, frame.sample_rate,
-                                             &resampler_layout_, static_cast<AVSampleFormat>(frame.format),
-                                             frame.sample_rate, 0, nullptr);
-        resampler_.reset(raw);
-        if (made < 0 || swr_init(resampler_.get()) < 0)
-            throw ParseError(path_, 0, 0, "", std::string("cannot convert its samples (") +
-                                                   (av_get_sample_fmt_name(static_cast<AVSampleFormat>(frame.format))
-                                                        ? av_get_sample_fmt_name(static_cast<AVSampleFormat>(frame.format))
-                                                        : "unknown format") + ")");
-        resampler_format_ = frame.format;
     }
 
     std::string path_;
@@ -1029,9 +1032,7 @@ private:
     std::unique_ptr<AVCodecContext, CodecFreer> codec_;
     std::unique_ptr<AVPacket, PacketFreer> packet_;
     std::unique_ptr<AVFrame, FrameFreer> frame_;
-    std::unique_ptr<SwrContext, ResamplerFreer> resampler_;
-    AVChannelLayout resampler_layout_{};
-    int resampler_format_ = -1;
+    FrameMixer mixer_;
     AVStream* stream_ = nullptr;
     int sample_rate_hz_ = 0;
     std::size_t estimated_frames_ = 1;
@@ -1061,8 +1062,6 @@ private:
     bool mp3_toc_followed_ = false;       // a point of mp3_toc_ lay inside a whole packet
     bool flushed_ = false;
     bool first_packet_sent_ = false;  // of the sound track
-    std::vector<float> interleaved_;
-    ChannelMixer mixer_;
     std::vector<float> pending_;
     std::size_t pending_position_ = 0;
 };

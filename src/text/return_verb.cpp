@@ -4,6 +4,7 @@
 #include <iterator>
 
 #include "text/aspect_particle.hpp"
+#include "text/written_number_scan.hpp"
 
 namespace talkface::detail {
 
@@ -20,17 +21,12 @@ bool is_person(std::string_view word) {
     return std::find(std::begin(kPersons), std::end(kPersons), word) != std::end(kPersons);
 }
 
-bool ends_with(std::string_view word, std::string_view end) {
-    return word.size() >= end.size() && word.substr(word.size() - end.size()) == end;
-}
-
 // A debt, what 还 takes as the verb: 房贷 车贷 外债 欠债 (还贷 还债 are in the phrase list), money
 // owed (贷款), and what is paid back as a debt is (信用卡, 花呗, 利息, 本金, 人情).
 bool is_debt(std::string_view word) {
     constexpr std::string_view kOwed[] = {"贷款", "貸款", "信用卡", "花呗", "花唄", "利息", "本金", "人情"};
     if (std::find(std::begin(kOwed), std::end(kOwed), word) != std::end(kOwed)) return true;
-    return word.size() > std::string_view("贷").size() &&
-           (ends_with(word, "贷") || ends_with(word, "貸") || ends_with(word, "债") || ends_with(word, "債"));
+    return word.size() > std::string_view("贷").size() && ends_with_any(word, {"贷", "貸", "债", "債"});
 }
 
 // A complement of result after the verb 还 (还上 还完 还回 还清): paid up, paid off, given back.
