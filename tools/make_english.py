@@ -6,10 +6,11 @@ can shape (issue 13). Run with Debian 12's /usr/bin/python3 after `apt-get insta
 Source: the CMU pronouncing dictionary 0.4 as Festival ships it (festlex-cmu,
 /usr/share/festival/dicts/cmu/cmudict-0.4.out): ~106k words, each already cut into syllables with
 a stress mark. Each English syllable becomes one Mandarin syllable, its onset and vowel mapped to
-the nearest pinyin initial and final; an s before another consonant (street, spin) and the last
-consonant of a word (the k of Mike, the s of news) become syllables of their own with a short
-vowel, as Mandarin speakers say them (迈克 mai ke); liquids and glides after a consonant (play,
-quick, cute) and other codas are dropped. Every result is a syllable of the library's own table
+the nearest pinyin initial and final; an s before another consonant (street, spin) and each
+consonant after a vowel but n and ng, which Mandarin ends syllables with, become syllables of their
+own with a short vowel, as Mandarin speakers say them and its loans write them (迈克 mai ke, 麦克斯
+ma ke si, 艾克赛尔 yi ke sai er, 汤姆 mu, 比尔 er); liquids and glides after a consonant (play,
+quick, cute) are dropped. Every result is a syllable of the library's own table
 (the one make_readings.py writes, which the aligner and the lips accept); when the plain mapping
 is not (fi, gi), the nearest one in it is taken (fa, ji). Stressed syllables get tone 1, the rest tone 5: tones do not move the
 lips, and espeak-ng speaks them either way.
@@ -59,6 +60,12 @@ INITIALS = {"p": "p", "b": "b", "t": "t", "d": "d", "k": "k", "g": "g", "f": "f"
 CONSONANT_SYLLABLES = {"p": "pu", "b": "bu", "t": "te", "d": "de", "k": "ke", "g": "ge", "f": "fu",
                        "v": "fu", "th": "si", "dh": "de", "s": "si", "z": "zi", "sh": "shi",
                        "zh": "shi", "ch": "qi", "jh": "zhi", "l": "le", "hh": "he"}
+# Two consonants after a vowel said as one syllable, as the loans write them (瓦茨 Watts, 爱德华兹 Edwards).
+CODA_PAIRS = {("t", "s"): "ci", ("d", "z"): "zi"}
+# Vowels after which an l is no syllable: a schwa's (apple, model: 爱坡, 毛豆) and the back ones, which take
+# the l into themselves (call, cool, goal, Ultra, Hulk: 扣, 酷, 奥特曼, 浩克). After the others it is 尔
+# (Excel 艾克赛尔, Bill 比尔, golf 高尔夫, mail 伊妹儿).
+L_WITHOUT_SYLLABLE = {"ax", "ah", "ao", "ow", "uw", "uh"}
 NASAL = {("a", "n"): "an", ("a", "ng"): "ang", ("e", "n"): "en", ("e", "ng"): "eng", ("i", "n"): "in",
          ("i", "ng"): "ing", ("u", "n"): "un", ("u", "ng"): "ong", ("ai", "n"): "an", ("ai", "ng"): "ang",
          ("ei", "n"): "en", ("ei", "ng"): "eng", ("ao", "n"): "an", ("ao", "ng"): "ang", ("ou", "n"): "ong",
@@ -90,6 +97,34 @@ def legal_syllable(initial, final):
     return "a"
 
 
+def coda_syllables(vowel, coda, next_phone):
+    """The nasal a syllable's final takes from its coda (or None), and the syllables its other consonants
+    become; next_phone opens the word's next syllable (None at its end). Session 25: only the last
+    consonant of a word was a syllable, so fix was fei si (said fei ke si), Excel yi sai, Zoom zun (m
+    taken for n) and team yin (tin is no syllable)."""
+    nasal = None
+    syllables = []
+    index = 0
+    while index < len(coda):
+        phone = coda[index]
+        following = coda[index + 1] if index + 1 < len(coda) else next_phone
+        if phone in ("n", "ng") or (phone == "m" and following in ("p", "b")):
+            # An m before a labial stop is said n, as the loans write it (坎普 camp, 奥林匹克 Olympic).
+            nasal = nasal or ("n" if phone == "m" else phone)
+        elif phone == "m":
+            syllables.append("mu")
+        elif phone == "l":
+            if vowel not in L_WITHOUT_SYLLABLE:
+                syllables.append("er")
+        elif index + 1 < len(coda) and (phone, following) in CODA_PAIRS:
+            syllables.append(CODA_PAIRS[(phone, following)])
+            index += 1
+        elif phone in CONSONANT_SYLLABLES:
+            syllables.append(CONSONANT_SYLLABLES[phone])
+        index += 1
+    return nasal, syllables
+
+
 def map_word(syllables, spelling=""):
     """[(phones, stress), ...] from the dictionary -> numbered pinyin syllables."""
     result = []
@@ -112,14 +147,12 @@ def map_word(syllables, spelling=""):
         # those words and writes their loans (纳萨, 比萨, 丰田 tuo you ta, 阿尔法): session 15, it was e.
         if index + 1 == len(syllables) > 1 and vowel == "ax" and not coda and spelling.endswith("a"):
             final = "a"
-        nasal = next((phone for phone in coda if phone in ("n", "m", "ng")), None)
+        next_phone = syllables[index + 1][0][0] if index + 1 < len(syllables) else None
+        nasal, consonants = coda_syllables(vowel, coda, next_phone)
         if nasal is not None:
-            final = NASAL.get((final, "n" if nasal == "m" else nasal), final)
+            final = NASAL.get((final, nasal), final)
         result.append(legal_syllable(initial, final) + tone)
-        is_last = index + 1 == len(syllables)
-        last = coda[-1] if coda else None
-        if is_last and last in CONSONANT_SYLLABLES and last != "l":
-            result.append(CONSONANT_SYLLABLES[last] + "5")
+        result.extend(syllable + "5" for syllable in consonants)
     return result
 
 

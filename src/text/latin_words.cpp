@@ -30,7 +30,8 @@ const char* const kLetterNames[26] = {
 constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     {"email", "yi1 mei4 er5"},
     {"e-mail", "yi1 mei4 er5"},
-    // Session 24: mail alone and in a brand (Gmail, Hotmail) as in 伊妹儿; the mapping drops a final l, mei.
+    // Session 24: mail alone and in a brand (Gmail, Hotmail) as in 伊妹儿, its tones kept; the mapping gave
+    // mei, and since session 25 gives mei1 er5.
     {"mail", "mei4 er5"},
     {"covid", "kou1 wei2 de5"},
     {"sars", "sa4 si1"},
