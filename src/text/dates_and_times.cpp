@@ -54,12 +54,14 @@ bool names_score(const std::vector<CodePoint>& text, std::size_t start, std::siz
         return true;
     }
     const std::string after = text_between(text, end, end + 2);
-    constexpr std::string_view kResults[] = {"战胜", "戰勝", "击败", "擊敗", "获胜", "獲勝", "取胜", "取勝", "领先", "領先",
-                                             "落后", "落後", "险胜", "險勝", "大胜", "大勝", "完胜", "完勝", "逆转", "逆轉",
-                                             "告负", "告負", "战平", "戰平", "打平", "逼平", "胜", "勝", "负", "負", "赢",
-                                             "贏", "输", "輸",
-                                             // Session 15: a loss said by the loser's side (1-2不敌, 惜败; it was a range).
-                                             "不敌", "不敵", "惜败", "惜敗", "憾负", "憾負", "力克"};
+    constexpr std::string_view kResults[] = {
+        "战胜", "戰勝", "击败", "擊敗", "获胜", "獲勝", "取胜", "取勝", "领先", "領先", "落后", "落後",
+        "险胜", "險勝", "大胜", "大勝", "完胜", "完勝", "逆转", "逆轉", "告负", "告負", "战平", "戰平",
+        "打平", "逼平", "胜", "勝", "负", "負", "赢", "贏", "输", "輸",
+        // Session 15: a loss said by the loser's side (1-2不敌, 惜败; it was a range).
+        "不敌", "不敵", "惜败", "惜敗", "憾负", "憾負", "力克",
+        // Session 25: the score a game opens with (这把0-3开局; it was a range).
+        "开局", "開局"};
     for (const auto word : kResults)
         if (after.rfind(word, 0) == 0) return true;
     if (!dashed) return false;

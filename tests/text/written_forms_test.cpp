@@ -1274,6 +1274,16 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("a game's opening score, a pair right before 开局, is a score") {
+        // The first two rows failed on main 348e35c (二到五, 零到三: ranges).
+        check_cases({
+            {"这把2-5开局，", "这把二比五开局"},
+            {"這把0-3開局", "這把零比三開局"},
+            // The rule's limit: a range with its measure word before 开局.
+            {"3-5分钟开局", "三到五分钟开局"},
+        });
+    }
+
     TEST_CASE(
         "a consonant letter before a word the dictionary has, starting no syllable with it, is the letter "
         "and the word") {
