@@ -209,6 +209,23 @@ void add_labels(const std::vector<CodePoint>& text, std::vector<ScriptMark>& mar
 
 }  // namespace
 
+bool opens_turn(const std::vector<CodePoint>& text, std::size_t start) {
+    auto line_start = start;
+    while (line_start > 0 && text[line_start - 1].value != '\n') --line_start;
+    auto line_end = start;
+    while (line_end < text.size() && text[line_end].value != '\n') ++line_end;
+    const auto is_turn_dash = [&](std::size_t k) {
+        if (!is_dash(text[k].value)) return false;
+        auto before = k;
+        while (before > line_start && is_line_space(text[before - 1].value)) --before;
+        return before == line_start || is_one_of(text[before - 1].value, U"\u3002!?\u2026");
+    };
+    if (start >= text.size() || !is_turn_dash(start) || !is_turn_dash(line_start)) return false;
+    std::size_t turns = 0;
+    for (auto k = line_start; k < line_end; ++k) turns += is_turn_dash(k) ? 1 : 0;
+    return turns >= 2;
+}
+
 std::vector<ScriptMark> find_script_marks(const std::vector<CodePoint>& text) {
     std::vector<ScriptMark> marks;
     add_labels(text, marks);

@@ -31,6 +31,11 @@ struct ScriptMark {
 //   (客服热线：400-800-1234) is text.
 std::vector<ScriptMark> find_script_marks(const std::vector<CodePoint>& text);
 
+// Whether the dash at text[start] opens a speaker's turn in a subtitle of two (-明天几号？-12号，周五。):
+// the line starts with a dash, and this one stands at its start or right after an end mark, with
+// another such dash in the line. Such a dash is no minus sign; a line of one dash (-5℃，晴) keeps its sign.
+bool opens_turn(const std::vector<CodePoint>& text, std::size_t start);
+
 }  // namespace talkface::detail
 
 #endif

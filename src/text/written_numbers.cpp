@@ -7,6 +7,7 @@
 #include "text/dates_and_times.hpp"
 #include "text/digit_codes.hpp"
 #include "text/number_words.hpp"
+#include "text/script_marks.hpp"
 #include "text/units_and_money.hpp"
 #include "text/written_number_scan.hpp"
 
@@ -517,8 +518,9 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     // After a term (a digit, a letter, a square: x²+2x) a + or a - joins it to the next, a sign no more.
     const bool after_word = start > 0 && (is_digit_at(text, start - 1) || is_ascii_letter(value_at(text, start - 1)) ||
                                           is_one_of(text[start - 1].value, U"\u00B2\u00B3"));
+    // A subtitle's dash before a speaker's turn (-12号，周五。) is no sign either (session 25: 负十二).
     if (currency == nullptr && is_dash(first) && is_digit_at(text, i + 1) &&
-        (follows_designation(text, start) || follows_element(text, start))) {
+        (follows_designation(text, start) || follows_element(text, start) || opens_turn(text, start))) {
         ++i;
     } else if (currency == nullptr && is_one_of(first, U"\u00B1\u2191\u2193") && is_digit_at(text, i + 1)) {
         // ± is 正负, as a tolerance is read (误差±0.5mm); an arrow before a change is the rise or the fall

@@ -1284,6 +1284,17 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("a subtitle's dash before a speaker's turn is no minus sign, where the line opens with one") {
+        // The first two rows failed on main 348e35c (负十二, 负两个).
+        check_cases({
+            {"-明天几号？-12号，周五。", "明天几号十二号周五"},
+            {"-你要几个？ -2个就够了。", "你要几个两个就够了"},
+            // A line of one dash keeps its sign, and so does a dash inside a sentence.
+            {"-5℃，晴。", "零下五摄氏度晴"},
+            {"-好的。气温-3℃。", "好的气温零下三摄氏度"},
+        });
+    }
+
     TEST_CASE(
         "a consonant letter before a word the dictionary has, starting no syllable with it, is the letter "
         "and the word") {
