@@ -142,11 +142,16 @@ bool is_field_name(std::string_view name) {
     return ends_with_any(name, {"址", "号", "號", "码", "碼", "话", "話", "线", "線", "间", "間", "期",
                                 "限", "价", "價", "格", "量", "分", "名", "数", "數", "点", "點", "率",
                                 "额", "額", "本", "标", "標", "励", "勵", "榜", "法", "步", "课", "課",
-                                "轮", "輪", "报", "報", "赛", "賽", "态", "態", "型"}) ||
+                                "轮", "輪", "报", "報", "赛", "賽", "态", "態", "型", "品"}) ||
            // Fields and headings whose heads also end roles (编: 小编 主编, 机: 司机, 警: 民警), or are no
            // attribute, named whole.
            ends_with_any(name, {"邮编", "郵編", "手机", "手機", "预警", "預警", "计算", "計算", "方程",
-                                "大小", "注意", "提示", "说明", "說明", "备注", "備註", "通知", "公告"});
+                                "大小", "注意", "提示", "说明", "說明", "备注", "備註", "通知", "公告"}) ||
+           // Session 25: what 本 or 当前 opens is this round's, this book's or this page's own (本局MVP
+           // 本场最佳 本书定价 当前状态), a thing the text shows, never a speaker; 本人 is one.
+           (starts_with_any(name, {"本", "当前", "當前"}) && name != "本人") ||
+           // A code's Latin name, whose last letter is no head to look at (ISBN：978-7-..., 玩家ID：).
+           ends_with_any(name, {"ISBN", "ISSN", "IMEI", "ID", "IP", "URL", "SKU"});
 }
 
 struct Label {

@@ -84,6 +84,21 @@ TEST_SUITE("stage directions and speaker labels") {
         CHECK(said("1号：我是好人\n2号：我不信\n1号：真的") == "我是好人我不信真的");
     }
 
+    TEST_CASE(
+        "this round's award, a book's code and an order's goods are fields where their names come back") {
+        // Failed on main 348e35c: the names were taken for speakers' labels and left out with a warning.
+        const auto rounds = read_transcript("本局MVP：小明，5杀0死。\n本局MVP：小红，3杀1死。");
+        CHECK(said(rounds).find("本局") == 0);
+        CHECK(rounds.warnings.empty());
+        const auto books = read_transcript("ISBN：978-7-02-008701-9\nISBN：978-7-5086-4321-6");
+        REQUIRE(!books.syllables.empty());
+        CHECK(books.syllables.front().pinyin == "ai4");
+        CHECK(books.warnings.empty());
+        // An order's goods (商品, 产品) are things as well; 本人 names a speaker.
+        CHECK(said("商品：鼠标\n单价：八十九元\n商品：键盘") == "商品鼠标单价八十九元商品键盘");
+        CHECK(said("本人：我同意\n律师：好的\n本人：谢谢") == "我同意好的谢谢");
+    }
+
     TEST_CASE("one line with a colon, a verb of saying, or a clock time is no dialogue") {
         CHECK(said("客服热线：幺二三。") == "客服热线幺二三");
         CHECK(said("他说：好的。\n她说：不行。") == "他说好的她说不行");
