@@ -7,9 +7,10 @@ Source: the CMU pronouncing dictionary 0.4 as Festival ships it (festlex-cmu,
 /usr/share/festival/dicts/cmu/cmudict-0.4.out): ~106k words, each already cut into syllables with
 a stress mark. Each English syllable becomes one Mandarin syllable, its onset and vowel mapped to
 the nearest pinyin initial and final; an s before another consonant (street, spin) and each
-consonant after a vowel but n and ng, which Mandarin ends syllables with, become syllables of their
-own with a short vowel, as Mandarin speakers say them and its loans write them (迈克 mai ke, 麦克斯
-ma ke si, 艾克赛尔 yi ke sai er, 汤姆 mu, 比尔 er); liquids and glides after a consonant (play,
+consonant after a vowel but n and ng, which Mandarin ends syllables with (and an n after ai, ei or
+oi, which no final holds: 莱恩 line), become syllables of their own with a short vowel, as Mandarin
+speakers say them and its loans write them (迈克 mai ke, 麦克斯 ma ke si, 艾克赛尔 yi ke sai er, 汤姆
+mu, 比尔 er, 粉丝 fans); liquids and glides after a consonant (play,
 quick, cute) are dropped. Every result is a syllable of the library's own table
 (the one make_readings.py writes, which the aligner and the lips accept); when the plain mapping
 is not (fi, gi), the nearest one in it is taken (fa, ji). Stressed syllables get tone 1, the rest tone 5: tones do not move the
@@ -66,6 +67,15 @@ CODA_PAIRS = {("t", "s"): "ci", ("d", "z"): "zi"}
 # the l into themselves (call, cool, goal, Ultra, Hulk: 扣, 酷, 奥特曼, 浩克). After the others it is 尔
 # (Excel 艾克赛尔, Bill 比尔, golf 高尔夫, mail 伊妹儿).
 L_WITHOUT_SYLLABLE = {"ax", "ah", "ao", "ow", "uw", "uh"}
+# Vowels that keep their glide before an n, which is then a syllable of its own: Mandarin has no final of a
+# diphthong and n, and its loans keep the diphthong and write the n 恩 (莱恩 Lane, Ryan; 凯恩 Kane; 韦恩 Wayne;
+# 佩恩 Payne; 博伊恩 Boyne), where taking the n into the vowel made line lan and Wayne wen. Where the syllable
+# loses the glide anyway (fai is none: find fa), the n stays in the final (fan de), the nearer.
+GLIDE_BEFORE_N = {"ay", "ey", "oy"}
+# Pinyin initials (English ch, j, sh) before which an e (eh) is ie, with the palatal initial, as the loans
+# write it (切尔西 Chelsea, 切斯特 Chester, 杰夫 Jeff, 杰瑞 Jerry, 杰西卡 Jessica, 谢菲尔德 Sheffield) and Mandarin
+# speakers say check (qie ke), where it was chai, zhai, shai; before its nasal it is left to NASAL (詹金斯 Jenkins).
+IE_AFTER = {"ch", "zh", "sh"}
 NASAL = {("a", "n"): "an", ("a", "ng"): "ang", ("e", "n"): "en", ("e", "ng"): "eng", ("i", "n"): "in",
          ("i", "ng"): "ing", ("u", "n"): "un", ("u", "ng"): "ong", ("ai", "n"): "an", ("ai", "ng"): "ang",
          ("ei", "n"): "en", ("ei", "ng"): "eng", ("ao", "n"): "an", ("ao", "ng"): "ang", ("ou", "n"): "ong",
@@ -97,18 +107,23 @@ def legal_syllable(initial, final):
     return "a"
 
 
-def coda_syllables(vowel, coda, next_phone):
+def coda_syllables(vowel, coda, next_phone, glide_kept, s_spelled):
     """The nasal a syllable's final takes from its coda (or None), and the syllables its other consonants
-    become; next_phone opens the word's next syllable (None at its end). Session 25: only the last
-    consonant of a word was a syllable, so fix was fei si (said fei ke si), Excel yi sai, Zoom zun (m
-    taken for n) and team yin (tin is no syllable)."""
+    become; next_phone opens the word's next syllable (None at its end); glide_kept tells whether the
+    syllable says its vowel's glide (GLIDE_BEFORE_N); s_spelled, whether a z ending the coda is written s,
+    when it is si as the loans write it (粉丝 fans, 琼斯 Jones, 威廉斯 Williams, 罗斯 Rose; 兹 is a z's: 莉兹
+    Liz, 迪亚兹 Diaz). Session 25: only the last consonant of a word was a syllable, so fix was fei si (said
+    fei ke si), Excel yi sai, Zoom zun (m taken for n) and team yin (tin is no syllable); line was lan (its n
+    taken in) and fans fan zi."""
     nasal = None
     syllables = []
     index = 0
     while index < len(coda):
         phone = coda[index]
         following = coda[index + 1] if index + 1 < len(coda) else next_phone
-        if phone in ("n", "ng") or (phone == "m" and following in ("p", "b")):
+        if phone == "n" and glide_kept:
+            syllables.append("en")
+        elif phone in ("n", "ng") or (phone == "m" and following in ("p", "b")):
             # An m before a labial stop is said n, as the loans write it (坎普 camp, 奥林匹克 Olympic).
             nasal = nasal or ("n" if phone == "m" else phone)
         elif phone == "m":
@@ -119,6 +134,8 @@ def coda_syllables(vowel, coda, next_phone):
         elif index + 1 < len(coda) and (phone, following) in CODA_PAIRS:
             syllables.append(CODA_PAIRS[(phone, following)])
             index += 1
+        elif phone == "z" and s_spelled and index + 1 == len(coda):
+            syllables.append("si")
         elif phone in CONSONANT_SYLLABLES:
             syllables.append(CONSONANT_SYLLABLES[phone])
         index += 1
@@ -148,9 +165,13 @@ def map_word(syllables, spelling=""):
         if index + 1 == len(syllables) > 1 and vowel == "ax" and not coda and spelling.endswith("a"):
             final = "a"
         next_phone = syllables[index + 1][0][0] if index + 1 < len(syllables) else None
-        nasal, consonants = coda_syllables(vowel, coda, next_phone)
+        glide_kept = vowel in GLIDE_BEFORE_N and legal_syllable(initial, final).endswith(final)
+        s_spelled = next_phone is None and spelling.removesuffix("e").endswith("s")
+        nasal, consonants = coda_syllables(vowel, coda, next_phone, glide_kept, s_spelled)
         if nasal is not None:
             final = NASAL.get((final, nasal), final)
+        elif vowel == "eh" and initial in IE_AFTER:
+            final = "ie"
         result.append(legal_syllable(initial, final) + tone)
         result.extend(syllable + "5" for syllable in consonants)
     return result

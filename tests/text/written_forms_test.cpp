@@ -669,7 +669,7 @@ TEST_SUITE("written forms") {
             {"Tesla汽车", "te si la汽车"},
             {"下载App", "下载 ei pi pi"},
             {"xinhua新闻", "xin hua新闻"},
-            {"来信请发送至news@xinhua.org", "来信请发送至 nu zi艾特 xin hua点 o ge"},
+            {"来信请发送至news@xinhua.org", "来信请发送至 nu si艾特 xin hua点 o ge"},
         });
     }
 
@@ -796,7 +796,7 @@ TEST_SUITE("written forms") {
             {"访问www.gov.cn", "访问 da bu liu da bu liu da bu liu点 ji ou wei点 xi en"},
             // The scheme is not said; a path's slashes are.
             {"https://www.example.com/news",
-             "da bu liu da bu liu da bu liu点 yi ge zan pa点 ka mu斜杠 nu zi"},
+             "da bu liu da bu liu da bu liu点 yi ge zan pa点 ka mu斜杠 nu si"},
             {"user_name@example.com", "yu ze下划线 nei mu艾特 yi ge zan pa点 ka mu"},
             // A mention; an @ before no name is a symbol without a reading (a warning).
             {"@新华社", "艾特新华社"},
@@ -841,6 +841,23 @@ TEST_SUITE("written forms") {
             // An m before p or b is said n (camp 坎普); an l after a back vowel goes into it (call 扣).
             {"去camp", "去 kan pu"},
             {"有事call我", "有事 kou我"},
+        });
+    }
+
+    TEST_CASE("an English word's vowel as the loans keep it: ai before n, ie after ch and j, a final s si") {
+        // Each row but the last two failed on main 436b8aa: dai de lan, lan, wen, chai ke, zhai fu, fan zi,
+        // wen dou zi.
+        check_cases({
+            {"周五deadline", "周五 dai de lai en"},
+            {"加我line", "加我 lai en"},
+            {"Wayne来了", "wei en来了"},
+            {"你先check一下", "你先 qie ke一下"},
+            {"Jeff来了", "jie fu来了"},
+            {"10万fans", "十万 fan si"},
+            {"Windows 11", "wen dou si十一"},
+            // No fai keeps the glide: the n stays in the final (find fan de). A z written z stays zi (Liz).
+            {"Find X8", "fan de ai ke si八"},
+            {"Liz来了", "li zi来了"},
         });
     }
 
