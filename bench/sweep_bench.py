@@ -403,8 +403,16 @@ def make_cases(out, label, stem):
              "+0.2*(0.1+0.9*exp(-6*mod(t\\,0.375)))*sin(2*PI*t*440*pow(2\\,floor(mod(t/0.375\\,5))*2/12))"
              f":s=48000:d={length:.3f}"]
     voice = ["-i", ref]
+    # A drum kit alone (a beat under a stream, a backing track): a kick falling from 130 to 50 Hz on
+    # each beat, a snare (noise and 190 Hz) on the second and fourth, a hi-hat each half beat; as
+    # many low-energy frames as speech has, so the voice beside it needs the second witness.
+    drums = ["-f", "lavfi", "-i", "aevalsrc=0.3*(sin(2*PI*(50*mod(t\\,0.5)+3.2*(1-exp(-mod(t\\,0.5)/0.04))))"
+             "*exp(-mod(t\\,0.5)/0.15)+(0.5*(2*random(0)-1)+0.3*sin(2*PI*190*t))*exp(-mod(t+0.25\\,0.5)/0.1)"
+             "*lt(mod(t+0.25\\,1)\\,0.5)+0.2*(2*random(1)-1)*exp(-mod(t\\,0.25)/0.03))"
+             f":s=48000:d={length:.3f}"]
     for name, inputs in [("tracks_silent_voice.mp4", silence + voice), ("tracks_music_voice.mkv", music + voice),
-                         ("tracks_music_silent_voice.mp4", music + silence + voice)]:
+                         ("tracks_music_silent_voice.mp4", music + silence + voice),
+                         ("tracks_drums_voice.mkv", drums + voice), ("tracks_voice_drums.mkv", voice + drums)]:
         maps = ["-map", "0:v"] + [arg for i in range(inputs.count("-i")) for arg in ("-map", f"{i + 1}:a")]
         ffmpeg(*picture, *inputs, *maps, "-ar", "48000", "-c:v", "libx264", "-crf", "40", "-c:a", "aac", "-b:a", "64k",
                "-shortest", path(name))

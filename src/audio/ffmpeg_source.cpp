@@ -20,6 +20,7 @@ extern "C" {
 #include "audio/ffmpeg_messages.hpp"
 #include "audio/mp3_toc.hpp"
 #include "audio/mp4_index.hpp"
+#include "audio/voiced_share.hpp"
 #include "common/number_format.hpp"
 #include "talkface/errors.hpp"
 
@@ -96,7 +97,8 @@ constexpr double kTrackHearingS = 60.0;
 // 1997). Over every tuning passage of the corpora: the person's 0.24-0.60 of frames (clean, noise
 // at 15-30 dB, hum, music under the voice, a room, the phone), espeak-ng's 0.17-0.47 (the least
 // under white noise at 10 dB); held out 0.21-0.58. make_music_kinds's music alone: piano
-// 0.08-0.15, chord pad 0.01, sung line 0.09-0.11; a drum kit alone 0.35-0.50, as speech.
+// 0.08-0.15, chord pad 0.01, sung line 0.09-0.11; a drum kit alone 0.35-0.50, as speech (which
+// kLeastSpeechVoicedShare tells apart).
 constexpr double kLoudnessFrameS = 0.02;
 constexpr double kLowEnergyWindowS = 1.0;
 
@@ -104,6 +106,13 @@ constexpr double kLowEnergyWindowS = 1.0;
 // another must have to be read instead: the person's speech against the music nearest to it above
 // (0.24 against 0.15), while a film's languages, speech each, keep the default.
 constexpr double kSpeechOverDefaultRatio = 1.5;
+
+// A track voiced (voiced_share.hpp) in fewer of its frames than this is no speech, however many
+// low-energy frames it has: make_music_kinds's drum kit alone is voiced in 0.10-0.16 of its frames,
+// the sweep's (a 190 Hz snare under its noise) in 0.23, speech in 0.33 at the least over the
+// tuning passages of every corpus, noisy or not (held out 0.30; bench/README.md, Session 25,
+// several sound tracks).
+constexpr double kLeastSpeechVoicedShare = 0.27;
 
 // A track whose loudest frame is under this RMS (-60 dBFS) is silent: an empty track is zeros.
 constexpr double kSilentTrackRms = 1e-3;
@@ -185,7 +194,7 @@ private:
     ChannelMixer mixer_;
 };
 
-// One sound track's loudness, frame by frame, decoded from its packets as they come.
+// One sound track's loudness, frame by frame, and its samples, decoded from its packets as they come.
 class TrackHearing {
 public:
     explicit TrackHearing(const AVStream& stream) : time_base_(stream.time_base) {
@@ -200,7 +209,8 @@ public:
         }
         frame_.reset(av_frame_alloc());
         if (!frame_) throw std::bad_alloc();
-        frame_samples_ = std::max(1, static_cast<int>(kLoudnessFrameS * codec_->sample_rate));
+        sample_rate_hz_ = codec_->sample_rate;
+        frame_samples_ = std::max(1, static_cast<int>(kLoudnessFrameS * sample_rate_hz_));
     }
     TrackHearing(const TrackHearing&) = delete;
     TrackHearing& operator=(const TrackHearing&) = delete;
@@ -241,6 +251,13 @@ public:
         return static_cast<double>(low) / static_cast<double>(frames_.size());
     }
 
+    // Its share of low-energy frames if it is voiced as speech is, else 0: how much it sounds like
+    // speech.
+    double speech_share() const {
+        if (silent() || voiced_share(heard_, sample_rate_hz_) < kLeastSpeechVoicedShare) return 0.0;
+        return low_energy_share();
+    }
+
     bool silent() const {
         return std::all_of(frames_.begin(), frames_.end(), [](double rms) { return rms < kSilentTrackRms; });
     }
@@ -250,6 +267,7 @@ private:
         const int channels = frame.ch_layout.nb_channels;
         if (frame.nb_samples <= 0 || channels <= 0 || channels > kMaxChannels) return;
         if (!mixer_.takes(frame) || mixer_.mix(frame, 0, mono_) <= 0) return;
+        heard_.insert(heard_.end(), mono_.begin(), mono_.end());
         for (const float sample : mono_) {
             energy_ += static_cast<double>(sample) * sample;
             if (++samples_ < frame_samples_) continue;
@@ -265,6 +283,8 @@ private:
     std::unique_ptr<AVFrame, FrameFreer> frame_;
     FrameMixer mixer_;
     std::vector<float> mono_;
+    std::vector<float> heard_;  // all its samples, for voiced_share
+    int sample_rate_hz_ = 0;
     int frame_samples_ = 1;
     int samples_ = 0;
     double energy_ = 0.0;
@@ -463,8 +483,9 @@ private:
 
     // Of several sound tracks, the one that sounds most like speech (TrackHearing), heard up to
     // kTrackHearingS into each: FFmpeg's choice, `best` (the default track), unless it is silent
-    // or another has kSpeechOverDefaultRatio times its share of low-energy frames. The user is told
-    // which was read, that there are others, and how to align another.
+    // or another has kSpeechOverDefaultRatio times its share of low-energy frames (a track voiced
+    // too seldom to be speech, a drum kit's, counting none). The user is told which was read, that
+    // there are others, and how to align another.
     int choose_sound_track(int best) {
         const std::vector<int> tracks = sound_tracks();
         std::vector<std::unique_ptr<TrackHearing>> hearings;
@@ -484,12 +505,13 @@ private:
         const auto best_at =
             static_cast<std::size_t>(std::find(tracks.begin(), tracks.end(), best) - tracks.begin());
         std::size_t chosen = best_at;
-        const auto share = [&](std::size_t i) { return hearings[i]->low_energy_share(); };
+        std::vector<double> share;
+        for (const auto& hearing : hearings) share.push_back(hearing->speech_share());
         for (std::size_t i = 0; i < tracks.size(); ++i) {
             if (hearings[i]->silent()) continue;
             if (hearings[chosen]->silent() ||
-                (share(i) > share(chosen) &&
-                 (hearings[best_at]->silent() || share(i) > kSpeechOverDefaultRatio * share(best_at))))
+                (share[i] > share[chosen] &&
+                 (hearings[best_at]->silent() || share[i] > kSpeechOverDefaultRatio * share[best_at])))
                 chosen = i;
         }
         std::string reason;

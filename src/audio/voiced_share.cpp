@@ -1,0 +1,80 @@
+#include "audio/voiced_share.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace talkface::detail {
+
+namespace {
+
+// The rate a pitch is looked for at: a voice's pitch is under 400 Hz, and a box average down to
+// here keeps it.
+constexpr int kPitchRateHz = 8000;
+constexpr double kFrameS = 0.04;  // two periods of the lowest pitch
+constexpr double kHopS = 0.02;
+constexpr double kLowestPitchHz = 70.0;
+constexpr double kHighestPitchHz = 400.0;
+
+// How alike a frame must be to itself a period later to be voiced. Over the corpora and
+// make_music_kinds's music alone (bench/README.md, Session 25, several sound tracks), the least
+// voiced speech against the most voiced drum kit: 0.30 against 0.16 of frames at 0.5, 0.24 against
+// 0.15 at 0.6, 0.19 against 0.13 at 0.7 (held out included).
+constexpr double kVoicedCorrelation = 0.5;
+
+// A frame under this RMS (-60 dBFS) is silence, as a silent track's is (ffmpeg_source.cpp).
+constexpr double kSilentFrameRms = 1e-3;
+
+std::vector<double> averaged_down(const std::vector<float>& samples, std::size_t factor) {
+    std::vector<double> out(samples.size() / factor);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        double sum = 0.0;
+        for (std::size_t j = 0; j < factor; ++j) sum += samples[i * factor + j];
+        out[i] = sum / static_cast<double>(factor);
+    }
+    return out;
+}
+
+// Only a lag past the autocorrelation's first fall to zero is a period: at a short lag any sound of
+// low frequencies is alike to itself (a kick drum's 55 Hz thud a 400 Hz period later, 0.65-0.72).
+bool is_voiced(const double* frame, std::size_t length, std::size_t shortest_lag, std::size_t longest_lag) {
+    double energy = 0.0;
+    for (std::size_t i = 0; i < length; ++i) energy += frame[i] * frame[i];
+    if (std::sqrt(energy / static_cast<double>(length)) < kSilentFrameRms) return false;
+    bool crossed_zero = false;
+    for (std::size_t lag = 1; lag <= longest_lag; ++lag) {
+        double product = 0.0;
+        double head = 0.0;
+        double tail = 0.0;
+        for (std::size_t i = 0; i + lag < length; ++i) {
+            product += frame[i] * frame[i + lag];
+            head += frame[i] * frame[i];
+            tail += frame[i + lag] * frame[i + lag];
+        }
+        if (crossed_zero && lag >= shortest_lag && product > 0.0 &&
+            product >= kVoicedCorrelation * std::sqrt(head * tail))
+            return true;
+        crossed_zero = crossed_zero || product <= 0.0;
+    }
+    return false;
+}
+
+}  // namespace
+
+double voiced_share(const std::vector<float>& samples, int sample_rate_hz) {
+    const auto factor = static_cast<std::size_t>(std::max(1, sample_rate_hz / kPitchRateHz));
+    const std::vector<double> signal = averaged_down(samples, factor);
+    const double rate = static_cast<double>(sample_rate_hz) / static_cast<double>(factor);
+    const auto length = static_cast<std::size_t>(kFrameS * rate);
+    const auto hop = static_cast<std::size_t>(kHopS * rate);
+    const auto shortest_lag = static_cast<std::size_t>(rate / kHighestPitchHz);
+    const auto longest_lag = static_cast<std::size_t>(rate / kLowestPitchHz);
+    if (signal.size() < length || hop == 0 || longest_lag >= length) return 0.0;
+    std::size_t frames = 0;
+    std::size_t voiced = 0;
+    for (std::size_t start = 0; start + length <= signal.size(); start += hop, ++frames)
+        if (is_voiced(signal.data() + start, length, shortest_lag, longest_lag)) ++voiced;
+    return static_cast<double>(voiced) / static_cast<double>(frames);
+}
+
+}  // namespace talkface::detail
