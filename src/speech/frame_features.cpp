@@ -24,7 +24,6 @@ constexpr std::size_t kBlockFrames = 8192;
 constexpr double kMostReservedS = 3600.0;
 constexpr std::size_t kFftSize = PowerSpectrum::kSize;
 constexpr std::size_t kBins = PowerSpectrum::kBins;
-constexpr int kMelFilters = 24;
 // Below this peak (-80 dBFS) there is no speech to align, only dither or digital silence.
 constexpr float kSilentPeak = 1e-4f;
 // Dither (standard deviation: 0.3 of a 16-bit step, about -100 dBFS) added to every sample of the

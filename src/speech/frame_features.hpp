@@ -39,6 +39,9 @@ constexpr float kDigitalSilenceDb = -99.0f;
 // which a timeline's JSON then prints as 3.57.
 constexpr double frame_time_s(std::size_t frame) { return static_cast<double>(frame) / kFramesPerSecond; }
 
+// The mel bands behind the cepstra, 100-7600 Hz (the cepstra keep kCepstrumCount of their DCT).
+constexpr int kMelFilters = 24;
+
 // Columns of a feature frame.
 enum FeatureColumn : int {
     kCepstrum0 = 0,                 // MFCC c0..c12

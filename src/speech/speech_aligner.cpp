@@ -21,6 +21,7 @@
 #include "speech/frame_features.hpp"
 #include "speech/given_spans_alignment.hpp"
 #include "speech/hsmm.hpp"
+#include "speech/late_reverb.hpp"
 #include "speech/lenient_chain.hpp"
 #include "speech/phone_chain.hpp"
 #include "speech/room_closures.hpp"
@@ -271,11 +272,21 @@ void set_sentence_times(const std::vector<FrameSpan>& spans, Timeline& result) {
     }
 }
 
+// A room's recording without its ringing (late_reverb.hpp), where the syllables given out are
+// placed: its features, the models re-estimated on them, and a chain's observations and scores.
+struct DryRoom {
+    FeatureTrack track;
+    Reestimation learned;
+    std::vector<float> observations;
+    EmissionScores scores;
+};
+
 // One alignment of a cut's sentences, before the checks judge it.
 struct CutAlignment {
     Timeline result;
-    // In a room (room_closures.hpp), the syllables placed again with the closures ringing: given
-    // out in the end, while every check reads `result`, the silent closures' placement.
+    // In a room (room_closures.hpp), the syllables placed again with the closures ringing, on the
+    // features without the room's ringing (late_reverb.hpp): given out in the end, while every
+    // check reads `result`, the silent closures' placement on the recorded features.
     std::optional<Timeline> room_result;
     std::vector<FrameSpan> spans;
     std::vector<SentenceMetrics> metrics;
@@ -386,8 +397,9 @@ struct LenientEvidence {
 // together), and, when `is_checked`, check_path on each path; when `is_lenient`, the final pass on
 // lenient chains (lenient_chain.hpp). With `is_kept_to_marks`, keep_pauses_to_marks on every chain;
 // with `is_nasal_release_allowed`, let_closures_after_nasals_be_skipped on every chain. In a room
-// (is_room), each chain is also placed with its closures ringing (let_closures_ring), on the same
-// models, into `room_result`.
+// (is_room), each chain is also placed with its closures ringing (let_closures_ring) into
+// `room_result`, on the features without the room's ringing (late_reverb.hpp) and models
+// re-estimated on them.
 CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
                           const SentenceCut& cut, ProgressReporter& progress, bool is_checked, bool is_lenient,
                           bool is_kept_to_marks, bool is_nasal_release_allowed) {
@@ -416,6 +428,20 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
     result.duration_s = track.duration_s;
     // Lenient alignment places its syllables on chains of its own (lenient_chain.hpp).
     if (!is_lenient && is_room(chains)) aligned.room_result = result;
+    // In a room the syllables given out are placed on the features without the room's ringing
+    // (late_reverb.hpp), on models re-estimated on them: a quiet onset after a vowel is no longer
+    // the vowel ringing on. Every check judges the recorded features: on the dry ones a wrong text
+    // fits its speech about as well as a right one (bench/README.md Sessions 24 and 25).
+    std::optional<DryRoom> dry;
+    if (aligned.room_result) {
+        if (const auto ringing = measure_room_ringing(track, chains)) {
+            dry.emplace();
+            dry->track = without_late_ringing(track, *ringing);
+            dry->learned = reestimate(dry->track, loudness, transcript, chains, progress);
+        }
+    }
+    const FeatureTrack& placed_track = dry ? dry->track : track;
+    const Reestimation& placed_learned = dry ? dry->learned : learned;
     std::vector<SyllableEvidence> room_evidence(aligned.room_result ? transcript.syllables.size() : 0);
     std::vector<SentenceMetrics>& metrics = aligned.metrics;
     metrics.assign(spans.size(), SentenceMetrics());
@@ -514,15 +540,21 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
                                                                        frames_on_path(chains[w], learned.last_paths[w])};
         if (aligned.room_result) {
             // Before measure_chain, which leaves held-out models' scores in `scores`.
+            EmissionScores& room_scores = dry ? dry->scores : scores;
+            if (dry) {
+                observe(dry->track, loudness, chains[w].searched, dry->observations);
+                dry->learned.model.score(dry->observations.data(), chains[w].searched.length(), room_scores);
+            }
             SentenceChain ringing = chains[w];
             let_closures_ring(ringing.states);
-            const auto room_path =
-                align_chain(ringing, scores, workspace, scores.frame_count, transcript, &room_marginals);
+            const auto room_path = align_chain(ringing, room_scores, workspace, room_scores.frame_count,
+                                               transcript, &room_marginals);
             const std::vector<std::vector<SyllableFrames>> room_other_frames = {
-                light_search(ringing, scores, workspace, kLightSoundsWeight, true),
-                light_search(ringing, scores, workspace, kLightSoundsWeight, false), other_frames.back()};
-            place_syllables(ringing, w, room_path, room_other_frames, scores, track, *aligned.room_result,
-                            room_evidence);
+                light_search(ringing, room_scores, workspace, kLightSoundsWeight, true),
+                light_search(ringing, room_scores, workspace, kLightSoundsWeight, false),
+                frames_on_path(chains[w], placed_learned.last_paths[w])};
+            place_syllables(ringing, w, room_path, room_other_frames, room_scores, placed_track,
+                            *aligned.room_result, room_evidence);
             const std::vector<double> room_sureness = start_sureness(ringing, room_path, room_marginals);
             const std::vector<double> room_far = far_start_share(ringing, room_path, room_marginals);
             for (std::size_t local = 0; local < room_sureness.size(); ++local) {

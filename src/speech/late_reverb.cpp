@@ -1,0 +1,140 @@
+#include "speech/late_reverb.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "common/order_statistics.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+// The band levels the models read besides the cepstra (observe: loudness, tilt, low band), and
+// the mid band with them, as a stage that reads one reads the others.
+constexpr std::array<int, 4> kBandColumns = {kEnergyDb, kLowBandDb, kMidBandDb, kHighBandDb};
+constexpr std::size_t kFollowedBands = kMelFilters + kBandColumns.size();
+
+double db_to_power(double db) {
+    return std::pow(10.0, db / 10.0);
+}
+
+// The least-squares line through the levels of frames [first, end): its level at `first` and its
+// change a frame.
+struct Line {
+    double start_db = 0.0;
+    double slope_db_per_frame = 0.0;
+};
+
+Line fit_line(const FeatureTrack& track, std::size_t first, std::size_t end) {
+    const double n = static_cast<double>(end - first);
+    double sum_x = 0.0, sum_y = 0.0, sum_xx = 0.0, sum_xy = 0.0;
+    for (std::size_t t = first; t < end; ++t) {
+        const double x = static_cast<double>(t - first);
+        const double y = track.at(t, kEnergyDb);
+        sum_x += x;
+        sum_y += y;
+        sum_xx += x * x;
+        sum_xy += x * y;
+    }
+    const double spread = n * sum_xx - sum_x * sum_x;
+    const double slope = spread > 0.0 ? (n * sum_xy - sum_x * sum_y) / spread : 0.0;
+    return {(sum_y - slope * sum_x) / n, slope};
+}
+
+// The DCT of frame_features' cepstra and its inverse over the mel bands, as far as the cepstra
+// keep it: the bands read from a frame's cepstra give those cepstra back.
+class MelCepstrum {
+public:
+    MelCepstrum() {
+        for (std::size_t c = 0; c < kCepstrumCount; ++c)
+            for (std::size_t m = 0; m < kMelFilters; ++m)
+                cosine_[c][m] =
+                    std::cos(M_PI * static_cast<double>(c) * (static_cast<double>(m) + 0.5) / kMelFilters);
+    }
+
+    void to_bands(const float* cepstrum, std::array<double, kMelFilters>& log_mel) const {
+        for (std::size_t m = 0; m < kMelFilters; ++m) {
+            double sum = cepstrum[0] / 2.0;
+            for (std::size_t c = 1; c < kCepstrumCount; ++c) sum += cepstrum[c] * cosine_[c][m];
+            log_mel[m] = 2.0 * sum / kMelFilters;
+        }
+    }
+
+    void to_cepstrum(const std::array<double, kMelFilters>& log_mel, float* cepstrum) const {
+        for (std::size_t c = 0; c < kCepstrumCount; ++c) {
+            double sum = 0.0;
+            for (std::size_t m = 0; m < kMelFilters; ++m) sum += cosine_[c][m] * log_mel[m];
+            cepstrum[c] = static_cast<float>(sum);
+        }
+    }
+
+private:
+    std::array<std::array<double, kMelFilters>, kCepstrumCount> cosine_{};
+};
+
+}  // namespace
+
+std::optional<RoomRinging> measure_room_ringing(const FeatureTrack& track,
+                                                const std::vector<SentenceChain>& chains) {
+    struct Tail {
+        const SentenceChain* chain;
+        std::size_t first_frame;
+        Line line;
+    };
+    std::vector<Tail> tails;
+    std::vector<double> decays;
+    for (const SentenceChain& chain : chains) {
+        if (!chain.ends_in_tail) continue;
+        const std::size_t first = chain.speech.end_frame - chain.tail_frames;
+        const Line line = fit_line(track, first, chain.speech.end_frame);
+        if (!(line.slope_db_per_frame < 0.0)) continue;
+        tails.push_back({&chain, first, line});
+        decays.push_back(-line.slope_db_per_frame);
+    }
+    if (tails.empty()) return std::nullopt;
+    RoomRinging room;
+    room.decay_db_per_frame = mean_median(decays);
+    const double decay = db_to_power(-room.decay_db_per_frame);
+    std::vector<double> shares;
+    for (const Tail& tail : tails) {
+        // The frames as heard, ringing and all: the share read is, if anything, a little low.
+        double voice = 0.0, weight = 1.0;
+        for (std::size_t t = tail.first_frame; t-- > tail.chain->speech.first_frame;) {
+            voice += weight * db_to_power(track.at(t, kEnergyDb));
+            weight *= decay;
+        }
+        shares.push_back(db_to_power(tail.line.start_db) / voice);
+    }
+    room.voice_share = mean_median(shares);
+    return room;
+}
+
+FeatureTrack without_late_ringing(const FeatureTrack& track, const RoomRinging& room) {
+    const double decay = db_to_power(-room.decay_db_per_frame);
+    const double floor = db_to_power(-kDryFloorDb);
+    const MelCepstrum transform;
+    FeatureTrack dry = track;
+    std::array<double, kFollowedBands> ringing{}, voice{};
+    std::array<double, kMelFilters> log_mel{};
+    for (std::size_t t = 0; t < track.frame_count; ++t) {
+        float* row = &dry.values[t * kFeatureCount];
+        transform.to_bands(row + kCepstrum0, log_mel);
+        auto take_out = [&](std::size_t band, double power) {
+            ringing[band] = decay * ringing[band] + room.voice_share * voice[band];
+            voice[band] = std::max(power - ringing[band], floor * power);
+            return voice[band];
+        };
+        for (std::size_t m = 0; m < kMelFilters; ++m)
+            log_mel[m] = std::log(take_out(m, std::exp(log_mel[m])));
+        transform.to_cepstrum(log_mel, row + kCepstrum0);
+        for (std::size_t b = 0; b < kBandColumns.size(); ++b) {
+            float& level_db = row[kBandColumns[b]];
+            level_db =
+                static_cast<float>(10.0 * std::log10(take_out(kMelFilters + b, db_to_power(level_db))));
+        }
+    }
+    return dry;
+}
+
+}  // namespace talkface::detail
