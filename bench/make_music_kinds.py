@@ -5,11 +5,16 @@
 # passage's music is drawn from a seed of its condition and name, so the same files come out every
 # time. Needs numpy (Debian's python3-numpy).
 #
-#   /usr/bin/python3 bench/make_music_kinds.py HUMAN_CORPUS/r-clean OUT
+#   /usr/bin/python3 bench/make_music_kinds.py HUMAN_CORPUS/r-clean OUT [--alone]
 #   build/bin/align_bench OUT
+#
+# --alone writes each passage's music without the voice, at the level it has under it, beside the
+# voice's transcript (conditions m-piano-alone ...): a recording that holds no speech, which the
+# aligner is to refuse as such.
 import numpy as np, json, wave, os, shutil, sys, zlib
 SR=16000
 src, out = sys.argv[1], sys.argv[2]
+alone = sys.argv[3:] == ['--alone']
 def load(p):
     w=wave.open(p); return np.frombuffer(w.readframes(w.getnframes()),dtype=np.int16).astype(np.float64)/32768
 def save(p,x):
@@ -99,22 +104,25 @@ def drums(n,rng):
 kinds={'m-piano':piano,'m-pad':pad,'m-sung':sung,'m-drums':drums}
 names=sorted(f[:-4] for f in os.listdir(src) if f.endswith('.wav'))
 os.makedirs(out,exist_ok=True)
+described={'m-piano':'piano-like notes and chords','m-pad':'a sustained chord pad',
+           'm-sung':'a sung line (one voice, formants, vibrato)','m-drums':'a drum kit alone'}
+suffix='-alone' if alone else ''
 with open(out+'/conditions.txt','w') as c:
-    c.write('m-piano\trunning speech (r-clean), piano-like notes and chords, SNR 15-20 dB\n')
-    c.write('m-pad\trunning speech (r-clean), a sustained chord pad, SNR 15-20 dB\n')
-    c.write('m-sung\trunning speech (r-clean), a sung line (one voice, formants, vibrato), SNR 15-20 dB\n')
-    c.write('m-drums\trunning speech (r-clean), a drum kit alone, SNR 15-20 dB\n')
+    for kind,what in described.items():
+        speech='no speech: the music alone at its level under' if alone else 'running speech'
+        c.write(f'{kind}{suffix}\t{speech} (r-clean), {what}, SNR 15-20 dB\n')
 for kind,fn in kinds.items():
-    os.makedirs(f'{out}/{kind}',exist_ok=True)
+    folder=f'{out}/{kind}{suffix}'
+    os.makedirs(folder,exist_ok=True)
     for nm in names:
         rng=np.random.default_rng(zlib.crc32((kind+nm).encode()))
         x=load(f'{src}/{nm}.wav'); d=json.load(open(f'{src}/{nm}.json'))
         mask=np.zeros(len(x),bool)
         for s in d['sentences']: mask[int(s['start']*SR):int(s['end']*SR)]=True
         ps=np.mean(x[mask]**2); m=fn(len(x),rng); pm=np.mean(m**2)
-        snr=rng.uniform(15,20); y=x+m*np.sqrt(ps/pm/10**(snr/10))
+        snr=rng.uniform(15,20); y=(0 if alone else x)+m*np.sqrt(ps/pm/10**(snr/10))
         pk=np.max(np.abs(y));
         if pk>0.99: y*=0.99/pk
-        save(f'{out}/{kind}/{nm}.wav',y)
-        for ext in ('txt','json'): shutil.copy(f'{src}/{nm}.{ext}',f'{out}/{kind}/{nm}.{ext}')
+        save(f'{folder}/{nm}.wav',y)
+        for ext in ('txt','json'): shutil.copy(f'{src}/{nm}.{ext}',f'{folder}/{nm}.{ext}')
     print(kind,'done',flush=True)
