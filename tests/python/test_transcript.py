@@ -265,7 +265,7 @@ def test_addresses_calling_codes_and_no_1_are_read_aloud():
     address = timeline.written_forms[0]
     said = timeline.syllables[address.first_syllable:address.first_syllable + address.syllable_count]
     assert [s.text for s in said][2:4] == ["艾", "特"]
-    assert "".join(s.text for s in said[4:]) == "一六三点kan"
+    assert "".join(s.text for s in said[4:]) == "一六三点kamu"
     code = timeline.written_forms[1]
     assert "".join(s.text for s in timeline.syllables[code.first_syllable:code.first_syllable + 3]) == "加八六"
     assert len(timeline.sentences) == 2
