@@ -149,8 +149,8 @@ public:
         }
         for (int c = 0; c < kCepstrumCount; ++c)
             for (int m = 0; m < kMelFilters; ++m)
-                dct_[static_cast<std::size_t>(c)][static_cast<std::size_t>(m)] =
-                    static_cast<float>(std::cos(M_PI * c * (m + 0.5) / kMelFilters));
+                dct_[static_cast<std::size_t>(c)][static_cast<std::size_t>(m)] = static_cast<float>(
+                    mel_cepstrum_cosine(static_cast<std::size_t>(c), static_cast<std::size_t>(m)));
         // The first window reaches kWindowLeadSamples before time 0.
         pending_.assign(kWindowLeadSamples, 0.0f);
     }
@@ -367,6 +367,10 @@ private:
 };
 
 }  // namespace
+
+double mel_cepstrum_cosine(std::size_t c, std::size_t m) {
+    return std::cos(M_PI * static_cast<double>(c) * (static_cast<double>(m) + 0.5) / kMelFilters);
+}
 
 FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)>& on_progress,
                            bool with_pitch, std::size_t skipped_samples) {

@@ -42,6 +42,10 @@ constexpr double frame_time_s(std::size_t frame) { return static_cast<double>(fr
 // The mel bands behind the cepstra, 100-7600 Hz (the cepstra keep kCepstrumCount of their DCT).
 constexpr int kMelFilters = 24;
 
+// The DCT's basis over the mel bands: cepstrum c is the sum over bands m of this times the band's log
+// level (frame_features' cepstra; late_reverb.cpp goes back to the bands with it).
+double mel_cepstrum_cosine(std::size_t c, std::size_t m);
+
 // Columns of a feature frame.
 enum FeatureColumn : int {
     kCepstrum0 = 0,                 // MFCC c0..c12

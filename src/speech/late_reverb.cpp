@@ -48,9 +48,7 @@ class MelCepstrum {
 public:
     MelCepstrum() {
         for (std::size_t c = 0; c < kCepstrumCount; ++c)
-            for (std::size_t m = 0; m < kMelFilters; ++m)
-                cosine_[c][m] =
-                    std::cos(M_PI * static_cast<double>(c) * (static_cast<double>(m) + 0.5) / kMelFilters);
+            for (std::size_t m = 0; m < kMelFilters; ++m) cosine_[c][m] = mel_cepstrum_cosine(c, m);
     }
 
     void to_bands(const float* cepstrum, std::array<double, kMelFilters>& log_mel) const {
