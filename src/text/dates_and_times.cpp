@@ -9,23 +9,29 @@ namespace talkface::detail {
 
 namespace {
 
-// A pair of whole numbers joined by a dash that ends right before text[end] (the 6-4 of 6-4、): where it
-// starts, or nullopt.
-std::optional<std::size_t> dashed_pair_before(const std::vector<CodePoint>& text, std::size_t end) {
+// Whether c joins a pair's two numbers as the pair's own mark does: a colon (23:25) or a dash (6-4).
+bool joins_pair(char32_t c, bool colon) {
+    return colon ? c == ':' : is_dash(c);
+}
+
+// A pair of whole numbers joined by a dash (or a colon) that ends right before text[end] (the 6-4 of
+// 6-4、): where it starts, or nullopt.
+std::optional<std::size_t> pair_before(const std::vector<CodePoint>& text, std::size_t end, bool colon) {
     auto first = end;
     while (first > 0 && is_digit_at(text, first - 1)) --first;
-    if (first == end || first < 2 || !is_dash(value_at(text, first - 1)) || !is_digit_at(text, first - 2))
+    if (first == end || first < 2 || !joins_pair(value_at(text, first - 1), colon) ||
+        !is_digit_at(text, first - 2))
         return std::nullopt;
     first -= 1;
     while (first > 0 && is_digit_at(text, first - 1)) --first;
     return first;
 }
 
-// A pair of whole numbers joined by a dash that starts at text[start] (the 3-6 of 、3-6): where it ends,
-// or nullopt.
-std::optional<std::size_t> dashed_pair_from(const std::vector<CodePoint>& text, std::size_t start) {
+// A pair of whole numbers joined by a dash (or a colon) that starts at text[start] (the 3-6 of 、3-6):
+// where it ends, or nullopt.
+std::optional<std::size_t> pair_from(const std::vector<CodePoint>& text, std::size_t start, bool colon) {
     auto end = start;
-    if (digits_from(text, end).empty() || !is_dash(value_at(text, end))) return std::nullopt;
+    if (digits_from(text, end).empty() || !joins_pair(value_at(text, end), colon)) return std::nullopt;
     ++end;
     if (digits_from(text, end).empty()) return std::nullopt;
     return end;
@@ -78,15 +84,19 @@ bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t
     // A pair listed with a score, 、 between them, is one too: after it (比分为25-18、25-20: the clause named
     // the first; session 22: 二十五到二十), or before it, as a list of sets ends with its result (他以6-4、
     // 3-6、7-5赢下比赛; session 24: 六到四、三到六). A measure word after a later pair makes it a range.
+    // The pairs listed are joined as this one is: a volleyball match's sets with colons (比分为23:25、
+    // 25:20、22:25; session 26: the sets that could be clock times were read so, 二十二点二十五分).
     constexpr char32_t kListMark = 0x3001;  // 、
+    bool colon = false;
+    for (auto k = start; k < end; ++k) colon = colon || value_at(text, k) == ':';
     for (auto at = start; at > 0 && value_at(text, at - 1) == kListMark;) {
-        const auto first = dashed_pair_before(text, at - 1);
+        const auto first = pair_before(text, at - 1, colon);
         if (!first) break;
         if (names_score(text, *first, at - 1, dashed)) return true;
         at = *first;
     }
     for (auto at = end; value_at(text, at) == kListMark;) {
-        const auto last = dashed_pair_from(text, at + 1);
+        const auto last = pair_from(text, at + 1, colon);
         if (!last) break;
         if (names_score(text, at + 1, *last, dashed && !takes_liang(value_at(text, *last)))) return true;
         at = *last;
@@ -358,11 +368,13 @@ std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text,
     auto i = month.end + 1;
     const auto day = digits_from(text, i);
     if (!is_month_and_day(month.whole, day) || value_at(text, i) == '.' || value_at(text, i) == '/') return std::nullopt;
-    // A range of two days (10/1-10/7): the second day no earlier than the first (1/3~1/2 is no range
-    // of days), and the words after the second day decide for both.
+    // A range of two days (10/1-10/7, and 12/1至12/31 since session 26: it was two fractions): the second
+    // day no earlier than the first (1/3~1/2 is no range of days), and the words after the second day
+    // decide for both.
     auto first_end = i;
     std::string second_day_words;
-    if (is_range_mark(value_at(text, i)) && is_digit_at(text, i + 1)) {
+    const bool range_word = is_one_of(value_at(text, i), U"至到");
+    if ((is_range_mark(value_at(text, i)) || range_word) && is_digit_at(text, i + 1)) {
         auto k = i + 1;
         const auto second_month = digits_from(text, k);
         if (value_at(text, k) == '/' && is_digit_at(text, k + 1)) {
@@ -371,7 +383,9 @@ std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text,
             if (is_month_and_day(second_month, second_day) && value_at(text, k) != '/' && value_at(text, k) != '.' &&
                 std::make_pair(std::stoi(second_month), std::stoi(second_day)) >=
                     std::make_pair(std::stoi(month.whole), std::stoi(day))) {
-                second_day_words = "到" + cardinal_words(second_month, false) + "月" + cardinal_words(second_day, false) + "日";
+                second_day_words = (range_word ? std::string(text[first_end].text) : std::string("到")) +
+                                   cardinal_words(second_month, false) + "月" +
+                                   cardinal_words(second_day, false) + "日";
                 i = k;
             }
         }
@@ -384,11 +398,12 @@ std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text,
                              (i < text.size() && takes_liang(text[i].value));
     if (!in_time && is_fraction) return std::nullopt;
     auto before = text_before(text, start, true);
-    // A word of time before it names what the day is (展会时间为12/3-12/5, 日期：9/18).
+    // A word of time before it names what the day is (展会时间为12/3-12/5, 日期：9/18, and a period's
+    // days since session 26: 活動期間為12/1至12/31).
     auto named = before;
     while (!named.empty() && ends_with_any(named, {"为", "為", "是", "：", ":", " "}))
         named.erase(named.size() - (named.back() == ':' || named.back() == ' ' ? 1 : std::string_view("为").size()));
-    in_time = in_time || ends_with_any(named, {"时间", "時間", "日期"});
+    in_time = in_time || ends_with_any(named, {"时间", "時間", "日期", "期间", "期間"});
     // In brackets after a day of the week (本週三（12/4）, 周五(3/8)), as news dates an event.
     if (ends_with(named, "（") || ends_with(named, "(")) {
         named.erase(named.size() - (named.back() == '(' ? 1 : std::string_view("（").size()));

@@ -49,6 +49,10 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     // as classrooms say it; the dictionary's word, sin, gave xin. cos (kou si) and tan (the pinyin tan)
     // are said as written, as they are in class.
     {"sin", "sai4 yin1"},
+    // Session 26: APEC, which the dictionary has as a word (ei pai ke), is spelled as Mandarin news and its
+    // speakers spell it (APEC会议, APEC蓝): unlike OPEC 欧佩克, AIDS 艾滋 and SARS 萨斯 it has no loan said
+    // as a word, only its Chinese name, 亚太经合组织, and its letters.
+    {"apec", "ei1 pi1 yi4 xi1"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

@@ -353,6 +353,20 @@ bool has_tone_digit(const std::vector<CodePoint>& token) {
     return std::any_of(token.begin(), token.end(), [](const CodePoint& c) { return is_digit(c.value); });
 }
 
+// Whether a pinyin split without tone digits holds a syllable only an interjection writes (m 呣, n 嗯,
+// ng, hm, hng, lo 咯, yo 哟) beside others: no word or name spells one inside it, so the letters are a
+// Latin word that happens to split (team te a m, Elon E lo n; session 26), not pinyin. A token that is
+// that syllable alone (n, hm) is the interjection.
+bool splits_into_interjection(const std::vector<WrittenSyllable>& split) {
+    constexpr std::string_view kInterjectionOnly[] = {"m", "n", "ng", "hm", "hng", "lo", "yo"};
+    if (split.size() < 2) return false;
+    return std::any_of(split.begin(), split.end(), [&](const WrittenSyllable& syllable) {
+        const auto toneless = syllable.pinyin.substr(0, syllable.pinyin.size() - 1);
+        return std::find(std::begin(kInterjectionOnly), std::end(kInterjectionOnly), toneless) !=
+               std::end(kInterjectionOnly);
+    });
+}
+
 struct HanCharacter {
     const CodePoint* code_point;  // where it stands in the transcript; nullptr in a form's reading
     std::string_view text;
@@ -560,6 +574,7 @@ private:
         if (in_chemical_formula(text, start)) return read_latin(text, start);
         if (options_.read_pinyin && looks_like_pinyin(token) && !is_english_among_han && !is_formula_letter)
             syllables = split_pinyin(token);
+        if (syllables && !has_tone_digit(token) && splits_into_interjection(*syllables)) syllables.reset();
         if (!syllables) return read_latin(text, start);
         for (const auto& c : token) append_text(c.text);
         for (auto& syllable : *syllables)
