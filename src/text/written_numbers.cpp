@@ -424,13 +424,17 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
         const bool is_laugh = whole.front() == '2' && whole.find_first_not_of('3', 1) == std::string::npos &&
                               (whole.size() >= 4 || (whole.size() == 3 && context.after_laugh));
         // A filter grade is a name before any word (N95口罩: 口 is no measure word there). A round
-        // thousand after capitals is a tier, not a model (WTA 1000 一千, RTX 5000 五千).
-        const bool is_round_thousands = whole.size() >= 4 && whole.compare(whole.size() - 3, 3, "000") == 0;
+        // thousand after capitals is a tier, not a model (WTA 1000 一千, RTX 5000 五千), and so is a round
+        // hundred of three digits but in a train's or a flight's number (HDR400 四百, A100 一百, C200 二百;
+        // session 26: 四零零).
+        const bool is_round_tier = (whole.size() >= 4 && whole.compare(whole.size() - 3, 3, "000") == 0) ||
+                                   (whole.size() == 3 && whole.compare(1, 2, "00") == 0 && !context.is_train);
         if (context.is_grade ||
-            (!counts && (context.is_generation || context.is_hundredths || context.is_code ||
-                         (context.is_model && whole.size() >= 3 && !is_round_thousands) ||
-                         (context.names_type && whole.size() >= 2) || context.names_day ||
-                         ((is_one_digit_over || is_laugh) && !context.has_currency && !context.is_ordinal)))) {
+            (!counts &&
+             (context.is_generation || context.is_hundredths || context.is_code ||
+              (context.is_model && whole.size() >= 3 && !is_round_tier) ||
+              (context.names_type && whole.size() >= 2) || context.names_day ||
+              ((is_one_digit_over || is_laugh) && !context.has_currency && !context.is_ordinal)))) {
             said.words = digit_words(whole);
             return said;
         }

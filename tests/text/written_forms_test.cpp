@@ -1391,6 +1391,19 @@ TEST_SUITE("written forms") {
         CHECK(sixteen.warnings.empty());
         CHECK(said(sixteen).find("万") != std::string::npos);
     }
+
+    TEST_CASE("a round hundred after capitals is a tier, as a round thousand is") {
+        // The first two failed on main 61e9b85 (session 26, dev16's HDR400: 四零零).
+        check_cases({
+            {"支持HDR400", "支持 ai qi di a er四百"},
+            {"英伟达A100芯片", "英伟达 ei一百芯片"},
+            // The limits: a train's and a flight's number, a model's number that is no round hundred.
+            {"G100次列车", "ji幺零零次列车"},
+            {"乘坐CA100航班", "乘坐 xi ei幺零零航班"},
+            {"空客A380", "空客 ei三八零"},
+        });
+    }
+
     TEST_CASE(
         "a match's sets listed with colons, a period's days with 至, Latin words that split into "
         "interjections") {
