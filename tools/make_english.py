@@ -78,8 +78,11 @@ GLIDE_BEFORE_N = {"ay", "ey", "oy"}
 IE_AFTER = {"ch", "zh", "sh"}
 NASAL = {("a", "n"): "an", ("a", "ng"): "ang", ("e", "n"): "en", ("e", "ng"): "eng", ("i", "n"): "in",
          ("i", "ng"): "ing", ("u", "n"): "un", ("u", "ng"): "ong", ("ai", "n"): "an", ("ai", "ng"): "ang",
-         ("ei", "n"): "en", ("ei", "ng"): "eng", ("ao", "n"): "an", ("ao", "ng"): "ang", ("ou", "n"): "ong",
+         ("ei", "n"): "en", ("ei", "ng"): "eng", ("ao", "n"): "ang", ("ao", "ng"): "ang", ("ou", "n"): "ong",
          ("ou", "ng"): "ong", ("o", "n"): "ong", ("o", "ng"): "ong", ("er", "n"): "en", ("er", "ng"): "eng"}
+# An aw before n is ang, as the loans write it (布朗 Brown, 克朗 crown, 唐宁 Downing, 蒙巴顿 Mountbatten) and
+# Mandarin speakers say down (当) and town: session 26, it was an (brown ban, town tan, down dan), which no loan
+# writes for it.
 # Nearest finals to try, in order, when initial + final is not a Mandarin syllable.
 NEAREST = {"i": ["ei", "ai"], "in": ["en"], "ing": ["eng"], "ei": ["ai", "i"], "ai": ["a", "ei"],
            "ou": ["o", "u", "ao"], "o": ["ou", "uo", "ao", "a"], "ao": ["ou", "a"], "u": ["ou", "o"],
@@ -165,7 +168,13 @@ def map_word(syllables, spelling=""):
         if index + 1 == len(syllables) > 1 and vowel == "ax" and not coda and spelling.endswith("a"):
             final = "a"
         next_phone = syllables[index + 1][0][0] if index + 1 < len(syllables) else None
-        glide_kept = vowel in GLIDE_BEFORE_N and legal_syllable(initial, final).endswith(final)
+        # A name's last -stein is 斯坦, si tan, as the loans write it whether English says it stine or steen
+        # (爱因斯坦 Einstein, 伯恩斯坦 Bernstein, 爱泼斯坦 Epstein, 弗兰肯斯坦 Frankenstein, 戈德斯坦 Goldstein), by
+        # the German ei's older convention: session 26, it was tai en (Einstein ai en si tai en).
+        is_stein = next_phone is None and spelling.endswith("stein") and initial == "t" and coda == ["n"]
+        if is_stein:
+            final = "an"
+        glide_kept = not is_stein and vowel in GLIDE_BEFORE_N and legal_syllable(initial, final).endswith(final)
         s_spelled = next_phone is None and spelling.removesuffix("e").endswith("s")
         nasal, consonants = coda_syllables(vowel, coda, next_phone, glide_kept, s_spelled)
         if nasal is not None:

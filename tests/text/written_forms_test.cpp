@@ -861,6 +861,16 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("an aw before n is ang, a name's -stein si tan, as the loans write them") {
+        // Each row failed on main 61e9b85: ban, dan tan, ai en si tai en, ben si tai en.
+        check_cases({
+            {"Brown先生", "bang先生"},
+            {"downtown", "dang tang"},
+            {"Einstein的相对论", "ai en si tan的相对论"},
+            {"Bernstein指挥", "ben si tan指挥"},
+        });
+    }
+
     TEST_CASE("every letter name and every English reading is a syllable the aligner and the lips take") {
         for (char letter = 'A'; letter <= 'Z'; ++letter) {
             CAPTURE(letter);
