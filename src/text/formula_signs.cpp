@@ -119,9 +119,14 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
             // After a square or a cube, a sum of terms (a²+b²; session 14: said only beside a relation sign).
             const bool after_power = is_one_of(left, U"\u00B2\u00B3");
             // Between two words, a post's or a menu's "and also" (关注+转发 关注加转发, 汉堡+可乐; session
-            // 22: skipped with a warning).
+            // 22: skipped with a warning), one of them Latin or a number too, and after a word that a closing
+            // quote ends, as news names a plan of "X plus" (AI+教育 AI加教育, 5G+工业互联网, “互联网+”行动;
+            // session 26: skipped with a warning).
+            const bool word_left = is_han_left || is_alphanumeric(left);
+            const bool joins_words = word_left && (is_han_right || is_alphanumeric(right));
+            const bool names_plan = word_left && is_one_of(right, U"\u201D\u300D\u300F\"");
             return (between_terms && (alphanumeric || after_power || clause_has_relation(text, i))) ||
-                           (is_han_left && is_han_right)
+                           joins_words || names_plan
                        ? "加"
                        : "";
         }

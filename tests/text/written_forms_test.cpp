@@ -1402,6 +1402,16 @@ TEST_SUITE("written forms") {
         CHECK(said(sixteen).find("万") != std::string::npos);
     }
 
+    TEST_CASE("a plus between a Latin word or a number and a word, and in a plan's quoted X+, is 加") {
+        // The first three failed on main 61e9b85 (session 26: the + skipped with a warning).
+        check_cases({
+            {"AI+教育", "ei ai加教育"},
+            {"5G+工业互联网", "五 ji加工业互联网"},
+            {"推进“互联网+”行动", "推进互联网加行动"},
+            {"关注+转发", "关注加转发"},
+        });
+    }
+
     TEST_CASE("a round hundred after capitals is a tier, as a round thousand is") {
         // The first two failed on main 61e9b85 (session 26, dev16's HDR400: 四零零).
         check_cases({
