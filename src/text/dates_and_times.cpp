@@ -470,6 +470,21 @@ std::optional<SpokenForm> read_primed_time(const std::vector<CodePoint>& text, c
     return form;
 }
 
+std::optional<SpokenForm> read_arc_minutes(const std::vector<CodePoint>& text, std::size_t start,
+                                           const WrittenNumber& minutes) {
+    constexpr std::size_t kLongestMinutes = 2;
+    if (start == 0 || value_at(text, start - 1) != 0xB0 /*°*/ || minutes.has_separators ||
+        minutes.whole.size() > kLongestMinutes || (minutes.whole.size() == 2 && minutes.whole > "59") ||
+        !is_one_of(value_at(text, minutes.end), U"'\u2032")) {
+        return std::nullopt;
+    }
+    SpokenForm form;
+    form.words =
+        count_words(minutes.whole) + (minutes.has_point ? "点" + digit_words(minutes.fraction) : "") + "分";
+    form.end = minutes.end + 1;
+    return form;
+}
+
 std::optional<SpokenForm> read_feet_and_inches(const std::vector<CodePoint>& text, std::size_t start,
                                                const WrittenNumber& feet) {
     if (feet.has_point || feet.has_separators || feet.whole.size() != 1 || feet.whole == "0" ||

@@ -101,6 +101,11 @@ std::optional<SpokenForm> read_race_time(const WrittenNumber& minutes, const Wri
 // 五分三十秒, the seconds of two digits below 60 and closed by their double prime (6'2" is no time).
 std::optional<SpokenForm> read_primed_time(const std::vector<CodePoint>& text, const WrittenNumber& minutes);
 
+// An angle's minutes with their prime and no seconds, right after its degrees (东经116°23′, 北纬39°54'):
+// 二十三分, below 60; `start` is where the minutes are written.
+std::optional<SpokenForm> read_arc_minutes(const std::vector<CodePoint>& text, std::size_t start,
+                                           const WrittenNumber& minutes);
+
 // A height in feet and inches written with primes, 6'2" or 5′7″: 六英尺两英寸, as 6英尺2英寸 is said. The
 // inches of one digit, which a time's seconds never are, or 10 and 11 where the clause speaks of a
 // height (身高5'10"; 配速5'10" stays a time).

@@ -681,6 +681,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
             time->words += per_unit_words(text, time->end);
             return time;
         }
+        if (auto minutes = read_arc_minutes(text, start, number)) return minutes;
         if (auto model = read_series_and_model(text, i, number)) return model;
         if (auto variant =
                 context.is_model && !context.is_train ? read_model_variant(text, number) : std::nullopt)

@@ -1412,6 +1412,15 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("an angle's minutes with their prime and no seconds are 分") {
+        // The first two failed on main 61e9b85 (session 26: the prime skipped, 二十三).
+        check_cases({
+            {"东经116°23′", "东经一百一十六度二十三分"},
+            {"北纬39°54'", "北纬三十九度五十四分"},
+            {"东经116°23′17″", "东经一百一十六度二十三分十七秒"},
+        });
+    }
+
     TEST_CASE("a round hundred after capitals is a tier, as a round thousand is") {
         // The first two failed on main 61e9b85 (session 26, dev16's HDR400: 四零零).
         check_cases({
