@@ -83,13 +83,12 @@ bool contains_any(std::string_view text, std::initializer_list<std::string_view>
 
 bool starts_with_any(std::string_view text, std::initializer_list<std::string_view> words) {
     return std::any_of(words.begin(), words.end(),
-                       [text](std::string_view word) { return text.substr(0, word.size()) == word; });
+                       [text](std::string_view word) { return starts_with(text, word); });
 }
 
 bool ends_with_any(std::string_view text, std::initializer_list<std::string_view> words) {
-    return std::any_of(words.begin(), words.end(), [text](std::string_view word) {
-        return text.size() >= word.size() && text.substr(text.size() - word.size()) == word;
-    });
+    return std::any_of(words.begin(), words.end(),
+                       [text](std::string_view word) { return ends_with(text, word); });
 }
 
 bool is_one_of(char32_t c, std::u32string_view set) {
@@ -121,10 +120,6 @@ bool takes_liang(char32_t c) {
         U"瓣汤湯茶"
         // Taiwan's trillion, a magnitude as 万 and 亿 are (2兆 兩兆; session 23: 二兆).
         U"兆");
-}
-
-bool ends_with(const std::string& text, std::string_view end) {
-    return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
 }
 
 std::string text_before(const std::vector<CodePoint>& text, std::size_t start, bool clause_only) {

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/string_ends.hpp"
 #include "text/code_points.hpp"
 #include "text/written_numbers.hpp"
 
@@ -43,8 +44,6 @@ std::string text_between(const std::vector<CodePoint>& text, std::size_t first, 
 // Measure words and magnitudes before which 2 is 两 (两本书, 两个, 两万, 两步, 两男三女). Not 月 号
 // 日 楼 路 度 代, where 2 is a name or an ordinal (二月, 二号, 二楼, 二代).
 bool takes_liang(char32_t c);
-
-bool ends_with(const std::string& text, std::string_view end);
 
 // Whether any of `words` stands in `text` (the clause names a score, a lamp, a race ...), starts it or ends
 // it.

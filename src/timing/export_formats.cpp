@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/atomic_file.hpp"
+#include "common/string_ends.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/timing_formats.hpp"
 #include "timing/export_writers.hpp"
@@ -16,14 +17,10 @@ inline namespace v0 {
 
 namespace {
 
-bool ends_with(const std::string& text, const std::string& suffix) {
-    return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 // The file name's suffix for messages: ".motion3.json" where it is one, else the last one.
 std::string suffix_of(const std::string& path) {
     const std::string name = std::filesystem::path(path).filename().string();
-    if (ends_with(name, ".motion3.json")) return ".motion3.json";
+    if (detail::ends_with(name, ".motion3.json")) return ".motion3.json";
     const std::size_t dot = name.rfind('.');
     return dot == std::string::npos ? std::string() : name.substr(dot);
 }

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "common/atomic_file.hpp"
+#include "common/string_ends.hpp"
 #include "text/transcript_cut.hpp"
 #include "text/transcript_encoding.hpp"
 #include "timing/import_readers.hpp"
@@ -24,10 +25,6 @@ namespace talkface::detail {
 namespace {
 
 enum class TextKind { plain, subrip, webvtt, textgrid };
-
-bool starts_with(std::string_view text, std::string_view start) {
-    return text.substr(0, start.size()) == start;
-}
 
 // What the file is, by its first lines: a subtitle's or a TextGrid's are never a transcript's.
 TextKind text_kind(std::string_view text) {
