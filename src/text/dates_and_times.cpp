@@ -53,12 +53,12 @@ bool names_score(const std::vector<CodePoint>& text, std::size_t start, std::siz
     // 三到一): a pronoun right before the pair, which closes its clause. Outside a match one player's pair
     // is a game's record (这把我0-8， 零杠八).
     const auto pronoun_at = [&](std::size_t k) { return is_one_of(text[k].value, U"我你他她"); };
-    const bool after_pronoun = start > 0 && (pronoun_at(start - 1) || (start > 1 && is_one_of(text[start - 1].value, U"们們") &&
-                                                                        pronoun_at(start - 2)));
-    if (after_pronoun && contains_any(before, {"赛", "賽"}) &&
-        (end >= text.size() || is_one_of(text[end].value, U"，,。.！!？?；;～~…\n "))) {
+    const bool after_pronoun = start > 0 && pronoun_at(start - 1);
+    const bool after_plural_pronoun =
+        start > 1 && is_one_of(text[start - 1].value, U"们們") && pronoun_at(start - 2);
+    const bool closes_clause = end >= text.size() || is_one_of(text[end].value, U"，,。.！!？?；;～~…\n ");
+    if ((after_pronoun || after_plural_pronoun) && contains_any(before, {"赛", "賽"}) && closes_clause)
         return true;
-    }
     const std::string after = text_between(text, end, end + 2);
     constexpr std::string_view kResults[] = {
         "战胜", "戰勝", "击败", "擊敗", "获胜", "獲勝", "取胜", "取勝", "领先", "領先", "落后", "落後",
