@@ -37,22 +37,21 @@ std::vector<double> averaged_down(const std::vector<float>& samples, std::size_t
 
 // Only a lag past the autocorrelation's first fall to zero is a period: at a short lag any sound of
 // low frequencies is alike to itself (a kick drum's 55 Hz thud a 400 Hz period later, 0.65-0.72).
-bool is_voiced(const double* frame, std::size_t length, std::size_t shortest_lag, std::size_t longest_lag) {
-    double energy = 0.0;
-    for (std::size_t i = 0; i < length; ++i) energy += frame[i] * frame[i];
-    if (std::sqrt(energy / static_cast<double>(length)) < kSilentFrameRms) return false;
+// `head` and `tail` are room for the running sums of the frame's energy, from its start and to its
+// end, which give each lag the energies of the frame's two overlapping parts.
+bool is_voiced(const double* frame, std::size_t length, std::size_t shortest_lag, std::size_t longest_lag,
+               std::vector<double>& head, std::vector<double>& tail) {
+    head.assign(length + 1, 0.0);
+    tail.assign(length + 1, 0.0);
+    for (std::size_t i = 0; i < length; ++i) head[i + 1] = head[i] + frame[i] * frame[i];
+    for (std::size_t i = length; i-- > 0;) tail[i] = tail[i + 1] + frame[i] * frame[i];
+    if (std::sqrt(head[length] / static_cast<double>(length)) < kSilentFrameRms) return false;
     bool crossed_zero = false;
     for (std::size_t lag = 1; lag <= longest_lag; ++lag) {
         double product = 0.0;
-        double head = 0.0;
-        double tail = 0.0;
-        for (std::size_t i = 0; i + lag < length; ++i) {
-            product += frame[i] * frame[i + lag];
-            head += frame[i] * frame[i];
-            tail += frame[i + lag] * frame[i + lag];
-        }
+        for (std::size_t i = 0; i + lag < length; ++i) product += frame[i] * frame[i + lag];
         if (crossed_zero && lag >= shortest_lag && product > 0.0 &&
-            product >= kVoicedCorrelation * std::sqrt(head * tail))
+            product >= kVoicedCorrelation * std::sqrt(head[length - lag] * tail[lag]))
             return true;
         crossed_zero = crossed_zero || product <= 0.0;
     }
@@ -72,8 +71,9 @@ double voiced_share(const std::vector<float>& samples, int sample_rate_hz) {
     if (signal.size() < length || hop == 0 || longest_lag >= length) return 0.0;
     std::size_t frames = 0;
     std::size_t voiced = 0;
+    std::vector<double> head, tail;
     for (std::size_t start = 0; start + length <= signal.size(); start += hop, ++frames)
-        if (is_voiced(signal.data() + start, length, shortest_lag, longest_lag)) ++voiced;
+        if (is_voiced(signal.data() + start, length, shortest_lag, longest_lag, head, tail)) ++voiced;
     return static_cast<double>(voiced) / static_cast<double>(frames);
 }
 
