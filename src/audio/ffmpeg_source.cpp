@@ -194,19 +194,43 @@ private:
     ChannelMixer mixer_;
 };
 
+// A decoder opened for a stream's `parameters`; where that fails, `context` is null and `failure`
+// says at which step, with FFmpeg's error.
+struct OpenedDecoder {
+    enum class Failure { none, no_decoder, parameters, opening };
+    const AVCodec* codec = nullptr;
+    std::unique_ptr<AVCodecContext, CodecFreer> context;
+    Failure failure = Failure::none;
+    int error = 0;
+};
+
+OpenedDecoder open_decoder(const AVCodecParameters& parameters) {
+    OpenedDecoder opened;
+    opened.codec = avcodec_find_decoder(parameters.codec_id);
+    if (opened.codec == nullptr) {
+        opened.failure = OpenedDecoder::Failure::no_decoder;
+        return opened;
+    }
+    opened.context.reset(avcodec_alloc_context3(opened.codec));
+    if (!opened.context) throw std::bad_alloc();
+    if (const int copied = avcodec_parameters_to_context(opened.context.get(), &parameters); copied < 0) {
+        opened.failure = OpenedDecoder::Failure::parameters;
+        opened.error = copied;
+    } else if (const int ready = avcodec_open2(opened.context.get(), opened.codec, nullptr); ready < 0) {
+        opened.failure = OpenedDecoder::Failure::opening;
+        opened.error = ready;
+    }
+    if (opened.failure != OpenedDecoder::Failure::none) opened.context.reset();
+    return opened;
+}
+
 // One sound track's loudness, frame by frame, and its samples, decoded from its packets as they come.
 class TrackHearing {
 public:
     explicit TrackHearing(const AVStream& stream) : time_base_(stream.time_base) {
-        const AVCodec* codec = avcodec_find_decoder(stream.codecpar->codec_id);
-        if (codec == nullptr) return;
-        codec_.reset(avcodec_alloc_context3(codec));
-        if (!codec_) throw std::bad_alloc();
-        if (avcodec_parameters_to_context(codec_.get(), stream.codecpar) < 0 ||
-            avcodec_open2(codec_.get(), codec, nullptr) < 0 || codec_->sample_rate <= 0) {
-            codec_.reset();
-            return;
-        }
+        OpenedDecoder opened = open_decoder(*stream.codecpar);
+        if (!opened.context || opened.context->sample_rate <= 0) return;
+        codec_ = std::move(opened.context);
         frame_.reset(av_frame_alloc());
         if (!frame_) throw std::bad_alloc();
         sample_rate_hz_ = codec_->sample_rate;
@@ -368,21 +392,22 @@ public:
         }
         stream_ = format_->streams[stream];
         const AVCodecParameters* parameters = stream_->codecpar;
-        const AVCodec* codec = avcodec_find_decoder(parameters->codec_id);
-        if (codec == nullptr)
+        OpenedDecoder opened = open_decoder(*parameters);
+        if (opened.failure == OpenedDecoder::Failure::no_decoder)
             throw ParseError(path_, 0, 0, "", std::string("its sound track is ") + avcodec_get_name(parameters->codec_id) +
                                                    ", which this FFmpeg cannot decode");
-        codec_.reset(avcodec_alloc_context3(codec));
-        if (!codec_) throw std::bad_alloc();
-        if (const int copied = avcodec_parameters_to_context(codec_.get(), parameters); copied < 0)
-            throw not_audio(ffmpeg_error_text(copied));
-        if (const int ready = avcodec_open2(codec_.get(), codec, nullptr); ready < 0) {
+        if (opened.failure == OpenedDecoder::Failure::parameters)
+            throw not_audio(ffmpeg_error_text(opened.error));
+        if (opened.failure == OpenedDecoder::Failure::opening) {
             if (const std::string damage = broken_index(); !damage.empty())
-                throw ParseError(path_, 0, 0, "", damage + " (cannot decode its " + codec->name + " sound track: " +
-                                                       ffmpeg_error_text(ready) + ")");
-            throw ParseError(path_, 0, 0, "", std::string("cannot decode its ") + codec->name + " sound track: " +
-                                                   ffmpeg_error_text(ready));
+                throw ParseError(path_, 0, 0, "",
+                                 damage + " (cannot decode its " + opened.codec->name +
+                                     " sound track: " + ffmpeg_error_text(opened.error) + ")");
+            throw ParseError(path_, 0, 0, "",
+                             std::string("cannot decode its ") + opened.codec->name +
+                                 " sound track: " + ffmpeg_error_text(opened.error));
         }
+        codec_ = std::move(opened.context);
         sample_rate_hz_ = codec_->sample_rate;
         if (parameters->codec_id == AV_CODEC_ID_MP3) {
             mp3_toc_ = read_mp3_toc_file(path_);
