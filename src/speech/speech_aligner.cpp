@@ -68,10 +68,16 @@ public:
     explicit ProgressReporter(const ProgressCallback& callback) : callback_(callback) {}
     void report(double fraction, const char* stage) {
         if (!callback_) return;
-        if (stage == seen_stage_ && fraction < seen_fraction_ + kProgressStep && fraction < 1.0) return;
+        // Where the work goes over the recording again (the models re-estimated on a room's
+        // features without its ringing, the cut aligned again) its reports start again from lower:
+        // the callback is asked there as often as anywhere, so that it can cancel, while the bar
+        // stays where it stands.
+        if (stage == seen_stage_ && fraction >= seen_fraction_ && fraction < seen_fraction_ + kProgressStep &&
+            fraction < 1.0)
+            return;
         seen_stage_ = stage;
         seen_fraction_ = fraction;
-        if (!is_held_) {
+        if (!is_held_ && fraction >= last_fraction_) {
             last_stage_ = stage;
             last_fraction_ = fraction;
         }
