@@ -91,20 +91,23 @@ constexpr double kMp3TocSlackShare = 0.1;
 // each before one is read.
 constexpr double kTrackHearingS = 60.0;
 
-// A track is heard as the loudness of its kLoudnessFrameS frames against the mean of the
-// kLowEnergyWindowS around each: speech, a syllable or a phrase at a time, leaves many frames under
-// half the mean (the "low-energy frames" of Scheirer and Slaney's speech/music discriminator,
-// 1997). Over every tuning passage of the corpora: the person's 0.24-0.60 of frames (clean, noise
-// at 15-30 dB, hum, music under the voice, a room, the phone), espeak-ng's 0.17-0.47 (the least
-// under white noise at 10 dB); held out 0.21-0.58. make_music_kinds's music alone: piano
-// 0.08-0.15, chord pad 0.01, sung line 0.09-0.11; a drum kit alone 0.35-0.50, as speech (which
-// kLeastSpeechVoicedShare tells apart).
+// A track is heard as the loudness of its kLoudnessFrameS frames (averaged down to about 8 kHz, as
+// voiced_share hears it) against the mean of the kLowEnergyWindowS around each: speech, a syllable
+// or a phrase at a time, leaves many frames under half the mean (the "low-energy frames" of Scheirer
+// and Slaney's speech/music discriminator, 1997). Over the first 60 s of every passage of the
+// corpora, tuning and held out alike (bench/README.md, Session 26): the person's 0.17-0.59 of frames
+// (the least with long silences), espeak-ng's 0.26-0.56, v-'s and w-'s 0.33-0.56. make_music_kinds's
+// music alone: piano 0.07-0.17, chord pad 0.01-0.02, sung line 0.06-0.12; a drum kit alone
+// 0.39-0.55, as speech (which kLeastSpeechVoicedShare tells apart). At 8 kHz white noise no longer
+// fills speech's pauses: at the full rate espeak-ng under white noise at 10 dB read 0.17-0.28 (now
+// 0.27-0.39); every other passage moved by 0.04 at the most.
 constexpr double kLoudnessFrameS = 0.02;
 constexpr double kLowEnergyWindowS = 1.0;
 
 // How many times the share of low-energy frames of the track FFmpeg would take (its default one)
 // another must have to be read instead: the person's speech against the music nearest to it above
-// (0.24 against 0.15), while a film's languages, speech each, keep the default.
+// (0.24 against 0.15 in the conditions it was set on; a passage with long silences reads 0.17, as much as
+// the most of a piano's), while a film's languages, speech each, keep the default.
 constexpr double kSpeechOverDefaultRatio = 1.5;
 
 // A track voiced (voiced_share.hpp) in fewer of its frames than this is no speech, however many
@@ -224,7 +227,49 @@ OpenedDecoder open_decoder(const AVCodecParameters& parameters) {
     return opened;
 }
 
-// One sound track's loudness, frame by frame, and its samples, decoded from its packets as they come.
+// What hearing a sound track found: the figures a track is chosen by.
+struct TrackSummary {
+    bool silent = true;  // no kLoudnessFrameS frame reaches kSilentTrackRms, or it does not decode
+    // The share of its frames under half the mean loudness of the kLowEnergyWindowS around them.
+    double low_energy_share = 0.0;
+    double voiced_share = 0.0;  // voiced_share.hpp
+
+    // Its share of low-energy frames if it is voiced as speech is, else 0: how much it sounds like
+    // speech.
+    double speech_share() const {
+        return silent || voiced_share < kLeastSpeechVoicedShare ? 0.0 : low_energy_share;
+    }
+};
+
+// The RMS of each whole frame of `frame_samples` of `signal`.
+std::vector<double> loudness_frames(const std::vector<double>& signal, std::size_t frame_samples) {
+    std::vector<double> frames(signal.size() / frame_samples);
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        double energy = 0.0;
+        for (std::size_t j = i * frame_samples; j < (i + 1) * frame_samples; ++j)
+            energy += signal[j] * signal[j];
+        frames[i] = std::sqrt(energy / static_cast<double>(frame_samples));
+    }
+    return frames;
+}
+
+double low_energy_share(const std::vector<double>& frames) {
+    std::vector<double> sums(frames.size() + 1, 0.0);
+    for (std::size_t i = 0; i < frames.size(); ++i) sums[i + 1] = sums[i] + frames[i];
+    const auto window = static_cast<std::size_t>(kLowEnergyWindowS / kLoudnessFrameS);
+    const std::size_t span = std::min(window, frames.size());
+    std::size_t low = 0;
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        const std::size_t begin = std::min(i - std::min(i, window / 2), frames.size() - span);
+        const std::size_t end = begin + span;
+        const double mean = (sums[end] - sums[begin]) / static_cast<double>(end - begin);
+        if (frames[i] < 0.5 * mean) ++low;
+    }
+    return static_cast<double>(low) / static_cast<double>(frames.size());
+}
+
+// One sound track heard from its packets as they come: its samples, averaged down to the rate a
+// pitch is looked for at (PitchRateSignal), from which its loudness is read once it has been heard.
 class TrackHearing {
 public:
     explicit TrackHearing(const AVStream& stream) : time_base_(stream.time_base) {
@@ -233,17 +278,19 @@ public:
         codec_ = std::move(opened.context);
         frame_.reset(av_frame_alloc());
         if (!frame_) throw std::bad_alloc();
-        sample_rate_hz_ = codec_->sample_rate;
-        frame_samples_ = std::max(1, static_cast<int>(kLoudnessFrameS * sample_rate_hz_));
+        frame_samples_ =
+            static_cast<std::size_t>(std::max(1, static_cast<int>(kLoudnessFrameS * codec_->sample_rate)));
+        heard_.emplace(codec_->sample_rate);
     }
     TrackHearing(const TrackHearing&) = delete;
     TrackHearing& operator=(const TrackHearing&) = delete;
 
-    // Whether it still wants packets: it decodes, and neither its sound nor its packets' times
-    // (a track whose packets do not decode) have reached kTrackHearingS.
+    // Whether it still wants packets: it decodes, and neither its sound (in whole kLoudnessFrameS
+    // frames) nor its packets' times (a track whose packets do not decode) have reached
+    // kTrackHearingS.
     bool listening() const {
         return codec_ && !past_hearing_ &&
-               static_cast<double>(frames_.size()) * kLoudnessFrameS < kTrackHearingS;
+               static_cast<double>(samples_heard_ / frame_samples_) * kLoudnessFrameS < kTrackHearingS;
     }
 
     void hear(const AVPacket& packet) {
@@ -257,33 +304,19 @@ public:
         }
     }
 
-    // The share of its frames under half the mean loudness of the kLowEnergyWindowS around them;
-    // 0 for a silent track or one that does not decode.
-    double low_energy_share() const {
-        if (frames_.empty() || silent()) return 0.0;
-        std::vector<double> sums(frames_.size() + 1, 0.0);
-        for (std::size_t i = 0; i < frames_.size(); ++i) sums[i + 1] = sums[i] + frames_[i];
-        const auto window = static_cast<std::size_t>(kLowEnergyWindowS / kLoudnessFrameS);
-        const std::size_t span = std::min(window, frames_.size());
-        std::size_t low = 0;
-        for (std::size_t i = 0; i < frames_.size(); ++i) {
-            const std::size_t begin = std::min(i - std::min(i, window / 2), frames_.size() - span);
-            const std::size_t end = begin + span;
-            const double mean = (sums[end] - sums[begin]) / static_cast<double>(end - begin);
-            if (frames_[i] < 0.5 * mean) ++low;
-        }
-        return static_cast<double>(low) / static_cast<double>(frames_.size());
-    }
-
-    // Its share of low-energy frames if it is voiced as speech is, else 0: how much it sounds like
-    // speech.
-    double speech_share() const {
-        if (silent() || voiced_share(heard_, sample_rate_hz_) < kLeastSpeechVoicedShare) return 0.0;
-        return low_energy_share();
-    }
-
-    bool silent() const {
-        return std::all_of(frames_.begin(), frames_.end(), [](double rms) { return rms < kSilentTrackRms; });
+    // What was heard; a track that does not decode is silent.
+    TrackSummary summary() const {
+        TrackSummary found;
+        if (!heard_) return found;
+        const auto frame_samples =
+            static_cast<std::size_t>(std::max(1, static_cast<int>(kLoudnessFrameS * heard_->rate_hz())));
+        const std::vector<double> frames = loudness_frames(heard_->samples(), frame_samples);
+        found.silent =
+            std::all_of(frames.begin(), frames.end(), [](double rms) { return rms < kSilentTrackRms; });
+        if (found.silent) return found;
+        found.low_energy_share = low_energy_share(frames);
+        found.voiced_share = voiced_share(*heard_);
+        return found;
     }
 
 private:
@@ -291,14 +324,8 @@ private:
         const int channels = frame.ch_layout.nb_channels;
         if (frame.nb_samples <= 0 || channels <= 0 || channels > kMaxChannels) return;
         if (!mixer_.takes(frame) || mixer_.mix(frame, 0, mono_) <= 0) return;
-        heard_.insert(heard_.end(), mono_.begin(), mono_.end());
-        for (const float sample : mono_) {
-            energy_ += static_cast<double>(sample) * sample;
-            if (++samples_ < frame_samples_) continue;
-            frames_.push_back(std::sqrt(energy_ / samples_));
-            energy_ = 0.0;
-            samples_ = 0;
-        }
+        heard_->add(mono_.data(), mono_.size());
+        samples_heard_ += mono_.size();
     }
 
     AVRational time_base_;
@@ -307,12 +334,9 @@ private:
     std::unique_ptr<AVFrame, FrameFreer> frame_;
     FrameMixer mixer_;
     std::vector<float> mono_;
-    std::vector<float> heard_;  // all its samples, for voiced_share
-    int sample_rate_hz_ = 0;
-    int frame_samples_ = 1;
-    int samples_ = 0;
-    double energy_ = 0.0;
-    std::vector<double> frames_;  // RMS of each kLoudnessFrameS frame
+    std::optional<PitchRateSignal> heard_;
+    std::size_t frame_samples_ = 1;  // a kLoudnessFrameS frame at the track's own rate
+    std::size_t samples_heard_ = 0;
 };
 
 // A file read through FFmpeg with the 4 bytes at `hidden_byte` read as zeros: the capture pattern
@@ -529,27 +553,28 @@ private:
         }
         const auto best_at =
             static_cast<std::size_t>(std::find(tracks.begin(), tracks.end(), best) - tracks.begin());
+        std::vector<TrackSummary> heard;
+        for (const auto& hearing : hearings) heard.push_back(hearing->summary());
         std::size_t chosen = best_at;
-        std::vector<double> share;
-        for (const auto& hearing : hearings) share.push_back(hearing->speech_share());
         for (std::size_t i = 0; i < tracks.size(); ++i) {
-            if (hearings[i]->silent()) continue;
-            if (hearings[chosen]->silent() ||
-                (share[i] > share[chosen] &&
-                 (hearings[best_at]->silent() || share[i] > kSpeechOverDefaultRatio * share[best_at])))
+            if (heard[i].silent) continue;
+            const double share = heard[i].speech_share();
+            if (heard[chosen].silent ||
+                (share > heard[chosen].speech_share() &&
+                 (heard[best_at].silent || share > kSpeechOverDefaultRatio * heard[best_at].speech_share())))
                 chosen = i;
         }
         std::string reason;
         if (chosen != best_at)
-            reason = hearings[best_at]->silent()
+            reason = heard[best_at].silent
                          ? ", for the " + ordinal_text(best_at) + " is silent"
                          : ", for it sounds more like speech than the " + ordinal_text(best_at);
         std::string others;
         std::size_t other_count = 0;
         for (std::size_t i = 0; i < tracks.size(); ++i) {
             if (i == chosen || (i == best_at && !reason.empty())) continue;
-            others += (others.empty() ? "the " : ", the ") + ordinal_text(i) +
-                      (hearings[i]->silent() ? " (silent)" : "");
+            others +=
+                (others.empty() ? "the " : ", the ") + ordinal_text(i) + (heard[i].silent ? " (silent)" : "");
             ++other_count;
         }
         if (other_count > 0) others = (other_count == 1 ? "; the other: " : "; the others: ") + others;

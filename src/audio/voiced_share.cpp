@@ -25,16 +25,6 @@ constexpr double kVoicedCorrelation = 0.5;
 // A frame under this RMS (-60 dBFS) is silence, as a silent track's is (ffmpeg_source.cpp).
 constexpr double kSilentFrameRms = 1e-3;
 
-std::vector<double> averaged_down(const std::vector<float>& samples, std::size_t factor) {
-    std::vector<double> out(samples.size() / factor);
-    for (std::size_t i = 0; i < out.size(); ++i) {
-        double sum = 0.0;
-        for (std::size_t j = 0; j < factor; ++j) sum += samples[i * factor + j];
-        out[i] = sum / static_cast<double>(factor);
-    }
-    return out;
-}
-
 // Only a lag past the autocorrelation's first fall to zero is a period: at a short lag any sound of
 // low frequencies is alike to itself (a kick drum's 55 Hz thud a 400 Hz period later, 0.65-0.72).
 // `head` and `tail` are room for the running sums of the frame's energy, from its start and to its
@@ -60,20 +50,33 @@ bool is_voiced(const double* frame, std::size_t length, std::size_t shortest_lag
 
 }  // namespace
 
-double voiced_share(const std::vector<float>& samples, int sample_rate_hz) {
-    const auto factor = static_cast<std::size_t>(std::max(1, sample_rate_hz / kPitchRateHz));
-    const std::vector<double> signal = averaged_down(samples, factor);
-    const double rate = static_cast<double>(sample_rate_hz) / static_cast<double>(factor);
+PitchRateSignal::PitchRateSignal(int sample_rate_hz)
+    : factor_(static_cast<std::size_t>(std::max(1, sample_rate_hz / kPitchRateHz))),
+      rate_hz_(static_cast<double>(sample_rate_hz) / static_cast<double>(factor_)) {}
+
+void PitchRateSignal::add(const float* samples, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) {
+        sum_ += samples[i];
+        if (++summed_ < factor_) continue;
+        samples_.push_back(sum_ / static_cast<double>(factor_));
+        sum_ = 0.0;
+        summed_ = 0;
+    }
+}
+
+double voiced_share(const PitchRateSignal& signal) {
+    const std::vector<double>& samples = signal.samples();
+    const double rate = signal.rate_hz();
     const auto length = static_cast<std::size_t>(kFrameS * rate);
     const auto hop = static_cast<std::size_t>(kHopS * rate);
     const auto shortest_lag = static_cast<std::size_t>(rate / kHighestPitchHz);
     const auto longest_lag = static_cast<std::size_t>(rate / kLowestPitchHz);
-    if (signal.size() < length || hop == 0 || longest_lag >= length) return 0.0;
+    if (samples.size() < length || hop == 0 || longest_lag >= length) return 0.0;
     std::size_t frames = 0;
     std::size_t voiced = 0;
     std::vector<double> head, tail;
-    for (std::size_t start = 0; start + length <= signal.size(); start += hop, ++frames)
-        if (is_voiced(signal.data() + start, length, shortest_lag, longest_lag, head, tail)) ++voiced;
+    for (std::size_t start = 0; start + length <= samples.size(); start += hop, ++frames)
+        if (is_voiced(samples.data() + start, length, shortest_lag, longest_lag, head, tail)) ++voiced;
     return static_cast<double>(voiced) / static_cast<double>(frames);
 }
 
