@@ -69,7 +69,7 @@ bool names_score(const std::vector<CodePoint>& text, std::size_t start, std::siz
         // Session 25: the score a game opens with (这把0-3开局; it was a range).
         "开局", "開局"};
     for (const auto word : kResults)
-        if (after.rfind(word, 0) == 0) return true;
+        if (starts_with(after, word)) return true;
     if (!dashed) return false;
     const std::string clause = text_after(text, end);
     for (const auto word : kResults)
@@ -208,7 +208,7 @@ bool counts_years(const std::vector<CodePoint>& text, std::size_t start, const W
 
 bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNumber& number) {
     if (number.has_point || number.has_separators || number.whole.size() != 4 ||
-        !(number.whole.rfind("19", 0) == 0 || number.whole.rfind("20", 0) == 0)) {
+        !starts_with_any(number.whole, {"19", "20"})) {
         return false;
     }
     const std::string after = text_between(text, number.end, number.end + 3);

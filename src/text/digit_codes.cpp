@@ -103,7 +103,7 @@ bool is_service_number(const std::string& digits) {
                                           "12338", "12345", "12348", "12355", "12358", "12365", "12366", "12369", "12378",
                                           "12380", "12388", "12393", "12395", "10000", "10010", "10086"})
         if (digits == number) return true;
-    return digits.size() == 5 && (digits.rfind("95", 0) == 0 || digits.rfind("96", 0) == 0);
+    return digits.size() == 5 && starts_with_any(digits, {"95", "96"});
 }
 
 bool is_named_anywhere(const std::string& digits) {
@@ -132,7 +132,7 @@ bool is_service_call(const std::vector<CodePoint>& text, std::size_t start, std:
         if (ends_with(before, word)) return true;
     const std::string after = text_between(text, end, end + 2);
     for (const std::string_view word : kServiceWords)
-        if (after.rfind(word, 0) == 0) return true;
+        if (starts_with(after, word)) return true;
     return false;
 }
 
@@ -414,7 +414,7 @@ bool is_flight_number(const std::vector<CodePoint>& text, std::size_t start, std
     const std::string after = text_between(text, end, end + 3);
     const std::string before = text_before(text, start, true);
     for (const std::string_view word : {"航班", "班机", "班機"}) {
-        if (after.rfind(word, 0) == 0 || after.rfind(std::string("次") + std::string(word), 0) == 0 ||
+        if (starts_with(after, word) || starts_with(after, std::string("次") + std::string(word)) ||
             before.find(word) != std::string::npos) {
             return true;
         }

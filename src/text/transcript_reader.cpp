@@ -35,6 +35,7 @@ using detail::CodePoint;
 using detail::decode_utf8;
 using detail::is_ascii_capital;
 using detail::is_ascii_letter;
+using detail::starts_with_any;
 
 bool is_space(char32_t c) {
     return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f' || c == 0xA0 ||
@@ -345,8 +346,7 @@ bool looks_like_pinyin(const std::vector<CodePoint>& token) {
 // among its names (xinhua, which it says jin wa). English words that start with x or q do so
 // before other letters (xerox, quick).
 bool starts_as_pinyin_only(std::string_view letters) {
-    return letters.rfind("xi", 0) == 0 || letters.rfind("xu", 0) == 0 || letters.rfind("qi", 0) == 0 ||
-           letters.rfind("zh", 0) == 0;
+    return starts_with_any(letters, {"xi", "xu", "qi", "zh"});
 }
 
 bool has_tone_digit(const std::vector<CodePoint>& token) {

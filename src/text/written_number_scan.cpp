@@ -36,9 +36,8 @@ bool full_width_comma_separates(const std::vector<CodePoint>& text, std::size_t 
     if ((next == ',' || next == '.') && is_digit_at(text, after + 1)) return true;
     if (first_start > 0 && is_one_of(value_at(text, first_start - 1), U"$¥￥€£")) return true;
     const auto word = text_between(text, after, after + 2);
-    for (const std::string_view money : {"元", "圆", "圓", "块", "塊", "美元", "港元", "欧元", "歐元", "日元", "万元", "萬元"})
-        if (word.rfind(money, 0) == 0) return true;
-    return false;
+    return starts_with_any(
+        word, {"元", "圆", "圓", "块", "塊", "美元", "港元", "欧元", "歐元", "日元", "万元", "萬元"});
 }
 
 }  // namespace

@@ -828,8 +828,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     bool is_price = currency != nullptr;
     if (unit == nullptr && !is_price) {
         const auto after = text_between(text, end, end + 2);
-        for (const std::string_view money : {"元", "圆", "圓", "块", "塊", "美元", "港元", "欧元", "歐元", "日元", "英镑", "英鎊"})
-            is_price = is_price || after.rfind(money, 0) == 0;
+        is_price = starts_with_any(
+            after, {"元", "圆", "圓", "块", "塊", "美元", "港元", "欧元", "歐元", "日元", "英镑", "英鎊"});
     }
     for (auto& price : numbers) {
         if (!is_price || !price.has_point) continue;
