@@ -13,13 +13,16 @@
 # aligner is to refuse as such.
 import numpy as np, json, wave, os, shutil, sys, zlib
 SR=16000
-src, out = sys.argv[1], sys.argv[2]
-alone = sys.argv[3:] == ['--alone']
 def load(p):
     w=wave.open(p); return np.frombuffer(w.readframes(w.getnframes()),dtype=np.int16).astype(np.float64)/32768
 def save(p,x):
     w=wave.open(p,'wb'); w.setnchannels(1); w.setsampwidth(2); w.setframerate(SR)
     w.writeframes(np.clip(np.round(x*32767),-32768,32767).astype(np.int16).tobytes()); w.close()
+def speech_power(x,d):
+    # the speech's active level: the mean power inside the truth's sentences
+    mask=np.zeros(len(x),bool)
+    for s in d['sentences']: mask[int(s['start']*SR):int(s['end']*SR)]=True
+    return np.mean(x[mask]**2)
 def note(n,start,length,f,amp,attack,decay,harm=6,tilt=1.0,stretch=0.0):
     # A note of harmonics (amplitudes 1/k^tilt, stretched as a piano's string stretches them),
     # with an attack and an exponential decay, added from `start` seconds.
@@ -102,27 +105,32 @@ def drums(n,rng):
         t+=4*beat
     return y
 kinds={'m-piano':piano,'m-pad':pad,'m-sung':sung,'m-drums':drums}
-names=sorted(f[:-4] for f in os.listdir(src) if f.endswith('.wav'))
-os.makedirs(out,exist_ok=True)
-described={'m-piano':'piano-like notes and chords','m-pad':'a sustained chord pad',
-           'm-sung':'a sung line (one voice, formants, vibrato)','m-drums':'a drum kit alone'}
-suffix='-alone' if alone else ''
-with open(out+'/conditions.txt','w') as c:
-    for kind,what in described.items():
-        speech='no speech: the music alone at its level under' if alone else 'running speech'
-        c.write(f'{kind}{suffix}\t{speech} (r-clean), {what}, SNR 15-20 dB\n')
-for kind,fn in kinds.items():
-    folder=f'{out}/{kind}{suffix}'
-    os.makedirs(folder,exist_ok=True)
-    for nm in names:
-        rng=np.random.default_rng(zlib.crc32((kind+nm).encode()))
-        x=load(f'{src}/{nm}.wav'); d=json.load(open(f'{src}/{nm}.json'))
-        mask=np.zeros(len(x),bool)
-        for s in d['sentences']: mask[int(s['start']*SR):int(s['end']*SR)]=True
-        ps=np.mean(x[mask]**2); m=fn(len(x),rng); pm=np.mean(m**2)
-        snr=rng.uniform(15,20); y=(0 if alone else x)+m*np.sqrt(ps/pm/10**(snr/10))
-        pk=np.max(np.abs(y));
-        if pk>0.99: y*=0.99/pk
-        save(f'{folder}/{nm}.wav',y)
-        for ext in ('txt','json'): shutil.copy(f'{src}/{nm}.{ext}',f'{folder}/{nm}.{ext}')
-    print(kind,'done',flush=True)
+
+# The music's generators are imported by make_intros.py; the corpus is written only when run.
+def main():
+    src, out = sys.argv[1], sys.argv[2]
+    alone = sys.argv[3:] == ['--alone']
+    names=sorted(f[:-4] for f in os.listdir(src) if f.endswith('.wav'))
+    os.makedirs(out,exist_ok=True)
+    described={'m-piano':'piano-like notes and chords','m-pad':'a sustained chord pad',
+               'm-sung':'a sung line (one voice, formants, vibrato)','m-drums':'a drum kit alone'}
+    suffix='-alone' if alone else ''
+    with open(out+'/conditions.txt','w') as c:
+        for kind,what in described.items():
+            speech='no speech: the music alone at its level under' if alone else 'running speech'
+            c.write(f'{kind}{suffix}\t{speech} (r-clean), {what}, SNR 15-20 dB\n')
+    for kind,fn in kinds.items():
+        folder=f'{out}/{kind}{suffix}'
+        os.makedirs(folder,exist_ok=True)
+        for nm in names:
+            rng=np.random.default_rng(zlib.crc32((kind+nm).encode()))
+            x=load(f'{src}/{nm}.wav'); d=json.load(open(f'{src}/{nm}.json'))
+            ps=speech_power(x,d); m=fn(len(x),rng); pm=np.mean(m**2)
+            snr=rng.uniform(15,20); y=(0 if alone else x)+m*np.sqrt(ps/pm/10**(snr/10))
+            pk=np.max(np.abs(y));
+            if pk>0.99: y*=0.99/pk
+            save(f'{folder}/{nm}.wav',y)
+            for ext in ('txt','json'): shutil.copy(f'{src}/{nm}.{ext}',f'{folder}/{nm}.{ext}')
+        print(kind,'done',flush=True)
+
+if __name__=='__main__': main()
