@@ -7,9 +7,8 @@
 
 namespace talkface::detail {
 
-std::vector<bool> held_music_frames(const FeatureTrack& track, const std::vector<float>& activity_db, float threshold_db) {
+std::vector<float> changing_shares(const FeatureTrack& track) {
     const std::size_t frames = track.frame_count;
-    std::vector<bool> held(frames, false);
     // Running sums of the band's power and of its changing part, for the share over any window.
     std::vector<double> band(frames + 1, 0.0);
     std::vector<double> changing(frames + 1, 0.0);
@@ -18,12 +17,22 @@ std::vector<bool> held_music_frames(const FeatureTrack& track, const std::vector
         changing[t + 1] = changing[t] + std::pow(10.0, track.at(t, kChangingDb) / 10.0);
     }
     std::vector<float> share(frames);
-    std::vector<float> quiet_share;
-    std::vector<float> speech_db;
     for (std::size_t t = 0; t < frames; ++t) {
         const std::size_t first = t >= kHeldMusicHalfWindow ? t - kHeldMusicHalfWindow : 0;
         const std::size_t end = std::min(frames, t + kHeldMusicHalfWindow + 1);
         share[t] = static_cast<float>((changing[end] - changing[first]) / (band[end] - band[first] + kFeatureEnergyFloor));
+    }
+    return share;
+}
+
+std::vector<bool> held_music_frames(const FeatureTrack& track, const std::vector<float>& activity_db,
+                                    float threshold_db) {
+    const std::size_t frames = track.frame_count;
+    std::vector<bool> held(frames, false);
+    const std::vector<float> share = changing_shares(track);
+    std::vector<float> quiet_share;
+    std::vector<float> speech_db;
+    for (std::size_t t = 0; t < frames; ++t) {
         if (activity_db[t] >= threshold_db) speech_db.push_back(activity_db[t]);
         else if (track.at(t, kChangeBandDb) > kDigitalSilenceDb) quiet_share.push_back(share[t]);  // frames of digital silence hold no change to judge
     }
@@ -32,6 +41,16 @@ std::vector<bool> held_music_frames(const FeatureTrack& track, const std::vector
     for (std::size_t t = 0; t < frames; ++t)
         held[t] = share[t] < kHeldMusicChangeShare && activity_db[t] < speech_median_db;
     return held;
+}
+
+float loud_change_share(const FeatureTrack& track, const std::vector<float>& share,
+                        const std::vector<float>& activity_db, float threshold_db, std::size_t first,
+                        std::size_t end) {
+    std::vector<float> loud;
+    for (std::size_t t = first; t < end; ++t)
+        if (activity_db[t] >= threshold_db && track.at(t, kChangeBandDb) > kDigitalSilenceDb)
+            loud.push_back(share[t]);
+    return loud.empty() ? 0.0f : lower_median(std::move(loud));
 }
 
 }  // namespace talkface::detail

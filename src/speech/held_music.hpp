@@ -25,6 +25,33 @@ constexpr double kHeldMusicChangeShare = 0.35;
 // held sound: music, or a hum.
 constexpr double kNoiseChangeShare = 0.45;
 
+// Per frame of `track`: the share of the change band's power that changes over the frames within
+// kHeldMusicHalfWindow of it (a voice most of it, noise half, held notes little).
+std::vector<float> changing_shares(const FeatureTrack& track);
+
+// The lower median of `share` (changing_shares) over the frames in [first, end) whose activity is
+// at or above `threshold_db` and whose change band holds any sound; 0 where no frame does.
+float loud_change_share(const FeatureTrack& track, const std::vector<float>& share,
+                        const std::vector<float>& activity_db, float threshold_db, std::size_t first,
+                        std::size_t end);
+
+// Whether loud frames whose median share (loud_change_share) is `music_share` are music set apart
+// from a voice whose own is `voice_share`: the music holds its notes (under kHeldMusicChangeShare),
+// the voice changes as a voice does (kNoiseChangeShare or more), and the music changes less than
+// kMusicToVoiceChange of what the voice does: espeak-ng's slow speech holds its vowels, and a first
+// version without this rule and kEdgeMusicMinFrames took one of its last sentences for music
+// (bench/README.md, session 26), where a piano, a pad or a sung line alone reads 0.07-0.35 and a
+// person's speech 0.61-0.95 (session 25).
+constexpr double kMusicToVoiceChange = 0.5;
+inline bool is_music_beside_voice(double music_share, double voice_share) {
+    return music_share < kHeldMusicChangeShare && voice_share >= kNoiseChangeShare &&
+           music_share < kMusicToVoiceChange * voice_share;
+}
+
+// Music set apart from a recording's speech lasts 3 s or more (the shortest jingle): a slow voice
+// holding a vowel, or a last word with the music ringing on after it, is shorter.
+constexpr std::size_t kEdgeMusicMinFrames = 300;
+
 // Per frame of `track`: whether it is held music, given the loudness profile's smoothed activity
 // and its speech threshold. All false when the recording's quiet frames (below the threshold, with
 // any sound in the band) change as noise does, or when it has none.

@@ -1,7 +1,8 @@
 // Music that holds its notes under the voice (issue 13): the changing part of the spectrum
-// (changing_spectrum.hpp) is small for held notes (their partials beating), half for noise, most of a gliding voice; and
-// the pauses between sentences under struck chords and a piano's decaying notes, as loud as the
-// quieter speech, are found.
+// (changing_spectrum.hpp) is small for held notes (their partials beating), half for noise, most of a gliding
+// voice; and the pauses between sentences under struck chords and a piano's decaying notes, as loud as the
+// quieter speech, are found; a piano before the voice and after it, as loud as the voice (a
+// podcast's intro and outro), is given no syllable.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include "speech/held_music.hpp"
 #include "speech/sentence_cutter.hpp"
 #include "talkface/speech_aligner.hpp"
+#include "talkface/timeline.hpp"
 #include "talkface/transcript.hpp"
 
 using namespace talkface;
@@ -118,5 +120,49 @@ TEST_SUITE("speech") {
             // (4.17-4.42 and 4.45-4.77 s), or shorten it by a third (6.15-6.81 s of 6.14-7.04 s).
             CHECK(test::is_found_whole(loudness.pauses, start_s, end_s, 0.8));
         }
+    }
+
+    TEST_CASE("a piano before the voice and after it, as loud as the voice, is given no syllable") {
+        // A podcast's intro: 8 s of piano, 3 dB under the speech's active level, fading out over
+        // 0.5 s, then the six sentences, then 4 s of the piano again. On main the first syllable
+        // was stretched over the intro and the recording refused ("the syllable ... would last").
+        const test::SixSentences six = test::six_sentences();
+        const int rate = six.rate_hz;
+        const std::size_t intro = static_cast<std::size_t>(8 * rate),
+                          outro = static_cast<std::size_t>(4 * rate);
+        const std::size_t fade = static_cast<std::size_t>(rate / 2);
+        std::vector<float> speech(intro, 0.0f);
+        speech.insert(speech.end(), six.samples.begin(), six.samples.end());
+        speech.insert(speech.end(), outro, 0.0f);
+        std::vector<float> music = piano(speech.size(), rate);
+        for (std::size_t i = 0; i < music.size(); ++i) {
+            if (i >= intro && i < intro + six.samples.size())
+                music[i] = 0.0f;
+            else if (i + fade >= intro && i < intro)
+                music[i] *= static_cast<float>(intro - i) / static_cast<float>(fade);
+        }
+        const std::vector<float> mixed = test::mixed_at_snr(speech, music, rate, 3.0);
+        REQUIRE(!mixed.empty());
+
+        const Timeline two = load_transcript(test::clip_path("two_sentences.txt"));
+        const std::string sentences = two.sentences[0].text + "\n" + two.sentences[1].text + "\n";
+        const Timeline transcript = read_transcript(sentences + sentences + sentences);
+        const std::vector<double> truth_once = test::true_starts("two_sentences");
+        const double copy_s = static_cast<double>(six.samples.size()) / (3.0 * rate);
+        AudioView audio;
+        audio.samples = mixed.data();
+        audio.frame_count = mixed.size();
+        audio.sample_rate_hz = rate;
+        const Timeline aligned = SpeechAligner().align(audio, transcript);
+        REQUIRE(aligned.syllables.size() == 3 * truth_once.size());
+        std::size_t within = 0;
+        for (std::size_t i = 0; i < aligned.syllables.size(); ++i) {
+            const double truth =
+                8.0 + copy_s * static_cast<double>(i / truth_once.size()) + truth_once[i % truth_once.size()];
+            within += std::fabs(aligned.syllables[i].start_s - truth) <= 0.05;
+        }
+        CHECK(std::fabs(aligned.syllables.front().start_s - (8.0 + truth_once.front())) <= 0.05);
+        CHECK(aligned.syllables.back().end_s <= 8.0 + 3.0 * copy_s + 0.2);
+        CHECK(static_cast<double>(within) >= 0.9 * static_cast<double>(aligned.syllables.size()));
     }
 }
