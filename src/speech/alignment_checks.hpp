@@ -46,7 +46,8 @@ void check_missing_text(const Timeline& aligned, const FeatureTrack& track, cons
                         std::vector<std::string>& weak_findings);
 
 // Voiced peaks in `span`, about one per syllable (a landmark the audio gives whatever the text):
-// peaks of the low band, each standing out from the dips on both sides of it.
+// peaks of the low band, each standing out from the dips on both sides of it; of the low and mid
+// bands together where the recording lacks the voice's fundamental (FeatureTrack::fundamental_share).
 std::size_t count_nuclei(const FeatureTrack& track, const LoudnessProfile& loudness, const FrameSpan& span);
 
 // What the alignment measured of one sentence, for the checks below (NaN or zero: not measured).

@@ -180,6 +180,7 @@ public:
             pending_.erase(pending_.begin(), pending_.begin() + kHopSamples);
         }
         changing_.finish();
+        if (low_band_power_ > 0.0) track_.fundamental_share = fundamental_power_ / low_band_power_;
     }
 
 private:
@@ -240,13 +241,18 @@ private:
         apply_dithered_window(samples, draws[0].data(), draws[1].data(), kDitherScale, window_.data(), frame_.data());
         spectrum_.compute(frame_.data(), dithered_power_.data());
 
-        auto band_db = [&](double low_hz, double high_hz) {
+        auto band_power = [&](double low_hz, double high_hz) {
             const auto first = static_cast<std::size_t>(std::ceil(low_hz * kFftSize / kAnalysisRateHz));
             const auto last = std::min(kBins - 1, static_cast<std::size_t>(high_hz * kFftSize / kAnalysisRateHz));
             double sum = 0.0;
             for (std::size_t k = first; k <= last; ++k) sum += power_[k];
-            return static_cast<float>(10.0 * std::log10(sum + kFeatureEnergyFloor));
+            return sum;
         };
+        auto band_db = [&](double low_hz, double high_hz) {
+            return static_cast<float>(10.0 * std::log10(band_power(low_hz, high_hz) + kFeatureEnergyFloor));
+        };
+        fundamental_power_ += band_power(80.0, kFundamentalTopHz);
+        low_band_power_ += band_power(80.0, 900.0);
         std::array<float, kFeatureCount> row{};
         std::array<float, kMelFilters> log_mel{};
         for (std::size_t m = 0; m < kMelFilters; ++m) {
@@ -306,6 +312,8 @@ private:
     std::size_t next_lane_ = kLanes;  // the lane the next frame takes; kLanes: none drawn yet
     std::vector<float> pending_;
     std::size_t samples_in_ = 0;
+    double fundamental_power_ = 0.0;  // FeatureTrack::fundamental_share's, summed over the frames so far
+    double low_band_power_ = 0.0;
     std::array<float, kWindowSamples> window_{};
     float offset_ = 0.0f;                   // the recording's DC offset as followed so far
     std::array<float, kWindowSamples> centred_{};  // a frame less the offset

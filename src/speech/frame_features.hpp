@@ -39,6 +39,10 @@ constexpr float kDigitalSilenceDb = -99.0f;
 // which a timeline's JSON then prints as 3.57.
 constexpr double frame_time_s(std::size_t frame) { return static_cast<double>(frame) / kFramesPerSecond; }
 
+// The top of the band where a voice's fundamental lies (FeatureTrack::fundamental_share): a man's
+// 85-180 Hz, a woman's 165-255 Hz, and the telephone band's lower edge.
+constexpr double kFundamentalTopHz = 300.0;
+
 // The mel bands behind the cepstra, 100-7600 Hz (the cepstra keep kCepstrumCount of their DCT).
 constexpr int kMelFilters = 24;
 
@@ -76,6 +80,10 @@ struct FeatureTrack {
     std::vector<PitchFrame> pitch;
     // Where the stream lost packets (dropout_finder.hpp), in order: conceal_dropouts' to draw over.
     std::vector<Dropout> dropouts;
+    // The share of the low band's power (kLowBandDb's 80-900 Hz, summed over the whole recording)
+    // under kFundamentalTopHz, where a voice's fundamental lies: a telephone band (300-3400 Hz) takes
+    // it out (count_nuclei, alignment_checks.hpp). 1 where analyze_audio did not measure it.
+    double fundamental_share = 1.0;
 
     float at(std::size_t frame, int column) const {
         return values[frame * kFeatureCount + static_cast<std::size_t>(column)];

@@ -33,9 +33,27 @@ std::vector<float> tone_silence_tone() {
     return samples;
 }
 
+// 1 s of a voice's harmonics of 120 Hz, those from `lowest_hz` to 3400 Hz, of falling strength.
+std::vector<float> harmonics_from(double lowest_hz) {
+    std::vector<float> samples(kAnalysisRateHz, 0.0f);
+    for (double f = 120.0; f <= 3400.0; f += 120.0) {
+        if (f < lowest_hz) continue;
+        for (std::size_t i = 0; i < samples.size(); ++i)
+            samples[i] += static_cast<float>(
+                0.3 * 120.0 / f * std::sin(2.0 * M_PI * f * static_cast<double>(i) / kAnalysisRateHz));
+    }
+    return samples;
+}
+
 }  // namespace
 
 TEST_SUITE("frame features") {
+    TEST_CASE("the fundamental's share of the low band: a voice's most, none through a telephone band") {
+        CHECK(features_of(harmonics_from(0.0)).fundamental_share > 0.5);
+        CHECK(features_of(harmonics_from(300.0)).fundamental_share < 0.01);
+        CHECK(FeatureTrack{}.fundamental_share == 1.0);
+    }
+
     TEST_CASE("digital silence keeps its level but its spectrum's shape varies, not one constant cepstrum") {
         const FeatureTrack track = features_of(tone_silence_tone());
         // Frames well inside the silence (60-90 of 150).

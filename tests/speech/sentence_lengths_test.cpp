@@ -30,13 +30,15 @@ struct BumpyTrack {
         track.values.assign(frames * kFeatureCount, 0.0f);
         loudness.low_floor_db = 0.0f;
     }
-    void bumps(const FrameSpan& span, std::size_t peaks, float peak_db, float dip_db) {
+    void bumps(const FrameSpan& span, std::size_t peaks, float peak_db, float dip_db,
+               int column = kLowBandDb) {
         const double width = static_cast<double>(span.length()) / static_cast<double>(peaks);
         for (std::size_t t = span.first_frame; t < span.end_frame; ++t) {
             const double phase = (static_cast<double>(t - span.first_frame) + 0.5) / width;
             const double within = phase - static_cast<double>(static_cast<std::size_t>(phase));  // 0..1 in a bump
             const double rise = 1.0 - std::abs(2.0 * within - 1.0);                              // a triangle
-            track.values[t * kFeatureCount + kLowBandDb] = static_cast<float>(dip_db + (peak_db - dip_db) * rise);
+            track.values[t * kFeatureCount + static_cast<std::size_t>(column)] =
+                static_cast<float>(dip_db + (peak_db - dip_db) * rise);
         }
     }
 };
@@ -69,6 +71,19 @@ TEST_SUITE("speech") {
         // Bumps in a pause, under the floor's margin, are no syllables.
         bumpy.bumps({200, 400}, 8, 8.0f, 0.0f);
         CHECK(count_nuclei(bumpy.track, bumpy.loudness, {200, 400}) == 0);
+    }
+
+    TEST_CASE("voiced peaks through a telephone band: counted on the low and mid bands together") {
+        // Four syllables whose first formant dips inside each (two low-band bumps a syllable, as
+        // jian's i to a reads through 300-3400 Hz) under a second formant's one bump a syllable.
+        BumpyTrack bumpy(200);
+        bumpy.bumps({0, 200}, 8, 30.0f, 20.0f);
+        bumpy.bumps({0, 200}, 4, 40.0f, 20.0f, kMidBandDb);
+        bumpy.track.fundamental_share = 0.03;
+        CHECK(count_nuclei(bumpy.track, bumpy.loudness, {0, 200}) == 4);
+        // With its fundamental the low band is the voicing, read alone.
+        bumpy.track.fundamental_share = 0.4;
+        CHECK(count_nuclei(bumpy.track, bumpy.loudness, {0, 200}) == 8);
     }
 
     TEST_CASE("a sentence far slower than the others passes when its voiced peaks fit its syllables") {
