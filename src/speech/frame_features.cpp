@@ -248,11 +248,11 @@ private:
             for (std::size_t k = first; k <= last; ++k) sum += power_[k];
             return sum;
         };
-        auto band_db = [&](double low_hz, double high_hz) {
-            return static_cast<float>(10.0 * std::log10(band_power(low_hz, high_hz) + kFeatureEnergyFloor));
-        };
+        auto power_db = [](double power) { return static_cast<float>(10.0 * std::log10(power + kFeatureEnergyFloor)); };
+        auto band_db = [&](double low_hz, double high_hz) { return power_db(band_power(low_hz, high_hz)); };
+        const double low_band_power = band_power(80.0, 900.0);
         fundamental_power_ += band_power(80.0, kFundamentalTopHz);
-        low_band_power_ += band_power(80.0, 900.0);
+        low_band_power_ += low_band_power;
         std::array<float, kFeatureCount> row{};
         std::array<float, kMelFilters> log_mel{};
         for (std::size_t m = 0; m < kMelFilters; ++m) {
@@ -267,7 +267,7 @@ private:
             row[c] = sum;
         }
         row[kEnergyDb] = band_db(60.0, 8000.0);
-        row[kLowBandDb] = band_db(80.0, 900.0);
+        row[kLowBandDb] = power_db(low_band_power);
         row[kMidBandDb] = band_db(900.0, 2500.0);
         row[kHighBandDb] = band_db(2500.0, 8000.0);
         row[kPeakAmplitude] = peak;

@@ -3,6 +3,7 @@
 #ifndef TALKFACE_SPEECH_FRAME_FEATURES_HPP
 #define TALKFACE_SPEECH_FRAME_FEATURES_HPP
 
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -26,6 +27,8 @@ constexpr std::size_t kWindowLeadSamples = (kWindowSamples - kHopSamples) / 2;
 // Added to every power before its logarithm is taken, so that digital silence reads -100 dB (in
 // the dB columns) rather than minus infinity.
 constexpr double kFeatureEnergyFloor = 1e-10;
+// The power a dB column's level stands for, to sum bands or frames and take the level again.
+inline double db_to_power(double db) { return std::pow(10.0, db / 10.0); }
 // A frame whose level (any dB column: the whole band or part of it) is at most this holds no sound,
 // only digital silence: exact zeros read -100 dB, while a frame of zeros but one sample of a single
 // 16-bit step reads -66 dB (the whole band; -69 dB in held_music's 300-5000 Hz) where the window

@@ -13,8 +13,8 @@ std::vector<float> changing_shares(const FeatureTrack& track) {
     std::vector<double> band(frames + 1, 0.0);
     std::vector<double> changing(frames + 1, 0.0);
     for (std::size_t t = 0; t < frames; ++t) {
-        band[t + 1] = band[t] + std::pow(10.0, track.at(t, kChangeBandDb) / 10.0);
-        changing[t + 1] = changing[t] + std::pow(10.0, track.at(t, kChangingDb) / 10.0);
+        band[t + 1] = band[t] + db_to_power(track.at(t, kChangeBandDb));
+        changing[t + 1] = changing[t] + db_to_power(track.at(t, kChangingDb));
     }
     std::vector<float> share(frames);
     for (std::size_t t = 0; t < frames; ++t) {
@@ -25,11 +25,10 @@ std::vector<float> changing_shares(const FeatureTrack& track) {
     return share;
 }
 
-std::vector<bool> held_music_frames(const FeatureTrack& track, const std::vector<float>& activity_db,
-                                    float threshold_db) {
+std::vector<bool> held_music_frames(const FeatureTrack& track, const std::vector<float>& share,
+                                    const std::vector<float>& activity_db, float threshold_db) {
     const std::size_t frames = track.frame_count;
     std::vector<bool> held(frames, false);
-    const std::vector<float> share = changing_shares(track);
     std::vector<float> quiet_share;
     std::vector<float> speech_db;
     for (std::size_t t = 0; t < frames; ++t) {

@@ -52,10 +52,12 @@ inline bool is_music_beside_voice(double music_share, double voice_share) {
 // holding a vowel, or a last word with the music ringing on after it, is shorter.
 constexpr std::size_t kEdgeMusicMinFrames = 300;
 
-// Per frame of `track`: whether it is held music, given the loudness profile's smoothed activity
-// and its speech threshold. All false when the recording's quiet frames (below the threshold, with
-// any sound in the band) change as noise does, or when it has none.
-std::vector<bool> held_music_frames(const FeatureTrack& track, const std::vector<float>& activity_db, float threshold_db);
+// Per frame of `track`: whether it is held music, given its changing shares (changing_shares), the
+// loudness profile's smoothed activity and its speech threshold. All false when the recording's
+// quiet frames (below the threshold, with any sound in the band) change as noise does, or when it
+// has none.
+std::vector<bool> held_music_frames(const FeatureTrack& track, const std::vector<float>& share,
+                                    const std::vector<float>& activity_db, float threshold_db);
 
 }  // namespace talkface::detail
 

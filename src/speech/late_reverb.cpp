@@ -15,10 +15,6 @@ namespace {
 constexpr std::array<int, 4> kBandColumns = {kEnergyDb, kLowBandDb, kMidBandDb, kHighBandDb};
 constexpr std::size_t kFollowedBands = kMelFilters + kBandColumns.size();
 
-double db_to_power(double db) {
-    return std::pow(10.0, db / 10.0);
-}
-
 // The least-squares line through the levels of frames [first, end): its level at `first` and its
 // change a frame.
 struct Line {

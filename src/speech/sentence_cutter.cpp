@@ -273,8 +273,10 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     if (!profile.tones.empty()) smooth();
     // Music held through the pauses is as loud as the quieter speech: where it is held, the frame
     // is no louder than a pause can be. So are a beat's hits between the pauses it cuts up, where
-    // the beat's repeats explain them.
-    const std::vector<bool> held = held_music_frames(track, profile.activity_db, profile.activity_threshold_db);
+    // the beat's repeats explain them. (The same changing shares judge music before the voice and
+    // after it, below.)
+    const std::vector<float> share = changing_shares(track);
+    const std::vector<bool> held = held_music_frames(track, share, profile.activity_db, profile.activity_threshold_db);
     const float pause_db = std::nextafter(profile.activity_threshold_db, -std::numeric_limits<float>::infinity());
     for (std::size_t t = 0; t < frames; ++t)
         if (held[t]) profile.activity_db[t] = std::min(profile.activity_db[t], pause_db);
@@ -324,7 +326,6 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     // kEdgeMusicMinFrames or more of them together, are not speech where they are music beside
     // the speech left between them (held_music.hpp; a last word and the music ringing on after it
     // are shorter).
-    const std::vector<float> share = changing_shares(track);
     const auto change_of = [&](std::size_t first, std::size_t end) {
         return loud_change_share(track, share, profile.activity_db, profile.activity_threshold_db, first,
                                  end);
