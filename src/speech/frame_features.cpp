@@ -248,7 +248,9 @@ private:
             for (std::size_t k = first; k <= last; ++k) sum += power_[k];
             return sum;
         };
-        auto power_db = [](double power) { return static_cast<float>(10.0 * std::log10(power + kFeatureEnergyFloor)); };
+        auto power_db = [](double power) {
+            return static_cast<float>(10.0 * std::log10(power + kFeatureEnergyFloor));
+        };
         auto band_db = [&](double low_hz, double high_hz) { return power_db(band_power(low_hz, high_hz)); };
         const double low_band_power = band_power(80.0, 900.0);
         fundamental_power_ += band_power(80.0, kFundamentalTopHz);

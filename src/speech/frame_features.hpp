@@ -28,7 +28,9 @@ constexpr std::size_t kWindowLeadSamples = (kWindowSamples - kHopSamples) / 2;
 // the dB columns) rather than minus infinity.
 constexpr double kFeatureEnergyFloor = 1e-10;
 // The power a dB column's level stands for, to sum bands or frames and take the level again.
-inline double db_to_power(double db) { return std::pow(10.0, db / 10.0); }
+inline double db_to_power(double db) {
+    return std::pow(10.0, db / 10.0);
+}
 // A frame whose level (any dB column: the whole band or part of it) is at most this holds no sound,
 // only digital silence: exact zeros read -100 dB, while a frame of zeros but one sample of a single
 // 16-bit step reads -66 dB (the whole band; -69 dB in held_music's 300-5000 Hz) where the window

@@ -276,7 +276,8 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     // the beat's repeats explain them. (The same changing shares judge music before the voice and
     // after it, below.)
     const std::vector<float> share = changing_shares(track);
-    const std::vector<bool> held = held_music_frames(track, share, profile.activity_db, profile.activity_threshold_db);
+    const std::vector<bool> held =
+        held_music_frames(track, share, profile.activity_db, profile.activity_threshold_db);
     const float pause_db = std::nextafter(profile.activity_threshold_db, -std::numeric_limits<float>::infinity());
     for (std::size_t t = 0; t < frames; ++t)
         if (held[t]) profile.activity_db[t] = std::min(profile.activity_db[t], pause_db);
