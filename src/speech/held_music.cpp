@@ -52,4 +52,71 @@ float loud_change_share(const FeatureTrack& track, const std::vector<float>& sha
     return loud.empty() ? 0.0f : lower_median(std::move(loud));
 }
 
+namespace {
+
+// The stretches between `pauses` inside `speech`: before pause k, and after the last.
+FrameSpan stretch_before(const std::vector<FrameSpan>& pauses, const FrameSpan& speech, std::size_t k) {
+    return {k > 0 ? pauses[k - 1].end_frame : speech.first_frame,
+            k < pauses.size() ? pauses[k].first_frame : speech.end_frame};
+}
+
+// The count of pauses that music before the voice takes in: up to the last pause before which
+// every stretch holds its notes (`is_held`) and which lies kEdgeMusicMinFrames or more into the
+// speech; 0 where none does.
+std::size_t pauses_in_opening_music(const std::vector<FrameSpan>& pauses, const FrameSpan& speech,
+                                    const std::function<bool(const FrameSpan&)>& is_held) {
+    std::size_t leading = 0;
+    for (std::size_t k = 0; k < pauses.size() && is_held(stretch_before(pauses, speech, k)); ++k)
+        if (pauses[k].first_frame >= speech.first_frame + kEdgeMusicMinFrames) leading = k + 1;
+    return leading;
+}
+
+// The first pause that music after the voice takes in, as pauses_in_opening_music from the end,
+// never among the first `leading`; pauses.size() where there is none.
+std::size_t first_pause_of_closing_music(const std::vector<FrameSpan>& pauses, const FrameSpan& speech,
+                                         std::size_t leading,
+                                         const std::function<bool(const FrameSpan&)>& is_held) {
+    std::size_t trailing = pauses.size();
+    for (std::size_t k = pauses.size(); k > leading && is_held(stretch_before(pauses, speech, k)); --k)
+        if (speech.end_frame >= pauses[k - 1].end_frame + kEdgeMusicMinFrames) trailing = k - 1;
+    return trailing;
+}
+
+// `held` with each edge's music kept only where it is music beside the voice left between the two
+// (is_music_beside_voice), by their loud frames' change (`change_of`).
+EdgeMusic music_beside_voice(const std::vector<FrameSpan>& pauses, const FrameSpan& speech, EdgeMusic held,
+                             const std::function<float(const FrameSpan&)>& change_of) {
+    const std::size_t none = pauses.size();
+    if (held.leading == 0 && held.trailing == none) return held;
+    const double voice =
+        change_of({held.leading > 0 ? pauses[held.leading - 1].end_frame : speech.first_frame,
+                   held.trailing < none ? pauses[held.trailing].first_frame : speech.end_frame});
+    if (held.leading > 0 &&
+        !is_music_beside_voice(change_of({speech.first_frame, pauses[held.leading - 1].first_frame}), voice))
+        held.leading = 0;
+    if (held.trailing < none &&
+        !is_music_beside_voice(change_of({pauses[held.trailing].end_frame, speech.end_frame}), voice))
+        held.trailing = none;
+    return held;
+}
+
+}  // namespace
+
+EdgeMusic find_edge_music(const FeatureTrack& track, const std::vector<float>& share,
+                          const std::vector<float>& activity_db, float threshold_db,
+                          const std::vector<FrameSpan>& pauses, const FrameSpan& speech,
+                          const std::function<bool(const FrameSpan&)>& is_not_speech) {
+    const auto change_of = [&](const FrameSpan& stretch) {
+        return loud_change_share(track, share, activity_db, threshold_db, stretch.first_frame,
+                                 stretch.end_frame);
+    };
+    const auto is_held = [&](const FrameSpan& stretch) {
+        return is_not_speech(stretch) || change_of(stretch) < kHeldMusicChangeShare;
+    };
+    EdgeMusic held;
+    held.leading = pauses_in_opening_music(pauses, speech, is_held);
+    held.trailing = first_pause_of_closing_music(pauses, speech, held.leading, is_held);
+    return music_beside_voice(pauses, speech, held, change_of);
+}
+
 }  // namespace talkface::detail

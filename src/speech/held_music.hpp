@@ -8,9 +8,11 @@
 #ifndef TALKFACE_SPEECH_HELD_MUSIC_HPP
 #define TALKFACE_SPEECH_HELD_MUSIC_HPP
 
+#include <functional>
 #include <vector>
 
 #include "speech/frame_features.hpp"
+#include "speech/sentence_cutter.hpp"
 
 namespace talkface::detail {
 
@@ -51,6 +53,25 @@ inline bool is_music_beside_voice(double music_share, double voice_share) {
 // Music set apart from a recording's speech lasts 3 s or more (the shortest jingle): a slow voice
 // holding a vowel, or a last word with the music ringing on after it, is shorter.
 constexpr std::size_t kEdgeMusicMinFrames = 300;
+
+// Music before the voice comes in or after it ends (a podcast's jingle, a video's intro or outro:
+// issue 13), as the pauses that set it apart: the speech left between them lies after pause
+// leading - 1 (none where leading is 0) and before pause trailing (none where it is the pauses'
+// count).
+struct EdgeMusic {
+    std::size_t leading = 0;
+    std::size_t trailing = 0;
+};
+
+// The edge music of a recording whose speech (loud frames) spans `speech` and is cut by `pauses`
+// (in order, inside it): the stretches between pauses at an edge that each hold their notes (their
+// loud_change_share under kHeldMusicChangeShare) or are no speech already (`is_not_speech`: a quiet
+// note, a click), kEdgeMusicMinFrames or more of them together, where they are music beside the
+// speech left between them (is_music_beside_voice). {0, pauses.size()} where there is none.
+EdgeMusic find_edge_music(const FeatureTrack& track, const std::vector<float>& share,
+                          const std::vector<float>& activity_db, float threshold_db,
+                          const std::vector<FrameSpan>& pauses, const FrameSpan& speech,
+                          const std::function<bool(const FrameSpan&)>& is_not_speech);
 
 // Per frame of `track`: whether it is held music, given its changing shares (changing_shares), the
 // loudness profile's smoothed activity and its speech threshold. All false when the recording's

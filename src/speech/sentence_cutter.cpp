@@ -321,44 +321,14 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
         return loud <= static_cast<std::ptrdiff_t>(kLongestClickFrames);
     };
     const auto is_not_speech = [&](std::size_t first, std::size_t end) { return is_noise_only(first, end) || is_click(first, end); };
-    // Music before the voice comes in or after it ends (a podcast's jingle, a video's intro or
-    // outro: issue 13) is as loud as the speech, but holds its notes: the stretches at an edge
-    // between pauses that each hold their notes (or are no speech already: a quiet note, a click),
-    // kEdgeMusicMinFrames or more of them together, are not speech where they are music beside
-    // the speech left between them (held_music.hpp; a last word and the music ringing on after it
-    // are shorter).
-    const auto change_of = [&](std::size_t first, std::size_t end) {
-        return loud_change_share(track, share, profile.activity_db, profile.activity_threshold_db, first,
-                                 end);
-    };
-    const auto is_held_or_not_speech = [&](std::size_t first, std::size_t end) {
-        return is_not_speech(first, end) || change_of(first, end) < kHeldMusicChangeShare;
-    };
-    std::size_t leading = 0, trailing = pauses.size();
-    for (std::size_t k = 0;
-         k < trailing &&
-         is_held_or_not_speech(k > 0 ? pauses[k - 1].end_frame : first_speech, pauses[k].first_frame);
-         ++k)
-        if (pauses[k].first_frame >= first_speech + kEdgeMusicMinFrames) leading = k + 1;
-    for (std::size_t k = trailing;
-         k > leading && is_held_or_not_speech(pauses[k - 1].end_frame,
-                                              k < pauses.size() ? pauses[k].first_frame : end_speech);
-         --k)
-        if (end_speech >= pauses[k - 1].end_frame + kEdgeMusicMinFrames) trailing = k - 1;
-    if (leading > 0 || trailing < pauses.size()) {
-        const double voice = change_of(leading > 0 ? pauses[leading - 1].end_frame : first_speech,
-                                       trailing < pauses.size() ? pauses[trailing].first_frame : end_speech);
-        if (leading > 0 &&
-            is_music_beside_voice(change_of(first_speech, pauses[leading - 1].first_frame), voice))
-            first_speech = pauses[leading - 1].end_frame;
-        else
-            leading = 0;
-        if (trailing < pauses.size() &&
-            is_music_beside_voice(change_of(pauses[trailing].end_frame, end_speech), voice))
-            end_speech = pauses[trailing].first_frame;
-        else
-            trailing = pauses.size();
-    }
+    // Music before the voice comes in or after it ends is as loud as the speech, but holds its
+    // notes (held_music.hpp; a last word and the music ringing on after it are shorter).
+    const EdgeMusic edge_music = find_edge_music(
+        track, share, profile.activity_db, profile.activity_threshold_db, pauses, {first_speech, end_speech},
+        [&](const FrameSpan& stretch) { return is_not_speech(stretch.first_frame, stretch.end_frame); });
+    std::size_t leading = edge_music.leading, trailing = edge_music.trailing;
+    if (leading > 0) first_speech = pauses[leading - 1].end_frame;
+    if (trailing < pauses.size()) end_speech = pauses[trailing].first_frame;
     while (leading < trailing && is_not_speech(first_speech, pauses[leading].first_frame)) first_speech = pauses[leading++].end_frame;
     while (trailing > leading && is_not_speech(pauses[trailing - 1].end_frame, end_speech)) end_speech = pauses[--trailing].first_frame;
     profile.pauses.assign(pauses.begin() + static_cast<std::ptrdiff_t>(leading), pauses.begin() + static_cast<std::ptrdiff_t>(trailing));
