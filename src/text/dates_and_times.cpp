@@ -207,10 +207,14 @@ bool counts_years(const std::vector<CodePoint>& text, std::size_t start, const W
 }
 
 bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNumber& number) {
-    if (number.has_point || number.has_separators || number.whole.size() != 4 ||
-        !starts_with_any(number.whole, {"19", "20"})) {
-        return false;
-    }
+    if (number.has_point || number.has_separators) return false;
+    // A release named by its year's last two digits and the half it came in (Windows 11 24H2 二四 H 二,
+    // 22H2; session 27: 二十四), as the release's year is said digit by digit.
+    if (number.whole.size() == 2 && value_at(text, number.end) == 'H' &&
+        is_one_of(value_at(text, number.end + 1), U"12") && !is_digit_at(text, number.end + 2) &&
+        !is_ascii_letter(value_at(text, number.end + 2)))
+        return true;
+    if (number.whole.size() != 4 || !starts_with_any(number.whole, {"19", "20"})) return false;
     const std::string after = text_between(text, number.end, number.end + 3);
     // A year's quarter or half (2024Q4 二零二四 Q 四, 2025H1; session 17: 两千零二十四).
     if (after.size() >= 2 && is_one_of(value_at(text, number.end), U"QH") && is_digit_at(text, number.end + 1) &&

@@ -53,6 +53,9 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     // speakers spell it (APEC会议, APEC蓝): unlike OPEC 欧佩克, AIDS 艾滋 and SARS 萨斯 it has no loan said
     // as a word, only its Chinese name, 亚太经合组织, and its letters.
     {"apec", "ei1 pi1 yi4 xi1"},
+    // Session 27: Elon, which the dictionary lacks (the mapping gave el + on, ai er an), is 埃隆 as Mandarin
+    // news writes and says Elon Musk's name (埃隆·马斯克).
+    {"elon", "ai1 long2"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

@@ -571,6 +571,13 @@ private:
                               ((text[after_letters].value == '.' && is_digit(text[after_letters + 1].value)) ||
                                (has_han_ && is_digit(text[after_letters].value) && is_digit(text[after_letters + 1].value)));
         if (is_level) return read_latin(text, start);
+        // An o with a tone digit 1-4 among Chinese characters (o1, o3) is a model's letter and number
+        // (OpenAI的o1模型 ou 一; session 27: the pinyin o1, 噢): Chinese text writes the interjection with
+        // its character. A light o5 stays pinyin, as numbered pinyin writes an English word's o (Office
+        // o5 fa5 si5), and so do a and e, which a letter's name spells (R a4 er5).
+        if (has_han_ && token.size() == 2 && token[0].value == 'o' && token[1].value >= '1' &&
+            token[1].value <= '4')
+            return read_latin(text, start);
         if (in_chemical_formula(text, start)) return read_latin(text, start);
         if (options_.read_pinyin && looks_like_pinyin(token) && !is_english_among_han && !is_formula_letter)
             syllables = split_pinyin(token);

@@ -111,7 +111,13 @@ const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size
 
 bool is_byte_unit_at(const std::vector<CodePoint>& text, std::size_t i) {
     if (value_at(text, i) == ' ') ++i;
-    return is_one_of(value_at(text, i), U"KMGTP") && value_at(text, i + 1) == 'B' && !is_ascii_letter(value_at(text, i + 2));
+    if (!is_one_of(value_at(text, i), U"KMGTP")) return false;
+    if (value_at(text, i + 1) == 'B') return !is_ascii_letter(value_at(text, i + 2));
+    // The B left out, as chat and shops write a phone's data and memory (2G流量 两G, 4G内存; session 27:
+    // 二G, a network's generation, which 2G网络 stays): the capital alone before a word of stored data.
+    return starts_with_any(text_between(text, i + 1, i + 3),
+                           {"流量", "內存", "内存", "运存", "運存", "显存", "顯存", "存储", "存儲", "硬盘",
+                            "硬碟", "网盘", "網盤", "云盘", "雲盤", "空间", "空間"});
 }
 
 const Currency* currency_at(const std::vector<CodePoint>& text, std::size_t i, std::size_t& end) {

@@ -21,7 +21,8 @@ struct Unit {
 const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size_t& end);
 
 // KB MB GB TB PB after a number (256GB, 2 TB): a unit, so the number counts (两 TB, not a phone
-// number's digits), said as its letters, which the Latin reader reads after the number.
+// number's digits), said as its letters, which the Latin reader reads after the number. So is the
+// capital alone before a word of stored data (2G流量, 4G内存; session 27).
 bool is_byte_unit_at(const std::vector<CodePoint>& text, std::size_t i);
 
 struct Currency {
