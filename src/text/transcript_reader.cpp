@@ -557,9 +557,10 @@ private:
             if (is_pinyin_letter(c.value)) letters += latin_spelling(token, &c - token.data(), &c - token.data() + 1);
         }
         const bool is_english_among_han =
-            has_han_ && (detail::is_all_capitals(letters) ||
-                         (!has_tone_digit(token) && !starts_as_pinyin_only(letters) &&
-                          detail::english_word_syllables(latin_spelling(text, start, end))));
+            (has_han_ || (options_.read_pinyin && is_english_line(text, start))) &&
+            (detail::is_all_capitals(letters) ||
+             (!has_tone_digit(token) && !starts_as_pinyin_only(letters) &&
+              detail::english_word_syllables(latin_spelling(text, start, end))));
         // Capitals beside a formula's sign are a lesson's letters in a line without Chinese
         // characters too (∠A=30° 角 A 等于三十度; session 14: A was the pinyin a).
         // With a count after it too (2H2+O2=2H2O: O2 was the pinyin o2; session 17).
@@ -587,6 +588,43 @@ private:
         for (auto& syllable : *syllables)
             add_syllable(std::move(syllable.written), std::move(syllable.pinyin));
         return end;
+    }
+
+    // Whether the line holding text[at] is English: more of its words are English words the dictionary
+    // has that spell no pinyin (I, fix, it, no) than are pinyin it lacks (xiao, huan, Xiaoming), as in
+    // "I can fix it", where a line of pinyin without tones holds a name or a brand at the most (wo xi
+    // huan iPhone). A word that is both (can, man, long, you) or neither does not count, nor an acronym.
+    // In such a line a word the dictionary has is English though it splits into syllables (can kan;
+    // session 27: the pinyin can), as among Chinese characters. Known lines are kept, so that a long
+    // line is scanned once.
+    bool is_english_line(const std::vector<CodePoint>& text, std::size_t at) {
+        const int line = text[at].line;
+        if (const auto known = english_lines_.find(line); known != english_lines_.end()) return known->second;
+        auto first = at;
+        while (first > 0 && text[first - 1].line == line) --first;
+        int pinyin_words = 0;
+        int english_words = 0;
+        for (auto i = first; i < text.size() && text[i].line == line;) {
+            const bool starts_word =
+                is_pinyin_letter(text[i].value) &&
+                (i == first || !(is_pinyin_letter(text[i - 1].value) || is_digit(text[i - 1].value)));
+            if (!starts_word) {
+                ++i;
+                continue;
+            }
+            const auto end = end_of_token(text, i);
+            const std::vector<CodePoint> token(text.begin() + static_cast<std::ptrdiff_t>(i),
+                                               text.begin() + static_cast<std::ptrdiff_t>(end));
+            const auto spelling = latin_spelling(text, i, end);
+            if (spelling.size() == 1 || !detail::is_all_capitals(spelling)) {
+                const auto split = looks_like_pinyin(token) ? split_pinyin(token) : std::nullopt;
+                const bool is_pinyin = split && (has_tone_digit(token) || !splits_into_interjection(*split));
+                const bool is_english = !has_tone_digit(token) && detail::english_word_syllables(spelling);
+                if (is_pinyin != is_english) ++(is_pinyin ? pinyin_words : english_words);
+            }
+            i = end;
+        }
+        return english_lines_[line] = english_words > pinyin_words;
     }
 
     // Latin letters that are not pinyin: an acronym (a few capitals) letter by letter, a word by
@@ -1114,6 +1152,7 @@ private:
 
     const TranscriptOptions& options_;
     bool is_traditional_ = false;  // the transcript is mostly Traditional (script_variant.hpp)
+    std::map<int, bool> english_lines_;  // is_english_line's answers, by line
     bool has_han_ = false;         // the transcript has Chinese characters: a toneless Latin word may be English
     const std::string& source_name_;
     const detail::ReadingTables& tables_;

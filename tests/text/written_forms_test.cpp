@@ -1452,7 +1452,7 @@ TEST_SUITE("written forms") {
         CHECK(pinyin_of("wo men hm") == "wo5 men5 hm5");
     }
 
-    TEST_CASE("a phone's data and memory in G, a release's 24H2, a model's o1, Elon") {
+    TEST_CASE("a phone's data and memory in G, a release's 24H2, a model's o1, Elon, a line in English") {
         // Each row but the limits failed on main 5bb18ac (session 27, dev17's tuning misses and session 26's
         // leftovers).
         check_cases({
@@ -1468,5 +1468,12 @@ TEST_SUITE("written forms") {
             {"这里o5 fa5 si5", "这里 o5 fa5 si5"},
             {"字母R读a4 er5", "字母 a er读 a4 er5"},
         });
+        // A line of English whose words the dictionary has though they split into pinyin (can, man, see);
+        // a line of pinyin with a name or a brand in it stays pinyin.
+        CHECK(pinyin_of("I can fix it.") == "ai4 kan1 fei1 ke5 si5 yi1 te5");
+        CHECK(pinyin_of("The man can see.") == "de5 man1 kan1 si1");
+        CHECK(pinyin_of("wo xi huan iPhone") == "wo5 xi5 huan5 ai1 feng5");
+        CHECK(pinyin_of("ni hao Tom") == "ni5 hao5 ta1 mu5");
+        CHECK(pinyin_of("Zhang Wei, Li Na") == "zhang5 wei5 li5 na5");
     }
 }
