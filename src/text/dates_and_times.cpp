@@ -208,11 +208,13 @@ bool counts_years(const std::vector<CodePoint>& text, std::size_t start, const W
 
 bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNumber& number) {
     if (number.has_point || number.has_separators) return false;
-    // A release named by its year's last two digits and the half it came in (Windows 11 24H2 二四 H 二,
-    // 22H2; session 27: 二十四), as the release's year is said digit by digit.
-    if (number.whole.size() == 2 && value_at(text, number.end) == 'H' &&
-        is_one_of(value_at(text, number.end + 1), U"12") && !is_digit_at(text, number.end + 2) &&
-        !is_ascii_letter(value_at(text, number.end + 2)))
+    // A release or a quarter named by its year's last two digits and the half or quarter (Windows 11 24H2
+    // 二四 H 二, 22H2, 25Q1 二五 Q 一; session 27: 二十四), as the year is said digit by digit.
+    const auto period = value_at(text, number.end);
+    const auto part = value_at(text, number.end + 1);
+    if (number.whole.size() == 2 &&
+        ((period == 'H' && is_one_of(part, U"12")) || (period == 'Q' && is_one_of(part, U"1234"))) &&
+        !is_digit_at(text, number.end + 2) && !is_ascii_letter(value_at(text, number.end + 2)))
         return true;
     if (number.whole.size() != 4 || !starts_with_any(number.whole, {"19", "20"})) return false;
     const std::string after = text_between(text, number.end, number.end + 3);

@@ -52,7 +52,7 @@ bool counts_years(const std::vector<CodePoint>& text, std::size_t start, const W
 
 // A year that names what follows it without 年 (2025财年, 2025赛季, 2026款, 2025届, 2024版, 2023级, 2026春晚,
 // 2030世界杯): digit by digit, as a year is (二零二五财年); a count elsewhere (2000人, 2000多). So are a
-// release's two digits before its half (24H2 二四 H 二).
+// release's or a quarter's two digits before its half or quarter (24H2 二四 H 二, 25Q1 二五 Q 一).
 bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNumber& number);
 
 // A year listed before another with 、 (2022、2023年 二零二二、二零二三年, 2024、2025赛季): four digits

@@ -1459,6 +1459,7 @@ TEST_SUITE("written forms") {
             {"我手机只剩2G流量了", "我手机只剩两 ji流量了"},
             {"这台手机只有2G内存", "这台手机只有两 ji内存"},
             {"升级到Windows 11 24H2后", "升级到 wen dou si十一二四 ai qi二后"},
+            {"25Q1营收同比增长", "二五 qiu一营收同比增长"},
             {"OpenAI发布了o1模型", "ou pen ei ai发布了 ou一模型"},
             {"Elon Musk发文称", "ai long ma si ke发文称"},
             // The limits: a network's generation, a year's half, numbered pinyin's o5 and a4 among
