@@ -252,8 +252,8 @@ private:
             return static_cast<float>(10.0 * std::log10(power + kFeatureEnergyFloor));
         };
         auto band_db = [&](double low_hz, double high_hz) { return power_db(band_power(low_hz, high_hz)); };
-        const double low_band_power = band_power(80.0, 900.0);
-        fundamental_power_ += band_power(80.0, kFundamentalTopHz);
+        const double low_band_power = band_power(kLowBandLowHz, kLowBandHighHz);
+        fundamental_power_ += band_power(kLowBandLowHz, kFundamentalTopHz);
         low_band_power_ += low_band_power;
         std::array<float, kFeatureCount> row{};
         std::array<float, kMelFilters> log_mel{};
@@ -268,10 +268,10 @@ private:
             for (std::size_t m = 0; m < kMelFilters; ++m) sum += dct_[c][m] * log_mel[m];
             row[c] = sum;
         }
-        row[kEnergyDb] = band_db(60.0, 8000.0);
+        row[kEnergyDb] = band_db(kWholeBandLowHz, kWholeBandHighHz);
         row[kLowBandDb] = power_db(low_band_power);
-        row[kMidBandDb] = band_db(900.0, 2500.0);
-        row[kHighBandDb] = band_db(2500.0, 8000.0);
+        row[kMidBandDb] = band_db(kLowBandHighHz, kMidBandHighHz);
+        row[kHighBandDb] = band_db(kMidBandHighHz, kWholeBandHighHz);
         row[kPeakAmplitude] = peak;
         if (const double share = clipped_share(samples); share >= kClippedShareToRestore) {
             const auto gain_db = static_cast<float>(restored_gain_db(share));
@@ -288,9 +288,10 @@ private:
         }
     }
 
-    // kLineShare and kLineBin of the frame's power (not dithered), over 60-8000 Hz, as kEnergyDb.
+    // kLineShare and kLineBin of the frame's power (not dithered), over the whole band, as kEnergyDb.
     void set_line(std::array<float, kFeatureCount>& row) const {
-        constexpr auto first = static_cast<std::size_t>((60 * kFftSize + kAnalysisRateHz - 1) / kAnalysisRateHz);
+        constexpr auto first = static_cast<std::size_t>(
+            (static_cast<std::size_t>(kWholeBandLowHz) * kFftSize + kAnalysisRateHz - 1) / kAnalysisRateHz);
         constexpr std::size_t last = kBins - 1;
         std::size_t strongest = first;
         double band = 0.0;

@@ -44,6 +44,16 @@ constexpr float kDigitalSilenceDb = -99.0f;
 // which a timeline's JSON then prints as 3.57.
 constexpr double frame_time_s(std::size_t frame) { return static_cast<double>(frame) / kFramesPerSecond; }
 
+// The edges of the bands the level columns measure (kEnergyDb, kLowBandDb, kMidBandDb,
+// kHighBandDb): the whole band up to the analysis rate's Nyquist; the low band from under a man's
+// lowest fundamental (85 Hz) through the first formant: voicing, nasals; the mid band up to where
+// frication starts, the high band above it. Each band's edges are read at the FFT bins within them.
+constexpr double kWholeBandLowHz = 60.0;
+constexpr double kWholeBandHighHz = kAnalysisRateHz / 2.0;
+constexpr double kLowBandLowHz = 80.0;
+constexpr double kLowBandHighHz = 900.0;   // the mid band's low edge
+constexpr double kMidBandHighHz = 2500.0;  // the high band's low edge
+
 // The top of the band where a voice's fundamental lies (FeatureTrack::fundamental_share): a man's
 // 85-180 Hz, a woman's 165-255 Hz, and the telephone band's lower edge.
 constexpr double kFundamentalTopHz = 300.0;
@@ -57,17 +67,17 @@ double mel_cepstrum_cosine(std::size_t c, std::size_t m);
 
 // Columns of a feature frame.
 enum FeatureColumn : int {
-    kCepstrum0 = 0,                 // MFCC c0..c12
+    kCepstrum0 = 0,  // MFCC c0..c12
     kCepstrumCount = 13,
-    kEnergyDb = kCepstrumCount,     // whole band, dB re full scale
-    kLowBandDb,                     // 80-900 Hz: voicing, nasals
-    kMidBandDb,                     // 900-2500 Hz
-    kHighBandDb,                    // 2500-8000 Hz: frication (2500-3400 survives a telephone band)
-    kPeakAmplitude,                 // largest |sample| of the frame's 10 ms: Algorithm 3.1's "volume"
-    kChangeBandDb,                  // the band where a voice's changes are measured (changing_spectrum.hpp)
-    kChangingDb,                    // the power in it that changes
-    kLineShare,                     // the share of the 60-8000 Hz power within kLineHalfBins of its strongest bin
-    kLineBin,                       // that bin (PowerSpectrum's, 31.25 Hz apart): where a steady tone lies (steady_tone.hpp)
+    kEnergyDb = kCepstrumCount,  // whole band (kWholeBandLowHz up), dB re full scale
+    kLowBandDb,                  // kLowBandLowHz-kLowBandHighHz: voicing, nasals
+    kMidBandDb,                  // kLowBandHighHz-kMidBandHighHz
+    kHighBandDb,                 // kMidBandHighHz up: frication (up to 3400 Hz survives a telephone band)
+    kPeakAmplitude,              // largest |sample| of the frame's 10 ms: Algorithm 3.1's "volume"
+    kChangeBandDb,               // the band where a voice's changes are measured (changing_spectrum.hpp)
+    kChangingDb,                 // the power in it that changes
+    kLineShare,                  // the whole band's power share within kLineHalfBins of its strongest bin
+    kLineBin,                    // that bin (31.25 Hz apart): where a steady tone lies (steady_tone.hpp)
     kFeatureCount,
 };
 
@@ -85,7 +95,7 @@ struct FeatureTrack {
     std::vector<PitchFrame> pitch;
     // Where the stream lost packets (dropout_finder.hpp), in order: conceal_dropouts' to draw over.
     std::vector<Dropout> dropouts;
-    // The share of the low band's power (kLowBandDb's 80-900 Hz, summed over the whole recording)
+    // The share of the low band's power (kLowBandDb's, summed over the whole recording)
     // under kFundamentalTopHz, where a voice's fundamental lies: a telephone band (300-3400 Hz) takes
     // it out (count_nuclei, alignment_checks.hpp). 1 where analyze_audio did not measure it.
     double fundamental_share = 1.0;
