@@ -22,6 +22,7 @@ extern "C" {
 #include "audio/mp4_index.hpp"
 #include "audio/voiced_share.hpp"
 #include "common/number_format.hpp"
+#include "common/string_ends.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
@@ -814,7 +815,7 @@ private:
     // the sound starts after the picture, times it before the sound's start), and one whose whole
     // index holds none (a fragmented MP4, a browser's MediaRecorder's as FFmpeg writes it) does not.
     std::size_t unstated_delay_frames() const {
-        if (std::string_view(format_->iformat->name).rfind("mov", 0) == 0) {
+        if (starts_with(format_->iformat->name, "mov")) {
             const std::optional<Mp4Index> index = find_mp4_index(path_);
             if (!index || index->broken_at_byte || index->has_edit_list) return 0;
         }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/internal_error.hpp"
+#include "common/string_ends.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/lip_sync.hpp"
 
@@ -217,7 +218,8 @@ SyllableShapes syllable_shapes(std::string_view pinyin) {
     if (syllable == kECircumflex) return {{S::e}, false};
 
     std::string initial;
-    if (syllable.rfind("zh", 0) == 0 || syllable.rfind("ch", 0) == 0 || syllable.rfind("sh", 0) == 0) {
+    if (detail::starts_with(syllable, "zh") || detail::starts_with(syllable, "ch") ||
+        detail::starts_with(syllable, "sh")) {
         initial = syllable.substr(0, 2);
     } else if (std::string_view("bpmfdtnlgkhjqxrzcs").find(syllable.front()) != std::string_view::npos) {
         initial = syllable.substr(0, 1);

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "common/number_format.hpp"
+#include "common/string_ends.hpp"
 #include "face/point_ids.hpp"
 #include "lift/local_frame.hpp"
 #include "pose/contour_sides.hpp"
@@ -66,7 +67,7 @@ void require_pose_angle(double angle_deg, const char* field) {
 }
 
 bool is_hair_id(const std::string& id) {
-    return id.rfind("hair.", 0) == 0;
+    return detail::starts_with(id, "hair.");
 }
 
 double smoothstep(double t) {

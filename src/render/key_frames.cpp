@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "common/number_format.hpp"
+#include "common/string_ends.hpp"
 
 namespace talkface::detail {
 
@@ -148,7 +149,7 @@ std::string key_times_of(const KeyFrames& keys, std::size_t frame_count) {
         // Six digits place a key time within 1 ms on an animation of 15 minutes. An SVG number may
         // start at its point: ".25" is a byte shorter than "0.25".
         const std::string key_time = format_fixed(keys.positions[i] / last, 6);
-        key_times.append(key_time, key_time.rfind("0.", 0) == 0 ? 1 : 0, std::string::npos);
+        key_times.append(key_time, starts_with(key_time, "0.") ? 1 : 0, std::string::npos);
     }
     return key_times;
 }
