@@ -15,8 +15,13 @@ namespace {
 constexpr std::array<int, 4> kBandColumns = {kEnergyDb, kLowBandDb, kMidBandDb, kHighBandDb};
 constexpr std::size_t kFollowedBands = kMelFilters + kBandColumns.size();
 
-// The least-squares line through the levels of frames [first, end): its level at `first` and its
-// change a frame.
+// The level a room is read on: the whole band's, as end_before_tail (sentence_chains.cpp) found
+// the tails by it, and as one decay is read for every band (without_late_ringing follows each band
+// at it); the tails' lines are fitted to it and the voice before a tail is weighed on it.
+constexpr int kTailLevelColumn = kEnergyDb;
+
+// The least-squares line through the levels (kTailLevelColumn) of frames [first, end): its level at
+// `first` and its change a frame.
 struct Line {
     double start_db = 0.0;
     double slope_db_per_frame = 0.0;
@@ -27,7 +32,7 @@ Line fit_line(const FeatureTrack& track, std::size_t first, std::size_t end) {
     double sum_x = 0.0, sum_y = 0.0, sum_xx = 0.0, sum_xy = 0.0;
     for (std::size_t t = first; t < end; ++t) {
         const double x = static_cast<double>(t - first);
-        const double y = track.at(t, kEnergyDb);
+        const double y = track.at(t, kTailLevelColumn);
         sum_x += x;
         sum_y += y;
         sum_xx += x * x;
@@ -95,7 +100,7 @@ std::optional<RoomRinging> measure_room_ringing(const FeatureTrack& track,
         // The frames as heard, ringing and all: the share read is, if anything, a little low.
         double voice = 0.0, weight = 1.0;
         for (std::size_t t = tail.first_frame; t-- > tail.chain->speech.first_frame;) {
-            voice += weight * db_to_power(track.at(t, kEnergyDb));
+            voice += weight * db_to_power(track.at(t, kTailLevelColumn));
             weight *= decay;
         }
         shares.push_back(db_to_power(tail.line.start_db) / voice);
