@@ -68,10 +68,9 @@ public:
     explicit ProgressReporter(const ProgressCallback& callback) : callback_(callback) {}
     void report(double fraction, const char* stage) {
         if (!callback_) return;
-        // Where the work goes over the recording again (the models re-estimated on a room's
-        // features without its ringing, the cut aligned again) its reports start again from lower:
-        // the callback is asked there as often as anywhere, so that it can cancel, while the bar
-        // stays where it stands.
+        // Where the work goes over the recording again (the cut aligned again, kept to the text's
+        // pauses or with nasal releases) its reports start again from lower: the callback is asked
+        // there as often as anywhere, so that it can cancel, while the bar stays where it stands.
         if (stage == seen_stage_ && fraction >= seen_fraction_ && fraction < seen_fraction_ + kProgressStep &&
             fraction < 1.0)
             return;
@@ -98,10 +97,16 @@ private:
     bool is_held_ = false;
 };
 
-// Progress after chain `w` of `count` in pass `pass` (kReestimationRounds of estimation and a final one).
-void report_pass(ProgressReporter& progress, int pass, std::size_t w, std::size_t count) {
+// The passes over the chains that share the bar's alignment part: kReestimationRounds of
+// estimation, as many again in a room on its features without the ringing (late_reverb.hpp), which
+// take as long, and the final one.
+int alignment_passes(bool is_reestimated_dry) {
+    return 1 + kReestimationRounds * (is_reestimated_dry ? 2 : 1);
+}
+
+// Progress after chain `w` of `count` in pass `pass` of `passes` (alignment_passes).
+void report_pass(ProgressReporter& progress, int pass, int passes, std::size_t w, std::size_t count) {
     const double alignment_share = 1.0 - kReadingShare - kCuttingShare;
-    const int passes = 1 + kReestimationRounds;
     progress.report(kReadingShare + kCuttingShare +
                         alignment_share * (pass + static_cast<double>(w + 1) / static_cast<double>(count)) / passes,
                     "syllables");
@@ -149,9 +154,10 @@ struct Reestimation {
 };
 
 // SPEC "Alignment": a first pass on the hand-set models, then kReestimationRounds rounds of
-// models re-estimated on the paths of every chain.
-Reestimation reestimate(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
-                        const std::vector<SentenceChain>& chains, ProgressReporter& progress) {
+// models re-estimated on the paths of every chain, reported as passes `first_pass` on of `passes`.
+Reestimation reestimate(const FeatureTrack& track, const LoudnessProfile& loudness,
+                        const Timeline& transcript, const std::vector<SentenceChain>& chains,
+                        ProgressReporter& progress, int first_pass, int passes) {
     Reestimation learned;
     std::vector<float> observations;
     EmissionScores scores;
@@ -180,7 +186,7 @@ Reestimation reestimate(const FeatureTrack& track, const LoudnessProfile& loudne
                 for (std::size_t h = 0; h < halves.size(); ++h) learned.halves[w][h].add(observations, chain.states, halves[h]);
                 learned.last_paths.push_back(path);
             }
-            report_pass(progress, pass, w, chains.size());
+            report_pass(progress, first_pass + pass, passes, w, chains.size());
         }
         learned.model = estimator.estimate(kReestimatedWeight);
         if (is_last_estimate) learned.whole = std::move(estimator);
@@ -428,23 +434,27 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
     const std::vector<bool> is_spoken = spoken_sentences_of(transcript);
     const auto spoken_sentences = static_cast<std::size_t>(std::count(is_spoken.begin(), is_spoken.end(), true));
 
-    const Reestimation learned = reestimate(track, loudness, transcript, chains, progress);
+    // Lenient alignment places its syllables on chains of its own (lenient_chain.hpp). The room is
+    // read before the first re-estimation, so that the bar gives the second its own share.
+    const bool in_room = !is_lenient && is_room(chains);
+    const std::optional<RoomRinging> room_ringing =
+        in_room ? measure_room_ringing(track, chains) : std::nullopt;
+    const int passes = alignment_passes(room_ringing.has_value());
+    const Reestimation learned = reestimate(track, loudness, transcript, chains, progress, 0, passes);
     Timeline& result = aligned.result;
     result = transcript;
     result.duration_s = track.duration_s;
-    // Lenient alignment places its syllables on chains of its own (lenient_chain.hpp).
-    if (!is_lenient && is_room(chains)) aligned.room_result = result;
+    if (in_room) aligned.room_result = result;
     // In a room the syllables given out are placed on the features without the room's ringing
     // (late_reverb.hpp), on models re-estimated on them: a quiet onset after a vowel is no longer
     // the vowel ringing on. Every check judges the recorded features: on the dry ones a wrong text
     // fits its speech about as well as a right one (bench/README.md Sessions 24 and 25).
     std::optional<DryRoom> dry;
-    if (aligned.room_result) {
-        if (const auto ringing = measure_room_ringing(track, chains)) {
-            dry.emplace();
-            dry->track = without_late_ringing(track, *ringing);
-            dry->learned = reestimate(dry->track, loudness, transcript, chains, progress);
-        }
+    if (room_ringing) {
+        dry.emplace();
+        dry->track = without_late_ringing(track, *room_ringing);
+        dry->learned =
+            reestimate(dry->track, loudness, transcript, chains, progress, kReestimationRounds, passes);
     }
     const FeatureTrack& placed_track = dry ? dry->track : track;
     const Reestimation& placed_learned = dry ? dry->learned : learned;
@@ -530,7 +540,7 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
                           evidence);
             // Its scores are not needed again: the memory goes back chain by chain.
             chain_scores = EmissionScores();
-            report_pass(progress, kReestimationRounds, w, chains.size());
+            report_pass(progress, passes - 1, passes, w, chains.size());
             continue;
         }
         observe(track, loudness, chains[w].searched, observations);
@@ -576,7 +586,7 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
             evidence[chains[w].syllable_indices[local]].sureness = sureness[local];
             evidence[chains[w].syllable_indices[local]].far_start = far[local];
         }
-        report_pass(progress, kReestimationRounds, w, chains.size());
+        report_pass(progress, passes - 1, passes, w, chains.size());
     }
     if (is_tone_witnessed) set_tone_gaps(chains, checked_paths, track, metrics);
     set_confidences(evidence, is_lenient, result);
