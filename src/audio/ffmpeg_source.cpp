@@ -1077,17 +1077,19 @@ private:
         pending_position_ = 0;
         if (frame.nb_samples <= 0) return;
         if (frame.sample_rate != sample_rate_hz_)
-            throw ParseError(path_, 0, 0, "", "the sample rate changes from " + std::to_string(sample_rate_hz_) + " to " +
-                                                   std::to_string(frame.sample_rate) + " Hz at " +
-                                                   seconds_text(seconds_read()));
+            throw ParseError(path_, 0, 0, "",
+                             "the sample rate changes from " + std::to_string(sample_rate_hz_) + " to " +
+                                 std::to_string(frame.sample_rate) + " Hz at " +
+                                 seconds_text(seconds_read()));
         const int channels = frame.ch_layout.nb_channels;
         if (channels <= 0 || channels > kMaxChannels)
-            throw ParseError(path_, 0, 0, "", std::to_string(channels) + " channels at " + seconds_text(seconds_read()));
+            throw ParseError(path_, 0, 0, "",
+                             std::to_string(channels) + " channels at " + seconds_text(seconds_read()));
         if (!mixer_.takes(frame)) {
             const char* format = av_get_sample_fmt_name(static_cast<AVSampleFormat>(frame.format));
-            throw ParseError(
-                path_, 0, 0, "",
-                std::string("cannot convert its samples (") + (format ? format : "unknown format") + ")");
+            throw ParseError(path_, 0, 0, "",
+                             std::string("cannot convert its samples (") + (format ? format : "unknown format") +
+                                 ") at " + seconds_text(seconds_read()));
         }
         const int converted = mixer_.mix(frame, frames_to_skip_, pending_);
         if (converted < 0) throw decode_error(converted);
