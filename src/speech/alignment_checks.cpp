@@ -217,7 +217,7 @@ std::vector<double> syllable_lengths(const std::vector<AlignedStretch>& stretche
 
 // The level of two bands' power together.
 float power_sum_db(float a_db, float b_db) {
-    return static_cast<float>(10.0 * std::log10(db_to_power(a_db) + db_to_power(b_db)));
+    return static_cast<float>(power_to_db(db_to_power(a_db) + db_to_power(b_db)));
 }
 
 }  // namespace

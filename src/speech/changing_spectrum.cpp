@@ -44,8 +44,8 @@ void ChangingSpectrum::write(std::size_t frame, const float* before, const float
         changing += std::max(0.0f, power[k] - kChangeRatio * held);
     }
     float* row = &track_.values[frame * kFeatureCount];
-    row[kChangeBandDb] = static_cast<float>(10.0 * std::log10(band + kFeatureEnergyFloor));
-    row[kChangingDb] = static_cast<float>(10.0 * std::log10(changing + kFeatureEnergyFloor));
+    row[kChangeBandDb] = static_cast<float>(power_to_db(band + kFeatureEnergyFloor));
+    row[kChangingDb] = static_cast<float>(power_to_db(changing + kFeatureEnergyFloor));
     written_ = frame + 1;
 }
 

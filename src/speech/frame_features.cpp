@@ -249,7 +249,7 @@ private:
             return sum;
         };
         auto power_db = [](double power) {
-            return static_cast<float>(10.0 * std::log10(power + kFeatureEnergyFloor));
+            return static_cast<float>(power_to_db(power + kFeatureEnergyFloor));
         };
         auto band_db = [&](double low_hz, double high_hz) { return power_db(band_power(low_hz, high_hz)); };
         const double low_band_power = band_power(kLowBandLowHz, kLowBandHighHz);

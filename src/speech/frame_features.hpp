@@ -31,6 +31,10 @@ constexpr double kFeatureEnergyFloor = 1e-10;
 inline double db_to_power(double db) {
     return std::pow(10.0, db / 10.0);
 }
+// The level of a power, as the dB columns read it (kFeatureEnergyFloor added where a power may be 0).
+inline double power_to_db(double power) {
+    return 10.0 * std::log10(power);
+}
 // A frame whose level (any dB column: the whole band or part of it) is at most this holds no sound,
 // only digital silence: exact zeros read -100 dB, while a frame of zeros but one sample of a single
 // 16-bit step reads -66 dB (the whole band; -69 dB in held_music's 300-5000 Hz) where the window

@@ -129,8 +129,7 @@ FeatureTrack without_late_ringing(const FeatureTrack& track, const RoomRinging& 
         transform.to_cepstrum(log_mel, row + kCepstrum0);
         for (std::size_t b = 0; b < kBandColumns.size(); ++b) {
             float& level_db = row[kBandColumns[b]];
-            level_db =
-                static_cast<float>(10.0 * std::log10(take_out(kMelFilters + b, db_to_power(level_db))));
+            level_db = static_cast<float>(power_to_db(take_out(kMelFilters + b, db_to_power(level_db))));
         }
     }
     return dry;
