@@ -242,6 +242,11 @@ struct TrackSummary {
     }
 };
 
+// The samples of a kLoudnessFrameS frame at `rate_hz`, at least one.
+std::size_t loudness_frame_samples(double rate_hz) {
+    return static_cast<std::size_t>(std::max(1, static_cast<int>(kLoudnessFrameS * rate_hz)));
+}
+
 // The RMS of each whole frame of `frame_samples` of `signal`.
 std::vector<double> loudness_frames(const std::vector<double>& signal, std::size_t frame_samples) {
     std::vector<double> frames(signal.size() / frame_samples);
@@ -279,8 +284,7 @@ public:
         codec_ = std::move(opened.context);
         frame_.reset(av_frame_alloc());
         if (!frame_) throw std::bad_alloc();
-        frame_samples_ =
-            static_cast<std::size_t>(std::max(1, static_cast<int>(kLoudnessFrameS * codec_->sample_rate)));
+        frame_samples_ = loudness_frame_samples(codec_->sample_rate);
         heard_.emplace(codec_->sample_rate);
     }
     TrackHearing(const TrackHearing&) = delete;
@@ -309,9 +313,8 @@ public:
     TrackSummary summary() const {
         TrackSummary found;
         if (!heard_) return found;
-        const auto frame_samples =
-            static_cast<std::size_t>(std::max(1, static_cast<int>(kLoudnessFrameS * heard_->rate_hz())));
-        const std::vector<double> frames = loudness_frames(heard_->samples(), frame_samples);
+        const std::vector<double> frames =
+            loudness_frames(heard_->samples(), loudness_frame_samples(heard_->rate_hz()));
         found.silent =
             std::all_of(frames.begin(), frames.end(), [](double rms) { return rms < kSilentTrackRms; });
         if (found.silent) return found;
