@@ -3,7 +3,6 @@
 #include <Eigen/Core>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
@@ -114,6 +113,37 @@ float boundary_bonus(const EmissionScores& emissions, std::size_t t) {
     return emissions.boundary.empty() ? 0.0f : emissions.boundary[t];
 }
 
+// `table` at least `size` long; what it holds is left as it is.
+void grow_to(std::vector<float>& table, std::size_t size) {
+    if (table.size() < size) table.resize(size);
+}
+
+// The conversions between the search's float tables and its double prefix sums, in chunks of a
+// fixed length: GCC's -O2 vectorizes only loops whose length it knows (its cheapest cost model),
+// and these ran one frame at a time, a third of the search's instructions (bench/README.md,
+// Session 27). No test for an impossible score is needed: the prefix sums are finite (finite log
+// densities, each frame's best subtracted), so an impossible score stays impossible, as before.
+constexpr std::size_t kConvertChunk = 8;
+
+// out[t] = values[t] - offsets[t] in double, rounded to float, for t < count.
+void subtract_in_double(const float* __restrict values, const double* __restrict offsets,
+                        float* __restrict out, std::size_t count) {
+    std::size_t t = 0;
+    for (; t + kConvertChunk <= count; t += kConvertChunk)
+        for (std::size_t k = t; k < t + kConvertChunk; ++k)
+            out[k] = static_cast<float>(values[k] - offsets[k]);
+    for (; t < count; ++t) out[t] = static_cast<float>(values[t] - offsets[t]);
+}
+
+// values[t] = offsets[t] + values[t] in double, rounded to float, for t < count.
+void add_in_double(float* __restrict values, const double* __restrict offsets, std::size_t count) {
+    std::size_t t = 0;
+    for (; t + kConvertChunk <= count; t += kConvertChunk)
+        for (std::size_t k = t; k < t + kConvertChunk; ++k)
+            values[k] = static_cast<float>(offsets[k] + values[k]);
+    for (; t < count; ++t) values[t] = static_cast<float>(offsets[t] + values[t]);
+}
+
 // max over i < count of a[i] + b[i], in Eigen's packets: the search's innermost loop, which the
 // compiler left scalar (the maximum is exact in any order: the same value as one by one).
 float max_of_sums(const float* a, const float* b, std::size_t count) {
@@ -174,11 +204,14 @@ public:
     void fill_tables() {
         auto& entry = workspace_.entry;
         auto& finish = workspace_.finish;
-        const auto& entry_minus_prefix = workspace_.entry_minus_prefix;
+        auto& entry_minus_prefix = workspace_.entry_minus_prefix;
         const auto& duration_score = workspace_.duration_score;
-        entry.resize(state_count_ * width_);
-        finish.resize(state_count_ * width_);
-        workspace_.entry_minus_prefix.resize(width_);
+        // Every cell of the rows searched is written below: the tables only grow, since a resize
+        // down and up again zeroes the grown part for nothing (a sentence's searches alternate
+        // between its chain and shorter windows of it).
+        grow_to(entry, state_count_ * width_);
+        grow_to(finish, state_count_ * width_);
+        grow_to(entry_minus_prefix, width_);
         std::fill(entry.begin(), entry.begin() + static_cast<std::ptrdiff_t>(width_), kImpossible);
         entry[0] = 0.0f;
         for (std::size_t j = 0; j < state_count_; ++j) {
@@ -199,12 +232,18 @@ public:
                     entries += ConstRow(&emissions_.boundary[first_frame_], size);
                 if (skip != kImpossible) entries = entries.max(ConstRow(previous_entry, size) + skip);
             }
-            const std::size_t longest = prepare_state(j);
+            const std::size_t first_entry = static_cast<std::size_t>(
+                std::find_if(entry_row, entry_row + width_, [](float v) { return v != kImpossible; }) -
+                entry_row);
+            // Before its first entry a state's entry_minus_prefix is impossible: only the frames a
+            // duration from the first finish reaches back to are set so.
+            const std::size_t longest = prepare_state(j, first_entry);
+            std::fill(entry_minus_prefix.begin() +
+                          static_cast<std::ptrdiff_t>(first_entry - std::min(first_entry, longest + 1)),
+                      entry_minus_prefix.begin() + static_cast<std::ptrdiff_t>(first_entry), kImpossible);
             const std::size_t shortest = longest + 1 - duration_score.size();
             const double* class_prefix = &workspace_.prefix[prefix_row(state.phone_class) * width_];
             float* finish_row = &finish[j * width_];
-            const std::size_t first_entry = static_cast<std::size_t>(
-                std::find_if(entry_row, entry_row + width_, [](float v) { return v != kImpossible; }) - entry_row);
             const std::size_t first_finish = duration_score.empty() ? width_ : std::min(width_, first_entry + shortest);
             const FrameBand band = finish_bands_ ? (*finish_bands_)[j] : FrameBand{0, width_};
             const std::size_t from = std::max(first_finish, band.first);
@@ -219,29 +258,26 @@ public:
             if (has_tail)
                 for (std::size_t t = std::max(first_finish, longest + 1); t < from; ++t)
                     tail = std::max(tail, entry_minus_prefix[t - longest - 1]) + step;
-            std::array<float, kSumBlockFrames> bests{};
+            // Each finish's best entry less the prefix first, then the prefix added back.
             for (std::size_t t = from; t < to;) {
                 // d runs from min(longest, t) down to shortest: entries t - d, durations reversed.
-                std::size_t block = 1;
                 if (t >= longest && t + kSumBlockFrames <= to) {
                     max_of_sums_block(&entry_minus_prefix[t - longest], duration_score.data(),
-                                      duration_score.size(), bests.data());
-                    block = kSumBlockFrames;
+                                      duration_score.size(), &finish_row[t]);
+                    t += kSumBlockFrames;
                 } else {
                     const std::size_t skipped = t >= longest ? 0 : longest - t;
-                    bests[0] = max_of_sums(&entry_minus_prefix[t + skipped - longest],
-                                           &duration_score[skipped], duration_score.size() - skipped);
-                }
-                for (std::size_t k = 0; k < block; ++k, ++t) {
-                    float best = bests[k];
-                    if (has_tail && t > longest) {
-                        tail = std::max(tail, entry_minus_prefix[t - longest - 1]) + step;
-                        best = std::max(best, tail + duration_score[0]);
-                    }
-                    finish_row[t] =
-                        best == kImpossible ? kImpossible : static_cast<float>(class_prefix[t] + best);
+                    finish_row[t] = max_of_sums(&entry_minus_prefix[t + skipped - longest],
+                                                &duration_score[skipped], duration_score.size() - skipped);
+                    ++t;
                 }
             }
+            if (has_tail)
+                for (std::size_t t = std::max(from, longest + 1); t < to; ++t) {
+                    tail = std::max(tail, entry_minus_prefix[t - longest - 1]) + step;
+                    finish_row[t] = std::max(finish_row[t], tail + duration_score[0]);
+                }
+            add_in_double(&finish_row[from], &class_prefix[from], to - from);
         }
     }
 
@@ -288,8 +324,9 @@ private:
         const double* class_prefix = &workspace_.prefix[prefix_row(state.phone_class) * width_];
         const float* entry_row = &workspace_.entry[j * width_];
         auto& entry_minus_prefix = workspace_.entry_minus_prefix;
-        for (std::size_t t = first; t < std::min(end, width_); ++t)
-            entry_minus_prefix[t] = entry_row[t] == kImpossible ? kImpossible : static_cast<float>(entry_row[t] - class_prefix[t]);
+        if (first < std::min(end, width_))
+            subtract_in_double(&entry_row[first], &class_prefix[first], &entry_minus_prefix[first],
+                               std::min(end, width_) - first);
         return fill_duration_scores(state, frames_, workspace_.duration_score);
     }
     static constexpr std::size_t kAllFrames = std::numeric_limits<std::size_t>::max();

@@ -37,6 +37,7 @@ struct StateSegment {
 
 // The search's tables, kept between calls: a sentence is searched four times and a recording has
 // many sentences, and allocating them afresh each time cost a fifth of the run in page faults.
+// They only grow: a shorter search uses the start of each.
 struct ViterbiWorkspace {
     std::vector<float> entry;
     std::vector<float> finish;

@@ -103,6 +103,22 @@ TEST_SUITE("HSMM search") {
         CHECK(workspace.finish.size() <= kMaxSearchCells);
     }
 
+    TEST_CASE(
+        "a workspace's tables keep their size for a shorter search, and it finds the same path as a new "
+        "one") {
+        // A resize down and up again zeroes the grown part: a recording's searches alternate
+        // between longer and shorter sentences.
+        const PlantedSentence longer = plant(20);
+        const PlantedSentence shorter = plant(5);
+        ViterbiWorkspace workspace;
+        viterbi_align(longer.states, longer.emissions, workspace);
+        const std::size_t cells = workspace.entry.size();
+        check_same_path(viterbi_align(shorter.states, shorter.emissions, workspace), shorter.truth);
+        CHECK(workspace.entry.size() == cells);
+        CHECK(workspace.finish.size() == cells);
+        check_same_path(viterbi_align(longer.states, longer.emissions, workspace), longer.truth);
+    }
+
     TEST_CASE("a pause with a tail holds a silence far longer than its longest explicit duration") {
         // Two syllables with 1.5 s of silence between them and no sentence mark (a transcript
         // without punctuation): the pause between them must take it all.
