@@ -67,10 +67,9 @@ FrameSpan taken_frames(const Dropout& dropout, std::size_t frames) {
 
 }  // namespace
 
-void conceal_dropouts(FeatureTrack& track) {
-    if (track.dropouts.empty()) return;
+LoudnessProfile conceal_dropouts(FeatureTrack& track) {
+    LoudnessProfile loudness = measure_loudness(track);
     const std::size_t frames = track.frame_count;
-    const LoudnessProfile loudness = measure_loudness(track);
     std::vector<bool> taken(frames, false);
     for (const Dropout& dropout : track.dropouts) {
         const FrameSpan span = taken_frames(dropout, frames);
@@ -78,6 +77,7 @@ void conceal_dropouts(FeatureTrack& track) {
         std::fill(taken.begin() + static_cast<std::ptrdiff_t>(span.first_frame),
                   taken.begin() + static_cast<std::ptrdiff_t>(span.end_frame), true);
     }
+    if (std::find(taken.begin(), taken.end(), true) == taken.end()) return loudness;
     // Dropouts whose frames meet are drawn over as one, from the frame before the first to the
     // frame after the last.
     for (std::size_t first = 1; first < frames;) {
@@ -99,6 +99,7 @@ void conceal_dropouts(FeatureTrack& track) {
         }
         first = end;
     }
+    return measure_loudness(track);
 }
 
 }  // namespace talkface::detail

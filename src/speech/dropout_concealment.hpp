@@ -8,6 +8,7 @@
 #define TALKFACE_SPEECH_DROPOUT_CONCEALMENT_HPP
 
 #include "speech/frame_features.hpp"
+#include "speech/sentence_cutter.hpp"
 
 namespace talkface::detail {
 
@@ -16,9 +17,11 @@ constexpr double kTakenShare = 0.25;
 
 // Conceals those of track.dropouts that cut the voice inside the speech measure_loudness finds in
 // `track`: after its start and before its end, with speech either side, or on one side a
-// syllable's (dropout_concealment.cpp); the others are left as they are. The caller measures the
-// loudness again.
-void conceal_dropouts(FeatureTrack& track);
+// syllable's (dropout_concealment.cpp); the others are left as they are. Returns the loudness of
+// `track` as it leaves it: measured once, and again only where frames were drawn over, so that the
+// aligner need not measure it again (it did for every track with a dropout, and for each pass of
+// check mode warn).
+LoudnessProfile conceal_dropouts(FeatureTrack& track);
 
 }  // namespace talkface::detail
 

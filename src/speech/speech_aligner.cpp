@@ -718,9 +718,10 @@ AlignedTimelines align_confirmed(const FeatureTrack& track, const LoudnessProfil
 }
 
 // `given_spans` empty: the sentences cut as options.sentence_cut says; else where they say.
-Timeline align_track(const FeatureTrack& track, const Timeline& transcript, const AlignOptions& options,
-                     const std::vector<GivenSpan>& given_spans, ProgressReporter& progress, bool is_checked) {
-    const LoudnessProfile loudness = measure_loudness(track);
+// `loudness` is the track's (conceal_dropouts).
+Timeline align_track(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
+                     const AlignOptions& options, const std::vector<GivenSpan>& given_spans,
+                     ProgressReporter& progress, bool is_checked) {
     if (loudness.speech_end_frame <= loudness.speech_first_frame)
         throw AlignmentError("no speech found in the " + format_fixed(track.duration_s, 2) +
                              " s of audio: nothing rises above its noise floor");
@@ -774,15 +775,18 @@ Timeline align_track(const FeatureTrack& track, const Timeline& transcript, cons
 // AlignOptions::check: refuse, as the checks find; warn, the alignment the checks refused made
 // again without them, and their finding kept in its warnings; off, no checks at all. Lenient
 // alignment reports what does not match in place of the checks.
-Timeline align_checked(const FeatureTrack& track, const Timeline& transcript, const AlignOptions& options,
-                       const std::vector<GivenSpan>& given_spans, ProgressReporter& progress) {
-    if (options.lenient) return align_track(track, transcript, options, given_spans, progress, false);
+Timeline align_checked(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
+                       const AlignOptions& options, const std::vector<GivenSpan>& given_spans,
+                       ProgressReporter& progress) {
+    if (options.lenient)
+        return align_track(track, loudness, transcript, options, given_spans, progress, false);
     if (options.check != CheckMode::warn)
-        return align_track(track, transcript, options, given_spans, progress, options.check == CheckMode::refuse);
+        return align_track(track, loudness, transcript, options, given_spans, progress,
+                           options.check == CheckMode::refuse);
     try {
-        return align_track(track, transcript, options, given_spans, progress, true);
+        return align_track(track, loudness, transcript, options, given_spans, progress, true);
     } catch (const AlignmentError& error) {
-        Timeline result = align_track(track, transcript, options, given_spans, progress, false);
+        Timeline result = align_track(track, loudness, transcript, options, given_spans, progress, false);
         result.warnings.push_back(std::string("the transcript may not match the audio (aligned anyway, check mode warn): ") +
                                   error.what());
         return result;
@@ -794,20 +798,21 @@ Timeline align_checked(const FeatureTrack& track, const Timeline& transcript, co
 // own, and the loss is said after it.
 constexpr double kLostAudioNamedFirstS = 0.2;
 
-// The transcript aligned with `track`, read from `open` with its first `skipped_samples` of the
-// analysis stream left out (align_checked); where a room's sentence is to be refused and its pitch
-// may witness for its text (ToneWitnessWanted), the recording is read again with the pitch and
-// aligned again.
+// The transcript aligned with `track` (of `loudness`), read from `open` with its first
+// `skipped_samples` of the analysis stream left out (align_checked); where a room's sentence is to
+// be refused and its pitch may witness for its text (ToneWitnessWanted), the recording is read
+// again with the pitch and aligned again.
 Timeline align_witnessed(const std::function<std::unique_ptr<AudioSource>()>& open, FeatureTrack& track,
-                         std::size_t skipped_samples, const Timeline& transcript, const AlignOptions& options,
+                         const LoudnessProfile& loudness, std::size_t skipped_samples,
+                         const Timeline& transcript, const AlignOptions& options,
                          const std::vector<GivenSpan>& given_spans, ProgressReporter& progress) {
     try {
-        return align_checked(track, transcript, options, given_spans, progress);
+        return align_checked(track, loudness, transcript, options, given_spans, progress);
     } catch (const ToneWitnessWanted&) {
         std::unique_ptr<AudioSource> source = open();
         track = analyze_audio(*source, {}, true, skipped_samples);
-        conceal_dropouts(track);
-        return align_checked(track, transcript, options, given_spans, progress);
+        const LoudnessProfile again = conceal_dropouts(track);
+        return align_checked(track, again, transcript, options, given_spans, progress);
     }
 }
 
@@ -889,7 +894,7 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
     FeatureTrack track = analyze_audio(
         *source, [&](double fraction) { progress.report(kReadingShare * fraction, "reading"); },
         options.lenient);
-    conceal_dropouts(track);
+    const LoudnessProfile loudness = conceal_dropouts(track);
     const std::string lost = describe_lost_audio(source->lost_audio());
     std::string notes;
     for (const std::string& note : source->notes()) notes += " (the file: " + note + ")";
@@ -898,7 +903,7 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
         const bool is_voted = options.check == CheckMode::refuse && !options.lenient;
         std::optional<AlignmentError> first_refusal;
         try {
-            result = align_witnessed(open, track, 0, transcript, options, given_spans, progress);
+            result = align_witnessed(open, track, loudness, 0, transcript, options, given_spans, progress);
         } catch (const AlignmentError& refusal) {
             if (!is_voted) throw;
             first_refusal = refusal;
@@ -916,9 +921,9 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
                 const double skipped_s = static_cast<double>(skipped) / kAnalysisRateHz;
                 std::unique_ptr<AudioSource> again = open();
                 FeatureTrack other = analyze_audio(*again, {}, !track.pitch.empty(), skipped);
-                conceal_dropouts(other);
+                const LoudnessProfile other_loudness = conceal_dropouts(other);
                 try {
-                    Timeline found = align_witnessed(open, other, skipped, transcript,
+                    Timeline found = align_witnessed(open, other, other_loudness, skipped, transcript,
                                                      options_after_skip(options, skipped_s),
                                                      spans_after_skip(given_spans, skipped_s), progress);
                     ++alignments;

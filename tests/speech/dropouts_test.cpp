@@ -50,6 +50,35 @@ void check_near_clean(const std::string& file, double phase_s) {
     }
 }
 
+// two_sentences.wav, with `with_dropout` a dropout inside its first syllables' speech, and 1.5 s
+// after it a drum's hits 20 dB under the voice: 50 ms of noise decaying by e every 30 ms, cut to
+// zeros mid-wave for 40 ms before the next (bench/ m-drums' synthetic kit leaves such cuts).
+test::ClipSamples drums_after_speech(bool with_dropout) {
+    test::ClipSamples audio = test::clip_samples("two_sentences.wav");
+    const auto rate = static_cast<double>(audio.rate_hz);
+    float loudest = 0.0f;
+    for (const float value : audio.values) loudest = std::max(loudest, std::fabs(value));
+    const std::size_t speech_end = audio.values.size();
+    audio.values.resize(speech_end + static_cast<std::size_t>(1.5 * rate), 0.0f);
+    const auto hit = static_cast<std::size_t>(0.05 * rate), gap = static_cast<std::size_t>(0.04 * rate);
+    std::uint32_t state = 12345u;
+    for (std::size_t first = speech_end + static_cast<std::size_t>(0.5 * rate);
+         first + hit < audio.values.size(); first += hit + gap)
+        for (std::size_t i = 0; i < hit; ++i) {
+            state = state * 1664525u + 1013904223u;
+            const double noise = static_cast<double>(state >> 8) / 16777216.0 - 0.5;
+            audio.values[first + i] =
+                static_cast<float>(0.06 * loudest * noise * std::exp(-static_cast<double>(i) / rate / 0.03));
+        }
+    if (!with_dropout) return audio;
+    const auto dropout_first = static_cast<std::size_t>(0.70 * rate);
+    std::fill(audio.values.begin() + static_cast<std::ptrdiff_t>(dropout_first),
+              audio.values.begin() +
+                  static_cast<std::ptrdiff_t>(dropout_first + static_cast<std::size_t>(0.06 * rate)),
+              0.0f);
+    return audio;
+}
+
 }  // namespace
 
 TEST_SUITE("speech") {
@@ -135,31 +164,9 @@ TEST_SUITE("speech") {
     }
 
     TEST_CASE("a drum's cuts outside the speech are left as they are, a dropout inside it is drawn over") {
-        // two_sentences.wav, a dropout inside its first syllables' speech, and 1.5 s after it
-        // a drum's hits 20 dB under the voice: 50 ms of noise decaying by e every 30 ms, cut to
-        // zeros mid-wave for 40 ms before the next (bench/ m-drums' synthetic kit leaves such cuts).
-        test::ClipSamples audio = test::clip_samples("two_sentences.wav");
+        const test::ClipSamples audio = drums_after_speech(true);
         const auto rate = static_cast<double>(audio.rate_hz);
-        float loudest = 0.0f;
-        for (const float value : audio.values) loudest = std::max(loudest, std::fabs(value));
-        const std::size_t speech_end = audio.values.size();
-        audio.values.resize(speech_end + static_cast<std::size_t>(1.5 * rate), 0.0f);
-        const auto hit = static_cast<std::size_t>(0.05 * rate), gap = static_cast<std::size_t>(0.04 * rate);
-        std::uint32_t state = 12345u;
-        for (std::size_t first = speech_end + static_cast<std::size_t>(0.5 * rate);
-             first + hit < audio.values.size(); first += hit + gap)
-            for (std::size_t i = 0; i < hit; ++i) {
-                state = state * 1664525u + 1013904223u;
-                const double noise = static_cast<double>(state >> 8) / 16777216.0 - 0.5;
-                audio.values[first + i] = static_cast<float>(0.06 * loudest * noise *
-                                                             std::exp(-static_cast<double>(i) / rate / 0.03));
-            }
-        const auto dropout_first = static_cast<std::size_t>(0.70 * rate);
-        std::fill(audio.values.begin() + static_cast<std::ptrdiff_t>(dropout_first),
-                  audio.values.begin() +
-                      static_cast<std::ptrdiff_t>(dropout_first + static_cast<std::size_t>(0.06 * rate)),
-                  0.0f);
-
+        const std::size_t speech_end = test::clip_samples("two_sentences.wav").values.size();
         detail::FeatureTrack track = test::features_of(audio.values, audio.rate_hz);
         const detail::FeatureTrack found = track;
         detail::conceal_dropouts(track);
@@ -179,5 +186,24 @@ TEST_SUITE("speech") {
         }
         CHECK(drum_cuts >= 10);
         CHECK(found.dropouts.size() == drum_cuts + 1);
+    }
+
+    TEST_CASE(
+        "conceal_dropouts gives the loudness of the track as it leaves it, measured again only where it drew "
+        "over frames") {
+        for (const bool with_dropout : {false, true}) {
+            CAPTURE(with_dropout);
+            const test::ClipSamples audio = drums_after_speech(with_dropout);
+            detail::FeatureTrack track = test::features_of(audio.values, audio.rate_hz);
+            const detail::LoudnessProfile before = detail::measure_loudness(track);
+            const detail::LoudnessProfile given = detail::conceal_dropouts(track);
+            const detail::LoudnessProfile after = detail::measure_loudness(track);
+            CHECK(given.activity_db == after.activity_db);
+            CHECK(given.speech_first_frame == after.speech_first_frame);
+            CHECK(given.speech_end_frame == after.speech_end_frame);
+            CHECK(given.speech_level_db == after.speech_level_db);
+            CHECK(given.pauses.size() == after.pauses.size());
+            CHECK((before.activity_db != after.activity_db) == with_dropout);
+        }
     }
 }
