@@ -318,6 +318,28 @@ bool follows_glued_name(const std::vector<CodePoint>& text, std::size_t start) {
     return i < start && has_small;
 }
 
+bool names_code_by_letters(const std::vector<CodePoint>& text, std::size_t start,
+                           const WrittenNumber& number) {
+    const auto digits = number.whole.size();
+    if (number.has_point || number.has_separators || digits < 3 || digits > 4) return false;
+    auto i = start;
+    if (i > 0 && is_dash(value_at(text, i - 1))) --i;
+    if (i < start || is_dash(value_at(text, i))) {
+        bool has_capital = false;
+        while (i > 0 && is_ascii_letter(value_at(text, i - 1))) {
+            --i;
+            has_capital = has_capital || is_ascii_capital(text[i].value);
+        }
+        if (has_capital) return true;
+    }
+    if (digits != 4 || value_at(text, number.end) != ' ') return false;
+    auto end = number.end + 1;
+    std::string suffix;
+    while (is_ascii_letter(value_at(text, end))) suffix += static_cast<char>(ascii_form(text[end++].value));
+    return suffix == "GT" || suffix == "GTS" || suffix == "GTX" || suffix == "XT" || suffix == "XTX" ||
+           suffix == "Ti";
+}
+
 bool follows_maker_name(const std::vector<CodePoint>& text, std::size_t start) {
     auto i = start;
     if (i > 0 && text[i - 1].value == ' ') --i;

@@ -97,6 +97,12 @@ bool is_filter_grade(const std::vector<CodePoint>& text, std::size_t start, cons
 // name's or an ID's digits. (iPhone15 counts: fewer than three digits, as a model's do.)
 bool follows_glued_name(const std::vector<CodePoint>& text, std::size_t start);
 
+// Three or four digits after a hyphen that follows a name of letters with a capital (mRNA-1273, Boeing-747),
+// or before a graphics card's suffix (8800 GT, 4090 Ti, 7900 XTX): a code's or a model's digits, said one
+// by one, where two after the hyphen count (COVID-19 十九) and no card's suffix leaves a count (8800元).
+bool names_code_by_letters(const std::vector<CodePoint>& text, std::size_t start,
+                           const WrittenNumber& number);
+
 // Right after the Chinese name of an aircraft's maker (波音737, 空客 320) or of a chip's series
 // (天玑9400 天玑九四零零, 骁龙888, 麒麟990, 鲲鹏920, 昇腾910, as reviews and news say them; session 14,
 // they counted): its model's number.

@@ -56,6 +56,9 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     // Session 27: Elon, which the dictionary lacks (the mapping gave el + on, ai er an), is 埃隆 as Mandarin
     // news writes and says Elon Musk's name (埃隆·马斯克).
     {"elon", "ai1 long2"},
+    // Qwen, which the dictionary lacks (the mapping gave qiu wan), is 千问 as Mandarin news says Alibaba's
+    // models (通义千问, 千问2.5).
+    {"qwen", "qian1 wen4"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

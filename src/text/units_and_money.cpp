@@ -149,12 +149,17 @@ std::optional<SpokenForm> read_per_unit(const std::vector<CodePoint>& text, std:
 
 bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i) {
     const auto is_han = [&](std::size_t k) { return k < text.size() && text[k].value >= 0x3400 && text[k].value <= 0x9FFF; };
+    // A power's superscript ends the number too (3×10⁸米/秒 米每秒; session 27: 米秒).
+    const auto ends_number = [&](std::size_t k) {
+        return is_digit_at(text, k) ||
+               is_one_of(value_at(text, k), U"\u2070\u00B9\u00B2\u00B3\u2074\u2075\u2076\u2077\u2078\u2079");
+    };
     if (value_at(text, i) != '/' || !is_han(i + 1)) return false;
     constexpr std::size_t kLongestUnit = 3;  // characters: 元, 美元, 平方米
     for (std::size_t k = 1; k <= kLongestUnit && k <= i; ++k) {
-        if (!is_han(i - k)) return is_digit_at(text, i - k);
+        if (!is_han(i - k)) return ends_number(i - k);
     }
-    return i > kLongestUnit && is_digit_at(text, i - kLongestUnit - 1);
+    return i > kLongestUnit && ends_number(i - kLongestUnit - 1);
 }
 
 }  // namespace talkface::detail

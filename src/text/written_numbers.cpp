@@ -62,6 +62,35 @@ bool names_change(const std::vector<CodePoint>& text, std::size_t start) {
                         {"涨", "漲", "跌", "增", "升", "降", "减", "減", "幅", "同比", "环比", "環比"});
 }
 
+// A signed change right after 同比 or 环比 is said as news writes it (同比+15% 同比增长百分之十五, 环比-3.2%
+// 环比下降百分之三点二; session 27: 同比百分之十五, 负百分之三点二): a rise of a price 上涨 (房价, CPI,
+// 消费价格), of a rate's percentage points 提高 (毛利率同比+0.5个百分点), of anything else 增长; a fall 下降.
+// Empty where no comparison word stands right before the sign.
+std::string change_after_comparison(const std::vector<CodePoint>& text, std::size_t start, std::size_t end,
+                                    bool rise) {
+    const std::string before = text_before(text, start, true);
+    if (!ends_with_any(before, {"同比", "环比", "環比"})) return {};
+    if (!rise) return "下降";
+    if (starts_with_any(text_between(text, end, end + 4), {"个百分点", "個百分點"})) return "提高";
+    // A clause that is its comparison word alone shares the sentence's subject
+    // (消费价格同比-0.3%，环比+0.1%), looked for back to the sentence's end mark: text_before stops at the
+    // decimal point of 0.3%.
+    auto first = start;
+    if (before == "同比" || before == "环比" || before == "環比")
+        while (first > 0 && !is_one_of(text[first - 1].value, U"。！？；!?;\n")) --first;
+    const std::string subject = first < start ? text_between(text, first, start) : before;
+    return contains_any(subject, {"价", "價", "CPI", "PPI"}) ? "上涨" : "增长";
+}
+
+// A - before a percentage right after what moves (恒指-0.8%, 腾讯-1.5%) is its fall, 跌, as its + is 涨;
+// after a rate's or a value's word (增速-6.8%, 收益率为-12.35%, 涨跌幅-1.87%) it is the value's sign, 负.
+bool is_fall_of_what_moves(const std::vector<CodePoint>& text, std::size_t start) {
+    const std::string before = text_before(text, start, true);
+    return !before.empty() && !names_change(text, start) &&
+           !ends_with_any(before, {"为", "為", "是", "率", "速", "值", "至", "到", "约", "約", " "}) &&
+           !is_ascii_letter(value_at(text, start - 1)) && !is_digit_at(text, start - 1);
+}
+
 // A 度 after a number measures degrees (两度) where the sentence speaks of a temperature (气温只有2度),
 // the clause of an angle (夹角是2度, 旋转2度), or an amount closes it (2度左右, 2度以上, 2度。); before a
 // burn's or a frostbite's word it grades the injury (2度烫伤 二度烫伤), and elsewhere it may count
@@ -565,7 +594,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
                           value_at(text, number.end) == '+' && is_digit_at(text, number.end + 1);
     context.is_model = sign_words.empty() && currency == nullptr && !after_times && !is_stake &&
                        (follows_model_name(text, start) || follows_maker_name(text, start) ||
-                        follows_glued_name(text, start) ||
+                        follows_glued_name(text, start) || names_code_by_letters(text, start, number) ||
                         // An isotope's number after a hyphen (碳-14), or of three digits or more glued to
                         // a radioactive element's name, which names its isotopes (铀235, 铯137; 钠500毫克 and
                         // 补钙2片 count).
@@ -758,7 +787,13 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         }
         if (is_digit_at(text, second_start)) {
             auto second = parse_number(text, second_start);
-            if (!first_is_percent || value_at(text, second.end) == '%') {
+            // A model's size in billions after its version glued to its name (Qwen2.5-72B 二点五 七十二B;
+            // session 27: 二点五到七十二B) is no range's end.
+            const bool is_size_after_version = start > 0 && is_ascii_letter(value_at(text, start - 1)) &&
+                                               is_dash(value_at(text, after_first)) && second_sign.empty() &&
+                                               value_at(text, second.end) == 'B' &&
+                                               !is_ascii_letter(value_at(text, second.end + 1));
+            if ((!first_is_percent || value_at(text, second.end) == '%') && !is_size_after_version) {
                 numbers.push_back(std::move(second));
                 signs.push_back(std::move(second_sign));
             }
@@ -819,9 +854,20 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     // A + before a percentage is a rise, said 涨 as market reports read it (腾讯+2.35% 腾讯涨百分之
     // 二点三五); not said where the clause already names the change (涨幅+2.35%, 同比增长+5%) or
     // after the first end of a range. A - stays 负 (增速-6.8% 增速负百分之六点八: 负增长).
+    // After 涨跌幅, which names both ways, the sign says which: 涨跌幅+2.35% 正百分之二点三五.
     if (is_percent || is_per_mille) {
+        const bool names_both_ways = ends_with_any(text_before(text, start, true), {"涨跌幅", "漲跌幅"});
         for (std::size_t k = 0; k < signs.size(); ++k)
-            if (signs[k] == "正") signs[k] = k == 0 && !names_change(text, start) ? "涨" : "";
+            if (signs[k] == "正" && !names_both_ways)
+                signs[k] = k == 0 && !names_change(text, start) ? "涨" : "";
+        if (signs.front() == "负" && is_fall_of_what_moves(text, start)) signs.front() = "跌";
+    }
+    if (signs.size() == 1 && (signs.front() == "正" || signs.front() == "负" || signs.front().empty())) {
+        const bool rise = value_at(text, start) == '+';
+        if (rise || is_dash(value_at(text, start))) {
+            auto change = change_after_comparison(text, start, unit_end, rise);
+            if (!change.empty()) signs.front() = std::move(change);
+        }
     }
     // ¥1,299.00 is 一千二百九十九元, $3.50 三点五美元: a price's trailing zeros are written, not said,
     // and so where a currency's word follows (报15.60元 十五点六元; session 17: 十五点六零元).

@@ -1477,4 +1477,36 @@ TEST_SUITE("written forms") {
         CHECK(pinyin_of("ni hao Tom") == "ni5 hao5 ta1 mu5");
         CHECK(pinyin_of("Zhang Wei, Li Na") == "zhang5 wei5 li5 na5");
     }
+
+    TEST_CASE(
+        "a signed change after 同比 or 环比 is a rise or a fall, after 涨跌幅 a sign, after an index a "
+        "fall") {
+        check_cases({
+            {"营收同比+15%，环比-3.2%", "营收同比增长百分之十五环比下降百分之三点二"},
+            {"CPI环比+0.4%", "xi pi ai环比上涨百分之零点四"},
+            {"消费价格同比-0.3%，环比+0.1%", "消费价格同比下降百分之零点三环比上涨百分之零点一"},
+            {"毛利率同比+0.5个百分点", "毛利率同比提高零点五个百分点"},
+            {"该股涨跌幅+2.35%", "该股涨跌幅正百分之二点三五"},
+            {"今日恒指-0.8%", "今日恒指跌百分之零点八"},
+            // The limits: a change already named, a rate's or a value's sign, a loss.
+            {"同比增长+12.3%", "同比增长百分之十二点三"},
+            {"收益率为-12.35%", "收益率为负百分之十二点三五"},
+            {"涨跌幅-1.87%", "涨跌幅负百分之一点八七"},
+            {"净利润-12亿元", "净利润负十二亿元"},
+        });
+    }
+
+    TEST_CASE(
+        "a code after a name's hyphen and a card's number before its suffix, a slash after a power, a size") {
+        check_cases({
+            {"mRNA-1273疫苗", "ai mu a er en ei一二七三疫苗"},
+            {"当年的9800 GT显卡", "当年的九八零零 ji ti显卡"},
+            {"速度约为2×10⁷米/秒", "速度约为二乘十的七次方米每秒"},
+            {"Qwen2.5-72B大模型", "qian wen二点五七十二 bi大模型"},
+            // The limits: two digits after the hyphen, a price, a range after a word.
+            {"COVID-19疫情", "kou wei de十九疫情"},
+            {"售价8800元", "售价八千八百元"},
+            {"参数量为3-5B", "参数量为三到五 bi"},
+        });
+    }
 }
