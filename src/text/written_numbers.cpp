@@ -62,14 +62,18 @@ bool names_change(const std::vector<CodePoint>& text, std::size_t start) {
                         {"涨", "漲", "跌", "增", "升", "降", "减", "減", "幅", "同比", "环比", "環比"});
 }
 
-// A signed change right after 同比 or 环比 is said as news writes it (同比+15% 同比增长百分之十五, 环比-3.2%
-// 环比下降百分之三点二; session 27: 同比百分之十五, 负百分之三点二): a rise of a price 上涨 (房价, CPI,
-// 消费价格), of a rate's percentage points 提高 (毛利率同比+0.5个百分点), of anything else 增长; a fall 下降.
-// Empty where no comparison word stands right before the sign.
+// A signed change right after 同比 or 环比, or a comparison with an earlier time (较上年, 比去年同期,
+// 较上月), is said as news writes it (同比+15% 同比增长百分之十五, 环比-3.2% 环比下降百分之三点二; session
+// 27: 同比百分之十五, 负百分之三点二): a rise of a price 上涨 (房价, CPI, 消费价格), of a rate's percentage
+// points 提高 (毛利率同比+0.5个百分点), of anything else 增长; a fall 下降. Empty where no comparison stands
+// right before the sign.
 std::string change_after_comparison(const std::vector<CodePoint>& text, std::size_t start, std::size_t end,
                                     bool rise) {
     const std::string before = text_before(text, start, true);
-    if (!ends_with_any(before, {"同比", "环比", "環比"})) return {};
+    const bool compares_with_earlier_time =
+        contains_any(before, {"较", "較", "比"}) &&
+        ends_with_any(before, {"上年", "去年", "同期", "上月", "上周", "上週", "上季度", "年初", "上一年"});
+    if (!ends_with_any(before, {"同比", "环比", "環比"}) && !compares_with_earlier_time) return {};
     if (!rise) return "下降";
     if (starts_with_any(text_between(text, end, end + 4), {"个百分点", "個百分點"})) return "提高";
     // A clause that is its comparison word alone shares the sentence's subject
@@ -851,6 +855,13 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     }
     if (signs.front() == "正" && !is_percent && !is_per_mille && adds_to_quantity(text, start))
         signs.front() = "加";
+    if (signs.size() == 1 && (signs.front() == "正" || signs.front() == "负" || signs.front().empty())) {
+        const bool rise = value_at(text, start) == '+';
+        if (rise || is_dash(value_at(text, start))) {
+            auto change = change_after_comparison(text, start, unit_end, rise);
+            if (!change.empty()) signs.front() = std::move(change);
+        }
+    }
     // A + before a percentage is a rise, said 涨 as market reports read it (腾讯+2.35% 腾讯涨百分之
     // 二点三五); not said where the clause already names the change (涨幅+2.35%, 同比增长+5%) or
     // after the first end of a range. A - stays 负 (增速-6.8% 增速负百分之六点八: 负增长).
@@ -861,13 +872,6 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
             if (signs[k] == "正" && !names_both_ways)
                 signs[k] = k == 0 && !names_change(text, start) ? "涨" : "";
         if (signs.front() == "负" && is_fall_of_what_moves(text, start)) signs.front() = "跌";
-    }
-    if (signs.size() == 1 && (signs.front() == "正" || signs.front() == "负" || signs.front().empty())) {
-        const bool rise = value_at(text, start) == '+';
-        if (rise || is_dash(value_at(text, start))) {
-            auto change = change_after_comparison(text, start, unit_end, rise);
-            if (!change.empty()) signs.front() = std::move(change);
-        }
     }
     // ¥1,299.00 is 一千二百九十九元, $3.50 三点五美元: a price's trailing zeros are written, not said,
     // and so where a currency's word follows (报15.60元 十五点六元; session 17: 十五点六零元).
