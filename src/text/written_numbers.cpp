@@ -69,7 +69,8 @@ bool names_change(const std::vector<CodePoint>& text, std::size_t start) {
 // right before the sign.
 std::string change_after_comparison(const std::vector<CodePoint>& text, std::size_t start, std::size_t end,
                                     bool rise) {
-    const std::string before = text_before(text, start, true);
+    std::string before = text_before(text, start, true);
+    while (ends_with(before, " ")) before.pop_back();
     const bool compares_with_earlier_time =
         contains_any(before, {"较", "較", "比"}) &&
         ends_with_any(before, {"上年", "去年", "同期", "上月", "上周", "上週", "上季度", "年初", "上一年"});
@@ -791,11 +792,14 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         }
         if (is_digit_at(text, second_start)) {
             auto second = parse_number(text, second_start);
-            // A model's size in billions after its version glued to its name (Qwen2.5-72B 二点五 七十二B;
-            // session 27: 二点五到七十二B) is no range's end.
-            const bool is_size_after_version = start > 0 && is_ascii_letter(value_at(text, start - 1)) &&
-                                               is_dash(value_at(text, after_first)) && second_sign.empty() &&
-                                               value_at(text, second.end) == 'B' &&
+            // A model's size in billions after its version glued or hyphened to its name (Qwen2.5-72B 二点五
+            // 七十二B, Llama-3-8B 三 八B; session 27: 二点五到七十二B) is no range's end.
+            const bool after_name =
+                start > 0 &&
+                (is_ascii_letter(value_at(text, start - 1)) ||
+                 (start > 1 && is_dash(text[start - 1].value) && is_ascii_letter(value_at(text, start - 2))));
+            const bool is_size_after_version = after_name && is_dash(value_at(text, after_first)) &&
+                                               second_sign.empty() && value_at(text, second.end) == 'B' &&
                                                !is_ascii_letter(value_at(text, second.end + 1));
             if ((!first_is_percent || value_at(text, second.end) == '%') && !is_size_after_version) {
                 numbers.push_back(std::move(second));
