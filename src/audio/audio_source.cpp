@@ -26,8 +26,6 @@ namespace talkface::detail {
 
 namespace {
 
-constexpr std::size_t kMaxChannels = 64;
-
 std::string seconds_text(std::size_t frame, int sample_rate_hz) {
     return format_fixed(static_cast<double>(frame) / sample_rate_hz, 3) + " s";
 }
@@ -494,10 +492,9 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
         // A container libsndfile knows holding a codec it does not (Opus in an old libsndfile): FFmpeg's turn.
         return open_ffmpeg_file(path);
     }
-    if (info.channels <= 0 || static_cast<std::size_t>(info.channels) > kMaxChannels || info.samplerate <= 0) {
+    if (!is_readable_format(info.samplerate, info.channels)) {
         sf_close(file);
-        throw ParseError(path, 0, 0, "", "unsupported header: " + std::to_string(info.channels) + " channels at " +
-                                             std::to_string(info.samplerate) + " Hz");
+        throw ParseError(path, 0, 0, "", unsupported_format_text("header", info.samplerate, info.channels));
     }
     // MPEG audio inside a WAV (a dictaphone's, a broadcast system's): libsndfile's length is the
     // same estimate as for a bare MP3's, and it called a whole file truncated 26 ms short of it;
@@ -575,12 +572,13 @@ std::string wav_codec_browsers_do_not_play(const std::string& path) {
 std::unique_ptr<AudioSource> open_audio_view(const AudioView& audio) {
     if (audio.frame_count == 0) throw InvalidArgument("audio.frame_count", "empty audio: no frames");
     if (audio.samples == nullptr) throw InvalidArgument("audio.samples", "null, with " + std::to_string(audio.frame_count) + " frames");
-    if (audio.channel_count <= 0 || static_cast<std::size_t>(audio.channel_count) > kMaxChannels)
+    if (audio.channel_count <= 0 || audio.channel_count > kMaxChannels)
         throw InvalidArgument("audio.channel_count", "expected 1.." + std::to_string(kMaxChannels) + ", found " +
                                                          std::to_string(audio.channel_count));
-    if (audio.sample_rate_hz < 4000 || audio.sample_rate_hz > 384000)
-        throw InvalidArgument("audio.sample_rate_hz",
-                              "expected 4000..384000, found " + std::to_string(audio.sample_rate_hz));
+    if (audio.sample_rate_hz < kMinSampleRateHz || audio.sample_rate_hz > kMaxSampleRateHz)
+        throw InvalidArgument("audio.sample_rate_hz", "expected " + std::to_string(kMinSampleRateHz) + ".." +
+                                                          std::to_string(kMaxSampleRateHz) + ", found " +
+                                                          std::to_string(audio.sample_rate_hz));
     return std::make_unique<ViewSource>(audio);
 }
 

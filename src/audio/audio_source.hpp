@@ -107,6 +107,27 @@ private:
     virtual std::size_t read_frames(float* mono, std::size_t max_frames) = 0;
 };
 
+// The sample rates and channel counts every reader accepts. A rate outside them is a damaged
+// header (a WAV stating 10^9 Hz reached libsamplerate, whose ratio stops at 256, as an internal
+// error): below 4 kHz no speech is left to align, and 384 kHz is the highest any recorder writes.
+constexpr int kMinSampleRateHz = 4000;
+constexpr int kMaxSampleRateHz = 384000;
+constexpr int kMaxChannels = 64;
+
+// Whether `sample_rate_hz` and `channels` are ones every reader takes.
+inline bool is_readable_format(int sample_rate_hz, int channels) {
+    return sample_rate_hz >= kMinSampleRateHz && sample_rate_hz <= kMaxSampleRateHz && channels >= 1 &&
+           channels <= kMaxChannels;
+}
+
+// "unsupported header: 1 channels at 1000000000 Hz (talkface reads 1-64 channels at 4000-384000 Hz)".
+inline std::string unsupported_format_text(const std::string& what, int sample_rate_hz, int channels) {
+    return "unsupported " + what + ": " + std::to_string(channels) + " channels at " +
+           std::to_string(sample_rate_hz) + " Hz (talkface reads 1-" + std::to_string(kMaxChannels) +
+           " channels at " + std::to_string(kMinSampleRateHz) + "-" + std::to_string(kMaxSampleRateHz) +
+           " Hz)";
+}
+
 // \throws talkface::FileError if the file is missing or cannot be opened, talkface::ParseError
 //         naming the reason if neither libsndfile nor FFmpeg reads it as audio (or a video has no
 //         sound track), talkface::InvalidArgument if it has no frames.

@@ -29,8 +29,6 @@ namespace talkface::detail {
 
 namespace {
 
-constexpr int kMaxChannels = 64;
-
 // An MP3 without a LAME/Xing tag (sox writes none) does not say how many samples of encoder delay
 // lead its first frame, and FFmpeg then keeps them: sox's 22.05 kHz MP3s came out 50 ms late. LAME,
 // the encoder behind sox, ffmpeg and Audacity alike, delays by 576 samples, and the decoder adds
@@ -441,9 +439,10 @@ public:
             mp3_toc_ = read_mp3_toc_file(path_);
             if (mp3_toc_ && mp3_toc_->is_variable_rate) mp3_rate_is_constant_ = false;
         }
-        if (sample_rate_hz_ <= 0 || codec_->ch_layout.nb_channels <= 0 || codec_->ch_layout.nb_channels > kMaxChannels)
-            throw ParseError(path_, 0, 0, "", "unsupported sound track: " + std::to_string(codec_->ch_layout.nb_channels) +
-                                                   " channels at " + std::to_string(sample_rate_hz_) + " Hz");
+        if (!is_readable_format(sample_rate_hz_, codec_->ch_layout.nb_channels))
+            throw ParseError(
+                path_, 0, 0, "",
+                unsupported_format_text("sound track", sample_rate_hz_, codec_->ch_layout.nb_channels));
         estimated_frames_ = estimate_frames();
         stated_seconds_ = stated_seconds();
         // FFmpeg's MP3 reader moves the stream's start past the delay a LAME tag gives; no start, no tag.

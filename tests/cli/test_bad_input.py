@@ -1,0 +1,169 @@
+"""Broken files of the kinds users have (issue 13, "Bad input"; bad_inputs.py makes them) through the
+command (align, animate, export, syllables, render), the C ABI and the Python module: each gives an
+error naming the file and the reason, or a result; never a crash, an internal error or a hang."""
+import json
+import os
+import pathlib
+import subprocess
+import sys
+
+import pytest
+
+sys.path.insert(0, str(pathlib.Path(__file__).parent))
+import bad_inputs  # noqa: E402
+
+CLI = os.environ["TALKFACE_CLI"]
+PROBE = pathlib.Path(__file__).parent / "bad_input_probe.py"
+SPEECH = pathlib.Path(bad_inputs.SPEECH)
+TRANSCRIPT = str(SPEECH / "one_sentence.txt")
+VOICE = str(SPEECH / "one_sentence.wav")
+TIMEOUT_S = 120
+
+OK = None
+# Audio: the reason each file is refused for (a part of the message after its path), or OK.
+AUDIO = {
+    "zero_bytes.wav": "empty file",
+    "zero_bytes.mp3": "empty file",
+    "text.wav": "not audio",
+    "text.mp3": "not audio",
+    "cut_in_header.wav": "not audio",
+    "cut_in_data.wav": "truncated",
+    "data_past_end.wav": "truncated",
+    "data_size_stream.wav": OK,
+    "zero_channels.wav": "no audio stream",
+    "rate_zero.wav": "not audio",
+    "rate_1e9.wav": "1 channels at 1000000000 Hz",
+    "channels_64.wav": OK,
+    "pcm8.wav": OK,
+    "pcm24.wav": OK,
+    "float32.wav": OK,
+    "alaw.wav": OK,
+    "mulaw.wav": OK,
+    "float32_nan_inf.wav": OK,
+    "id3_only.mp3": "not audio",
+    "cut_mid_frame.mp3": OK,
+    "huge_id3.mp3": "not audio",
+    "moov_cut.m4a": "index",
+    "no_sound.mp4": "a video without a sound track",
+    "bad_crc.ogg": "truncated",
+    "total_too_long.flac": "truncated",
+    "total_too_short.flac": OK,
+}
+# Transcripts: (what loading it gives, what aligning one_sentence.wav with it gives).
+TRANSCRIPTS = {
+    "empty.txt": (OK, "no text to align"),
+    "whitespace.txt": (OK, "no text to align"),
+    "punctuation.txt": (OK, "no text to align"),
+    "unknown_encoding.txt": ("it reads as big5", "it reads as big5"),
+    "binary.txt": ("not UTF-8", "not UTF-8"),
+    "one_line_1mb.txt": (OK, "352000 syllables"),
+    "digits_40.txt": (OK, "40 syllables"),
+    "latin_only.txt": (OK, OK),
+    "emoji_only.txt": (OK, "no syllables to align"),
+}
+FACES = {
+    "point_missing.xml": "missing 1 point",
+    "point_duplicated.xml": "defined twice",
+    "nan.xml": "expected a finite number",
+    "inf.xml": "expected a finite number",
+    "huge.xml": "beyond",
+    "all_equal.xml": "the eyeball centres must be apart",
+}
+
+
+@pytest.fixture(scope="module")
+def files(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("bad_input")
+    made = {}
+    for maker in (bad_inputs.audio_files, bad_inputs.transcript_files, bad_inputs.face_files):
+        for name, data in maker().items():
+            made[name] = bad_inputs.write(str(folder), name, data)
+    return made
+
+
+def command(*args):
+    return subprocess.run([CLI, *args], capture_output=True, text=True, errors="replace", timeout=TIMEOUT_S)
+
+
+def check_command(result, path, reason):
+    """A result (exit 0) where `reason` is OK, else exit 1 with `talkface: error: PATH...REASON`."""
+    assert result.returncode in (0, 1), result.stderr  # not 3 (internal error) nor a signal
+    if reason is OK:
+        assert result.returncode == 0, result.stderr
+        return
+    assert result.returncode == 1
+    assert "talkface: error: " + path in result.stderr
+    assert reason in result.stderr
+
+
+def probe(interface, kind, path, transcript=None):
+    args = [sys.executable, str(PROBE), interface, kind, path] + ([transcript] if transcript else [])
+    result = subprocess.run(args, capture_output=True, text=True, timeout=TIMEOUT_S)
+    assert result.returncode == 0, result.stderr  # no crash, no exception but talkface's own
+    return json.loads(result.stdout)
+
+
+def check_probe(outcome, path, reason):
+    if reason is OK:
+        assert outcome["status"] == "ok", outcome
+        return
+    assert outcome["status"] == "error"
+    assert "internal error" not in outcome["message"]
+    assert path in outcome["message"] and reason in outcome["message"], outcome
+
+
+INTERFACES = ["c", "python"] if os.environ.get("TALKFACE_C_LIBRARY") else []
+
+
+@pytest.mark.parametrize("name", sorted(AUDIO))
+def test_audio_through_align(files, name):
+    check_command(command("align", "-q", "--json", files[name], bad_inputs.transcript_of(name)), files[name], AUDIO[name])
+
+
+@pytest.mark.parametrize("name", sorted(name for name, reason in AUDIO.items() if reason is not OK))
+@pytest.mark.parametrize("subcommand", ["animate", "export"])
+def test_refused_audio_through_animate_and_export(files, tmp_path, name, subcommand):
+    out = tmp_path / ("page.html" if subcommand == "animate" else "cues.tsv")
+    check_command(command(subcommand, "-q", files[name], bad_inputs.transcript_of(name), "-o", str(out)), files[name], AUDIO[name])
+    assert not out.exists()
+
+
+@pytest.mark.parametrize("interface", INTERFACES)
+@pytest.mark.parametrize("name", sorted(AUDIO))
+def test_audio_through_c_and_python(files, interface, name):
+    check_probe(probe(interface, "audio", files[name], bad_inputs.transcript_of(name)), files[name], AUDIO[name])
+
+
+@pytest.mark.parametrize("name", sorted(TRANSCRIPTS))
+def test_transcripts_through_syllables_and_align(files, name):
+    loaded, aligned = TRANSCRIPTS[name]
+    check_command(command("syllables", files[name]), files[name], loaded)
+    result = command("align", "-q", "--json", VOICE, files[name])
+    # A refusal by the aligner names the audio and the sentence; one of the transcript names it.
+    assert result.returncode in (0, 1), result.stderr
+    if aligned is OK:
+        assert result.returncode == 0, result.stderr
+    else:
+        assert result.returncode == 1 and aligned in result.stderr
+
+
+@pytest.mark.parametrize("interface", INTERFACES)
+@pytest.mark.parametrize("name", sorted(TRANSCRIPTS))
+def test_transcripts_through_c_and_python(files, interface, name):
+    check_probe(probe(interface, "transcript", files[name]), files[name], TRANSCRIPTS[name][0])
+
+
+@pytest.mark.parametrize("name", sorted(FACES))
+def test_faces_through_render_and_animate(files, tmp_path, name):
+    check_command(command("render", "--face", files[name], "-o", str(tmp_path / "face.svg")), files[name], FACES[name])
+    check_command(
+        command("animate", "-q", "--face", files[name], VOICE, TRANSCRIPT, "-o", str(tmp_path / "page.html")),
+        files[name],
+        FACES[name],
+    )
+
+
+@pytest.mark.parametrize("interface", INTERFACES)
+@pytest.mark.parametrize("name", sorted(FACES))
+def test_faces_through_c_and_python(files, interface, name):
+    check_probe(probe(interface, "face", files[name]), files[name], FACES[name])
