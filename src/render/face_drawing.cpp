@@ -360,7 +360,10 @@ void draw_mouth(const ProjectedFace& face, const FacePaints& paints, const HeadA
     // cost a minute of speech 25 KiB or more). Inside the opening, in paint order: the dark; the
     // upper teeth, everywhere but the corners; under them (where the opening moved down by the
     // teeth's height reaches), the lower teeth, the tongue above them and the dark above that.
-    const auto& [across, down] = axes;
+    // Named references, not a structured binding: C++17 lets no lambda capture a binding (clang
+    // refuses it, which broke tests/fuzz/README.md's clang build).
+    const Point2& across = axes.across;
+    const Point2& down = axes.down;
     const double mw = paints.view.scale() * face.face.fapus()[kFapuMW0];
     const auto offset = [&](double across_mw, double down_mw) {
         return Point2{mw * (across_mw * across.x + down_mw * down.x), mw * (across_mw * across.y + down_mw * down.y)};
