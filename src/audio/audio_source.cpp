@@ -127,6 +127,8 @@ bool holds_ogg_page(const char* bytes, std::size_t count) {
 
 // What a walk over an Ogg file's pages found damaged.
 struct OggDamage {
+    // The byte where the first damaged page begins (or the bytes that are no page).
+    std::int64_t first_damaged_byte = 0;
     // The byte where a page begins whose header claims more bytes than the file holds (a scratch
     // in its segment table), with whole pages after it; -1 if none.
     std::int64_t overlong_page_byte = -1;
@@ -147,6 +149,7 @@ std::optional<OggDamage> find_damaged_ogg_page(const std::string& path) {
     ogg_sync_state sync;
     ogg_sync_init(&sync);
     std::map<long, long> next_page_of_stream;
+    OggDamage damage;
     bool damaged = false;
     std::int64_t walked_bytes = 0;  // bytes libogg has skipped or returned as pages
     constexpr long kChunkBytes = 1 << 16;
@@ -157,6 +160,7 @@ std::optional<OggDamage> find_damaged_ogg_page(const std::string& path) {
         ogg_sync_wrote(&sync, static_cast<long>(got));
         ogg_page page;
         for (long seek = 0; !damaged && (seek = ogg_sync_pageseek(&sync, &page)) != 0;) {
+            damage.first_damaged_byte = walked_bytes;
             walked_bytes += seek < 0 ? -seek : seek;
             if (seek < 0) {
                 damaged = true;
@@ -169,13 +173,13 @@ std::optional<OggDamage> find_damaged_ogg_page(const std::string& path) {
             next_page_of_stream[serial] = number + 1;
         }
     }
-    OggDamage damage;
     // At the end, libogg still holds the bytes of a page it waits for: whole pages after its start
     // say its header lied (a cut file's last page has none).
     const long waiting = sync.fill - sync.returned;
     if (!damaged && waiting > 4 && holds_ogg_page(reinterpret_cast<const char*>(sync.data) + sync.returned + 1,
                                                   static_cast<std::size_t>(waiting - 1))) {
         damaged = true;
+        damage.first_damaged_byte = walked_bytes;
         damage.overlong_page_byte = walked_bytes;
     }
     ogg_sync_clear(&sync);
@@ -489,8 +493,13 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
         // can open a file on this thread.
         const std::string reason = sf_strerror(nullptr);
         if (reason.find("System error") != std::string::npos) throw FileError(path, reason);
-        // A container libsndfile knows holding a codec it does not (Opus in an old libsndfile): FFmpeg's turn.
-        return open_ffmpeg_file(path);
+        // A container libsndfile knows holding a codec it does not (Opus in an old libsndfile): FFmpeg's
+        // turn. An Ogg file whose header pages are damaged is refused by both, and said to be damaged there.
+        FfmpegReading reading;
+        if (std::string_view(header.data(), 4) == "OggS")
+            if (const auto damage = find_damaged_ogg_page(path))
+                reading.damaged_ogg_page_byte = damage->first_damaged_byte;
+        return open_ffmpeg_file(path, reading);
     }
     if (!is_readable_format(info.samplerate, info.channels)) {
         sf_close(file);
@@ -522,6 +531,7 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
             FfmpegReading reading;
             reading.keeps_stated_length = true;
             reading.overlong_ogg_page_byte = damage->overlong_page_byte;
+            reading.damaged_ogg_page_byte = damage->first_damaged_byte;
             return open_ffmpeg_file(path, reading);
         }
     }

@@ -514,12 +514,12 @@ private:
                                 "truncated: an MP4/M4A/MOV file without its index (the moov box), which "
                                 "recorders and encoders write last; the file was cut while it was copied "
                                 "or recorded, or is still being written");
-            if (opened == AVERROR(EIO) || opened == AVERROR_EOF) throw cut_in_header();
+            if (opened == AVERROR(EIO) || opened == AVERROR_EOF) throw_header_ends();
             throw unreadable_index_or_not_audio(ffmpeg_error_text(opened));
         }
         format_.reset(raw);
         if (const int found = avformat_find_stream_info(format_.get(), nullptr); found < 0) {
-            if (found == AVERROR(EIO) || found == AVERROR_EOF) throw cut_in_header();
+            if (found == AVERROR(EIO) || found == AVERROR_EOF) throw_header_ends();
             throw unreadable_index_or_not_audio(ffmpeg_error_text(found));
         }
     }
@@ -627,13 +627,21 @@ private:
 
     // A reader that runs out of bytes inside the container's header (Matroska says "Input/output
     // error", others "End of file"): a file cut to its first bytes, as a copy or a download that
-    // stopped leaves it. Said so, with the file's size, rather than as FFmpeg's bare words.
-    FileError cut_in_header() const {
+    // stopped leaves it. Said so, with the file's size, rather than as FFmpeg's bare words; but an
+    // Ogg file whose header pages fail their check ends there too, and is damaged, not cut.
+    [[noreturn]] void throw_header_ends() const {
+        if (reading_.damaged_ogg_page_byte >= 0)
+            throw ParseError(path_, 0, 0, "",
+                             "the file is damaged: its Ogg pages break at byte " +
+                                 std::to_string(reading_.damaged_ogg_page_byte) +
+                                 " (a page that fails its check, or one missing: a scratch, or bytes lost), "
+                                 "and no sound can be read without the stream's header held there");
         std::error_code size_error;
         const auto bytes = std::filesystem::file_size(path_, size_error);
         const std::string size = size_error ? std::string() : " after " + std::to_string(bytes) + " bytes";
-        return FileError(path_, "truncated: the file ends" + size + ", inside its header, before any sound; it "
-                                    "was cut while it was copied or recorded");
+        throw FileError(path_, "truncated: the file ends" + size +
+                                   ", inside its header, before any sound; it "
+                                   "was cut while it was copied or recorded");
     }
 
     // The container's length (the stream's, else the whole file's); at least 1, since progress

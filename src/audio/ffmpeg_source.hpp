@@ -28,6 +28,10 @@ struct FfmpegReading {
     // page to the end of the file and stop there (its 2 s after it lost, the file's length stated
     // as 1 s): the page's capture pattern is hidden from it, and it goes on at the next page.
     std::int64_t overlong_ogg_page_byte = -1;
+    // Where the first damaged page of an Ogg file begins; -1 if none known. A file whose header
+    // pages are damaged there ends, to FFmpeg, before any sound, as a cut file does: it was called
+    // truncated, which a file of its whole length is not.
+    std::int64_t damaged_ogg_page_byte = -1;
 };
 
 // Opens the audio stream FFmpeg would play in `path` (of several, the one that sounds like speech:

@@ -45,7 +45,7 @@ AUDIO = {
     "huge_id3.mp3": "not audio",
     "moov_cut.m4a": "index",
     "no_sound.mp4": "a video without a sound track",
-    "bad_crc.ogg": "truncated",
+    "bad_crc.ogg": "the file is damaged: its Ogg pages break at byte 0",
     "total_too_long.flac": "truncated",
     "total_too_short.flac": OK,
 }
