@@ -7,12 +7,13 @@
 #include <array>
 #include <cctype>
 #include <cerrno>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <map>
 #include <fstream>
+#include <limits>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <string_view>
@@ -188,6 +189,11 @@ std::optional<OggDamage> find_damaged_ogg_page(const std::string& path) {
     return damage;
 }
 
+std::uint64_t read_le32(const unsigned char* bytes) {
+    return static_cast<std::uint64_t>(bytes[0]) | static_cast<std::uint64_t>(bytes[1]) << 8 |
+           static_cast<std::uint64_t>(bytes[2]) << 16 | static_cast<std::uint64_t>(bytes[3]) << 24;
+}
+
 // A RIFF WAV's data chunk that goes on past the size its header states: the bytes stated and the
 // bytes the file holds after the data's start, and the bytes a second of sound takes (the format
 // chunk's average rate; 0 if it states none).
@@ -207,10 +213,6 @@ std::optional<StaleDataSize> data_past_stated_size(const std::string& path) {
     std::ifstream in(path, std::ios::binary | std::ios::ate);
     if (!in) return std::nullopt;
     const auto file_bytes = static_cast<std::uint64_t>(in.tellg());
-    const auto le32 = [](const unsigned char* bytes) {
-        return static_cast<std::uint64_t>(bytes[0]) | static_cast<std::uint64_t>(bytes[1]) << 8 |
-               static_cast<std::uint64_t>(bytes[2]) << 16 | static_cast<std::uint64_t>(bytes[3]) << 24;
-    };
     const auto is_chunk_at = [&](std::uint64_t at) {
         unsigned char head[8];
         in.clear();
@@ -218,7 +220,7 @@ std::optional<StaleDataSize> data_past_stated_size(const std::string& path) {
         if (!in.read(reinterpret_cast<char*>(head), 8)) return false;
         for (int i = 0; i < 4; ++i)
             if (!(std::isalnum(head[i]) || head[i] == ' ' || head[i] == '_')) return false;
-        return at + 8 + le32(head + 4) <= file_bytes;
+        return at + 8 + read_le32(head + 4) <= file_bytes;
     };
     std::uint64_t at = 12;
     std::uint64_t bytes_per_second = 0;
@@ -228,11 +230,11 @@ std::optional<StaleDataSize> data_past_stated_size(const std::string& path) {
         in.clear();
         in.seekg(static_cast<std::streamoff>(at));
         if (!in.read(reinterpret_cast<char*>(head), 8)) return std::nullopt;
-        const std::uint64_t size = le32(head + 4);
+        const std::uint64_t size = read_le32(head + 4);
         const std::uint64_t end = at + 8 + size + (size & 1);
         // The format chunk's average bytes a second, at 8 of its 16 or more bytes.
         if (std::memcmp(head, "fmt ", 4) == 0 && size >= 16 && in.read(reinterpret_cast<char*>(format), 12))
-            bytes_per_second = le32(format + 8);
+            bytes_per_second = read_le32(format + 8);
         if (std::memcmp(head, "data", 4) == 0) {
             // A placeholder size (0, 0xFFFFFFFF) or one past the end of the file is libsndfile's
             // case already (read to the end, or called truncated).
@@ -243,6 +245,36 @@ std::optional<StaleDataSize> data_past_stated_size(const std::string& path) {
         at = end;
     }
     return std::nullopt;
+}
+
+// A RIFF WAV that libsndfile cannot open, refused for what its header says: it ends before its
+// data chunk starts (a copy or a download cut inside the header: FFmpeg called it "Invalid data",
+// as if it were no audio), or its format chunk states a channel count or a rate no reader takes
+// (0 channels read as "no audio stream", rate 0 as "Invalid data"). Returns if neither.
+// \throws talkface::FileError if the file was cut, talkface::ParseError for its format chunk.
+void check_wav_header(const std::string& path) {
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    if (!in) return;
+    const auto file_bytes = static_cast<std::uint64_t>(in.tellg());
+    unsigned char head[8];
+    for (std::uint64_t at = 12;;) {
+        in.seekg(static_cast<std::streamoff>(at));
+        if (at + 8 > file_bytes || !in.read(reinterpret_cast<char*>(head), 8))
+            throw FileError(path, "truncated: the file ends after " + std::to_string(file_bytes) +
+                                      " bytes, inside its header, before any sound; it was cut while it was "
+                                      "copied or recorded");
+        if (std::memcmp(head, "data", 4) == 0) return;
+        const std::uint64_t size = read_le32(head + 4);
+        unsigned char format[8];
+        if (std::memcmp(head, "fmt ", 4) == 0 && size >= 16 && in.read(reinterpret_cast<char*>(format), 8)) {
+            const int channels = format[2] | format[3] << 8;
+            const auto rate_hz = static_cast<int>(
+                std::min<std::uint64_t>(read_le32(format + 4), std::numeric_limits<int>::max()));
+            if (!is_readable_format(rate_hz, channels))
+                throw ParseError(path, 0, 0, "", unsupported_format_text("header", rate_hz, channels));
+        }
+        at += 8 + size + (size & 1);
+    }
 }
 
 // What the reader says of a stale WAV header: the sound it states and the sound the file holds.
@@ -493,6 +525,7 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
         // can open a file on this thread.
         const std::string reason = sf_strerror(nullptr);
         if (reason.find("System error") != std::string::npos) throw FileError(path, reason);
+        if (std::string_view(header.data(), 4) == "RIFF") check_wav_header(path);
         // A container libsndfile knows holding a codec it does not (Opus in an old libsndfile): FFmpeg's
         // turn. An Ogg file whose header pages are damaged is refused by both, and said to be damaged there.
         FfmpegReading reading;
