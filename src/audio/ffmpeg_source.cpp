@@ -588,7 +588,25 @@ private:
         return tracks[chosen];
     }
 
+    // Also says of a file that is an ID3 tag and nothing after it, or whose tag states more bytes
+    // than the file holds (a damaged tag hides the sound after it), where FFmpeg said only
+    // "Invalid argument".
     ParseError not_audio(const std::string& reason) const {
+        std::error_code size_error;
+        const auto file_bytes = std::filesystem::file_size(path_, size_error);
+        std::string head(10, '\0');
+        if (std::FILE* file = size_error ? nullptr : std::fopen(path_.c_str(), "rb")) {
+            head.resize(std::fread(head.data(), 1, head.size(), file));
+            std::fclose(file);
+        }
+        if (const std::size_t tag_end = after_id3(head); tag_end > 0 && tag_end >= file_bytes)
+            return ParseError(
+                path_, 0, 0, "",
+                "an MP3's ID3 tag (the title, artist and picture at its start) states " +
+                    std::to_string(tag_end) + " bytes" +
+                    (tag_end > file_bytes ? ", more than the file's " + std::to_string(file_bytes)
+                                          : std::string()) +
+                    ", and no sound follows it: the tag is damaged or the file holds only the tag");
         return ParseError(
             path_, 0, 0, "",
             "not audio talkface can read (WAV, FLAC, Ogg, MP3, AAC/M4A, Opus, AMR, or the sound track of an "

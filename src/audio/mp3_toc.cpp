@@ -15,15 +15,6 @@ std::uint32_t big_endian(std::string_view bytes, std::size_t at, std::size_t cou
     return value;
 }
 
-// Where the first frame starts: past an ID3v2 tag (its size is 4 bytes of 7 bits each).
-std::size_t after_id3(std::string_view file) {
-    if (file.size() < 10 || file.substr(0, 3) != "ID3") return 0;
-    std::size_t size = 0;
-    for (std::size_t k = 6; k < 10; ++k) size = size << 7 | (static_cast<unsigned char>(file[k]) & 0x7F);
-    const bool has_footer = (static_cast<unsigned char>(file[5]) & 0x10) != 0;
-    return 10 + size + (has_footer ? 10 : 0);
-}
-
 // What an MPEG Layer III frame's 4-byte header says of the frame.
 struct Mp3FrameHeader {
     int version = 0;  // 3 MPEG-1, 2 MPEG-2, 0 MPEG-2.5
@@ -150,6 +141,14 @@ double Mp3Toc::sample_at(std::int64_t file_byte) const {
     const double within =
         high.byte > low.byte ? std::clamp((byte - low.byte) / (high.byte - low.byte), 0.0, 1.0) : 0.0;
     return low.sample + within * (high.sample - low.sample);
+}
+
+std::size_t after_id3(std::string_view file) {
+    if (file.size() < 10 || file.substr(0, 3) != "ID3") return 0;
+    std::size_t size = 0;
+    for (std::size_t k = 6; k < 10; ++k) size = size << 7 | (static_cast<unsigned char>(file[k]) & 0x7F);
+    const bool has_footer = (static_cast<unsigned char>(file[5]) & 0x10) != 0;
+    return 10 + size + (has_footer ? 10 : 0);
 }
 
 std::optional<Mp3Toc> read_mp3_toc(std::string_view file, std::int64_t file_size) {

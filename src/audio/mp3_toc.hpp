@@ -40,6 +40,10 @@ struct Mp3Toc {
     double sample_at(std::int64_t file_byte) const;
 };
 
+// Where an MP3's first frame starts in `file` (its first bytes): past an ID3v2 tag (its size is 4
+// bytes of 7 bits each, a footer after it if a flag says so); 0 without one.
+std::size_t after_id3(std::string_view file);
+
 // The table of `file` (its first bytes: an ID3v2 tag, then the first frame), if its first frame is
 // MPEG Layer III with a Xing or Info header that states its frames and holds a table, or with a
 // VBRI header whose table lies within `file`. A Xing stream's bytes are the header's, or the file's
