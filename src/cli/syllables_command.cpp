@@ -74,6 +74,11 @@ void run_syllables(const SyllablesOptions& options) {
     }
     print_plain(timeline);
     report_warnings(timeline);
+    // An empty listing alone left a user to guess whether anything was read at all.
+    if (timeline.sentences.empty())
+        std::cerr
+            << "talkface: warning: " << options.transcript.path
+            << ": no sentence to show: the transcript holds no text with a reading (align refuses it)\n";
 }
 
 }  // namespace
