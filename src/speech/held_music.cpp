@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/order_statistics.hpp"
+#include "speech/unvoiced_beat.hpp"
 
 namespace talkface::detail {
 
@@ -83,19 +84,16 @@ std::size_t first_pause_of_closing_music(const std::vector<FrameSpan>& pauses, c
 }
 
 // `held` with each edge's music kept only where it is music beside the voice left between the two
-// (is_music_beside_voice), by their loud frames' change (`change_of`).
+// (`is_beside(music, voice)`).
 EdgeMusic music_beside_voice(const std::vector<FrameSpan>& pauses, const FrameSpan& speech, EdgeMusic held,
-                             const std::function<float(const FrameSpan&)>& change_of) {
+                             const std::function<bool(const FrameSpan&, const FrameSpan&)>& is_beside) {
     const std::size_t none = pauses.size();
     if (held.leading == 0 && held.trailing == none) return held;
-    const double voice =
-        change_of({held.leading > 0 ? pauses[held.leading - 1].end_frame : speech.first_frame,
-                   held.trailing < none ? pauses[held.trailing].first_frame : speech.end_frame});
-    if (held.leading > 0 &&
-        !is_music_beside_voice(change_of({speech.first_frame, pauses[held.leading - 1].first_frame}), voice))
+    const FrameSpan voice{held.leading > 0 ? pauses[held.leading - 1].end_frame : speech.first_frame,
+                          held.trailing < none ? pauses[held.trailing].first_frame : speech.end_frame};
+    if (held.leading > 0 && !is_beside({speech.first_frame, pauses[held.leading - 1].first_frame}, voice))
         held.leading = 0;
-    if (held.trailing < none &&
-        !is_music_beside_voice(change_of({pauses[held.trailing].end_frame, speech.end_frame}), voice))
+    if (held.trailing < none && !is_beside({pauses[held.trailing].end_frame, speech.end_frame}, voice))
         held.trailing = none;
     return held;
 }
@@ -110,13 +108,21 @@ EdgeMusic find_edge_music(const FeatureTrack& track, const std::vector<float>& s
         return loud_change_share(track, share, activity_db, threshold_db, stretch.first_frame,
                                  stretch.end_frame);
     };
+    // A kit's hits change as a voice does, but are not voiced (unvoiced_beat.hpp).
+    const auto voicing_of = [&](const FrameSpan& stretch) {
+        return loud_voiced_share(track, activity_db, threshold_db, stretch.first_frame, stretch.end_frame);
+    };
     const auto is_held = [&](const FrameSpan& stretch) {
-        return is_not_speech(stretch) || change_of(stretch) < kHeldMusicChangeShare;
+        return is_not_speech(stretch) || change_of(stretch) < kHeldMusicChangeShare ||
+               voicing_of(stretch) < kBeatVoicedShare;
     };
     EdgeMusic held;
     held.leading = pauses_in_opening_music(pauses, speech, is_held);
     held.trailing = first_pause_of_closing_music(pauses, speech, held.leading, is_held);
-    return music_beside_voice(pauses, speech, held, change_of);
+    return music_beside_voice(pauses, speech, held, [&](const FrameSpan& music, const FrameSpan& voice) {
+        return is_music_beside_voice(change_of(music), change_of(voice)) ||
+               is_beat_beside_voice(voicing_of(music), voicing_of(voice));
+    });
 }
 
 }  // namespace talkface::detail

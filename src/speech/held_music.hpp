@@ -65,9 +65,11 @@ struct EdgeMusic {
 
 // The edge music of a recording whose speech (loud frames) spans `speech` and is cut by `pauses`
 // (in order, inside it): the stretches between pauses at an edge that each hold their notes (their
-// loud_change_share under kHeldMusicChangeShare) or are no speech already (`is_not_speech`: a quiet
-// note, a click), kEdgeMusicMinFrames or more of them together, where they are music beside the
-// speech left between them (is_music_beside_voice). {0, pauses.size()} where there is none.
+// loud_change_share under kHeldMusicChangeShare), are a kit's unvoiced hits (loud_voiced_share under
+// kBeatVoicedShare, unvoiced_beat.hpp) or are no speech already (`is_not_speech`: a quiet note, a
+// click), kEdgeMusicMinFrames or more of them together, where they are music or a beat beside the
+// speech left between them (is_music_beside_voice, is_beat_beside_voice). {0, pauses.size()} where
+// there is none.
 EdgeMusic find_edge_music(const FeatureTrack& track, const std::vector<float>& share,
                           const std::vector<float>& activity_db, float threshold_db,
                           const std::vector<FrameSpan>& pauses, const FrameSpan& speech,

@@ -1,9 +1,11 @@
 // A drum kit under a voice (issue 13): its hits in the pauses are as loud as the quieter speech and
 // change as a voice does, but they repeat with the beat. The repeat is found in a kit's onsets and
 // not in noise or in speech alone, and the pauses between sentences under the kit at SNR 15 dB are
-// found whole.
+// found whole. A kit alone before the voice and after it, as loud as the voice, is no speech
+// (unvoiced_beat.hpp).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -104,5 +106,29 @@ TEST_SUITE("speech") {
             // pieces. The hits next to the speech stay with it.
             CHECK(test::is_found_whole(loudness.pauses, start_s, end_s, 0.5));
         }
+    }
+
+    TEST_CASE("a drum kit alone before the voice and after it, as loud as the voice, is no speech") {
+        // A video's intro: 8 s of the kit 3 dB under the speech's active level, then the six
+        // sentences, then 4 s of the kit again. On main its hits changed as a voice does and were
+        // taken for speech: the speech ran from the recording's start to its end.
+        const test::SixSentences six = test::six_sentences();
+        const int rate = six.rate_hz;
+        const auto intro = static_cast<std::size_t>(8 * rate), outro = static_cast<std::size_t>(4 * rate);
+        std::vector<float> speech(intro, 0.0f);
+        speech.insert(speech.end(), six.samples.begin(), six.samples.end());
+        speech.insert(speech.end(), outro, 0.0f);
+        std::vector<float> kit = drums(speech.size(), rate);
+        std::fill(kit.begin() + static_cast<std::ptrdiff_t>(intro),
+                  kit.begin() + static_cast<std::ptrdiff_t>(intro + six.samples.size()), 0.0f);
+        const std::vector<float> mixed = test::mixed_at_snr(speech, kit, rate, 3.0);
+        REQUIRE(!mixed.empty());
+
+        const detail::LoudnessProfile loudness = detail::measure_loudness(features_of(mixed, rate));
+        const double first_s = 8.0 + test::true_starts("two_sentences").front();
+        const double voice_end_s = 8.0 + static_cast<double>(six.samples.size()) / rate;
+        CHECK(std::fabs(static_cast<double>(loudness.speech_first_frame) * detail::kFrameStepS - first_s) <=
+              0.1);
+        CHECK(static_cast<double>(loudness.speech_end_frame) * detail::kFrameStepS <= voice_end_s);
     }
 }
