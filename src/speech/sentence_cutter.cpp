@@ -10,6 +10,7 @@
 #include "speech/alignment_checks.hpp"
 #include "speech/held_music.hpp"
 #include "speech/lifted_noise.hpp"
+#include "speech/music_bed.hpp"
 #include "speech/repeating_accompaniment.hpp"
 #include "speech/run_together.hpp"
 #include "speech/steady_tone.hpp"
@@ -334,12 +335,23 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     const auto is_not_speech = [&](std::size_t first, std::size_t end) { return is_noise_only(first, end) || is_click(first, end); };
     // Music before the voice comes in or after it ends is as loud as the speech, but holds its
     // notes (held_music.hpp; a last word and the music ringing on after it are shorter).
+    const FrameSpan sound{first_speech, end_speech};
     const EdgeMusic edge_music = find_edge_music(
-        track, share, profile.activity_db, profile.activity_threshold_db, pauses, {first_speech, end_speech},
+        track, share, profile.activity_db, profile.activity_threshold_db, pauses, sound,
         [&](const FrameSpan& stretch) { return is_not_speech(stretch.first_frame, stretch.end_frame); });
     std::size_t leading = edge_music.leading, trailing = edge_music.trailing;
     if (leading > 0) first_speech = pauses[leading - 1].end_frame;
     if (trailing < pauses.size()) end_speech = pauses[trailing].first_frame;
+    // Music that plays on under the first words, with no pause between them (music_bed.hpp).
+    if (const auto bed =
+            find_voice_under_music(track, share, profile.activity_db, profile.activity_threshold_db, pauses,
+                                   sound, edge_music, min_pause_frames)) {
+        first_speech = bed->entry;
+        leading = bed->leading;
+        pauses.insert(pauses.begin() + static_cast<std::ptrdiff_t>(leading), bed->pauses.begin(),
+                      bed->pauses.end());
+        trailing += bed->pauses.size();
+    }
     while (leading < trailing && is_not_speech(first_speech, pauses[leading].first_frame)) first_speech = pauses[leading++].end_frame;
     while (trailing > leading && is_not_speech(pauses[trailing - 1].end_frame, end_speech)) end_speech = pauses[--trailing].first_frame;
     profile.pauses.assign(pauses.begin() + static_cast<std::ptrdiff_t>(leading), pauses.begin() + static_cast<std::ptrdiff_t>(trailing));

@@ -4,6 +4,7 @@
 #define TALKFACE_TESTS_SIX_SENTENCES_HPP
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -45,6 +46,22 @@ inline bool is_found_whole(const std::vector<detail::FrameSpan>& pauses, double 
         const double found_end_s = static_cast<double>(pause.end_frame) * detail::kFrameStepS;
         return first_s >= start_s - 0.05 && found_end_s <= end_s + 0.05 && found_end_s - first_s >= share * (end_s - start_s);
     });
+}
+
+// The six sentences `intro_s` into a recording of silence, with `outro_s` of it after them: room for
+// music before the voice and after it (a podcast's intro and outro).
+inline std::vector<float> with_silent_edges(const SixSentences& six, double intro_s, double outro_s) {
+    std::vector<float> samples(static_cast<std::size_t>(intro_s * six.rate_hz), 0.0f);
+    samples.insert(samples.end(), six.samples.begin(), six.samples.end());
+    samples.insert(samples.end(), static_cast<std::size_t>(outro_s * six.rate_hz), 0.0f);
+    return samples;
+}
+
+// How far from the six sentences' first syllable, `intro_s` into the recording, the speech that
+// `loudness` finds starts, seconds.
+inline double start_error_s(const detail::LoudnessProfile& loudness, double intro_s) {
+    const double first_s = intro_s + true_starts("two_sentences").front();
+    return std::fabs(static_cast<double>(loudness.speech_first_frame) * detail::kFrameStepS - first_s);
 }
 
 }  // namespace talkface::test

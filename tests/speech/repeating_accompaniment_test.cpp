@@ -114,10 +114,8 @@ TEST_SUITE("speech") {
         // taken for speech: the speech ran from the recording's start to its end.
         const test::SixSentences six = test::six_sentences();
         const int rate = six.rate_hz;
-        const auto intro = static_cast<std::size_t>(8 * rate), outro = static_cast<std::size_t>(4 * rate);
-        std::vector<float> speech(intro, 0.0f);
-        speech.insert(speech.end(), six.samples.begin(), six.samples.end());
-        speech.insert(speech.end(), outro, 0.0f);
+        const std::vector<float> speech = test::with_silent_edges(six, 8.0, 4.0);
+        const auto intro = static_cast<std::size_t>(8 * rate);
         std::vector<float> kit = drums(speech.size(), rate);
         std::fill(kit.begin() + static_cast<std::ptrdiff_t>(intro),
                   kit.begin() + static_cast<std::ptrdiff_t>(intro + six.samples.size()), 0.0f);
@@ -125,10 +123,8 @@ TEST_SUITE("speech") {
         REQUIRE(!mixed.empty());
 
         const detail::LoudnessProfile loudness = detail::measure_loudness(features_of(mixed, rate));
-        const double first_s = 8.0 + test::true_starts("two_sentences").front();
         const double voice_end_s = 8.0 + static_cast<double>(six.samples.size()) / rate;
-        CHECK(std::fabs(static_cast<double>(loudness.speech_first_frame) * detail::kFrameStepS - first_s) <=
-              0.1);
+        CHECK(test::start_error_s(loudness, 8.0) <= 0.1);
         CHECK(static_cast<double>(loudness.speech_end_frame) * detail::kFrameStepS <= voice_end_s);
     }
 }
