@@ -9,7 +9,6 @@
 #include "common/order_statistics.hpp"
 #include "speech/alignment_checks.hpp"
 #include "speech/held_music.hpp"
-#include "speech/lifted_noise.hpp"
 #include "speech/music_bed.hpp"
 #include "speech/repeating_accompaniment.hpp"
 #include "speech/run_together.hpp"
@@ -262,17 +261,6 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     const float noise_level_db = percentile_of(profile.activity_db, kNoisePercentile);
     profile.activity_threshold_db =
         std::max({0.25f * speech_level_db, speech_level_db - 35.0f, kAboveFloorDb, noise_level_db + kNoiseWanderDb});
-    // Noise a gain control lifts in the pauses is a pause at any gain (lifted_noise.hpp). The
-    // threshold stays where the whole recording's levels put it: taken after the lift, it falls
-    // with the lifted noise, and p-agc's tuning passages read 91.0% within 50 ms, one refused,
-    // where they read 97.0% (bench/README.md, session 27).
-    const auto min_pause_frames = static_cast<std::size_t>(std::lround(kMinPauseS / kFrameStepS));
-    const std::vector<float> lift = noise_lift_db(track, profile.low_floor_db, profile.mid_floor_db,
-                                                  profile.high_floor_db, speech_level_db, min_pause_frames);
-    if (std::any_of(lift.begin(), lift.end(), [](float db) { return db > 0.0f; })) {
-        for (std::size_t t = 0; t < frames; ++t) raw[t] = std::max(0.0f, raw[t] - lift[t]);
-        smooth();
-    }
     // A steady tone (a beep) as loud as speech is no speech: its frames read as the floor, and the
     // threshold stays where the recording's levels put it. Quieter tones (a hum in the pauses) are
     // left: they are no speech already.
@@ -302,6 +290,7 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     while (first_speech < frames && !is_speech_frame(profile, first_speech)) ++first_speech;
     std::size_t end_speech = frames;
     while (end_speech > first_speech && !is_speech_frame(profile, end_speech - 1)) --end_speech;
+    const auto min_pause_frames = static_cast<std::size_t>(std::lround(kMinPauseS / kFrameStepS));
     std::vector<FrameSpan> pauses;
     for (std::size_t t = first_speech; t < end_speech;) {
         if (is_speech_frame(profile, t)) { ++t; continue; }
