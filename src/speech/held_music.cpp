@@ -48,18 +48,16 @@ float loud_change_share(const FeatureTrack& track, const std::vector<float>& sha
                         std::size_t end) {
     std::vector<float> loud;
     for (std::size_t t = first; t < end; ++t)
-        if (activity_db[t] >= threshold_db && track.at(t, kChangeBandDb) > kDigitalSilenceDb)
-            loud.push_back(share[t]);
+        if (is_loud_sounding_frame(track, activity_db, threshold_db, t)) loud.push_back(share[t]);
     return loud.empty() ? 0.0f : lower_median(std::move(loud));
 }
 
-namespace {
-
-// The stretches between `pauses` inside `speech`: before pause k, and after the last.
 FrameSpan stretch_before(const std::vector<FrameSpan>& pauses, const FrameSpan& speech, std::size_t k) {
     return {k > 0 ? pauses[k - 1].end_frame : speech.first_frame,
             k < pauses.size() ? pauses[k].first_frame : speech.end_frame};
 }
+
+namespace {
 
 // The count of pauses that music before the voice takes in: up to the last pause before which
 // every stretch holds its notes (`is_held`) and which lies kEdgeMusicMinFrames or more into the

@@ -31,8 +31,15 @@ constexpr double kNoiseChangeShare = 0.45;
 // kHeldMusicHalfWindow of it (a voice most of it, noise half, held notes little).
 std::vector<float> changing_shares(const FeatureTrack& track);
 
-// The lower median of `share` (changing_shares) over the frames in [first, end) whose activity is
-// at or above `threshold_db` and whose change band holds any sound; 0 where no frame does.
+// Whether frame t is loud (its activity at or above `threshold_db`) with some sound in the change
+// band: the frames whose change and voicing are judged (digital silence holds none to judge).
+inline bool is_loud_sounding_frame(const FeatureTrack& track, const std::vector<float>& activity_db,
+                                   float threshold_db, std::size_t t) {
+    return activity_db[t] >= threshold_db && track.at(t, kChangeBandDb) > kDigitalSilenceDb;
+}
+
+// The lower median of `share` (changing_shares) over the frames in [first, end) that are loud and
+// sounding (is_loud_sounding_frame); 0 where no frame is.
 float loud_change_share(const FeatureTrack& track, const std::vector<float>& share,
                         const std::vector<float>& activity_db, float threshold_db, std::size_t first,
                         std::size_t end);
@@ -53,6 +60,10 @@ inline bool is_music_beside_voice(double music_share, double voice_share) {
 // Music set apart from a recording's speech lasts 3 s or more (the shortest jingle): a slow voice
 // holding a vowel, or a last word with the music ringing on after it, is shorter.
 constexpr std::size_t kEdgeMusicMinFrames = 300;
+
+// The stretch of `speech` between `pauses` (in order, inside it) before pause k: from the end of
+// pause k - 1 (the speech's start for k = 0) to pause k (the speech's end for k = pauses.size()).
+FrameSpan stretch_before(const std::vector<FrameSpan>& pauses, const FrameSpan& speech, std::size_t k);
 
 // Music before the voice comes in or after it ends (a podcast's jingle, a video's intro or outro:
 // issue 13), as the pauses that set it apart: the speech left between them lies after pause

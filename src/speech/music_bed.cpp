@@ -60,19 +60,16 @@ std::optional<VoiceUnderMusic> find_voice_under_music(
     float threshold_db, const std::vector<FrameSpan>& pauses, const FrameSpan& speech, const EdgeMusic& edge,
     std::size_t min_pause_frames) {
     const std::size_t leading = edge.leading;
-    const auto stretch_before = [&](std::size_t k) {
-        return FrameSpan{k > 0 ? pauses[k - 1].end_frame : speech.first_frame, pauses[k].first_frame};
-    };
     if (leading > 0) {
-        auto bed = voice_after_music(track, share, activity_db, threshold_db, stretch_before(leading - 1),
-                                     min_pause_frames);
+        auto bed = voice_after_music(track, share, activity_db, threshold_db,
+                                     stretch_before(pauses, speech, leading - 1), min_pause_frames);
         if (bed) {
             bed->leading = leading - 1;
             return bed;
         }
     }
     if (leading >= edge.trailing) return std::nullopt;
-    const FrameSpan stretch = stretch_before(leading);
+    const FrameSpan stretch = stretch_before(pauses, speech, leading);
     auto bed = voice_after_music(track, share, activity_db, threshold_db, stretch, min_pause_frames);
     const std::size_t voice_end =
         edge.trailing < pauses.size() ? pauses[edge.trailing].first_frame : speech.end_frame;

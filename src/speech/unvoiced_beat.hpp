@@ -19,9 +19,9 @@ namespace talkface::detail {
 // voice's several harmonics.
 constexpr double kLoneLineShare = 0.9;
 
-// The share of the frames in [first, end) whose activity is at or above `threshold_db` and whose
-// change band holds any sound (loud_change_share's frames) that sound voiced: the low band louder
-// than the high band, the power not in one line. 0 where no frame is loud.
+// The share of the loud, sounding frames in [first, end) (held_music.hpp's is_loud_sounding_frame,
+// loud_change_share's frames) that sound voiced: the low band louder than the high band, the power
+// not in one line. 0 where no frame is loud.
 double loud_voiced_share(const FeatureTrack& track, const std::vector<float>& activity_db, float threshold_db,
                          std::size_t first, std::size_t end);
 
