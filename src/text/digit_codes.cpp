@@ -332,12 +332,31 @@ bool names_code_by_letters(const std::vector<CodePoint>& text, std::size_t start
         }
         if (has_capital) return true;
     }
-    if (digits != 4 || value_at(text, number.end) != ' ') return false;
-    auto end = number.end + 1;
+    if (digits != 4) return false;
+    return is_card_suffix_at(text, value_at(text, number.end) == ' ' ? number.end + 1 : number.end);
+}
+
+bool is_card_suffix_at(const std::vector<CodePoint>& text, std::size_t i) {
     std::string suffix;
-    while (is_ascii_letter(value_at(text, end))) suffix += static_cast<char>(ascii_form(text[end++].value));
-    return suffix == "GT" || suffix == "GTS" || suffix == "GTX" || suffix == "XT" || suffix == "XTX" ||
-           suffix == "Ti";
+    for (auto k = i; is_ascii_letter(value_at(text, k)); ++k) {
+        const auto letter = static_cast<char>(ascii_form(text[k].value));
+        suffix += letter >= 'A' && letter <= 'Z' ? static_cast<char>(letter - 'A' + 'a') : letter;
+    }
+    return suffix == "gt" || suffix == "gts" || suffix == "gtx" || suffix == "xt" || suffix == "xtx" ||
+           suffix == "ti";
+}
+
+bool follows_card_model(const std::vector<CodePoint>& text, std::size_t start) {
+    constexpr std::size_t kModelDigits = 4;
+    auto k = start;
+    if (k > 0 && value_at(text, k - 1) == ' ') --k;
+    std::size_t digits = 0;
+    while (k > 0 && is_digit_at(text, k - 1)) {
+        --k;
+        ++digits;
+    }
+    return digits == kModelDigits && (k == 0 || value_at(text, k - 1) != '.') &&
+           is_card_suffix_at(text, start);
 }
 
 bool follows_maker_name(const std::vector<CodePoint>& text, std::size_t start) {

@@ -98,10 +98,18 @@ bool is_filter_grade(const std::vector<CodePoint>& text, std::size_t start, cons
 bool follows_glued_name(const std::vector<CodePoint>& text, std::size_t start);
 
 // Three or four digits after a hyphen that follows a name of letters with a capital (mRNA-1273, Boeing-747),
-// or before a graphics card's suffix (8800 GT, 4090 Ti, 7900 XTX): a code's or a model's digits, said one
-// by one, where two after the hyphen count (COVID-19 十九) and no card's suffix leaves a count (8800元).
+// or before a graphics card's suffix (8800 GT, 4090 Ti, 7900 XTX, and 8800gt as chat writes it: session
+// 28, 八千八百): a code's or a model's digits, said one by one, where two after the hyphen count (COVID-19
+// 十九) and no card's suffix leaves a count (8800元).
 bool names_code_by_letters(const std::vector<CodePoint>& text, std::size_t start,
                            const WrittenNumber& number);
+
+// A graphics card's suffix starting at text[i], in capitals or not: GT GTS GTX XT XTX Ti.
+bool is_card_suffix_at(const std::vector<CodePoint>& text, std::size_t i);
+
+// The letters at text[start] are a card's suffix right after its four digits, a space between or none
+// (RTX 4070 Ti, 1080ti): its letters, said one by one (Ti ti ai; session 28: the pinyin ti).
+bool follows_card_model(const std::vector<CodePoint>& text, std::size_t start);
 
 // Right after the Chinese name of an aircraft's maker (波音737, 空客 320) or of a chip's series
 // (天玑9400 天玑九四零零, 骁龙888, 麒麟990, 鲲鹏920, 昇腾910, as reviews and news say them; session 14,

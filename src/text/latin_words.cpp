@@ -59,6 +59,9 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     // Qwen, which the dictionary lacks (the mapping gave qiu wan), is 千问 as Mandarin news says Alibaba's
     // models (通义千问, 千问2.5).
     {"qwen", "qian1 wen4"},
+    // Session 28: TikTok, whose halves the dictionary lacks (generic speech of two syllables), is said as the
+    // loans write Tik and Tok, 提克 ti ke and 托克 tuo ke (托克皮辛语, Tok Pisin).
+    {"tiktok", "ti2 ke4 tuo1 ke4"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

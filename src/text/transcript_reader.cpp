@@ -13,6 +13,7 @@
 #include "talkface/errors.hpp"
 #include "text/aspect_particle.hpp"
 #include "text/code_points.hpp"
+#include "text/digit_codes.hpp"
 #include "text/latin_words.hpp"
 #include "text/number_words.hpp"
 #include "text/reading_tables.hpp"
@@ -117,6 +118,16 @@ bool marks_list_item(const std::vector<CodePoint>& text, std::size_t i) {
     }
     const auto next = text[i + 1].value;
     return next >= 0x3400 && next <= 0x9FFF;
+}
+
+// The dot in a virus lineage's name (XBB.1.5, BA.2, JN.1): two or more capitals, the dot and a digit. It
+// ends no sentence and is not said, as the name is read (XBB 一点五; session 28: 毒株为XBB.1.5。 was cut
+// after XBB.). A capital alone before a dot may be a choice's or an initial's.
+bool marks_lineage_dot(const std::vector<CodePoint>& text, std::size_t i) {
+    if (ascii_form(text[i].value) != '.' || !detail::is_digit_at(text, i + 1)) return false;
+    auto k = i;
+    while (k > 0 && is_ascii_capital(text[k - 1].value)) --k;
+    return i - k >= 2 && (k == 0 || !is_ascii_letter(text[k - 1].value));
 }
 
 // A # that opens or closes a topic (#春节快乐#, as Weibo and other posts mark one): a bracket, not
@@ -499,9 +510,9 @@ private:
             add_form(text, i, per->end, read_words(per->words));
             return per->end;
         }
-        if (detail::slash_reads_per(text, i)) {
+        if (detail::slash_reads_per(text, i) || detail::slash_joins_sizes(text, i)) {
             form_warnings_ = timeline_.warnings.size();
-            add_form(text, i, i + 1, read_words("每"));
+            add_form(text, i, i + 1, read_words(detail::slash_reads_per(text, i) ? "每" : "和"));
             return i + 1;
         }
         if (auto number = detail::read_number_character(text, i)) {  // ① Ⅱ ½
@@ -519,7 +530,7 @@ private:
             add_form(text, i, i + 1, read_words(std::string(sign)));
             return i + 1;
         }
-        if (marks_choice(text, i) || marks_list_item(text, i)) {
+        if (marks_choice(text, i) || marks_list_item(text, i) || marks_lineage_dot(text, i)) {
             append_text(c.text);
             return i + 1;
         }
@@ -579,7 +590,8 @@ private:
         if (has_han_ && token.size() == 2 && token[0].value == 'o' && token[1].value >= '1' &&
             token[1].value <= '4')
             return read_latin(text, start);
-        if (in_chemical_formula(text, start)) return read_latin(text, start);
+        if (in_chemical_formula(text, start) || detail::follows_card_model(text, start))
+            return read_latin(text, start);
         if (options_.read_pinyin && looks_like_pinyin(token) && !is_english_among_han && !is_formula_letter)
             syllables = split_pinyin(token);
         if (syllables && !has_tone_digit(token) && splits_into_interjection(*syllables)) syllables.reset();
@@ -644,7 +656,8 @@ private:
             return start + 1;
         }
         std::string word = latin_spelling(text, start, end);
-        if (in_chemical_formula(text, start)) {
+        // A card's suffix after its model's digits (RTX 4070 Ti) is its letters, where Ti alone is pinyin.
+        if (in_chemical_formula(text, start) || detail::follows_card_model(text, start)) {
             add_form(text, start, end, said_syllables(detail::letter_syllables(word)));
             return end;
         }

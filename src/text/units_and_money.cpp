@@ -162,4 +162,12 @@ bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i) {
     return i > kLongestUnit && ends_number(i - kLongestUnit - 1);
 }
 
+bool slash_joins_sizes(const std::vector<CodePoint>& text, std::size_t i) {
+    if (value_at(text, i) != '/' || i < 2 || value_at(text, i - 1) != 'B' || !is_digit_at(text, i - 2))
+        return false;
+    auto k = i + 1;
+    while (is_digit_at(text, k) || (value_at(text, k) == '.' && is_digit_at(text, k + 1))) ++k;
+    return k > i + 1 && value_at(text, k) == 'B' && !is_ascii_letter(value_at(text, k + 1));
+}
+
 }  // namespace talkface::detail

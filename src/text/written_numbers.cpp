@@ -87,6 +87,19 @@ std::string change_after_comparison(const std::vector<CodePoint>& text, std::siz
     return contains_any(subject, {"价", "價", "CPI", "PPI"}) ? "上涨" : "增长";
 }
 
+// A signed percentage right after an amount a company or an economy reports (净利润-5%, 营收+3%, 出口-2.1%)
+// is its change, said as news says it: 下降 and 增长, as after 同比 (session 28: 负 and 涨, an index's
+// words). The amount's own value stays signed (净利润-12亿元 负十二亿元, a loss).
+std::string change_of_amount(const std::vector<CodePoint>& text, std::size_t start, bool rise) {
+    const std::string before = text_before(text, start, true);
+    if (!ends_with_any(before,
+                       {"利润",   "利潤",   "净利",   "淨利",   "营收",   "營收",   "收入", "销量", "銷量",
+                        "销售额", "銷售額", "营业额", "營業額", "出货量", "出貨量", "产量", "產量", "成交量",
+                        "成交额", "成交額", "订单",   "訂單",   "出口",   "进口",   "進口"}))
+        return {};
+    return rise ? "增长" : "下降";
+}
+
 // A - before a percentage right after what moves (恒指-0.8%, 腾讯-1.5%) is its fall, 跌, as its + is 涨;
 // after a rate's or a value's word (增速-6.8%, 收益率为-12.35%, 涨跌幅-1.87%) it is the value's sign, 负.
 bool is_fall_of_what_moves(const std::vector<CodePoint>& text, std::size_t start) {
@@ -863,6 +876,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         const bool rise = value_at(text, start) == '+';
         if (rise || is_dash(value_at(text, start))) {
             auto change = change_after_comparison(text, start, unit_end, rise);
+            if (change.empty() && is_percent) change = change_of_amount(text, start, rise);
             if (!change.empty()) signs.front() = std::move(change);
         }
     }

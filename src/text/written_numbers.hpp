@@ -49,6 +49,11 @@ std::optional<SpokenForm> read_per_unit(const std::vector<CodePoint>& text, std:
 // character. Elsewhere a slash is not said (男/女).
 bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i);
 
+// True where the slash at text[i] joins two sizes of a model in billions of parameters (7B/70B 七B和七十B,
+// 1.5B/7B), said 和 as the two versions are listed (session 28: unsaid). A byte unit's B (8GB/256GB) is no
+// size of this kind: a spec pair, not joined so.
+bool slash_joins_sizes(const std::vector<CodePoint>& text, std::size_t i);
+
 // What the sign at text[i] of a formula is said as, as a lesson reads it; empty where it is not
 // said so. Between two terms (a digit, a letter or a closing bracket each side, spaces allowed):
 // = 等于, ≈ 约等于, ≠ 不等于 (a Chinese character may stand beside them too: 答案是x=5), > 大于,

@@ -1514,4 +1514,31 @@ TEST_SUITE("written forms") {
             {"参数量为3-5B", "参数量为三到五 bi"},
         });
     }
+
+    TEST_CASE(
+        "a card's suffix in small letters and Ti, two sizes with a slash, an amount's signed change, "
+        "TikTok") {
+        check_cases({
+            {"我还留着一块8800gt", "我还留着一块八八零零 ji ti"},
+            {"显卡是RTX 4070 Ti", "显卡是 a er ti ai ke si四零七零 ti ai"},
+            {"老显卡1080ti", "老显卡一零八零 ti ai"},
+            {"开源了8B/70B两个版本", "开源了八 bi和七十 bi两个版本"},
+            {"净利润-5%，营收+3%", "净利润下降百分之五营收增长百分之三"},
+            {"他在TikTok上", "他在 ti ke tuo ke上"},
+            // The limits: a price counts, a byte unit's slash is unsaid, a loss keeps its sign, an index
+            // falls.
+            {"售价8800元", "售价八千八百元"},
+            {"内存8GB/256GB", "内存八 ji bi二百五十六 ji bi"},
+            {"净利润-12亿元", "净利润负十二亿元"},
+            {"今日恒指-0.8%", "今日恒指跌百分之零点八"},
+        });
+    }
+
+    TEST_CASE("the dot in a lineage's name ends no sentence") {
+        CHECK(read_transcript("目前流行的主要毒株为XBB.1.5。后来又出现了新的毒株。").sentences.size() == 2);
+        CHECK(said("毒株为XBB.1.5。") == "毒株为 ai ke si bi bi一点五");
+        CHECK(read_transcript("BA.2传播更快。").sentences.size() == 1);
+        // A capital alone before a dot and a digit is no lineage's: a choice's or an initial's dot.
+        CHECK(read_transcript("答案是A.2后来改了。").sentences.size() == 2);
+    }
 }
