@@ -331,6 +331,15 @@ bool adds_to_quantity(const std::vector<CodePoint>& text, std::size_t start) {
     return before.find_first_of("0123456789") != std::string::npos;
 }
 
+// Right after a + that follows 第 and a number (第90+2分钟, stoppage time's minute): the added number is the
+// ordinal's too, 第九十加二分钟 (session 28: 两分钟, a count of minutes).
+bool adds_to_ordinal(const std::vector<CodePoint>& text, std::size_t start) {
+    if (start == 0 || value_at(text, start - 1) != '+') return false;
+    auto k = start - 1;
+    while (k > 0 && is_digit_at(text, k - 1)) --k;
+    return k + 1 < start && k > 0 && text[k - 1].value == U'第';
+}
+
 // Whether text[start, end) stands alone as a clause: at the start of the text or after a mark that
 // ends a clause (not a colon, which introduces a value), and before one or the end.
 bool stands_alone(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
@@ -589,7 +598,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     NumberContext context;
     std::size_t previous = start;
     while (previous > 0 && text[previous - 1].value == ' ') --previous;
-    context.is_ordinal = previous > 0 && (text[previous - 1].value == U'第');
+    context.is_ordinal = (previous > 0 && text[previous - 1].value == U'第') || adds_to_ordinal(text, start);
     context.is_phone = follows_phone_word(text, start);
 
     const auto number = parse_number(text, i);

@@ -1517,7 +1517,7 @@ TEST_SUITE("written forms") {
 
     TEST_CASE(
         "a card's suffix in small letters and Ti, two sizes with a slash, an amount's signed change, "
-        "TikTok") {
+        "TikTok, stoppage time") {
         check_cases({
             {"我还留着一块8800gt", "我还留着一块八八零零 ji ti"},
             {"显卡是RTX 4070 Ti", "显卡是 a er ti ai ke si四零七零 ti ai"},
@@ -1525,6 +1525,7 @@ TEST_SUITE("written forms") {
             {"开源了8B/70B两个版本", "开源了八 bi和七十 bi两个版本"},
             {"净利润-5%，营收+3%", "净利润下降百分之五营收增长百分之三"},
             {"他在TikTok上", "他在 ti ke tuo ke上"},
+            {"第90+2分钟绝杀", "第九十加二分钟绝杀"},
             // The limits: a price counts, a byte unit's slash is unsaid, a loss keeps its sign, an index
             // falls.
             {"售价8800元", "售价八千八百元"},
