@@ -359,6 +359,38 @@ bool follows_card_model(const std::vector<CodePoint>& text, std::size_t start) {
            is_card_suffix_at(text, start);
 }
 
+namespace {
+
+// Four digits shaped as a graphics card's number, its series and its tier each followed by 0 (4090, 3060,
+// 1080): a count so shaped is rare beside a card, and a round count (2000) is not one.
+bool has_card_shape(const std::string& digits) {
+    constexpr std::size_t kCardDigits = 4;
+    return digits.size() == kCardDigits && digits[0] != '0' && digits[1] == '0' && digits[2] != '0' &&
+           digits[3] == '0';
+}
+
+}  // namespace
+
+bool repeats_card_model(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
+    if (number.has_point || number.has_separators || !has_card_shape(number.whole) ||
+        (start > 0 && (is_ascii_letter(text[start - 1].value) || is_digit_at(text, start - 1))) ||
+        is_one_of(value_at(text, number.end), U"元圆块塊年人个個次米分秒"))
+        return false;
+    for (auto k = start; k > 0 && !is_one_of(text[k - 1].value, U"。！？!?\n");) {
+        auto first = k;
+        while (first > 0 && is_digit_at(text, first - 1)) --first;
+        if (first == k) {
+            --k;
+            continue;
+        }
+        if (k - first == number.whole.size() && !is_digit_at(text, k) && follows_model_name(text, first) &&
+            has_card_shape(text_between(text, first, k)))
+            return true;
+        k = first;
+    }
+    return false;
+}
+
 bool follows_maker_name(const std::vector<CodePoint>& text, std::size_t start) {
     auto i = start;
     if (i > 0 && text[i - 1].value == ' ') --i;

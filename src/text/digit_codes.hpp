@@ -104,6 +104,12 @@ bool follows_glued_name(const std::vector<CodePoint>& text, std::size_t start);
 bool names_code_by_letters(const std::vector<CodePoint>& text, std::size_t start,
                            const WrittenNumber& number);
 
+// A bare four-digit number shaped as a graphics card's (4090, 3060) in a sentence that named a card of that
+// shape before it (这块RTX 3090用了三年，我打算换4090; RTX 4080的性能接近4090): that card's kind, said digit
+// by digit as gamers say it (四零九零; session 28: 四千零九十). A count's measure after it (2060元) keeps a
+// count.
+bool repeats_card_model(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
+
 // A graphics card's suffix starting at text[i], in capitals or not: GT GTS GTX XT XTX Ti.
 bool is_card_suffix_at(const std::vector<CodePoint>& text, std::size_t i);
 

@@ -72,6 +72,45 @@ bool rates(const std::vector<CodePoint>& text, std::size_t start, std::size_t en
            (closes_clause && ends_with_any(before, {"给", "給", "打了"}));
 }
 
+// The = at text[i] between two lone digits, nothing of a formula around them (3=1，来个人; 车队2=3): a game
+// lobby's count, three waiting for one more, said 三等一 as players say it (session 28: 等于). A sum has its
+// signs (1+2=3) and an equation its letters (x=5).
+bool counts_a_lobby(const std::vector<CodePoint>& text, std::size_t i) {
+    const auto outside = [&](std::size_t k) {
+        const auto c = value_at(text, k);
+        return !is_formula_term(c) && !is_dash(c) && !is_one_of(c, U"+×÷*/^.=<>(\u2212");
+    };
+    return i >= 1 && is_digit_at(text, i - 1) && is_digit_at(text, i + 1) && (i < 2 || outside(i - 2)) &&
+           outside(i + 2);
+}
+
+// The value of the Roman numeral text[start, end) in I, V and X (1 to 39), or 0 where the letters are none.
+int ascii_roman_value(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    const auto value_of = [](char32_t letter) { return letter == 'I' ? 1 : letter == 'V' ? 5 : 10; };
+    int value = 0;
+    for (auto k = start; k < end; ++k) {
+        const int here = value_of(text[k].value);
+        value += k + 1 < end && here < value_of(text[k + 1].value) ? -here : here;
+    }
+    constexpr int kLargest = 39;
+    return value >= 1 && value <= kLargest ? value : 0;
+}
+
+// The end of a Roman numeral written in capital letters at text[i] (II型糖尿病, 第IV卷), or i where there is
+// none: two or more of I, V and X standing apart from other letters and digits, after 第 or before a
+// classifier a numeral orders (型 期 卷 类 级 章 册 代 世 部). A lone I or V is a letter or a pronoun
+// (V我50); the Unicode numerals (Ⅲ期) are read above.
+std::size_t ascii_roman_numeral_end(const std::vector<CodePoint>& text, std::size_t i) {
+    auto end = i;
+    while (is_one_of(value_at(text, end), U"IVX")) ++end;
+    const auto stands_apart = [&](char32_t c) { return !is_ascii_letter(c) && !(c >= '0' && c <= '9'); };
+    if (end - i < 2 || (i > 0 && !stands_apart(text[i - 1].value)) || !stands_apart(value_at(text, end)))
+        return i;
+    const bool ordered = (i > 0 && text[i - 1].value == U'第') ||
+                         is_one_of(value_at(text, end), U"型期卷类類级級章册冊代世部");
+    return ordered && ascii_roman_value(text, i, end) > 0 ? end : i;
+}
+
 }  // namespace
 
 std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t i) {
@@ -92,6 +131,7 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
     const bool between_terms = is_formula_term(left) && is_formula_term(right);
     switch (sign) {
         case '=': case 0x2248: case 0x2260: {  // = ≈ ≠, between a character and a term too (答案是x=5, 等于号)
+            if (sign == '=' && counts_a_lobby(text, i)) return "等";
             if (!(is_formula_term(left) || is_han_left) || !(relation_right || is_han_right)) return {};
             return sign == '=' ? "等于" : sign == 0x2248 ? "约等于" : "不等于";
         }
@@ -178,6 +218,13 @@ std::optional<SpokenForm> read_number_character(const std::vector<CodePoint>& te
     if (c >= 0x2170 && c <= 0x217B) number = static_cast<int>(c - 0x2170) + 1;  // ⅰ ... ⅻ
     SpokenForm form;
     form.end = i + 1;
+    if (number == 0) {
+        const auto roman_end = ascii_roman_numeral_end(text, i);
+        if (roman_end > i) {
+            number = ascii_roman_value(text, i, roman_end);
+            form.end = roman_end;
+        }
+    }
     if (number > 0) {
         form.words = cardinal_words(std::to_string(number), false);
         return form;

@@ -167,7 +167,10 @@ bool slash_joins_sizes(const std::vector<CodePoint>& text, std::size_t i) {
         return false;
     auto k = i + 1;
     while (is_digit_at(text, k) || (value_at(text, k) == '.' && is_digit_at(text, k + 1))) ++k;
-    return k > i + 1 && value_at(text, k) == 'B' && !is_ascii_letter(value_at(text, k + 1));
+    // In a list of three or more (1.5B/7B/32B) only the last slash is 和, as a list is read: the others
+    // are a list's pause, unsaid.
+    return k > i + 1 && value_at(text, k) == 'B' && !is_ascii_letter(value_at(text, k + 1)) &&
+           !(value_at(text, k + 1) == '/' && is_digit_at(text, k + 2));
 }
 
 }  // namespace talkface::detail

@@ -622,6 +622,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     context.is_model = sign_words.empty() && currency == nullptr && !after_times && !is_stake &&
                        (follows_model_name(text, start) || follows_maker_name(text, start) ||
                         follows_glued_name(text, start) || names_code_by_letters(text, start, number) ||
+                        repeats_card_model(text, start, number) ||
                         // An isotope's number after a hyphen (碳-14), or of three digits or more glued to
                         // a radioactive element's name, which names its isotopes (铀235, 铯137; 钠500毫克 and
                         // 补钙2片 count).
@@ -677,6 +678,24 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         form.end = second.end;
         return form;
     };
+    // A number in E notation (学习率1e-3, 2.5E+8), as code and papers write it, is the number it means:
+    // 一乘十的负三次方, as 10^6 is 十的六次方 (session 28: its e a letter, 一 yi 三). A letter before the
+    // digits (0x1e5, a hex code's) or after the power (3e5x) leaves a name.
+    if (is_one_of(value_at(text, number.end), U"eE") && !number.has_separators &&
+        (start == 0 || !is_ascii_letter(value_at(text, start - 1)))) {
+        auto k = number.end + 1;
+        const bool negative = is_dash(value_at(text, k));
+        if (negative || value_at(text, k) == '+') ++k;
+        const auto power = digits_from(text, k);
+        if (!power.empty() && !is_ascii_letter(value_at(text, k)) && value_at(text, k) != '.') {
+            const auto mantissa = say_number(number, {});
+            form.words = sign_words + mantissa.words + "乘十的" + (negative ? "负" : "") +
+                         cardinal_words(power, false) + "次方";
+            append_warning(form, mantissa.warning);
+            form.end = k;
+            return form;
+        }
+    }
     if (sign_words.empty() && currency == nullptr && value_at(text, number.end) == ':' &&
         is_digit_at(text, number.end + 1)) {
         auto second = parse_number(text, number.end + 1);
@@ -766,6 +785,14 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
             join_two(denominator, "比", {});
             form.words += pressure->words;
             form.end = pressure->end;
+            return form;
+        }
+        // 24/7, hours a day on every day of the week (客服24/7在线), is no fraction: said as written,
+        // 二十四七, as 7×24 is 七乘二十四 (session 28: 七分之二十四, a fraction no one writes so).
+        if (sign_words.empty() && number.whole == "24" && denominator.whole == "7" &&
+            !denominator.has_point && !denominator.has_separators) {
+            form.words = "二十四七";
+            form.end = denominator.end;
             return form;
         }
         const auto said_denominator = say_number(denominator, {});

@@ -51,7 +51,8 @@ bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i);
 
 // True where the slash at text[i] joins two sizes of a model in billions of parameters (7B/70B 七B和七十B,
 // 1.5B/7B), said 和 as the two versions are listed (session 28: unsaid). A byte unit's B (8GB/256GB) is no
-// size of this kind: a spec pair, not joined so.
+// size of this kind: a spec pair, not joined so. In a list of three or more only the last slash is 和
+// (1.5B/7B/32B 一点五B、七B和三十二B).
 bool slash_joins_sizes(const std::vector<CodePoint>& text, std::size_t i);
 
 // What the sign at text[i] of a formula is said as, as a lesson reads it; empty where it is not

@@ -1535,6 +1535,26 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE(
+        "a Roman numeral in letters, a card named again, a list of sizes, a lobby's count, 24/7, E "
+        "notation") {
+        check_cases({
+            {"他患有II型糖尿病", "他患有二型糖尿病"},
+            {"文集的第IV卷", "文集的第四卷"},
+            {"这块RTX 3090用了三年，我打算换4090", "这块 a er ti ai ke si三零九零用了三年我打算换四零九零"},
+            {"该模型有1.5B/7B/32B三个版本", "该模型有一点五 bi七 bi和三十二 bi三个版本"},
+            {"3=1，来个人", "三等一来个人"},
+            {"客服24/7在线", "客服二十四七在线"},
+            {"学习率设为1e-3", "学习率设为一乘十的负三次方"},
+            // The limits: letters among letters stay letters, a count beside a card counts, a sum says 等于,
+            // a fraction stays one, a hex code keeps its letters.
+            {"IVF技术", "ai wei ai fu技术"},
+            {"RTX 4090售价2060元", "a er ti ai ke si四零九零售价两千零六十元"},
+            {"1+2=3", "一加二等于三"},
+            {"24/5", "五分之二十四"},
+        });
+    }
+
     TEST_CASE("the dot in a lineage's name ends no sentence") {
         CHECK(read_transcript("目前流行的主要毒株为XBB.1.5。后来又出现了新的毒株。").sentences.size() == 2);
         CHECK(said("毒株为XBB.1.5。") == "毒株为 ai ke si bi bi一点五");
