@@ -14,6 +14,7 @@ extern "C" {
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -409,11 +410,20 @@ public:
         }
         if (stream < 0) {
             bool has_video = false;
-            for (unsigned i = 0; i < format_->nb_streams; ++i)
+            bool has_subtitles = false;
+            for (unsigned i = 0; i < format_->nb_streams; ++i) {
                 has_video |= format_->streams[i]->codecpar->codec_type == AVMEDIA_TYPE_VIDEO;
+                has_subtitles |= format_->streams[i]->codecpar->codec_type == AVMEDIA_TYPE_SUBTITLE;
+            }
             if (const std::string damage = broken_index(); !damage.empty())
                 throw ParseError(path_, 0, 0, "", damage + ", and no sound track can be found in what is left of it");
             if (has_video) throw ParseError(path_, 0, 0, "", "a video without a sound track: nothing to align");
+            // A subtitle file muxed alone (an MKV or MP4 of subtitles, as a subtitle editor or a
+            // track extractor writes it) was called no audio stream, which said nothing of what it is.
+            if (has_subtitles)
+                throw ParseError(
+                    path_, 0, 0, "",
+                    "subtitles without a sound track: nothing to align (the audio is in another file)");
             throw not_audio("no audio stream in the " + std::string(format_->iformat->name) + " file");
         }
         stream_ = format_->streams[stream];
@@ -471,6 +481,7 @@ public:
                 if (!decode_next_frame()) {
                     if (fill_lost_end()) continue;
                     check_whole();
+                    note_length_at_end();
                     break;
                 }
                 continue;
@@ -740,6 +751,60 @@ private:
                                    " but the data ends at " + seconds_text(decoded_s));
     }
 
+    // At the end of the data, once: what the user should know of a file read whole that its header
+    // or its last frame belies. An MP3 whose last packet is shorter than its frame's header states,
+    // ending where the file does, was cut in the middle of that frame (a download or a copy that
+    // stopped): nothing else says so where no LAME tag states the length, and a transcript of the
+    // whole recording was aligned into the part left, silently. A sound track that lasts longer
+    // than its header states (a LAME tag or an MP4's track header written before the recording
+    // ended), or a file of one track whose header states longer than that track's own index holds
+    // (an MP4's movie header left from before an edit), is read whole and said.
+    void note_length_at_end() {
+        if (end_noted_) return;
+        end_noted_ = true;
+        // The sound track's length as given out: seconds_read() counts an encoder's delay cut from its
+        // start; the silence before a late sound track (keep_picture_lead) is the picture's, not the track's.
+        const double decoded_s = static_cast<double>(frames_given_ - picture_lead_frames_) / sample_rate_hz_;
+        if (short_mp3_frame_ && short_mp3_frame_->end_byte >= avio_size(format_->pb))
+            add_note(
+                "its last MP3 frame is cut short: its header states " +
+                std::to_string(short_mp3_frame_->stated_bytes) + " bytes, the file ends after " +
+                std::to_string(short_mp3_frame_->held_bytes) + " of them, at " + seconds_text(decoded_s) +
+                ": the file was cut while it was copied, downloaded or recorded, and the sound after that "
+                "time is missing; a transcript that goes on past it was aligned into what is left");
+        const auto slack_s = [](double stated_s) {
+            return std::max(kLengthSlackS, kLengthSlackShare * stated_s);
+        };
+        // A WAV read past its stated size is said so by its opener (describe_stale_size).
+        if (stated_seconds_ > 0.0 && !reading_.reads_past_stated_size &&
+            decoded_s > stated_seconds_ + slack_s(stated_seconds_))
+            add_note("its header states " + seconds_text(stated_seconds_) + " of sound, the file holds " +
+                     seconds_text(decoded_s) + "; read to the end of the file");
+        const double file_s = format_->nb_streams == 1 && format_->duration != AV_NOPTS_VALUE &&
+                                      format_->duration > 0 &&
+                                      format_->duration_estimation_method != AVFMT_DURATION_FROM_BITRATE
+                                  ? static_cast<double>(format_->duration) / AV_TIME_BASE
+                                  : 0.0;
+        if (file_s > decoded_s + slack_s(file_s) && decoded_s >= stated_seconds_ - slack_s(stated_seconds_))
+            add_note("its header states " + seconds_text(file_s) +
+                     " for the file, but its sound track's own index "
+                     "holds " +
+                     seconds_text(decoded_s) + ", all of which was read");
+    }
+
+    // Follows whether an MP3 packet holds fewer bytes than its frame's header states (short_mp3_frame_).
+    void follow_mp3_frame_size(const AVPacket& packet) {
+        short_mp3_frame_.reset();
+        if (stream_->codecpar->codec_id != AV_CODEC_ID_MP3 || packet.data == nullptr || packet.size <= 0 ||
+            packet.pos < 0)
+            return;
+        const std::optional<Mp3FrameHeader> header = read_mp3_frame_header(std::string_view(
+            reinterpret_cast<const char*>(packet.data), static_cast<std::size_t>(packet.size)));
+        const auto held = static_cast<std::size_t>(packet.size);
+        if (header && header->bytes > held)
+            short_mp3_frame_ = ShortFrame{header->bytes, held, packet.pos + packet.size};
+    }
+
     // At the end of a file known to be damaged inside: the sound short of the length its container
     // states was lost with the damaged pages (the container's last page is whole: a cut file is
     // refused before it gets here), and is kept as silence. True if there was such sound to fill.
@@ -810,6 +875,7 @@ private:
             }
             if (!first_packet_sent_) cut_unstated_delay(*packet_);
             first_packet_sent_ = true;
+            follow_mp3_frame_size(*packet_);
             const std::size_t lost_frames = mp3_bytes_lost(*packet_);
             const int sent = avcodec_send_packet(codec_.get(), packet_.get());
             last_packet_frames_ = packet_frames(packet_->duration);
@@ -1065,6 +1131,7 @@ private:
         // Nothing is given out yet: the first frame (and any silence before it) is all of pending_.
         pending_.insert(pending_.begin(), static_cast<std::size_t>(lead), 0.0f);
         frames_decoded_ += static_cast<std::size_t>(lead);
+        picture_lead_frames_ = static_cast<std::size_t>(lead);
         time_zero_frames_ -= lead;
         add_note("its sound track starts " + seconds_text(static_cast<double>(lead) / sample_rate_hz_) +
                  " after its picture; read as silence until then, so that the times are the video's");
@@ -1129,6 +1196,14 @@ private:
     std::string path_;
     FfmpegReading reading_;
     bool end_filled_ = false;  // fill_lost_end() has run
+    bool end_noted_ = false;   // note_length_at_end() has run
+    // The last packet of an MP3 stream, where it holds fewer bytes than its frame's header states.
+    struct ShortFrame {
+        std::size_t stated_bytes = 0;
+        std::size_t held_bytes = 0;
+        std::int64_t end_byte = 0;  // where the packet ends in the file
+    };
+    std::optional<ShortFrame> short_mp3_frame_;
     // Before format_, which reads through it and is closed first.
     std::unique_ptr<HidingReader> hiding_reader_;
     std::unique_ptr<AVFormatContext, FormatCloser> format_;
@@ -1147,6 +1222,7 @@ private:
     bool last_packet_is_pause_ = false;  // the last packet sent is an AMR pause frame
     bool skipped_is_pause_ = true;       // every packet refused since the last frame is an AMR pause frame
     std::size_t frames_given_ = 0;    // frames read_frames() has returned
+    std::size_t picture_lead_frames_ = 0;  // keep_picture_lead's silence before the sound
     int last_refusal_ = 0;            // the decoder's error for the last packet it refused
     std::size_t last_packet_frames_ = 0;  // the length of the last packet sent
     std::int64_t time_zero_frames_ = 0;  // a frame's timestamp in samples less the samples before it

@@ -15,45 +15,6 @@ std::uint32_t big_endian(std::string_view bytes, std::size_t at, std::size_t cou
     return value;
 }
 
-// What an MPEG Layer III frame's 4-byte header says of the frame.
-struct Mp3FrameHeader {
-    int version = 0;  // 3 MPEG-1, 2 MPEG-2, 0 MPEG-2.5
-    bool is_mono = false;
-    std::size_t samples = 0;  // a frame's samples: 1152 (MPEG-1), 576
-    std::size_t bytes = 0;    // the frame's own size, padding byte included; 0 in free format
-};
-
-// The header at the start of `bytes` (at least 4), if it is an MPEG Layer III frame's.
-std::optional<Mp3FrameHeader> read_mp3_frame_header(std::string_view bytes) {
-    if (bytes.size() < 4) return std::nullopt;
-    const auto first = static_cast<unsigned char>(bytes[0]);
-    const auto second = static_cast<unsigned char>(bytes[1]);
-    const auto third = static_cast<unsigned char>(bytes[2]);
-    if (first != 0xFF || (second & 0xE0) != 0xE0) return std::nullopt;
-    Mp3FrameHeader header;
-    header.version = (second >> 3) & 3;
-    const int layer = (second >> 1) & 3;  // 1 Layer III
-    const int bitrate_index = third >> 4;
-    const int rate_index = (third >> 2) & 3;
-    if (header.version == 1 || layer != 1 || bitrate_index == 15 || rate_index == 3) return std::nullopt;
-    header.is_mono = ((static_cast<unsigned char>(bytes[3]) >> 6) & 3) == 3;
-    const bool is_mpeg1 = header.version == 3;
-    header.samples = is_mpeg1 ? 1152 : 576;
-    constexpr std::array<int, 15> kMpeg1Kbps{0,   32,  40,  48,  56,  64,  80, 96,
-                                             112, 128, 160, 192, 224, 256, 320};
-    constexpr std::array<int, 15> kMpeg2Kbps{0, 8, 16, 24, 32, 40, 48, 56, 64, 80, 96, 112, 128, 144, 160};
-    constexpr std::array<int, 3> kMpeg1Hz{44100, 48000, 32000};
-    const int rate_hz = kMpeg1Hz[static_cast<std::size_t>(rate_index)] >> (is_mpeg1              ? 0
-                                                                           : header.version == 2 ? 1
-                                                                                                 : 2);
-    const int kbps = (is_mpeg1 ? kMpeg1Kbps : kMpeg2Kbps)[static_cast<std::size_t>(bitrate_index)];
-    // A slot is a byte in Layer III: 144 of them a kb/s per kHz in MPEG-1, 72 in MPEG-2 and 2.5.
-    const int padding = (third >> 1) & 1;
-    if (kbps > 0)
-        header.bytes = static_cast<std::size_t>((is_mpeg1 ? 144 : 72) * kbps * 1000 / rate_hz + padding);
-    return header;
-}
-
 // The Xing or Info header's table after the first frame's side information (`at`).
 std::optional<Mp3Toc> read_xing_toc(std::string_view file, std::int64_t file_size, std::size_t start,
                                     const Mp3FrameHeader& header, std::size_t at) {
@@ -128,6 +89,36 @@ std::optional<Mp3Toc> read_vbri_toc(std::string_view file, std::size_t start, co
 }
 
 }  // namespace
+
+std::optional<Mp3FrameHeader> read_mp3_frame_header(std::string_view bytes) {
+    if (bytes.size() < 4) return std::nullopt;
+    const auto first = static_cast<unsigned char>(bytes[0]);
+    const auto second = static_cast<unsigned char>(bytes[1]);
+    const auto third = static_cast<unsigned char>(bytes[2]);
+    if (first != 0xFF || (second & 0xE0) != 0xE0) return std::nullopt;
+    Mp3FrameHeader header;
+    header.version = (second >> 3) & 3;
+    const int layer = (second >> 1) & 3;  // 1 Layer III
+    const int bitrate_index = third >> 4;
+    const int rate_index = (third >> 2) & 3;
+    if (header.version == 1 || layer != 1 || bitrate_index == 15 || rate_index == 3) return std::nullopt;
+    header.is_mono = ((static_cast<unsigned char>(bytes[3]) >> 6) & 3) == 3;
+    const bool is_mpeg1 = header.version == 3;
+    header.samples = is_mpeg1 ? 1152 : 576;
+    constexpr std::array<int, 15> kMpeg1Kbps{0,   32,  40,  48,  56,  64,  80, 96,
+                                             112, 128, 160, 192, 224, 256, 320};
+    constexpr std::array<int, 15> kMpeg2Kbps{0, 8, 16, 24, 32, 40, 48, 56, 64, 80, 96, 112, 128, 144, 160};
+    constexpr std::array<int, 3> kMpeg1Hz{44100, 48000, 32000};
+    const int rate_hz = kMpeg1Hz[static_cast<std::size_t>(rate_index)] >> (is_mpeg1              ? 0
+                                                                           : header.version == 2 ? 1
+                                                                                                 : 2);
+    const int kbps = (is_mpeg1 ? kMpeg1Kbps : kMpeg2Kbps)[static_cast<std::size_t>(bitrate_index)];
+    // A slot is a byte in Layer III: 144 of them a kb/s per kHz in MPEG-1, 72 in MPEG-2 and 2.5.
+    const int padding = (third >> 1) & 1;
+    if (kbps > 0)
+        header.bytes = static_cast<std::size_t>((is_mpeg1 ? 144 : 72) * kbps * 1000 / rate_hz + padding);
+    return header;
+}
 
 double Mp3Toc::sample_at(std::int64_t file_byte) const {
     if (points.empty()) return 0.0;

@@ -1,6 +1,6 @@
-// A variable-rate MP3's table of contents, which players seek by: the reader places what follows a
-// scratch by it (ffmpeg_source.cpp), since a variable rate gives the lost bytes no time of their
-// own. Two encoders write one in the stream's first frame, in two layouts:
+// An MPEG Layer III frame's header, and a variable-rate MP3's table of contents, which players seek by: the
+// reader places what follows a scratch by it (ffmpeg_source.cpp), since a variable rate gives the lost bytes
+// no time of their own. Two encoders write one in the stream's first frame, in two layouts:
 // - the Xing (or LAME's Info) header: how many frames and bytes the stream holds and, for each 1% of
 //   its time, how far into its bytes that time lies (in 256ths);
 // - the VBRI header of Fraunhofer's encoder: how many frames the stream holds and, for each stretch
@@ -9,6 +9,7 @@
 #ifndef TALKFACE_AUDIO_MP3_TOC_HPP
 #define TALKFACE_AUDIO_MP3_TOC_HPP
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -16,6 +17,17 @@
 #include <vector>
 
 namespace talkface::detail {
+
+// What an MPEG Layer III frame's 4-byte header says of the frame.
+struct Mp3FrameHeader {
+    int version = 0;  // 3 MPEG-1, 2 MPEG-2, 0 MPEG-2.5
+    bool is_mono = false;
+    std::size_t samples = 0;  // a frame's samples: 1152 (MPEG-1), 576
+    std::size_t bytes = 0;    // the frame's own size, padding byte included; 0 in free format
+};
+
+// The header at the start of `bytes` (at least 4), if it is an MPEG Layer III frame's.
+std::optional<Mp3FrameHeader> read_mp3_frame_header(std::string_view bytes);
 
 struct Mp3Toc {
     // A byte of the file and the sample the table places there.

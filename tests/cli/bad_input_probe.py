@@ -1,5 +1,6 @@
 """Reads one file through the C ABI (ctypes) or the Python module, in a process of its own so that a
-crash is seen as one, and prints {"status": "ok" | "error", "message": ...} as JSON.
+crash is seen as one, and prints {"status": "ok" | "error", "message": ...} as JSON (with "warnings",
+the result's, where it is ok).
 
     bad_input_probe.py c|python audio|transcript|face FILE [TRANSCRIPT]
 
@@ -33,23 +34,32 @@ def through_c(kind, path, transcript_path):
     if status != 0:
         name = lib.tf_status_name(status).decode()
         return {"status": "error", "type": name, "message": lib.tf_last_error_message().decode()}
+    warnings = []
+    if kind != "face":
+        count = ctypes.c_size_t()
+        lib.tf_timeline_warning_count(handle, ctypes.byref(count))
+        for i in range(count.value):
+            warning = ctypes.c_char_p()
+            lib.tf_timeline_warning(handle, ctypes.c_size_t(i), ctypes.byref(warning))
+            warnings.append(warning.value.decode())
     release(handle)
-    return {"status": "ok"}
+    return {"status": "ok", "warnings": warnings}
 
 
 def through_python(kind, path, transcript_path):
     import talkface
 
+    warnings = []
     try:
         if kind == "face":
             talkface.FaceModel.load(path)
         elif kind == "transcript":
-            talkface.load_transcript(path)
+            warnings = list(talkface.load_transcript(path).warnings)
         else:
-            talkface.SpeechAligner().align_file(path, talkface.load_transcript(transcript_path))
+            warnings = list(talkface.SpeechAligner().align_file(path, talkface.load_transcript(transcript_path)).warnings)
     except talkface.Error as error:
         return {"status": "error", "type": type(error).__name__, "message": str(error)}
-    return {"status": "ok"}
+    return {"status": "ok", "warnings": warnings}
 
 
 if __name__ == "__main__":

@@ -1,7 +1,8 @@
 """Broken files of the kinds users have (issue 13, "Bad input"), made from the test data.
 
 Each maker writes one file into a folder and returns its path. test_bad_input.py runs them through
-the command and the Python module; bench/README.md's session 27 section lists what each gave.
+the command, the C ABI and the Python module; bench/README.md's session 27 and 28 sections list what
+each gave.
 """
 
 import math
@@ -16,7 +17,9 @@ AUDIO = os.path.join(SOURCE_DIR, "tests", "data", "audio")
 FACES = os.path.join(SOURCE_DIR, "samples", "faces")
 
 # WAVE_FORMAT tags (RFC 2361)
-PCM, IEEE_FLOAT, ALAW, MULAW = 1, 3, 6, 7
+PCM, IEEE_FLOAT, ALAW, MULAW, EXTENSIBLE = 1, 3, 6, 7, 0xFFFE
+# A WAVE_FORMAT_EXTENSIBLE's SubFormat: the plain tag in the first 2 bytes of the KSDATAFORMAT GUID.
+SUBFORMAT_TAIL = b"\x00\x00\x00\x00\x10\x00\x80\x00\x00\xaa\x00\x38\x9b\x71"
 
 
 def speech_samples():
@@ -26,16 +29,27 @@ def speech_samples():
     return list(struct.unpack("<%dh" % (len(frames) // 2), frames))
 
 
-def wav_bytes(data, *, tag=PCM, channels=1, rate_hz=16000, bits=16, data_size=None):
-    """A WAV file: a fmt chunk saying `tag`, `channels`, `rate_hz`, `bits`, then `data`, whose
-    chunk states `data_size` (default: its real size)."""
+def wav_bytes(data, *, tag=PCM, channels=1, rate_hz=16000, bits=16, data_size=None, sub_format=None, riff_size=None,
+              before_data=b""):
+    """A WAV file: a fmt chunk saying `tag`, `channels`, `rate_hz`, `bits` (WAVE_FORMAT_EXTENSIBLE
+    with the tag `sub_format` when that is given), the chunks `before_data`, then `data`, whose chunk
+    states `data_size` (default: its real size) in a RIFF chunk stating `riff_size` (default: its own)."""
     block_align = channels * bits // 8
-    fmt = struct.pack("<HHIIHH", tag, channels, rate_hz, (rate_hz * block_align) & 0xFFFFFFFF, block_align, bits)
-    if tag != PCM:
+    fmt_tag = tag if sub_format is None else EXTENSIBLE
+    fmt = struct.pack("<HHIIHH", fmt_tag, channels, rate_hz, (rate_hz * block_align) & 0xFFFFFFFF, block_align, bits)
+    if sub_format is not None:
+        fmt += struct.pack("<HHI", 22, bits, 0x4 if channels == 1 else 0x3) + struct.pack("<H", sub_format) + SUBFORMAT_TAIL
+    elif tag != PCM:
         fmt += struct.pack("<H", 0)
     stated = len(data) if data_size is None else data_size
-    body = b"WAVE" + b"fmt " + struct.pack("<I", len(fmt)) + fmt + b"data" + struct.pack("<I", stated) + data
-    return b"RIFF" + struct.pack("<I", min(len(body), 0xFFFFFFFF)) + body
+    body = b"WAVE" + b"fmt " + struct.pack("<I", len(fmt)) + fmt + before_data + b"data" + struct.pack("<I", stated) + data
+    riff = min(len(body), 0xFFFFFFFF) if riff_size is None else riff_size
+    return b"RIFF" + struct.pack("<I", riff) + body
+
+
+def chunk(name, payload):
+    """A RIFF chunk, padded to an even size."""
+    return name + struct.pack("<I", len(payload)) + payload + b"\x00" * (len(payload) % 2)
 
 
 def pcm16(samples):
@@ -99,6 +113,14 @@ def audio_files():
     ogg = bytearray(read(os.path.join(SPEECH, "stereo_44k.ogg")))
     ogg[22] ^= 0xFF  # the first page's CRC
     flac = read(os.path.join(SPEECH, "comma_pause.flac"))
+    pcm24 = b"".join(struct.pack("<i", s << 8)[:3] for s in voice)
+    double_voice = bytearray(b"".join(struct.pack("<d", s / 32768.0) for s in voice))
+    for i, value in enumerate((math.nan, math.inf, -math.inf)):
+        at = (len(voice) // 4 * (i + 1)) * 8
+        double_voice[at : at + 8 * 100] = struct.pack("<d", value) * 100
+    huge_float = b"".join(struct.pack("<f", s * 1e34) for s in voice)
+    tagged_mp3 = read(os.path.join(AUDIO, "ffmpeg_16000.mp3"))
+    three_gp = read(os.path.join(AUDIO, "voice.3gp"))
     return {
         "zero_bytes.wav": b"",
         "zero_bytes.mp3": b"",
@@ -126,7 +148,60 @@ def audio_files():
         "bad_crc.ogg": bytes(ogg),
         "total_too_long.flac": flac_with_total(flac, 10),
         "total_too_short.flac": flac_with_total(flac, 0.25),
+        # Session 28: kinds the 41 lacked.
+        "data_size_zero.wav": wav_bytes(pcm16(voice), data_size=0),
+        "sizes_zero.wav": wav_bytes(pcm16(voice), data_size=0, riff_size=0),
+        "data_size_ffffffff.wav": wav_bytes(pcm16(voice), data_size=0xFFFFFFFF),
+        "extensible_pcm16.wav": wav_bytes(pcm16(voice), sub_format=PCM),
+        "extensible_pcm24.wav": wav_bytes(pcm24, bits=24, sub_format=PCM),
+        "extensible_float32_nan_inf.wav": wav_bytes(bytes(non_finite), bits=32, sub_format=IEEE_FLOAT),
+        "float64_nan_inf.wav": wav_bytes(bytes(double_voice), tag=IEEE_FLOAT, bits=64),
+        "float32_huge.wav": wav_bytes(huge_float, tag=IEEE_FLOAT, bits=32),
+        "list_8mb.wav": wav_bytes(pcm16(voice), before_data=chunk(b"LIST", b"INFO" + b"\x00" * (8 << 20))),
+        "list_past_end.wav": wav_bytes(pcm16(voice), before_data=b"LIST" + struct.pack("<I", 0x7FFFFFF0) + b"INFO"),
+        "cut_mid_frame_tagged.mp3": tagged_mp3[: len(tagged_mp3) // 2 + 7],
+        "stated_twice.mp3": mp3_with_stated_frames(tagged_mp3, 2),
+        "stated_half.mp3": mp3_with_stated_frames(tagged_mp3, 0.5),
+        "moov_at_end_cut.m4a": m4a[: len(m4a) // 2],
+        "stated_twice.m4a": mp4_with_stated_length(m4a, 2),
+        "stated_half.m4a": mp4_with_stated_length(m4a, 0.5),
+        "two_tracks.mkv": read(os.path.join(AUDIO, "two_tracks.mkv")),
+        "subtitle_only.mkv": read(os.path.join(AUDIO, "subtitle_only.mkv")),
+        "voice.3gp": three_gp,
+        "cut.3gp": three_gp[: len(three_gp) // 2],
+        "noise_nb.amr": amr_noise(b"#!AMR\n", 0x3C, 31),
+        "noise_wb.amr": amr_noise(b"#!AMR-WB\n", 0x44, 60),
+        "cut_mid_frame.amr": amr_noise(b"#!AMR\n", 0x3C, 31)[:-15],
     }
+
+
+def mp3_with_stated_frames(mp3, scale):
+    """`mp3` with the frame count of its Xing/Info header (LAME's tag) scaled."""
+    at = max(mp3.find(b"Xing"), mp3.find(b"Info"))
+    frames = int.from_bytes(mp3[at + 8 : at + 12], "big")
+    return mp3[: at + 8] + int(frames * scale).to_bytes(4, "big") + mp3[at + 12 :]
+
+
+def mp4_with_stated_length(mp4, scale):
+    """`mp4` with the durations its mvhd, tkhd and mdhd boxes (version 0) state scaled."""
+    data = bytearray(mp4)
+    for box, offset in ((b"mvhd", 20), (b"tkhd", 24), (b"mdhd", 20)):
+        at = data.index(box) + offset
+        data[at : at + 4] = int(int.from_bytes(data[at : at + 4], "big") * scale).to_bytes(4, "big")
+    return bytes(data)
+
+
+def amr_noise(magic, speech_header, speech_bytes, frames=150):
+    """An AMR file (a phone's .amr: its magic, then 20 ms frames of a one-byte header and their
+    bits) of `frames` frames of the highest rate, their bits pseudo-random: a noise."""
+    state = 12345
+    body = bytearray()
+    for _ in range(frames):
+        body.append(speech_header)
+        for _ in range(speech_bytes):
+            state = (state * 1103515245 + 12345) & 0x7FFFFFFF
+            body.append(state >> 16 & 0xFF)
+    return magic + bytes(body)
 
 
 def flac_with_total(flac, scale):
@@ -158,6 +233,15 @@ def transcript_files():
         "digits_40.txt": b"1234567890123456789012345678901234567890",
         "latin_only.txt": b"The quick brown fox jumps over the lazy dog.",
         "emoji_only.txt": "😀😃😄😁😆🎉".encode(),
+        # Session 28: kinds the nine lacked.
+        "utf16le_bom.txt": "\ufeff小朋友們在公園裡放風箏。\r\n".encode("utf-16-le"),
+        "utf16be_bom.txt": "\ufeff小朋友們在公園裡放風箏。\n".encode("utf-16-be"),
+        "utf8_bom.txt": "\ufeff小朋友們在公園裡放風箏。\n".encode(),
+        "gb18030.txt": "小朋友们在公园里放风筝。\n".encode("gb18030"),
+        "crlf.txt": "小朋友們在公園裡\r\n放風箏。\r\n".encode(),
+        "cr_only.txt": "小朋友們在公園裡\r放風箏。\r".encode(),
+        "bom_in_middle.txt": "小朋友們在公園裡\ufeff放風箏。\n".encode(),
+        "nul_bytes.txt": "小朋友們在公園裡\0放風箏。\n".encode(),
     }
 
 

@@ -48,6 +48,38 @@ AUDIO = {
     "bad_crc.ogg": "the file is damaged: its Ogg pages break at byte 0",
     "total_too_long.flac": "truncated",
     "total_too_short.flac": OK,
+    # Session 28's kinds.
+    "data_size_zero.wav": OK,
+    "sizes_zero.wav": OK,
+    "data_size_ffffffff.wav": OK,
+    "extensible_pcm16.wav": OK,
+    "extensible_pcm24.wav": OK,
+    "extensible_float32_nan_inf.wav": OK,
+    "float64_nan_inf.wav": OK,
+    "float32_huge.wav": "no speech found",
+    "list_8mb.wav": OK,
+    "list_past_end.wav": "truncated: the file ends after 98952 bytes, inside its header",
+    "cut_mid_frame_tagged.mp3": "truncated: its header says the sound lasts",
+    "stated_twice.mp3": "truncated: its header says the sound lasts",
+    "stated_half.mp3": OK,
+    "moov_at_end_cut.m4a": "truncated: an MP4/M4A/MOV file without its index",
+    "stated_twice.m4a": OK,
+    "stated_half.m4a": OK,
+    "two_tracks.mkv": OK,
+    "subtitle_only.mkv": "subtitles without a sound track",
+    "voice.3gp": OK,
+    "cut.3gp": "truncated: an MP4/M4A/MOV file without its index",
+    "noise_nb.amr": OK,
+    "noise_wb.amr": OK,
+    "cut_mid_frame.amr": OK,
+}
+# Audio aligned with a warning that names the file: a part of the warning after the path.
+WARNED = {
+    "cut_mid_frame.mp3": "its last MP3 frame is cut short: its header states 105 bytes, the file ends after 59 of them, at 1.543 s",
+    "stated_half.mp3": "its header states 1.584 s of sound, the file holds 3.091 s",
+    "stated_half.m4a": "its header states 1.556 s of sound, the file holds 3.093 s",
+    "stated_twice.m4a": "its header states 6.182 s for the file, but its sound track's own index holds 3.093 s",
+    "two_tracks.mkv": "it has 2 sound tracks: the second was read, for the first is silent",
 }
 # Transcripts: (what loading it gives, what aligning one_sentence.wav with it gives).
 TRANSCRIPTS = {
@@ -60,6 +92,14 @@ TRANSCRIPTS = {
     "digits_40.txt": (OK, "40 syllables"),
     "latin_only.txt": (OK, OK),
     "emoji_only.txt": (OK, "no syllables to align"),
+    "utf16le_bom.txt": (OK, OK),
+    "utf16be_bom.txt": (OK, OK),
+    "utf8_bom.txt": (OK, OK),
+    "gb18030.txt": ("it reads as gb18030", "it reads as gb18030"),
+    "crlf.txt": (OK, OK),
+    "cr_only.txt": (OK, OK),
+    "bom_in_middle.txt": (OK, OK),
+    "nul_bytes.txt": (OK, OK),
 }
 # Transcripts `syllables` lists nothing of: it says so.
 NO_SENTENCE = {"empty.txt", "whitespace.txt", "punctuation.txt", "emoji_only.txt"}
@@ -87,11 +127,15 @@ def command(*args):
     return subprocess.run([CLI, *args], capture_output=True, text=True, errors="replace", timeout=TIMEOUT_S)
 
 
-def check_command(result, path, reason):
-    """A result (exit 0) where `reason` is OK, else exit 1 with `talkface: error: PATH...REASON`."""
+def check_command(result, path, reason, warning=None):
+    """A result (exit 0) where `reason` is OK, with `warning` among its JSON's warnings as "PATH: WARNING"
+    where given; else exit 1 with `talkface: error: PATH...REASON`."""
     assert result.returncode in (0, 1), result.stderr  # not 3 (internal error) nor a signal
     if reason is OK:
         assert result.returncode == 0, result.stderr
+        if warning is not None:
+            warnings = json.loads(result.stdout)["warnings"]
+            assert any(w.startswith(path + ": " + warning) for w in warnings), warnings
         return
     assert result.returncode == 1
     assert "talkface: error: " + path in result.stderr
@@ -105,9 +149,11 @@ def probe(interface, kind, path, transcript=None):
     return json.loads(result.stdout)
 
 
-def check_probe(outcome, path, reason):
+def check_probe(outcome, path, reason, warning=None):
     if reason is OK:
         assert outcome["status"] == "ok", outcome
+        if warning is not None:
+            assert any(w.startswith(path + ": " + warning) for w in outcome["warnings"]), outcome
         return
     assert outcome["status"] == "error"
     assert "internal error" not in outcome["message"]
@@ -120,7 +166,8 @@ INTERFACES = [name for name, variable in (("c", "TALKFACE_C_LIBRARY"), ("python"
 
 @pytest.mark.parametrize("name", sorted(AUDIO))
 def test_audio_through_align(files, name):
-    check_command(command("align", "-q", "--json", files[name], bad_inputs.transcript_of(name)), files[name], AUDIO[name])
+    result = command("align", "-q", "--json", files[name], bad_inputs.transcript_of(name))
+    check_command(result, files[name], AUDIO[name], WARNED.get(name))
 
 
 @pytest.mark.parametrize("name", sorted(name for name, reason in AUDIO.items() if reason is not OK))
@@ -134,7 +181,8 @@ def test_refused_audio_through_animate_and_export(files, tmp_path, name, subcomm
 @pytest.mark.parametrize("interface", INTERFACES)
 @pytest.mark.parametrize("name", sorted(AUDIO))
 def test_audio_through_c_and_python(files, interface, name):
-    check_probe(probe(interface, "audio", files[name], bad_inputs.transcript_of(name)), files[name], AUDIO[name])
+    outcome = probe(interface, "audio", files[name], bad_inputs.transcript_of(name))
+    check_probe(outcome, files[name], AUDIO[name], WARNED.get(name))
 
 
 @pytest.mark.parametrize("name", sorted(TRANSCRIPTS))

@@ -7,6 +7,9 @@
 #   voice.opus                     Opus in Ogg
 #   clip.mp4, clip.mov             H.264 + AAC; clip.mkv, clip.webm VP8 + Opus (a 16x16 picture)
 #   no_sound.mp4                   a video without a sound track
+#   two_tracks.mkv                 two Opus sound tracks, the first silent (a screen recorder's)
+#   subtitle_only.mkv              a subtitle track and no sound
+#   voice.3gp                      AAC-LC in 3GP at 16 kHz, as older phones record
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 speech="$here/../speech/one_sentence.wav"
@@ -23,3 +26,8 @@ $ff $video -i "$speech" -shortest -c:v libx264 -crf 40 -c:a aac -b:a 24k "$here/
 $ff $video -i "$speech" -shortest -c:v libvpx -b:v 8k -c:a libopus -b:a 16k "$here/clip.mkv"
 $ff $video -i "$speech" -shortest -c:v libvpx -b:v 8k -c:a libopus -b:a 16k "$here/clip.webm"
 $ff $video -c:v libx264 -crf 40 "$here/no_sound.mp4"
+$ff -f lavfi -i anullsrc=r=48000:cl=mono -i "$speech" -t 3.3 -map 0:a -map 1:a -c:a libopus -b:a 16k "$here/two_tracks.mkv"
+printf '1\n00:00:00,000 --> 00:00:03,000\n小朋友們在公園裡放風箏。\n' > "$here/subtitle.srt"
+$ff -i "$here/subtitle.srt" -c:s srt "$here/subtitle_only.mkv"
+rm "$here/subtitle.srt"
+$ff -i "$speech" -ar 16000 -ac 1 -c:a aac -b:a 16k "$here/voice.3gp"
