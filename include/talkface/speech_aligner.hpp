@@ -62,9 +62,12 @@ enum class SentenceCutMode : int {
 
 /// What the aligner does when the audio does not sound like its transcript (a missing or extra
 /// sentence, the wrong text, a sentence alone in its file whose text lacks its last words: speech
-/// runs on 0.4 s or more past its last syllable that generic speech fits better). A finding names the sentence, its time span and the evidence (how far
-/// the measure lies past what a right text gives). A line of a few syllables gives weak evidence:
-/// what is found there is a warning in every mode, never a refusal.
+/// runs on 0.4 s or more past its last syllable that generic speech fits better). A finding names the
+/// sentence, its time span and the evidence (how far the measure lies past what a right text gives). A line
+/// of a few syllables gives weak evidence: what is found there is a warning in every mode, never a refusal. A
+/// transcript none of whose words has a Mandarin reading (every one English, read by a guess, or one no table
+/// reads) cannot be checked at all: refuse refuses it before the audio is read, warn and lenient alignment
+/// say so in Timeline::warnings, off says nothing.
 enum class CheckMode : int {
     /// The default: strong evidence refuses the alignment (talkface::AlignmentError). Where the
     /// samples fall against the analysis frames moves the evidence a little, so a refusal must

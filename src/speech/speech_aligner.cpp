@@ -22,6 +22,7 @@
 #include "speech/given_spans_alignment.hpp"
 #include "speech/hsmm.hpp"
 #include "speech/late_reverb.hpp"
+#include "speech/latin_only_text.hpp"
 #include "speech/lenient_chain.hpp"
 #include "speech/phone_chain.hpp"
 #include "speech/room_closures.hpp"
@@ -863,7 +864,8 @@ void move_onto_recording(Timeline& timeline, double skipped_s) {
 // says first that the sound there is lost, for the text is not what is wrong. What else the reader
 // says of how it read the file (AudioSource::notes: a stale WAV header) is a warning too, and
 // closes a refusal. A warning begins with the source's name() (only a file loses sound); a refusal
-// does not, its callers name the audio as they name it.
+// does not, its callers name the audio as they name it. A transcript the checks cannot weigh
+// (latin_only_text.hpp) is refused before the audio is read, or aligned with a warning.
 //
 // The voice's pitch is measured as the audio is read only for lenient alignment; where a room's
 // sentence is to be refused and its pitch may witness for its text (ToneWitnessWanted), the
@@ -888,6 +890,11 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
                       const AlignOptions& options, const std::vector<GivenSpan>& given_spans,
                       const ProgressCallback& callback) {
     validate_transcript(transcript);
+    const std::optional<std::string> unconfirmable = describe_latin_only_text(transcript);
+    const std::string unconfirmable_text =
+        "the transcript cannot be checked against the audio: " + unconfirmable.value_or("");
+    if (unconfirmable && options.check == CheckMode::refuse && !options.lenient)
+        throw AlignmentError(unconfirmable_text + "; --check warn (AlignOptions::check) aligns it anyway");
     ProgressReporter progress(callback);
     progress.report(0.0, "reading");
     std::unique_ptr<AudioSource> source = open();
@@ -953,6 +960,9 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
         result.warnings.push_back(source->name() + ": the file is damaged: " + lost +
                                   "; read as silence there, the syllables after it keep their times");
     for (const std::string& note : source->notes()) result.warnings.push_back(source->name() + ": " + note);
+    if (unconfirmable && (options.check == CheckMode::warn || options.lenient))
+        result.warnings.push_back(unconfirmable_text + " (aligned anyway, check mode " +
+                                  (options.lenient ? "lenient" : "warn") + ")");
     return result;
 }
 
