@@ -383,8 +383,47 @@ double mel_cepstrum_cosine(std::size_t c, std::size_t m) {
     return std::cos(M_PI * static_cast<double>(c) * (static_cast<double>(m) + 0.5) / kMelFilters);
 }
 
+namespace {
+
+// "silent: the loudest sample of its 36000 s is all zero; there is no speech to align".
+InvalidArgument silent_recording(const AudioSource& source, double duration_s, float peak) {
+    const std::string level = peak > 0.0f ? format_fixed(20.0 * std::log10(peak), 1) + " dBFS" : "all zero";
+    return InvalidArgument(source.name(), "silent: the loudest sample of its " + format_fixed(duration_s, 3) +
+                                              " s is " + level + "; there is no speech to align");
+}
+
+}  // namespace
+
+std::optional<std::vector<float>> read_first_sound(AudioSource& source) {
+    const auto most_held = static_cast<std::size_t>(kMostHeldSilenceS * source.sample_rate_hz());
+    std::vector<float> held;
+    std::vector<float> block(kBlockFrames);
+    std::size_t frames_read = 0;
+    float peak = 0.0f;
+    bool is_held = true;
+    for (;;) {
+        const std::size_t count = source.read(block.data(), block.size());
+        if (count == 0) break;
+        frames_read += count;
+        const float block_peak =
+            *std::max_element(block.begin(), block.begin() + static_cast<std::ptrdiff_t>(count),
+                              [](float a, float b) { return std::fabs(a) < std::fabs(b); });
+        peak = std::max(peak, std::fabs(block_peak));
+        is_held = is_held && frames_read <= most_held;
+        if (is_held)
+            held.insert(held.end(), block.begin(), block.begin() + static_cast<std::ptrdiff_t>(count));
+        if (peak >= kSilentPeak) {
+            if (!is_held) return std::nullopt;
+            return held;
+        }
+    }
+    if (frames_read == 0) throw InvalidArgument(source.name(), "empty audio: no frames");
+    throw silent_recording(source, static_cast<double>(frames_read) / source.sample_rate_hz(), peak);
+}
+
 FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)>& on_progress,
-                           bool with_pitch, std::size_t skipped_samples) {
+                           bool with_pitch, std::size_t skipped_samples,
+                           const std::vector<float>& read_first) {
     FeatureTrack track;
     // Room for the frames the source says it has, up to an hour's: a damaged header may promise
     // years (a FLAC's sample count, an MP3's frame count), and reserving them threw bad_alloc.
@@ -406,6 +445,14 @@ FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)
         analyzer.push(samples, count);
         dropouts.push(samples, count);
     };
+    // What read_first_sound read goes in the blocks it was read in, so that the resampler and the
+    // frames see what they would have seen.
+    for (std::size_t at = 0; at < read_first.size(); at += kBlockFrames) {
+        const std::size_t count = std::min(kBlockFrames, read_first.size() - at);
+        for (std::size_t i = 0; i < count; ++i) peak = std::max(peak, std::fabs(read_first[at + i]));
+        frames_read += count;
+        resampler.process(read_first.data() + at, count, false, sink);
+    }
     for (;;) {
         const std::size_t count = source.read(block.data(), block.size());
         for (std::size_t i = 0; i < count; ++i) peak = std::max(peak, std::fabs(block[i]));
@@ -421,12 +468,7 @@ FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)
     track.duration_s = std::max(0.0, static_cast<double>(frames_read) / source.sample_rate_hz() -
                                          static_cast<double>(skipped_samples) / kAnalysisRateHz);
     if (frames_read == 0) throw InvalidArgument(source.name(), "empty audio: no frames");
-    if (!(peak >= kSilentPeak)) {
-        const std::string level = peak > 0.0f ? format_fixed(20.0 * std::log10(peak), 1) + " dBFS" : "all zero";
-        throw InvalidArgument(source.name(), "silent: the loudest sample of its " +
-                                                 format_fixed(track.duration_s, 3) + " s is " + level +
-                                                 "; there is no speech to align");
-    }
+    if (!(peak >= kSilentPeak)) throw silent_recording(source, track.duration_s, peak);
     return track;
 }
 

@@ -865,7 +865,8 @@ void move_onto_recording(Timeline& timeline, double skipped_s) {
 // says of how it read the file (AudioSource::notes: a stale WAV header) is a warning too, and
 // closes a refusal. A warning begins with the source's name() (only a file loses sound); a refusal
 // does not, its callers name the audio as they name it. A transcript the checks cannot weigh
-// (latin_only_text.hpp) is refused before the audio is read, or aligned with a warning.
+// (latin_only_text.hpp) is refused before the audio is read, or aligned with a warning; a silent
+// recording is refused after its samples alone are read (read_first_sound), with no features.
 //
 // The voice's pitch is measured as the audio is read only for lenient alignment; where a room's
 // sentence is to be refused and its pitch may witness for its text (ToneWitnessWanted), the
@@ -898,9 +899,11 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
     ProgressReporter progress(callback);
     progress.report(0.0, "reading");
     std::unique_ptr<AudioSource> source = open();
+    const std::optional<std::vector<float>> read_first = read_first_sound(*source);
+    if (!read_first) source = open();
     FeatureTrack track = analyze_audio(
         *source, [&](double fraction) { progress.report(kReadingShare * fraction, "reading"); },
-        options.lenient);
+        options.lenient, 0, read_first ? *read_first : std::vector<float>{});
     const LoudnessProfile loudness = conceal_dropouts(track);
     const std::string lost = describe_lost_audio(source->lost_audio());
     std::string notes;

@@ -170,6 +170,24 @@ def test_audio_through_align(files, name):
     check_command(result, files[name], AUDIO[name], WARNED.get(name))
 
 
+def test_long_silence_refused_early_in_bounded_memory(tmp_path):
+    """A 10-hour silent WAV (1.15 GB, sparse) is refused when its samples are read, before any
+    features: main took 302 s and 496 MB (bench/README.md, Session 27), past this test's timeout."""
+    path = bad_inputs.ten_hour_silence(str(tmp_path))
+    # The command's peak memory, as its parent sees it: a process of its own, so no other child counts.
+    measure = (
+        "import resource, subprocess, sys; r = subprocess.run(sys.argv[1:], capture_output=True, text=True); "
+        "print(r.returncode, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss); sys.stderr.write(r.stderr)"
+    )
+    result = subprocess.run(
+        [sys.executable, "-c", measure, CLI, "align", "-q", path, TRANSCRIPT], capture_output=True, text=True, timeout=TIMEOUT_S
+    )
+    returncode, peak_kb = map(int, result.stdout.split())
+    assert returncode == 1, result.stderr
+    assert "talkface: error: " + path + ": silent: the loudest sample of its 36000 s is all zero" in result.stderr
+    assert peak_kb < 200 * 1024, peak_kb
+
+
 @pytest.mark.parametrize("name", sorted(name for name, reason in AUDIO.items() if reason is not OK))
 @pytest.mark.parametrize("subcommand", ["animate", "export"])
 def test_refused_audio_through_animate_and_export(files, tmp_path, name, subcommand):

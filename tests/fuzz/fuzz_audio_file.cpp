@@ -34,10 +34,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             for (std::size_t i = 0; i < got; ++i)
                 if (!std::isfinite(block[i])) std::abort();
         }
-        // Read again as the aligner reads it: the analysis sizes its buffers by the length the
-        // header states, which a damaged header makes huge (a FLAC's sample count threw bad_alloc).
-        const auto again = talkface::detail::open_audio_file(path);
-        const talkface::detail::FeatureTrack track = talkface::detail::analyze_audio(*again, {});
+        // Read again as the aligner reads it: up to its first sound (read_first_sound, which refuses
+        // a silent file), then the analysis, which sizes its buffers by the length the header states,
+        // which a damaged header makes huge (a FLAC's sample count threw bad_alloc).
+        auto again = talkface::detail::open_audio_file(path);
+        const auto read_first = talkface::detail::read_first_sound(*again);
+        if (!read_first) again = talkface::detail::open_audio_file(path);
+        const talkface::detail::FeatureTrack track = talkface::detail::analyze_audio(
+            *again, {}, false, 0, read_first ? *read_first : std::vector<float>{});
         for (const float value : track.values)
             if (!std::isfinite(value)) std::abort();
     } catch (const talkface::Error&) {
