@@ -66,8 +66,9 @@ enum class SentenceCutMode : int {
 /// sentence, its time span and the evidence (how far the measure lies past what a right text gives). A line
 /// of a few syllables gives weak evidence: what is found there is a warning in every mode, never a refusal. A
 /// transcript none of whose words has a Mandarin reading (every one English, read by a guess, or one no table
-/// reads) cannot be checked at all: refuse refuses it before the audio is read, warn and lenient alignment
-/// say so in Timeline::warnings, off says nothing.
+/// reads) cannot be checked at all: refuse, warn and lenient alignment align it and say so in
+/// Timeline::warnings (no evidence is no refusal: a game's "OK!" spoken as written is such a line), off
+/// says nothing.
 enum class CheckMode : int {
     /// The default: strong evidence refuses the alignment (talkface::AlignmentError). Where the
     /// samples fall against the analysis frames moves the evidence a little, so a refusal must

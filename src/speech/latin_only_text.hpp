@@ -5,8 +5,9 @@
 // speech loosely: an English transcript of Mandarin speech ("The quick brown fox ...", with
 // one_sentence.wav) aligned, and espeak-ng's English "The quick brown fox ..." aligned with "She
 // sells sea shells ..." as with its own text, and the reverse (bench/README.md, Session 28). So such
-// a transcript cannot be confirmed, which the check reports (AlignOptions::check) before any sound
-// is read. A transcript with one Mandarin word, or pinyin, is checked as any other.
+// a transcript cannot be confirmed, which the alignment says in a warning (AlignOptions::check off
+// leaves it unsaid): no evidence against a text is no reason to refuse it. A transcript with one Mandarin
+// word, or pinyin, is checked as any other.
 #ifndef TALKFACE_SPEECH_LATIN_ONLY_TEXT_HPP
 #define TALKFACE_SPEECH_LATIN_ONLY_TEXT_HPP
 

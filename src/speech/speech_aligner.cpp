@@ -892,10 +892,6 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
                       const ProgressCallback& callback) {
     validate_transcript(transcript);
     const std::optional<std::string> unconfirmable = describe_latin_only_text(transcript);
-    const std::string unconfirmable_text =
-        "the transcript cannot be checked against the audio: " + unconfirmable.value_or("");
-    if (unconfirmable && options.check == CheckMode::refuse && !options.lenient)
-        throw AlignmentError(unconfirmable_text + "; --check warn (AlignOptions::check) aligns it anyway");
     ProgressReporter progress(callback);
     progress.report(0.0, "reading");
     std::unique_ptr<AudioSource> source = open();
@@ -963,9 +959,8 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
         result.warnings.push_back(source->name() + ": the file is damaged: " + lost +
                                   "; read as silence there, the syllables after it keep their times");
     for (const std::string& note : source->notes()) result.warnings.push_back(source->name() + ": " + note);
-    if (unconfirmable && (options.check == CheckMode::warn || options.lenient))
-        result.warnings.push_back(unconfirmable_text + " (aligned anyway, check mode " +
-                                  (options.lenient ? "lenient" : "warn") + ")");
+    if (unconfirmable && options.check != CheckMode::off)
+        result.warnings.push_back("the transcript cannot be checked against the audio: " + *unconfirmable);
     return result;
 }
 
