@@ -37,59 +37,6 @@ struct FrameBand {
     std::size_t end = 0;
 };
 
-// A state's log-normal duration prior, with the logs that do not depend on the duration taken once:
-// the search scores every duration of every state, several times per sentence.
-struct LogNormalDuration {
-    double log_median;
-    double log_sigma;
-    double log_of_log_sigma;
-
-    LogNormalDuration(double median_frames, double sigma)
-        : log_median(std::log(median_frames)), log_sigma(sigma), log_of_log_sigma(std::log(sigma)) {}
-
-    // log of the density at d frames, up to a constant shared by every path.
-    double at(double frames) const { return at_log(std::log(frames)); }
-    // The same, given log(d).
-    double at_log(double log_frames) const {
-        const double z = (log_frames - log_median) / log_sigma;
-        return -log_frames - 0.5 * z * z - log_of_log_sigma;
-    }
-};
-
-// log(d) of a whole number of frames, from a table made once for the durations the priors reach
-// (a vowel's longest is 3.5 times its median, a comma's pause 200 frames): every search took one
-// logarithm per duration of every state, a twentieth of its work.
-constexpr std::size_t kTabledFrames = 2048;
-double log_of_frames(std::size_t frames) {
-    static const std::vector<double> logs = [] {
-        std::vector<double> table(kTabledFrames, -std::numeric_limits<double>::infinity());
-        for (std::size_t d = 1; d < kTabledFrames; ++d) table[d] = std::log(static_cast<double>(d));
-        return table;
-    }();
-    return frames < kTabledFrames ? logs[frames] : std::log(static_cast<double>(frames));
-}
-
-// Fills `reversed` with the duration scores of `state` for d = longest down to shortest, the
-// order in which the search reads the entries before a frame. Returns the longest duration.
-std::size_t fill_duration_scores(const PhoneState& state, std::size_t frames, std::vector<float>& reversed) {
-    const std::size_t longest = std::min(state.max_frames, frames);
-    const std::size_t shortest = std::max<std::size_t>(state.min_frames, 1);
-    reversed.clear();
-    const bool is_flat = state.role == StateRole::edge_silence;
-    // A state every path passes is scored against its prior's value at the median: the same for
-    // every path of a whole sentence, so nothing there changes, but an open-ended window compares
-    // paths through different numbers of states, and would otherwise favour the one that passed
-    // fewer (each pays -log(median) more) and fall behind the speech, window after window.
-    const LogNormalDuration prior(state.median_frames, state.log_sigma);
-    const double reference = state.is_optional ? 0.0 : prior.at(state.median_frames);
-    for (std::size_t d = longest; d >= shortest && d > 0; --d) {
-        const double score =
-            is_flat ? 0.0 : state.duration_weight * (prior.at_log(log_of_frames(d)) - reference);
-        reversed.push_back(static_cast<float>(score + state.entry_log_penalty + state.frame_log_penalty * static_cast<double>(d)));
-    }
-    return longest;
-}
-
 // Per frame past its longest explicit duration, what a state with a tail pays: the slope of its
 // log-normal prior there, so that the density goes on smoothly as a geometric tail, heavier than
 // the log-normal's own (pauses have a long tail; the slope is not weighted by
@@ -205,7 +152,7 @@ public:
         auto& entry = workspace_.entry;
         auto& finish = workspace_.finish;
         auto& entry_minus_prefix = workspace_.entry_minus_prefix;
-        const auto& duration_score = workspace_.duration_score;
+        workspace_.durations.forget_beyond_limit();
         // Every cell of the rows searched is written below: the tables only grow, since a resize
         // down and up again zeroes the grown part for nothing (a sentence's searches alternate
         // between its chain and shorter windows of it).
@@ -237,7 +184,8 @@ public:
                 entry_row);
             // Before its first entry a state's entry_minus_prefix is impossible: only the frames a
             // duration from the first finish reaches back to are set so.
-            const std::size_t longest = prepare_state(j, first_entry);
+            const std::vector<float>& duration_score = prepare_state(j, first_entry);
+            const std::size_t longest = longest_duration(state, frames_);
             std::fill(entry_minus_prefix.begin() +
                           static_cast<std::ptrdiff_t>(first_entry - std::min(first_entry, longest + 1)),
                       entry_minus_prefix.begin() + static_cast<std::ptrdiff_t>(first_entry), kImpossible);
@@ -317,9 +265,10 @@ public:
     }
 
 private:
-    // Fills entry_minus_prefix for state j over frames [first, end) (all of them by default) and the
-    // duration table; returns the longest duration.
-    std::size_t prepare_state(std::size_t j, std::size_t first = 0, std::size_t end = kAllFrames) {
+    // Fills entry_minus_prefix for state j over frames [first, end) (all of them by default);
+    // returns its duration scores (DurationTables::of).
+    const std::vector<float>& prepare_state(std::size_t j, std::size_t first = 0,
+                                            std::size_t end = kAllFrames) {
         const PhoneState& state = states_[first_state_ + j];
         const double* class_prefix = &workspace_.prefix[prefix_row(state.phone_class) * width_];
         const float* entry_row = &workspace_.entry[j * width_];
@@ -327,7 +276,7 @@ private:
         if (first < std::min(end, width_))
             subtract_in_double(&entry_row[first], &class_prefix[first], &entry_minus_prefix[first],
                                std::min(end, width_) - first);
-        return fill_duration_scores(state, frames_, workspace_.duration_score);
+        return workspace_.durations.of(state, frames_);
     }
     static constexpr std::size_t kAllFrames = std::numeric_limits<std::size_t>::max();
 
@@ -335,12 +284,12 @@ private:
     // duration the way forward chose there, found again.
     std::size_t best_duration(std::size_t j, std::size_t t) {
         const auto& entry_minus_prefix = workspace_.entry_minus_prefix;
-        const auto& duration_score = workspace_.duration_score;
         // Only the entries a duration ending at t reaches back to: the way back reads one frame a
         // state, and the whole row for each cost a twelfth as much as the way forward.
         const PhoneState& state = states_[first_state_ + j];
         const std::size_t reach = state.has_tail ? t : std::min(t, std::min(state.max_frames, frames_));
-        const std::size_t longest = prepare_state(j, t - reach, t);
+        const std::vector<float>& duration_score = prepare_state(j, t - reach, t);
+        const std::size_t longest = longest_duration(state, frames_);
         const std::size_t shortest = longest + 1 - duration_score.size();
         float best = kImpossible;
         std::size_t best_frames = shortest;

@@ -9,6 +9,7 @@
 #include <limits>
 #include <vector>
 
+#include "speech/duration_tables.hpp"
 #include "speech/phone_chain.hpp"
 
 namespace talkface::detail {
@@ -42,7 +43,7 @@ struct ViterbiWorkspace {
     std::vector<float> entry;
     std::vector<float> finish;
     std::vector<float> entry_minus_prefix;
-    std::vector<float> duration_score;
+    DurationTables durations;
     std::vector<double> prefix;
 };
 
