@@ -546,15 +546,23 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
         }
         observe(track, loudness, chains[w].searched, observations);
         learned.model.score(observations.data(), chains[w].searched.length(), scores);
-        const auto path = align_chain(chains[w], scores, workspace, scores.frame_count, transcript, &marginals);
+        // In a room the syllables given out are those placed with the closures ringing, with their
+        // confidences (align_cut): the confidences of this placement, which the checks read, are
+        // read by nothing, and the searches that weigh them are left out (the start's marginals,
+        // those with the sounds lighter: 6% of a room's instructions, bench/README.md Session 28).
+        const bool is_given_out = !aligned.room_result;
+        const auto path = align_chain(chains[w], scores, workspace, scores.frame_count, transcript,
+                                      is_given_out ? &marginals : nullptr);
         aligned.has_long_unmarked_pause = aligned.has_long_unmarked_pause || has_long_unmarked_pause(chains[w], path);
         if (is_tone_witnessed) checked_paths[w] = path;
         // The last round's path, and the searches again with the sounds weighing less, with and
         // without the landmarks' bonus: where they start a syllable elsewhere, the sounds did not
         // hold it there.
-        const std::vector<std::vector<SyllableFrames>> other_frames = {light_search(chains[w], scores, workspace, kLightSoundsWeight, true),
-                                                                       light_search(chains[w], scores, workspace, kLightSoundsWeight, false),
-                                                                       frames_on_path(chains[w], learned.last_paths[w])};
+        std::vector<std::vector<SyllableFrames>> other_frames;
+        if (is_given_out)
+            other_frames = {light_search(chains[w], scores, workspace, kLightSoundsWeight, true),
+                            light_search(chains[w], scores, workspace, kLightSoundsWeight, false),
+                            frames_on_path(chains[w], learned.last_paths[w])};
         if (aligned.room_result) {
             // Before measure_chain, which leaves held-out models' scores in `scores`.
             EmissionScores& room_scores = dry ? dry->scores : scores;
@@ -581,11 +589,13 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
         }
         measure_chain(chains[w], w, path, other_frames, observations, learned, spoken_sentences, track, loudness, transcript,
                       scores, workspace, result, evidence, spans, metrics, is_checked);
-        const std::vector<double> sureness = start_sureness(chains[w], path, marginals);
-        const std::vector<double> far = far_start_share(chains[w], path, marginals);
-        for (std::size_t local = 0; local < sureness.size(); ++local) {
-            evidence[chains[w].syllable_indices[local]].sureness = sureness[local];
-            evidence[chains[w].syllable_indices[local]].far_start = far[local];
+        if (is_given_out) {
+            const std::vector<double> sureness = start_sureness(chains[w], path, marginals);
+            const std::vector<double> far = far_start_share(chains[w], path, marginals);
+            for (std::size_t local = 0; local < sureness.size(); ++local) {
+                evidence[chains[w].syllable_indices[local]].sureness = sureness[local];
+                evidence[chains[w].syllable_indices[local]].far_start = far[local];
+            }
         }
         report_pass(progress, passes - 1, passes, w, chains.size());
     }
