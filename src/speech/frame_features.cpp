@@ -268,7 +268,8 @@ private:
             for (std::size_t m = 0; m < kMelFilters; ++m) sum += dct_[c][m] * log_mel[m];
             row[c] = sum;
         }
-        row[kEnergyDb] = band_db(kWholeBandLowHz, kWholeBandHighHz);
+        const double whole_band_power = band_power(kWholeBandLowHz, kWholeBandHighHz);
+        row[kEnergyDb] = power_db(whole_band_power);
         row[kLowBandDb] = power_db(low_band_power);
         row[kMidBandDb] = band_db(kLowBandHighHz, kMidBandHighHz);
         row[kHighBandDb] = band_db(kMidBandHighHz, kWholeBandHighHz);
@@ -277,7 +278,7 @@ private:
             const auto gain_db = static_cast<float>(restored_gain_db(share));
             for (const int column : {kEnergyDb, kLowBandDb, kMidBandDb, kHighBandDb}) row[column] += gain_db;
         }
-        set_line(row);
+        set_line(whole_band_power, row);
         track_.values.insert(track_.values.end(), row.begin(), row.end());
         ++track_.frame_count;
         changing_.push(power_.data());
@@ -288,17 +289,15 @@ private:
         }
     }
 
-    // kLineShare and kLineBin of the frame's power (not dithered), over the whole band, as kEnergyDb.
-    void set_line(std::array<float, kFeatureCount>& row) const {
+    // kLineShare and kLineBin of the frame's power (not dithered), over the whole band, as kEnergyDb;
+    // `band` is that band's power, which kEnergyDb summed (the same bins in the same order).
+    void set_line(double band, std::array<float, kFeatureCount>& row) const {
         constexpr auto first = static_cast<std::size_t>(
             (static_cast<std::size_t>(kWholeBandLowHz) * kFftSize + kAnalysisRateHz - 1) / kAnalysisRateHz);
         constexpr std::size_t last = kBins - 1;
         std::size_t strongest = first;
-        double band = 0.0;
-        for (std::size_t k = first; k <= last; ++k) {
-            band += power_[k];
+        for (std::size_t k = first; k <= last; ++k)
             if (power_[k] > power_[strongest]) strongest = k;
-        }
         double line = 0.0;
         for (std::size_t k = std::max(first, strongest - std::min(strongest, kLineHalfBins)); k <= std::min(last, strongest + kLineHalfBins); ++k)
             line += power_[k];
