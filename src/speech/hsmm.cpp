@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
+
+#include "speech/avx2_clones.hpp"
 
 namespace talkface::detail {
 
@@ -104,7 +107,30 @@ float max_of_sums(const float* a, const float* b, std::size_t count) {
 // a[k + i] + b[i]. The frames' maxima are kept in registers while the durations run, so that each
 // sum is one packet's lane, not a reduction per frame (the search's costliest part, bench/README.md
 // Session 22); every sum is the same float addition as in max_of_sums, and the maximum exact.
+// Where the library has AVX2 clones (avx2_clones.hpp), in vectors of eight floats of GCC's own
+// rather than Eigen's packets, which Eigen picks as it is compiled (SSE for the baseline x86-64):
+// two SSE halves each in the default clone, one register in the AVX2 one (bench/README.md,
+// Session 28: the search 82 -> 52 M instructions on a room's passage).
 constexpr std::size_t kSumBlockFrames = 16;
+#if TALKFACE_HAS_AVX2_CLONES
+typedef float Floats8 __attribute__((vector_size(32)));
+TALKFACE_AVX2_CLONES void max_of_sums_block(const float* a, const float* b, std::size_t count, float* out) {
+    Floats8 low = {kImpossible, kImpossible, kImpossible, kImpossible,
+                   kImpossible, kImpossible, kImpossible, kImpossible};
+    Floats8 high = low;
+    for (std::size_t i = 0; i < count; ++i) {
+        Floats8 low_sum, high_sum;
+        std::memcpy(&low_sum, a + i, sizeof low_sum);
+        std::memcpy(&high_sum, a + i + 8, sizeof high_sum);
+        low_sum += b[i];
+        high_sum += b[i];
+        low = low > low_sum ? low : low_sum;
+        high = high > high_sum ? high : high_sum;
+    }
+    std::memcpy(out, &low, sizeof low);
+    std::memcpy(out + 8, &high, sizeof high);
+}
+#else
 void max_of_sums_block(const float* a, const float* b, std::size_t count, float* out) {
     using Block = Eigen::Array<float, kSumBlockFrames, 1>;
     Block best = Block::Constant(kImpossible);
@@ -112,6 +138,7 @@ void max_of_sums_block(const float* a, const float* b, std::size_t count, float*
     Eigen::Map<Block> result(out);
     result = best;
 }
+#endif
 
 // One search of states [first_state, end_state) over frames [first_frame, end_frame), starting in
 // first_state at first_frame, in three steps: the emissions summed per class, the tables filled
