@@ -4,6 +4,8 @@
 #include <complex>
 #include <type_traits>
 
+#include "speech/avx2_clones.hpp"
+
 namespace talkface::detail {
 
 namespace {
@@ -46,10 +48,13 @@ inline void butterfly(float& a_re, float& a_im, float& b_re, float& b_im, float&
 
 // One radix-4 stage over `count` points: butterflies of span kSpan on groups of 4 kSpan points, the
 // k-th of a group on points k, k + kSpan, k + 2 kSpan, k + 3 kSpan with twiddles w1[k], w2[k], w3[k].
+// Inlined into each of compute's clones, so that the AVX2 one runs the stages in AVX2 too.
 template <std::size_t kSpan>
-void radix4_stage(std::size_t count, float* __restrict re, float* __restrict im, const float* __restrict w1_re,
-                  const float* __restrict w1_im, const float* __restrict w2_re, const float* __restrict w2_im,
-                  const float* __restrict w3_re, const float* __restrict w3_im) {
+[[gnu::always_inline]] inline void radix4_stage(std::size_t count, float* __restrict re, float* __restrict im,
+                                                const float* __restrict w1_re, const float* __restrict w1_im,
+                                                const float* __restrict w2_re, const float* __restrict w2_im,
+                                                const float* __restrict w3_re,
+                                                const float* __restrict w3_im) {
     for (std::size_t group = 0; group < count; group += 4 * kSpan) {
         float* r = re + group;
         float* i = im + group;
@@ -83,7 +88,9 @@ PowerSpectrum::PowerSpectrum() {
         digits_reversed_[h] = static_cast<std::uint8_t>(((h & 3) << 4) | (((h >> 2) & 3) << 2) | (h >> 4));
 }
 
-void PowerSpectrum::compute(const float* frame, float* power) const {
+// Its stages and split are lane by lane: the AVX2 clone (avx2_clones.hpp) takes eight lanes where
+// SSE takes four, the same numbers to the bit (bench/README.md, Session 28).
+TALKFACE_AVX2_CLONES void PowerSpectrum::compute(const float* frame, float* power) const {
     // The real frame as kHalf complex points z[n] = frame[2 n] + i frame[2 n + 1].
     std::array<float, kHalf> z_re, z_im;
     for (std::size_t n = 0; n < kHalf; ++n) {
@@ -108,7 +115,7 @@ void PowerSpectrum::compute(const float* frame, float* power) const {
         im[at + 2] = z_im[h + 2 * kQuarter];
         im[at + 3] = z_im[h + 3 * kQuarter];
     }
-    const auto stage = [&](auto span, std::size_t s) {
+    const auto stage = [&](auto span, std::size_t s) __attribute__((always_inline)) {
         radix4_stage<decltype(span)::value>(kHalf, re.data(), im.data(), twiddle_re_[s][0].data(), twiddle_im_[s][0].data(),
                                             twiddle_re_[s][1].data(), twiddle_im_[s][1].data(), twiddle_re_[s][2].data(),
                                             twiddle_im_[s][2].data());
