@@ -229,7 +229,7 @@ OpenedDecoder open_decoder(const AVCodecParameters& parameters) {
 
 // What hearing a sound track found: the figures a track is chosen by.
 struct TrackSummary {
-    bool silent = true;  // no kLoudnessFrameS frame reaches kSilentTrackRms, or it does not decode
+    bool is_silent = true;  // no kLoudnessFrameS frame reaches kSilentTrackRms, or it does not decode
     // The share of its frames under half the mean loudness of the kLowEnergyWindowS around them.
     double low_energy_share = 0.0;
     double voiced_share = 0.0;  // voiced_share.hpp
@@ -237,7 +237,7 @@ struct TrackSummary {
     // Its share of low-energy frames if it is voiced as speech is, else 0: how much it sounds like
     // speech.
     double speech_share() const {
-        return silent || voiced_share < kLeastSpeechVoicedShare ? 0.0 : low_energy_share;
+        return is_silent || voiced_share < kLeastSpeechVoicedShare ? 0.0 : low_energy_share;
     }
 };
 
@@ -314,9 +314,9 @@ public:
         if (!heard_) return found;
         const std::vector<double> frames =
             loudness_frames(heard_->samples(), loudness_frame_samples(heard_->rate_hz()));
-        found.silent =
+        found.is_silent =
             std::all_of(frames.begin(), frames.end(), [](double rms) { return rms < kSilentTrackRms; });
-        if (found.silent) return found;
+        if (found.is_silent) return found;
         found.low_energy_share = low_energy_share(frames);
         found.voiced_share = voiced_share(*heard_);
         return found;
@@ -571,24 +571,25 @@ private:
         for (const auto& hearing : hearings) heard.push_back(hearing->summary());
         std::size_t chosen = best_at;
         for (std::size_t i = 0; i < tracks.size(); ++i) {
-            if (heard[i].silent) continue;
+            if (heard[i].is_silent) continue;
             const double share = heard[i].speech_share();
-            if (heard[chosen].silent ||
+            if (heard[chosen].is_silent ||
                 (share > heard[chosen].speech_share() &&
-                 (heard[best_at].silent || share > kSpeechOverDefaultRatio * heard[best_at].speech_share())))
+                 (heard[best_at].is_silent ||
+                  share > kSpeechOverDefaultRatio * heard[best_at].speech_share())))
                 chosen = i;
         }
         std::string reason;
         if (chosen != best_at)
-            reason = heard[best_at].silent
+            reason = heard[best_at].is_silent
                          ? ", for the " + ordinal_text(best_at) + " is silent"
                          : ", for it sounds more like speech than the " + ordinal_text(best_at);
         std::string others;
         std::size_t other_count = 0;
         for (std::size_t i = 0; i < tracks.size(); ++i) {
             if (i == chosen || (i == best_at && !reason.empty())) continue;
-            others +=
-                (others.empty() ? "the " : ", the ") + ordinal_text(i) + (heard[i].silent ? " (silent)" : "");
+            others += (others.empty() ? "the " : ", the ") + ordinal_text(i) +
+                      (heard[i].is_silent ? " (silent)" : "");
             ++other_count;
         }
         if (other_count > 0) others = (other_count == 1 ? "; the other: " : "; the others: ") + others;

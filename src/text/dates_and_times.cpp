@@ -9,17 +9,19 @@ namespace talkface::detail {
 
 namespace {
 
-// Whether c joins a pair's two numbers as the pair's own mark does: a colon (23:25) or a dash (6-4).
-bool joins_pair(char32_t c, bool colon) {
-    return colon ? c == ':' : is_dash(c);
+// Whether c is the mark that joins a pair's two numbers: a colon in a pair joined by one (23:25),
+// else a dash (6-4).
+bool is_pair_mark(char32_t c, bool is_colon_pair) {
+    return is_colon_pair ? c == ':' : is_dash(c);
 }
 
-// A pair of whole numbers joined by a dash (or a colon) that ends right before text[end] (the 6-4 of
-// 6-4、): where it starts, or nullopt.
-std::optional<std::size_t> pair_before(const std::vector<CodePoint>& text, std::size_t end, bool colon) {
+// A pair of whole numbers joined by a dash (a colon where is_colon_pair) that ends right before
+// text[end] (the 6-4 of 6-4、): where it starts, or nullopt.
+std::optional<std::size_t> pair_before(const std::vector<CodePoint>& text, std::size_t end,
+                                       bool is_colon_pair) {
     auto first = end;
     while (first > 0 && is_digit_at(text, first - 1)) --first;
-    if (first == end || first < 2 || !joins_pair(value_at(text, first - 1), colon) ||
+    if (first == end || first < 2 || !is_pair_mark(value_at(text, first - 1), is_colon_pair) ||
         !is_digit_at(text, first - 2))
         return std::nullopt;
     first -= 1;
@@ -27,11 +29,13 @@ std::optional<std::size_t> pair_before(const std::vector<CodePoint>& text, std::
     return first;
 }
 
-// A pair of whole numbers joined by a dash (or a colon) that starts at text[start] (the 3-6 of 、3-6):
-// where it ends, or nullopt.
-std::optional<std::size_t> pair_from(const std::vector<CodePoint>& text, std::size_t start, bool colon) {
+// A pair of whole numbers joined by a dash (a colon where is_colon_pair) that starts at text[start]
+// (the 3-6 of 、3-6): where it ends, or nullopt.
+std::optional<std::size_t> pair_from(const std::vector<CodePoint>& text, std::size_t start,
+                                     bool is_colon_pair) {
     auto end = start;
-    if (digits_from(text, end).empty() || !joins_pair(value_at(text, end), colon)) return std::nullopt;
+    if (digits_from(text, end).empty() || !is_pair_mark(value_at(text, end), is_colon_pair))
+        return std::nullopt;
     ++end;
     if (digits_from(text, end).empty()) return std::nullopt;
     return end;
@@ -87,16 +91,16 @@ bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t
     // The pairs listed are joined as this one is: a volleyball match's sets with colons (比分为23:25、
     // 25:20、22:25; session 26: the sets that could be clock times were read so, 二十二点二十五分).
     constexpr char32_t kListMark = 0x3001;  // 、
-    bool colon = false;
-    for (auto k = start; k < end; ++k) colon = colon || value_at(text, k) == ':';
+    bool is_colon_pair = false;
+    for (auto k = start; k < end; ++k) is_colon_pair = is_colon_pair || value_at(text, k) == ':';
     for (auto at = start; at > 0 && value_at(text, at - 1) == kListMark;) {
-        const auto first = pair_before(text, at - 1, colon);
+        const auto first = pair_before(text, at - 1, is_colon_pair);
         if (!first) break;
         if (names_score(text, *first, at - 1, dashed)) return true;
         at = *first;
     }
     for (auto at = end; value_at(text, at) == kListMark;) {
-        const auto last = pair_from(text, at + 1, colon);
+        const auto last = pair_from(text, at + 1, is_colon_pair);
         if (!last) break;
         if (names_score(text, at + 1, *last, dashed && !takes_liang(value_at(text, *last)))) return true;
         at = *last;
