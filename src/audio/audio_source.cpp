@@ -21,6 +21,7 @@
 
 #include "audio/ffmpeg_source.hpp"
 #include "common/number_format.hpp"
+#include "common/string_ends.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
@@ -45,9 +46,11 @@ std::optional<DataBytes> data_bytes_if_truncated(SNDFILE* file) {
     std::istringstream lines(log);
     std::string line;
     while (std::getline(lines, line)) {
-        const std::size_t should_be = line.find("(should be");
-        if (line.rfind("data :", 0) != 0 || should_be == std::string::npos) continue;
-        std::istringstream stated(line.substr(6)), present(line.substr(should_be + 10));
+        constexpr std::string_view kDataLine = "data :", kShouldBe = "(should be";
+        const std::size_t should_be = line.find(kShouldBe);
+        if (!starts_with(line, kDataLine) || should_be == std::string::npos) continue;
+        std::istringstream stated(line.substr(kDataLine.size())),
+            present(line.substr(should_be + kShouldBe.size()));
         unsigned long long stated_bytes = 0, present_bytes = 0;
         if (stated >> stated_bytes && present >> present_bytes)
             return DataBytes{static_cast<std::size_t>(stated_bytes), static_cast<std::size_t>(present_bytes)};

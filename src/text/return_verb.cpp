@@ -40,7 +40,8 @@ bool is_complement(std::string_view word) {
 std::string_view return_verb_reading(const std::vector<std::string>& words, std::size_t w, bool ends_clause) {
     if (w >= words.size()) return {};
     // 还不 is a word of the list (还不快走); before a second 还 it is the verb's question.
-    if ((words[w] == "还不" || words[w] == "還不") && w + 1 < words.size() && words[w + 1].rfind(words[w].substr(0, 3), 0) == 0)
+    if ((words[w] == "还不" || words[w] == "還不") && w + 1 < words.size() &&
+        starts_with(words[w + 1], std::string_view(words[w]).substr(0, std::string_view("还").size())))
         return "huan2";
     if (!is_huan(words[w])) return {};
     if (w + 1 == words.size()) return ends_clause ? "huan2" : "";
