@@ -75,19 +75,21 @@ bool is_month_and_day(const std::string& month, const std::string& day) {
     return month_value >= 1 && month_value <= 12 && day_value >= 1 && day_value <= 31;
 }
 
-bool contains_any(std::string_view text, std::initializer_list<std::string_view> words) {
-    return std::any_of(words.begin(), words.end(),
+bool contains_any(std::string_view text, const std::string_view* first, const std::string_view* last) {
+    return std::any_of(first, last,
                        [text](std::string_view word) { return text.find(word) != std::string_view::npos; });
 }
 
-bool starts_with_any(std::string_view text, std::initializer_list<std::string_view> words) {
-    return std::any_of(words.begin(), words.end(),
-                       [text](std::string_view word) { return starts_with(text, word); });
+bool starts_with_any(std::string_view text, const std::string_view* first, const std::string_view* last) {
+    return std::any_of(first, last, [text](std::string_view word) { return starts_with(text, word); });
 }
 
-bool ends_with_any(std::string_view text, std::initializer_list<std::string_view> words) {
-    return std::any_of(words.begin(), words.end(),
-                       [text](std::string_view word) { return ends_with(text, word); });
+bool ends_with_any(std::string_view text, const std::string_view* first, const std::string_view* last) {
+    return std::any_of(first, last, [text](std::string_view word) { return ends_with(text, word); });
+}
+
+bool is_any_of(std::string_view text, const std::string_view* first, const std::string_view* last) {
+    return std::find(first, last, text) != last;
 }
 
 bool is_one_of(char32_t c, std::u32string_view set) {

@@ -5,7 +5,6 @@
 #define TALKFACE_TEXT_WRITTEN_NUMBER_SCAN_HPP
 
 #include <cstddef>
-#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -45,11 +44,31 @@ std::string text_between(const std::vector<CodePoint>& text, std::size_t first, 
 // 日 楼 路 度 代, where 2 is a name or an ordinal (二月, 二号, 二楼, 二代).
 bool takes_liang(char32_t c);
 
-// Whether any of `words` stands in `text` (the clause names a score, a lamp, a race ...), starts it or ends
-// it.
-bool contains_any(std::string_view text, std::initializer_list<std::string_view> words);
-bool starts_with_any(std::string_view text, std::initializer_list<std::string_view> words);
-bool ends_with_any(std::string_view text, std::initializer_list<std::string_view> words);
+// Whether any of the words [first, last) stands in `text` (the clause names a score, a lamp, a race
+// ...), starts it, ends it, or is all of it.
+bool contains_any(std::string_view text, const std::string_view* first, const std::string_view* last);
+bool starts_with_any(std::string_view text, const std::string_view* first, const std::string_view* last);
+bool ends_with_any(std::string_view text, const std::string_view* first, const std::string_view* last);
+bool is_any_of(std::string_view text, const std::string_view* first, const std::string_view* last);
+
+// The same for `words` written where they are looked for ({"比分", "战成"}), or kept as a table (a
+// constexpr std::string_view array) where a rule's words make an idea of their own.
+template <std::size_t N>
+bool contains_any(std::string_view text, const std::string_view (&words)[N]) {
+    return contains_any(text, words, words + N);
+}
+template <std::size_t N>
+bool starts_with_any(std::string_view text, const std::string_view (&words)[N]) {
+    return starts_with_any(text, words, words + N);
+}
+template <std::size_t N>
+bool ends_with_any(std::string_view text, const std::string_view (&words)[N]) {
+    return ends_with_any(text, words, words + N);
+}
+template <std::size_t N>
+bool is_any_of(std::string_view text, const std::string_view (&words)[N]) {
+    return is_any_of(text, words, words + N);
+}
 
 // The text before text[start] back to the last end mark or line break (the sentence so far), and
 // with `clause_only` to the last pause mark too.

@@ -55,11 +55,38 @@ bool is_temperature_reading(const std::vector<CodePoint>& text, std::size_t star
     return next == U'度' && speaks_of_temperature(text, start);
 }
 
-// A word earlier in the clause that names a change (涨幅, 增长, 上升, 同比): a + after it is not said.
+// Words that name a change (涨幅, 增长, 上升, 下降, 同比): a sign after them in their clause is not said as
+// a rise or a fall again.
+constexpr std::string_view kChangeWords[] = {"涨", "漲", "跌", "增",   "升",   "降",
+                                             "减", "減", "幅", "同比", "环比", "環比"};
+
+// The words that compare a figure with the same time a year before (同比) or with the period before
+// (环比): a signed change right after one is said as news writes it (change_after_comparison).
+constexpr std::string_view kComparisonWords[] = {"同比", "环比", "環比"};
+
+// A comparison with an earlier time names that time after 较 or 比 (较上年, 比去年同期, 较上月, 较年初).
+constexpr std::string_view kComparedWith[] = {"较", "較", "比"};
+constexpr std::string_view kEarlierTimes[] = {"上年", "去年",   "同期", "上月",  "上周",
+                                              "上週", "上季度", "年初", "上一年"};
+
+// A rate's change in percentage points (毛利率同比+0.5个百分点): its rise is 提高.
+constexpr std::string_view kPercentagePoints[] = {"个百分点", "個百分點"};
+
+// What a subject names a price by (房价, 消费价格, CPI, PPI): its rise is 上涨.
+constexpr std::string_view kPriceWords[] = {"价", "價", "CPI", "PPI"};
+
+// The last word before a value that is written with its sign (收益率为-12.35%, 增速-6.8%): a
+// verb that gives the value (为, 是, 至, 到, 约), or a rate's, a speed's or a value's word (率, 速,
+// 值); a space keeps the sign apart from what moves too.
+constexpr std::string_view kValueWordEnds[] = {"为", "為", "是", "率", "速", "值",
+                                               "至", "到", "约", "約", " "};
+
+// A word that names both a rise and a fall (涨跌幅): the sign after it says which (涨跌幅+2.35% 正).
+constexpr std::string_view kBothWaysWords[] = {"涨跌幅", "漲跌幅"};
+
+// A word earlier in the clause that names a change (kChangeWords): a + after it is not said.
 bool names_change(const std::vector<CodePoint>& text, std::size_t start) {
-    const std::string before = text_before(text, start, true);
-    return contains_any(before,
-                        {"涨", "漲", "跌", "增", "升", "降", "减", "減", "幅", "同比", "环比", "環比"});
+    return contains_any(text_before(text, start, true), kChangeWords);
 }
 
 // A signed change right after 同比 or 环比, or a comparison with an earlier time (较上年, 比去年同期,
@@ -72,19 +99,18 @@ std::string change_after_comparison(const std::vector<CodePoint>& text, std::siz
     std::string before = text_before(text, start, true);
     while (ends_with(before, " ")) before.pop_back();
     const bool compares_with_earlier_time =
-        contains_any(before, {"较", "較", "比"}) &&
-        ends_with_any(before, {"上年", "去年", "同期", "上月", "上周", "上週", "上季度", "年初", "上一年"});
-    if (!ends_with_any(before, {"同比", "环比", "環比"}) && !compares_with_earlier_time) return {};
+        contains_any(before, kComparedWith) && ends_with_any(before, kEarlierTimes);
+    if (!ends_with_any(before, kComparisonWords) && !compares_with_earlier_time) return {};
     if (!rise) return "下降";
-    if (starts_with_any(text_between(text, end, end + 4), {"个百分点", "個百分點"})) return "提高";
+    if (starts_with_any(text_between(text, end, end + 4), kPercentagePoints)) return "提高";
     // A clause that is its comparison word alone shares the sentence's subject
     // (消费价格同比-0.3%，环比+0.1%), looked for back to the sentence's end mark: text_before stops at the
     // decimal point of 0.3%.
     auto first = start;
-    if (before == "同比" || before == "环比" || before == "環比")
+    if (is_any_of(before, kComparisonWords))
         while (first > 0 && !is_one_of(text[first - 1].value, U"。！？；!?;\n")) --first;
     const std::string subject = first < start ? text_between(text, first, start) : before;
-    return contains_any(subject, {"价", "價", "CPI", "PPI"}) ? "上涨" : "增长";
+    return contains_any(subject, kPriceWords) ? "上涨" : "增长";
 }
 
 // A signed percentage right after an amount a company or an economy reports (净利润-5%, 营收+3%, 出口-2.1%)
@@ -104,8 +130,7 @@ std::string change_of_amount(const std::vector<CodePoint>& text, std::size_t sta
 // after a rate's or a value's word (增速-6.8%, 收益率为-12.35%, 涨跌幅-1.87%) it is the value's sign, 负.
 bool is_fall_of_what_moves(const std::vector<CodePoint>& text, std::size_t start) {
     const std::string before = text_before(text, start, true);
-    return !before.empty() && !names_change(text, start) &&
-           !ends_with_any(before, {"为", "為", "是", "率", "速", "值", "至", "到", "约", "約", " "}) &&
+    return !before.empty() && !names_change(text, start) && !ends_with_any(before, kValueWordEnds) &&
            !is_ascii_letter(value_at(text, start - 1)) && !is_digit_at(text, start - 1);
 }
 
@@ -921,7 +946,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     // after the first end of a range. A - stays 负 (增速-6.8% 增速负百分之六点八: 负增长).
     // After 涨跌幅, which names both ways, the sign says which: 涨跌幅+2.35% 正百分之二点三五.
     if (is_percent || is_per_mille) {
-        const bool names_both_ways = ends_with_any(text_before(text, start, true), {"涨跌幅", "漲跌幅"});
+        const bool names_both_ways = ends_with_any(text_before(text, start, true), kBothWaysWords);
         for (std::size_t k = 0; k < signs.size(); ++k)
             if (signs[k] == "正" && !names_both_ways)
                 signs[k] = k == 0 && !names_change(text, start) ? "涨" : "";
