@@ -17,6 +17,11 @@ constexpr std::string_view kServiceWords[] = {"报警", "報警", "急救", "火
                                               "電話", "服务", "服務", "客服", "求助", "救护", "救護", "平台", "平臺",
                                               "专线", "專線", "中心", "号码", "號碼"};
 
+// The letters after a graphics card's four digits, NVIDIA's (GT, GTS, GTX, Ti) and AMD's (XT, XTX),
+// that name the digits a card's model (9800 GT 九八零零, 4090 Ti, 7900 XTX; session 27), in small
+// letters: a suffix is matched whatever its case (is_card_suffix_at).
+constexpr std::string_view kGraphicsCardSuffixes[] = {"gt", "gts", "gtx", "ti", "xt", "xtx"};
+
 // A phone number's groups of digits, each said digit by digit with 幺 for 1; a group too long to be
 // read as a number carries the warning (once).
 void append_phone_groups(SpokenForm& form, const std::vector<std::string>& groups) {
@@ -342,8 +347,7 @@ bool is_card_suffix_at(const std::vector<CodePoint>& text, std::size_t i) {
         const auto letter = static_cast<char>(ascii_form(text[k].value));
         suffix += letter >= 'A' && letter <= 'Z' ? static_cast<char>(letter - 'A' + 'a') : letter;
     }
-    return suffix == "gt" || suffix == "gts" || suffix == "gtx" || suffix == "xt" || suffix == "xtx" ||
-           suffix == "ti";
+    return is_any_of(suffix, kGraphicsCardSuffixes);
 }
 
 bool follows_card_model(const std::vector<CodePoint>& text, std::size_t start) {
