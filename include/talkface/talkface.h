@@ -779,8 +779,10 @@ TF_API tf_status tf_timeline_add_written_form(tf_timeline *timeline, const char 
  * timeline with every sentence's and syllable's times (the `align` JSON of SPEC "Contracts").
  * ------------------------------------------------------------------------------------------- */
 
-/* Reports progress: `fraction` of the whole job, 0..1 and never decreasing, and the stage
- * ("reading", "sentences", "syllables"; a static string). Return 0 to go on, non-zero to cancel:
+/* Reports progress: `fraction` of the whole job, 0..1, never decreasing and 1 only as the call
+ * returns (work done again that no plan foresees, such as the recording read again at another
+ * phase, fills the last 5% by halves), and the stage ("reading", "sentences", "syllables"; a
+ * static string). Return 0 to go on, non-zero to cancel:
  * the call then fails with TF_ERR_CANCELLED and writes nothing. Called on the thread that called
  * tf_align_file / tf_align_samples, often enough to draw a progress bar. */
 typedef int (*tf_progress_fn)(double fraction, const char *stage, void *user_data);

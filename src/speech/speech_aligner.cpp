@@ -54,9 +54,13 @@ constexpr std::size_t kMinToneWitnessSentences = 3;
 constexpr std::size_t kMinToneWitnessSyllables = 3;
 // How much of a long sentence the first pass, on hand-set models, aligns: two minutes.
 constexpr std::size_t kBootstrapFrames = 12000;
-// Shares of the job's progress: reading and features, cutting, the alignment passes.
+// Shares of the job's progress as planned: reading and features, cutting, the alignment passes. The
+// bar's last kWorkAgainShare is left to the work done again, which no plan foresees
+// (ProgressReporter).
 constexpr double kReadingShare = 0.45;
 constexpr double kCuttingShare = 0.05;
+constexpr double kWorkAgainShare = 0.05;
+constexpr double kPlannedShare = 1.0 - kWorkAgainShare;
 constexpr double kProgressStep = 0.002;
 
 // Thrown where check_text_fit refuses a sentence of a room's file of kMinToneWitnessSentences or
@@ -64,38 +68,65 @@ constexpr double kProgressStep = 0.002;
 // (align_source reads the recording again). Not an AlignmentError: no refusal's handler takes it.
 struct ToneWitnessWanted {};
 
+// The bar: the job's progress as planned (reading, cutting, the alignment passes, up to
+// kPlannedShare), and work done again, which reports from lower once more: the cut aligned again
+// (kept to the text's pauses, with nasal releases, its sentence ends confirmed, as one block), the
+// alignment made again without its checks (CheckMode::warn), the recording read again (with the
+// pitch, at another phase). How much of that comes is known only as it comes, so each such piece
+// fills half of the bar still left: the bar moves while the callback is asked, and reaches 1.0
+// only when the job is done (session 28: the planned alignment ended at 1.0, and the bar stood
+// there through the work done again).
 class ProgressReporter {
 public:
     explicit ProgressReporter(const ProgressCallback& callback) : callback_(callback) {}
+
+    // `fraction` of the job as planned, in `stage`: asked at most every kProgressStep of a stage.
     void report(double fraction, const char* stage) {
         if (!callback_) return;
-        // Where the work goes over the recording again (the cut aligned again, kept to the text's
-        // pauses or with nasal releases) its reports start again from lower: the callback is asked
-        // there as often as anywhere, so that it can cancel, while the bar stays where it stands.
-        if (stage == seen_stage_ && fraction >= seen_fraction_ && fraction < seen_fraction_ + kProgressStep &&
-            fraction < 1.0)
+        if (fraction < planned_fraction_) {
+            // Work done again begins: the bar stands where it is for this report, and the ones
+            // after it move it through half of what is left.
+            again_from_ = fraction;
+            again_base_ = bar_;
+            again_scale_ = 0.5 * (1.0 - bar_) / (kPlannedShare - fraction);
+            planned_fraction_ = fraction;
+            stage_ = stage;
             return;
-        seen_stage_ = stage;
-        seen_fraction_ = fraction;
-        if (!is_held_ && fraction >= last_fraction_) {
-            last_stage_ = stage;
-            last_fraction_ = fraction;
         }
-        if (!callback_(std::clamp(last_fraction_, 0.0, 1.0), last_stage_))
-            throw Cancelled(std::string("alignment cancelled by the progress callback while ") + last_stage_ +
-                            " at " + format_fixed(100.0 * last_fraction_, 1) + "%");
+        if (stage == stage_ && fraction < planned_fraction_ + kProgressStep) return;
+        planned_fraction_ = fraction;
+        stage_ = stage;
+        bar_ = std::min(again_base_ + (fraction - again_from_) * again_scale_, kBarBeforeDone);
+        ask(bar_);
     }
-    // From here on the bar stays where it is: another reading of the recording still asks the
-    // callback whether to go on, as often as it would report, but shows no progress of its own.
-    void hold() { is_held_ = true; }
+
+    // The job is done: the bar at 1.0, in the alignment's last stage.
+    void report_done() {
+        if (!callback_) return;
+        stage_ = "syllables";
+        bar_ = 1.0;
+        ask(bar_);
+    }
 
 private:
+    // The most the bar shows before report_done: reports are double and may round up to 1.0.
+    static constexpr double kBarBeforeDone = 1.0 - 1e-9;
+
+    void ask(double bar) {
+        if (!callback_(bar, stage_))
+            throw Cancelled(std::string("alignment cancelled by the progress callback while ") + stage_ +
+                            " at " + format_fixed(100.0 * bar, 1) + "%");
+    }
+
     const ProgressCallback& callback_;
-    const char* seen_stage_ = nullptr;
-    double seen_fraction_ = -1.0;
-    const char* last_stage_ = nullptr;
-    double last_fraction_ = -1.0;
-    bool is_held_ = false;
+    const char* stage_ = nullptr;
+    double planned_fraction_ = -1.0;
+    double bar_ = 0.0;
+    // Where the work done last began again: the planned fraction it began at, the bar then, and how
+    // far the bar moves per planned fraction (1 until work is done again).
+    double again_from_ = 0.0;
+    double again_base_ = 0.0;
+    double again_scale_ = 1.0;
 };
 
 // The passes over the chains that share the bar's alignment part: kReestimationRounds of
@@ -107,10 +138,19 @@ int alignment_passes(bool is_reestimated_dry) {
 
 // Progress after chain `w` of `count` in pass `pass` of `passes` (alignment_passes).
 void report_pass(ProgressReporter& progress, int pass, int passes, std::size_t w, std::size_t count) {
-    const double alignment_share = 1.0 - kReadingShare - kCuttingShare;
+    const double alignment_share = kPlannedShare - kReadingShare - kCuttingShare;
     progress.report(kReadingShare + kCuttingShare +
                         alignment_share * (pass + static_cast<double>(w + 1) / static_cast<double>(count)) / passes,
                     "syllables");
+}
+
+// The features of `source` (analyze_audio, after the samples `read_first` already read from it),
+// its reading reported as the job's first kReadingShare.
+FeatureTrack read_features(AudioSource& source, ProgressReporter& progress, bool with_pitch,
+                           std::size_t skipped_samples, const std::vector<float>& read_first = {}) {
+    return analyze_audio(
+        source, [&](double fraction) { progress.report(kReadingShare * fraction, "reading"); }, with_pitch,
+        skipped_samples, read_first);
 }
 
 void validate_transcript(const Timeline& transcript) {
@@ -779,7 +819,6 @@ Timeline align_track(const FeatureTrack& track, const LoudnessProfile& loudness,
         }
         if (!has_moved_end) throw error;
     }
-    progress.report(1.0, "syllables");
     return result.in_room ? std::move(*result.in_room) : std::move(result.checked);
 }
 
@@ -821,7 +860,7 @@ Timeline align_witnessed(const std::function<std::unique_ptr<AudioSource>()>& op
         return align_checked(track, loudness, transcript, options, given_spans, progress);
     } catch (const ToneWitnessWanted&) {
         std::unique_ptr<AudioSource> source = open();
-        track = analyze_audio(*source, {}, true, skipped_samples);
+        track = read_features(*source, progress, true, skipped_samples);
         const LoudnessProfile again = conceal_dropouts(track);
         return align_checked(track, again, transcript, options, given_spans, progress);
     }
@@ -882,7 +921,7 @@ void move_onto_recording(Timeline& timeline, double skipped_s) {
 // sentence is to be refused and its pitch may witness for its text (ToneWitnessWanted), the
 // recording is read again, from `open`, with the pitch, and aligned again: that costs a second
 // reading only there (the pitch costs 9% more instructions on every recording, bench/README.md
-// Session 19). The second reading reports no progress: the bar stays where the alignment left it.
+// Session 19). The second reading is work done again on the bar (ProgressReporter).
 //
 // A refusal is a majority of three phases. Where the samples fall against the 10 ms frames moves
 // a check's figures by up to 0.2 per frame and a path by a syllable, so a text near a check's
@@ -893,10 +932,9 @@ void move_onto_recording(Timeline& timeline, double skipped_s) {
 // read three times would take three times as long. A refusal gives the first refusing reading's
 // message (the phase-shifted readings name times up to 7.5 ms early); an alignment gives the
 // first reading's timeline, or, where that refused, the first other one that aligned, its times
-// moved onto the recording's (its warnings' words keep that reading's); the other readings show
-// no progress but may be cancelled (ProgressReporter::hold). Refusing only where two
-// phases refuse, never where one aligns, would pick the kinder of two draws and let wrong texts
-// through (Session 20).
+// moved onto the recording's (its warnings' words keep that reading's); the other readings are work
+// done again on the bar (ProgressReporter). Refusing only where two phases refuse, never where one
+// aligns, would pick the kinder of two draws and let wrong texts through (Session 20).
 Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open, const Timeline& transcript,
                       const AlignOptions& options, const std::vector<GivenSpan>& given_spans,
                       const ProgressCallback& callback) {
@@ -907,9 +945,8 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
     std::unique_ptr<AudioSource> source = open();
     const std::optional<std::vector<float>> read_first = read_first_sound(*source);
     if (!read_first) source = open();
-    FeatureTrack track = analyze_audio(
-        *source, [&](double fraction) { progress.report(kReadingShare * fraction, "reading"); },
-        options.lenient, 0, read_first ? *read_first : std::vector<float>{});
+    FeatureTrack track =
+        read_features(*source, progress, options.lenient, 0, read_first ? *read_first : std::vector<float>{});
     const LoudnessProfile loudness = conceal_dropouts(track);
     const std::string lost = describe_lost_audio(source->lost_audio());
     std::string notes;
@@ -928,7 +965,6 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
         const bool is_short = static_cast<std::size_t>(std::count(is_spoken.begin(), is_spoken.end(),
                                                                   true)) <= kMaxHeldOutCheckSentences;
         if (is_voted && (first_refusal || is_short)) {
-            progress.hold();
             std::size_t refusals = first_refusal ? 1 : 0, alignments = first_refusal ? 0 : 1;
             std::optional<AlignmentError> other_refusal;
             std::optional<Timeline> other_alignment;
@@ -936,7 +972,7 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
                 if (refusals >= 2 || alignments >= 2) break;
                 const double skipped_s = static_cast<double>(skipped) / kAnalysisRateHz;
                 std::unique_ptr<AudioSource> again = open();
-                FeatureTrack other = analyze_audio(*again, {}, !track.pitch.empty(), skipped);
+                FeatureTrack other = read_features(*again, progress, !track.pitch.empty(), skipped);
                 const LoudnessProfile other_loudness = conceal_dropouts(other);
                 try {
                     Timeline found = align_witnessed(open, other, other_loudness, skipped, transcript,
@@ -971,6 +1007,7 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
     for (const std::string& note : source->notes()) result.warnings.push_back(source->name() + ": " + note);
     if (unconfirmable && options.check != CheckMode::off)
         result.warnings.push_back("the transcript cannot be checked against the audio: " + *unconfirmable);
+    progress.report_done();
     return result;
 }
 

@@ -136,9 +136,11 @@ The GIL is released while aligning, so alignments on several threads run at once
 shared by them.
 
 Progress: progress(fraction, stage) is called on the calling thread, often enough to draw a progress
-bar, with fraction 0..1 never decreasing and stage "reading", "sentences" or "syllables". Returning False (any
-false value but None) cancels with talkface.Cancelled. An exception the callable raises stops the
-alignment and propagates as it is (a KeyboardInterrupt stays a KeyboardInterrupt), not as Cancelled.
+bar, with fraction 0..1 never decreasing (1 only as the call returns; work done again that no plan
+foresees, such as the recording read again at another phase, fills the last 5% by halves) and stage
+"reading", "sentences" or "syllables". Returning False (any false value but None) cancels with
+talkface.Cancelled. An exception the callable raises stops the alignment and propagates as it is (a
+KeyboardInterrupt stays a KeyboardInterrupt), not as Cancelled.
 Without a callable, Ctrl-C still stops the alignment with KeyboardInterrupt.
 
 Example:
