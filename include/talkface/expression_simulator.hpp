@@ -207,9 +207,9 @@ public:
     ExpressionSimulator(const ExpressionSimulator&) = delete;
     ExpressionSimulator& operator=(const ExpressionSimulator&) = delete;
 
-    std::uint64_t seed() const;
-    const ExpressionStyle& style() const;
-    double duration_s() const;  ///< timeline_end_s of the timeline
+    std::uint64_t seed() const;            ///< the seed it was made with
+    const ExpressionStyle& style() const;  ///< the style it was made with
+    double duration_s() const;             ///< timeline_end_s of the timeline
 
     /// The simulated events, by start time (then kind).
     const std::vector<ExpressionEvent>& simulated_events() const;

@@ -115,14 +115,18 @@ public:
     SpeechAligner(const SpeechAligner&) = delete;
     SpeechAligner& operator=(const SpeechAligner&) = delete;
 
-    const AlignOptions& options() const;
+    const AlignOptions& options() const;  ///< the options it was made with, checked
 
-    /// Aligns samples in memory.
+    /// Aligns samples in memory. `progress` gets the fraction of the call done, never decreasing and
+    /// 1 only as the call returns, and the stage ("reading", "sentences", "syllables"). Work done
+    /// again that no plan foresees (the sentences aligned again, kept to the text's pauses; the
+    /// recording read again at another phase, CheckMode::refuse) fills the bar's last 5%, each
+    /// piece half of what is left of it.
     /// \throws talkface::InvalidArgument for an empty or malformed view or an empty transcript.
     /// \throws talkface::AlignmentError when audio and transcript do not match (a missing or extra
-    ///         sentence, the wrong text, a text that lacks its last words), naming the sentence and the time where it was noticed;
-    ///         with CheckMode::warn or off only when no alignment can be made at all (more
-    ///         syllables than the speech can hold, no speech).
+    ///         sentence, the wrong text, a text that lacks its last words), naming the sentence and the time
+    ///         where it was noticed; with CheckMode::warn or off only when no alignment can be made at all
+    ///         (more syllables than the speech can hold, no speech).
     /// \throws talkface::Cancelled if `progress` returned false.
     Timeline align(const AudioView& audio, const Timeline& transcript,
                    const ProgressCallback& progress = {}) const;
