@@ -16,8 +16,6 @@
 #   build/bin/align_bench OUT
 import numpy as np, json, wave, os, shutil, subprocess, sys, tempfile, zlib
 
-human, voice, out = sys.argv[1:4]
-
 
 def load(p):
     w = wave.open(p)
@@ -181,24 +179,33 @@ kinds = {
                           codec(agc(babble(x, sr, t, r, o, 15, 20), sr), sr, ['-c:a', 'libgsm'], 'gsm'))),
 }
 
-only = set(sys.argv[4].split(',')) if len(sys.argv) > 4 else None
-os.makedirs(out, exist_ok=True)
-with open(out + '/conditions.txt', 'w') as c:
-    for kind, (source, what, _) in kinds.items():
-        if only is None or kind in only: c.write(f'{kind}\t{source}: {what}\n')
-for kind, (source, what, chain) in kinds.items():
-    if only is not None and kind not in only: continue
-    src = f'{human if source.startswith("r-") else voice}/{source}'
-    names = sorted(f[:-4] for f in os.listdir(src) if f.endswith('.wav'))
-    folder = f'{out}/{kind}'
-    os.makedirs(folder, exist_ok=True)
-    for nm in names:
-        rng = np.random.default_rng(zlib.crc32((kind + nm).encode()))
-        same_set = [f'{src}/{o}.wav' for o in names if o != nm and o.split('-')[0] == nm.split('-')[0]]
-        x, sr = load(f'{src}/{nm}.wav'); d = json.load(open(f'{src}/{nm}.json'))
-        y, ysr = chain(x, sr, d, rng, same_set)
-        pk = np.max(np.abs(y))
-        if pk > 0.99: y *= 0.99 / pk
-        save(f'{folder}/{nm}.wav', y, ysr)
-        for ext in ('txt', 'json'): shutil.copy(f'{src}/{nm}.{ext}', f'{folder}/{nm}.{ext}')
-    print(kind, 'done', flush=True)
+
+
+def main():
+    # short_kinds_bench.py imports the kinds' chains; the corpus is made only when run.
+    human, voice, out = sys.argv[1:4]
+    only = set(sys.argv[4].split(',')) if len(sys.argv) > 4 else None
+    os.makedirs(out, exist_ok=True)
+    with open(out + '/conditions.txt', 'w') as c:
+        for kind, (source, what, _) in kinds.items():
+            if only is None or kind in only: c.write(f'{kind}\t{source}: {what}\n')
+    for kind, (source, what, chain) in kinds.items():
+        if only is not None and kind not in only: continue
+        src = f'{human if source.startswith("r-") else voice}/{source}'
+        names = sorted(f[:-4] for f in os.listdir(src) if f.endswith('.wav'))
+        folder = f'{out}/{kind}'
+        os.makedirs(folder, exist_ok=True)
+        for nm in names:
+            rng = np.random.default_rng(zlib.crc32((kind + nm).encode()))
+            same_set = [f'{src}/{o}.wav' for o in names if o != nm and o.split('-')[0] == nm.split('-')[0]]
+            x, sr = load(f'{src}/{nm}.wav'); d = json.load(open(f'{src}/{nm}.json'))
+            y, ysr = chain(x, sr, d, rng, same_set)
+            pk = np.max(np.abs(y))
+            if pk > 0.99: y *= 0.99 / pk
+            save(f'{folder}/{nm}.wav', y, ysr)
+            for ext in ('txt', 'json'): shutil.copy(f'{src}/{nm}.{ext}', f'{folder}/{nm}.{ext}')
+        print(kind, 'done', flush=True)
+
+
+if __name__ == '__main__':
+    main()
