@@ -14,6 +14,7 @@
 #include "speech/repeating_accompaniment.hpp"
 #include "speech/run_together.hpp"
 #include "speech/steady_tone.hpp"
+#include "speech/unvoiced_beat.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
@@ -325,7 +326,22 @@ void find_speech(const FeatureTrack& track, const std::vector<float>& share, con
                       bed->pauses.end());
         trailing += bed->pauses.size();
     }
-    while (leading < trailing && is_not_speech(first_speech, pauses[leading].first_frame)) first_speech = pauses[leading++].end_frame;
+    // A breath before the first words (a rustle, a cough's hiss): sound set apart by a pause and never
+    // voiced, beside a voice that is; every syllable has a voiced vowel. Not after the last words:
+    // there music's quieter tail reads unvoiced too (bench/ r-music tuning-007, session 28).
+    const auto is_unvoiced_beside_voice = [&](const FrameSpan& stretch, const FrameSpan& voice) {
+        const bool is_unvoiced =
+            is_beat_beside_voice(loud_voiced_share(track, profile.activity_db, profile.activity_threshold_db,
+                                                   stretch.first_frame, stretch.end_frame),
+                                 loud_voiced_share(track, profile.activity_db, profile.activity_threshold_db,
+                                                   voice.first_frame, voice.end_frame));
+        if (is_unvoiced) profile.unvoiced_edges.push_back(stretch);
+        return is_unvoiced;
+    };
+    while (leading < trailing && (is_not_speech(first_speech, pauses[leading].first_frame) ||
+                                  is_unvoiced_beside_voice({first_speech, pauses[leading].first_frame},
+                                                           {pauses[leading].end_frame, end_speech})))
+        first_speech = pauses[leading++].end_frame;
     while (trailing > leading && is_not_speech(pauses[trailing - 1].end_frame, end_speech)) end_speech = pauses[--trailing].first_frame;
     profile.pauses.assign(pauses.begin() + static_cast<std::ptrdiff_t>(leading), pauses.begin() + static_cast<std::ptrdiff_t>(trailing));
     // Quiet shorter than a pause between the recording's edges and its speech is the speech's own
