@@ -128,7 +128,7 @@ FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)
 // (bench/README.md, Session 27), the features of its frames. Returns the samples read, for
 // analyze_audio's `read_first`, where they are kMostHeldSilenceS or less of the recording; nullopt
 // where more silence came first (the caller reads the recording again from its start).
-// 	hrows talkface::InvalidArgument naming the audio, as analyze_audio does, if it is silent.
+// \throws talkface::InvalidArgument naming the audio, as analyze_audio does, if it is silent.
 std::optional<std::vector<float>> read_first_sound(AudioSource& source);
 
 // The silence read_first_sound holds for analyze_audio before it reads the recording again: a
