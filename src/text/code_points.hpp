@@ -52,6 +52,16 @@ inline bool is_ascii_letter(char32_t c) {
     return is_ascii_capital(c) || (c >= 'a' && c <= 'z');
 }
 
+// `word` with its ASCII capitals in small letters (the tables of words, domains and suffixes are
+// kept so; every other byte, UTF-8 included, as it is).
+inline std::string ascii_lower_case(std::string_view word) {
+    std::string lower(word);
+    for (char& letter : lower)
+        if (is_ascii_capital(static_cast<unsigned char>(letter)))
+            letter = static_cast<char>(letter - 'A' + 'a');
+    return lower;
+}
+
 }  // namespace talkface::detail
 
 #endif

@@ -343,11 +343,9 @@ bool names_code_by_letters(const std::vector<CodePoint>& text, std::size_t start
 
 bool is_card_suffix_at(const std::vector<CodePoint>& text, std::size_t i) {
     std::string suffix;
-    for (auto k = i; is_ascii_letter(value_at(text, k)); ++k) {
-        const auto letter = static_cast<char>(ascii_form(text[k].value));
-        suffix += letter >= 'A' && letter <= 'Z' ? static_cast<char>(letter - 'A' + 'a') : letter;
-    }
-    return is_any_of(suffix, kGraphicsCardSuffixes);
+    for (auto k = i; is_ascii_letter(value_at(text, k)); ++k)
+        suffix += static_cast<char>(ascii_form(text[k].value));
+    return is_any_of(ascii_lower_case(suffix), kGraphicsCardSuffixes);
 }
 
 bool follows_card_model(const std::vector<CodePoint>& text, std::size_t start) {

@@ -72,12 +72,6 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
 constexpr std::string_view kWordsInCapitals[] = {"top", "max", "pro", "mini", "plus", "boss", "logo", "bug", "ace",
                                                    "next", "up"};
 
-std::string lower_case(std::string_view word) {
-    std::string lower;
-    for (const char letter : word) lower += letter >= 'A' && letter <= 'Z' ? static_cast<char>(letter - 'A' + 'a') : letter;
-    return lower;
-}
-
 bool is_vowel_at(const std::string& lower, std::size_t i) {
     const char c = lower[i];
     if (c == 'y') return i > 0 && (i + 1 == lower.size() || std::string_view("aeiou").find(lower[i + 1]) == std::string_view::npos);
@@ -157,14 +151,14 @@ bool has_inner_acronym(std::string_view word) {
 }
 
 bool is_said_as_word(std::string_view word) {
-    const std::string key = lower_case(word);
+    const std::string key = ascii_lower_case(word);
     return std::any_of(std::begin(kSaidOtherwise), std::end(kSaidOtherwise),
                        [&](const auto& entry) { return entry.first == key; }) ||
            std::find(std::begin(kWordsInCapitals), std::end(kWordsInCapitals), key) != std::end(kWordsInCapitals);
 }
 
 std::vector<std::string> spelled_syllables(std::string_view word) {
-    const std::string lower = lower_case(word);
+    const std::string lower = ascii_lower_case(word);
     // Groups of vowels: [first, end) in the word.
     std::vector<std::pair<std::size_t, std::size_t>> groups;
     for (std::size_t i = 0; i < lower.size(); ++i) {
@@ -196,7 +190,7 @@ std::vector<std::string> spelled_syllables(std::string_view word) {
 }
 
 std::optional<std::vector<std::string>> english_word_syllables(std::string_view word) {
-    const std::string key = lower_case(word);
+    const std::string key = ascii_lower_case(word);
     for (const auto& [spelled, said] : kSaidOtherwise) {
         if (key != spelled) continue;
         std::vector<std::string> syllables;
@@ -215,7 +209,7 @@ std::optional<std::vector<std::string>> letter_and_word_syllables(std::string_vi
     // Pairs that start an English word with a silent letter (know, gnome, psalm, pneumonia, rhyme), and a
     // name's Mc (McLaren), said Mac.
     constexpr std::string_view kOtherOnsets[] = {"kn", "gn", "ps", "pn", "rh", "mc"};
-    const std::string lower = lower_case(word);
+    const std::string lower = ascii_lower_case(word);
     if (lower.size() < 1 + kShortestWord || is_vowel_at(lower, 0) || is_vowel_at(lower, 1) || lower[1] == 'y')
         return std::nullopt;
     const auto pair = std::string_view(lower).substr(0, 2);

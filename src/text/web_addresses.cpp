@@ -19,20 +19,13 @@ char32_t value_at(const std::vector<CodePoint>& text, std::size_t i) {
     return i < text.size() ? text[i].value : 0;
 }
 
-std::string lower_case(std::string_view word) {
-    std::string lower(word);
-    for (auto& letter : lower)
-        if (letter >= 'A' && letter <= 'Z') letter = static_cast<char>(letter - 'A' + 'a');
-    return lower;
-}
-
 // Top-level domains common enough that a host ending in one is an address without www or a scheme
 // (gov.cn, example.com); a rarer one needs either (www.example.museum).
 bool is_common_top_level(const std::string& label) {
     constexpr std::string_view kDomains[] = {"com", "net", "org", "cn", "edu", "gov", "io",  "info", "biz", "mil",
                                              "tw",  "hk",  "mo",  "sg", "uk",  "jp",  "kr",  "us",   "de",  "fr",
                                              "me",  "tv",  "cc",  "co", "top", "xyz", "app", "dev",  "ai"};
-    const auto lower = lower_case(label);
+    const auto lower = ascii_lower_case(label);
     return std::find(std::begin(kDomains), std::end(kDomains), lower) != std::end(kDomains);
 }
 
@@ -42,7 +35,7 @@ bool is_file_suffix(const std::string& label) {
     constexpr std::string_view kSuffixes[] = {"js", "ts", "py", "html", "htm", "css", "json", "xml", "txt", "pdf",
                                               "doc", "docx", "xls", "xlsx", "ppt", "pptx", "jpg", "jpeg", "png", "gif",
                                               "wav", "mov", "exe", "zip", "md", "cpp", "java", "php", "yaml", "yml"};
-    const auto lower = lower_case(label);
+    const auto lower = ascii_lower_case(label);
     return std::find(std::begin(kSuffixes), std::end(kSuffixes), lower) != std::end(kSuffixes);
 }
 
@@ -147,7 +140,7 @@ std::optional<WebAddress> read_web_address(const std::vector<CodePoint>& text, s
     auto host = start;
     std::string scheme;
     for (auto k = start; is_ascii_letter(value_at(text, k)); ++k) scheme += static_cast<char>(text[k].value);
-    scheme = lower_case(scheme);
+    scheme = ascii_lower_case(scheme);
     const bool has_scheme = (scheme == "http" || scheme == "https" || scheme == "ftp") &&
                             value_at(text, start + scheme.size()) == ':' && value_at(text, start + scheme.size() + 1) == '/' &&
                             value_at(text, start + scheme.size() + 2) == '/';
@@ -161,7 +154,7 @@ std::optional<WebAddress> read_web_address(const std::vector<CodePoint>& text, s
     };
     if (!has_scheme && labels.size() == 2 && is_digits(labels.front()) && is_exchange_suffix(labels.back()))
         return std::nullopt;
-    if (!has_scheme && lower_case(labels.front()) != "www" && !is_common_top_level(labels.back()) &&
+    if (!has_scheme && ascii_lower_case(labels.front()) != "www" && !is_common_top_level(labels.back()) &&
         !is_file_suffix(labels.back())) {
         return std::nullopt;
     }
