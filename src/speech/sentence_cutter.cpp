@@ -252,6 +252,7 @@ void find_speech(const FeatureTrack& track, const std::vector<float>& share, con
     // threshold stays where the recording's levels put it. Quieter tones (a hum in the pauses) are
     // left: they are no speech already.
     profile.tones.clear();
+    profile.unvoiced_edges.clear();
     for (std::size_t t = 0; t < frames; ++t) {
         if (!tone[t] || raw[t] < profile.activity_threshold_db) continue;
         raw[t] = 0.0f;
