@@ -788,9 +788,8 @@ private:
                                   : 0.0;
         if (file_s > decoded_s + slack_s(file_s) && decoded_s >= stated_seconds_ - slack_s(stated_seconds_))
             add_note("its header states " + seconds_text(file_s) +
-                     " for the file, but its sound track's own index "
-                     "holds " +
-                     seconds_text(decoded_s) + ", all of which was read");
+                     " for the file, but its sound track's own index holds " + seconds_text(decoded_s) +
+                     ", all of which was read");
     }
 
     // Follows whether an MP3 packet holds fewer bytes than its frame's header states (short_mp3_frame_).

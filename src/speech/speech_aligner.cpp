@@ -914,7 +914,8 @@ void move_onto_recording(Timeline& timeline, double skipped_s) {
 // says of how it read the file (AudioSource::notes: a stale WAV header) is a warning too, and
 // closes a refusal. A warning begins with the source's name() (only a file loses sound); a refusal
 // does not, its callers name the audio as they name it. A transcript the checks cannot weigh
-// (latin_only_text.hpp) is refused before the audio is read, or aligned with a warning; a silent
+// (latin_only_text.hpp) is aligned with a warning that says so (in every check mode but off: no
+// evidence against a text is no reason to refuse it, and a game's "OK!" is such a text); a silent
 // recording is refused after its samples alone are read (read_first_sound), with no features.
 //
 // The voice's pitch is measured as the audio is read only for lenient alignment; where a room's
