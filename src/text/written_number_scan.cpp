@@ -120,7 +120,10 @@ bool takes_liang(char32_t c) {
         // A recipe's cloves and spoons (2-3瓣蒜 两到三瓣, 2汤匙 两汤匙, 2茶匙; session 17).
         U"瓣汤湯茶"
         // Taiwan's trillion, a magnitude as 万 and 亿 are (2兆 兩兆; session 23: 二兆).
-        U"兆");
+        U"兆"
+        // A toll's dead and injured, counted as a record's wins are (2死5伤 两死五伤, 1死2傷 一死兩傷;
+        // session 29: 二死, 二伤).
+        U"死伤傷");
 }
 
 std::string text_before(const std::vector<CodePoint>& text, std::size_t start, bool clause_only) {

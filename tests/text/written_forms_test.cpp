@@ -1562,4 +1562,15 @@ TEST_SUITE("written forms") {
         // A capital alone before a dot and a digit is no lineage's: a choice's or an initial's dot.
         CHECK(read_transcript("答案是A.2后来改了。").sentences.size() == 2);
     }
+
+    TEST_CASE("a toll's dead and injured are counted with 两") {
+        // Each row but the limits failed on main 1e85796 (session 29, dev21's tuning miss): 二死, 二伤.
+        check_cases({
+            {"已致2死5伤", "已致两死五伤"},
+            {"事故造成1死2伤", "事故造成一死两伤"},
+            {"車禍釀2死1傷", "車禍釀兩死一傷"},
+            // The limit: 2 before a name's word stays 二.
+            {"2号线", "二号线"},
+        });
+    }
 }
