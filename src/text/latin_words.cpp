@@ -62,6 +62,10 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     // Session 28: TikTok, whose halves the dictionary lacks (generic speech of two syllables), is said as the
     // loans write Tik and Tok, 提克 ti ke and 托克 tuo ke (托克皮辛语, Tok Pisin).
     {"tiktok", "ti2 ke4 tuo1 ke4"},
+    // Session 29: software and a platform as a service, SaaS and PaaS, are said as words, 萨斯 and 帕斯, as
+    // SARS is (the mapping split them, Saa and S, de ai si); the dictionary lacks both.
+    {"saas", "sa4 si1"},
+    {"paas", "pa4 si1"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

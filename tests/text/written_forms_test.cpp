@@ -1573,4 +1573,12 @@ TEST_SUITE("written forms") {
             {"2号线", "二号线"},
         });
     }
+
+    TEST_CASE("SaaS and PaaS are said as words") {
+        // Each row failed on main 1e85796 (session 29, dev21's tuning miss): Saa and S, de ai si.
+        check_cases({
+            {"国内SaaS企业", "国内 sa si企业"},
+            {"PaaS平台", "pa si平台"},
+        });
+    }
 }
