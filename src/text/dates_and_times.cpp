@@ -232,6 +232,17 @@ bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNum
                                    "高考", "中考", "考研", "国考", "國考", "学测", "學測"});
 }
 
+bool names_short_year(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
+    if (number.has_point || number.has_separators || number.whole.size() != 2 ||
+        value_at(text, number.end) != U'年')
+        return false;
+    auto i = number.end + 1;
+    const auto month = digits_from(text, i);
+    if (month.empty() || month.size() > 2 || value_at(text, i) != U'月' || !is_month_and_day(month, "1"))
+        return false;
+    return !is_traditional_text(text) && !ends_with_any(text_before(text, start, true), {"民国", "民國"});
+}
+
 bool lists_year(const std::vector<CodePoint>& text, const WrittenNumber& number) {
     constexpr std::size_t kYearDigits = 4;
     const auto is_year_digits = [](const WrittenNumber& n) {

@@ -55,6 +55,12 @@ bool counts_years(const std::vector<CodePoint>& text, std::size_t start, const W
 // release's or a quarter's two digits before its half or quarter (24H2 二四 H 二, 25Q1 二五 Q 一).
 bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNumber& number);
 
+// A year by its last two digits before a month (24年12月5日 二四年十二月五日, 08年8月 零八年八月), as
+// mainland news and chat write a recent year; counted where two digits are a year of the Republic, in a
+// Traditional transcript or after 民国 (88年9月21日 八十八年). Before anything but a month two digits and 年
+// count years (23年以来, 12年3个月).
+bool names_short_year(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
+
 // A year listed before another with 、 (2022、2023年 二零二二、二零二三年, 2024、2025赛季): four digits
 // whose list ends on a year said as one (before 年 and not counting years, or before a word it names);
 // the last takes the 年 (session 20: the first counted, 两千零二十二).

@@ -690,7 +690,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
                             text_before(text, start, true).find("笑") != std::string::npos)));
     context.is_whole_clause = sign_words.empty() && currency == nullptr && stands_alone(text, start, number.end);
     context.names_year = sign_words.empty() && currency == nullptr && !context.is_ordinal &&
-                         (names_year_before_word(text, number) || lists_year(text, number));
+                         (names_year_before_word(text, number) || lists_year(text, number) ||
+                          names_short_year(text, start, number));
     SpokenForm form;
     // Two numbers said each alone with a word between: a score (3:1, and 2-1 where the clause
     // speaks of a match: 2-1领先), a product (7×24 七乘二十四).

@@ -1581,4 +1581,19 @@ TEST_SUITE("written forms") {
             {"PaaS平台", "pa si平台"},
         });
     }
+
+    TEST_CASE("a year by its last two digits before a month is said digit by digit") {
+        // The first and third rows failed on main 1e85796 (session 29, found by probing news beyond dev21):
+        // 二十四年, 二十五年; 08 was 零八 already.
+        check_cases({
+            {"24年12月5日，公司发布公告", "二四年十二月五日公司发布公告"},
+            {"08年8月8日", "零八年八月八日"},
+            {"该项目将于25年6月至26年1月完工", "该项目将于二五年六月至二六年一月完工"},
+            // The limits: years counted, a year of the Republic after 民国 and in a Traditional transcript.
+            {"这是23年以来的最高水平", "这是二十三年以来的最高水平"},
+            {"他服刑12年3个月", "他服刑十二年三个月"},
+            {"民国38年10月", "民国三十八年十月"},
+            {"88年9月21日發生大地震", "八十八年九月二十一日發生大地震"},
+        });
+    }
 }
