@@ -400,7 +400,11 @@ bool follows_maker_name(const std::vector<CodePoint>& text, std::size_t start) {
     for (const std::string_view maker : {"波音", "空客", "麦道", "麥道", "商飞", "商飛", "天玑", "天璣", "骁龙", "驍龍",
                                          "麒麟", "鲲鹏", "鯤鵬", "昇腾", "昇騰", "飞腾", "飛騰", "龙芯", "龍芯"})
         if (before == maker) return true;
-    return false;
+    // The same makers and series in Latin letters, as English copy and spec sheets write them.
+    constexpr std::string_view kLatinMakers[] = {"boeing", "airbus", "snapdragon", "dimensity", "kirin"};
+    auto first = i;
+    while (first > 0 && is_ascii_letter(value_at(text, first - 1))) --first;
+    return first < i && is_any_of(ascii_lower_case(text_between(text, first, i)), kLatinMakers);
 }
 
 bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {

@@ -119,7 +119,8 @@ bool follows_card_model(const std::vector<CodePoint>& text, std::size_t start);
 
 // Right after the Chinese name of an aircraft's maker (波音737, 空客 320) or of a chip's series
 // (天玑9400 天玑九四零零, 骁龙888, 麒麟990, 鲲鹏920, 昇腾910, as reviews and news say them; session 14,
-// they counted): its model's number.
+// they counted): its model's number. So are their Latin names (Boeing 737, Airbus 320, Snapdragon 865,
+// Dimensity 9400, Kirin 9000; session 29: they counted).
 bool follows_maker_name(const std::vector<CodePoint>& text, std::size_t start);
 
 // A number that names by its digits what it stands for, said one by one with 一 for 1 (where no

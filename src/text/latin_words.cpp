@@ -66,6 +66,19 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     // SARS is (the mapping split them, Saa and S, de ai si); the dictionary lacks both.
     {"saas", "sa4 si1"},
     {"paas", "pa4 si1"},
+    // Names in the news the dictionary lacks (generic speech with a warning) or maps far from how they are
+    // said, said as Mandarin news writes them, as NVIDIA is 英伟达: OpenAI's Sora 索拉, Bezos 贝索斯,
+    // Ethereum 以太坊, Zeekr 极氪, Redmi 红米 (the mapping gave ai de mi), and the chips' series by their
+    // Chinese names, as 天玑9400 and 骁龙8 are written too: Dimensity 天玑, Snapdragon 骁龙 (the mapping gave
+    // five syllables, si na pu da gen), Kirin 麒麟 (qi ren).
+    {"sora", "suo3 la1"},
+    {"bezos", "bei4 suo3 si1"},
+    {"ethereum", "yi3 tai4 fang1"},
+    {"zeekr", "ji2 ke4"},
+    {"redmi", "hong2 mi3"},
+    {"dimensity", "tian1 ji1"},
+    {"snapdragon", "xiao1 long2"},
+    {"kirin", "qi2 lin2"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

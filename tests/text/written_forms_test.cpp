@@ -1596,4 +1596,21 @@ TEST_SUITE("written forms") {
             {"88年9月21日發生大地震", "八十八年九月二十一日發生大地震"},
         });
     }
+
+    TEST_CASE("names in the news said as Mandarin news writes them, a chip's series in Latin letters") {
+        // Each row failed on main 1e85796 (session 29, found by probing news beyond dev21): generic speech
+        // (Sora, Bezos, Ethereum, Zeekr), the mapping (ai de mi, si na pu da gen), the number counted.
+        check_cases({
+            {"Sora正式开放", "suo la正式开放"},
+            {"杰夫·贝索斯（Jeff Bezos）", "杰夫贝索斯 jie fu bei suo si"},
+            {"Ethereum价格上涨", "yi tai fang价格上涨"},
+            {"极氪Zeekr", "极氪 ji ke"},
+            {"Redmi K80", "hong mi kei八十"},
+            {"Snapdragon 865处理器", "xiao long八六五处理器"},
+            {"联发科Dimensity 9400芯片", "联发科 tian ji九四零零芯片"},
+            {"Boeing 737客机", "bo ying七三七客机"},
+            // The limit: a round thousand is a tier, as after 麒麟.
+            {"Kirin 9000芯片", "qi lin九千芯片"},
+        });
+    }
 }
