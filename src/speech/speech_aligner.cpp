@@ -24,6 +24,7 @@
 #include "speech/late_reverb.hpp"
 #include "speech/latin_only_text.hpp"
 #include "speech/lenient_chain.hpp"
+#include "speech/line_among_voices.hpp"
 #include "speech/phone_chain.hpp"
 #include "speech/room_closures.hpp"
 #include "speech/run_together.hpp"
@@ -818,6 +819,17 @@ Timeline align_track(const FeatureTrack& track, const LoudnessProfile& loudness,
             has_moved_end = true;
         }
         if (!has_moved_end) throw error;
+    }
+    // A line among quieter voices, its text passed on the speech the profile finds: its syllables
+    // placed on the line alone, where the checks pass it there too.
+    if (!is_given && !options.lenient && options.sentence_cut == SentenceCutMode::automatic) {
+        if (const auto line = line_cut_among_voices(loudness, transcript, cut)) {
+            try {
+                result = align_cut(track, loudness, transcript, *line, progress, is_checked, options.lenient);
+            } catch (const AlignmentError&) {
+                // Refused on the line alone: the placement the checks passed stands.
+            }
+        }
     }
     return result.in_room ? std::move(*result.in_room) : std::move(result.checked);
 }

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -51,6 +52,13 @@ inline std::vector<float> mixed_at_snr(const std::vector<float>& speech, const s
     std::vector<float> mixed(speech.size());
     for (std::size_t i = 0; i < speech.size(); ++i) mixed[i] = static_cast<float>(0.7 * (speech[i] + gain * noise[i]));
     return mixed;
+}
+
+// `samples` with a headset's hiss under them (uniform, peak 1e-3, drawn the same on every run).
+inline void add_headset_hiss(std::vector<float>& samples) {
+    std::uint32_t state = 777u;
+    for (float& v : samples)
+        v += 1e-3f * (static_cast<float>((state = state * 1664525u + 1013904223u) >> 8) / 8388608.0f - 1.0f);
 }
 
 }  // namespace talkface::test

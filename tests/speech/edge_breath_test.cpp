@@ -62,10 +62,7 @@ TEST_SUITE("speech") {
         const double line_start_s = static_cast<double>(samples.size()) / rate_hz;
         samples.insert(samples.end(), line.begin(), line.end());
         samples.resize(samples.size() + static_cast<std::size_t>(0.3 * rate_hz), 0.0f);
-        std::uint32_t state = 777u;
-        for (float& v : samples)
-            v += 1e-3f *
-                 (static_cast<float>((state = state * 1664525u + 1013904223u) >> 8) / 8388608.0f - 1.0f);
+        test::add_headset_hiss(samples);
         const Timeline aligned = SpeechAligner().align(AudioView{samples.data(), samples.size(), 1, rate_hz},
                                                        load_transcript(test::clip_path("bare_line.txt")));
         REQUIRE(aligned.syllables.size() == 1);

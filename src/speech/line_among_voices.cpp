@@ -1,0 +1,96 @@
+#include "speech/line_among_voices.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "common/order_statistics.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+// A pause's length (sentence_cutter.cpp's kMinPauseS): sound from the recording's start shorter
+// than that before the speech is the line's own weak edge, and so is a shorter stretch left out.
+constexpr std::size_t kMinEdgeFrames = 12;
+constexpr double kLoudPercentile = 0.95;
+// Sound left out never comes this near the loud level: on session 28's short kinds, 3 dB left 9
+// tight lines' first syllables out against 5, 8 dB kept 22 babble lines' span starts within 50 ms
+// of the line against 24 (bench/README.md, session 29).
+constexpr float kNearLoudVoiceDb = 6.0f;
+// Read speech runs at 3-8 syllables per second (sentence_cutter.hpp): slower, the text cannot fill
+// its speech; faster, what is left cannot hold it.
+constexpr double kSlowestSyllablesPerSecond = 3.0;
+constexpr double kFastestSyllablesPerSecond = 8.0;
+
+// Whether the levels from `first` to `last` (read from the line back) rise kNearLoudVoiceDb over a
+// lower one nearer the line: a voice's syllables come and go, where a gain's lift climbs toward
+// the line within a few dB.
+template <typename Iterator>
+bool rises_again(Iterator first, Iterator last) {
+    float lowest_db = *first;
+    for (; first != last; ++first) {
+        if (*first >= lowest_db + kNearLoudVoiceDb) return true;
+        lowest_db = std::min(lowest_db, *first);
+    }
+    return false;
+}
+
+double frames_for(std::size_t syllables, double syllables_per_second) {
+    return static_cast<double>(syllables) / syllables_per_second / kFrameStepS;
+}
+
+}  // namespace
+
+FrameSpan line_among_quieter_voices(const LoudnessProfile& loudness, const FrameSpan& speech,
+                                    std::size_t syllables) {
+    const std::vector<float>& activity = loudness.activity_db;
+    if (speech.first_frame >= kMinEdgeFrames ||
+        static_cast<double>(speech.length()) <= frames_for(syllables, kSlowestSyllablesPerSecond))
+        return speech;
+    const auto at = [&](std::size_t frame) { return activity.begin() + static_cast<std::ptrdiff_t>(frame); };
+    const float loud_db =
+        percentile_of(std::vector<float>(at(speech.first_frame), at(speech.end_frame)), kLoudPercentile);
+    const float near_db = loud_db - kUnspokenSpeechBelowDb;
+    // The largest sum of a run: a quieter voice's loud moments join the line only where the dip
+    // between them is shorter than they are loud.
+    FrameSpan loud{speech.first_frame, speech.first_frame};
+    double best = 0.0, sum = 0.0;
+    std::size_t first = speech.first_frame;
+    for (std::size_t t = speech.first_frame; t < speech.end_frame; ++t) {
+        if (sum <= 0.0) sum = 0.0, first = t;
+        sum += static_cast<double>(activity[t] - near_db);
+        if (sum > best) best = sum, loud = {first, t + 1};
+    }
+    // Its first consonant is quieter: back to the foot of its rise.
+    std::size_t start = loud.first_frame;
+    while (start > speech.first_frame && activity[start - 1] < activity[start]) --start;
+    const FrameSpan line{start, speech.end_frame};
+    const bool is_quieter_voice =
+        loud.length() > 0 && start >= speech.first_frame + kMinEdgeFrames &&
+        *std::max_element(at(speech.first_frame), at(start)) < loud_db - kNearLoudVoiceDb &&
+        rises_again(std::make_reverse_iterator(at(start)),
+                    std::make_reverse_iterator(at(speech.first_frame))) &&
+        static_cast<double>(line.length()) >= frames_for(syllables, kFastestSyllablesPerSecond);
+    return is_quieter_voice ? line : speech;
+}
+
+std::optional<SentenceCut> line_cut_among_voices(const LoudnessProfile& loudness, const Timeline& transcript,
+                                                 const SentenceCut& cut) {
+    std::vector<std::size_t> syllables(transcript.sentences.size(), 0);
+    for (const auto& syllable : transcript.syllables) ++syllables.at(syllable.sentence);
+    const auto is_spoken = [](std::size_t count) { return count > 0; };
+    if (std::count_if(syllables.begin(), syllables.end(), is_spoken) != 1) return std::nullopt;
+    const auto k = static_cast<std::size_t>(std::find_if(syllables.begin(), syllables.end(), is_spoken) -
+                                            syllables.begin());
+    const FrameSpan line = line_among_quieter_voices(loudness, cut.spans.at(k), syllables[k]);
+    if (line.first_frame == cut.spans[k].first_frame) return std::nullopt;
+    // Sentences without a syllable before it sit at its start (place_spoken_spans) and move with it.
+    SentenceCut narrowed = cut;
+    for (FrameSpan& span : narrowed.spans)
+        if (span.length() == 0 && span.first_frame == cut.spans[k].first_frame)
+            span = {line.first_frame, line.first_frame};
+    narrowed.spans[k] = line;
+    return narrowed;
+}
+
+}  // namespace talkface::detail
