@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "audio/ffmpeg_source.hpp"
+#include "common/input_file.hpp"
 #include "common/number_format.hpp"
 #include "common/string_ends.hpp"
 #include "talkface/errors.hpp"
@@ -103,6 +104,17 @@ bool is_sndfile_container(const std::array<char, 12>& header) {
     const bool is_aiff = start.substr(0, 4) == "FORM" && (start.substr(8, 4) == "AIFF" || start.substr(8, 4) == "AIFC");
     return is_iff || is_aiff || start.substr(0, 4) == "riff" || start.substr(0, 4) == ".snd" ||
            start.substr(0, 4) == "dns." || start.substr(0, 4) == "caff" || start.substr(0, 4) == "OggS";
+}
+
+// The length a FLAC's first metadata block states when it is a STREAMINFO of another length than
+// the 34 bytes the format fixes, else nothing: FFmpeg's FLAC reader refused such a file as
+// "Invalid data found", as if it were no audio.
+std::optional<unsigned> wrong_streaminfo_length(const std::array<char, 12>& header) {
+    const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(header[i]); };
+    if (std::string_view(header.data(), 4) != "fLaC" || (byte(4) & 0x7F) != 0) return std::nullopt;
+    const unsigned length = byte(5) << 16 | byte(6) << 8 | byte(7);
+    if (length == 34) return std::nullopt;
+    return length;
 }
 
 // A voice message as WeChat and QQ save it (.silk, often named .amr or .slk): "#!SILK_V3", after a
@@ -248,6 +260,31 @@ std::optional<StaleDataSize> data_past_stated_size(const std::string& path) {
         at = end;
     }
     return std::nullopt;
+}
+
+// The data chunks of a RIFF WAV, in order: their start (the byte after their header) and size.
+// A WAV holds one; an editor that appends may write a second, which every reader skips (libsndfile
+// read the first half of such a file, and its transcript was refused as not its speech). Stops at a
+// placeholder size (0, 0xFFFFFFFF: the data runs to the end) or at a chunk past the end.
+std::vector<std::pair<std::uint64_t, std::uint64_t>> wav_data_chunks(const std::string& path) {
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> chunks;
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    if (!in) return chunks;
+    const auto file_bytes = static_cast<std::uint64_t>(in.tellg());
+    unsigned char head[8];
+    for (std::uint64_t at = 12; at + 8 <= file_bytes;) {
+        in.seekg(static_cast<std::streamoff>(at));
+        if (!in.read(reinterpret_cast<char*>(head), 8)) break;
+        const std::uint64_t size = read_le32(head + 4);
+        const std::uint64_t end = at + 8 + size + (size & 1);
+        if (std::memcmp(head, "data", 4) == 0) {
+            if (size == 0 || size >= 0x7FFFFFFFu) break;
+            chunks.emplace_back(at + 8, size);
+        }
+        if (end > file_bytes) break;
+        at = end;
+    }
+    return chunks;
 }
 
 // A RIFF WAV that libsndfile cannot open, refused for what its header says: it ends before its
@@ -487,14 +524,47 @@ std::string describe_lost_audio(const std::vector<LostAudio>& lost) {
     return format_fixed(lost_seconds(lost), 3) + " s of its sound could not be decoded, at " + where;
 }
 
+namespace {
+
+// "3.27e37": a sample's level past any scale, locale-independent, three digits.
+std::string scientific_text(double value) {
+    int exponent = static_cast<int>(std::floor(std::log10(std::fabs(value))));
+    // 9.999e33 rounds to 10.00: one more power of ten.
+    if (std::fabs(rounded(value / std::pow(10.0, exponent), 2)) >= 10.0) ++exponent;
+    return format_fixed(value / std::pow(10.0, exponent), 2) + "e" + std::to_string(exponent);
+}
+
+}  // namespace
+
 std::size_t AudioSource::read(float* mono, std::size_t max_frames) {
     const std::size_t frames = read_frames(mono, max_frames);
-    for (std::size_t i = 0; i < frames; ++i)
-        if (!std::isfinite(mono[i])) mono[i] = 0.0f;
+    for (std::size_t i = 0; i < frames; ++i) {
+        if (!std::isfinite(mono[i])) {
+            mono[i] = 0.0f;
+        } else if (std::fabs(mono[i]) > kMostSampleMagnitude) {
+            const double at_s = static_cast<double>(frames_read_ + i) / sample_rate_hz();
+            throw ParseError(
+                name(), 0, 0, "",
+                "a sample at " + format_fixed(at_s, 3) + " s reads " + scientific_text(mono[i]) +
+                    ", where a recording's samples lie within -1..1 (or an integer format's range, "
+                    "under 2^31): the file was written with a wrong scale or is damaged; scale it "
+                    "to -1..1 first");
+        }
+    }
+    frames_read_ += frames;
     return frames;
 }
 
 std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
+    // A named pipe nothing writes to blocked the open below for ever; one that is written to gave
+    // "Illegal seek", as a recording is read more than once (its first sound, then its features).
+    if (const NonFile kind = non_file_at(path); kind == NonFile::directory)
+        throw FileError(path, "a directory, not an audio file");
+    else if (kind != NonFile::none)
+        throw FileError(path,
+                        describe(kind) +
+                            ", not a file: talkface reads a recording more than once, which a pipe or a "
+                            "device cannot give; save the sound to a file first");
     std::array<char, 12> header{};
     {
         std::ifstream probe(path, std::ios::binary | std::ios::ate);
@@ -511,8 +581,23 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
             path, 0, 0, "",
             "a voice message in SILK v3, the codec of WeChat's and QQ's voice messages, which talkface "
             "cannot decode (nor can FFmpeg); convert it to WAV or MP3 with a SILK v3 decoder first");
+    if (const auto length = wrong_streaminfo_length(header))
+        throw ParseError(path, 0, 0, "",
+                         "the file is damaged: its FLAC header (STREAMINFO) states " +
+                             std::to_string(*length) + " bytes, where FLAC's is 34");
     if (!is_sndfile_container(header)) return open_ffmpeg_file(path);
     if (std::string_view(header.data(), 4) == "RIFF") {
+        if (const auto chunks = wav_data_chunks(path); chunks.size() > 1) {
+            std::uint64_t total_bytes = 0;
+            for (const auto& data : chunks) total_bytes += data.second;
+            throw ParseError(path, 0, 0, "",
+                             "its sound is in " + std::to_string(chunks.size()) +
+                                 " data chunks (a second at byte " + std::to_string(chunks[1].first - 8) +
+                                 "), where a WAV holds one: every reader takes the first (" +
+                                 std::to_string(chunks[0].second) + " of " + std::to_string(total_bytes) +
+                                 " bytes) and the speech after it would be lost; save the recording again "
+                                 "as one WAV from the program that made it");
+        }
         if (const auto stale = data_past_stated_size(path)) {
             FfmpegReading reading;
             reading.reads_past_stated_size = true;

@@ -75,6 +75,7 @@ public:
     // features of the rest of the recording into NaN.
     // \throws talkface::FileError when the data ends before the header said it would (a WAV's data
     //         size, a container's exact length for its sound track: MP4, a LAME-tagged MP3, FLAC).
+    // \throws talkface::ParseError for a sample past kMostSampleMagnitude, named with its time.
     std::size_t read(float* mono, std::size_t max_frames);
     virtual int sample_rate_hz() const = 0;
     // Frames the source says it has; progress is measured against it. For what FFmpeg reads it is
@@ -103,9 +104,16 @@ private:
     std::vector<LostAudio> lost_audio_;
     std::vector<CodecPause> codec_pauses_;
     std::vector<std::string> notes_;
+    std::size_t frames_read_ = 0;
     // read()'s frames as the source holds them, before non-numbers are made 0.
     virtual std::size_t read_frames(float* mono, std::size_t max_frames) = 0;
 };
+
+// The largest sample read() takes. A float recording holds -1..1, or an integer format's values
+// written as floats (a careless converter's), which reach 2^31 at most; past that no level means
+// anything, and the squares of samples near 1e34 overflowed a float: such a WAV was called "no
+// speech found", as if it held silence.
+constexpr float kMostSampleMagnitude = 4294967296.0f;
 
 // The sample rates and channel counts every reader accepts. A rate outside them is a damaged
 // header (a WAV stating 10^9 Hz reached libsamplerate, whose ratio stops at 256, as an internal

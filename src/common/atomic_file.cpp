@@ -7,9 +7,11 @@
 #include <sstream>
 
 #include <fcntl.h>
+#include <poll.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "common/input_file.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
@@ -17,6 +19,38 @@ namespace talkface::detail {
 namespace {
 
 std::string os_reason(int error_number) { return std::strerror(error_number); }
+
+// How long a pipe may keep its first byte: a process substitution's command (talkface align a.wav
+// <(opencc -i t.txt)) has its writer open at once, a named pipe nothing writes to never has one.
+constexpr int kPipeWaitMs = 10000;
+
+// Reads a pipe or a socket to its end, refusing one that gives nothing, not even its end, in
+// kPipeWaitMs: opened without waiting for a writer, then polled.
+std::string read_pipe(const std::string& path, const std::string& what) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK);
+    if (fd < 0) throw FileError(path, "cannot open: " + os_reason(errno));
+    pollfd ready{fd, POLLIN, 0};
+    if (::poll(&ready, 1, kPipeWaitMs) <= 0) {
+        ::close(fd);
+        throw FileError(path, "cannot read: " + what + " that nothing wrote to in " +
+                                  std::to_string(kPipeWaitMs / 1000) +
+                                  " s; give talkface the file itself, or start what writes the pipe first");
+    }
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+    std::string text;
+    char buffer[1 << 16];
+    for (ssize_t got; (got = ::read(fd, buffer, sizeof buffer)) != 0;) {
+        if (got < 0 && errno == EINTR) continue;
+        if (got < 0) {
+            const int saved = errno;
+            ::close(fd);
+            throw FileError(path, "cannot read: " + os_reason(saved));
+        }
+        text.append(buffer, static_cast<std::size_t>(got));
+    }
+    ::close(fd);
+    return text;
+}
 
 }  // namespace
 
@@ -56,6 +90,10 @@ void write_file_atomically(const std::string& path, std::string_view content) {
 }
 
 std::string read_file(const std::string& path) {
+    // A device (a terminal's /dev/stdin) is read as a file is: waiting on it is what was asked.
+    const NonFile kind = non_file_at(path);
+    if (kind == NonFile::directory) throw FileError(path, "cannot read: a directory, not a file");
+    if (kind == NonFile::pipe || kind == NonFile::socket) return read_pipe(path, describe(kind));
     errno = 0;
     std::ifstream in(path, std::ios::binary);
     if (!in) throw FileError(path, "cannot open: " + os_reason(errno != 0 ? errno : ENOENT));

@@ -15,7 +15,8 @@ namespace talkface::detail {
 // as it was, and talkface::FileError names the path and the OS reason.
 TALKFACE_API void write_file_atomically(const std::string& path, std::string_view content);
 
-// Reads a whole file. Throws talkface::FileError naming the path and the OS reason.
+// Reads a whole file, or a pipe to its end (a process substitution's). Throws talkface::FileError
+// naming the path and the OS reason, or a directory, or a pipe that gave nothing in 10 s.
 TALKFACE_API std::string read_file(const std::string& path);
 
 }  // namespace talkface::detail

@@ -1,8 +1,8 @@
 """Broken files of the kinds users have (issue 13, "Bad input"), made from the test data.
 
 Each maker writes one file into a folder and returns its path. test_bad_input.py runs them through
-the command, the C ABI and the Python module; bench/README.md's session 27 and 28 sections list what
-each gave.
+the command, the C ABI and the Python module; bench/README.md's session 27, 28 and 29 sections list
+what each gave.
 """
 
 import math
@@ -172,7 +172,82 @@ def audio_files():
         "noise_nb.amr": amr_noise(b"#!AMR\n", 0x3C, 31),
         "noise_wb.amr": amr_noise(b"#!AMR-WB\n", 0x44, 60),
         "cut_mid_frame.amr": amr_noise(b"#!AMR\n", 0x3C, 31)[:-15],
+        # Session 29: kinds the 72 lacked.
+        "bad_header.opus": opus_with_channels(read(os.path.join(AUDIO, "voice.opus")), 0),
+        "bad_header.webm": webm_with_doc_type(read(os.path.join(AUDIO, "clip.webm")), b"xxxx"),
+        "two_data_chunks.wav": two_data_chunks(good),
+        "fmt_after_data.wav": fmt_after_data(good),
+        "voice.aiff": aiff_bytes(voice),
+        "voice.caf": caf_bytes(voice),
+        "streaminfo_length.flac": flac[:5] + (100).to_bytes(3, "big") + flac[8:],
     }
+
+
+def two_data_chunks(wav):
+    """`wav` with its data split in two data chunks, as an editor that appends writes it."""
+    at = wav.index(b"data")
+    data = wav[at + 8 :]
+    half = len(data) // 4 * 2
+    body = b"WAVE" + wav[12:at] + chunk(b"data", data[:half]) + chunk(b"data", data[half:])
+    return b"RIFF" + struct.pack("<I", len(body)) + body
+
+
+def fmt_after_data(wav):
+    """`wav` with its fmt chunk after its data chunk."""
+    fmt_at = wav.index(b"fmt ")
+    data_at = wav.index(b"data")
+    return wav[:fmt_at] + wav[data_at:] + wav[fmt_at:data_at]
+
+
+def ogg_crc(page):
+    """The CRC of an Ogg page (its CRC field zero): polynomial 0x04C11DB7, not reflected."""
+    crc = 0
+    for byte in page:
+        crc ^= byte << 24
+        for _ in range(8):
+            crc = (crc << 1) ^ 0x04C11DB7 if crc & 0x80000000 else crc << 1
+        crc &= 0xFFFFFFFF
+    return crc
+
+
+def opus_with_channels(opus, channels):
+    """`opus` with its OpusHead stating `channels`, its first page's CRC made right again: a header
+    that is damaged, not a page."""
+    data = bytearray(opus)
+    head = data.index(b"OpusHead")
+    data[head + 9] = channels
+    page_end = data.index(b"OggS", 4)
+    data[22:26] = b"\x00" * 4
+    data[22:26] = struct.pack("<I", ogg_crc(bytes(data[:page_end])))
+    return bytes(data)
+
+
+def webm_with_doc_type(webm, doc_type):
+    """`webm` with the DocType of its EBML header ("webm") replaced."""
+    at = webm.index(b"webm")
+    return webm[:at] + doc_type + webm[at + 4 :]
+
+
+def extended80(value):
+    """An 80-bit IEEE 754 extended float (AIFF's sample rate) of a positive integer."""
+    exponent = value.bit_length() - 1
+    return struct.pack(">HQ", 16383 + exponent, value << (63 - exponent))
+
+
+def aiff_bytes(samples, rate_hz=16000):
+    """An AIFF (Apple's WAV, big-endian 16-bit) of `samples`."""
+    comm = struct.pack(">hIh", 1, len(samples), 16) + extended80(rate_hz)
+    ssnd = struct.pack(">II", 0, 0) + struct.pack(">%dh" % len(samples), *samples)
+    body = b"AIFF" + b"COMM" + struct.pack(">I", len(comm)) + comm + b"SSND" + struct.pack(">I", len(ssnd)) + ssnd
+    return b"FORM" + struct.pack(">I", len(body)) + body
+
+
+def caf_bytes(samples, rate_hz=16000):
+    """A CAF (Core Audio Format, iPhone's voice memos' container) of 16-bit `samples`."""
+    desc = struct.pack(">d4sIIIII", rate_hz, b"lpcm", 0x2, 2, 1, 1, 16)  # flags: little-endian
+    data = struct.pack(">I", 0) + pcm16(samples)
+    return (b"caff" + struct.pack(">HH", 1, 0) + b"desc" + struct.pack(">q", len(desc)) + desc + b"data" +
+            struct.pack(">q", len(data)) + data)
 
 
 def mp3_with_stated_frames(mp3, scale):
@@ -242,6 +317,10 @@ def transcript_files():
         "cr_only.txt": "小朋友們在公園裡\r放風箏。\r".encode(),
         "bom_in_middle.txt": "小朋友們在公園裡\ufeff放風箏。\n".encode(),
         "nul_bytes.txt": "小朋友們在公園裡\0放風箏。\n".encode(),
+        # Session 29: kinds the seventeen lacked.
+        "punctuation_emoji.txt": "🎉！！😀……。🙏？".encode(),
+        "wav_as_transcript.txt": read(os.path.join(SPEECH, "one_sentence.wav")),
+        "png_as_transcript.txt": b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", b"\x00" * 13) + bytes(range(256)) * 4,
     }
 
 

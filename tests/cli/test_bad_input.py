@@ -56,7 +56,7 @@ AUDIO = {
     "extensible_pcm24.wav": OK,
     "extensible_float32_nan_inf.wav": OK,
     "float64_nan_inf.wav": OK,
-    "float32_huge.wav": "no speech found",
+    "float32_huge.wav": "where a recording's samples lie within -1..1",
     "list_8mb.wav": OK,
     "list_past_end.wav": "truncated: the file ends after 98952 bytes, inside its header",
     "cut_mid_frame_tagged.mp3": "truncated: its header says the sound lasts",
@@ -72,6 +72,14 @@ AUDIO = {
     "noise_nb.amr": OK,
     "noise_wb.amr": OK,
     "cut_mid_frame.amr": OK,
+    # Session 29's kinds.
+    "bad_header.opus": "no audio stream in the ogg file",
+    "bad_header.webm": OK,
+    "two_data_chunks.wav": "its sound is in 2 data chunks (a second at byte 49492), where a WAV holds one",
+    "fmt_after_data.wav": OK,
+    "voice.aiff": OK,
+    "voice.caf": OK,
+    "streaminfo_length.flac": "the file is damaged: its FLAC header (STREAMINFO) states 100 bytes, where FLAC's is 34",
 }
 # Audio aligned with a warning that names the file: a part of the warning after the path.
 WARNED = {
@@ -104,9 +112,12 @@ TRANSCRIPTS = {
     "cr_only.txt": (OK, OK),
     "bom_in_middle.txt": (OK, OK),
     "nul_bytes.txt": (OK, OK),
+    "punctuation_emoji.txt": (OK, "no syllables to align"),
+    "wav_as_transcript.txt": ("not UTF-8", "not UTF-8"),
+    "png_as_transcript.txt": ("not UTF-8", "not UTF-8"),
 }
 # Transcripts `syllables` lists nothing of: it says so.
-NO_SENTENCE = {"empty.txt", "whitespace.txt", "punctuation.txt", "emoji_only.txt"}
+NO_SENTENCE = {"empty.txt", "whitespace.txt", "punctuation.txt", "emoji_only.txt", "punctuation_emoji.txt"}
 FACES = {
     "point_missing.xml": "missing 1 point",
     "point_duplicated.xml": "defined twice",
@@ -245,3 +256,100 @@ def test_faces_through_render_and_animate(files, tmp_path, name):
 @pytest.mark.parametrize("name", sorted(FACES))
 def test_faces_through_c_and_python(files, interface, name):
     check_probe(probe(interface, "face", files[name]), files[name], FACES[name])
+
+
+# Paths that are no file, or a file with a name or a mode of its own (session 29): each is read, or
+# refused naming the path and what it is.
+PIPE_WAIT_S = 10  # read_file's wait for a pipe's first byte (common/atomic_file.cpp)
+
+
+@pytest.fixture(scope="module")
+def odd_paths(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("odd_paths")
+    spaced = folder / "空 格 目錄"
+    spaced.mkdir()
+    paths = {
+        "directory": str(folder / "a_directory"),
+        "fifo": str(folder / "fifo"),
+        "spaced_audio": str(spaced / "語音 檔.wav"),
+        "spaced_transcript": str(spaced / "文字 稿.txt"),
+        "spaced_cut": str(spaced / "剪 斷.wav"),
+        "no_permission_audio": str(folder / "no_permission.wav"),
+        "no_permission_transcript": str(folder / "no_permission.txt"),
+    }
+    os.mkdir(paths["directory"])
+    os.mkfifo(paths["fifo"])
+    bad_inputs.write(str(spaced), "語音 檔.wav", bad_inputs.read(VOICE))
+    bad_inputs.write(str(spaced), "文字 稿.txt", bad_inputs.read(TRANSCRIPT))
+    bad_inputs.write(str(spaced), "剪 斷.wav", bad_inputs.read(VOICE)[:30])
+    for name in ("no_permission_audio", "no_permission_transcript"):
+        source = VOICE if name.endswith("audio") else TRANSCRIPT
+        bad_inputs.write(str(folder), os.path.basename(paths[name]), bad_inputs.read(source))
+        os.chmod(paths[name], 0)
+    return paths
+
+
+# What the command and the library say of a path that is no file. The command's own check (CLI11's)
+# refuses a directory before the library sees it, as a usage error (exit 2).
+NO_FILE_AUDIO = {"directory": "directory", "fifo": "a named pipe (FIFO), not a file"}
+NO_FILE_TEXT = {"directory": "a directory", "fifo": "a named pipe (FIFO) that nothing wrote to in %d s" % PIPE_WAIT_S}
+
+
+def check_refused(result, path, reason):
+    assert result.returncode in (1, 2), result.stderr
+    assert path in result.stderr and reason in result.stderr, result.stderr
+
+
+@pytest.mark.parametrize("kind", sorted(NO_FILE_AUDIO))
+def test_no_file_as_audio(odd_paths, kind):
+    """A directory or a named pipe given as the recording: on main a pipe nothing wrote to blocked
+    the command, the C ABI and Python for ever."""
+    path = odd_paths[kind]
+    check_refused(command("align", "-q", path, TRANSCRIPT), path, NO_FILE_AUDIO[kind])
+    for interface in INTERFACES:
+        check_probe(probe(interface, "audio", path, TRANSCRIPT), path, NO_FILE_AUDIO[kind])
+
+
+@pytest.mark.parametrize("kind", sorted(NO_FILE_TEXT))
+def test_no_file_as_transcript_or_face(odd_paths, kind):
+    """A directory given as the transcript loaded as an empty one through C and Python on main, and
+    as a face said "the file is empty"; a named pipe nothing wrote to blocked."""
+    path = odd_paths[kind]
+    check_refused(command("syllables", path), path, NO_FILE_TEXT[kind])
+    for interface in INTERFACES:
+        check_probe(probe(interface, "transcript", path), path, NO_FILE_TEXT[kind])
+        check_probe(probe(interface, "face", path), path, NO_FILE_TEXT[kind])
+
+
+def test_pipe_with_a_writer_is_read_as_a_transcript():
+    """A process substitution's pipe (talkface align a.wav <(cat t.txt)) is read to its end."""
+    read_end, write_end = os.pipe()
+    with open(write_end, "wb") as writer:
+        writer.write(bad_inputs.read(TRANSCRIPT))
+    result = subprocess.run(
+        [CLI, "align", "-q", "--json", VOICE, "/dev/fd/%d" % read_end], capture_output=True, text=True, timeout=TIMEOUT_S,
+        pass_fds=(read_end,),
+    )
+    os.close(read_end)
+    assert result.returncode == 0, result.stderr
+    assert len(json.loads(result.stdout)["syllables"]) == 11
+
+
+def test_paths_with_spaces_and_chinese(odd_paths):
+    audio, transcript, cut = odd_paths["spaced_audio"], odd_paths["spaced_transcript"], odd_paths["spaced_cut"]
+    check_command(command("align", "-q", "--json", audio, transcript), audio, OK)
+    check_command(command("align", "-q", "--json", cut, transcript), cut, "truncated")
+    for interface in INTERFACES:
+        check_probe(probe(interface, "audio", audio, transcript), audio, OK)
+        check_probe(probe(interface, "audio", cut, transcript), cut, "truncated")
+
+
+def test_unreadable_files(odd_paths):
+    """chmod 000: refused as such, or read where the tests run as root (who reads it all the same)."""
+    audio, transcript = odd_paths["no_permission_audio"], odd_paths["no_permission_transcript"]
+    reason = OK if os.geteuid() == 0 else "Permission denied"
+    check_command(command("align", "-q", "--json", audio, TRANSCRIPT), audio, reason)
+    check_command(command("syllables", transcript), transcript, reason)
+    for interface in INTERFACES:
+        check_probe(probe(interface, "audio", audio, TRANSCRIPT), audio, reason)
+        check_probe(probe(interface, "transcript", transcript), transcript, reason)
