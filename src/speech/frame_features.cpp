@@ -393,9 +393,9 @@ InvalidArgument silent_recording(const AudioSource& source, double duration_s, f
 
 }  // namespace
 
-std::optional<std::vector<float>> read_first_sound(AudioSource& source) {
+FirstSound read_first_sound(AudioSource& source) {
     const auto most_held = static_cast<std::size_t>(kMostHeldSilenceS * source.sample_rate_hz());
-    std::vector<float> held;
+    FirstSound first;
     std::vector<float> block(kBlockFrames);
     std::size_t frames_read = 0;
     float peak = 0.0f;
@@ -403,6 +403,7 @@ std::optional<std::vector<float>> read_first_sound(AudioSource& source) {
     for (;;) {
         const std::size_t count = source.read(block.data(), block.size());
         if (count == 0) break;
+        first.silent_frames = frames_read;
         frames_read += count;
         const float block_peak =
             *std::max_element(block.begin(), block.begin() + static_cast<std::ptrdiff_t>(count),
@@ -410,14 +411,21 @@ std::optional<std::vector<float>> read_first_sound(AudioSource& source) {
         peak = std::max(peak, std::fabs(block_peak));
         is_held = is_held && frames_read <= most_held;
         if (is_held)
-            held.insert(held.end(), block.begin(), block.begin() + static_cast<std::ptrdiff_t>(count));
+            first.held.insert(first.held.end(), block.begin(),
+                              block.begin() + static_cast<std::ptrdiff_t>(count));
         if (peak >= kSilentPeak) {
-            if (!is_held) return std::nullopt;
-            return held;
+            if (!is_held) first.held.clear();
+            return first;
         }
     }
     if (frames_read == 0) throw InvalidArgument(source.name(), "empty audio: no frames");
     throw silent_recording(source, static_cast<double>(frames_read) / source.sample_rate_hz(), peak);
+}
+
+std::size_t silence_to_skip(const FirstSound& first, int sample_rate_hz) {
+    const double skipped_s = static_cast<double>(first.silent_frames) / sample_rate_hz - kMostHeldSilenceS;
+    if (!first.held.empty() || skipped_s <= 0.0) return 0;
+    return static_cast<std::size_t>(skipped_s * kAnalysisRateHz / kHopSamples) * kHopSamples;
 }
 
 FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)>& on_progress,

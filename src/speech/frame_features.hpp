@@ -122,14 +122,27 @@ FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)
                            bool with_pitch = false, std::size_t skipped_samples = 0,
                            const std::vector<float>& read_first = {});
 
+// What read_first_sound read of a recording up to its first sound.
+struct FirstSound {
+    // The samples read, for analyze_audio's `read_first`, where they are kMostHeldSilenceS or less
+    // of the recording; else empty, and the caller reads the recording again from its start.
+    std::vector<float> held;
+    // The source's frames before the block that holds the first sound, all of them silent.
+    std::size_t silent_frames = 0;
+};
+
 // Reads `source` up to its first block (as analyze_audio reads it) that holds a sample loud enough
 // for speech, so that a silent recording is refused in the time it takes to read it, in one
 // block's memory, without its features: a 10-hour silent WAV took 302 s and 496 MB to be refused
-// (bench/README.md, Session 27), the features of its frames. Returns the samples read, for
-// analyze_audio's `read_first`, where they are kMostHeldSilenceS or less of the recording; nullopt
-// where more silence came first (the caller reads the recording again from its start).
+// (bench/README.md, Session 27), the features of its frames.
 // \throws talkface::InvalidArgument naming the audio, as analyze_audio does, if it is silent.
-std::optional<std::vector<float>> read_first_sound(AudioSource& source);
+FirstSound read_first_sound(AudioSource& source);
+
+// The samples at kAnalysisRateHz, a whole number of frame hops, that a reading may leave out of
+// the silence read_first_sound found before a recording's first sound: all of it but the last
+// kMostHeldSilenceS, which the noise floor and the first pause are measured in. 10 hours of
+// silence before a click were analysed whole (317 MB of features, minutes); 0 where it is held.
+std::size_t silence_to_skip(const FirstSound& first, int sample_rate_hz);
 
 // The silence read_first_sound holds for analyze_audio before it reads the recording again: a
 // minute, 11 MB at 48 kHz.

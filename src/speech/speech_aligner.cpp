@@ -901,23 +901,36 @@ AlignOptions options_after_skip(AlignOptions options, double skipped_s) {
     return options;
 }
 
+// Calls `change` on each time `timeline` holds: its sentences', syllables' (their finals' too) and
+// mismatches' edges, and its duration.
+template <typename Change>
+void change_times(Timeline& timeline, const Change& change) {
+    for (Sentence& sentence : timeline.sentences) {
+        change(sentence.start_s);
+        change(sentence.end_s);
+    }
+    for (Syllable& syllable : timeline.syllables) {
+        change(syllable.start_s);
+        change(syllable.end_s);
+        if (syllable.final_start_s) change(*syllable.final_start_s);
+    }
+    for (TextMismatch& mismatch : timeline.mismatches) {
+        change(mismatch.start_s);
+        change(mismatch.end_s);
+    }
+    change(timeline.duration_s);
+}
+
 // A timeline found on a reading that left `skipped_s` of the recording out, moved onto the
 // recording's times.
 void move_onto_recording(Timeline& timeline, double skipped_s) {
-    for (Sentence& sentence : timeline.sentences) {
-        sentence.start_s += skipped_s;
-        sentence.end_s += skipped_s;
-    }
-    for (Syllable& syllable : timeline.syllables) {
-        syllable.start_s += skipped_s;
-        syllable.end_s += skipped_s;
-        if (syllable.final_start_s) *syllable.final_start_s += skipped_s;
-    }
-    for (TextMismatch& mismatch : timeline.mismatches) {
-        mismatch.start_s += skipped_s;
-        mismatch.end_s += skipped_s;
-    }
-    timeline.duration_s += skipped_s;
+    change_times(timeline, [skipped_s](double& time_s) { time_s += skipped_s; });
+}
+
+// A timeline's times to the microsecond, where hours of silence were left out before them: a frame's
+// 60.57 s moved by 10740 s read 10800.570000000002, where the reading of the whole file gives 10800.57.
+void round_to_microseconds(Timeline& timeline) {
+    change_times(timeline, [](double& time_s) { time_s = rounded(time_s, 6); });
 }
 
 // Aligns the whole of the recording `open` gives. A file its reader found damaged (sound it could
@@ -956,10 +969,11 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
     ProgressReporter progress(callback);
     progress.report(0.0, "reading");
     std::unique_ptr<AudioSource> source = open();
-    const std::optional<std::vector<float>> read_first = read_first_sound(*source);
-    if (!read_first) source = open();
-    FeatureTrack track =
-        read_features(*source, progress, options.lenient, 0, read_first ? *read_first : std::vector<float>{});
+    const FirstSound first = read_first_sound(*source);
+    const std::size_t silence_skipped = silence_to_skip(first, source->sample_rate_hz());
+    const double silence_skipped_s = static_cast<double>(silence_skipped) / kAnalysisRateHz;
+    if (first.held.empty()) source = open();
+    FeatureTrack track = read_features(*source, progress, options.lenient, silence_skipped, first.held);
     const LoudnessProfile loudness = conceal_dropouts(track);
     const std::string lost = describe_lost_audio(source->lost_audio());
     std::string notes;
@@ -969,7 +983,10 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
         const bool is_voted = options.check == CheckMode::refuse && !options.lenient;
         std::optional<AlignmentError> first_refusal;
         try {
-            result = align_witnessed(open, track, loudness, 0, transcript, options, given_spans, progress);
+            result = align_witnessed(open, track, loudness, silence_skipped, transcript,
+                                     options_after_skip(options, silence_skipped_s),
+                                     spans_after_skip(given_spans, silence_skipped_s), progress);
+            move_onto_recording(result, silence_skipped_s);
         } catch (const AlignmentError& refusal) {
             if (!is_voted) throw;
             first_refusal = refusal;
@@ -981,8 +998,9 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
             std::size_t refusals = first_refusal ? 1 : 0, alignments = first_refusal ? 0 : 1;
             std::optional<AlignmentError> other_refusal;
             std::optional<Timeline> other_alignment;
-            for (const std::size_t skipped : kOtherPhaseSkips) {
+            for (const std::size_t phase_skipped : kOtherPhaseSkips) {
                 if (refusals >= 2 || alignments >= 2) break;
+                const std::size_t skipped = silence_skipped + phase_skipped;
                 const double skipped_s = static_cast<double>(skipped) / kAnalysisRateHz;
                 std::unique_ptr<AudioSource> again = open();
                 FeatureTrack other = read_features(*again, progress, !track.pitch.empty(), skipped);
@@ -1005,6 +1023,9 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
             if (first_refusal) result = std::move(*other_alignment);
         }
     } catch (const AlignmentError& error) {
+        if (silence_skipped > 0)
+            notes += " (its times count from " + format_fixed(silence_skipped_s, 3) +
+                     " s: the digital silence before the recording's first sound was left out)";
         if (lost.empty() && notes.empty()) throw;
         if (lost.empty()) throw AlignmentError(error.what() + notes);
         if (lost_seconds(source->lost_audio()) < kLostAudioNamedFirstS)
@@ -1020,6 +1041,7 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
     for (const std::string& note : source->notes()) result.warnings.push_back(source->name() + ": " + note);
     if (unconfirmable && options.check != CheckMode::off)
         result.warnings.push_back("the transcript cannot be checked against the audio: " + *unconfirmable);
+    if (silence_skipped > 0) round_to_microseconds(result);
     progress.report_done();
     return result;
 }

@@ -296,6 +296,19 @@ def ten_hour_silence(folder, name="ten_hours_silent.wav", rate_hz=16000):
     return path
 
 
+def silence_then_voice(folder, hours, name="silence_then_voice.wav"):
+    """A WAV of `hours` of silence, sparse on disk, then one_sentence's voice: a recorder left
+    running before the speech."""
+    voice = pcm16(speech_samples())
+    silence_size = int(hours * 3600) * 16000 * 2
+    path = write(folder, name, wav_bytes(b"", data_size=silence_size + len(voice)))
+    with open(path, "ab") as f:
+        f.truncate(os.path.getsize(path) + silence_size)
+        f.seek(0, os.SEEK_END)
+        f.write(voice)
+    return path
+
+
 # Transcripts: name -> bytes.
 def transcript_files():
     return {

@@ -185,22 +185,49 @@ def test_audio_through_align(files, name):
     check_command(result, files[name], AUDIO[name], WARNED.get(name))
 
 
+def peak_of_command(*args):
+    """The command's exit code, peak memory in kB (as its parent sees it: a process of its own, so no
+    other child counts), stdout and stderr."""
+    measure = (
+        "import resource, subprocess, sys; r = subprocess.run(sys.argv[1:], capture_output=True, text=True); "
+        "print(r.returncode, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss); "
+        "sys.stderr.write(r.stderr); sys.stderr.write(chr(0)); sys.stderr.write(r.stdout)"
+    )
+    result = subprocess.run([sys.executable, "-c", measure, CLI, *args], capture_output=True, text=True, timeout=TIMEOUT_S)
+    returncode, peak_kb = map(int, result.stdout.split())
+    stderr, stdout = result.stderr.split(chr(0), 1)
+    return returncode, peak_kb, stdout, stderr
+
+
 def test_long_silence_refused_early_in_bounded_memory(tmp_path):
     """A 10-hour silent WAV (1.15 GB, sparse) is refused when its samples are read, before any
     features: main took 302 s and 496 MB (bench/README.md, Session 27), past this test's timeout."""
     path = bad_inputs.ten_hour_silence(str(tmp_path))
-    # The command's peak memory, as its parent sees it: a process of its own, so no other child counts.
-    measure = (
-        "import resource, subprocess, sys; r = subprocess.run(sys.argv[1:], capture_output=True, text=True); "
-        "print(r.returncode, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss); sys.stderr.write(r.stderr)"
-    )
-    result = subprocess.run(
-        [sys.executable, "-c", measure, CLI, "align", "-q", path, TRANSCRIPT], capture_output=True, text=True, timeout=TIMEOUT_S
-    )
-    returncode, peak_kb = map(int, result.stdout.split())
-    assert returncode == 1, result.stderr
-    assert "talkface: error: " + path + ": silent: the loudest sample of its 36000 s is all zero" in result.stderr
+    returncode, peak_kb, _, stderr = peak_of_command("align", "-q", path, TRANSCRIPT)
+    assert returncode == 1, stderr
+    assert "talkface: error: " + path + ": silent: the loudest sample of its 36000 s is all zero" in stderr
     assert peak_kb < 200 * 1024, peak_kb
+
+
+# Main's peak on the three hours: 340 MB; the last minute's and the speech's: 20 MB.
+PEAK_AFTER_SILENCE_KB = 100 * 1024
+
+
+def test_long_silence_before_the_voice_left_out(tmp_path):
+    """Three hours of digital silence, then the voice: all of the silence but its last minute is
+    left out of the analysis, the times counted on the recording's clock. Main analysed it whole,
+    its features growing with the silence (340 MB here; 10 hours then a click: 875 MB, bench/README.md
+    Session 29)."""
+    hours = 3
+    path = bad_inputs.silence_then_voice(str(tmp_path), hours)
+    returncode, peak_kb, stdout, stderr = peak_of_command("align", "-q", "--json", path, TRANSCRIPT)
+    assert returncode == 0, stderr
+    alone = json.loads(command("align", "-q", "--json", VOICE, TRANSCRIPT).stdout)["syllables"]
+    found = json.loads(stdout)["syllables"]
+    assert [s["text"] for s in found] == [s["text"] for s in alone]
+    for syllable, own in zip(found, alone):
+        assert abs(syllable["start"] - hours * 3600 - own["start"]) < 0.05, (syllable, own)
+    assert peak_kb < PEAK_AFTER_SILENCE_KB, peak_kb
 
 
 @pytest.mark.parametrize("name", sorted(name for name, reason in AUDIO.items() if reason is not OK))

@@ -38,10 +38,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         // a silent file), then the analysis, which sizes its buffers by the length the header states,
         // which a damaged header makes huge (a FLAC's sample count threw bad_alloc).
         auto again = talkface::detail::open_audio_file(path);
-        const auto read_first = talkface::detail::read_first_sound(*again);
-        if (!read_first) again = talkface::detail::open_audio_file(path);
-        const talkface::detail::FeatureTrack track = talkface::detail::analyze_audio(
-            *again, {}, false, 0, read_first ? *read_first : std::vector<float>{});
+        const auto first = talkface::detail::read_first_sound(*again);
+        const std::size_t skipped = talkface::detail::silence_to_skip(first, again->sample_rate_hz());
+        if (first.held.empty()) again = talkface::detail::open_audio_file(path);
+        const talkface::detail::FeatureTrack track =
+            talkface::detail::analyze_audio(*again, {}, false, skipped, first.held);
         for (const float value : track.values)
             if (!std::isfinite(value)) std::abort();
     } catch (const talkface::Error&) {
