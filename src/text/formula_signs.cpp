@@ -124,9 +124,10 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
     const char32_t right = value_at(text, after);
     const bool is_han_left = left >= 0x3400 && left <= 0x9FFF;
     const bool is_han_right = right >= 0x3400 && right <= 0x9FFF;
-    // A relation's right side may be a signed term (x=-2 x等于负二, -3<-1 负三小于负一): the sign is
-    // the number's, read with it.
-    const bool signed_right = (is_dash(right) || right == '+') && is_formula_term(value_at(text, after + 1));
+    // A relation's right side may be a signed term (x=-2 x等于负二, -3<-1 负三小于负一, x=±3 x等于正负三;
+    // session 28: the = before ± was unsaid): the sign is the number's, read with it.
+    const bool signed_right =
+        (is_dash(right) || is_one_of(right, U"+\u00B1")) && is_formula_term(value_at(text, after + 1));
     const bool relation_right = is_formula_term(right) || signed_right;
     const bool between_terms = is_formula_term(left) && is_formula_term(right);
     switch (sign) {

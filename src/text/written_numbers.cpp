@@ -426,7 +426,10 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
         }
         // A version's part after the point is a number (Python 3.12 三点十二, as 10.15.7 is 十点十五点七);
         // a decimal's digits are said one by one (3.12 三点一二).
-        const bool counts = context.has_unit || takes_liang(context.next) || context.next == '%';
+        // 下 after a version is the setting it runs under (在Python 3.12下运行), no count of strokes: a
+        // count of strokes is whole (session 28: 三点一二).
+        const bool counts =
+            context.has_unit || (takes_liang(context.next) && context.next != U'下') || context.next == '%';
         if (context.is_version && !counts && whole.size() <= kMostCardinalDigits && number.fraction.size() >= 2 &&
             number.fraction.size() <= kMostCardinalDigits && number.fraction.front() != '0') {
             said.words = cardinal_words(whole, false) + "点" + cardinal_words(number.fraction, false);
@@ -577,6 +580,13 @@ std::string per_unit_words(const std::vector<CodePoint>& text, std::size_t& end)
     if (!divisor_words.empty() || !takes_liang(value_at(text, k))) return "";
     end = k;
     return "每";
+}
+
+// 升 at text[i] after a number is litres (2升水, 每天饮水2升为宜) but begins a verb before 到 至 级
+// (显卡从RTX 2060升到了3060): the number measures nothing there (session 28: 两千零六十, a card's digits
+// counted).
+bool begins_rise(const std::vector<CodePoint>& text, std::size_t i) {
+    return is_one_of(value_at(text, i), U"升昇") && is_one_of(value_at(text, i + 1), U"到至级級");
 }
 
 // A relation sign after text[end] (spaces allowed): the numbers before it are a lesson's terms.
@@ -898,10 +908,11 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         numbers.size() == 1 && unit == nullptr && currency == nullptr && power_words.empty()
             ? chat_magnitude(text, end)
             : std::string_view{};
-    context.next = chat_letter.empty()     ? value_at(text, numbers.back().end)
-                   : chat_letter == "万"   ? U'万'
-                   : chat_letter == "公里" ? U'公'
-                                           : U'千';
+    context.next = begins_rise(text, numbers.back().end) ? 0
+                   : chat_letter.empty()                 ? value_at(text, numbers.back().end)
+                   : chat_letter == "万"                 ? U'万'
+                   : chat_letter == "公里"               ? U'公'
+                                                         : U'千';
     context.is_count_over = chat_letter.empty() && context.next == '+' &&
                             !is_digit_at(text, numbers.back().end + 1) &&
                             !is_ascii_letter(value_at(text, numbers.back().end + 1));

@@ -1555,6 +1555,17 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("session 28's leftovers: = before ±, a version before 下, a card's number before 升到") {
+        check_cases({
+            {"方程的解为x=±3", "方程的解为 ai ke si等于正负三"},
+            {"这个脚本在Python 3.11下运行", "这个脚本在 pai san三点十一下运行"},
+            {"他的显卡从RTX 2060升到了3060", "他的显卡从 a er ti ai ke si二零六零升到了三零六零"},
+            // The limits: a decimal before 下 stays a decimal, litres stay litres.
+            {"指数收在3.11下方", "指数收在三点一一下方"},
+            {"每天饮水2升为宜", "每天饮水两升为宜"},
+        });
+    }
+
     TEST_CASE("the dot in a lineage's name ends no sentence") {
         CHECK(read_transcript("目前流行的主要毒株为XBB.1.5。后来又出现了新的毒株。").sentences.size() == 2);
         CHECK(said("毒株为XBB.1.5。") == "毒株为 ai ke si bi bi一点五");
