@@ -6,6 +6,7 @@
 
 #include "text/dates_and_times.hpp"
 #include "text/digit_codes.hpp"
+#include "text/figure_numbers.hpp"
 #include "text/number_words.hpp"
 #include "text/script_marks.hpp"
 #include "text/units_and_money.hpp"
@@ -786,6 +787,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (auto floor = read_floor(text, i, number)) return floor;
         if (auto date = read_numeric_date(text, number)) return date;
         if (auto season = read_season(text, number)) return season;
+        if (auto figure = read_figure_number(text, start, number)) return figure;
         if (auto record = read_game_record(text, start, number)) return record;
         if (auto height = read_feet_and_inches(text, start, number)) return height;
         if (auto time = read_primed_time(text, number)) {

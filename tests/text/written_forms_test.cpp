@@ -1566,6 +1566,17 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("a figure's or a table's number in a textbook") {
+        check_cases({
+            {"如图3-2所示", "如图三杠二所示"},
+            {"由表2-1可知", "由表二杠一可知"},
+            {"见图1-4，", "见图一杠四"},
+            // The limits: a range that counts after 表 stays one.
+            {"发表3-5篇论文", "发表三到五篇论文"},
+            {"代表3-5人", "代表三到五人"},
+        });
+    }
+
     TEST_CASE("the dot in a lineage's name ends no sentence") {
         CHECK(read_transcript("目前流行的主要毒株为XBB.1.5。后来又出现了新的毒株。").sentences.size() == 2);
         CHECK(said("毒株为XBB.1.5。") == "毒株为 ai ke si bi bi一点五");

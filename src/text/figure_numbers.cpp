@@ -1,0 +1,36 @@
+#include "text/figure_numbers.hpp"
+
+#include "text/number_words.hpp"
+
+namespace talkface::detail {
+
+std::optional<SpokenForm> read_figure_number(const std::vector<CodePoint>& text, std::size_t start,
+                                             const WrittenNumber& first) {
+    constexpr std::size_t kMostParts = 3;
+    constexpr std::size_t kMostDigits = 2;
+    if (start == 0 || !is_one_of(text[start - 1].value, U"图圖表式") || first.has_point ||
+        first.has_separators || first.whole.size() > kMostDigits || !is_dash(value_at(text, first.end)) ||
+        !is_digit_at(text, first.end + 1))
+        return std::nullopt;
+    SpokenForm form;
+    form.words = cardinal_words(first.whole, false);
+    auto i = first.end;
+    std::size_t parts = 1;
+    while (parts < kMostParts && is_dash(value_at(text, i)) && is_digit_at(text, i + 1)) {
+        auto k = i + 1;
+        const auto part = digits_from(text, k);
+        if (part.size() > kMostDigits) return std::nullopt;
+        form.words += "杠" + cardinal_words(part, false);
+        i = k;
+        ++parts;
+    }
+    const auto after = value_at(text, i);
+    // 所 of 如图3-2所示 is no measure word (300多所学校).
+    const bool measures = takes_liang(after) && text_between(text, i, i + 2) != "所示";
+    if (is_digit_at(text, i) || is_dash(after) || after == '.' || measures || after == '%')
+        return std::nullopt;
+    form.end = i;
+    return form;
+}
+
+}  // namespace talkface::detail

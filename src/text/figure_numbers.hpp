@@ -1,0 +1,26 @@
+// A textbook's figure, table and formula numbers as a lesson reads them (图3-2 图三杠二, 表2-1 表二杠一): the
+// part of the written-form reader that tells a label's chapter and place from a range or a score
+// (docs/written-forms.md).
+#ifndef TALKFACE_TEXT_FIGURE_NUMBERS_HPP
+#define TALKFACE_TEXT_FIGURE_NUMBERS_HPP
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "text/code_points.hpp"
+#include "text/written_number_scan.hpp"
+#include "text/written_numbers.hpp"
+
+namespace talkface::detail {
+
+// Two or three numbers of one or two digits joined by dashes right after 图 表 式 (图3-2, 附表2-1, 式3-2-1)
+// and before no measure word or magnitude: a chapter and the label's place in it, each part counted with 杠
+// between, as teachers read them (session 29: 三到两, a range, and 二比一, a score). A range after such a
+// word counts something and says what (发表3-5篇, 代表3-5人 stay ranges).
+std::optional<SpokenForm> read_figure_number(const std::vector<CodePoint>& text, std::size_t start,
+                                             const WrittenNumber& first);
+
+}  // namespace talkface::detail
+
+#endif
