@@ -4,6 +4,7 @@
 #include <string_view>
 #include <utility>
 
+#include "text/approximate_counts.hpp"
 #include "text/dates_and_times.hpp"
 #include "text/digit_codes.hpp"
 #include "text/figure_numbers.hpp"
@@ -715,6 +716,14 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         form.end = second.end;
         return form;
     };
+    if (sign_words.empty() && currency == nullptr && !context.is_ordinal) {
+        // The 、 goes with the low end: the two are run together, with no pause between.
+        if (auto low_end = approximate_low_end(text, start, number)) {
+            form.words = *low_end;
+            form.end = number.end + 1;
+            return form;
+        }
+    }
     // A number in E notation (学习率1e-3, 2.5E+8), as code and papers write it, is the number it means:
     // 一乘十的负三次方, as 10^6 is 十的六次方 (session 28: its e a letter, 一 yi 三). A letter before the
     // digits (0x1e5, a hex code's) or after the power (3e5x) leaves a name.

@@ -1577,6 +1577,19 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("an approximate count written with 、") {
+        check_cases({
+            {"屋里坐着3、4个人", "屋里坐着三四个人"},
+            {"他等了2、3天", "他等了两三天"},
+            {"70、80年代出生的人", "七八十年代出生的人"},
+            {"团队有30、40个人", "团队有三四十个人"},
+            // The limits: an ordinal's list and an ordering measure keep the list, a countdown is no count.
+            {"第2、3名", "第二三名"},
+            {"住在2、3层", "住在二三层"},
+            {"准备，3、2、1！", "准备三二一"},
+        });
+    }
+
     TEST_CASE("the dot in a lineage's name ends no sentence") {
         CHECK(read_transcript("目前流行的主要毒株为XBB.1.5。后来又出现了新的毒株。").sentences.size() == 2);
         CHECK(said("毒株为XBB.1.5。") == "毒株为 ai ke si bi bi一点五");
