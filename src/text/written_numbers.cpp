@@ -597,17 +597,16 @@ bool relation_follows(const std::vector<CodePoint>& text, std::size_t end) {
     return is_relation_sign(value_at(text, end));
 }
 
-}  // namespace
+// A number's sign or currency before its digits at text[start] and where its digits start: the sign
+// said (正, 负, 加; ± 正负, ↑ 涨, ↓ 跌) or "" where none is said or a dash is no sign; nullopt where no
+// digit follows.
+struct LeadingSign {
+    const Currency* currency = nullptr;
+    std::string words;
+    std::size_t digits = 0;
+};
 
-std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, std::size_t start) {
-    if ((is_range_mark(value_at(text, start)) && is_digit_at(text, start + 1) &&
-         follows_date_or_time(text, start)) ||
-        joins_quantities(text, start)) {
-        auto second = read_number_form(text, start + 1);
-        if (second) second->words = "到" + second->words;
-        return second;
-    }
-    if (auto code = read_calling_code(text, start)) return code;
+std::optional<LeadingSign> read_leading_sign(const std::vector<CodePoint>& text, std::size_t start) {
     auto i = start;
     const Currency* currency = currency_at(text, i, i);
     std::string sign_words;
@@ -631,18 +630,21 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         ++i;
     }
     if (!is_digit_at(text, i)) return std::nullopt;
+    return LeadingSign{currency, std::move(sign_words), i};
+}
 
+// How the text about `number` (its digits at text[i], its sign or currency from text[start]) says it
+// is said; what follows its last digits and unit (NumberContext::next, has_unit, measures_degrees,
+// is_count_over) read_quantity sets.
+NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t i,
+                                const WrittenNumber& number, const std::string& sign_words,
+                                const Currency* currency) {
     NumberContext context;
     std::size_t previous = start;
     while (previous > 0 && text[previous - 1].value == ' ') --previous;
     context.is_ordinal = (previous > 0 && text[previous - 1].value == U'第') || adds_to_ordinal(text, start);
     context.is_phone = follows_phone_word(text, start);
 
-    const auto number = parse_number(text, i);
-    // A chat's +1 as a clause of its own (+1，我也觉得), "me too", is 加一 (session 14; it was 正一).
-    if (sign_words == "正" && number.whole == "1" && !number.has_point &&
-        (stands_alone(text, start, number.end) || agrees_after_person(text, start, number.end)))
-        sign_words = "加";
     context.is_named = follows_name_word(text, start);
     // A house's number right after its street (文化路一段100號, 中山路128号) counts, as addresses are read
     // out (session 15: 一零零號); a room's or a building's (1203号, 305室) is a name, digit by digit.
@@ -704,29 +706,29 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     context.names_year = sign_words.empty() && currency == nullptr && !context.is_ordinal &&
                          (names_year_before_word(text, number) || lists_year(text, number) ||
                           names_short_year(text, start, number));
+    return context;
+}
+
+// Two numbers said each alone with a word between, the first after its sign: a score (3:1, and 2-1
+// where the clause speaks of a match: 2-1领先), a product (7×24 七乘二十四).
+SpokenForm join_two(const WrittenNumber& first, const std::string& sign_words, const WrittenNumber& second,
+                    const char* joiner, const NumberContext& each) {
     SpokenForm form;
-    // Two numbers said each alone with a word between: a score (3:1, and 2-1 where the clause
-    // speaks of a match: 2-1领先), a product (7×24 七乘二十四).
-    auto join_two = [&](const WrittenNumber& second, const char* joiner, const NumberContext& each) {
-        const auto first_said = say_number(number, each);
-        const auto second_said = say_number(second, each);
-        form.words = sign_words + first_said.words + joiner + second_said.words;
-        append_warning(form, first_said.warning);
-        append_warning(form, second_said.warning);
-        form.end = second.end;
-        return form;
-    };
-    if (sign_words.empty() && currency == nullptr && !context.is_ordinal) {
-        // The 、 goes with the low end: the two are run together, with no pause between.
-        if (auto low_end = approximate_low_end(text, start, number)) {
-            form.words = *low_end;
-            form.end = number.end + 1;
-            return form;
-        }
-    }
-    // A number in E notation (学习率1e-3, 2.5E+8), as code and papers write it, is the number it means:
-    // 一乘十的负三次方, as 10^6 is 十的六次方 (session 28: its e a letter, 一 yi 三). A letter before the
-    // digits (0x1e5, a hex code's) or after the power (3e5x) leaves a name.
+    const auto first_said = say_number(first, each);
+    const auto second_said = say_number(second, each);
+    form.words = sign_words + first_said.words + joiner + second_said.words;
+    append_warning(form, first_said.warning);
+    append_warning(form, second_said.warning);
+    form.end = second.end;
+    return form;
+}
+
+// A number in E notation (学习率1e-3, 2.5E+8), as code and papers write it, is the number it means:
+// 一乘十的负三次方, as 10^6 is 十的六次方 (session 28: its e a letter, 一 yi 三). A letter before the
+// digits (0x1e5, a hex code's) or after the power (3e5x) leaves a name.
+std::optional<SpokenForm> read_e_notation(const std::vector<CodePoint>& text, std::size_t start,
+                                          const WrittenNumber& number, const std::string& sign_words) {
+    SpokenForm form;
     if (is_one_of(value_at(text, number.end), U"eE") && !number.has_separators &&
         (start == 0 || !is_ascii_letter(value_at(text, start - 1)))) {
         auto k = number.end + 1;
@@ -742,139 +744,176 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
             return form;
         }
     }
-    if (sign_words.empty() && currency == nullptr && value_at(text, number.end) == ':' &&
-        is_digit_at(text, number.end + 1)) {
-        auto second = parse_number(text, number.end + 1);
-        if (!is_score(text, start, second.end)) {
-            if (auto time = read_race_time(number, second)) return time;
-            // The end of the time's last part (1:23处, 1:02:03处), where a place in a recording names itself.
-            auto time_end = second.end;
-            while (value_at(text, time_end) == ':' && is_digit_at(text, time_end + 1)) time_end = parse_number(text, time_end + 1).end;
-            const bool duration = speaks_of_duration(text, start) || names_place_in_recording(text, start, time_end);
-            if (auto time = read_clock_time(text, number, duration)) return time;
-        }
-        join_two(second, "比", context);
-        // A ratio of three parts or more (糖、醋、生抽按2:1:1 二比一比一; session 17: the last 比 was lost).
-        while (value_at(text, form.end) == ':' && is_digit_at(text, form.end + 1)) {
-            const auto part = parse_number(text, form.end + 1);
-            const auto part_said = say_number(part, context);
-            form.words += "比" + part_said.words;
-            append_warning(form, part_said.warning);
-            form.end = part.end;
-        }
-        return form;
-    }
-    // A small x between two numbers is a times sign typed (4x400米接力, 1920x1080), said 乘 as × is.
-    if (is_one_of(value_at(text, number.end), U"×*x") && is_digit_at(text, number.end + 1) && currency == nullptr) {
-        const auto second = parse_number(text, number.end + 1);
-        // Scientific notation (3×10⁸m/s 三乘十的八次方米每秒): the power goes with it, and so does a unit
-        // after the product, a pack's or a size's (6×1.5L 六乘一点五升; session 19: L was a letter), and a
-        // measure word or a unit per it (12×500ml/箱 十二乘五百毫升每箱).
-        auto power = read_power(text, second.end);
-        std::size_t unit_end = power ? power->end : second.end;
-        const Unit* unit = unit_at(text, unit_end, unit_end);
-        if (unit != nullptr && unit->written == "%") unit = nullptr;
-        // The quantity's 2 is 两 (12×2L 十二乘两升), as before any unit.
-        NumberContext second_context;
-        second_context.has_unit = unit != nullptr && !power;
-        const auto first_said = say_number(number, {});
-        const auto second_said = say_number(second, second_context);
-        form.words = first_said.words + "乘" + second_said.words;
-        append_warning(form, first_said.warning);
-        append_warning(form, second_said.warning);
-        form.end = power ? power->end : second.end;
-        if (power) form.words += power->words;
-        if (unit != nullptr) {
-            form.words += unit->words + per_unit_words(text, unit_end);
-            form.end = unit_end;
-        }
-        return form;
-    }
-    if (sign_words.empty() && currency == nullptr) {
-        if (auto day = read_dotted_day(text, number)) return day;
-        if (auto dotted = read_dotted_groups(text, i)) return dotted;
-        if (auto floor = read_floor(text, i, number)) return floor;
-        if (auto date = read_numeric_date(text, number)) return date;
-        if (auto season = read_season(text, number)) return season;
-        if (auto figure = read_figure_number(text, start, number)) return figure;
-        if (auto record = read_game_record(text, start, number)) return record;
-        if (auto height = read_feet_and_inches(text, start, number)) return height;
-        if (auto time = read_primed_time(text, number)) {
-            time->words += per_unit_words(text, time->end);
-            return time;
-        }
-        if (auto minutes = read_arc_minutes(text, start, number)) return minutes;
-        if (auto model = read_series_and_model(text, i, number)) return model;
-        if (auto variant =
-                context.is_model && !context.is_train ? read_model_variant(text, number) : std::nullopt)
-            return variant;
-        if (auto digits = read_dashed_digits(text, number, context.is_phone, context.is_named,
-                                             follows_book_number(text, start)))
-            return digits;
-        if (auto code = read_code_with_dash(text, number)) return code;
-        if (is_dash(value_at(text, number.end)) && is_digit_at(text, number.end + 1)) {
-            auto second = parse_number(text, number.end + 1);
-            // A measure word after the pair makes it a range (3-5天后获胜), whatever the clause says.
-            const bool may_be_listed_score = !takes_liang(value_at(text, second.end));
-            if (is_score(text, start, second.end, may_be_listed_score) || is_result_between_names(text, start, number, second))
-                return join_two(second, "比", {});
-            if (relation_follows(text, second.end)) return join_two(second, "减", {});  // 5-3=2
-        }
-    }
-    if (sign_words.empty() && currency == nullptr) {
-        if (auto date = read_month_and_day(text, start, number)) return date;
-    }
-    if (value_at(text, number.end) == '/' && is_digit_at(text, number.end + 1) && !number.has_point) {
-        const auto denominator = parse_number(text, number.end + 1);
-        if (const auto pressure = sign_words.empty() && currency == nullptr
-                                      ? blood_pressure_unit(text, start, denominator.end)
-                                      : std::nullopt) {
-            join_two(denominator, "比", {});
-            form.words += pressure->words;
-            form.end = pressure->end;
-            return form;
-        }
-        // 24/7, hours a day on every day of the week (客服24/7在线), is no fraction: said as written,
-        // 二十四七, as 7×24 is 七乘二十四 (session 28: 七分之二十四, a fraction no one writes so).
-        if (sign_words.empty() && number.whole == "24" && denominator.whole == "7" &&
-            !denominator.has_point && !denominator.has_separators) {
-            form.words = "二十四七";
-            form.end = denominator.end;
-            return form;
-        }
-        const auto said_denominator = say_number(denominator, {});
-        const auto said_numerator = say_number(number, {});
-        form.words = sign_words + said_denominator.words + "分之" + said_numerator.words;
-        append_warning(form, said_denominator.warning);
-        append_warning(form, said_numerator.warning);
-        form.end = denominator.end;
-        // A range of two fractions, 1/3~1/2 三分之一到二分之一 (the mark was left unsaid).
-        if (is_range_mark(value_at(text, form.end)) && is_digit_at(text, form.end + 1)) {
-            const auto upper = parse_number(text, form.end + 1);
-            if (!upper.has_point && value_at(text, upper.end) == '/' && is_digit_at(text, upper.end + 1)) {
-                const auto upper_denominator = parse_number(text, upper.end + 1);
-                const auto said_upper = say_number(upper, {});
-                const auto said_upper_denominator = say_number(upper_denominator, {});
-                form.words += "到" + said_upper_denominator.words + "分之" + said_upper.words;
-                append_warning(form, said_upper_denominator.warning);
-                append_warning(form, said_upper.warning);
-                form.end = upper_denominator.end;
-            }
-        }
-        return form;
-    }
+    return std::nullopt;
+}
 
-    // One number, or a range of two (3-5, 3~5), said with what follows the last of them.
-    std::vector<WrittenNumber> numbers{number};
-    std::vector<std::string> signs{sign_words};
+// Two numbers about a colon (number, then text[number.end]): a race's or a clock's time where no score
+// is spoken of, else a score or a ratio of two parts or more, 比 between them; nullopt where no number
+// follows the colon.
+std::optional<SpokenForm> read_colon_pair(const std::vector<CodePoint>& text, std::size_t start,
+                                          const WrittenNumber& number, const NumberContext& context) {
+    if (value_at(text, number.end) != ':' || !is_digit_at(text, number.end + 1)) return std::nullopt;
+    auto second = parse_number(text, number.end + 1);
+    if (!is_score(text, start, second.end)) {
+        if (auto time = read_race_time(number, second)) return time;
+        // The end of the time's last part (1:23处, 1:02:03处), where a place in a recording names itself.
+        auto time_end = second.end;
+        while (value_at(text, time_end) == ':' && is_digit_at(text, time_end + 1))
+            time_end = parse_number(text, time_end + 1).end;
+        const bool duration =
+            speaks_of_duration(text, start) || names_place_in_recording(text, start, time_end);
+        if (auto time = read_clock_time(text, number, duration)) return time;
+    }
+    SpokenForm form = join_two(number, "", second, "比", context);
+    // A ratio of three parts or more (糖、醋、生抽按2:1:1 二比一比一; session 17: the last 比 was lost).
+    while (value_at(text, form.end) == ':' && is_digit_at(text, form.end + 1)) {
+        const auto part = parse_number(text, form.end + 1);
+        const auto part_said = say_number(part, context);
+        form.words += "比" + part_said.words;
+        append_warning(form, part_said.warning);
+        form.end = part.end;
+    }
+    return form;
+}
+
+// A small x between two numbers is a times sign typed (4x400米接力, 1920x1080), said 乘 as × is.
+std::optional<SpokenForm> read_product(const std::vector<CodePoint>& text, const WrittenNumber& number) {
+    if (!is_one_of(value_at(text, number.end), U"×*x") || !is_digit_at(text, number.end + 1))
+        return std::nullopt;
+    const auto second = parse_number(text, number.end + 1);
+    // Scientific notation (3×10⁸m/s 三乘十的八次方米每秒): the power goes with it, and so does a unit
+    // after the product, a pack's or a size's (6×1.5L 六乘一点五升; session 19: L was a letter), and a
+    // measure word or a unit per it (12×500ml/箱 十二乘五百毫升每箱).
+    auto power = read_power(text, second.end);
+    std::size_t unit_end = power ? power->end : second.end;
+    const Unit* unit = unit_at(text, unit_end, unit_end);
+    if (unit != nullptr && unit->written == "%") unit = nullptr;
+    // The quantity's 2 is 两 (12×2L 十二乘两升), as before any unit.
+    NumberContext second_context;
+    second_context.has_unit = unit != nullptr && !power;
+    const auto first_said = say_number(number, {});
+    const auto second_said = say_number(second, second_context);
+    SpokenForm form;
+    form.words = first_said.words + "乘" + second_said.words;
+    append_warning(form, first_said.warning);
+    append_warning(form, second_said.warning);
+    form.end = power ? power->end : second.end;
+    if (power) form.words += power->words;
+    if (unit != nullptr) {
+        form.words += unit->words + per_unit_words(text, unit_end);
+        form.end = unit_end;
+    }
+    return form;
+}
+
+// The forms only a number without a sign or a currency takes (number, its digits at text[i], what is
+// before it from text[start]): dates, seasons, records, heights, times, models and codes, a score or a
+// difference written with a dash; nullopt where it is none of them.
+std::optional<SpokenForm> read_unsigned_form(const std::vector<CodePoint>& text, std::size_t start,
+                                             std::size_t i, const WrittenNumber& number,
+                                             const NumberContext& context) {
+    if (auto day = read_dotted_day(text, number)) return day;
+    if (auto dotted = read_dotted_groups(text, i)) return dotted;
+    if (auto floor = read_floor(text, i, number)) return floor;
+    if (auto date = read_numeric_date(text, number)) return date;
+    if (auto season = read_season(text, number)) return season;
+    if (auto figure = read_figure_number(text, start, number)) return figure;
+    if (auto record = read_game_record(text, start, number)) return record;
+    if (auto height = read_feet_and_inches(text, start, number)) return height;
+    if (auto time = read_primed_time(text, number)) {
+        time->words += per_unit_words(text, time->end);
+        return time;
+    }
+    if (auto minutes = read_arc_minutes(text, start, number)) return minutes;
+    if (auto model = read_series_and_model(text, i, number)) return model;
+    if (auto variant =
+            context.is_model && !context.is_train ? read_model_variant(text, number) : std::nullopt)
+        return variant;
+    if (auto digits = read_dashed_digits(text, number, context.is_phone, context.is_named,
+                                         follows_book_number(text, start)))
+        return digits;
+    if (auto code = read_code_with_dash(text, number)) return code;
+    if (is_dash(value_at(text, number.end)) && is_digit_at(text, number.end + 1)) {
+        auto second = parse_number(text, number.end + 1);
+        // A measure word after the pair makes it a range (3-5天后获胜), whatever the clause says.
+        const bool may_be_listed_score = !takes_liang(value_at(text, second.end));
+        if (is_score(text, start, second.end, may_be_listed_score) ||
+            is_result_between_names(text, start, number, second))
+            return join_two(number, "", second, "比", {});
+        if (relation_follows(text, second.end)) return join_two(number, "", second, "减", {});  // 5-3=2
+    }
+    if (auto date = read_month_and_day(text, start, number)) return date;
+    return std::nullopt;
+}
+
+// Two numbers about a slash (number, then text[number.end]): a blood pressure (blood_pressure_unit), 24/7,
+// or a fraction, its denominator said first (1/3 三分之一), and a range to a second one (1/3~1/2); nullopt
+// where no number follows the slash or the first has a point.
+std::optional<SpokenForm> read_slashed_pair(const std::vector<CodePoint>& text, std::size_t start,
+                                            const WrittenNumber& number, const std::string& sign_words,
+                                            const Currency* currency) {
+    if (value_at(text, number.end) != '/' || !is_digit_at(text, number.end + 1) || number.has_point)
+        return std::nullopt;
+    const auto denominator = parse_number(text, number.end + 1);
+    if (const auto pressure = sign_words.empty() && currency == nullptr
+                                  ? blood_pressure_unit(text, start, denominator.end)
+                                  : std::nullopt) {
+        SpokenForm form = join_two(number, sign_words, denominator, "比", {});
+        form.words += pressure->words;
+        form.end = pressure->end;
+        return form;
+    }
+    // 24/7, hours a day on every day of the week (客服24/7在线), is no fraction: said as written,
+    // 二十四七, as 7×24 is 七乘二十四 (session 28: 七分之二十四, a fraction no one writes so).
+    if (sign_words.empty() && number.whole == "24" && denominator.whole == "7" && !denominator.has_point &&
+        !denominator.has_separators) {
+        SpokenForm form;
+        form.words = "二十四七";
+        form.end = denominator.end;
+        return form;
+    }
+    SpokenForm form;
+    const auto said_denominator = say_number(denominator, {});
+    const auto said_numerator = say_number(number, {});
+    form.words = sign_words + said_denominator.words + "分之" + said_numerator.words;
+    append_warning(form, said_denominator.warning);
+    append_warning(form, said_numerator.warning);
+    form.end = denominator.end;
+    // A range of two fractions, 1/3~1/2 三分之一到二分之一 (the mark was left unsaid).
+    if (is_range_mark(value_at(text, form.end)) && is_digit_at(text, form.end + 1)) {
+        const auto upper = parse_number(text, form.end + 1);
+        if (!upper.has_point && value_at(text, upper.end) == '/' && is_digit_at(text, upper.end + 1)) {
+            const auto upper_denominator = parse_number(text, upper.end + 1);
+            const auto said_upper = say_number(upper, {});
+            const auto said_upper_denominator = say_number(upper_denominator, {});
+            form.words += "到" + said_upper_denominator.words + "分之" + said_upper.words;
+            append_warning(form, said_upper_denominator.warning);
+            append_warning(form, said_upper.warning);
+            form.end = upper_denominator.end;
+        }
+    }
+    return form;
+}
+
+// A number and, after a range mark, a second one (3-5, 3~5, -8~-3℃), each with its sign; the second only
+// where it ends with a % as the first does (10%-20%), and not a model's size after its version.
+struct NumberRange {
+    std::vector<WrittenNumber> numbers;
+    std::vector<std::string> signs;
+    bool first_is_percent = false;  // 10%-20%: each end says its 百分之
+    std::string first_magnitude;    // the first end's 万 or 亿 (3万-5万元 三万到五万元), or ""
+};
+
+NumberRange read_range(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number,
+                       const std::string& sign_words) {
+    NumberRange range{{number}, {sign_words}, false, ""};
     auto after_first = number.end;
-    const bool first_is_percent = value_at(text, after_first) == '%';
-    if (first_is_percent) ++after_first;  // 10%-20%
+    range.first_is_percent = value_at(text, after_first) == '%';
+    if (range.first_is_percent) ++after_first;  // 10%-20%
     // The first end's 万 or 亿 before the range mark is said with it: 3万-5万元 三万到五万元.
-    std::string first_magnitude;
     if (is_one_of(value_at(text, after_first), U"万萬亿億") && is_range_mark(value_at(text, after_first + 1)) &&
         is_digit_at(text, after_first + 2)) {
-        first_magnitude = is_one_of(value_at(text, after_first), U"万萬") ? "万" : "亿";
+        range.first_magnitude = is_one_of(value_at(text, after_first), U"万萬") ? "万" : "亿";
         ++after_first;
     }
     if (is_range_mark(value_at(text, after_first))) {
@@ -897,12 +936,56 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
             const bool is_size_after_version = after_name && is_dash(value_at(text, after_first)) &&
                                                second_sign.empty() && value_at(text, second.end) == 'B' &&
                                                !is_ascii_letter(value_at(text, second.end + 1));
-            if ((!first_is_percent || value_at(text, second.end) == '%') && !is_size_after_version) {
-                numbers.push_back(std::move(second));
-                signs.push_back(std::move(second_sign));
+            if ((!range.first_is_percent || value_at(text, second.end) == '%') && !is_size_after_version) {
+                range.numbers.push_back(std::move(second));
+                range.signs.push_back(std::move(second_sign));
             }
         }
     }
+    return range;
+}
+
+// The signs of a number or a range's ends (`signs`, each 正, 负 or "" as written) said as the text around
+// them says: a temperature's 零下 and 零上, a quantity's 加, a change's after a comparison or an amount
+// (增长, 下降), a percentage's rise and fall (涨, 跌). `unit_end` is where its unit ends.
+void word_signs(const std::vector<CodePoint>& text, std::size_t start, std::size_t unit_end,
+                bool is_temperature, bool is_percent, bool is_per_mille, std::vector<std::string>& signs) {
+    for (auto& sign : signs) {
+        if (sign == "负" && is_temperature) sign = "零下";
+        if (sign == "正" && is_temperature) sign = "零上";
+    }
+    if (signs.front() == "正" && !is_percent && !is_per_mille && adds_to_quantity(text, start))
+        signs.front() = "加";
+    if (signs.size() == 1 && (signs.front() == "正" || signs.front() == "负" || signs.front().empty())) {
+        const bool rise = value_at(text, start) == '+';
+        if (rise || is_dash(value_at(text, start))) {
+            auto change = change_after_comparison(text, start, unit_end, rise);
+            if (change.empty() && is_percent) change = change_of_amount(text, start, rise);
+            if (!change.empty()) signs.front() = std::move(change);
+        }
+    }
+    // A + before a percentage is a rise, said 涨 as market reports read it (腾讯+2.35% 腾讯涨百分之
+    // 二点三五); not said where the clause already names the change (涨幅+2.35%, 同比增长+5%) or
+    // after the first end of a range. A - stays 负 (增速-6.8% 增速负百分之六点八: 负增长).
+    // After 涨跌幅, which names both ways, the sign says which: 涨跌幅+2.35% 正百分之二点三五.
+    if (is_percent || is_per_mille) {
+        const bool names_both_ways = ends_with_any(text_before(text, start, true), kBothWaysWords);
+        for (std::size_t k = 0; k < signs.size(); ++k)
+            if (signs[k] == "正" && !names_both_ways)
+                signs[k] = k == 0 && !names_change(text, start) ? "涨" : "";
+        if (signs.front() == "负" && is_fall_of_what_moves(text, start)) signs.front() = "跌";
+    }
+}
+
+// One number, or a range of two (3-5, 3~5), said with what follows the last of them: its power, its
+// magnitude, its unit or its currency's word, the + of a count "or more"; its signs said as a temperature's,
+// a change's or a rise's where the text says so.
+SpokenForm read_quantity(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number,
+                         const std::string& sign_words, const Currency* currency, NumberContext context) {
+    SpokenForm form;
+    NumberRange range = read_range(text, start, number, sign_words);
+    std::vector<WrittenNumber>& numbers = range.numbers;
+    std::vector<std::string>& signs = range.signs;
     auto end = numbers.back().end;
     if (context.is_code && numbers.size() == 1) end = past_exchange_suffix(text, end);
     // A power after one number (10⁵ 十的五次方, 2^10) is said before the unit after it (10⁵Pa).
@@ -950,31 +1033,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     const bool is_temperature =
         is_temperature_reading(text, start, unit, context.next) ||
         (unit == nullptr && numbers.size() == 1 && range_word_before_temperature(text, start, end));
-    for (auto& sign : signs) {
-        if (sign == "负" && is_temperature) sign = "零下";
-        if (sign == "正" && is_temperature) sign = "零上";
-    }
-    if (signs.front() == "正" && !is_percent && !is_per_mille && adds_to_quantity(text, start))
-        signs.front() = "加";
-    if (signs.size() == 1 && (signs.front() == "正" || signs.front() == "负" || signs.front().empty())) {
-        const bool rise = value_at(text, start) == '+';
-        if (rise || is_dash(value_at(text, start))) {
-            auto change = change_after_comparison(text, start, unit_end, rise);
-            if (change.empty() && is_percent) change = change_of_amount(text, start, rise);
-            if (!change.empty()) signs.front() = std::move(change);
-        }
-    }
-    // A + before a percentage is a rise, said 涨 as market reports read it (腾讯+2.35% 腾讯涨百分之
-    // 二点三五); not said where the clause already names the change (涨幅+2.35%, 同比增长+5%) or
-    // after the first end of a range. A - stays 负 (增速-6.8% 增速负百分之六点八: 负增长).
-    // After 涨跌幅, which names both ways, the sign says which: 涨跌幅+2.35% 正百分之二点三五.
-    if (is_percent || is_per_mille) {
-        const bool names_both_ways = ends_with_any(text_before(text, start, true), kBothWaysWords);
-        for (std::size_t k = 0; k < signs.size(); ++k)
-            if (signs[k] == "正" && !names_both_ways)
-                signs[k] = k == 0 && !names_change(text, start) ? "涨" : "";
-        if (signs.front() == "负" && is_fall_of_what_moves(text, start)) signs.front() = "跌";
-    }
+    word_signs(text, start, unit_end, is_temperature, is_percent, is_per_mille, signs);
     // ¥1,299.00 is 一千二百九十九元, $3.50 三点五美元: a price's trailing zeros are written, not said,
     // and so where a currency's word follows (报15.60元 十五点六元; session 17: 十五点六零元).
     bool is_price = currency != nullptr;
@@ -996,12 +1055,12 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (currency != nullptr) form.words += currency->before;
         // The sign written on each end is said on each (10%-20% 百分之十到百分之二十), once where only the
         // last carries it (3-5% 百分之三到五, as newsreaders say it; session 20: 百分之三到百分之五).
-        if (is_percent && (k == 0 || first_is_percent)) form.words += "百分之";
+        if (is_percent && (k == 0 || range.first_is_percent)) form.words += "百分之";
         if (is_per_mille && k == 0) form.words += "千分之";
         // 100% is 百分之百, as it is said (百分之百的把握), not 百分之一百.
         const auto& whole = numbers[k].whole;
         form.words += is_percent && whole == "100" && !numbers[k].has_point ? "百" : said.words;
-        if (k == 0 && numbers.size() > 1) form.words += first_magnitude;
+        if (k == 0 && numbers.size() > 1) form.words += range.first_magnitude;
         if (said.is_year) {
             form.words += "年";
             // The 年 of a year belongs to the form; after a range, only the last takes it.
@@ -1047,6 +1106,49 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     }
     form.end = end;
     return form;
+}
+
+}  // namespace
+
+std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, std::size_t start) {
+    if ((is_range_mark(value_at(text, start)) && is_digit_at(text, start + 1) &&
+         follows_date_or_time(text, start)) ||
+        joins_quantities(text, start)) {
+        auto second = read_number_form(text, start + 1);
+        if (second) second->words = "到" + second->words;
+        return second;
+    }
+    if (auto code = read_calling_code(text, start)) return code;
+    auto sign = read_leading_sign(text, start);
+    if (!sign) return std::nullopt;
+    const Currency* currency = sign->currency;
+    std::string& sign_words = sign->words;
+    const auto i = sign->digits;
+    const auto number = parse_number(text, i);
+    // A chat's +1 as a clause of its own (+1，我也觉得), "me too", is 加一 (session 14; it was 正一).
+    if (sign_words == "正" && number.whole == "1" && !number.has_point &&
+        (stands_alone(text, start, number.end) || agrees_after_person(text, start, number.end)))
+        sign_words = "加";
+    const NumberContext context = context_of_number(text, start, i, number, sign_words, currency);
+    if (sign_words.empty() && currency == nullptr && !context.is_ordinal) {
+        // The 、 goes with the low end: the two are run together, with no pause between.
+        if (auto low_end = approximate_low_end(text, start, number)) {
+            SpokenForm form;
+            form.words = *low_end;
+            form.end = number.end + 1;
+            return form;
+        }
+    }
+    if (auto e_notation = read_e_notation(text, start, number, sign_words)) return e_notation;
+    const bool is_bare = sign_words.empty() && currency == nullptr;
+    if (is_bare)
+        if (auto pair = read_colon_pair(text, start, number, context)) return pair;
+    if (currency == nullptr)
+        if (auto product = read_product(text, number)) return product;
+    if (is_bare)
+        if (auto form = read_unsigned_form(text, start, i, number, context)) return form;
+    if (auto pair = read_slashed_pair(text, start, number, sign_words, currency)) return pair;
+    return read_quantity(text, start, number, sign_words, currency, context);
 }
 
 }  // namespace talkface::detail
