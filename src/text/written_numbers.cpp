@@ -416,134 +416,146 @@ struct SaidNumber {
     std::string warning;
 };
 
-SaidNumber say_number(const WrittenNumber& number, const NumberContext& context) {
+// A number with a point (number.has_point) said as a station's frequency, a version or a decimal.
+SaidNumber say_decimal(const WrittenNumber& number, const NumberContext& context) {
     SaidNumber said;
     const auto& whole = number.whole;
-    if (number.has_point) {
-        // A station's frequency is said as stations name themselves, digit by digit before the point
-        // too (FM103.9 一零三点九, 调频97.4 九七点四; session 17: 一百零三点九).
-        if (context.is_frequency && whole.size() <= 3) {
-            said.words = digit_words(whole) + "点" + digit_words(number.fraction);
-            return said;
-        }
-        // A version's part after the point is a number (Python 3.12 三点十二, as 10.15.7 is 十点十五点七);
-        // a decimal's digits are said one by one (3.12 三点一二).
-        // 下 after a version is the setting it runs under (在Python 3.12下运行), no count of strokes: a
-        // count of strokes is whole (session 28: 三点一二).
-        const bool counts =
-            context.has_unit || (takes_liang(context.next) && context.next != U'下') || context.next == '%';
-        if (context.is_version && !counts && whole.size() <= kMostCardinalDigits && number.fraction.size() >= 2 &&
-            number.fraction.size() <= kMostCardinalDigits && number.fraction.front() != '0') {
-            said.words = cardinal_words(whole, false) + "点" + cardinal_words(number.fraction, false);
-            return said;
-        }
-        if (whole.size() > kMostCardinalDigits) {
-            said.words = digit_words(whole) + "点" + digit_words(number.fraction);
-            said.warning = "more than 16 digits before the point; read digit by digit";
-        } else {
-            said.words = decimal_words(whole, number.fraction);
-        }
+    // A station's frequency is said as stations name themselves, digit by digit before the point
+    // too (FM103.9 一零三点九, 调频97.4 九七点四; session 17: 一百零三点九).
+    if (context.is_frequency && whole.size() <= 3) {
+        said.words = digit_words(whole) + "点" + digit_words(number.fraction);
         return said;
     }
+    // A version's part after the point is a number (Python 3.12 三点十二, as 10.15.7 is 十点十五点七);
+    // a decimal's digits are said one by one (3.12 三点一二).
+    // 下 after a version is the setting it runs under (在Python 3.12下运行), no count of strokes: a
+    // count of strokes is whole (session 28: 三点一二).
+    const bool counts =
+        context.has_unit || (takes_liang(context.next) && context.next != U'下') || context.next == '%';
+    if (context.is_version && !counts && whole.size() <= kMostCardinalDigits && number.fraction.size() >= 2 &&
+        number.fraction.size() <= kMostCardinalDigits && number.fraction.front() != '0') {
+        said.words = cardinal_words(whole, false) + "点" + cardinal_words(number.fraction, false);
+        return said;
+    }
+    if (whole.size() > kMostCardinalDigits) {
+        said.words = digit_words(whole) + "点" + digit_words(number.fraction);
+        said.warning = "more than 16 digits before the point; read digit by digit";
+    } else {
+        said.words = decimal_words(whole, number.fraction);
+    }
+    return said;
+}
+
+// A whole number written without separators (`whole`) said as it names rather than counts, digit by
+// digit (a phone's, a train's, a model's, a code's, a chat's 666 and 88) or as a year; nullopt where
+// it counts.
+std::optional<SaidNumber> say_as_name(const std::string& whole, const NumberContext& context) {
+    SaidNumber said;
+    const bool is_mobile = whole.size() == 11 && whole.front() == '1';
+    // A phone word earlier in the sentence does not make an amount a phone number (这款手机售价5999元).
+    const bool counts = !context.is_train && (context.has_unit || takes_liang(context.next) ||
+                                              context.next == '%' || context.after_times);
+    if ((context.is_phone && whole.size() >= 3 && !counts) || is_mobile) {
+        said.words = digit_words(whole, true);
+        said.is_dialled = true;
+        return said;
+    }
+    // An hour written with two digits before 时 or 点 is the hour (06时 六时, 00时 零时), as the
+    // weather's and the timetables' 24-hour clock is read; elsewhere a leading zero is read out.
+    if (whole.size() == 2 && whole.front() == '0' && is_one_of(context.next, U"时時点點")) {
+        said.words = digit_words(whole.substr(1));
+        return said;
+    }
+    if (whole.size() >= 2 && whole.front() == '0') {
+        said.words = digit_words(whole);
+        return said;
+    }
+    // A train's or a flight's number is said digit by digit with 幺 for 1, as station and
+    // airport announcers say it (G101次 G幺零幺次, CA1831 C A 幺八三幺).
+    if (context.is_train) {
+        said.words = digit_words(whole, true);
+        return said;
+    }
+    // A generation (90后 九零后), the hundredths of a sprint (9秒83 九秒八三), a model's
+    // number of three or more digits (C919 C九一九, A380) and a type's of two or more (99式
+    // 九九式, 737型), a day named by its date (618 六一八) and one digit said three or more
+    // times over, as a chat cheers (666 六六六, 888), are said digit by digit.
+    // So is a chat's laugh, 2333 (a 2 and three or more 3s: 二三三三, after an emoticon's number).
+    // A count shown as "or more" counts (999+条消息 九百九十九加).
+    const bool is_one_digit_over = whole.size() >= 3 &&
+                                   whole.find_first_not_of(whole.front()) == std::string::npos &&
+                                   !context.is_count_over;
+    // A chat's goodbye, 88 or 886 (拜拜, 拜拜了) as a clause of its own (88，下次再聊), is said digit by
+    // digit, 八八 (session 14); a bare 88 after a colon or in a clause counts (得分：88, 考了88分).
+    if ((whole == "88" || whole == "886") && context.is_whole_clause) {
+        said.words = digit_words(whole);
+        return said;
+    }
+    // A chat's vow, 1314 (一生一世) and 5201314, counting nothing, is said digit by digit (我爱你1314
+    // 一三一四; session 14), as 520 is where it names its day.
+    if ((whole == "1314" || whole == "5201314") && !counts && !context.has_currency && !context.is_ordinal) {
+        said.words = digit_words(whole);
+        return said;
+    }
+    // A pair of digits written twice over as a clause of its own (9494，我也是这么想的: 就是就是, a
+    // chat's agreement), digit by digit as 88 is (session 20: 九千四百九十四); a year standing so reads
+    // alike.
+    const bool is_pair_over =
+        whole.size() == 4 && whole[0] != whole[1] && whole.compare(0, 2, whole, 2, 2) == 0;
+    if (is_pair_over && context.is_whole_clause) {
+        said.words = digit_words(whole);
+        return said;
+    }
+    // 233 too, right after a laugh's character (哈哈哈233, 笑死233; session 14); elsewhere it counts (233人).
+    const bool is_laugh = whole.front() == '2' && whole.find_first_not_of('3', 1) == std::string::npos &&
+                          (whole.size() >= 4 || (whole.size() == 3 && context.after_laugh));
+    // A filter grade is a name before any word (N95口罩: 口 is no measure word there). A round
+    // thousand after capitals is a tier, not a model (WTA 1000 一千, RTX 5000 五千), and so is a round
+    // hundred of three digits but in a train's or a flight's number (HDR400 四百, A100 一百, C200 二百;
+    // session 26: 四零零).
+    const bool is_round_tier = (whole.size() >= 4 && whole.compare(whole.size() - 3, 3, "000") == 0) ||
+                               (whole.size() == 3 && whole.compare(1, 2, "00") == 0 && !context.is_train);
+    if (context.is_grade ||
+        (!counts && (context.is_generation || context.is_hundredths || context.is_code ||
+                     (context.is_model && whole.size() >= 3 && !is_round_tier) ||
+                     (context.names_type && whole.size() >= 2) || context.names_day ||
+                     ((is_one_digit_over || is_laugh) && !context.has_currency && !context.is_ordinal)))) {
+        said.words = digit_words(whole);
+        return said;
+    }
+    if (context.names_year) {
+        said.words = digit_words(whole);
+        return said;
+    }
+    if (whole.size() == 4 && (context.next == U'年') && !context.is_span_of_years) {
+        said.words = digit_words(whole);
+        said.is_year = true;
+        return said;
+    }
+    if ((context.is_service_call || is_named_anywhere(whole)) && is_service_number(whole) && !counts) {
+        said.words = digit_words(whole, true);
+        said.is_dialled = true;
+        return said;
+    }
+    if (whole.size() >= 3 && ((names_by_digits(context.next) && !context.is_house_number) ||
+                              context.is_named || (context.names_place && !counts))) {
+        said.words = digit_words(whole);
+        return said;
+    }
+    return std::nullopt;
+}
+
+SaidNumber say_number(const WrittenNumber& number, const NumberContext& context) {
+    if (number.has_point) return say_decimal(number, context);
+    SaidNumber said;
+    const auto& whole = number.whole;
     if (whole.size() > kMostCardinalDigits) {
         said.words = digit_words(whole);
         said.warning = kTooLongWarning;
         return said;
     }
-    if (!number.has_separators) {
-        const bool is_mobile = whole.size() == 11 && whole.front() == '1';
-        // A phone word earlier in the sentence does not make an amount a phone number (这款手机售价5999元).
-        const bool counts = !context.is_train && (context.has_unit || takes_liang(context.next) ||
-                                                  context.next == '%' || context.after_times);
-        if ((context.is_phone && whole.size() >= 3 && !counts) || is_mobile) {
-            said.words = digit_words(whole, true);
-            said.is_dialled = true;
-            return said;
-        }
-        // An hour written with two digits before 时 or 点 is the hour (06时 六时, 00时 零时), as the
-        // weather's and the timetables' 24-hour clock is read; elsewhere a leading zero is read out.
-        if (whole.size() == 2 && whole.front() == '0' && is_one_of(context.next, U"时時点點")) {
-            said.words = digit_words(whole.substr(1));
-            return said;
-        }
-        if (whole.size() >= 2 && whole.front() == '0') {
-            said.words = digit_words(whole);
-            return said;
-        }
-        // A train's or a flight's number is said digit by digit with 幺 for 1, as station and
-        // airport announcers say it (G101次 G幺零幺次, CA1831 C A 幺八三幺).
-        if (context.is_train) {
-            said.words = digit_words(whole, true);
-            return said;
-        }
-        // A generation (90后 九零后), the hundredths of a sprint (9秒83 九秒八三), a model's
-        // number of three or more digits (C919 C九一九, A380) and a type's of two or more (99式
-        // 九九式, 737型), a day named by its date (618 六一八) and one digit said three or more
-        // times over, as a chat cheers (666 六六六, 888), are said digit by digit.
-        // So is a chat's laugh, 2333 (a 2 and three or more 3s: 二三三三, after an emoticon's number).
-        // A count shown as "or more" counts (999+条消息 九百九十九加).
-        const bool is_one_digit_over = whole.size() >= 3 &&
-                                       whole.find_first_not_of(whole.front()) == std::string::npos &&
-                                       !context.is_count_over;
-        // A chat's goodbye, 88 or 886 (拜拜, 拜拜了) as a clause of its own (88，下次再聊), is said digit by
-        // digit, 八八 (session 14); a bare 88 after a colon or in a clause counts (得分：88, 考了88分).
-        if ((whole == "88" || whole == "886") && context.is_whole_clause) {
-            said.words = digit_words(whole);
-            return said;
-        }
-        // A chat's vow, 1314 (一生一世) and 5201314, counting nothing, is said digit by digit (我爱你1314
-        // 一三一四; session 14), as 520 is where it names its day.
-        if ((whole == "1314" || whole == "5201314") && !counts && !context.has_currency && !context.is_ordinal) {
-            said.words = digit_words(whole);
-            return said;
-        }
-        // A pair of digits written twice over as a clause of its own (9494，我也是这么想的: 就是就是, a
-        // chat's agreement), digit by digit as 88 is (session 20: 九千四百九十四); a year standing so reads
-        // alike.
-        const bool is_pair_over =
-            whole.size() == 4 && whole[0] != whole[1] && whole.compare(0, 2, whole, 2, 2) == 0;
-        if (is_pair_over && context.is_whole_clause) {
-            said.words = digit_words(whole);
-            return said;
-        }
-        // 233 too, right after a laugh's character (哈哈哈233, 笑死233; session 14); elsewhere it counts (233人).
-        const bool is_laugh = whole.front() == '2' && whole.find_first_not_of('3', 1) == std::string::npos &&
-                              (whole.size() >= 4 || (whole.size() == 3 && context.after_laugh));
-        // A filter grade is a name before any word (N95口罩: 口 is no measure word there). A round
-        // thousand after capitals is a tier, not a model (WTA 1000 一千, RTX 5000 五千), and so is a round
-        // hundred of three digits but in a train's or a flight's number (HDR400 四百, A100 一百, C200 二百;
-        // session 26: 四零零).
-        const bool is_round_tier = (whole.size() >= 4 && whole.compare(whole.size() - 3, 3, "000") == 0) ||
-                                   (whole.size() == 3 && whole.compare(1, 2, "00") == 0 && !context.is_train);
-        if (context.is_grade ||
-            (!counts &&
-             (context.is_generation || context.is_hundredths || context.is_code ||
-              (context.is_model && whole.size() >= 3 && !is_round_tier) ||
-              (context.names_type && whole.size() >= 2) || context.names_day ||
-              ((is_one_digit_over || is_laugh) && !context.has_currency && !context.is_ordinal)))) {
-            said.words = digit_words(whole);
-            return said;
-        }
-        if (context.names_year) {
-            said.words = digit_words(whole);
-            return said;
-        }
-        if (whole.size() == 4 && (context.next == U'年') && !context.is_span_of_years) {
-            said.words = digit_words(whole);
-            said.is_year = true;
-            return said;
-        }
-        if ((context.is_service_call || is_named_anywhere(whole)) && is_service_number(whole) && !counts) {
-            said.words = digit_words(whole, true);
-            said.is_dialled = true;
-            return said;
-        }
-        if (whole.size() >= 3 && ((names_by_digits(context.next) && !context.is_house_number) || context.is_named ||
-                                  (context.names_place && !counts))) {
-            said.words = digit_words(whole);
-            return said;
-        }
-    }
+    if (!number.has_separators)
+        if (auto named = say_as_name(whole, context)) return *named;
     // A discount of two digits is said digit by digit (95折 九五折, 75折 七五折), as shops call it; one digit
     // or one with a point counts (8折, 3.8折 三点八折).
     if (whole.size() == 2 && !number.has_point && context.next == U'折' && whole[0] != '0' &&
