@@ -83,6 +83,13 @@ constexpr std::string_view kPriceWords[] = {"价", "價", "CPI", "PPI"};
 constexpr std::string_view kValueWordEnds[] = {"为", "為", "是", "率", "速", "值",
                                                "至", "到", "约", "約", " "};
 
+// The amounts a company or an economy reports (净利润, 营收, 销量, 出口): a signed percentage right after
+// one is its change (change_of_amount).
+constexpr std::string_view kReportedAmounts[] = {
+    "利润",   "利潤",   "净利",   "淨利",   "营收",   "營收",   "收入", "销量", "銷量",
+    "销售额", "銷售額", "营业额", "營業額", "出货量", "出貨量", "产量", "產量", "成交量",
+    "成交额", "成交額", "订单",   "訂單",   "出口",   "进口",   "進口"};
+
 // A word that names both a rise and a fall (涨跌幅): the sign after it says which (涨跌幅+2.35% 正).
 constexpr std::string_view kBothWaysWords[] = {"涨跌幅", "漲跌幅"};
 
@@ -120,11 +127,7 @@ std::string change_after_comparison(const std::vector<CodePoint>& text, std::siz
 // words). The amount's own value stays signed (净利润-12亿元 负十二亿元, a loss).
 std::string change_of_amount(const std::vector<CodePoint>& text, std::size_t start, bool rise) {
     const std::string before = text_before(text, start, true);
-    if (!ends_with_any(before,
-                       {"利润",   "利潤",   "净利",   "淨利",   "营收",   "營收",   "收入", "销量", "銷量",
-                        "销售额", "銷售額", "营业额", "營業額", "出货量", "出貨量", "产量", "產量", "成交量",
-                        "成交额", "成交額", "订单",   "訂單",   "出口",   "进口",   "進口"}))
-        return {};
+    if (!ends_with_any(before, kReportedAmounts)) return {};
     return rise ? "增长" : "下降";
 }
 
