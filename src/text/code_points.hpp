@@ -44,6 +44,10 @@ inline char32_t ascii_form(char32_t c) {
     return c >= 0xFF01 && c <= 0xFF5E ? c - 0xFEE0 : c;
 }
 
+inline bool is_ascii_digit(char32_t c) {
+    return c >= '0' && c <= '9';
+}
+
 inline bool is_ascii_capital(char32_t c) {
     return c >= 'A' && c <= 'Z';
 }

@@ -35,6 +35,7 @@ using detail::ascii_form;
 using detail::CodePoint;
 using detail::decode_utf8;
 using detail::is_ascii_capital;
+using detail::is_ascii_digit;
 using detail::is_ascii_letter;
 using detail::starts_with_any;
 
@@ -165,10 +166,6 @@ bool is_pinyin_letter(char32_t c) {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == 0xFC /*ü*/ || c == 0xDC /*Ü*/;
 }
 
-bool is_digit(char32_t c) {
-    return c >= '0' && c <= '9';
-}
-
 bool is_capital(char32_t c) {
     return (c >= 'A' && c <= 'Z') || c == 0xDC;
 }
@@ -180,7 +177,7 @@ std::size_t end_of_token(const std::vector<CodePoint>& text, std::size_t start) 
     while (end < text.size()) {
         const auto c = text[end].value;
         const bool continues =
-            is_pinyin_letter(c) || is_digit(c) ||
+            is_pinyin_letter(c) || is_ascii_digit(c) ||
             (c == ':' && end > start && (text[end - 1].value == 'u' || text[end - 1].value == 'U')) ||
             (c == '\'' && end > start && end + 1 < text.size() && is_pinyin_letter(text[end + 1].value));
         if (!continues) break;
@@ -218,13 +215,15 @@ bool in_chemical_formula(const std::vector<CodePoint>& text, std::size_t start) 
     auto is_symbol = [](std::string_view symbol) {
         return std::find(std::begin(kSymbols), std::end(kSymbols), symbol) != std::end(kSymbols);
     };
-    auto in_run = [&](std::size_t k) { return is_ascii_letter(text[k].value) || is_digit(text[k].value); };
+    auto in_run = [&](std::size_t k) {
+        return is_ascii_letter(text[k].value) || is_ascii_digit(text[k].value);
+    };
     auto first = start;
     while (first > 0 && in_run(first - 1)) --first;
     auto end = start;
     while (end < text.size() && in_run(end)) ++end;
     auto k = first;
-    while (k < end && is_digit(text[k].value)) ++k;  // a coefficient (2H2O)
+    while (k < end && is_ascii_digit(text[k].value)) ++k;  // a coefficient (2H2O)
     std::size_t symbols = 0;
     bool counted_between = false;
     bool has_small = false;
@@ -237,7 +236,7 @@ bool in_chemical_formula(const std::vector<CodePoint>& text, std::size_t start) 
         k += symbol.size();
         ++symbols;
         const auto count_start = k;
-        while (k < end && is_digit(text[k].value)) ++k;
+        while (k < end && is_ascii_digit(text[k].value)) ++k;
         counted_between = counted_between || (k > count_start && k < end);
     }
     if (symbols < 2) return false;
@@ -346,7 +345,7 @@ bool looks_like_pinyin(const std::vector<CodePoint>& token) {
     bool has_inner_capital = false;
     for (std::size_t i = 0; i < token.size(); ++i) {
         const auto c = token[i].value;
-        has_tone = has_tone || is_digit(c);
+        has_tone = has_tone || is_ascii_digit(c);
         has_inner_capital = has_inner_capital || (is_capital(c) && i > 0 && token[i - 1].value != '\'');
     }
     return has_tone || !has_inner_capital;
@@ -361,7 +360,8 @@ bool starts_as_pinyin_only(std::string_view letters) {
 }
 
 bool has_tone_digit(const std::vector<CodePoint>& token) {
-    return std::any_of(token.begin(), token.end(), [](const CodePoint& c) { return is_digit(c.value); });
+    return std::any_of(token.begin(), token.end(),
+                       [](const CodePoint& c) { return is_ascii_digit(c.value); });
 }
 
 // Whether a pinyin split without tone digits holds a syllable only an interjection writes (m 呣, n 嗯,
@@ -579,9 +579,11 @@ private:
                                        (touches_formula_sign(text, start, -1) || touches_formula_sign(text, end, 1));
         // A game's level (Lv.50, LV50 among Chinese characters) is letters and a number, not the pinyin lü.
         const auto after_letters = start + letters.size();
-        const bool is_level = (letters == "Lv" || letters == "LV" || letters == "lv") && after_letters + 1 < text.size() &&
-                              ((text[after_letters].value == '.' && is_digit(text[after_letters + 1].value)) ||
-                               (has_han_ && is_digit(text[after_letters].value) && is_digit(text[after_letters + 1].value)));
+        const bool is_level =
+            (letters == "Lv" || letters == "LV" || letters == "lv") && after_letters + 1 < text.size() &&
+            ((text[after_letters].value == '.' && is_ascii_digit(text[after_letters + 1].value)) ||
+             (has_han_ && is_ascii_digit(text[after_letters].value) &&
+              is_ascii_digit(text[after_letters + 1].value)));
         if (is_level) return read_latin(text, start);
         // An o with a tone digit 1-4 among Chinese characters (o1, o3) is a model's letter and number
         // (OpenAI的o1模型 ou 一; session 27: the pinyin o1, 噢): Chinese text writes the interjection with
@@ -619,7 +621,7 @@ private:
         for (auto i = first; i < text.size() && text[i].line == line;) {
             const bool starts_word =
                 is_pinyin_letter(text[i].value) &&
-                (i == first || !(is_pinyin_letter(text[i - 1].value) || is_digit(text[i - 1].value)));
+                (i == first || !(is_pinyin_letter(text[i - 1].value) || is_ascii_digit(text[i - 1].value)));
             if (!starts_word) {
                 ++i;
                 continue;
@@ -684,9 +686,11 @@ private:
         // the pinyin lü and its dot ended the sentence).
         if (word == "Lv" || word == "LV" || word == "lv") {
             auto level_end = end;
-            if (level_end + 1 < text.size() && text[level_end].value == '.' && is_digit(text[level_end + 1].value))
+            if (level_end + 1 < text.size() && text[level_end].value == '.' &&
+                is_ascii_digit(text[level_end + 1].value))
                 ++level_end;
-            if (level_end < text.size() && (is_digit(text[level_end].value) || text[level_end].value == ' ')) {
+            if (level_end < text.size() &&
+                (is_ascii_digit(text[level_end].value) || text[level_end].value == ' ')) {
                 add_form(text, start, level_end, said_syllables(detail::letter_syllables("LV")));
                 return level_end;
             }
@@ -746,7 +750,7 @@ private:
         auto first = end + 1;
         if (first < text.size() && text[first].value == ' ') ++first;
         auto last = first;
-        while (last < text.size() && is_digit(text[last].value)) ++last;
+        while (last < text.size() && is_ascii_digit(text[last].value)) ++last;
         if (last == first) return std::nullopt;
         auto syllables = *detail::english_word_syllables("number");
         for (auto& syllable : detail::english_number_syllables(latin_spelling(text, first, last)))

@@ -7,15 +7,14 @@ namespace talkface::detail {
 
 namespace {
 
-bool is_digit(char32_t c) {
-    return c >= '0' && c <= '9';
-}
-
 bool is_alphanumeric(char32_t c) {
-    return is_ascii_letter(c) || is_digit(c);
+    return is_ascii_letter(c) || is_ascii_digit(c);
 }
 
-char32_t value_at(const std::vector<CodePoint>& text, std::size_t i) {
+// The code point at text[i] as written, 0 past the end. Not written_number_scan.hpp's value_at, which
+// reads a full-width form as its ASCII one: an address is typed in ASCII and its labels are built from
+// these very code points, so a full-width letter or dot ends it.
+char32_t written_at(const std::vector<CodePoint>& text, std::size_t i) {
     return i < text.size() ? text[i].value : 0;
 }
 
@@ -47,7 +46,7 @@ void append_said(std::vector<AddressPart>& parts, const std::vector<CodePoint>& 
         if (is_alphanumeric(c)) {
             const bool letters = is_ascii_letter(c);
             std::string run;
-            while (i < end && (letters ? is_ascii_letter(text[i].value) : is_digit(text[i].value)))
+            while (i < end && (letters ? is_ascii_letter(text[i].value) : is_ascii_digit(text[i].value)))
                 run += static_cast<char>(text[i++].value);
             parts.push_back({letters ? AddressPart::Kind::letters : AddressPart::Kind::digits, std::move(run)});
             continue;
@@ -64,14 +63,14 @@ void append_said(std::vector<AddressPart>& parts, const std::vector<CodePoint>& 
 std::size_t host_end(const std::vector<CodePoint>& text, std::size_t start, std::vector<std::string>& labels) {
     labels.clear();
     auto i = start;
-    while (is_alphanumeric(value_at(text, i))) {
+    while (is_alphanumeric(written_at(text, i))) {
         std::string label;
-        while (is_alphanumeric(value_at(text, i)) ||
-               (value_at(text, i) == '-' && is_alphanumeric(value_at(text, i + 1)) && !label.empty())) {
+        while (is_alphanumeric(written_at(text, i)) ||
+               (written_at(text, i) == '-' && is_alphanumeric(written_at(text, i + 1)) && !label.empty())) {
             label += static_cast<char>(text[i++].value);
         }
         labels.push_back(std::move(label));
-        if (value_at(text, i) != '.' || !is_alphanumeric(value_at(text, i + 1))) break;
+        if (written_at(text, i) != '.' || !is_alphanumeric(written_at(text, i + 1))) break;
         ++i;
     }
     return i;
@@ -84,7 +83,7 @@ bool is_all_letters(const std::string& label) {
 // A path after a host (/news/2026.html): slashes and what is between them, up to a character an
 // address does not hold or a dot that ends the sentence.
 std::size_t path_end(const std::vector<CodePoint>& text, std::size_t i) {
-    if (value_at(text, i) != '/') return i;
+    if (written_at(text, i) != '/') return i;
     auto end = i;
     for (auto k = i; k < text.size(); ++k) {
         const auto c = text[k].value;
@@ -110,7 +109,7 @@ std::optional<WebAddress> read_web_address(const std::vector<CodePoint>& text, s
     const auto previous = start == 0 ? 0 : text[start - 1].value;
     if (text[start].value == '@') {
         // A mention names someone right after the @ (@新华社, @Tom): a letter, digit or character.
-        const auto next = value_at(text, start + 1);
+        const auto next = written_at(text, start + 1);
         if (is_alphanumeric(previous) || !(is_alphanumeric(next) || next >= 0x2E80)) return std::nullopt;
         return WebAddress{start + 1, {{AddressPart::Kind::words, "艾特"}}};
     }
@@ -123,11 +122,13 @@ std::optional<WebAddress> read_web_address(const std::vector<CodePoint>& text, s
 
     // An e-mail address: a name of letters, digits and . _ - +, then @ and a host.
     auto at = start;
-    while (is_alphanumeric(value_at(text, at)) || value_at(text, at) == '_' || value_at(text, at) == '+' ||
-           ((value_at(text, at) == '.' || value_at(text, at) == '-') && is_alphanumeric(value_at(text, at + 1)))) {
+    while (is_alphanumeric(written_at(text, at)) || written_at(text, at) == '_' ||
+           written_at(text, at) == '+' ||
+           ((written_at(text, at) == '.' || written_at(text, at) == '-') &&
+            is_alphanumeric(written_at(text, at + 1)))) {
         ++at;
     }
-    if (value_at(text, at) == '@') {
+    if (written_at(text, at) == '@') {
         const auto end = host_end(text, at + 1, labels);
         if (labels.size() >= 2 && is_all_letters(labels.back())) {
             append_said(address.parts, text, start, end);
@@ -139,18 +140,20 @@ std::optional<WebAddress> read_web_address(const std::vector<CodePoint>& text, s
     // A scheme, not said: https://, http://, ftp://.
     auto host = start;
     std::string scheme;
-    for (auto k = start; is_ascii_letter(value_at(text, k)); ++k) scheme += static_cast<char>(text[k].value);
+    for (auto k = start; is_ascii_letter(written_at(text, k)); ++k)
+        scheme += static_cast<char>(text[k].value);
     scheme = ascii_lower_case(scheme);
     const bool has_scheme = (scheme == "http" || scheme == "https" || scheme == "ftp") &&
-                            value_at(text, start + scheme.size()) == ':' && value_at(text, start + scheme.size() + 1) == '/' &&
-                            value_at(text, start + scheme.size() + 2) == '/';
+                            written_at(text, start + scheme.size()) == ':' &&
+                            written_at(text, start + scheme.size() + 1) == '/' &&
+                            written_at(text, start + scheme.size() + 2) == '/';
     if (has_scheme) host = start + scheme.size() + 3;
     const auto end = host_end(text, host, labels);
     if (labels.size() < 2 || !is_all_letters(labels.back())) return std::nullopt;
     // A stock's code and its exchange (00700.HK, 600519.SH, 2330.TW) is no address: the number reader
     // says the code and leaves the suffix unsaid (session 15: it was read as an address, 零零七零零点 H K).
     const auto is_digits = [](const std::string& label) {
-        return std::all_of(label.begin(), label.end(), [](char c) { return is_digit(c); });
+        return std::all_of(label.begin(), label.end(), [](char c) { return is_ascii_digit(c); });
     };
     if (!has_scheme && labels.size() == 2 && is_digits(labels.front()) && is_exchange_suffix(labels.back()))
         return std::nullopt;
