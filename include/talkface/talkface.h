@@ -683,7 +683,10 @@ TF_API tf_status tf_timeline_syllable_times(const tf_timeline *timeline, size_t 
 TF_API tf_status tf_timeline_syllable_confidence(const tf_timeline *timeline, size_t index,
                                                  double *out_confidence, int *out_pause_after);
 
-/* The number of warnings (what the reader skipped, each naming source:line:column).
+/* The number of warnings: what the reader skipped, each naming source:line:column, and after
+ * alignment what the aligner says of the recording (a damaged or cut file, a header whose length
+ * disagrees with its sound, each naming the file) and of the match (a finding of TF_CHECK_WARN, a
+ * transcript with no Mandarin reading, which cannot be checked).
  * Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
 TF_API tf_status tf_timeline_warning_count(const tf_timeline *timeline, size_t *out_count);
 

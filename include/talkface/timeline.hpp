@@ -91,7 +91,10 @@ struct Timeline {
     std::vector<Sentence> sentences;
     std::vector<Syllable> syllables;
     /// What the transcript reader skipped or guessed (a character with no reading, say), one
-    /// message per item naming it and where it stands; never silently dropped.
+    /// message per item naming it and where it stands; never silently dropped. After alignment,
+    /// also what the aligner says of the recording (a damaged or cut file, a header whose length
+    /// disagrees with its sound, each naming the file) and of the match (a finding of
+    /// CheckMode::warn, a transcript with no Mandarin reading, which cannot be checked).
     std::vector<std::string> warnings;
     double duration_s = 0.0;  ///< length of the audio, seconds (0 before alignment)
     /// The written forms read by rule, in transcript order, none overlapping (empty for a

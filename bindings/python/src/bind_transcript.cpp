@@ -223,7 +223,9 @@ Example:
 Args:
     sentences (list[Sentence]): in transcript order.
     syllables (list[Syllable]): in transcript order, each naming its sentence.
-    warnings (list[str]): what the transcript reader skipped.
+    warnings (list[str]): what the transcript reader skipped; after alignment, also what the aligner
+        says of the recording (a damaged or cut file, each naming the file) and of the match (a
+        finding of CheckMode.warn, a transcript that cannot be checked).
     duration_s (float): length of the audio, seconds.
     written_forms (list[WrittenForm]): the forms read by rule, in order, none overlapping.
     mismatches (list[TextMismatch]): where the speech does not say the text (lenient alignment).
@@ -234,12 +236,17 @@ Example:
 )doc")
         .def_readwrite("sentences", &Timeline::sentences, "list[Sentence] (a copy)")
         .def_readwrite("syllables", &Timeline::syllables, "list[Syllable] (a copy)")
-        .def_readwrite("warnings", &Timeline::warnings, "list[str]: what the reader skipped, and where")
-        .def_readwrite("duration_s", &Timeline::duration_s, "length of the audio, seconds (0 before alignment)")
+        .def_readwrite(
+            "warnings", &Timeline::warnings,
+            "list[str]: what the reader skipped, and where; after alignment, what the aligner says "
+            "of the recording and the match")
+        .def_readwrite("duration_s", &Timeline::duration_s,
+                       "length of the audio, seconds (0 before alignment)")
         .def_readwrite("written_forms", &Timeline::written_forms,
                        "list[WrittenForm] (a copy): numbers, dates, letters, English words read by rule")
-        .def_readwrite("mismatches", &Timeline::mismatches,
-                       "list[TextMismatch] (a copy): where the speech does not say the text (lenient alignment)")
+        .def_readwrite(
+            "mismatches", &Timeline::mismatches,
+            "list[TextMismatch] (a copy): where the speech does not say the text (lenient alignment)")
         .def("__repr__", [](const Timeline& t) {
             return py::str("<talkface.Timeline: {} sentences, {} syllables, {} warnings, duration_s={!r}>")
                 .format(t.sentences.size(), t.syllables.size(), t.warnings.size(), t.duration_s);
