@@ -992,6 +992,35 @@ void word_signs(const std::vector<CodePoint>& text, std::size_t start, std::size
     }
 }
 
+// Whether a number ending at text[end] with `unit` after it (or none) and `currency` before it (or none)
+// is a price, whose trailing zeros are written, not said: ¥1,299.00 一千二百九十九元, $3.50 三点五美元, and
+// where a currency's word follows (报15.60元 十五点六元; session 17: 十五点六零元).
+bool names_price(const std::vector<CodePoint>& text, std::size_t end, const Unit* unit,
+                 const Currency* currency) {
+    if (currency != nullptr) return true;
+    if (unit != nullptr) return false;
+    return starts_with_any(text_between(text, end, end + 2), {"元", "圆", "圓", "块", "塊", "美元", "港元",
+                                                              "欧元", "歐元", "日元", "英镑", "英鎊"});
+}
+
+// A count shown as "or more" at text[end], 99+ (a chat's unread messages, 18+ of an age rating), said 加 as
+// it is read out (session 16: the + was skipped with a warning), and so after the count's 万 or 亿
+// (已售10万+件 十万加件; session 18: the + was skipped): its words, `end` moved past it. Not before a term
+// (1+1 is a sum):
+// "" there and where no + follows.
+std::string count_over_words(const std::vector<CodePoint>& text, std::size_t& end) {
+    const bool plus_after_magnitude =
+        is_one_of(value_at(text, end), U"万萬亿億") && value_at(text, end + 1) == '+';
+    const auto plus = plus_after_magnitude ? end + 1 : end;
+    const auto after_plus = value_at(text, plus + 1);
+    if (value_at(text, plus) != '+' || is_digit_at(text, plus + 1) || is_ascii_letter(after_plus) ||
+        is_one_of(after_plus, U" +(（"))
+        return "";
+    std::string words = plus_after_magnitude ? std::string(text[end].text) + "加" : "加";
+    end = plus + 1;
+    return words;
+}
+
 // One number, or a range of two (3-5, 3~5), said with what follows the last of them: its power, its
 // magnitude, its unit or its currency's word, the + of a count "or more"; its signs said as a temperature's,
 // a change's or a rise's where the text says so.
@@ -1049,14 +1078,8 @@ SpokenForm read_quantity(const std::vector<CodePoint>& text, std::size_t start, 
         is_temperature_reading(text, start, unit, context.next) ||
         (unit == nullptr && numbers.size() == 1 && range_word_before_temperature(text, start, end));
     word_signs(text, start, unit_end, is_temperature, is_percent, is_per_mille, signs);
-    // ¥1,299.00 is 一千二百九十九元, $3.50 三点五美元: a price's trailing zeros are written, not said,
-    // and so where a currency's word follows (报15.60元 十五点六元; session 17: 十五点六零元).
-    bool is_price = currency != nullptr;
-    if (unit == nullptr && !is_price) {
-        const auto after = text_between(text, end, end + 2);
-        is_price = starts_with_any(
-            after, {"元", "圆", "圓", "块", "塊", "美元", "港元", "欧元", "歐元", "日元", "英镑", "英鎊"});
-    }
+    // A price's trailing zeros are written, not said (¥1,299.00 一千二百九十九元).
+    const bool is_price = names_price(text, end, unit, currency);
     for (auto& price : numbers) {
         if (!is_price || !price.has_point) continue;
         price.fraction.erase(price.fraction.find_last_not_of('0') + 1);
@@ -1106,19 +1129,7 @@ SpokenForm read_quantity(const std::vector<CodePoint>& text, std::size_t start, 
         }
         form.words += currency->after;
     }
-    // A count shown as "or more", 99+ (a chat's unread messages, 18+ of an age rating), said 加 as it is
-    // read out (session 16: the + was skipped with a warning). Not before a term (1+1 is a sum).
-    // So after the count's 万 or 亿 (已售10万+件 十万加件; session 18: the + was skipped).
-    const bool plus_after_magnitude =
-        unit == nullptr && is_one_of(value_at(text, end), U"万萬亿億") && value_at(text, end + 1) == '+';
-    const auto plus = plus_after_magnitude ? end + 1 : end;
-    const auto after_plus = value_at(text, plus + 1);
-    if (currency == nullptr && unit == nullptr && value_at(text, plus) == '+' &&
-        !is_digit_at(text, plus + 1) && !is_ascii_letter(after_plus) && !is_one_of(after_plus, U" +(（")) {
-        if (plus_after_magnitude) form.words += text[end].text;
-        form.words += "加";
-        end = plus + 1;
-    }
+    if (currency == nullptr && unit == nullptr) form.words += count_over_words(text, end);
     form.end = end;
     return form;
 }
