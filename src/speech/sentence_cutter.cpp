@@ -39,6 +39,11 @@ constexpr double kNoisePercentile = 0.10;
 // kNoiseWanderDb above that is the same mark for it, and follows the music's level up.
 constexpr float kAboveFloorDb = 6.0f;
 constexpr float kNoiseWanderDb = 4.0f;
+// The activity threshold's place between the floor and the loud frames, in dB (activity_threshold_db):
+// a quarter of the way up, and no lower than 35 dB below them, where a room's reverberation fills a clean
+// recording's pauses to.
+constexpr float kThresholdShareOfSpeech = 0.25f;
+constexpr float kReverbFillDb = 35.0f;
 // Sentence-cut score: the log duration of a sentence against its syllable count (sd of the log),
 // and the reward for ending a sentence at a long pause.
 constexpr double kSentenceDurationSigma = 0.35;
@@ -358,10 +363,9 @@ void find_speech(const FeatureTrack& track, const std::vector<float>& share, con
     profile.speech_end_frame = end_speech;
 }
 
-}  // namespace
-
-LoudnessProfile measure_loudness(const FeatureTrack& track) {
-    LoudnessProfile profile;
+// The floors of the energy and of each band (kFloorPercentile of every frame) and of the frames
+// with sound in them (sound_percentile).
+void set_floors(const FeatureTrack& track, LoudnessProfile& profile) {
     profile.energy_floor_db = column_percentile(track, kEnergyDb, kFloorPercentile);
     profile.low_floor_db = column_percentile(track, kLowBandDb, kFloorPercentile);
     profile.mid_floor_db = column_percentile(track, kMidBandDb, kFloorPercentile);
@@ -371,23 +375,39 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     profile.low_sound_floor_db = sound_percentile(track, kLowBandDb, kFloorPercentile, profile.low_floor_db);
     profile.high_sound_floor_db =
         sound_percentile(track, kHighBandDb, kFloorPercentile, profile.high_floor_db);
-    const std::size_t frames = track.frame_count;
-    std::vector<float> raw(frames);
-    for (std::size_t t = 0; t < frames; ++t) {
+}
+
+// Each frame's loudness in dB above the floors: the band that rises most above its own, 0 at the floors.
+std::vector<float> above_floors(const FeatureTrack& track, const LoudnessProfile& profile) {
+    std::vector<float> raw(track.frame_count);
+    for (std::size_t t = 0; t < track.frame_count; ++t) {
         raw[t] = std::max({track.at(t, kLowBandDb) - profile.low_floor_db,
                            track.at(t, kMidBandDb) - profile.mid_floor_db,
                            track.at(t, kHighBandDb) - profile.high_floor_db, 0.0f});
     }
+    return raw;
+}
+
+// The activity threshold between the noise and the speech, in dB above the floors as the loud frames'
+// and the noise's typical levels are: kThresholdShareOfSpeech of the way up and at most kReverbFillDb
+// below the loud frames, never less than kAboveFloorDb above the floor nor kNoiseWanderDb above the noise.
+float activity_threshold_db(float speech_level_db, float noise_level_db) {
+    return std::max({kThresholdShareOfSpeech * speech_level_db, speech_level_db - kReverbFillDb,
+                     kAboveFloorDb, noise_level_db + kNoiseWanderDb});
+}
+
+}  // namespace
+
+LoudnessProfile measure_loudness(const FeatureTrack& track) {
+    LoudnessProfile profile;
+    set_floors(track, profile);
+    const std::size_t frames = track.frame_count;
+    std::vector<float> raw = above_floors(track, profile);
     profile.activity_db = smoothed_activity(raw);
-    // Between the noise and the speech: a quarter of the way up in dB, and at most 35 dB below
-    // the loud frames (a room's reverberation fills the pauses of a clean recording to there),
-    // never less than kAboveFloorDb above the floor nor kNoiseWanderDb above the noise's typical
-    // level (noise wanders by a few dB).
     profile.speech_level_db = percentile_of(profile.activity_db, kSpeechPercentile);
     const float speech_level_db = profile.speech_level_db;
-    const float noise_level_db = percentile_of(profile.activity_db, kNoisePercentile);
-    profile.activity_threshold_db = std::max(
-        {0.25f * speech_level_db, speech_level_db - 35.0f, kAboveFloorDb, noise_level_db + kNoiseWanderDb});
+    profile.activity_threshold_db =
+        activity_threshold_db(speech_level_db, percentile_of(profile.activity_db, kNoisePercentile));
     const std::vector<float> share = changing_shares(track);
     const std::vector<bool> tone = steady_tone_frames(track);
     find_speech(track, share, tone, raw, profile);
