@@ -17,6 +17,13 @@ constexpr double kPriorFrames = 30.0;
 // Variances never fall below this share of the pooled variance: a class seen on a few similar
 // frames must not become a spike that wins or loses everything.
 constexpr double kVarianceFloorShare = 0.05;
+// A sentence's observations read its levels above the floor against its loud frames' level, this
+// percentile of them, and no lower than kLeastLevelDb: a stretch barely above the floor is quiet,
+// not loud speech at a low gain.
+constexpr double kLoudFramesPercentile = 0.95;
+constexpr float kLeastLevelDb = 10.0f;
+// The cepstra observed, c1..c12: c0 duplicates the loudness.
+constexpr int kObservedCepstra = kCepstrumCount - 1;
 
 float level_percentile(std::vector<float> values, double fraction) {
     return values.empty() ? 0.0f : percentile_of(std::move(values), fraction);
@@ -69,13 +76,13 @@ void observe(const FeatureTrack& track, const LoudnessProfile& loudness, const F
     }
     // Levels relative to this sentence's loud frames: the same sound reads the same at any gain
     // and any noise level (SPEC "Alignment": loudness above the noise floor).
-    const float speech_level = std::max(10.0f, level_percentile(energy, 0.95));
-    const float low_level = std::max(10.0f, level_percentile(low, 0.95));
+    const float speech_level = std::max(kLeastLevelDb, level_percentile(energy, kLoudFramesPercentile));
+    const float low_level = std::max(kLeastLevelDb, level_percentile(low, kLoudFramesPercentile));
     result.assign(frames * kObservationCount, 0.0f);
     for (std::size_t i = 0; i < frames; ++i) {
         float* row = &result[i * kObservationCount];
         const std::size_t t = span.first_frame + i;
-        for (int c = 0; c < 12; ++c) row[kCepstrum1 + c] = track.at(t, kCepstrum0 + 1 + c);
+        for (int c = 0; c < kObservedCepstra; ++c) row[kCepstrum1 + c] = track.at(t, kCepstrum0 + 1 + c);
         row[kLoudness] = energy[i] / speech_level;
         row[kTilt] = (high[i] - low[i]) / speech_level;
         row[kLowBand] = low[i] / low_level;
@@ -88,7 +95,7 @@ void observe(const FeatureTrack& track, const LoudnessProfile& loudness, const F
             return result[static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(frame, 0, last)) * kObservationCount +
                           static_cast<std::size_t>(column)];
         };
-        for (int c = 0; c < 12; ++c)
+        for (int c = 0; c < kObservedCepstra; ++c)
             row[kDeltaCepstrum1 + c] = (at(i + 1, c) - at(i - 1, c) + 2.0f * (at(i + 2, c) - at(i - 2, c))) / 10.0f;
         row[kDeltaLoudness] = (at(i + 1, kLoudness) - at(i - 1, kLoudness) +
                                2.0f * (at(i + 2, kLoudness) - at(i - 2, kLoudness))) / 10.0f;
