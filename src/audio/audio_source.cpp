@@ -555,73 +555,48 @@ std::size_t AudioSource::read(float* mono, std::size_t max_frames) {
     return frames;
 }
 
-std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
-    // A named pipe nothing writes to blocked the open below for ever; one that is written to gave
-    // "Illegal seek", as a recording is read more than once (its first sound, then its features).
-    if (const NonFile kind = non_file_at(path); kind == NonFile::directory)
-        throw FileError(path, "a directory, not an audio file");
-    else if (kind != NonFile::none)
-        throw FileError(path,
-                        describe(kind) +
-                            ", not a file: talkface reads a recording more than once, which a pipe or a "
-                            "device cannot give; save the sound to a file first");
+namespace {
+
+// The first bytes of the file at `path`, enough to tell its container (is_sndfile_container).
+// Throws FileError where it cannot be read (a directory too), InvalidArgument where it is empty.
+std::array<char, 12> read_container_header(const std::string& path) {
     std::array<char, 12> header{};
-    {
-        std::ifstream probe(path, std::ios::binary | std::ios::ate);
-        if (!probe) throw FileError(path, std::strerror(errno));
-        if (probe.tellg() == 0) throw InvalidArgument(path, "empty file: no audio frames");
-        probe.seekg(0);
-        errno = 0;
-        probe.read(header.data(), static_cast<std::streamsize>(header.size()));
-        // A directory opens as a stream and fails on the first read (EISDIR).
-        if (probe.bad() || (probe.gcount() == 0 && errno != 0)) throw FileError(path, std::strerror(errno));
-    }
-    if (is_silk_voice_message(header))
-        throw ParseError(
-            path, 0, 0, "",
-            "a voice message in SILK v3, the codec of WeChat's and QQ's voice messages, which talkface "
-            "cannot decode (nor can FFmpeg); convert it to WAV or MP3 with a SILK v3 decoder first");
-    if (const auto length = wrong_streaminfo_length(header))
-        throw ParseError(path, 0, 0, "",
-                         "the file is damaged: its FLAC header (STREAMINFO) states " +
-                             std::to_string(*length) + " bytes, where FLAC's is 34");
-    if (!is_sndfile_container(header)) return open_ffmpeg_file(path);
-    if (std::string_view(header.data(), 4) == "RIFF") {
-        if (const auto chunks = wav_data_chunks(path); chunks.size() > 1) {
-            std::uint64_t total_bytes = 0;
-            for (const auto& data : chunks) total_bytes += data.second;
-            throw ParseError(path, 0, 0, "",
-                             "its sound is in " + std::to_string(chunks.size()) +
-                                 " data chunks (a second at byte " + std::to_string(chunks[1].first - 8) +
-                                 "), where a WAV holds one: every reader takes the first (" +
-                                 std::to_string(chunks[0].second) + " of " + std::to_string(total_bytes) +
-                                 " bytes) and the speech after it would be lost; save the recording again "
-                                 "as one WAV from the program that made it");
-        }
-        if (const auto stale = data_past_stated_size(path)) {
-            FfmpegReading reading;
-            reading.reads_past_stated_size = true;
-            auto source = open_ffmpeg_file(path, reading);
-            source->add_note(describe_stale_size(*stale));
-            return source;
-        }
-    }
-    SF_INFO info{};
-    SNDFILE* file = sf_open(path.c_str(), SFM_READ, &info);
-    if (file == nullptr) {
-        // sf_strerror(NULL) is libsndfile's process-global last error: read it before anything else
-        // can open a file on this thread.
-        const std::string reason = sf_strerror(nullptr);
-        if (reason.find("System error") != std::string::npos) throw FileError(path, reason);
-        if (std::string_view(header.data(), 4) == "RIFF") check_wav_header(path);
-        // A container libsndfile knows holding a codec it does not (Opus in an old libsndfile): FFmpeg's
-        // turn. An Ogg file whose header pages are damaged is refused by both, and said to be damaged there.
-        FfmpegReading reading;
-        if (std::string_view(header.data(), 4) == "OggS")
-            if (const auto damage = find_damaged_ogg_page(path))
-                reading.damaged_ogg_page_byte = damage->first_damaged_byte;
-        return open_ffmpeg_file(path, reading);
-    }
+    std::ifstream probe(path, std::ios::binary | std::ios::ate);
+    if (!probe) throw FileError(path, std::strerror(errno));
+    if (probe.tellg() == 0) throw InvalidArgument(path, "empty file: no audio frames");
+    probe.seekg(0);
+    errno = 0;
+    probe.read(header.data(), static_cast<std::streamsize>(header.size()));
+    // A directory opens as a stream and fails on the first read (EISDIR).
+    if (probe.bad() || (probe.gcount() == 0 && errno != 0)) throw FileError(path, std::strerror(errno));
+    return header;
+}
+
+// A file in a container libsndfile reads (`header` its first bytes) that libsndfile refused to open:
+// FFmpeg's turn, but for a system error (FileError) and a WAV header that is broken (check_wav_header's
+// ParseError).
+std::unique_ptr<AudioSource> open_refused_by_sndfile(const std::string& path,
+                                                     const std::array<char, 12>& header) {
+    // sf_strerror(NULL) is libsndfile's process-global last error: read it before anything else
+    // can open a file on this thread.
+    const std::string reason = sf_strerror(nullptr);
+    if (reason.find("System error") != std::string::npos) throw FileError(path, reason);
+    if (std::string_view(header.data(), 4) == "RIFF") check_wav_header(path);
+    // A container libsndfile knows holding a codec it does not (Opus in an old libsndfile): FFmpeg's
+    // turn. An Ogg file whose header pages are damaged is refused by both, and said to be damaged there.
+    FfmpegReading reading;
+    if (std::string_view(header.data(), 4) == "OggS")
+        if (const auto damage = find_damaged_ogg_page(path))
+            reading.damaged_ogg_page_byte = damage->first_damaged_byte;
+    return open_ffmpeg_file(path, reading);
+}
+
+// A file libsndfile opened (`file`, described by `info`), read by libsndfile, or closed and given to
+// FFmpeg where libsndfile misreads it: MPEG audio inside a WAV, an Ogg stream with a damaged page, a
+// container that states no length, a data chunk stated as 0 bytes. Throws ParseError for a sample rate
+// or channel count talkface does not read, FileError for a file cut short.
+std::unique_ptr<AudioSource> open_opened_by_sndfile(const std::string& path, SNDFILE* file,
+                                                    const SF_INFO& info) {
     if (!is_readable_format(info.samplerate, info.channels)) {
         sf_close(file);
         throw ParseError(path, 0, 0, "", unsupported_format_text("header", info.samplerate, info.channels));
@@ -678,6 +653,55 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
         return open_ffmpeg_file(path);
     }
     return std::make_unique<FileSource>(path, file, info, promised);
+}
+
+}  // namespace
+
+std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
+    // A named pipe nothing writes to blocked the open below for ever; one that is written to gave
+    // "Illegal seek", as a recording is read more than once (its first sound, then its features).
+    if (const NonFile kind = non_file_at(path); kind == NonFile::directory)
+        throw FileError(path, "a directory, not an audio file");
+    else if (kind != NonFile::none)
+        throw FileError(path,
+                        describe(kind) +
+                            ", not a file: talkface reads a recording more than once, which a pipe or a "
+                            "device cannot give; save the sound to a file first");
+    const std::array<char, 12> header = read_container_header(path);
+    if (is_silk_voice_message(header))
+        throw ParseError(
+            path, 0, 0, "",
+            "a voice message in SILK v3, the codec of WeChat's and QQ's voice messages, which talkface "
+            "cannot decode (nor can FFmpeg); convert it to WAV or MP3 with a SILK v3 decoder first");
+    if (const auto length = wrong_streaminfo_length(header))
+        throw ParseError(path, 0, 0, "",
+                         "the file is damaged: its FLAC header (STREAMINFO) states " +
+                             std::to_string(*length) + " bytes, where FLAC's is 34");
+    if (!is_sndfile_container(header)) return open_ffmpeg_file(path);
+    if (std::string_view(header.data(), 4) == "RIFF") {
+        if (const auto chunks = wav_data_chunks(path); chunks.size() > 1) {
+            std::uint64_t total_bytes = 0;
+            for (const auto& data : chunks) total_bytes += data.second;
+            throw ParseError(path, 0, 0, "",
+                             "its sound is in " + std::to_string(chunks.size()) +
+                                 " data chunks (a second at byte " + std::to_string(chunks[1].first - 8) +
+                                 "), where a WAV holds one: every reader takes the first (" +
+                                 std::to_string(chunks[0].second) + " of " + std::to_string(total_bytes) +
+                                 " bytes) and the speech after it would be lost; save the recording again "
+                                 "as one WAV from the program that made it");
+        }
+        if (const auto stale = data_past_stated_size(path)) {
+            FfmpegReading reading;
+            reading.reads_past_stated_size = true;
+            auto source = open_ffmpeg_file(path, reading);
+            source->add_note(describe_stale_size(*stale));
+            return source;
+        }
+    }
+    SF_INFO info{};
+    SNDFILE* file = sf_open(path.c_str(), SFM_READ, &info);
+    if (file == nullptr) return open_refused_by_sndfile(path, header);
+    return open_opened_by_sndfile(path, file, info);
 }
 
 std::string wav_codec_browsers_do_not_play(const std::string& path) {
