@@ -439,13 +439,153 @@ void set_tone_gaps(const std::vector<SentenceChain>& chains,
 
 // What lenient alignment measures of a chain on its plain path (the chain aligned without
 // leniency) before its lenient pass: the chain's scores, each syllable's fit and frames on that
-// path, and its held-out gap (lenient_chain.hpp); empty where the chain has no plain path.
+// path, and its held-out gap (lenient_chain.hpp), empty where the chain has no plain path; and its
+// syllables' tone gaps (tone_gaps_of_chains), read on the plain paths of every chain.
 struct LenientEvidence {
     EmissionScores scores;
     std::vector<double> plain_fits;
     std::vector<SyllableFrames> plain_frames;
     std::vector<double> held_out_gaps;
+    std::vector<double> tone_gaps;
 };
+
+// Lenient alignment's evidence, chain by chain: every chain's plain path first, for the tones of
+// the whole recording, and with it what the lenient pass judges its skips by; each chain's scores
+// are kept for that pass, not measured twice. `observations` and `workspace` are scratch.
+std::vector<LenientEvidence> measure_lenient_evidence(
+    const FeatureTrack& track, const LoudnessProfile& loudness, const std::vector<SentenceChain>& chains,
+    const Reestimation& learned, std::vector<float>& observations, ViterbiWorkspace& workspace) {
+    std::vector<LenientEvidence> lenient_evidence;
+    std::vector<std::vector<StateSegment>> plain_paths;
+    for (std::size_t w = 0; w < chains.size(); ++w) {
+        observe(track, loudness, chains[w].searched, observations);
+        LenientEvidence& found = lenient_evidence.emplace_back();
+        learned.model.score(observations.data(), chains[w].searched.length(), found.scores);
+        plain_paths.push_back(
+            viterbi_align(chains[w].states, found.scores, workspace, found.scores.frame_count));
+        // A text with more syllables than the speech holds may have no plain path: no fits.
+        const auto& plain = plain_paths.back();
+        if (plain.empty()) continue;
+        found.plain_fits = fits_on_path(chains[w], plain, found.scores);
+        found.plain_frames = frames_on_path(chains[w], plain);
+        // Each syllable's held-out gap on the plain path (lenient_chain.hpp judges skips and
+        // grows mismatches by it): models re-estimated on a wrong text learn its sounds from
+        // the speech that does not say them, those learned without its half have not.
+        EmissionScores held_out_scores;
+        found.held_out_gaps = held_out_fit_gaps(chains[w], split_in_halves(chains[w], plain), observations,
+                                                learned.whole, learned.halves[w], held_out_scores)
+                                  .syllables;
+    }
+    std::vector<std::vector<double>> tone_gaps = tone_gaps_of_chains(chains, plain_paths, track);
+    for (std::size_t w = 0; w < chains.size(); ++w) lenient_evidence[w].tone_gaps = std::move(tone_gaps[w]);
+    return lenient_evidence;
+}
+
+// The final pass over plain chain `w` made lenient (lenient_chain.hpp) on what `found` measured on its
+// plain path, its syllables placed in `result` and their evidence in `evidence`; `last_path` is
+// the plain chain's path in the last round of re-estimation. `found`'s scores are given back.
+void place_lenient_chain(const SentenceChain& plain_chain, std::size_t w, LenientEvidence& found,
+                         const std::vector<StateSegment>& last_path, ViterbiWorkspace& workspace,
+                         const Timeline& transcript, const FeatureTrack& track,
+                         const LoudnessProfile& loudness, Timeline& result,
+                         std::vector<SyllableEvidence>& evidence) {
+    EmissionScores& chain_scores = found.scores;
+    const std::vector<bool> is_heard_otherwise = heard_otherwise(found.held_out_gaps, found.tone_gaps);
+    SentenceChain chain = lenient_chain(plain_chain, is_heard_otherwise);
+    auto path = align_chain(chain, chain_scores, workspace, chain_scores.frame_count, transcript);
+    // Each round forbids at least one more skip or generic stretch: it ends. Rival shares
+    // are measured only for the syllables a path skips (50 small searches each).
+    std::vector<double> rival_shares;
+    for (;;) {
+        add_rival_shares(chain, path, found.plain_frames, chain_scores, rival_shares);
+        const auto skips = unsupported_skips(chain, path, found.plain_fits, rival_shares, found.held_out_gaps,
+                                             is_heard_otherwise);
+        const auto generic = short_generic(chain, path, found.plain_frames);
+        if (skips.empty() && generic.empty()) break;
+        forbid_skips(chain, skips);
+        forbid_states(chain, generic);
+        path = align_chain(chain, chain_scores, workspace, chain_scores.frame_count, transcript);
+    }
+    // The other searches whose starts weigh in (syllable_steadiness), as for a plain chain:
+    // the lenient chain searched again with the sounds weighing less, and, where the path
+    // takes the text whole (no mismatch), the same without the landmarks' bonus and the
+    // last round's path of the plain chain, the same text on the models one round older.
+    // Beside a mismatch the plain path is another reading of the speech (the text said
+    // whole), not an opinion on the lenient one; and generic speech has no duration prior
+    // of a syllable's, so without the landmarks its edges wander with the sounds light
+    // and move the right syllables beside it (tests/speech/lenient_test.cpp: 里 after the
+    // word the transcript lacks).
+    std::vector<std::vector<SyllableFrames>> other_frames = {
+        light_search(chain, chain_scores, workspace, kLenientLightSoundsWeight, true)};
+    if (takes_text_whole(chain, path)) {
+        other_frames.push_back(
+            light_search(chain, chain_scores, workspace, kLenientLightSoundsWeight, false));
+        other_frames.push_back(frames_on_path(plain_chain, last_path));
+    }
+    place_lenient(chain, w, path, other_frames, found.held_out_gaps, chain_scores, track, loudness, result,
+                  evidence);
+    // Its scores are not needed again: the memory goes back chain by chain.
+    chain_scores = EmissionScores();
+}
+
+// Each syllable of `chain`'s start sureness and far start share on `path` (alignment_confidence.hpp),
+// from the path search's `marginals`, into its `evidence`.
+void set_start_evidence(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                        const EntryMaxMarginals& marginals, std::vector<SyllableEvidence>& evidence) {
+    const std::vector<double> sureness = start_sureness(chain, path, marginals);
+    const std::vector<double> far = far_start_share(chain, path, marginals);
+    for (std::size_t local = 0; local < sureness.size(); ++local) {
+        evidence[chain.syllable_indices[local]].sureness = sureness[local];
+        evidence[chain.syllable_indices[local]].far_start = far[local];
+    }
+}
+
+// Chain `w` placed in a room with its closures ringing (let_closures_ring), its syllables into
+// `room_result` and their evidence into `room_evidence`: on `dry`'s features and models where the
+// room's ringing was taken off (late_reverb.hpp), else on the recorded ones, whose scores of the
+// chain `scores` holds. `last_path` is the placing models' last round's path of the plain chain.
+void place_in_room(const SentenceChain& plain_chain, std::size_t w, DryRoom* dry,
+                   const std::vector<StateSegment>& last_path, const FeatureTrack& placed_track,
+                   const LoudnessProfile& loudness, const Timeline& transcript, EmissionScores& scores,
+                   ViterbiWorkspace& workspace, EntryMaxMarginals& room_marginals, Timeline& room_result,
+                   std::vector<SyllableEvidence>& room_evidence) {
+    EmissionScores& room_scores = dry ? dry->scores : scores;
+    if (dry) {
+        observe(dry->track, loudness, plain_chain.searched, dry->observations);
+        dry->learned.model.score(dry->observations.data(), plain_chain.searched.length(), room_scores);
+    }
+    SentenceChain ringing = plain_chain;
+    let_closures_ring(ringing.states);
+    const auto room_path =
+        align_chain(ringing, room_scores, workspace, room_scores.frame_count, transcript, &room_marginals);
+    const std::vector<std::vector<SyllableFrames>> room_other_frames = {
+        light_search(ringing, room_scores, workspace, kLightSoundsWeight, true),
+        light_search(ringing, room_scores, workspace, kLightSoundsWeight, false),
+        frames_on_path(plain_chain, last_path)};
+    place_syllables(ringing, w, room_path, room_other_frames, room_scores, placed_track, room_result,
+                    room_evidence);
+    set_start_evidence(ringing, room_path, room_marginals, room_evidence);
+}
+
+// The chains of `cut`'s sentences on `spans` (group_chains) in their search spans, their states set
+// as align_chains' flags ask.
+std::vector<SentenceChain> chains_to_align(const FeatureTrack& track, const LoudnessProfile& loudness,
+                                           const Timeline& transcript, const SentenceCut& cut,
+                                           const std::vector<FrameSpan>& spans, bool is_lenient,
+                                           bool is_kept_to_marks, bool is_nasal_release_allowed) {
+    std::vector<SentenceChain> chains = group_chains(transcript, cut, spans);
+    set_search_spans(track, loudness, chains);
+    // Lenient alignment's prices of a skipped syllable and of generic speech were set against the
+    // duration priors at weight 1 (lenient_chain.cpp, bench/ lenient_bench.py): it keeps them so.
+    if (is_lenient)
+        for (auto& chain : chains)
+            for (auto& state : chain.states) state.duration_weight = 1.0;
+    if (is_kept_to_marks)
+        for (auto& chain : chains) keep_pauses_to_marks(chain.states);
+    if (is_nasal_release_allowed)
+        for (auto& chain : chains) let_closures_after_nasals_be_skipped(chain.states);
+    return chains;
+}
 
 // The syllables of every sentence of `cut`, aligned sentence by sentence (neighbours that run on,
 // together), and, when `is_checked`, check_path on each path; when `is_lenient`, the final pass on
@@ -462,17 +602,8 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
     // the sentences' lengths are checked on where the syllables put them.
     std::vector<FrameSpan>& spans = aligned.spans;
     spans = cut.spans;
-    std::vector<SentenceChain> chains = group_chains(transcript, cut, spans);
-    set_search_spans(track, loudness, chains);
-    // Lenient alignment's prices of a skipped syllable and of generic speech were set against the
-    // duration priors at weight 1 (lenient_chain.cpp, bench/ lenient_bench.py): it keeps them so.
-    if (is_lenient)
-        for (auto& chain : chains)
-            for (auto& state : chain.states) state.duration_weight = 1.0;
-    if (is_kept_to_marks)
-        for (auto& chain : chains) keep_pauses_to_marks(chain.states);
-    if (is_nasal_release_allowed)
-        for (auto& chain : chains) let_closures_after_nasals_be_skipped(chain.states);
+    std::vector<SentenceChain> chains = chains_to_align(track, loudness, transcript, cut, spans, is_lenient,
+                                                        is_kept_to_marks, is_nasal_release_allowed);
     const std::vector<bool> is_spoken = spoken_sentences_of(transcript);
     const auto spoken_sentences = static_cast<std::size_t>(std::count(is_spoken.begin(), is_spoken.end(), true));
 
@@ -512,76 +643,14 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
     const bool is_tone_witnessed = aligned.room_result && is_checked &&
                                    spoken_sentences >= kMinToneWitnessSentences && !track.pitch.empty();
     std::vector<std::vector<StateSegment>> checked_paths(is_tone_witnessed ? chains.size() : 0);
-    // Lenient alignment: every chain's plain path first, for the tones of the whole recording, and
-    // with it what the lenient pass judges its skips by; each chain's scores are kept for that pass,
-    // not measured twice.
     std::vector<LenientEvidence> lenient_evidence;
-    std::vector<std::vector<double>> chain_tone_gaps;
-    if (is_lenient) {
-        std::vector<std::vector<StateSegment>> plain_paths;
-        for (std::size_t w = 0; w < chains.size(); ++w) {
-            observe(track, loudness, chains[w].searched, observations);
-            LenientEvidence& found = lenient_evidence.emplace_back();
-            learned.model.score(observations.data(), chains[w].searched.length(), found.scores);
-            plain_paths.push_back(
-                viterbi_align(chains[w].states, found.scores, workspace, found.scores.frame_count));
-            // A text with more syllables than the speech holds may have no plain path: no fits.
-            const auto& plain = plain_paths.back();
-            if (plain.empty()) continue;
-            found.plain_fits = fits_on_path(chains[w], plain, found.scores);
-            found.plain_frames = frames_on_path(chains[w], plain);
-            // Each syllable's held-out gap on the plain path (lenient_chain.hpp judges skips and
-            // grows mismatches by it): models re-estimated on a wrong text learn its sounds from
-            // the speech that does not say them, those learned without its half have not.
-            EmissionScores held_out_scores;
-            found.held_out_gaps =
-                held_out_fit_gaps(chains[w], split_in_halves(chains[w], plain), observations, learned.whole,
-                                  learned.halves[w], held_out_scores)
-                    .syllables;
-        }
-        chain_tone_gaps = tone_gaps_of_chains(chains, plain_paths, track);
-    }
+    if (is_lenient)
+        lenient_evidence =
+            measure_lenient_evidence(track, loudness, chains, learned, observations, workspace);
     for (std::size_t w = 0; w < chains.size(); ++w) {
         if (is_lenient) {
-            EmissionScores& chain_scores = lenient_evidence[w].scores;
-            const auto& plain_fits = lenient_evidence[w].plain_fits;
-            const auto& plain_frames = lenient_evidence[w].plain_frames;
-            const auto& held_out_gaps = lenient_evidence[w].held_out_gaps;
-            const std::vector<bool> is_heard_otherwise = heard_otherwise(held_out_gaps, chain_tone_gaps[w]);
-            SentenceChain chain = lenient_chain(chains[w], is_heard_otherwise);
-            auto path = align_chain(chain, chain_scores, workspace, chain_scores.frame_count, transcript);
-            // Each round forbids at least one more skip or generic stretch: it ends. Rival shares
-            // are measured only for the syllables a path skips (50 small searches each).
-            std::vector<double> rival_shares;
-            for (;;) {
-                add_rival_shares(chain, path, plain_frames, chain_scores, rival_shares);
-                const auto skips = unsupported_skips(chain, path, plain_fits, rival_shares, held_out_gaps, is_heard_otherwise);
-                const auto generic = short_generic(chain, path, plain_frames);
-                if (skips.empty() && generic.empty()) break;
-                forbid_skips(chain, skips);
-                forbid_states(chain, generic);
-                path = align_chain(chain, chain_scores, workspace, chain_scores.frame_count, transcript);
-            }
-            // The other searches whose starts weigh in (syllable_steadiness), as for a plain chain:
-            // the lenient chain searched again with the sounds weighing less, and, where the path
-            // takes the text whole (no mismatch), the same without the landmarks' bonus and the
-            // last round's path of the plain chain, the same text on the models one round older.
-            // Beside a mismatch the plain path is another reading of the speech (the text said
-            // whole), not an opinion on the lenient one; and generic speech has no duration prior
-            // of a syllable's, so without the landmarks its edges wander with the sounds light
-            // and move the right syllables beside it (tests/speech/lenient_test.cpp: 里 after the
-            // word the transcript lacks).
-            std::vector<std::vector<SyllableFrames>> other_frames = {
-                light_search(chain, chain_scores, workspace, kLenientLightSoundsWeight, true)};
-            if (takes_text_whole(chain, path)) {
-                other_frames.push_back(
-                    light_search(chain, chain_scores, workspace, kLenientLightSoundsWeight, false));
-                other_frames.push_back(frames_on_path(chains[w], learned.last_paths[w]));
-            }
-            place_lenient(chain, w, path, other_frames, held_out_gaps, chain_scores, track, loudness, result,
-                          evidence);
-            // Its scores are not needed again: the memory goes back chain by chain.
-            chain_scores = EmissionScores();
+            place_lenient_chain(chains[w], w, lenient_evidence[w], learned.last_paths[w], workspace,
+                                transcript, track, loudness, result, evidence);
             report_pass(progress, passes - 1, passes, w, chains.size());
             continue;
         }
@@ -604,40 +673,14 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
             other_frames = {light_search(chains[w], scores, workspace, kLightSoundsWeight, true),
                             light_search(chains[w], scores, workspace, kLightSoundsWeight, false),
                             frames_on_path(chains[w], learned.last_paths[w])};
-        if (aligned.room_result) {
-            // Before measure_chain, which leaves held-out models' scores in `scores`.
-            EmissionScores& room_scores = dry ? dry->scores : scores;
-            if (dry) {
-                observe(dry->track, loudness, chains[w].searched, dry->observations);
-                dry->learned.model.score(dry->observations.data(), chains[w].searched.length(), room_scores);
-            }
-            SentenceChain ringing = chains[w];
-            let_closures_ring(ringing.states);
-            const auto room_path = align_chain(ringing, room_scores, workspace, room_scores.frame_count,
-                                               transcript, &room_marginals);
-            const std::vector<std::vector<SyllableFrames>> room_other_frames = {
-                light_search(ringing, room_scores, workspace, kLightSoundsWeight, true),
-                light_search(ringing, room_scores, workspace, kLightSoundsWeight, false),
-                frames_on_path(chains[w], placed_learned.last_paths[w])};
-            place_syllables(ringing, w, room_path, room_other_frames, room_scores, placed_track,
-                            *aligned.room_result, room_evidence);
-            const std::vector<double> room_sureness = start_sureness(ringing, room_path, room_marginals);
-            const std::vector<double> room_far = far_start_share(ringing, room_path, room_marginals);
-            for (std::size_t local = 0; local < room_sureness.size(); ++local) {
-                room_evidence[ringing.syllable_indices[local]].sureness = room_sureness[local];
-                room_evidence[ringing.syllable_indices[local]].far_start = room_far[local];
-            }
-        }
+        // Before measure_chain, which leaves held-out models' scores in `scores`.
+        if (aligned.room_result)
+            place_in_room(chains[w], w, dry ? &*dry : nullptr, placed_learned.last_paths[w], placed_track,
+                          loudness, transcript, scores, workspace, room_marginals, *aligned.room_result,
+                          room_evidence);
         measure_chain(chains[w], w, path, other_frames, observations, learned, spoken_sentences, track, loudness, transcript,
                       scores, workspace, result, evidence, spans, metrics, is_checked);
-        if (is_given_out) {
-            const std::vector<double> sureness = start_sureness(chains[w], path, marginals);
-            const std::vector<double> far = far_start_share(chains[w], path, marginals);
-            for (std::size_t local = 0; local < sureness.size(); ++local) {
-                evidence[chains[w].syllable_indices[local]].sureness = sureness[local];
-                evidence[chains[w].syllable_indices[local]].far_start = far[local];
-            }
-        }
+        if (is_given_out) set_start_evidence(chains[w], path, marginals, evidence);
         report_pass(progress, passes - 1, passes, w, chains.size());
     }
     if (is_tone_witnessed) set_tone_gaps(chains, checked_paths, track, metrics);
