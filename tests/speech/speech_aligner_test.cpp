@@ -474,4 +474,33 @@ TEST_SUITE("SpeechAligner") {
                         Cancelled);
         CHECK(calls >= 2);
     }
+
+    // A line of about a second (你好。, 1.28 s) is read in three blocks and aligned as one chain, so its bar
+    // has few steps: each stage still shows, no step jumps more than 0.4 (the longest, 0.36, is the blocks
+    // read before the first step: 80% of the reading's 45%), the bar never goes back, and 1.0 comes once,
+    // at the end, after the work done again (the recording read a second time).
+    TEST_CASE("a one-second line's progress shows each stage in small steps and reaches 1.0 only when done") {
+        std::vector<std::pair<double, std::string>> reports;
+        SpeechAligner().align_file(clip_path("short_line.flac"), clip_transcript("short_line"),
+                                   [&](double fraction, const std::string& stage) {
+                                       reports.emplace_back(fraction, stage);
+                                       return true;
+                                   });
+        REQUIRE(reports.size() >= 8);
+        CHECK(reports.front().second == "reading");
+        for (const char* stage : {"reading", "sentences", "syllables"}) {
+            CAPTURE(stage);
+            CHECK(std::count_if(reports.begin(), reports.end(),
+                                [&](const auto& r) { return r.second == stage; }) >= 1);
+        }
+        CHECK(std::count_if(reports.begin(), reports.end(),
+                            [](const auto& r) { return r.second == "syllables"; }) >= 4);
+        for (std::size_t i = 1; i < reports.size(); ++i) {
+            CAPTURE(i);
+            CHECK(reports[i].first >= reports[i - 1].first);
+            CHECK(reports[i].first - reports[i - 1].first <= 0.4);
+            CHECK((reports[i - 1].first < 1.0));
+        }
+        CHECK(reports.back().first == 1.0);
+    }
 }
