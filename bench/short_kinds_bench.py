@@ -27,6 +27,8 @@ it, then (the kinds):
   babble       3-5 other lines of the same set at SNR 10-20 dB
   tight        cut tight: no hiss around it, its start 10-30 ms into the first syllable (the first
                consonant partly cut), its end 0-20 ms before the last sound
+  breath-after an out-breath (the breath's band noise) starting 0.1-0.3 s after the line, the hiss
+               after it lengthened to hold it (session 29; the other kinds' recordings are as they were)
 The wrong text is the next line of the same set with as many syllables (short_lines_bench's).
 A refused line counts each syllable as missed, as align_bench counts a refused passage. The last
 row of each set sums the lines with digits or English over every kind.
@@ -54,7 +56,7 @@ import short_onsets_bench as onsets_bench
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SPEAKERS = ("espeak", "person", "v", "w")
-EDGE_KINDS = ("plain", "clipped", "click", "breath", "room", "babble", "tight")
+EDGE_KINDS = ("plain", "clipped", "click", "breath", "room", "babble", "tight", "breath-after")
 KINDS = EDGE_KINDS[:1] + tuple(phone.kinds) + EDGE_KINDS[1:]
 HISS_DB = 45.0
 
@@ -139,6 +141,10 @@ def record(kind, x, times, rng, others):
         y = phone.add(y, phone.coloured(len(y), rng, 1), power(x), HISS_DB)
         return y, sr, [(max(0.0, a - begin), b - begin) for a, b in times]
     before, after = rng.uniform(0.3, 0.6), rng.uniform(0.3, 0.6)
+    if kind == "breath-after":
+        gap = rng.uniform(0.1, 0.3)
+        b = breath(power(x), rng)
+        after += gap + len(b) / sr
     y = around(x, rng, before, after)
     moved = [(a + before, b + before) for a, b in times]
     truth = {"sentences": [{"start": before, "end": before + len(x) / sr}]}
@@ -155,6 +161,9 @@ def record(kind, x, times, rng, others):
         b = breath(power(x), rng)
         end = at - round(rng.uniform(0.05, 0.2) * sr)
         y[max(0, end - len(b)):end] += b[max(0, len(b) - end):]
+    elif kind == "breath-after":
+        start = at + len(x) + round(gap * sr)
+        y[start:start + len(b)] += b
     elif kind == "room":
         y = phone.sox(y, sr, ["reverb", str(rng.integers(30, 71)), "50", str(rng.integers(40, 101)),
                               "gain", "-n", "-3"])[:len(y)]

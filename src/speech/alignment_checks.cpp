@@ -66,9 +66,7 @@ constexpr float kNucleusAboveFloorDb = 10.0f;
 // the person's read 1.17 peaks a syllable, 1.42-1.61 through GSM, G.726, Speex, Opus (bench/
 // p-* phone kinds, r-phone tuning-002), and was refused as stretched over a missing sentence.
 // Voiced peaks are then counted on the low and mid bands together (up to kMidBandHighHz), where the
-// formants' moves offset each other (1.33-1.44). Under 300 Hz lie 0.26-0.53 of the low band's
-// power of the person's and the v- voices' recordings, 0.013-0.047 of the phone kinds'.
-constexpr double kNarrowbandFundamentalShare = 0.1;
+// formants' moves offset each other (1.33-1.44); kNarrowbandFundamentalShare tells such a recording.
 // A sentence fits worse than the others' median by this many robust standard deviations, and by
 // at least this much log-likelihood per frame, before it is called the wrong text; and its text
 // must fit it worse than a free sequence of sounds does (fit_gap above 0). Speech that fits every

@@ -123,13 +123,11 @@ class FrameAnalyzer {
 public:
     FrameAnalyzer(FeatureTrack& track, bool with_pitch) : track_(track), with_pitch_(with_pitch) {
         for (std::size_t i = 0; i < kWindowSamples; ++i)
-            window_[i] = static_cast<float>(0.54 - 0.46 * std::cos(2.0 * M_PI * static_cast<double>(i) / (kWindowSamples - 1)));
-        const double low_mel = hz_to_mel(100.0);
-        const double high_mel = hz_to_mel(7600.0);
+            window_[i] = static_cast<float>(
+                0.54 - 0.46 * std::cos(2.0 * M_PI * static_cast<double>(i) / (kWindowSamples - 1)));
         std::array<double, kMelFilters + 2> edges_bin{};
-        for (int i = 0; i < kMelFilters + 2; ++i)
-            edges_bin[static_cast<std::size_t>(i)] =
-                mel_to_hz(low_mel + (high_mel - low_mel) * i / (kMelFilters + 1)) * kFftSize / kAnalysisRateHz;
+        for (std::size_t i = 0; i < edges_bin.size(); ++i)
+            edges_bin[i] = mel_edge_hz(i) * kFftSize / kAnalysisRateHz;
         for (int m = 0; m < kMelFilters; ++m) {
             auto& weights = mel_weights_[static_cast<std::size_t>(m)];
             weights.fill(0.0f);
@@ -377,6 +375,12 @@ private:
 };
 
 }  // namespace
+
+double mel_edge_hz(std::size_t i) {
+    const double low_mel = hz_to_mel(kMelLowHz);
+    const double high_mel = hz_to_mel(kMelHighHz);
+    return mel_to_hz(low_mel + (high_mel - low_mel) * static_cast<double>(i) / (kMelFilters + 1));
+}
 
 double mel_cepstrum_cosine(std::size_t c, std::size_t m) {
     return std::cos(M_PI * static_cast<double>(c) * (static_cast<double>(m) + 0.5) / kMelFilters);

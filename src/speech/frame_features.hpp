@@ -62,9 +62,19 @@ constexpr double kMidBandHighHz = 2500.0;  // the high band's low edge
 // The top of the band where a voice's fundamental lies (FeatureTrack::fundamental_share): a man's
 // 85-180 Hz, a woman's 165-255 Hz, and the telephone band's lower edge.
 constexpr double kFundamentalTopHz = 300.0;
+// A recording whose FeatureTrack::fundamental_share is under this lacks the voice's fundamental (a
+// telephone band): under 300 Hz lie 0.26-0.53 of the low band's power of the person's and the v-
+// voices' recordings, 0.013-0.047 of the phone kinds' (bench/ p-*).
+constexpr double kNarrowbandFundamentalShare = 0.1;
 
 // The mel bands behind the cepstra, 100-7600 Hz (the cepstra keep kCepstrumCount of their DCT).
 constexpr int kMelFilters = 24;
+constexpr double kMelLowHz = 100.0;
+constexpr double kMelHighHz = 7600.0;
+
+// The edges of the mel bands, Hz: band m rises from edge m to its peak at edge m + 1 and falls to
+// edge m + 2 (i in 0..kMelFilters + 1).
+double mel_edge_hz(std::size_t i);
 
 // The DCT's basis over the mel bands: cepstrum c is the sum over bands m of this times the band's log
 // level (frame_features' cepstra; late_reverb.cpp goes back to the bands with it).

@@ -89,8 +89,10 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
             if (tone.end_frame <= speech.first_frame) lower = std::max(lower, tone.end_frame);
             if (tone.first_frame >= speech.end_frame) upper = std::min(upper, tone.first_frame);
         }
-        for (const FrameSpan& breath : loudness.unvoiced_edges)
+        for (const FrameSpan& breath : loudness.unvoiced_edges) {
             if (breath.end_frame <= speech.first_frame) lower = std::max(lower, breath.end_frame);
+            if (breath.first_frame >= speech.end_frame) upper = std::min(upper, breath.first_frame);
+        }
         chain.searched.first_frame = std::max(lower, speech.first_frame > kEdgeFrames ? speech.first_frame - kEdgeFrames : 0);
         // A sentence that ends in a room's tail is searched only a little past the voice's end, and
         // its vowels are scaled to the voiced part: the tail is not speech to spread them over.

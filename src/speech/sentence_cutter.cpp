@@ -8,13 +8,13 @@
 #include "common/number_format.hpp"
 #include "common/order_statistics.hpp"
 #include "speech/alignment_checks.hpp"
+#include "speech/breath_edge.hpp"
 #include "speech/held_music.hpp"
 #include "speech/lifted_noise.hpp"
 #include "speech/music_bed.hpp"
 #include "speech/repeating_accompaniment.hpp"
 #include "speech/run_together.hpp"
 #include "speech/steady_tone.hpp"
-#include "speech/unvoiced_beat.hpp"
 #include "talkface/errors.hpp"
 
 namespace talkface::detail {
@@ -333,22 +333,31 @@ void find_speech(const FeatureTrack& track, const std::vector<float>& share, con
         trailing += bed->pauses.size();
     }
     // A breath before the first words (a rustle, a cough's hiss): sound set apart by a pause and never
-    // voiced, beside a voice that is; every syllable has a voiced vowel. Not after the last words:
-    // there music's quieter tail reads unvoiced too (bench/ r-music tuning-007, session 28).
-    const auto is_unvoiced_beside_voice = [&](const FrameSpan& stretch, const FrameSpan& voice) {
-        const bool is_unvoiced =
-            is_beat_beside_voice(loud_voiced_share(track, profile.activity_db, profile.activity_threshold_db,
-                                                   stretch.first_frame, stretch.end_frame),
-                                 loud_voiced_share(track, profile.activity_db, profile.activity_threshold_db,
-                                                   voice.first_frame, voice.end_frame));
-        if (is_unvoiced) profile.unvoiced_edges.push_back(stretch);
-        return is_unvoiced;
+    // voiced, beside a voice that is; every syllable has a voiced vowel. The band-ratio voicing only
+    // before the first words: after the last, music's quieter tail reads unvoiced by it too (bench/
+    // r-music tuning-007, session 28). A breath has no fundamental either (breath_edge.hpp), which
+    // music's tail keeps (its bass): on both edges, sound with none beside a voice with one is a breath.
+    const auto is_breath = [&](const FrameSpan& stretch, const FrameSpan& voice, bool is_before) {
+        const bool is_dropped = is_breath_beside_voice(track, profile, stretch, voice, is_before);
+        if (is_dropped) profile.unvoiced_edges.push_back(stretch);
+        return is_dropped;
     };
     while (leading < trailing && (is_not_speech(first_speech, pauses[leading].first_frame) ||
-                                  is_unvoiced_beside_voice({first_speech, pauses[leading].first_frame},
-                                                           {pauses[leading].end_frame, end_speech})))
+                                  is_breath({first_speech, pauses[leading].first_frame},
+                                            {pauses[leading].end_frame, end_speech}, true)))
         first_speech = pauses[leading++].end_frame;
-    while (trailing > leading && is_not_speech(pauses[trailing - 1].end_frame, end_speech)) end_speech = pauses[--trailing].first_frame;
+    while (trailing > leading && (is_not_speech(pauses[trailing - 1].end_frame, end_speech) ||
+                                  is_breath({pauses[trailing - 1].end_frame, end_speech},
+                                            {first_speech, pauses[trailing - 1].first_frame}, false)))
+        end_speech = pauses[--trailing].first_frame;
+    // A breath that ends closer to the first words than a pause: the quiet between is still longer
+    // than a closure inside a word.
+    if (const auto breath = find_close_breath(
+            track, profile, first_speech, leading < trailing ? pauses[leading].first_frame : end_speech)) {
+        profile.unvoiced_edges.push_back(*breath);
+        first_speech = breath->end_frame;
+        while (!is_speech_frame(profile, first_speech)) ++first_speech;
+    }
     profile.pauses.assign(pauses.begin() + static_cast<std::ptrdiff_t>(leading), pauses.begin() + static_cast<std::ptrdiff_t>(trailing));
     // Quiet shorter than a pause between the recording's edges and its speech is the speech's own
     // weak edge, as such a gap inside it is a closure. Where there is no pause at all, the floors

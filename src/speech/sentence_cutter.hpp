@@ -51,8 +51,9 @@ struct LoudnessProfile {
     std::vector<float> activity_db;         // per frame: the loudest band above its floor, smoothed
     std::vector<FrameSpan> pauses;          // runs of non-speech, at least kMinPauseS, in order
     std::vector<FrameSpan> tones;           // runs of a steady tone as loud as speech (steady_tone.hpp), in order
-    // Sound before the first words, set apart by a pause and never voiced, beside a voice that is (a
-    // breath): no syllable's, and no sentence is searched into it. In order.
+    // Sound before the first words or after the last, set apart by a pause, never voiced or with no
+    // fundamental, beside a voice that is and has one (a breath, breath_edge.hpp): no syllable's, and
+    // no sentence is searched into it. In order.
     std::vector<FrameSpan> unvoiced_edges;
     std::size_t speech_first_frame = 0;     // first and one past the last speech frame
     std::size_t speech_end_frame = 0;

@@ -1,0 +1,84 @@
+#include "speech/breath_edge.hpp"
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "speech/held_music.hpp"
+#include "speech/unvoiced_beat.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+// The weight of cepstrum c in fundamental_rise_db: log_mel[m] = (2 / kMelFilters) (c0 / 2 +
+// sum over c >= 1 of cepstrum[c] cos(c, m)) (late_reverb.cpp's to_bands), so a difference of two
+// bands' means leaves c0 out. In dB, as the level columns read (log_mel is a natural log).
+std::array<float, kCepstrumCount> fundamental_rise_weights() {
+    std::array<float, kCepstrumCount> weights{};
+    std::vector<std::size_t> fundamental, rest;
+    for (std::size_t m = 0; m < static_cast<std::size_t>(kMelFilters); ++m) {
+        const double centre_hz = mel_edge_hz(m + 1);
+        if (centre_hz < kFundamentalTopHz)
+            fundamental.push_back(m);
+        else if (centre_hz < kLowBandHighHz)
+            rest.push_back(m);
+    }
+    const auto mean_cosine = [](std::size_t c, const std::vector<std::size_t>& bands) {
+        double sum = 0.0;
+        for (const std::size_t m : bands) sum += mel_cepstrum_cosine(c, m);
+        return sum / static_cast<double>(bands.size());
+    };
+    const double to_db = 10.0 / std::log(10.0) * 2.0 / kMelFilters;
+    for (std::size_t c = 1; c < static_cast<std::size_t>(kCepstrumCount); ++c)
+        weights[c] = static_cast<float>(to_db * (mean_cosine(c, fundamental) - mean_cosine(c, rest)));
+    return weights;
+}
+
+}  // namespace
+
+float fundamental_rise_db(const FeatureTrack& track, std::size_t t) {
+    static const std::array<float, kCepstrumCount> weights = fundamental_rise_weights();
+    float rise_db = 0.0f;
+    for (std::size_t c = 1; c < static_cast<std::size_t>(kCepstrumCount); ++c)
+        rise_db += weights[c] * track.at(t, kCepstrum0 + static_cast<int>(c));
+    return rise_db;
+}
+
+double loud_fundamental_share(const FeatureTrack& track, const std::vector<float>& activity_db,
+                              float threshold_db, std::size_t first, std::size_t end) {
+    std::size_t loud = 0, fundamental = 0;
+    for (std::size_t t = first; t < end; ++t) {
+        if (!is_loud_sounding_frame(track, activity_db, threshold_db, t)) continue;
+        ++loud;
+        if (fundamental_rise_db(track, t) >= kFundamentalBelowLowBandDb) ++fundamental;
+    }
+    return loud == 0 ? 0.0 : static_cast<double>(fundamental) / static_cast<double>(loud);
+}
+
+bool is_breath_beside_voice(const FeatureTrack& track, const LoudnessProfile& loudness,
+                            const FrameSpan& stretch, const FrameSpan& voice, bool by_voicing_too) {
+    const auto is_beside_voice = [&](auto loud_share) {
+        return is_beat_beside_voice(loud_share(track, loudness.activity_db, loudness.activity_threshold_db,
+                                               stretch.first_frame, stretch.end_frame),
+                                    loud_share(track, loudness.activity_db, loudness.activity_threshold_db,
+                                               voice.first_frame, voice.end_frame));
+    };
+    return (by_voicing_too && is_beside_voice(loud_voiced_share)) ||
+           (track.fundamental_share >= kNarrowbandFundamentalShare &&
+            stretch.length() >= kFewestBreathFrames && is_beside_voice(loud_fundamental_share));
+}
+
+std::optional<FrameSpan> find_close_breath(const FeatureTrack& track, const LoudnessProfile& loudness,
+                                           std::size_t first, std::size_t end) {
+    std::size_t quiet = first;
+    while (quiet < end && is_speech_frame(loudness, quiet)) ++quiet;
+    std::size_t voice = quiet;
+    while (voice < end && !is_speech_frame(loudness, voice)) ++voice;
+    if (voice == end || voice - quiet < kBreathGapFrames ||
+        !is_breath_beside_voice(track, loudness, {first, quiet}, {voice, end}, false))
+        return std::nullopt;
+    return FrameSpan{first, quiet};
+}
+
+}  // namespace talkface::detail

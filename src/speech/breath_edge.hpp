@@ -1,0 +1,69 @@
+// A breath before a line or after it (issues 12 and 13): a user's short line recorded on a headset
+// starts with the in-breath and may end with the out-breath. A breath is as loud as the quieter
+// speech, and the band-ratio voicing (unvoiced_beat.hpp) reads the short kinds' breaths 0.21-0.68
+// voiced, a voice 0.74-1.0 (bench/README.md, session 28): its noise lies over 400-3000 Hz, in the
+// low band as much as in the high. What it lacks is power where a voice's fundamental and second
+// harmonic lie, under kFundamentalTopHz. The cutter has no spectrum, but each frame's cepstra are
+// the DCT of its mel bands' log levels, and the difference between two groups of bands is a fixed
+// sum over the cepstra (no new feature, twelve multiply-adds a frame).
+#ifndef TALKFACE_SPEECH_BREATH_EDGE_HPP
+#define TALKFACE_SPEECH_BREATH_EDGE_HPP
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "speech/frame_features.hpp"
+#include "speech/sentence_cutter.hpp"
+
+namespace talkface::detail {
+
+// The mean level of frame t's mel bands centred under kFundamentalTopHz (100-360 Hz) less that of
+// the rest of its low band (those centred under kLowBandHighHz, 265-990 Hz), dB, as its cepstra
+// smooth them.
+float fundamental_rise_db(const FeatureTrack& track, std::size_t t);
+
+// A frame whose fundamental_rise_db is this or more has a fundamental. On the short kinds' four
+// voices (bench/short_kinds_bench.py, the breath kind's lines) every loud frame of a line lies
+// above it (their 1st percentile -10 dB), and 88% of a breath's under it (its median -22 dB: the
+// hiss under the breath's band).
+constexpr float kFundamentalBelowLowBandDb = -15.0f;
+
+// The share of the loud, sounding frames in [first, end) (held_music.hpp's is_loud_sounding_frame,
+// as loud_voiced_share's) that have a fundamental. 0 where no frame is loud.
+double loud_fundamental_share(const FeatureTrack& track, const std::vector<float>& activity_db,
+                              float threshold_db, std::size_t first, std::size_t end);
+
+// A stretch shorter than this is not judged by its fundamental. A breath's noise lasts 0.25 s or
+// more: the short kinds' shortest reads 13 frames loud. Music's onset at a file's start and its
+// last notes' tail read 7-8 frames in music-kinds' m-sung (tuning-004, tuning-006), set apart by a
+// pause and holding no syllable; taken off, they moved the sentences' spans and their syllables by
+// 10-80 ms (bench/README.md, session 29).
+constexpr std::size_t kFewestBreathFrames = 10;
+
+// Whether the sound of `stretch` is a breath beside the voice of `voice` (`loudness`'s activity and
+// threshold tell the loud frames): it has no fundamental and the voice has one (where it is
+// kFewestBreathFrames long or more, and the recording keeps a fundamental at all), or, with
+// `by_voicing_too`, it is never voiced by the band ratio (loud_voiced_share) and the voice is. The
+// bars are a beat's beside a voice (is_beat_beside_voice). Through a telephone band a voice's
+// fundamental is gone, and a syllable whose first formant lies low (espeak-ng's 我 in bench/
+// telephone tuning-011) reads as having none beside the rest of the line, which keeps a little.
+bool is_breath_beside_voice(const FeatureTrack& track, const LoudnessProfile& loudness,
+                            const FrameSpan& stretch, const FrameSpan& voice, bool by_voicing_too);
+
+// Quiet frames (under `loudness`'s threshold) this many or more set a breath apart from the
+// words after it, short of a pause. A stop's closure inside a word (an s before it, English st,
+// sp, sk: 30-70 ms) reads at most 5 quiet frames once smoothed; the breaths of the short kinds,
+// ending 50-200 ms before the line, 8 or more.
+constexpr std::size_t kBreathGapFrames = 6;
+
+// The breath at the start of [first, end): its sound up to its first quiet frames, where they are
+// kBreathGapFrames or more and it is a breath beside the sound after them (is_breath_beside_voice,
+// by the fundamental only: a sibilant reads unvoiced by the band ratio); nullopt where there is
+// none. The words start at the first speech frame after it.
+std::optional<FrameSpan> find_close_breath(const FeatureTrack& track, const LoudnessProfile& loudness,
+                                           std::size_t first, std::size_t end);
+
+}  // namespace talkface::detail
+
+#endif
