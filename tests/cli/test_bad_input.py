@@ -209,8 +209,9 @@ def test_long_silence_refused_early_in_bounded_memory(tmp_path):
     assert peak_kb < 200 * 1024, peak_kb
 
 
-# Main's peak on the three hours: 340 MB; the last minute's and the speech's: 20 MB.
-PEAK_AFTER_SILENCE_KB = 100 * 1024
+# Main's peak on the three hours: 340 MB; the last minute's and the speech's: 20 MB, 104 MB under
+# the sanitizers (their shadow memory and freed-block quarantine), which CI runs this test under too.
+PEAK_AFTER_SILENCE_KB = 200 * 1024
 
 
 def test_long_silence_before_the_voice_left_out(tmp_path):
