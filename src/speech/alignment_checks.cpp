@@ -171,12 +171,6 @@ constexpr std::size_t kMaxShortSyllablesInRow = 3;
 // Messages quote this many characters of a sentence, enough to find it in the transcript.
 constexpr std::size_t kQuotedCharacters = 20;
 
-std::vector<std::size_t> syllables_per_sentence(const Timeline& transcript) {
-    std::vector<std::size_t> syllables(transcript.sentences.size(), 0);
-    for (const auto& syllable : transcript.syllables) ++syllables[syllable.sentence];
-    return syllables;
-}
-
 // The refusal of a sentence whose speech other sounds fit `gap` per frame better than its text, on
 // models described by `models` ("" for the recording's own, re-estimated on every sentence).
 [[noreturn]] void refuse_text_fit(std::size_t k, const FrameSpan& span, const Timeline& transcript,

@@ -76,8 +76,7 @@ FrameSpan line_among_quieter_voices(const LoudnessProfile& loudness, const Frame
 
 std::optional<SentenceCut> line_cut_among_voices(const LoudnessProfile& loudness, const Timeline& transcript,
                                                  const SentenceCut& cut) {
-    std::vector<std::size_t> syllables(transcript.sentences.size(), 0);
-    for (const auto& syllable : transcript.syllables) ++syllables.at(syllable.sentence);
+    const std::vector<std::size_t> syllables = syllables_per_sentence(transcript);
     const auto is_spoken = [](std::size_t count) { return count > 0; };
     if (std::count_if(syllables.begin(), syllables.end(), is_spoken) != 1) return std::nullopt;
     const auto k = static_cast<std::size_t>(std::find_if(syllables.begin(), syllables.end(), is_spoken) -

@@ -70,12 +70,6 @@ std::string seconds(std::size_t frame) { return format_fixed(static_cast<double>
 
 std::string span_text(const FrameSpan& span) { return seconds(span.first_frame) + "-" + seconds(span.end_frame) + " s"; }
 
-std::vector<std::size_t> syllables_per_sentence(const Timeline& transcript) {
-    std::vector<std::size_t> counts(transcript.sentences.size(), 0);
-    for (const auto& syllable : transcript.syllables) ++counts.at(syllable.sentence);
-    return counts;
-}
-
 // Algorithm 3.1, steps 2-8, literally: V = the loudest sample of the selected pause, silences are
 // runs quieter than c2 V lasting longer than c1 times the pause, speaking parts are what is left.
 std::vector<FrameSpan> speaking_parts_from_first_pause(const FeatureTrack& track, const AlignOptions& options) {
@@ -406,6 +400,12 @@ float activity_threshold_db(float speech_level_db, float noise_level_db) {
 }
 
 }  // namespace
+
+std::vector<std::size_t> syllables_per_sentence(const Timeline& transcript) {
+    std::vector<std::size_t> counts(transcript.sentences.size(), 0);
+    for (const auto& syllable : transcript.syllables) ++counts.at(syllable.sentence);
+    return counts;
+}
 
 LoudnessProfile measure_loudness(const FeatureTrack& track) {
     LoudnessProfile profile;

@@ -82,6 +82,10 @@ struct SentenceCut {
     std::vector<FrameSpan> limits;
 };
 
+// How many syllables each sentence of `transcript` holds, in the sentences' order (0 for a
+// sentence without syllables: a line of punctuation or of words with no reading).
+std::vector<std::size_t> syllables_per_sentence(const Timeline& transcript);
+
 // The sentences of `transcript` cut from the audio.
 // \throws talkface::AlignmentError when the pauses cannot be matched to the sentences (in
 //         first_pause mode, a different number of speaking parts), naming the times.
