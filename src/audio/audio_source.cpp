@@ -558,7 +558,8 @@ std::size_t AudioSource::read(float* mono, std::size_t max_frames) {
 namespace {
 
 // The first bytes of the file at `path`, enough to tell its container (is_sndfile_container).
-// Throws FileError where it cannot be read (a directory too), InvalidArgument where it is empty.
+// Throws FileError where it cannot be read, InvalidArgument where it is empty. A directory is
+// refused before (open_audio_file's non_file_at), with what it is.
 std::array<char, 12> read_container_header(const std::string& path) {
     std::array<char, 12> header{};
     std::ifstream probe(path, std::ios::binary | std::ios::ate);
@@ -567,7 +568,7 @@ std::array<char, 12> read_container_header(const std::string& path) {
     probe.seekg(0);
     errno = 0;
     probe.read(header.data(), static_cast<std::streamsize>(header.size()));
-    // A directory opens as a stream and fails on the first read (EISDIR).
+    // The file opened but its first read failed (EIO on a failing disk).
     if (probe.bad() || (probe.gcount() == 0 && errno != 0)) throw FileError(path, std::strerror(errno));
     return header;
 }
