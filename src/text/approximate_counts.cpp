@@ -12,9 +12,12 @@ std::optional<std::string> approximate_low_end(const std::vector<CodePoint>& tex
         return std::nullopt;
     const auto next = parse_number(text, number.end + 1);
     const auto after = value_at(text, next.end);
+    // After a verb's 了 the pair counts what was done, whatever the measure orders (看了2、3期 两三期,
+    // 追了2、3集).
+    const bool after_done = start > 0 && text[start - 1].value == U'了';
     if (next.has_point || next.has_separators || !takes_liang(after) ||
-        is_one_of(after, U"层層期届屆章页頁集册冊节節局") ||
-        starts_with_any(text_between(text, next.end, next.end + 2), {"年级", "年級"}))
+        (!after_done && (is_one_of(after, U"层層期届屆章页頁集册冊节節局") ||
+                         starts_with_any(text_between(text, next.end, next.end + 2), {"年级", "年級"}))))
         return std::nullopt;
     const auto& low = number.whole;
     const auto& high = next.whole;

@@ -19,7 +19,8 @@ namespace talkface::detail {
 // (70、80年代 七八十年代, 30、40个 三四十个), the pair before a measure word, with no 第 before it and no
 // third number listed (session 29: 二三天 and 七十八十年代, a list said number by number). The high end is
 // read as it stands, before its measure word (两 for 2: 一两个). An ordering measure (层 期 届 章 页 集 册
-// 节 局, and 年级) keeps the list: 2、3层 are floors two and three, 二、三层.
+// 节 局, and 年级) keeps the list: 2、3层 are floors two and three, 二、三层; but not right after a verb's
+// 了, where the pair counts what was done (看了2、3期 两三期; session 29 left it a list).
 std::optional<std::string> approximate_low_end(const std::vector<CodePoint>& text, std::size_t start,
                                                const WrittenNumber& number);
 

@@ -245,18 +245,9 @@ bool names_short_year(const std::vector<CodePoint>& text, std::size_t start, con
 
 bool lists_year(const std::vector<CodePoint>& text, const WrittenNumber& number) {
     constexpr std::size_t kYearDigits = 4;
-    const auto is_year_digits = [](const WrittenNumber& n) {
-        return !n.has_point && !n.has_separators && n.whole.size() == kYearDigits;
-    };
-    if (!is_year_digits(number)) return false;
-    auto last = number;
-    std::size_t last_start = 0;
-    while (value_at(text, last.end) == U'、' && is_digit_at(text, last.end + 1)) {
-        last_start = last.end + 1;
-        last = parse_number(text, last_start);
-        if (!is_year_digits(last)) return false;
-    }
+    const auto last_start = last_listed_start(text, number, kYearDigits);
     if (last_start == 0) return false;
+    const auto last = parse_number(text, last_start);
     if (value_at(text, last.end) == U'年') return !counts_years(text, last_start, last);
     return names_year_before_word(text, last);
 }

@@ -8,7 +8,11 @@ std::optional<SpokenForm> read_figure_number(const std::vector<CodePoint>& text,
                                              const WrittenNumber& first) {
     constexpr std::size_t kMostParts = 3;
     constexpr std::size_t kMostDigits = 2;
-    if (start == 0 || !is_one_of(text[start - 1].value, U"图圖表式") || first.has_point ||
+    // 例 is a worked example's label (例3-2) but where it ends a word for cases (病例 案例), whose numbers
+    // count.
+    const bool names_example = start > 0 && text[start - 1].value == U'例' &&
+                               (start == 1 || !is_one_of(text[start - 2].value, U"病案"));
+    if (start == 0 || !(is_one_of(text[start - 1].value, U"图圖表式") || names_example) || first.has_point ||
         first.has_separators || first.whole.size() > kMostDigits || !is_dash(value_at(text, first.end)) ||
         !is_digit_at(text, first.end + 1))
         return std::nullopt;

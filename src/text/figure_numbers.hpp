@@ -1,6 +1,6 @@
-// A textbook's figure, table and formula numbers as a lesson reads them (图3-2 图三杠二, 表2-1 表二杠一): the
-// part of the written-form reader that tells a label's chapter and place from a range or a score
-// (docs/written-forms.md).
+// A textbook's figure, table, formula and example numbers as a lesson reads them (图3-2 图三杠二, 表2-1
+// 表二杠一): the part of the written-form reader that tells a label's chapter and place from a range or a
+// score (docs/written-forms.md).
 #ifndef TALKFACE_TEXT_FIGURE_NUMBERS_HPP
 #define TALKFACE_TEXT_FIGURE_NUMBERS_HPP
 
@@ -14,10 +14,11 @@
 
 namespace talkface::detail {
 
-// Two or three numbers of one or two digits joined by dashes right after 图 表 式 (图3-2, 附表2-1, 式3-2-1)
-// and before no measure word or magnitude: a chapter and the label's place in it, each part counted with 杠
-// between, as teachers read them (session 29: 三到两, a range, and 二比一, a score). A range after such a
-// word counts something and says what (发表3-5篇, 代表3-5人 stay ranges).
+// Two or three numbers of one or two digits joined by dashes right after 图 表 式 (图3-2, 附表2-1, 式3-2-1),
+// or 例 (例3-2, a worked example; not 病例 案例, whose cases count), and before no measure word or magnitude:
+// a chapter and the label's place in it, each part counted with 杠 between, as teachers read them (session
+// 29: 三到两, a range, and 二比一, a score; session 30: 例3-2 三到二). A range after such a word counts
+// something and says what (发表3-5篇, 代表3-5人 stay ranges).
 std::optional<SpokenForm> read_figure_number(const std::vector<CodePoint>& text, std::size_t start,
                                              const WrittenNumber& first);
 

@@ -96,6 +96,22 @@ bool is_one_of(char32_t c, std::u32string_view set) {
     return set.find(c) != std::u32string_view::npos;
 }
 
+std::size_t last_listed_start(const std::vector<CodePoint>& text, const WrittenNumber& first,
+                              std::size_t digits) {
+    const auto is_member = [digits](const WrittenNumber& n) {
+        return !n.has_point && !n.has_separators && n.whole.size() == digits;
+    };
+    if (!is_member(first)) return 0;
+    auto last = first;
+    std::size_t last_start = 0;
+    while (value_at(text, last.end) == U'、' && is_digit_at(text, last.end + 1)) {
+        last_start = last.end + 1;
+        last = parse_number(text, last_start);
+        if (!is_member(last)) return 0;
+    }
+    return last_start;
+}
+
 std::string text_between(const std::vector<CodePoint>& text, std::size_t first, std::size_t end) {
     std::string between;
     for (std::size_t i = first; i < std::min(end, text.size()); ++i) between += text[i].text;

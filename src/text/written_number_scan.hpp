@@ -32,6 +32,12 @@ struct WrittenNumber {
 
 WrittenNumber parse_number(const std::vector<CodePoint>& text, std::size_t i);
 
+// Where the last number of a list joined by 、 starts, the list opened by `first` and each of its numbers
+// `digits` digits long with no point or separators (2022、2023年, 80、90后); 0 where `first` opens no such
+// list or stands alone.
+std::size_t last_listed_start(const std::vector<CodePoint>& text, const WrittenNumber& first,
+                              std::size_t digits);
+
 // A month and a day of it, each of one or two digits (a longer run is no date, and is not parsed
 // as a number: 2026-12-123456789012345678901 is read digit by digit, not thrown on).
 bool is_month_and_day(const std::string& month, const std::string& day);

@@ -370,6 +370,16 @@ bool adds_to_ordinal(const std::vector<CodePoint>& text, std::size_t start) {
     return k + 1 < start && k > 0 && text[k - 1].value == U'第';
 }
 
+// A generation, two digits right before 后 (90后 九零后), or the first of a list of them joined by 、 that
+// ends before 后 (80、90后 八零、九零后, 70、80、90后; session 29: 八十、九零后, the first counted).
+bool names_generation(const std::vector<CodePoint>& text, const WrittenNumber& number) {
+    constexpr std::size_t kGenerationDigits = 2;
+    if (number.has_point || number.has_separators || number.whole.size() != kGenerationDigits) return false;
+    const auto last_start = last_listed_start(text, number, kGenerationDigits);
+    const auto end = last_start == 0 ? number.end : parse_number(text, last_start).end;
+    return is_one_of(value_at(text, end), U"后後");
+}
+
 // Whether text[start, end) stands alone as a clause: at the start of the text or after a mark that
 // ends a clause (not a colon, which introduces a value), and before one or the end.
 bool stands_alone(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
@@ -396,7 +406,7 @@ struct NumberContext {
     bool names_place = false;  // a room's or building's name after it (302会议室), a city's before (台北101)
     bool names_day = false;     // a day named by its date's digits (618大促, 今天是520)
     bool names_type = false;    // before 型 or 式, a type's number (737型, 99式)
-    bool is_generation = false;  // two digits right before 后 (90后, 00后)
+    bool is_generation = false;  // two digits right before 后 (90后, 00后), or a list of them (80、90后)
     bool is_house_number = false;  // a street's (路 街 道 段 巷 弄) before 号: 文化路一段100號 一百號
     bool is_hundredths = false;  // right after the seconds of a time (9秒83) or a jump's metres (8米22)
     bool is_grade = false;       // a respirator's filter grade (N95)
@@ -692,8 +702,7 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
                            names_landmark_after_city(text, start, number));
     context.names_day = sign_words.empty() && currency == nullptr && names_a_day(text, start, number);
     context.names_type = is_one_of(value_at(text, number.end), U"型式");
-    context.is_generation = number.whole.size() == 2 && !number.has_point && !number.has_separators &&
-                            is_one_of(value_at(text, number.end), U"后後");
+    context.is_generation = names_generation(text, number);
     // The hundredths after a sprint's seconds (9秒83), and the centimetres after a jump's or a throw's
     // metres (8米22 八米二二, 1米75; session 15: 二十二), two digits and no unit of their own after them.
     const bool after_metres = text[start > 0 ? start - 1 : 0].value == U'米' && number.whole.size() == 2 &&

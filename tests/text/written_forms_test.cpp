@@ -1648,4 +1648,36 @@ TEST_SUITE("written forms") {
             {"Kirin 9000芯片", "qi lin九千芯片"},
         });
     }
+
+    TEST_CASE("a worked example's number in a textbook is said with 杠") {
+        // The first two rows failed on main 532928e (session 30, dev24's tuning miss): 三到二, 一到两.
+        check_cases({
+            {"请看例3-2，这是一道追及问题", "请看例三杠二这是一道追及问题"},
+            {"如例1-2所示", "如例一杠二所示"},
+            // The limits: cases count, and a range before a measure word stays one.
+            {"病例3-5", "病例三到五"},
+            {"举例3-5个", "举例三到五个"},
+        });
+    }
+
+    TEST_CASE("an approximate count after a verb's 了 before an ordering measure") {
+        // The first two rows failed on main 532928e (session 30, dev24's tuning miss): 二三期, 二三层.
+        check_cases({
+            {"这个综艺我只看了2、3期", "这个综艺我只看了两三期"},
+            {"爬了2、3层楼", "爬了两三层楼"},
+            // The limits: floors named and an ordinal's list stay lists.
+            {"2、3层为办公区", "二三层为办公区"},
+            {"第2、3期", "第二三期"},
+        });
+    }
+
+    TEST_CASE("a list of generations is said digit by digit") {
+        // The first two rows failed on main 532928e (session 30, dev24's tuning miss): 八十, 七十 八十.
+        check_cases({
+            {"80、90后是主要用户", "八零九零后是主要用户"},
+            {"70、80、90后都爱用", "七零八零九零后都爱用"},
+            // The limit: decades before 年代 are an approximate count.
+            {"80、90年代", "八九十年代"},
+        });
+    }
 }
