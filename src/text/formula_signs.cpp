@@ -49,6 +49,15 @@ bool clause_has_relation(const std::vector<CodePoint>& text, std::size_t i) {
     return false;
 }
 
+// A number at text[i] that measures something, a unit or a word after it (60分, 38℃, 5mg, 90%): what a bound
+// written < or > holds (分数<60分). A heart's <3 and a bracket's <1> measure nothing.
+bool is_measured_number(const std::vector<CodePoint>& text, std::size_t i) {
+    if (!is_digit_at(text, i)) return false;
+    const auto after = value_at(text, parse_number(text, i).end);
+    return (after >= 0x3400 && after <= 0x9FFF) || is_ascii_letter(after) || after == '%' ||
+           after == 0x2103 /*℃*/ || after == 0xB0 /*°*/;
+}
+
 // The digit a superscript writes (⁰ ¹ ² ³ ⁴ ... ⁹), or -1.
 int superscript_digit(char32_t c) {
     switch (c) {
@@ -136,9 +145,16 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
             if (!(is_formula_term(left) || is_han_left) || !(relation_right || is_han_right)) return {};
             return sign == '=' ? "等于" : sign == 0x2248 ? "约等于" : "不等于";
         }
-        // ASCII < > around words are brackets: <标题>
-        case '>': return is_formula_term(left) && relation_right ? "大于" : "";
-        case '<': return is_formula_term(left) && relation_right ? "小于" : "";
+        // ASCII < > around words are brackets: <标题>. After a word or at a clause's start and before a
+        // number that measures they bound it, as ≥ ≤ do (分数<60分 分数小于六十分, <60分为不及格; session 30:
+        // unsaid).
+        case '>':
+        case '<': {
+            const bool opens_clause = before == 0 || is_one_of(ascii_form(left), U",:;(\n");
+            const bool bounds = (is_han_left || opens_clause) && is_measured_number(text, after);
+            if (!(is_formula_term(left) && relation_right) && !bounds) return {};
+            return sign == '>' ? "大于" : "小于";
+        }
         // ≥ and ≤ are never brackets: after a character too, before a term (含量≥80mg 含量大于等于八十毫克).
         case 0x2265: return (is_formula_term(left) || is_han_left) && relation_right ? "大于等于" : "";  // ≥
         case 0x2264: return (is_formula_term(left) || is_han_left) && relation_right ? "小于等于" : "";  // ≤

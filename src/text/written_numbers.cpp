@@ -420,6 +420,8 @@ struct NumberContext {
     bool is_frequency = false;   // a station's frequency after FM, AM or 调频 (FM103.9 一零三点九)
     bool is_count_over = false;  // a + after it and no term after that (99+ 九十九加; 666+1 is a sum)
     bool after_times = false;  // right after a times sign, a count of items (金币×888 乘八百八十八)
+    bool names_schedule =
+        false;  // a work schedule by its hours and days (996, 955), not after a price (售价996)
 };
 
 struct SaidNumber {
@@ -506,7 +508,10 @@ std::optional<SaidNumber> say_as_name(const std::string& whole, const NumberCont
     }
     // A chat's vow, 1314 (一生一世) and 5201314, counting nothing, is said digit by digit (我爱你1314
     // 一三一四; session 14), as 520 is where it names its day.
-    if ((whole == "1314" || whole == "5201314") && !counts && !context.has_currency && !context.is_ordinal) {
+    // So is a work schedule, 996 or 955 (又是996的一周 九九六; session 30: 九百九十六), where it counts
+    // nothing.
+    if ((whole == "1314" || whole == "5201314" || context.names_schedule) && !counts &&
+        !context.has_currency && !context.is_ordinal) {
         said.words = digit_words(whole);
         return said;
     }
@@ -703,6 +708,13 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
     context.names_day = sign_words.empty() && currency == nullptr && names_a_day(text, start, number);
     context.names_type = is_one_of(value_at(text, number.end), U"型式");
     context.is_generation = names_generation(text, number);
+    // 996 is nine to nine, six days a week, and 955 its opposite; after a price word (售价996, 价格：996)
+    // they count.
+    auto word_end = previous;
+    while (word_end > 0 && is_one_of(ascii_form(text[word_end - 1].value), U": ")) --word_end;
+    const bool after_price = word_end > 0 && is_one_of(text[word_end - 1].value, U"价價");
+    context.names_schedule = (number.whole == "996" || number.whole == "955") && !number.has_point &&
+                             !number.has_separators && !after_price;
     // The hundredths after a sprint's seconds (9秒83), and the centimetres after a jump's or a throw's
     // metres (8米22 八米二二, 1米75; session 15: 二十二), two digits and no unit of their own after them.
     const bool after_metres = text[start > 0 ? start - 1 : 0].value == U'米' && number.whole.size() == 2 &&

@@ -1680,4 +1680,30 @@ TEST_SUITE("written forms") {
             {"80、90年代", "八九十年代"},
         });
     }
+
+    TEST_CASE("a work schedule, 996 and 955, is said digit by digit") {
+        // The first two rows failed on main 532928e (session 30, dev24's tuning miss): 九百九十六,
+        // 九百五十五.
+        check_cases({
+            {"又是996的一周", "又是九九六的一周"},
+            {"拒绝955", "拒绝九五五"},
+            // The limits: a price, a measure and an ordinal count.
+            {"售价996", "售价九百九十六"},
+            {"996元一件", "九百九十六元一件"},
+            {"第996名", "第九百九十六名"},
+        });
+    }
+
+    TEST_CASE("< and > after a word or opening a clause bound a measured number") {
+        // The first three rows failed on main 532928e (session 30, dev24's tuning miss): the sign unsaid.
+        check_cases({
+            {"及格，<60分为不及格", "及格小于六十分为不及格"},
+            {"体温>38.5℃要就医", "体温大于三十八点五摄氏度要就医"},
+            {"每片<5mg", "每片小于五毫克"},
+            // The limits: brackets around words or a number, and a chat's heart, are unsaid.
+            {"<标题>", "标题"},
+            {"选项<1>", "选项一"},
+            {"爱你<3", "爱你三"},
+        });
+    }
 }
