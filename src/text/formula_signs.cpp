@@ -205,7 +205,11 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
                                       right >= '0' && right <= '9' && !clause_has_relation(text, i);
             return counts_items ? "乘" : "";
         }
-        case 0xF7: return between_terms ? "除以" : "";   // ÷
+        // ÷ is never a bracket or a dash: between two words too, as a rule of thumb is written
+        // (总价÷数量=单价, 体重(kg)÷身高; session 30: skipped with a warning).
+        case 0xF7:  // ÷
+            return (is_formula_term(left) || is_han_left) && (is_formula_term(right) || is_han_right) ? "除以"
+                                                                                                      : "";
         // An arrow between two words or terms names where something goes (北京→上海 北京到上海, a route's
         // stops; session 20: skipped with a warning).
         case 0x2192:

@@ -21,9 +21,9 @@ bool is_han(char32_t c) {
     return (c >= 0x4E00 && c <= 0x9FFF) || (c >= 0x3400 && c <= 0x4DBF);
 }
 
-// A bonus to a game's attribute (攻击力+15, 暴击率+5%, 防御+20, 攻击速度+10%): the + is 加, as a
-// game's screen is read. The attribute is a word ending in 力 or 值 (攻击力, 经验值), or one of the
-// stats games show, alone or with 率 after it (暴击率, 命中率).
+// A bonus or a penalty to a game's attribute (攻击力+15, 暴击率+5%, 防御+20, 移速-15%): the + is 加 and
+// the - 减, as a game's screen is read. The attribute is a word ending in 力 or 值 (攻击力, 经验值), or one
+// of the stats games show, alone or with 率 after it (暴击率, 命中率).
 bool follows_game_attribute(const std::vector<CodePoint>& text, std::size_t start) {
     if (start == 0) return false;
     if (is_one_of(text[start - 1].value, U"力值")) return true;
@@ -628,7 +628,7 @@ bool relation_follows(const std::vector<CodePoint>& text, std::size_t end) {
 }
 
 // A number's sign or currency before its digits at text[start] and where its digits start: the sign
-// said (正, 负, 加; ± 正负, ↑ 涨, ↓ 跌) or "" where none is said or a dash is no sign; nullopt where no
+// said (正, 负, 加, 减; ± 正负, ↑ 涨, ↓ 跌) or "" where none is said or a dash is no sign; nullopt where no
 // digit follows.
 struct LeadingSign {
     const Currency* currency = nullptr;
@@ -656,7 +656,12 @@ std::optional<LeadingSign> read_leading_sign(const std::vector<CodePoint>& text,
     } else if (currency == nullptr && (is_dash(first) || first == '+') && is_digit_at(text, i + 1) &&
                !after_word) {
         sign_words = first == '+' ? "正" : "负";
-        if (first == '+' && follows_game_attribute(text, start)) sign_words = "加";
+        // A game's buff and debuff: after an attribute the sign adds or takes away (攻击力+15 加十五,
+        // 移速-15% 减百分之十五; session 30: 负, and 跌 before a percentage, a market's fall). A - after a
+        // word in 值 stays a value's sign (净值-2%, 差值-3).
+        const bool takes_away = is_dash(first) && start > 0 && text[start - 1].value != U'值';
+        if (follows_game_attribute(text, start) && (first == '+' || takes_away))
+            sign_words = first == '+' ? "加" : "减";
         ++i;
     }
     if (!is_digit_at(text, i)) return std::nullopt;

@@ -1706,4 +1706,28 @@ TEST_SUITE("written forms") {
             {"爱你<3", "爱你三"},
         });
     }
+
+    TEST_CASE("a game's debuff, a - after an attribute, is 减") {
+        // The first three rows failed on main 532928e (session 30, found by probing beyond dev24): 跌, 负.
+        check_cases({
+            {"攻击力-10%", "攻击力减百分之十"},
+            {"移速-15%，持续3秒", "移速减百分之十五持续三秒"},
+            {"防御-5", "防御减五"},
+            {"攻击力+15", "攻击力加十五"},
+            // The limits: a value's sign after a word in 值, a market's fall, a temperature.
+            {"基金净值-2%", "基金净值负百分之二"},
+            {"恒指-0.8%", "恒指跌百分之零点八"},
+            {"体温-2℃", "体温零下两摄氏度"},
+        });
+    }
+
+    TEST_CASE("÷ between two words is 除以") {
+        // The first two rows failed on main 532928e (session 30, found by probing beyond dev24): skipped
+        // with a warning.
+        check_cases({
+            {"总价÷数量=单价", "总价除以数量等于单价"},
+            {"体重(kg)÷身高", "体重 kei ji除以身高"},
+            {"12÷3=4", "十二除以三等于四"},
+        });
+    }
 }
