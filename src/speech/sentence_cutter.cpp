@@ -10,6 +10,7 @@
 #include "speech/alignment_checks.hpp"
 #include "speech/breath_edge.hpp"
 #include "speech/held_music.hpp"
+#include "speech/lifted_lead_in.hpp"
 #include "speech/lifted_noise.hpp"
 #include "speech/music_bed.hpp"
 #include "speech/repeating_accompaniment.hpp"
@@ -399,15 +400,9 @@ float activity_threshold_db(float speech_level_db, float noise_level_db) {
                      kAboveFloorDb, noise_level_db + kNoiseWanderDb});
 }
 
-}  // namespace
-
-std::vector<std::size_t> syllables_per_sentence(const Timeline& transcript) {
-    std::vector<std::size_t> counts(transcript.sentences.size(), 0);
-    for (const auto& syllable : transcript.syllables) ++counts.at(syllable.sentence);
-    return counts;
-}
-
-LoudnessProfile measure_loudness(const FeatureTrack& track) {
+// measure_loudness, with `lead_in` (empty, or noise a gain lifted before the first words) read
+// as that noise.
+LoudnessProfile measure_loudness_with(const FeatureTrack& track, const FrameSpan& lead_in) {
     LoudnessProfile profile;
     set_floors(track, profile);
     const std::size_t frames = track.frame_count;
@@ -427,14 +422,40 @@ LoudnessProfile measure_loudness(const FeatureTrack& track) {
     // threshold stays where the whole recording's levels put it: taken after the lift, it falls
     // with the lifted noise, and p-agc's tuning passages read 91.0% within 50 ms, one refused,
     // where they read 97.0% (session 27).
-    const std::vector<float> lift = noise_lift_db(track, profile.low_floor_db, profile.mid_floor_db,
-                                                  profile.high_floor_db, speech_level_db, kMinPauseFrames,
-                                                  {profile.speech_first_frame, profile.speech_end_frame});
+    std::vector<float> lift = noise_lift_db(track, profile.low_floor_db, profile.mid_floor_db,
+                                            profile.high_floor_db, speech_level_db, kMinPauseFrames,
+                                            {profile.speech_first_frame, profile.speech_end_frame});
+    // All of a lifted lead-in is the noise, and no sentence is searched into it.
+    for (std::size_t t = lead_in.first_frame; t < lead_in.end_frame; ++t) lift[t] = std::max(lift[t], raw[t]);
     if (std::any_of(lift.begin(), lift.end(), [](float db) { return db > 0.0f; })) {
         for (std::size_t t = 0; t < frames; ++t) raw[t] = std::max(0.0f, raw[t] - lift[t]);
         find_speech(track, share, tone, raw, profile);
     }
+    if (lead_in.length() > 0)
+        profile.unvoiced_edges.insert(profile.unvoiced_edges.begin(),
+                                      {0, std::min(lead_in.end_frame, profile.speech_first_frame)});
     return profile;
+}
+
+}  // namespace
+
+std::vector<std::size_t> syllables_per_sentence(const Timeline& transcript) {
+    std::vector<std::size_t> counts(transcript.sentences.size(), 0);
+    for (const auto& syllable : transcript.syllables) ++counts.at(syllable.sentence);
+    return counts;
+}
+
+LoudnessProfile measure_loudness(const FeatureTrack& track) {
+    return measure_loudness_with(track, {0, 0});
+}
+
+std::optional<LoudnessProfile> loudness_after_lifted_lead_in(const FeatureTrack& track,
+                                                             const LoudnessProfile& loudness) {
+    if (loudness.speech_first_frame >= kMinPauseFrames) return std::nullopt;
+    const auto lead_in = lifted_lead_in(track, loudness.low_floor_db, loudness.mid_floor_db,
+                                        loudness.high_floor_db, kMinPauseFrames);
+    if (!lead_in) return std::nullopt;
+    return measure_loudness_with(track, *lead_in);
 }
 
 SentenceCut cut_sentences(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,

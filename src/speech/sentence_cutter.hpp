@@ -7,6 +7,7 @@
 #define TALKFACE_SPEECH_SENTENCE_CUTTER_HPP
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "speech/frame_features.hpp"
@@ -53,7 +54,8 @@ struct LoudnessProfile {
     std::vector<FrameSpan> tones;           // runs of a steady tone as loud as speech (steady_tone.hpp), in order
     // Sound before the first words or after the last, set apart by a pause, never voiced or with no
     // fundamental, beside a voice that is and has one (a breath, breath_edge.hpp): no syllable's, and
-    // no sentence is searched into it. In order.
+    // no sentence is searched into it; so is the noise a gain lifted before the first words, in
+    // loudness_after_lifted_lead_in's profile. In order.
     std::vector<FrameSpan> unvoiced_edges;
     std::size_t speech_first_frame = 0;     // first and one past the last speech frame
     std::size_t speech_end_frame = 0;
@@ -63,6 +65,15 @@ struct LoudnessProfile {
 };
 
 LoudnessProfile measure_loudness(const FeatureTrack& track);
+
+// The profile with the noise a gain lifted before the first words read as that noise
+// (lifted_lead_in.hpp), no sentence searched into it; nothing where `loudness` (measure_loudness's)
+// finds a pause before its speech or the recording starts with no such noise. For the syllables'
+// placement only: the checks judge a text on `loudness` (judged after the lifted noise, 8 of the
+// 10 wrong texts of short_kinds_bench's p-agc tuning lines they catch there passed: bench/README.md,
+// session 30).
+std::optional<LoudnessProfile> loudness_after_lifted_lead_in(const FeatureTrack& track,
+                                                             const LoudnessProfile& loudness);
 
 // Whether frame t of `loudness` is speech (activity at or above its threshold).
 inline bool is_speech_frame(const LoudnessProfile& loudness, std::size_t t) {

@@ -863,10 +863,19 @@ Timeline align_track(const FeatureTrack& track, const LoudnessProfile& loudness,
         }
         if (!has_moved_end) throw error;
     }
-    // A line among quieter voices, its text passed on the speech the profile finds: its syllables
-    // placed on the line alone, where the checks pass it there too.
+    // Noise a gain lifted before the first words, or a line among quieter voices, its text passed
+    // on the speech the profile finds: its syllables placed after the noise or on the line alone,
+    // where the checks pass it there too.
     if (!is_given && !options.lenient && options.sentence_cut == SentenceCutMode::automatic) {
-        if (const auto line = line_cut_among_voices(loudness, transcript, cut)) {
+        if (const auto lifted = loudness_after_lifted_lead_in(track, loudness)) {
+            try {
+                result = align_confirmed(track, *lifted, transcript,
+                                         cut_sentences(track, *lifted, transcript, options), is_spoken,
+                                         progress, is_checked, options.lenient);
+            } catch (const AlignmentError&) {
+                // Refused after the noise: the placement the checks passed stands.
+            }
+        } else if (const auto line = line_cut_among_voices(loudness, transcript, cut)) {
             try {
                 result = align_cut(track, loudness, transcript, *line, progress, is_checked, options.lenient);
             } catch (const AlignmentError&) {

@@ -1,0 +1,67 @@
+#include "speech/lifted_lead_in.hpp"
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "common/order_statistics.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+// The lead-in's noise breaks the floor's shape a frame or two at a time (its own ripple: p-fast-
+// combo's street noise); a voice's first sound breaks it for longer. Ended by the level alone, the
+// lead-in took in a line's quiet first syllables where the gain held them under the lifted noise
+// (p-fast-combo tuning: 明天 546 ms late).
+constexpr std::size_t kShapeBreakFrames = 3;
+
+}  // namespace
+
+std::optional<FrameSpan> lifted_lead_in(const FeatureTrack& track, float low_floor_db, float mid_floor_db,
+                                        float high_floor_db, std::size_t min_run_frames) {
+    const std::size_t frames = track.frame_count;
+    if (frames <= min_run_frames ||
+        std::min({low_floor_db, mid_floor_db, high_floor_db}) <= kDigitalSilenceDb)
+        return std::nullopt;
+    const auto above = [&](std::size_t t) {
+        return std::array<float, 3>{track.at(t, kLowBandDb) - low_floor_db,
+                                    track.at(t, kMidBandDb) - mid_floor_db,
+                                    track.at(t, kHighBandDb) - high_floor_db};
+    };
+    const auto loudest = [&](std::size_t t) {
+        const std::array<float, 3> bands = above(t);
+        return *std::max_element(bands.begin(), bands.end());
+    };
+    std::vector<float> levels;
+    for (std::size_t t = 0; t < min_run_frames; ++t) levels.push_back(loudest(t));
+    const float noise_db = percentile_of(levels, 0.5);
+    const auto keeps_shape = [&](std::size_t t) {
+        const std::array<float, 3> bands = above(t);
+        const auto [lowest, highest] = std::minmax_element(bands.begin(), bands.end());
+        return *highest - *lowest < kLiftShapeDb;
+    };
+    std::size_t end = 0, uneven = 0;
+    for (; end < frames && loudest(end) < noise_db + kLiftBelowSpeechDb; ++end) {
+        uneven = keeps_shape(end) ? 0 : uneven + 1;
+        if (uneven == kShapeBreakFrames) {
+            end -= kShapeBreakFrames - 1;
+            break;
+        }
+    }
+    if (end < min_run_frames || end == frames) return std::nullopt;
+    std::array<std::vector<float>, 3> bands;
+    std::size_t flat = 0;
+    for (std::size_t t = 0; t < end; ++t) {
+        const std::array<float, 3> frame = above(t);
+        for (std::size_t b = 0; b < 3; ++b) bands[b].push_back(frame[b]);
+        if (keeps_shape(t)) ++flat;
+    }
+    std::array<float, 3> medians{};
+    for (std::size_t b = 0; b < 3; ++b) medians[b] = percentile_of(bands[b], 0.5);
+    const auto [lowest, highest] = std::minmax_element(medians.begin(), medians.end());
+    if (*highest - *lowest >= kLiftShapeDb || 2 * flat < end) return std::nullopt;
+    return FrameSpan{0, end};
+}
+
+}  // namespace talkface::detail
