@@ -536,10 +536,22 @@ std::string scientific_text(double value) {
 
 }  // namespace
 
+std::string describe_non_finite_samples(std::size_t non_finite, std::size_t total, double first_s) {
+    if (non_finite == total)
+        return "none of its " + std::to_string(total) +
+               " samples is a number (each is NaN or infinite): the file is damaged or the program "
+               "that wrote it failed";
+    return std::to_string(non_finite) + " of its " + std::to_string(total) +
+           " samples are not numbers (NaN or infinite), the first at " + format_fixed(first_s, 3) + " s" +
+           ": read as silence there; the file is damaged or the program that wrote it failed";
+}
+
 std::size_t AudioSource::read(float* mono, std::size_t max_frames) {
     const std::size_t frames = read_frames(mono, max_frames);
     for (std::size_t i = 0; i < frames; ++i) {
         if (!std::isfinite(mono[i])) {
+            if (non_finite_frames_ == 0) first_non_finite_frame_ = frames_read_ + i;
+            ++non_finite_frames_;
             mono[i] = 0.0f;
         } else if (std::fabs(mono[i]) > kMostSampleMagnitude) {
             const double at_s = static_cast<double>(frames_read_ + i) / sample_rate_hz();
@@ -552,6 +564,12 @@ std::size_t AudioSource::read(float* mono, std::size_t max_frames) {
         }
     }
     frames_read_ += frames;
+    if (frames == 0 && non_finite_frames_ > 0 && !is_end_noted_) {
+        is_end_noted_ = true;
+        add_note(
+            describe_non_finite_samples(non_finite_frames_, frames_read_,
+                                        static_cast<double>(first_non_finite_frame_) / sample_rate_hz()));
+    }
     return frames;
 }
 

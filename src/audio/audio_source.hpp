@@ -65,6 +65,11 @@ double lost_seconds(const std::vector<LostAudio>& lost);
 // how many more): what a message says of a damaged file's lost sound. Empty if none was lost.
 std::string describe_lost_audio(const std::vector<LostAudio>& lost);
 
+// "300 of its 49448 samples are not numbers (NaN or infinite), the first at 0.773 s: read as
+// silence there; ...": AudioSource's note on the `non_finite` of `total` frames it read as 0, the
+// first `first_s` from the start; where every frame was one, that none is a number.
+std::string describe_non_finite_samples(std::size_t non_finite, std::size_t total, double first_s);
+
 class AudioSource {
 public:
     virtual ~AudioSource() = default;
@@ -72,7 +77,8 @@ public:
     // is not a number (NaN or an infinity: a damaged stream, a float WAV or a caller's array with a
     // stray one) reads as 0, as a player plays it: every reader of audio (the features, the plot,
     // the page's and the video's sound) gets finite samples, and one such sample cannot turn the
-    // features of the rest of the recording into NaN.
+    // features of the rest of the recording into NaN. At the end, a note (notes()) says how many
+    // there were and where the first was, so that a reading that finds them says so once.
     // \throws talkface::FileError when the data ends before the header said it would (a WAV's data
     //         size, a container's exact length for its sound track: MP4, a LAME-tagged MP3, FLAC).
     // \throws talkface::ParseError for a sample past kMostSampleMagnitude, named with its time.
@@ -105,6 +111,9 @@ private:
     std::vector<CodecPause> codec_pauses_;
     std::vector<std::string> notes_;
     std::size_t frames_read_ = 0;
+    std::size_t non_finite_frames_ = 0;
+    std::size_t first_non_finite_frame_ = 0;
+    bool is_end_noted_ = false;
     // read()'s frames as the source holds them, before non-numbers are made 0.
     virtual std::size_t read_frames(float* mono, std::size_t max_frames) = 0;
 };

@@ -388,11 +388,14 @@ double mel_cepstrum_cosine(std::size_t c, std::size_t m) {
 
 namespace {
 
-// "silent: the loudest sample of its 36000 s is all zero; there is no speech to align".
+// "silent: the loudest sample of its 36000 s is all zero; there is no speech to align", and what the
+// source noted of its reading: samples that are not numbers, read as 0, leave a float file silent.
 InvalidArgument silent_recording(const AudioSource& source, double duration_s, float peak) {
     const std::string level = peak > 0.0f ? format_fixed(20.0 * std::log10(peak), 1) + " dBFS" : "all zero";
-    return InvalidArgument(source.name(), "silent: the loudest sample of its " + format_fixed(duration_s, 3) +
-                                              " s is " + level + "; there is no speech to align");
+    std::string message = "silent: the loudest sample of its " + format_fixed(duration_s, 3) + " s is " +
+                          level + "; there is no speech to align";
+    for (const std::string& note : source.notes()) message += " (the file: " + note + ")";
+    return InvalidArgument(source.name(), message);
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "audio/audio_source.hpp"
 #include "audio/decoded_audio.hpp"
 #include "common/made_by_command.hpp"
+#include "common/number_format.hpp"
 #include "common/test_paths.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/speech_aligner.hpp"
@@ -182,6 +183,12 @@ TEST_SUITE("audio") {
         const AudioView damaged_view{damaged.data(), damaged.size(), 1, wav->sample_rate_hz()};
         const auto source = detail::open_audio_view(damaged_view);
         for (const float sample : test::read_all(*source)) REQUIRE(std::isfinite(sample));
+        const std::string said = "3 of its " + std::to_string(damaged.size()) +
+                                 " samples are not numbers (NaN or infinite), the first at " +
+                                 detail::format_fixed(static_cast<double>(third) / wav->sample_rate_hz(), 3) +
+                                 " s";
+        REQUIRE(source->notes().size() == 1);
+        CHECK(source->notes()[0].rfind(said, 0) == 0);
 
         const Timeline transcript = load_transcript(speech_clip("one_sentence.txt"));
         const SpeechAligner aligner;
@@ -192,6 +199,21 @@ TEST_SUITE("audio") {
             CAPTURE(i);
             CHECK(timeline.syllables[i].start_s == reference.syllables[i].start_s);
         }
+        // Said once, though a short transcript's refusal vote reads the recording three times.
+        CHECK(std::count_if(
+                  timeline.warnings.begin(), timeline.warnings.end(),
+                  [&](const std::string& warning) { return warning.rfind("audio: " + said, 0) == 0; }) == 1);
+        CHECK(reference.warnings.empty());
+    }
+
+    TEST_CASE("a recording none of whose samples is a number is refused as silent, saying why") {
+        const std::vector<float> samples(16000, std::nanf(""));
+        const Timeline transcript = load_transcript(speech_clip("one_sentence.txt"));
+        CHECK_THROWS_WITH_AS(
+            SpeechAligner().align({samples.data(), samples.size(), 1, 16000}, transcript),
+            doctest::Contains("is all zero; there is no speech to align (the file: none of its "
+                              "16000 samples is a number (each is NaN or infinite)"),
+            InvalidArgument);
     }
 
     TEST_CASE("a directory is a file error, not a parse error") {

@@ -178,8 +178,11 @@ def audio_files():
         "two_data_chunks.wav": two_data_chunks(good),
         "fmt_after_data.wav": fmt_after_data(good),
         "voice.aiff": aiff_bytes(voice),
-        "voice.caf": caf_bytes(voice),
+        "voice.caf": caf_bytes(pcm16(voice)),
         "streaminfo_length.flac": flac[:5] + (100).to_bytes(3, "big") + flac[8:],
+        # Session 30: samples that are not numbers, in another float container, and nothing else.
+        "float32_nan_inf.caf": caf_bytes(bytes(non_finite), bits=32, is_float=True),
+        "float32_all_nan.wav": wav_bytes(struct.pack("<f", math.nan) * len(voice), tag=IEEE_FLOAT, bits=32),
     }
 
 
@@ -242,10 +245,12 @@ def aiff_bytes(samples, rate_hz=16000):
     return b"FORM" + struct.pack(">I", len(body)) + body
 
 
-def caf_bytes(samples, rate_hz=16000):
-    """A CAF (Core Audio Format, iPhone's voice memos' container) of 16-bit `samples`."""
-    desc = struct.pack(">d4sIIIII", rate_hz, b"lpcm", 0x2, 2, 1, 1, 16)  # flags: little-endian
-    data = struct.pack(">I", 0) + pcm16(samples)
+def caf_bytes(pcm, *, bits=16, is_float=False, rate_hz=16000):
+    """A CAF (Core Audio Format, iPhone's voice memos' container) of mono little-endian `pcm`: integers
+    of `bits`, or floats."""
+    flags = 0x2 | (0x1 if is_float else 0)  # little-endian; float
+    desc = struct.pack(">d4sIIIII", rate_hz, b"lpcm", flags, bits // 8, 1, 1, bits)
+    data = struct.pack(">I", 0) + pcm
     return (b"caff" + struct.pack(">HH", 1, 0) + b"desc" + struct.pack(">q", len(desc)) + desc + b"data" +
             struct.pack(">q", len(data)) + data)
 

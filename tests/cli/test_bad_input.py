@@ -80,6 +80,9 @@ AUDIO = {
     "voice.aiff": OK,
     "voice.caf": OK,
     "streaminfo_length.flac": "the file is damaged: its FLAC header (STREAMINFO) states 100 bytes, where FLAC's is 34",
+    # Session 30's kinds.
+    "float32_nan_inf.caf": OK,
+    "float32_all_nan.wav": "samples is a number (each is NaN or infinite)",
 }
 # Audio aligned with a warning that names the file: a part of the warning after the path.
 WARNED = {
@@ -88,6 +91,10 @@ WARNED = {
     "stated_half.m4a": "its header states 1.556 s of sound, the file holds 3.093 s",
     "stated_twice.m4a": "its header states 6.182 s for the file, but its sound track's own index holds 3.093 s",
     "two_tracks.mkv": "it has 2 sound tracks: the second was read, for the first is silent",
+    "float32_nan_inf.wav": "300 of its 49448 samples are not numbers (NaN or infinite), the first at 0.773 s",
+    "extensible_float32_nan_inf.wav": "300 of its 49448 samples are not numbers (NaN or infinite), the first at 0.773 s",
+    "float64_nan_inf.wav": "300 of its 49448 samples are not numbers (NaN or infinite), the first at 0.773 s",
+    "float32_nan_inf.caf": "300 of its 49448 samples are not numbers (NaN or infinite), the first at 0.773 s",
 }
 # Transcripts aligned with one_sentence.wav with a warning, and the warning.
 ALIGN_WARNED = {
