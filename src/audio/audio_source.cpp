@@ -368,6 +368,16 @@ public:
     const std::string& name() const override { return path_; }
 
 private:
+    // Only inside what the header promises: a file cut short fails its seek there and is read on
+    // to where its data ends, which the truncation's message names.
+    bool seek_frames(std::size_t frame) override {
+        if (!info_.seekable || frame > promised_frames_ ||
+            sf_seek(file_, static_cast<sf_count_t>(frame), SEEK_SET) != static_cast<sf_count_t>(frame))
+            return false;
+        frames_read_ = frame;
+        return true;
+    }
+
     std::string path_;
     SNDFILE* file_;
     SF_INFO info_;
@@ -392,6 +402,12 @@ public:
     const std::string& name() const override { return name_; }
 
 private:
+    bool seek_frames(std::size_t frame) override {
+        if (frame > audio_.frame_count) return false;
+        position_ = frame;
+        return true;
+    }
+
     AudioView audio_;
     std::size_t position_ = 0;
     std::string name_ = "audio";
@@ -571,6 +587,12 @@ std::size_t AudioSource::read(float* mono, std::size_t max_frames) {
                                         static_cast<double>(first_non_finite_frame_) / sample_rate_hz()));
     }
     return frames;
+}
+
+bool AudioSource::skip_to(std::size_t frame) {
+    if (frame <= frames_read_ || !seek_frames(frame)) return false;
+    frames_read_ = frame;
+    return true;
 }
 
 namespace {

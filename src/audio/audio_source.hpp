@@ -83,6 +83,12 @@ public:
     //         size, a container's exact length for its sound track: MP4, a LAME-tagged MP3, FLAC).
     // \throws talkface::ParseError for a sample past kMostSampleMagnitude, named with its time.
     std::size_t read(float* mono, std::size_t max_frames);
+    // Moves the reading on to `frame` (counted from the start, past every frame read so far)
+    // without decoding what lies between, where the reader can go there straight (libsndfile's
+    // sf_seek in a file it can seek in); false where it cannot, the reading left where it was. A
+    // reading that passes hours of digital silence this way takes no time for them; what it passes
+    // is not read, so its samples that are not numbers are not counted (read()'s note).
+    bool skip_to(std::size_t frame);
     virtual int sample_rate_hz() const = 0;
     // Frames the source says it has; progress is measured against it. For what FFmpeg reads it is
     // the container's estimate, and read() goes on to the real end.
@@ -116,6 +122,8 @@ private:
     bool is_end_noted_ = false;
     // read()'s frames as the source holds them, before non-numbers are made 0.
     virtual std::size_t read_frames(float* mono, std::size_t max_frames) = 0;
+    // skip_to()'s move, where the reader has one.
+    virtual bool seek_frames(std::size_t /*frame*/) { return false; }
 };
 
 // The largest sample read() takes. A float recording holds -1..1, or an integer format's values

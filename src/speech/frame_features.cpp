@@ -3,9 +3,10 @@
 #include <samplerate.h>
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <numeric>
 
 #include "audio/audio_source.hpp"
 #include "common/internal_error.hpp"
@@ -435,6 +436,17 @@ std::size_t silence_to_skip(const FirstSound& first, int sample_rate_hz) {
     return static_cast<std::size_t>(skipped_s * kAnalysisRateHz / kHopSamples) * kHopSamples;
 }
 
+SilencePassed silence_passed_by_seeking(std::size_t skipped_samples, int sample_rate_hz) {
+    const auto rate_hz = static_cast<std::size_t>(sample_rate_hz);
+    const std::size_t common = std::gcd(rate_hz, static_cast<std::size_t>(kAnalysisRateHz));
+    const std::size_t step_frames = rate_hz / common;
+    const std::size_t step_samples = kAnalysisRateHz / common;
+    const auto margin_samples = static_cast<std::size_t>(kResamplerSettlingS * kAnalysisRateHz);
+    if (skipped_samples <= margin_samples) return {};
+    const std::size_t steps = (skipped_samples - margin_samples) / step_samples;
+    return {steps * step_frames, steps * step_samples};
+}
+
 FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)>& on_progress,
                            bool with_pitch, std::size_t skipped_samples,
                            const std::vector<float>& read_first) {
@@ -450,6 +462,13 @@ FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)
     float peak = 0.0f;
     DropoutFinder dropouts;
     std::size_t left_to_skip = skipped_samples;
+    if (read_first.empty()) {
+        const SilencePassed passed = silence_passed_by_seeking(skipped_samples, source.sample_rate_hz());
+        if (passed.source_frames > 0 && source.skip_to(passed.source_frames)) {
+            frames_read = passed.source_frames;
+            left_to_skip -= passed.analysis_samples;
+        }
+    }
     auto sink = [&](const float* samples, std::size_t count) {
         const std::size_t skipped = std::min(left_to_skip, count);
         left_to_skip -= skipped;

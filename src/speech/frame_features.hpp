@@ -124,8 +124,10 @@ struct FeatureTrack {
 // `on_progress(fraction)` is called after each block (it may throw to cancel).
 // \throws talkface::InvalidArgument naming the audio if it is silent; what the source throws.
 // With `with_pitch`, FeatureTrack::pitch too. FeatureTrack::dropouts are found as the samples stream by.
-// `skipped_samples` of the kAnalysisRateHz stream are left unread first: the frames fall that much
+// `skipped_samples` of the kAnalysisRateHz stream are left out first: the frames fall that much
 // later against the recording (its times are then earlier by skipped_samples / kAnalysisRateHz).
+// Where nothing was read first, the source skips most of them unread (silence_passed_by_seeking)
+// if it can; else they are read and dropped.
 // `read_first`: samples already read from `source` (read_first_sound's), taken before what it
 // reads on.
 FeatureTrack analyze_audio(AudioSource& source, const std::function<void(double)>& on_progress,
@@ -157,6 +159,23 @@ std::size_t silence_to_skip(const FirstSound& first, int sample_rate_hz);
 // The silence read_first_sound holds for analyze_audio before it reads the recording again: a
 // minute, 11 MB at 48 kHz.
 constexpr double kMostHeldSilenceS = 60.0;
+
+// Where analyze_audio, told to leave `skipped_samples` of the kAnalysisRateHz stream out, has the
+// source skip_to() instead of reading and resampling them: `source_frames` of a source at
+// `sample_rate_hz`, which are exactly `analysis_samples` of the stream (a whole number of the
+// rates' common periods, so the frames keep their grid), kResamplerSettlingS before the skip's
+// end, so that the resampler has settled on the silence by the first sample kept. {0, 0} where the
+// skip is shorter than that.
+struct SilencePassed {
+    std::size_t source_frames = 0;
+    std::size_t analysis_samples = 0;
+};
+SilencePassed silence_passed_by_seeking(std::size_t skipped_samples, int sample_rate_hz);
+
+// The silence read and resampled before the first sample kept after a seek: libsamplerate's
+// linear converter holds one sample of the past, and a second of the silence leaves it as a
+// reading from the start leaves it, but for the silence's own level (under the silence bar).
+constexpr double kResamplerSettlingS = 1.0;
 
 }  // namespace talkface::detail
 

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "audio/audio_source.hpp"
@@ -131,6 +133,60 @@ TEST_SUITE("frame features") {
             return levels[levels.size() * 95 / 100] - levels[levels.size() / 2];
         };
         CHECK(std::fabs(median_under_loud(hard_levels) - median_under_loud(own_levels)) <= 3.0f);
+    }
+
+    TEST_CASE(
+        "silence left out is passed unread where the source can seek, the features as if it were read") {
+        // 3 s of a converter's silence (a thousandth of a bit of 16) at 44.1 kHz, whose rate is no
+        // multiple of the analysis rate, then the tone: 2 s of it left out, as silence_to_skip
+        // leaves hours out. Read through, every frame of the silence is resampled and dropped.
+        constexpr int kRateHz = 44100;
+        std::vector<float> samples(3 * kRateHz);
+        std::uint32_t seed = 5;
+        for (float& sample : samples)
+            sample =
+                static_cast<float>(static_cast<int>((seed = seed * 1664525u + 1013904223u) >> 16) - 32768) *
+                1e-9f;
+        for (std::size_t i = 0; i < 3 * kRateHz / 2; ++i) {
+            const double t = static_cast<double>(i) / kRateHz;
+            samples.push_back(static_cast<float>(0.3 * std::sin(2.0 * M_PI * 220.0 * t)));
+        }
+        // A source that counts the frames it gives, and passes skip_to() on only where told to.
+        class CountingSource final : public AudioSource {
+        public:
+            CountingSource(const std::vector<float>& samples, bool can_seek)
+                : view_(open_audio_view(AudioView{samples.data(), samples.size(), 1, kRateHz})),
+                  can_seek_(can_seek) {}
+            int sample_rate_hz() const override { return kRateHz; }
+            std::size_t frame_count() const override { return view_->frame_count(); }
+            const std::string& name() const override { return view_->name(); }
+            std::size_t frames_given = 0;
+
+        private:
+            std::size_t read_frames(float* mono, std::size_t max_frames) override {
+                const std::size_t got = view_->read(mono, max_frames);
+                frames_given += got;
+                return got;
+            }
+            bool seek_frames(std::size_t frame) override { return can_seek_ && view_->skip_to(frame); }
+            std::unique_ptr<AudioSource> view_;
+            bool can_seek_;
+        };
+        const std::size_t skipped = 2 * kAnalysisRateHz;
+        CountingSource read_through(samples, false);
+        CountingSource seeking(samples, true);
+        const FeatureTrack all = analyze_audio(read_through, {}, false, skipped);
+        const FeatureTrack passed = analyze_audio(seeking, {}, false, skipped);
+        CHECK(read_through.frames_given == samples.size());
+        CHECK(seeking.frames_given <= samples.size() - kRateHz);
+        CHECK(passed.frame_count == all.frame_count);
+        CHECK(passed.duration_s == doctest::Approx(all.duration_s).epsilon(1e-12));
+        CHECK(passed.peak_amplitude == all.peak_amplitude);
+        REQUIRE(passed.values.size() == all.values.size());
+        float most_apart = 0.0f;
+        for (std::size_t i = 0; i < all.values.size(); ++i)
+            most_apart = std::max(most_apart, std::fabs(passed.values[i] - all.values[i]));
+        CHECK(most_apart <= 1e-3f);
     }
 
     TEST_CASE("the dither repeats: the same audio gives the same features") {
