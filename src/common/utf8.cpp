@@ -27,7 +27,6 @@ void append_utf8(std::string& out, std::uint32_t code) {
 namespace {
 
 // The byte order marks: U+FEFF in each Unicode encoding.
-constexpr std::string_view kUtf8Mark("\xEF\xBB\xBF", 3);
 constexpr std::string_view kUtf16LeMark("\xFF\xFE", 2);
 constexpr std::string_view kUtf16BeMark("\xFE\xFF", 2);
 constexpr std::string_view kUtf32LeMark("\xFF\xFE\0\0", 4);

@@ -13,6 +13,9 @@ namespace talkface::detail {
 // Appends `code` (at most U+10FFFF, not a surrogate) to `out` as UTF-8.
 void append_utf8(std::string& out, std::uint32_t code);
 
+// UTF-8's byte order mark (U+FEFF), which Windows' Notepad writes before UTF-8 text.
+inline constexpr std::string_view kUtf8Mark("\xEF\xBB\xBF", 3);
+
 // Whether `text` starts with a byte order mark (UTF-8, UTF-16 or UTF-32, either byte order), which
 // names its encoding.
 bool has_byte_order_mark(std::string_view text);

@@ -79,6 +79,14 @@ TEST_SUITE("transcript encoding") {
         CHECK(utf16.find("it reads as utf-16le") != std::string::npos);
     }
 
+    TEST_CASE("bytes after UTF-8's mark that are not UTF-8 are refused, naming their byte in the file") {
+        // The mark is 3 bytes, "小朋友。" 12, then 0xFF: byte 15 of the file, column 5.
+        const std::string message = message_of("\xEF\xBB\xBF小朋友。\xFF\xFE abc\n");
+        CHECK(
+            message.find("story.txt:1:5: byte offset 15: not UTF-8, though it starts with UTF-8's byte order "
+                         "mark (the byte 0xFF starts no character)") == 0);
+    }
+
     TEST_CASE("the place where UTF-8 stops is named by line and column") {
         const std::string bytes = "第一行。\n第二" + encoded("行", "GB18030") + "。\n";
         const std::string message = message_of(bytes);
