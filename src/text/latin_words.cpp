@@ -79,6 +79,23 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     {"dimensity", "tian1 ji1"},
     {"snapdragon", "xiao1 long2"},
     {"kirin", "qi2 lin2"},
+    // Session 30: markets, funds and rates that finance copy writes in capitals, said by the names Mandarin
+    // finance says them by: NASDAQ 纳斯达克 and OPEC 欧佩克 (the dictionary's na zi da ke and ou pai ke),
+    // REITs 瑞茨 (its ai ci), HIBOR 海博 (hai ba) and SHIBOR 希博 (generic speech: the dictionary lacks it).
+    {"nasdaq", "na4 si1 da2 ke4"},
+    {"opec", "ou1 pei4 ke4"},
+    {"reits", "rui4 ci2"},
+    {"hibor", "hai3 bo2"},
+    {"shibor", "xi1 bo2"},
+    // The WHO's public health emergency of international concern, PHEIC, said as the word it spells, fake
+    // (费克), as the WHO's officials and Mandarin health news say it; the dictionary lacks it.
+    {"pheic", "fei4 ke4"},
+    // Infrastructure as a service is said by its letters, I A A S: no word is shared for it as SaaS 萨斯 and
+    // PaaS 帕斯 are (the mapping split it, de ai si).
+    {"iaas", "ai4 ei1 ei1 ai2 si5"},
+    // A chip's generation, Gen (骁龙8 Gen 3), said as English says gen, J's sound (zhen, as the letter J is
+    // zhei); the dictionary's entry gave three syllables, jie ne e.
+    {"gen", "zhen1"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

@@ -1730,4 +1730,19 @@ TEST_SUITE("written forms") {
             {"12÷3=4", "十二除以三等于四"},
         });
     }
+
+    TEST_CASE("markets, funds and rates in capitals said by their Mandarin names; PHEIC, IaaS and Gen") {
+        // Each row failed on main 532928e (session 30, dev23 and session 29's leftovers): the dictionary's
+        // na zi da ke, ou pai ke, ai ci, hai ba, jie ne e; generic speech for SHIBOR and PHEIC; de ai si.
+        check_cases({
+            {"NASDAQ指数收涨", "na si da ke指数收涨"},
+            {"OPEC+宣布减产", "ou pei ke加宣布减产"},
+            {"公募REITs上涨", "公募 rui ci上涨"},
+            {"3个月HIBOR升至高位", "三个月 hai bo升至高位"},
+            {"隔夜SHIBOR下行", "隔夜 xi bo下行"},
+            {"疫情构成PHEIC", "疫情构成 fei ke"},
+            {"提供IaaS服务", "提供 ai ei ei ai si服务"},
+            {"骁龙8 Gen 3处理器", "骁龙八 zhen三处理器"},
+        });
+    }
 }
