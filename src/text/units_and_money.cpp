@@ -33,8 +33,9 @@ constexpr Unit kUnits[] = {
     {"J", "焦耳"}, {"kJ", "千焦"}, {"N", "牛"}, {"A", "安"}, {"Ω", "欧"}, {"Ω", "欧"}, {"kΩ", "千欧"},
     {"kW·h", "千瓦时"}, {"kW⋅h", "千瓦时"}, {"m/s²", "米每二次方秒"},
     // Session 18: a blood pressure's unit, as a doctor reads it (140/90mmHg 毫米汞柱), and a game's or a
-    // screen's frame rate (60fps 六十帧每秒; it was spelled, F P S).
-    {"mmHg", "毫米汞柱"}, {"fps", "帧每秒"},
+    // screen's frame rate (60fps 六十帧每秒; it was spelled, F P S). Session 30: a battery's energy in
+    // watt-hours (160Wh/kg 一百六十瓦时每公斤), beside kWh and MWh.
+    {"mmHg", "毫米汞柱"}, {"fps", "帧每秒"}, {"Wh", "瓦时"},
 };
 
 // A unit of one capital (J N A) that a grade or a name also writes after a number: a unit only
@@ -71,6 +72,24 @@ constexpr Currency kCurrencies[] = {
     {U"$", "", "美元"},      {U"¥", "", "元"},     {U"￥", "", "元"},     {U"€", "", "欧元"},
     {U"£", "", "英镑"},
 };
+
+bool is_han_at(const std::vector<CodePoint>& text, std::size_t k) {
+    return k < text.size() && text[k].value >= 0x3400 && text[k].value <= 0x9FFF;
+}
+
+// Whether text[i] follows a number and one to three Chinese characters of its unit (25元/, 3次/, 72.31美元/).
+bool follows_number_and_han_unit(const std::vector<CodePoint>& text, std::size_t i) {
+    // A power's superscript ends the number too (3×10⁸米/秒 米每秒; session 27: 米秒).
+    const auto ends_number = [&](std::size_t k) {
+        return is_digit_at(text, k) ||
+               is_one_of(value_at(text, k), U"\u2070\u00B9\u00B2\u00B3\u2074\u2075\u2076\u2077\u2078\u2079");
+    };
+    constexpr std::size_t kLongestUnit = 3;  // characters: 元, 美元, 平方米
+    for (std::size_t k = 1; k <= kLongestUnit && k <= i; ++k) {
+        if (!is_han_at(text, i - k)) return ends_number(i - k);
+    }
+    return i > kLongestUnit && ends_number(i - kLongestUnit - 1);
+}
 
 }  // namespace
 
@@ -133,11 +152,13 @@ const Currency* currency_at(const std::vector<CodePoint>& text, std::size_t i, s
 }
 
 std::optional<SpokenForm> read_per_unit(const std::vector<CodePoint>& text, std::size_t i) {
-    if (value_at(text, i) != '/' || i < 3 || value_at(text, i - 1) != 'B' || !is_one_of(value_at(text, i - 2), U"KMGTP"))
-        return std::nullopt;
-    auto number_end = i - 2;
-    if (value_at(text, number_end - 1) == ' ') --number_end;
-    if (!is_digit_at(text, number_end - 1) || value_at(text, i + 1) == ' ') return std::nullopt;
+    if (value_at(text, i) != '/' || i < 2 || value_at(text, i + 1) == ' ') return std::nullopt;
+    const bool after_byte_unit =
+        i >= 3 && value_at(text, i - 1) == 'B' && is_one_of(value_at(text, i - 2), U"KMGTP") &&
+        (is_digit_at(text, i - 3) || (value_at(text, i - 3) == ' ' && is_digit_at(text, i - 4)));
+    // A price per a unit written in Latin letters (0.7元/W 零点七元每瓦, 1.2元/kWh), as per a Chinese one
+    // (25元/公斤, slash_reads_per); a unit symbol before the slash is per_unit_words' (160Wh/kg).
+    if (!after_byte_unit && !follows_number_and_han_unit(text, i)) return std::nullopt;
     std::size_t end = i + 1;
     const Unit* per = unit_at(text, i + 1, end);
     if (per == nullptr || per->written == "%") return std::nullopt;
@@ -148,18 +169,7 @@ std::optional<SpokenForm> read_per_unit(const std::vector<CodePoint>& text, std:
 }
 
 bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i) {
-    const auto is_han = [&](std::size_t k) { return k < text.size() && text[k].value >= 0x3400 && text[k].value <= 0x9FFF; };
-    // A power's superscript ends the number too (3×10⁸米/秒 米每秒; session 27: 米秒).
-    const auto ends_number = [&](std::size_t k) {
-        return is_digit_at(text, k) ||
-               is_one_of(value_at(text, k), U"\u2070\u00B9\u00B2\u00B3\u2074\u2075\u2076\u2077\u2078\u2079");
-    };
-    if (value_at(text, i) != '/' || !is_han(i + 1)) return false;
-    constexpr std::size_t kLongestUnit = 3;  // characters: 元, 美元, 平方米
-    for (std::size_t k = 1; k <= kLongestUnit && k <= i; ++k) {
-        if (!is_han(i - k)) return ends_number(i - k);
-    }
-    return i > kLongestUnit && ends_number(i - kLongestUnit - 1);
+    return value_at(text, i) == '/' && is_han_at(text, i + 1) && follows_number_and_han_unit(text, i);
 }
 
 bool slash_joins_sizes(const std::vector<CodePoint>& text, std::size_t i) {

@@ -39,8 +39,9 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
 // Defined in dates_and_times.cpp.
 std::optional<std::size_t> past_subtitle_timing(const std::vector<CodePoint>& text, std::size_t start);
 
-// The slash at text[i] between a byte unit after a number and a unit symbol (7,000MB/s 七千 MB 每秒,
-// 1GB/s): 每 and the unit's words, as the Latin reader says the byte unit's letters before it;
+// The slash at text[i] between a unit after a number and a unit symbol: 每 and the symbol's words. After a
+// byte unit (7,000MB/s 七千 MB 每秒, 1GB/s), whose letters the Latin reader says before it; after a unit of
+// Chinese characters (0.7元/W 零点七元每瓦, 1.2元/kWh; session 30: the symbol was spelled, W da bu liu).
 // nullopt elsewhere.
 std::optional<SpokenForm> read_per_unit(const std::vector<CodePoint>& text, std::size_t i);
 

@@ -1745,4 +1745,21 @@ TEST_SUITE("written forms") {
             {"骁龙8 Gen 3处理器", "骁龙八 zhen三处理器"},
         });
     }
+
+    TEST_CASE("a price per a unit written in Latin letters, and a battery's watt-hours") {
+        // Each row but the limits failed on main 532928e (session 30, dev23): the symbol was spelled after an
+        // unsaid slash (元 da bu liu, 元 kei da ba lu ei qi), Wh was W and h.
+        check_cases({
+            {"光伏组件价格跌至0.7元/W", "光伏组件价格跌至零点七元每瓦"},
+            {"电价为0.5元/kWh", "电价为零点五元每千瓦时"},
+            {"租金3元/m²", "租金三元每平方米"},
+            {"停车费10元/h", "停车费十元每小时"},
+            {"能量密度达160Wh/kg", "能量密度达一百六十瓦时每公斤"},
+            // The limits: a per unit of Chinese characters and after a byte unit, as before; a letter before
+            // a Chinese word is no unit.
+            {"25元/公斤", "二十五元每公斤"},
+            {"读取速度7000MB/s", "读取速度七千 ai mu bi每秒"},
+            {"12元/T恤", "十二元 ti恤"},
+        });
+    }
 }
