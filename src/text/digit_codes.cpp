@@ -430,6 +430,13 @@ bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, 
         return true;
     const auto before = text_between(text, start >= 2 ? start - 2 : 0, start);
     if (before == "日经" || before == "日經") return true;
+    constexpr std::size_t kShortestCellFormat = 4;
+    constexpr std::size_t kLongestCellFormat = 5;
+    if (digits.size() >= kShortestCellFormat && digits.size() <= kLongestCellFormat &&
+        !ends_with(digits, "000") &&
+        starts_with_any(text_between(text, number.end, number.end + 3),
+                        {"电池", "電池", "电芯", "電芯", "锂电", "鋰電", "圆柱", "圓柱", "大圆柱", "大圓柱"}))
+        return true;
     if (digits.size() != 3) return false;
     auto end = number.end;
     // Past the rest of a list of such numbers (985、211高校) to the word they share.

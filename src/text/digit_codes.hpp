@@ -131,7 +131,10 @@ bool follows_maker_name(const std::vector<CodePoint>& text, std::size_t start);
 // - the Nikkei's number (日经225 日经二二五, as Japanese and Chinese market news say it; the other
 //   indices count their shares: 沪深300 三百, 标普500 五百);
 // - a programme's number before its word (985高校, 211工程, 863计划), also in a list (985、211高校);
-// - a video's resolution, lines and a p (1080P 一零八零P, 720p).
+// - a video's resolution, lines and a p (1080P 一零八零P, 720p);
+// - a battery cell's format, its diameter and length in millimetres, before 电池 电芯 锂电 圆柱
+//   (4680大圆柱电池 四六八零, 18650电芯 一八六五零, 21700电池; session 30: they counted): four or five
+//   digits, not a round thousand.
 bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
 
 // A version after a software's name and a space (Python 3.12, iOS 17.12: a word with a small

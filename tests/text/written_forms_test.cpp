@@ -1762,4 +1762,18 @@ TEST_SUITE("written forms") {
             {"12元/T恤", "十二元 ti恤"},
         });
     }
+
+    TEST_CASE("a battery cell's format is said digit by digit") {
+        // The first four rows failed on main 532928e (session 30, dev23 and session 29's leftover 4680): 四千六百八十,
+        // 一万八千六百五十, 两万一千七百, 一万八千六百五十锂电池.
+        check_cases({
+            {"特斯拉4680大圆柱电池", "特斯拉四六八零大圆柱电池"},
+            {"使用了6节18650电芯", "使用了六节一八六五零电芯"},
+            {"21700电池", "二一七零零电池"},
+            {"18650锂电池", "一八六五零锂电池"},
+            // The limits: a round thousand and a capacity's unit count.
+            {"2000电池", "两千电池"},
+            {"5000mAh电池", "五千毫安时电池"},
+        });
+    }
 }
