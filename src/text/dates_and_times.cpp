@@ -232,6 +232,17 @@ bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNum
                                    "高考", "中考", "考研", "国考", "國考", "学测", "學測"});
 }
 
+bool joins_periods(const std::vector<CodePoint>& text, std::size_t i) {
+    const auto names_period = [&](std::size_t letter) {
+        const auto part = value_at(text, letter + 1);
+        return ((value_at(text, letter) == 'Q' && is_one_of(part, U"1234")) ||
+                (value_at(text, letter) == 'H' && is_one_of(part, U"12"))) &&
+               !is_digit_at(text, letter + 2) && !is_ascii_letter(value_at(text, letter + 2));
+    };
+    return i >= 2 && is_range_mark(value_at(text, i)) && names_period(i - 2) &&
+           !is_ascii_letter(value_at(text, i - 3)) && names_period(i + 1);
+}
+
 bool names_short_year(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
     if (number.has_point || number.has_separators || number.whole.size() != 2 ||
         value_at(text, number.end) != U'年')

@@ -55,6 +55,10 @@ bool counts_years(const std::vector<CodePoint>& text, std::size_t start, const W
 // release's or a quarter's two digits before its half or quarter (24H2 二四 H 二, 25Q1 二五 Q 一).
 bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNumber& number);
 
+// The dash or ~ at text[i] between a year's quarters or halves (2024Q1-Q3 二零二四 Q 一到 Q 三, Q2~Q4,
+// H1-H2): a range, said 到 as a range of numbers is (session 30: unsaid, Q 一 Q 三).
+bool joins_periods(const std::vector<CodePoint>& text, std::size_t i);
+
 // A year by its last two digits before a month (24年12月5日 二四年十二月五日, 08年8月 零八年八月), as
 // mainland news and chat write a recent year; counted where two digits are a year of the Republic, in a
 // Traditional transcript or after 民国 (88年9月21日 八十八年). Before anything but a month two digits and 年

@@ -13,6 +13,7 @@
 #include "talkface/errors.hpp"
 #include "text/aspect_particle.hpp"
 #include "text/code_points.hpp"
+#include "text/dates_and_times.hpp"
 #include "text/digit_codes.hpp"
 #include "text/latin_words.hpp"
 #include "text/number_words.hpp"
@@ -509,6 +510,11 @@ private:
             form_warnings_ = timeline_.warnings.size();
             add_form(text, i, per->end, read_words(per->words));
             return per->end;
+        }
+        if (detail::joins_periods(text, i)) {
+            form_warnings_ = timeline_.warnings.size();
+            add_form(text, i, i + 1, read_words("到"));
+            return i + 1;
         }
         if (detail::slash_reads_per(text, i) || detail::slash_joins_sizes(text, i)) {
             form_warnings_ = timeline_.warnings.size();

@@ -1764,8 +1764,8 @@ TEST_SUITE("written forms") {
     }
 
     TEST_CASE("a battery cell's format is said digit by digit") {
-        // The first four rows failed on main 532928e (session 30, dev23 and session 29's leftover 4680): 四千六百八十,
-        // 一万八千六百五十, 两万一千七百, 一万八千六百五十锂电池.
+        // The first four rows failed on main 532928e (session 30, dev23 and session 29's leftover 4680):
+        // 四千六百八十, 一万八千六百五十, 两万一千七百, 一万八千六百五十锂电池.
         check_cases({
             {"特斯拉4680大圆柱电池", "特斯拉四六八零大圆柱电池"},
             {"使用了6节18650电芯", "使用了六节一八六五零电芯"},
@@ -1774,6 +1774,19 @@ TEST_SUITE("written forms") {
             // The limits: a round thousand and a capacity's unit count.
             {"2000电池", "两千电池"},
             {"5000mAh电池", "五千毫安时电池"},
+        });
+    }
+
+    TEST_CASE("a range of a year's quarters or halves is said with 到") {
+        // The first three rows failed on main 532928e (session 30, dev23, session 29's leftover 2024Q1-Q3):
+        // the dash or ~ unsaid, Q 一 Q 三.
+        check_cases({
+            {"公司2024Q1-Q3累计净利润", "公司二零二四 qiu一到 qiu三累计净利润"},
+            {"Q2~Q4营收", "qiu二到 qiu四营收"},
+            {"25Q1-Q2", "二五 qiu一到 qiu二"},
+            // The limits: no quarter's number past 4 nor a half's past 2, nor a longer code (H1N1).
+            {"Q1-Q12", "qiu一 qiu十二"},
+            {"H1N1-H3", "ai qi一 en一 ai qi三"},
         });
     }
 }
