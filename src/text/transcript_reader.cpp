@@ -716,6 +716,11 @@ private:
         // dictionary's word ph, pi ei qi).
         if (word.size() == 2 && word.front() >= 'a' && word.front() <= 'z' && is_ascii_capital(static_cast<char32_t>(word.back())))
             return said_syllables(detail::letter_syllables(word));
+        // A capital, a small letter and a capital (YoY, QoQ, MoM: year over year, as finance copy abbreviates
+        // a comparison) are the three words' letters (session 30: Yo and Y, you wai).
+        if (word.size() == 3 && is_ascii_capital(static_cast<char32_t>(word[0])) && word[1] >= 'a' &&
+            word[1] <= 'z' && is_ascii_capital(static_cast<char32_t>(word[2])))
+            return said_syllables(detail::letter_syllables(word));
         // Capitals and one small letter after them (PCIe) are an acronym's letters, said one by one (P C
         // I E); no part of them is a word to say.
         const bool is_acronym_with_small_end = word.size() >= 3 && word.back() >= 'a' && word.back() <= 'z' &&

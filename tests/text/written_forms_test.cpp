@@ -1789,4 +1789,13 @@ TEST_SUITE("written forms") {
             {"H1N1-H3", "ai qi一 en一 ai qi三"},
         });
     }
+
+    TEST_CASE("a capital, a small letter and a capital are letters") {
+        // Each row failed on main 532928e (session 30, dev23): you wai, de qiu, ma mu.
+        check_cases({
+            {"营收YoY增长8%", "营收 wai ou wai增长百分之八"},
+            {"QoQ下降", "qiu ou qiu下降"},
+            {"MoM", "ai mu ou ai mu"},
+        });
+    }
 }
