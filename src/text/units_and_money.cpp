@@ -116,6 +116,10 @@ const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size
             continue;
         }
         if (!is_lone_capital_unit_at(text, unit, k)) continue;
+        // A capital before 系列 is a series' letter, not a unit (Core Ultra 200V系列 二百 V; session 30: 伏).
+        if (is_ascii_capital(static_cast<char32_t>(unit.written.back())) &&
+            text_between(text, k, k + 2) == "系列")
+            continue;
         if (best == nullptr || unit.written.size() > best->written.size()) {
             best = &unit;
             end = k;

@@ -1798,4 +1798,14 @@ TEST_SUITE("written forms") {
             {"MoM", "ai mu ou ai mu"},
         });
     }
+
+    TEST_CASE("a capital before 系列 is a series' letter, not a unit") {
+        // The first row failed on main 532928e (session 30, dev23, session 29's leftover): 二百伏系列.
+        check_cases({
+            {"英特尔Core Ultra 200V系列处理器", "英特尔 kou a ta二百 wei系列处理器"},
+            // The limits: volts before any other word.
+            {"800V高压平台", "八百伏高压平台"},
+            {"220V电压", "二百二十伏电压"},
+        });
+    }
 }
