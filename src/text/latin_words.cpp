@@ -96,6 +96,10 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     // A chip's generation, Gen (骁龙8 Gen 3), said as English says gen, J's sound (zhen, as the letter J is
     // zhei); the dictionary's entry gave three syllables, jie ne e.
     {"gen", "zhen1"},
+    // Names of two parts joined by &, said by the Chinese names Mandarin news gives them (S&P 500 标普500,
+    // P&G 宝洁); the reader joins the parts where this table has the whole.
+    {"s&p", "biao1 pu3"},
+    {"p&g", "bao3 jie2"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

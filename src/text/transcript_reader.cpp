@@ -669,6 +669,16 @@ private:
             add_form(text, start, end, said_syllables(detail::letter_syllables(word)));
             return end;
         }
+        // A name of two parts joined by & (S&P 标普, P&G 宝洁) is said whole where the table has it; the &
+        // alone has no reading (session 30: S P, the & unsaid with a warning).
+        if (end + 1 < text.size() && text[end].value == '&' && is_ascii_letter(text[end + 1].value)) {
+            const auto second_end = letters_end(end + 1);
+            if (auto found =
+                    detail::english_word_syllables(word + "&" + latin_spelling(text, end + 1, second_end))) {
+                add_form(text, start, second_end, said_syllables(*found));
+                return second_end;
+            }
+        }
         // A hyphen in a formula is a minus sign (a-b>0), not a join.
         if (end + 1 < text.size() && text[end].value == '-' && is_ascii_letter(text[end + 1].value) &&
             detail::said_math_sign(text, end).empty()) {

@@ -1808,4 +1808,13 @@ TEST_SUITE("written forms") {
             {"220V电压", "二百二十伏电压"},
         });
     }
+
+    TEST_CASE("a name of two parts joined by & is said whole where the table has it") {
+        // The first two rows failed on main 532928e (session 30, dev23): ai si pi and pi ji, the & unsaid
+        // with a warning.
+        check_cases({
+            {"S&P 500指数涨0.9%", "biao pu五百指数涨百分之零点九"},
+            {"P&G公布财报", "bao jie公布财报"},
+        });
+    }
 }
