@@ -232,6 +232,23 @@ bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNum
                                    "高考", "中考", "考研", "国考", "國考", "学测", "學測"});
 }
 
+bool names_year_after_mark(const std::vector<CodePoint>& text, std::size_t start,
+                           const WrittenNumber& number) {
+    const auto& digits = number.whole;
+    if (number.has_point || number.has_separators || is_ascii_letter(value_at(text, number.end)) ||
+        takes_liang(value_at(text, number.end)) ||
+        !(digits.size() == 2 || (digits.size() == 4 && starts_with_any(digits, {"19", "20"}))))
+        return false;
+    if (start >= 2 && text_between(text, start - 2, start) == "FY")
+        return !is_ascii_letter(value_at(text, start - 3));
+    if (digits.size() != 4 || start < 3 || value_at(text, start - 1) != ' ' ||
+        is_ascii_letter(value_at(text, start - 4)))
+        return false;
+    const auto period = value_at(text, start - 3);
+    const auto part = value_at(text, start - 2);
+    return (period == 'Q' && is_one_of(part, U"1234")) || (period == 'H' && is_one_of(part, U"12"));
+}
+
 bool joins_periods(const std::vector<CodePoint>& text, std::size_t i) {
     const auto names_period = [&](std::size_t letter) {
         const auto part = value_at(text, letter + 1);

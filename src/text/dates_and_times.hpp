@@ -55,6 +55,13 @@ bool counts_years(const std::vector<CodePoint>& text, std::size_t start, const W
 // release's or a quarter's two digits before its half or quarter (24H2 二四 H 二, 25Q1 二五 Q 一).
 bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNumber& number);
 
+// A year named after a mark of its own: a fiscal year after FY (FY25 二五, FY2024 二零二四) and a year after
+// a quarter or a half and a space (Q4 2024 Q 四 二零二四, H1 2025), two digits or four from 19 or 20, said
+// digit by digit as a year is (session 30: FY25 二十五, Q4 2024 两千零二十四); not before a measure word (Q4
+// 2000人).
+bool names_year_after_mark(const std::vector<CodePoint>& text, std::size_t start,
+                           const WrittenNumber& number);
+
 // The dash or ~ at text[i] between a year's quarters or halves (2024Q1-Q3 二零二四 Q 一到 Q 三, Q2~Q4,
 // H1-H2): a range, said 到 as a range of numbers is (session 30: unsaid, Q 一 Q 三).
 bool joins_periods(const std::vector<CodePoint>& text, std::size_t i);

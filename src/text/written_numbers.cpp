@@ -744,9 +744,10 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
          (closes_clause && (is_one_of(value_at(text, start - 1), U"吧啊呀呢嘛哦啦") ||
                             text_before(text, start, true).find("笑") != std::string::npos)));
     context.is_whole_clause = sign_words.empty() && currency == nullptr && stands_alone(text, start, number.end);
-    context.names_year = sign_words.empty() && currency == nullptr && !context.is_ordinal &&
-                         (names_year_before_word(text, number) || lists_year(text, number) ||
-                          names_short_year(text, start, number));
+    context.names_year =
+        sign_words.empty() && currency == nullptr && !context.is_ordinal &&
+        (names_year_before_word(text, number) || lists_year(text, number) ||
+         names_short_year(text, start, number) || names_year_after_mark(text, start, number));
     return context;
 }
 

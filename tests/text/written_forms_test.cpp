@@ -1817,4 +1817,18 @@ TEST_SUITE("written forms") {
             {"P&G公布财报", "bao jie公布财报"},
         });
     }
+
+    TEST_CASE("a fiscal year after FY and a year after a quarter are said digit by digit") {
+        // The first three rows failed on main 532928e (session 30, probing news beyond dev23): 二十五,
+        // 两千零二十四, 两千零二十五.
+        check_cases({
+            {"FY25营收", "ai fu wai二五营收"},
+            {"Q4 2024财报", "qiu四二零二四财报"},
+            {"H1 2025", "ai qi一二零二五"},
+            {"FY2024", "ai fu wai二零二四"},
+            // The limits: a count after a quarter, a number after other capitals.
+            {"Q4 2000人", "qiu四两千人"},
+            {"Q4 3000", "qiu四三千"},
+        });
+    }
 }
