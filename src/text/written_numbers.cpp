@@ -461,6 +461,55 @@ SaidNumber say_decimal(const WrittenNumber& number, const NumberContext& context
     return said;
 }
 
+// Whether a chat's number (`whole`, written without separators) names rather than counts, said digit
+// by digit: a goodbye, a vow, an agreement, a cheer, a laugh. `counts` where a unit, a measure word or a
+// % follows it.
+bool is_chat_number(const std::string& whole, const NumberContext& context, bool counts) {
+    // A chat's goodbye, 88 or 886 (拜拜, 拜拜了) as a clause of its own (88，下次再聊), is said digit by
+    // digit, 八八 (session 14); a bare 88 after a colon or in a clause counts (得分：88, 考了88分).
+    if ((whole == "88" || whole == "886") && context.is_whole_clause) return true;
+    const bool names_nothing = !counts && !context.has_currency && !context.is_ordinal;
+    // A chat's vow, 1314 (一生一世) and 5201314, counting nothing, is said digit by digit (我爱你1314
+    // 一三一四; session 14), as 520 is where it names its day.
+    // So is a work schedule, 996 or 955 (又是996的一周 九九六; session 30: 九百九十六), where it counts
+    // nothing.
+    if ((whole == "1314" || whole == "5201314" || context.names_schedule) && names_nothing) return true;
+    // A pair of digits written twice over as a clause of its own (9494，我也是这么想的: 就是就是, a
+    // chat's agreement), digit by digit as 88 is (session 20: 九千四百九十四); a year standing so reads
+    // alike.
+    const bool is_pair_over =
+        whole.size() == 4 && whole[0] != whole[1] && whole.compare(0, 2, whole, 2, 2) == 0;
+    if (is_pair_over && context.is_whole_clause) return true;
+    // One digit said three or more times over, as a chat cheers (666 六六六, 888); a count shown as "or
+    // more" counts (999+条消息 九百九十九加).
+    const bool is_one_digit_over = whole.size() >= 3 &&
+                                   whole.find_first_not_of(whole.front()) == std::string::npos &&
+                                   !context.is_count_over;
+    // A chat's laugh, 2333 (a 2 and three or more 3s: 二三三三, after an emoticon's number), and 233 right
+    // after a laugh's character (哈哈哈233, 笑死233; session 14); elsewhere it counts (233人).
+    const bool is_laugh = whole.front() == '2' && whole.find_first_not_of('3', 1) == std::string::npos &&
+                          (whole.size() >= 4 || (whole.size() == 3 && context.after_laugh));
+    return (is_one_digit_over || is_laugh) && names_nothing;
+}
+
+// Whether the words around a number (`whole`, written without separators) make it a name, said digit by
+// digit: a generation (90后 九零后), the hundredths of a sprint (9秒83 九秒八三), a code, a model's number
+// of three or more digits (C919 C九一九, A380) and a type's of two or more (99式 九九式, 737型), a day
+// named by its date (618 六一八), a filter grade, a year before the word it names (2026款). `counts` as
+// is_chat_number's.
+bool is_named_by_context(const std::string& whole, const NumberContext& context, bool counts) {
+    // A filter grade is a name before any word (N95口罩: 口 is no measure word there). A round
+    // thousand after capitals is a tier, not a model (WTA 1000 一千, RTX 5000 五千), and so is a round
+    // hundred of three digits but in a train's or a flight's number (HDR400 四百, A100 一百, C200 二百;
+    // session 26: 四零零).
+    const bool is_round_tier = (whole.size() >= 4 && whole.compare(whole.size() - 3, 3, "000") == 0) ||
+                               (whole.size() == 3 && whole.compare(1, 2, "00") == 0 && !context.is_train);
+    return context.is_grade || context.names_year ||
+           (!counts && (context.is_generation || context.is_hundredths || context.is_code ||
+                        (context.is_model && whole.size() >= 3 && !is_round_tier) ||
+                        (context.names_type && whole.size() >= 2) || context.names_day));
+}
+
 // A whole number written without separators (`whole`) said as it names rather than counts, digit by
 // digit (a phone's, a train's, a model's, a code's, a chat's 666 and 88) or as a year; nullopt where
 // it counts.
@@ -491,57 +540,7 @@ std::optional<SaidNumber> say_as_name(const std::string& whole, const NumberCont
         said.words = digit_words(whole, true);
         return said;
     }
-    // A generation (90后 九零后), the hundredths of a sprint (9秒83 九秒八三), a model's
-    // number of three or more digits (C919 C九一九, A380) and a type's of two or more (99式
-    // 九九式, 737型), a day named by its date (618 六一八) and one digit said three or more
-    // times over, as a chat cheers (666 六六六, 888), are said digit by digit.
-    // So is a chat's laugh, 2333 (a 2 and three or more 3s: 二三三三, after an emoticon's number).
-    // A count shown as "or more" counts (999+条消息 九百九十九加).
-    const bool is_one_digit_over = whole.size() >= 3 &&
-                                   whole.find_first_not_of(whole.front()) == std::string::npos &&
-                                   !context.is_count_over;
-    // A chat's goodbye, 88 or 886 (拜拜, 拜拜了) as a clause of its own (88，下次再聊), is said digit by
-    // digit, 八八 (session 14); a bare 88 after a colon or in a clause counts (得分：88, 考了88分).
-    if ((whole == "88" || whole == "886") && context.is_whole_clause) {
-        said.words = digit_words(whole);
-        return said;
-    }
-    // A chat's vow, 1314 (一生一世) and 5201314, counting nothing, is said digit by digit (我爱你1314
-    // 一三一四; session 14), as 520 is where it names its day.
-    // So is a work schedule, 996 or 955 (又是996的一周 九九六; session 30: 九百九十六), where it counts
-    // nothing.
-    if ((whole == "1314" || whole == "5201314" || context.names_schedule) && !counts &&
-        !context.has_currency && !context.is_ordinal) {
-        said.words = digit_words(whole);
-        return said;
-    }
-    // A pair of digits written twice over as a clause of its own (9494，我也是这么想的: 就是就是, a
-    // chat's agreement), digit by digit as 88 is (session 20: 九千四百九十四); a year standing so reads
-    // alike.
-    const bool is_pair_over =
-        whole.size() == 4 && whole[0] != whole[1] && whole.compare(0, 2, whole, 2, 2) == 0;
-    if (is_pair_over && context.is_whole_clause) {
-        said.words = digit_words(whole);
-        return said;
-    }
-    // 233 too, right after a laugh's character (哈哈哈233, 笑死233; session 14); elsewhere it counts (233人).
-    const bool is_laugh = whole.front() == '2' && whole.find_first_not_of('3', 1) == std::string::npos &&
-                          (whole.size() >= 4 || (whole.size() == 3 && context.after_laugh));
-    // A filter grade is a name before any word (N95口罩: 口 is no measure word there). A round
-    // thousand after capitals is a tier, not a model (WTA 1000 一千, RTX 5000 五千), and so is a round
-    // hundred of three digits but in a train's or a flight's number (HDR400 四百, A100 一百, C200 二百;
-    // session 26: 四零零).
-    const bool is_round_tier = (whole.size() >= 4 && whole.compare(whole.size() - 3, 3, "000") == 0) ||
-                               (whole.size() == 3 && whole.compare(1, 2, "00") == 0 && !context.is_train);
-    if (context.is_grade ||
-        (!counts && (context.is_generation || context.is_hundredths || context.is_code ||
-                     (context.is_model && whole.size() >= 3 && !is_round_tier) ||
-                     (context.names_type && whole.size() >= 2) || context.names_day ||
-                     ((is_one_digit_over || is_laugh) && !context.has_currency && !context.is_ordinal)))) {
-        said.words = digit_words(whole);
-        return said;
-    }
-    if (context.names_year) {
+    if (is_chat_number(whole, context, counts) || is_named_by_context(whole, context, counts)) {
         said.words = digit_words(whole);
         return said;
     }
