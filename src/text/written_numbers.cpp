@@ -1047,6 +1047,57 @@ std::string count_over_words(const std::vector<CodePoint>& text, std::size_t& en
     return words;
 }
 
+// The words of a range's numbers (one, or two joined by 到), each with its sign, a currency's word before
+// it, a percentage's 百分之 or a per mille's 千分之 and a year's 年; `end` moved past the 年 that ends the
+// range.
+void say_range(const NumberRange& range, const NumberContext& context, const Currency* currency,
+               bool is_percent, bool is_per_mille, SpokenForm& form, std::size_t& end) {
+    for (std::size_t k = 0; k < range.numbers.size(); ++k) {
+        const auto said = say_number(range.numbers[k], context);
+        if (k > 0) form.words += "到";
+        form.words += range.signs[k];
+        if (currency != nullptr) form.words += currency->before;
+        // The sign written on each end is said on each (10%-20% 百分之十到百分之二十), once where only the
+        // last carries it (3-5% 百分之三到五, as newsreaders say it; session 20: 百分之三到百分之五).
+        if (is_percent && (k == 0 || range.first_is_percent)) form.words += "百分之";
+        if (is_per_mille && k == 0) form.words += "千分之";
+        // 100% is 百分之百, as it is said (百分之百的把握), not 百分之一百.
+        const auto& whole = range.numbers[k].whole;
+        form.words += is_percent && whole == "100" && !range.numbers[k].has_point ? "百" : said.words;
+        if (k == 0 && range.numbers.size() > 1) form.words += range.first_magnitude;
+        if (said.is_year) {
+            form.words += "年";
+            // The 年 of a year belongs to the form; after a range, only the last takes it.
+            if (k + 1 < range.numbers.size())
+                form.words.erase(form.words.size() - std::string_view("年").size());
+        }
+        append_warning(form, said.warning);
+        form.is_dialled = form.is_dialled || said.is_dialled;
+        if (said.is_year && k + 1 == range.numbers.size()) end += 1;
+    }
+}
+
+// What closes a quantity, `end` moved past it: a strength's ratio after its unit, a currency's magnitude
+// and name after the number, or the + of a count "or more" where neither a unit nor a currency follows.
+void append_closing_words(const std::vector<CodePoint>& text, const Unit* unit, const Currency* currency,
+                          SpokenForm& form, std::size_t& end) {
+    // A colon after a quantity and before a number is a strength's ratio (注射液2ml:0.1g 两毫升比零点一克;
+    // session 18: the colon was a pause and its 比 lost); the number after it is read as its own form.
+    if (unit != nullptr && unit->written != "%" && value_at(text, end) == ':' && is_digit_at(text, end + 1)) {
+        form.words += "比";
+        ++end;
+    }
+    if (currency != nullptr) {
+        // $5万 is 五万美元: the magnitude comes before the currency's name.
+        if (is_one_of(value_at(text, end), U"万萬亿億千")) {
+            form.words += text[end].text;
+            ++end;
+        }
+        form.words += currency->after;
+    }
+    if (currency == nullptr && unit == nullptr) form.words += count_over_words(text, end);
+}
+
 // One number, or a range of two (3-5, 3~5), said with what follows the last of them: its power, its
 // magnitude, its unit or its currency's word, the + of a count "or more"; its signs said as a temperature's,
 // a change's or a rise's where the text says so.
@@ -1112,28 +1163,7 @@ SpokenForm read_quantity(const std::vector<CodePoint>& text, std::size_t start, 
         price.has_point = !price.fraction.empty();
     }
 
-    for (std::size_t k = 0; k < numbers.size(); ++k) {
-        const auto said = say_number(numbers[k], context);
-        if (k > 0) form.words += "到";
-        form.words += signs[k];
-        if (currency != nullptr) form.words += currency->before;
-        // The sign written on each end is said on each (10%-20% 百分之十到百分之二十), once where only the
-        // last carries it (3-5% 百分之三到五, as newsreaders say it; session 20: 百分之三到百分之五).
-        if (is_percent && (k == 0 || range.first_is_percent)) form.words += "百分之";
-        if (is_per_mille && k == 0) form.words += "千分之";
-        // 100% is 百分之百, as it is said (百分之百的把握), not 百分之一百.
-        const auto& whole = numbers[k].whole;
-        form.words += is_percent && whole == "100" && !numbers[k].has_point ? "百" : said.words;
-        if (k == 0 && numbers.size() > 1) form.words += range.first_magnitude;
-        if (said.is_year) {
-            form.words += "年";
-            // The 年 of a year belongs to the form; after a range, only the last takes it.
-            if (k + 1 < numbers.size()) form.words.erase(form.words.size() - std::string_view("年").size());
-        }
-        append_warning(form, said.warning);
-        form.is_dialled = form.is_dialled || said.is_dialled;
-        if (said.is_year && k + 1 == numbers.size()) end += 1;
-    }
+    say_range(range, context, currency, is_percent, is_per_mille, form, end);
     if (unit != nullptr) end = unit_end;
     // A unit per another (7.0mmol/L 七点零毫摩尔每升, 35μg/m³ 三十五微克每立方米, 80mg/100ml 八十毫克每
     // 一百毫升): 每 and the second unit, with its number where it has one (km/h and m/s are units of
@@ -1141,21 +1171,7 @@ SpokenForm read_quantity(const std::vector<CodePoint>& text, std::size_t start, 
     if (unit != nullptr && unit->written != "%") unit_words += per_unit_words(text, end);
     if (is_per_mille) end += 1;
     form.words += power_words + magnitude_words + unit_words;
-    // A colon after a quantity and before a number is a strength's ratio (注射液2ml:0.1g 两毫升比零点一克;
-    // session 18: the colon was a pause and its 比 lost); the number after it is read as its own form.
-    if (unit != nullptr && unit->written != "%" && value_at(text, end) == ':' && is_digit_at(text, end + 1)) {
-        form.words += "比";
-        ++end;
-    }
-    if (currency != nullptr) {
-        // $5万 is 五万美元: the magnitude comes before the currency's name.
-        if (is_one_of(value_at(text, end), U"万萬亿億千")) {
-            form.words += text[end].text;
-            ++end;
-        }
-        form.words += currency->after;
-    }
-    if (currency == nullptr && unit == nullptr) form.words += count_over_words(text, end);
+    append_closing_words(text, unit, currency, form, end);
     form.end = end;
     return form;
 }
