@@ -49,12 +49,17 @@ bool clause_has_relation(const std::vector<CodePoint>& text, std::size_t i) {
     return false;
 }
 
+// Whether c is a Han character (CJK Unified Ideographs and Extension A).
+bool is_han_character(char32_t c) {
+    return c >= 0x3400 && c <= 0x9FFF;
+}
+
 // A number at text[i] that measures something, a unit or a word after it (60分, 38℃, 5mg, 90%): what a bound
 // written < or > holds (分数<60分). A heart's <3 and a bracket's <1> measure nothing.
 bool is_measured_number(const std::vector<CodePoint>& text, std::size_t i) {
     if (!is_digit_at(text, i)) return false;
     const auto after = value_at(text, parse_number(text, i).end);
-    return (after >= 0x3400 && after <= 0x9FFF) || is_ascii_letter(after) || after == '%' ||
+    return is_han_character(after) || is_ascii_letter(after) || after == '%' ||
            after == 0x2103 /*℃*/ || after == 0xB0 /*°*/;
 }
 
@@ -91,6 +96,38 @@ bool counts_a_lobby(const std::vector<CodePoint>& text, std::size_t i) {
     };
     return i >= 1 && is_digit_at(text, i - 1) && is_digit_at(text, i + 1) && (i < 2 || outside(i - 2)) &&
            outside(i + 2);
+}
+
+// The + at text[i] said 加 between `left` and `right` (the characters beside it, spaces skipped), or "":
+// between two digits (1+1), two letters (A+B), two words or in a formula (x+1=3).
+std::string_view said_plus(const std::vector<CodePoint>& text, std::size_t i, char32_t left, char32_t right) {
+    // A letter and a digit too: a sum of capacities (12GB+256GB 十二GB加二百五十六GB), 5G+AI.
+    const auto is_alphanumeric = [](char32_t c) { return is_ascii_letter(c) || (c >= '0' && c <= '9'); };
+    const bool alphanumeric = is_alphanumeric(left) && is_alphanumeric(right);
+    // After a square or a cube, a sum of terms (a²+b²; session 14: said only beside a relation sign).
+    const bool after_power = is_one_of(left, U"\u00B2\u00B3");
+    // Between two words, a post's or a menu's "and also" (关注+转发 关注加转发, 汉堡+可乐; session
+    // 22: skipped with a warning), one of them Latin or a number too, and after a word that a closing
+    // quote ends, as news names a plan of "X plus" (AI+教育 AI加教育, 5G+工业互联网, “互联网+”行动;
+    // session 26: skipped with a warning).
+    const bool word_left = is_han_character(left) || is_alphanumeric(left);
+    const bool joins_words = word_left && (is_han_character(right) || is_alphanumeric(right));
+    const bool names_plan = word_left && is_one_of(right, U"\u201D\u300D\u300F\"");
+    const bool between_terms = is_formula_term(left) && is_formula_term(right);
+    const bool is_sum = between_terms && (alphanumeric || after_power || clause_has_relation(text, i));
+    return is_sum || joins_words || names_plan ? "加" : "";
+}
+
+// The small x at text[i] typed for a times sign right after an item's name and before its count, said 乘
+// (金币x100 金币乘一百, 经验卡x2; session 19: the letter x and a model's digits), or "": not after a word
+// that introduces a term (两根为x1、x2, 设x2 ...: a lesson's variable). `is_unspaced`: no space on either
+// side of it; `left` and `right` as said_plus's.
+std::string_view said_small_x(const std::vector<CodePoint>& text, std::size_t i, bool is_unspaced,
+                              char32_t left, char32_t right) {
+    const bool introduces_term = is_one_of(left, U"设設令为為是和与與及或且根点點若则則当當求把将將");
+    const bool counts_items = is_unspaced && is_han_character(left) && !introduces_term && right >= '0' &&
+                              right <= '9' && !clause_has_relation(text, i);
+    return counts_items ? "乘" : "";
 }
 
 // The value of the Roman numeral text[start, end) in I, V and X (1 to 39), or 0 where the letters are none.
@@ -131,8 +168,8 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
     while (value_at(text, after) == ' ') ++after;
     const char32_t left = before > 0 ? value_at(text, before - 1) : 0;
     const char32_t right = value_at(text, after);
-    const bool is_han_left = left >= 0x3400 && left <= 0x9FFF;
-    const bool is_han_right = right >= 0x3400 && right <= 0x9FFF;
+    const bool is_han_left = is_han_character(left);
+    const bool is_han_right = is_han_character(right);
     // A relation's right side may be a signed term (x=-2 x等于负二, -3<-1 负三小于负一, x=±3 x等于正负三;
     // session 28: the = before ± was unsaid): the sign is the number's, read with it.
     const bool signed_right =
@@ -169,24 +206,8 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
         case 0x2225: case 0x2016: return between_terms ? "平行于" : "";    // ∥, and ‖ written for it
         // + between two digits (1+1), two letters (A+B), two words or in a formula (x+1=3); - only in a
         // formula, since a hyphen joins words and numbers elsewhere (Wi-Fi, B-52).
-        case '+': {
-            // A letter and a digit too: a sum of capacities (12GB+256GB 十二GB加二百五十六GB), 5G+AI.
-            const auto is_alphanumeric = [](char32_t c) { return is_ascii_letter(c) || (c >= '0' && c <= '9'); };
-            const bool alphanumeric = is_alphanumeric(left) && is_alphanumeric(right);
-            // After a square or a cube, a sum of terms (a²+b²; session 14: said only beside a relation sign).
-            const bool after_power = is_one_of(left, U"\u00B2\u00B3");
-            // Between two words, a post's or a menu's "and also" (关注+转发 关注加转发, 汉堡+可乐; session
-            // 22: skipped with a warning), one of them Latin or a number too, and after a word that a closing
-            // quote ends, as news names a plan of "X plus" (AI+教育 AI加教育, 5G+工业互联网, “互联网+”行动;
-            // session 26: skipped with a warning).
-            const bool word_left = is_han_left || is_alphanumeric(left);
-            const bool joins_words = word_left && (is_han_right || is_alphanumeric(right));
-            const bool names_plan = word_left && is_one_of(right, U"\u201D\u300D\u300F\"");
-            return (between_terms && (alphanumeric || after_power || clause_has_relation(text, i))) ||
-                           joins_words || names_plan
-                       ? "加"
-                       : "";
-        }
+        case '+':
+            return said_plus(text, i, left, right);
         case '-': case 0x2212: return between_terms && clause_has_relation(text, i) ? "减" : "";
         // A * before ST marks a share at risk of delisting (*ST康美), said 星 as market news says it.
         case '*': {
@@ -196,15 +217,7 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
         }
         // × after a character too, before a number (经验值×2 经验值乘二, a game's bonus; session 14).
         case 0xD7: return between_terms || (is_han_left && right >= '0' && right <= '9') ? "乘" : "";  // ×
-        // A small x typed for it right after an item's name and before its count (金币x100 金币乘一百,
-        // 经验卡x2; session 19: the letter x and a model's digits), not after a word that introduces a term
-        // (两根为x1、x2, 设x2 ...: a lesson's variable).
-        case 'x': {
-            const bool introduces_term = is_one_of(left, U"设設令为為是和与與及或且根点點若则則当當求把将將");
-            const bool counts_items = before == i && after == i + 1 && is_han_left && !introduces_term &&
-                                      right >= '0' && right <= '9' && !clause_has_relation(text, i);
-            return counts_items ? "乘" : "";
-        }
+        case 'x': return said_small_x(text, i, before == i && after == i + 1, left, right);
         // ÷ is never a bracket or a dash: between two words too, as a rule of thumb is written
         // (总价÷数量=单价, 体重(kg)÷身高; session 30: skipped with a warning).
         case 0xF7:  // ÷
