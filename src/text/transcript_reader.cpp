@@ -468,28 +468,11 @@ private:
         pending_space_ = space;
     }
 
-    // Reads the item starting at text[i]; returns where the next one starts.
-    std::size_t read_item(const std::vector<CodePoint>& text, std::size_t i) {
+    // A written form read aloud at text[i] (a web address, a number with what it says, a unit per another,
+    // a slash said 每 or 和, a number character, a power, a formula's sign) added as its syllables, or a
+    // subtitle's timing kept unsaid: the index past it, nullopt where none starts there.
+    std::optional<std::size_t> read_written_form(const std::vector<CodePoint>& text, std::size_t i) {
         const auto& c = text[i];
-        if (is_space(c.value)) {
-            pending_space_ += c.text;
-            return i + 1;
-        }
-        // A blank line starts a paragraph, and a sentence never runs on into the next paragraph
-        // (a heading without a full stop is a sentence of its own).
-        if (has_blank_line(pending_space_)) {
-            close_sentence();
-            starts_paragraph_ = !timeline_.sentences.empty();
-        }
-        if (c.value == '{') return read_fix(text, i);
-        if (tables_.has_readings(c.text)) {
-            if (sentence_ended_) close_sentence();
-            append_text(c.text);
-            run_.push_back({&c, c.text, {}});
-            return i + 1;
-        }
-        flush_run(ends_sentence(c.value) || marks_pause(c.value) || closes_quote(c.value));
-        if (sentence_ended_ && !(ends_sentence(c.value) || closes_quote(c.value))) close_sentence();
         if (auto address = detail::read_web_address(text, i)) {
             form_warnings_ = timeline_.warnings.size();
             add_form(text, i, address->end, address_syllables(*address, c));
@@ -536,6 +519,32 @@ private:
             add_form(text, i, i + 1, read_words(std::string(sign)));
             return i + 1;
         }
+        return std::nullopt;
+    }
+
+    // Reads the item starting at text[i]; returns where the next one starts.
+    std::size_t read_item(const std::vector<CodePoint>& text, std::size_t i) {
+        const auto& c = text[i];
+        if (is_space(c.value)) {
+            pending_space_ += c.text;
+            return i + 1;
+        }
+        // A blank line starts a paragraph, and a sentence never runs on into the next paragraph
+        // (a heading without a full stop is a sentence of its own).
+        if (has_blank_line(pending_space_)) {
+            close_sentence();
+            starts_paragraph_ = !timeline_.sentences.empty();
+        }
+        if (c.value == '{') return read_fix(text, i);
+        if (tables_.has_readings(c.text)) {
+            if (sentence_ended_) close_sentence();
+            append_text(c.text);
+            run_.push_back({&c, c.text, {}});
+            return i + 1;
+        }
+        flush_run(ends_sentence(c.value) || marks_pause(c.value) || closes_quote(c.value));
+        if (sentence_ended_ && !(ends_sentence(c.value) || closes_quote(c.value))) close_sentence();
+        if (const auto form_end = read_written_form(text, i)) return *form_end;
         if (marks_choice(text, i) || marks_list_item(text, i) || marks_lineage_dot(text, i)) {
             append_text(c.text);
             return i + 1;
