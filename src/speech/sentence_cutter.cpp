@@ -241,18 +241,17 @@ std::vector<float> smoothed_activity(const std::vector<float>& raw) {
     return activity;
 }
 
-// `profile` (its floors, levels and threshold set) completed from the per-frame activity `raw`:
-// its tones, its smoothed activity with music and beats taken down to a pause's level, its pauses
-// and where its speech starts and ends. `share` is changing_shares(track), `tone` steady_tone_frames(track).
-void find_speech(const FeatureTrack& track, const std::vector<float>& share, const std::vector<bool>& tone,
-                 std::vector<float> raw, LoudnessProfile& profile) {
+// `profile.activity_db` smoothed from the per-frame activity `raw`, with what is no speech however loud
+// taken down to a pause's level: a steady tone (its frames in `raw` set to the floor and listed in
+// profile.tones), music held through the pauses and a beat's hits between the pauses it cuts up.
+void take_down_tones_and_music(const FeatureTrack& track, const std::vector<float>& share,
+                               const std::vector<bool>& tone, std::vector<float>& raw, LoudnessProfile& profile) {
     const std::size_t frames = track.frame_count;
     profile.activity_db = smoothed_activity(raw);
     // A steady tone (a beep) as loud as speech is no speech: its frames read as the floor, and the
     // threshold stays where the recording's levels put it. Quieter tones (a hum in the pauses) are
     // left: they are no speech already.
     profile.tones.clear();
-    profile.unvoiced_edges.clear();
     for (std::size_t t = 0; t < frames; ++t) {
         if (!tone[t] || raw[t] < profile.activity_threshold_db) continue;
         raw[t] = 0.0f;
@@ -273,48 +272,91 @@ void find_speech(const FeatureTrack& track, const std::vector<float>& share, con
         profile.activity_db, profile.activity_threshold_db, accompaniment_period_frames(track, profile.high_sound_floor_db));
     for (std::size_t t = 0; t < frames; ++t)
         if (repeated[t]) profile.activity_db[t] = pause_db;
+}
+
+// The pauses between frames first and end: runs of kMinPauseFrames or more that are no speech.
+std::vector<FrameSpan> pauses_between(const LoudnessProfile& profile, std::size_t first, std::size_t end) {
+    std::vector<FrameSpan> pauses;
+    for (std::size_t t = first; t < end;) {
+        if (is_speech_frame(profile, t)) {
+            ++t;
+            continue;
+        }
+        std::size_t pause_end = t;
+        while (pause_end < end && !is_speech_frame(profile, pause_end)) ++pause_end;
+        if (pause_end - t >= kMinPauseFrames) pauses.push_back({t, pause_end});
+        t = pause_end;
+    }
+    return pauses;
+}
+
+// kUnspokenSpeechBelowDb under the speech's level (its median speech frame between frames first and end):
+// sound at a recording's edge that never reaches it is the noise's (find_speech).
+float unspoken_below_db(const LoudnessProfile& profile, std::size_t first, std::size_t end) {
+    std::vector<float> speech_db;
+    for (std::size_t t = first; t < end; ++t)
+        if (is_speech_frame(profile, t)) speech_db.push_back(profile.activity_db[t]);
+    return speech_db.empty() ? 0.0f : percentile_of(speech_db, 0.5) - kUnspokenSpeechBelowDb;
+}
+
+// A click (a button pressed to record, a plug, a mouse) before the speech or after it, frames first to
+// end: sound too short for any syllable, set apart by a pause. A 20 ms click holds two or three frames
+// of `raw` at `threshold_db` or above before smoothing (the analysis window spreads it). On every corpus
+// of bench/ the stretches this drops at a recording's ends held no syllable's start: their alignments
+// are the same to the digit (session 12).
+bool is_click(const std::vector<float>& raw, float threshold_db, std::size_t first, std::size_t end) {
+    const auto loud = std::count_if(raw.begin() + static_cast<std::ptrdiff_t>(first),
+                                    raw.begin() + static_cast<std::ptrdiff_t>(end),
+                                    [&](float db) { return db >= threshold_db; });
+    return loud <= static_cast<std::ptrdiff_t>(kLongestClickFrames);
+}
+
+// Whether the recording is a line cut to its sound, its speech from frame first to end and
+// profile.pauses set. Quiet shorter than a pause between the recording's edges and its speech is the
+// speech's own weak edge, as such a gap inside it is a closure. Where there is no pause at all, the
+// floors are the speech's weakest sound (a line cut to its sound: 好's h, which then reads as silence);
+// digital zeros at an edge are a pause of their own, however short.
+bool is_cut_to_sound(const FeatureTrack& track, const LoudnessProfile& profile, std::size_t first,
+                     std::size_t end) {
+    const std::size_t frames = track.frame_count;
+    return first < end && profile.pauses.empty() && first < kMinPauseFrames &&
+           frames - end < kMinPauseFrames && track.at(0, kEnergyDb) > kDigitalSilenceDb &&
+           track.at(frames - 1, kEnergyDb) > kDigitalSilenceDb;
+}
+
+// `profile` (its floors, levels and threshold set) completed from the per-frame activity `raw`:
+// its tones, its smoothed activity with music and beats taken down to a pause's level, its pauses
+// and where its speech starts and ends. `share` is changing_shares(track), `tone` steady_tone_frames(track).
+void find_speech(const FeatureTrack& track, const std::vector<float>& share, const std::vector<bool>& tone,
+                 std::vector<float> raw, LoudnessProfile& profile) {
+    const std::size_t frames = track.frame_count;
+    profile.unvoiced_edges.clear();
+    take_down_tones_and_music(track, share, tone, raw, profile);
     std::size_t first_speech = 0;
     while (first_speech < frames && !is_speech_frame(profile, first_speech)) ++first_speech;
     std::size_t end_speech = frames;
     while (end_speech > first_speech && !is_speech_frame(profile, end_speech - 1)) --end_speech;
-    std::vector<FrameSpan> pauses;
-    for (std::size_t t = first_speech; t < end_speech;) {
-        if (is_speech_frame(profile, t)) { ++t; continue; }
-        std::size_t end = t;
-        while (end < end_speech && !is_speech_frame(profile, end)) ++end;
-        if (end - t >= kMinPauseFrames) pauses.push_back({t, end});
-        t = end;
-    }
+    std::vector<FrameSpan> pauses = pauses_between(profile, first_speech, end_speech);
     // Before the first pause and after the last: sound that never comes within
     // kUnspokenSpeechBelowDb of the speech's level (the median speech frame) is the noise's, not
     // speech (music or a door before the speaker starts): the speech starts after it.
-    std::vector<float> speech_db;
-    for (std::size_t t = first_speech; t < end_speech; ++t)
-        if (is_speech_frame(profile, t)) speech_db.push_back(profile.activity_db[t]);
-    const float noise_below_db = speech_db.empty() ? 0.0f : percentile_of(speech_db, 0.5) - kUnspokenSpeechBelowDb;
+    const float noise_below_db = unspoken_below_db(profile, first_speech, end_speech);
     const auto is_noise_only = [&](std::size_t first, std::size_t end) {
         return std::all_of(profile.activity_db.begin() + static_cast<std::ptrdiff_t>(first),
                            profile.activity_db.begin() + static_cast<std::ptrdiff_t>(end),
                            [&](float db) { return db < noise_below_db; });
     };
-    // A click (a button pressed to record, a plug, a mouse) before the speech or after it: sound
-    // too short for any syllable, set apart by a pause. A 20 ms click holds two or three frames
-    // above the pauses' level before smoothing (the analysis window spreads it). On every corpus
-    // of bench/ the stretches this drops at a recording's ends held no syllable's start: their
-    // alignments are the same to the digit (session 12).
-    const auto is_click = [&](std::size_t first, std::size_t end) {
-        const auto loud = std::count_if(raw.begin() + static_cast<std::ptrdiff_t>(first), raw.begin() + static_cast<std::ptrdiff_t>(end),
-                                        [&](float db) { return db >= profile.activity_threshold_db; });
-        return loud <= static_cast<std::ptrdiff_t>(kLongestClickFrames);
+    const auto is_not_speech = [&](std::size_t first, std::size_t end) {
+        return is_noise_only(first, end) || is_click(raw, profile.activity_threshold_db, first, end);
     };
-    const auto is_not_speech = [&](std::size_t first, std::size_t end) { return is_noise_only(first, end) || is_click(first, end); };
     // Music before the voice comes in or after it ends is as loud as the speech, but holds its
     // notes (held_music.hpp; a last word and the music ringing on after it are shorter).
     const FrameSpan sound{first_speech, end_speech};
     const EdgeMusic edge_music = find_edge_music(
         track, share, profile.activity_db, profile.activity_threshold_db, pauses, sound,
         [&](const FrameSpan& stretch) { return is_not_speech(stretch.first_frame, stretch.end_frame); });
-    std::size_t leading = edge_music.leading, trailing = edge_music.trailing;
+    std::size_t leading = edge_music.leading;
+    std::size_t trailing = edge_music.trailing;
     if (leading > 0) first_speech = pauses[leading - 1].end_frame;
     if (trailing < pauses.size()) end_speech = pauses[trailing].first_frame;
     // Music that plays on under the first words, with no pause between them (music_bed.hpp).
@@ -354,15 +396,11 @@ void find_speech(const FeatureTrack& track, const std::vector<float>& share, con
         while (!is_speech_frame(profile, first_speech)) ++first_speech;
     }
     profile.pauses.assign(pauses.begin() + static_cast<std::ptrdiff_t>(leading), pauses.begin() + static_cast<std::ptrdiff_t>(trailing));
-    // Quiet shorter than a pause between the recording's edges and its speech is the speech's own
-    // weak edge, as such a gap inside it is a closure. Where there is no pause at all, the floors
-    // are the speech's weakest sound (a line cut to its sound: 好's h, which then reads as
-    // silence); digital zeros at an edge are a pause of their own, however short.
-    profile.is_cut_to_sound = first_speech < end_speech && profile.pauses.empty() &&
-                              first_speech < kMinPauseFrames && frames - end_speech < kMinPauseFrames &&
-                              track.at(0, kEnergyDb) > kDigitalSilenceDb &&
-                              track.at(frames - 1, kEnergyDb) > kDigitalSilenceDb;
-    if (profile.is_cut_to_sound) first_speech = 0, end_speech = frames;
+    profile.is_cut_to_sound = is_cut_to_sound(track, profile, first_speech, end_speech);
+    if (profile.is_cut_to_sound) {
+        first_speech = 0;
+        end_speech = frames;
+    }
     profile.speech_first_frame = first_speech;
     profile.speech_end_frame = end_speech;
 }
