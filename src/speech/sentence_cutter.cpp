@@ -117,20 +117,40 @@ std::vector<FrameSpan> speaking_parts_from_first_pause(const FeatureTrack& track
     return parts;
 }
 
+// The speech's frames per syllable, were its sentences cut at its longest pauses (one fewer than the
+// sentences, `syllables` their syllable counts) and those pauses left out; at least 5.
+double mean_frames_per_syllable(const LoudnessProfile& loudness, const std::vector<std::size_t>& syllables) {
+    const std::size_t boundary_count = syllables.size() - 1;
+    std::size_t total_syllables = 0;
+    for (std::size_t count : syllables) total_syllables += count;
+    std::vector<std::size_t> lengths;
+    for (const auto& pause : loudness.pauses) lengths.push_back(pause.length());
+    std::sort(lengths.rbegin(), lengths.rend());
+    double speech_frames = static_cast<double>(loudness.speech_end_frame - loudness.speech_first_frame);
+    for (std::size_t i = 0; i < boundary_count; ++i) speech_frames -= static_cast<double>(lengths[i]);
+    return std::max(5.0, speech_frames / static_cast<double>(total_syllables));
+}
+
+// The sentences' spans when the speech is cut at loudness.pauses[chosen[k]], k = 0 .. (in order).
+std::vector<FrameSpan> spans_between_pauses(const LoudnessProfile& loudness,
+                                            const std::vector<std::size_t>& chosen) {
+    std::vector<FrameSpan> spans;
+    std::size_t first = loudness.speech_first_frame;
+    for (const std::size_t pause : chosen) {
+        spans.push_back({first, loudness.pauses[pause].first_frame});
+        first = loudness.pauses[pause].end_frame;
+    }
+    spans.push_back({first, loudness.speech_end_frame});
+    return spans;
+}
+
 // The cut of the sentences (their syllable counts) at pauses that scores best; empty if no cut
 // gives every sentence room for its syllables.
 std::vector<FrameSpan> choose_sentence_pauses(const LoudnessProfile& loudness, const std::vector<std::size_t>& syllables) {
     const std::size_t sentence_count = syllables.size();
     const auto& pauses = loudness.pauses;
     const std::size_t boundary_count = sentence_count - 1;
-    std::size_t total_syllables = 0;
-    for (std::size_t count : syllables) total_syllables += count;
-    std::vector<std::size_t> lengths;
-    for (const auto& pause : pauses) lengths.push_back(pause.length());
-    std::sort(lengths.rbegin(), lengths.rend());
-    double speech_frames = static_cast<double>(loudness.speech_end_frame - loudness.speech_first_frame);
-    for (std::size_t i = 0; i < boundary_count; ++i) speech_frames -= static_cast<double>(lengths[i]);
-    const double frames_per_syllable = std::max(5.0, speech_frames / static_cast<double>(total_syllables));
+    const double frames_per_syllable = mean_frames_per_syllable(loudness, syllables);
     // paused_before[i]: the frames of pauses 0..i-1, for the pauses a sentence holds.
     std::vector<std::size_t> paused_before(pauses.size() + 1, 0);
     for (std::size_t i = 0; i < pauses.size(); ++i) paused_before[i + 1] = paused_before[i] + pauses[i].length();
@@ -196,14 +216,7 @@ std::vector<FrameSpan> choose_sentence_pauses(const LoudnessProfile& loudness, c
         chosen[k] = last;
         last = previous[k * pause_count + last];
     }
-    std::vector<FrameSpan> spans;
-    std::size_t first = loudness.speech_first_frame;
-    for (std::size_t k = 0; k < boundary_count; ++k) {
-        spans.push_back({first, pauses[chosen[k]].first_frame});
-        first = pauses[chosen[k]].end_frame;
-    }
-    spans.push_back({first, loudness.speech_end_frame});
-    return spans;
+    return spans_between_pauses(loudness, chosen);
 }
 
 // The cut of every sentence from that of the spoken ones: a sentence without syllables (only
