@@ -9,10 +9,6 @@ namespace talkface::detail {
 
 namespace {
 
-// A pause's length (sentence_cutter.cpp's kMinPauseS): sound from the recording's start shorter
-// than that before the speech is the line's own weak edge, and so is a shorter stretch left out.
-constexpr std::size_t kMinEdgeFrames = 12;
-constexpr double kLoudPercentile = 0.95;
 // Sound left out never comes this near the loud level: on session 28's short kinds, 3 dB left 9
 // tight lines' first syllables out against 5, 8 dB kept 22 babble lines' span starts within 50 ms
 // of the line against 24 (bench/README.md, session 29).
@@ -44,29 +40,38 @@ double frames_for(std::size_t syllables, double syllables_per_second) {
 FrameSpan line_among_quieter_voices(const LoudnessProfile& loudness, const FrameSpan& speech,
                                     std::size_t syllables) {
     const std::vector<float>& activity = loudness.activity_db;
-    if (speech.first_frame >= kMinEdgeFrames ||
+    // Sound from the recording's start shorter than a pause before the speech is the line's own weak
+    // edge, and so is a shorter stretch left out.
+    if (speech.first_frame >= kMinPauseFrames ||
         static_cast<double>(speech.length()) <= frames_for(syllables, kSlowestSyllablesPerSecond))
         return speech;
     const auto at = [&](std::size_t frame) { return activity.begin() + static_cast<std::ptrdiff_t>(frame); };
     const float loud_db =
-        percentile_of(std::vector<float>(at(speech.first_frame), at(speech.end_frame)), kLoudPercentile);
+        percentile_of(std::vector<float>(at(speech.first_frame), at(speech.end_frame)), kSpeechPercentile);
     const float near_db = loud_db - kUnspokenSpeechBelowDb;
     // The largest sum of a run: a quieter voice's loud moments join the line only where the dip
     // between them is shorter than they are loud.
     FrameSpan loud{speech.first_frame, speech.first_frame};
-    double best = 0.0, sum = 0.0;
+    double best = 0.0;
+    double sum = 0.0;
     std::size_t first = speech.first_frame;
     for (std::size_t t = speech.first_frame; t < speech.end_frame; ++t) {
-        if (sum <= 0.0) sum = 0.0, first = t;
+        if (sum <= 0.0) {
+            sum = 0.0;
+            first = t;
+        }
         sum += static_cast<double>(activity[t] - near_db);
-        if (sum > best) best = sum, loud = {first, t + 1};
+        if (sum > best) {
+            best = sum;
+            loud = {first, t + 1};
+        }
     }
     // Its first consonant is quieter: back to the foot of its rise.
     std::size_t start = loud.first_frame;
     while (start > speech.first_frame && activity[start - 1] < activity[start]) --start;
     const FrameSpan line{start, speech.end_frame};
     const bool is_quieter_voice =
-        loud.length() > 0 && start >= speech.first_frame + kMinEdgeFrames &&
+        loud.length() > 0 && start >= speech.first_frame + kMinPauseFrames &&
         *std::max_element(at(speech.first_frame), at(start)) < loud_db - kNearLoudVoiceDb &&
         rises_again(std::make_reverse_iterator(at(start)),
                     std::make_reverse_iterator(at(speech.first_frame))) &&

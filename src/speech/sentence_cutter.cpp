@@ -22,15 +22,11 @@ namespace talkface::detail {
 
 namespace {
 
-// Shorter quiet runs are stop closures and the gaps of a phrase, never a sentence's end.
-constexpr double kMinPauseS = 0.12;
-constexpr auto kMinPauseFrames = static_cast<std::size_t>(kMinPauseS / kFrameStepS + 0.5);
 constexpr std::size_t kSmoothingFrames = 5;
 constexpr std::size_t kLongestClickFrames = 4;
 // Noise floors are a low percentile of each band: the quietest 5% of any recording with pauses
 // is noise, whatever its level (learned from the audio, not set by hand as in Lai and Tsai).
 constexpr double kFloorPercentile = 0.05;
-constexpr double kSpeechPercentile = 0.95;
 // The noise's typical level: steady noise (a fan, hiss) lies within a dB or two of its quietest 5%,
 // but music's notes and beats spread far above it (bench/ song15: the 10th percentile 8.5 dB up,
 // the threshold 7.9 dB, and the music in every pause taken for speech). A recording's pauses take

@@ -16,6 +16,11 @@
 
 namespace talkface::detail {
 
+// A pause: shorter quiet runs are stop closures and the gaps of a phrase, never a sentence's end.
+constexpr double kMinPauseS = 0.12;
+constexpr auto kMinPauseFrames = static_cast<std::size_t>(kMinPauseS / kFrameStepS + 0.5);
+// The speech's loud level (LoudnessProfile::speech_level_db): this percentile of its frames' activity.
+constexpr double kSpeechPercentile = 0.95;
 // Read speech runs at 3-8 syllables per second: at fewer frames a syllable than this (14 a second)
 // a stretch cannot hold its text. check_sentence_lengths refuses such a sentence, and the cutter
 // never chooses one.
