@@ -912,6 +912,20 @@ Timeline align_checked(const FeatureTrack& track, const LoudnessProfile& loudnes
 // own, and the loss is said after it.
 constexpr double kLostAudioNamedFirstS = 0.2;
 
+// The aligner's refusal `error` with what the file's reader found: the sound it lost (`lost`, described;
+// "" where none) named first where it is about a syllable or more (lost_s), after the refusal where it is
+// less, and its `notes` (" (the file: ...)", or "") at the end.
+AlignmentError refusal_of_file(const AlignmentError& error, const std::string& lost, double lost_s,
+                               const std::string& notes) {
+    if (lost.empty()) return AlignmentError(error.what() + notes);
+    if (lost_s < kLostAudioNamedFirstS)
+        return AlignmentError(std::string(error.what()) + " (the file is also damaged: " + lost + ")" + notes);
+    return AlignmentError("the file is damaged: " + lost +
+                          " (read as silence: the speech there is lost), and the rest cannot be aligned "
+                          "without it; --lenient (AlignOptions::lenient) aligns what it can and reports "
+                          "the rest. The aligner found: " + error.what() + notes);
+}
+
 // The transcript aligned with `track` (of `loudness`), read from `open` with its first
 // `skipped_samples` of the analysis stream left out (align_checked); where a room's sentence is to
 // be refused and its pitch may witness for its text (ToneWitnessWanted), the recording is read
@@ -1047,7 +1061,8 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
         const bool is_short = static_cast<std::size_t>(std::count(is_spoken.begin(), is_spoken.end(),
                                                                   true)) <= kMaxHeldOutCheckSentences;
         if (is_voted && (first_refusal || is_short)) {
-            std::size_t refusals = first_refusal ? 1 : 0, alignments = first_refusal ? 0 : 1;
+            std::size_t refusals = first_refusal ? 1 : 0;
+            std::size_t alignments = first_refusal ? 0 : 1;
             std::optional<AlignmentError> other_refusal;
             std::optional<Timeline> other_alignment;
             for (const std::size_t phase_skipped : kOtherPhaseSkips) {
@@ -1079,13 +1094,7 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
             notes += " (its times count from " + format_fixed(silence_skipped_s, 3) +
                      " s: the digital silence before the recording's first sound was left out)";
         if (lost.empty() && notes.empty()) throw;
-        if (lost.empty()) throw AlignmentError(error.what() + notes);
-        if (lost_seconds(source->lost_audio()) < kLostAudioNamedFirstS)
-            throw AlignmentError(std::string(error.what()) + " (the file is also damaged: " + lost + ")" + notes);
-        throw AlignmentError("the file is damaged: " + lost +
-                             " (read as silence: the speech there is lost), and the rest cannot be aligned "
-                             "without it; --lenient (AlignOptions::lenient) aligns what it can and reports "
-                             "the rest. The aligner found: " + error.what() + notes);
+        throw refusal_of_file(error, lost, lost_seconds(source->lost_audio()), notes);
     }
     if (!lost.empty())
         result.warnings.push_back(source->name() + ": the file is damaged: " + lost +
