@@ -224,8 +224,9 @@ Args:
     sentences (list[Sentence]): in transcript order.
     syllables (list[Syllable]): in transcript order, each naming its sentence.
     warnings (list[str]): what the transcript reader skipped; after alignment, also what the aligner
-        says of the recording (a damaged or cut file, each naming the file) and of the match (a
-        finding of CheckMode.warn, a transcript that cannot be checked).
+        says of the recording (a damaged or cut file, a header whose length disagrees with its sound,
+        each naming the file) and of the match (a finding of CheckMode.warn, a transcript with no
+        Mandarin reading, which cannot be checked).
     duration_s (float): length of the audio, seconds.
     written_forms (list[WrittenForm]): the forms read by rule, in order, none overlapping.
     mismatches (list[TextMismatch]): where the speech does not say the text (lenient alignment).
