@@ -29,6 +29,9 @@ it, then (the kinds):
                consonant partly cut), its end 0-20 ms before the last sound
   breath-after an out-breath (the breath's band noise) starting 0.1-0.3 s after the line, the hiss
                after it lengthened to hold it (session 29; the other kinds' recordings are as they were)
+  p-breath     an in-breath before the line and an out-breath after it (breath's and breath-after's),
+               then one of five narrowband codecs (p-speex8, p-opus6, p-opus12, p-g723, p-g726): a
+               breath through a telephone band, where no voice keeps its fundamental (session 30)
 The wrong text is the next line of the same set with as many syllables (short_lines_bench's).
 A refused line counts each syllable as missed, as align_bench counts a refused passage. The last
 row of each set sums the lines with digits or English over every kind.
@@ -56,7 +59,10 @@ import short_onsets_bench as onsets_bench
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SPEAKERS = ("espeak", "person", "v", "w")
-EDGE_KINDS = ("plain", "clipped", "click", "breath", "room", "babble", "tight", "breath-after")
+EDGE_KINDS = ("plain", "clipped", "click", "breath", "room", "babble", "tight", "breath-after", "p-breath")
+# The narrowband codecs p-breath draws from (make_phone_kinds.py's chains: pink noise at 30 dB, the
+# telephone band, the codec).
+BREATH_CODECS = ("p-speex8", "p-opus6", "p-opus12", "p-g723", "p-g726")
 KINDS = EDGE_KINDS[:1] + tuple(phone.kinds) + EDGE_KINDS[1:]
 HISS_DB = 45.0
 
@@ -141,7 +147,7 @@ def record(kind, x, times, rng, others):
         y = phone.add(y, phone.coloured(len(y), rng, 1), power(x), HISS_DB)
         return y, sr, [(max(0.0, a - begin), b - begin) for a, b in times]
     before, after = rng.uniform(0.3, 0.6), rng.uniform(0.3, 0.6)
-    if kind == "breath-after":
+    if kind in ("breath-after", "p-breath"):
         gap = rng.uniform(0.1, 0.3)
         b = breath(power(x), rng)
         after += gap + len(b) / sr
@@ -164,6 +170,13 @@ def record(kind, x, times, rng, others):
     elif kind == "breath-after":
         start = at + len(x) + round(gap * sr)
         y[start:start + len(b)] += b
+    elif kind == "p-breath":
+        start = at + len(x) + round(gap * sr)
+        y[start:start + len(b)] += b
+        before_line = breath(power(x), rng)
+        end = at - round(rng.uniform(0.05, 0.2) * sr)
+        y[max(0, end - len(before_line)):end] += before_line[max(0, len(before_line) - end):]
+        y, sr = phone.kinds[BREATH_CODECS[rng.integers(len(BREATH_CODECS))]][2](y, 16000, truth, rng, others)
     elif kind == "room":
         y = phone.sox(y, sr, ["reverb", str(rng.integers(30, 71)), "50", str(rng.integers(40, 101)),
                               "gain", "-n", "-3"])[:len(y)]

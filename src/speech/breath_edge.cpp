@@ -35,6 +35,33 @@ std::array<float, kCepstrumCount> fundamental_rise_weights() {
     return weights;
 }
 
+// The share of the loud, sounding frames in [first, end) for which `holds(t)` is true; 0 where no
+// frame is loud.
+template <typename Holds>
+double loud_share_where(const FeatureTrack& track, const std::vector<float>& activity_db, float threshold_db,
+                        std::size_t first, std::size_t end, Holds holds) {
+    std::size_t loud = 0, held = 0;
+    for (std::size_t t = first; t < end; ++t) {
+        if (!is_loud_sounding_frame(track, activity_db, threshold_db, t)) continue;
+        ++loud;
+        if (holds(t)) ++held;
+    }
+    return loud == 0 ? 0.0 : static_cast<double>(held) / static_cast<double>(loud);
+}
+
+// Whether [first, end) holds kVowelHarmonicFrames loud frames in a row with a harmonic.
+bool holds_vowel(const FeatureTrack& track, const LoudnessProfile& loudness, const FrameSpan& stretch) {
+    std::size_t run = 0;
+    for (std::size_t t = stretch.first_frame; t < stretch.end_frame; ++t) {
+        const bool is_harmonic =
+            is_loud_sounding_frame(track, loudness.activity_db, loudness.activity_threshold_db, t) &&
+            track.at(t, kLineShare) >= kHarmonicLineShare;
+        run = is_harmonic ? run + 1 : 0;
+        if (run >= kVowelHarmonicFrames) return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 float fundamental_rise_db(const FeatureTrack& track, std::size_t t) {
@@ -47,13 +74,15 @@ float fundamental_rise_db(const FeatureTrack& track, std::size_t t) {
 
 double loud_fundamental_share(const FeatureTrack& track, const std::vector<float>& activity_db,
                               float threshold_db, std::size_t first, std::size_t end) {
-    std::size_t loud = 0, fundamental = 0;
-    for (std::size_t t = first; t < end; ++t) {
-        if (!is_loud_sounding_frame(track, activity_db, threshold_db, t)) continue;
-        ++loud;
-        if (fundamental_rise_db(track, t) >= kFundamentalBelowLowBandDb) ++fundamental;
-    }
-    return loud == 0 ? 0.0 : static_cast<double>(fundamental) / static_cast<double>(loud);
+    return loud_share_where(track, activity_db, threshold_db, first, end, [&](std::size_t t) {
+        return fundamental_rise_db(track, t) >= kFundamentalBelowLowBandDb;
+    });
+}
+
+double loud_harmonic_share(const FeatureTrack& track, const std::vector<float>& activity_db,
+                           float threshold_db, std::size_t first, std::size_t end) {
+    return loud_share_where(track, activity_db, threshold_db, first, end,
+                            [&](std::size_t t) { return track.at(t, kLineShare) >= kHarmonicLineShare; });
 }
 
 bool is_breath_beside_voice(const FeatureTrack& track, const LoudnessProfile& loudness,
@@ -64,9 +93,13 @@ bool is_breath_beside_voice(const FeatureTrack& track, const LoudnessProfile& lo
                                     loud_share(track, loudness.activity_db, loudness.activity_threshold_db,
                                                voice.first_frame, voice.end_frame));
     };
-    return (by_voicing_too && is_beside_voice(loud_voiced_share)) ||
-           (track.fundamental_share >= kNarrowbandFundamentalShare &&
-            stretch.length() >= kFewestBreathFrames && is_beside_voice(loud_fundamental_share));
+    const bool is_long = stretch.length() >= kFewestBreathFrames;
+    if (track.fundamental_share >= kNarrowbandFundamentalShare)
+        return (by_voicing_too && is_beside_voice(loud_voiced_share)) ||
+               (is_long && is_beside_voice(loud_fundamental_share));
+    return by_voicing_too &&
+           (is_beside_voice(loud_voiced_share) ||
+            (is_long && is_beside_voice(loud_harmonic_share) && !holds_vowel(track, loudness, stretch)));
 }
 
 std::optional<FrameSpan> find_close_breath(const FeatureTrack& track, const LoudnessProfile& loudness,

@@ -34,6 +34,27 @@ constexpr float kFundamentalBelowLowBandDb = -15.0f;
 double loud_fundamental_share(const FeatureTrack& track, const std::vector<float>& activity_db,
                               float threshold_db, std::size_t first, std::size_t end);
 
+// A frame whose kLineShare is this or more holds a harmonic: a voiced frame's power gathers in its
+// harmonics' lines, a breath's noise spreads over its band, and voiced frames keep their lines
+// through a telephone band. The short kinds' breaths (bench/short_kinds_bench.py: breath and
+// breath-after on a headset, p-breath through five narrowband codecs) read a median 0.15 (0.17
+// through the codecs) and 99% under 0.27 (0.37); at this bar each line's loud frames hold one 0.73
+// or more of the time (0.65 through the phone kinds' codecs), each breath's at most 0.14 (0.27)
+// (bench/README.md, session 30). A breath's noise in a narrower band (400-1500 Hz) shows lines.
+constexpr float kHarmonicLineShare = 0.25f;
+
+// The share of the loud, sounding frames in [first, end) (as loud_fundamental_share's) that hold a
+// harmonic (kHarmonicLineShare). 0 where no frame is loud.
+double loud_harmonic_share(const FeatureTrack& track, const std::vector<float>& activity_db,
+                           float threshold_db, std::size_t first, std::size_t end);
+
+// Loud frames holding a harmonic (kHarmonicLineShare) this many in a row are a vowel's, whatever
+// share of the stretch they make: a breath's noise shows a line at most 4 frames in a row through
+// the narrowband codecs (bench/ p-breath), 2 on a headset; a phone's gain control lifts the noise
+// before the first word into the same stretch as the word (bench/ p-fast-combo tuning-010: 36
+// frames of noise, then 16 of 天's harmonics).
+constexpr std::size_t kVowelHarmonicFrames = 6;
+
 // A stretch shorter than this is not judged by its fundamental. A breath's noise lasts 0.25 s or
 // more: the short kinds' shortest reads 13 frames loud. Music's onset at a file's start and its
 // last notes' tail read 7-8 frames in music-kinds' m-sung (tuning-004, tuning-006), set apart by a
@@ -42,12 +63,17 @@ double loud_fundamental_share(const FeatureTrack& track, const std::vector<float
 constexpr std::size_t kFewestBreathFrames = 10;
 
 // Whether the sound of `stretch` is a breath beside the voice of `voice` (`loudness`'s activity and
-// threshold tell the loud frames): it has no fundamental and the voice has one (where it is
-// kFewestBreathFrames long or more, and the recording keeps a fundamental at all), or, with
-// `by_voicing_too`, it is never voiced by the band ratio (loud_voiced_share) and the voice is. The
-// bars are a beat's beside a voice (is_beat_beside_voice). Through a telephone band a voice's
-// fundamental is gone, and a syllable whose first formant lies low (espeak-ng's 我 in bench/
-// telephone tuning-011) reads as having none beside the rest of the line, which keeps a little.
+// threshold tell the loud frames): where it is kFewestBreathFrames long or more and the recording
+// keeps a fundamental at all, it has none and the voice has one; or, with `by_voicing_too`, it is
+// never voiced by the band ratio (loud_voiced_share) and the voice is, or, where the recording keeps
+// no fundamental and the stretch is kFewestBreathFrames long or more, it holds no harmonic and the
+// voice does (loud_harmonic_share) and it holds no vowel (kVowelHarmonicFrames). The bars are a
+// beat's beside a voice (is_beat_beside_voice). Through a telephone band a voice's fundamental is
+// gone, and a syllable whose first formant lies low (espeak-ng's 我 in bench/ telephone tuning-011)
+// reads as having none beside the rest of the line, which keeps a little; its harmonics stay.
+// The harmonics are read only with `by_voicing_too` (before the first words): after the last,
+// dropping the lifted noise after p-fast-combo's lines moved their first syllables, which the same
+// lift puts early, further off (bench/README.md, session 30).
 bool is_breath_beside_voice(const FeatureTrack& track, const LoudnessProfile& loudness,
                             const FrameSpan& stretch, const FrameSpan& voice, bool by_voicing_too);
 
