@@ -1731,7 +1731,7 @@ TEST_SUITE("written forms") {
         });
     }
 
-    TEST_CASE("markets, funds and rates in capitals said by their Mandarin names; PHEIC, IaaS and Gen") {
+    TEST_CASE("markets, funds and rates in capitals said by their Mandarin names, and PHEIC, IaaS and Gen") {
         // Each row failed on main 532928e (session 30, dev23 and session 29's leftovers): the dictionary's
         // na zi da ke, ou pai ke, ai ci, hai ba, jie ne e; generic speech for SHIBOR and PHEIC; de ai si.
         check_cases({
