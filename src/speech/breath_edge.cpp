@@ -49,13 +49,18 @@ double loud_share_where(const FeatureTrack& track, const std::vector<float>& act
     return loud == 0 ? 0.0 : static_cast<double>(held) / static_cast<double>(loud);
 }
 
+// Whether frame t's power gathers in a harmonic's lines (a voiced frame's does; a breath's noise spreads).
+bool holds_harmonic(const FeatureTrack& track, std::size_t t) {
+    return track.at(t, kLineShare) >= kHarmonicLineShare;
+}
+
 // Whether [first, end) holds kVowelHarmonicFrames loud frames in a row with a harmonic.
 bool holds_vowel(const FeatureTrack& track, const LoudnessProfile& loudness, const FrameSpan& stretch) {
     std::size_t run = 0;
     for (std::size_t t = stretch.first_frame; t < stretch.end_frame; ++t) {
         const bool is_harmonic =
             is_loud_sounding_frame(track, loudness.activity_db, loudness.activity_threshold_db, t) &&
-            track.at(t, kLineShare) >= kHarmonicLineShare;
+            holds_harmonic(track, t);
         run = is_harmonic ? run + 1 : 0;
         if (run >= kVowelHarmonicFrames) return true;
     }
@@ -82,7 +87,7 @@ double loud_fundamental_share(const FeatureTrack& track, const std::vector<float
 double loud_harmonic_share(const FeatureTrack& track, const std::vector<float>& activity_db,
                            float threshold_db, std::size_t first, std::size_t end) {
     return loud_share_where(track, activity_db, threshold_db, first, end,
-                            [&](std::size_t t) { return track.at(t, kLineShare) >= kHarmonicLineShare; });
+                            [&](std::size_t t) { return holds_harmonic(track, t); });
 }
 
 bool is_breath_beside_voice(const FeatureTrack& track, const LoudnessProfile& loudness,
