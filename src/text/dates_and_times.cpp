@@ -387,6 +387,50 @@ std::optional<SpokenForm> read_season(const std::vector<CodePoint>& text, const 
     return form;
 }
 
+namespace {
+
+// The words of a year and a month written with a dot (2027.03 二零二七年三月), or "" where `number` is none.
+std::string year_and_month_words(const std::vector<CodePoint>& text, const WrittenNumber& number) {
+    constexpr std::size_t kYearDigits = 4;
+    if (!number.has_point || number.has_separators || number.whole.size() != kYearDigits ||
+        !(starts_with(number.whole, "19") || starts_with(number.whole, "20")) ||
+        number.fraction.size() != 2 || !is_month_and_day(number.fraction, "1"))
+        return "";
+    const auto next = value_at(text, number.end);
+    if (is_ascii_letter(next) || is_digit_at(text, number.end) || next == '.' || takes_liang(next) ||
+        is_one_of(next, U"%‰元圆圓块塊万萬亿億点點倍"))
+        return "";
+    return said_year(number.whole) + cardinal_words(number.fraction, false) + "月";
+}
+
+}  // namespace
+
+std::optional<SpokenForm> read_year_and_month(const std::vector<CodePoint>& text, std::size_t start,
+                                              const WrittenNumber& year) {
+    auto words = year_and_month_words(text, year);
+    if (words.empty()) return std::nullopt;
+    SpokenForm form;
+    form.end = year.end;
+    bool is_range = false;
+    const auto mark = value_at(text, form.end);
+    if ((is_range_mark(mark) || is_one_of(mark, U"至到")) && is_digit_at(text, form.end + 1)) {
+        const auto last = parse_number(text, form.end + 1);
+        if (auto last_words = year_and_month_words(text, last); !last_words.empty()) {
+            words +=
+                (is_range_mark(mark) ? std::string("到") : std::string(text[form.end].text)) + last_words;
+            form.end = last.end;
+            is_range = true;
+        }
+    }
+    const bool dates =
+        is_range || is_one_of(value_at(text, form.end), U"起前止") ||
+        contains_any(text_before(text, start, true), {"有效期", "日期", "期限", "保质期", "保質期", "保修期",
+                                                      "到期", "期间", "期間", "截止", "截至"});
+    if (!dates) return std::nullopt;
+    form.words = std::move(words);
+    return form;
+}
+
 std::optional<SpokenForm> read_dotted_day(const std::vector<CodePoint>& text, const WrittenNumber& month) {
     const auto dot = value_at(text, month.end);
     if (month.has_point || month.has_separators || !(dot == 0xB7 /*·*/ || dot == 0x30FB /*・*/ || dot == 0x2022 /*•*/) ||

@@ -97,6 +97,15 @@ bool follows_date_or_time(const std::vector<CodePoint>& text, std::size_t mark);
 // (2020-2025年 二零二零到二零二五年); two years that do not follow each other are not a season.
 std::optional<SpokenForm> read_season(const std::vector<CodePoint>& text, const WrittenNumber& first);
 
+// A year and a month with a dot between them, as a label or a card dates its validity (有效期至2027.03
+// 二零二七年三月, 生产日期：2025.10, 2019.05-2029.05 二零一九年五月到二零二九年五月): a year from 1900 to
+// 2099 and a month of two digits, where its clause names a period or a date before it (有效期 日期 期限
+// 保质期 到期 截止 截至; not 期货's price), 起 前 or 止 follows it, or it is a range to a second one (- ~ 至
+// 到, read with it), and no count's word, unit or price follows (2026.08元 is a price; 收于2025.10 an index's
+// value). nullopt elsewhere (session 31: a decimal, 两千零二十七点零三).
+std::optional<SpokenForm> read_year_and_month(const std::vector<CodePoint>& text, std::size_t start,
+                                              const WrittenNumber& year);
+
 // A day named by its month and day with a middle dot between them, as an event is (3·15晚会 三一五
 // 晚会, 5·12地震 五一二, 9·11 九一一): digit by digit, the dot not said.
 std::optional<SpokenForm> read_dotted_day(const std::vector<CodePoint>& text, const WrittenNumber& month);

@@ -163,7 +163,22 @@ bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start) {
         if (number_end >= 1 && is_digit_at(text, number_end - 1)) return true;
     }
     const auto staircase = text_between(text, start >= 2 ? start - 2 : 0, start);
-    return (staircase == "单元" || staircase == "單元") && start >= 3 && is_digit_at(text, start - 3);
+    if ((staircase == "单元" || staircase == "單元") && start >= 3 && is_digit_at(text, start - 3))
+        return true;
+    // A room's number after its wing's, block's or area's letter (A座803 ei 座八零三, C座2107, A区305;
+    // session 31: counted, 一千二百零五), as after a building's number; a round hundred there counts
+    // (C区200个车位).
+    if (start >= 2 && is_one_of(text[start - 1].value, U"座区區栋棟楼樓") &&
+        is_ascii_capital(text[start - 2].value) &&
+        (start == 2 || !is_ascii_letter(value_at(text, start - 3)))) {
+        auto end = start;
+        const auto digits = digits_from(text, end);
+        constexpr std::size_t kFewestRoomDigits = 3;
+        constexpr std::size_t kMostRoomDigits = 4;
+        return digits.size() >= kFewestRoomDigits && digits.size() <= kMostRoomDigits &&
+               !ends_with(digits, "00") && value_at(text, end) != '.';
+    }
+    return false;
 }
 
 bool follows_phone_word(const std::vector<CodePoint>& text, std::size_t start) {
@@ -396,12 +411,23 @@ bool repeats_card_model(const std::vector<CodePoint>& text, std::size_t start, c
 bool follows_maker_name(const std::vector<CodePoint>& text, std::size_t start) {
     auto i = start;
     if (i > 0 && text[i - 1].value == ' ') --i;
+    // A chip's model after its series' tier, a capital glued to its digits (Ryzen 9 9950X 九九五零 X, 锐龙5
+    // 8600G; session 31: 九千九百五十): the tier's digit and its space stand between the maker and the model.
+    auto model_end = start;
+    while (is_digit_at(text, model_end)) ++model_end;
+    if (i < start && i >= 2 && is_digit_at(text, i - 1) && !is_digit_at(text, i - 2) &&
+        is_ascii_capital(value_at(text, model_end))) {
+        i -= 1;
+        if (text[i - 1].value == ' ') --i;
+    }
     const auto before = text_between(text, i >= 2 ? i - 2 : 0, i);
-    for (const std::string_view maker : {"波音", "空客", "麦道", "麥道", "商飞", "商飛", "天玑", "天璣", "骁龙", "驍龍",
-                                         "麒麟", "鲲鹏", "鯤鵬", "昇腾", "昇騰", "飞腾", "飛騰", "龙芯", "龍芯"})
+    for (const std::string_view maker :
+         {"波音", "空客", "麦道", "麥道", "商飞", "商飛", "天玑", "天璣", "骁龙", "驍龍", "麒麟",
+          "鲲鹏", "鯤鵬", "昇腾", "昇騰", "飞腾", "飛騰", "龙芯", "龍芯", "锐龙", "銳龍"})
         if (before == maker) return true;
     // The same makers and series in Latin letters, as English copy and spec sheets write them.
-    constexpr std::string_view kLatinMakers[] = {"boeing", "airbus", "snapdragon", "dimensity", "kirin"};
+    constexpr std::string_view kLatinMakers[] = {"boeing",    "airbus", "snapdragon",
+                                                 "dimensity", "kirin",  "ryzen"};
     auto first = i;
     while (first > 0 && is_ascii_letter(value_at(text, first - 1))) --first;
     return first < i && is_any_of(ascii_lower_case(text_between(text, first, i)), kLatinMakers);
@@ -430,6 +456,15 @@ bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, 
         return true;
     const auto before = text_between(text, start >= 2 ? start - 2 : 0, start);
     if (before == "日经" || before == "日經") return true;
+    // A share's code after its exchange's or its board's name (北交所920099 九二零零九九, 科创板688256,
+    // 创业板300059; session 31: counted), as after 港股: five or six digits, no word counting shares, firms
+    // or points after them (a measure word may begin the next word: 成交额, 盘中).
+    constexpr std::size_t kShortestShareCode = 5;
+    if (digits.size() >= kShortestShareCode && digits.size() <= kLongestCode &&
+        !is_one_of(value_at(text, number.end), U"%万萬亿億多余餘只隻家个個股元点點") &&
+        ends_with_any(text_between(text, start >= 3 ? start - 3 : 0, start),
+                      {"交所", "港股", "科创板", "科創板", "创业板", "創業板", "沪市", "滬市", "深市"}))
+        return true;
     constexpr std::size_t kShortestCellFormat = 4;
     constexpr std::size_t kLongestCellFormat = 5;
     if (digits.size() >= kShortestCellFormat && digits.size() <= kLongestCellFormat &&
@@ -599,6 +634,42 @@ std::optional<SpokenForm> read_floor(const std::vector<CodePoint>& text, std::si
     SpokenForm form;
     form.words = cardinal_words(number.whole, false) + "楼";
     form.end = number.end + 1;
+    return form;
+}
+
+std::optional<SpokenForm> read_masked_number(const std::vector<CodePoint>& text, const WrittenNumber& number,
+                                             bool is_phone) {
+    const auto is_star = [&](std::size_t k) { return ascii_form(value_at(text, k)) == '*'; };
+    if (number.has_point || number.has_separators || !is_star(number.end) || !is_star(number.end + 1))
+        return std::nullopt;
+    std::vector<std::string> groups{number.whole};
+    std::size_t places = number.whole.size();
+    auto end = number.end;
+    while (is_star(end)) {
+        std::size_t stars = 0;
+        while (is_star(end)) {
+            ++stars;
+            ++end;
+        }
+        places += stars;
+        groups.emplace_back(stars, '*');
+        if (is_digit_at(text, end)) {
+            groups.push_back(digits_from(text, end));
+            places += groups.back().size();
+        }
+    }
+    constexpr std::size_t kMobilePlaces = 11;
+    const bool is_dialled = is_phone || (places == kMobilePlaces && number.whole.front() == '1');
+    SpokenForm form;
+    form.is_dialled = is_dialled;
+    for (const auto& group : groups) {
+        if (group.front() == '*') {
+            for (std::size_t k = 0; k < group.size(); ++k) form.words += "星";
+        } else {
+            form.words += digit_words(group, is_dialled);
+        }
+    }
+    form.end = end;
     return form;
 }
 

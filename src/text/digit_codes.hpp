@@ -182,6 +182,13 @@ std::size_t past_exchange_suffix(const std::vector<CodePoint>& text, std::size_t
 // nullopt elsewhere.
 std::optional<SpokenForm> read_floor(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
 
+// A number with some of its digits masked by stars, as a prize list or a login notice shows a phone's or a
+// card's (138****6621, 6222****1234): its digits one by one and each star 星, as such a number is read out;
+// a mobile's (eleven places, the first a 1) or one after a phone's word dialled, its 1 幺. `number` starts
+// the form; nullopt where no run of two stars or more follows its digits.
+std::optional<SpokenForm> read_masked_number(const std::vector<CodePoint>& text, const WrittenNumber& number,
+                                             bool is_phone);
+
 }  // namespace talkface::detail
 
 #endif

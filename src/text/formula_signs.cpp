@@ -229,12 +229,20 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
             return (is_formula_term(left) || is_han_left) && (is_formula_term(right) || is_han_right) ? "到"
                                                                                                       : "";
         case 0x221A: return is_formula_term(right) || right == '(' ? "根号" : "";  // √2, √(x+1)
-        // A square or a cube after a term: x² x平方, 3² 三的平方.
+        // A cube root and a fourth root as a lesson reads them (∛27 三次根号二十七, ∜81; session 31: unsaid).
+        case 0x221B:
+            return is_formula_term(right) || right == '(' ? "三次根号" : "";  // ∛
+        case 0x221C:
+            return is_formula_term(right) || right == '(' ? "四次根号" : "";  // ∜
+        // A square or a cube after a term: x² x平方, 3² 三的平方; after a word, as a rule of thumb writes it,
+        // 的 too (身高² 身高的平方, 速度²; session 31: unsaid). Not after a unit of length's character, whose
+        // square is a unit said first (厘米² 平方厘米), which this sign cannot reorder.
         case 0xB2: case 0xB3: {
-            if (!is_formula_term(left) || before != i) return {};
+            const bool after_word = is_han_left && !is_one_of(left, U"米尺寸里");
+            if (!(is_formula_term(left) || after_word) || before != i) return {};
             const bool after_digit = left >= '0' && left <= '9';
-            if (sign == 0xB2) return after_digit ? "的平方" : "平方";
-            return after_digit ? "的立方" : "立方";
+            if (sign == 0xB2) return after_digit || after_word ? "的平方" : "平方";
+            return after_digit || after_word ? "的立方" : "立方";
         }
         default: return {};
     }

@@ -100,6 +100,12 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     // P&G 宝洁); the reader joins the parts where this table has the whole.
     {"s&p", "biao1 pu3"},
     {"p&g", "bao3 jie2"},
+    // Session 31: AMD's chips, Ryzen, by the Chinese name AMD gives them, 锐龙 (generic speech: the
+    // dictionary lacks it), and blocs that world news writes in capitals but says by their Chinese names:
+    // BRICS 金砖 (generic speech) and ASEAN 东盟 (the dictionary's e zi en), as NASDAQ is 纳斯达克.
+    {"ryzen", "rui4 long2"},
+    {"brics", "jin1 zhuan1"},
+    {"asean", "dong1 meng2"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

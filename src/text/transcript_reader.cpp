@@ -163,6 +163,14 @@ bool marks_ticker(const std::vector<CodePoint>& text, std::size_t i) {
     return k > i + 1 && k - i - 1 <= kLongestTicker && (k == text.size() || !is_word_character(k));
 }
 
+// The @ of a screen's or a camera's mode between its resolution and its rate (4K@144Hz, 8K@60fps,
+// 1080P@240fps, as spec sheets write them): no word, read as 4K 一百四十四赫兹 is (session 31: skipped with a
+// warning). A resolution is digits and a K or a P; the rate's digits follow the @.
+bool marks_screen_mode(const std::vector<CodePoint>& text, std::size_t i) {
+    if (ascii_form(text[i].value) != '@' || i < 2 || !detail::is_digit_at(text, i + 1)) return false;
+    return detail::is_one_of(ascii_form(text[i - 1].value), U"KkPp") && detail::is_digit_at(text, i - 2);
+}
+
 bool is_pinyin_letter(char32_t c) {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == 0xFC /*ü*/ || c == 0xDC /*Ü*/;
 }
@@ -564,7 +572,8 @@ private:
         }
         if (is_pinyin_letter(c.value)) return read_token(text, i);
         append_text(c.text);
-        if (!is_silent_punctuation(c.value) && !marks_topic(text, i) && !marks_ticker(text, i))
+        if (!is_silent_punctuation(c.value) && !marks_topic(text, i) && !marks_ticker(text, i) &&
+            !marks_screen_mode(text, i))
             warn_no_reading(c);
         return i + 1;
     }

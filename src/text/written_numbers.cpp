@@ -504,8 +504,10 @@ bool is_named_by_context(const std::string& whole, const NumberContext& context,
     // session 26: 四零零).
     const bool is_round_tier = (whole.size() >= 4 && whole.compare(whole.size() - 3, 3, "000") == 0) ||
                                (whole.size() == 3 && whole.compare(1, 2, "00") == 0 && !context.is_train);
-    return context.is_grade || context.names_year ||
-           (!counts && (context.is_generation || context.is_hundredths || context.is_code ||
+    // A code is one whatever character follows (创业板300059成交额: 成 begins a word there, no tenths):
+    // names_by_its_digits has looked at what follows it.
+    return context.is_grade || context.names_year || (context.is_code && !context.has_unit) ||
+           (!counts && (context.is_generation || context.is_hundredths ||
                         (context.is_model && whole.size() >= 3 && !is_round_tier) ||
                         (context.names_type && whole.size() >= 2) || context.names_day));
 }
@@ -589,6 +591,30 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
     return said;
 }
 
+// A charger's or a port's rating, its volts, a slash and the current or the power it gives at them (5V/2A
+// 五伏两安, 20V/3.25A, 9V/2A两档), said as the pair it is, the slash unsaid: no quantity is per a current.
+// `divisor` is the number after the slash at text[end]; its words and its unit's, `end` moved past them, or
+// nullopt where the unit before the slash is no volt's or no current's or power's follows.
+std::optional<std::string> rated_current_words(const std::vector<CodePoint>& text, std::size_t& end,
+                                               const WrittenNumber& divisor) {
+    if (end == 0 || text[end - 1].value != 'V' || divisor.has_separators) return std::nullopt;
+    auto k = divisor.end;
+    std::string unit_words;
+    for (const auto& [written, said] :
+         {std::pair{"mA", "毫安"}, std::pair{"A", "安"}, std::pair{"W", "瓦"}}) {
+        const std::string_view symbol = written;
+        if (text_between(text, k, k + symbol.size()) != symbol) continue;
+        k += symbol.size();
+        unit_words = said;
+        break;
+    }
+    if (unit_words.empty() || is_ascii_letter(value_at(text, k)) || is_digit_at(text, k)) return std::nullopt;
+    NumberContext quantity;
+    quantity.has_unit = true;  // 2A 两安, as before any unit
+    end = k;
+    return say_number(divisor, quantity).words + unit_words;
+}
+
 // What a slash after a quantity's unit ending at text[end] is per, said 每 and moving `end` past it: another
 // unit, with its number where it has one (7.0mmol/L 每升, 35μg/m³ 每立方米, 80mg/100ml 每一百毫升), or a
 // measure word, which is read after it as the text it is (0.3g/粒 零点三克每粒, 100mg/片; session 19: the
@@ -599,6 +625,7 @@ std::string per_unit_words(const std::vector<CodePoint>& text, std::size_t& end)
     std::string divisor_words;
     if (is_digit_at(text, k)) {
         const auto divisor = parse_number(text, k);
+        if (auto current = rated_current_words(text, end, divisor)) return *current;
         divisor_words = say_number(divisor, {}).words;
         k = divisor.end;
     }
@@ -853,8 +880,10 @@ std::optional<SpokenForm> read_product(const std::vector<CodePoint>& text, const
 std::optional<SpokenForm> read_unsigned_form(const std::vector<CodePoint>& text, std::size_t start,
                                              std::size_t i, const WrittenNumber& number,
                                              const NumberContext& context) {
+    if (auto masked = read_masked_number(text, number, context.is_phone)) return masked;
     if (auto day = read_dotted_day(text, number)) return day;
     if (auto dotted = read_dotted_groups(text, i)) return dotted;
+    if (auto month = read_year_and_month(text, start, number)) return month;
     if (auto floor = read_floor(text, i, number)) return floor;
     if (auto date = read_numeric_date(text, number)) return date;
     if (auto season = read_season(text, number)) return season;
@@ -887,6 +916,29 @@ std::optional<SpokenForm> read_unsigned_form(const std::vector<CodePoint>& text,
     return std::nullopt;
 }
 
+// A place in a whole after 第, a slash between them (第3/10篇 第三篇共十篇, 第27/50关, as a series' part or a
+// game's stage is read out; session 31: a fraction, 第十分之三篇): the place, its measure word said with it
+// too, 共 and the whole, the measure word written after the whole then read as text. nullopt where no 第
+// stands before `number`, either has a point, the place is past the whole, or 决赛 follows (a knockout
+// round's 1/4).
+std::optional<SpokenForm> read_place_in_whole(const std::vector<CodePoint>& text, std::size_t start,
+                                              const WrittenNumber& number, const WrittenNumber& whole) {
+    if (start == 0 || text[start - 1].value != U'第' || number.has_point || whole.has_point ||
+        text_between(text, whole.end, whole.end + 2) == "决赛" ||
+        text_between(text, whole.end, whole.end + 2) == "決賽" || number.has_separators ||
+        whole.has_separators || number.whole.size() > whole.whole.size() ||
+        (number.whole.size() == whole.whole.size() && number.whole > whole.whole))
+        return std::nullopt;
+    const auto measure = value_at(text, whole.end);
+    const bool has_measure = takes_liang(measure) || is_one_of(measure, U"关關题題站话話卷讲講课課");
+    SpokenForm form;
+    form.words = say_number(number, {}).words +
+                 (has_measure ? std::string(text[whole.end].text) : std::string()) + "共" +
+                 say_number(whole, {}).words;
+    form.end = whole.end;
+    return form;
+}
+
 // Two numbers about a slash (number, then text[number.end]): a blood pressure (blood_pressure_unit), 24/7,
 // or a fraction, its denominator said first (1/3 三分之一), and a range to a second one (1/3~1/2); nullopt
 // where no number follows the slash or the first has a point.
@@ -913,6 +965,7 @@ std::optional<SpokenForm> read_slashed_pair(const std::vector<CodePoint>& text, 
         form.end = denominator.end;
         return form;
     }
+    if (auto place = read_place_in_whole(text, start, number, denominator)) return place;
     SpokenForm form;
     const auto said_denominator = say_number(denominator, {});
     const auto said_numerator = say_number(number, {});
@@ -977,7 +1030,14 @@ NumberRange read_range(const std::vector<CodePoint>& text, std::size_t start, co
             const bool is_size_after_version = after_name && is_dash(value_at(text, after_first)) &&
                                                second_sign.empty() && value_at(text, second.end) == 'B' &&
                                                !is_ascii_letter(value_at(text, second.end + 1));
-            if ((!range.first_is_percent || value_at(text, second.end) == '%') && !is_size_after_version) {
+            // A memory's speed after its generation (DDR5-6400 DDR 五六千四百, DDR4-3200; session 31:
+            // 五到六千四百) is a figure of its own, the dash unsaid as in a model's name (F-35).
+            auto letters = start;
+            while (letters > 0 && is_ascii_letter(value_at(text, letters - 1))) --letters;
+            const bool is_speed_after_generation =
+                is_dash(value_at(text, after_first)) && ends_with(text_between(text, letters, start), "DDR");
+            if ((!range.first_is_percent || value_at(text, second.end) == '%') && !is_size_after_version &&
+                !is_speed_after_generation) {
                 range.numbers.push_back(std::move(second));
                 range.signs.push_back(std::move(second_sign));
             }
@@ -1176,6 +1236,25 @@ SpokenForm read_quantity(const std::vector<CodePoint>& text, std::size_t start, 
     return form;
 }
 
+// The dot and the digit of a storage slot's form factor after its capital, M.2 and U.2 (M.2 M 点二, as spec
+// sheets are read; session 31: the dot ended the sentence and went unsaid): M or U standing alone, a dot and
+// one digit that no further dot follows. Another capital there is a choice's or an initial's
+// (答案是A.2后来改了), and more dots a lineage's name (B.1.1.7); nullopt there.
+std::optional<SpokenForm> read_form_factor_digit(const std::vector<CodePoint>& text, std::size_t start) {
+    if (value_at(text, start) != '.' || start == 0 || !is_one_of(text[start - 1].value, U"MU") ||
+        (start >= 2 && (is_ascii_letter(text[start - 2].value) || is_digit_at(text, start - 2))) ||
+        !is_digit_at(text, start + 1))
+        return std::nullopt;
+    const auto digit = parse_number(text, start + 1);
+    if (digit.whole.size() != 1 || digit.has_point || digit.has_separators ||
+        value_at(text, digit.end) == '.' || is_ascii_letter(value_at(text, digit.end)))
+        return std::nullopt;
+    SpokenForm form;
+    form.words = "点" + cardinal_words(digit.whole, false);
+    form.end = digit.end;
+    return form;
+}
+
 }  // namespace
 
 std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, std::size_t start) {
@@ -1187,6 +1266,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         return second;
     }
     if (auto code = read_calling_code(text, start)) return code;
+    if (auto form_factor = read_form_factor_digit(text, start)) return form_factor;
     auto sign = read_leading_sign(text, start);
     if (!sign) return std::nullopt;
     const Currency* currency = sign->currency;
