@@ -166,7 +166,7 @@ bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start) {
     if ((staircase == "单元" || staircase == "單元") && start >= 3 && is_digit_at(text, start - 3))
         return true;
     // A room's number after its wing's, block's or area's letter (A座803 ei 座八零三, C座2107, A区305;
-    // session 31: counted, 一千二百零五), as after a building's number; a round hundred there counts
+    // session 31: counted, 八百零三), as after a building's number; a round hundred there counts
     // (C区200个车位).
     if (start >= 2 && is_one_of(text[start - 1].value, U"座区區栋棟楼樓") &&
         is_ascii_capital(text[start - 2].value) &&

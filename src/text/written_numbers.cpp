@@ -593,8 +593,8 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
 
 // A charger's or a port's rating, its volts, a slash and the current or the power it gives at them (5V/2A
 // 五伏两安, 20V/3.25A, 9V/2A两档), said as the pair it is, the slash unsaid: no quantity is per a current.
-// `divisor` is the number after the slash at text[end]; its words and its unit's, `end` moved past them, or
-// nullopt where the unit before the slash is no volt's or no current's or power's follows.
+// `divisor` is the number after the slash at text[end]: its words and its unit's, `end` moved past them;
+// nullopt where no volt's V stands before the slash or no current's or power's unit follows the number.
 std::optional<std::string> rated_current_words(const std::vector<CodePoint>& text, std::size_t& end,
                                                const WrittenNumber& divisor) {
     if (end == 0 || text[end - 1].value != 'V' || divisor.has_separators) return std::nullopt;
