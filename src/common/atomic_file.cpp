@@ -20,6 +20,18 @@ namespace {
 
 std::string os_reason(int error_number) { return std::strerror(error_number); }
 
+// Closes a descriptor on every way out of the scope that opened it, a refusal's throw among them.
+class DescriptorCloser {
+public:
+    explicit DescriptorCloser(int fd) : fd_(fd) {}
+    ~DescriptorCloser() { ::close(fd_); }
+    DescriptorCloser(const DescriptorCloser&) = delete;
+    DescriptorCloser& operator=(const DescriptorCloser&) = delete;
+
+private:
+    int fd_;
+};
+
 // How long a pipe may keep its first byte: a process substitution's command (talkface align a.wav
 // <(opencc -i t.txt)) has its writer open at once, a named pipe nothing writes to never has one.
 constexpr int kPipeWaitMs = 10000;
@@ -29,9 +41,9 @@ constexpr int kPipeWaitMs = 10000;
 std::string read_pipe(const std::string& path, const std::string& what) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK);
     if (fd < 0) throw FileError(path, "cannot open: " + os_reason(errno));
+    const DescriptorCloser closer(fd);
     pollfd ready{fd, POLLIN, 0};
     if (::poll(&ready, 1, kPipeWaitMs) <= 0) {
-        ::close(fd);
         throw FileError(path, "cannot read: " + what + " that nothing wrote to in " +
                                   std::to_string(kPipeWaitMs / 1000) +
                                   " s; give talkface the file itself, or start what writes the pipe first");
@@ -41,14 +53,9 @@ std::string read_pipe(const std::string& path, const std::string& what) {
     char buffer[1 << 16];
     for (ssize_t got; (got = ::read(fd, buffer, sizeof buffer)) != 0;) {
         if (got < 0 && errno == EINTR) continue;
-        if (got < 0) {
-            const int saved = errno;
-            ::close(fd);
-            throw FileError(path, "cannot read: " + os_reason(saved));
-        }
+        if (got < 0) throw FileError(path, "cannot read: " + os_reason(errno));
         text.append(buffer, static_cast<std::size_t>(got));
     }
-    ::close(fd);
     return text;
 }
 
