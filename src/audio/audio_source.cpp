@@ -566,8 +566,10 @@ std::size_t AudioSource::read(float* mono, std::size_t max_frames) {
     const std::size_t frames = read_frames(mono, max_frames);
     for (std::size_t i = 0; i < frames; ++i) {
         if (!std::isfinite(mono[i])) {
-            if (non_finite_frames_ == 0) first_non_finite_frame_ = frames_read_ + i;
-            ++non_finite_frames_;
+            if (frames_read_ + i >= non_finite_counted_from_) {
+                if (non_finite_frames_ == 0) first_non_finite_frame_ = frames_read_ + i;
+                ++non_finite_frames_;
+            }
             mono[i] = 0.0f;
         } else if (std::fabs(mono[i]) > kMostSampleMagnitude) {
             const double at_s = static_cast<double>(frames_read_ + i) / sample_rate_hz();
@@ -587,6 +589,12 @@ std::size_t AudioSource::read(float* mono, std::size_t max_frames) {
                                         static_cast<double>(first_non_finite_frame_) / sample_rate_hz()));
     }
     return frames;
+}
+
+void AudioSource::take_non_finite_count(const AudioSource& earlier) {
+    non_finite_frames_ = earlier.non_finite_frames_;
+    first_non_finite_frame_ = earlier.first_non_finite_frame_;
+    non_finite_counted_from_ = earlier.frames_read_;
 }
 
 bool AudioSource::skip_to(std::size_t frame) {

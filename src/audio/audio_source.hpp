@@ -85,10 +85,18 @@ public:
     std::size_t read(float* mono, std::size_t max_frames);
     // Moves the reading on to `frame` (counted from the start, past every frame read so far)
     // without decoding what lies between, where the reader can go there straight (libsndfile's
-    // sf_seek in a file it can seek in); false where it cannot, the reading left where it was. A
+    // sf_seek in a file it can seek in; FFmpeg's seek and a decode to the exact sample, in a file
+    // whose timestamps place one, ffmpeg_source.cpp); false where it cannot, the reading left
+    // where it was. A
     // reading that passes hours of digital silence this way takes no time for them; what it passes
-    // is not read, so its samples that are not numbers are not counted (read()'s note).
+    // is not read, so its samples that are not numbers are counted only where an earlier reading
+    // counted them (take_non_finite_count).
     bool skip_to(std::size_t frame);
+    // Takes over the samples that are not numbers `earlier` (a reading of the same recording from
+    // its start, read() only) found, before this reading reads anything, and from then on counts
+    // only those past where `earlier` stopped: read()'s note then names them all, though this
+    // reading skip_to()s past the silence `earlier` read them in (a float file NaN there).
+    void take_non_finite_count(const AudioSource& earlier);
     virtual int sample_rate_hz() const = 0;
     // Frames the source says it has; progress is measured against it. For what FFmpeg reads it is
     // the container's estimate, and read() goes on to the real end.
@@ -119,6 +127,8 @@ private:
     std::size_t frames_read_ = 0;
     std::size_t non_finite_frames_ = 0;
     std::size_t first_non_finite_frame_ = 0;
+    // Frames before this one were counted by an earlier reading (take_non_finite_count).
+    std::size_t non_finite_counted_from_ = 0;
     bool is_end_noted_ = false;
     // read()'s frames as the source holds them, before non-numbers are made 0.
     virtual std::size_t read_frames(float* mono, std::size_t max_frames) = 0;

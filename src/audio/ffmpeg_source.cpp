@@ -120,6 +120,11 @@ constexpr double kLeastSpeechVoicedShare = 0.27;
 // A track whose loudest frame is under this RMS (-60 dBFS) is silent: an empty track is zeros.
 constexpr double kSilentTrackRms = 1e-3;
 
+// How far before the frame it seeks to skip_to() has the demuxer seek, for the decoder to
+// settle there on what precedes it: an MP3 frame's bit reservoir reaches 511 bytes back (7 frames,
+// 0.5 s, at 8 kb/s), AAC and Vorbis overlap one frame, Opus asks 80 ms of preroll (RFC 7845, 4.6).
+constexpr double kSeekPrerollS = 1.0;
+
 std::string seconds_text(double seconds) { return format_fixed(seconds, 3) + " s"; }
 
 std::string ordinal_text(std::size_t n) {
@@ -499,21 +504,159 @@ public:
     const std::string& name() const override { return path_; }
 
 private:
+    // skip_to()'s move: a seek in a second opening of the file to kSeekPrerollS before `frame`, and
+    // a decode from there to the frame that holds `frame`, placed by its timestamp. Only once the
+    // second opening stands there does it take the first one's place, so a seek that cannot land
+    // there leaves this reading as it was; past the first frames, it is then decoded on to `frame`
+    // (as the reading would have read it, at its cost). The frames keep their grid: a sample is
+    // where the first reading's counting puts it, for the timestamps (in a time base that resolves
+    // one sample) count as that counting does wherever the file is whole. What the seek passes is
+    // not read, so a scratch inside it is neither kept as silence nor named: the file was read up
+    // to its first sound once already, and found silent there.
+    bool seek_frames(std::size_t frame) override {
+        if (!can_seek()) return false;
+        if (pass_over_to(frame, false)) return true;
+        if (timed_frames_ >= 2 && can_seek() && land_at(frame)) return true;
+        return pass_over_to(frame, true);
+    }
+
+    // Whether skip_to() may seek: in a file FFmpeg can seek in, read whole so far (no packet
+    // refused, no gap, no codec pause), whose sound track's timestamps resolve one sample (MP3's,
+    // FLAC's, MP4's, Ogg's; Matroska's milliseconds and MPEG-TS's 90 kHz clock do not). A file
+    // read in a way of its own (a damaged Ogg file's, a WAV read past its stated size) is read on.
+    bool can_seek() const {
+        if (hiding_reader_ || reading_.keeps_stated_length || reading_.reads_past_stated_size) return false;
+        if (flushed_ || skipped_frames_ > 0 || timed_frames_ < 1 || !lost_audio().empty() ||
+            !codec_pauses().empty())
+            return false;
+        if (format_->pb == nullptr || (format_->pb->seekable & AVIO_SEEKABLE_NORMAL) == 0) return false;
+        const AVRational base = stream_->time_base;
+        return base.num > 0 && base.den > 0 &&
+               base.den % (static_cast<std::int64_t>(base.num) * sample_rate_hz_) == 0;
+    }
+
+    // Passes over the samples decoded up to `frame`, decoding on while time 0 is not placed (the
+    // second frame with a timestamp places it, skip_to_timestamp) or, with `to_frame`, until
+    // `frame` is reached. True once the reading stands at `frame`; false where time 0 was placed
+    // first or the sound track ended.
+    bool pass_over_to(std::size_t frame, bool to_frame) {
+        while (true) {
+            const std::size_t step = std::min(pending_.size() - pending_position_, frame - frames_given_);
+            pending_position_ += step;
+            frames_given_ += step;
+            if (frames_given_ == frame) return true;
+            if (!to_frame && timed_frames_ >= 2) return false;
+            if (!decode_next_frame()) return false;
+        }
+    }
+
+    // The seek of seek_frames, the samples at hand passed over: true where it landed on `frame`.
+    bool land_at(std::size_t frame) {
+        // The samples decoded run ahead of those given out by what was cut from the start (an
+        // encoder's delay); a timestamp counts them.
+        const auto cut = static_cast<std::int64_t>(frames_decoded_ - frames_given_);
+        const std::int64_t target = static_cast<std::int64_t>(frame) + cut;
+        const AVRational sample_base{1, sample_rate_hz_};
+        const auto preroll = static_cast<std::int64_t>(kSeekPrerollS * sample_rate_hz_);
+        std::unique_ptr<AVFormatContext, FormatCloser> format = opened_format(nullptr);
+        if (static_cast<unsigned>(stream_->index) >= format->nb_streams) return false;
+        AVStream* stream = format->streams[stream_->index];
+        const std::int64_t seek_at =
+            av_rescale_q(target + time_zero_frames_ - preroll, sample_base, stream->time_base);
+        if (seek_at <= 0) return false;
+        OpenedDecoder opened = open_decoder(*stream->codecpar);
+        if (!opened.context || opened.context->sample_rate != sample_rate_hz_) return false;
+        AVCodecContext* codec = opened.context.get();
+        if (avformat_seek_file(format.get(), stream->index, std::numeric_limits<std::int64_t>::min(), seek_at,
+                               seek_at, 0) < 0)
+            return false;
+        std::int64_t packets_end_byte = packets_end_byte_;
+        std::int64_t next_packet_byte = -1;
+        std::int64_t last_packet_duration = 0;
+        std::int64_t start = 0;
+        while (true) {
+            const int received = avcodec_receive_frame(codec, frame_.get());
+            if (received == 0) {
+                const std::int64_t timestamp = frame_->best_effort_timestamp;
+                if (timestamp == AV_NOPTS_VALUE || frame_->sample_rate != sample_rate_hz_) {
+                    av_frame_unref(frame_.get());
+                    return false;
+                }
+                start = av_rescale_q(timestamp, stream->time_base, sample_base) - time_zero_frames_;
+                if (start > target) {
+                    av_frame_unref(frame_.get());
+                    return false;
+                }
+                if (start + frame_->nb_samples > target) break;
+                av_frame_unref(frame_.get());
+                continue;
+            }
+            if (received == AVERROR(ENOMEM)) throw std::bad_alloc();
+            if (received == AVERROR_EOF) return false;
+            // Packets the decoder refuses in its first frames after the seek (an MP3 frame whose
+            // bit reservoir lies before it) fall in the preroll: what it holds settles the decoder.
+            int got = 0;
+            while ((got = av_read_frame(format.get(), packet_.get())) >= 0 &&
+                   packet_->stream_index != stream->index) {
+                if (packet_->pos >= 0)
+                    packets_end_byte = std::max(packets_end_byte, packet_->pos + packet_->size);
+                av_packet_unref(packet_.get());
+            }
+            if (got < 0) return false;
+            if (packet_->pos >= 0)
+                packets_end_byte = std::max(packets_end_byte, packet_->pos + packet_->size);
+            next_packet_byte = packet_->pos >= 0 ? packet_->pos + packet_->size : -1;
+            last_packet_duration = packet_->duration;
+            const int sent = avcodec_send_packet(codec, packet_.get());
+            av_packet_unref(packet_.get());
+            if (sent == AVERROR(ENOMEM)) throw std::bad_alloc();
+        }
+        const std::int64_t decoded_before = static_cast<std::int64_t>(frames_decoded_);
+        if (!mixer_.takes(*frame_)) {
+            av_frame_unref(frame_.get());
+            return false;
+        }
+        pending_.clear();
+        pending_position_ = 0;
+        const int converted = mixer_.mix(*frame_, static_cast<std::size_t>(target - start), pending_);
+        av_frame_unref(frame_.get());
+        if (converted < 0) return false;
+        format_ = std::move(format);
+        codec_ = std::move(opened.context);
+        stream_ = stream;
+        frames_decoded_ = static_cast<std::size_t>(start + converted);
+        frames_to_skip_ = 0;
+        frames_given_ = frame;
+        first_packet_sent_ = true;
+        packets_end_byte_ = packets_end_byte;
+        next_packet_byte_ = next_packet_byte;
+        last_packet_frames_ = packet_frames(last_packet_duration);
+        last_packet_is_pause_ = false;
+        short_mp3_frame_.reset();
+        // A variable-rate MP3's samples up to the last packet, as its table of contents counts them.
+        mp3_frames_before_ += static_cast<double>(start + converted - decoded_before);
+        return true;
+    }
+
     // Opens the file into format_ and reads its streams' parameters.
     void open_format() {
+        if (reading_.overlong_ogg_page_byte >= 0)
+            hiding_reader_ = std::make_unique<HidingReader>(path_, reading_.overlong_ogg_page_byte);
+        format_ = opened_format(hiding_reader_ ? hiding_reader_->context() : nullptr);
+    }
+
+    // The file opened by FFmpeg, its streams' parameters read; through `reader` where it is not null.
+    std::unique_ptr<AVFormatContext, FormatCloser> opened_format(AVIOContext* reader) const {
         AVDictionary* options = nullptr;
         av_dict_set(&options, "format_whitelist", kFormats, 0);
         av_dict_set(&options, "protocol_whitelist", "file", 0);
         if (reading_.reads_past_stated_size) av_dict_set(&options, "ignore_length", "1", 0);
         AVFormatContext* raw = nullptr;
-        if (reading_.overlong_ogg_page_byte >= 0) {
-            hiding_reader_ = std::make_unique<HidingReader>(path_, reading_.overlong_ogg_page_byte);
-            if (hiding_reader_->context() != nullptr) {
-                raw = avformat_alloc_context();
-                if (raw == nullptr) throw std::bad_alloc();
-                raw->pb = hiding_reader_->context();
-                raw->flags |= AVFMT_FLAG_CUSTOM_IO;
-            }
+        if (reader != nullptr) {
+            raw = avformat_alloc_context();
+            if (raw == nullptr) throw std::bad_alloc();
+            raw->pb = reader;
+            raw->flags |= AVFMT_FLAG_CUSTOM_IO;
         }
         const int opened = avformat_open_input(&raw, path_.c_str(), nullptr, &options);
         av_dict_free(&options);
@@ -528,11 +671,12 @@ private:
             if (opened == AVERROR(EIO) || opened == AVERROR_EOF) throw_header_ends();
             throw unreadable_index_or_not_audio(ffmpeg_error_text(opened));
         }
-        format_.reset(raw);
-        if (const int found = avformat_find_stream_info(format_.get(), nullptr); found < 0) {
+        std::unique_ptr<AVFormatContext, FormatCloser> format(raw);
+        if (const int found = avformat_find_stream_info(format.get(), nullptr); found < 0) {
             if (found == AVERROR(EIO) || found == AVERROR_EOF) throw_header_ends();
             throw unreadable_index_or_not_audio(ffmpeg_error_text(found));
         }
+        return format;
     }
 
     // The streams that are sound tracks (a cover picture is no stream of sound), in the file's order.

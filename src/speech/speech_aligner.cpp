@@ -1038,7 +1038,13 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
     const FirstSound first = read_first_sound(*source);
     const std::size_t silence_skipped = silence_to_skip(first, source->sample_rate_hz());
     const double silence_skipped_s = static_cast<double>(silence_skipped) / kAnalysisRateHz;
-    if (first.held.empty()) source = open();
+    if (first.held.empty()) {
+        // The reading that is kept seeks past the silence this one read: it notes the samples
+        // that are not numbers this one found there.
+        std::unique_ptr<AudioSource> again = open();
+        again->take_non_finite_count(*source);
+        source = std::move(again);
+    }
     FeatureTrack track = read_features(*source, progress, options.lenient, silence_skipped, first.held);
     const LoudnessProfile loudness = conceal_dropouts(track);
     const std::string lost = describe_lost_audio(source->lost_audio());

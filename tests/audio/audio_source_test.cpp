@@ -206,6 +206,28 @@ TEST_SUITE("audio") {
         CHECK(reference.warnings.empty());
     }
 
+    TEST_CASE("samples that are not numbers inside a leading silence the reading seeks past are noted") {
+        // 70 s of silence holding 4 NaN from 2 s on, then the voice: the reading that is kept seeks
+        // past all but the last minute of the silence, which the first reading read.
+        const auto wav = detail::open_audio_file(speech_clip("one_sentence.wav"));
+        const int rate_hz = wav->sample_rate_hz();
+        const std::vector<float> voice = test::read_all(*wav);
+        std::vector<float> samples(static_cast<std::size_t>(70 * rate_hz), 0.0f);
+        const std::size_t first = static_cast<std::size_t>(2 * rate_hz);
+        for (std::size_t i = first; i < first + 4; ++i) samples[i] = std::nanf("");
+        samples.insert(samples.end(), voice.begin(), voice.end());
+        const Timeline timeline = SpeechAligner().align({samples.data(), samples.size(), 1, rate_hz},
+                                                        load_transcript(speech_clip("one_sentence.txt")));
+        const std::string said = "audio: 4 of its " + std::to_string(samples.size()) +
+                                 " samples are not numbers (NaN or infinite), the first at " +
+                                 detail::format_fixed(2.0, 3) + " s";
+        std::string warnings;
+        for (const std::string& warning : timeline.warnings) warnings += warning + "\n";
+        CAPTURE(warnings);
+        CHECK(std::count_if(timeline.warnings.begin(), timeline.warnings.end(),
+                            [&](const std::string& warning) { return warning.rfind(said, 0) == 0; }) == 1);
+    }
+
     TEST_CASE("a recording none of whose samples is a number is refused as silent, saying why") {
         const std::vector<float> samples(16000, std::nanf(""));
         const Timeline transcript = load_transcript(speech_clip("one_sentence.txt"));

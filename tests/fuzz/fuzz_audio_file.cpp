@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "audio/audio_source.hpp"
@@ -40,7 +41,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         auto again = talkface::detail::open_audio_file(path);
         const auto first = talkface::detail::read_first_sound(*again);
         const std::size_t skipped = talkface::detail::silence_to_skip(first, again->sample_rate_hz());
-        if (first.held.empty()) again = talkface::detail::open_audio_file(path);
+        if (first.held.empty()) {
+            auto reading = talkface::detail::open_audio_file(path);
+            reading->take_non_finite_count(*again);
+            again = std::move(reading);
+        }
         const talkface::detail::FeatureTrack track =
             talkface::detail::analyze_audio(*again, {}, false, skipped, first.held);
         for (const float value : track.values)
