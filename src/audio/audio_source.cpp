@@ -209,6 +209,69 @@ std::uint64_t read_le32(const unsigned char* bytes) {
            static_cast<std::uint64_t>(bytes[2]) << 16 | static_cast<std::uint64_t>(bytes[3]) << 24;
 }
 
+// Whether libsndfile (1.2.0) would refuse to open the Ogg file at `path` in a way that leaks: its
+// first stream is Vorbis (its first page's first packet starts "\x01vorbis"), and that packet is
+// not a beginning of stream, or states a Vorbis version other than 0, or the stream's two further
+// header packets are not all there (the file ends first, or a page is missing among them).
+// libsndfile's vorbis_read_header then returns its error before it sets the codec's close
+// function, and the 5.8 KB that vorbis_info_init allocated are never freed (libsndfile issue #922;
+// every failed open of such a file kept them). The same steps as its own, through libogg, so that
+// a file it would open is never turned away here; a file refused here is refused by libsndfile
+// too, and goes where libsndfile's refusal sends it (open_ogg_refused_by_sndfile).
+bool vorbis_headers_refused(const std::string& path) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (file == nullptr) return false;
+    ogg_sync_state sync;
+    ogg_sync_init(&sync);
+    ogg_stream_state stream;
+    bool has_stream = false;
+    const auto read_more = [&] {
+        constexpr long kChunkBytes = 4096;  // libsndfile's
+        char* buffer = ogg_sync_buffer(&sync, kChunkBytes);
+        const std::size_t got = buffer ? std::fread(buffer, 1, kChunkBytes, file) : 0;
+        ogg_sync_wrote(&sync, static_cast<long>(got));
+        return got > 0;
+    };
+    ogg_page page;
+    ogg_packet packet;
+    bool refused = false;
+    int found = 0;
+    while ((found = ogg_sync_pageout(&sync, &page)) != 1 && read_more()) {
+    }
+    if (found == 1) {
+        ogg_stream_init(&stream, ogg_page_serialno(&page));
+        has_stream = true;
+        constexpr std::string_view kVorbisId = "\x01vorbis";
+        const bool is_vorbis = static_cast<std::size_t>(page.body_len) >= kVorbisId.size() &&
+                               std::memcmp(page.body, kVorbisId.data(), kVorbisId.size()) == 0;
+        if (is_vorbis && ogg_stream_pagein(&stream, &page) == 0 &&
+            ogg_stream_packetout(&stream, &packet) == 1) {
+            constexpr std::size_t kVersionEnd = 7 + 4;
+            const bool has_version_0 = packet.bytes >= static_cast<long>(kVersionEnd) &&
+                                       read_le32(packet.packet + kVorbisId.size()) == 0;
+            refused = packet.b_o_s == 0 || !has_version_0;
+            for (int packets = 0; !refused && packets < 2;) {
+                const int paged = ogg_sync_pageout(&sync, &page);
+                if (paged == 0) {
+                    refused = !read_more();
+                    continue;
+                }
+                if (paged < 0) continue;
+                ogg_stream_pagein(&stream, &page);
+                for (int out = 0;
+                     !refused && packets < 2 && (out = ogg_stream_packetout(&stream, &packet)) != 0;) {
+                    refused = out < 0;
+                    ++packets;
+                }
+            }
+        }
+    }
+    if (has_stream) ogg_stream_clear(&stream);
+    ogg_sync_clear(&sync);
+    std::fclose(file);
+    return refused;
+}
+
 // A RIFF WAV's data chunk that goes on past the size its header states: the bytes stated and the
 // bytes the file holds after the data's start, and the bytes a second of sound takes (the format
 // chunk's average rate; 0 if it states none).
@@ -621,6 +684,15 @@ std::array<char, 12> read_container_header(const std::string& path) {
     return header;
 }
 
+// An Ogg file libsndfile refused to open (or would refuse: vorbis_headers_refused), FFmpeg's turn.
+// An Ogg file whose header pages are damaged is refused by both, and said to be damaged there.
+std::unique_ptr<AudioSource> open_ogg_refused_by_sndfile(const std::string& path) {
+    FfmpegReading reading;
+    if (const auto damage = find_damaged_ogg_page(path))
+        reading.damaged_ogg_page_byte = damage->first_damaged_byte;
+    return open_ffmpeg_file(path, reading);
+}
+
 // A file in a container libsndfile reads (`header` its first bytes) that libsndfile refused to open:
 // FFmpeg's turn, but for a system error (FileError) and a WAV header that is broken (check_wav_header's
 // ParseError).
@@ -632,12 +704,9 @@ std::unique_ptr<AudioSource> open_refused_by_sndfile(const std::string& path,
     if (reason.find("System error") != std::string::npos) throw FileError(path, reason);
     if (std::string_view(header.data(), 4) == "RIFF") check_wav_header(path);
     // A container libsndfile knows holding a codec it does not (Opus in an old libsndfile): FFmpeg's
-    // turn. An Ogg file whose header pages are damaged is refused by both, and said to be damaged there.
-    FfmpegReading reading;
-    if (std::string_view(header.data(), 4) == "OggS")
-        if (const auto damage = find_damaged_ogg_page(path))
-            reading.damaged_ogg_page_byte = damage->first_damaged_byte;
-    return open_ffmpeg_file(path, reading);
+    // turn.
+    if (std::string_view(header.data(), 4) == "OggS") return open_ogg_refused_by_sndfile(path);
+    return open_ffmpeg_file(path);
 }
 
 // A file libsndfile opened (`file`, described by `info`), read by libsndfile, or closed and given to
@@ -747,6 +816,8 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
             return source;
         }
     }
+    if (std::string_view(header.data(), 4) == "OggS" && vorbis_headers_refused(path))
+        return open_ogg_refused_by_sndfile(path);
     SF_INFO info{};
     SNDFILE* file = sf_open(path.c_str(), SFM_READ, &info);
     if (file == nullptr) return open_refused_by_sndfile(path, header);
