@@ -25,9 +25,7 @@ std::optional<FrameSpan> lifted_lead_in(const FeatureTrack& track, float low_flo
         std::min({low_floor_db, mid_floor_db, high_floor_db}) <= kDigitalSilenceDb)
         return std::nullopt;
     const auto above = [&](std::size_t t) {
-        return std::array<float, 3>{track.at(t, kLowBandDb) - low_floor_db,
-                                    track.at(t, kMidBandDb) - mid_floor_db,
-                                    track.at(t, kHighBandDb) - high_floor_db};
+        return bands_above_floors(track, t, low_floor_db, mid_floor_db, high_floor_db);
     };
     const auto loudest = [&](std::size_t t) {
         const std::array<float, 3> bands = above(t);
@@ -36,14 +34,9 @@ std::optional<FrameSpan> lifted_lead_in(const FeatureTrack& track, float low_flo
     std::vector<float> levels;
     for (std::size_t t = 0; t < min_run_frames; ++t) levels.push_back(loudest(t));
     const float noise_db = percentile_of(levels, 0.5);
-    const auto keeps_shape = [&](std::size_t t) {
-        const std::array<float, 3> bands = above(t);
-        const auto [lowest, highest] = std::minmax_element(bands.begin(), bands.end());
-        return *highest - *lowest < kLiftShapeDb;
-    };
     std::size_t end = 0, uneven = 0;
     for (; end < frames && loudest(end) < noise_db + kLiftBelowSpeechDb; ++end) {
-        uneven = keeps_shape(end) ? 0 : uneven + 1;
+        uneven = keeps_floor_shape(above(end)) ? 0 : uneven + 1;
         if (uneven == kShapeBreakFrames) {
             end -= kShapeBreakFrames - 1;
             break;
@@ -55,12 +48,11 @@ std::optional<FrameSpan> lifted_lead_in(const FeatureTrack& track, float low_flo
     for (std::size_t t = 0; t < end; ++t) {
         const std::array<float, 3> frame = above(t);
         for (std::size_t b = 0; b < 3; ++b) bands[b].push_back(frame[b]);
-        if (keeps_shape(t)) ++flat;
+        if (keeps_floor_shape(frame)) ++flat;
     }
     std::array<float, 3> medians{};
     for (std::size_t b = 0; b < 3; ++b) medians[b] = percentile_of(bands[b], 0.5);
-    const auto [lowest, highest] = std::minmax_element(medians.begin(), medians.end());
-    if (*highest - *lowest >= kLiftShapeDb || 2 * flat < end) return std::nullopt;
+    if (!keeps_floor_shape(medians) || 2 * flat < end) return std::nullopt;
     return FrameSpan{0, end};
 }
 

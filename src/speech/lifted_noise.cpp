@@ -30,6 +30,17 @@ std::vector<float> moving_floor(const FeatureTrack& track, int column) {
 
 }  // namespace
 
+std::array<float, 3> bands_above_floors(const FeatureTrack& track, std::size_t t, float low_floor_db,
+                                        float mid_floor_db, float high_floor_db) {
+    return {track.at(t, kLowBandDb) - low_floor_db, track.at(t, kMidBandDb) - mid_floor_db,
+            track.at(t, kHighBandDb) - high_floor_db};
+}
+
+bool keeps_floor_shape(const std::array<float, 3>& above_db) {
+    const auto [lowest, highest] = std::minmax_element(above_db.begin(), above_db.end());
+    return *highest - *lowest < kLiftShapeDb;
+}
+
 std::vector<float> noise_lift_db(const FeatureTrack& track, float low_floor_db, float mid_floor_db,
                                  float high_floor_db, float speech_level_db, std::size_t min_run_frames,
                                  const FrameSpan& voice) {
@@ -40,12 +51,10 @@ std::vector<float> noise_lift_db(const FeatureTrack& track, float low_floor_db, 
     const std::vector<float> mid = moving_floor(track, kMidBandDb);
     const std::vector<float> high = moving_floor(track, kHighBandDb);
     for (std::size_t t = voice.first_frame; t < std::min(frames, voice.end_frame); ++t) {
-        const float low_above = track.at(t, kLowBandDb) - low_floor_db;
-        const float mid_above = track.at(t, kMidBandDb) - mid_floor_db;
-        const float high_above = track.at(t, kHighBandDb) - high_floor_db;
-        const float loudest = std::max({low_above, mid_above, high_above});
-        if (loudest > speech_level_db - kLiftBelowSpeechDb ||
-            loudest - std::min({low_above, mid_above, high_above}) >= kLiftShapeDb)
+        const std::array<float, 3> above =
+            bands_above_floors(track, t, low_floor_db, mid_floor_db, high_floor_db);
+        if (*std::max_element(above.begin(), above.end()) > speech_level_db - kLiftBelowSpeechDb ||
+            !keeps_floor_shape(above))
             continue;
         lift[t] =
             std::max(0.0f, std::min({low[t] - low_floor_db, mid[t] - mid_floor_db, high[t] - high_floor_db}));

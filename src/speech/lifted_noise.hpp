@@ -11,6 +11,7 @@
 #ifndef TALKFACE_SPEECH_LIFTED_NOISE_HPP
 #define TALKFACE_SPEECH_LIFTED_NOISE_HPP
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -35,6 +36,15 @@ constexpr float kLiftShapeDb = 4.0f;
 // floors, 22 dB under its loud speech; p-fast-combo's street noise comes within 9 dB of it
 // (tuning-003: at 12 dB its pause between sentences 2 and 3 was not lifted, and it was refused).
 constexpr float kLiftBelowSpeechDb = 6.0f;
+
+// Frame `t`'s kLowBandDb, kMidBandDb and kHighBandDb above the whole recording's floors
+// (`low_floor_db`, `mid_floor_db`, `high_floor_db`), in that order.
+std::array<float, 3> bands_above_floors(const FeatureTrack& track, std::size_t t, float low_floor_db,
+                                        float mid_floor_db, float high_floor_db);
+
+// Whether bands above their floors (a frame's, bands_above_floors, or their medians over a stretch)
+// stand within kLiftShapeDb of each other: the floor's shape, which a gain's lift keeps.
+bool keeps_floor_shape(const std::array<float, 3>& above_db);
 
 // Per frame of `track`, how far a gain has lifted the noise above the whole recording's floors
 // (`low_floor_db`, `mid_floor_db`, `high_floor_db` of kLowBandDb, kMidBandDb, kHighBandDb): the
