@@ -587,6 +587,76 @@ std::vector<SentenceChain> chains_to_align(const FeatureTrack& track, const Loud
     return chains;
 }
 
+// In a room whose ringing was measured (`room_ringing`), the recording without it (late_reverb.hpp)
+// and models re-estimated on it, reported as the passes after the first re-estimation's of
+// `passes`: the syllables given out are placed there, where a quiet onset after a vowel is no
+// longer the vowel ringing on. Every check judges the recorded features: on the dry ones a wrong
+// text fits its speech about as well as a right one (bench/README.md Sessions 24 and 25).
+std::optional<DryRoom> dry_room(const FeatureTrack& track, const LoudnessProfile& loudness,
+                                const Timeline& transcript, const std::vector<SentenceChain>& chains,
+                                const std::optional<RoomRinging>& room_ringing, ProgressReporter& progress,
+                                int passes) {
+    if (!room_ringing) return std::nullopt;
+    DryRoom dry;
+    dry.track = without_late_ringing(track, *room_ringing);
+    dry.learned = reestimate(dry.track, loudness, transcript, chains, progress, kReestimationRounds, passes);
+    return dry;
+}
+
+// The final pass's scratch, reused chain by chain (a chain's observations and scores, the path
+// search's tables and its start's marginals, as given out and in a room), and what it gathers of
+// each syllable for its confidence (set_confidences): as given out and, in a room, as placed with
+// the closures ringing.
+struct FinalPass {
+    FinalPass(std::size_t syllables, bool in_room)
+        : evidence(syllables), room_evidence(in_room ? syllables : 0) {}
+    std::vector<float> observations;
+    EmissionScores scores;
+    ViterbiWorkspace workspace;
+    EntryMaxMarginals marginals, room_marginals;
+    std::vector<SyllableEvidence> evidence, room_evidence;
+};
+
+// Chain `w`'s final pass on the re-estimated models `learned` (measure_chain, checked when
+// `is_checked`): its syllables, sentences' spans and metrics into `aligned`, their evidence into
+// `pass`, and its path into `checked_path` when the tones' witness reads it. In a room
+// (aligned.room_result) the chain is also placed with its closures ringing (place_in_room), on
+// `dry`'s features and models where the room's ringing was taken off, else on the recorded ones.
+void align_final_chain(const SentenceChain& chain, std::size_t w, const FeatureTrack& track,
+                       const LoudnessProfile& loudness, const Timeline& transcript,
+                       const Reestimation& learned, DryRoom* dry, std::size_t spoken_sentences,
+                       bool is_checked, FinalPass& pass, CutAlignment& aligned,
+                       std::vector<StateSegment>* checked_path) {
+    observe(track, loudness, chain.searched, pass.observations);
+    learned.model.score(pass.observations.data(), chain.searched.length(), pass.scores);
+    // In a room the syllables given out are those placed with the closures ringing, with their
+    // confidences (align_cut): the confidences of this placement, which the checks read, are
+    // read by nothing, and the searches that weigh them are left out (the start's marginals,
+    // those with the sounds lighter: 6% of a room's instructions, bench/README.md Session 28).
+    const bool is_given_out = !aligned.room_result;
+    const auto path = align_chain(chain, pass.scores, pass.workspace, pass.scores.frame_count, transcript,
+                                  is_given_out ? &pass.marginals : nullptr);
+    aligned.has_long_unmarked_pause = aligned.has_long_unmarked_pause || has_long_unmarked_pause(chain, path);
+    if (checked_path) *checked_path = path;
+    // The last round's path, and the searches again with the sounds weighing less, with and
+    // without the landmarks' bonus: where they start a syllable elsewhere, the sounds did not
+    // hold it there.
+    std::vector<std::vector<SyllableFrames>> other_frames;
+    if (is_given_out)
+        other_frames = {light_search(chain, pass.scores, pass.workspace, kLightSoundsWeight, true),
+                        light_search(chain, pass.scores, pass.workspace, kLightSoundsWeight, false),
+                        frames_on_path(chain, learned.last_paths[w])};
+    // Before measure_chain, which leaves held-out models' scores in `scores`.
+    if (aligned.room_result)
+        place_in_room(chain, w, dry, (dry ? dry->learned : learned).last_paths[w], dry ? dry->track : track,
+                      loudness, transcript, pass.scores, pass.workspace, pass.room_marginals,
+                      *aligned.room_result, pass.room_evidence);
+    measure_chain(chain, w, path, other_frames, pass.observations, learned, spoken_sentences, track, loudness,
+                  transcript, pass.scores, pass.workspace, aligned.result, pass.evidence, aligned.spans,
+                  aligned.metrics, is_checked);
+    if (is_given_out) set_start_evidence(chain, path, pass.marginals, pass.evidence);
+}
+
 // The syllables of every sentence of `cut`, aligned sentence by sentence (neighbours that run on,
 // together), and, when `is_checked`, check_path on each path; when `is_lenient`, the final pass on
 // lenient chains (lenient_chain.hpp). With `is_kept_to_marks`, keep_pauses_to_marks on every chain;
@@ -600,10 +670,10 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
     CutAlignment aligned;
     // Where sentences run together the cutter's spans are guesses: the syllables place them, and
     // the sentences' lengths are checked on where the syllables put them.
-    std::vector<FrameSpan>& spans = aligned.spans;
-    spans = cut.spans;
-    std::vector<SentenceChain> chains = chains_to_align(track, loudness, transcript, cut, spans, is_lenient,
-                                                        is_kept_to_marks, is_nasal_release_allowed);
+    aligned.spans = cut.spans;
+    std::vector<SentenceChain> chains =
+        chains_to_align(track, loudness, transcript, cut, aligned.spans, is_lenient, is_kept_to_marks,
+                        is_nasal_release_allowed);
     const std::vector<bool> is_spoken = spoken_sentences_of(transcript);
     const auto spoken_sentences = static_cast<std::size_t>(std::count(is_spoken.begin(), is_spoken.end(), true));
 
@@ -614,31 +684,13 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
         in_room ? measure_room_ringing(track, chains) : std::nullopt;
     const int passes = alignment_passes(room_ringing.has_value());
     const Reestimation learned = reestimate(track, loudness, transcript, chains, progress, 0, passes);
-    Timeline& result = aligned.result;
-    result = transcript;
-    result.duration_s = track.duration_s;
-    if (in_room) aligned.room_result = result;
-    // In a room the syllables given out are placed on the features without the room's ringing
-    // (late_reverb.hpp), on models re-estimated on them: a quiet onset after a vowel is no longer
-    // the vowel ringing on. Every check judges the recorded features: on the dry ones a wrong text
-    // fits its speech about as well as a right one (bench/README.md Sessions 24 and 25).
-    std::optional<DryRoom> dry;
-    if (room_ringing) {
-        dry.emplace();
-        dry->track = without_late_ringing(track, *room_ringing);
-        dry->learned =
-            reestimate(dry->track, loudness, transcript, chains, progress, kReestimationRounds, passes);
-    }
-    const FeatureTrack& placed_track = dry ? dry->track : track;
-    const Reestimation& placed_learned = dry ? dry->learned : learned;
-    std::vector<SyllableEvidence> room_evidence(aligned.room_result ? transcript.syllables.size() : 0);
-    std::vector<SentenceMetrics>& metrics = aligned.metrics;
-    metrics.assign(spans.size(), SentenceMetrics());
-    std::vector<SyllableEvidence> evidence(transcript.syllables.size());
-    std::vector<float> observations;
-    EmissionScores scores;
-    ViterbiWorkspace workspace;
-    EntryMaxMarginals marginals, room_marginals;
+    aligned.result = transcript;
+    aligned.result.duration_s = track.duration_s;
+    if (in_room) aligned.room_result = aligned.result;
+    std::optional<DryRoom> dry =
+        dry_room(track, loudness, transcript, chains, room_ringing, progress, passes);
+    aligned.metrics.assign(aligned.spans.size(), SentenceMetrics());
+    FinalPass pass(transcript.syllables.size(), aligned.room_result.has_value());
     // The checks' paths of a room's chains, for the tones' witness.
     const bool is_tone_witnessed = aligned.room_result && is_checked &&
                                    spoken_sentences >= kMinToneWitnessSentences && !track.pitch.empty();
@@ -646,46 +698,20 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
     std::vector<LenientEvidence> lenient_evidence;
     if (is_lenient)
         lenient_evidence =
-            measure_lenient_evidence(track, loudness, chains, learned, observations, workspace);
+            measure_lenient_evidence(track, loudness, chains, learned, pass.observations, pass.workspace);
     for (std::size_t w = 0; w < chains.size(); ++w) {
-        if (is_lenient) {
-            place_lenient_chain(chains[w], w, lenient_evidence[w], learned.last_paths[w], workspace,
-                                transcript, track, loudness, result, evidence);
-            report_pass(progress, passes - 1, passes, w, chains.size());
-            continue;
-        }
-        observe(track, loudness, chains[w].searched, observations);
-        learned.model.score(observations.data(), chains[w].searched.length(), scores);
-        // In a room the syllables given out are those placed with the closures ringing, with their
-        // confidences (align_cut): the confidences of this placement, which the checks read, are
-        // read by nothing, and the searches that weigh them are left out (the start's marginals,
-        // those with the sounds lighter: 6% of a room's instructions, bench/README.md Session 28).
-        const bool is_given_out = !aligned.room_result;
-        const auto path = align_chain(chains[w], scores, workspace, scores.frame_count, transcript,
-                                      is_given_out ? &marginals : nullptr);
-        aligned.has_long_unmarked_pause = aligned.has_long_unmarked_pause || has_long_unmarked_pause(chains[w], path);
-        if (is_tone_witnessed) checked_paths[w] = path;
-        // The last round's path, and the searches again with the sounds weighing less, with and
-        // without the landmarks' bonus: where they start a syllable elsewhere, the sounds did not
-        // hold it there.
-        std::vector<std::vector<SyllableFrames>> other_frames;
-        if (is_given_out)
-            other_frames = {light_search(chains[w], scores, workspace, kLightSoundsWeight, true),
-                            light_search(chains[w], scores, workspace, kLightSoundsWeight, false),
-                            frames_on_path(chains[w], learned.last_paths[w])};
-        // Before measure_chain, which leaves held-out models' scores in `scores`.
-        if (aligned.room_result)
-            place_in_room(chains[w], w, dry ? &*dry : nullptr, placed_learned.last_paths[w], placed_track,
-                          loudness, transcript, scores, workspace, room_marginals, *aligned.room_result,
-                          room_evidence);
-        measure_chain(chains[w], w, path, other_frames, observations, learned, spoken_sentences, track, loudness, transcript,
-                      scores, workspace, result, evidence, spans, metrics, is_checked);
-        if (is_given_out) set_start_evidence(chains[w], path, marginals, evidence);
+        if (is_lenient)
+            place_lenient_chain(chains[w], w, lenient_evidence[w], learned.last_paths[w], pass.workspace,
+                                transcript, track, loudness, aligned.result, pass.evidence);
+        else
+            align_final_chain(chains[w], w, track, loudness, transcript, learned, dry ? &*dry : nullptr,
+                              spoken_sentences, is_checked, pass, aligned,
+                              is_tone_witnessed ? &checked_paths[w] : nullptr);
         report_pass(progress, passes - 1, passes, w, chains.size());
     }
-    if (is_tone_witnessed) set_tone_gaps(chains, checked_paths, track, metrics);
-    set_confidences(evidence, is_lenient, result);
-    if (aligned.room_result) set_confidences(room_evidence, false, *aligned.room_result);
+    if (is_tone_witnessed) set_tone_gaps(chains, checked_paths, track, aligned.metrics);
+    set_confidences(pass.evidence, is_lenient, aligned.result);
+    if (aligned.room_result) set_confidences(pass.room_evidence, false, *aligned.room_result);
     return aligned;
 }
 
