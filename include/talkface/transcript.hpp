@@ -64,7 +64,8 @@ struct TranscriptOptions {
 /// - Characters without a reading (symbols, Han characters the table lacks) are not syllables:
 ///   each adds a Timeline::warnings entry `source:line:column: "★" (U+2605) has no Mandarin
 ///   reading; skipped`. Punctuation other than the marks above (quotes, brackets, dashes) stays
-///   in Sentence::text silently.
+///   in Sentence::text silently, and so do emoji and faces drawn in signs ((^_^), (╯°□°)╯): nobody
+///   says them.
 /// Columns count characters (code points), not bytes; lines and columns are 1-based.
 /// Sentence::text is the sentence as written, fixes removed; times are all 0.
 ///

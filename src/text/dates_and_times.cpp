@@ -197,8 +197,16 @@ bool names_a_day(const std::vector<CodePoint>& text, std::size_t start, const Wr
                          // A disaster named by its day (921大地震 九二一, 512地震; session 17).
                          "大地震", "地震", "事件"}))
         return true;
-    return ends_with_any(text_before(text, start, true), {"今天是", "明天是", "昨天是", "后天是", "後天是",
-                                                          "今天就是", "又到了", "迎来", "迎來"});
+    const std::string before = text_before(text, start, true);
+    if (ends_with_any(
+            before, {"今天是", "明天是", "昨天是", "后天是", "後天是", "今天就是", "又到了", "迎来", "迎來"}))
+        return true;
+    // A day's word right before the digits, where they close their clause, names the day too, as chat
+    // writes it without 是 (今天520，你送礼物了吗 五二零; session 31: 五百二十): with nothing after them
+    // they count nothing.
+    const auto next = value_at(text, number.end);
+    return ends_with_any(before, {"今天", "明天", "昨天", "后天", "後天"}) &&
+           (next == 0 || is_one_of(next, U",.!?;\u3002\u3001\n"));
 }
 
 bool counts_years(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {

@@ -15,6 +15,7 @@
 #include "text/code_points.hpp"
 #include "text/dates_and_times.hpp"
 #include "text/digit_codes.hpp"
+#include "text/drawn_faces.hpp"
 #include "text/latin_words.hpp"
 #include "text/number_words.hpp"
 #include "text/reading_tables.hpp"
@@ -413,6 +414,7 @@ public:
         const auto marks =
             options_.keep_directions ? std::vector<detail::ScriptMark>() : detail::find_script_marks(text);
         warn_script_marks(text, marks);
+        drawing_ends_ = detail::find_drawing_ends(text);
         auto mark = marks.begin();
         int last_line = 0;  // of the last code point that is not a space
         for (std::size_t i = 0; i < text.size();) {
@@ -544,6 +546,13 @@ private:
             starts_paragraph_ = !timeline_.sentences.empty();
         }
         if (c.value == '{') return read_fix(text, i);
+        // An emoji or a face drawn in signs stays in its sentence's text, unsaid and unwarned, as
+        // punctuation does; one after an end mark closes that sentence as a closing quote does.
+        if (const auto drawing_end = drawing_ends_[i]; drawing_end != i) {
+            flush_run();
+            append_text(written_text(text, i, drawing_end));
+            return drawing_end;
+        }
         if (tables_.has_readings(c.text)) {
             if (sentence_ended_) close_sentence();
             append_text(c.text);
@@ -768,7 +777,8 @@ private:
         if (is_initials && word.find('y') == std::string::npos)
             return said_syllables(detail::letter_syllables(word));
         if (auto found = detail::english_word_syllables(word)) return said_syllables(*found);
-        if (is_initials) return said_syllables(detail::letter_syllables(word));
+        if (is_initials || is_initials_with_vowel_syllable(word))
+            return said_syllables(detail::letter_syllables(word));
         // Three small letters or fewer that the dictionary lacks and that spell no pinyin (orz, a chat's
         // kneeling figure; abc, ufo) are their letters, as three capitals are: too short to be said as a word
         // (session 21: generic speech). Pinyin read as Latin (ni with read_pinyin off) stays generic speech.
@@ -778,6 +788,29 @@ private:
             !split_pinyin(decode_utf8(word, "<word>")))
             return said_syllables(detail::letter_syllables(word));
         return read_word_parts(word, at);
+    }
+
+    // A chat's initials where one syllable of the phrase has no initial and is written by its vowel (awsl
+    // 啊我死了): four to six small letters, the one vowel first or last and the consonants all
+    // different, said as their letters as yyds is (session 31: generic speech of one syllable with a
+    // warning). A word of a consonant repeated (emmm, ahhh) draws a sound out and is left as it was; one
+    // that spells pinyin (ang, ao) is pinyin.
+    bool is_initials_with_vowel_syllable(const std::string& word) const {
+        constexpr std::size_t kShortest = 4;
+        constexpr std::size_t kLongest = 6;
+        if (word.size() < kShortest || word.size() > kLongest ||
+            !std::all_of(word.begin(), word.end(), [](char l) { return l >= 'a' && l <= 'z'; }))
+            return false;
+        const auto vowels = std::count_if(word.begin(), word.end(), [](char l) {
+            return std::string_view("aeiou").find(l) != std::string_view::npos;
+        });
+        const auto vowel = word.find_first_of("aeiou");
+        if (vowels != 1 || (vowel != 0 && vowel + 1 != word.size())) return false;
+        std::string consonants = word;
+        consonants.erase(vowel, 1);
+        std::sort(consonants.begin(), consonants.end());
+        if (std::adjacent_find(consonants.begin(), consonants.end()) != consonants.end()) return false;
+        return !split_pinyin(decode_utf8(word, "<word>"));
     }
 
     // No.1 (No. 1, NO.1) is said the English way, "number one", as Mandarin speakers say it; the
@@ -1214,6 +1247,7 @@ private:
     const detail::ReadingTables& tables_;
     Timeline timeline_;
     std::vector<HanCharacter> run_;  // Chinese characters not yet read, in order
+    std::vector<std::size_t> drawing_ends_;     // where an emoji or a face drawn in signs starting there ends
     std::optional<std::size_t> last_form_end_;  // where the last written form ends in the text
     std::size_t form_warnings_ = 0;  // warnings before the last written form's own
     std::string sentence_text_;

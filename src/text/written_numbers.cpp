@@ -42,6 +42,18 @@ bool follows_game_attribute(const std::vector<CodePoint>& text, std::size_t star
     return false;
 }
 
+// A gauge a game or a visual novel fills, a word in 度 (好感度+10 好感度加十, 亲密度+5, 熟练度-1: session 31,
+// 正), with a whole count after the sign: its points, as 攻击力's are. Not a measure in degrees (温度 角度
+// 纬度 经度 坡度), whose sign is a value's, nor a share (满意度+5%, 浓度+0.5), which a report changes.
+bool follows_gauge(const std::vector<CodePoint>& text, std::size_t start) {
+    if (start < 2 || text[start - 1].value != U'度' || is_one_of(text[start - 2].value, U"温溫角纬緯经經坡"))
+        return false;
+    auto end = start + 1;
+    while (is_digit_at(text, end)) ++end;
+    const auto after = value_at(text, end);
+    return !is_one_of(after, U"%.‰°℃度") && !is_ascii_letter(after);
+}
+
 // A word for a temperature earlier in the sentence (气温, 低温, 温度, 氣溫): a 度 after a number is one.
 bool speaks_of_temperature(const std::vector<CodePoint>& text, std::size_t start) {
     const std::string before = text_before(text, start, false);
@@ -670,9 +682,12 @@ std::optional<LeadingSign> read_leading_sign(const std::vector<CodePoint>& text,
     // After a term (a digit, a letter, a square: x²+2x) a + or a - joins it to the next, a sign no more.
     const bool after_word = start > 0 && (is_digit_at(text, start - 1) || is_ascii_letter(value_at(text, start - 1)) ||
                                           is_one_of(text[start - 1].value, U"\u00B2\u00B3"));
-    // A subtitle's dash before a speaker's turn (-12号，周五。) is no sign either (session 25: 负十二).
+    // A subtitle's dash before a speaker's turn (-12号，周五。) is no sign either (session 25: 负十二), nor
+    // is the second half of the Chinese dash, two em dashes (——3年后, a script's time skip; session 31: 负).
+    const bool ends_chinese_dash = first == 0x2014 && start > 0 && text[start - 1].value == 0x2014;
     if (currency == nullptr && is_dash(first) && is_digit_at(text, i + 1) &&
-        (follows_designation(text, start) || follows_element(text, start) || opens_turn(text, start))) {
+        (follows_designation(text, start) || follows_element(text, start) || opens_turn(text, start) ||
+         ends_chinese_dash)) {
         ++i;
     } else if (currency == nullptr && is_one_of(first, U"\u00B1\u2191\u2193") && is_digit_at(text, i + 1)) {
         // ± is 正负, as a tolerance is read (误差±0.5mm); an arrow before a change is the rise or the fall
@@ -686,7 +701,8 @@ std::optional<LeadingSign> read_leading_sign(const std::vector<CodePoint>& text,
         // 移速-15% 减百分之十五; session 30: 负, and 跌 before a percentage, a market's fall). A - after a
         // word in 值 stays a value's sign (净值-2%, 差值-3).
         const bool takes_away = is_dash(first) && start > 0 && text[start - 1].value != U'值';
-        if (follows_game_attribute(text, start) && (first == '+' || takes_away))
+        if ((follows_game_attribute(text, start) || follows_gauge(text, start)) &&
+            (first == '+' || takes_away))
             sign_words = first == '+' ? "加" : "减";
         ++i;
     }

@@ -66,6 +66,32 @@ static int test_transcript_is_read_into_sentences_and_syllables(void) {
     return failures;
 }
 
+/* Session 31: an emoji and a face drawn in signs are unsaid and unwarned, as punctuation is; a symbol alone
+   is still warned of. On main d388cc3 the line below gave five warnings (the rocket, the face's signs). */
+static int test_emoji_and_faces_are_unsaid_without_a_warning(void) {
+    int failures = 0;
+    /* 谢谢🚀晚安(｡･ω･｡)ﾉ */
+    const char* chat =
+        "\xe8\xb0\xa2\xe8\xb0\xa2\xf0\x9f\x9a\x80\xe6\x99\x9a\xe5\xae\x89("
+        "\xef\xbd\xa1\xef\xbd\xa5\xcf\x89\xef\xbd\xa5\xef\xbd\xa1)\xef\xbe\x89";
+    /* 价格＆ */
+    const char* symbol = "\xe4\xbb\xb7\xe6\xa0\xbc\xef\xbc\x86";
+    tf_timeline* timeline = NULL;
+    size_t count = 99;
+    CHECK_OK(tf_read_transcript(chat, strlen(chat), "chat.txt", &timeline));
+    CHECK_OK(tf_timeline_syllable_count(timeline, &count));
+    CHECK(count == 4);
+    CHECK_OK(tf_timeline_warning_count(timeline, &count));
+    CHECK(count == 0);
+    tf_timeline_destroy(timeline);
+    timeline = NULL;
+    CHECK_OK(tf_read_transcript(symbol, strlen(symbol), "symbol.txt", &timeline));
+    CHECK_OK(tf_timeline_warning_count(timeline, &count));
+    CHECK(count == 1);
+    tf_timeline_destroy(timeline);
+    return failures;
+}
+
 static int test_full_width_letters_are_read_as_ascii_letters(void) {
     int failures = 0;
     /* 用ＡＩ。 -> 用 ei ai; the form shows the full-width letters as written */
@@ -843,6 +869,7 @@ int main(void) {
     failures += test_transcript_is_read_into_sentences_and_syllables();
     failures += test_written_forms_are_kept_beside_their_syllables();
     failures += test_an_address_is_one_written_form();
+    failures += test_emoji_and_faces_are_unsaid_without_a_warning();
     failures += test_full_width_letters_are_read_as_ascii_letters();
     failures += test_transcript_errors_name_where();
     failures += test_a_legacy_encoding_is_named_or_refused();

@@ -36,6 +36,16 @@ def test_json_has_exactly_the_contract_shape(tmp_path):
     assert document["warnings"][0].startswith(f'{path}:2:13: "★"')
 
 
+def test_emoji_and_faces_are_unsaid_without_a_warning(tmp_path):
+    # Session 31: on main d388cc3 each emoji and each sign of the face was a warning on stderr.
+    path = write(tmp_path, "谢谢🚀晚安(｡･ω･｡)ﾉ\n价格＆")
+    result = run("syllables", path, "--json")
+    assert result.returncode == 0, result.stderr
+    document = json.loads(result.stdout)
+    assert [s["text"] for s in document["syllables"]] == list("谢谢晚安价格")
+    assert len(document["warnings"]) == 1 and document["warnings"][0].startswith(f'{path}:2:3: "＆"')
+
+
 def test_json_writes_u_umlaut_as_v(tmp_path):
     document = json.loads(run("syllables", write(tmp_path, "綠色 lü4"), "--json").stdout)
     assert [s["pinyin"] for s in document["syllables"]] == ["lv4", "se4", "lv4"]

@@ -35,6 +35,15 @@ def test_read_transcript_gives_sentences_syllables_and_warnings():
     assert all(s.start_s == 0.0 and s.final_start_s is None for s in timeline.syllables)
 
 
+def test_emoji_and_faces_are_unsaid_without_a_warning():
+    # Session 31: on main d388cc3 each emoji and each sign of the face was warned of, and the ω said.
+    timeline = talkface.read_transcript("谢谢🚀晚安(｡･ω･｡)ﾉ", source_name="chat.txt")
+    assert "".join(s.text for s in timeline.syllables) == "谢谢晚安"
+    assert timeline.warnings == []
+    assert [s.text for s in timeline.sentences] == ["谢谢🚀晚安(｡･ω･｡)ﾉ"]
+    assert len(talkface.read_transcript("价格＆").warnings) == 1
+
+
 def test_a_blank_line_starts_a_paragraph():
     timeline = talkface.read_transcript("春曉\n\n春眠不覺曉。處處聞啼鳥。\n夜來風雨聲，花落知多少？")
     assert [s.text for s in timeline.sentences] == ["春曉", "春眠不覺曉。", "處處聞啼鳥。", "夜來風雨聲，花落知多少？"]
