@@ -49,6 +49,14 @@ bool is_face_sign(char32_t c) {
            c != '(' && c != ')';
 }
 
+// A sign that may touch a face outside its bracket (Σ before it, ﾉ♡ ╯︵ after it, the table ┻━┻): a face sign
+// that is not ASCII and none of the signs a written form reads (² ° ± × ½ of Latin-1, superscripts and
+// currencies, ℃, Roman numerals and fractions, arrows, maths, circled numbers), so x²(^_^) keeps its 平方.
+bool is_touching_sign(char32_t c) {
+    const bool is_read_sign = c < 0x100 || (c >= 0x2070 && c <= 0x22FF) || (c >= 0x2460 && c <= 0x24FF);
+    return is_face_sign(c) && !is_read_sign;
+}
+
 char32_t value_at(const std::vector<CodePoint>& text, std::size_t i) {
     return i < text.size() ? text[i].value : 0;
 }
@@ -93,12 +101,12 @@ std::vector<std::size_t> find_drawing_ends(const std::vector<CodePoint>& text) {
         }
         // The signs touching the face before it, back to the end of an earlier drawing (an emoji).
         auto begin = i;
-        while (begin > last_end && is_face_sign(text[begin - 1].value)) --begin;
+        while (begin > last_end && is_touching_sign(text[begin - 1].value)) --begin;
         auto end = bracket_end;
-        while (is_face_sign(value_at(text, end))) ++end;
-        if (value_at(text, end) == ' ' && is_face_sign(value_at(text, end + 1))) {
+        while (is_touching_sign(value_at(text, end))) ++end;
+        if (value_at(text, end) == ' ' && is_touching_sign(value_at(text, end + 1))) {
             auto thrown = end + 1;
-            while (is_face_sign(value_at(text, thrown))) ++thrown;
+            while (is_touching_sign(value_at(text, thrown))) ++thrown;
             const auto next = value_at(text, thrown);
             if (next == 0 || is_space(next) || is_han(next) || is_text_punctuation(next)) end = thrown;
         }

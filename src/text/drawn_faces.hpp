@@ -20,8 +20,8 @@ namespace talkface::detail {
 // - A face: a bracket, ( or （, closed on its line within 16 code points, holding at least two signs and no
 //   Chinese character, Latin letter or digit, and not only punctuation (the 。！ of (。。。) are marks);
 //   with the signs touching it on either side (Σ before it, ﾉ♡ and ╯︵ after it: no space, Chinese
-//   character, Latin letter, digit or punctuation between) and a run of such signs one space after it
-//   (the table ┻━┻ the face throws).
+//   character, Latin letter, digit or punctuation between; no ASCII sign, nor one a written form reads,
+//   ² ° ± ½ ℃ ①) and a run of such signs one space after it (the table ┻━┻ the face throws).
 std::vector<std::size_t> find_drawing_ends(const std::vector<CodePoint>& text);
 
 }  // namespace talkface::detail

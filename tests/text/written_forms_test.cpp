@@ -799,6 +799,7 @@ TEST_SUITE("written forms") {
             {"❶水", "一水"},
             {"评分：★★★★☆", "评分四星"},
             {"这件衣服88元（包邮）", "这件衣服八十八元包邮"},
+            {"x²(^_^)", "ai ke si平方"},
         });
         CHECK(read_transcript("★重要通知★").warnings.size() == 2);
         CHECK(read_transcript("价格(＆)").warnings.size() == 1);
