@@ -376,7 +376,9 @@ TEST_SUITE("SpeechAligner") {
 
     TEST_CASE("a transcript with nothing to align says what its reader skipped") {
         const SpeechAligner aligner;
-        const Timeline symbols = read_transcript("\xF0\x9F\x99\x82 \xE2\x99\xAA");  // a smiley, a note
+        // A katakana letter and a full-width ampersand: a speaker may say either, so each is warned of (an
+        // emoji is unsaid without a warning, as punctuation is, and would leave nothing to report).
+        const Timeline symbols = read_transcript("\xE3\x82\xA2 \xEF\xBC\x86");
         CHECK_THROWS_WITH_AS(aligner.align_file(clip_path("one_sentence.wav"), symbols),
                              doctest::Contains("no syllables to align (0 sentences, none with a Mandarin reading; <transcript>:1:1: "),
                              InvalidArgument);
