@@ -11,10 +11,19 @@ namespace talkface::detail {
 namespace {
 
 // The lead-in's noise breaks the floor's shape a frame or two at a time (its own ripple: p-fast-
-// combo's street noise); a voice's first sound breaks it for longer. Ended by the level alone, the
-// lead-in took in a line's quiet first syllables where the gain held them under the lifted noise
-// (p-fast-combo tuning: 明天 546 ms late).
+// combo's street noise), now and then a few (kLastingUnevenShare); a voice's first sound breaks it
+// for longer. Ended by the level alone, the lead-in took in a line's quiet first syllables where
+// the gain held them under the lifted noise (p-fast-combo tuning: 明天 546 ms late).
 constexpr std::size_t kShapeBreakFrames = 3;
+// A voice's uneven bands last: its first sound holds them out of the floor's shape through most of
+// a pause's length of frames from the break, where street noise (brown and pink, through an Opus
+// codec) breaks the shape for three to five frames at a time and comes back to it. Ended at the
+// first break, the lead-in ended 10 or more frames short of the line in 17 of short_kinds_bench's
+// 38 p-fast-combo tuning lines (9 of them inside its first pause's length, so none was found), and
+// the line's first syllables were spread over the noise left (救我 490 ms early; bench/README.md,
+// session 31). Shares from 0.5 to 1 read 54.9-56.8% within 50 ms there (tuning), but at 1 (every
+// frame) 明天早上見吧's quiet 明 was left in the lead-in.
+constexpr double kLastingUnevenShare = 0.75;
 
 }  // namespace
 
@@ -34,10 +43,18 @@ std::optional<FrameSpan> lifted_lead_in(const FeatureTrack& track, float low_flo
     std::vector<float> levels;
     for (std::size_t t = 0; t < min_run_frames; ++t) levels.push_back(loudest(t));
     const float noise_db = percentile_of(levels, 0.5);
+    // Whether the frames from `first` on break the shape as a voice does: through kLastingUnevenShare
+    // of the next `min_run_frames`.
+    const auto stays_uneven = [&](std::size_t first) {
+        const std::size_t stop = std::min(frames, first + min_run_frames);
+        std::size_t uneven = 0;
+        for (std::size_t t = first; t < stop; ++t) uneven += keeps_floor_shape(above(t)) ? 0 : 1;
+        return static_cast<double>(uneven) >= kLastingUnevenShare * static_cast<double>(stop - first);
+    };
     std::size_t end = 0, uneven = 0;
     for (; end < frames && loudest(end) < noise_db + kLiftBelowSpeechDb; ++end) {
         uneven = keeps_floor_shape(above(end)) ? 0 : uneven + 1;
-        if (uneven == kShapeBreakFrames) {
+        if (uneven == kShapeBreakFrames && stays_uneven(end + 1 - kShapeBreakFrames)) {
             end -= kShapeBreakFrames - 1;
             break;
         }

@@ -20,7 +20,8 @@ namespace talkface::detail {
 // The noise a gain lifted from the recording's start up to the first words, measured on the
 // stretch itself: its level is the median of its first `min_run_frames` frames' loudest band above
 // the floors (`low_floor_db`, `mid_floor_db`, `high_floor_db`), and it ends where a voice's uneven
-// bands start (three frames in a row out of the floor's shape by kLiftShapeDb) or a frame's
+// bands start (three frames in a row out of the floor's shape by kLiftShapeDb, that begin
+// `min_run_frames` frames mostly out of it: the noise's own ripple comes back to it) or a frame's
 // loudest band stands kLiftBelowSpeechDb over that level (a syllable's rise; the gain's climb toward
 // the line stays within it). It is the lifted noise only where it is at least `min_run_frames` long,
 // its bands keep the floor's shape (each band's median above its floor within kLiftShapeDb of the
