@@ -63,17 +63,21 @@ constexpr std::size_t kVowelHarmonicFrames = 6;
 constexpr std::size_t kFewestBreathFrames = 10;
 
 // Whether the sound of `stretch` is a breath beside the voice of `voice` (`loudness`'s activity and
-// threshold tell the loud frames): where it is kFewestBreathFrames long or more and the recording
-// keeps a fundamental at all, it has none and the voice has one; or, with `by_voicing_too`, it is
-// never voiced by the band ratio (loud_voiced_share) and the voice is, or, where the recording keeps
-// no fundamental and the stretch is kFewestBreathFrames long or more, it holds no harmonic and the
-// voice does (loud_harmonic_share) and it holds no vowel (kVowelHarmonicFrames). The bars are a
-// beat's beside a voice (is_beat_beside_voice). Through a telephone band a voice's fundamental is
-// gone, and a syllable whose first formant lies low (espeak-ng's 我 in bench/ telephone tuning-011)
-// reads as having none beside the rest of the line, which keeps a little; its harmonics stay.
-// The harmonics are read only with `by_voicing_too` (before the first words): after the last,
-// dropping the lifted noise after p-fast-combo's lines moved their first syllables, which the same
-// lift puts early, further off (bench/README.md, session 30).
+// threshold tell the loud frames): where it is kFewestBreathFrames long or more, it has no
+// fundamental and the voice has one where the recording keeps a fundamental at all, and elsewhere
+// it holds no harmonic and the voice does (loud_harmonic_share) and it holds no vowel
+// (kVowelHarmonicFrames); or, with `by_voicing_too` (before the first words: after the last,
+// music's quieter tail reads unvoiced too), it is never voiced by the band ratio
+// (loud_voiced_share) and the voice is. The bars are a beat's beside a voice
+// (is_beat_beside_voice). Through a telephone band a voice's fundamental is gone, and a syllable
+// whose first formant lies low (espeak-ng's 我 in bench/ telephone tuning-011) reads as having none
+// beside the rest of the line, which keeps a little; its harmonics stay. After the last words the
+// harmonics drop the out-breath through a telephone band and on espeak-ng's voice (bench/ short
+// kinds p-breath, breath-after), but not sound in the floors' band shape: a gain control's lifted
+// noise after the line, no speech either, is left to the lift (lifted_noise.hpp); dropped, it moved
+// p-fast-combo's lines whose first syllables lie in the lifted noise before them, and refused one
+// (held-out 等我上個廁所: the text fit 0.11 per frame over the swapped halves, 0.12 needed;
+// bench/README.md, session 31).
 bool is_breath_beside_voice(const FeatureTrack& track, const LoudnessProfile& loudness,
                             const FrameSpan& stretch, const FrameSpan& voice, bool by_voicing_too);
 
@@ -83,10 +87,16 @@ bool is_breath_beside_voice(const FeatureTrack& track, const LoudnessProfile& lo
 // ending 50-200 ms before the line, 8 or more.
 constexpr std::size_t kBreathGapFrames = 6;
 
-// The breath at the start of [first, end): its sound up to its first quiet frames, where they are
-// kBreathGapFrames or more and it is a breath beside the sound after them (is_breath_beside_voice,
-// by the fundamental only: a sibilant reads unvoiced by the band ratio); nullopt where there is
-// none. The words start at the first speech frame after it.
+// The quiet after the sound at the start of [first, end): its first quiet frames, where they are
+// kBreathGapFrames or more and sound follows them; nullopt where there are none. The sound before
+// them may be a breath or a click set apart from the words, closer to them than a pause.
+std::optional<FrameSpan> find_gap_after_first_sound(const LoudnessProfile& loudness, std::size_t first,
+                                                    std::size_t end);
+
+// The breath at the start of [first, end): its sound up to find_gap_after_first_sound's quiet, where
+// it is a breath beside the sound after it (is_breath_beside_voice, by the fundamental only: a
+// sibilant reads unvoiced by the band ratio); nullopt where there is none. The words start at the
+// first speech frame after it.
 std::optional<FrameSpan> find_close_breath(const FeatureTrack& track, const LoudnessProfile& loudness,
                                            std::size_t first, std::size_t end);
 

@@ -59,7 +59,8 @@ struct LoudnessProfile {
     std::vector<FrameSpan> tones;           // runs of a steady tone as loud as speech (steady_tone.hpp), in order
     // Sound before the first words or after the last, set apart by a pause, never voiced or with no
     // fundamental, beside a voice that is and has one (a breath, breath_edge.hpp): no syllable's, and
-    // no sentence is searched into it; so is the noise a gain lifted before the first words, in
+    // no sentence is searched into it; so is a click closer to the first words than a pause, with
+    // the quiet after it, and the noise a gain lifted before the first words, in
     // loudness_after_lifted_lead_in's profile. In order.
     std::vector<FrameSpan> unvoiced_edges;
     std::size_t speech_first_frame = 0;     // first and one past the last speech frame
