@@ -1,6 +1,5 @@
 #include "speech/breath_edge.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -70,21 +69,21 @@ bool holds_vowel(const FeatureTrack& track, const LoudnessProfile& loudness, con
     return false;
 }
 
-// Whether the bands of `stretch` stand above their floors in the floors' shape, each band's median
-// within kLiftShapeDb of the others': noise a gain control lifted (lifted_noise.hpp). A breath's
-// noise, over 400-3000 Hz, mostly fills the bands unevenly; through a codec's narrow band not
-// always (bench/ short kinds p-breath: 5 of the 20 held-out lines' out-breaths keep the shape).
-bool keeps_floor_shape(const FeatureTrack& track, const LoudnessProfile& loudness, const FrameSpan& stretch) {
+// Whether the bands of `stretch` stand above their floors in the floors' shape (keeps_floor_shape on
+// each band's median): noise a gain control lifted (lifted_noise.hpp). A breath's noise, over
+// 400-3000 Hz, mostly fills the bands unevenly; through a codec's narrow band not always (bench/
+// short kinds p-breath: 5 of the 20 held-out lines' out-breaths keep the shape).
+bool stretch_keeps_floor_shape(const FeatureTrack& track, const LoudnessProfile& loudness,
+                               const FrameSpan& stretch) {
     std::array<std::vector<float>, 3> bands;
     for (std::size_t t = stretch.first_frame; t < stretch.end_frame; ++t) {
-        bands[0].push_back(track.at(t, kLowBandDb) - loudness.low_floor_db);
-        bands[1].push_back(track.at(t, kMidBandDb) - loudness.mid_floor_db);
-        bands[2].push_back(track.at(t, kHighBandDb) - loudness.high_floor_db);
+        const std::array<float, 3> above = bands_above_floors(track, t, loudness.low_floor_db,
+                                                              loudness.mid_floor_db, loudness.high_floor_db);
+        for (std::size_t b = 0; b < 3; ++b) bands[b].push_back(above[b]);
     }
     std::array<float, 3> medians{};
     for (std::size_t b = 0; b < 3; ++b) medians[b] = percentile_of(bands[b], 0.5);
-    const auto [lowest, highest] = std::minmax_element(medians.begin(), medians.end());
-    return *highest - *lowest < kLiftShapeDb;
+    return keeps_floor_shape(medians);
 }
 
 }  // namespace
@@ -124,7 +123,7 @@ bool is_breath_beside_voice(const FeatureTrack& track, const LoudnessProfile& lo
                (is_long && is_beside_voice(loud_fundamental_share));
     return (by_voicing_too && is_beside_voice(loud_voiced_share)) ||
            (is_long && is_beside_voice(loud_harmonic_share) && !holds_vowel(track, loudness, stretch) &&
-            (by_voicing_too || !keeps_floor_shape(track, loudness, stretch)));
+            (by_voicing_too || !stretch_keeps_floor_shape(track, loudness, stretch)));
 }
 
 std::optional<FrameSpan> find_gap_after_first_sound(const LoudnessProfile& loudness, std::size_t first,
