@@ -229,6 +229,13 @@ bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNum
         !is_digit_at(text, number.end + 2) && !is_ascii_letter(value_at(text, number.end + 2)))
         return true;
     if (number.whole.size() != 4 || !starts_with_any(number.whole, {"19", "20"})) return false;
+    // The first end of a range of such years, the second no earlier (2024-2026届 二零二四到二零二六届, as
+    // 2020-2025年 is said; session 31: counted, 两千零二十四到两千零二十六届).
+    if (is_range_mark(value_at(text, number.end)) && is_digit_at(text, number.end + 1)) {
+        const auto second = parse_number(text, number.end + 1);
+        return second.whole.size() == 4 && second.whole >= number.whole &&
+               names_year_before_word(text, second);
+    }
     const std::string after = text_between(text, number.end, number.end + 3);
     // A year's quarter or half (2024Q4 二零二四 Q 四, 2025H1; session 17: 两千零二十四).
     if (after.size() >= 2 && is_one_of(value_at(text, number.end), U"QH") && is_digit_at(text, number.end + 1) &&

@@ -273,6 +273,48 @@ std::optional<SpokenForm> read_code_with_dash(const std::vector<CodePoint>& text
     return form;
 }
 
+namespace {
+
+// The prefixes a standard's number is written after: China's national standards (GB, and GB/T a
+// recommended one) and the international, European and national bodies news cites (ISO 9001:2015).
+// Any capitals with /T or /Z after them are a Chinese standard's too (YY/T, NY/T, JT/T: an industry's
+// recommended or guiding standard), so those need no list.
+bool is_standard_prefix(const std::string& letters) {
+    if (ends_with(letters, "/T") || ends_with(letters, "/Z")) return letters.size() > 2;
+    for (const std::string_view body : {"GB", "ISO", "IEC", "ISO/IEC", "EN", "BS", "DIN", "JIS", "ANSI"})
+        if (letters == body) return true;
+    return false;
+}
+
+}  // namespace
+
+std::optional<SpokenForm> read_standard_code(const std::vector<CodePoint>& text, std::size_t start,
+                                             const WrittenNumber& number) {
+    constexpr std::size_t kFewestCodeDigits = 3;
+    constexpr std::size_t kYearDigits = 4;
+    if (number.has_point || number.has_separators || number.whole.size() < kFewestCodeDigits)
+        return std::nullopt;
+    auto letters = start;
+    if (letters > 0 && text[letters - 1].value == ' ') --letters;
+    const auto prefix_end = letters;
+    while (letters > 0 && (is_ascii_capital(text[letters - 1].value) || text[letters - 1].value == '/'))
+        --letters;
+    if (letters == prefix_end ||
+        (letters > 0 && (is_ascii_letter(text[letters - 1].value) || is_digit_at(text, letters - 1))))
+        return std::nullopt;
+    if (!is_standard_prefix(text_between(text, letters, prefix_end))) return std::nullopt;
+    const auto mark = ascii_form(value_at(text, number.end));
+    if (!is_dash(mark) && mark != ':') return std::nullopt;
+    auto end = number.end + 1;
+    const auto year = digits_from(text, end);
+    if (year.size() != kYearDigits || !starts_with_any(year, {"19", "20"}) || value_at(text, end) == '.')
+        return std::nullopt;
+    SpokenForm form;
+    form.words = digit_words(number.whole) + (is_dash(mark) ? "杠" : "") + digit_words(year);
+    form.end = end;
+    return form;
+}
+
 std::optional<SpokenForm> read_series_and_model(const std::vector<CodePoint>& text, std::size_t start,
                                                 const WrittenNumber& first) {
     constexpr std::size_t kMostSeriesCharacters = 2;

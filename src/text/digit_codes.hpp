@@ -73,6 +73,13 @@ bool follows_book_number(const std::vector<CodePoint>& text, std::size_t start);
 // was 到). A year and a month (2024-03) are left as they were.
 std::optional<SpokenForm> read_code_with_dash(const std::vector<CodePoint>& text, const WrittenNumber& first);
 
+// A standard's number after its prefix (GB/T 19001-2016, GB 2762-2022, ISO 9001:2015, YY/T 0287-2017: GB,
+// ISO and the other bodies' names, or capitals with /T or /Z, a space between or none) and the year of its
+// edition after a dash or ISO's colon: the number and the year digit by digit, the dash 杠 as a code's and
+// the colon unsaid, as the code is read out (session 31: a range, 到, and a ratio, 比). nullopt where no
+// such prefix stands before `number` (at text[start]) or no year of four digits from 19 or 20 follows.
+std::optional<SpokenForm> read_standard_code(const std::vector<CodePoint>& text, std::size_t start,
+                                             const WrittenNumber& number);
 // A processor's series and model joined by a hyphen (i7-13700H, R7-7840HS, i5-12400F): one or two letters
 // and the series' one or two digits (`first`, at text[start]), the hyphen, and a model's number of three or
 // more digits with its capital suffix. The series counts, the model is said digit by digit and the hyphen

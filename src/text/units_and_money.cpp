@@ -36,11 +36,20 @@ constexpr Unit kUnits[] = {
     // screen's frame rate (60fps 六十帧每秒; it was spelled, F P S). Session 30: a battery's energy in
     // watt-hours (160Wh/kg 一百六十瓦时每公斤), beside kWh and MWh.
     {"mmHg", "毫米汞柱"}, {"fps", "帧每秒"}, {"Wh", "瓦时"},
+    // Session 31: a lab report's levels by their names, as a doctor reads them: the nanogram and the small
+    // amounts a vitamin or a hormone is measured in (18ng/mL 十八纳克每毫升, 86μmol/L 微摩尔每升; they were
+    // spelled, en ji ai mu ai le), the micromole's μ as the Greek mu or the micro sign, and an enzyme's
+    // activity in units (ALT 68U/L 六十八单位每升; is_lone_capital_unit_at).
+    {"ng", "纳克"}, {"pg", "皮克"}, {"nmol", "纳摩尔"}, {"μmol", "微摩尔"}, {"µmol", "微摩尔"},
+    {"pmol", "皮摩尔"}, {"U", "单位"},
 };
 
 // A unit of one capital (J N A) that a grade or a name also writes after a number: a unit only
-// before 的 or anything but a Chinese character (0.5A。, 20N的力; not 5A景区).
+// before 的 or anything but a Chinese character (0.5A。, 20N的力; not 5A景区); U, below, only before a slash.
 bool is_lone_capital_unit_at(const std::vector<CodePoint>& text, const Unit& unit, std::size_t end) {
+    // An enzyme's U only before the slash of a unit per another (68U/L, 5U/mL): a capital U after a number
+    // elsewhere is a chip's suffix or a rack's height (7840U, 2U服务器).
+    if (unit.written == "U") return value_at(text, end) == '/' && is_ascii_letter(value_at(text, end + 1));
     if (unit.written != "J" && unit.written != "N" && unit.written != "A") return true;
     const auto next = value_at(text, end);
     return next == U'的' || next < 0x3400 || next > 0x9FFF;

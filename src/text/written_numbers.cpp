@@ -420,6 +420,7 @@ struct NumberContext {
     bool names_type = false;    // before 型 or 式, a type's number (737型, 99式)
     bool is_generation = false;  // two digits right before 后 (90后, 00后), or a list of them (80、90后)
     bool is_house_number = false;  // a street's (路 街 道 段 巷 弄) before 号: 文化路一段100號 一百號
+    bool is_stake_metres = false;  // the metres after a motorway's stake and its +: K15+200路段 二百
     bool is_hundredths = false;  // right after the seconds of a time (9秒83) or a jump's metres (8米22)
     bool is_grade = false;       // a respirator's filter grade (N95)
     bool is_span_of_years = false;  // four digits before 年 that count years, not name one (距今约5000年)
@@ -568,8 +569,9 @@ std::optional<SaidNumber> say_as_name(const std::string& whole, const NumberCont
         said.is_dialled = true;
         return said;
     }
-    if (whole.size() >= 3 && ((names_by_digits(context.next) && !context.is_house_number) ||
-                              context.is_named || (context.names_place && !counts))) {
+    if (whole.size() >= 3 &&
+        ((names_by_digits(context.next) && !context.is_house_number && !context.is_stake_metres) ||
+         context.is_named || (context.names_place && !counts))) {
         said.words = digit_words(whole);
         return said;
     }
@@ -735,6 +737,13 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
     const bool is_stake = start > 0 && value_at(text, start - 1) == 'K' &&
                           (start == 1 || !is_ascii_letter(value_at(text, start - 2))) &&
                           value_at(text, number.end) == '+' && is_digit_at(text, number.end + 1);
+    // The metres past it count wherever they stand, before a road section's 路段 too (K15+200路段 二百;
+    // session 31: a bus route's digits, 二零零路).
+    auto kilometres = start > 0 && value_at(text, start - 1) == '+' ? start - 1 : 0;
+    while (kilometres > 0 && is_digit_at(text, kilometres - 1)) --kilometres;
+    context.is_stake_metres = kilometres > 0 && kilometres + 1 < start &&
+                              value_at(text, kilometres - 1) == 'K' &&
+                              (kilometres == 1 || !is_ascii_letter(value_at(text, kilometres - 2)));
     context.is_model = sign_words.empty() && currency == nullptr && !after_times && !is_stake &&
                        (follows_model_name(text, start) || follows_maker_name(text, start) ||
                         follows_glued_name(text, start) || names_code_by_letters(text, start, number) ||
@@ -1305,6 +1314,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     }
     if (auto e_notation = read_e_notation(text, start, number, sign_words)) return e_notation;
     const bool is_bare = sign_words.empty() && currency == nullptr;
+    if (is_bare)
+        if (auto standard = read_standard_code(text, start, number)) return standard;
     if (is_bare)
         if (auto pair = read_colon_pair(text, start, number, context)) return pair;
     if (currency == nullptr)

@@ -2015,4 +2015,52 @@ TEST_SUITE("written forms") {
         // The limits: a mention is still said (艾特).
         CHECK(said("转发@新华社") == "转发艾特新华社");
     }
+
+    TEST_CASE("a standard's number and the year of its edition are said digit by digit") {
+        // The first four rows failed on main 7f699e1 (session 31, dev27): a range, 二二一六五到二零二二,
+        // ISO's colon a ratio, 比, and YY/T's number dialled, 零二八七二零幺七.
+        check_cases({
+            {"执行标准：GB/T 22165-2022。", "执行标准 ji bi ti二二一六五杠二零二二"},
+            {"依据GB 2762-2022规定", "依据 ji bi二七六二杠二零二二规定"},
+            {"通过ISO 14001:2015认证", "通过 ai ai si ou一四零零一二零一五认证"},
+            {"YY/T 0287-2017标准", "wai wai ti零二八七杠二零一七标准"},
+            // The limits: no edition's year after the number, or no standard's prefix before it.
+            {"ISO 9001认证", "ai ai si ou九零零一认证"},
+            {"RTX 3060-4090", "a er ti ai ke si三零六零到四零九零"},
+        });
+    }
+
+    TEST_CASE("the metres past a motorway's stake count before a road section's word") {
+        // The first row failed on main 7f699e1 (session 31, dev27): a bus route's digits, 二零零.
+        check_cases({
+            {"K15+200路段施工", "kei十五加二百路段施工"},
+            // The limits: a route's number without a stake, and a stake's metres elsewhere.
+            {"302路公交", "三零二路公交"},
+            {"K35+200处", "kei三十五加二百处"},
+        });
+    }
+
+    TEST_CASE("a range of years before a word that names a year is said as years") {
+        // The first row failed on main 7f699e1 (session 31, dev27): counted, 两千零二十四到两千零二十六届.
+        check_cases({
+            {"面向2024-2026届毕业生", "面向二零二四到二零二六届毕业生"},
+            // The limits: a range of counts, a range that falls, and two school years that follow each other.
+            {"2000-3000人", "两千到三千人"},
+            {"2026-2024届", "两千零二十六到两千零二十四届"},
+            {"2024-2025学年", "二零二四至二零二五学年"},
+        });
+    }
+
+    TEST_CASE("a lab's nanograms, micromoles and an enzyme's units are said by their names") {
+        // The first four rows failed on main 7f699e1 (session 31, dev27): spelled, en ji ai mu ai le, the
+        // pinyin mo, you ai le.
+        check_cases({
+            {"维生素D为18ng/mL", "维生素 di为十八纳克每毫升"},
+            {"尿酸420μmol/L", "尿酸四百二十微摩尔每升"},
+            {"ALT 68U/L", "ei ai le ti六十八单位每升"},
+            {"5U/mL", "五单位每毫升"},
+        });
+        // The limit: a capital U after a number elsewhere is a letter (a chip's suffix, a rack's height).
+        CHECK(said("2U服务器") == "二 you服务器");
+    }
 }
