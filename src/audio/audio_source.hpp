@@ -87,10 +87,9 @@ public:
     // without decoding what lies between, where the reader can go there straight (libsndfile's
     // sf_seek in a file it can seek in; FFmpeg's seek and a decode to the exact sample, in a file
     // whose timestamps place one, ffmpeg_source.cpp); false where it cannot, the reading left
-    // where it was. A
-    // reading that passes hours of digital silence this way takes no time for them; what it passes
-    // is not read, so its samples that are not numbers are counted only where an earlier reading
-    // counted them (take_non_finite_count).
+    // where it was. A reading that passes hours of digital silence this way takes no time for
+    // them; what it passes is not read, so its samples that are not numbers are counted only where
+    // an earlier reading counted them (take_non_finite_count).
     bool skip_to(std::size_t frame);
     // Takes over the samples that are not numbers `earlier` (a reading of the same recording from
     // its start, read() only) found, before this reading reads anything, and from then on counts

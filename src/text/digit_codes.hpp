@@ -80,6 +80,7 @@ std::optional<SpokenForm> read_code_with_dash(const std::vector<CodePoint>& text
 // such prefix stands before `number` (at text[start]) or no year of four digits from 19 or 20 follows.
 std::optional<SpokenForm> read_standard_code(const std::vector<CodePoint>& text, std::size_t start,
                                              const WrittenNumber& number);
+
 // A processor's series and model joined by a hyphen (i7-13700H, R7-7840HS, i5-12400F): one or two letters
 // and the series' one or two digits (`first`, at text[start]), the hyphen, and a model's number of three or
 // more digits with its capital suffix. The series counts, the model is said digit by digit and the hyphen

@@ -734,16 +734,17 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
     context.after_times = after_times;
     // A motorway's stake, K and its kilometres, a + and the metres past them (K1234+500), counts, as
     // traffic reports read it: K 一千二百三十四加五百 (session 24: a model's digits, 一二三四).
-    const bool is_stake = start > 0 && value_at(text, start - 1) == 'K' &&
-                          (start == 1 || !is_ascii_letter(value_at(text, start - 2))) &&
-                          value_at(text, number.end) == '+' && is_digit_at(text, number.end + 1);
+    const auto follows_stake_letter = [&](std::size_t digits) {
+        return digits > 0 && value_at(text, digits - 1) == 'K' &&
+               (digits == 1 || !is_ascii_letter(value_at(text, digits - 2)));
+    };
+    const bool is_stake =
+        follows_stake_letter(start) && value_at(text, number.end) == '+' && is_digit_at(text, number.end + 1);
     // The metres past it count wherever they stand, before a road section's 路段 too (K15+200路段 二百;
     // session 31: a bus route's digits, 二零零路).
     auto kilometres = start > 0 && value_at(text, start - 1) == '+' ? start - 1 : 0;
     while (kilometres > 0 && is_digit_at(text, kilometres - 1)) --kilometres;
-    context.is_stake_metres = kilometres > 0 && kilometres + 1 < start &&
-                              value_at(text, kilometres - 1) == 'K' &&
-                              (kilometres == 1 || !is_ascii_letter(value_at(text, kilometres - 2)));
+    context.is_stake_metres = kilometres + 1 < start && follows_stake_letter(kilometres);
     context.is_model = sign_words.empty() && currency == nullptr && !after_times && !is_stake &&
                        (follows_model_name(text, start) || follows_maker_name(text, start) ||
                         follows_glued_name(text, start) || names_code_by_letters(text, start, number) ||
