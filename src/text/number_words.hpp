@@ -1,6 +1,6 @@
 // Numbers said in Mandarin words: cardinals (12999 一万二千九百九十九), digit strings (2026
 // 二零二六, 110 幺幺零 on the phone) and decimals (3.14 三点一四). The written-form reader
-// (written_numbers.cpp) decides which of them a number on the page is.
+// (number_context.cpp, for written_numbers.cpp) decides which of them a number on the page is.
 #ifndef TALKFACE_TEXT_NUMBER_WORDS_HPP
 #define TALKFACE_TEXT_NUMBER_WORDS_HPP
 

@@ -96,6 +96,10 @@ bool is_one_of(char32_t c, std::u32string_view set) {
     return set.find(c) != std::u32string_view::npos;
 }
 
+bool is_han(char32_t c) {
+    return (c >= 0x4E00 && c <= 0x9FFF) || (c >= 0x3400 && c <= 0x4DBF);
+}
+
 std::size_t last_listed_start(const std::vector<CodePoint>& text, const WrittenNumber& first,
                               std::size_t digits) {
     const auto is_member = [digits](const WrittenNumber& n) {

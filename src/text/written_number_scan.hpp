@@ -44,6 +44,9 @@ bool is_month_and_day(const std::string& month, const std::string& day);
 
 bool is_one_of(char32_t c, std::u32string_view set);
 
+// A Chinese character of the CJK Unified Ideographs or their Extension A.
+bool is_han(char32_t c);
+
 std::string text_between(const std::vector<CodePoint>& text, std::size_t first, std::size_t end);
 
 // Measure words and magnitudes before which 2 is 两 (两本书, 两个, 两万, 两步, 两男三女). Not 月 号

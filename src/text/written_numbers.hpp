@@ -1,10 +1,12 @@
 // Numbers as written on a page (2026年, 12月1日, 3:30, 85%, 1/3, 3-5, -3, 1,234, ¥199, NT$300,
 // 5km, 25℃, 13812345678), read as a native reader says them (issue 13, SPEC "Transcript to
 // syllables"). The conventions chosen where usage varies are in docs/written-forms.md.
-// This file's reader (written_numbers.cpp: a number's context and how it is said) calls on parts of
-// one idea each: written_number_scan (the digits and the clause around them), dates_and_times,
-// units_and_money, digit_codes (numbers said by their digits) and formula_signs (a lesson's signs,
-// powers and number characters, declared here with the reader's other entry points).
+// This file's reader (written_numbers.cpp: which form a number takes) calls on parts of one idea each:
+// written_number_scan (the digits and the clause around them), number_context (how one number is said
+// by the words around it), number_signs, quantities_and_ranges (a number or a range with its unit),
+// number_pairs (two numbers about a mark: scores, ratios, fractions), dates_and_times, units_and_money,
+// digit_codes (numbers said by their digits) and formula_signs (a lesson's signs, powers and number
+// characters, declared here with the reader's other entry points).
 #ifndef TALKFACE_TEXT_WRITTEN_NUMBERS_HPP
 #define TALKFACE_TEXT_WRITTEN_NUMBERS_HPP
 

@@ -1,0 +1,104 @@
+// The transcript reader's runs of Chinese characters: each run cut into its likeliest words and read by
+// the tables, a particle or a return verb deciding a reading in context, and a written form's words read
+// so.
+#include "text/transcript_reader.hpp"
+
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "common/internal_error.hpp"
+#include "text/aspect_particle.hpp"
+#include "text/code_points.hpp"
+#include "text/return_verb.hpp"
+#include "text/script_variant.hpp"
+#include "text/word_segmentation.hpp"
+
+namespace talkface::detail {
+
+std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharacter>& run,
+                                                    bool ends_clause) const {
+    std::vector<std::string_view> characters;
+    for (const auto& character : run) characters.push_back(character.text);
+    std::vector<std::string> readings_of_run;
+    std::size_t first = 0;
+    const auto lengths = detail::likeliest_words(characters, tables_, ends_clause);
+    std::vector<std::string> words;
+    for (std::size_t w = 0, start = 0; w < lengths.size(); start += lengths[w++]) {
+        words.emplace_back();
+        for (std::size_t k = start; k < start + lengths[w]; ++k) words.back() += run[k].text;
+    }
+    for (std::size_t w = 0; w < lengths.size(); ++w) {
+        const auto length = lengths[w];
+        const auto& word = words[w];
+        const auto found = tables_.word(word);
+        const bool has_readings = found && !found->readings.empty();
+        const auto next_word =
+            w + 1 < lengths.size() && lengths[w + 1] == 1 ? characters[first + length] : std::string_view();
+        auto in_context = detail::reading_before_particle(word, next_word);
+        if (in_context.empty()) in_context = detail::return_verb_reading(words, w, ends_clause);
+        for (std::size_t k = 0; k < length; ++k) {
+            const auto& character = run[first + k];
+            std::string pinyin = character.fix;
+            if (pinyin.empty() && k == 0 && !in_context.empty()) {
+                pinyin = in_context;
+            } else if (pinyin.empty()) {
+                pinyin = has_readings ? std::string(found->readings[k])
+                                      : std::string(tables_.readings(character.text).front());
+                check_table_reading(character, pinyin);
+            }
+            readings_of_run.push_back(std::move(pinyin));
+        }
+        first += length;
+    }
+    // 得了 as a potential complement (吃得了吗 de5 liao3) is read across the words it is cut into.
+    for (std::size_t k = 0; k + 1 < run.size(); ++k) {
+        if (!detail::is_potential_complement(characters, lengths, k)) continue;
+        if (run[k].fix.empty()) readings_of_run[k] = "de5";
+        if (run[k + 1].fix.empty()) readings_of_run[k + 1] = "liao3";
+    }
+    return readings_of_run;
+}
+
+void TranscriptReader::flush_run(bool ends_clause) {
+    const auto readings = read_han(run_, ends_clause);
+    for (std::size_t k = 0; k < run_.size(); ++k) add_syllable(std::string(run_[k].text), readings[k]);
+    run_.clear();
+}
+
+std::string TranscriptReader::with_local_one(std::string words) const {
+    if (!is_traditional_) return words;
+    constexpr std::string_view kYao = "幺";
+    for (auto at = words.find(kYao); at != std::string::npos; at = words.find(kYao, at))
+        words.replace(at, kYao.size(), "一");
+    return words;
+}
+
+std::vector<Syllable> TranscriptReader::read_words(const std::string& words) const {
+    const auto characters = decode_utf8(words, "<reading>");
+    std::vector<HanCharacter> run;
+    for (const auto& c : characters) {
+        if (!tables_.has_readings(c.text)) {
+            throw detail::internal_error("the reading \"" + words + "\" holds \"" + std::string(c.text) +
+                                         "\", which has no reading");
+        }
+        run.push_back({nullptr, c.text, {}});
+    }
+    const auto readings = read_han(run);
+    std::vector<Syllable> syllables;
+    // The readings are the tables' (Simplified); what a syllable shows follows the transcript.
+    for (std::size_t k = 0; k < run.size(); ++k)
+        syllables.push_back(make_syllable(
+            is_traditional_ ? detail::traditional_form(run[k].text) : std::string(run[k].text), readings[k]));
+    return syllables;
+}
+
+void TranscriptReader::check_table_reading(const HanCharacter& character, const std::string& pinyin) const {
+    if (detail::normalise_pinyin(pinyin) != pinyin) {
+        throw detail::internal_error("the reading table gives \"" + std::string(character.text) +
+                                     "\" the reading \"" + pinyin + "\", not a Mandarin syllable");
+    }
+}
+
+}  // namespace talkface::detail
