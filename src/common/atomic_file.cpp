@@ -32,6 +32,44 @@ private:
     int fd_;
 };
 
+// A temporary file beside `target`, made by mkstemp in the target's own directory so that the rename
+// that puts it in place never crosses file systems. Its descriptor is closed, and the file removed,
+// on every way out but that rename, a throw among them: no error path can leave either behind.
+class TemporaryFile {
+public:
+    explicit TemporaryFile(const std::string& target)
+        : path_(target + ".tmp-XXXXXX"), fd_(::mkstemp(path_.data())) {
+        if (fd_ < 0) throw FileError(target, "cannot create a temporary file beside it: " + os_reason(errno));
+    }
+    ~TemporaryFile() {
+        if (fd_ >= 0) ::close(fd_);
+        if (!renamed_) ::unlink(path_.c_str());
+    }
+    TemporaryFile(const TemporaryFile&) = delete;
+    TemporaryFile& operator=(const TemporaryFile&) = delete;
+
+    int descriptor() const { return fd_; }
+
+    // Closes the descriptor: 0, or -1 with errno set, since a file system may report a write's failure
+    // only here (a full disk over NFS).
+    int close() {
+        const int result = ::close(fd_);
+        fd_ = -1;
+        return result;
+    }
+
+    // Renames the file over `target`: false, with errno set, where that fails.
+    bool rename_over(const std::string& target) {
+        renamed_ = std::rename(path_.c_str(), target.c_str()) == 0;
+        return renamed_;
+    }
+
+private:
+    std::string path_;
+    int fd_;
+    bool renamed_ = false;
+};
+
 // How long a pipe may keep its first byte: a process substitution's command (talkface align a.wav
 // <(opencc -i t.txt)) has its writer open at once, a named pipe nothing writes to never has one.
 constexpr int kPipeWaitMs = 10000;
@@ -62,20 +100,14 @@ std::string read_pipe(const std::string& path, const std::string& what) {
 }  // namespace
 
 void write_file_atomically(const std::string& path, std::string_view content) {
-    // mkstemp in the target's own directory, so the final rename never crosses file systems.
-    std::string temp_path = path + ".tmp-XXXXXX";
-    const int fd = ::mkstemp(temp_path.data());
-    if (fd < 0) throw FileError(path, "cannot create a temporary file beside it: " + os_reason(errno));
+    TemporaryFile temporary(path);
     const char* data = content.data();
     std::size_t left = content.size();
     while (left > 0) {
-        const ssize_t written = ::write(fd, data, left);
+        const ssize_t written = ::write(temporary.descriptor(), data, left);
         if (written < 0) {
             if (errno == EINTR) continue;
-            const int saved = errno;
-            ::close(fd);
-            ::unlink(temp_path.c_str());
-            throw FileError(path, "cannot write: " + os_reason(saved));
+            throw FileError(path, "cannot write: " + os_reason(errno));
         }
         data += written;
         left -= static_cast<std::size_t>(written);
@@ -83,17 +115,10 @@ void write_file_atomically(const std::string& path, std::string_view content) {
     // mkstemp creates 0600. Keep the mode of the file being replaced, else the usual 0644 (reading
     // the umask would need umask(), which changes it for every thread of the caller's process).
     struct stat existing {};
-    ::fchmod(fd, ::stat(path.c_str(), &existing) == 0 ? (existing.st_mode & 07777) : 0644);
-    if (::close(fd) != 0) {
-        const int saved = errno;
-        ::unlink(temp_path.c_str());
-        throw FileError(path, "cannot write: " + os_reason(saved));
-    }
-    if (std::rename(temp_path.c_str(), path.c_str()) != 0) {
-        const int saved = errno;
-        ::unlink(temp_path.c_str());
-        throw FileError(path, "cannot replace: " + os_reason(saved));
-    }
+    ::fchmod(temporary.descriptor(),
+             ::stat(path.c_str(), &existing) == 0 ? (existing.st_mode & 07777) : 0644);
+    if (temporary.close() != 0) throw FileError(path, "cannot write: " + os_reason(errno));
+    if (!temporary.rename_over(path)) throw FileError(path, "cannot replace: " + os_reason(errno));
 }
 
 std::string read_file(const std::string& path) {

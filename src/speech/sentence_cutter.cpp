@@ -114,8 +114,16 @@ std::vector<FrameSpan> speaking_parts_from_first_pause(const FeatureTrack& track
     return parts;
 }
 
+// The floor of mean_frames_per_syllable, 50 ms a syllable: it keeps a sentence's expected length above 0
+// where the longest pauses take up all the speech (a mean of 0 would make every log ratio infinite). Its
+// value decides no cut: a cut's sentences hold at most the speech the mean counts, so under a mean of
+// kFastestFramesPerSyllable (7) every cut has a sentence too fast for its syllables and is refused, and
+// any floor up to 7 cuts the same. It came unexplained with the first cutter (ad6f37c).
+constexpr double kFewestMeanFramesPerSyllable = 5.0;
+
 // The speech's frames per syllable, were its sentences cut at its longest pauses (one fewer than the
-// sentences, `syllables` their syllable counts) and those pauses left out; at least 5.
+// sentences, `syllables` their syllable counts) and those pauses left out; at least
+// kFewestMeanFramesPerSyllable.
 double mean_frames_per_syllable(const LoudnessProfile& loudness, const std::vector<std::size_t>& syllables) {
     const std::size_t boundary_count = syllables.size() - 1;
     std::size_t total_syllables = 0;
@@ -125,7 +133,7 @@ double mean_frames_per_syllable(const LoudnessProfile& loudness, const std::vect
     std::sort(lengths.rbegin(), lengths.rend());
     double speech_frames = static_cast<double>(loudness.speech_end_frame - loudness.speech_first_frame);
     for (std::size_t i = 0; i < boundary_count; ++i) speech_frames -= static_cast<double>(lengths[i]);
-    return std::max(5.0, speech_frames / static_cast<double>(total_syllables));
+    return std::max(kFewestMeanFramesPerSyllable, speech_frames / static_cast<double>(total_syllables));
 }
 
 // The sentences' spans when the speech is cut at loudness.pauses[chosen[k]], k = 0 .. (in order).

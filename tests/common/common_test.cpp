@@ -1,8 +1,15 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <filesystem>
 #include <fstream>
 #include <limits>
+#include <string>
+#include <vector>
+
+#include <sys/resource.h>
 
 #include "common/atomic_file.hpp"
 #include "common/markup_escape.hpp"
@@ -71,6 +78,41 @@ TEST_SUITE("common") {
                              doctest::Contains("/nonexistent-dir/x.txt"), FileError);
         CHECK_THROWS_WITH_AS(detail::read_file("/nonexistent-dir/x.txt"),
                              doctest::Contains("/nonexistent-dir/x.txt"), FileError);
+    }
+
+    // The error paths after the temporary file exists: a write refused past the file-size limit (EFBIG:
+    // SIGXFSZ ignored, as a shell's ulimit -f leaves it to the program), and a rename refused where the
+    // target is a directory. Each throws naming the target, leaves it as it was and no temporary beside it.
+    TEST_CASE("a failed atomic write or rename leaves the target as it was and no temporary file") {
+        namespace fs = std::filesystem;
+        const fs::path folder = test::output_path("atomic-failures");
+        fs::remove_all(folder);
+        fs::create_directories(folder / "a-folder");
+        const auto target = (folder / "kept.txt").string();
+        detail::write_file_atomically(target, "old");
+
+        constexpr rlim_t kSmallFileLimit = 16;  // bytes: under the content below, over "old"
+        rlimit saved_limit{};
+        REQUIRE(::getrlimit(RLIMIT_FSIZE, &saved_limit) == 0);
+        const auto saved_signal = std::signal(SIGXFSZ, SIG_IGN);
+        rlimit small_limit = saved_limit;
+        small_limit.rlim_cur = kSmallFileLimit;
+        REQUIRE(::setrlimit(RLIMIT_FSIZE, &small_limit) == 0);
+        const std::string content(4 * kSmallFileLimit, 'x');
+        CHECK_THROWS_WITH_AS(detail::write_file_atomically(target, content),
+                             doctest::Contains("cannot write"), FileError);
+        ::setrlimit(RLIMIT_FSIZE, &saved_limit);
+        std::signal(SIGXFSZ, saved_signal);
+
+        CHECK_THROWS_WITH_AS(detail::write_file_atomically((folder / "a-folder").string(), "x"),
+                             doctest::Contains("cannot replace"), FileError);
+
+        CHECK(detail::read_file(target) == "old");
+        std::vector<std::string> left;
+        for (const auto& entry : fs::directory_iterator(folder))
+            left.push_back(entry.path().filename().string());
+        std::sort(left.begin(), left.end());
+        CHECK(left == std::vector<std::string>{"a-folder", "kept.txt"});
     }
 
     TEST_CASE("errors carry their code and a message naming where") {
