@@ -1006,7 +1006,8 @@ TF_API tf_status tf_expression_style_create(const char *base_name, tf_expression
  * text that is not JSON, an unknown key, a wrong type or a value out of range. */
 TF_API tf_status tf_expression_style_load(const char *path, tf_expression_style **out);
 
-/* The same from UTF-8 text; `source_name` names it in messages (NULL: "<string>"). */
+/* The same from UTF-8 text; `source_name` names it in messages (NULL: "<string>").
+ * Errors: TF_ERR_PARSE as tf_expression_style_load; TF_ERR_INVALID_ARGUMENT if json or out is NULL. */
 TF_API tf_status tf_expression_style_from_json(const char *json, const char *source_name,
                                                tf_expression_style **out);
 
@@ -1022,6 +1023,12 @@ TF_API void tf_expression_style_destroy(tf_expression_style *style);
 /* The style's label ("normal", "announcer", "custom" ...), borrowed: valid while the style lives
  * unmodified. Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */
 TF_API tf_status tf_expression_style_name(const tf_expression_style *style, const char **out_name);
+
+/* A style's fields by their JSON keys (docs/style-format.md), by type: number, integer, range, flag.
+ * A set that fails leaves the style as it was.
+ * Errors: TF_ERR_INVALID_ARGUMENT for an unknown field (the message lists the type's fields), a field
+ * of another type (naming it), a value a set puts out of range (naming the field), or a NULL
+ * argument. */
 
 /* Number fields. */
 TF_API tf_status tf_expression_style_get_number(const tf_expression_style *style, const char *field,
@@ -1291,7 +1298,9 @@ typedef enum tf_web_page_app {
 } tf_web_page_app;
 
 /* Options of a web page. Created by tf_web_page_options_create with the defaults (plain page,
- * key frames, audio compressed and embedded, an 800 x 450 stage), released by tf_web_page_options_destroy. */
+ * key frames, audio compressed and embedded, an 800 x 450 stage), released by tf_web_page_options_destroy.
+ * A setter fails (TF_ERR_INVALID_ARGUMENT) only on a NULL options and where its comment says; the values
+ * are checked when the page is built (tf_build_web_page). */
 typedef struct tf_web_page_options tf_web_page_options;
 
 TF_API tf_status tf_web_page_options_create(tf_web_page_options **out);
@@ -1434,7 +1443,8 @@ TF_API tf_status tf_video_format_from_path(const char *path, tf_video_format *ou
 
 /* How a video is encoded. Created by tf_video_options_create with the defaults (1280 x 720, 30 fps,
  * the format's default quality, opaque), released by tf_video_options_destroy. Values are checked
- * when a writer is opened (or by tf_check_video_options). */
+ * when a writer is opened (or by tf_check_video_options): a setter fails (TF_ERR_INVALID_ARGUMENT)
+ * only on a NULL options. */
 typedef struct tf_video_options tf_video_options;
 
 TF_API tf_status tf_video_options_create(tf_video_options **out);
@@ -1482,7 +1492,9 @@ TF_API tf_status tf_video_writer_frame_count(const tf_video_writer *writer, size
 TF_API tf_status tf_video_writer_finish(tf_video_writer *writer);
 
 /* How the face looks in a video (talkface::FaceVideoOptions without its VideoOptions). Created by
- * tf_video_look_create with the defaults (the announcer over #1d3b5c), released by tf_video_look_destroy. */
+ * tf_video_look_create with the defaults (the announcer over #1d3b5c), released by tf_video_look_destroy.
+ * A setter fails (TF_ERR_INVALID_ARGUMENT) only on a NULL look and where its comment says; the values
+ * are checked when the video is made (tf_render_video). */
 typedef struct tf_video_look tf_video_look;
 
 TF_API tf_status tf_video_look_create(tf_video_look **out);
