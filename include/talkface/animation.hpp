@@ -27,9 +27,9 @@ inline namespace v0 {
 
 /// A finished animation: what it was made from and every frame.
 struct Animation {
-    double fps = 25.0;
+    double fps = 25.0;        ///< frames per second, LipSyncOptions::fps of animate()
     double duration_s = 0.0;  ///< the later of the timeline's end and the simulator's
-    std::vector<MouthKeyFrame> mouth_key_frames;
+    std::vector<MouthKeyFrame> mouth_key_frames;  ///< mouth_key_frames(timeline, options) of animate()
     std::vector<ExpressionEvent> events;  ///< the simulator's events() when the frames were made
     /// Frame i shows time i / fps, for i = 0 .. floor(duration_s * fps); the mouth is always set.
     std::vector<FaceState> frames;

@@ -85,9 +85,9 @@ enum class CheckMode : int {
 
 /// Options of SpeechAligner. Defaults suit ordinary recordings.
 struct AlignOptions {
-    SentenceCutMode sentence_cut = SentenceCutMode::automatic;
-    double first_pause_start_s = 0.0;  ///< first_pause mode: the selected pause (seconds)
-    double first_pause_end_s = 0.0;
+    SentenceCutMode sentence_cut = SentenceCutMode::automatic;  ///< how the audio is cut into sentences
+    double first_pause_start_s = 0.0;  ///< first_pause mode: the selected pause's start (seconds)
+    double first_pause_end_s = 0.0;    ///< first_pause mode: the selected pause's end (seconds)
     double c1 = 0.95;                  ///< Algorithm 3.1 step 3, in 0.5..1
     double c2 = 1.45;                  ///< Algorithm 3.1 step 4, in 1..1.5
     CheckMode check = CheckMode::refuse;  ///< what a transcript that does not match the audio does
