@@ -168,17 +168,22 @@ bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start) {
     // A room's number after its wing's, block's or area's letter (A座803 ei 座八零三, C座2107, A区305;
     // session 31: counted, 八百零三), as after a building's number; a round hundred there counts
     // (C区200个车位).
-    if (start >= 2 && is_one_of(text[start - 1].value, U"座区區栋棟楼樓") &&
-        is_ascii_capital(text[start - 2].value) &&
-        (start == 2 || !is_ascii_letter(value_at(text, start - 3)))) {
-        auto end = start;
-        const auto digits = digits_from(text, end);
-        constexpr std::size_t kFewestRoomDigits = 3;
-        constexpr std::size_t kMostRoomDigits = 4;
-        return digits.size() >= kFewestRoomDigits && digits.size() <= kMostRoomDigits &&
-               !ends_with(digits, "00") && value_at(text, end) != '.';
-    }
-    return false;
+    // So after a building named by a word in 楼 (东楼408 东楼四零八, 教学楼203; session 32: counted), where
+    // no measure word, unit or 多 余 after the number counts it (大楼632米).
+    const bool after_lettered_wing = start >= 2 && is_one_of(text[start - 1].value, U"座区區栋棟楼樓") &&
+                                     is_ascii_capital(text[start - 2].value) &&
+                                     (start == 2 || !is_ascii_letter(value_at(text, start - 3)));
+    const bool after_named_building =
+        start >= 2 && is_one_of(text[start - 1].value, U"楼樓") && is_han(text[start - 2].value);
+    if (!after_lettered_wing && !after_named_building) return false;
+    auto end = start;
+    const auto digits = digits_from(text, end);
+    constexpr std::size_t kFewestRoomDigits = 3;
+    constexpr std::size_t kMostRoomDigits = 4;
+    const auto next = value_at(text, end);
+    return digits.size() >= kFewestRoomDigits && digits.size() <= kMostRoomDigits &&
+           !ends_with(digits, "00") && next != '.' &&
+           (after_lettered_wing || !(takes_liang(next) || is_one_of(next, U"多余餘")));
 }
 
 bool follows_phone_word(const std::vector<CodePoint>& text, std::size_t start) {
@@ -275,15 +280,39 @@ std::optional<SpokenForm> read_code_with_dash(const std::vector<CodePoint>& text
 
 namespace {
 
+// Whether the sentence around text[start] speaks of a standard or of working by one (标准 规范 规程 导则 按
+// 依据 执行 符合 参照 评定 检定): capitals outside the list name a standard only there, where elsewhere they
+// may name a league or a currency before a range (CBA 2023-2024赛季, RMB 1000-2000).
+bool speaks_of_standard(const std::vector<CodePoint>& text, std::size_t start) {
+    const std::string sentence = text_before(text, start, false) + text_after(text, start, false);
+    return contains_any(sentence,
+                        {"标准", "標準", "规范", "規範", "规程", "規程", "导则", "導則", "按",   "依据",
+                         "依據", "执行", "執行", "符合", "参照", "參照", "评定", "評定", "检定", "檢定"});
+}
+
 // The prefixes a standard's number is written after: China's national standards (GB, and GB/T a
 // recommended one) and the international, European and national bodies news cites (ISO 9001:2015).
 // Any capitals with /T or /Z after them are a Chinese standard's too (YY/T, NY/T, JT/T: an industry's
-// recommended or guiding standard), so those need no list.
-bool is_standard_prefix(const std::string& letters) {
-    if (ends_with(letters, "/T") || ends_with(letters, "/Z")) return letters.size() > 2;
+// recommended or guiding standard), so those need no list, and so are a province's local standard, DB and
+// its two digits (DB11/T 1234-2015), and a body's group standard after T/ (T/CAS 115-2005; session 32: the
+// year was a range's end). Two or three capitals and a space before the number are an industry's or a
+// metrology code's mandatory standard (JJF 1059.1-2012, as China writes its industry codes, two capitals,
+// and its metrology's, three) where the sentence speaks of a standard (`spaced_in_standard_talk`).
+bool is_standard_prefix(const std::string& letters, bool spaced_in_standard_talk) {
+    const auto capitals = [](std::string_view part, std::size_t fewest) {
+        return part.size() >= fewest &&
+               std::all_of(part.begin(), part.end(), [](char c) { return is_ascii_capital(c); });
+    };
+    if (ends_with(letters, "/T") || ends_with(letters, "/Z")) {
+        const auto body = std::string_view(letters).substr(0, letters.size() - 2);
+        const auto code = body.substr(0, body.find_last_not_of("0123456789") + 1);
+        return capitals(code, code.size() < body.size() ? 2 : 1);
+    }
+    if (starts_with_any(letters, {"T/"})) return capitals(std::string_view(letters).substr(2), 2);
     for (const std::string_view body : {"GB", "ISO", "IEC", "ISO/IEC", "EN", "BS", "DIN", "JIS", "ANSI"})
         if (letters == body) return true;
-    return false;
+    constexpr std::size_t kLongestCode = 3;
+    return spaced_in_standard_talk && letters.size() <= kLongestCode && capitals(letters, 2);
 }
 
 }  // namespace
@@ -292,17 +321,22 @@ std::optional<SpokenForm> read_standard_code(const std::vector<CodePoint>& text,
                                              const WrittenNumber& number) {
     constexpr std::size_t kFewestCodeDigits = 3;
     constexpr std::size_t kYearDigits = 4;
-    if (number.has_point || number.has_separators || number.whole.size() < kFewestCodeDigits)
+    // A part's number after a point (GB/T 1.1-2020, JJF 1059.1-2012) is said after 点 as a version's is; a
+    // number of one part has three digits or more.
+    if (number.has_separators || (!number.has_point && number.whole.size() < kFewestCodeDigits))
         return std::nullopt;
     auto letters = start;
-    if (letters > 0 && text[letters - 1].value == ' ') --letters;
+    const bool spaced = letters > 0 && text[letters - 1].value == ' ';
+    if (spaced) --letters;
     const auto prefix_end = letters;
-    while (letters > 0 && (is_ascii_capital(text[letters - 1].value) || text[letters - 1].value == '/'))
+    while (letters > 0 && (is_ascii_capital(text[letters - 1].value) || text[letters - 1].value == '/' ||
+                           is_digit_at(text, letters - 1)))
         --letters;
-    if (letters == prefix_end ||
-        (letters > 0 && (is_ascii_letter(text[letters - 1].value) || is_digit_at(text, letters - 1))))
+    if (letters == prefix_end || (letters > 0 && is_ascii_letter(text[letters - 1].value)))
         return std::nullopt;
-    if (!is_standard_prefix(text_between(text, letters, prefix_end))) return std::nullopt;
+    if (!is_standard_prefix(text_between(text, letters, prefix_end),
+                            spaced && speaks_of_standard(text, start)))
+        return std::nullopt;
     const auto mark = ascii_form(value_at(text, number.end));
     if (!is_dash(mark) && mark != ':') return std::nullopt;
     auto end = number.end + 1;
@@ -310,7 +344,8 @@ std::optional<SpokenForm> read_standard_code(const std::vector<CodePoint>& text,
     if (year.size() != kYearDigits || !starts_with_any(year, {"19", "20"}) || value_at(text, end) == '.')
         return std::nullopt;
     SpokenForm form;
-    form.words = digit_words(number.whole) + (is_dash(mark) ? "杠" : "") + digit_words(year);
+    form.words = digit_words(number.whole) + (number.has_point ? "点" + digit_words(number.fraction) : "") +
+                 (is_dash(mark) ? "杠" : "") + digit_words(year);
     form.end = end;
     return form;
 }
@@ -335,7 +370,8 @@ std::optional<SpokenForm> read_series_and_model(const std::vector<CodePoint>& te
     return form;
 }
 
-std::optional<SpokenForm> read_model_variant(const std::vector<CodePoint>& text, const WrittenNumber& model) {
+std::optional<SpokenForm> read_model_variant(const std::vector<CodePoint>& text, std::size_t start,
+                                             const WrittenNumber& model) {
     constexpr std::size_t kFewestModelDigits = 3;
     if (model.has_point || model.has_separators || model.whole.size() < kFewestModelDigits ||
         !is_dash(value_at(text, model.end)) || !is_digit_at(text, model.end + 1)) {
@@ -343,6 +379,12 @@ std::optional<SpokenForm> read_model_variant(const std::vector<CodePoint>& text,
     }
     auto k = model.end + 1;
     const auto variant = digits_from(text, k);
+    // ISO names no maker's model: after it a higher number is the top of a camera's range of sensitivities
+    // (ISO 100-400 一百到四百; session 32: 一零零四百, A320-200's variant), as a lower one is a standard's
+    // part.
+    const bool rises = variant.size() > model.whole.size() ||
+                       (variant.size() == model.whole.size() && variant > model.whole);
+    if (rises && model_name_before(text, start) == "ISO") return std::nullopt;
     constexpr std::size_t kLongestVariant = 4;
     const bool is_round = variant.size() >= 3 && variant.size() <= kLongestVariant &&
                           variant.front() != '0' && variant.compare(variant.size() - 2, 2, "00") == 0;
@@ -392,7 +434,14 @@ bool names_code_by_letters(const std::vector<CodePoint>& text, std::size_t start
             --i;
             has_capital = has_capital || is_ascii_capital(text[i].value);
         }
-        if (has_capital) return true;
+        // A memory's speed after its generation's letter (LPDDR5X-7500 七千五百, as DDR5-6400's; session 32:
+        // 七五零零) counts.
+        auto generation = i;
+        while (generation > 0 && is_digit_at(text, generation - 1)) --generation;
+        const bool after_generation =
+            generation < i &&
+            ends_with(text_between(text, generation >= 3 ? generation - 3 : 0, generation), "DDR");
+        if (has_capital && !after_generation) return true;
     }
     if (digits != 4) return false;
     return is_card_suffix_at(text, value_at(text, number.end) == ' ' ? number.end + 1 : number.end);
@@ -711,6 +760,21 @@ std::optional<SpokenForm> read_masked_number(const std::vector<CodePoint>& text,
             form.words += digit_words(group, is_dialled);
         }
     }
+    form.end = end;
+    return form;
+}
+
+std::optional<SpokenForm> read_masked_tail(const std::vector<CodePoint>& text, std::size_t start) {
+    const auto is_star = [&](std::size_t k) { return ascii_form(value_at(text, k)) == '*'; };
+    if (!is_star(start) || !is_star(start + 1) ||
+        (start > 0 && (is_star(start - 1) || is_digit_at(text, start - 1))))
+        return std::nullopt;
+    auto end = start;
+    while (is_star(end)) ++end;
+    if (!is_digit_at(text, end)) return std::nullopt;
+    SpokenForm form;
+    form.is_dialled = follows_phone_word(text, start);
+    form.words = digit_words(digits_from(text, end), form.is_dialled);
     form.end = end;
     return form;
 }

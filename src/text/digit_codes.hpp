@@ -92,7 +92,8 @@ std::optional<SpokenForm> read_series_and_model(const std::vector<CodePoint>& te
 // A320-200, 波音737-800, A350-1000): a hyphen and a round hundred or thousand, counted, or one digit (737-8),
 // the model said digit by digit and the hyphen not at all, as pilots and spotters say them (A三二零二百,
 // 七三七八百, 七三七八; session 21: a range, 三二零到二零零).
-std::optional<SpokenForm> read_model_variant(const std::vector<CodePoint>& text, const WrittenNumber& model);
+std::optional<SpokenForm> read_model_variant(const std::vector<CodePoint>& text, std::size_t start,
+                                             const WrittenNumber& model);
 
 bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start);
 
@@ -189,6 +190,13 @@ std::size_t past_exchange_suffix(const std::vector<CodePoint>& text, std::size_t
 // letters (°F and 100℉ are Fahrenheit's, a unit), and no seat's (12F号, 7车12F; session 18: 十二楼).
 // nullopt elsewhere.
 std::optional<SpokenForm> read_floor(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
+
+// A number masked from its start (尾号****5678, 卡号：****1234), as a bank's or a shop's message shows a
+// card's or a phone's tail: no digits before the stars hold a place, so they are unsaid, and the digits after
+// them are said one by one as a masked number's are (尾号五六七八; session 32: each star skipped with a
+// warning, the digits counted), dialled with 幺 after a phone's word. nullopt where no run of stars starts a
+// number at text[start].
+std::optional<SpokenForm> read_masked_tail(const std::vector<CodePoint>& text, std::size_t start);
 
 // A number with some of its digits masked by stars, as a prize list or a login notice shows a phone's or a
 // card's (138****6621, 6222****1234): its digits one by one and each star 星, as such a number is read out;

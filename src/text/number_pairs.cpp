@@ -189,6 +189,44 @@ std::optional<SpokenForm> read_product(const std::vector<CodePoint>& text, const
     return form;
 }
 
+std::optional<SpokenForm> read_slashed_models(const std::vector<CodePoint>& text, const WrittenNumber& first,
+                                              const NumberContext& context) {
+    constexpr std::size_t kFewestModelDigits = 3;
+    if (!context.is_model || context.is_train || first.has_point || first.has_separators ||
+        first.whole.size() < kFewestModelDigits || value_at(text, first.end) != '/' ||
+        !is_digit_at(text, first.end + 1))
+        return std::nullopt;
+    auto end = first.end + 1;
+    const auto second = digits_from(text, end);
+    if (second.size() != first.whole.size() || is_one_of(value_at(text, end), U"./")) return std::nullopt;
+    return SpokenForm{end, digit_words(first.whole) + digit_words(second), "", false};
+}
+
+std::optional<SpokenForm> read_dimensions(const std::vector<CodePoint>& text, std::size_t start,
+                                          const WrittenNumber& first) {
+    if (value_at(text, first.end) != '/' || !is_digit_at(text, first.end + 1)) return std::nullopt;
+    if (!contains_any(text_before(text, start, true), {"长宽高", "長寬高", "长×宽×高", "長×寬×高"}))
+        return std::nullopt;
+    std::vector<WrittenNumber> parts{first};
+    while (value_at(text, parts.back().end) == '/' && is_digit_at(text, parts.back().end + 1))
+        parts.push_back(parse_number(text, parts.back().end + 1));
+    constexpr std::size_t kDimensions = 3;
+    if (parts.size() != kDimensions) return std::nullopt;
+    SpokenForm form;
+    for (const auto& part : parts) {
+        const auto said = say_number(part, {});
+        form.words += said.words;
+        append_warning(form, said.warning);
+    }
+    form.end = parts.back().end;
+    std::size_t unit_end = form.end;
+    if (const Unit* unit = unit_at(text, form.end, unit_end)) {
+        form.words += unit->words;
+        form.end = unit_end;
+    }
+    return form;
+}
+
 std::optional<SpokenForm> read_slashed_pair(const std::vector<CodePoint>& text, std::size_t start,
                                             const WrittenNumber& number, const std::string& sign_words,
                                             const Currency* currency) {

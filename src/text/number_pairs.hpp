@@ -54,6 +54,21 @@ std::optional<SpokenForm> read_slashed_pair(const std::vector<CodePoint>& text, 
                                             const WrittenNumber& number, const std::string& sign_words,
                                             const Currency* currency);
 
+// Two models of a maker's series joined by a slash (HP 1200/1500系列, RTX 4090/4080), as a part's or a
+// cartridge's copy lists what it fits: each number said as a model's digits, the slash unsaid (session 32: a
+// fraction, 一千五百分之一千二百). The first is a model's (NumberContext::is_model: after its maker's
+// capitals and a space); the second has as many digits, three or more, as a model's do. A game's
+// HP：1200/1500 (a colon) is no model's. nullopt where they are not two such models.
+std::optional<SpokenForm> read_slashed_models(const std::vector<CodePoint>& text, const WrittenNumber& first,
+                                              const NumberContext& context);
+
+// A body's length, width and height joined by slashes where the clause names them (长宽高分别为
+// 5130/1999/1800mm, as a car's or a box's spec sheet writes them): each a number, the slashes unsaid and the
+// unit said after the last (session 32: a fraction and a third number after it); nullopt where they are not
+// three such numbers after 长宽高.
+std::optional<SpokenForm> read_dimensions(const std::vector<CodePoint>& text, std::size_t start,
+                                          const WrittenNumber& first);
+
 }  // namespace talkface::detail
 
 #endif

@@ -340,8 +340,8 @@ SpokenForm read_quantity(const std::vector<CodePoint>& text, std::size_t start, 
         magnitude_words = chat_letter;
         ++end;
     }
-    context.has_unit =
-        power_words.empty() && ((unit != nullptr && unit->written != "%") || is_byte_unit_at(text, end));
+    context.has_unit = power_words.empty() && ((unit != nullptr && unit->written != "%") ||
+                                               is_byte_unit_at(text, end) || is_basis_points_at(text, end));
     context.measures_degrees = unit == nullptr && power_words.empty() && measures_degrees(text, start, end);
     std::string unit_words = unit == nullptr ? "" : unit->words;
     const bool is_percent = unit != nullptr && unit->written == "%";

@@ -73,7 +73,11 @@ std::size_t TranscriptReader::read_latin(const std::vector<CodePoint>& text, std
     }
     std::string word = latin_spelling(text, start, end);
     // A card's suffix after its model's digits (RTX 4070 Ti) is its letters, where Ti alone is pinyin.
-    if (in_chemical_formula(text, start) || detail::follows_card_model(text, start)) {
+    // Capitals glued to a number are a unit's or a model's letters (45TOPS ti ou pi ai si, a chip's trillions
+    // of operations a second; session 32: the dictionary's tops, ta pu si), unless said as a word (15PRO).
+    const bool follows_digits = start > 0 && detail::is_digit_at(text, start - 1) &&
+                                detail::is_all_capitals(word) && !detail::is_said_as_word(word);
+    if (follows_digits || in_chemical_formula(text, start) || detail::follows_card_model(text, start)) {
         add_form(text, start, end, said_syllables(detail::letter_syllables(word)));
         return end;
     }

@@ -42,7 +42,28 @@ constexpr Unit kUnits[] = {
     // activity in units (ALT 68U/L 六十八单位每升; is_lone_capital_unit_at).
     {"ng", "纳克"}, {"pg", "皮克"}, {"nmol", "纳摩尔"}, {"μmol", "微摩尔"}, {"µmol", "微摩尔"},
     {"pmol", "皮摩尔"}, {"U", "单位"},
+    // Session 32: a torque's newton-metres (700N·m 七百牛米, 700Nm; N·m left its m a letter), a screen's
+    // brightness in nits (3000nits 三千尼特; the dictionary's word gave de), and a temperature's kelvin (100万K
+    // 一百万开尔文, is_kelvin_at).
+    {"N·m", "牛米"}, {"N⋅m", "牛米"}, {"Nm", "牛米"}, {"nits", "尼特"}, {"nit", "尼特"},
+    // A length's unit in characters squared or cubed by its sign (3.5厘米² 三点五平方厘米, as cm² is said; the
+    // sign after the word was skipped with a warning): the power is said before the unit it raises.
+    {"米²", "平方米"}, {"厘米²", "平方厘米"}, {"毫米²", "平方毫米"}, {"分米²", "平方分米"},
+    {"千米²", "平方千米"}, {"公里²", "平方公里"}, {"米³", "立方米"}, {"厘米³", "立方厘米"},
+    {"毫米³", "立方毫米"}, {"分米³", "立方分米"},
 };
+
+// A kelvin's K after a number where its clause names a temperature, 温度 (日冕的温度可达100万K): elsewhere a
+// capital K is a picture's (高温下看4K电视), a runner's (5K) or a model's letter, and a lamp's 色温6500K is left
+// as its makers say it, K.
+constexpr Unit kKelvin = {"K", "开尔文"};
+
+bool is_kelvin_at(const std::vector<CodePoint>& text, std::size_t i) {
+    if (value_at(text, i) != 'K' || is_ascii_letter(value_at(text, i + 1)) || is_digit_at(text, i + 1))
+        return false;
+    const std::string clause = text_before(text, i, true) + text_after(text, i);
+    return contains_any(clause, {"温度", "溫度"});
+}
 
 // A unit of one capital (J N A) that a grade or a name also writes after a number: a unit only
 // before 的 or anything but a Chinese character (0.5A。, 20N的力; not 5A景区); U, below, only before a slash.
@@ -138,7 +159,15 @@ const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size
         best = &kSmallWatt;
         end = i + 1;
     }
+    if (best == nullptr && is_kelvin_at(text, start)) {
+        best = &kKelvin;
+        end = start + 1;
+    }
     return best;
+}
+
+bool is_basis_points_at(const std::vector<CodePoint>& text, std::size_t i) {
+    return value_at(text, i) == 'b' && value_at(text, i + 1) == 'p' && !is_ascii_letter(value_at(text, i + 2));
 }
 
 bool is_byte_unit_at(const std::vector<CodePoint>& text, std::size_t i) {

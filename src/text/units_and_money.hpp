@@ -23,6 +23,10 @@ const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size
 // KB MB GB TB PB after a number (256GB, 2 TB): a unit, so the number counts (两 TB, not a phone
 // number's digits), said as its letters, which the Latin reader reads after the number. So is the
 // capital alone before a word of stored data (2G流量, 4G内存; session 27).
+// Whether text[i] starts a rate's basis points written bp (25bp, 降息2bp): said as its letters, as finance
+// says them (二十五 bi pi), but a measure as a unit is, so a 2 before it is 两 (两 bi pi; session 32: 二).
+bool is_basis_points_at(const std::vector<CodePoint>& text, std::size_t i);
+
 bool is_byte_unit_at(const std::vector<CodePoint>& text, std::size_t i);
 
 struct Currency {

@@ -69,7 +69,7 @@ std::optional<SpokenForm> read_unsigned_form(const std::vector<CodePoint>& text,
     if (auto minutes = read_arc_minutes(text, start, number)) return minutes;
     if (auto model = read_series_and_model(text, i, number)) return model;
     if (auto variant =
-            context.is_model && !context.is_train ? read_model_variant(text, number) : std::nullopt)
+            context.is_model && !context.is_train ? read_model_variant(text, i, number) : std::nullopt)
         return variant;
     if (auto digits = read_dashed_digits(text, number, context.is_phone, context.is_named,
                                          follows_book_number(text, start)))
@@ -118,6 +118,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         return second;
     }
     if (auto code = read_calling_code(text, start)) return code;
+    if (auto tail = read_masked_tail(text, start)) return tail;
     if (auto form_factor = read_form_factor_digit(text, start)) return form_factor;
     auto sign = read_leading_sign(text, start);
     if (!sign) return std::nullopt;
@@ -147,6 +148,10 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (auto pair = read_colon_pair(text, start, number, context)) return pair;
     if (currency == nullptr)
         if (auto product = read_product(text, number)) return product;
+    if (is_bare)
+        if (auto models = read_slashed_models(text, number, context)) return models;
+    if (is_bare)
+        if (auto dimensions = read_dimensions(text, start, number)) return dimensions;
     if (is_bare)
         if (auto form = read_unsigned_form(text, start, i, number, context)) return form;
     if (auto pair = read_slashed_pair(text, start, number, sign_words, currency)) return pair;

@@ -2063,4 +2063,110 @@ TEST_SUITE("written forms") {
         // The limit: a capital U after a number elsewhere is a letter (a chip's suffix, a rack's height).
         CHECK(said("2U服务器") == "二 you服务器");
     }
+
+    TEST_CASE(
+        "a standard's number after a local, a group or an industry's prefix, or with a part after its "
+        "point") {
+        // The first four rows failed on main 7a33214 (session 32, dev28): the year a range's end, 到, and
+        // JJF's number counted, 一千零五十九点一.
+        check_cases({
+            {"执行GB/T 1.1-2020起草", "执行 ji bi ti一点一杠二零二零起草"},
+            {"DB11/T 1234-2015标准", "di bi十一 ti一二三四杠二零一五标准"},
+            {"符合T/CAS 115-2005要求", "符合 ti xi ei ai si一一五杠二零零五要求"},
+            {"按JJF 1059.1-2012评定", "按 zhei zhei ai fu一零五九点一杠二零一二评定"},
+            // The limits: capitals outside the list where no standard is spoken of, and a range of cards.
+            {"CBA 2023-2024赛季", "xi bi ei二零二三至二零二四赛季"},
+            {"RTX 3060-4090", "a er ti ai ke si三零六零到四零九零"},
+        });
+    }
+
+    TEST_CASE("a memory's speed after its generation's letter counts") {
+        // The first row failed on main 7a33214 (session 32, dev28): a code's digits, 七五零零.
+        check_cases({
+            {"搭载LPDDR5X-7500内存", "搭载 ai le pi di di a er五 ai ke si七千五百内存"},
+            // The limit: a code after a capital and a dash, no generation before it.
+            {"型号X-7500", "型号 ai ke si七五零零"},
+        });
+    }
+
+    TEST_CASE("a room's number after a building named by a word in 楼 is said digit by digit") {
+        // The first two rows failed on main 7a33214 (session 32, dev28): counted, 四百零八.
+        check_cases({
+            {"会议改在东楼408召开", "会议改在东楼四零八召开"},
+            {"教学楼203", "教学楼二零三"},
+            // The limits: a unit after the number, and a round hundred.
+            {"大楼632米", "大楼六百三十二米"},
+            {"东楼400", "东楼四百"},
+        });
+    }
+
+    TEST_CASE("a number masked from its start leaves its stars unsaid and says its digits one by one") {
+        // The first row failed on main 7a33214 (session 32, dev28): each star skipped with a warning, the
+        // digits counted, 五千六百七十八.
+        check_cases({
+            {"您尾号****5678的银行卡", "您尾号五六七八的银行卡"},
+            // The limit: stars between digits hold their places, 星.
+            {"138****5678", "幺三八星星星星五六七八"},
+        });
+    }
+
+    TEST_CASE("a length's unit in characters squared or cubed by its sign says the power first") {
+        // Both rows failed on main 7a33214 (session 32, dev28): the sign skipped with a warning.
+        check_cases({
+            {"面积约为3.5厘米²", "面积约为三点五平方厘米"},
+            {"体积为5米³", "体积为五立方米"},
+        });
+    }
+
+    TEST_CASE("two models after a maker's capitals joined by a slash are each a model's digits") {
+        // The first row failed on main 7a33214 (session 32, dev28): a fraction, 一千五百分之一千二百.
+        check_cases({
+            {"适用于HP 1200/1500系列", "适用于 ai qi pi一二零零一五零零系列"},
+            // The limit: after a colon, a game's hit points, a fraction as before.
+            {"HP：1200/1500", "ai qi pi一千五百分之一千二百"},
+        });
+    }
+
+    TEST_CASE("a body's length, width and height joined by slashes are three numbers and their unit") {
+        // The first row failed on main 7a33214 (session 32, dev28): a fraction, then the third number.
+        check_cases({
+            {"长宽高分别为5130/1999/1800mm", "长宽高分别为五千一百三十一千九百九十九一千八百毫米"},
+            // The limit: two numbers where no dimensions are named stay a fraction.
+            {"5130/1999", "一千九百九十九分之五千一百三十"},
+        });
+    }
+
+    TEST_CASE("a rising range after ISO is a camera's sensitivities, not a model's variant") {
+        // The first row failed on main 7a33214 (session 32, dev28): a model and its variant, 一零零四百.
+        check_cases({
+            {"ISO 100-400", "ai ai si ou一百到四百"},
+            // The limit: an aircraft's variant after its maker's capital.
+            {"A320-200", "ei三二零二百"},
+        });
+    }
+
+    TEST_CASE("newton-metres, nits and kelvin are said by their names") {
+        // The four rows failed on main 7a33214 (session 32, dev28): N·m's m a letter, Nm and nits spelled or
+        // generic speech with a warning, the kelvin a letter.
+        check_cases({
+            {"峰值扭矩为700N·m", "峰值扭矩为七百牛米"},
+            {"扭矩700Nm", "扭矩七百牛米"},
+            {"峰值亮度3000nits", "峰值亮度三千尼特"},
+            {"日冕的温度可达100万K以上", "日冕的温度可达一百万开尔文以上"},
+            // The limit: a picture's K where no temperature is named in its clause.
+            {"高温下看4K电视", "高温下看四 kei电视"},
+        });
+    }
+
+    TEST_CASE("capitals glued to a number are spelled and a 2 before basis points is 两") {
+        // The first two rows failed on main 7a33214 (session 32, dev28): the dictionary's tops, ta pu si, and
+        // 二 bi pi.
+        check_cases({
+            {"算力达到45TOPS", "算力达到四十五 ti ou pi ai si"},
+            {"较年初下降2bp", "较年初下降两 bi pi"},
+            // The limits: a word said in capitals (PRO) and basis points after another number.
+            {"15PRO", "十五 pou"},
+            {"下行3bp", "下行三 bi pi"},
+        });
+    }
 }
