@@ -52,13 +52,22 @@ std::optional<FrameSpan> lifted_lead_in(const FeatureTrack& track, float low_flo
         return static_cast<double>(uneven) >= kLastingUnevenShare * static_cast<double>(stop - first);
     };
     std::size_t end = 0, uneven = 0;
+    bool is_shape_break = false;
     for (; end < frames && loudest(end) < noise_db + kLiftBelowSpeechDb; ++end) {
         uneven = keeps_floor_shape(above(end)) ? 0 : uneven + 1;
         if (uneven == kShapeBreakFrames && stays_uneven(end + 1 - kShapeBreakFrames)) {
             end -= kShapeBreakFrames - 1;
+            is_shape_break = true;
             break;
         }
     }
+    // Where the level ended it, it rose on the first vowel: a quiet initial before it stays under
+    // the lifted noise's level and breaks the floor's shape for too few frames to end the lead-in
+    // alone, and left in the lead-in it put the first syllable that late (short_kinds_bench's
+    // p-fast-combo, tuning: 走, GG, 在嗎, 集合推塔 50-90 ms; bench/README.md, session 32). The frames
+    // just before the rise that break the shape are the voice's.
+    if (!is_shape_break && end < frames)
+        while (end > 0 && !keeps_floor_shape(above(end - 1))) --end;
     if (end < min_run_frames || end == frames) return std::nullopt;
     std::array<std::vector<float>, 3> bands;
     std::size_t flat = 0;

@@ -23,7 +23,8 @@ namespace talkface::detail {
 // bands start (three frames in a row out of the floor's shape by kLiftShapeDb, that begin
 // `min_run_frames` frames mostly out of it: the noise's own ripple comes back to it) or a frame's
 // loudest band stands kLiftBelowSpeechDb over that level (a syllable's rise; the gain's climb toward
-// the line stays within it). It is the lifted noise only where it is at least `min_run_frames` long,
+// the line stays within it), there before the frames just before the rise that break the floor's
+// shape (a quiet initial's, under the noise's level). It is the lifted noise only where it is at least `min_run_frames` long,
 // its bands keep the floor's shape (each band's median above its floor within kLiftShapeDb of the
 // others', and at least half its frames on their own: other voices and music fill their bands
 // unevenly) and the floors are no digital silence.

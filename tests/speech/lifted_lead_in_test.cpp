@@ -6,6 +6,7 @@
 // a time.
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -14,6 +15,7 @@
 #include "audio/audio_source.hpp"
 #include "audio/decoded_audio.hpp"
 #include "common/speech_clips.hpp"
+#include "speech/lifted_lead_in.hpp"
 #include "talkface/speech_aligner.hpp"
 #include "talkface/transcript.hpp"
 
@@ -53,6 +55,34 @@ void check_line_after(std::vector<float> samples, double lead_in_s) {
     CHECK(std::abs(aligned.syllables[1].start_s - (lead_in_s + 0.32093)) < 0.05);
 }
 
+constexpr float kFloorDb = -60.0f;
+constexpr std::size_t kPauseFrames = 20;
+constexpr std::size_t kLeadInFrames = 50;
+
+// A track of the lifted noise (every band 15 dB over its floor) for kLeadInFrames frames, then the
+// frames of `initial` (low, mid, high band above the floors), then a vowel's, its low band loudest.
+detail::FeatureTrack lead_in_then(const std::vector<std::array<float, 3>>& initial) {
+    std::vector<std::array<float, 3>> frames(kLeadInFrames, {15.0f, 15.0f, 15.0f});
+    frames.insert(frames.end(), initial.begin(), initial.end());
+    frames.resize(frames.size() + 2 * kPauseFrames, {30.0f, 25.0f, 15.0f});
+    detail::FeatureTrack track;
+    track.frame_count = frames.size();
+    track.values.assign(track.frame_count * detail::kFeatureCount, 0.0f);
+    for (std::size_t t = 0; t < frames.size(); ++t) {
+        float* frame = &track.values[t * detail::kFeatureCount];
+        frame[detail::kLowBandDb] = kFloorDb + frames[t][0];
+        frame[detail::kMidBandDb] = kFloorDb + frames[t][1];
+        frame[detail::kHighBandDb] = kFloorDb + frames[t][2];
+    }
+    return track;
+}
+
+std::size_t lead_in_end(const detail::FeatureTrack& track) {
+    const auto lead_in = detail::lifted_lead_in(track, kFloorDb, kFloorDb, kFloorDb, kPauseFrames);
+    REQUIRE(lead_in.has_value());
+    return lead_in->end_frame;
+}
+
 }  // namespace
 
 TEST_SUITE("speech") {
@@ -78,5 +108,16 @@ TEST_SUITE("speech") {
             return static_cast<float>(kRumbleShare * sum);
         };
         check_line_after(lifted_hiss(kLeadInS, rumble), kLeadInS);
+    }
+
+    TEST_CASE("a lifted lead-in ends where the voice's first uneven frames begin, before its level rises") {
+        // A quiet initial under the lifted noise: its frication lifts the high band 5 dB over the
+        // others for two frames (out of the floor's shape, too few to end the lead-in alone) and stays
+        // under the noise's level plus kLiftBelowSpeechDb; the vowel after it rises past that. Ended at
+        // the vowel, the initial was left in the lead-in and the first syllable came late (session 31:
+        // p-fast-combo's 走, GG, 在嗎 40-90 ms).
+        CHECK(lead_in_end(lead_in_then({{15.0f, 15.0f, 20.0f}, {15.0f, 15.0f, 20.0f}})) == kLeadInFrames);
+        // Frames that keep the floor's shape before the vowel are the noise's.
+        CHECK(lead_in_end(lead_in_then({{16.0f, 16.0f, 16.0f}, {16.0f, 16.0f, 16.0f}})) == kLeadInFrames + 2);
     }
 }
