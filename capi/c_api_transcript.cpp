@@ -17,7 +17,20 @@ using talkface::Timeline;
 using talkface::capi::guard;
 using talkface::capi::require_non_null;
 
+struct tf_transcript_options {
+    talkface::TranscriptOptions options;
+};
+
 namespace {
+
+const talkface::TranscriptOptions& options_or_defaults(const tf_transcript_options* options) {
+    static const talkface::TranscriptOptions defaults;
+    return options != nullptr ? options->options : defaults;
+}
+
+std::string source_or_default(const char* source_name) {
+    return source_name != nullptr ? source_name : "<transcript>";
+}
 
 // items[index], const or not as `items` is.
 template <typename Items>
@@ -48,8 +61,18 @@ tf_status tf_read_transcript(const char* text, size_t length, const char* source
     return guard([&] {
         require_non_null(text, "text");
         require_non_null(out, "out");
-        *out = new tf_timeline{talkface::read_transcript(std::string_view(text, length), {},
-                                                         source_name != nullptr ? source_name : "<transcript>")};
+        *out = new tf_timeline{
+            talkface::read_transcript(std::string_view(text, length), {}, source_or_default(source_name))};
+    });
+}
+
+tf_status tf_read_transcript_with_options(const char* text, size_t length, const char* source_name,
+                                          const tf_transcript_options* options, tf_timeline** out) {
+    return guard([&] {
+        require_non_null(text, "text");
+        require_non_null(out, "out");
+        *out = new tf_timeline{talkface::read_transcript(
+            std::string_view(text, length), options_or_defaults(options), source_or_default(source_name))};
     });
 }
 
@@ -70,6 +93,47 @@ tf_status tf_load_transcript_with(const char* path, const char* encoding, int ke
         options.encoding = encoding != nullptr ? encoding : "";
         options.keep_directions = keep_directions != 0;
         *out = new tf_timeline{talkface::load_transcript(path, options)};
+    });
+}
+
+tf_status tf_load_transcript_with_options(const char* path, const tf_transcript_options* options,
+                                          tf_timeline** out) {
+    return guard([&] {
+        require_non_null(path, "path");
+        require_non_null(out, "out");
+        *out = new tf_timeline{talkface::load_transcript(path, options_or_defaults(options))};
+    });
+}
+
+tf_status tf_transcript_options_create(tf_transcript_options** out) {
+    return guard([&] {
+        require_non_null(out, "out");
+        *out = new tf_transcript_options{};
+    });
+}
+
+void tf_transcript_options_destroy(tf_transcript_options* options) {
+    delete options;
+}
+
+tf_status tf_transcript_options_set_read_pinyin(tf_transcript_options* options, int read_pinyin) {
+    return guard([&] {
+        require_non_null(options, "options");
+        options->options.read_pinyin = read_pinyin != 0;
+    });
+}
+
+tf_status tf_transcript_options_set_keep_directions(tf_transcript_options* options, int keep_directions) {
+    return guard([&] {
+        require_non_null(options, "options");
+        options->options.keep_directions = keep_directions != 0;
+    });
+}
+
+tf_status tf_transcript_options_set_encoding(tf_transcript_options* options, const char* encoding) {
+    return guard([&] {
+        require_non_null(options, "options");
+        options->options.encoding = encoding != nullptr ? encoding : "";
     });
 }
 

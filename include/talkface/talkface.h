@@ -560,14 +560,17 @@ TF_API tf_status tf_frame_renderer_render_rgba(tf_frame_renderer *renderer, cons
  * times once aligned. The JSON form is the SPEC "Contracts" `align` document.
  * ------------------------------------------------------------------------------------------- */
 
-/* Sentences, syllables and the reader's warnings. Created by tf_read_transcript,
- * tf_load_transcript or tf_timeline_create; released by tf_timeline_destroy. Indices are 0-based. */
+/* Sentences, syllables and the reader's warnings. Created by tf_read_transcript, tf_load_transcript
+ * (or their forms that take tf_transcript_options) or tf_timeline_create; released by
+ * tf_timeline_destroy. Indices are 0-based. */
 typedef struct tf_timeline tf_timeline;
 
 /* Reads a transcript (UTF-8 Traditional or Simplified characters, or numbered pinyin; reading fixes
  * such as 行{hang2}) from the `length` bytes at `text` (need not be NUL-terminated) into a new
  * timeline *out, times all 0. Characters without a reading become warnings, not errors.
- * `source_name` names the text in messages; NULL means "<transcript>".
+ * `source_name` names the text in messages; NULL means "<transcript>". Read with the defaults of
+ * tf_transcript_options (pinyin read, stage directions left out); tf_read_transcript_with_options
+ * takes others.
  * Errors: TF_ERR_PARSE naming source:line:column (invalid UTF-8, a bad reading fix);
  *         TF_ERR_INVALID_ARGUMENT if text or out is NULL. */
 TF_API tf_status tf_read_transcript(const char *text, size_t length, const char *source_name,
@@ -586,11 +589,41 @@ TF_API tf_status tf_load_transcript(const char *path, tf_timeline **out);
 /* tf_load_transcript of a file in `encoding` when it has no byte order mark: any name iconv
  * knows, "gb18030" (GBK, GB2312), "big5", "big5-hkscs", "utf-16le", ...; NULL or "" means UTF-8.
  * keep_directions non-zero reads stage directions and speaker labels as text.
+ * (tf_load_transcript_with_options takes these and the other options of a tf_transcript_options.)
  * Errors: as tf_load_transcript; TF_ERR_INVALID_ARGUMENT naming "encoding" for a name iconv does
  *         not know; TF_ERR_PARSE naming the line, column and byte offset where the bytes stop
  *         being text in `encoding`. */
 TF_API tf_status tf_load_transcript_with(const char *path, const char *encoding, int keep_directions,
                                          tf_timeline **out);
+
+/* How a transcript is read (talkface::TranscriptOptions). Created by tf_transcript_options_create
+ * with the defaults (pinyin read as syllables, stage directions and speaker labels left out, UTF-8),
+ * released by tf_transcript_options_destroy. A setter fails (TF_ERR_INVALID_ARGUMENT) only on a
+ * NULL options; the encoding is checked when a file is read. */
+typedef struct tf_transcript_options tf_transcript_options;
+
+TF_API tf_status tf_transcript_options_create(tf_transcript_options **out);
+/* Releases the options; NULL is allowed. */
+TF_API void tf_transcript_options_destroy(tf_transcript_options *options);
+/* Non-zero (the default) reads runs of Latin letters that spell Mandarin syllables ("ni3 hao3",
+ * "nihao") as syllables; 0 reads them as letters or English words like any other Latin. */
+TF_API tf_status tf_transcript_options_set_read_pinyin(tf_transcript_options *options, int read_pinyin);
+/* Non-zero reads stage directions and speaker labels as text; 0 (the default) leaves them out with
+ * a warning (docs/transcripts.md). */
+TF_API tf_status tf_transcript_options_set_keep_directions(tf_transcript_options *options, int keep_directions);
+/* A file's encoding when it has no byte order mark, as tf_load_transcript_with takes it (NULL or "":
+ * UTF-8). Copied. Only files are decoded: tf_read_transcript_with_options reads UTF-8 whatever it says. */
+TF_API tf_status tf_transcript_options_set_encoding(tf_transcript_options *options, const char *encoding);
+
+/* tf_read_transcript read as `options` say (NULL: the defaults, as tf_read_transcript).
+ * Errors: as tf_read_transcript. */
+TF_API tf_status tf_read_transcript_with_options(const char *text, size_t length, const char *source_name,
+                                                 const tf_transcript_options *options, tf_timeline **out);
+
+/* tf_load_transcript read as `options` say (NULL: the defaults, as tf_load_transcript).
+ * Errors: as tf_load_transcript_with. */
+TF_API tf_status tf_load_transcript_with_options(const char *path, const tf_transcript_options *options,
+                                                 tf_timeline **out);
 
 /* A new empty timeline, to fill with tf_timeline_add_sentence / _add_syllable (a timeline read
  * from an `align` JSON document, say). Errors: TF_ERR_INVALID_ARGUMENT if out is NULL. */

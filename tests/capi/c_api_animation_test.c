@@ -229,6 +229,82 @@ static int test_a_legacy_encoding_is_named_or_refused(void) {
     return failures;
 }
 
+/* The first syllable's pinyin of `text` read with `options`, copied into out[16] ("" on failure). */
+static void first_pinyin(const char* text, const tf_transcript_options* options, char out[16]) {
+    tf_timeline* timeline = NULL;
+    const char* pinyin = NULL;
+    out[0] = '\0';
+    if (tf_read_transcript_with_options(text, strlen(text), "t.txt", options, &timeline) == TF_OK &&
+        tf_timeline_syllable(timeline, 0, NULL, &pinyin, NULL) == TF_OK) {
+        strncat(out, pinyin, 15);
+    }
+    tf_timeline_destroy(timeline);
+}
+
+/* Every field of talkface::TranscriptOptions from C: pinyin read or not, stage directions kept or
+ * not, a file's encoding; NULL options are the defaults. */
+static int test_transcript_options_turn_pinyin_and_directions_on_and_off(void) {
+    int failures = 0;
+    tf_transcript_options* options = NULL;
+    tf_timeline* timeline = NULL;
+    char pinyin[16];
+    size_t count = 0;
+    const char* laugh =
+        "\xef\xbc\x88\xe7\xac\x91\xef\xbc\x89\xe4\xbd\xa0\xe5\xa5\xbd\xe3\x80\x82"; /* （笑）你好。 */
+    const char* path = TF_TEST_OUTPUT_DIR "/gb18030_options_transcript.txt";
+    FILE* file = NULL;
+    CHECK_OK(tf_transcript_options_create(&options));
+    first_pinyin("ni3 hao3", NULL, pinyin);
+    CHECK(strcmp(pinyin, "ni3") == 0);
+    first_pinyin("ni3 hao3", options, pinyin);
+    CHECK(strcmp(pinyin, "ni3") == 0);
+    CHECK_OK(tf_transcript_options_set_read_pinyin(options, 0));
+    /* Read as Latin: "ni" is a word no table reads, generic speech. */
+    first_pinyin("ni3 hao3", options, pinyin);
+    CHECK(strcmp(pinyin, TF_GENERIC_SPEECH_PINYIN) == 0);
+    CHECK_OK(tf_transcript_options_set_read_pinyin(options, 1));
+
+    CHECK_OK(tf_read_transcript_with_options(laugh, strlen(laugh), NULL, options, &timeline));
+    CHECK_OK(tf_timeline_syllable_count(timeline, &count));
+    CHECK(count == 2);
+    tf_timeline_destroy(timeline);
+    timeline = NULL;
+    CHECK_OK(tf_transcript_options_set_keep_directions(options, 1));
+    CHECK_OK(tf_read_transcript_with_options(laugh, strlen(laugh), NULL, options, &timeline));
+    CHECK_OK(tf_timeline_syllable_count(timeline, &count));
+    CHECK(count == 3);
+    tf_timeline_destroy(timeline);
+    timeline = NULL;
+
+    file = fopen(path, "wb");
+    CHECK(file != NULL);
+    if (file != NULL) {
+        fputs("\xc4\xe3\xba\xc3\xa1\xa3", file); /* 你好。 in GB18030 */
+        fclose(file);
+        CHECK_FAILS_WITH(tf_load_transcript_with_options(path, options, &timeline), TF_ERR_PARSE,
+                         "it reads as gb18030");
+        CHECK(timeline == NULL);
+        CHECK_OK(tf_transcript_options_set_encoding(options, "gb18030"));
+        CHECK_OK(tf_load_transcript_with_options(path, options, &timeline));
+        CHECK_OK(tf_timeline_syllable_count(timeline, &count));
+        CHECK(count == 2);
+        tf_timeline_destroy(timeline);
+        timeline = NULL;
+        CHECK_OK(tf_transcript_options_set_encoding(options, "klingon"));
+        CHECK_FAILS_WITH(tf_load_transcript_with_options(path, options, &timeline), TF_ERR_INVALID_ARGUMENT,
+                         "encoding");
+    }
+    CHECK_FAILS_WITH(tf_transcript_options_set_read_pinyin(NULL, 0), TF_ERR_INVALID_ARGUMENT, "options");
+    CHECK_FAILS_WITH(tf_transcript_options_create(NULL), TF_ERR_INVALID_ARGUMENT, "out");
+    CHECK_FAILS_WITH(tf_read_transcript_with_options(NULL, 0, NULL, options, &timeline),
+                     TF_ERR_INVALID_ARGUMENT, "text");
+    CHECK_FAILS_WITH(tf_load_transcript_with_options(NULL, options, &timeline), TF_ERR_INVALID_ARGUMENT,
+                     "path");
+    tf_transcript_options_destroy(options);
+    tf_transcript_options_destroy(NULL);
+    return failures;
+}
+
 static int test_built_timeline_reads_back_and_writes_align_json(void) {
     int failures = 0;
     tf_timeline *timeline = new_spoken_timeline();
@@ -873,6 +949,7 @@ int main(void) {
     failures += test_full_width_letters_are_read_as_ascii_letters();
     failures += test_transcript_errors_name_where();
     failures += test_a_legacy_encoding_is_named_or_refused();
+    failures += test_transcript_options_turn_pinyin_and_directions_on_and_off();
     failures += test_paragraphs_of_the_transcript_are_kept();
     failures += test_a_word_no_table_reads_is_generic_speech();
     failures += test_built_timeline_reads_back_and_writes_align_json();
