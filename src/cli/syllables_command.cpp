@@ -18,7 +18,6 @@ namespace {
 struct SyllablesOptions {
     TranscriptArgument transcript;
     bool json = false;
-    bool no_pinyin_input = false;
 };
 
 // One line per character, and one per written form read by rule, with what it became:
@@ -63,9 +62,7 @@ void print_plain(const talkface::Timeline& timeline) {
 }
 
 void run_syllables(const SyllablesOptions& options) {
-    talkface::TranscriptOptions transcript_options = options.transcript.options;
-    transcript_options.read_pinyin = !options.no_pinyin_input;
-    const auto timeline = talkface::load_transcript(options.transcript.path, transcript_options);
+    const auto timeline = talkface::load_transcript(options.transcript.path, options.transcript.options);
     if (options.json) {
         talkface::TimelineJsonOptions json_options;
         json_options.with_times = false;
@@ -92,8 +89,6 @@ void setup_syllables_command(CLI::App& app) {
                         "Print the timeline JSON without times: {\"version\":1, \"sentences\":[{text}], "
                         "\"syllables\":[{text,pinyin,sentence,pause_after,generic_speech (only when true)}], "
                         "\"warnings\":[...]}");
-    syllables->add_flag("--no-pinyin-input", options->no_pinyin_input,
-                        "Read Latin letters as letters or English words, never as pinyin");
     syllables->callback([options] { run_syllables(*options); });
 }
 

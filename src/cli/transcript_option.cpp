@@ -15,6 +15,9 @@ CLI::Option* add_transcript_argument(CLI::App& command, TranscriptArgument& tran
         "--keep-directions", transcript.options.keep_directions,
         "Say a script's stage directions, （笑） [掌声] 【音乐】, and its speakers' labels at line "
         "starts, 主持人： A:, which are otherwise left out with a warning (docs/transcripts.md)");
+    command.add_flag_callback(
+        "--no-pinyin-input", [&transcript] { transcript.options.read_pinyin = false; },
+        "Read Latin letters as letters or English words, never as pinyin (ni3 hao3, nihao)");
     return positional;
 }
 

@@ -348,3 +348,21 @@ def test_a_stale_wav_header_is_read_whole_and_said(tmp_path):
     table = run("align", audio, transcript, "--quiet")
     assert table.returncode == 0, table.stderr
     assert f"talkface: warning: {audio}: its header states 1.5 s" in table.stderr
+
+
+@pytest.mark.parametrize("command", ["align", "keyframes", "export", "animate", "video", "syllables"])
+def test_every_command_that_reads_a_transcript_can_read_latin_never_as_pinyin(command):
+    # TranscriptOptions::read_pinyin, as tf_transcript_options_set_read_pinyin and read_pinyin=False.
+    assert "--no-pinyin-input" in run(command, "--help").stdout
+
+
+def test_no_pinyin_input_aligns_latin_letters_as_letters_or_words(tmp_path):
+    audio, _ = clip("one_sentence")
+    transcript = tmp_path / "pinyin.txt"
+    transcript.write_text("ni3 hao3", encoding="utf-8")
+    as_pinyin = run("align", audio, transcript, "--check", "off", "--json", "--quiet")
+    as_latin = run("align", audio, transcript, "--check", "off", "--json", "--quiet", "--no-pinyin-input")
+    assert as_pinyin.returncode == 0 and as_latin.returncode == 0, as_pinyin.stderr + as_latin.stderr
+    assert [s["pinyin"] for s in json.loads(as_pinyin.stdout)["syllables"]] == ["ni3", "hao3"]
+    # "ni" is a word no table reads (generic speech), 3 the number 三.
+    assert [s["pinyin"] for s in json.loads(as_latin.stdout)["syllables"]][:2] == ["de5", "san1"]
