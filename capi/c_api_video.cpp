@@ -161,6 +161,21 @@ tf_status tf_video_look_set_face_look(tf_video_look* look, tf_face_look face_loo
     });
 }
 
+tf_status tf_video_look_set_clothes(tf_video_look* look, int draw_clothes, tf_rgb colour) {
+    return guard([&] {
+        require_non_null(look, "look");
+        look->options.frame.draw_clothes = draw_clothes != 0;
+        look->options.frame.clothes = talkface::capi::to_rgb(colour);
+    });
+}
+
+tf_status tf_video_look_set_stroke_width_in_d(tf_video_look* look, double stroke_width_in_d) {
+    return guard([&] {
+        require_non_null(look, "look");
+        look->options.frame.stroke_width_in_d = stroke_width_in_d;
+    });
+}
+
 tf_status tf_video_look_set_background(tf_video_look* look, const tf_rgb* colour, const char* image_path) {
     return guard([&] {
         require_non_null(look, "look");

@@ -1546,6 +1546,11 @@ TF_API tf_status tf_video_look_set_face_placement(tf_video_look *look, const dou
 /* How the face's shapes are painted. Errors: TF_ERR_INVALID_ARGUMENT if look is NULL or face_look is
  * not a tf_face_look. */
 TF_API tf_status tf_video_look_set_face_look(tf_video_look *look, tf_face_look face_look);
+/* Draws the clothes layer (neck and shoulders) if draw_clothes is non-zero (the default), in `colour`
+ * (#2f4f7f by default), as tf_frame_options_set_clothes. */
+TF_API tf_status tf_video_look_set_clothes(tf_video_look *look, int draw_clothes, tf_rgb colour);
+/* The outline width, in units of d (0.025 by default; > 0, checked when the video is made). */
+TF_API tf_status tf_video_look_set_stroke_width_in_d(tf_video_look *look, double stroke_width_in_d);
 
 /* Writes a video of `face` playing `animation` with the speech at audio_path (NULL or "": silent):
  * frame k shows the animation at k / fps, as many frames as cover the speech, so the file lasts as

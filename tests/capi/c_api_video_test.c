@@ -172,12 +172,35 @@ static int cancel_at_once(double fraction, const char *stage, void *user_data) {
     return 1;
 }
 
+/* The default face's animation of `seconds` of silence, or NULL. */
+static tf_animation* silent_animation(const tf_face_model* face, double seconds) {
+    tf_timeline* timeline = NULL;
+    tf_expression_simulator* simulator = NULL;
+    tf_animation* animation = NULL;
+    if (tf_timeline_create(&timeline) == TF_OK && tf_timeline_set_duration_s(timeline, seconds) == TF_OK &&
+        tf_expression_simulator_create(timeline, 3, "normal", &simulator) == TF_OK) {
+        tf_animate(face, timeline, simulator, NULL, &animation);
+    }
+    tf_expression_simulator_destroy(simulator);
+    tf_timeline_destroy(timeline);
+    return animation;
+}
+
+/* 160 x 90 at 10 fps, or NULL. */
+static tf_video_options* small_video_options(void) {
+    tf_video_options* options = NULL;
+    if (tf_video_options_create(&options) == TF_OK && (tf_video_options_set_size(options, 160, 90) != TF_OK ||
+                                                       tf_video_options_set_fps(options, 10.0) != TF_OK)) {
+        tf_video_options_destroy(options);
+        options = NULL;
+    }
+    return options;
+}
+
 static int test_renders_the_face(void) {
     int failures = 0;
     char path[1024];
-    tf_face_model *face = NULL;
-    tf_timeline *timeline = NULL;
-    tf_expression_simulator *simulator = NULL;
+    tf_face_model* face = NULL;
     tf_animation *animation = NULL;
     tf_video_options *options = NULL;
     tf_video_look *look = NULL;
@@ -187,13 +210,9 @@ static int test_renders_the_face(void) {
     snprintf(path, sizeof path, "%s/c_api_face_video.webm", TF_TEST_OUTPUT_DIR);
     remove(path);
     CHECK_OK(tf_face_model_default(&face));
-    CHECK_OK(tf_timeline_create(&timeline));
-    CHECK_OK(tf_timeline_set_duration_s(timeline, 0.5));
-    CHECK_OK(tf_expression_simulator_create(timeline, 3, "normal", &simulator));
-    CHECK_OK(tf_animate(face, timeline, simulator, NULL, &animation));
-    CHECK_OK(tf_video_options_create(&options));
-    CHECK_OK(tf_video_options_set_size(options, 160, 90));
-    CHECK_OK(tf_video_options_set_fps(options, 10.0));
+    animation = silent_animation(face, 0.5);
+    options = small_video_options();
+    CHECK(animation != NULL && options != NULL);
     CHECK_OK(tf_video_look_create(&look));
     CHECK_OK(tf_video_look_set_layout(look, TF_FRAME_LAYOUT_ANNOUNCER));
     CHECK_OK(tf_video_look_set_face_look(look, TF_FACE_LOOK_FLAT));
@@ -214,8 +233,62 @@ static int test_renders_the_face(void) {
     tf_video_look_destroy(NULL);
     tf_video_options_destroy(options);
     tf_animation_destroy(animation);
-    tf_expression_simulator_destroy(simulator);
-    tf_timeline_destroy(timeline);
+    tf_face_model_destroy(face);
+    return failures;
+}
+
+/* 1 if the two files' bytes differ (or either cannot be read). */
+static int files_differ(const char* a, const char* b) {
+    FILE* file_a = fopen(a, "rb");
+    FILE* file_b = fopen(b, "rb");
+    int differ = file_a == NULL || file_b == NULL;
+    while (!differ) {
+        const int byte_a = fgetc(file_a);
+        const int byte_b = fgetc(file_b);
+        differ = byte_a != byte_b;
+        if (byte_a == EOF) break;
+    }
+    if (file_a != NULL) fclose(file_a);
+    if (file_b != NULL) fclose(file_b);
+    return differ;
+}
+
+/* The look's clothes and outline width reach the frames: one frame as PNG with the clothes and one
+ * without differ, and an outline width that is not > 0 is refused naming it. */
+static int test_the_look_sets_clothes_and_outline(void) {
+    int failures = 0;
+    char with_clothes[1024], without_clothes[1024], with_frame[1024], without_frame[1024];
+    tf_face_model* face = NULL;
+    tf_animation* animation = NULL;
+    tf_video_options* options = NULL;
+    tf_video_look* look = NULL;
+    const tf_rgb clothes = {200, 40, 40};
+    snprintf(with_clothes, sizeof with_clothes, "%s/c_api_clothes.png", TF_TEST_OUTPUT_DIR);
+    snprintf(without_clothes, sizeof without_clothes, "%s/c_api_no_clothes.png", TF_TEST_OUTPUT_DIR);
+    snprintf(with_frame, sizeof with_frame, "%s/c_api_clothes-000000.png", TF_TEST_OUTPUT_DIR);
+    snprintf(without_frame, sizeof without_frame, "%s/c_api_no_clothes-000000.png", TF_TEST_OUTPUT_DIR);
+    CHECK_OK(tf_face_model_default(&face));
+    animation = silent_animation(face, 0.1);
+    options = small_video_options();
+    CHECK(animation != NULL && options != NULL);
+    CHECK_OK(tf_video_look_create(&look));
+    CHECK_OK(tf_video_look_set_layout(look, TF_FRAME_LAYOUT_FACE));
+    CHECK_OK(tf_video_look_set_clothes(look, 1, clothes));
+    CHECK_OK(tf_render_video(with_clothes, face, animation, NULL, options, look, NULL, NULL));
+    CHECK_OK(tf_video_look_set_clothes(look, 0, clothes));
+    CHECK_OK(tf_render_video(without_clothes, face, animation, NULL, options, look, NULL, NULL));
+    CHECK(file_size(with_frame) > 100 && file_size(without_frame) > 100);
+    CHECK(files_differ(with_frame, without_frame));
+    CHECK_OK(tf_video_look_set_stroke_width_in_d(look, -1.0));
+    CHECK_FAILS_WITH(tf_render_video(with_clothes, face, animation, NULL, options, look, NULL, NULL),
+                     TF_ERR_INVALID_ARGUMENT, "stroke_width_in_d");
+    CHECK_FAILS_WITH(tf_video_look_set_clothes(NULL, 1, clothes), TF_ERR_INVALID_ARGUMENT, "look");
+    CHECK_FAILS_WITH(tf_video_look_set_stroke_width_in_d(NULL, 0.02), TF_ERR_INVALID_ARGUMENT, "look");
+    remove(with_frame);
+    remove(without_frame);
+    tf_video_look_destroy(look);
+    tf_video_options_destroy(options);
+    tf_animation_destroy(animation);
     tf_face_model_destroy(face);
     return failures;
 }
@@ -225,6 +298,7 @@ int main(void) {
     failures += test_writes_an_mp4();
     failures += test_writes_a_gif();
     failures += test_renders_the_face();
+    failures += test_the_look_sets_clothes_and_outline();
     failures += test_refusals_name_the_problem();
     if (failures != 0) fprintf(stderr, "%d check(s) failed\n", failures);
     return failures == 0 ? 0 : 1;

@@ -139,6 +139,28 @@ def test_the_flat_look_reaches_the_frames(face, tmp_path):
     assert numpy.abs(outlined - flat).max(axis=2).astype(bool).sum() > 200
 
 
+def test_the_clothes_and_the_outline_width_reach_the_frames(face, tmp_path):
+    # FrameOptions' clothes and outline, as tf_video_look_set_clothes and _set_stroke_width_in_d set them.
+    options = talkface.FaceVideoOptions(draw_clothes=False, clothes="#c82828", stroke_width_in_d=0.05)
+    assert not options.draw_clothes and options.clothes == "#c82828" and options.stroke_width_in_d == 0.05
+    defaults = talkface.FaceVideoOptions()
+    assert defaults.draw_clothes and defaults.clothes == "#2f4f7f" and defaults.stroke_width_in_d == 0.025
+    animation = animation_of(face, 0.1)
+    frames = {}
+    for draw_clothes in (True, False):
+        options = small(width=320, height=180)
+        options.draw_clothes = draw_clothes
+        folder = tmp_path / str(draw_clothes)
+        folder.mkdir()
+        talkface.render_video(str(folder / "face.png"), face, animation, "", options)
+        frames[draw_clothes] = numpy.asarray(Image.open(folder / "face-000000.png").convert("RGB")).astype(int)
+    assert numpy.abs(frames[True] - frames[False]).max(axis=2).astype(bool).sum() > 200
+    options = small()
+    options.stroke_width_in_d = -1.0
+    with pytest.raises(talkface.InvalidArgument, match="stroke_width_in_d"):
+        talkface.render_video(str(tmp_path / "bad.png"), face, animation, "", options)
+
+
 RSVG_CONVERT = shutil.which("rsvg-convert")
 SPEECH = pathlib.Path(__file__).resolve().parents[2] / "samples" / "speech" / "demo.ogg"
 STAGE = "#1d3b5c"

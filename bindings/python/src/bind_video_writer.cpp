@@ -247,7 +247,8 @@ Example:
 )doc")
         .def(py::init([](const VideoOptions& video, FrameLayout layout, std::optional<Rgb> background,
                          const std::string& background_image_path, std::optional<Point2> face_origin_px,
-                         double face_d_px, FaceLook look) {
+                         double face_d_px, FaceLook look, bool draw_clothes, Rgb clothes,
+                         double stroke_width_in_d) {
                  FaceVideoOptions options;
                  options.video = video;
                  options.frame.layout = layout;
@@ -255,12 +256,18 @@ Example:
                  options.frame.face_origin_px = face_origin_px;
                  options.frame.face_d_px = face_d_px;
                  options.frame.look = look;
+                 options.frame.draw_clothes = draw_clothes;
+                 options.frame.clothes = clothes;
+                 options.frame.stroke_width_in_d = stroke_width_in_d;
                  options.background_image_path = background_image_path;
                  return options;
              }),
              py::arg("video") = VideoOptions{}, py::arg("layout") = FrameOptions{}.layout,
              py::arg("background") = FrameOptions{}.background, py::arg("background_image_path") = "",
-             py::arg("face_origin_px") = py::none(), py::arg("face_d_px") = 0.0, py::arg("look") = FrameOptions{}.look,
+             py::arg("face_origin_px") = py::none(), py::arg("face_d_px") = 0.0,
+             py::arg("look") = FrameOptions{}.look, py::arg("draw_clothes") = FrameOptions{}.draw_clothes,
+             py::arg("clothes") = FrameOptions{}.clothes,
+             py::arg("stroke_width_in_d") = FrameOptions{}.stroke_width_in_d,
              R"doc(
 Args:
     video (VideoOptions): size, frame rate, quality, transparency.
@@ -271,6 +278,9 @@ Args:
         neck) stands, frame pixels; None: where the announcer page stands it.
     face_d_px (float): announcer: the face's eye distance in frame pixels; 0: as the page sizes it.
     look (FaceLook): outlined (the thesis's cartoon, the default) or flat (no outlines).
+    draw_clothes (bool): draw the clothes layer (neck and shoulders).
+    clothes (str): the clothes' colour, "#rrggbb".
+    stroke_width_in_d (float): outline width, in units of d (> 0).
 
 Raises:
     talkface.InvalidArgument: a malformed colour. Options out of range are refused by render_video.
@@ -279,7 +289,8 @@ Example:
     >>> talkface.FaceVideoOptions(layout=talkface.FrameLayout.face, background=None)
 )doc")
         .def_readwrite("video", &FaceVideoOptions::video, "size, frame rate, quality, transparency")
-        .def_readwrite("background_image_path", &FaceVideoOptions::background_image_path, "a picture over the colour")
+        .def_readwrite("background_image_path", &FaceVideoOptions::background_image_path,
+                       "a picture over the colour")
         .def_property(
             "background", [](const FaceVideoOptions& o) { return o.frame.background; },
             [](FaceVideoOptions& o, std::optional<Rgb> colour) { o.frame.background = colour; },
@@ -293,10 +304,24 @@ Example:
             "(x, y) of the rotation origin in frame pixels, or None")
         .def_property(
             "face_d_px", [](const FaceVideoOptions& o) { return o.frame.face_d_px; },
-            [](FaceVideoOptions& o, double d) { o.frame.face_d_px = d; }, "the eye distance in frame pixels; 0: as the page")
+            [](FaceVideoOptions& o, double d) { o.frame.face_d_px = d; },
+            "the eye distance in frame pixels; 0: as the page")
         .def_property(
             "look", [](const FaceVideoOptions& o) { return o.frame.look; },
-            [](FaceVideoOptions& o, FaceLook look) { o.frame.look = look; }, "how the shapes are painted (FaceLook)");
+            [](FaceVideoOptions& o, FaceLook look) { o.frame.look = look; },
+            "how the shapes are painted (FaceLook)")
+        .def_property(
+            "draw_clothes", [](const FaceVideoOptions& o) { return o.frame.draw_clothes; },
+            [](FaceVideoOptions& o, bool draw) { o.frame.draw_clothes = draw; },
+            "the clothes layer (neck and shoulders)")
+        .def_property(
+            "clothes", [](const FaceVideoOptions& o) { return o.frame.clothes; },
+            [](FaceVideoOptions& o, Rgb colour) { o.frame.clothes = colour; },
+            "the clothes' colour, \"#rrggbb\"")
+        .def_property(
+            "stroke_width_in_d", [](const FaceVideoOptions& o) { return o.frame.stroke_width_in_d; },
+            [](FaceVideoOptions& o, double width) { o.frame.stroke_width_in_d = width; },
+            "outline width, in units of d");
 
     m.def(
         "render_video",

@@ -691,9 +691,13 @@ class FaceVideoOptions:
     face_origin_px: tuple[float, float] | None
     face_d_px: float
     look: FaceLook
+    draw_clothes: bool
+    clothes: str
+    stroke_width_in_d: float
     def __init__(self, video: VideoOptions = ..., layout: FrameLayout = ..., background: str | None = "#1d3b5c",
                  background_image_path: str = "", face_origin_px: tuple[float, float] | None = None,
-                 face_d_px: float = 0.0, look: FaceLook = ...) -> None: ...
+                 face_d_px: float = 0.0, look: FaceLook = ..., draw_clothes: bool = True,
+                 clothes: str = "#2f4f7f", stroke_width_in_d: float = 0.025) -> None: ...
 
 def render_video(path: str, face: FaceModel, animation: Animation, audio_path: str = "",
                  options: FaceVideoOptions = ...,
