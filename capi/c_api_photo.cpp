@@ -90,6 +90,13 @@ tf_status tf_photo_options_set_dlib_model_path(tf_photo_options* options, const 
     });
 }
 
+tf_status tf_photo_options_set_min_face_width_px(tf_photo_options* options, int min_face_width_px) {
+    return guard([&] {
+        require_non_null(options, "options");
+        options->options.min_face_width_px = min_face_width_px;
+    });
+}
+
 tf_status tf_photo_result_from_file(const char* path, const tf_photo_options* options, tf_photo_result** out) {
     return guard([&] {
         require_non_null(path, "path");

@@ -60,6 +60,10 @@ TF_API tf_status tf_photo_options_set_face_index(tf_photo_options *options, int 
 TF_API tf_status tf_photo_options_set_cascade_dir(tf_photo_options *options, const char *folder);
 /* dlib's shape_predictor_68_face_landmarks.dat (copied). Errors: TF_ERR_INVALID_ARGUMENT for NULL. */
 TF_API tf_status tf_photo_options_set_dlib_model_path(tf_photo_options *options, const char *path);
+/* The smallest face accepted, as its detected width in pixels (64 by default; at least 16, which the
+ * photo's reading checks, naming min_face_width_px): a smaller face is refused naming its width.
+ * Errors: TF_ERR_INVALID_ARGUMENT for a NULL options. */
+TF_API tf_status tf_photo_options_set_min_face_width_px(tf_photo_options *options, int min_face_width_px);
 
 /* What a photo gave: the face and the confidence of every located feature. Created by
  * tf_photo_result_from_file / _from_pixels, released by tf_photo_result_destroy. */

@@ -8,6 +8,8 @@
 
 #include <string>
 
+#include <talkface/face_from_photo.hpp>
+
 namespace talkface_cli {
 
 struct FaceFromPhotoOptions {
@@ -18,6 +20,7 @@ struct FaceFromPhotoOptions {
     int face_index = -1;
     std::string cascade_dir;
     std::string dlib_model_path;
+    int min_face_width_px = talkface::PhotoOptions{}.min_face_width_px;
     bool quiet = false;
 };
 

@@ -76,6 +76,11 @@ void setup_face_from_photo_command(CLI::App& app) {
         ->add_option("--dlib-model", options->dlib_model_path,
                      "dlib's shape_predictor_68_face_landmarks.dat (default: libdlib-data's)")
         ->check(CLI::ExistingFile);
+    command
+        ->add_option("--min-face-width", options->min_face_width_px,
+                     "The smallest face accepted, its width in the photo's pixels (at least 16)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     command->add_flag("-q,--quiet", options->quiet, "Do not list the located features on stderr");
     command->callback([options] { load_face_from_photo()(*options); });
 }

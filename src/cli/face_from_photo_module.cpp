@@ -16,6 +16,7 @@ extern "C" __attribute__((visibility("default"))) void talkface_cli_face_from_ph
     photo_options.face_index = options.face_index;
     photo_options.cascade_dir = options.cascade_dir;
     photo_options.dlib_model_path = options.dlib_model_path;
+    photo_options.min_face_width_px = options.min_face_width_px;
     const talkface::PhotoFaceResult result =
         talkface::face_from_photo_file(options.photo_path, photo_options);
     // The overlay is written before the face, and both only after extraction has succeeded.

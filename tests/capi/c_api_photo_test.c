@@ -52,6 +52,17 @@ static int photo_file(void) {
     CHECK_OK(tf_face_model_from_photo_file(kAstronaut, NULL, &face));
     CHECK(face != NULL);
     tf_face_model_destroy(face);
+    face = NULL;
+    /* The astronaut's face is narrower than 400 px: refused naming the width asked for; below 16 is
+     * refused naming the option. */
+    CHECK_OK(tf_photo_options_set_min_face_width_px(options, 400));
+    CHECK_FAILS_WITH(tf_face_model_from_photo_file(kAstronaut, options, &face), TF_ERR_INVALID_ARGUMENT,
+                     "at least 400");
+    CHECK_OK(tf_photo_options_set_min_face_width_px(options, 8));
+    CHECK_FAILS_WITH(tf_face_model_from_photo_file(kAstronaut, options, &face), TF_ERR_INVALID_ARGUMENT,
+                     "min_face_width_px");
+    CHECK(face == NULL);
+    CHECK_FAILS_WITH(tf_photo_options_set_min_face_width_px(NULL, 64), TF_ERR_INVALID_ARGUMENT, "options");
     tf_photo_result_destroy(result);
     tf_photo_options_destroy(options);
     return failures;

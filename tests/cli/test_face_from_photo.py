@@ -81,6 +81,16 @@ def test_a_truncated_photo_is_named_with_exit_1(tmp_path):
     assert f"{truncated}: broken PNG: the file ends before the image does (truncated)" in result.stderr
 
 
+@pytest.mark.skipif(not os.path.exists(ASTRONAUT), reason="install Debian's python3-skimage")
+def test_the_smallest_face_accepted_can_be_set(tmp_path):
+    face = tmp_path / "face.xml"
+    result = run("face-from-photo", ASTRONAUT, "-o", face, "--locator", "thesis", "--min-face-width", "400")
+    assert result.returncode == 1
+    assert "at least 400" in result.stderr
+    assert not face.exists()
+    assert run("face-from-photo", ASTRONAUT, "-o", face, "--min-face-width", "0").returncode == 2
+
+
 def test_an_unknown_locator_is_a_usage_error(tmp_path):
     result = run("face-from-photo", ASTRONAUT, "-o", tmp_path / "f.xml", "--locator", "haar")
     assert result.returncode == 2

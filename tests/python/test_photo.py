@@ -74,6 +74,16 @@ def test_a_tiny_face_is_refused_as_too_small():
 
 
 @needs_photo
+def test_the_smallest_face_accepted_can_be_set():
+    # PhotoOptions::min_face_width_px, as tf_photo_options_set_min_face_width_px and --min-face-width.
+    with pytest.raises(talkface.InvalidArgument, match="at least 400"):
+        talkface.face_from_photo(ASTRONAUT, locator="thesis", min_face_width_px=400)
+    with pytest.raises(talkface.InvalidArgument, match="min_face_width_px"):
+        talkface.FaceModel.from_photo(ASTRONAUT, min_face_width_px=8)
+    assert talkface.face_from_photo(ASTRONAUT, locator="thesis", min_face_width_px=16).face.name == "photo"
+
+
+@needs_photo
 def test_two_faces_are_refused_until_face_index_picks_one():
     two = numpy.ascontiguousarray(numpy.hstack([astronaut_pixels(), astronaut_pixels()]))
     with pytest.raises(talkface.InvalidArgument, match=r"2 faces found.*pass face_index 0\.\.1"):

@@ -16,12 +16,13 @@ namespace {
 using Photo = std::variant<std::filesystem::path, py::array>;
 
 PhotoOptions make_options(const std::string& locator, int face_index, const std::string& cascade_dir,
-                          const std::string& dlib_model_path) {
+                          const std::string& dlib_model_path, int min_face_width_px) {
     PhotoOptions options;
     options.locator = photo_locator_from_name(locator);
     options.face_index = face_index;
     options.cascade_dir = cascade_dir;
     options.dlib_model_path = dlib_model_path;
+    options.min_face_width_px = min_face_width_px;
     return options;
 }
 
@@ -66,6 +67,7 @@ Args:
     face_index: which face when the photo shows several, 0 = leftmost; -1 refuses such a photo.
     cascade_dir: folder of OpenCV's Haar cascades; "" = opencv-data's.
     dlib_model_path: dlib's shape_predictor_68_face_landmarks.dat; "" = libdlib-data's.
+    min_face_width_px: the smallest face accepted, its detected width in pixels (at least 16).
 
 Raises:
     talkface.InvalidArgument (a ValueError) naming the photo: no face, several faces, face too small,
@@ -149,14 +151,17 @@ Example:
     m.def(
         "face_from_photo",
         [](const Photo& photo, const std::string& locator, int face_index, const std::string& cascade_dir,
-           const std::string& dlib_model_path) {
-            return extract(photo, make_options(locator, face_index, cascade_dir, dlib_model_path));
+           const std::string& dlib_model_path, int min_face_width_px) {
+            return extract(
+                photo, make_options(locator, face_index, cascade_dir, dlib_model_path, min_face_width_px));
         },
         py::arg("photo"), py::kw_only(), py::arg("locator") = "automatic", py::arg("face_index") = -1,
         py::arg("cascade_dir") = "", py::arg("dlib_model_path") = "",
+        py::arg("min_face_width_px") = PhotoOptions{}.min_face_width_px,
         (std::string(R"doc(
 A face model from a frontal photo of a neutral face, with the confidence of every feature.
-)doc") + kPhotoArguments + R"doc(
+)doc") + kPhotoArguments +
+         R"doc(
 Example:
     >>> result = talkface.face_from_photo("me.jpg", locator="thesis")
     >>> [f.name for f in result.features if f.from_prior]
@@ -167,15 +172,19 @@ Example:
     m.def(
         "face_model_from_photo",
         [](const Photo& photo, const std::string& locator, int face_index, const std::string& cascade_dir,
-           const std::string& dlib_model_path) {
-            return extract(photo, make_options(locator, face_index, cascade_dir, dlib_model_path)).face;
+           const std::string& dlib_model_path, int min_face_width_px) {
+            return extract(photo,
+                           make_options(locator, face_index, cascade_dir, dlib_model_path, min_face_width_px))
+                .face;
         },
-        py::arg("photo"), py::kw_only(), py::arg("locator") = "automatic",
-        py::arg("face_index") = -1, py::arg("cascade_dir") = "", py::arg("dlib_model_path") = "",
+        py::arg("photo"), py::kw_only(), py::arg("locator") = "automatic", py::arg("face_index") = -1,
+        py::arg("cascade_dir") = "", py::arg("dlib_model_path") = "",
+        py::arg("min_face_width_px") = PhotoOptions{}.min_face_width_px,
         (std::string(R"doc(
 The face model (photo pixels) of a frontal photo of a neutral face; talkface.face_from_photo() also
 gives each feature's confidence.
-)doc") + kPhotoArguments + R"doc(
+)doc") + kPhotoArguments +
+         R"doc(
 Example:
     >>> face = talkface.FaceModel.from_photo("me.jpg")
     >>> face.save("me.xml")
