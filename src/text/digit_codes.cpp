@@ -565,8 +565,9 @@ bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, 
         return true;
     if (digits.size() != 3) return false;
     auto end = number.end;
-    // Past the rest of a list of such numbers (985、211高校) to the word they share.
-    while (value_at(text, end) == 0x3001 /*、*/ && is_digit_at(text, end + 1)) {
+    // Past the rest of a list of such numbers (985、211高校) to the word they share; a slash lists them too
+    // (985/211高校 九八五二一一; session 32: 二百一十一分之九百八十五, a fraction).
+    while (is_one_of(ascii_form(value_at(text, end)), U"\u3001/") && is_digit_at(text, end + 1)) {
         auto k = end + 1;
         if (digits_from(text, k).size() != 3) return false;
         end = k;
@@ -574,7 +575,8 @@ bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, 
     const auto after = text_between(text, end, end + 2);
     for (const std::string_view word : {"工程", "计划", "計劃", "高校", "院校", "名校", "大学", "大學"})
         if (after == word) return true;
-    return false;
+    // Or the third such name, 双一流, which the schools of the list share with them (985/211双一流高校).
+    return starts_with_any(text_between(text, end, end + 3), {"双一流", "雙一流"});
 }
 
 bool follows_software_name(const std::vector<CodePoint>& text, std::size_t start) {

@@ -154,7 +154,9 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         if (auto dimensions = read_dimensions(text, start, number)) return dimensions;
     if (is_bare)
         if (auto form = read_unsigned_form(text, start, i, number, context)) return form;
-    if (auto pair = read_slashed_pair(text, start, number, sign_words, currency)) return pair;
+    // A code's slash lists the next code (985/211高校), no fraction's.
+    if (!context.is_code)
+        if (auto pair = read_slashed_pair(text, start, number, sign_words, currency)) return pair;
     return read_quantity(text, start, number, sign_words, currency, context);
 }
 
