@@ -149,6 +149,15 @@ std::vector<Syllable> TranscriptReader::latin_word_syllables(const std::string& 
     // I E); no part of them is a word to say.
     const bool is_acronym_with_small_end = word.size() >= 3 && word.back() >= 'a' && word.back() <= 'z' &&
                                            detail::is_all_capitals(word.substr(0, word.size() - 1));
+    // A plural's s after two capitals or more (SDGs, GPUs, ETFs) is the s a reader says after the letters, as
+    // an English word's final s is (stores si5), not the letter's name (session 32: ai si).
+    constexpr std::size_t kFewestPluralCapitals = 2;
+    if (is_acronym_with_small_end && word.back() == 's' && word.size() > kFewestPluralCapitals &&
+        !detail::english_word_syllables(word)) {
+        auto syllables = detail::letter_syllables(word.substr(0, word.size() - 1));
+        syllables.emplace_back("si5");
+        return said_syllables(syllables);
+    }
     if (is_acronym_with_small_end && !detail::english_word_syllables(word))
         return said_syllables(detail::letter_syllables(word));
     if (detail::has_inner_acronym(word)) return read_word_parts(word, at);

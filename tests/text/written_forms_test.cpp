@@ -2181,4 +2181,16 @@ TEST_SUITE("written forms") {
             {"完成了985/1000", "完成了一千分之九百八十五"},
         });
     }
+
+    TEST_CASE("a plural's s after an acronym's capitals is the s of a plural") {
+        // The first two rows failed on main 532a7fd (session 32, dev30): the letter's name, ai si.
+        check_cases({
+            {"可持续发展目标SDGs", "可持续发展目标 ai si di ji si"},
+            {"数千块GPUs", "数千块 ji pi you si"},
+            // The limits: an acronym's last small letter that is no plural's (PCIe), and REITs, said as a
+            // word.
+            {"PCIe 5.0", "pi xi ai yi五点零"},
+            {"公募REITs", "公募 rui ci"},
+        });
+    }
 }
