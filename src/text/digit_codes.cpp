@@ -575,8 +575,14 @@ bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, 
     const auto after = text_between(text, end, end + 2);
     for (const std::string_view word : {"工程", "计划", "計劃", "高校", "院校", "名校", "大学", "大學"})
         if (after == word) return true;
-    // Or the third such name, 双一流, which the schools of the list share with them (985/211双一流高校).
-    return starts_with_any(text_between(text, end, end + 3), {"双一流", "雙一流"});
+    // Or the third such name, 双一流, which the schools of the list share with them, listed too or not
+    // (985/211双一流高校, 985/211/双一流高校).
+    if (is_one_of(ascii_form(value_at(text, end)), U"\u3001/")) ++end;
+    return names_top_schools(text, end);
+}
+
+bool names_top_schools(const std::vector<CodePoint>& text, std::size_t k) {
+    return starts_with_any(text_between(text, k, k + 3), {"双一流", "雙一流"});
 }
 
 bool follows_software_name(const std::vector<CodePoint>& text, std::size_t start) {

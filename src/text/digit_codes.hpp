@@ -139,12 +139,17 @@ bool follows_maker_name(const std::vector<CodePoint>& text, std::size_t start);
 //   so is a year in a document's number (国发〔2024〕10号 国发二零二四十号);
 // - the Nikkei's number (日经225 日经二二五, as Japanese and Chinese market news say it; the other
 //   indices count their shares: 沪深300 三百, 标普500 五百);
-// - a programme's number before its word (985高校, 211工程, 863计划), also in a list (985、211高校);
+// - a programme's number before its word (985高校, 211工程, 863计划), also in a list joined by 、 or a
+//   slash (985、211高校, 985/211/双一流高校);
 // - a video's resolution, lines and a p (1080P 一零八零P, 720p);
 // - a battery cell's format, its diameter and length in millimetres, before 电池 电芯 锂电 圆柱
 //   (4680大圆柱电池 四六八零, 18650电芯 一八六五零, 21700电池; session 30: they counted): four or five
 //   digits, not a round thousand.
 bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
+
+// Whether text[k] starts 双一流 (雙一流), the third name of China's top schools after 985 and 211, which a
+// list of the three writes after a slash (985/211/双一流高校) that is no per's.
+bool names_top_schools(const std::vector<CodePoint>& text, std::size_t k);
 
 // A version after a software's name and a space (Python 3.12, iOS 17.12: a word with a small
 // letter), right after a v (v2.15, V3.12) or after 版本 (新版本13.24, 版本号：2.3.10).

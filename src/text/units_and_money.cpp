@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "text/digit_codes.hpp"
 #include "text/written_number_scan.hpp"
 
 namespace talkface::detail {
@@ -211,7 +212,8 @@ std::optional<SpokenForm> read_per_unit(const std::vector<CodePoint>& text, std:
 }
 
 bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i) {
-    return value_at(text, i) == '/' && is_han_at(text, i + 1) && follows_number_and_han_unit(text, i);
+    return value_at(text, i) == '/' && is_han_at(text, i + 1) && follows_number_and_han_unit(text, i) &&
+           !names_top_schools(text, i + 1);
 }
 
 bool slash_joins_sizes(const std::vector<CodePoint>& text, std::size_t i) {

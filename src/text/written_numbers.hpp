@@ -49,7 +49,7 @@ std::optional<SpokenForm> read_per_unit(const std::vector<CodePoint>& text, std:
 
 // True where the slash at text[i] joins two units after a number and is said 每 (25元/公斤
 // 二十五元每公斤, 3次/周): a number, one to three Chinese characters, the slash, a Chinese
-// character. Elsewhere a slash is not said (男/女).
+// character, but 双一流 (a list of top schools, 985/211/双一流). Elsewhere a slash is not said (男/女).
 bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i);
 
 // True where the slash at text[i] joins two sizes of a model in billions of parameters (7B/70B 七B和七十B,

@@ -2171,14 +2171,17 @@ TEST_SUITE("written forms") {
     }
 
     TEST_CASE("school tiers joined by a slash are each said digit by digit") {
-        // The first three rows failed on main 532a7fd (session 32, dev30): a fraction,
-        // 二百一十一分之九百八十五, and before 双一流 counts, 九百八十五二百一十一.
+        // The first four rows failed on main 532a7fd (session 32, dev30): a fraction,
+        // 二百一十一分之九百八十五, before 双一流 counts, 九百八十五二百一十一, and a slash before 双一流 每.
         check_cases({
             {"一所985/211高校", "一所九八五二一一高校"},
             {"一所985/211双一流高校", "一所九八五二一一双一流高校"},
             {"985、211双一流高校", "九八五二一一双一流高校"},
-            // The limit: a slash between numbers no school word follows is a fraction's.
+            {"985/211/双一流高校", "九八五二一一双一流高校"},
+            // The limits: a slash between numbers no school word follows is a fraction's, and one between a
+            // number and a pair's 双 is a price's per.
             {"完成了985/1000", "完成了一千分之九百八十五"},
+            {"袜子10元/双", "袜子十元每双"},
         });
     }
 
