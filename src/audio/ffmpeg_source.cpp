@@ -550,92 +550,129 @@ private:
         }
     }
 
+    // What a decode from a seek read up to the frame it landed on: where that frame's first sample
+    // lies in the reading's counting and how many it converted, and the packets' bytes and last
+    // length, which the reading takes over with the opening.
+    struct SeekLanding {
+        std::int64_t start = 0;
+        std::int64_t frames = 0;
+        std::int64_t packets_end_byte = -1;
+        std::int64_t next_packet_byte = -1;
+        std::int64_t last_packet_duration = 0;
+    };
+
     // The seek of seek_frames, the samples at hand passed over: true where it landed on `frame`.
     bool land_at(std::size_t frame) {
-        // The samples decoded run ahead of those given out by what was cut from the start (an
-        // encoder's delay); a timestamp counts them.
-        const auto cut = static_cast<std::int64_t>(frames_decoded_ - frames_given_);
-        const std::int64_t target = static_cast<std::int64_t>(frame) + cut;
-        const AVRational sample_base{1, sample_rate_hz_};
-        const auto preroll = static_cast<std::int64_t>(kSeekPrerollS * sample_rate_hz_);
+        const std::int64_t target = timestamp_target(frame);
         std::unique_ptr<AVFormatContext, FormatCloser> format = opened_format(nullptr);
         if (static_cast<unsigned>(stream_->index) >= format->nb_streams) return false;
         AVStream* stream = format->streams[stream_->index];
-        const std::int64_t seek_at =
-            av_rescale_q(target + time_zero_frames_ - preroll, sample_base, stream->time_base);
+        const std::int64_t seek_at = av_rescale_q(target + time_zero_frames_ - preroll_frames(),
+                                                  AVRational{1, sample_rate_hz_}, stream->time_base);
         if (seek_at <= 0) return false;
         OpenedDecoder opened = open_decoder(*stream->codecpar);
         if (!opened.context || opened.context->sample_rate != sample_rate_hz_) return false;
-        AVCodecContext* codec = opened.context.get();
         if (avformat_seek_file(format.get(), stream->index, std::numeric_limits<std::int64_t>::min(), seek_at,
                                seek_at, 0) < 0)
             return false;
-        std::int64_t packets_end_byte = packets_end_byte_;
-        std::int64_t next_packet_byte = -1;
-        std::int64_t last_packet_duration = 0;
-        std::int64_t start = 0;
+        std::optional<SeekLanding> landing = decode_to_landing(*format, *stream, *opened.context, target);
+        if (!landing || !mix_landing_frame(*landing, target)) return false;
+        format_ = std::move(format);
+        codec_ = std::move(opened.context);
+        stream_ = stream;
+        take_landing(*landing, frame);
+        return true;
+    }
+
+    // `frame` as a timestamp counts it: the samples decoded run ahead of those given out by what
+    // was cut from the start (an encoder's delay).
+    std::int64_t timestamp_target(std::size_t frame) const {
+        return static_cast<std::int64_t>(frame) + static_cast<std::int64_t>(frames_decoded_ - frames_given_);
+    }
+
+    std::int64_t preroll_frames() const { return static_cast<std::int64_t>(kSeekPrerollS * sample_rate_hz_); }
+
+    // Decodes `stream` of `format`, just seeked, with `codec` until a frame holds the sample
+    // `target` (left in frame_); none where a frame has no timestamp, another rate, starts past
+    // `target`, or the sound track ends first.
+    std::optional<SeekLanding> decode_to_landing(AVFormatContext& format, const AVStream& stream,
+                                                 AVCodecContext& codec, std::int64_t target) {
+        SeekLanding landing;
+        landing.packets_end_byte = packets_end_byte_;
         while (true) {
-            const int received = avcodec_receive_frame(codec, frame_.get());
+            const int received = avcodec_receive_frame(&codec, frame_.get());
             if (received == 0) {
                 const std::int64_t timestamp = frame_->best_effort_timestamp;
-                if (timestamp == AV_NOPTS_VALUE || frame_->sample_rate != sample_rate_hz_) {
-                    av_frame_unref(frame_.get());
-                    return false;
-                }
-                start = av_rescale_q(timestamp, stream->time_base, sample_base) - time_zero_frames_;
-                if (start > target) {
-                    av_frame_unref(frame_.get());
-                    return false;
-                }
-                if (start + frame_->nb_samples > target) break;
+                if (timestamp == AV_NOPTS_VALUE || frame_->sample_rate != sample_rate_hz_) break;
+                landing.start = av_rescale_q(timestamp, stream.time_base, AVRational{1, sample_rate_hz_}) -
+                                time_zero_frames_;
+                if (landing.start > target) break;
+                if (landing.start + frame_->nb_samples > target) return landing;
                 av_frame_unref(frame_.get());
                 continue;
             }
             if (received == AVERROR(ENOMEM)) throw std::bad_alloc();
-            if (received == AVERROR_EOF) return false;
-            // Packets the decoder refuses in its first frames after the seek (an MP3 frame whose
-            // bit reservoir lies before it) fall in the preroll: what it holds settles the decoder.
-            int got = 0;
-            while ((got = av_read_frame(format.get(), packet_.get())) >= 0 &&
-                   packet_->stream_index != stream->index) {
-                if (packet_->pos >= 0)
-                    packets_end_byte = std::max(packets_end_byte, packet_->pos + packet_->size);
-                av_packet_unref(packet_.get());
-            }
-            if (got < 0) return false;
-            if (packet_->pos >= 0)
-                packets_end_byte = std::max(packets_end_byte, packet_->pos + packet_->size);
-            next_packet_byte = packet_->pos >= 0 ? packet_->pos + packet_->size : -1;
-            last_packet_duration = packet_->duration;
-            const int sent = avcodec_send_packet(codec, packet_.get());
-            av_packet_unref(packet_.get());
-            if (sent == AVERROR(ENOMEM)) throw std::bad_alloc();
+            if (received == AVERROR_EOF || !send_landing_packet(format, stream, codec, landing))
+                return std::nullopt;
         }
-        const std::int64_t decoded_before = static_cast<std::int64_t>(frames_decoded_);
+        av_frame_unref(frame_.get());
+        return std::nullopt;
+    }
+
+    // Sends `codec` the next packet of `stream`, noting its bytes and length in `landing`; false at
+    // the end or where the demuxer fails. Packets the decoder refuses in its first frames after the
+    // seek (an MP3 frame whose bit reservoir lies before it) fall in the preroll: what it holds
+    // settles the decoder.
+    bool send_landing_packet(AVFormatContext& format, const AVStream& stream, AVCodecContext& codec,
+                             SeekLanding& landing) {
+        int got = 0;
+        while ((got = av_read_frame(&format, packet_.get())) >= 0) {
+            if (packet_->pos >= 0)
+                landing.packets_end_byte = std::max(landing.packets_end_byte, packet_->pos + packet_->size);
+            if (packet_->stream_index == stream.index) break;
+            av_packet_unref(packet_.get());
+        }
+        if (got < 0) return false;
+        landing.next_packet_byte = packet_->pos >= 0 ? packet_->pos + packet_->size : -1;
+        landing.last_packet_duration = packet_->duration;
+        const int sent = avcodec_send_packet(&codec, packet_.get());
+        av_packet_unref(packet_.get());
+        if (sent == AVERROR(ENOMEM)) throw std::bad_alloc();
+        return true;
+    }
+
+    // Puts the samples of the frame a seek landed on (frame_) from `target` on in pending_, through
+    // the reading's mixer; false where they cannot be converted, the reading as it was.
+    bool mix_landing_frame(SeekLanding& landing, std::int64_t target) {
         if (!mixer_.takes(*frame_)) {
             av_frame_unref(frame_.get());
             return false;
         }
-        pending_.clear();
-        pending_position_ = 0;
-        const int converted = mixer_.mix(*frame_, static_cast<std::size_t>(target - start), pending_);
+        std::vector<float> landed;
+        const int converted = mixer_.mix(*frame_, static_cast<std::size_t>(target - landing.start), landed);
         av_frame_unref(frame_.get());
         if (converted < 0) return false;
-        format_ = std::move(format);
-        codec_ = std::move(opened.context);
-        stream_ = stream;
-        frames_decoded_ = static_cast<std::size_t>(start + converted);
+        pending_ = std::move(landed);
+        pending_position_ = 0;
+        landing.frames = converted;
+        return true;
+    }
+
+    // The reading's counts once it stands at `frame`, on the frame `landing` found.
+    void take_landing(const SeekLanding& landing, std::size_t frame) {
+        const std::int64_t decoded_before = static_cast<std::int64_t>(frames_decoded_);
+        const std::int64_t decoded = landing.start + landing.frames;
+        frames_decoded_ = static_cast<std::size_t>(decoded);
         frames_to_skip_ = 0;
         frames_given_ = frame;
         first_packet_sent_ = true;
-        packets_end_byte_ = packets_end_byte;
-        next_packet_byte_ = next_packet_byte;
-        last_packet_frames_ = packet_frames(last_packet_duration);
+        packets_end_byte_ = landing.packets_end_byte;
+        next_packet_byte_ = landing.next_packet_byte;
+        last_packet_frames_ = packet_frames(landing.last_packet_duration);
         last_packet_is_pause_ = false;
         short_mp3_frame_.reset();
         // A variable-rate MP3's samples up to the last packet, as its table of contents counts them.
-        mp3_frames_before_ += static_cast<double>(start + converted - decoded_before);
-        return true;
+        mp3_frames_before_ += static_cast<double>(decoded - decoded_before);
     }
 
     // Opens the file into format_ and reads its streams' parameters.
