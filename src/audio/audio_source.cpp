@@ -272,6 +272,30 @@ bool vorbis_headers_refused(const std::string& path) {
     return refused;
 }
 
+// The channel count the Opus header of the Ogg file at `path` states (OpusHead, the first packet
+// of its first page, its tenth byte: RFC 7845, 5.1); none where the first page holds no Opus header.
+std::optional<int> opus_head_channels(const std::string& path) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (file == nullptr) return std::nullopt;
+    // The largest Ogg page: its 27-byte header, 255 lacing values and 255 segments of 255 bytes.
+    constexpr long kLargestPageBytes = 27 + 255 + 255 * 255;
+    ogg_sync_state sync;
+    ogg_sync_init(&sync);
+    char* buffer = ogg_sync_buffer(&sync, kLargestPageBytes);
+    const std::size_t got = buffer ? std::fread(buffer, 1, kLargestPageBytes, file) : 0;
+    std::fclose(file);
+    ogg_sync_wrote(&sync, static_cast<long>(got));
+    ogg_page page;
+    std::optional<int> channels;
+    constexpr std::string_view kOpusHead = "OpusHead";
+    constexpr long kChannelsByte = 9;
+    if (ogg_sync_pageout(&sync, &page) == 1 && page.body_len > kChannelsByte &&
+        std::memcmp(page.body, kOpusHead.data(), kOpusHead.size()) == 0)
+        channels = page.body[kChannelsByte];
+    ogg_sync_clear(&sync);
+    return channels;
+}
+
 // A RIFF WAV's data chunk that goes on past the size its header states: the bytes stated and the
 // bytes the file holds after the data's start, and the bytes a second of sound takes (the format
 // chunk's average rate; 0 if it states none).
@@ -685,8 +709,15 @@ std::array<char, 12> read_container_header(const std::string& path) {
 }
 
 // An Ogg file libsndfile refused to open (or would refuse: vorbis_headers_refused), FFmpeg's turn.
-// An Ogg file whose header pages are damaged is refused by both, and said to be damaged there.
+// An Ogg file whose header pages are damaged is refused by both, and said to be damaged there; one
+// whose Opus header states no channel is refused by both too (FFmpeg found "no audio stream" in
+// it, which hid the reason), and said so.
 std::unique_ptr<AudioSource> open_ogg_refused_by_sndfile(const std::string& path) {
+    if (opus_head_channels(path) == 0)
+        throw ParseError(
+            path, 0, 0, "",
+            "its Opus header (OpusHead, the stream's first packet) states 0 channels, where an "
+            "Opus stream has 1 or more: the header is damaged, and no sound can be read without it");
     FfmpegReading reading;
     if (const auto damage = find_damaged_ogg_page(path))
         reading.damaged_ogg_page_byte = damage->first_damaged_byte;

@@ -684,6 +684,17 @@ TEST_SUITE("audio") {
         }
     }
 
+    TEST_CASE("an Opus header stating 0 channels is named as the reason, with the file") {
+        // Its OpusHead's channel byte 0, its page's CRC made right: the header is damaged, not the page.
+        const std::string path = test::source_path("tests/fuzz/corpus/audio_file/zero-channels-header.opus");
+        const Outcome outcome = read_and_analyse(path);
+        CHECK(outcome.threw);
+        CHECK_MESSAGE(
+            outcome.message.find(path + ": its Opus header (OpusHead, the stream's first packet) states 0 "
+                                        "channels") == 0,
+            outcome.message);
+    }
+
     TEST_CASE("an MKV cut to its header says what is wrong, naming the file") {
         const std::string bytes = whole(kContainers[11]);
         const std::string path = test::output_path("header_only.mkv");

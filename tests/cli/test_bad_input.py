@@ -73,7 +73,7 @@ AUDIO = {
     "noise_wb.amr": OK,
     "cut_mid_frame.amr": OK,
     # Session 29's kinds.
-    "bad_header.opus": "no audio stream in the ogg file",
+    "bad_header.opus": "its Opus header (OpusHead, the stream's first packet) states 0 channels",
     "bad_header.webm": OK,
     "two_data_chunks.wav": "its sound is in 2 data chunks (a second at byte 49492), where a WAV holds one",
     "fmt_after_data.wav": OK,
