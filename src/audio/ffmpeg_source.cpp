@@ -504,12 +504,13 @@ public:
     const std::string& name() const override { return path_; }
 
 private:
-    // skip_to()'s move: a seek in a second opening of the file to kSeekPrerollS before `frame`, and
-    // a decode from there to the frame that holds `frame`, placed by its timestamp. Only once the
-    // second opening stands there does it take the first one's place, so a seek that cannot land
-    // there leaves this reading as it was; past the first frames, it is then decoded on to `frame`
-    // (as the reading would have read it, at its cost). The frames keep their grid: a sample is
-    // where the first reading's counting puts it, for the timestamps (in a time base that resolves
+    // skip_to()'s move: a seek of the file's one opening to kSeekPrerollS before `frame`, and a
+    // decode by a decoder of its own from there to the frame that holds `frame`, placed by its
+    // timestamp. Only once it stands there does that decoder take the reading's place; a seek that
+    // cannot land there opens the file again at the packet the reading had reached
+    // (return_to_packets_read), so the reading is as it was; past the first frames, it is then
+    // decoded on to `frame` (as the reading would have read it, at its cost). The frames keep their grid: a
+    // sample is where the first reading's counting puts it, for the timestamps (in a time base that resolves
     // one sample) count as that counting does wherever the file is whole. What the seek passes is
     // not read, so a scratch inside it is neither kept as silence nor named: the file was read up
     // to its first sound once already, and found silent there.
@@ -556,6 +557,7 @@ private:
     struct SeekLanding {
         std::int64_t start = 0;
         std::int64_t frames = 0;
+        std::int64_t packets_read = 0;  // of every stream, since the seek
         std::int64_t packets_end_byte = -1;
         std::int64_t next_packet_byte = -1;
         std::int64_t last_packet_duration = 0;
@@ -564,24 +566,50 @@ private:
     // The seek of seek_frames, the samples at hand passed over: true where it landed on `frame`.
     bool land_at(std::size_t frame) {
         const std::int64_t target = timestamp_target(frame);
-        std::unique_ptr<AVFormatContext, FormatCloser> format = opened_format(nullptr);
-        if (static_cast<unsigned>(stream_->index) >= format->nb_streams) return false;
-        AVStream* stream = format->streams[stream_->index];
         const std::int64_t seek_at = av_rescale_q(target + time_zero_frames_ - preroll_frames(),
-                                                  AVRational{1, sample_rate_hz_}, stream->time_base);
+                                                  AVRational{1, sample_rate_hz_}, stream_->time_base);
         if (seek_at <= 0) return false;
-        OpenedDecoder opened = open_decoder(*stream->codecpar);
+        OpenedDecoder opened = open_decoder(*stream_->codecpar);
         if (!opened.context || opened.context->sample_rate != sample_rate_hz_) return false;
-        if (avformat_seek_file(format.get(), stream->index, std::numeric_limits<std::int64_t>::min(), seek_at,
-                               seek_at, 0) < 0)
+        std::optional<SeekLanding> landing;
+        if (seek_demuxer(seek_at)) landing = decode_to_landing(*format_, *stream_, *opened.context, target);
+        if (!landing || !mix_landing_frame(*landing, target)) {
+            return_to_packets_read();
             return false;
-        std::optional<SeekLanding> landing = decode_to_landing(*format, *stream, *opened.context, target);
-        if (!landing || !mix_landing_frame(*landing, target)) return false;
-        format_ = std::move(format);
+        }
         codec_ = std::move(opened.context);
-        stream_ = stream;
+        opening_seek_at_ = seek_at;
+        packets_read_ = landing->packets_read;
         take_landing(*landing, frame);
         return true;
+    }
+
+    // Seeks the opening's demuxer to the sound track's timestamp `seek_at`, or the packet before.
+    bool seek_demuxer(std::int64_t seek_at) {
+        return avformat_seek_file(format_.get(), stream_->index, std::numeric_limits<std::int64_t>::min(),
+                                  seek_at, seek_at, 0) >= 0;
+    }
+
+    // Where a seek moved the demuxer and could not land: the file opened again and its packets read
+    // (not decoded) up to the one the reading had reached, from the seek that placed the opening
+    // before, if any, so that the reading goes on from there as it was. Only this one opening is held:
+    // an MP4's index (16.9 MB at 10 h of AAC) was held twice while a second opening sought.
+    void return_to_packets_read() {
+        const int index = stream_->index;
+        format_.reset();
+        open_format();
+        if (static_cast<unsigned>(index) >= format_->nb_streams)
+            throw ParseError(path_, 0, 0, "", "the file changed while it was read: its sound track is gone");
+        stream_ = format_->streams[index];
+        if (opening_seek_at_ && !seek_demuxer(*opening_seek_at_))
+            throw ParseError(path_, 0, 0, "", "the file changed while it was read: it no longer seeks");
+        for (std::int64_t packet = 0; packet < packets_read_; ++packet) {
+            if (const int got = av_read_frame(format_.get(), packet_.get()); got < 0)
+                throw ParseError(path_, 0, 0, "",
+                                 "the file changed while it was read: it ends before " +
+                                     seconds_text(seconds_read()) + ": " + ffmpeg_error_text(got));
+            av_packet_unref(packet_.get());
+        }
     }
 
     // `frame` as a timestamp counts it: the samples decoded run ahead of those given out by what
@@ -627,6 +655,7 @@ private:
                              SeekLanding& landing) {
         int got = 0;
         while ((got = av_read_frame(&format, packet_.get())) >= 0) {
+            ++landing.packets_read;
             if (packet_->pos >= 0)
                 landing.packets_end_byte = std::max(landing.packets_end_byte, packet_->pos + packet_->size);
             if (packet_->stream_index == stream.index) break;
@@ -1042,6 +1071,7 @@ private:
         if (flushed_) return false;
         while (true) {
             const int got = av_read_frame(format_.get(), packet_.get());
+            if (got >= 0) ++packets_read_;
             if (got == AVERROR_EOF) {
                 avcodec_send_packet(codec_.get(), nullptr);
                 flushed_ = true;
@@ -1422,6 +1452,10 @@ private:
     bool mp3_toc_followed_ = false;       // a point of mp3_toc_ lay inside a whole packet
     bool flushed_ = false;
     bool first_packet_sent_ = false;  // of the sound track
+    // The timestamp a seek placed the opening at (none: its start), and the packets of every stream
+    // read since: where return_to_packets_read() brings a file opened again.
+    std::optional<std::int64_t> opening_seek_at_;
+    std::int64_t packets_read_ = 0;
     std::vector<float> pending_;
     std::size_t pending_position_ = 0;
 };

@@ -57,6 +57,28 @@ std::string made(const Made& recording) {
                             "-i '" + speech + "' -af adelay=delays=8000:all=1 " + recording.options);
 }
 
+// A made recording read whole from its start.
+struct WholeReading {
+    std::string path;
+    int rate_hz = 0;
+    std::vector<float> samples;
+};
+
+WholeReading read_whole(const Made& recording) {
+    WholeReading whole;
+    whole.path = made(recording);
+    const auto source = detail::open_audio_file(whole.path);
+    whole.rate_hz = source->sample_rate_hz();
+    whole.samples = test::read_all(*source);
+    return whole;
+}
+
+// Whether `rest` is `samples` from `frame` on, bit for bit.
+bool is_rest_from(const std::vector<float>& rest, const std::vector<float>& samples, std::size_t frame) {
+    return rest.size() == samples.size() - frame &&
+           std::memcmp(rest.data(), samples.data() + frame, rest.size() * sizeof(float)) == 0;
+}
+
 }  // namespace
 
 TEST_SUITE("audio") {
@@ -64,21 +86,40 @@ TEST_SUITE("audio") {
         for (const Made& recording : kMade) {
             const std::string file = recording.file;
             CAPTURE(file);
-            const std::string path = made(recording);
-            const auto whole = detail::open_audio_file(path);
-            const int rate_hz = whole->sample_rate_hz();
-            const std::vector<float> samples = test::read_all(*whole);
+            const WholeReading whole = read_whole(recording);
             // Inside the silence, and inside the speech after it (8.5 s).
             for (const double at_s : {1.5, 5.0 + 123.0 / 16000, 7.9, 8.5}) {
                 CAPTURE(at_s);
-                const auto frame = static_cast<std::size_t>(at_s * rate_hz);
-                const auto reading = detail::open_audio_file(path);
+                const auto frame = static_cast<std::size_t>(at_s * whole.rate_hz);
+                const auto reading = detail::open_audio_file(whole.path);
                 const bool skipped = reading->skip_to(frame);
                 CHECK(skipped == recording.seeks);
                 if (!skipped) continue;
+                CHECK(is_rest_from(test::read_all(*reading), whole.samples, frame));
+            }
+        }
+    }
+
+    TEST_CASE("a seek that cannot land leaves the reading as it was, after a seek that landed too") {
+        // Past the end, FFmpeg's decode from the seek finds no frame that holds the sample: the file
+        // is opened again at the packet the reading had reached and read on from there, to its end,
+        // with no gap; libsndfile's reading stays where it was.
+        for (const Made& recording : kMade) {
+            if (!recording.seeks) continue;
+            const std::string file = recording.file;
+            CAPTURE(file);
+            const WholeReading whole = read_whole(recording);
+            for (const bool landed_before : {false, true}) {
+                CAPTURE(landed_before);
+                const auto reading = detail::open_audio_file(whole.path);
+                const std::size_t at = landed_before ? static_cast<std::size_t>(5.0 * whole.rate_hz) : 0;
+                if (landed_before) REQUIRE(reading->skip_to(at));
+                CHECK_FALSE(
+                    reading->skip_to(whole.samples.size() + static_cast<std::size_t>(2.0 * whole.rate_hz)));
                 const std::vector<float> rest = test::read_all(*reading);
-                REQUIRE(rest.size() == samples.size() - frame);
-                CHECK(std::memcmp(rest.data(), samples.data() + frame, rest.size() * sizeof(float)) == 0);
+                CHECK((rest.empty() || is_rest_from(rest, whole.samples, at)));
+                CHECK(reading->notes().empty());
+                CHECK(reading->lost_audio().empty());
             }
         }
     }
