@@ -38,11 +38,19 @@ const Made kMade[] = {
     {"silence_first_clip.mov", "-c:v libx264 -crf 40 -c:a aac -b:a 24k -shortest", true},
     // A dictaphone's MP3 inside a WAV.
     {"silence_first_mp3_in.wav", "-c:a libmp3lame -b:a 32k", true},
-    // A bare AC-3's and an MPEG transport stream's timestamps (90 kHz) do not place a sample either.
+    // An MPEG transport stream's timestamps (90 kHz) do not place a sample, nor do Matroska's
+    // milliseconds: the codec's frames do (MP2's 1152 samples, Opus's 2.5 ms steps, AAC's 1024).
+    {"silence_first.ts", "-ar 48000 -c:a mp2 -b:a 128k", true},
+    {"silence_first.mka", "-c:a libopus -b:a 16k", true},
+    {"silence_first_10ms.mka", "-c:a libopus -b:a 16k -frame_duration 10", true},
+    {"silence_first.webm", "-c:a libopus -b:a 16k", true},
+    {"silence_first_aac.mka", "-c:a aac -b:a 32k", true},
+    {"silence_first_clip.mkv", "-c:v libvpx -b:v 8k -c:a libopus -b:a 16k -shortest", true},
+    // Vorbis's blocks may end on any sample, and AC-3's decoder dithers along the whole stream (a
+    // bare AC-3's timestamps are 90 kHz too): read on.
+    {"silence_first_vorbis.mka", "-c:a libvorbis -q:a 1", false},
     {"silence_first.ac3", "-ar 48000 -c:a ac3 -b:a 96k", false},
-    {"silence_first.ts", "-ar 48000 -c:a mp2 -b:a 128k", false},
-    // Matroska's timestamps are milliseconds, which do not place a sample: read on.
-    {"silence_first.mka", "-c:a libopus -b:a 16k", false},
+    {"silence_first_ac3.ts", "-ar 48000 -c:a ac3 -b:a 96k", false},
 };
 
 bool is_video(const std::string& file) {
