@@ -594,7 +594,7 @@ void add_stretch(std::vector<Stretch>& stretches, double rate_hz, std::size_t at
     const double start_s = static_cast<double>(at_frame) / rate_hz;
     const double end_s = static_cast<double>(at_frame + frames) / rate_hz;
     if (!stretches.empty() && start_s <= stretches.back().end_s + 1e-9)
-        stretches.back().end_s = end_s;
+        stretches.back().end_s = std::max(stretches.back().end_s, end_s);
     else
         stretches.push_back({start_s, end_s});
 }
@@ -602,7 +602,11 @@ void add_stretch(std::vector<Stretch>& stretches, double rate_hz, std::size_t at
 }  // namespace
 
 void AudioSource::note_lost_audio(std::size_t at_frame, std::size_t frames) {
-    add_stretch(lost_audio_, sample_rate_hz(), at_frame, frames);
+    has_lost_audio_read_ = true;
+    const std::size_t end = at_frame + frames;
+    if (end <= taken_until_frame_) return;
+    at_frame = std::max(at_frame, taken_until_frame_);
+    add_stretch(lost_audio_, sample_rate_hz(), at_frame, end - at_frame);
 }
 
 void AudioSource::note_codec_pause(std::size_t at_frame, std::size_t frames) {
@@ -653,7 +657,7 @@ std::size_t AudioSource::read(float* mono, std::size_t max_frames) {
     const std::size_t frames = read_frames(mono, max_frames);
     for (std::size_t i = 0; i < frames; ++i) {
         if (!std::isfinite(mono[i])) {
-            if (frames_read_ + i >= non_finite_counted_from_) {
+            if (frames_read_ + i >= taken_until_frame_) {
                 if (non_finite_frames_ == 0) first_non_finite_frame_ = frames_read_ + i;
                 ++non_finite_frames_;
             }
@@ -678,10 +682,13 @@ std::size_t AudioSource::read(float* mono, std::size_t max_frames) {
     return frames;
 }
 
-void AudioSource::take_non_finite_count(const AudioSource& earlier) {
+void AudioSource::take_first_reading(const AudioSource& earlier) {
     non_finite_frames_ = earlier.non_finite_frames_;
     first_non_finite_frame_ = earlier.first_non_finite_frame_;
-    non_finite_counted_from_ = earlier.frames_read_;
+    // A stretch is noted as its silence is put before the frames read out: `earlier` may have
+    // noted one that reaches past where it stopped, which this reading notes again from there.
+    lost_audio_ = earlier.lost_audio_;
+    taken_until_frame_ = earlier.frames_read_;
 }
 
 bool AudioSource::skip_to(std::size_t frame) {

@@ -88,14 +88,17 @@ public:
     // sf_seek in a file it can seek in; FFmpeg's seek and a decode to the exact sample, in a file
     // whose timestamps place one, ffmpeg_source.cpp); false where it cannot, the reading left
     // where it was. A reading that passes hours of digital silence this way takes no time for
-    // them; what it passes is not read, so its samples that are not numbers are counted only where
-    // an earlier reading counted them (take_non_finite_count).
+    // them; what it passes is not read, so its samples that are not numbers and the stretches of it
+    // lost to damage are known only where an earlier reading found them (take_first_reading).
     bool skip_to(std::size_t frame);
-    // Takes over the samples that are not numbers `earlier` (a reading of the same recording from
-    // its start, read() only) found, before this reading reads anything, and from then on counts
-    // only those past where `earlier` stopped: read()'s note then names them all, though this
-    // reading skip_to()s past the silence `earlier` read them in (a float file NaN there).
-    void take_non_finite_count(const AudioSource& earlier);
+    // Takes over what `earlier` (a reading of the same recording from its start, read() only)
+    // found, before this reading reads anything: its samples that are not numbers and the
+    // stretches it read as silence because the file is damaged there; from then on this reading
+    // counts and notes only those past where `earlier` stopped. read()'s note and lost_audio() then
+    // name them all, though this reading skip_to()s past the silence `earlier` read them in (a
+    // float file NaN there; a lost Matroska cluster or MP3 frames there, whose sound may have been
+    // speech the user should know is gone).
+    void take_first_reading(const AudioSource& earlier);
     virtual int sample_rate_hz() const = 0;
     // Frames the source says it has; progress is measured against it. For what FFmpeg reads it is
     // the container's estimate, and read() goes on to the real end.
@@ -114,8 +117,11 @@ public:
 
 protected:
     // Notes `frames` frames of silence read in place of damaged data from frame `at_frame` on,
-    // joined to the stretch before when they follow it.
+    // joined to the stretch before when they follow it; those before the frame an earlier reading
+    // was taken over until (take_first_reading) are its, and noted already.
     void note_lost_audio(std::size_t at_frame, std::size_t frames);
+    // Whether this reading itself has read silence in place of damaged data.
+    bool has_lost_audio_read() const { return has_lost_audio_read_; }
     // The same for `frames` frames of silence read in place of a codec's pause frames.
     void note_codec_pause(std::size_t at_frame, std::size_t frames);
 
@@ -126,8 +132,9 @@ private:
     std::size_t frames_read_ = 0;
     std::size_t non_finite_frames_ = 0;
     std::size_t first_non_finite_frame_ = 0;
-    // Frames before this one were counted by an earlier reading (take_non_finite_count).
-    std::size_t non_finite_counted_from_ = 0;
+    // Frames before this one were read by an earlier reading (take_first_reading).
+    std::size_t taken_until_frame_ = 0;
+    bool has_lost_audio_read_ = false;
     bool is_end_noted_ = false;
     // read()'s frames as the source holds them, before non-numbers are made 0.
     virtual std::size_t read_frames(float* mono, std::size_t max_frames) = 0;

@@ -543,8 +543,8 @@ private:
     // decoded on to `frame` (as the reading would have read it, at its cost). The frames keep their grid: a
     // sample is where the first reading's counting puts it, for the timestamps (in a time base that resolves
     // one sample) count as that counting does wherever the file is whole. What the seek passes is
-    // not read, so a scratch inside it is neither kept as silence nor named: the file was read up
-    // to its first sound once already, and found silent there.
+    // not read: the file was read up to its first sound once already, and found silent there, and
+    // that reading names what it lost there (take_first_reading).
     bool seek_frames(std::size_t frame) override {
         if (!can_seek()) return false;
         if (pass_over_to(frame, false)) return true;
@@ -560,7 +560,7 @@ private:
     // past its stated size) is read on.
     bool can_seek() const {
         if (hiding_reader_ || reading_.keeps_stated_length || reading_.reads_past_stated_size) return false;
-        if (flushed_ || skipped_frames_ > 0 || timed_frames_ < 1 || !lost_audio().empty() ||
+        if (flushed_ || skipped_frames_ > 0 || timed_frames_ < 1 || has_lost_audio_read() ||
             !codec_pauses().empty())
             return false;
         if (format_->pb == nullptr || (format_->pb->seekable & AVIO_SEEKABLE_NORMAL) == 0) return false;

@@ -1066,9 +1066,9 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
     const double silence_skipped_s = static_cast<double>(silence_skipped) / kAnalysisRateHz;
     if (first.held.empty()) {
         // The reading that is kept seeks past the silence this one read: it notes the samples
-        // that are not numbers this one found there.
+        // that are not numbers, and the stretches lost to damage, this one found there.
         std::unique_ptr<AudioSource> again = open();
-        again->take_non_finite_count(*source);
+        again->take_first_reading(*source);
         source = std::move(again);
     }
     FeatureTrack track = read_features(*source, progress, options.lenient, silence_skipped, first.held);

@@ -9,6 +9,7 @@
 
 #include <malloc.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -682,6 +683,32 @@ TEST_SUITE("audio") {
                           outcome.message);
             CHECK_MESSAGE(outcome.message.find(") breaks at byte ") != std::string::npos, outcome.message);
         }
+    }
+
+    TEST_CASE("a scratch inside a leading silence the reading seeks past is named where it is") {
+        // 70 s of silence then the voice, as FLAC, 300 random bytes an eighth of the way in: the
+        // first reading reads the silence, and the frames the scratch hit, to the first sound; the
+        // reading that is kept seeks past all but the last minute of it, and takes over what the
+        // first lost there.
+        const std::string bytes =
+            whole({"silence_first.flac", "-af adelay=delays=70000:all=1 -c:a flac", true});
+        std::string scratched = bytes;
+        scratched.replace(bytes.size() / 8, 300, random_bytes(300, 3));
+        const std::string path = test::output_path("scratched_silence_first.flac");
+        write_bytes(path, scratched);
+        const Timeline timeline = SpeechAligner().align_file(
+            path, load_transcript(test::source_path("tests/data/speech/one_sentence.txt")));
+        std::string warnings;
+        for (const std::string& warning : timeline.warnings) warnings += warning + "\n";
+        CAPTURE(warnings);
+        const std::string said = path + ": the file is damaged: ";
+        const auto named =
+            std::find_if(timeline.warnings.begin(), timeline.warnings.end(),
+                         [&](const std::string& warning) { return warning.rfind(said, 0) == 0; });
+        REQUIRE(named != timeline.warnings.end());
+        const std::size_t at = named->find("could not be decoded, at ");
+        REQUIRE(at != std::string::npos);
+        CHECK(std::stod(named->substr(at + std::string("could not be decoded, at ").size())) < 60.0);
     }
 
     TEST_CASE("an Opus header stating 0 channels is named as the reason, with the file") {

@@ -43,7 +43,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const std::size_t skipped = talkface::detail::silence_to_skip(first, again->sample_rate_hz());
         if (first.held.empty()) {
             auto reading = talkface::detail::open_audio_file(path);
-            reading->take_non_finite_count(*again);
+            reading->take_first_reading(*again);
             again = std::move(reading);
         }
         const talkface::detail::FeatureTrack track =
