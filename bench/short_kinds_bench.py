@@ -32,6 +32,8 @@ it, then (the kinds):
   p-breath     an in-breath before the line and an out-breath after it (breath's and breath-after's),
                then one of five narrowband codecs (p-speex8, p-opus6, p-opus12, p-g723, p-g726): a
                breath through a telephone band, where no voice keeps its fundamental (session 30)
+  click-after  a click (the click kind's) 0.05-0.3 s after the line, the hiss after it lengthened to
+               hold it (session 32)
 The wrong text is the next line of the same set with as many syllables (short_lines_bench's).
 A refused line counts each syllable as missed, as align_bench counts a refused passage. The last
 row of each set sums the lines with digits or English over every kind.
@@ -39,7 +41,7 @@ row of each set sums the lines with digits or English over every kind.
 usage: PYTHONPATH=build/python /usr/bin/python3 bench/short_kinds_bench.py OUT_DIR [--bin build/bin] [--kinds ...]
            [--lines short_lines_28.txt] [--tsv FILE] [--reuse]
 --reuse aligns the recordings an earlier run left in OUT_DIR (to compare two builds on the same
-files). Needs numpy, espeak-ng, sox, ffmpeg and praat (cmake/install-deps.sh bench).
+files); without --kinds, every kind it holds. Needs numpy, espeak-ng, sox, ffmpeg and praat (cmake/install-deps.sh bench).
 """
 import argparse
 import json
@@ -59,7 +61,8 @@ import short_onsets_bench as onsets_bench
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SPEAKERS = ("espeak", "person", "v", "w")
-EDGE_KINDS = ("plain", "clipped", "click", "breath", "room", "babble", "tight", "breath-after", "p-breath")
+EDGE_KINDS = ("plain", "clipped", "click", "breath", "room", "babble", "tight", "breath-after", "p-breath",
+              "click-after")
 # The narrowband codecs p-breath draws from (make_phone_kinds.py's chains: pink noise at 30 dB, the
 # telephone band, the codec).
 BREATH_CODECS = ("p-speex8", "p-opus6", "p-opus12", "p-g723", "p-g726")
@@ -151,6 +154,10 @@ def record(kind, x, times, rng, others):
         gap = rng.uniform(0.1, 0.3)
         b = breath(power(x), rng)
         after += gap + len(b) / sr
+    elif kind == "click-after":
+        gap = rng.uniform(0.05, 0.3)
+        c = click(np.max(np.abs(x)) * rng.uniform(0.3, 0.9), rng)
+        after += gap + len(c) / sr
     y = around(x, rng, before, after)
     moved = [(a + before, b + before) for a, b in times]
     truth = {"sentences": [{"start": before, "end": before + len(x) / sr}]}
@@ -170,6 +177,9 @@ def record(kind, x, times, rng, others):
     elif kind == "breath-after":
         start = at + len(x) + round(gap * sr)
         y[start:start + len(b)] += b
+    elif kind == "click-after":
+        start = at + len(x) + round(gap * sr)
+        y[start:start + len(c)] += c
     elif kind == "p-breath":
         start = at + len(x) + round(gap * sr)
         y[start:start + len(b)] += b
@@ -206,19 +216,25 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("out")
     parser.add_argument("--bin", default=os.path.join(HERE, os.pardir, "build", "bin"))
-    parser.add_argument("--kinds", default=",".join(KINDS))
+    parser.add_argument("--kinds", help="a comma-separated list; default: every kind (with --reuse, every kind OUT_DIR has)")
     parser.add_argument("--lines", default="short_lines_28.txt")
     parser.add_argument("--tsv", help="every syllable: set, kind, speaker, line, index, pinyin, true start, error")
     parser.add_argument("--reuse", action="store_true", help="align the recordings an earlier run made")
     args = parser.parse_args()
-    kinds = args.kinds.split(",")
+    kinds = args.kinds.split(",") if args.kinds else list(KINDS)
     for kind in kinds:
         if kind not in KINDS:
             parser.error(f"--kinds: no kind {kind!r}; kinds: {', '.join(KINDS)}")
     os.makedirs(args.out, exist_ok=True)
     lines = [line for name in args.lines.split(",") for line in lines_bench.read_lines(name)]
     if not args.reuse:
-        make(args, lines)
+        make(args, lines, kinds)
+    elif not args.kinds:
+        # An earlier run's recordings lack the kinds added since (click-after, session 32).
+        made = [kind for kind in kinds if os.path.exists(os.path.join(args.out, f"00-{kind}.json"))]
+        for kind in sorted(set(kinds) - set(made)):
+            print(f"short_kinds_bench: {args.out} has no {kind} recordings; left out", file=sys.stderr)
+        kinds = made
     aligner = talkface.SpeechAligner(talkface.AlignOptions())
     scores, rows, refusals = {}, [], []
     for k, (subset, text, transcript) in enumerate(lines):
@@ -258,15 +274,15 @@ def main():
     return 0
 
 
-def make(args, lines):
-    """Every line's recordings of every kind into OUT_DIR, each with its truth and speaker (JSON)."""
+def make(args, lines, kinds):
+    """Every line's recordings of `kinds` into OUT_DIR, each with its truth and speaker (JSON)."""
     spoken = {}
     for k, (subset, text, _) in enumerate(lines):
         for speaker in SPEAKERS:
             spoken[k, speaker] = speak(speaker, text, os.path.join(args.out, f"{k:02d}"),
                                        10 * k + SPEAKERS.index(speaker), args.bin)
     for kind_index, kind in enumerate(KINDS):
-        if kind not in args.kinds.split(","):
+        if kind not in kinds:
             continue
         for k, (subset, text, _) in enumerate(lines):
             speaker = SPEAKERS[(k + kind_index) % len(SPEAKERS)]

@@ -73,11 +73,12 @@ constexpr std::size_t kFewestBreathFrames = 10;
 // whose first formant lies low (espeak-ng's 我 in bench/ telephone tuning-011) reads as having none
 // beside the rest of the line, which keeps a little; its harmonics stay. After the last words the
 // harmonics drop the out-breath through a telephone band and on espeak-ng's voice (bench/ short
-// kinds p-breath, breath-after), but not sound in the floors' band shape: a gain control's lifted
-// noise after the line, no speech either, is left to the lift (lifted_noise.hpp); dropped, it moved
-// p-fast-combo's lines whose first syllables lie in the lifted noise before them, and refused one
-// (held-out 等我上個廁所: the text fit 0.11 per frame over the swapped halves, 0.12 needed;
-// bench/README.md, session 31).
+// kinds p-breath, breath-after), but not a gain control's lifted noise, in the floors' band shape
+// up to the recording's end (or from its start): no speech either, it is left to the lift
+// (lifted_noise.hpp); dropped, it moved p-fast-combo's lines whose first syllables lie in the
+// lifted noise before them, and refused one (held-out 等我上個廁所: the text fit 0.11 per frame over
+// the swapped halves, 0.12 needed; bench/README.md, session 31). An out-breath in the floors'
+// shape, with a pause's hiss after it, is dropped (session 32).
 bool is_breath_beside_voice(const FeatureTrack& track, const LoudnessProfile& loudness,
                             const FrameSpan& stretch, const FrameSpan& voice, bool by_voicing_too);
 
