@@ -186,6 +186,10 @@ bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start) {
            (after_lettered_wing || !(takes_liang(next) || is_one_of(next, U"多余餘")));
 }
 
+bool precedes_hotline_word(const std::vector<CodePoint>& text, std::size_t end) {
+    return starts_with_any(text_between(text, end, end + 2), {"热线", "熱線", "专线", "專線"});
+}
+
 bool follows_phone_word(const std::vector<CodePoint>& text, std::size_t start) {
     const std::string before = text_before(text, start, false);
     if (contains_any(before, {"电话", "電話", "手机", "手機", "热线", "熱線", "拨打", "撥打", "致电", "致電",
@@ -721,18 +725,21 @@ std::size_t past_exchange_suffix(const std::vector<CodePoint>& text, std::size_t
 
 std::optional<SpokenForm> read_floor(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
     constexpr std::size_t kMostFloorDigits = 3;
-    if (number.has_point || number.has_separators || number.whole.size() > kMostFloorDigits || number.whole.front() == '0' ||
-        (start > 0 && is_ascii_letter(value_at(text, start - 1))) || value_at(text, number.end) != 'F' ||
-        is_ascii_letter(value_at(text, number.end + 1)) || is_digit_at(text, number.end + 1)) {
+    // Hong Kong writes the floor with a slash, 3/F, 12/F, G/F.
+    const auto letter = value_at(text, number.end) == '/' ? number.end + 1 : number.end;
+    if (number.has_point || number.has_separators || number.whole.size() > kMostFloorDigits ||
+        number.whole.front() == '0' || (start > 0 && is_ascii_letter(value_at(text, start - 1))) ||
+        value_at(text, letter) != 'F' || is_ascii_letter(value_at(text, letter + 1)) ||
+        is_digit_at(text, letter + 1)) {
         return std::nullopt;
     }
     // A seat's row and letter (您的座位是7车12F号 十二 F 号): 号 after it, or a carriage right before it.
     const bool after_carriage =
         start >= 2 && is_one_of(text[start - 1].value, U"车車") && is_digit_at(text, start - 2);
-    if (is_one_of(value_at(text, number.end + 1), U"号號") || after_carriage) return std::nullopt;
+    if (is_one_of(value_at(text, letter + 1), U"号號") || after_carriage) return std::nullopt;
     SpokenForm form;
     form.words = cardinal_words(number.whole, false) + "楼";
-    form.end = number.end + 1;
+    form.end = letter + 1;
     return form;
 }
 

@@ -55,6 +55,10 @@ bool follows_name_word(const std::vector<CodePoint>& text, std::size_t start);
 // not dialled, so its digits are said with 一.
 bool follows_phone_word(const std::vector<CodePoint>& text, std::size_t start);
 
+// A hotline's word right after a number, 热线 or 专线 (1823熱線, 1999专线): the number is the line's, dialled
+// as after a phone word (热线1999), where it was counted (session 32: 1823熱線 一千八百二十三).
+bool precedes_hotline_word(const std::vector<CodePoint>& text, std::size_t end);
+
 // 010-12345678, 0912-345-678: groups of digits joined by dashes, said digit by digit (a first group
 // with a leading zero and seven digits or more in all, or three groups, or a phone word before).
 // After a naming word (is_named: 取件码3-2-1108) three groups or more that start with one or two
@@ -190,10 +194,10 @@ std::optional<SpokenForm> read_dotted_groups(const std::vector<CodePoint>& text,
 std::size_t past_exchange_suffix(const std::vector<CodePoint>& text, std::size_t end);
 
 // A floor written with an F after its number, as Taiwan, Hong Kong and shopping centres write it (2F
-// 二楼, 89F 八十九楼, 1F 一楼): the number as an ordinal is said, and 楼 for the F (session 15: it
-// was 二 F). Up to three digits after no letter (B1F is a basement's), a capital F that ends the
-// letters (°F and 100℉ are Fahrenheit's, a unit), and no seat's (12F号, 7车12F; session 18: 十二楼).
-// nullopt elsewhere.
+// 二楼, 89F 八十九楼, 1F 一楼), or a slash and the F, as Hong Kong's addresses do (3/F 三楼; session 32:
+// 三 ai fu): the number as an ordinal is said, and 楼 for the F (session 15: it was 二 F). Up to three digits
+// after no letter (B1F is a basement's), a capital F that ends the letters (°F and 100℉ are Fahrenheit's, a
+// unit), and no seat's (12F号, 7车12F; session 18: 十二楼). nullopt elsewhere.
 std::optional<SpokenForm> read_floor(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
 
 // A number masked from its start (尾号****5678, 卡号：****1234), as a bank's or a shop's message shows a

@@ -226,6 +226,13 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
         return said;
     }
     said.words = cardinal_words(whole, !context.is_ordinal);
+    // Casual speech, which counts money in 块, says a 2 at the head of the hundreds 两 (200块 两百块, 250块
+    // 两百五十块), as the Xiandai Hanyu Cidian allows both before 百; news and notices, which count in 元,
+    // keep 二百 (罚款200元; session 31 left 200块 二百).
+    constexpr std::string_view kTwoHundred = "二百";
+    constexpr std::size_t kHundredsDigits = 3;
+    if (context.counts_kuai && whole.size() == kHundredsDigits && said.words.rfind(kTwoHundred, 0) == 0)
+        said.words.replace(0, std::string_view("二").size(), "两");
     return said;
 }
 
@@ -236,7 +243,7 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
     std::size_t previous = start;
     while (previous > 0 && text[previous - 1].value == ' ') --previous;
     context.is_ordinal = (previous > 0 && text[previous - 1].value == U'第') || adds_to_ordinal(text, start);
-    context.is_phone = follows_phone_word(text, start);
+    context.is_phone = follows_phone_word(text, start) || precedes_hotline_word(text, number.end);
 
     context.is_named = follows_name_word(text, start);
     // A house's number right after its street (文化路一段100號, 中山路128号) counts, as addresses are read

@@ -24,7 +24,7 @@ struct NumberContext {
     char32_t next = 0;             // the code point after the form ('%' counts as the unit)
     bool has_unit = false;         // a unit follows (5km): a measure, so 2 is 两
     bool is_ordinal = false;       // 第 before it
-    bool is_phone = false;         // a phone word earlier in the sentence
+    bool is_phone = false;         // a phone word earlier in the sentence, or a hotline's right after it
     bool is_named = false;         // a naming word right before it (房间号是1208)
     bool is_service_call = false;  // dialled or named (打110, 110报警)
     bool is_model = false;  // right after the capitals of a model's name (C919, A380) or a maker (波音737)
@@ -51,6 +51,7 @@ struct NumberContext {
     bool after_times = false;  // right after a times sign, a count of items (金币×888 乘八百八十八)
     bool names_schedule =
         false;  // a work schedule by its hours and days (996, 955), not after a price (售价996)
+    bool counts_kuai = false;  // money counted in 块, casual speech's (200块, 300多块)
 };
 
 struct SaidNumber {

@@ -343,6 +343,9 @@ SpokenForm read_quantity(const std::vector<CodePoint>& text, std::size_t start, 
     context.has_unit = power_words.empty() && ((unit != nullptr && unit->written != "%") ||
                                                is_byte_unit_at(text, end) || is_basis_points_at(text, end));
     context.measures_degrees = unit == nullptr && power_words.empty() && measures_degrees(text, start, end);
+    context.counts_kuai = unit == nullptr && currency == nullptr && power_words.empty() &&
+                          (is_one_of(value_at(text, end), U"块塊") ||
+                           (value_at(text, end) == U'多' && is_one_of(value_at(text, end + 1), U"块塊")));
     std::string unit_words = unit == nullptr ? "" : unit->words;
     const bool is_percent = unit != nullptr && unit->written == "%";
     const bool is_per_mille = end < text.size() && text[end].value == 0x2030 /*‰*/;

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "text/digit_codes.hpp"
+#include "text/script_variant.hpp"
 #include "text/written_number_scan.hpp"
 
 namespace talkface::detail {
@@ -104,6 +105,11 @@ constexpr Currency kCurrencies[] = {
     {U"£", "", "英镑"},
 };
 
+// A bare $ in Traditional text is the local dollar, as Taiwan's and Hong Kong's shops, menus and fares write
+// it (大杯$45 大杯四十五元, 車費$10.5; session 32: 美元); the US dollar there is US$ or 美元, and in
+// Simplified text, where the yuan is ¥, $ stays the US dollar.
+constexpr Currency kLocalDollar = {U"$", "", "元"};
+
 bool is_han_at(const std::vector<CodePoint>& text, std::size_t k) {
     return k < text.size() && text[k].value >= 0x3400 && text[k].value <= 0x9FFF;
 }
@@ -188,7 +194,8 @@ const Currency* currency_at(const std::vector<CodePoint>& text, std::size_t i, s
         while (k < currency.written.size() && i + k < text.size() && text[i + k].value == currency.written[k]) ++k;
         if (k == currency.written.size() && is_digit_at(text, i + k)) {
             end = i + k;
-            return &currency;
+            return currency.written == kLocalDollar.written && is_traditional_text(text) ? &kLocalDollar
+                                                                                         : &currency;
         }
     }
     return nullptr;

@@ -2196,4 +2196,48 @@ TEST_SUITE("written forms") {
             {"公募REITs", "公募 rui ci"},
         });
     }
+
+    TEST_CASE("Hong Kong's floor n/F is the floor") {
+        // The first two rows failed on main 7a33214 (session 32, dev29): the letter said, 三 ai fu.
+        check_cases({
+            {"九龍彌敦道123號3/F", "九龍彌敦道一百二十三號三樓"},
+            {"中环德辅道中88号12/F", "中环德辅道中八十八号十二楼"},
+            // The limit: a fraction.
+            {"3/4的人", "四分之三的人"},
+        });
+    }
+
+    TEST_CASE("a number right before a hotline's word is dialled") {
+        // The first two rows failed on main 7a33214 (session 32, dev29): counted, 一千八百二十三.
+        check_cases({
+            {"1823熱線全日運作", "一八二三熱線全日運作"},
+            {"1999专线", "幺九九九专线"},
+            // The limits: a count of hotlines, and a number with a word between.
+            {"开通了3条热线", "开通了三条热线"},
+            {"24小时热线", "二十四小时热线"},
+        });
+    }
+
+    TEST_CASE("a bare dollar sign in Traditional text is the local dollar") {
+        // The first two rows failed on main 7a33214 (session 32, dev29): 美元.
+        check_cases({
+            {"入場費每位$150", "入場費每位一百五十元"},
+            {"這杯拿鐵才$60", "這杯拿鐵才六十元"},
+            // The limits: Simplified text, and a dollar named by its country.
+            {"入场费每位$150", "入场费每位一百五十美元"},
+            {"這杯拿鐵才US$6", "這杯拿鐵才六美元"},
+        });
+    }
+
+    TEST_CASE("a hundred counted in 块 is 两百, as casual speech says it") {
+        // The first three rows failed on main 7a33214 (session 32, dev29): 二百.
+        check_cases({
+            {"借我200塊錢", "借我兩百塊錢"},
+            {"一人出250块就够了", "一人出两百五十块就够了"},
+            {"花了200多块", "花了两百多块"},
+            // The limits: 元, as news says it, and a 2 inside a number.
+            {"罚款200元", "罚款二百元"},
+            {"1200块", "一千二百块"},
+        });
+    }
 }
