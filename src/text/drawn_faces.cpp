@@ -80,6 +80,47 @@ std::size_t face_bracket_end(const std::vector<CodePoint>& text, std::size_t ope
     return open;
 }
 
+// Whether a face typed in ASCII signs may stand next to c, the code point before or after it (0 where none
+// is): a space, a Chinese character or punctuation sets it apart from a word, a formula or a time (x-x=0,
+// 3:30, 选项:D), which touch letters, digits and signs.
+bool sets_off_face(char32_t c) {
+    return c == 0 || is_space(c) || is_han(c) || (c >= 0x80 && !is_letter_or_digit(c)) ||
+           std::u32string_view(U".,!?\"~").find(c) != std::u32string_view::npos;
+}
+
+// The end of a face typed in ASCII signs outside a bracket that begins at text[i], or i where none does:
+// two eyes alike about a mouth (^_^, T_T, -_-, =_=, >_< with its eyes mirrored, ^o^), or ^^ alone, the
+// sweat of a ; after it allowed (^_^;), the mouth no eye (--- and === are lines); letters are eyes only
+// about an underscore (T_T, o_o, x_x), which a formula's letters never are. And a face on its side, a colon's
+// or a semicolon's eyes, a nose and a mouth of a letter (:D, :-P, ;o), after a space or at the line's start
+// (選項:D is a choice's letter): the other sideways faces, :-) ;( and the like, are punctuation already,
+// unsaid and unwarned.
+std::size_t ascii_face_end(const std::vector<CodePoint>& text, std::size_t i) {
+    constexpr std::u32string_view kSignEyes = U"^-=><;*@~";
+    constexpr std::u32string_view kLetterEyes = U"TQoOxXuU";
+    constexpr std::u32string_view kMouths = U"_.-ovw";
+    constexpr std::u32string_view kLetterMouths = U"DPpOo3";
+    if (!sets_off_face(i > 0 ? text[i - 1].value : 0)) return i;
+    const auto eye = value_at(text, i);
+    const auto mouth = value_at(text, i + 1);
+    const auto mirrored = eye == '>' ? U'<' : eye;
+    const bool is_sign_eye = kSignEyes.find(eye) != std::u32string_view::npos;
+    const bool is_letter_eye = kLetterEyes.find(eye) != std::u32string_view::npos;
+    auto end = i;
+    if (eye == '^' && mouth == '^') {
+        end = i + 2;
+    } else if ((is_sign_eye || is_letter_eye) && value_at(text, i + 2) == mirrored && mouth != eye &&
+               kMouths.find(mouth) != std::u32string_view::npos && (is_sign_eye || mouth == '_')) {
+        end = i + 3;
+    } else if ((eye == ':' || eye == ';') && (i == 0 || is_space(text[i - 1].value))) {
+        const auto side_mouth = value_at(text, i + 1) == '-' ? i + 2 : i + 1;
+        if (kLetterMouths.find(value_at(text, side_mouth)) != std::u32string_view::npos) end = side_mouth + 1;
+    }
+    if (end == i) return i;
+    if (value_at(text, end) == ';') ++end;
+    return sets_off_face(value_at(text, end)) ? end : i;
+}
+
 }  // namespace
 
 std::vector<std::size_t> find_drawing_ends(const std::vector<CodePoint>& text) {
@@ -92,6 +133,11 @@ std::vector<std::size_t> find_drawing_ends(const std::vector<CodePoint>& text) {
             while (end < text.size() && (is_emoji(text[end].value) || joins_emoji(text[end].value))) ++end;
             ends[i] = last_end = end;
             i = end;
+            continue;
+        }
+        if (const auto typed_end = ascii_face_end(text, i); typed_end != i) {
+            ends[i] = last_end = typed_end;
+            i = typed_end;
             continue;
         }
         const auto bracket_end = face_bracket_end(text, i);

@@ -14,6 +14,7 @@
 #include "text/digit_codes.hpp"
 #include "text/drawn_faces.hpp"
 #include "text/formula_letters.hpp"
+#include "text/kana_words.hpp"
 #include "text/latin_words.hpp"
 #include "text/pinyin_tokens.hpp"
 #include "text/reading_tables.hpp"
@@ -169,6 +170,16 @@ std::optional<std::size_t> TranscriptReader::read_written_form(const std::vector
         form_warnings_ = timeline_.warnings.size();
         add_form(text, i, i + 1, read_words(std::string(sign)));
         return i + 1;
+    }
+    if (joins_two_words(text, i)) {
+        form_warnings_ = timeline_.warnings.size();
+        add_form(text, i, i + 1, said_syllables(*detail::english_word_syllables("and")));
+        return i + 1;
+    }
+    if (auto kana = detail::read_kana_word(text, i)) {
+        form_warnings_ = timeline_.warnings.size();
+        add_form(text, i, kana->end, said_syllables(kana->syllables));
+        return kana->end;
     }
     return std::nullopt;
 }

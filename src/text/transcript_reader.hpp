@@ -50,8 +50,9 @@ private:
     void break_sentence();
 
     // A written form read aloud at text[i] (a web address, a number with what it says, a unit per another,
-    // a slash said 每 or 和, a number character, a power, a formula's sign) added as its syllables, or a
-    // subtitle's timing kept unsaid: the index past it, nullopt where none starts there.
+    // a slash said 每 or 和, a number character, a power, a formula's sign, an ampersand between words, a
+    // Japanese word in kana) added as its syllables, or a subtitle's timing kept unsaid: the index past it,
+    // nullopt where none starts there.
     std::optional<std::size_t> read_written_form(const std::vector<CodePoint>& text, std::size_t i);
 
     // Reads the item starting at text[i]; returns where the next one starts.
@@ -75,6 +76,12 @@ private:
     std::size_t read_latin(const std::vector<CodePoint>& text, std::size_t start);
 
     std::vector<Syllable> latin_word_syllables(const std::string& word, const CodePoint& at);
+
+    // An ampersand between two words (letters, digits or Chinese characters), a space on either side
+    // allowed, is said as English says it, and (R&D a er an de di, AT&T, 早午餐＆咖啡; session 32: skipped
+    // with a warning): a name the dictionary has whole is its word (S&P 标普, read_latin), and a sign alone
+    // (价格＆) still has no reading.
+    bool joins_two_words(const std::vector<CodePoint>& text, std::size_t i) const;
 
     // A chat's initials where one syllable of the phrase has no initial and is written by its vowel (awsl
     // 啊我死了): four to six small letters, the one vowel first or last and the consonants all

@@ -17,6 +17,7 @@
 #include "text/number_words.hpp"
 #include "text/pinyin_tokens.hpp"
 #include "text/web_addresses.hpp"
+#include "text/written_number_scan.hpp"
 #include "text/written_numbers.hpp"
 
 namespace talkface::detail {
@@ -362,6 +363,17 @@ std::optional<std::vector<std::string>> TranscriptReader::read_compound(const st
         best_imbalance = imbalance;
     }
     return best;
+}
+
+bool TranscriptReader::joins_two_words(const std::vector<CodePoint>& text, std::size_t i) const {
+    if (text[i].value != '&') return false;
+    const auto is_word_at = [&](std::size_t k) {
+        return k < text.size() &&
+               (is_ascii_letter(text[k].value) || is_digit_at(text, k) || tables_.has_readings(text[k].text));
+    };
+    const auto before = i > 0 && text[i - 1].value == ' ' ? i - 1 : i;
+    const auto after = i + 1 < text.size() && text[i + 1].value == ' ' ? i + 2 : i + 1;
+    return before > 0 && is_word_at(before - 1) && is_word_at(after);
 }
 
 }  // namespace talkface::detail

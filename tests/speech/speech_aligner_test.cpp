@@ -376,9 +376,10 @@ TEST_SUITE("SpeechAligner") {
 
     TEST_CASE("a transcript with nothing to align says what its reader skipped") {
         const SpeechAligner aligner;
-        // A katakana letter and a full-width ampersand: a speaker may say either, so each is warned of (an
-        // emoji is unsaid without a warning, as punctuation is, and would leave nothing to report).
-        const Timeline symbols = read_transcript("\xE3\x82\xA2 \xEF\xBC\x86");
+        // A star and a full-width ampersand, each alone: a speaker may say either, so each is warned of (an
+        // emoji is unsaid without a warning, as punctuation is, and would leave nothing to report; since
+        // session 32 a katakana letter is said, ア a, and an ampersand between two words, and).
+        const Timeline symbols = read_transcript("\xE2\x98\x85 \xEF\xBC\x86");
         CHECK_THROWS_WITH_AS(aligner.align_file(clip_path("one_sentence.wav"), symbols),
                              doctest::Contains("no syllables to align (0 sentences, none with a Mandarin reading; <transcript>:1:1: "),
                              InvalidArgument);

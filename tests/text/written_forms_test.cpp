@@ -766,9 +766,10 @@ TEST_SUITE("written forms") {
             {"嗯嗯~", "嗯嗯"},
             {"3~5天", "三到五天"},
         });
-        const auto full_width = read_transcript("A＆B", {}, "t.txt");
+        // A sign alone (between two words ＆ is said, and: since session 32).
+        const auto full_width = read_transcript("价格＆", {}, "t.txt");
         REQUIRE(full_width.warnings.size() == 1);
-        CHECK(full_width.warnings[0] == "t.txt:1:2: \"＆\" (U+FF06) has no Mandarin reading; skipped");
+        CHECK(full_width.warnings[0] == "t.txt:1:3: \"＆\" (U+FF06) has no Mandarin reading; skipped");
         // A # with no partner on its line is a symbol.
         CHECK(read_transcript("价格#5").warnings.size() == 1);
         CHECK(read_transcript("# 标题 #").warnings.size() == 2);
@@ -2239,5 +2240,66 @@ TEST_SUITE("written forms") {
             {"罚款200元", "罚款二百元"},
             {"1200块", "一千二百块"},
         });
+    }
+
+    TEST_CASE("a face typed in ASCII signs outside a bracket is unsaid and unwarned") {
+        // Every row failed on main 7a33214 (session 32, dev29): a warning for each ^ and =, the letters of
+        // T_T and o_o said (ti ti, ou ou), the D of :D said di.
+        check_cases({
+            {"你好啊 ^_^", "你好啊"},
+            {"考試又考砸了 T_T", "考試又考砸了"},
+            {"無言 =_=", "無言"},
+            {"好啊^^", "好啊"},
+            {"好 o_o", "好"},
+            {"太好了 :D", "太好了"},
+        });
+        // The limits: a formula's letters and a choice's letter after a colon are read.
+        check_cases({
+            {"x-x=0", "ai ke si减 ai ke si等于零"},
+            {"答案選:D", "答案選 di"},
+        });
+    }
+
+    TEST_CASE("an ampersand between two words is said and") {
+        // The first three rows failed on main 7a33214 (session 32, dev29): the sign skipped with a warning.
+        check_cases({
+            {"本店提供早午餐＆咖啡", "本店提供早午餐 an de咖啡"},
+            {"R&D部门", "a er an de di部门"},
+            {"咖啡 & 甜点", "咖啡 an de甜点"},
+            // The limit: a name the dictionary has whole.
+            {"S&P 500指数", "biao pu五百指数"},
+        });
+        // The limit: a sign alone still has no reading.
+        CHECK(read_transcript("价格＆").warnings.size() == 1);
+    }
+
+    TEST_CASE("a Japanese word in kana is said a syllable a mora, a long vowel one") {
+        // Every row failed on main 7a33214 (session 32, dev29): each kana skipped with a warning.
+        check_cases({
+            {"這個角色超かわいい的", "這個角色超 ka wa yi的"},
+            {"ありがとう", "a li ga tuo"},
+            {"ラーメン", "la men"},
+            {"チョコ", "qiao ke"},
+            {"がんばって", "gan ba te"},
+        });
+        // Every kana's syllable is one the aligner and the lips know.
+        const auto three_bytes = [](char32_t c) {  // UTF-8 of a code point from U+0800 to U+FFFF
+            return std::string{static_cast<char>(0xE0 | (c >> 12)),
+                               static_cast<char>(0x80 | ((c >> 6) & 0x3F)),
+                               static_cast<char>(0x80 | (c & 0x3F))};
+        };
+        std::string kana;
+        for (char32_t c = 0x3041; c <= 0x3096; ++c) {
+            if (c == 0x3063) continue;  // っ alone says nothing: below
+            kana += three_bytes(c) + three_bytes(c + 0x60) + " ";
+        }
+        const auto timeline = read_transcript(kana);
+        CHECK(timeline.warnings.empty());
+        for (const auto& syllable : timeline.syllables) {
+            CAPTURE(syllable.pinyin);
+            CHECK(is_valid_pinyin(syllable.pinyin));
+        }
+        // The limit: a small っ alone (好っ) cuts a sound off, says nothing and is warned of.
+        CHECK(read_transcript("好っ").warnings.size() == 1);
     }
 }
