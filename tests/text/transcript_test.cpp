@@ -254,6 +254,21 @@ TEST_SUITE("transcript") {
         CHECK(toneless("她是家里的长女") == "ta shi jia li de zhang nv");
     }
 
+    TEST_CASE("长 of a length's noun and after 这么 or 那么 is chang2 before 的") {
+        // Every row but the limits failed on main 7a33214 (session 32, dev29): the phrase list's 长的
+        // zhang3 de5 ("grown") took the 长, its noun or adverb left out of the list.
+        CHECK(toneless("正方形的面积等于边长的平方") ==
+              "zheng fang xing de mian ji deng yu bian chang de ping fang");
+        CHECK(toneless("正方形的面積等於邊長的平方") ==
+              "zheng fang xing de mian ji deng yu bian chang de ping fang");
+        CHECK(toneless("身长的一半") == "shen chang de yi ban");
+        CHECK(toneless("那么长的时间") == "na me chang de shi jian");
+        CHECK(toneless("這麼長的頭髮") == "zhe me chang de tou fa");
+        // The limits: the verb "grown", and a head's 长.
+        CHECK(toneless("新长的叶子") == "xin zhang de ye zi");
+        CHECK(toneless("校长的话") == "xiao zhang de hua");
+    }
+
     TEST_CASE("syllables carry the character, numbered pinyin and their sentence") {
         const auto timeline = read_transcript("銀行。女兒");
         REQUIRE(timeline.syllables.size() == 4);
