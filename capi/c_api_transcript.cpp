@@ -21,6 +21,10 @@ struct tf_transcript_options {
     talkface::TranscriptOptions options;
 };
 
+struct tf_timeline_json_options {
+    talkface::TimelineJsonOptions options;
+};
+
 namespace {
 
 const talkface::TranscriptOptions& options_or_defaults(const tf_transcript_options* options) {
@@ -376,6 +380,37 @@ tf_status tf_timeline_to_json(const tf_timeline* timeline, char** out_json, size
         require_non_null(timeline, "timeline");
         require_non_null(out_json, "out_json");
         talkface::capi::give_document(talkface::timeline_to_json(timeline->timeline), out_json, out_len);
+    });
+}
+
+tf_status tf_timeline_json_options_create(tf_timeline_json_options** out) {
+    return guard([&] {
+        require_non_null(out, "out");
+        *out = new tf_timeline_json_options{};
+    });
+}
+
+void tf_timeline_json_options_destroy(tf_timeline_json_options* options) {
+    delete options;
+}
+
+tf_status tf_timeline_json_options_set_with_times(tf_timeline_json_options* options, int with_times) {
+    return guard([&] {
+        require_non_null(options, "options");
+        options->options.with_times = with_times != 0;
+    });
+}
+
+tf_status tf_timeline_to_json_with_options(const tf_timeline* timeline,
+                                           const tf_timeline_json_options* options, char** out_json,
+                                           size_t* out_len) {
+    return guard([&] {
+        require_non_null(timeline, "timeline");
+        require_non_null(out_json, "out_json");
+        static const talkface::TimelineJsonOptions defaults;
+        talkface::capi::give_document(
+            talkface::timeline_to_json(timeline->timeline, options != nullptr ? options->options : defaults),
+            out_json, out_len);
     });
 }
 

@@ -10,6 +10,10 @@ struct tf_web_page_options {
     talkface::WebPageOptions options;
 };
 
+struct tf_svg_animation_options {
+    talkface::SvgAnimationOptions options;
+};
+
 using talkface::InvalidArgument;
 using talkface::capi::animator_for;
 using talkface::capi::enum_value;
@@ -28,6 +32,37 @@ talkface::AnimationEncoding to_encoding(const tf_animation_encoding& encoding) {
     return static_cast<talkface::AnimationEncoding>(value);
 }
 
+talkface::SvgAnimationOptions with_encoding(const tf_animation_encoding& encoding) {
+    talkface::SvgAnimationOptions options;
+    options.encoding = to_encoding(encoding);
+    return options;
+}
+
+const talkface::SvgAnimationOptions& options_or_defaults(const tf_svg_animation_options* options) {
+    static const talkface::SvgAnimationOptions defaults;
+    return options != nullptr ? options->options : defaults;
+}
+
+void render_svg(const tf_face_model* face, const tf_animation* animation, const tf_svg_options* options,
+                const talkface::SvgAnimationOptions& animation_options, tf_progress_fn progress,
+                void* user_data, char** out_svg, size_t* out_len) {
+    require_non_null(face, "face");
+    require_non_null(animation, "animation");
+    require_non_null(out_svg, "out_svg");
+    talkface::capi::give_document(
+        animator_for(face, options)
+            .render_animation_svg(animation->animation, animation_options, progress_for(progress, user_data)),
+        out_svg, out_len);
+}
+
+void write_svg(const tf_face_model* face, const tf_animation* animation, const tf_svg_options* options,
+               const talkface::SvgAnimationOptions& animation_options, const char* path) {
+    require_non_null(face, "face");
+    require_non_null(animation, "animation");
+    require_non_null(path, "path");
+    animator_for(face, options).write_animation_svg(path, animation->animation, animation_options);
+}
+
 }  // namespace
 
 extern "C" {
@@ -36,27 +71,57 @@ tf_status tf_render_animation_svg(const tf_face_model* face, const tf_animation*
                                   const tf_svg_options* options, tf_animation_encoding encoding,
                                   tf_progress_fn progress, void* user_data, char** out_svg, size_t* out_len) {
     return guard([&] {
-        require_non_null(face, "face");
-        require_non_null(animation, "animation");
-        require_non_null(out_svg, "out_svg");
-        talkface::SvgAnimationOptions animation_options;
-        animation_options.encoding = to_encoding(encoding);
-        talkface::capi::give_document(animator_for(face, options).render_animation_svg(
-                                          animation->animation, animation_options, progress_for(progress, user_data)),
-                                      out_svg, out_len);
+        render_svg(face, animation, options, with_encoding(encoding), progress, user_data, out_svg, out_len);
     });
 }
 
 tf_status tf_write_animation_svg(const tf_face_model* face, const tf_animation* animation,
                                  const tf_svg_options* options, tf_animation_encoding encoding, const char* path) {
+    return guard([&] { write_svg(face, animation, options, with_encoding(encoding), path); });
+}
+
+tf_status tf_svg_animation_options_create(tf_svg_animation_options** out) {
     return guard([&] {
-        require_non_null(face, "face");
-        require_non_null(animation, "animation");
-        require_non_null(path, "path");
-        talkface::SvgAnimationOptions animation_options;
-        animation_options.encoding = to_encoding(encoding);
-        animator_for(face, options).write_animation_svg(path, animation->animation, animation_options);
+        require_non_null(out, "out");
+        *out = new tf_svg_animation_options{};
     });
+}
+
+void tf_svg_animation_options_destroy(tf_svg_animation_options* options) {
+    delete options;
+}
+
+tf_status tf_svg_animation_options_set_encoding(tf_svg_animation_options* options,
+                                                tf_animation_encoding encoding) {
+    return guard([&] {
+        require_non_null(options, "options");
+        options->options.encoding = to_encoding(encoding);
+    });
+}
+
+tf_status tf_svg_animation_options_set_tolerance_px(tf_svg_animation_options* options, double tolerance_px) {
+    return guard([&] {
+        require_non_null(options, "options");
+        options->options.tolerance_px = tolerance_px;
+    });
+}
+
+tf_status tf_render_animation_svg_with_options(const tf_face_model* face, const tf_animation* animation,
+                                               const tf_svg_options* options,
+                                               const tf_svg_animation_options* animation_options,
+                                               tf_progress_fn progress, void* user_data, char** out_svg,
+                                               size_t* out_len) {
+    return guard([&] {
+        render_svg(face, animation, options, options_or_defaults(animation_options), progress, user_data,
+                   out_svg, out_len);
+    });
+}
+
+tf_status tf_write_animation_svg_with_options(const tf_face_model* face, const tf_animation* animation,
+                                              const tf_svg_options* options,
+                                              const tf_svg_animation_options* animation_options,
+                                              const char* path) {
+    return guard([&] { write_svg(face, animation, options, options_or_defaults(animation_options), path); });
 }
 
 tf_status tf_web_page_options_create(tf_web_page_options** out) {
@@ -102,6 +167,13 @@ tf_status tf_web_page_options_set_encoding(tf_web_page_options* options, tf_anim
     return guard([&] {
         require_non_null(options, "options");
         options->options.animation.encoding = to_encoding(encoding);
+    });
+}
+
+tf_status tf_web_page_options_set_tolerance_px(tf_web_page_options* options, double tolerance_px) {
+    return guard([&] {
+        require_non_null(options, "options");
+        options->options.animation.tolerance_px = tolerance_px;
     });
 }
 

@@ -764,6 +764,25 @@ TF_API tf_status tf_timeline_syllable_generic_speech(const tf_timeline *timeline
  * Errors: TF_ERR_INVALID_ARGUMENT if timeline or out_json is NULL. */
 TF_API tf_status tf_timeline_to_json(const tf_timeline *timeline, char **out_json, size_t *out_len);
 
+/* How the timeline JSON is written (talkface::TimelineJsonOptions). Created by
+ * tf_timeline_json_options_create with the defaults (times written), released by
+ * tf_timeline_json_options_destroy. A setter fails (TF_ERR_INVALID_ARGUMENT) only on a NULL options. */
+typedef struct tf_timeline_json_options tf_timeline_json_options;
+
+TF_API tf_status tf_timeline_json_options_create(tf_timeline_json_options** out);
+/* Releases the options; NULL is allowed. */
+TF_API void tf_timeline_json_options_destroy(tf_timeline_json_options* options);
+/* 0 leaves out every time and what the aligner measured (start, end, final_start, confidence,
+ * duration), as `talkface syllables --json` does for a transcript not yet aligned; non-zero (the
+ * default) writes them. */
+TF_API tf_status tf_timeline_json_options_set_with_times(tf_timeline_json_options* options, int with_times);
+
+/* tf_timeline_to_json written as `options` say (NULL: the defaults, as tf_timeline_to_json).
+ * Errors: as tf_timeline_to_json. */
+TF_API tf_status tf_timeline_to_json_with_options(const tf_timeline* timeline,
+                                                  const tf_timeline_json_options* options, char** out_json,
+                                                  size_t* out_len);
+
 /* Reads the timeline JSON (`length` bytes of UTF-8) into a new timeline *out; source_name (may be
  * NULL: "<timeline>") names it in messages. Keys left out take their defaults (times 0).
  * Errors: TF_ERR_PARSE naming source:line:column and the item ("syllables[3].start") for text that
@@ -1304,6 +1323,42 @@ TF_API tf_status tf_write_animation_svg(const tf_face_model *face, const tf_anim
                                         const tf_svg_options *options, tf_animation_encoding encoding,
                                         const char *path);
 
+/* How an animation becomes SVG (talkface::SvgAnimationOptions), for the _with_options forms of the
+ * two calls above. Created by tf_svg_animation_options_create with the defaults (TF_ENCODING_KEYFRAMES,
+ * 0.3 px), released by tf_svg_animation_options_destroy. A setter fails (TF_ERR_INVALID_ARGUMENT)
+ * only on a NULL options and where its comment says; the tolerance is checked when the animation is
+ * drawn. */
+typedef struct tf_svg_animation_options tf_svg_animation_options;
+
+TF_API tf_status tf_svg_animation_options_create(tf_svg_animation_options** out);
+/* Releases the options; NULL is allowed. */
+TF_API void tf_svg_animation_options_destroy(tf_svg_animation_options* options);
+/* Errors: TF_ERR_INVALID_ARGUMENT if options is NULL or the encoding is unknown. */
+TF_API tf_status tf_svg_animation_options_set_encoding(tf_svg_animation_options* options,
+                                                       tf_animation_encoding encoding);
+/* TF_ENCODING_KEYFRAMES: the largest distance, in the face's pixels, between a coordinate the
+ * browser interpolates and the same coordinate of the frame at that time (a finite number > 0;
+ * 0.3, the default, is below what an eye sees at the face's own size). Larger: smaller files. */
+TF_API tf_status tf_svg_animation_options_set_tolerance_px(tf_svg_animation_options* options,
+                                                           double tolerance_px);
+
+/* tf_render_animation_svg written as `animation_options` say (NULL: the defaults).
+ * Errors: as tf_render_animation_svg; TF_ERR_INVALID_ARGUMENT naming "tolerance_px" if it is not
+ * a finite number > 0. */
+TF_API tf_status tf_render_animation_svg_with_options(const tf_face_model* face,
+                                                      const tf_animation* animation,
+                                                      const tf_svg_options* options,
+                                                      const tf_svg_animation_options* animation_options,
+                                                      tf_progress_fn progress, void* user_data,
+                                                      char** out_svg, size_t* out_len);
+
+/* tf_write_animation_svg written as `animation_options` say (NULL: the defaults).
+ * Errors: as tf_render_animation_svg_with_options; TF_ERR_FILE if the file cannot be written. */
+TF_API tf_status tf_write_animation_svg_with_options(const tf_face_model* face, const tf_animation* animation,
+                                                     const tf_svg_options* options,
+                                                     const tf_svg_animation_options* animation_options,
+                                                     const char* path);
+
 /* The animation as one Lottie document (JSON, as lottie-web reads it; lottie-android, lottie-ios
  * and rlottie play it): the drawing of tf_render_animation_svg (`options` NULL: the default) as
  * Lottie shape layers, every moving number animated between key frames, linear between them,
@@ -1348,6 +1403,8 @@ TF_API tf_status tf_web_page_options_set_title(tf_web_page_options *options, con
 TF_API tf_status tf_web_page_options_add_link(tf_web_page_options *options, const char *text, const char *url);
 /* Errors: TF_ERR_INVALID_ARGUMENT if options is NULL or the encoding is unknown. */
 TF_API tf_status tf_web_page_options_set_encoding(tf_web_page_options *options, tf_animation_encoding encoding);
+/* The animation's tolerance, as tf_svg_animation_options_set_tolerance_px (0.3 by default). */
+TF_API tf_status tf_web_page_options_set_tolerance_px(tf_web_page_options* options, double tolerance_px);
 /* How a web page carries its audio; values equal talkface::WebPageAudio. */
 typedef enum tf_web_page_audio {
     TF_PAGE_AUDIO_COMPRESSED = 0,  /* embedded as Opus in WebM, mono, for speech (the default) */

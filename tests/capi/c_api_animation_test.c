@@ -336,6 +336,40 @@ static int test_built_timeline_reads_back_and_writes_align_json(void) {
     return failures;
 }
 
+/* tf_timeline_json_options: NULL options write tf_timeline_to_json's document; with_times 0 leaves
+ * out every time and the duration and keeps the syllables. */
+static int test_timeline_json_without_times(void) {
+    int failures = 0;
+    tf_timeline* timeline = new_spoken_timeline();
+    tf_timeline_json_options* options = NULL;
+    char* json = NULL;
+    char* with_defaults = NULL;
+    CHECK_OK(tf_timeline_to_json(timeline, &json, NULL));
+    CHECK_OK(tf_timeline_to_json_with_options(timeline, NULL, &with_defaults, NULL));
+    CHECK(json != NULL && with_defaults != NULL && strcmp(json, with_defaults) == 0);
+    tf_free(with_defaults);
+    with_defaults = NULL;
+    CHECK_OK(tf_timeline_json_options_create(&options));
+    CHECK_OK(tf_timeline_to_json_with_options(timeline, options, &with_defaults, NULL));
+    CHECK(json != NULL && with_defaults != NULL && strcmp(json, with_defaults) == 0);
+    tf_free(with_defaults);
+    tf_free(json);
+    json = NULL;
+    CHECK_OK(tf_timeline_json_options_set_with_times(options, 0));
+    CHECK_OK(tf_timeline_to_json_with_options(timeline, options, &json, NULL));
+    CHECK(json != NULL && strstr(json, "\"pinyin\":\"hao3\"") != NULL);
+    CHECK(json != NULL && strstr(json, "\"start\"") == NULL && strstr(json, "\"duration\"") == NULL);
+    tf_free(json);
+    json = NULL;
+    CHECK_FAILS_WITH(tf_timeline_to_json_with_options(NULL, options, &json, NULL), TF_ERR_INVALID_ARGUMENT,
+                     "timeline");
+    CHECK_FAILS_WITH(tf_timeline_json_options_set_with_times(NULL, 1), TF_ERR_INVALID_ARGUMENT, "options");
+    tf_timeline_json_options_destroy(options);
+    tf_timeline_json_options_destroy(NULL);
+    tf_timeline_destroy(timeline);
+    return failures;
+}
+
 static int test_timeline_json_reads_back_the_same_timeline(void) {
     int failures = 0;
     const char *newer = "{\"version\":2,\"sentences\":[],\"syllables\":[]}";
@@ -954,6 +988,7 @@ int main(void) {
     failures += test_a_word_no_table_reads_is_generic_speech();
     failures += test_built_timeline_reads_back_and_writes_align_json();
     failures += test_timeline_json_reads_back_the_same_timeline();
+    failures += test_timeline_json_without_times();
     failures += test_syllable_shapes_size_then_data();
     failures += test_event_kind_names_round_trip();
     failures += test_same_seed_gives_the_same_events();

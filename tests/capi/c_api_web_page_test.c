@@ -44,6 +44,76 @@ static int test_animation_svg(const tf_face_model *face, const tf_animation *ani
     return failures;
 }
 
+/* The tolerance of tf_svg_animation_options: the defaults give tf_render_animation_svg's document,
+ * a coarser tolerance fewer key frames (a shorter document), and a tolerance of 0 is refused by name,
+ * from the SVG calls and from the page. */
+static int test_animation_svg_options(const tf_face_model* face, const tf_animation* animation,
+                                      const tf_timeline* timeline) {
+    int failures = 0;
+    tf_svg_animation_options* options = NULL;
+    tf_web_page_options* page_options = NULL;
+    char* plain = NULL;
+    char* svg = NULL;
+    char* html = NULL;
+    size_t plain_length = 0;
+    size_t length = 0;
+    char path[512];
+    CHECK_OK(tf_render_animation_svg(face, animation, NULL, TF_ENCODING_KEYFRAMES, NULL, NULL, &plain,
+                                     &plain_length));
+    CHECK_OK(tf_render_animation_svg_with_options(face, animation, NULL, NULL, NULL, NULL, &svg, &length));
+    CHECK(plain != NULL && svg != NULL && length == plain_length && strcmp(plain, svg) == 0);
+    tf_free(svg);
+    svg = NULL;
+    CHECK_OK(tf_svg_animation_options_create(&options));
+    CHECK_OK(tf_svg_animation_options_set_tolerance_px(options, 3.0));
+    CHECK_OK(tf_render_animation_svg_with_options(face, animation, NULL, options, NULL, NULL, &svg, &length));
+    CHECK(svg != NULL && length < plain_length);
+    tf_free(svg);
+    svg = NULL;
+    CHECK_OK(tf_svg_animation_options_set_encoding(options, TF_ENCODING_FRAMES));
+    CHECK_OK(tf_render_animation_svg_with_options(face, animation, NULL, options, NULL, NULL, &svg, NULL));
+    CHECK(svg != NULL && strstr(svg, "<set attributeName=\"visibility\"") != NULL);
+    tf_free(svg);
+    svg = NULL;
+    CHECK_FAILS_WITH(tf_svg_animation_options_set_encoding(options, (tf_animation_encoding)7),
+                     TF_ERR_INVALID_ARGUMENT, "encoding");
+    CHECK_OK(tf_svg_animation_options_set_encoding(options, TF_ENCODING_KEYFRAMES));
+    CHECK_OK(tf_svg_animation_options_set_tolerance_px(options, 0.0));
+    CHECK_FAILS_WITH(
+        tf_render_animation_svg_with_options(face, animation, NULL, options, NULL, NULL, &svg, NULL),
+        TF_ERR_INVALID_ARGUMENT, "tolerance_px");
+    CHECK(svg == NULL);
+    snprintf(path, sizeof path, "%s/c_api_tolerance.svg", TF_TEST_OUTPUT_DIR);
+    CHECK_FAILS_WITH(tf_write_animation_svg_with_options(face, animation, NULL, options, path),
+                     TF_ERR_INVALID_ARGUMENT, "tolerance_px");
+    CHECK_OK(tf_write_animation_svg_with_options(face, animation, NULL, NULL, path));
+    CHECK_FAILS_WITH(tf_svg_animation_options_set_tolerance_px(NULL, 0.3), TF_ERR_INVALID_ARGUMENT,
+                     "options");
+    tf_svg_animation_options_destroy(options);
+    tf_svg_animation_options_destroy(NULL);
+
+    CHECK_OK(tf_web_page_options_create(&page_options));
+    CHECK_OK(tf_web_page_options_set_audio(page_options, TF_PAGE_AUDIO_LINK, 0, "speech.ogg"));
+    CHECK_OK(tf_web_page_options_set_tolerance_px(page_options, -1.0));
+    CHECK_FAILS_WITH(
+        tf_build_web_page(face, NULL, animation, timeline, kSpeech, page_options, NULL, NULL, &html, NULL),
+        TF_ERR_INVALID_ARGUMENT, "tolerance_px");
+    CHECK(html == NULL);
+    CHECK_OK(tf_web_page_options_set_tolerance_px(page_options, 3.0));
+    CHECK_OK(tf_build_web_page(face, NULL, animation, timeline, kSpeech, page_options, NULL, NULL, &html,
+                               &length));
+    tf_free(html);
+    html = NULL;
+    CHECK_OK(tf_web_page_options_set_tolerance_px(page_options, 0.3));
+    CHECK_OK(tf_build_web_page(face, NULL, animation, timeline, kSpeech, page_options, NULL, NULL, &html,
+                               &plain_length));
+    CHECK(length < plain_length);
+    tf_free(html);
+    tf_free(plain);
+    tf_web_page_options_destroy(page_options);
+    return failures;
+}
+
 static int test_animation_lottie(const tf_face_model *face, const tf_animation *animation) {
     int failures = 0;
     char *json = NULL;
@@ -162,6 +232,7 @@ int main(void) {
     CHECK_OK(tf_animate(face, timeline, simulator, NULL, &animation));
     if (face != NULL && animation != NULL) {
         failures += test_animation_svg(face, animation);
+        failures += test_animation_svg_options(face, animation, timeline);
         failures += test_animation_lottie(face, animation);
         failures += test_web_page(face, animation, timeline);
     }
