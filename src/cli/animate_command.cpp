@@ -74,15 +74,44 @@ talkface::WebPageOptions page_options(const AnimateOptions& options) {
             page.background_image_path = options.background;
         }
     }
-    if (!options.face_origin.empty()) {
-        const auto origin = parse_pair(options.face_origin, ',').value_or(std::make_pair(0.0, 0.0));
-        page.face_origin_px = talkface::Point2{origin.first, origin.second};
-    }
+    page.face_origin_px = face_origin_px(options);
     page.face_d_px = options.face_d;
+    page.animation.tolerance_px = options.tolerance_px;
     const auto stage = parse_pair(options.stage, 'x').value_or(std::make_pair(800.0, 450.0));
     page.stage_width_px = static_cast<int>(stage.first);
     page.stage_height_px = static_cast<int>(stage.second);
     return page;
+}
+
+const char* mouth_interpolation_name(talkface::MouthInterpolation interpolation) {
+    return interpolation == talkface::MouthInterpolation::smooth ? "smooth" : "linear";
+}
+
+void add_lip_sync_options(CLI::App& command, talkface::LipSyncOptions& lip_sync) {
+    command
+        .add_option(
+            "--rest-min-pause", lip_sync.rest_min_pause_s,
+            "Seconds between syllables from which the mouth closes to rest; shorter gaps keep it moving")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+    command
+        .add_option(
+            "--rest-transition", lip_sync.rest_transition_s,
+            "Seconds the mouth takes to reach rest after a pause starts and to leave it before speech")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+    command
+        .add_option("--max-mouth-speed", lip_sync.max_speed_mns0_per_s,
+                    "Fastest a mouth point moves, mouth-nose separations (MNS0) a second")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    command
+        .add_option("--mouth-interpolation", lip_sync.interpolation,
+                    "Between key frames: linear (the thesis's) or smooth (eased in and out)")
+        ->transform(choice_of({talkface::MouthInterpolation::linear, talkface::MouthInterpolation::smooth},
+                              mouth_interpolation_name))
+        ->type_name("TEXT")
+        ->default_str(mouth_interpolation_name(lip_sync.interpolation));
 }
 
 void run_animate(const AnimateOptions& options, const std::string& audio_path,
@@ -98,6 +127,14 @@ void run_animate(const AnimateOptions& options, const std::string& audio_path,
 }
 
 }  // namespace
+
+talkface::SvgOptions svg_options(const AnimateOptions& options) {
+    talkface::SvgOptions drawing;
+    drawing.look = options.look;
+    drawing.stroke_width_in_d = options.stroke_width_in_d;
+    drawing.draw_clothes = !options.no_clothes;
+    return drawing;
+}
 
 void add_speech_arguments(CLI::App& command, std::string& audio_path, TranscriptArgument& transcript) {
     command.add_option("AUDIO", audio_path, kSpeechFormatsHelp)
@@ -142,11 +179,43 @@ void add_face_options(CLI::App& command, AnimateOptions& options) {
     command.add_option("--face", options.face_path, "Face model file (default: the built-in face)")
         ->check(CLI::ExistingFile);
     add_look_option(command, options.look);
+    command
+        .add_option("--stroke-width", options.stroke_width_in_d,
+                    "outlined: the outlines' width, in eye distances d")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    command.add_flag("--no-clothes", options.no_clothes, "Leave out the neck and shoulders");
     command.add_option("--fps", options.fps, "Frames per second of the animation")
         ->check(CLI::Range(1.0, 120.0))
         ->capture_default_str();
+    add_lip_sync_options(command, options.lip_sync);
     command.add_option("--seed", options.seed, "Seed of the simulated blinks and head moves")->capture_default_str();
     add_style_options(command, options.expression);
+}
+
+void add_face_placement_options(CLI::App& command, AnimateOptions& options, const std::string& where) {
+    command
+        .add_option("--face-origin", options.face_origin,
+                    "Where the face's neck (rotation origin O) stands, X,Y in pixels (" + where + ")")
+        ->check(pair_validator(',', "X,Y", "600,420"));
+    command.add_option("--face-d", options.face_d, "The face's eye distance d, pixels (" + where + ")")
+        ->check(CLI::PositiveNumber);
+}
+
+std::optional<talkface::Point2> face_origin_px(const AnimateOptions& options) {
+    if (options.face_origin.empty()) return std::nullopt;
+    const auto origin = parse_pair(options.face_origin, ',').value_or(std::make_pair(0.0, 0.0));
+    return talkface::Point2{origin.first, origin.second};
+}
+
+void add_tolerance_option(CLI::App& command, AnimateOptions& options) {
+    command
+        .add_option(
+            "--tolerance", options.tolerance_px,
+            "keyframes and Lottie: how far, in the face's pixels, the animation may stray from a frame; "
+            "larger: smaller files")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
 }
 
 void add_page_options(CLI::App& command, AnimateOptions& options) {
@@ -183,12 +252,8 @@ void add_page_options(CLI::App& command, AnimateOptions& options) {
     command.add_option("--link", options.links, "audiobook: a link under the text, TEXT=URL or URL (repeatable)");
     command.add_option("--background", options.background,
                        "announcer: the stage's background, a colour #rrggbb or an image file (PNG, JPEG, SVG ...)");
-    command
-        .add_option("--face-origin", options.face_origin,
-                    "announcer: where the face's neck (rotation origin O) stands on the stage, X,Y in pixels")
-        ->check(pair_validator(',', "X,Y", "600,420"));
-    command.add_option("--face-d", options.face_d, "announcer: the face's eye distance d on the stage, pixels")
-        ->check(CLI::PositiveNumber);
+    add_face_placement_options(command, options, "announcer: on the stage");
+    add_tolerance_option(command, options);
     command.add_option("--stage", options.stage, "announcer: the stage's size, WIDTHxHEIGHT in pixels")
         ->check(pair_validator('x', "WIDTHxHEIGHT", "800x450"))
         ->capture_default_str();
@@ -211,7 +276,7 @@ TalkingFace animate_talking_face(const AnimateOptions& options, const std::strin
     }
     talkface::Timeline timeline = timed_speech(audio_path, transcript, options.timing, alignment_progress);
     const talkface::ExpressionSimulator simulator(timeline, options.seed, style);
-    talkface::LipSyncOptions lip_sync;
+    talkface::LipSyncOptions lip_sync = options.lip_sync;
     lip_sync.fps = options.fps;
     talkface::Animation animation = talkface::animate(face, timeline, simulator, lip_sync);
     if (progress) progress(1.0, "animating");
@@ -232,9 +297,7 @@ void make_talking_face(const AnimateOptions& options, const std::string& audio_p
         animate_talking_face(options, audio_path, transcript, progress_part(bar.get(), 0.0, kAnimatedAt));
     const talkface::Timeline& timeline = talking.timeline;
     const talkface::Animation& animation = talking.animation;
-    talkface::SvgOptions svg_options;
-    svg_options.look = options.look;
-    const talkface::SvgAnimator animator(talking.face, svg_options);
+    const talkface::SvgAnimator animator(talking.face, svg_options(options));
     // The output is written whole at the end (a temporary file renamed): a failure leaves no page.
     if (is_svg) {
         animator.write_animation_svg(options.output_path, animation, page.animation,

@@ -5,6 +5,7 @@
 #define TALKFACE_CLI_ANIMATE_COMMAND_HPP
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,11 @@ talkface::ExpressionStyle expression_style(const StyleOptions& options);
 struct AnimateOptions {
     std::string face_path;  // empty: the built-in face
     double fps = talkface::LipSyncOptions{}.fps;
+    // --rest-min-pause, --rest-transition, --max-mouth-speed, --mouth-interpolation; its fps is --fps's.
+    talkface::LipSyncOptions lip_sync;
+    double stroke_width_in_d = talkface::SvgOptions{}.stroke_width_in_d;  // --stroke-width
+    bool no_clothes = false;                                              // --no-clothes
+    double tolerance_px = talkface::SvgAnimationOptions{}.tolerance_px;   // --tolerance
     std::uint64_t seed = 0;
     StyleOptions expression;
     talkface::FaceLook look = talkface::FaceLook::outlined;
@@ -54,9 +60,20 @@ struct AnimateOptions {
     bool quiet = false;
 };
 
-// Adds --face, --look, --fps, --seed, --style and --without: what every command that animates a
-// face from a speech takes (animate, demo, video).
+// Adds --face, --look, --stroke-width, --no-clothes, --fps, the lip-sync options, --seed, --style
+// and --without: what every command that animates a face from a speech takes (animate, demo, video,
+// export).
 void add_face_options(CLI::App& command, AnimateOptions& options);
+
+// Adds --face-origin X,Y and --face-d, where the face stands and how large; `where` names the
+// picture they place it in ("announcer: ... on the stage", "... in the frame").
+void add_face_placement_options(CLI::App& command, AnimateOptions& options, const std::string& where);
+
+// --face-origin's point, if it was given.
+std::optional<talkface::Point2> face_origin_px(const AnimateOptions& options);
+
+// Adds --tolerance, how far an animation's key frames may stray from its frames (SVG and Lottie).
+void add_tolerance_option(CLI::App& command, AnimateOptions& options);
 
 // Adds --look (outlined or flat) to a command that draws a face.
 void add_look_option(CLI::App& command, talkface::FaceLook& look);
@@ -64,6 +81,9 @@ void add_look_option(CLI::App& command, talkface::FaceLook& look);
 // Adds the options both page commands take (all but the inputs) to `command`: add_face_options()
 // and the page's own.
 void add_page_options(CLI::App& command, AnimateOptions& options);
+
+// How the face of `options` is drawn as SVG and Lottie: --look, --stroke-width, --no-clothes.
+talkface::SvgOptions svg_options(const AnimateOptions& options);
 
 // A speech aligned and the face animated on it.
 struct TalkingFace {

@@ -46,15 +46,15 @@ void run_export(const ExportOptions& options) {
     }
     report_warnings(talking.timeline);
     if (format == "lottie") {
-        talkface::SvgOptions drawing;
-        drawing.look = options.animate.look;
-        const talkface::SvgAnimator animator(talking.face, drawing);
+        const talkface::SvgAnimator animator(talking.face, svg_options(options.animate));
+        talkface::LottieOptions lottie;
+        lottie.tolerance_px = options.animate.tolerance_px;
         const std::unique_ptr<ProgressBar> bar = make_progress_bar(options.animate.quiet);
         const auto progress = progress_part(bar.get(), 0.0, 1.0);
         if (output_path == "-") {
-            std::cout << animator.render_animation_lottie(talking.animation, {}, progress) << std::flush;
+            std::cout << animator.render_animation_lottie(talking.animation, lottie, progress) << std::flush;
         } else {
-            animator.write_animation_lottie(output_path, talking.animation, {}, progress);
+            animator.write_animation_lottie(output_path, talking.animation, lottie, progress);
         }
         return;
     }
@@ -95,15 +95,25 @@ void setup_export_command(CLI::App& app) {
         ->check(CLI::IsMember(format_names()));
     add_timing_option(*command, options->animate.timing);
     add_face_options(*command, options->animate);
-    CLI::Option* look = command->get_option("--look");
-    look->description(look->get_description() + "; the lottie export only (a timing format refuses it)");
+    add_tolerance_option(*command, options->animate);
+    std::vector<CLI::Option*> drawing;
+    for (const char* name : {"--look", "--stroke-width", "--no-clothes", "--tolerance"}) {
+        CLI::Option* option = command->get_option(name);
+        option->description(option->get_description() +
+                            "; the lottie export only (a timing format refuses it)");
+        drawing.push_back(option);
+    }
     command->add_flag("-q,--quiet", options->animate.quiet, "No progress bar");
-    command->callback([options, look] {
-        // A timing format has no face to paint: a --look it would drop is refused, not ignored
-        // (Lottie is only ever named by --format: its .json suffix is ambiguous).
-        if (look->count() > 0 && options->format != "lottie") {
-            throw CLI::ValidationError("--look", "only the lottie export draws the face; the other formats carry the "
-                                                 "timing alone (--format lottie to export the face)");
+    command->callback([options, drawing] {
+        // A timing format has no face to paint: a drawing option it would drop is refused, not
+        // ignored (Lottie is only ever named by --format: its .json suffix is ambiguous).
+        for (const CLI::Option* option : drawing) {
+            if (option->count() > 0 && options->format != "lottie") {
+                throw CLI::ValidationError(option->get_name(),
+                                           "only the lottie export draws the face; the other "
+                                           "formats carry the timing alone (--format lottie to "
+                                           "export the face)");
+            }
         }
         if (options->animate.output_path == "-" && options->format.empty()) {
             throw CLI::ValidationError("--format", "writing to stdout (-o -) needs --format");

@@ -80,6 +80,10 @@ talkface::FaceVideoOptions face_video_options(const VideoCommandOptions& options
     video.video.transparent = options.transparent;
     video.frame.layout = options.app == "plain" ? talkface::FrameLayout::face : talkface::FrameLayout::announcer;
     video.frame.look = options.animate.look;
+    video.frame.stroke_width_in_d = options.animate.stroke_width_in_d;
+    video.frame.draw_clothes = !options.animate.no_clothes;
+    video.frame.face_origin_px = face_origin_px(options.animate);
+    video.frame.face_d_px = options.animate.face_d;
     const std::string& background = options.animate.background;
     if (!background.empty()) {
         if (background.front() == '#') {
@@ -119,6 +123,7 @@ void add_video_options(CLI::App& command, VideoCommandOptions& options) {
         ->capture_default_str();
     command.add_option("--background", options.animate.background,
                        "The frame's background: a colour #rrggbb or a picture file (PNG, JPEG, WebP, SVG ...)");
+    add_face_placement_options(command, options.animate, "announcer: in the frame");
     command.add_option("--crf", options.crf,
                        "Constant quality, lower is better and larger: H.264 0..51 (default 20), VP9 0..63 (32)");
     command.add_flag("--transparent", options.transparent,

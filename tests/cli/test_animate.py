@@ -179,3 +179,43 @@ def test_a_bad_style_file_fails_before_the_alignment_and_writes_nothing(tmp_path
             result.stderr
         assert not page.exists()
     assert run("demo", "--without", "wink", "-o", page).returncode == 2
+
+
+@pytest.fixture(scope="module")
+def default_svg(tmp_path_factory):
+    svg = tmp_path_factory.mktemp("default") / "talk.svg"
+    assert run("demo", "-q", "-o", svg).returncode == 0
+    return svg.read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("args", [["--max-mouth-speed", "2"], ["--mouth-interpolation", "smooth"],
+                                  ["--rest-min-pause", "1"], ["--rest-transition", "0.2"]])
+def test_the_lip_sync_options_move_the_mouth_otherwise(tmp_path, default_svg, args):
+    svg = tmp_path / "talk.svg"
+    assert run("demo", "-q", *args, "-o", svg).returncode == 0
+    assert svg.read_text(encoding="utf-8") != default_svg
+
+
+def test_outline_width_clothes_and_tolerance_change_the_drawing(tmp_path, default_svg):
+    # The built-in face's d is 65 px: 0.025 d is 1.62 px, 0.05 d 3.25 px.
+    assert 'stroke-width="3.25"' not in default_svg and '<path class="shirt"' in default_svg
+    wide = tmp_path / "wide.svg"
+    assert run("demo", "-q", "--stroke-width", "0.05", "-o", wide).returncode == 0
+    assert 'stroke-width="3.25"' in wide.read_text(encoding="utf-8")
+    bare = tmp_path / "bare.svg"
+    assert run("demo", "-q", "--no-clothes", "-o", bare).returncode == 0
+    assert '<path class="shirt"' not in bare.read_text(encoding="utf-8")
+    coarse = tmp_path / "coarse.svg"
+    assert run("demo", "-q", "--tolerance", "3", "-o", coarse).returncode == 0
+    assert coarse.stat().st_size < 0.8 * len(default_svg.encode())
+
+
+@pytest.mark.parametrize("args,name", [
+    (["--max-mouth-speed", "0"], "--max-mouth-speed"), (["--mouth-interpolation", "cubic"], "--mouth-interpolation"),
+    (["--rest-min-pause", "-1"], "--rest-min-pause"), (["--rest-transition", "-0.1"], "--rest-transition"),
+    (["--stroke-width", "0"], "--stroke-width"), (["--tolerance", "0"], "--tolerance")])
+def test_a_bad_drawing_or_lip_sync_value_is_refused_by_name(tmp_path, args, name):
+    page = tmp_path / "talk.html"
+    result = run("demo", *args, "-o", page)
+    assert result.returncode == 2 and f"{name}:" in result.stderr, result.stderr
+    assert not page.exists()

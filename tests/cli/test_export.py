@@ -216,6 +216,12 @@ def test_lottie_is_the_face_itself_over_the_whole_speech(tmp_path):
     refused = run("export", AUDIO, TRANSCRIPT, "-o", tmp_path / "cues.tsv", "--look", "flat")
     assert refused.returncode == 2 and "--look: only the lottie export draws the face" in refused.stderr
     assert not (tmp_path / "cues.tsv").exists()
+    # --tolerance: fewer key frames, a smaller document; the drawing options refuse a timing format too.
+    coarse = export(tmp_path, "coarse.json", "--format", "lottie", "--fps", 20, "--seed", 3, "--tolerance", 3)
+    assert coarse.stat().st_size < 0.9 * (tmp_path / "face.json").stat().st_size
+    for option in (["--stroke-width", "0.05"], ["--no-clothes"], ["--tolerance", "3"]):
+        refused = run("export", AUDIO, TRANSCRIPT, "-o", tmp_path / "cues.tsv", *option)
+        assert refused.returncode == 2 and f"{option[0]}: only the lottie export" in refused.stderr, refused.stderr
     # --face takes a face file, as animate's does.
     missing = run("export", AUDIO, TRANSCRIPT, "-o", "-", "--format", "lottie", "--quiet", "--face",
                   tmp_path / "missing.xml")

@@ -187,3 +187,24 @@ def test_demo_makes_an_mp4_of_the_built_in_face(tmp_path):
     video = next(s for s in info["streams"] if s["codec_type"] == "video")
     assert (video["width"], video["height"], eval(video["r_frame_rate"])) == (1280, 720, 30)  # noqa: S307
     assert float(info["format"]["duration"]) == pytest.approx(SPEECH_S, abs=1 / 30)
+
+
+def test_clothes_outline_and_face_placement_change_the_frames(tmp_path):
+    def frame(name, *args):
+        run("video", SPEECH, TRANSCRIPT, "-o", tmp_path / f"{name}.png", "-q", "--size", "160x90", "--fps", "1",
+            *args)
+        return Image.open(tmp_path / f"{name}-000005.png").convert("RGB")
+    plain = frame("plain")
+    for name, args in [("bare", ["--no-clothes"]), ("wide", ["--stroke-width", "0.08"]),
+                       ("placed", ["--face-origin", "40,80", "--face-d", "20"])]:
+        assert frame(name, *args).tobytes() != plain.tobytes(), name
+    # Placed left and small on the announcer's stage, the face leaves the frame's right part as the background.
+    placed = frame("placed", "--face-origin", "40,80", "--face-d", "20")
+    assert len(set(placed.crop((100, 0, 160, 90)).getdata())) == 1
+
+
+def test_a_bad_face_placement_is_refused_by_name(tmp_path):
+    for args, name in [(["--face-d", "0"], "--face-d"), (["--face-origin", "40"], "--face-origin")]:
+        result = run("video", SPEECH, TRANSCRIPT, "-q", "-o", tmp_path / "talk.mp4", *args, check=False)
+        assert result.returncode == 2 and f"{name}:" in result.stderr, result.stderr
+    assert list(tmp_path.iterdir()) == []
