@@ -6,7 +6,9 @@
 //   talkface::VideoOptions options;              // 1280x720, 30 fps
 //   talkface::VideoWriter video("talk.mp4", options);
 //   video.add_audio_file("speech.wav");
-//   for (...) video.write_frame(rgba, 1280 * 4);  // frame k is shown at k / fps
+//   std::vector<std::uint8_t> rgba(1280 * 720 * 4, 0xff);  // a white frame, R G B A per pixel
+//   for (int k = 0; k < 5 * options.fps; ++k)   // 5 s of frames; frame k is shown at k / fps
+//       video.write_frame(rgba.data(), 1280 * 4);
 //   video.finish();                              // renamed into place only now
 //
 // Which encoder is used is decided at run time by name from the FFmpeg the process loaded
