@@ -26,6 +26,8 @@ namespace {
 constexpr double kAnimatedAt = 0.6;
 // Alignment's share of animate_talking_face(); animating is the rest.
 constexpr double kAlignmentShare = 0.9;
+// SvgOptions::decimals' range (svg_animator.hpp): past 6 digits a coordinate carries only noise.
+constexpr int kMaxSvgDecimals = 6;
 
 std::optional<std::pair<double, double>> parse_pair(const std::string& text, char separator) {
     std::istringstream in(text);
@@ -133,6 +135,7 @@ talkface::SvgOptions svg_options(const AnimateOptions& options) {
     drawing.look = options.look;
     drawing.stroke_width_in_d = options.stroke_width_in_d;
     drawing.draw_clothes = !options.no_clothes;
+    drawing.decimals = options.decimals;
     return drawing;
 }
 
@@ -175,15 +178,24 @@ void add_look_option(CLI::App& command, talkface::FaceLook& look) {
         ->default_str(talkface::face_look_name(look));
 }
 
+void add_stroke_width_option(CLI::App& command, double& stroke_width_in_d) {
+    command
+        .add_option("--stroke-width", stroke_width_in_d, "outlined: the outlines' width, in eye distances d")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+}
+
+void add_decimals_option(CLI::App& command, int& decimals) {
+    command.add_option("--decimals", decimals, "Digits after the point in the SVG's coordinates, 0..6")
+        ->check(CLI::Range(0, kMaxSvgDecimals))
+        ->capture_default_str();
+}
+
 void add_face_options(CLI::App& command, AnimateOptions& options) {
     command.add_option("--face", options.face_path, "Face model file (default: the built-in face)")
         ->check(CLI::ExistingFile);
     add_look_option(command, options.look);
-    command
-        .add_option("--stroke-width", options.stroke_width_in_d,
-                    "outlined: the outlines' width, in eye distances d")
-        ->check(CLI::PositiveNumber)
-        ->capture_default_str();
+    add_stroke_width_option(command, options.stroke_width_in_d);
     command.add_flag("--no-clothes", options.no_clothes, "Leave out the neck and shoulders");
     command.add_option("--fps", options.fps, "Frames per second of the animation")
         ->check(CLI::Range(1.0, 120.0))
@@ -252,6 +264,7 @@ void add_page_options(CLI::App& command, AnimateOptions& options) {
     command.add_option("--link", options.links, "audiobook: a link under the text, TEXT=URL or URL (repeatable)");
     command.add_option("--background", options.background,
                        "announcer: the stage's background, a colour #rrggbb or an image file (PNG, JPEG, SVG ...)");
+    add_decimals_option(command, options.decimals);
     add_face_placement_options(command, options, "announcer: on the stage");
     add_tolerance_option(command, options);
     command.add_option("--stage", options.stage, "announcer: the stage's size, WIDTHxHEIGHT in pixels")

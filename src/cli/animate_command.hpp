@@ -41,6 +41,7 @@ struct AnimateOptions {
     talkface::LipSyncOptions lip_sync;
     double stroke_width_in_d = talkface::SvgOptions{}.stroke_width_in_d;  // --stroke-width
     bool no_clothes = false;                                              // --no-clothes
+    int decimals = talkface::SvgOptions{}.decimals;                       // --decimals (pages and SVG)
     double tolerance_px = talkface::SvgAnimationOptions{}.tolerance_px;   // --tolerance
     std::uint64_t seed = 0;
     StyleOptions expression;
@@ -78,11 +79,18 @@ void add_tolerance_option(CLI::App& command, AnimateOptions& options);
 // Adds --look (outlined or flat) to a command that draws a face.
 void add_look_option(CLI::App& command, talkface::FaceLook& look);
 
+// Adds --stroke-width, the outlines' width in eye distances d, to a command that draws a face.
+void add_stroke_width_option(CLI::App& command, double& stroke_width_in_d);
+
+// Adds --decimals, the digits after the point of an SVG's coordinates, to a command that writes SVG.
+void add_decimals_option(CLI::App& command, int& decimals);
+
 // Adds the options both page commands take (all but the inputs) to `command`: add_face_options()
 // and the page's own.
 void add_page_options(CLI::App& command, AnimateOptions& options);
 
-// How the face of `options` is drawn as SVG and Lottie: --look, --stroke-width, --no-clothes.
+// How the face of `options` is drawn as SVG and Lottie: --look, --stroke-width, --no-clothes,
+// --decimals.
 talkface::SvgOptions svg_options(const AnimateOptions& options);
 
 // A speech aligned and the face animated on it.

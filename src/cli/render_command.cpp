@@ -27,6 +27,8 @@ struct RenderOptions {
     std::string background = talkface::to_hex(*talkface::SvgOptions{}.background);
     bool no_clothes = false;
     talkface::FaceLook look = talkface::FaceLook::outlined;
+    double stroke_width_in_d = talkface::SvgOptions{}.stroke_width_in_d;
+    int decimals = talkface::SvgOptions{}.decimals;
     std::string output_path;
 };
 
@@ -107,6 +109,8 @@ void run_render(const RenderOptions& options) {
     svg_options.background = parse_background(options.background);
     svg_options.draw_clothes = !options.no_clothes;
     svg_options.look = options.look;
+    svg_options.stroke_width_in_d = options.stroke_width_in_d;
+    svg_options.decimals = options.decimals;
     const talkface::SvgAnimator animator(face, svg_options);
     try {
         if (options.output_path == "-") {
@@ -147,6 +151,8 @@ void setup_render_command(CLI::App& app) {
         ->capture_default_str();
     render->add_flag("--no-clothes", options->no_clothes, "Leave out the neck and shoulders");
     add_look_option(*render, options->look);
+    add_stroke_width_option(*render, options->stroke_width_in_d);
+    add_decimals_option(*render, options->decimals);
     render->add_option("-o,--output", options->output_path, "Output SVG file; - writes to stdout")
         ->required();
     render->callback([options] { run_render(*options); });

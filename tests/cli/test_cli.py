@@ -1,6 +1,7 @@
 """The talkface command: exit codes, messages, and outputs that are whole or absent."""
 import os
 import pathlib
+import re
 import subprocess
 import xml.etree.ElementTree as ET
 
@@ -168,3 +169,24 @@ def test_pose_out_of_range_names_the_angle_and_writes_nothing(tmp_path, pose, an
     assert result.stderr.startswith("talkface: error: ")
     assert angle in result.stderr
     assert not out.exists()
+
+
+def path_numbers(svg_text):
+    return re.findall(r"-?\d+(?:\.\d+)?", " ".join(re.findall(r' d="([^"]*)"', svg_text)))
+
+
+def test_render_takes_the_outline_width_and_the_decimals(tmp_path):
+    default = run("render", "-o", "-").stdout
+    assert any("." in number for number in path_numbers(default))
+    result = run("render", "--decimals", "0", "--stroke-width", "0.05", "-o", "-")
+    assert result.returncode == 0, result.stderr
+    # The built-in face's d is 65 px: 0.05 d is 3.25 px, where the default 0.025 d is 1.62.
+    assert 'stroke-width="3.25"' in result.stdout and 'stroke-width="3.25"' not in default
+    assert path_numbers(result.stdout) and not any("." in number for number in path_numbers(result.stdout))
+    page = tmp_path / "talk.svg"
+    assert run("demo", "-q", "--decimals", "1", "-o", page).returncode == 0
+    assert all(len(number.partition(".")[2]) <= 1 for number in path_numbers(page.read_text()))
+    for args in (["render", "--decimals", "7"], ["render", "--stroke-width", "-1"], ["demo", "--decimals", "-1"]):
+        refused = run(*args, "-o", tmp_path / "refused.svg")
+        assert refused.returncode == 2 and f"{args[1]}:" in refused.stderr, refused.stderr
+    assert not (tmp_path / "refused.svg").exists()
