@@ -236,6 +236,23 @@ Reestimation reestimate(const FeatureTrack& track, const LoudnessProfile& loudne
     return learned;
 }
 
+// How the text fits of a recording of `spoken_sentences` score a stop's closure (text_fit_gap).
+// At a fast pace a stop after a vowel is said with no silence before its burst, and the frame or
+// two the path must give its closure sound like the vowel run on: scored as silence, each cost a
+// right text 5-15 per frame (bench/ espeak-ng fast, dev26's dialogue), and a line of six to nine
+// syllables with three or four stops after speech (我就带了2块钱, 12点整开抢！) gapped 0.19-0.40 in
+// its passage and was refused, its other frames gapping as a longer sentence's do. In a passage the
+// models are learned from every sentence, and a wrong text's vowels and initials gap whatever its
+// closures. In a file of one or two sentences the models are learned from the sentence's own path
+// and fit a wrong text's sounds as well as a right one's, all but the silence learned from the
+// pauses around it: a closure where the speech has none is the evidence left (espeak-ng's 好啊 with
+// the text 請進, tests/data/speech: a gap of 0.28, nearly all of it 進's closure after 請's ng).
+// There it stays silent.
+ClosureScoring closure_scoring(std::size_t spoken_sentences) {
+    return spoken_sentences > kMaxHeldOutCheckSentences ? ClosureScoring::spoken_through
+                                                        : ClosureScoring::silent;
+}
+
 // The final pass over one chain, on the re-estimated models: its syllables placed in `result`
 // (with `other_frames`, where other searches of it place them, weighing in on their confidences), what the checks judge of each of
 // its sentences measured into `metrics`, and its path checked (check_path) when `is_checked`.
@@ -246,10 +263,11 @@ void measure_chain(const SentenceChain& chain, std::size_t w, const std::vector<
                    EmissionScores& scores, ViterbiWorkspace& workspace, Timeline& result, std::vector<SyllableEvidence>& evidence,
                    std::vector<FrameSpan>& spans, std::vector<SentenceMetrics>& metrics, bool is_checked) {
     place_syllables(chain, w, path, other_frames, scores, track, result, evidence);
+    const ClosureScoring closures = closure_scoring(spoken_sentences);
     for (const auto& [k, share] : split_by_sentence(chain, path)) {
         if (chain.is_block()) spans[k] = aligned_span(result, chain, k);
         metrics[k].fit = speech_fit(chain, share, scores);
-        metrics[k].fit_gap = text_fit_gap(chain, share, scores);
+        metrics[k].fit_gap = text_fit_gap(chain, share, scores, closures);
     }
     // Where a sentence ends in a room's tail a right text gaps up to 0.07 and spreads its syllables'
     // lengths up to 0.79 (bench/ reverb), as much as a wrong text: there check_own_fit and
@@ -277,7 +295,8 @@ void measure_chain(const SentenceChain& chain, std::size_t w, const std::vector<
     // in a file of one or two: the halves of each are checked the same way.
     if (!chain.ends_in_tail && (spoken_sentences <= kMaxHeldOutCheckSentences || chain.is_block())) {
         const auto halves = split_in_halves(chain, path);
-        const auto gaps = held_out_fit_gaps(chain, halves, observations, learned.whole, learned.halves[w], scores);
+        const auto gaps = held_out_fit_gaps(chain, halves, observations, learned.whole, learned.halves[w],
+                                            scores, closures);
         for (std::size_t h = 0; h < halves.size(); ++h) {
             if (halves[h].empty()) continue;
             const std::size_t k = chain.syllables[chain.states[halves[h].front().state].syllable]->sentence;
@@ -471,10 +490,12 @@ std::vector<LenientEvidence> measure_lenient_evidence(
         // Each syllable's held-out gap on the plain path (lenient_chain.hpp judges skips and
         // grows mismatches by it): models re-estimated on a wrong text learn its sounds from
         // the speech that does not say them, those learned without its half have not.
+        // Closures scored as silence: lenient_chain.cpp's limits on these gaps were set so.
         EmissionScores held_out_scores;
-        found.held_out_gaps = held_out_fit_gaps(chains[w], split_in_halves(chains[w], plain), observations,
-                                                learned.whole, learned.halves[w], held_out_scores)
-                                  .syllables;
+        found.held_out_gaps =
+            held_out_fit_gaps(chains[w], split_in_halves(chains[w], plain), observations, learned.whole,
+                              learned.halves[w], held_out_scores, ClosureScoring::silent)
+                .syllables;
     }
     std::vector<std::vector<double>> tone_gaps = tone_gaps_of_chains(chains, plain_paths, track);
     for (std::size_t w = 0; w < chains.size(); ++w) lenient_evidence[w].tone_gaps = std::move(tone_gaps[w]);

@@ -52,7 +52,10 @@ std::vector<std::pair<std::size_t, std::vector<StateSegment>>> split_by_sentence
 // The loop pays for each change of sound, so on the right text it gains little over the path; on
 // a wrong text of the same length (two sentences swapped, another sentence) the path is forced
 // through sounds that are not there. Unlike the fit against the other sentences, this needs none.
-double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores) {
+// A closure spoken through is the sound before it run on: the speaker's tongue did not close, and
+// the text said nothing else there.
+double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                    const EmissionScores& scores, ClosureScoring closures) {
     std::size_t first = 0, end = 0;
     bool has_speech = false;
     for (const auto& segment : path) {
@@ -63,11 +66,16 @@ double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>&
     }
     if (!has_speech || end <= first) return 0.0;
     double forced = 0.0;
-    for (const auto& segment : path) {
-        const int phone_class = chain.states[segment.state].phone_class;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        const StateSegment& segment = path[i];
+        const PhoneState& state = chain.states[segment.state];
         const std::size_t segment_first = std::max(segment.first_frame, first);
         const std::size_t segment_end = std::min(segment.end_frame, end);
-        for (std::size_t t = segment_first; t < segment_end; ++t) forced += scores.at(t, phone_class);
+        const bool is_run_on =
+            state.role == StateRole::closure && closures == ClosureScoring::spoken_through && i > 0;
+        const int run_on = is_run_on ? chain.states[path[i - 1].state].phone_class : state.phone_class;
+        for (std::size_t t = segment_first; t < segment_end; ++t)
+            forced += std::max(scores.at(t, state.phone_class), scores.at(t, run_on));
     }
     return (free_sounds_score(scores, first, end) - forced) / static_cast<double>(end - first);
 }
@@ -147,9 +155,11 @@ std::vector<std::vector<StateSegment>> split_in_halves(const SentenceChain& chai
 // Models re-estimated on a recording fit whatever text shaped them, and on a file of a sentence or
 // two a wrong text shapes most of them; models that never saw these frames cannot bend to it.
 // `scores` is overwritten (an hour's scores are 19 MB: no second buffer).
-HeldOutGaps held_out_fit_gaps(const SentenceChain& chain, const std::vector<std::vector<StateSegment>>& halves,
+HeldOutGaps held_out_fit_gaps(const SentenceChain& chain,
+                              const std::vector<std::vector<StateSegment>>& halves,
                               const std::vector<float>& observations, const ModelEstimator& whole,
-                              const std::vector<ModelEstimator>& half_estimators, EmissionScores& scores) {
+                              const std::vector<ModelEstimator>& half_estimators, EmissionScores& scores,
+                              ClosureScoring closures) {
     HeldOutGaps gaps;
     gaps.halves.assign(halves.size(), -std::numeric_limits<double>::infinity());
     gaps.syllables.assign(chain.syllables.size(), std::numeric_limits<double>::quiet_NaN());
@@ -167,7 +177,7 @@ HeldOutGaps held_out_fit_gaps(const SentenceChain& chain, const std::vector<std:
             segment.first_frame -= first;
             segment.end_frame -= first;
         }
-        gaps.halves[h] = text_fit_gap(chain, shifted, scores);
+        gaps.halves[h] = text_fit_gap(chain, shifted, scores, closures);
         // Each syllable's own gap on the same models (a pause goes with the syllable before it).
         for (std::size_t i = 0; i < shifted.size();) {
             const std::size_t syllable = chain.states[shifted[i].state].syllable;
@@ -175,7 +185,7 @@ HeldOutGaps held_out_fit_gaps(const SentenceChain& chain, const std::vector<std:
             while (j < shifted.size() && chain.states[shifted[j].state].syllable == syllable) ++j;
             const std::vector<StateSegment> own(shifted.begin() + static_cast<std::ptrdiff_t>(i),
                                                 shifted.begin() + static_cast<std::ptrdiff_t>(j));
-            gaps.syllables[syllable] = text_fit_gap(chain, own, scores);
+            gaps.syllables[syllable] = text_fit_gap(chain, own, scores, closures);
             i = j;
         }
     }

@@ -17,9 +17,15 @@ namespace talkface::detail {
 // sounds its text says, per frame.
 double speech_fit(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores);
 
+// How text_fit_gap scores the frames the path gives a stop's closure after speech: as silence, or
+// as the better of silence and the sound before it (a closure spoken through: a fast speaker runs a
+// vowel or a nasal on into the stop's burst). Which where: speech_aligner.cpp's closure_scoring.
+enum class ClosureScoring { silent, spoken_through };
+
 // How much better, per frame, the speech of `path` fits the best sequence of sounds than the
 // sequence its text says: a phone loop against the forced path, on the same models.
-double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores);
+double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                    const EmissionScores& scores, ClosureScoring closures);
 
 // The score of the best free sequence of sounds over frames [first, end) of `scores`, paying
 // for each change of sound: what text_fit_gap compares a path with.
@@ -52,9 +58,11 @@ struct HeldOutGaps {
     std::vector<double> halves;     // per half, as split_in_halves numbers them
     std::vector<double> syllables;  // per syllable of the chain, on its half's models; NaN: not scored
 };
-HeldOutGaps held_out_fit_gaps(const SentenceChain& chain, const std::vector<std::vector<StateSegment>>& halves,
+HeldOutGaps held_out_fit_gaps(const SentenceChain& chain,
+                              const std::vector<std::vector<StateSegment>>& halves,
                               const std::vector<float>& observations, const ModelEstimator& whole,
-                              const std::vector<ModelEstimator>& half_estimators, EmissionScores& scores);
+                              const std::vector<ModelEstimator>& half_estimators, EmissionScores& scores,
+                              ClosureScoring closures);
 
 }  // namespace talkface::detail
 

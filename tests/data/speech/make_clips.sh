@@ -94,3 +94,15 @@ with open("unknown_word.json", "w") as out:
 PY
 rm unknown_word_a* unknown_word_b* unknown_word_en.wav unknown_word_w.wav
 printf '我昨天用Zorblax给妈妈打了电话。\n' > unknown_word.txt
+
+# Five chat lines said fast (issues 12 and 13: a short line dense in stops inside a passage): the
+# benchmark's passage fast/tuning-019 of written_forms_dev26's readings, as bench/README.md's
+# session 32 (dialog) makes it, its five sentences drawn by the seed from the whole set.
+bin=$(dirname "$make_corpus")
+work=$(mktemp -d)
+"$bin/written_forms_bench" --sentences ../../../bench/corpus/written_forms_dev26.txt --corpus-sentences "$work/dev26.txt" > /dev/null
+"$make_corpus" "$work/corpus" --sentences "$work/dev26.txt" --conditions fast --repeats 3 --seed 1 > /dev/null
+sox -R -V1 "$work/corpus/fast/tuning-019.wav" dialogue_fast.flac
+cp "$work/corpus/fast/tuning-019.txt" dialogue_fast.txt
+cp "$work/corpus/fast/tuning-019.json" dialogue_fast.json
+rm -r "$work"
