@@ -53,9 +53,9 @@ std::vector<std::pair<std::size_t, std::vector<StateSegment>>> split_by_sentence
 // a wrong text of the same length (two sentences swapped, another sentence) the path is forced
 // through sounds that are not there. Unlike the fit against the other sentences, this needs none.
 // A closure spoken through is the sound before it run on: the speaker's tongue did not close, and
-// the text said nothing else there.
+// the text said nothing else there; forgiven only as far as this speaker's closures are.
 double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>& path,
-                    const EmissionScores& scores, ClosureScoring closures) {
+                    const EmissionScores& scores, double forgiven_run_on) {
     std::size_t first = 0, end = 0;
     bool has_speech = false;
     for (const auto& segment : path) {
@@ -71,13 +71,33 @@ double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>&
         const PhoneState& state = chain.states[segment.state];
         const std::size_t segment_first = std::max(segment.first_frame, first);
         const std::size_t segment_end = std::min(segment.end_frame, end);
-        const bool is_run_on =
-            state.role == StateRole::closure && closures == ClosureScoring::spoken_through && i > 0;
+        const bool is_run_on = state.role == StateRole::closure && forgiven_run_on > 0.0 && i > 0;
         const int run_on = is_run_on ? chain.states[path[i - 1].state].phone_class : state.phone_class;
-        for (std::size_t t = segment_first; t < segment_end; ++t)
-            forced += std::max(scores.at(t, state.phone_class), scores.at(t, run_on));
+        for (std::size_t t = segment_first; t < segment_end; ++t) {
+            const double closed = scores.at(t, state.phone_class);
+            forced += closed + std::clamp(scores.at(t, run_on) - closed, 0.0, forgiven_run_on);
+        }
     }
     return (free_sounds_score(scores, first, end) - forced) / static_cast<double>(end - first);
+}
+
+void add_closure_run_on(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                        const EmissionScores& scores, std::vector<double>& losses) {
+    for (std::size_t i = 1; i < path.size(); ++i) {
+        const PhoneState& state = chain.states[path[i].state];
+        const PhoneState& before = chain.states[path[i - 1].state];
+        if (state.role != StateRole::closure || is_pause(before.role)) continue;
+        for (std::size_t t = path[i].first_frame; t < path[i].end_frame; ++t)
+            losses.push_back(std::max(0.0, static_cast<double>(scores.at(t, before.phone_class)) -
+                                               scores.at(t, state.phone_class)));
+    }
+}
+
+double typical_closure_run_on(std::vector<double> losses) {
+    if (losses.empty()) return 0.0;
+    const auto middle = losses.begin() + static_cast<std::ptrdiff_t>(losses.size() / 2);
+    std::nth_element(losses.begin(), middle, losses.end());
+    return *middle;
 }
 
 double free_sounds_score(const EmissionScores& scores, std::size_t first, std::size_t end) {
@@ -159,7 +179,7 @@ HeldOutGaps held_out_fit_gaps(const SentenceChain& chain,
                               const std::vector<std::vector<StateSegment>>& halves,
                               const std::vector<float>& observations, const ModelEstimator& whole,
                               const std::vector<ModelEstimator>& half_estimators, EmissionScores& scores,
-                              ClosureScoring closures) {
+                              double forgiven_run_on) {
     HeldOutGaps gaps;
     gaps.halves.assign(halves.size(), -std::numeric_limits<double>::infinity());
     gaps.syllables.assign(chain.syllables.size(), std::numeric_limits<double>::quiet_NaN());
@@ -177,7 +197,7 @@ HeldOutGaps held_out_fit_gaps(const SentenceChain& chain,
             segment.first_frame -= first;
             segment.end_frame -= first;
         }
-        gaps.halves[h] = text_fit_gap(chain, shifted, scores, closures);
+        gaps.halves[h] = text_fit_gap(chain, shifted, scores, forgiven_run_on);
         // Each syllable's own gap on the same models (a pause goes with the syllable before it).
         for (std::size_t i = 0; i < shifted.size();) {
             const std::size_t syllable = chain.states[shifted[i].state].syllable;
@@ -185,7 +205,7 @@ HeldOutGaps held_out_fit_gaps(const SentenceChain& chain,
             while (j < shifted.size() && chain.states[shifted[j].state].syllable == syllable) ++j;
             const std::vector<StateSegment> own(shifted.begin() + static_cast<std::ptrdiff_t>(i),
                                                 shifted.begin() + static_cast<std::ptrdiff_t>(j));
-            gaps.syllables[syllable] = text_fit_gap(chain, own, scores, closures);
+            gaps.syllables[syllable] = text_fit_gap(chain, own, scores, forgiven_run_on);
             i = j;
         }
     }

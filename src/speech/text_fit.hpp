@@ -17,15 +17,26 @@ namespace talkface::detail {
 // sounds its text says, per frame.
 double speech_fit(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores);
 
-// How text_fit_gap scores the frames the path gives a stop's closure after speech: as silence, or
-// as the better of silence and the sound before it (a closure spoken through: a fast speaker runs a
-// vowel or a nasal on into the stop's burst). Which where: speech_aligner.cpp's closure_scoring.
-enum class ClosureScoring { silent, spoken_through };
-
 // How much better, per frame, the speech of `path` fits the best sequence of sounds than the
-// sequence its text says: a phone loop against the forced path, on the same models.
+// sequence its text says: a phone loop against the forced path, on the same models. A frame the
+// path gives a stop's closure after speech scores as silence, raised towards the sound before it
+// (a closure spoken through: the vowel or nasal run on into the burst) by at most
+// `forgiven_run_on` (infinity: the better of the two; speech_aligner.cpp's forgiven_closure_run_on
+// says which where); 0 keeps every closure silent.
 double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>& path,
-                    const EmissionScores& scores, ClosureScoring closures);
+                    const EmissionScores& scores, double forgiven_run_on);
+
+// How much better, per frame, the sound before a stop's closure after speech fits the closure's
+// frames on `path` than silence does (0 where silence fits better), one value per frame, appended
+// to `losses`: how far this speaker speaks through closures.
+void add_closure_run_on(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                        const EmissionScores& scores, std::vector<double>& losses);
+
+// The typical closure's run-on of a recording, the median of add_closure_run_on's `losses` (0 for
+// none): half the recording's closure frames sound more like the sound before than that, and it is
+// above 0 only where most of them are spoken through. The median, not a mean, so that the closures
+// of a wrong sentence among right ones (forced where the speech has a vowel) do not move it.
+double typical_closure_run_on(std::vector<double> losses);
 
 // The score of the best free sequence of sounds over frames [first, end) of `scores`, paying
 // for each change of sound: what text_fit_gap compares a path with.
@@ -62,7 +73,7 @@ HeldOutGaps held_out_fit_gaps(const SentenceChain& chain,
                               const std::vector<std::vector<StateSegment>>& halves,
                               const std::vector<float>& observations, const ModelEstimator& whole,
                               const std::vector<ModelEstimator>& half_estimators, EmissionScores& scores,
-                              ClosureScoring closures);
+                              double forgiven_run_on);
 
 }  // namespace talkface::detail
 

@@ -22,6 +22,10 @@ namespace {
 
 using talkface::test::chain_state;
 
+// What closure_spoken_through's run-on frames lose to the vowel before them: a speaker who speaks
+// through every closure so.
+constexpr double kRunOnOfSpeaker = 8.0;
+
 // A vowel of 20 frames run on through 3 frames where the text has a stop's closure, the stop's
 // burst (2 frames) and another vowel (20 frames): each frame favours its own sound by 4 over the
 // others, and silence fits the run-on frames worst of all.
@@ -59,12 +63,16 @@ TEST_SUITE("speech") {
         const EmissionScores scores = closure_spoken_through();
         // The right text: its closure's frames sound like the vowel before it, as the text allows.
         const ForcedText right = forced(kVowelA);
-        CHECK(text_fit_gap(right.chain, right.path, scores, ClosureScoring::spoken_through) <= 0.0);
+        CHECK(text_fit_gap(right.chain, right.path, scores, kRunOnOfSpeaker) <= 0.0);
         // A wrong vowel before the stop still gaps far over check_text_fit's limit.
         const ForcedText wrong = forced(kVowelU);
-        CHECK(text_fit_gap(wrong.chain, wrong.path, scores, ClosureScoring::spoken_through) > 1.0);
-        // Where the closure must be silent (a file of one or two sentences), the run-on frames gap.
-        CHECK(text_fit_gap(right.chain, right.path, scores, ClosureScoring::silent) > kMaxTextFitGap);
+        CHECK(text_fit_gap(wrong.chain, wrong.path, scores, kRunOnOfSpeaker) > 1.0);
+        // Where the closure must be silent (a file of one or two sentences, a speaker who keeps
+        // closures), the run-on frames gap.
+        CHECK(text_fit_gap(right.chain, right.path, scores, 0.0) > kMaxTextFitGap);
+        // A speaker whose closures run on by less is forgiven only that much.
+        CHECK(text_fit_gap(right.chain, right.path, scores, kRunOnOfSpeaker / 4) >
+              text_fit_gap(right.chain, right.path, scores, kRunOnOfSpeaker));
     }
 
     TEST_CASE("a stop's closure in silence scores as silence") {
@@ -75,7 +83,20 @@ TEST_SUITE("speech") {
                 scores.values[t * kPhoneClassCount + static_cast<std::size_t>(c)] =
                     c == kSilence ? -1.0f : -9.0f;
         const ForcedText right = forced(kVowelA);
-        CHECK(text_fit_gap(right.chain, right.path, scores, ClosureScoring::spoken_through) <= 0.0);
+        CHECK(text_fit_gap(right.chain, right.path, scores, kRunOnOfSpeaker) <= 0.0);
+    }
+
+    TEST_CASE("a recording's closures run on as far as its typical closure frame does") {
+        const EmissionScores scores = closure_spoken_through();
+        std::vector<double> losses;
+        const ForcedText right = forced(kVowelA);
+        add_closure_run_on(right.chain, right.path, scores, losses);
+        // Each of the three closure frames sounds like the vowel before it by 8 over silence.
+        CHECK(losses == std::vector<double>{kRunOnOfSpeaker, kRunOnOfSpeaker, kRunOnOfSpeaker});
+        // A speaker who keeps most closures silent: the closures of one sentence run on do not
+        // move the typical one, and none is forgiven.
+        CHECK(typical_closure_run_on({0.0, 0.0, 0.0, 0.5, kRunOnOfSpeaker, kRunOnOfSpeaker}) == 0.5);
+        CHECK(typical_closure_run_on({}) == 0.0);
     }
 
     TEST_CASE("a passage of dialogue said fast aligns its short line dense in stops") {
