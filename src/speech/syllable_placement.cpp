@@ -228,6 +228,126 @@ std::size_t onset_after_pause(const FeatureTrack& track, std::size_t offset, con
     return lowest == first ? first : floor_end;
 }
 
+namespace {
+
+// What placing a chain's syllables reads: the chain, its path, the scores and features it was aligned
+// on, and the noise's reach in the path's pauses (pause_noise_reach) in the high band and in energy.
+struct PlacementInputs {
+    const SentenceChain& chain;
+    const std::vector<StateSegment>& path;
+    const EmissionScores& scores;
+    const FeatureTrack& track;
+    float noise_reach_db;
+    float noise_level_reach_db;
+};
+
+// Where the sound of path[p], a syllable's first state, starts.
+std::size_t sound_first_frame(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                              std::size_t p) {
+    // SPEC: after a pause the closure cannot be told from the pause; the syllable starts
+    // at the burst. A pause the transcript does not mark counts when it is longer than
+    // any closure (a sentence end in a transcript without punctuation).
+    if (chain.states[path[p].state].role == StateRole::closure && p > 0) {
+        const StateSegment& before = path[p - 1];
+        const StateRole role = chain.states[before.state].role;
+        const std::size_t silence =
+            before.end_frame - before.first_frame + path[p].end_frame - path[p].first_frame;
+        if (role == StateRole::comma_pause ||
+            (role == StateRole::short_pause && silence >= kPauseBeforeBurstFrames))
+            return path[p].end_frame;
+    }
+    return path[p].first_frame;
+}
+
+// A syllable's start, its path's start moved back or on where the sound says it starts, and whether it
+// runs on from the one before, no pause between: only then does a moved start move that one's end
+// (after a pause, or as a chain's first, nothing before it is this syllable's to move).
+struct SyllableOnset {
+    std::size_t start;
+    bool runs_on;
+};
+
+// The onset of syllable `local`, whose first state is path[p], its sound starting at frame `first`.
+SyllableOnset syllable_onset(const PlacementInputs& in, std::size_t local, std::size_t p, std::size_t first) {
+    const SentenceChain& chain = in.chain;
+    const std::vector<StateSegment>& path = in.path;
+    const PhoneState& state = chain.states[path[p].state];
+    std::size_t start = first;
+    const PhoneState* before = p > 0 ? &chain.states[path[p - 1].state] : nullptr;
+    const bool runs_on = before && before->syllable + 1 == local && !is_pause(before->role);
+    const bool is_voiced_join = runs_on && state.role != StateRole::closure &&
+                                is_voiced_class(before->phone_class) && is_voiced_class(state.phone_class);
+    if (is_voiced_join && before->phone_class != state.phone_class)
+        start = voiced_join_start(path[p - 1], before->phone_class, path[p], state.phone_class, in.scores);
+    if (is_voiced_join && before->phone_class == kVowelApical)
+        start = std::min(start, apical_vowel_turn(in.scores, path[p - 1].first_frame, first));
+    // A light syllable's one vowel that the new sound fits as well on each of its frames
+    // was not heard apart from it: only the turn into it (了一, 的预; bench/ Session 21).
+    const bool is_one_vowel = is_voiced_join && before->role == StateRole::final &&
+                              before->phone_class >= kVowelA &&
+                              !(p >= 2 && chain.states[path[p - 2].state].syllable == before->syllable &&
+                                chain.states[path[p - 2].state].role == StateRole::final);
+    if (is_one_vowel && before->phone_class != state.phone_class &&
+        chain.syllables[local - 1]->pinyin.back() == '5' &&
+        fits_throughout(path[p - 1], state.phone_class, before->phone_class, in.scores))
+        start = std::min(start, path[p - 1].first_frame);
+    // s sh x right after the sound before: no closure, no pause (a short one before a
+    // fricative lasts 150 ms at least, phone_chain.cpp).
+    const char initial = chain.syllables[local]->pinyin.empty() ? '\0' : chain.syllables[local]->pinyin[0];
+    if (runs_on && state.role == StateRole::initial && state.phone_class == kSibilant &&
+        (initial == 's' || initial == 'x'))
+        start =
+            sibilant_onset(in.track, chain.searched.first_frame, first, path[p].end_frame, in.noise_reach_db);
+    // A room's closures ring with the vowel before (room_closures.hpp): scored as any
+    // sound, not as silence, and the tail there is the room's, not the noise's.
+    if (runs_on && state.role == StateRole::closure && state.phone_class == kSilence)
+        start = closure_after_tail(in.track, chain.searched.first_frame, first, path[p].end_frame,
+                                   in.noise_level_reach_db);
+    const bool is_after_pause = p == 0 || is_pause(chain.states[path[p - 1].state].role);
+    if (is_after_pause && state.role == StateRole::initial &&
+        !opens_with_burst(state, *chain.syllables[local]))
+        start = onset_after_pause(in.track, chain.searched.first_frame, state, path[p]);
+    if (is_voiced_join && state.role == StateRole::final) {
+        // No earlier than the syllable before's vowel: its final's first frame.
+        std::size_t q = p - 1;
+        while (q > 0 && chain.states[path[q - 1].state].syllable == before->syllable &&
+               chain.states[path[q - 1].state].role == StateRole::final)
+            --q;
+        start = syllable_valley_start(in.track, chain.searched.first_frame, path[q].first_frame + 1, start);
+    }
+    return {start, runs_on};
+}
+
+// A syllable's frames on its chain's path: `first` is the path's start, `start` the syllable's (a voiced
+// join's moved back), `end` the path's end, `final_first` its final's first frame, if it has one.
+struct SyllablePath {
+    std::size_t first = 0, end = 0, start = 0;
+    std::optional<std::size_t> final_first;
+    bool runs_on = false;
+};
+
+SyllablePath syllable_path(const PlacementInputs& in, std::size_t local) {
+    SyllablePath placed;
+    bool has_start = false;
+    for (std::size_t p = 0; p < in.path.size(); ++p) {
+        const PhoneState& state = in.chain.states[in.path[p].state];
+        if (state.syllable != local || is_pause(state.role)) continue;
+        if (!has_start) {
+            placed.first = sound_first_frame(in.chain, in.path, p);
+            const SyllableOnset onset = syllable_onset(in, local, p, placed.first);
+            placed.start = onset.start;
+            placed.runs_on = onset.runs_on;
+            has_start = true;
+        }
+        placed.end = in.path[p].end_frame;
+        if (state.role == StateRole::final && !placed.final_first)
+            placed.final_first = in.path[p].first_frame;
+    }
+    return placed;
+}
+
+}  // namespace
+
 void place_syllables(const SentenceChain& chain, std::size_t chain_index, const std::vector<StateSegment>& path,
                      const std::vector<std::vector<SyllableFrames>>& other_frames, const EmissionScores& scores,
                      const FeatureTrack& track, Timeline& result, std::vector<SyllableEvidence>& evidence) {
@@ -236,84 +356,15 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
         return std::min(track.duration_s, frame_time_s(chain.searched.first_frame + frame));
     };
     std::vector<SyllableFrames> frames(chain.syllables.size());
-    const float noise_reach_db = pause_noise_reach(track, chain, path, kHighBandDb);
-    const float noise_level_reach_db = pause_noise_reach(track, chain, path, kEnergyDb);
+    const PlacementInputs in{chain,
+                             path,
+                             scores,
+                             track,
+                             pause_noise_reach(track, chain, path, kHighBandDb),
+                             pause_noise_reach(track, chain, path, kEnergyDb)};
     for (std::size_t local = 0; local < chain.syllables.size(); ++local) {
         Syllable& syllable = result.syllables[chain.syllable_indices[local]];
-        // `first` is the path's start, `start` the syllable's (a voiced join's moved back).
-        std::size_t first = 0, end = 0, start = 0;
-        std::optional<std::size_t> final_first;
-        bool has_start = false;
-        // Whether the syllable runs on from the one before, no pause between: only then does a
-        // moved start move that one's end (after a pause, or as a chain's first, nothing before it
-        // is this syllable's to move).
-        bool runs_on = false;
-        for (std::size_t p = 0; p < path.size(); ++p) {
-            const PhoneState& state = chain.states[path[p].state];
-            if (state.syllable != local || is_pause(state.role)) continue;
-            std::size_t segment_first = path[p].first_frame;
-            // SPEC: after a pause the closure cannot be told from the pause; the syllable starts
-            // at the burst. A pause the transcript does not mark counts when it is longer than
-            // any closure (a sentence end in a transcript without punctuation).
-            if (state.role == StateRole::closure && p > 0) {
-                const StateSegment& before = path[p - 1];
-                const StateRole role = chain.states[before.state].role;
-                const std::size_t silence = before.end_frame - before.first_frame + path[p].end_frame - path[p].first_frame;
-                if (role == StateRole::comma_pause || (role == StateRole::short_pause && silence >= kPauseBeforeBurstFrames))
-                    segment_first = path[p].end_frame;
-            }
-            if (!has_start) {
-                first = segment_first;
-                start = first;
-                const PhoneState* before = p > 0 ? &chain.states[path[p - 1].state] : nullptr;
-                runs_on = before && before->syllable + 1 == local && !is_pause(before->role);
-                const bool is_voiced_join = runs_on && state.role != StateRole::closure &&
-                                            is_voiced_class(before->phone_class) &&
-                                            is_voiced_class(state.phone_class);
-                if (is_voiced_join && before->phone_class != state.phone_class)
-                    start = voiced_join_start(path[p - 1], before->phone_class, path[p], state.phone_class, scores);
-                if (is_voiced_join && before->phone_class == kVowelApical)
-                    start = std::min(start, apical_vowel_turn(scores, path[p - 1].first_frame, first));
-                // A light syllable's one vowel that the new sound fits as well on each of its frames
-                // was not heard apart from it: only the turn into it (了一, 的预; bench/ Session 21).
-                const bool is_one_vowel =
-                    is_voiced_join && before->role == StateRole::final && before->phone_class >= kVowelA &&
-                    !(p >= 2 && chain.states[path[p - 2].state].syllable == before->syllable &&
-                      chain.states[path[p - 2].state].role == StateRole::final);
-                if (is_one_vowel && before->phone_class != state.phone_class &&
-                    chain.syllables[local - 1]->pinyin.back() == '5' &&
-                    fits_throughout(path[p - 1], state.phone_class, before->phone_class, scores))
-                    start = std::min(start, path[p - 1].first_frame);
-                // s sh x right after the sound before: no closure, no pause (a short one before a
-                // fricative lasts 150 ms at least, phone_chain.cpp).
-                const char initial =
-                    chain.syllables[local]->pinyin.empty() ? '\0' : chain.syllables[local]->pinyin[0];
-                if (runs_on && state.role == StateRole::initial && state.phone_class == kSibilant &&
-                    (initial == 's' || initial == 'x'))
-                    start = sibilant_onset(track, chain.searched.first_frame, first, path[p].end_frame,
-                                           noise_reach_db);
-                // A room's closures ring with the vowel before (room_closures.hpp): scored as any
-                // sound, not as silence, and the tail there is the room's, not the noise's.
-                if (runs_on && state.role == StateRole::closure && state.phone_class == kSilence)
-                    start = closure_after_tail(track, chain.searched.first_frame, first, path[p].end_frame,
-                                               noise_level_reach_db);
-                const bool is_after_pause = p == 0 || is_pause(chain.states[path[p - 1].state].role);
-                if (is_after_pause && state.role == StateRole::initial &&
-                    !opens_with_burst(state, *chain.syllables[local]))
-                    start = onset_after_pause(track, chain.searched.first_frame, state, path[p]);
-                if (is_voiced_join && state.role == StateRole::final) {
-                    // No earlier than the syllable before's vowel: its final's first frame.
-                    std::size_t q = p - 1;
-                    while (q > 0 && chain.states[path[q - 1].state].syllable == before->syllable &&
-                           chain.states[path[q - 1].state].role == StateRole::final)
-                        --q;
-                    start = syllable_valley_start(track, chain.searched.first_frame, path[q].first_frame + 1, start);
-                }
-                has_start = true;
-            }
-            end = path[p].end_frame;
-            if (state.role == StateRole::final && !final_first) final_first = path[p].first_frame;
-        }
+        auto [first, end, start, final_first, runs_on] = syllable_path(in, local);
         if (local + 1 == chain.syllables.size()) {
             const std::size_t offset = chain.searched.first_frame;
             const std::size_t trimmed = end_before_tail(track, offset + first, offset + end) - offset;
