@@ -149,6 +149,17 @@ std::vector<FrameSpan> spans_between_pauses(const LoudnessProfile& loudness,
     return spans;
 }
 
+// How long a sentence may grow as the cut's search extends it back over earlier pauses: the search stops
+// there, so a cut need not weigh every pause before each boundary. A sentence kLongestSentenceShare times
+// its expected length lies ln 6 / kSentenceDurationSigma = 5.1 spreads off it and scores -13.1, twice what
+// ending at a pause of 10 s earns (kPauseWeight ln(10 s / kMinPauseS) = 6.6): the cuts the bound leaves out
+// score far below those it keeps. kLongestSentenceSlackFrames (3 s) on top: a sentence of one or two
+// syllables expects 0.1-0.5 s, and the pauses it holds count in its length. Both came unexplained with the
+// first cutter (ad6f37c); bench/ Session 32 (review2): with no bound, the dumps of /work/corpus/espeak,
+// human and voice-v are byte-identical, so the bound prunes the search and decides no cut there.
+constexpr double kLongestSentenceShare = 6.0;
+constexpr double kLongestSentenceSlackFrames = 300.0;
+
 // The cut of the sentences (their syllable counts) at pauses that scores best; empty if no cut
 // gives every sentence room for its syllables.
 std::vector<FrameSpan> choose_sentence_pauses(const LoudnessProfile& loudness, const std::vector<std::size_t>& syllables) {
@@ -179,7 +190,9 @@ std::vector<FrameSpan> choose_sentence_pauses(const LoudnessProfile& loudness, c
         return kPauseWeight * std::log(static_cast<double>(pauses[pause].length()) * kFrameStepS / kMinPauseS);
     };
     auto too_long = [&](std::size_t first, std::size_t end, std::size_t sentence) {
-        return static_cast<double>(end - first) > 6.0 * frames_per_syllable * static_cast<double>(syllables[sentence]) + 300.0;
+        return static_cast<double>(end - first) >
+               kLongestSentenceShare * frames_per_syllable * static_cast<double>(syllables[sentence]) +
+                   kLongestSentenceSlackFrames;
     };
 
     // Dynamic programming over (boundary k, pause c): the best cut of sentences 0..k with sentence
