@@ -1,6 +1,7 @@
 #include "text/digit_codes.hpp"
 
 #include <algorithm>
+#include <array>
 #include <string_view>
 
 #include "text/dates_and_times.hpp"
@@ -325,9 +326,15 @@ std::optional<SpokenForm> read_standard_code(const std::vector<CodePoint>& text,
                                              const WrittenNumber& number) {
     constexpr std::size_t kFewestCodeDigits = 3;
     constexpr std::size_t kYearDigits = 4;
-    // A part's number after a point (GB/T 1.1-2020, JJF 1059.1-2012) is said after 点 as a version's is; a
-    // number of one part has three digits or more.
-    if (number.has_separators || (!number.has_point && number.whole.size() < kFewestCodeDigits))
+    constexpr std::size_t kLongestPart = 2;
+    // A part's number after a point (GB/T 1.1-2020, JJF 1059.1-2012) is said after 点 as a version's is; one
+    // after a dash with the year after a colon (EN 71-3:2019, IEC 62368-1:2018; session 32: 七十一到三) after
+    // 杠, as the year after a dash is. A number of one part has three digits or more.
+    auto part_end = number.end + 1;
+    auto part = is_dash(value_at(text, number.end)) ? digits_from(text, part_end) : std::string();
+    if (part.size() > kLongestPart || ascii_form(value_at(text, part_end)) != ':') part.clear();
+    if (number.has_separators ||
+        (!number.has_point && part.empty() && number.whole.size() < kFewestCodeDigits))
         return std::nullopt;
     auto letters = start;
     const bool spaced = letters > 0 && text[letters - 1].value == ' ';
@@ -341,15 +348,17 @@ std::optional<SpokenForm> read_standard_code(const std::vector<CodePoint>& text,
     if (!is_standard_prefix(text_between(text, letters, prefix_end),
                             spaced && speaks_of_standard(text, start)))
         return std::nullopt;
-    const auto mark = ascii_form(value_at(text, number.end));
+    const auto year_mark = part.empty() ? number.end : part_end;
+    const auto mark = ascii_form(value_at(text, year_mark));
     if (!is_dash(mark) && mark != ':') return std::nullopt;
-    auto end = number.end + 1;
+    auto end = year_mark + 1;
     const auto year = digits_from(text, end);
     if (year.size() != kYearDigits || !starts_with_any(year, {"19", "20"}) || value_at(text, end) == '.')
         return std::nullopt;
     SpokenForm form;
     form.words = digit_words(number.whole) + (number.has_point ? "点" + digit_words(number.fraction) : "") +
-                 (is_dash(mark) ? "杠" : "") + digit_words(year);
+                 (part.empty() ? "" : "杠" + digit_words(part)) + (is_dash(mark) ? "杠" : "") +
+                 digit_words(year);
     form.end = end;
     return form;
 }
@@ -413,6 +422,26 @@ bool is_filter_grade(const std::vector<CodePoint>& text, std::size_t start, cons
     // (0-9) apart, and are said so (session 16: IP六十八).
     const bool rates_protection = capitals == "IP" && digits.size() == 2 && digits.front() <= '6';
     return rates_protection || (filter_class && (digits == "90" || digits == "95" || digits == "99"));
+}
+
+bool is_camera_sensitivity(const std::vector<CodePoint>& text, std::size_t start, const std::string& digits) {
+    // ISO 12232's sensitivities, which cameras write after ISO: 100 doubled for each full stop (200 ... 3200,
+    // 6400, 102400) and 125 and 160 doubled for the thirds between, written 1250 from 1280 on (2500, 5000).
+    // The standards news cites after ISO (9001, 14001, 8601, 639, 3166) lie off that series and stay codes.
+    constexpr std::array<unsigned long, 3> kSeriesStarts = {100, 125, 1250};
+    constexpr std::array<unsigned long, 3> kThirdsBefore1250 = {160, 320, 640};
+    constexpr std::size_t kMostDigits = 7;
+    if (digits.empty() || digits.size() > kMostDigits || digits.front() == '0' ||
+        model_name_before(text, start) != "ISO")
+        return false;
+    const auto value = std::stoul(digits);
+    if (std::find(kThirdsBefore1250.begin(), kThirdsBefore1250.end(), value) != kThirdsBefore1250.end())
+        return true;
+    return std::any_of(kSeriesStarts.begin(), kSeriesStarts.end(), [value](unsigned long first) {
+        if (value % first != 0) return false;
+        const auto doublings = value / first;
+        return (doublings & (doublings - 1)) == 0;
+    });
 }
 
 bool follows_glued_name(const std::vector<CodePoint>& text, std::size_t start) {

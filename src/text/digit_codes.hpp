@@ -105,6 +105,9 @@ bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start);
 // particles it stops) or an enclosure's protection rating (IP68, IP54): a grade's name, said digit
 // by digit (N九五, IP六八), where a model's two digits count (G20 G二十).
 bool is_filter_grade(const std::vector<CodePoint>& text, std::size_t start, const std::string& digits);
+// A camera's sensitivity after ISO (ISO 3200, the top of ISO 100-3200): a count, 三千二百, where a standard's
+// number after ISO (ISO 9001) is a code said digit by digit.
+bool is_camera_sensitivity(const std::vector<CodePoint>& text, std::size_t start, const std::string& digits);
 
 // Right after a word with a small letter, with nothing between (Tiger2024, user123): a user
 // name's or an ID's digits. (iPhone15 counts: fewer than three digits, as a model's do.)

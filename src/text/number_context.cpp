@@ -220,8 +220,10 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
         said.words = digit_words(whole);
         return said;
     }
+    // A currency sign before it is the money's unit said after it ($2 两美元, HK$2 两港元, ¥2 两元), as
+    // 2美元 and 2元 are said (session 32: 二, read as a bare number).
     if (whole == "2" && !context.is_ordinal && !context.is_model &&
-        (context.has_unit || takes_liang(context.next) || context.measures_degrees)) {
+        (context.has_unit || context.has_currency || takes_liang(context.next) || context.measures_degrees)) {
         said.words = "两";
         return said;
     }
@@ -266,7 +268,10 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
     auto kilometres = start > 0 && value_at(text, start - 1) == '+' ? start - 1 : 0;
     while (kilometres > 0 && is_digit_at(text, kilometres - 1)) --kilometres;
     context.is_stake_metres = kilometres + 1 < start && follows_stake_letter(kilometres);
+    const bool is_sensitivity =
+        !number.has_point && !number.has_separators && is_camera_sensitivity(text, start, number.whole);
     context.is_model = sign_words.empty() && currency == nullptr && !after_times && !is_stake &&
+                       !is_sensitivity &&
                        (follows_model_name(text, start) || follows_maker_name(text, start) ||
                         follows_glued_name(text, start) || names_code_by_letters(text, start, number) ||
                         repeats_card_model(text, start, number) ||

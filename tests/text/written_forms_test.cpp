@@ -2302,4 +2302,44 @@ TEST_SUITE("written forms") {
         // The limit: a small っ alone (好っ) cuts a sound off, says nothing and is warned of.
         CHECK(read_transcript("好っ").warnings.size() == 1);
     }
+
+    TEST_CASE("a lone 2 after a currency sign is said 两 as before the money's word") {
+        // The first four rows failed on main e0d5f85 (session 32, dev29's held out): 二港元, 二美元, 二元.
+        check_cases({
+            {"長者HK$2", "長者兩港元"},
+            {"票价$2", "票价两美元"},
+            {"¥2", "两元"},
+            {"NT$2", "新台币两元"},
+            // The limits: a 2 with a point or inside a number, and an ordinal.
+            {"$2.5", "二点五美元"},
+            {"$20", "二十美元"},
+            {"第$2", "第二美元"},
+        });
+    }
+
+    TEST_CASE("a camera's sensitivity after ISO counts where a standard's number is a code") {
+        // The first two rows failed on main e0d5f85 (session 32, dev28's leftovers): 三二零零.
+        check_cases({
+            {"ISO 3200", "ai ai si ou三千二百"},
+            {"ISO 100-3200", "ai ai si ou一百到三千二百"},
+            {"ISO 6400", "ai ai si ou六千四百"},
+            // The limits: standards off the series, and 1280, which cameras write 1250.
+            {"ISO 9001", "ai ai si ou九零零一"},
+            {"ISO 639", "ai ai si ou六三九"},
+            {"ISO 1280", "ai ai si ou一二八零"},
+            {"RTX 3200", "a er ti ai ke si三二零零"},
+        });
+    }
+
+    TEST_CASE("a standard's part after a dash and its year after a colon are said as a code") {
+        // The first two rows failed on main e0d5f85 (session 32, dev28's leftovers): 七十一到三, the year
+        // counted.
+        check_cases({
+            {"EN 71-3:2019", "yi en七一杠三二零一九"},
+            {"IEC 62368-1:2018", "ai yi xi六二三六八杠一二零一八"},
+            // The limits: no year after the part, and a score before a time.
+            {"EN 71-3", "yi en七十一到三"},
+            {"比分71-3:2019", "比分七十一比三两千零一十九"},
+        });
+    }
 }
