@@ -4,7 +4,9 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
+#include "common/order_statistics.hpp"
 #include "speech/lenient_chain.hpp"
 
 namespace talkface::detail {
@@ -94,10 +96,7 @@ void add_closure_run_on(const SentenceChain& chain, const std::vector<StateSegme
 }
 
 double typical_closure_run_on(std::vector<double> losses) {
-    if (losses.empty()) return 0.0;
-    const auto middle = losses.begin() + static_cast<std::ptrdiff_t>(losses.size() / 2);
-    std::nth_element(losses.begin(), middle, losses.end());
-    return *middle;
+    return losses.empty() ? 0.0 : upper_median(std::move(losses));
 }
 
 double free_sounds_score(const EmissionScores& scores, std::size_t first, std::size_t end) {
