@@ -62,12 +62,7 @@ std::string number_text(double value) {
 extern "C" {
 
 tf_status tf_read_transcript(const char* text, size_t length, const char* source_name, tf_timeline** out) {
-    return guard([&] {
-        require_non_null(text, "text");
-        require_non_null(out, "out");
-        *out = new tf_timeline{
-            talkface::read_transcript(std::string_view(text, length), {}, source_or_default(source_name))};
-    });
+    return tf_read_transcript_with_options(text, length, source_name, nullptr, out);
 }
 
 tf_status tf_read_transcript_with_options(const char* text, size_t length, const char* source_name,
@@ -81,11 +76,7 @@ tf_status tf_read_transcript_with_options(const char* text, size_t length, const
 }
 
 tf_status tf_load_transcript(const char* path, tf_timeline** out) {
-    return guard([&] {
-        require_non_null(path, "path");
-        require_non_null(out, "out");
-        *out = new tf_timeline{talkface::load_transcript(path)};
-    });
+    return tf_load_transcript_with_options(path, nullptr, out);
 }
 
 tf_status tf_load_transcript_with(const char* path, const char* encoding, int keep_directions,
@@ -376,11 +367,7 @@ tf_status tf_timeline_add_written_form(tf_timeline* timeline, const char* text, 
 }
 
 tf_status tf_timeline_to_json(const tf_timeline* timeline, char** out_json, size_t* out_len) {
-    return guard([&] {
-        require_non_null(timeline, "timeline");
-        require_non_null(out_json, "out_json");
-        talkface::capi::give_document(talkface::timeline_to_json(timeline->timeline), out_json, out_len);
-    });
+    return tf_timeline_to_json_with_options(timeline, nullptr, out_json, out_len);
 }
 
 tf_status tf_timeline_json_options_create(tf_timeline_json_options** out) {
