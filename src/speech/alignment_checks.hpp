@@ -123,7 +123,7 @@ constexpr double kMaxHeldOutFitGap = 0.35;
 // Whether every sentence `poor` names fits its text as well as a free sequence of sounds does (a
 // text fit gap of at most 0) and, where it was measured, within kMaxHeldOutFitGap on models learned
 // from the rest of the recording: the rule that keeps align_cut's third alignment (a stop after a
-// nasal released from the nasal's closure, speech_aligner.cpp), asked of the sentences that fit
+// nasal released from the nasal's closure, cut_alignment.cpp), asked of the sentences that fit
 // their texts over kMaxTextFitGap before it.
 //
 // A right text whose path had slipped comes back under 0 (a person's tuning passages, 0.18 and

@@ -96,7 +96,7 @@ std::vector<PhoneState> build_phone_chain(const std::vector<const Syllable*>& sy
                                           std::size_t speech_frames);
 
 // A pause the text does not mark lasts at most this long where the aligner keeps the text's pauses
-// to its marks (keep_pauses_to_marks, speech_aligner.cpp): 0.25 s, a breath between two words. A
+// to its marks (keep_pauses_to_marks, cut_alignment.cpp): 0.25 s, a breath between two words. A
 // longer pause is one the text marks, which an alignment a syllable or a phrase off gave to a
 // place the text does not. bench/ Session 12: 20-50 frames alike on the tuning passages, 15 lets
 // a right one be refused.

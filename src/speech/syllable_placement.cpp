@@ -421,4 +421,14 @@ FrameSpan aligned_span(const Timeline& result, const SentenceChain& chain, std::
     return span;
 }
 
+void set_start_evidence(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                        const EntryMaxMarginals& marginals, std::vector<SyllableEvidence>& evidence) {
+    const std::vector<double> sureness = start_sureness(chain, path, marginals);
+    const std::vector<double> far = far_start_share(chain, path, marginals);
+    for (std::size_t local = 0; local < sureness.size(); ++local) {
+        evidence[chain.syllable_indices[local]].sureness = sureness[local];
+        evidence[chain.syllable_indices[local]].far_start = far[local];
+    }
+}
+
 }  // namespace talkface::detail

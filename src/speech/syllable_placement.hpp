@@ -128,6 +128,11 @@ std::vector<AlignedStretch> stretches_of(const SentenceChain& chain, const std::
 // aligned in `result`.
 FrameSpan aligned_span(const Timeline& result, const SentenceChain& chain, std::size_t k);
 
+// Each syllable of `chain`'s start sureness and far start share on `path` (alignment_confidence.hpp),
+// from the path search's `marginals`, into its `evidence`.
+void set_start_evidence(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                        const EntryMaxMarginals& marginals, std::vector<SyllableEvidence>& evidence);
+
 }  // namespace talkface::detail
 
 #endif

@@ -21,7 +21,7 @@ double speech_fit(const SentenceChain& chain, const std::vector<StateSegment>& p
 // sequence its text says: a phone loop against the forced path, on the same models. A frame the
 // path gives a stop's closure after speech scores as silence, raised towards the sound before it
 // (a closure spoken through: the vowel or nasal run on into the burst) by at most
-// `forgiven_run_on` (infinity: the better of the two; speech_aligner.cpp's forgiven_closure_run_on
+// `forgiven_run_on` (infinity: the better of the two; chain_measures.hpp's forgiven_closure_run_on
 // says which where); 0 keeps every closure silent.
 double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>& path,
                     const EmissionScores& scores, double forgiven_run_on);

@@ -263,7 +263,7 @@ TEST_SUITE("human speech") {
         "while the phrase is aligned again the bar moves below 100%, which it reaches once, at the end") {
         // 0.35 s of silence before 散, where the text marks no pause: the first alignment gives it
         // to a pause between syllables, and the phrase is aligned again with such pauses kept
-        // short (speech_aligner.cpp align_cut). The checks only warn: one reading, no other phase.
+        // short (cut_alignment.cpp align_cut). The checks only warn: one reading, no other phase.
         // On d608a71 the first alignment's final pass reported 100% and the bar stood there
         // through the second: the callback saw 1.0 six times, five before the work was done.
         Phrase phrase = join_phrase();

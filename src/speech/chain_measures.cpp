@@ -1,0 +1,92 @@
+#include "speech/chain_measures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "common/order_statistics.hpp"
+#include "speech/syllable_placement.hpp"
+#include "speech/text_fit.hpp"
+
+namespace talkface::detail {
+
+double forgiven_closure_run_on(const Reestimation& learned, std::size_t spoken_sentences, bool in_room) {
+    if (spoken_sentences <= kMaxHeldOutCheckSentences) return 0.0;
+    if (in_room || learned.closure_run_on <= 0.0) return learned.closure_run_on;
+    return std::numeric_limits<double>::infinity();
+}
+
+void measure_chain(const ChainMeasureInputs& in, EmissionScores& scores, ViterbiWorkspace& workspace,
+                   Timeline& result, std::vector<SyllableEvidence>& evidence, std::vector<FrameSpan>& spans,
+                   std::vector<SentenceMetrics>& metrics) {
+    const SentenceChain& chain = in.chain;
+    const std::vector<StateSegment>& path = in.path;
+    place_syllables(chain, in.chain_index, path, in.other_frames, scores, in.track, result, evidence);
+    for (const auto& [k, share] : split_by_sentence(chain, path)) {
+        if (chain.is_block()) spans[k] = aligned_span(result, chain, k);
+        metrics[k].fit = speech_fit(chain, share, scores);
+        metrics[k].fit_gap = text_fit_gap(chain, share, scores, in.forgiven_run_on);
+    }
+    // Where a sentence ends in a room's tail a right text gaps up to 0.07 and spreads its syllables'
+    // lengths up to 0.79 (bench/ reverb), as much as a wrong text: there check_own_fit and
+    // check_syllable_lengths would refuse right texts. check_path judges on `scores` of the whole
+    // recording's models, before held_out_fit_gaps overwrites them.
+    const bool is_own_model = !chain.ends_in_tail && in.spoken_sentences <= kMaxHeldOutCheckSentences;
+    const double margin = is_own_model ? order_margin(chain, path, scores, workspace)
+                                       : std::numeric_limits<double>::quiet_NaN();
+    // Alone in its file, a sentence's speech after its last syllable is judged against generic
+    // speech: beside another sentence it would take that one's start.
+    if (is_own_model && in.spoken_sentences == 1)
+        metrics[chain.syllables.back()->sentence].unspoken_tail_frames =
+            unspoken_tail_frames(chain, scores, workspace);
+    for (const auto& [k, share] : split_by_sentence(chain, path)) {
+        metrics[k].order_margin = margin;
+        const auto stretches = stretches_of(chain, share);
+        if (is_own_model) {
+            metrics[k].own_fit_gap = metrics[k].fit_gap;
+            metrics[k].length_spread = syllable_length_spread(stretches);
+        }
+        if (in.is_checked)
+            check_path(stretches, in.loudness, scores, chain.searched.first_frame, k, spans[k],
+                       in.transcript);
+    }
+    // In a room every sound rings into the next, and a right text's halves gap up to 0.85 (bench/
+    // reverb): there the check would refuse one right sentence in six. With three sentences or
+    // more, check_text_fit and check_fit compare each with the others, which holds better than this
+    // absolute limit. In a chain, models re-estimated on it fit its sentences' texts as they would
+    // in a file of one or two: the halves of each are checked the same way.
+    if (!chain.ends_in_tail && (in.spoken_sentences <= kMaxHeldOutCheckSentences || chain.is_block())) {
+        const auto halves = split_in_halves(chain, path);
+        const auto gaps = held_out_fit_gaps(chain, halves, in.observations, in.learned.whole,
+                                            in.learned.halves[in.chain_index], scores, in.forgiven_run_on);
+        for (std::size_t h = 0; h < halves.size(); ++h) {
+            if (halves[h].empty()) continue;
+            const std::size_t k = chain.syllables[chain.states[halves[h].front().state].syllable]->sentence;
+            metrics[k].held_out_gap = std::max(metrics[k].held_out_gap, gaps.halves[h]);
+            if (h % 2 == 1) metrics[k].held_out_end_gap = std::max(0.0, gaps.halves[h]);
+        }
+        // The typical syllable's gap, of the whole sentence and of its second half: one noisy
+        // stretch (a note of music, a squeezed syllable) rules a half's gap but not its median.
+        std::vector<std::vector<double>> whole_gaps(metrics.size()), end_gaps(metrics.size());
+        for (std::size_t h = 0; h < halves.size(); ++h) {
+            std::size_t previous = chain.syllables.size();
+            for (const auto& segment : halves[h]) {
+                const std::size_t i = chain.states[segment.state].syllable;
+                if (i == previous || !std::isfinite(gaps.syllables[i])) continue;
+                previous = i;
+                const std::size_t k = chain.syllables[i]->sentence;
+                whole_gaps[k].push_back(gaps.syllables[i]);
+                if (h % 2 == 1) end_gaps[k].push_back(gaps.syllables[i]);
+            }
+        }
+        for (std::size_t k = 0; k < metrics.size(); ++k) {
+            if (whole_gaps[k].empty()) continue;
+            metrics[k].held_out_median = mean_median(whole_gaps[k]);
+            metrics[k].held_out_last_is_worst =
+                whole_gaps[k].back() >= *std::max_element(whole_gaps[k].begin(), whole_gaps[k].end());
+            if (!end_gaps[k].empty()) metrics[k].held_out_end_median = mean_median(end_gaps[k]);
+        }
+    }
+}
+
+}  // namespace talkface::detail

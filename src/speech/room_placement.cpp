@@ -1,0 +1,42 @@
+#include "speech/room_placement.hpp"
+
+#include "speech/room_closures.hpp"
+#include "speech/syllable_placement.hpp"
+
+namespace talkface::detail {
+
+std::optional<DryRoom> dry_room(const FeatureTrack& track, const LoudnessProfile& loudness,
+                                const Timeline& transcript, const std::vector<SentenceChain>& chains,
+                                const std::optional<RoomRinging>& room_ringing, ProgressReporter& progress,
+                                int passes) {
+    if (!room_ringing) return std::nullopt;
+    DryRoom dry;
+    dry.track = without_late_ringing(track, *room_ringing);
+    dry.learned = reestimate(dry.track, loudness, transcript, chains, progress, kReestimationRounds, passes);
+    return dry;
+}
+
+void place_in_room(const SentenceChain& plain_chain, std::size_t w, DryRoom* dry,
+                   const std::vector<StateSegment>& last_path, const FeatureTrack& placed_track,
+                   const LoudnessProfile& loudness, const Timeline& transcript, EmissionScores& scores,
+                   ViterbiWorkspace& workspace, EntryMaxMarginals& room_marginals, Timeline& room_result,
+                   std::vector<SyllableEvidence>& room_evidence) {
+    EmissionScores& room_scores = dry ? dry->scores : scores;
+    if (dry) {
+        observe(dry->track, loudness, plain_chain.searched, dry->observations);
+        dry->learned.model.score(dry->observations.data(), plain_chain.searched.length(), room_scores);
+    }
+    SentenceChain ringing = plain_chain;
+    let_closures_ring(ringing.states);
+    const auto room_path =
+        align_chain(ringing, room_scores, workspace, room_scores.frame_count, transcript, &room_marginals);
+    const std::vector<std::vector<SyllableFrames>> room_other_frames = {
+        light_search(ringing, room_scores, workspace, kLightSoundsWeight, true),
+        light_search(ringing, room_scores, workspace, kLightSoundsWeight, false),
+        frames_on_path(plain_chain, last_path)};
+    place_syllables(ringing, w, room_path, room_other_frames, room_scores, placed_track, room_result,
+                    room_evidence);
+    set_start_evidence(ringing, room_path, room_marginals, room_evidence);
+}
+
+}  // namespace talkface::detail
