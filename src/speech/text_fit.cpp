@@ -26,6 +26,14 @@ double path_score(const SentenceChain& chain, const std::vector<StateSegment>& p
     return sum;
 }
 
+// Whether path[i] is a stop's closure after speech, the state before it on the path a sound, not a
+// pause: after a pause the closure is silence either way (SPEC), and no sound runs on into it.
+bool is_closure_after_speech(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                             std::size_t i) {
+    return i > 0 && chain.states[path[i].state].role == StateRole::closure &&
+           !is_pause(chain.states[path[i - 1].state].role);
+}
+
 }  // namespace
 
 double speech_fit(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores) {
@@ -73,7 +81,7 @@ double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>&
         const PhoneState& state = chain.states[segment.state];
         const std::size_t segment_first = std::max(segment.first_frame, first);
         const std::size_t segment_end = std::min(segment.end_frame, end);
-        const bool is_run_on = state.role == StateRole::closure && forgiven_run_on > 0.0 && i > 0;
+        const bool is_run_on = forgiven_run_on > 0.0 && is_closure_after_speech(chain, path, i);
         const int run_on = is_run_on ? chain.states[path[i - 1].state].phone_class : state.phone_class;
         for (std::size_t t = segment_first; t < segment_end; ++t) {
             const double closed = scores.at(t, state.phone_class);
@@ -86,9 +94,9 @@ double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>&
 void add_closure_run_on(const SentenceChain& chain, const std::vector<StateSegment>& path,
                         const EmissionScores& scores, std::vector<double>& losses) {
     for (std::size_t i = 1; i < path.size(); ++i) {
+        if (!is_closure_after_speech(chain, path, i)) continue;
         const PhoneState& state = chain.states[path[i].state];
         const PhoneState& before = chain.states[path[i - 1].state];
-        if (state.role != StateRole::closure || is_pause(before.role)) continue;
         for (std::size_t t = path[i].first_frame; t < path[i].end_frame; ++t)
             losses.push_back(std::max(0.0, static_cast<double>(scores.at(t, before.phone_class)) -
                                                scores.at(t, state.phone_class)));
