@@ -127,6 +127,12 @@ bool speaks_of_duration(const std::vector<CodePoint>& text, std::size_t start) {
 bool names_place_in_recording(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
     if (is_one_of(value_at(text, end), U"处處")) return true;
     const std::string before = text_before(text, start, true);
+    // A chat points at a moment of a video as at a place (视频0:45那里笑死我了, 这集12:30那段; session 33:
+    // 零点四十五分); without the video named it may be the time to meet (今晚12:30那里见).
+    if (starts_with_any(text_between(text, end, end + 2), {"那里", "那裡", "那儿", "那兒", "那段"}) &&
+        contains_any(before, {"视频", "視頻", "影片", "录像", "錄像", "音频", "音頻", "录音", "錄音", "回放",
+                              "这集", "這集", "这期", "這期"}))
+        return true;
     return contains_any(before, {"进度条", "進度條", "时间轴", "時間軸", "时间线", "時間線", "拖到", "拉到",
                                  "跳到", "快进到", "快轉到"});
 }

@@ -29,7 +29,8 @@ bool is_score(const std::vector<CodePoint>& text, std::size_t start, std::size_t
 bool speaks_of_duration(const std::vector<CodePoint>& text, std::size_t start);
 
 // A place in a recording (视频1:23处 一分二十三秒处, 进度条拉到12:45): minutes and seconds, not a time of
-// day, where 处 follows the time or the clause speaks of a player's progress bar (进度条 时间轴 拉到 跳到).
+// day, where 处 follows the time, 那里 or 那段 a time in a clause naming a video (视频0:45那里), or the
+// clause speaks of a player's progress bar (进度条 时间轴 拉到 跳到).
 bool names_place_in_recording(const std::vector<CodePoint>& text, std::size_t start, std::size_t end);
 
 // A year of the Republic of China written with three digits (113 for 2024), as Taiwan dates its

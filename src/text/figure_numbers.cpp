@@ -4,6 +4,17 @@
 
 namespace talkface::detail {
 
+namespace {
+
+// Whether text[i] is 关 naming a game's stage (卡在1-3关, 打到2-5關了), not a word that begins with it
+// (关于 关注 关系 关键 关门).
+bool names_stage_at(const std::vector<CodePoint>& text, std::size_t i) {
+    return is_one_of(value_at(text, i), U"关關") &&
+           !is_one_of(value_at(text, i + 1), U"于於注心系係键鍵门門闭閉掉机機");
+}
+
+}  // namespace
+
 std::optional<SpokenForm> read_figure_number(const std::vector<CodePoint>& text, std::size_t start,
                                              const WrittenNumber& first) {
     constexpr std::size_t kMostParts = 3;
@@ -12,8 +23,12 @@ std::optional<SpokenForm> read_figure_number(const std::vector<CodePoint>& text,
     // count.
     const bool names_example = start > 0 && text[start - 1].value == U'例' &&
                                (start == 1 || !is_one_of(text[start - 2].value, U"病案"));
-    if (start == 0 || !(is_one_of(text[start - 1].value, U"图圖表式") || names_example) || first.has_point ||
-        first.has_separators || first.whole.size() > kMostDigits || !is_dash(value_at(text, first.end)) ||
+    const bool after_label = start > 0 && (is_one_of(text[start - 1].value, U"图圖表式") || names_example);
+    // A game's stage is numbered so too, its world and its place in it (卡在1-3关 一杠三关, as players say
+    // it; session 33: 一到三关); a range of stages takes 第 (第1-3关 第一到三关).
+    const bool may_name_stage = start == 0 || text[start - 1].value != U'第';
+    if (!(after_label || may_name_stage) || first.has_point || first.has_separators ||
+        first.whole.size() > kMostDigits || !is_dash(value_at(text, first.end)) ||
         !is_digit_at(text, first.end + 1))
         return std::nullopt;
     SpokenForm form;
@@ -31,7 +46,8 @@ std::optional<SpokenForm> read_figure_number(const std::vector<CodePoint>& text,
     const auto after = value_at(text, i);
     // 所 of 如图3-2所示 is no measure word (300多所学校).
     const bool measures = takes_liang(after) && text_between(text, i, i + 2) != "所示";
-    if (is_digit_at(text, i) || is_dash(after) || after == '.' || measures || after == '%')
+    if (!after_label && !names_stage_at(text, i)) return std::nullopt;
+    if (after_label && (is_digit_at(text, i) || is_dash(after) || after == '.' || measures || after == '%'))
         return std::nullopt;
     form.end = i;
     return form;

@@ -18,7 +18,8 @@ namespace talkface::detail {
 // or 例 (例3-2, a worked example; not 病例 案例, whose cases count), and before no measure word or magnitude:
 // a chapter and the label's place in it, each part counted with 杠 between, as teachers read them (session
 // 29: 三到两, a range, and 二比一, a score; session 30: 例3-2 三到二). A range after such a word counts
-// something and says what (发表3-5篇, 代表3-5人 stay ranges).
+// something and says what (发表3-5篇, 代表3-5人 stay ranges). So is a game's stage before 关 without 第
+// (卡在1-3关 一杠三关, its world and its place; 第1-3关 stays a range of stages).
 std::optional<SpokenForm> read_figure_number(const std::vector<CodePoint>& text, std::size_t start,
                                              const WrittenNumber& first);
 

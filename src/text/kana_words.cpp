@@ -3,8 +3,10 @@
 #include <iterator>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "talkface/transcript.hpp"
+#include "text/sorted_lines.hpp"
 
 namespace talkface::detail {
 
@@ -105,10 +107,37 @@ std::string nasal_joined(const std::string& before) {
     return "";
 }
 
+// Words of Japanese that Mandarin chat has taken in whole, written in kana and said as their settled
+// transliterations are (すごい 斯国一, ありがとう 阿里嘎多, 八嘎, 达咩, 雅蠛蝶, 空尼奇瓦), where the mora
+// table's gives other syllables (si ge yi, a li ga tuo; session 32 left すごい to a fix in place), as
+// Mandarin's own words for English ones are kept (latin_words.cpp's email 伊妹儿). In hiragana.
+struct SettledWord {
+    std::u32string_view kana;
+    std::string_view pinyin;  // numbered, the characters' tones
+};
+constexpr SettledWord kSettledWords[] = {
+    {U"すごい", "si1 guo2 yi1"}, {U"ありがとう", "a1 li3 ga1 duo1"}, {U"ばか", "ba1 ga1"},
+    {U"だめ", "da2 mie1"},       {U"やめて", "ya3 mie4 die2"},       {U"こんにちは", "kong1 ni2 qi2 wa3"},
+};
+
+std::optional<std::vector<std::string>> settled_syllables(const std::vector<CodePoint>& text,
+                                                          std::size_t first, std::size_t end) {
+    std::u32string kana;
+    for (auto k = first; k < end; ++k) kana += as_hiragana(text[k].value);
+    for (const auto& word : kSettledWords) {
+        if (kana != word.kana) continue;
+        std::vector<std::string> syllables;
+        for (const auto syllable : split_words(word.pinyin)) syllables.emplace_back(syllable);
+        return syllables;
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<KanaWord> read_kana_word(const std::vector<CodePoint>& text, std::size_t i) {
     if (i >= text.size() || !is_kana(text[i].value) || text[i].value == kLongMark) return std::nullopt;
+    const auto first = i;
     KanaWord word;
     char vowel = '-';  // the vowel the last mora said ends in
     for (; i < text.size() && is_kana(text[i].value); ++i) {
@@ -130,6 +159,7 @@ std::optional<KanaWord> read_kana_word(const std::vector<CodePoint>& text, std::
     }
     // っ alone (好っ) cuts a sound off and says nothing: no word.
     if (word.syllables.empty()) return std::nullopt;
+    if (auto settled = settled_syllables(text, first, i)) word.syllables = std::move(*settled);
     word.end = i;
     return word;
 }

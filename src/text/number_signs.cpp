@@ -32,6 +32,15 @@ bool follows_game_attribute(const std::vector<CodePoint>& text, std::size_t star
     return false;
 }
 
+// A game's gauges written in capitals (HP+500, MP-20, EXP+100), a whole word: the sign after them adds or
+// takes away as after 血量 or 法力 (session 33: MP-20 was read as a model's number, ai mu pi 二十).
+bool follows_stat_letters(const std::vector<CodePoint>& text, std::size_t start) {
+    auto first = start;
+    while (first > 0 && is_ascii_letter(text[first - 1].value)) --first;
+    const auto word = text_between(text, first, start);
+    return word == "HP" || word == "MP" || word == "EXP";
+}
+
 // A gauge a game or a visual novel fills, a word in 度 (好感度+10 好感度加十, 亲密度+5, 熟练度-1: session 31,
 // 正), with a whole count after the sign: its points, as 攻击力's are. Not a measure in degrees (温度 角度
 // 纬度 经度 坡度), whose sign is a value's, nor a share (满意度+5%, 浓度+0.5), which a report changes.
@@ -153,9 +162,10 @@ std::optional<LeadingSign> read_leading_sign(const std::vector<CodePoint>& text,
     std::string sign_words;
     const auto first = value_at(text, i);
     // After a term (a digit, a letter, a square: x²+2x) a + or a - joins it to the next, a sign no more.
-    const bool after_word =
-        start > 0 && (is_digit_at(text, start - 1) || is_ascii_letter(value_at(text, start - 1)) ||
-                      is_one_of(text[start - 1].value, U"\u00B2\u00B3"));
+    const bool after_stat = follows_stat_letters(text, start);
+    const bool after_word = start > 0 && !after_stat &&
+                            (is_digit_at(text, start - 1) || is_ascii_letter(value_at(text, start - 1)) ||
+                             is_one_of(text[start - 1].value, U"\u00B2\u00B3"));
     // A subtitle's dash before a speaker's turn (-12号，周五。) is no sign either (session 25: 负十二), nor
     // is the second half of the Chinese dash, two em dashes (——3年后, a script's time skip; session 31: 负).
     const bool ends_chinese_dash = first == 0x2014 && start > 0 && text[start - 1].value == 0x2014;
@@ -175,7 +185,7 @@ std::optional<LeadingSign> read_leading_sign(const std::vector<CodePoint>& text,
         // 移速-15% 减百分之十五; session 30: 负, and 跌 before a percentage, a market's fall). A - after a
         // word in 值 stays a value's sign (净值-2%, 差值-3).
         const bool takes_away = is_dash(first) && start > 0 && text[start - 1].value != U'值';
-        if ((follows_game_attribute(text, start) || follows_gauge(text, start)) &&
+        if ((follows_game_attribute(text, start) || follows_gauge(text, start) || after_stat) &&
             (first == '+' || takes_away))
             sign_words = first == '+' ? "加" : "减";
         ++i;

@@ -13,24 +13,29 @@ namespace talkface::detail {
 namespace {
 
 // Sounds and actions that subtitles, interview transcripts and scripts write in brackets, in
-// Simplified and Traditional characters, and English's.
+// Simplified and Traditional characters, and English's; and how a game's or a script's line is said, its
+// voice (（小声）其实我早就知道了: session 33, read as words).
 constexpr std::string_view kDirectionWords[] = {
-    "笑",     "大笑",     "微笑",     "苦笑",     "冷笑",      "偷笑",      "笑声",    "笑聲",   "哄笑",
-    "掌声",   "掌聲",     "鼓掌",     "拍手",     "欢呼",      "歡呼",      "欢呼声",  "歡呼聲", "尖叫",
-    "口哨",   "音乐",     "音樂",     "背景音乐", "背景音樂",  "配乐",      "配樂",    "音效",   "歌声",
-    "歌聲",   "唱",       "哼唱",     "叹气",     "嘆氣",      "歎氣",      "叹息",    "嘆息",   "咳嗽",
-    "清嗓子", "哭",       "哭泣",     "哭声",     "哭聲",      "抽泣",      "哽咽",    "停顿",   "停頓",
-    "沉默",   "静默",     "靜默",     "喘气",     "喘氣",      "喘息",      "吸气",    "吸氣",   "呼吸",
-    "杂音",   "雜音",     "噪音",     "听不清",   "聽不清",    "画外音",    "畫外音",  "旁白",   "独白",
-    "獨白",   "内心独白", "內心獨白", "铃声",     "鈴聲",      "敲门声",    "敲門聲",  "片头",   "片頭",
-    "片尾",   "转场",     "轉場",     "点头",     "點頭",      "摇头",      "搖頭",    "鞠躬",   "laughter",
-    "laughs", "laughing", "laugh",    "applause", "clapping",  "cheering",  "cheers",  "music",  "singing",
-    "sighs",  "sigh",     "coughs",   "cough",    "inaudible", "crosstalk", "silence", "pause",  "noise"};
+    "小声",     "小聲",       "大声",      "大聲",      "轻声",     "輕聲",     "低声",     "低聲",
+    "低语",     "低語",       "耳语",      "耳語",      "喃喃",     "自言自语", "自言自語", "大喊",
+    "怒吼",     "whispering", "whispers",  "shouting",  "笑",       "大笑",     "微笑",     "苦笑",
+    "冷笑",     "偷笑",       "笑声",      "笑聲",      "哄笑",     "掌声",     "掌聲",     "鼓掌",
+    "拍手",     "欢呼",       "歡呼",      "欢呼声",    "歡呼聲",   "尖叫",     "口哨",     "音乐",
+    "音樂",     "背景音乐",   "背景音樂",  "配乐",      "配樂",     "音效",     "歌声",     "歌聲",
+    "唱",       "哼唱",       "叹气",      "嘆氣",      "歎氣",     "叹息",     "嘆息",     "咳嗽",
+    "清嗓子",   "哭",         "哭泣",      "哭声",      "哭聲",     "抽泣",     "哽咽",     "停顿",
+    "停頓",     "沉默",       "静默",      "靜默",      "喘气",     "喘氣",     "喘息",     "吸气",
+    "吸氣",     "呼吸",       "杂音",      "雜音",      "噪音",     "听不清",   "聽不清",   "画外音",
+    "畫外音",   "旁白",       "独白",      "獨白",      "内心独白", "內心獨白", "铃声",     "鈴聲",
+    "敲门声",   "敲門聲",     "片头",      "片頭",      "片尾",     "转场",     "轉場",     "点头",
+    "點頭",     "摇头",       "搖頭",      "鞠躬",      "laughter", "laughs",   "laughing", "laugh",
+    "applause", "clapping",   "cheering",  "cheers",    "music",    "singing",  "sighs",    "sigh",
+    "coughs",   "cough",      "inaudible", "crosstalk", "silence",  "pause",    "noise"};
 
 // Who makes the sound, before it; how it goes on, after it: 众人笑 全场鼓掌 掌声响起.
 constexpr std::string_view kDirectionModifiers[] = {
-    "众",   "眾",   "众人", "眾人", "全场", "全場", "观众", "觀眾",       "现场",     "現場", "大家", "轻",
-    "輕",   "轻轻", "輕輕", "低声", "低聲", "热烈", "熱烈", "起",         "响起",     "響起", "声",   "聲",
+    "众",   "眾",   "众人", "眾人", "全场", "全場", "观众", "觀眾",       "现场",     "現場", "大家",
+    "轻",   "輕",   "轻轻", "輕輕", "热烈", "熱烈", "起",   "响起",       "響起",     "声",   "聲",
     "不断", "不斷", "渐弱", "漸弱", "渐起", "漸起", "停",   "background", "audience", "soft", "loud"};
 
 constexpr std::size_t kLongestDirection = 16;  // code points between the brackets

@@ -42,6 +42,18 @@ TEST_SUITE("stage directions and speaker labels") {
         }
     }
 
+    TEST_CASE("a bracket of how a line is said is not said") {
+        // Failed on main 3fee0f9 (session 33, dev32): （小声） was read.
+        for (const std::string direction : {"（小声）", "(低声)", "【大聲】", "[whispering]"}) {
+            CAPTURE(direction);
+            const auto timeline = read_transcript(direction + "其实我早就知道了。");
+            CHECK(said(timeline) == "其实我早就知道了");
+            CHECK(warns_of(timeline, "\"" + direction + "\" is a stage direction, not said"));
+        }
+        // The limit: the same words outside a bracket are the text's.
+        CHECK(said("他小声说") == "他小声说");
+    }
+
     TEST_CASE("a bracket of anything else is text, said as before") {
         CHECK(said("这件衣服八十八元（包邮）。") == "这件衣服八十八元包邮");
         CHECK(said("【紧急通知】明天停课一天。") == "紧急通知明天停课一天");
