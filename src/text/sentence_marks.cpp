@@ -83,6 +83,20 @@ bool marks_lineage_dot(const std::vector<CodePoint>& text, std::size_t i) {
     return i - k >= 2 && (k == 0 || !is_ascii_letter(text[k - 1].value));
 }
 
+bool marks_initialism_dot(const std::vector<CodePoint>& text, std::size_t i) {
+    const auto is_dot = [&](std::size_t k) { return k < text.size() && ascii_form(text[k].value) == '.'; };
+    // A letter alone before the dot at k: no letter or digit right before it.
+    const auto initial_before = [&](std::size_t k) {
+        if (k == 0 || !is_ascii_letter(text[k - 1].value)) return false;
+        return k == 1 || !(is_ascii_letter(text[k - 2].value) || detail::is_digit_at(text, k - 2));
+    };
+    if (!is_dot(i) || !initial_before(i)) return false;
+    const bool another_after =
+        i + 2 < text.size() && is_ascii_letter(text[i + 1].value) && is_dot(i + 2) && initial_before(i + 2);
+    const bool another_before = i >= 2 && is_dot(i - 2) && initial_before(i - 2);
+    return another_after || another_before;
+}
+
 bool marks_topic(const std::vector<CodePoint>& text, std::size_t i) {
     constexpr std::size_t kLongestTopic = 30;  // code points between the two marks
     const auto is_mark = [&](std::size_t k) { return ascii_form(text[k].value) == '#'; };

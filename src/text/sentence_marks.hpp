@@ -47,6 +47,12 @@ bool marks_list_item(const std::vector<CodePoint>& text, std::size_t i);
 // after XBB.). A capital alone before a dot may be a choice's or an initial's.
 bool marks_lineage_dot(const std::vector<CodePoint>& text, std::size_t i);
 
+// A dot of an initialism written with its dots (K.O., U.S., J.K.罗琳): each after a letter alone, with
+// another such letter and dot beside it. It ends no sentence and is not said, as the letters are read
+// (直接K.O.！ kei ou; session 33: cut after K. and again after O.). A letter alone before a dot may be a
+// choice's (A.选项) where no other follows.
+bool marks_initialism_dot(const std::vector<CodePoint>& text, std::size_t i);
+
 // A # that opens or closes a topic (#春节快乐#, as Weibo and other posts mark one): a bracket, not
 // said; the topic between them is read. A # with no partner on its line (#5) is still a symbol.
 bool marks_topic(const std::vector<CodePoint>& text, std::size_t i);

@@ -213,7 +213,8 @@ std::size_t TranscriptReader::read_item(const std::vector<CodePoint>& text, std:
     flush_run(ends_sentence(c.value) || marks_pause(c.value) || closes_quote(c.value));
     if (sentence_ended_ && !(ends_sentence(c.value) || closes_quote(c.value))) close_sentence();
     if (const auto form_end = read_written_form(text, i)) return *form_end;
-    if (marks_choice(text, i) || marks_list_item(text, i) || marks_lineage_dot(text, i)) {
+    if (marks_choice(text, i) || marks_list_item(text, i) || marks_lineage_dot(text, i) ||
+        marks_initialism_dot(text, i)) {
         append_text(c.text);
         return i + 1;
     }

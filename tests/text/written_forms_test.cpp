@@ -1656,6 +1656,17 @@ TEST_SUITE("written forms") {
         CHECK(read_transcript("答案是A.2后来改了。").sentences.size() == 2);
     }
 
+    TEST_CASE("the dots of an initialism end no sentence") {
+        // The first three checks failed on main 3fee0f9 (session 33, dev32): cut after K. and after O.
+        CHECK(read_transcript("一套连招直接K.O.！").sentences.size() == 1);
+        CHECK(said("他被K.O.了") == "他被 kei ou了");
+        CHECK(read_transcript("J.K.罗琳出新书了。后来又出了一本。").sentences.size() == 2);
+        // The limits: a letter alone before a dot with no other beside it, and a word before one.
+        CHECK(read_transcript("答案选A.不对。").sentences.size() == 1);
+        CHECK(read_transcript("版本x.y").sentences.size() == 2);
+        CHECK(read_transcript("他来了. 我走了.").sentences.size() == 2);
+    }
+
     TEST_CASE("a toll's dead and injured are counted with 两") {
         // Each row but the limits failed on main 1e85796 (session 29, dev21's tuning miss): 二死, 二伤.
         check_cases({
