@@ -48,6 +48,12 @@ inline bool is_ascii_digit(char32_t c) {
     return c >= '0' && c <= '9';
 }
 
+// Whether c, folded to its digit by ascii_form, was written as a subscript digit (₀ ... ₉: log₂8's base,
+// KMnO₄'s count, x₁'s index): UTF-8's E2 82 80 to E2 82 89.
+inline bool is_subscript_digit(const CodePoint& c) {
+    return c.text.size() == 3 && c.text[0] == '\xE2' && c.text[1] == '\x82' && is_ascii_digit(c.value);
+}
+
 inline bool is_ascii_capital(char32_t c) {
     return c >= 'A' && c <= 'Z';
 }

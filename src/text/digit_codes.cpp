@@ -330,11 +330,22 @@ std::optional<SpokenForm> read_standard_code(const std::vector<CodePoint>& text,
     // A part's number after a point (GB/T 1.1-2020, JJF 1059.1-2012) is said after 点 as a version's is; one
     // after a dash with the year after a colon (EN 71-3:2019, IEC 62368-1:2018; session 32: 七十一到三) after
     // 杠, as the year after a dash is. A number of one part has three digits or more.
-    auto part_end = number.end + 1;
-    auto part = is_dash(value_at(text, number.end)) ? digits_from(text, part_end) : std::string();
-    if (part.size() > kLongestPart || ascii_form(value_at(text, part_end)) != ':') part.clear();
+    // A part may have a part of its own (IEC 60335-2-29:2019 六零三三五杠二杠二九二零一九, a household
+    // appliance's particular rules; session 33: a code's digits run together and the year a ratio's).
+    constexpr std::size_t kMostParts = 2;
+    std::vector<std::string> parts;
+    auto part_end = number.end;
+    while (parts.size() < kMostParts && is_dash(value_at(text, part_end)) &&
+           is_digit_at(text, part_end + 1)) {
+        auto k = part_end + 1;
+        auto part = digits_from(text, k);
+        if (part.size() > kLongestPart) break;
+        parts.push_back(std::move(part));
+        part_end = k;
+    }
+    if (ascii_form(value_at(text, part_end)) != ':') parts.clear();
     if (number.has_separators ||
-        (!number.has_point && part.empty() && number.whole.size() < kFewestCodeDigits))
+        (!number.has_point && parts.empty() && number.whole.size() < kFewestCodeDigits))
         return std::nullopt;
     auto letters = start;
     const bool spaced = letters > 0 && text[letters - 1].value == ' ';
@@ -348,17 +359,22 @@ std::optional<SpokenForm> read_standard_code(const std::vector<CodePoint>& text,
     if (!is_standard_prefix(text_between(text, letters, prefix_end),
                             spaced && speaks_of_standard(text, start)))
         return std::nullopt;
-    const auto year_mark = part.empty() ? number.end : part_end;
+    const auto year_mark = parts.empty() ? number.end : part_end;
     const auto mark = ascii_form(value_at(text, year_mark));
     if (!is_dash(mark) && mark != ':') return std::nullopt;
     auto end = year_mark + 1;
     const auto year = digits_from(text, end);
     if (year.size() != kYearDigits || !starts_with_any(year, {"19", "20"}) || value_at(text, end) == '.')
         return std::nullopt;
+    // After ISO two sensitivities, the second higher, are a camera's range (ISO 100-2000 一百到两千; session
+    // 33: a standard of 2000, 一零零杠二零零零).
+    if (is_dash(mark) && is_camera_sensitivity(text, start, number.whole) &&
+        is_camera_sensitivity(text, start, year) && std::stoul(year) > std::stoul(number.whole))
+        return std::nullopt;
     SpokenForm form;
-    form.words = digit_words(number.whole) + (number.has_point ? "点" + digit_words(number.fraction) : "") +
-                 (part.empty() ? "" : "杠" + digit_words(part)) + (is_dash(mark) ? "杠" : "") +
-                 digit_words(year);
+    form.words = digit_words(number.whole) + (number.has_point ? "点" + digit_words(number.fraction) : "");
+    for (const auto& part : parts) form.words += "杠" + digit_words(part);
+    form.words += (is_dash(mark) ? "杠" : "") + digit_words(year);
     form.end = end;
     return form;
 }
@@ -426,10 +442,11 @@ bool is_filter_grade(const std::vector<CodePoint>& text, std::size_t start, cons
 
 bool is_camera_sensitivity(const std::vector<CodePoint>& text, std::size_t start, const std::string& digits) {
     // ISO 12232's sensitivities, which cameras write after ISO: 100 doubled for each full stop (200 ... 3200,
-    // 6400, 102400) and 125 and 160 doubled for the thirds between, written 1250 from 1280 on (2500, 5000).
+    // 6400, 102400) and 125 and 160 doubled for the thirds between, written 1250 from 1280 on (2500, 5000);
+    // below 100 the extended stop, 50, and its thirds, 64 and 80 (ISO 50-51200; session 33: 五一二零零).
     // The standards news cites after ISO (9001, 14001, 8601, 639, 3166) lie off that series and stay codes.
     constexpr std::array<unsigned long, 3> kSeriesStarts = {100, 125, 1250};
-    constexpr std::array<unsigned long, 3> kThirdsBefore1250 = {160, 320, 640};
+    constexpr std::array<unsigned long, 6> kThirdsBefore1250 = {50, 64, 80, 160, 320, 640};
     constexpr std::size_t kMostDigits = 7;
     if (digits.empty() || digits.size() > kMostDigits || digits.front() == '0' ||
         model_name_before(text, start) != "ISO")

@@ -25,6 +25,12 @@ bool in_chemical_formula(const std::vector<CodePoint>& text, std::size_t start);
 // ÷ ∠ ⊥ ∥).
 bool touches_formula_sign(const std::vector<CodePoint>& text, std::size_t edge, int step);
 
+// Whether the arrow at text[i] marks a gas given off (↑) or a precipitate (↓) after a product of a chemical
+// equation (2H₂O₂=2H₂O+O₂↑, CaCO₃↓): right after a term's letter or count, ending it, an = before it in the
+// clause. A lesson reads the equation without them, so the reader keeps them unsaid and unwarned (session
+// 33: skipped with a warning); an arrow after a word (宁德时代↑3.2%) is no such mark.
+bool marks_reaction_arrow(const std::vector<CodePoint>& text, std::size_t i);
+
 }  // namespace talkface::detail
 
 #endif

@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include "text/formula_letters.hpp"
+#include "text/number_context.hpp"
 #include "text/number_words.hpp"
 #include "text/written_number_scan.hpp"
 
@@ -32,9 +34,12 @@ std::string_view greek_letter_name(char32_t c) {
 // A term of a formula: a digit, a Latin or Greek letter, a closing bracket or a square (x², (a+b)),
 // a degree or a percentage.
 bool is_formula_term(char32_t c) {
-    // A degree or a percentage ends a term too (sin30°=1/2, 25%=1/4; session 14: the = was skipped).
-    return (c >= '0' && c <= '9') || is_ascii_letter(c) || !greek_letter_name(c).empty() || c == ')' || c == 0xB2 ||
-           c == 0xB3 || c == 0xB0 || c == '%' || c == 0x2103 /*℃*/;
+    // A degree or a percentage ends a term too (sin30°=1/2, 25%=1/4; session 14: the = was skipped), and so
+    // does any power's last digit ((-1)¹⁰⁰=1; session 33: the = was skipped), the empty set (A∩B=∅) and
+    // infinity.
+    return (c >= '0' && c <= '9') || is_ascii_letter(c) || !greek_letter_name(c).empty() || c == ')' ||
+           c == 0xB2 || c == 0xB3 || c == 0xB9 || (c >= 0x2070 && c <= 0x2079) || c == 0xB0 || c == '%' ||
+           c == 0x2103 /*℃*/ || c == 0x2205 /*∅*/ || c == 0x221E /*∞*/;
 }
 
 // A relation sign in the clause around text[i]: the signs in it are a formula's (a-b>0: 减).
@@ -52,6 +57,32 @@ bool clause_has_relation(const std::vector<CodePoint>& text, std::size_t i) {
 // Whether c is a Han character (CJK Unified Ideographs and Extension A).
 bool is_han_character(char32_t c) {
     return c >= 0x3400 && c <= 0x9FFF;
+}
+
+// Whether the bar at text[i] closes an absolute value (|x|=3, |-5|): a bar opened earlier in the clause, the
+// bars before it in the clause odd in number, with a formula's terms and signs between and no word.
+bool closes_absolute_value(const std::vector<CodePoint>& text, std::size_t i) {
+    if (value_at(text, i) != '|') return false;
+    int bars_before = 0;
+    bool has_term = false;
+    for (auto k = i; k-- > 0;) {
+        const auto c = value_at(text, k);
+        if (c == '|') {
+            ++bars_before;
+            continue;
+        }
+        if (is_han_character(c) || is_one_of(c, U",;\n\u3001\u3002")) break;
+        if (bars_before == 0) has_term = has_term || is_formula_term(c);
+    }
+    return has_term && bars_before % 2 == 1;
+}
+
+// Whether a single letter stands right before text[end) and right after text[start] (v=s/t, a:b=3:2): a
+// formula's two variables, not a word's letters (km/h, and/or).
+bool between_single_letters(const std::vector<CodePoint>& text, std::size_t before, std::size_t after) {
+    return before >= 1 && is_ascii_letter(value_at(text, before - 1)) &&
+           (before < 2 || !is_ascii_letter(value_at(text, before - 2))) &&
+           is_ascii_letter(value_at(text, after)) && !is_ascii_letter(value_at(text, after + 1));
 }
 
 // A number at text[i] that measures something, a unit or a word after it (60分, 38℃, 5mg, 90%): what a bound
@@ -164,6 +195,8 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
     if (const auto name = greek_letter_name(sign); !name.empty()) return name;
     auto before = i;
     while (before > 0 && text[before - 1].value == ' ') --before;
+    // A gas's or a precipitate's arrow ends its product's term (O₂↑+, CaCO₃↓+2NaCl), unsaid.
+    if (before > 0 && marks_reaction_arrow(text, before - 1)) --before;
     auto after = i + 1;
     while (value_at(text, after) == ' ') ++after;
     const char32_t left = before > 0 ? value_at(text, before - 1) : 0;
@@ -174,12 +207,17 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
     // session 28: the = before ± was unsaid): the sign is the number's, read with it.
     const bool signed_right =
         (is_dash(right) || is_one_of(right, U"+\u00B1")) && is_formula_term(value_at(text, after + 1));
-    const bool relation_right = is_formula_term(right) || signed_right;
-    const bool between_terms = is_formula_term(left) && is_formula_term(right);
+    const bool relation_right = is_formula_term(right) || signed_right || right == '|';
+    // An absolute value's closing bar ends a term (|x|=3 x的绝对值等于三).
+    const bool left_term = is_formula_term(left) || (before > 0 && closes_absolute_value(text, before - 1));
+    const bool between_terms = left_term && is_formula_term(right);
+    // A judgement question's answer, a tick or a cross alone in brackets (（√） 对, （×） 错), as a teacher
+    // reads the key (session 33: 根号, and the cross unsaid).
+    const bool marks_judgement = left == '(' && right == ')';
     switch (sign) {
         case '=': case 0x2248: case 0x2260: {  // = ≈ ≠, between a character and a term too (答案是x=5, 等于号)
             if (sign == '=' && counts_a_lobby(text, i)) return "等";
-            if (!(is_formula_term(left) || is_han_left) || !(relation_right || is_han_right)) return {};
+            if (!(left_term || is_han_left) || !(relation_right || is_han_right)) return {};
             return sign == '=' ? "等于" : sign == 0x2248 ? "约等于" : "不等于";
         }
         // ASCII < > around words are brackets: <标题>. After a word or at a clause's start and before a
@@ -193,8 +231,36 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
             return sign == '>' ? "大于" : "小于";
         }
         // ≥ and ≤ are never brackets: after a character too, before a term (含量≥80mg 含量大于等于八十毫克).
-        case 0x2265: return (is_formula_term(left) || is_han_left) && relation_right ? "大于等于" : "";  // ≥
-        case 0x2264: return (is_formula_term(left) || is_han_left) && relation_right ? "小于等于" : "";  // ≤
+        case 0x2265:
+            return (left_term || is_han_left) && relation_right ? "大于等于" : "";  // ≥
+        case 0x2264:
+            return (left_term || is_han_left) && relation_right ? "小于等于" : "";  // ≤
+        // A set's signs as a lesson reads them (session 33: skipped with a warning): x∈A 属于, x∉B 不属于,
+        // A∩B 交, A∪B 并, A⊆B 包含于, A⊇B 包含, ∅ 空集; ∞ 无穷, after its sign 正无穷 负无穷.
+        case 0x2208:  // ∈, before an interval too (x∈[0,1))
+        case 0x2209:  // ∉
+            if (!left_term || !(is_formula_term(right) || is_one_of(right, U"([\u2205"))) return {};
+            return sign == 0x2208 ? "属于" : "不属于";
+        case 0x2229:
+            return between_terms ? "交" : "";  // ∩
+        case 0x222A:
+            return between_terms ? "并" : "";  // ∪
+        case 0x2286:
+            return between_terms ? "包含于" : "";  // ⊆
+        case 0x2287:
+            return between_terms ? "包含" : "";  // ⊇
+        case 0x2205:
+            return "空集";  // ∅
+        case 0x221E:
+            return "无穷";  // ∞
+        // A bar closing an absolute value is said after its term (|x| x的绝对值); the opening bar is silent.
+        case '|':
+            return closes_absolute_value(text, i) ? "的绝对值" : "";
+        // A colon or a slash between two single letters in a formula is a ratio, 比 (a:b=3:2, v=s/t, I=U/R,
+        // as lessons read a formula's quotient; session 33: unsaid).
+        case ':':
+        case '/':
+            return between_single_letters(text, before, after) && clause_has_relation(text, i) ? "比" : "";
         // Geometry's signs as a lesson reads them (session 14): ∠A 角A, before a letter or a digit
         // (∠1); AB⊥CD AB垂直于CD, AB∥CD AB平行于CD, between two terms.
         case 0x2220: return is_formula_term(right) ? "角" : "";           // ∠
@@ -207,8 +273,11 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
         // + between two digits (1+1), two letters (A+B), two words or in a formula (x+1=3); - only in a
         // formula, since a hyphen joins words and numbers elsewhere (Wi-Fi, B-52).
         case '+':
-            return said_plus(text, i, left, right);
-        case '-': case 0x2212: return between_terms && clause_has_relation(text, i) ? "减" : "";
+            return right == 0x221E ? "正" : said_plus(text, i, left, right);
+        case '-':
+        case 0x2212:
+            if (right == 0x221E) return "负";
+            return between_terms && clause_has_relation(text, i) ? "减" : "";
         // A * before ST marks a share at risk of delisting (*ST康美), said 星 as market news says it.
         case '*': {
             const bool before_st = value_at(text, after) == 'S' && value_at(text, after + 1) == 'T' &&
@@ -216,7 +285,9 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
             return before_st ? "星" : "";
         }
         // × after a character too, before a number (经验值×2 经验值乘二, a game's bonus; session 14).
-        case 0xD7: return between_terms || (is_han_left && right >= '0' && right <= '9') ? "乘" : "";  // ×
+        case 0xD7:  // ×
+            if (marks_judgement) return "错";
+            return between_terms || (is_han_left && right >= '0' && right <= '9') ? "乘" : "";
         case 'x': return said_small_x(text, i, before == i && after == i + 1, left, right);
         // ÷ is never a bracket or a dash: between two words too, as a rule of thumb is written
         // (总价÷数量=单价, 体重(kg)÷身高; session 30: skipped with a warning).
@@ -228,7 +299,9 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
         case 0x2192:
             return (is_formula_term(left) || is_han_left) && (is_formula_term(right) || is_han_right) ? "到"
                                                                                                       : "";
-        case 0x221A: return is_formula_term(right) || right == '(' ? "根号" : "";  // √2, √(x+1)
+        case 0x221A:  // √2, √(x+1)
+            if (marks_judgement) return "对";
+            return is_formula_term(right) || right == '(' ? "根号" : "";
         // A cube root and a fourth root as a lesson reads them (∛27 三次根号二十七, ∜81; session 31: unsaid).
         case 0x221B:
             return is_formula_term(right) || right == '(' ? "三次根号" : "";  // ∛
@@ -236,11 +309,12 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
             return is_formula_term(right) || right == '(' ? "四次根号" : "";  // ∜
         // A square or a cube after a term: x² x平方, 3² 三的平方; after a word, as a rule of thumb writes it,
         // 的 too (身高² 身高的平方, 速度²; session 31: unsaid). Not after a unit of length's character, whose
-        // square is a unit said first (厘米² 平方厘米), which this sign cannot reorder.
+        // square is a unit said first (厘米² 平方厘米), which this sign cannot reorder. After a bracket, 的
+        // too, as a teacher reads a bracket's power ((-2)³ 负二的立方, (a+b)² a加b的平方; session 33: 立方).
         case 0xB2: case 0xB3: {
             const bool after_word = is_han_left && !is_one_of(left, U"米尺寸里");
             if (!(is_formula_term(left) || after_word) || before != i) return {};
-            const bool after_digit = left >= '0' && left <= '9';
+            const bool after_digit = (left >= '0' && left <= '9') || left == ')';
             if (sign == 0xB2) return after_digit || after_word ? "的平方" : "平方";
             return after_digit || after_word ? "的立方" : "立方";
         }
@@ -323,19 +397,76 @@ std::optional<SpokenForm> read_power(const std::vector<CodePoint>& text, std::si
             exponent += static_cast<char>('0' + digit);
             ++k;
         }
-        // A lone ² or ³ is said_math_sign's (平方 立方, and m² is a unit's).
-        if (!negative && (exponent == "2" || exponent == "3")) return std::nullopt;
+        // A lone ² or ³ is said_math_sign's (平方 立方, and m² is a unit's), but ten's in scientific notation
+        // (1.0×10³kg/m³ 一点零乘十的三次方千克每立方米, as 10⁸ is 十的八次方; session 33: 十的立方, and the
+        // unit after it spelled).
+        const bool scales_by_ten = i >= 3 && value_at(text, i - 1) == '0' && value_at(text, i - 2) == '1' &&
+                                   is_one_of(value_at(text, i - 3), U"\u00D7x*");
+        if (!negative && (exponent == "2" || exponent == "3") && !scales_by_ten) return std::nullopt;
     }
     constexpr std::size_t kLongestExponent = 3;
     if (exponent.empty() || exponent.size() > kLongestExponent) return std::nullopt;
     SpokenForm form;
     form.end = k;
     const bool after_digit = is_digit_at(text, i - 1);
-    if (!negative && (exponent == "2" || exponent == "3")) {
+    if (!negative && (exponent == "2" || exponent == "3") && value_at(text, i) == '^') {
         form.words = std::string(after_digit ? "的" : "") + (exponent == "2" ? "平方" : "立方");
     } else {
         form.words = std::string("的") + (negative ? "负" : "") + cardinal_words(exponent, false) + "次方";
     }
+    return form;
+}
+
+}  // namespace talkface::detail
+
+namespace talkface::detail {
+
+std::optional<SpokenForm> read_logarithm(const std::vector<CodePoint>& text, std::size_t i) {
+    if (text_between(text, i, i + 3) != "log" || (i > 0 && is_ascii_letter(value_at(text, i - 1))))
+        return std::nullopt;
+    auto k = i + 3;
+    std::string base;
+    if (value_at(text, k) == '_') {
+        ++k;
+        base = digits_from(text, k);
+    } else {
+        for (; k < text.size() && is_subscript_digit(text[k]); ++k)
+            base += static_cast<char>(value_at(text, k));
+    }
+    if (base.empty()) return std::nullopt;
+    if (value_at(text, k) == ' ') ++k;
+    if (!is_digit_at(text, k)) return std::nullopt;
+    const auto argument = parse_number(text, k);
+    if (is_ascii_letter(value_at(text, argument.end))) return std::nullopt;
+    const auto said = say_number(argument, {});
+    SpokenForm form;
+    form.words = "以" + cardinal_words(base, false) + "为底" + said.words + "的对数";
+    form.warning = said.warning;
+    form.end = argument.end;
+    return form;
+}
+
+std::optional<SpokenForm> read_repeating_decimal(const std::vector<CodePoint>& text,
+                                                 const WrittenNumber& number, const std::string& sign_words) {
+    constexpr char32_t kDotAbove = 0x307;
+    if (!number.has_point || value_at(text, number.end) != kDotAbove) return std::nullopt;
+    auto repeating = number;
+    auto end = number.end + 1;
+    // The dots stand over the first and the last digit of the repeating part (0.1̇2̇, 0.1̇23̇), or over each:
+    // the digits run through the last dotted one.
+    std::string undotted;
+    for (auto k = end; is_digit_at(text, k); ++k) {
+        undotted += static_cast<char>(value_at(text, k));
+        if (value_at(text, k + 1) != kDotAbove) continue;
+        repeating.fraction += undotted;
+        undotted.clear();
+        end = ++k + 1;
+    }
+    const auto said = say_number(repeating, {});
+    SpokenForm form;
+    form.words = sign_words + said.words + "循环";
+    form.warning = said.warning;
+    form.end = end;
     return form;
 }
 

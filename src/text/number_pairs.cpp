@@ -160,6 +160,42 @@ std::optional<SpokenForm> read_colon_pair(const std::vector<CodePoint>& text, st
     return form;
 }
 
+std::optional<SpokenForm> read_interval(const std::vector<CodePoint>& text, std::size_t start,
+                                        const WrittenNumber& number, const std::string& sign_words) {
+    if (start == 0 || number.has_separators || ascii_form(value_at(text, number.end)) != ',')
+        return std::nullopt;
+    const auto opening = ascii_form(value_at(text, start - 1));
+    if (opening != '[' && opening != '(') return std::nullopt;
+    auto k = number.end + 1;
+    if (value_at(text, k) == ' ') ++k;
+    std::string second_sign;
+    if (is_dash(value_at(text, k)) || value_at(text, k) == '+') {
+        second_sign = is_dash(value_at(text, k)) ? "负" : "正";
+        ++k;
+    }
+    std::string second_words;
+    if (value_at(text, k) == 0x221E /*∞*/) {
+        second_words = (second_sign.empty() ? "正" : second_sign) + "无穷";
+        ++k;
+    } else if (is_digit_at(text, k)) {
+        const auto second = parse_number(text, k);
+        if (second.has_separators) return std::nullopt;
+        second_words = (second_sign == "负" ? second_sign : "") + say_number(second, {}).words;
+        k = second.end;
+    } else {
+        return std::nullopt;
+    }
+    const auto closing = ascii_form(value_at(text, k));
+    if (closing != ']' && closing != ')') return std::nullopt;
+    const bool has_square = opening == '[' || closing == ']';
+    if (!has_square && !ends_with_any(text_before(text, start - 1, true), {"区间", "區間"}))
+        return std::nullopt;
+    SpokenForm form;
+    form.words = sign_words + say_number(number, {}).words + "到" + second_words;
+    form.end = k;
+    return form;
+}
+
 std::optional<SpokenForm> read_product(const std::vector<CodePoint>& text, const WrittenNumber& number) {
     if (!is_one_of(value_at(text, number.end), U"×*x") || !is_digit_at(text, number.end + 1))
         return std::nullopt;

@@ -45,6 +45,14 @@ std::optional<SpokenForm> read_colon_pair(const std::vector<CodePoint>& text, st
                                           const WrittenNumber& number, const NumberContext& context);
 
 // A small x between two numbers is a times sign typed (4x400米接力, 1920x1080), said 乘 as × is.
+// An interval as a lesson writes it, its two ends between brackets and a comma, one bracket square at least
+// or 区间 before it ([0,1), (-1,3], 区间(0,2), [0,+∞)): the ends joined by 到 (零到一), as a teacher reads
+// the numbers it holds from and to, the brackets unsaid; ∞ 无穷 after its sign (session 33: the comma was a
+// pause, 零，一). A point's coordinates in round brackets ((1,2)) are none. `start` is where the first end's
+// sign starts, `number` its digits.
+std::optional<SpokenForm> read_interval(const std::vector<CodePoint>& text, std::size_t start,
+                                        const WrittenNumber& number, const std::string& sign_words);
+
 std::optional<SpokenForm> read_product(const std::vector<CodePoint>& text, const WrittenNumber& number);
 
 // Two numbers about a slash (number, then text[number.end]): a blood pressure (blood_pressure_unit), 24/7,

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "text/digit_codes.hpp"
+#include "text/formula_letters.hpp"
 #include "text/script_marks.hpp"
 #include "text/written_number_scan.hpp"
 
@@ -161,11 +162,12 @@ std::optional<LeadingSign> read_leading_sign(const std::vector<CodePoint>& text,
     const Currency* currency = currency_at(text, i, i);
     std::string sign_words;
     const auto first = value_at(text, i);
-    // After a term (a digit, a letter, a square: x²+2x) a + or a - joins it to the next, a sign no more.
+    // After a term (a digit, a letter, a square: x²+2x, a product's arrow: CaCO₃↓+2NaCl) a + or a - joins it
+    // to the next, a sign no more.
     const bool after_stat = follows_stat_letters(text, start);
     const bool after_word = start > 0 && !after_stat &&
                             (is_digit_at(text, start - 1) || is_ascii_letter(value_at(text, start - 1)) ||
-                             is_one_of(text[start - 1].value, U"\u00B2\u00B3"));
+                             is_one_of(text[start - 1].value, U"\u00B2\u00B3") || marks_reaction_arrow(text, start - 1));
     // A subtitle's dash before a speaker's turn (-12号，周五。) is no sign either (session 25: 负十二), nor
     // is the second half of the Chinese dash, two em dashes (——3年后, a script's time skip; session 31: 负).
     const bool ends_chinese_dash = first == 0x2014 && start > 0 && text[start - 1].value == 0x2014;

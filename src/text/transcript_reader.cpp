@@ -16,6 +16,7 @@
 #include "text/formula_letters.hpp"
 #include "text/kana_words.hpp"
 #include "text/latin_words.hpp"
+#include "text/phonetic_spelling.hpp"
 #include "text/pinyin_tokens.hpp"
 #include "text/reading_tables.hpp"
 #include "text/script_marks.hpp"
@@ -23,6 +24,7 @@
 #include "text/sentence_marks.hpp"
 #include "text/transcript_cut.hpp"
 #include "text/transcript_reader.hpp"
+#include "text/units_and_money.hpp"
 #include "text/web_addresses.hpp"
 #include "text/written_numbers.hpp"
 
@@ -134,12 +136,27 @@ std::optional<std::size_t> TranscriptReader::read_written_form(const std::vector
         append_text(written_text(text, i, *timing_end));
         return *timing_end;
     }
+    // A word's phonetic spelling after it (apple [ˈæpl]) is the word said again: kept, not said.
+    if (const auto spelling_end = detail::past_phonetic_spelling(text, i)) {
+        append_text(written_text(text, i, *spelling_end));
+        return *spelling_end;
+    }
     if (auto form = detail::read_number_form(text, i)) {
         form_warnings_ = timeline_.warnings.size();
         if (!form->warning.empty()) warn(c, "\"" + written_text(text, i, form->end) + "\": " + form->warning);
         add_form(text, i, form->end,
                  read_words(form->is_dialled ? with_local_one(form->words) : form->words));
         return form->end;
+    }
+    if (auto unit = detail::read_named_unit(text, i)) {
+        form_warnings_ = timeline_.warnings.size();
+        add_form(text, i, unit->end, read_words(unit->words));
+        return unit->end;
+    }
+    if (auto logarithm = detail::read_logarithm(text, i)) {
+        form_warnings_ = timeline_.warnings.size();
+        add_form(text, i, logarithm->end, read_words(logarithm->words));
+        return logarithm->end;
     }
     if (auto per = detail::read_per_unit(text, i)) {
         form_warnings_ = timeline_.warnings.size();
@@ -214,7 +231,7 @@ std::size_t TranscriptReader::read_item(const std::vector<CodePoint>& text, std:
     if (sentence_ended_ && !(ends_sentence(c.value) || closes_quote(c.value))) close_sentence();
     if (const auto form_end = read_written_form(text, i)) return *form_end;
     if (marks_choice(text, i) || marks_list_item(text, i) || marks_lineage_dot(text, i) ||
-        marks_initialism_dot(text, i)) {
+        marks_initialism_dot(text, i) || marks_reaction_arrow(text, i)) {
         append_text(c.text);
         return i + 1;
     }

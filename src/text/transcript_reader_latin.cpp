@@ -16,6 +16,7 @@
 #include "text/latin_words.hpp"
 #include "text/number_words.hpp"
 #include "text/pinyin_tokens.hpp"
+#include "text/units_and_money.hpp"
 #include "text/web_addresses.hpp"
 #include "text/written_number_scan.hpp"
 #include "text/written_numbers.hpp"
@@ -78,7 +79,11 @@ std::size_t TranscriptReader::read_latin(const std::vector<CodePoint>& text, std
     // of operations a second; session 32: the dictionary's tops, ta pu si), unless said as a word (15PRO).
     const bool follows_digits = start > 0 && detail::is_digit_at(text, start - 1) &&
                                 detail::is_all_capitals(word) && !detail::is_said_as_word(word);
-    if (follows_digits || in_chemical_formula(text, start) || detail::follows_card_model(text, start)) {
+    // Letters right before a triangle's sign name its kind (Rt△ABC, a right triangle, as lessons write it):
+    // said as letters, R T (session 33: the same, with a warning that Rt is no word).
+    const bool names_triangle = end < text.size() && text[end].value == 0x25B3 /*△*/;
+    if (follows_digits || names_triangle || in_chemical_formula(text, start) ||
+        detail::follows_card_model(text, start)) {
         add_form(text, start, end, said_syllables(detail::letter_syllables(word)));
         return end;
     }
@@ -127,6 +132,14 @@ std::size_t TranscriptReader::read_latin(const std::vector<CodePoint>& text, std
     if (auto number = number_sign(text, word, end)) {
         add_form(text, start, number->first, number->second);
         return number->first;
+    }
+    // A rate's basis points with a plural's s (降息25bps) are bp's letters and the s a reader says after
+    // them, as after capitals (SDGs; session 33: the s by its letter's name, ai si).
+    if (word.size() == 3 && word.back() == 's' && detail::is_basis_points_at(text, start)) {
+        auto syllables = detail::letter_syllables("bp");
+        syllables.emplace_back("si5");
+        add_form(text, start, end, said_syllables(syllables));
+        return end;
     }
     add_form(text, start, end, latin_word_syllables(word, text[start]));
     return end;

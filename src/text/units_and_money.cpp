@@ -3,6 +3,7 @@
 #include <string>
 
 #include "text/digit_codes.hpp"
+#include "text/quantities_and_ranges.hpp"
 #include "text/script_variant.hpp"
 #include "text/written_number_scan.hpp"
 
@@ -53,7 +54,26 @@ constexpr Unit kUnits[] = {
     {"米²", "平方米"}, {"厘米²", "平方厘米"}, {"毫米²", "平方毫米"}, {"分米²", "平方分米"},
     {"千米²", "平方千米"}, {"公里²", "平方公里"}, {"米³", "立方米"}, {"厘米³", "立方厘米"},
     {"毫米³", "立方毫米"}, {"分米³", "立方分米"},
+    // Session 33: a capacitor's microfarads, nanofarads and picofarads as a physics lesson names them (47μF
+    // 四十七微法; μF was μ unsaid and the letter F), and bits per second written small without a prefix
+    // (20bps 二十比特每秒, as kbps is 千比特每秒) where they are no rate's basis points (is_basis_points_at).
+    {"μF", "微法"}, {"µF", "微法"}, {"nF", "纳法"}, {"pF", "皮法"}, {"bps", "比特每秒"},
 };
+
+// The kilogram in a physics unit per another, by the name textbooks give the SI units (GB 3102): per a
+// kilogram after a force's or an energy's unit (9.8N/kg 九点八牛每千克, J/kg) and per a volume after it (a
+// density, 1.0×10³kg/m³ 千克每立方米). Elsewhere kg is 公斤, as everyday speech and a doctor's dose per body
+// weight say it (0.5mg/kg 毫克每公斤; session 33 kept them).
+constexpr Unit kSiKilogram = {"kg", "千克"};
+
+bool is_si_kilogram_at(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    const bool per_kilogram = start >= 2 && value_at(text, start - 1) == '/' &&
+                              is_one_of(value_at(text, start - 2), U"NJ") &&
+                              (start < 3 || !is_ascii_letter(value_at(text, start - 3)));
+    const auto after = text_between(text, end, end + 4);
+    const bool per_volume = starts_with_any(after, {"/m³", "/cm³", "/dm³", "/m3", "/L"});
+    return per_kilogram || per_volume;
+}
 
 // A kelvin's K after a number where its clause names a temperature, 温度 (日冕的温度可达100万K): elsewhere a
 // capital K is a picture's (高温下看4K电视), a runner's (5K) or a model's letter, and a lamp's 色温6500K is left
@@ -162,6 +182,8 @@ const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size
             end = k;
         }
     }
+    if (best != nullptr && best->written == "kg" && is_si_kilogram_at(text, start, end)) best = &kSiKilogram;
+    if (best != nullptr && best->written == "bps" && is_basis_points_at(text, start)) best = nullptr;
     if (best == nullptr && start == i && i > 0 && is_small_watt_at(text, i)) {
         best = &kSmallWatt;
         end = i + 1;
@@ -174,7 +196,28 @@ const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size
 }
 
 bool is_basis_points_at(const std::vector<CodePoint>& text, std::size_t i) {
-    return value_at(text, i) == 'b' && value_at(text, i + 1) == 'p' && !is_ascii_letter(value_at(text, i + 2));
+    if (value_at(text, i) != 'b' || value_at(text, i + 1) != 'p') return false;
+    if (!is_ascii_letter(value_at(text, i + 2))) return true;
+    // bps is a rate's basis points where the sentence speaks of a rate or a bond (降息25bps,
+    // 收益率下行20bps), and bits per second elsewhere (session 33: the letters B P S either way).
+    if (value_at(text, i + 2) != 's' || is_ascii_letter(value_at(text, i + 3))) return false;
+    const std::string sentence = text_before(text, i, false) + text_after(text, i, false);
+    return contains_any(sentence, {"利率", "利差", "息差", "收益率", "基点", "基點", "降息", "加息", "LPR",
+                                   "国债", "國債", "债券", "債券", "贷款", "貸款", "存款", "降准", "降準"});
+}
+
+std::optional<SpokenForm> read_named_unit(const std::vector<CodePoint>& text, std::size_t i) {
+    if (!is_ascii_letter(value_at(text, i)) || (i > 0 && is_ascii_letter(value_at(text, i - 1))) ||
+        !ends_with_any(text_before(text, i, true),
+                       {"单位是", "單位是", "单位为", "單位為", "单位：", "單位：", "单位:", "單位:"}))
+        return std::nullopt;
+    std::size_t end = i;
+    const Unit* unit = unit_at(text, i, end);
+    if (unit == nullptr || end == i) return std::nullopt;
+    SpokenForm form;
+    form.words = unit->words + per_unit_words(text, end);
+    form.end = end;
+    return form;
 }
 
 bool is_byte_unit_at(const std::vector<CodePoint>& text, std::size_t i) {

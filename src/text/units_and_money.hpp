@@ -5,10 +5,12 @@
 #define TALKFACE_TEXT_UNITS_AND_MONEY_HPP
 
 #include <cstddef>
+#include <optional>
 #include <string_view>
 #include <vector>
 
 #include "text/code_points.hpp"
+#include "text/written_numbers.hpp"
 
 namespace talkface::detail {
 
@@ -28,6 +30,10 @@ const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size
 bool is_basis_points_at(const std::vector<CodePoint>& text, std::size_t i);
 
 bool is_byte_unit_at(const std::vector<CodePoint>& text, std::size_t i);
+
+// A unit written alone where a lesson names it, after 单位是, 单位为 or 单位： (速度的单位是m/s 米每秒,
+// 功率的单位是W 瓦), said by its name as after a number (session 33: its letters); nullopt elsewhere.
+std::optional<SpokenForm> read_named_unit(const std::vector<CodePoint>& text, std::size_t i);
 
 struct Currency {
     std::u32string_view written;

@@ -141,6 +141,9 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
         }
     }
     if (auto e_notation = read_e_notation(text, start, number, sign_words)) return e_notation;
+    if (auto repeating = read_repeating_decimal(text, number, sign_words)) return repeating;
+    if (currency == nullptr)
+        if (auto interval = read_interval(text, start, number, sign_words)) return interval;
     const bool is_bare = sign_words.empty() && currency == nullptr;
     if (is_bare)
         if (auto standard = read_standard_code(text, start, number)) return standard;

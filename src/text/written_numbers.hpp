@@ -20,6 +20,8 @@
 
 namespace talkface::detail {
 
+struct WrittenNumber;
+
 struct SpokenForm {
     std::size_t end = 0;   // index past the written form in the code points
     std::string words;     // what is said, in Simplified characters: 二零二六年
@@ -78,6 +80,19 @@ std::optional<SpokenForm> read_number_character(const std::vector<CodePoint>& te
 // (2^10 二的十次方, x^2 x平方, as x² is); a lone ² or ³ is said_math_sign's. nullopt where none starts
 // at text[i]. Session 14: the superscripts were skipped with a warning, the caret too.
 std::optional<SpokenForm> read_power(const std::vector<CodePoint>& text, std::size_t i);
+
+// A logarithm as a lesson writes it, log and its base in subscript digits or after an underscore, then its
+// number (log₂8, log_3 9), said 以 the base 为底 the number 的对数 (以二为底八的对数), as a teacher reads it;
+// nullopt elsewhere, and before a letter (log₂x keeps its letters; session 33: log was the dictionary's
+// word).
+std::optional<SpokenForm> read_logarithm(const std::vector<CodePoint>& text, std::size_t i);
+
+// A repeating decimal, a dot above (U+0307) over the first and the last digit of its repeating part or over
+// each (0.3̇, 0.1̇2̇, 0.16̇): the decimal through the last dotted digit and 循环 (零点一二循环), as a lesson
+// reads it; nullopt where no dot follows the number's digits (session 33: the dots were skipped with a
+// warning).
+std::optional<SpokenForm> read_repeating_decimal(const std::vector<CodePoint>& text,
+                                                 const WrittenNumber& number, const std::string& sign_words);
 
 // True for a service number that is a name wherever it does not count (12306, 12315, 95588: five
 // digits), said digit by digit with 幺 for 1 also in a web address (www.12306.cn).
