@@ -207,7 +207,8 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
     // session 28: the = before ± was unsaid): the sign is the number's, read with it.
     const bool signed_right =
         (is_dash(right) || is_one_of(right, U"+\u00B1")) && is_formula_term(value_at(text, after + 1));
-    const bool relation_right = is_formula_term(right) || signed_right || right == '|';
+    // A set's brace too (A={1,2,3}).
+    const bool relation_right = is_formula_term(right) || signed_right || right == '|' || right == '{';
     // An absolute value's closing bar ends a term (|x|=3 x的绝对值等于三).
     const bool left_term = is_formula_term(left) || (before > 0 && closes_absolute_value(text, before - 1));
     const bool between_terms = left_term && is_formula_term(right);

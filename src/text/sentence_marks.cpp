@@ -1,5 +1,7 @@
 #include "text/sentence_marks.hpp"
 
+#include <string_view>
+
 #include "text/written_number_scan.hpp"
 
 namespace talkface::detail {
@@ -38,6 +40,8 @@ bool closes_quote(char32_t c) {
 bool is_silent_punctuation(char32_t c) {
     const auto a = ascii_form(c);
     if (a < 0x80) {
+        // A set's ASCII braces (opens_set: a fix's are read before); a full-width one is text, reported.
+        if (c == '{' || c == '}') return true;
         return a == '"' || a == '\'' || a == '(' || a == ')' || a == '[' || a == ']' || a == '<' ||
                a == '>' || a == '-' || a == '_' || a == '/' || a == '\\' || a == '`' || a == '|' || a == '~';
     }
@@ -126,6 +130,24 @@ bool marks_ticker(const std::vector<CodePoint>& text, std::size_t i) {
 bool marks_screen_mode(const std::vector<CodePoint>& text, std::size_t i) {
     if (ascii_form(text[i].value) != '@' || i < 2 || !detail::is_digit_at(text, i + 1)) return false;
     return detail::is_one_of(ascii_form(text[i - 1].value), U"KkPp") && detail::is_digit_at(text, i - 2);
+}
+
+bool opens_set(const std::vector<CodePoint>& text, std::size_t i) {
+    if (i >= text.size() || text[i].value != '{') return false;
+    constexpr std::size_t kLongest = 40;
+    bool lists = false;
+    for (auto k = i + 1; k < text.size() && k <= i + kLongest; ++k) {
+        const auto c = ascii_form(text[k].value);
+        if (c == '}') return lists;
+        const bool alphanumeric = (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+        if (c == ',' || c == '|') {
+            lists = true;
+        } else if (!alphanumeric && c != ' ' &&
+                   std::u32string_view(U".+-<>=").find(c) == std::u32string_view::npos) {
+            return false;
+        }
+    }
+    return false;
 }
 
 }  // namespace talkface::detail

@@ -67,6 +67,12 @@ bool marks_ticker(const std::vector<CodePoint>& text, std::size_t i);
 // warning). A resolution is digits and a K or a P; the rate's digits follow the @.
 bool marks_screen_mode(const std::vector<CodePoint>& text, std::size_t i);
 
+// The brace at text[i] opens a set a lesson writes (A={1,2,3}, 集合{x|x>0}), no reading fix: a closing brace
+// on its line within 40 characters, and between them only Latin letters, digits, spaces and a formula's
+// signs, with a comma or a bar among them, which no fix holds. The braces are not said; the members are read
+// (一，二，三); session 33: an error, a fix that follows nothing it reads.
+bool opens_set(const std::vector<CodePoint>& text, std::size_t i);
+
 }  // namespace talkface::detail
 
 #endif

@@ -213,7 +213,7 @@ std::size_t TranscriptReader::read_item(const std::vector<CodePoint>& text, std:
         close_sentence();
         starts_paragraph_ = !timeline_.sentences.empty();
     }
-    if (c.value == '{') return read_fix(text, i);
+    if (c.value == '{' && !opens_set(text, i)) return read_fix(text, i);
     // An emoji or a face drawn in signs stays in its sentence's text, unsaid and unwarned, as
     // punctuation does; one after an end mark closes that sentence as a closing quote does.
     if (const auto drawing_end = drawing_ends_[i]; drawing_end != i) {

@@ -2413,10 +2413,14 @@ TEST_SUITE("written forms") {
             {"|x|=3", "ai ke si的绝对值等于三"},
             {"a:b=3:2", "ei比 bi等于三比二"},
             {"v=s/t", "wei等于 ai si比 ti"},
-            // The limits: a slash without a relation, and a slash in a word.
+            {"A={1,2,3}", "ei等于一二三"},
+            {"集合{x|x>0}", "集合 ai ke si ai ke si大于零"},
+            // The limits: a slash without a relation, a slash in a word, and a reading fix's braces.
             {"阅读/写作", "阅读写作"},
             {"v=72km/h", "wei等于七十二公里每小时"},
+            {"行{hang2}", "行"},
         });
+        CHECK(pinyin_of("行{hang2}") == "hang2");
     }
 
     TEST_CASE("a judgement question's tick and cross in brackets are said 对 and 错") {
