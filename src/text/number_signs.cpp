@@ -165,9 +165,10 @@ std::optional<LeadingSign> read_leading_sign(const std::vector<CodePoint>& text,
     // After a term (a digit, a letter, a square: x²+2x, a product's arrow: CaCO₃↓+2NaCl) a + or a - joins it
     // to the next, a sign no more.
     const bool after_stat = follows_stat_letters(text, start);
-    const bool after_word = start > 0 && !after_stat &&
-                            (is_digit_at(text, start - 1) || is_ascii_letter(value_at(text, start - 1)) ||
-                             is_one_of(text[start - 1].value, U"\u00B2\u00B3") || marks_reaction_arrow(text, start - 1));
+    const bool after_word =
+        start > 0 && !after_stat &&
+        (is_digit_at(text, start - 1) || is_ascii_letter(value_at(text, start - 1)) ||
+         is_one_of(text[start - 1].value, U"\u00B2\u00B3") || marks_reaction_arrow(text, start - 1));
     // A subtitle's dash before a speaker's turn (-12号，周五。) is no sign either (session 25: 负十二), nor
     // is the second half of the Chinese dash, two em dashes (——3年后, a script's time skip; session 31: 负).
     const bool ends_chinese_dash = first == 0x2014 && start > 0 && text[start - 1].value == 0x2014;
