@@ -125,6 +125,83 @@ bool is_silk_voice_message(const std::array<char, 12>& header) {
     return start.substr(0, 9) == "#!SILK_V3" || start.substr(0, 10) == "\x02#!SILK_V3";
 }
 
+// Whether `bytes` are text: UTF-8 (a sequence cut off at their end allowed) with no control
+// character but tab, line feed, carriage return and form feed.
+bool is_text(std::string_view bytes) {
+    for (std::size_t i = 0; i < bytes.size();) {
+        const auto byte = static_cast<unsigned char>(bytes[i]);
+        if (byte < 0x80) {
+            if ((byte < 0x20 && byte != '\t' && byte != '\n' && byte != '\r' && byte != '\f') || byte == 0x7F)
+                return false;
+            ++i;
+            continue;
+        }
+        const std::size_t length = byte >= 0xF0 && byte < 0xF5   ? 4
+                                   : byte >= 0xE0                ? 3
+                                   : byte >= 0xC2 && byte < 0xE0 ? 2
+                                                                 : 0;
+        if (length == 0 || byte >= 0xF5) return false;
+        for (std::size_t k = 1; k < length && i + k < bytes.size(); ++k)
+            if ((static_cast<unsigned char>(bytes[i + k]) & 0xC0) != 0x80) return false;
+        i += length;
+    }
+    return true;
+}
+
+// What a text file given as the recording is: a web page (a download that failed, a link expired or
+// a login asked, saves the server's HTML page under the recording's name) with its title, or other
+// text (a transcript given as the recording) with its first line. FFmpeg called both "Invalid data"
+// or "Invalid argument".
+struct TextInstead {
+    bool is_web_page = false;
+    std::string words;  // the page's title, or the first line; empty if none
+};
+
+std::optional<TextInstead> text_instead_of_audio(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string start(4096, '\0');
+    in.read(start.data(), static_cast<std::streamsize>(start.size()));
+    start.resize(static_cast<std::size_t>(in.gcount()));
+    if (!is_text(start)) return std::nullopt;
+    std::string lower = start;
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::size_t at = starts_with(lower, "\xef\xbb\xbf") ? 3 : 0;  // UTF-8's byte order mark
+    while (at < lower.size() && std::isspace(static_cast<unsigned char>(lower[at]))) ++at;
+    TextInstead text;
+    text.is_web_page = lower.compare(at, 14, "<!doctype html") == 0 || lower.compare(at, 5, "<html") == 0;
+    std::size_t from = at, to = start.find_first_of("\r\n", at);
+    if (text.is_web_page) {
+        const std::size_t open = lower.find("<title>"), close = lower.find("</title>");
+        if (open == std::string::npos || close == std::string::npos || close < open) return text;
+        from = open + 7;
+        to = close;
+    }
+    constexpr std::size_t kLongestWords = 80;
+    for (std::size_t i = from; i < std::min(to, start.size()) && text.words.size() < kLongestWords; ++i) {
+        // Runs of white space (a page's line breaks and indents) as one space.
+        const bool is_space = std::isspace(static_cast<unsigned char>(start[i])) != 0;
+        if (is_space && (text.words.empty() || text.words.back() == ' ')) continue;
+        text.words += is_space ? ' ' : start[i];
+    }
+    while (!text.words.empty() && text.words.back() == ' ') text.words.pop_back();
+    return text;
+}
+
+// The refusal of a text file given as the recording.
+ParseError text_refused(const std::string& path, const TextInstead& text) {
+    const std::string said = text.words.empty() ? std::string() : ", \"" + text.words + "\"";
+    if (text.is_web_page)
+        return ParseError(path, 0, 0, "",
+                          "a web page (HTML" + (said.empty() ? said : ", titled" + said.substr(1)) +
+                              "), not audio: a download that failed saves the server's page under the "
+                              "recording's name; download the recording again");
+    return ParseError(path, 0, 0, "",
+                      "a text file (its first line" +
+                          (said.empty() ? std::string(" is empty") : said.substr(1)) +
+                          "), not audio: is it the transcript, given as the recording?");
+}
+
 // Whether `bytes` hold a whole Ogg page (its CRC checked) anywhere.
 bool holds_ogg_page(const char* bytes, std::size_t count) {
     ogg_sync_state sync;
@@ -209,6 +286,50 @@ std::uint64_t read_le32(const unsigned char* bytes) {
            static_cast<std::uint64_t>(bytes[2]) << 16 | static_cast<std::uint64_t>(bytes[3]) << 24;
 }
 
+// An Ogg file's pages from its start, through libogg, read as libsndfile reads them: 4096 bytes at
+// a time (vorbis_headers_refused takes its steps).
+class OggPageReader {
+public:
+    explicit OggPageReader(const std::string& path) : file_(std::fopen(path.c_str(), "rb")) {
+        ogg_sync_init(&sync_);
+    }
+    ~OggPageReader() {
+        ogg_sync_clear(&sync_);
+        if (file_ != nullptr) std::fclose(file_);
+    }
+    OggPageReader(const OggPageReader&) = delete;
+    OggPageReader& operator=(const OggPageReader&) = delete;
+
+    // 1 and the next page in `page`; -1 where bytes that are no page (or a page failing its check)
+    // were skipped; 0 at the end of the file (or of what could be read).
+    int next_page(ogg_page& page) {
+        int found = 0;
+        while ((found = ogg_sync_pageout(&sync_, &page)) == 0 && read_more()) {
+        }
+        return found;
+    }
+    // The first whole page, past any bytes that are no page; false if the file holds none.
+    bool first_page(ogg_page& page) {
+        int found = 0;
+        while ((found = next_page(page)) < 0) {
+        }
+        return found == 1;
+    }
+
+private:
+    bool read_more() {
+        constexpr long kChunkBytes = 4096;  // libsndfile's
+        char* buffer = ogg_sync_buffer(&sync_, kChunkBytes);
+        const std::size_t got =
+            file_ != nullptr && buffer != nullptr ? std::fread(buffer, 1, kChunkBytes, file_) : 0;
+        ogg_sync_wrote(&sync_, static_cast<long>(got));
+        return got > 0;
+    }
+
+    std::FILE* file_;
+    ogg_sync_state sync_;
+};
+
 // Whether libsndfile (1.2.0) would refuse to open the Ogg file at `path` in a way that leaks: its
 // first stream is Vorbis (its first page's first packet starts "\x01vorbis"), and that packet is
 // not a beginning of stream, or states a Vorbis version other than 0, or the stream's two further
@@ -219,81 +340,48 @@ std::uint64_t read_le32(const unsigned char* bytes) {
 // a file it would open is never turned away here; a file refused here is refused by libsndfile
 // too, and goes where libsndfile's refusal sends it (open_ogg_refused_by_sndfile).
 bool vorbis_headers_refused(const std::string& path) {
-    std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (file == nullptr) return false;
-    ogg_sync_state sync;
-    ogg_sync_init(&sync);
-    ogg_stream_state stream;
-    bool has_stream = false;
-    const auto read_more = [&] {
-        constexpr long kChunkBytes = 4096;  // libsndfile's
-        char* buffer = ogg_sync_buffer(&sync, kChunkBytes);
-        const std::size_t got = buffer ? std::fread(buffer, 1, kChunkBytes, file) : 0;
-        ogg_sync_wrote(&sync, static_cast<long>(got));
-        return got > 0;
-    };
+    OggPageReader pages(path);
     ogg_page page;
+    constexpr std::string_view kVorbisId = "\x01vorbis";
+    if (!pages.first_page(page) || static_cast<std::size_t>(page.body_len) < kVorbisId.size() ||
+        std::memcmp(page.body, kVorbisId.data(), kVorbisId.size()) != 0)
+        return false;
+    ogg_stream_state stream;
+    ogg_stream_init(&stream, ogg_page_serialno(&page));
     ogg_packet packet;
     bool refused = false;
-    int found = 0;
-    while ((found = ogg_sync_pageout(&sync, &page)) != 1 && read_more()) {
-    }
-    if (found == 1) {
-        ogg_stream_init(&stream, ogg_page_serialno(&page));
-        has_stream = true;
-        constexpr std::string_view kVorbisId = "\x01vorbis";
-        const bool is_vorbis = static_cast<std::size_t>(page.body_len) >= kVorbisId.size() &&
-                               std::memcmp(page.body, kVorbisId.data(), kVorbisId.size()) == 0;
-        if (is_vorbis && ogg_stream_pagein(&stream, &page) == 0 &&
-            ogg_stream_packetout(&stream, &packet) == 1) {
-            constexpr std::size_t kVersionEnd = 7 + 4;
-            const bool has_version_0 = packet.bytes >= static_cast<long>(kVersionEnd) &&
-                                       read_le32(packet.packet + kVorbisId.size()) == 0;
-            refused = packet.b_o_s == 0 || !has_version_0;
-            for (int packets = 0; !refused && packets < 2;) {
-                const int paged = ogg_sync_pageout(&sync, &page);
-                if (paged == 0) {
-                    refused = !read_more();
-                    continue;
-                }
-                if (paged < 0) continue;
-                ogg_stream_pagein(&stream, &page);
-                for (int out = 0;
-                     !refused && packets < 2 && (out = ogg_stream_packetout(&stream, &packet)) != 0;) {
-                    refused = out < 0;
-                    ++packets;
-                }
+    if (ogg_stream_pagein(&stream, &page) == 0 && ogg_stream_packetout(&stream, &packet) == 1) {
+        constexpr std::size_t kVersionEnd = 7 + 4;
+        const bool has_version_0 = packet.bytes >= static_cast<long>(kVersionEnd) &&
+                                   read_le32(packet.packet + kVorbisId.size()) == 0;
+        refused = packet.b_o_s == 0 || !has_version_0;
+        for (int packets = 0; !refused && packets < 2;) {
+            const int paged = pages.next_page(page);
+            refused = paged == 0;
+            if (paged < 1) continue;
+            ogg_stream_pagein(&stream, &page);
+            for (int out = 0;
+                 !refused && packets < 2 && (out = ogg_stream_packetout(&stream, &packet)) != 0;) {
+                refused = out < 0;
+                ++packets;
             }
         }
     }
-    if (has_stream) ogg_stream_clear(&stream);
-    ogg_sync_clear(&sync);
-    std::fclose(file);
+    ogg_stream_clear(&stream);
     return refused;
 }
 
 // The channel count the Opus header of the Ogg file at `path` states (OpusHead, the first packet
 // of its first page, its tenth byte: RFC 7845, 5.1); none where the first page holds no Opus header.
 std::optional<int> opus_head_channels(const std::string& path) {
-    std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (file == nullptr) return std::nullopt;
-    // The largest Ogg page: its 27-byte header, 255 lacing values and 255 segments of 255 bytes.
-    constexpr long kLargestPageBytes = 27 + 255 + 255 * 255;
-    ogg_sync_state sync;
-    ogg_sync_init(&sync);
-    char* buffer = ogg_sync_buffer(&sync, kLargestPageBytes);
-    const std::size_t got = buffer ? std::fread(buffer, 1, kLargestPageBytes, file) : 0;
-    std::fclose(file);
-    ogg_sync_wrote(&sync, static_cast<long>(got));
+    OggPageReader pages(path);
     ogg_page page;
-    std::optional<int> channels;
     constexpr std::string_view kOpusHead = "OpusHead";
     constexpr long kChannelsByte = 9;
-    if (ogg_sync_pageout(&sync, &page) == 1 && page.body_len > kChannelsByte &&
-        std::memcmp(page.body, kOpusHead.data(), kOpusHead.size()) == 0)
-        channels = page.body[kChannelsByte];
-    ogg_sync_clear(&sync);
-    return channels;
+    if (!pages.first_page(page) || page.body_len <= kChannelsByte ||
+        std::memcmp(page.body, kOpusHead.data(), kOpusHead.size()) != 0)
+        return std::nullopt;
+    return page.body[kChannelsByte];
 }
 
 // A RIFF WAV's data chunk that goes on past the size its header states: the bytes stated and the
@@ -706,7 +794,15 @@ std::array<char, 12> read_container_header(const std::string& path) {
     std::array<char, 12> header{};
     std::ifstream probe(path, std::ios::binary | std::ios::ate);
     if (!probe) throw FileError(path, std::strerror(errno));
-    if (probe.tellg() == 0) throw InvalidArgument(path, "empty file: no audio frames");
+    const std::streamoff bytes = probe.tellg();
+    if (bytes == 0) throw InvalidArgument(path, "empty file: no audio frames");
+    // Every container's header is longer (a WAV's 44 bytes, an MP4's first box, Matroska's EBML
+    // header): FFmpeg guessed at so few bytes, and called them an MP4 without its index.
+    if (bytes < static_cast<std::streamoff>(header.size()))
+        throw FileError(path, "truncated: the file holds only " + std::to_string(bytes) +
+                                  (bytes == 1 ? " byte" : " bytes") +
+                                  ", fewer than any recording's header; it was cut while it was copied "
+                                  "or downloaded, or is not a recording");
     probe.seekg(0);
     errno = 0;
     probe.read(header.data(), static_cast<std::streamsize>(header.size()));
@@ -747,11 +843,12 @@ std::unique_ptr<AudioSource> open_refused_by_sndfile(const std::string& path,
     return open_ffmpeg_file(path);
 }
 
-// A file libsndfile opened (`file`, described by `info`), read by libsndfile, or closed and given to
-// FFmpeg where libsndfile misreads it: MPEG audio inside a WAV, an Ogg stream with a damaged page, a
-// container that states no length, a data chunk stated as 0 bytes. Throws ParseError for a sample rate
-// or channel count talkface does not read, FileError for a file cut short.
-std::unique_ptr<AudioSource> open_opened_by_sndfile(const std::string& path, SNDFILE* file,
+// A file libsndfile opened (`file`, described by `info`; `header` its first bytes), read by libsndfile, or
+// closed and given to FFmpeg where libsndfile misreads it: MPEG audio inside a WAV, an Ogg stream with a
+// damaged page, a container that states no length, a data chunk stated as 0 bytes. Throws ParseError for a
+// sample rate or channel count talkface does not read, FileError for a file cut short.
+std::unique_ptr<AudioSource> open_opened_by_sndfile(const std::string& path,
+                                                    const std::array<char, 12>& header, SNDFILE* file,
                                                     const SF_INFO& info) {
     if (!is_readable_format(info.samplerate, info.channels)) {
         sf_close(file);
@@ -798,12 +895,13 @@ std::unique_ptr<AudioSource> open_opened_by_sndfile(const std::string& path, SND
                                   "was cut while it was copied or recorded");
         return open_ffmpeg_file(path);
     }
-    if ((info.format & SF_FORMAT_SUBMASK) == SF_FORMAT_OPUS) {
+    if ((info.format & SF_FORMAT_SUBMASK) == SF_FORMAT_OPUS && ffmpeg_is_loadable()) {
         // Opus in Ogg (a phone's voice message, a browser recorder's): libsndfile's decoding, through
         // libopus at the rate the header names, took 25 s of CPU for 2 h of silence (8 times
         // FFmpeg's own decoder) and 1.1 s for 5 min of speech (3 times), and a long recording's
         // first reading decodes all of it; FFmpeg reads it as it reads Opus in Matroska or WebM,
-        // once libsndfile has found it whole (a damaged page, a cut file, above).
+        // once libsndfile has found it whole (a damaged page, a cut file, above). Without FFmpeg's
+        // module libsndfile reads it, slower, rather than refuse a file it reads.
         sf_close(file);
         return open_ffmpeg_file(path);
     }
@@ -813,8 +911,10 @@ std::unique_ptr<AudioSource> open_opened_by_sndfile(const std::string& path, SND
     if (promised == 0) {
         // libsndfile reads nothing from a data chunk stated as 0 bytes, as a recorder stopped before
         // it closed the file leaves it; FFmpeg reads what follows to the end of the file, and
-        // refuses a file with no sound after its header.
+        // refuses a file with no sound after its header. libsndfile opens a WAV cut inside its data
+        // chunk's header too (FFmpeg called it "Invalid data"): check_wav_header says it was cut.
         sf_close(file);
+        if (std::string_view(header.data(), 4) == "RIFF") check_wav_header(path);
         return open_ffmpeg_file(path);
     }
     return std::make_unique<FileSource>(path, file, info, promised);
@@ -842,6 +942,7 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
         throw ParseError(path, 0, 0, "",
                          "the file is damaged: its FLAC header (STREAMINFO) states " +
                              std::to_string(*length) + " bytes, where FLAC's is 34");
+    if (const auto text = text_instead_of_audio(path)) throw text_refused(path, *text);
     if (!is_sndfile_container(header)) return open_ffmpeg_file(path);
     if (std::string_view(header.data(), 4) == "RIFF") {
         if (const auto chunks = wav_data_chunks(path); chunks.size() > 1) {
@@ -868,7 +969,7 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
     SF_INFO info{};
     SNDFILE* file = sf_open(path.c_str(), SFM_READ, &info);
     if (file == nullptr) return open_refused_by_sndfile(path, header);
-    return open_opened_by_sndfile(path, file, info);
+    return open_opened_by_sndfile(path, header, file, info);
 }
 
 std::string wav_codec_browsers_do_not_play(const std::string& path) {

@@ -88,4 +88,13 @@ std::unique_ptr<AudioSource> open_ffmpeg_file(const std::string& path, const Ffm
     return ffmpeg_module_calls().open_ffmpeg_file(path, reading);
 }
 
+bool ffmpeg_is_loadable() {
+    try {
+        ffmpeg_module_calls();
+        return true;
+    } catch (const FileError&) {
+        return false;
+    }
+}
+
 }  // namespace talkface::detail

@@ -52,6 +52,49 @@ constexpr std::size_t kAacFrameOverlapFrames = 1024;
 constexpr std::size_t kMp2FilterBankDelayFrames = 481;
 constexpr std::size_t kAc3BlockOverlapFrames = 256;
 
+// Whether the file at `path` opens with Matroska's EBML header (WebM's too: its ID 1A 45 DF A3, then
+// its size as an EBML variable-length number, RFC 8794 4) and ends inside it: a download cut to its
+// first bytes, which FFmpeg called "Invalid data", as if it were no audio.
+bool ends_inside_ebml_header(const std::string& path) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (file == nullptr) return false;
+    unsigned char head[12] = {};
+    const std::size_t got = std::fread(head, 1, sizeof head, file);
+    std::fclose(file);
+    constexpr unsigned char kEbmlId[4] = {0x1A, 0x45, 0xDF, 0xA3};
+    if (got < 5 || std::memcmp(head, kEbmlId, sizeof kEbmlId) != 0 || head[4] == 0) return false;
+    // The size's length: 1 + the leading zero bits of its first byte; its value: the bits after the marker.
+    std::size_t length = 1;
+    while ((head[4] & (0x80U >> (length - 1))) == 0) ++length;
+    if (got < 4 + length) return true;
+    std::uint64_t size = head[4] & (0xFFU >> length);
+    for (std::size_t i = 1; i < length; ++i) size = size << 8U | head[4 + i];
+    std::error_code error;
+    const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+    return !error && 4 + length + size > bytes;
+}
+
+// Whether the file at `path` opens as an MP3 does (an ID3v2 tag or none, then an MPEG Layer III
+// frame's header) and ends within its first few frames: FFmpeg's MP3 reader wants more of them to
+// tell MP3 from other bytes, and said "Invalid argument", as of a text file.
+bool ends_within_first_mp3_frames(const std::string& path) {
+    std::error_code error;
+    const std::uintmax_t file_bytes = std::filesystem::file_size(path, error);
+    std::FILE* file = error ? nullptr : std::fopen(path.c_str(), "rb");
+    if (file == nullptr) return false;
+    std::string head(10, '\0');
+    head.resize(std::fread(head.data(), 1, head.size(), file));
+    const std::size_t frame_start = after_id3(head);
+    std::string frame_head(4, '\0');
+    const bool seeked =
+        frame_start < file_bytes && std::fseek(file, static_cast<long>(frame_start), SEEK_SET) == 0;
+    frame_head.resize(seeked ? std::fread(frame_head.data(), 1, frame_head.size(), file) : 0);
+    std::fclose(file);
+    constexpr std::size_t kFewFrames = 4;
+    const auto frame = frame_head.size() == 4 ? read_mp3_frame_header(frame_head) : std::nullopt;
+    return frame && frame->bytes > 0 && file_bytes - frame_start < kFewFrames * frame->bytes;
+}
+
 // Demuxers for recordings people have: MP3, raw AAC, MP4/M4A/MOV (one demuxer), Matroska/WebM,
 // Ogg (Opus), FLAC, WAV, MPEG transport and program streams (a camcorder's AVCHD .mts and .m2ts, a
 // TV recording's .ts, a DVD's .vob and an old camera's .mpg, with MP2 or AC-3 sound), raw AC-3 and
@@ -501,6 +544,11 @@ public:
         if (!decode_next_frame()) {
             if (const std::string damage = broken_index(); !damage.empty())
                 throw ParseError(path_, 0, 0, "", damage + ", and its sound track decodes to no samples from what is left of it");
+            // A header that states a length, and packets up to the file's end (or placed past it by
+            // an index) that decode to nothing: the file was cut inside its first packets, as a
+            // download that stopped after the header leaves it (FFmpeg called the last one "Invalid
+            // data", or nothing was left to decode).
+            if (stated_seconds_ > 0.0 && packets_reach_file_end()) throw cut_short();
             if (last_refusal_ != 0) throw decode_error(last_refusal_);
             throw InvalidArgument(path_, "empty audio: the sound track decodes to no samples");
         }
@@ -801,7 +849,11 @@ private:
                                 "truncated: an MP4/M4A/MOV file without its index (the moov box), which "
                                 "recorders and encoders write last; the file was cut while it was copied "
                                 "or recorded, or is still being written");
-            if (opened == AVERROR(EIO) || opened == AVERROR_EOF) throw_header_ends();
+            // A damaged Ogg page's file fails here too ("Invalid data" where the page held a header):
+            // throw_header_ends names the page.
+            if (opened == AVERROR(EIO) || opened == AVERROR_EOF || reading_.damaged_ogg_page_byte >= 0 ||
+                ends_inside_ebml_header(path_) || ends_within_first_mp3_frames(path_))
+                throw_header_ends();
             throw unreadable_index_or_not_audio(ffmpeg_error_text(opened));
         }
         std::unique_ptr<AVFormatContext, FormatCloser> format(raw);
@@ -1025,8 +1077,19 @@ private:
         if (const std::string damage = broken_index(); !damage.empty())
             throw ParseError(path_, 0, 0, "", damage + ", and the sound it indexes ends at " + seconds_text(decoded_s) +
                                                    " of the " + seconds_text(stated_seconds_) + " it states");
-        throw FileError(path_, "truncated: its header says the sound lasts " + seconds_text(stated_seconds_) +
-                                   " but the data ends at " + seconds_text(decoded_s));
+        throw cut_short();
+    }
+
+    FileError cut_short() const {
+        return FileError(path_, "truncated: its header says the sound lasts " +
+                                    seconds_text(stated_seconds_) + " but the data ends at " +
+                                    seconds_text(seconds_read()));
+    }
+
+    // Whether the packets read reach the end of the file, or none was read.
+    bool packets_reach_file_end() const {
+        const std::int64_t file_bytes = avio_size(format_->pb);
+        return packets_end_byte_ < 0 || (file_bytes > 0 && packets_end_byte_ >= file_bytes);
     }
 
     // At the end of the data, once: what the user should know of a file read whole that its header
@@ -1533,6 +1596,10 @@ private:
 
 std::unique_ptr<AudioSource> open_ffmpeg_file(const std::string& path, const FfmpegReading& reading) {
     return std::make_unique<FfmpegSource>(path, reading);
+}
+
+bool ffmpeg_is_loadable() {
+    return true;
 }
 
 }  // namespace talkface::detail

@@ -43,6 +43,11 @@ struct FfmpegReading {
 //         opened; talkface::InvalidArgument if it decodes to no samples.
 std::unique_ptr<AudioSource> open_ffmpeg_file(const std::string& path, const FfmpegReading& reading = {});
 
+// Whether open_ffmpeg_file can be called: inside the FFmpeg module (and a program linking FFmpeg's
+// files, as the fuzz targets do) always; in libtalkface, whether the module loads (ffmpeg_module.cpp).
+// A file libsndfile reads too (Ogg Opus) is libsndfile's where the module is missing.
+bool ffmpeg_is_loadable();
+
 }  // namespace talkface::detail
 
 #endif

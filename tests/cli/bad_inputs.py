@@ -183,7 +183,55 @@ def audio_files():
         # Session 30: samples that are not numbers, in another float container, and nothing else.
         "float32_nan_inf.caf": caf_bytes(bytes(non_finite), bits=32, is_float=True),
         "float32_all_nan.wav": wav_bytes(struct.pack("<f", math.nan) * len(voice), tag=IEEE_FLOAT, bits=32),
+        # Session 33: bench/broken_files_sweep.py's finds.
+        "four_bytes.wav": good[:4],
+        "cut_in_data_header.wav": good[: header_end - 1],
+        "header_only.flac": flac[: flac_frames_start(flac)],
+        "cut_in_first_frame.flac": flac[: flac_frames_start(flac) + 100],
+        "index_only.m4a": without_mdat(m4a),
+        "cut_in_first_frames.mp3": tagged_mp3[: after_id3(tagged_mp3) + 150],
+        "cut_in_header.mkv": read(os.path.join(AUDIO, "clip.mkv"))[:12],
+        "damaged_header_page.ogg": with_second_page_damaged(read(os.path.join(SPEECH, "stereo_44k.ogg"))),
+        "error_page.m4a": b"<!DOCTYPE html>\n<html><head><title>404 Not Found</title></head>\n"
+        b"<body><h1>Not Found</h1><p>The requested URL was not found on this server.</p></body></html>\n",
     }
+
+
+def flac_frames_start(flac):
+    """Where a FLAC's first frame starts: after "fLaC" and its metadata blocks (the last flagged)."""
+    at = 4
+    while True:
+        is_last, length = flac[at] & 0x80, int.from_bytes(flac[at + 1 : at + 4], "big")
+        at += 4 + length
+        if is_last:
+            return at
+
+
+def without_mdat(mp4):
+    """An MP4's top-level boxes but its sound's (mdat): an index with no sound."""
+    boxes, at = [], 0
+    while at + 8 <= len(mp4):
+        size = int.from_bytes(mp4[at : at + 4], "big")
+        if mp4[at + 4 : at + 8] != b"mdat":
+            boxes.append(mp4[at : at + size])
+        at += size
+    return b"".join(boxes)
+
+
+def after_id3(mp3):
+    """Where an MP3's first frame starts: after its ID3v2 tag (a size of 4 bytes of 7 bits)."""
+    if mp3[:3] != b"ID3":
+        return 0
+    return 10 + sum((mp3[6 + i] & 0x7F) << (7 * (3 - i)) for i in range(4))
+
+
+def with_second_page_damaged(ogg):
+    """`ogg` with a byte of its second page (a Vorbis stream's comment and setup headers) changed: its
+    check fails there."""
+    data = bytearray(ogg)
+    second = data.index(b"OggS", 4)
+    data[second + 27 + data[second + 26] + 10] ^= 0xFF
+    return bytes(data)
 
 
 def two_data_chunks(wav):

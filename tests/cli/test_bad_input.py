@@ -24,8 +24,8 @@ OK = None
 AUDIO = {
     "zero_bytes.wav": "empty file",
     "zero_bytes.mp3": "empty file",
-    "text.wav": "not audio",
-    "text.mp3": "not audio",
+    "text.wav": 'a text file (its first line "小朋友們在公園裡放風箏。"), not audio',
+    "text.mp3": 'a text file (its first line "this is a text file, not an mp3"), not audio',
     "cut_in_header.wav": "truncated: the file ends after 30 bytes, inside its header",
     "cut_in_data.wav": "truncated",
     "data_past_end.wav": "truncated",
@@ -83,6 +83,17 @@ AUDIO = {
     # Session 30's kinds.
     "float32_nan_inf.caf": OK,
     "float32_all_nan.wav": "samples is a number (each is NaN or infinite)",
+    # Session 33's kinds (bench/broken_files_sweep.py): each called "not audio", an MP4 without its
+    # index, or FFmpeg's "Invalid data" on main.
+    "four_bytes.wav": "truncated: the file holds only 4 bytes, fewer than any recording's header",
+    "cut_in_data_header.wav": "truncated: the file ends after 43 bytes, inside its header",
+    "header_only.flac": "truncated: its header says the sound lasts 3.",
+    "cut_in_first_frame.flac": "truncated: its header says the sound lasts 3.",
+    "index_only.m4a": "truncated: its header says the sound lasts 3.",
+    "cut_in_first_frames.mp3": "bytes, inside its header, before any sound",
+    "cut_in_header.mkv": "truncated: the file ends after 12 bytes, inside its header",
+    "damaged_header_page.ogg": "the file is damaged: its Ogg pages break at byte",
+    "error_page.m4a": 'a web page (HTML, titled "404 Not Found"), not audio',
 }
 # Audio aligned with a warning that names the file: a part of the warning after the path.
 WARNED = {

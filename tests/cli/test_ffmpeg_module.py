@@ -1,5 +1,6 @@
 """FFmpeg's libraries are libtalkface's module (LIBDIR/talkface/talkface_ffmpeg.so), opened on first use:
 a command that reads no MP3, M4A or video and writes no video or page loads none of them."""
+import json
 import os
 import pathlib
 import re
@@ -65,3 +66,17 @@ def test_without_its_module_the_library_names_it(tmp_path):
     assert result.returncode == 1
     assert result.stderr.startswith(f"talkface: error: {module}: FFmpeg's module could not be loaded ({module}: "), \
         result.stderr
+
+
+def test_without_its_module_ogg_opus_is_read_by_libsndfile(tmp_path):
+    # Ogg Opus is FFmpeg's where the module loads (it decodes faster), but libsndfile reads it too:
+    # without the module it is aligned, not refused for a module it does not need.
+    lib = tmp_path / "lib"
+    lib.mkdir()
+    shutil.copy(libtalkface(), lib / libtalkface().name)
+    env = {**os.environ, "LD_LIBRARY_PATH": str(lib)}
+    opus = SOURCE_DIR / "tests" / "data" / "audio" / "voice.opus"
+    result = subprocess.run([CLI, "align", "-q", "--json", opus, TRANSCRIPT], env=env, capture_output=True, text=True,
+                            timeout=120)
+    assert result.returncode == 0, result.stderr
+    assert len(json.loads(result.stdout)["syllables"]) == 11
