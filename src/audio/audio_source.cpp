@@ -770,13 +770,17 @@ std::size_t AudioSource::read(float* mono, std::size_t max_frames) {
     return frames;
 }
 
-void AudioSource::take_first_reading(const AudioSource& earlier) {
-    non_finite_frames_ = earlier.non_finite_frames_;
-    first_non_finite_frame_ = earlier.first_non_finite_frame_;
-    // A stretch is noted as its silence is put before the frames read out: `earlier` may have
-    // noted one that reaches past where it stopped, which this reading notes again from there.
-    lost_audio_ = earlier.lost_audio_;
-    taken_until_frame_ = earlier.frames_read_;
+AudioSource::FirstReading AudioSource::first_reading() const {
+    return {frames_read_, non_finite_frames_, first_non_finite_frame_, lost_audio_};
+}
+
+void AudioSource::take_first_reading(FirstReading earlier) {
+    non_finite_frames_ = earlier.non_finite_frames;
+    first_non_finite_frame_ = earlier.first_non_finite_frame;
+    // A stretch is noted as its silence is put before the frames read out: the earlier reading may
+    // have noted one that reaches past where it stopped, which this reading notes again from there.
+    lost_audio_ = std::move(earlier.lost_audio);
+    taken_until_frame_ = earlier.frames_read;
 }
 
 bool AudioSource::skip_to(std::size_t frame) {

@@ -91,14 +91,24 @@ public:
     // them; what it passes is not read, so its samples that are not numbers and the stretches of it
     // lost to damage are known only where an earlier reading found them (take_first_reading).
     bool skip_to(std::size_t frame);
-    // Takes over what `earlier` (a reading of the same recording from its start, read() only)
-    // found, before this reading reads anything: its samples that are not numbers and the
-    // stretches it read as silence because the file is damaged there; from then on this reading
-    // counts and notes only those past where `earlier` stopped. read()'s note and lost_audio() then
-    // name them all, though this reading skip_to()s past the silence `earlier` read them in (a
-    // float file NaN there; a lost Matroska cluster or MP3 frames there, whose sound may have been
-    // speech the user should know is gone).
-    void take_first_reading(const AudioSource& earlier);
+    // What a reading found as far as it read: its samples that are not numbers and the stretches
+    // it read as silence because the file is damaged there. Copied out (first_reading), so that
+    // the reading can be let go before the next one is opened: two openings of an MP4 held its
+    // index twice.
+    struct FirstReading {
+        std::size_t frames_read = 0;
+        std::size_t non_finite_frames = 0;
+        std::size_t first_non_finite_frame = 0;
+        std::vector<LostAudio> lost_audio;
+    };
+    FirstReading first_reading() const;
+    // Takes over what an earlier reading of the same recording from its start (read() only) found,
+    // before this reading reads anything; from then on this reading counts and notes only what
+    // lies past where the earlier one stopped. read()'s note and lost_audio() then name them all,
+    // though this reading skip_to()s past the silence the earlier one read them in (a float file
+    // NaN there; a lost Matroska cluster or MP3 frames there, whose sound may have been speech the
+    // user should know is gone).
+    void take_first_reading(FirstReading earlier);
     virtual int sample_rate_hz() const = 0;
     // Frames the source says it has; progress is measured against it. For what FFmpeg reads it is
     // the container's estimate, and read() goes on to the real end.

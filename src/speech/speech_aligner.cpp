@@ -236,10 +236,12 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
     const double silence_skipped_s = static_cast<double>(silence_skipped) / kAnalysisRateHz;
     if (first.held.empty()) {
         // The reading that is kept seeks past the silence this one read: it notes the samples
-        // that are not numbers, and the stretches lost to damage, this one found there.
-        std::unique_ptr<AudioSource> again = open();
-        again->take_first_reading(*source);
-        source = std::move(again);
+        // that are not numbers, and the stretches lost to damage, this one found there. This one
+        // is let go first: an MP4's index is held once.
+        AudioSource::FirstReading found = source->first_reading();
+        source.reset();
+        source = open();
+        source->take_first_reading(std::move(found));
     }
     FeatureTrack track = read_features(*source, progress, options.lenient, silence_skipped, first.held);
     const LoudnessProfile loudness = conceal_dropouts(track);

@@ -42,9 +42,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const auto first = talkface::detail::read_first_sound(*again);
         const std::size_t skipped = talkface::detail::silence_to_skip(first, again->sample_rate_hz());
         if (first.held.empty()) {
-            auto reading = talkface::detail::open_audio_file(path);
-            reading->take_first_reading(*again);
-            again = std::move(reading);
+            auto found = again->first_reading();
+            again.reset();
+            again = talkface::detail::open_audio_file(path);
+            again->take_first_reading(std::move(found));
         }
         const talkface::detail::FeatureTrack track =
             talkface::detail::analyze_audio(*again, {}, false, skipped, first.held);
