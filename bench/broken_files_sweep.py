@@ -26,6 +26,9 @@ import struct
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "cli"))
+from bad_inputs import ogg_crc  # noqa: E402
+
 FF = ["ffmpeg", "-nostdin", "-loglevel", "error", "-y"]
 # After the inputs: output options (the muxers' serial numbers and UIDs fixed, the encoders' versions unsaid).
 BITEXACT = ["-fflags", "+bitexact", "-flags:a", "+bitexact", "-flags:v", "+bitexact"]
@@ -65,17 +68,6 @@ def encode_goods(source, folder):
 
 def u32le(data, at):
     return struct.unpack_from("<I", data, at)[0]
-
-
-def ogg_crc(page):
-    """The CRC of an Ogg page whose CRC field is zero (polynomial 0x04C11DB7, not reflected)."""
-    crc = 0
-    for byte in page:
-        crc ^= byte << 24
-        for _ in range(8):
-            crc = (crc << 1) ^ 0x04C11DB7 if crc & 0x80000000 else crc << 1
-        crc &= 0xFFFFFFFF
-    return crc
 
 
 def ogg_pages(data):
@@ -312,11 +304,11 @@ def main():
         return
     runners = [("cli", lambda path: run_cli(args.cli, path, args.transcript, args.timeout))]
     if args.c_library:
-        env = {**os.environ, "TALKFACE_C_LIBRARY": args.c_library}
-        runners.append(("c", lambda path: run_probe("c", env, path, args.transcript, args.timeout)))
+        c_env = {**os.environ, "TALKFACE_C_LIBRARY": args.c_library}
+        runners.append(("c", lambda path: run_probe("c", c_env, path, args.transcript, args.timeout)))
     if args.python_module_dir:
-        env = {**os.environ, "PYTHONPATH": args.python_module_dir}
-        runners.append(("python", lambda path: run_probe("python", env, path, args.transcript, args.timeout)))
+        python_env = {**os.environ, "PYTHONPATH": args.python_module_dir}
+        runners.append(("python", lambda path: run_probe("python", python_env, path, args.transcript, args.timeout)))
     tally = {}
     with open(os.path.join(args.out, "sweep.tsv"), "w", encoding="utf-8") as table:
         table.write("interface\tgood\tkind\tfile\texit\tverdict\tmessage\n")
