@@ -62,18 +62,24 @@ std::string placed(const std::string& animation_svg, const StageBox& place) {
 
 // A sentence longer than the caption's two lines is shown smaller until it fits (down to 55% of
 // the caption's size; a sentence longer still is cut at the band's edge rather than cover the face).
+// Fitted again whenever the band changes size (a window resized, a phone turned: a size fitted in
+// pixels for one band overflowed a smaller one and stayed small in a larger one), and once the
+// page is laid out: a page opened at a time ("#t=") shows its sentence before this script runs.
+// The band's size follows the stage alone, never the caption's text, so fitting cannot loop.
 constexpr const char* kCaptionScript = R"js((function () {
   "use strict";
   var caption = document.querySelector(".tf-caption");
   if (!caption) return;
-  document.addEventListener("tf-sentence", function () {
+  function fit() {
     caption.style.fontSize = "";
     var size = parseFloat(window.getComputedStyle(caption).fontSize);
     for (var k = 0; k < 9 && caption.scrollHeight > caption.clientHeight + 1; ++k) {
       size *= 0.93;
       caption.style.fontSize = size + "px";
     }
-  });
+  }
+  document.addEventListener("tf-sentence", fit);
+  new ResizeObserver(fit).observe(caption.parentElement);
 })();
 )js";
 

@@ -70,6 +70,33 @@ def announcer(tmp_path_factory):
 
 
 @pytest.fixture(scope="module")
+def long_caption(tmp_path_factory):
+    """An announcer page whose first sentence takes three lines at the caption's size on a desktop
+    (0.2 s a syllable from 0.5 s), over a silent recording embedded in the page (its metadata is
+    known before the page's script runs)."""
+    folder = tmp_path_factory.mktemp("caption")
+    text = ("今天的新聞有很多，我們先來看一條很長很長的消息：市政府宣布從下個月開始，全市的公共汽車和地鐵"
+            "都將延長運營時間，方便市民晚上出行，同時票價保持不變。")
+    timeline = talkface.read_transcript(text)
+    for index, syllable in enumerate(timeline.syllables):
+        syllable.start_s, syllable.end_s = 0.5 + 0.2 * index, 0.7 + 0.2 * index
+    timeline.sentences[0].start_s, timeline.sentences[0].end_s = 0.5, timeline.syllables[-1].end_s
+    timeline.duration_s = timeline.syllables[-1].end_s + 0.5
+    audio = folder / "news.wav"
+    with wave.open(str(audio), "wb") as out:
+        out.setnchannels(1)
+        out.setsampwidth(1)
+        out.setframerate(8000)
+        out.writeframes(b"\x80" * int(8000 * timeline.duration_s))
+    face = talkface.FaceModel.default()
+    animation = talkface.animate(face, timeline, talkface.ExpressionSimulator(timeline, 3))
+    options = talkface.WebPageOptions(app=talkface.WebPageApp.announcer, title="晚間新聞")
+    page = folder / "news.html"
+    talkface.write_web_page(page, talkface.SvgAnimator(face), animation, timeline, audio, options)
+    return page
+
+
+@pytest.fixture(scope="module")
 def long_book(tmp_path_factory):
     """120 sentences, 6 a paragraph; 0.2 s a syllable, 0.4 s between sentences."""
     folder = tmp_path_factory.mktemp("book")
@@ -131,6 +158,27 @@ def test_the_announcer_caption_shows_the_sentence_being_spoken(announcer, alignm
             assert browser.evaluate("document.querySelector('.tf-title').textContent") == "晚間新聞"
             assert rect(browser, ".tf-title")["bottom"] <= box["top"] + 1
         assert len(set(shown)) == len(shown)
+
+
+def test_a_long_caption_fits_its_band_opened_at_a_time_and_after_the_window_changes(long_caption):
+    # A link to a time shows the sentence before the caption's script runs; a phone turned or a
+    # window resized changes the band the caption was fitted to.
+    def caption(browser):
+        return browser.evaluate("(function () { var c = document.querySelector('.tf-caption');"
+                                " return [parseFloat(getComputedStyle(c).fontSize), c.scrollHeight, c.clientHeight,"
+                                " c.querySelector('.tf-current') !== null]; })()")
+    with Browser(1280, 800) as browser:
+        browser.open(f"file://{long_caption}#t=3&pause")
+        desktop = caption(browser)
+        assert desktop[3] and desktop[1] <= desktop[2] + 1, f"opened at 3 s: {desktop}"
+        for width, height in [(390, 844), (844, 390), (1280, 800)]:
+            browser.call("Emulation.setDeviceMetricsOverride", width=width, height=height, deviceScaleFactor=1,
+                         mobile=width < 1000)
+            browser.settle()
+            resized = caption(browser)
+            assert resized[1] <= resized[2] + 1, f"at {width}x{height}: {resized}"
+        assert resized[0] == pytest.approx(desktop[0], rel=0.01), "the caption's size came back with the window's"
+        assert browser.problems() == []
 
 
 def test_the_announcer_caption_never_covers_the_mouth(announcer, alignment):
