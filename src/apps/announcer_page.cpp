@@ -123,28 +123,33 @@ PageParts announcer_page(const std::string& animation_svg, const FaceModel& face
         "<div class=\"tf-caption\">\n" + sentences + "</div>\n</div>\n";
 
     PageParts parts;
-    parts.style =
-        std::string("body{margin:0;background:#0f172a;color:#e2e8f0;font-family:") + kSansFonts +
-        "}"
-        ".tf-announcer{max-width:" + std::to_string(options.stage_width_px) + "px;margin:0 auto;padding:16px}"
-        ".tf-stage{position:relative;overflow:hidden;aspect-ratio:" + std::to_string(options.stage_width_px) + "/" +
-        std::to_string(options.stage_height_px) +
-        "}"
-        ".tf-stage-art{display:block;width:100%;height:100%}"
-        // The band is a size container: its text is sized by the band's height (cqh), which the
-        // layout kept clear of the mouth, and never by the window.
-        ".tf-lower-third{position:absolute;container-type:size;display:flex;flex-direction:column;"
-        "justify-content:flex-end}"
-        ".tf-lower-third.tf-on-top{justify-content:flex-start}"
-        ".tf-title{align-self:flex-start;flex:none;background:#b91c1c;color:#fff;font-weight:700;"
-        "font-size:min(15cqh,2.6cqw);line-height:1.3;padding:.15em .6em}"
-        ".tf-caption{flex:0 1 auto;min-height:0;max-height:70cqh;overflow:hidden;background:#0f172ae0;color:#fff;"
-        "font-size:min(22cqh,3.4cqw);line-height:1.3;padding:.2em .6em}"
-        ".tf-caption .tf-sentence{display:none;margin:0}"
-        ".tf-caption .tf-sentence.tf-current{display:block}"
-        ".tf-caption:not(:has(.tf-current)){visibility:hidden}"
-        "audio{display:block;width:100%;margin-top:12px}"
-        ":focus-visible{outline-color:#93c5fd}";  // light on the dark page
+    parts.style = std::string("body{margin:0;background:#0f172a;color:#e2e8f0;font-family:") + kSansFonts +
+                  "}"
+                  // The stage and the player under it within the window's height (16 + 12 + 54 + 16 px around
+                  // the stage): on a phone turned on its side the player lay below the screen.
+                  ".tf-announcer{max-width:min(" +
+                  std::to_string(options.stage_width_px) + "px,max(320px,calc((100vh - 100px) * " +
+                  std::to_string(options.stage_width_px) + " / " + std::to_string(options.stage_height_px) +
+                  " + 32px)));margin:0 auto;padding:16px}"
+                  ".tf-stage{position:relative;overflow:hidden;aspect-ratio:" +
+                  std::to_string(options.stage_width_px) + "/" + std::to_string(options.stage_height_px) +
+                  "}"
+                  ".tf-stage-art{display:block;width:100%;height:100%}"
+                  // The band is a size container: its text is sized by the band's height (cqh), which the
+                  // layout kept clear of the mouth, and never by the window.
+                  ".tf-lower-third{position:absolute;container-type:size;display:flex;flex-direction:column;"
+                  "justify-content:flex-end}"
+                  ".tf-lower-third.tf-on-top{justify-content:flex-start}"
+                  ".tf-title{align-self:flex-start;flex:none;background:#b91c1c;color:#fff;font-weight:700;"
+                  "font-size:min(15cqh,2.6cqw);line-height:1.3;padding:.15em .6em}"
+                  ".tf-caption{flex:0 1 "
+                  "auto;min-height:0;max-height:70cqh;overflow:hidden;background:#0f172ae0;color:#fff;"
+                  "font-size:min(22cqh,3.4cqw);line-height:1.3;padding:.2em .6em}"
+                  ".tf-caption .tf-sentence{display:none;margin:0}"
+                  ".tf-caption .tf-sentence.tf-current{display:block}"
+                  ".tf-caption:not(:has(.tf-current)){visibility:hidden}"
+                  "audio{display:block;width:100%;margin-top:12px}"
+                  ":focus-visible{outline-color:#93c5fd}";  // light on the dark page
     parts.body = "<main class=\"tf-announcer\">\n<div class=\"tf-stage\">\n<svg class=\"tf-stage-art\" "
                  "xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " +
                  number(stage_width) + " " + number(stage_height) + "\" role=\"img\" aria-label=\"" +

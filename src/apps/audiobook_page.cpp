@@ -5,7 +5,8 @@
 //
 // Layout: one column on a phone, the face and the player first and held at the top of the screen
 // while the text scrolls under them (a reader deep in the book still sees the face talk); from
-// 820 px on, the text on the left and the face beside it, held in view the same way.
+// 820 px on, and on a phone turned on its side, the text on the left and the face beside it, held
+// in view the same way.
 #include <string>
 
 #include "apps/apps.hpp"
@@ -79,7 +80,8 @@ PageParts audiobook_page(const std::string& animation_svg, const Timeline& timel
         "}"
         ".tf-book{display:grid;grid-template-columns:minmax(0,1fr);gap:0 40px;max-width:1180px;margin:0 auto;"
         "padding:0 16px 40vh}"
-        ".tf-reader h1{font-family:" + kSansFonts +
+        ".tf-reader h1{font-family:" +
+        kSansFonts +
         ";font-size:1.5rem;margin:16px 0 12px;border-bottom:2px solid #d6c9a8;padding-bottom:8px}"
         ".tf-text{font-size:1.2rem;line-height:1.95}"
         ".tf-paragraph{margin:0 0 .9em;text-indent:2em}"
@@ -88,7 +90,8 @@ PageParts audiobook_page(const std::string& animation_svg, const Timeline& timel
         ".tf-sentence.tf-current{background:#ffd95e;box-shadow:0 0 0 2px #ffd95e}"
         // The page's focus ring (web_page.cpp) sits outside the highlight: both show on one sentence.
         ".tf-sentence:focus-visible{outline-offset:4px;border-radius:4px}"
-        ".tf-links h2{font-family:" + kSansFonts +
+        ".tf-links h2{font-family:" +
+        kSansFonts +
         ";font-size:1rem;margin:32px 0 8px;color:#6b5e3e}"
         ".tf-links ul{margin:0;padding-left:1.2em}.tf-links a{color:#1d4ed8}"
         // Phone first: the face and the player held at the top, at most 40% of the screen's height.
@@ -97,10 +100,13 @@ PageParts audiobook_page(const std::string& animation_svg, const Timeline& timel
         ".tf-teacher svg.tf-animation{display:block;height:calc(40vh - 70px);max-height:420px;width:auto;"
         "max-width:100%;margin:0 auto;border-radius:8px}"
         "audio{display:block;width:100%;height:44px;margin-top:6px}"
-        ".tf-keys{font-family:" + kSansFonts +
+        ".tf-keys{font-family:" +
+        kSansFonts +
         ";font-size:.8rem;color:#6b5e3e;margin:4px 0 0;text-align:center}"
         "kbd{border:1px solid #c9bb97;border-radius:3px;padding:0 4px;background:#fff}"
-        "@media (min-width:820px){"
+        // From 820 px, or on a phone turned on its side (where the phone's layout left the face 58 px
+        // high on 568x320), the text on the left and the face beside it.
+        "@media (min-width:820px),(orientation:landscape) and (min-width:560px){"
         ".tf-book{grid-template-columns:minmax(0,1fr) minmax(280px,360px);padding:24px 24px 30vh}"
         ".tf-reader{grid-column:1;grid-row:1}"
         ".tf-teacher{grid-column:2;grid-row:1;top:16px;align-self:start;margin:16px 0 0;border-radius:12px;"
@@ -108,6 +114,13 @@ PageParts audiobook_page(const std::string& animation_svg, const Timeline& timel
         ".tf-teacher svg.tf-animation{height:auto;width:100%;max-height:calc(100vh - 160px)}"
         ".tf-reader h1{font-size:2rem;margin:16px 0 24px}"
         ".tf-text{font-size:1.35rem;line-height:2.1;max-width:38em}"
+        "}"
+        "@media (orientation:landscape) and (min-width:560px) and (max-width:819px){"
+        ".tf-book{grid-template-columns:minmax(0,1fr) minmax(180px,38%);gap:0 20px;padding:8px 12px 30vh}"
+        ".tf-teacher{top:8px;margin-top:8px;padding:8px}"
+        ".tf-teacher svg.tf-animation{max-height:calc(100vh - 130px)}"
+        ".tf-reader h1{font-size:1.4rem;margin:8px 0 12px}"
+        ".tf-text{font-size:1.2rem;line-height:1.95}"
         "}";
     parts.body = "<main class=\"tf-book\">\n<aside class=\"tf-teacher\">\n" + animation_svg + audio_element +
                  "<p class=\"tf-keys\"><kbd>Space</kbd> play / pause &#183; <kbd>&#8592;</kbd> <kbd>&#8594;</kbd> "

@@ -243,7 +243,15 @@ std::string audio_element(const std::string& audio_path, const WebPageOptions& o
             source = detail::data_uri(mime, detail::read_file(audio_path));
         }
     }
-    return "<audio id=\"tf-audio\" controls preload=\"auto\" src=\"" + escape_html(source) + "\"></audio>\n";
+    // Named for a screen reader, which otherwise announces a bare "audio" before the player's buttons.
+    return "<audio id=\"tf-audio\" controls preload=\"auto\" aria-label=\"Speech\" src=\"" +
+           escape_html(source) + "\"></audio>\n";
+}
+
+// The face as a screen reader names it: an <svg> has no name of its own, and an image without one
+// is announced as a bare "image" (the announcer's stage, which holds the face, is named by its title).
+std::string named_face(const std::string& root) {
+    return "<svg role=\"img\" aria-label=\"Talking face\"" + root.substr(4);
 }
 
 std::string without_prolog(std::string svg) {
@@ -307,15 +315,19 @@ std::string build_web_page(const SvgAnimator& animator, const Animation& animati
     } else {
         packed = detail::pack_animation(
             without_prolog(animator.render_animation_svg(animation, options.animation, progress)));
-        const std::string& svg = packed.root;
+        const std::string svg = named_face(packed.root);
         if (options.app == WebPageApp::audiobook) {
             parts = detail::audiobook_page(svg, timeline, options, title, audio);
         } else {
             parts.style =
-                std::string("body{margin:0;background:#eef2f6;font-family:") + detail::kSansFonts + "}"
+                std::string("body{margin:0;background:#eef2f6;font-family:") + detail::kSansFonts +
+                "}"
                 ".tf-plain{max-width:520px;margin:24px auto;padding:0 16px}"
                 ".tf-plain h1{font-size:1.2rem;color:#334155}"
-                "svg.tf-animation{display:block;width:100%;height:auto;border-radius:8px;background:#fff}"
+                // No taller than the window leaves beside the title and the player: on a phone turned
+                // on its side (568x320) the face took 580 px and the player lay below the screen.
+                "svg.tf-animation{display:block;width:100%;height:auto;max-height:calc(100vh - 170px);"
+                "border-radius:8px;background:#fff}"
                 "audio{display:block;width:100%;margin-top:12px}";
             parts.body = "<main class=\"tf-plain\">\n<h1>" + escape_html(title) + "</h1>\n" + svg + audio + "</main>\n";
         }

@@ -193,6 +193,40 @@ def test_the_player_is_reached_seen_and_worked_by_keyboard(pages, page):
         assert browser.problems() == []
 
 
+@pytest.mark.parametrize("size", [(568, 320), (844, 390)], ids=["568x320", "844x390"])
+@pytest.mark.parametrize("page", ["plain", "audiobook", "announcer"])
+def test_a_phone_on_its_side_shows_the_face_and_the_player_on_one_screen(pages, page, size):
+    # Turned on its side, a phone's screen is 320-430 px high: the face must not shrink to a thumbnail
+    # nor push the player below the screen, where it cannot be reached while the face is watched.
+    framed = "svg.tf-stage-art" if page == "announcer" else "svg.tf-animation"
+    with Browser(*size, mobile=True) as browser:
+        browser.open(pages[page].as_uri())
+        face, player = (browser.evaluate("(function () { var r = document.querySelector('%s').getBoundingClientRect();"
+                                         " return [r.top, r.bottom]; })()" % selector)
+                        for selector in (framed, "#tf-audio"))
+        assert face[0] >= 0 and face[1] - face[0] >= 0.4 * size[1], f"the face at {face}"
+        assert player[1] <= size[1], f"the player at {player}, below the screen"
+        assert browser.evaluate("document.documentElement.scrollWidth") <= size[0]
+        assert browser.problems() == []
+
+
+@pytest.mark.parametrize("page", ["plain", "audiobook", "announcer"])
+def test_a_screen_reader_finds_the_face_and_the_player_named(pages, page):
+    # Chromium's accessibility tree, as a screen reader reads it: an image or a player with no name
+    # is announced as a bare "image" or "audio".
+    with Browser(1280, 800) as browser:
+        browser.open(pages[page].as_uri())
+        browser.call("Accessibility.enable")
+        nodes = [node for node in browser.call("Accessibility.getFullAXTree")["nodes"] if not node.get("ignored")]
+        named = {}
+        for node in nodes:
+            role = node.get("role", {}).get("value")
+            if role in ("image", "Audio"):
+                named.setdefault(role, []).append(node.get("name", {}).get("value", ""))
+        assert len(named.get("image", [])) == 1 and len(named.get("Audio", [])) == 1, named
+        assert all(name.strip() for names in named.values() for name in names), named
+
+
 def test_ready_means_the_face_shows_the_time_of_the_fragment(pages):
     # The SVG's timeline starts with the document's load event, after the audio's metadata: a page
     # that says it is ready must already show the face at the fragment's time.
