@@ -40,7 +40,20 @@ constexpr const char* kFollowScript = R"js((function () {
     if (box.top >= top + 8 && box.bottom <= window.innerHeight - 8) return;
     window.scrollTo(0, window.scrollY + box.top - top - (window.innerHeight - top) / 3);
   }
-  document.addEventListener("tf-sentence", function (event) { keep_in_view(event.detail.element); });
+  // The text is one stop on the Tab key's way, the sentence being spoken (the first before any):
+  // with a stop at every sentence, a keyboard user passed 417 of them to reach the links after a
+  // 30-minute book. The arrows move from sentence to sentence (the page's script).
+  function hold_tab_stop(sentence) {
+    var stop = document.querySelector('.tf-sentence[tabindex="0"]');
+    if (!sentence || sentence === stop) return;
+    if (stop) stop.tabIndex = -1;
+    sentence.tabIndex = 0;
+  }
+  hold_tab_stop(document.querySelector(".tf-sentence.tf-current"));
+  document.addEventListener("tf-sentence", function (event) {
+    hold_tab_stop(event.detail.element);
+    keep_in_view(event.detail.element);
+  });
   // Until the document's load event the page is not laid out as it will be, and a scroll made then
   // may come to nothing (a link to a time deep in the book, opened, stayed at the top): again then.
   window.addEventListener("load", function () { keep_in_view(document.querySelector(".tf-sentence.tf-current")); });
@@ -58,9 +71,10 @@ PageParts audiobook_page(const std::string& animation_svg, const Timeline& timel
             if (k > 0) text += "\n</p>\n";
             text += "<p class=\"tf-paragraph\">\n";
         }
-        text += "<span class=\"tf-sentence\" tabindex=\"0\" data-index=\"" + std::to_string(k) + "\" data-start=\"" +
-                format_fixed(sentence.start_s, 3) + "\" data-end=\"" + format_fixed(sentence.end_s, 3) + "\">" +
-                escape_html(sentence.text) + "</span>";  // no space between: Chinese sets none
+        text += "<span class=\"tf-sentence\" tabindex=\"" + std::string(k == 0 ? "0" : "-1") +
+                "\" data-index=\"" + std::to_string(k) + "\" data-start=\"" +
+                format_fixed(sentence.start_s, 3) + "\" data-end=\"" + format_fixed(sentence.end_s, 3) +
+                "\">" + escape_html(sentence.text) + "</span>";  // no space between: Chinese sets none
     }
     if (!timeline.sentences.empty()) text += "\n</p>\n";
     std::string links;

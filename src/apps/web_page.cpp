@@ -88,8 +88,8 @@ constexpr const char* kScript = R"js((function () {
     });
   });
   // Keys (issue 17): space plays and pauses, the arrows move a sentence back or on (the audio keeps
-  // playing or stays paused); a focused sentence takes the focus along. Keys typed into a control
-  // (the audio element's own, a link, a field) are the control's.
+  // playing or stays paused); a sentence that can hold the focus (the audio book's) takes it. Keys
+  // typed into a control (the audio element's own, a link, a field) are the control's.
   document.addEventListener("keydown", function (event) {
     if (event.ctrlKey || event.metaKey || event.altKey) return;
     var target = event.target;
@@ -102,7 +102,7 @@ constexpr const char* kScript = R"js((function () {
       var back = event.key === "ArrowLeft" || event.key === "ArrowUp";
       var index = Math.max(0, Math.min(sentences.length - 1, current + (back ? -1 : 1)));
       seek_to(index);
-      if (sentences[index].tabIndex >= 0) sentences[index].focus({ preventScroll: true });
+      if (sentences[index].hasAttribute("tabindex")) sentences[index].focus({ preventScroll: true });
     }
   });
   var wanted = /(?:^#|&)t=([0-9]+(?:\.[0-9]+)?)/.exec(window.location.hash);

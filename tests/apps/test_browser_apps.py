@@ -98,7 +98,7 @@ def long_caption(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def long_book(tmp_path_factory):
-    """120 sentences, 6 a paragraph; 0.2 s a syllable, 0.4 s between sentences."""
+    """120 sentences, 6 a paragraph; 0.2 s a syllable, 0.4 s between sentences; a link after them."""
     folder = tmp_path_factory.mktemp("book")
     text = "\n\n".join("".join(LINES[(p + k) % len(LINES)] for k in range(6)) for p in range(20))
     timeline = talkface.read_transcript(text)
@@ -125,7 +125,8 @@ def long_book(tmp_path_factory):
     face = talkface.FaceModel.default()
     animation = talkface.animate(face, timeline, talkface.ExpressionSimulator(timeline, 3))
     options = talkface.WebPageOptions(app=talkface.WebPageApp.audiobook, title="春天的故事",
-                                      audio=talkface.WebPageAudio.link, audio_url="book.wav")
+                                      audio=talkface.WebPageAudio.link, audio_url="book.wav",
+                                      links=[talkface.WebLink("目錄", "https://example.org/book")])
     page = folder / "book.html"
     talkface.write_web_page(page, talkface.SvgAnimator(face), animation, timeline, audio, options)
     return page, timeline
@@ -267,6 +268,28 @@ def test_keys_play_pause_and_move_a_sentence_with_a_visible_focus(long_book):
         browser.press(" ")
         assert browser.evaluate("document.getElementById('tf-audio').paused")
         assert browser.evaluate("document.getElementById('tf-audio').currentTime") > timeline.sentences[1].start_s
+
+
+def test_the_text_is_one_tab_stop_the_sentence_being_spoken(long_book):
+    # Tab from the player: the sentence being spoken, then the link after the text, not every
+    # sentence of the book on the way.
+    page, timeline = long_book
+    index = 50
+    sentence = timeline.sentences[index]
+    with Browser(1280, 800) as browser:
+        browser.open(f"file://{page}#t={(sentence.start_s + sentence.end_s) / 2:.3f}&pause")
+        browser.evaluate("document.getElementById('tf-audio').focus()")
+        focused = "document.activeElement.getAttribute('data-index') || document.activeElement.tagName"
+        for _ in range(12):  # through the player's own buttons
+            browser.press("Tab")
+            if browser.evaluate(focused) != "AUDIO":
+                break
+        assert browser.evaluate(focused) == str(index)
+        browser.press("ArrowRight")  # the arrows move the focus along the text
+        assert browser.evaluate(focused) == str(index + 1)
+        browser.press("Tab")
+        assert browser.evaluate(focused) == "A"
+        assert browser.problems() == []
 
 
 @pytest.fixture(scope="module")
