@@ -8,10 +8,14 @@ Pages: `talkface demo` (plain, audio book, announcer; the speech compressed into
 linked beside it) and `talkface animate` of a long speech (8 minutes, 300 sentences, timed by a
 timeline JSON over a silent recording).
 """
+import functools
+import http.server
 import json
 import os
 import pathlib
 import subprocess
+import threading
+import time
 import wave
 
 import pytest
@@ -255,6 +259,52 @@ def test_a_speech_that_cannot_be_played_is_said_on_the_page(pages, tmp_path, fra
         assert_face_shows_audio_time(browser, "no speech")
         browser.press(" ")  # nothing to play, and nothing thrown
         assert all(problem.startswith("network: ") for problem in browser.problems()), browser.problems()
+
+
+class SlowSpeechServer(http.server.SimpleHTTPRequestHandler):
+    """Serves a folder; a speech's first 20 kB at once, the rest at 2 kB/s, under the 5 kB a second
+    it plays at: the player runs out of data and waits, as on a slow connection."""
+
+    def log_message(self, *args):
+        pass
+
+    def copyfile(self, source, destination):
+        if not self.path.endswith(".ogg"):
+            return super().copyfile(source, destination)
+        destination.write(source.read(20000))
+        while chunk := source.read(500):
+            destination.write(chunk)
+            destination.flush()
+            time.sleep(0.25)
+
+
+def test_a_page_served_over_http_asks_for_its_speech_alone_and_the_face_waits_for_it(pages):
+    # Served by a web server rather than opened from a file: the browser asks for the page and its
+    # speech, nothing else (no icon: a 404 in the console), and when the speech comes slower than it
+    # plays the face stops with the voice.
+    server = http.server.ThreadingHTTPServer(
+        ("127.0.0.1", 0), functools.partial(SlowSpeechServer, directory=str(pages["linked"].parent)))
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    origin = f"http://127.0.0.1:{server.server_address[1]}/"
+    try:
+        with Browser(640, 760) as browser:
+            browser.call("Network.enable")
+            browser.open(origin + "linked.html")
+            browser.evaluate("window.tfWaits = 0; document.getElementById('tf-audio').addEventListener('waiting',"
+                             " function () { ++window.tfWaits; }); document.getElementById('tf-audio').play()")
+            assert_face_follows_playing(browser, "on a slow connection", frames=90)
+            browser.evaluate("""new Promise(function (done) {
+                (function poll() { if (window.tfWaits > 0) return done(true); setTimeout(poll, 50); })();
+              })""")
+            assert_face_follows_playing(browser, "after the speech waited for data", frames=30)
+            asked = sorted({event["params"]["request"]["url"] for event in browser.events
+                            if event["method"] == "Network.requestWillBeSent"
+                            and not event["params"]["request"]["url"].startswith("data:")})
+            assert asked == [origin + "linked.html", origin + "linked.ogg"]
+            assert browser.problems() == []
+    finally:
+        server.shutdown()
+        server.server_close()
 
 
 def test_a_speech_started_before_the_animation_is_unpacked_is_followed(pages):
