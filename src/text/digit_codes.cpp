@@ -431,6 +431,14 @@ bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start) {
     return !model_name_before(text, start).empty();
 }
 
+bool follows_model_name_and_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    constexpr std::size_t kMostLineDigits = 2;
+    if (start < 2 || text[start - 1].value != ' ' || is_han(value_at(text, end))) return false;
+    auto line = start - 1;
+    while (line > 0 && is_digit_at(text, line - 1)) --line;
+    return line < start - 1 && start - 1 - line <= kMostLineDigits && follows_model_name(text, line);
+}
+
 bool is_filter_grade(const std::vector<CodePoint>& text, std::size_t start, const std::string& digits) {
     const auto capitals = model_name_before(text, start);
     const bool filter_class = capitals == "N" || capitals == "R" || capitals == "P" || capitals == "KN" || capitals == "KP";
@@ -574,9 +582,47 @@ bool follows_maker_name(const std::vector<CodePoint>& text, std::size_t start) {
     return first < i && is_any_of(ascii_lower_case(text_between(text, first, i)), kLatinMakers);
 }
 
+namespace {
+
+// Three or more digits after a port's or an error's word (端口改成8080 八零八零, 错误502 五零二, 报错1001),
+// with 是 为 ： or a verb that sets it (改成 改为 设为) between, or an HTTP status (400 to 599) that a page
+// or a server shows (页面显示404 四零四): a code read out, as a tutorial's presenter reads it.
+bool names_port_or_error(const std::vector<CodePoint>& text, std::size_t start, const std::string& digits) {
+    constexpr std::size_t kFewestDigits = 3;
+    if (digits.size() < kFewestDigits) return false;
+    auto word_end = start;
+    for (int skipped = 0; skipped < 2 && word_end > 0 && is_one_of(text[word_end - 1].value, U" 是为為：:");
+         ++skipped)
+        --word_end;
+    for (const std::string_view verb : {"改成", "改为", "改為", "设为", "設為", "设置为", "設置為"}) {
+        const auto characters = verb.size() / std::string_view("为").size();
+        if (word_end >= characters && text_between(text, word_end - characters, word_end) == verb) {
+            word_end -= characters;
+            break;
+        }
+    }
+    const auto word = text_between(text, word_end >= 4 ? word_end - 4 : 0, word_end);
+    if (ends_with_any(
+            word, {"端口", "埠", "错误", "錯誤", "代码", "代碼", "报错", "報錯", "故障", "error", "Error"}))
+        return true;
+    const bool is_status = digits.size() == kFewestDigits && (digits.front() == '4' || digits.front() == '5');
+    if (!is_status || !ends_with_any(word, {"显示", "顯示", "提示", "返回", "报", "報", "出现", "出現"}))
+        return false;
+    const auto sentence =
+        text_before(text, start, false) + text_between(text, start, std::min(text.size(), start + 20));
+    for (const std::string_view place :
+         {"页面", "頁面", "网页", "網頁", "网站", "網站", "链接", "鏈接", "連結", "服务器", "伺服器",
+          "浏览器", "瀏覽器", "接口", "请求", "請求"})
+        if (sentence.find(place) != std::string::npos) return true;
+    return false;
+}
+
+}  // namespace
+
 bool names_by_its_digits(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
     if (number.has_point || number.has_separators) return false;
     const auto& digits = number.whole;
+    if (names_port_or_error(text, start, digits)) return true;
     if ((digits.size() == 3 || digits.size() == 4) && is_one_of(value_at(text, number.end), U"pP") &&
         !is_ascii_letter(value_at(text, number.end + 1))) {
         return true;
@@ -752,6 +798,16 @@ std::optional<SpokenForm> read_dotted_groups(const std::vector<CodePoint>& text,
             form.words += digit_words(group);
         } else {
             form.words += cardinal_words(group, false);
+        }
+    }
+    // A port after the address and a colon (192.168.0.1:8080 冒号八零八零), digit by digit as the address is.
+    constexpr std::size_t kMostPortDigits = 5;
+    if (is_ip_address && value_at(text, i) == ':' && is_digit_at(text, i + 1)) {
+        auto k = i + 1;
+        const auto port = digits_from(text, k);
+        if (port.size() <= kMostPortDigits && !is_digit_at(text, k)) {
+            form.words += "冒号" + digit_words(port);
+            form.end = k;
         }
     }
     return form;

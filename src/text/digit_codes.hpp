@@ -101,6 +101,11 @@ std::optional<SpokenForm> read_model_variant(const std::vector<CodePoint>& text,
 
 bool follows_model_name(const std::vector<CodePoint>& text, std::size_t start);
 
+// A model's number of three or more digits after its line's name and number with spaces between (XPS 13
+// 9340 九三四零, a laptop's generation after its size: one or two digits in the line), no character after
+// it: a model's, said digit by digit (it counted, 九千三百四十).
+bool follows_model_name_and_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t end);
+
 // A respirator's filter grade (N95, KN95, P99: a class N R P KN KP and 90, 95 or 99, the share of
 // particles it stops) or an enclosure's protection rating (IP68, IP54): a grade's name, said digit
 // by digit (N九五, IP六八), where a model's two digits count (G20 G二十).

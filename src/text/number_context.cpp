@@ -270,18 +270,18 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
     context.is_stake_metres = kilometres + 1 < start && follows_stake_letter(kilometres);
     const bool is_sensitivity =
         !number.has_point && !number.has_separators && is_camera_sensitivity(text, start, number.whole);
-    context.is_model = sign_words.empty() && currency == nullptr && !after_times && !is_stake &&
-                       !is_sensitivity &&
-                       (follows_model_name(text, start) || follows_maker_name(text, start) ||
-                        follows_glued_name(text, start) || names_code_by_letters(text, start, number) ||
-                        repeats_card_model(text, start, number) ||
-                        // An isotope's number after a hyphen (碳-14), or of three digits or more glued to
-                        // a radioactive element's name, which names its isotopes (铀235, 铯137; 钠500毫克 and
-                        // 补钙2片 count).
-                        (follows_element(text, start) &&
-                         (is_dash(value_at(text, start)) ||
-                          (number.whole.size() >= 3 && start > 0 &&
-                           is_one_of(text[start - 1].value, U"铀鈾钚鈽铯銫锶鍶钴鈷碘镭鐳氡钍釷镅鋂钋釙")))));
+    context.is_model =
+        sign_words.empty() && currency == nullptr && !after_times && !is_stake && !is_sensitivity &&
+        (follows_model_name(text, start) || follows_maker_name(text, start) ||
+         follows_model_name_and_number(text, start, number.end) || follows_glued_name(text, start) ||
+         names_code_by_letters(text, start, number) || repeats_card_model(text, start, number) ||
+         // An isotope's number after a hyphen (碳-14), or of three digits or more glued to
+         // a radioactive element's name, which names its isotopes (铀235, 铯137; 钠500毫克 and
+         // 补钙2片 count).
+         (follows_element(text, start) &&
+          (is_dash(value_at(text, start)) ||
+           (number.whole.size() >= 3 && start > 0 &&
+            is_one_of(text[start - 1].value, U"铀鈾钚鈽铯銫锶鍶钴鈷碘镭鐳氡钍釷镅鋂钋釙")))));
     context.is_train =
         context.is_model && !number.has_point && !number.has_separators &&
         (is_train_number(text, start, number.end) || is_flight_number(text, start, number.end));

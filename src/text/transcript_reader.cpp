@@ -15,6 +15,7 @@
 #include "text/drawn_faces.hpp"
 #include "text/formula_letters.hpp"
 #include "text/kana_words.hpp"
+#include "text/keyboard_keys.hpp"
 #include "text/latin_words.hpp"
 #include "text/phonetic_spelling.hpp"
 #include "text/pinyin_tokens.hpp"
@@ -24,6 +25,7 @@
 #include "text/sentence_marks.hpp"
 #include "text/transcript_cut.hpp"
 #include "text/transcript_reader.hpp"
+#include "text/typed_names.hpp"
 #include "text/units_and_money.hpp"
 #include "text/web_addresses.hpp"
 #include "text/written_numbers.hpp"
@@ -130,6 +132,21 @@ std::optional<std::size_t> TranscriptReader::read_written_form(const std::vector
         form_warnings_ = timeline_.warnings.size();
         add_form(text, i, address->end, address_syllables(*address, c));
         return address->end;
+    }
+    if (auto name = detail::read_typed_name(text, i)) {  // C:\Users, /etc/hosts, Home_5G, 0x80070005
+        form_warnings_ = timeline_.warnings.size();
+        add_form(text, i, name->end, address_syllables(*name, c));
+        return name->end;
+    }
+    if (const auto key = detail::key_sign_word(c.value); !key.empty()) {  // ⌘ command
+        form_warnings_ = timeline_.warnings.size();
+        add_form(text, i, i + 1, said_syllables(*detail::english_word_syllables(key)));
+        return i + 1;
+    }
+    if (detail::joins_shortcut_keys(text, i)) {  // Shift+⌘+4
+        form_warnings_ = timeline_.warnings.size();
+        add_form(text, i, i + 1, read_words("加"));
+        return i + 1;
     }
     // A subtitle's or a lyric's timing is no speech: kept in the sentence's text, not said.
     if (const auto timing_end = detail::past_subtitle_timing(text, i)) {

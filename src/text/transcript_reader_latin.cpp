@@ -13,6 +13,7 @@
 #include "text/code_points.hpp"
 #include "text/digit_codes.hpp"
 #include "text/formula_letters.hpp"
+#include "text/keyboard_keys.hpp"
 #include "text/latin_words.hpp"
 #include "text/number_words.hpp"
 #include "text/pinyin_tokens.hpp"
@@ -74,6 +75,10 @@ std::size_t TranscriptReader::read_latin(const std::vector<CodePoint>& text, std
         return start + 1;
     }
     std::string word = latin_spelling(text, start, end);
+    if (const auto key = detail::key_name_word(text, start, end)) {  // Ctrl control
+        add_form(text, start, end, said_syllables(*detail::english_word_syllables(*key)));
+        return end;
+    }
     // A card's suffix after its model's digits (RTX 4070 Ti) is its letters, where Ti alone is pinyin.
     // Capitals glued to a number are a unit's or a model's letters (45TOPS ti ou pi ai si, a chip's trillions
     // of operations a second; session 32: the dictionary's tops, ta pu si), unless said as a word (15PRO).
@@ -193,10 +198,12 @@ std::vector<Syllable> TranscriptReader::latin_word_syllables(const std::string& 
     // Three small letters or fewer that the dictionary lacks and that spell no pinyin (orz, a chat's
     // kneeling figure; abc, ufo) are their letters, as three capitals are: too short to be said as a word
     // (session 21: generic speech). Pinyin read as Latin (ni with read_pinyin off) stays generic speech.
+    // So with a capital first, as a key's name is written (Esc yi ai si xi; session 33: generic speech).
     constexpr std::size_t kLongestSpelledSmall = 3;
     if (word.size() <= kLongestSpelledSmall &&
-        std::all_of(word.begin(), word.end(), [](char l) { return l >= 'a' && l <= 'z'; }) &&
-        !split_pinyin(decode_utf8(word, "<word>")))
+        std::all_of(word.begin() + 1, word.end(), [](char l) { return l >= 'a' && l <= 'z'; }) &&
+        is_ascii_letter(static_cast<unsigned char>(word.front())) &&
+        !split_pinyin(decode_utf8(detail::ascii_lower_case(word), "<word>")))
         return said_syllables(detail::letter_syllables(word));
     return read_word_parts(word, at);
 }

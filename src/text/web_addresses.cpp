@@ -38,25 +38,6 @@ bool is_file_suffix(const std::string& label) {
     return std::find(std::begin(kSuffixes), std::end(kSuffixes), lower) != std::end(kSuffixes);
 }
 
-// Letters, digits and punctuation of an address as said: a run of letters, of digits, or a mark.
-void append_said(std::vector<AddressPart>& parts, const std::vector<CodePoint>& text, std::size_t first,
-                 std::size_t end) {
-    for (auto i = first; i < end;) {
-        const auto c = text[i].value;
-        if (is_alphanumeric(c)) {
-            const bool letters = is_ascii_letter(c);
-            std::string run;
-            while (i < end && (letters ? is_ascii_letter(text[i].value) : is_ascii_digit(text[i].value)))
-                run += static_cast<char>(text[i++].value);
-            parts.push_back({letters ? AddressPart::Kind::letters : AddressPart::Kind::digits, std::move(run)});
-            continue;
-        }
-        const char* words = c == '.' ? "点" : c == '@' ? "艾特" : c == '-' ? "杠" : c == '_' ? "下划线" : c == '/' ? "斜杠" : "加";
-        parts.push_back({AddressPart::Kind::words, words});
-        ++i;
-    }
-}
-
 // A host at text[start]: labels of letters, digits and inner hyphens joined by dots. Returns its
 // end and its labels; the labels are empty if there is none. A dot not followed by a label is not
 // the host's (it ends the sentence).
@@ -104,6 +85,30 @@ bool is_exchange_suffix(std::string_view letters) {
     return false;
 }
 
+void append_address_parts(std::vector<AddressPart>& parts, const std::vector<CodePoint>& text,
+                          std::size_t first, std::size_t end) {
+    for (auto i = first; i < end;) {
+        const auto c = text[i].value;
+        if (is_alphanumeric(c)) {
+            const bool letters = is_ascii_letter(c);
+            std::string run;
+            while (i < end && (letters ? is_ascii_letter(text[i].value) : is_ascii_digit(text[i].value)))
+                run += static_cast<char>(text[i++].value);
+            parts.push_back(
+                {letters ? AddressPart::Kind::letters : AddressPart::Kind::digits, std::move(run)});
+            continue;
+        }
+        const char* words = c == '.'   ? "点"
+                            : c == '@' ? "艾特"
+                            : c == '-' ? "杠"
+                            : c == '_' ? "下划线"
+                            : c == '/' ? "斜杠"
+                                       : "加";
+        parts.push_back({AddressPart::Kind::words, words});
+        ++i;
+    }
+}
+
 std::optional<WebAddress> read_web_address(const std::vector<CodePoint>& text, std::size_t start) {
     if (start >= text.size()) return std::nullopt;
     const auto previous = start == 0 ? 0 : text[start - 1].value;
@@ -131,7 +136,7 @@ std::optional<WebAddress> read_web_address(const std::vector<CodePoint>& text, s
     if (written_at(text, at) == '@') {
         const auto end = host_end(text, at + 1, labels);
         if (labels.size() >= 2 && is_all_letters(labels.back())) {
-            append_said(address.parts, text, start, end);
+            append_address_parts(address.parts, text, start, end);
             address.end = end;
             return address;
         }
@@ -162,7 +167,7 @@ std::optional<WebAddress> read_web_address(const std::vector<CodePoint>& text, s
         return std::nullopt;
     }
     const auto address_end = path_end(text, end);
-    append_said(address.parts, text, host, address_end);
+    append_address_parts(address.parts, text, host, address_end);
     address.end = address_end;
     return address;
 }

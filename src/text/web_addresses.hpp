@@ -35,6 +35,11 @@ struct WebAddress {
 // before a name (a mention: @新华社). A dot that ends a sentence after the address is not taken.
 std::optional<WebAddress> read_web_address(const std::vector<CodePoint>& text, std::size_t start);
 
+// The letters, digits and marks of text[first, end) as an address says them: each run of letters or of
+// digits a part, a mark its words (. 点, @ 艾特, - 杠, _ 下划线, / 斜杠, + 加).
+void append_address_parts(std::vector<AddressPart>& parts, const std::vector<CodePoint>& text,
+                          std::size_t first, std::size_t end);
+
 // True for the suffix of a stock exchange after a code, in capitals (HK Hong Kong; SH and SS
 // Shanghai; SZ Shenzhen; BJ Beijing; TW and TWO Taiwan: 00700.HK, 600519.SH, 2330.TW): digits and
 // such a suffix are a stock's code, no address (session 15).

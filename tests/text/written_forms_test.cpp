@@ -2524,4 +2524,49 @@ TEST_SUITE("written forms") {
             {"x₁+x₂=5", "ai ke si一加 ai ke si二等于五"},
         });
     }
+
+    TEST_CASE("a keyboard shortcut's keys are said by their names and joined by 加") {
+        // The first four rows failed on main 3aa3425 (session 33, dev33): Ctrl spelled, ⌘ unsaid, +4 正四,
+        // Esc generic speech.
+        check_cases({
+            {"按Ctrl+C复制", "按 ken tou加 xi复制"},
+            {"按⌘+空格搜索", "按 ke man de加空格搜索"},
+            {"截屏是Shift+⌘+4", "截屏是 shi fu te加 ke man de加四"},
+            {"按Esc退出", "按 yi ai si xi退出"},
+            // The limits: cmd that names a program is its letters, a signed number stays signed.
+            {"输入cmd后回车", "输入 xi ai mu di后回车"},
+            {"气温+4度", "气温零上四度"},
+        });
+    }
+
+    TEST_CASE("a path, a name joined by underscores and a hexadecimal code are said mark by mark") {
+        // The first five rows failed on main 3aa3425 (session 33, dev33): the marks unsaid, the digits
+        // counted, 0x read 零乘.
+        check_cases({
+            {"打开C:\\Users\\Admin文件夹", "打开 xi冒号反斜杠 yu ze si反斜杠 a de min文件夹"},
+            {"编辑/etc/hosts文件", "编辑斜杠 ai te sai te e斜杠 hou si ci文件"},
+            {"Wi-Fi名称为Home_5G", "wai fa名称为 hou mu下划线五 ji"},
+            {"关注@dance_2024", "关注艾特 dan si下划线二零二四"},
+            {"错误代码0x80070005", "错误代码零 ai ke si八零零七零零零五"},
+            // The limits: a face drawn as T_T, a unit's slash, one name after a slash.
+            {"哭了T_T", "哭了"},
+            {"速度500MB/s", "速度五百 ai mu bi每秒"},
+            {"每人/天", "每人天"},
+        });
+    }
+
+    TEST_CASE("a port, an error code and a model's second number are said digit by digit") {
+        // The first five rows failed on main 3aa3425 (session 33, dev33): they counted.
+        check_cases({
+            {"把端口改成8080", "把端口改成八零八零"},
+            {"输入192.168.0.1:8080进入", "输入一九二点一六八点零点一冒号八零八零进入"},
+            {"提示错误502", "提示错误五零二"},
+            {"页面显示404", "页面显示四零四"},
+            {"戴尔XPS 13 9340", "戴尔 ai ke si pi ai si十三九三四零"},
+            // The limits: a short port counts, a count shown on no page, a model's price.
+            {"端口是22", "端口是二十二"},
+            {"屏幕显示404人", "屏幕显示四百零四人"},
+            {"XPS 13售价9999元", "ai ke si pi ai si十三售价九千九百九十九元"},
+        });
+    }
 }
