@@ -121,6 +121,14 @@ std::size_t ascii_face_end(const std::vector<CodePoint>& text, std::size_t i) {
     return sets_off_face(value_at(text, end)) ? end : i;
 }
 
+// A tick or a cross right after 打 is the mark a form asks to draw (打✓ 打勾, 打✗ 打叉): a word, said, not
+// a picture (session 33: unsaid).
+bool is_mark_to_draw(const std::vector<CodePoint>& text, std::size_t i) {
+    if (i == 0 || text[i - 1].value != U'打') return false;
+    const auto mark = text[i].value;
+    return mark == 0x2713 || mark == 0x2714 || mark == 0x2717 || mark == 0x2718;
+}
+
 }  // namespace
 
 std::vector<std::size_t> find_drawing_ends(const std::vector<CodePoint>& text) {
@@ -128,7 +136,7 @@ std::vector<std::size_t> find_drawing_ends(const std::vector<CodePoint>& text) {
     for (std::size_t k = 0; k < text.size(); ++k) ends[k] = k;
     std::size_t last_end = 0;  // the end of the last drawing found
     for (std::size_t i = 0; i < text.size();) {
-        if (is_emoji(text[i].value)) {
+        if (is_emoji(text[i].value) && !is_mark_to_draw(text, i)) {
             auto end = i + 1;
             while (end < text.size() && (is_emoji(text[end].value) || joins_emoji(text[end].value))) ++end;
             ends[i] = last_end = end;

@@ -215,6 +215,10 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
     // A judgement question's answer, a tick or a cross alone in brackets (（√） 对, （×） 错), as a teacher
     // reads the key (session 33: 根号, and the cross unsaid).
     const bool marks_judgement = left == '(' && right == ')';
+    // A mark to draw after 打 (打√ 打✓ 打勾, 打× 打✗ 打叉), as teachers and forms say it (session 33: √ and ×
+    // warned, ✓ and ✗ unsaid as drawings).
+    if (left == U'打' && is_one_of(sign, U"\u221A\u2713\u2714")) return "勾";
+    if (left == U'打' && is_one_of(sign, U"\u00D7\u2717\u2718")) return "叉";
     switch (sign) {
         case '=': case 0x2248: case 0x2260: {  // = ≈ ≠, between a character and a term too (答案是x=5, 等于号)
             if (sign == '=' && counts_a_lobby(text, i)) return "等";
@@ -422,9 +426,32 @@ std::optional<SpokenForm> read_power(const std::vector<CodePoint>& text, std::si
 
 namespace talkface::detail {
 
+namespace {
+
+// The common and the natural logarithm, lg and ln before a number (lg100 一百的常用对数, ln10 十的自然对数), as
+// teachers read them: the argument first, as log's is (session 33: the letters, ai le ji, ai le en).
+std::optional<SpokenForm> read_named_logarithm(const std::vector<CodePoint>& text, std::size_t i) {
+    const auto name = text_between(text, i, i + 2);
+    if (name != "lg" && name != "ln") return std::nullopt;
+    auto k = i + 2;
+    if (value_at(text, k) == ' ') ++k;
+    if (!is_digit_at(text, k)) return std::nullopt;
+    const auto argument = parse_number(text, k);
+    if (is_ascii_letter(value_at(text, argument.end))) return std::nullopt;
+    const auto said = say_number(argument, {});
+    SpokenForm form;
+    form.words = said.words + (name == "lg" ? "的常用对数" : "的自然对数");
+    form.warning = said.warning;
+    form.end = argument.end;
+    return form;
+}
+
+}  // namespace
+
 std::optional<SpokenForm> read_logarithm(const std::vector<CodePoint>& text, std::size_t i) {
-    if (text_between(text, i, i + 3) != "log" || (i > 0 && is_ascii_letter(value_at(text, i - 1))))
-        return std::nullopt;
+    if (i > 0 && is_ascii_letter(value_at(text, i - 1))) return std::nullopt;
+    if (auto named = read_named_logarithm(text, i)) return named;
+    if (text_between(text, i, i + 3) != "log") return std::nullopt;
     auto k = i + 3;
     std::string base;
     if (value_at(text, k) == '_') {

@@ -72,7 +72,12 @@ std::optional<SpokenForm> read_game_record(const std::vector<CodePoint>& text, s
     const bool names_record = contains_any(before, {"战绩", "戰績", "KDA"});
     const bool after_player =
         start > 0 && is_one_of(text[start - 1].value, U"我你他她") && !contains_any(before, {"赛", "賽"});
-    if (!names_record && !after_player) return std::nullopt;
+    // A player named by the role played (中单1-4了, 打野0-5了, 辅助0-7还在送) is a player as 我 is (session 33:
+    // 零到五, a range).
+    constexpr std::string_view kRoles[] = {"打野", "中单", "中單", "上单", "上單", "辅助",
+                                           "輔助", "射手", "ADC",  "下路", "对抗路", "對抗路"};
+    const bool after_role = ends_with_any(before, kRoles) && !contains_any(before, {"赛", "賽"});
+    if (!names_record && !after_player && !after_role) return std::nullopt;
     SpokenForm form;
     form.words = cardinal_words(first.whole, false);
     auto i = first.end;
@@ -92,8 +97,10 @@ std::optional<SpokenForm> read_game_record(const std::vector<CodePoint>& text, s
         ++parts;
     }
     if (parts < (slashed ? kMostParts : 2) || is_digit_at(text, i) || is_part_mark(i)) return std::nullopt;
-    if (!names_record && !(i >= text.size() || is_one_of(text[i].value, U"，,。.！!？?；;～~…\n ")))
-        return std::nullopt;
+    // A role's record is said with what the player does after it (了, 还在送).
+    const bool closes = i >= text.size() || is_one_of(text[i].value, U"，,。.！!？?；;～~…\n ") ||
+                        (after_role && is_one_of(text[i].value, U"了还還"));
+    if (!names_record && !closes) return std::nullopt;
     // A season's record of wins and losses (湖人目前战绩30-12，排名西部第2; 本赛季战绩45-37) is said
     // 三十胜十二负, as newsreaders say it (session 17: 三十杠十二): two parts where the sentence speaks
     // of a season or a table (赛季 常规赛 季后赛 排名 联盟 东部 西部 胜率 积分榜).

@@ -121,6 +121,14 @@ std::size_t TranscriptReader::read_latin(const std::vector<CodePoint>& text, std
         add_form(text, start, end, read_words(laugh));
         return end;
     }
+    // A chat's hum, an e and its m's drawn out (emm, emmm, Emmmm), is 嗯, the hum it writes (session 33:
+    // generic speech with a warning).
+    constexpr std::size_t kShortestHum = 3;
+    if (word.size() >= kShortestHum && (word.front() == 'e' || word.front() == 'E') &&
+        word.find_first_not_of('m', 1) == std::string::npos) {
+        add_form(text, start, end, read_words("嗯"));
+        return end;
+    }
     // A game's level, Lv.50 (LV50, Lv 50): L V and the number, the dot not said (session 14; Lv was
     // the pinyin lü and its dot ended the sentence).
     if (word == "Lv" || word == "LV" || word == "lv") {

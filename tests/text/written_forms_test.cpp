@@ -831,8 +831,8 @@ TEST_SUITE("written forms") {
             {"awsl，太可爱了", "ei da bu liu ai si ai le太可爱了"},
             {"ojbk", "ou zhei bi kei"},
         });
-        // The limits: a consonant drawn out stays generic speech, pinyin stays pinyin.
-        CHECK(pinyin_of("emmm") == "de5");
+        // The limits: a hum drawn out is 嗯 (session 33; generic speech before), pinyin stays pinyin.
+        CHECK(pinyin_of("emmm") == "n2");
         CHECK(said("ang") == "ang");
     }
 
@@ -2567,6 +2567,25 @@ TEST_SUITE("written forms") {
             {"端口是22", "端口是二十二"},
             {"屏幕显示404人", "屏幕显示四百零四人"},
             {"XPS 13售价9999元", "ai ke si pi ai si十三售价九千九百九十九元"},
+        });
+    }
+
+    TEST_CASE("a reward after an action, a role's record, a mark to draw, lg and ln, and a chat's hum are said") {
+        // The first rows failed on main 587d49b (session 33, dev34): 正, a range's 到, 根号 and ✓ unsaid, the
+        // letters of lg and ln, emmm generic speech.
+        check_cases({
+            {"助攻+1", "助攻加一"},
+            {"邀请好友+50钻石", "邀请好友加五十钻石"},
+            {"中单1-4了", "中单一杠四了"},
+            {"正确的打√，错误的打×", "正确的打勾错误的打叉"},
+            {"请打✓", "请打勾"},
+            {"lg100=2", "一百的常用对数等于二"},
+            {"ln10", "十的自然对数"},
+            {"emmm，好吧", "嗯好吧"},
+            // The limits: a value's sign, a range of minutes, a root, and letters before lg.
+            {"温差+12", "温差正十二"},
+            {"打野3-5分钟", "打野三到五分钟"},
+            {"√2", "根号二"},
         });
     }
 }
