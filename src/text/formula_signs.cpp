@@ -428,19 +428,17 @@ namespace talkface::detail {
 
 namespace {
 
-// The common and the natural logarithm, lg and ln before a number (lg100 一百的常用对数, ln10 十的自然对数), as
-// teachers read them: the argument first, as log's is (session 33: the letters, ai le ji, ai le en).
-std::optional<SpokenForm> read_named_logarithm(const std::vector<CodePoint>& text, std::size_t i) {
-    const auto name = text_between(text, i, i + 2);
-    if (name != "lg" && name != "ln") return std::nullopt;
-    auto k = i + 2;
+// A logarithm's number from text[k] (a space before it skipped), said after `before` and before `after`
+// (以二为底 八 的对数, 一百 的常用对数); nullopt where no number starts there or a letter follows it.
+std::optional<SpokenForm> said_logarithm(const std::vector<CodePoint>& text, std::size_t k,
+                                         const std::string& before, std::string_view after) {
     if (value_at(text, k) == ' ') ++k;
     if (!is_digit_at(text, k)) return std::nullopt;
     const auto argument = parse_number(text, k);
     if (is_ascii_letter(value_at(text, argument.end))) return std::nullopt;
     const auto said = say_number(argument, {});
     SpokenForm form;
-    form.words = said.words + (name == "lg" ? "的常用对数" : "的自然对数");
+    form.words = before + said.words + std::string(after);
     form.warning = said.warning;
     form.end = argument.end;
     return form;
@@ -450,7 +448,12 @@ std::optional<SpokenForm> read_named_logarithm(const std::vector<CodePoint>& tex
 
 std::optional<SpokenForm> read_logarithm(const std::vector<CodePoint>& text, std::size_t i) {
     if (i > 0 && is_ascii_letter(value_at(text, i - 1))) return std::nullopt;
-    if (auto named = read_named_logarithm(text, i)) return named;
+    // The common and the natural logarithm, lg and ln before a number (lg100 一百的常用对数, ln10
+    // 十的自然对数), as teachers read them: the number first, as log's is (session 33: the letters, ai le ji,
+    // ai le en).
+    const auto name = text_between(text, i, i + 2);
+    if (name == "lg" || name == "ln")
+        return said_logarithm(text, i + 2, "", name == "lg" ? "的常用对数" : "的自然对数");
     if (text_between(text, i, i + 3) != "log") return std::nullopt;
     auto k = i + 3;
     std::string base;
@@ -462,16 +465,7 @@ std::optional<SpokenForm> read_logarithm(const std::vector<CodePoint>& text, std
             base += static_cast<char>(value_at(text, k));
     }
     if (base.empty()) return std::nullopt;
-    if (value_at(text, k) == ' ') ++k;
-    if (!is_digit_at(text, k)) return std::nullopt;
-    const auto argument = parse_number(text, k);
-    if (is_ascii_letter(value_at(text, argument.end))) return std::nullopt;
-    const auto said = say_number(argument, {});
-    SpokenForm form;
-    form.words = "以" + cardinal_words(base, false) + "为底" + said.words + "的对数";
-    form.warning = said.warning;
-    form.end = argument.end;
-    return form;
+    return said_logarithm(text, k, "以" + cardinal_words(base, false) + "为底", "的对数");
 }
 
 std::optional<SpokenForm> read_repeating_decimal(const std::vector<CodePoint>& text,

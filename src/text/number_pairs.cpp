@@ -72,9 +72,9 @@ std::optional<SpokenForm> read_game_record(const std::vector<CodePoint>& text, s
     const bool names_record = contains_any(before, {"战绩", "戰績", "KDA"});
     const bool after_player =
         start > 0 && is_one_of(text[start - 1].value, U"我你他她") && !contains_any(before, {"赛", "賽"});
-    // A player named by the role played (中单1-4了, 打野0-5了, 辅助0-7还在送) is a player as 我 is (session 33:
-    // 零到五, a range).
-    constexpr std::string_view kRoles[] = {"打野", "中单", "中單", "上单", "上單", "辅助",
+    // A player named by the role played (中单1-4了, 打野0-5了, 辅助0-7还在送) is a player as 我 is (session
+    // 33: 零到五, a range).
+    constexpr std::string_view kRoles[] = {"打野", "中单", "中單", "上单", "上單",   "辅助",
                                            "輔助", "射手", "ADC",  "下路", "对抗路", "對抗路"};
     const bool after_role = ends_with_any(before, kRoles) && !contains_any(before, {"赛", "賽"});
     if (!names_record && !after_player && !after_role) return std::nullopt;

@@ -2570,7 +2570,8 @@ TEST_SUITE("written forms") {
         });
     }
 
-    TEST_CASE("a reward after an action, a role's record, a mark to draw, lg and ln, and a chat's hum are said") {
+    TEST_CASE(
+        "a reward after an action, a role's record, a mark to draw, lg and ln, and a chat's hum are said") {
         // The first rows failed on main 587d49b (session 33, dev34): 正, a range's 到, 根号 and ✓ unsaid, the
         // letters of lg and ln, emmm generic speech.
         check_cases({
