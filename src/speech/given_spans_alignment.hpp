@@ -2,7 +2,8 @@
 // subtitle cues): SpeechAligner::align_file with given_sentence_cut in place of finding the pauses.
 // The re-estimation and the checks of a wrong text still see the whole recording, as they do
 // when the aligner cuts; only where each sentence is searched is the caller's. Defined in
-// speech_aligner.cpp, beside the passes it shares.
+// speech_aligner.cpp, beside SpeechAligner::align_file, whose flow (validate_transcript,
+// align_source) it shares.
 #ifndef TALKFACE_SPEECH_GIVEN_SPANS_ALIGNMENT_HPP
 #define TALKFACE_SPEECH_GIVEN_SPANS_ALIGNMENT_HPP
 
