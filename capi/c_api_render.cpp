@@ -2,6 +2,8 @@
 #include "c_api_guard.hpp"
 #include "c_api_handles.hpp"
 
+static_assert(TF_MAX_SVG_DECIMALS == talkface::kMaxSvgDecimals, "TF_MAX_SVG_DECIMALS");
+
 using talkface::capi::guard;
 using talkface::capi::animator_for;
 using talkface::capi::require_non_null;

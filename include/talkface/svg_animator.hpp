@@ -23,6 +23,10 @@
 namespace talkface {
 inline namespace v0 {
 
+/// The most digits after the point SvgOptions::decimals may ask for: past 6 a coordinate, in
+/// pixels, carries only noise.
+inline constexpr int kMaxSvgDecimals = 6;
+
 /// How a face is drawn. The canvas is the same for every state of one face, so frames line up.
 struct SvgOptions {
     /// Background layer colour; nullopt leaves the background transparent.
@@ -31,7 +35,7 @@ struct SvgOptions {
     Rgb clothes{0x2f, 0x4f, 0x7f};            ///< clothes colour
     FaceLook look = FaceLook::outlined;       ///< how the shapes are painted
     double stroke_width_in_d = 0.025;         ///< outline width, in units of d (FaceLook::outlined)
-    int decimals = 2;                         ///< digits after the point in coordinates (0..6)
+    int decimals = 2;                         ///< digits after the point in coordinates (0..kMaxSvgDecimals)
     /// Canvas size in pixels; 0 fits the face at any pose with a margin (about 4.4 d by 5.2 d).
     int width_px = 0;
     int height_px = 0;

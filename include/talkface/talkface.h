@@ -439,7 +439,10 @@ TF_API tf_status tf_svg_options_set_look(tf_svg_options *options, tf_face_look l
  * Errors: TF_ERR_INVALID_ARGUMENT if options is NULL (the value is checked when rendering). */
 TF_API tf_status tf_svg_options_set_stroke_width_in_d(tf_svg_options *options, double stroke_width_in_d);
 
-/* Sets the digits after the point in coordinates (0..6).
+/* The most digits after the point tf_svg_options_set_decimals may ask for. */
+#define TF_MAX_SVG_DECIMALS 6
+
+/* Sets the digits after the point in coordinates (0..TF_MAX_SVG_DECIMALS).
  * Errors: TF_ERR_INVALID_ARGUMENT if options is NULL (the value is checked when rendering). */
 TF_API tf_status tf_svg_options_set_decimals(tf_svg_options *options, int decimals);
 

@@ -26,8 +26,6 @@ namespace {
 constexpr double kAnimatedAt = 0.6;
 // Alignment's share of animate_talking_face(); animating is the rest.
 constexpr double kAlignmentShare = 0.9;
-// SvgOptions::decimals' range (svg_animator.hpp): past 6 digits a coordinate carries only noise.
-constexpr int kMaxSvgDecimals = 6;
 
 std::optional<std::pair<double, double>> parse_pair(const std::string& text, char separator) {
     std::istringstream in(text);
@@ -186,8 +184,11 @@ void add_stroke_width_option(CLI::App& command, double& stroke_width_in_d) {
 }
 
 void add_decimals_option(CLI::App& command, int& decimals) {
-    command.add_option("--decimals", decimals, "Digits after the point in the SVG's coordinates, 0..6")
-        ->check(CLI::Range(0, kMaxSvgDecimals))
+    command
+        .add_option("--decimals", decimals,
+                    "Digits after the point in the SVG's coordinates, 0.." +
+                        std::to_string(talkface::kMaxSvgDecimals))
+        ->check(CLI::Range(0, talkface::kMaxSvgDecimals))
         ->capture_default_str();
 }
 

@@ -21,11 +21,10 @@ inline namespace v0 {
 
 namespace {
 
-constexpr int kMaxDecimals = 6;
 void validate(const SvgOptions& options) {
     detail::check_face_look(options.look);
-    if (options.decimals < 0 || options.decimals > kMaxDecimals) {
-        throw InvalidArgument("decimals", "expected 0.." + std::to_string(kMaxDecimals) + ", found " +
+    if (options.decimals < 0 || options.decimals > kMaxSvgDecimals) {
+        throw InvalidArgument("decimals", "expected 0.." + std::to_string(kMaxSvgDecimals) + ", found " +
                                               std::to_string(options.decimals));
     }
     if (!std::isfinite(options.stroke_width_in_d) || options.stroke_width_in_d <= 0.0) {

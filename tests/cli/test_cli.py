@@ -190,3 +190,17 @@ def test_render_takes_the_outline_width_and_the_decimals(tmp_path):
         refused = run(*args, "-o", tmp_path / "refused.svg")
         assert refused.returncode == 2 and f"{args[1]}:" in refused.stderr, refused.stderr
     assert not (tmp_path / "refused.svg").exists()
+
+
+def test_the_decimals_range_is_the_librarys(tmp_path):
+    # The command checks --decimals itself (a usage error before anything is drawn); its range must
+    # be SvgOptions' (kMaxSvgDecimals, svg_animator.hpp), or a value between the two is refused by one only.
+    header = (SOURCE_DIR / "include" / "talkface" / "svg_animator.hpp").read_text()
+    most = int(re.search(r"kMaxSvgDecimals = (\d+);", header).group(1))
+    assert f"0..{most}" in run("render", "--help").stdout
+    drawn = run("render", "--decimals", most, "-o", "-")
+    assert drawn.returncode == 0, drawn.stderr
+    assert max(len(number.partition(".")[2]) for number in path_numbers(drawn.stdout)) == most
+    refused = run("render", "--decimals", most + 1, "-o", tmp_path / "refused.svg")
+    assert refused.returncode == 2 and "--decimals:" in refused.stderr, refused.stderr
+    assert not (tmp_path / "refused.svg").exists()

@@ -36,6 +36,9 @@ def test_the_flat_look_draws_no_outline_but_the_upper_lids(face):
 
 
 def test_out_of_range_option_is_named(face):
+    talkface.SvgAnimator(face, talkface.SvgOptions(decimals=talkface.kMaxSvgDecimals))
+    with pytest.raises(talkface.InvalidArgument, match=f"decimals: expected 0..{talkface.kMaxSvgDecimals}"):
+        talkface.SvgAnimator(face, talkface.SvgOptions(decimals=talkface.kMaxSvgDecimals + 1))
     with pytest.raises(talkface.InvalidArgument, match="decimals"):
         talkface.SvgAnimator(face, talkface.SvgOptions(decimals=99))
 

@@ -298,7 +298,9 @@ TEST_CASE("width_px and height_px set the size, the viewBox stays the face's") {
 TEST_CASE("out-of-range options are rejected naming the option") {
     auto make = [](SvgOptions options) { SvgAnimator animator(FaceModel::default_face(), options); };
     SvgOptions options;
-    options.decimals = 7;
+    options.decimals = kMaxSvgDecimals;
+    CHECK_NOTHROW(make(options));
+    options.decimals = kMaxSvgDecimals + 1;
     CHECK_THROWS_WITH_AS(make(options), doctest::Contains("decimals"), InvalidArgument);
     options.decimals = -1;
     CHECK_THROWS_WITH_AS(make(options), doctest::Contains("decimals"), InvalidArgument);

@@ -4,6 +4,7 @@
 namespace talkface::python {
 
 void bind_svg_animator(py::module_& m) {
+    m.attr("kMaxSvgDecimals") = kMaxSvgDecimals;
     py::enum_<FaceLook>(m, "FaceLook", "How a face's shapes are painted (SvgOptions.look, FrameOptions.look).")
         .value("outlined", FaceLook::outlined, "the thesis's cartoon: filled shapes with dark outlines (the default)")
         .value("flat", FaceLook::flat, "no outlines: flat fills told apart by colour, soft shades");
@@ -37,7 +38,7 @@ Args:
     draw_clothes (bool): draw the clothes layer (neck and shoulders).
     clothes (str): clothes colour "#rrggbb".
     stroke_width_in_d (float): outline width, in units of d (eyeball distance).
-    decimals (int): digits after the point in coordinates, 0..6.
+    decimals (int): digits after the point in coordinates, 0..kMaxSvgDecimals (6).
     width_px, height_px (int): canvas size, pixels; 0 fits the face at any pose with a margin.
     look (FaceLook): outlined (the thesis's cartoon, the default) or flat (no outlines).
 
@@ -53,7 +54,7 @@ Example:
         .def_readwrite("clothes", &SvgOptions::clothes, "clothes colour, \"#rrggbb\"")
         .def_readwrite("look", &SvgOptions::look, "how the shapes are painted (FaceLook)")
         .def_readwrite("stroke_width_in_d", &SvgOptions::stroke_width_in_d, "outline width, units of d")
-        .def_readwrite("decimals", &SvgOptions::decimals, "digits after the point (0..6)")
+        .def_readwrite("decimals", &SvgOptions::decimals, "digits after the point (0..kMaxSvgDecimals)")
         .def_readwrite("width_px", &SvgOptions::width_px, "canvas width, pixels (0 = fit)")
         .def_readwrite("height_px", &SvgOptions::height_px, "canvas height, pixels (0 = fit)")
         .def("__repr__", [](const SvgOptions& o) {

@@ -18,6 +18,8 @@ kMaxPoseAngleDeg: float
 # 79% of those >100 ms off; SpeechAligner).
 kLowAlignmentConfidence: float
 kGenericSpeechPinyin: str
+# The most digits after the point SvgOptions.decimals may ask for (6).
+kMaxSvgDecimals: int
 
 def version() -> str: ...
 
