@@ -1,10 +1,7 @@
 #include "speech/sentence_chains.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
-
-#include "speech/level_line.hpp"
 
 namespace talkface::detail {
 
@@ -26,15 +23,6 @@ constexpr std::size_t kRoomTailFrames = 3;
 // after a dip is speech (bench/ human speech: a quiet third-tone syllable after a closure, 15-25 dB
 // under the one before, rises 20-40 dB out of its closure; a tail's 25 ms frames ripple by 1-3 dB).
 constexpr float kTailRiseDb = 10.0f;
-// Past kTailFallDb a room's tail is surely ringing, which falls on a line at the room's own decay; the
-// ringing starts where the level, followed back, leaves that line drawn back by more than the
-// ringing's ripple (a tail's 25 ms frames ripple by 1-3 dB). The line is fitted to at most
-// kRingingFitFrames of the tail and at least kLeastRingingFitFrames: a shorter tail is the noise
-// floor's or a fade's. (bench/README.md Session 33 (room), the short kinds' rooms, tuning: 21 of 38
-// line ends within 5 frames, the mark alone 10.)
-constexpr float kRingingRippleDb = 4.0f;
-constexpr std::size_t kRingingFitFrames = 30;
-constexpr std::size_t kLeastRingingFitFrames = 8;
 // Past the end of a voice in a room, the search reaches only this far into the tail.
 constexpr std::size_t kTailEdgeFrames = 5;
 // What the silence at each edge of a recording cut to its sound may take: a phone's coder puts
@@ -129,10 +117,8 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
 // stretched to fill it) and the search gives it to the last vowel. Where the voice stops the level
 // falls at once far below the vowel's, and the tail only decays from there: speech in [first, end)
 // ends after its last frame less than kTailFallDb below the loudest frame of its last
-// kTailReferenceFrames, unless what lies after it rises again (a quiet syllable, not a tail), and
-// then back along the ringing's line to where the voice stops: a vowel that fades ends 8-16 dB under
-// the loudest frame, its ringing past kTailFallDb 10-50 frames later. In noise the floor stays above
-// that mark and nothing moves.
+// kTailReferenceFrames, unless what lies after it rises again (a quiet syllable, not a tail). In
+// noise the floor stays above that mark and nothing moves.
 std::size_t end_before_tail(const FeatureTrack& track, std::size_t first, std::size_t end) {
     if (end <= first + 1) return end;
     std::size_t loudest = end - 1;
@@ -149,21 +135,7 @@ std::size_t end_before_tail(const FeatureTrack& track, std::size_t first, std::s
         later_loudest_db = std::max(later_loudest_db, level_db);
         --trimmed;
     }
-    const std::size_t fit_end = std::min(end, trimmed + kRingingFitFrames);
-    if (fit_end < trimmed + kLeastRingingFitFrames) return trimmed;
-    const std::size_t fit_first = trimmed;
-    const LevelLine ringing = fit_level_line(track, kEnergyDb, fit_first, fit_end);
-    if (!(ringing.slope_db_per_frame < 0.0)) return trimmed;
-    auto off_line = [&](std::size_t t) {
-        return track.at(t, kEnergyDb) - ringing.at(static_cast<double>(t) - static_cast<double>(fit_first));
-    };
-    std::size_t ringing_first = trimmed;
-    while (ringing_first > loudest + 1 && std::abs(off_line(ringing_first - 1)) <= kRingingRippleDb)
-        --ringing_first;
-    // Only a voice that stops over the ringing ends where the line says; one whose fade passes under
-    // the line drawn back ends somewhere in it, as likely at the mark as anywhere.
-    return ringing_first > loudest + 1 && off_line(ringing_first - 1) > kRingingRippleDb ? ringing_first
-                                                                                         : trimmed;
+    return trimmed;
 }
 
 }  // namespace talkface::detail

@@ -44,8 +44,7 @@ std::vector<SentenceChain> group_chains(const Timeline& transcript, const Senten
 void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness, std::vector<SentenceChain>& chains);
 
 // SPEC: a sentence ends with its last sound. Where speech in [first, end) ends before a room's
-// tail: after its last frame less than a fixed fall below the loudest frame of its end, and then
-// before the tail's ringing, drawn back on its own decay, takes the level.
+// tail: after its last frame less than a fixed fall below the loudest frame of its end.
 std::size_t end_before_tail(const FeatureTrack& track, std::size_t first, std::size_t end);
 
 }  // namespace talkface::detail
