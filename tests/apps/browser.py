@@ -10,6 +10,7 @@ import shutil
 import subprocess
 import tempfile
 import time
+import wave
 
 from PIL import Image
 
@@ -171,3 +172,12 @@ class Browser:
     def screenshot(self):
         data = self.call("Page.captureScreenshot", format="png")["data"]
         return Image.open(io.BytesIO(base64.b64decode(data))).convert("RGB")
+
+
+def silent_wav(path, duration_s):
+    """Writes `duration_s` of silence, 8 kHz 8-bit mono: speech for a page whose timing is made up."""
+    with wave.open(str(path), "wb") as out:
+        out.setnchannels(1)
+        out.setsampwidth(1)
+        out.setframerate(8000)
+        out.writeframes(b"\x80" * int(8000 * duration_s))

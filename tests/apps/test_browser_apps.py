@@ -13,12 +13,11 @@ import os
 import pathlib
 import re
 import subprocess
-import wave
 
 import pytest
 
 import talkface
-from browser import CHROMIUM, Browser
+from browser import CHROMIUM, Browser, silent_wav
 
 CLI = os.environ["TALKFACE_CLI"]
 SPEECH_DIR = pathlib.Path(os.environ["TALKFACE_SPEECH_DIR"])
@@ -83,11 +82,7 @@ def long_caption(tmp_path_factory):
     timeline.sentences[0].start_s, timeline.sentences[0].end_s = 0.5, timeline.syllables[-1].end_s
     timeline.duration_s = timeline.syllables[-1].end_s + 0.5
     audio = folder / "news.wav"
-    with wave.open(str(audio), "wb") as out:
-        out.setnchannels(1)
-        out.setsampwidth(1)
-        out.setframerate(8000)
-        out.writeframes(b"\x80" * int(8000 * timeline.duration_s))
+    silent_wav(audio, timeline.duration_s)
     face = talkface.FaceModel.default()
     animation = talkface.animate(face, timeline, talkface.ExpressionSimulator(timeline, 3))
     options = talkface.WebPageOptions(app=talkface.WebPageApp.announcer, title="晚間新聞")
@@ -117,11 +112,7 @@ def long_book(tmp_path_factory):
     timeline.sentences = sentences
     timeline.duration_s = t + 0.5
     audio = folder / "book.wav"
-    with wave.open(str(audio), "wb") as out:
-        out.setnchannels(1)
-        out.setsampwidth(1)
-        out.setframerate(8000)
-        out.writeframes(b"\x80" * int(8000 * timeline.duration_s))
+    silent_wav(audio, timeline.duration_s)
     face = talkface.FaceModel.default()
     animation = talkface.animate(face, timeline, talkface.ExpressionSimulator(timeline, 3))
     options = talkface.WebPageOptions(app=talkface.WebPageApp.audiobook, title="春天的故事",

@@ -16,12 +16,11 @@ import pathlib
 import subprocess
 import threading
 import time
-import wave
 
 import pytest
 
 import talkface
-from browser import CHROMIUM, Browser
+from browser import CHROMIUM, Browser, silent_wav
 
 CLI = os.environ["TALKFACE_CLI"]
 FRAME_S = 1 / 25  # the pages' animation frame rate (LipSyncOptions)
@@ -87,14 +86,6 @@ def assert_face_follows_playing(browser, what, frames=20):
     assert all(from_shown < 0.001 for _, from_shown in samples), f"{what}: {samples}"
     lags = sorted(lag for lag, _ in samples)
     assert lags[0] >= -0.002 and lags[len(lags) // 2] < FRAME_S * 1.5, f"{what}: lags {lags}"
-
-
-def silent_wav(path, duration_s):
-    with wave.open(str(path), "wb") as out:
-        out.setnchannels(1)
-        out.setsampwidth(1)
-        out.setframerate(8000)
-        out.writeframes(b"\x80" * int(8000 * duration_s))
 
 
 @pytest.fixture(scope="module")
