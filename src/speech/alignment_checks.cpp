@@ -404,84 +404,130 @@ void check_missing_text(const Timeline& aligned, const FeatureTrack& track, cons
     }
 }
 
-void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProfile& loudness, const EmissionScores& scores,
-                std::size_t first_scored_frame, std::size_t sentence, const FrameSpan& span, const Timeline& transcript) {
-    // How much better frame t fits the best sound of speech than a pause.
-    const auto speech_gain = [&](std::size_t t) {
-        const std::size_t scored = t - first_scored_frame;
-        double best = -std::numeric_limits<double>::infinity();
-        for (int c = kSilence + 1; c < kPhoneClassCount; ++c) best = std::max(best, static_cast<double>(scores.at(scored, c)));
-        return best - static_cast<double>(scores.at(scored, kSilence));
-    };
+namespace {
+
+// How much better frame t fits the best sound of speech than a pause.
+double speech_gain(const EmissionScores& scores, std::size_t first_scored_frame, std::size_t t) {
+    const std::size_t scored = t - first_scored_frame;
+    double best = -std::numeric_limits<double>::infinity();
+    for (int c = kSilence + 1; c < kPhoneClassCount; ++c)
+        best = std::max(best, static_cast<double>(scores.at(scored, c)));
+    return best - static_cast<double>(scores.at(scored, kSilence));
+}
+
+// What the sentence's syllables sound like: how loud, and how much better than a pause they fit speech.
+struct SpokenLevels {
+    float speech_level_db = 0.0F;
+    double syllable_gain = 0.0;
+};
+
+SpokenLevels spoken_levels(const std::vector<AlignedStretch>& stretches, const LoudnessProfile& loudness,
+                           const EmissionScores& scores, std::size_t first_scored_frame) {
     std::vector<float> spoken_db;
     std::vector<double> spoken_gains;
     for (const auto& stretch : stretches) {
         if (stretch.is_pause) continue;
         for (std::size_t t = stretch.first_frame; t < stretch.end_frame; ++t) {
             spoken_db.push_back(loudness.activity_db[t]);
-            if (is_speech_frame(loudness, t)) spoken_gains.push_back(speech_gain(t));
+            if (is_speech_frame(loudness, t))
+                spoken_gains.push_back(speech_gain(scores, first_scored_frame, t));
         }
     }
-    float speech_level_db = loudness.activity_threshold_db;
-    if (!spoken_db.empty()) speech_level_db = upper_median(std::move(spoken_db));
+    SpokenLevels levels;
+    levels.speech_level_db = loudness.activity_threshold_db;
+    if (!spoken_db.empty()) levels.speech_level_db = upper_median(std::move(spoken_db));
     // Where the syllables themselves fit speech no better than a pause, the models cannot tell
     // the two apart, and loudness alone decides.
-    const double syllable_gain = spoken_gains.empty() ? 0.0 : mean_median(spoken_gains);
-    const auto sounds_like_speech = [&](std::size_t first, std::size_t end) {
-        if (!(syllable_gain > 0.0)) return true;
-        double gain = 0.0;
-        for (std::size_t t = first; t < end; ++t) gain += speech_gain(t);
-        return gain / static_cast<double>(end - first) >= kUnspokenSpeechLikenessShare * syllable_gain;
-    };
-    const auto is_unspoken_speech = [&](std::size_t t) {
-        return is_speech_frame(loudness, t) && loudness.activity_db[t] >= speech_level_db - kUnspokenSpeechBelowDb;
-    };
-    const auto frames_text = [](std::size_t first, std::size_t end) {
-        return format_fixed(static_cast<double>(first) * kFrameStepS, 2) + "-" +
-               format_fixed(static_cast<double>(end) * kFrameStepS, 2) + " s";
-    };
-    const auto syllable_text = [&](std::size_t index) {
-        return "\"" + transcript.syllables[index].text + "\" (" + transcript.syllables[index].pinyin + ")";
-    };
+    levels.syllable_gain = spoken_gains.empty() ? 0.0 : mean_median(spoken_gains);
+    return levels;
+}
+
+std::string frames_text(std::size_t first, std::size_t end) {
+    return format_fixed(static_cast<double>(first) * kFrameStepS, 2) + "-" +
+           format_fixed(static_cast<double>(end) * kFrameStepS, 2) + " s";
+}
+
+std::string syllable_text(const Timeline& transcript, std::size_t index) {
+    return "\"" + transcript.syllables[index].text + "\" (" + transcript.syllables[index].pinyin + ")";
+}
+
+// Refuses a syllable longer than any, and a row of syllables squeezed too short.
+void check_syllable_lengths_on_path(const std::vector<AlignedStretch>& stretches, std::size_t sentence,
+                                    const FrameSpan& span, const Timeline& transcript) {
     std::size_t short_in_row = 0;
     for (const auto& stretch : stretches) {
         if (stretch.is_pause) continue;
         const std::size_t length = stretch.end_frame - stretch.first_frame;
         if (length > kLongestSyllableFrames) {
-            throw AlignmentError(describe_sentence(sentence, span, transcript) + ": the syllable " + syllable_text(stretch.syllable) +
-                                 " would last " + frames_text(stretch.first_frame, stretch.end_frame) +
-                                 ", longer than any syllable; the audio has speech the transcript lacks here (a missing sentence?)");
+            throw AlignmentError(describe_sentence(sentence, span, transcript) + ": the syllable " +
+                                 syllable_text(transcript, stretch.syllable) + " would last " +
+                                 frames_text(stretch.first_frame, stretch.end_frame) +
+                                 ", longer than any syllable; the audio has speech the transcript lacks here "
+                                 "(a missing sentence?)");
         }
         short_in_row = length < kShortestSyllableFrames ? short_in_row + 1 : 0;
         if (short_in_row >= kMaxShortSyllablesInRow) {
             throw AlignmentError(describe_sentence(sentence, span, transcript) + ": the syllables up to " +
-                                 syllable_text(stretch.syllable) + " are squeezed into under 60 ms each (the last at " +
+                                 syllable_text(transcript, stretch.syllable) +
+                                 " are squeezed into under 60 ms each (the last at " +
                                  frames_text(stretch.first_frame, stretch.end_frame) +
                                  "); the transcript has syllables the audio lacks here (the wrong text?)");
         }
     }
-    for (const auto& stretch : stretches) {
-        const double limit_frames = stretch.is_pause ? kMaxUnspokenSpeechFrames : kMaxSilenceInSyllableFrames;
-        // The longest run (of a pause: the longest that sounds like speech) at or past the limit.
-        std::size_t run = 0, longest = 0, longest_end = 0;
-        for (std::size_t t = stretch.first_frame; t <= stretch.end_frame; ++t) {
-            const bool is_in_run =
-                t < stretch.end_frame && (stretch.is_pause ? is_unspoken_speech(t) : !is_speech_frame(loudness, t));
-            if (is_in_run) {
-                ++run;
-                continue;
-            }
-            if (run > longest && static_cast<double>(run) >= limit_frames && (!stretch.is_pause || sounds_like_speech(t - run, t))) {
-                longest = run;
-                longest_end = t;
-            }
-            run = 0;
+}
+
+// A run of frames in a stretch: where it ends and how long it is (0: none).
+struct FrameRun {
+    std::size_t end_frame = 0;
+    std::size_t length = 0;
+};
+
+// The stretch's longest run at or past its limit: of a pause, speech the transcript does not say
+// that sounds like speech; of a syllable, silence.
+FrameRun longest_run(const AlignedStretch& stretch, const LoudnessProfile& loudness,
+                     const EmissionScores& scores, std::size_t first_scored_frame,
+                     const SpokenLevels& levels) {
+    const auto sounds_like_speech = [&](std::size_t first, std::size_t end) {
+        if (!(levels.syllable_gain > 0.0)) return true;
+        double gain = 0.0;
+        for (std::size_t t = first; t < end; ++t) gain += speech_gain(scores, first_scored_frame, t);
+        return gain / static_cast<double>(end - first) >= kUnspokenSpeechLikenessShare * levels.syllable_gain;
+    };
+    const auto is_unspoken_speech = [&](std::size_t t) {
+        return is_speech_frame(loudness, t) &&
+               loudness.activity_db[t] >= levels.speech_level_db - kUnspokenSpeechBelowDb;
+    };
+    const double limit_frames = stretch.is_pause ? kMaxUnspokenSpeechFrames : kMaxSilenceInSyllableFrames;
+    std::size_t run = 0, longest = 0, longest_end = 0;
+    for (std::size_t t = stretch.first_frame; t <= stretch.end_frame; ++t) {
+        const bool is_in_run = t < stretch.end_frame &&
+                               (stretch.is_pause ? is_unspoken_speech(t) : !is_speech_frame(loudness, t));
+        if (is_in_run) {
+            ++run;
+            continue;
         }
-        if (longest == 0) continue;
-        const std::string where = format_fixed(static_cast<double>(longest_end - longest) * kFrameStepS, 2) + "-" +
-                                  format_fixed(static_cast<double>(longest_end) * kFrameStepS, 2) + " s";
-        const Syllable& syllable = transcript.syllables[stretch.syllable];
-        const std::string near = "\"" + syllable.text + "\" (" + syllable.pinyin + ")";
+        if (run > longest && static_cast<double>(run) >= limit_frames &&
+            (!stretch.is_pause || sounds_like_speech(t - run, t))) {
+            longest = run;
+            longest_end = t;
+        }
+        run = 0;
+    }
+    return {longest_end, longest};
+}
+
+}  // namespace
+
+void check_path(const std::vector<AlignedStretch>& stretches, const LoudnessProfile& loudness,
+                const EmissionScores& scores, std::size_t first_scored_frame, std::size_t sentence,
+                const FrameSpan& span, const Timeline& transcript) {
+    const SpokenLevels levels = spoken_levels(stretches, loudness, scores, first_scored_frame);
+    check_syllable_lengths_on_path(stretches, sentence, span, transcript);
+    for (const auto& stretch : stretches) {
+        const FrameRun longest = longest_run(stretch, loudness, scores, first_scored_frame, levels);
+        if (longest.length == 0) continue;
+        const std::string where = frames_text(longest.end_frame - longest.length, longest.end_frame);
+        const std::string near = syllable_text(transcript, stretch.syllable);
         if (stretch.is_pause) {
             throw AlignmentError(describe_sentence(sentence, span, transcript) + ": speech at " + where + ", after " + near +
                                  ", has no syllable of the transcript; is a sentence or a phrase missing from it?");

@@ -380,13 +380,11 @@ bool takes_text_whole(const SentenceChain& lenient, const std::vector<StateSegme
            });
 }
 
-void place_lenient(const SentenceChain& chain, std::size_t chain_index, const std::vector<StateSegment>& path,
-                   const std::vector<std::vector<SyllableFrames>>& other_frames, const std::vector<double>& held_out_gaps,
-                   const EmissionScores& scores,
-                   const FeatureTrack& track, const LoudnessProfile& loudness, Timeline& result,
-                   std::vector<SyllableEvidence>& evidence) {
-    const std::size_t count = chain.syllables.size();
-    std::vector<StateSegment> text_path;
+namespace {
+
+// The path's generic speech as marked places; the rest of the path, the text's, into `text_path`.
+std::vector<Marked> generic_speech_marks(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                                         std::vector<StateSegment>& text_path) {
     std::vector<Marked> marked;
     for (const StateSegment& segment : path) {
         const PhoneState& state = chain.states[segment.state];
@@ -396,77 +394,132 @@ void place_lenient(const SentenceChain& chain, std::size_t chain_index, const st
         }
         text_path.push_back(segment);
     }
-    place_syllables(chain, chain_index, text_path, other_frames, scores, track, result, evidence);
+    return marked;
+}
+
+// Adds to `marked` the syllables the path does not take whole and the outliers beside generic
+// speech, and sorts it by place.
+void add_syllable_marks(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                        const std::vector<double>& held_out_gaps, const EmissionScores& scores,
+                        std::vector<Marked>& marked) {
     const std::vector<SyllableFrames> frames = frames_on_path(chain, path);
     const std::vector<bool> is_whole = whole_syllables(chain, path);
-    for (std::size_t i = 0; i < count; ++i)
+    for (std::size_t i = 0; i < chain.syllables.size(); ++i)
         if (!is_whole[i]) marked.push_back({2 * i + 1, frames[i].first_frame, frames[i].end_frame});
     // Fitted on the whole path: beside generic speech the text's path alone would be silence.
     add_outliers_beside(syllable_fits(chain, path, scores, frames), is_whole, frames, held_out_gaps, marked);
     std::sort(marked.begin(), marked.end(), [](const Marked& a, const Marked& b) { return a.place < b.place; });
+}
+
+// Marks [begin, end) that join into one mismatch: their frames and the syllables among them.
+struct MarkedRun {
+    std::size_t end = 0;  // one past the run's last mark
+    std::size_t first_frame = std::numeric_limits<std::size_t>::max(), end_frame = 0;
+    std::size_t first_local = 0, local_count = 0;  // the chain's syllables in the run
+    std::size_t after_place = 0;                   // the run's last place
+};
+
+MarkedRun marked_run(const std::vector<Marked>& marked, std::size_t begin, std::size_t count) {
+    MarkedRun run;
+    // Neighbouring places join; two skipped syllables are neighbours across the generic
+    // speech between them that the path did not take.
+    run.end = begin + 1;
+    while (run.end < marked.size() &&
+           (marked[run.end].place == marked[run.end - 1].place + 1 ||
+            (marked[run.end].place == marked[run.end - 1].place + 2 && marked[run.end].place % 2 == 1)))
+        ++run.end;
+    run.first_local = count;
+    for (std::size_t m = begin; m < run.end; ++m) {
+        run.first_frame = std::min(run.first_frame, marked[m].first_frame);
+        run.end_frame = std::max(run.end_frame, marked[m].end_frame);
+        if (marked[m].place % 2 == 1) {
+            run.first_local = std::min(run.first_local, marked[m].place / 2);
+            ++run.local_count;
+        }
+    }
+    run.after_place = marked[run.end - 1].place;
+    return run;
+}
+
+// Where syllables the speech leaves out stand: an instant, the end of the text's path's last
+// syllable before `place`, where the text's path goes on (0 if none is).
+std::size_t instant_before(const SentenceChain& chain, const std::vector<StateSegment>& text_path,
+                           std::size_t place) {
+    std::size_t instant = 0;
+    for (const StateSegment& segment : text_path) {
+        const PhoneState& state = chain.states[segment.state];
+        if (is_syllable_state(state) && 2 * state.syllable + 1 < place) instant = segment.end_frame;
+    }
+    return instant;
+}
+
+// The run's syllables, unsaid, spread over its loudness's boundaries and left unmeasured; the
+// mismatch names them.
+void spread_unsaid_syllables(const SentenceChain& chain, const MarkedRun& run, std::size_t offset,
+                             const FeatureTrack& track, const LoudnessProfile& loudness, Timeline& result,
+                             std::vector<SyllableEvidence>& evidence, TextMismatch& mismatch) {
+    const std::size_t global = chain.syllable_indices[run.first_local];
+    mismatch.first_syllable = global;
+    mismatch.syllable_count = run.local_count;
+    mismatch.expected_text = joined_text(result, global, run.local_count);
+    const auto bounds =
+        loudness_boundaries(loudness, offset + run.first_frame, offset + run.end_frame, run.local_count);
+    for (std::size_t k = 0; k < run.local_count; ++k) {
+        Syllable& syllable = result.syllables[global + k];
+        syllable.start_s = std::min(track.duration_s, frame_time_s(bounds[k]));
+        syllable.end_s = std::min(track.duration_s, frame_time_s(bounds[k + 1]));
+        syllable.final_start_s = syllable.start_s + 0.3 * (syllable.end_s - syllable.start_s);
+        syllable.confidence = 0.0;
+        // Not measured: set_confidences leaves it at 0.
+        evidence[global + k].is_measured = false;
+    }
+}
+
+std::string mismatch_warning(const TextMismatch& mismatch, std::size_t sentence) {
+    return "sentence " + std::to_string(sentence + 1) + " at " + format_fixed(mismatch.start_s, 2) + "-" +
+           format_fixed(mismatch.end_s, 2) + " s: " +
+           (mismatch.syllable_count > 0 ? "the speech does not say \"" + mismatch.expected_text + "\""
+                                        : std::string("speech the transcript lacks")) +
+           " (lenient alignment: fitted as generic speech, the mouth follows its loudness)";
+}
+
+}  // namespace
+
+void place_lenient(const SentenceChain& chain, std::size_t chain_index, const std::vector<StateSegment>& path,
+                   const std::vector<std::vector<SyllableFrames>>& other_frames,
+                   const std::vector<double>& held_out_gaps, const EmissionScores& scores,
+                   const FeatureTrack& track, const LoudnessProfile& loudness, Timeline& result,
+                   std::vector<SyllableEvidence>& evidence) {
+    const std::size_t count = chain.syllables.size();
+    std::vector<StateSegment> text_path;
+    std::vector<Marked> marked = generic_speech_marks(chain, path, text_path);
+    place_syllables(chain, chain_index, text_path, other_frames, scores, track, result, evidence);
+    add_syllable_marks(chain, path, held_out_gaps, scores, marked);
 
     const std::size_t offset = chain.searched.first_frame;
     auto time_s = [&](std::size_t frame) {
         return std::min(track.duration_s, frame_time_s(offset + frame));
     };
     for (std::size_t g = 0; g < marked.size();) {
-        // Neighbouring places join; two skipped syllables are neighbours across the generic
-        // speech between them that the path did not take.
-        std::size_t h = g + 1;
-        while (h < marked.size() && (marked[h].place == marked[h - 1].place + 1 ||
-                                     (marked[h].place == marked[h - 1].place + 2 && marked[h].place % 2 == 1)))
-            ++h;
-        std::size_t first = std::numeric_limits<std::size_t>::max(), end = 0;
-        std::size_t first_local = count, local_count = 0;
-        for (std::size_t m = g; m < h; ++m) {
-            first = std::min(first, marked[m].first_frame);
-            end = std::max(end, marked[m].end_frame);
-            if (marked[m].place % 2 == 1) {
-                first_local = std::min(first_local, marked[m].place / 2);
-                ++local_count;
-            }
-        }
-        const std::size_t after_place = marked[h - 1].place;
-        g = h;
-        if (first >= end) {
-            // Syllables the speech leaves out: an instant, where the text's path goes on.
-            first = end = 0;
-            for (const StateSegment& segment : text_path) {
-                const PhoneState& state = chain.states[segment.state];
-                if (is_syllable_state(state) && 2 * state.syllable + 1 < marked[g - 1].place) first = end = segment.end_frame;
-            }
-        }
+        MarkedRun run = marked_run(marked, g, count);
+        g = run.end;
+        if (run.first_frame >= run.end_frame)
+            run.first_frame = run.end_frame = instant_before(chain, text_path, run.after_place);
         TextMismatch mismatch;
-        mismatch.start_s = time_s(first);
-        mismatch.end_s = time_s(end);
-        mismatch.loudness = loudness_envelope(loudness, offset + first, offset + end);
-        if (local_count > 0) {
-            const std::size_t global = chain.syllable_indices[first_local];
-            mismatch.first_syllable = global;
-            mismatch.syllable_count = local_count;
-            mismatch.expected_text = joined_text(result, global, local_count);
-            const auto bounds = loudness_boundaries(loudness, offset + first, offset + end, local_count);
-            for (std::size_t k = 0; k < local_count; ++k) {
-                Syllable& syllable = result.syllables[global + k];
-                syllable.start_s = std::min(track.duration_s, frame_time_s(bounds[k]));
-                syllable.end_s = std::min(track.duration_s, frame_time_s(bounds[k + 1]));
-                syllable.final_start_s = syllable.start_s + 0.3 * (syllable.end_s - syllable.start_s);
-                syllable.confidence = 0.0;
-                // Not measured: set_confidences leaves it at 0.
-                evidence[global + k].is_measured = false;
-            }
+        mismatch.start_s = time_s(run.first_frame);
+        mismatch.end_s = time_s(run.end_frame);
+        mismatch.loudness = loudness_envelope(loudness, offset + run.first_frame, offset + run.end_frame);
+        if (run.local_count > 0) {
+            spread_unsaid_syllables(chain, run, offset, track, loudness, result, evidence, mismatch);
         } else {
-            mismatch.first_syllable = after_place / 2 < count ? chain.syllable_indices[after_place / 2]
-                                                              : chain.syllable_indices.back() + 1;
+            mismatch.first_syllable = run.after_place / 2 < count
+                                          ? chain.syllable_indices[run.after_place / 2]
+                                          : chain.syllable_indices.back() + 1;
         }
-        const std::size_t sentence = mismatch.syllable_count > 0 ? result.syllables[mismatch.first_syllable].sentence
-                                                                 : chain.syllables[std::min(after_place / 2, count - 1)]->sentence;
-        result.warnings.push_back(
-            "sentence " + std::to_string(sentence + 1) + " at " + format_fixed(mismatch.start_s, 2) + "-" +
-            format_fixed(mismatch.end_s, 2) + " s: " +
-            (mismatch.syllable_count > 0 ? "the speech does not say \"" + mismatch.expected_text + "\""
-                                         : std::string("speech the transcript lacks")) +
-            " (lenient alignment: fitted as generic speech, the mouth follows its loudness)");
+        const std::size_t sentence =
+            mismatch.syllable_count > 0 ? result.syllables[mismatch.first_syllable].sentence
+                                        : chain.syllables[std::min(run.after_place / 2, count - 1)]->sentence;
+        result.warnings.push_back(mismatch_warning(mismatch, sentence));
         result.mismatches.push_back(std::move(mismatch));
     }
     if (!marked.empty()) set_fit_beside(chain, path, scores, result, evidence);
