@@ -106,6 +106,10 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     {"ryzen", "rui4 long2"},
     {"brics", "jin1 zhuan1"},
     {"asean", "dong1 meng2"},
+    // Session 34: CRISPR, the gene-editing system, which the dictionary lacks (spelled, seven letters), is
+    // said as English says it, crisper, and as Mandarin science news writes that, 克里斯珀; the dictionary's
+    // crisper maps to qi si pa.
+    {"crispr", "ke4 li3 si1 po4"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

@@ -4,6 +4,7 @@
 
 #include "text/dates_and_times.hpp"
 #include "text/digit_codes.hpp"
+#include "text/home_layouts.hpp"
 #include "text/number_words.hpp"
 #include "text/written_numbers.hpp"
 
@@ -144,8 +145,9 @@ std::optional<SaidNumber> say_as_name(const std::string& whole, const NumberCont
     SaidNumber said;
     const bool is_mobile = whole.size() == 11 && whole.front() == '1';
     // A phone word earlier in the sentence does not make an amount a phone number (这款手机售价5999元).
-    const bool counts = !context.is_train && (context.has_unit || takes_liang(context.next) ||
-                                              context.next == '%' || context.after_times);
+    const bool counts =
+        !context.is_train && (context.has_unit || (takes_liang(context.next) && !context.next_heads_word) ||
+                              context.next == '%' || context.after_times);
     if ((context.is_phone && whole.size() >= 3 && !counts) || is_mobile) {
         said.words = digit_words(whole, true);
         said.is_dialled = true;
@@ -223,7 +225,8 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
     // A currency sign before it is the money's unit said after it ($2 两美元, HK$2 两港元, ¥2 两元), as
     // 2美元 and 2元 are said (session 32: 二, read as a bare number).
     if (whole == "2" && !context.is_ordinal && !context.is_model &&
-        (context.has_unit || context.has_currency || takes_liang(context.next) || context.measures_degrees)) {
+        (context.has_unit || context.has_currency || takes_liang(context.next) || context.measures_degrees ||
+         context.counts_in_layout)) {
         said.words = "两";
         return said;
     }
@@ -305,6 +308,17 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
                               !number.has_point && !is_one_of(value_at(text, number.end), U"厘公分毫");
     context.is_hundredths =
         start >= 2 && (text[start - 1].value == U'秒' || after_metres) && is_digit_at(text, start - 2);
+    // 男 and 女 count people (2男3女 两男三女) where they stand alone; a character after them other than a
+    // numeral makes a word of them (男子 女单 男篮), which the number does not count: 9秒58男子100米 is a
+    // sprint's hundredths and the men's race (session 34: 五十八, a count of men). A pair counts
+    // (3男2女组合).
+    const auto sex = value_at(text, number.end);
+    const auto after_sex = value_at(text, number.end + 1);
+    context.next_heads_word = is_one_of(sex, U"男女") && is_han(after_sex) &&
+                              !is_one_of(after_sex, U"一二两兩三四五六七八九十男女") &&
+                              !(start > 0 && is_one_of(text[start - 1].value, U"男女"));
+    context.counts_in_layout =
+        sign_words.empty() && currency == nullptr && counts_in_layout(text, start, number);
     context.is_grade = context.is_model && is_filter_grade(text, start, number.whole);
     context.is_span_of_years = counts_years(text, start, number);
     context.is_service_call = is_service_call(text, start, number.end);

@@ -270,12 +270,51 @@ std::optional<SpokenForm> read_dimensions(const std::vector<CodePoint>& text, st
     return form;
 }
 
+namespace {
+
+// A rate per a power of ten, as health and population news write it (发病率为3.2/10万 十万分之三点二,
+// 1/100万 百万分之一, 死亡率5.6/1000 千分之五点六): the denominator first, its 万 or 亿 with it, then 分之
+// and the rate, which may have a point where the power is 100 or more, or has its 万 or 亿 (session 34:
+// 三点二十万, the slash unsaid, and 十分之一万). Other denominators keep a fraction's whole numerator
+// (评分4.5/5, 9.5/10 are marks out of a whole, no rate).
+std::optional<SpokenForm> read_rate_per_power_of_ten(const WrittenNumber& number,
+                                                     const std::string& sign_words,
+                                                     const WrittenNumber& denominator, char32_t after) {
+    const bool is_power_of_ten = !denominator.has_point && !denominator.has_separators &&
+                                 denominator.whole.front() == '1' &&
+                                 denominator.whole.find_first_not_of('0', 1) == std::string::npos;
+    const bool has_magnitude = is_one_of(after, U"万萬亿億");
+    if (!is_power_of_ten || !(has_magnitude || (number.has_point && denominator.whole.size() > 2)))
+        return std::nullopt;
+    // A power of ten before 分之 drops its 一, as the rate is said (千分之五, 百万分之一, 万分之三).
+    auto said_denominator = say_number(denominator, {});
+    constexpr std::string_view kOne = "一";
+    if (said_denominator.words.rfind(kOne, 0) == 0) said_denominator.words.erase(0, kOne.size());
+    const auto said_rate = say_number(number, {});
+    SpokenForm form;
+    form.words = sign_words + said_denominator.words +
+                 (!has_magnitude              ? ""
+                  : is_one_of(after, U"万萬") ? "万"
+                                              : "亿") +
+                 "分之" + said_rate.words;
+    append_warning(form, said_denominator.warning);
+    append_warning(form, said_rate.warning);
+    form.end = denominator.end + (has_magnitude ? 1 : 0);
+    return form;
+}
+
+}  // namespace
+
 std::optional<SpokenForm> read_slashed_pair(const std::vector<CodePoint>& text, std::size_t start,
                                             const WrittenNumber& number, const std::string& sign_words,
                                             const Currency* currency) {
-    if (value_at(text, number.end) != '/' || !is_digit_at(text, number.end + 1) || number.has_point)
-        return std::nullopt;
+    if (value_at(text, number.end) != '/' || !is_digit_at(text, number.end + 1)) return std::nullopt;
     const auto denominator = parse_number(text, number.end + 1);
+    if (currency == nullptr)
+        if (auto rate =
+                read_rate_per_power_of_ten(number, sign_words, denominator, value_at(text, denominator.end)))
+            return rate;
+    if (number.has_point) return std::nullopt;
     if (const auto pressure = sign_words.empty() && currency == nullptr
                                   ? blood_pressure_unit(text, start, denominator.end)
                                   : std::nullopt) {

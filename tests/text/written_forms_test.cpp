@@ -2589,4 +2589,27 @@ TEST_SUITE("written forms") {
             {"√2", "根号二"},
         });
     }
+
+    TEST_CASE(
+        "a home's layout, a rate per a power of ten, a sprint's hundredths before the men's race and CRISPR "
+        "are said as news reads them") {
+        // The first rows failed on main 8eff8bb (session 34, dev36): a layout's 2 二 (三室二厅二卫), the
+        // slash of a rate unsaid (三点二十万), 五十八 counting men, CRISPR spelled.
+        check_cases({
+            {"3室2厅2卫", "三室两厅两卫"},
+            {"该户型为2室1厅1卫", "该户型为两室一厅一卫"},
+            {"1梯2户", "一梯两户"},
+            {"3房2廳2衛", "三房兩廳兩衛"},
+            {"发病率为3.2/10万", "发病率为十万分之三点二"},
+            {"1/100万", "百万分之一"},
+            {"死亡率为5.6/1000", "死亡率为千分之五点六"},
+            {"9秒58男子100米", "九秒五八男子一百米"},
+            {"CRISPR技术", "ke li si po技术"},
+            // The limits: a part alone is a name, a pair of sexes counts, a fraction of a small whole keeps
+            // its numerator whole, and a mark out of ten is no rate.
+            {"影院2厅", "影院二厅"},
+            {"3男2女组合", "三男两女组合"},
+            {"1/10", "十分之一"},
+        });
+    }
 }
