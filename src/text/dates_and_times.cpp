@@ -253,6 +253,21 @@ bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNum
                                    "高考", "中考", "考研", "国考", "國考", "学测", "學測"});
 }
 
+bool names_era_year(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
+    return !number.has_point && !number.has_separators && number.whole.size() == 3 &&
+           value_at(text, number.end) == U'年' &&
+           ends_with_any(text_before(text, start, true), {"公元", "公元前"});
+}
+
+bool names_year_in_title(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
+    if (number.has_point || number.has_separators || number.whole.size() != 4 ||
+        !starts_with_any(number.whole, {"19", "20"}) || !is_one_of(value_at(text, number.end), U"》〉」"))
+        return false;
+    if (start == 0) return false;
+    const auto before = text[start - 1].value;
+    return !is_one_of(before, U"《〈「") && !is_ascii_letter(before) && !is_digit_at(text, start - 1);
+}
+
 bool names_year_after_mark(const std::vector<CodePoint>& text, std::size_t start,
                            const WrittenNumber& number) {
     const auto& digits = number.whole;

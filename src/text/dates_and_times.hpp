@@ -63,6 +63,16 @@ bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNum
 bool names_year_after_mark(const std::vector<CodePoint>& text, std::size_t start,
                            const WrittenNumber& number);
 
+// A year of three digits after 公元 or 公元前 and before 年 (公元前221年 公元前二二一年, 公元618年
+// 公元六一八年), said digit by digit as history teachers and documentaries say it (session 33: counted,
+// 二百二十一); four digits after 公元前 count (公元前2070年 两千零七十年), as counts_years says.
+bool names_era_year(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
+
+// A year from 19 or 20 closing a title's name after a word (《歌手2024》 歌手二零二四, 《乘风2023》), as a
+// show's season named by its year is said (session 34: counted, 两千零二十四); a title of the digits alone
+// (《1984》) is a book's number and counts.
+bool names_year_in_title(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
+
 // The dash or ~ at text[i] between a year's quarters or halves (2024Q1-Q3 二零二四 Q 一到 Q 三, Q2~Q4,
 // H1-H2): a range, said 到 as a range of numbers is (session 30: unsaid, Q 一 Q 三).
 bool joins_periods(const std::vector<CodePoint>& text, std::size_t i);

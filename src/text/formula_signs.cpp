@@ -428,11 +428,21 @@ namespace talkface::detail {
 
 namespace {
 
-// A logarithm's number from text[k] (a space before it skipped), said after `before` and before `after`
-// (以二为底 八 的对数, 一百 的常用对数); nullopt where no number starts there or a letter follows it.
+// A logarithm's number or letter from text[k] (a space before it skipped), said after `before` and before
+// `after` (以二为底 八 的对数, 一百 的常用对数, 以三为底 x 的对数); nullopt where neither starts there, a
+// letter follows the number, or the letter starts a word.
 std::optional<SpokenForm> said_logarithm(const std::vector<CodePoint>& text, std::size_t k,
                                          const std::string& before, std::string_view after) {
     if (value_at(text, k) == ' ') ++k;
+    // A variable, one letter (log₃x, log_2 n, lnx): said by its name, which the form's words may hold
+    // (session 33: the letters of log, lo ge, and the letter after them).
+    if (is_ascii_letter(value_at(text, k)) && !is_ascii_letter(value_at(text, k + 1)) &&
+        !is_digit_at(text, k + 1)) {
+        SpokenForm form;
+        form.words = before + std::string(text[k].text) + std::string(after);
+        form.end = k + 1;
+        return form;
+    }
     if (!is_digit_at(text, k)) return std::nullopt;
     const auto argument = parse_number(text, k);
     if (is_ascii_letter(value_at(text, argument.end))) return std::nullopt;

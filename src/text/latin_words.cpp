@@ -110,6 +110,11 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     // said as English says it, crisper, and as Mandarin science news writes that, 克里斯珀; the dictionary's
     // crisper maps to qi si pa.
     {"crispr", "ke4 li3 si1 po4"},
+    // Session 34: control, the key Ctrl names, as Mandarin speakers say it, 肯戳: English tr is an affricate
+    // Mandarin hears as ch (Trump 川普); the mapping drops the r (ken tou). Git, which the dictionary lacks
+    // (generic speech), is 吉特, as Mandarin tutorials say it (GitHub ji te ha bu).
+    {"control", "ken3 chuo1"},
+    {"git", "ji2 te4"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers
@@ -250,6 +255,57 @@ std::optional<std::vector<std::string>> english_word_syllables(std::string_view 
     std::vector<std::string> syllables;
     append_words(syllables, *found);
     return syllables;
+}
+
+bool expands_abbreviation(std::string_view word, const std::vector<std::string>& syllables) {
+    return syllables.size() > word.size();
+}
+
+std::optional<std::size_t> word_after_h(std::string_view word) {
+    constexpr std::size_t kShortestWord = 3;
+    const std::string lower = ascii_lower_case(word);
+    for (std::size_t h = 2; h + kShortestWord <= lower.size(); ++h) {
+        if (lower[h] != 'h' || lower[h - 1] == 'h' || is_vowel_at(lower, h - 1)) continue;
+        bool has_vowel = false;
+        for (std::size_t i = 0; i < h; ++i) has_vowel = has_vowel || is_vowel_at(lower, i);
+        if (has_vowel && english_word_syllables(std::string_view(lower).substr(h))) return h;
+    }
+    return std::nullopt;
+}
+
+std::optional<std::vector<std::string>> two_word_syllables(std::string_view word, std::size_t shortest_part) {
+    std::optional<std::vector<std::string>> best;
+    std::size_t best_imbalance = word.size();
+    for (auto split = word.size() < shortest_part ? 0 : word.size() - shortest_part; split >= shortest_part;
+         --split) {
+        const auto imbalance =
+            split > word.size() - split ? 2 * split - word.size() : word.size() - 2 * split;
+        if (best && imbalance >= best_imbalance) continue;
+        auto first = english_word_syllables(word.substr(0, split));
+        if (!first) continue;
+        auto second = english_word_syllables(word.substr(split));
+        if (!second) continue;
+        first->insert(first->end(), second->begin(), second->end());
+        best = std::move(first);
+        best_imbalance = imbalance;
+    }
+    return best;
+}
+
+std::optional<std::vector<std::string>> capitals_of_words(std::string_view word) {
+    constexpr std::size_t kShortestWord = 3;
+    constexpr std::size_t kShortestWordAfterLetters = 4;
+    constexpr std::size_t kMostLetters = 3;
+    if (auto words = two_word_syllables(word, kShortestWord)) return words;
+    for (std::size_t letters = 1;
+         letters <= kMostLetters && letters + kShortestWordAfterLetters <= word.size(); ++letters) {
+        if (auto rest = english_word_syllables(word.substr(letters))) {
+            auto syllables = letter_syllables(word.substr(0, letters));
+            syllables.insert(syllables.end(), rest->begin(), rest->end());
+            return syllables;
+        }
+    }
+    return std::nullopt;
 }
 
 std::optional<std::vector<std::string>> letter_and_word_syllables(std::string_view word) {

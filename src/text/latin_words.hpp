@@ -28,6 +28,26 @@ std::optional<std::vector<std::string>> english_word_syllables(std::string_view 
 // the word is not so made.
 std::optional<std::vector<std::string>> letter_and_word_syllables(std::string_view word);
 
+// True where the dictionary's syllables for `word` say more than its letters would (etc ai te sai te e, et
+// cetera): an abbreviation the dictionary expands, which a name typed in a path or an address is not (/etc/
+// hosts: E T C, as presenters spell it; session 33: et cetera).
+bool expands_abbreviation(std::string_view word, const std::vector<std::string>& syllables);
+
+// Where a word the dictionary lacks is two words at an h after a consonant: the h's index where the letters
+// before it hold a vowel and from the h on the dictionary has a word of three letters or more (github: git
+// hub; spelled, the h went with the t, gi thub); nullopt elsewhere.
+std::optional<std::size_t> word_after_h(std::string_view word);
+
+// `word` as two words the dictionary has, each `shortest_part` letters or more, cut where the two are nearest
+// in length and, among those, with the longer first part (Facebook face book, Photoshop photo shop, not
+// photos hop): their syllables, or nullopt.
+std::optional<std::vector<std::string>> two_word_syllables(std::string_view word, std::size_t shortest_part);
+
+// A word in capitals the dictionary lacks, made of two words it has of three letters or more (BLACKPINK black
+// pink; the most even cut), or of one to three letters and a word of four letters or more (TFBOYS T F boys):
+// the letters' names and the words' syllables; nullopt where it is neither.
+std::optional<std::vector<std::string>> capitals_of_words(std::string_view word);
+
 // The syllables of a number said in English, as Mandarin speakers say No.1 (number one): 0 to 99
 // as English number words (twelve, forty two), a longer number digit by digit (one oh one).
 // `digits` are ASCII 0-9, at least one.

@@ -343,7 +343,8 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
     context.names_year =
         sign_words.empty() && currency == nullptr && !context.is_ordinal &&
         (names_year_before_word(text, number) || lists_year(text, number) ||
-         names_short_year(text, start, number) || names_year_after_mark(text, start, number));
+         names_short_year(text, start, number) || names_year_after_mark(text, start, number) ||
+         names_era_year(text, start, number) || names_year_in_title(text, start, number));
     return context;
 }
 

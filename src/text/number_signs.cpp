@@ -35,12 +35,14 @@ bool follows_game_attribute(const std::vector<CodePoint>& text, std::size_t star
 
 // A reward a game or an app gives for an action (签到+20金币, 击杀+1, 邀请好友+50钻石, 每日登入+10鑽): the +
 // is 加, as players read it (session 33: 正, a value's sign). The action ends the words before the sign, or
-// the reward is named after the count (金币, 钻石, 经验, 积分), what is won and not a value that rises.
+// the reward is named after the count (金币, 钻石, 经验, 积分, and points, 分: 答对一题+5分, 进球+1分;
+// session 34: 正), what is won and not a value that rises.
 bool rewards_action(const std::vector<CodePoint>& text, std::size_t start) {
     constexpr std::string_view kActions[] = {"签到", "簽到", "登录", "登錄", "登入", "击杀", "擊殺",
                                              "助攻", "推塔", "拿龙", "拿龍", "升级", "升級", "通关",
                                              "通關", "任务", "任務", "分享", "点赞", "點讚"};
-    constexpr std::string_view kRewards[] = {"金币", "金幣", "钻", "鑽", "经验", "經驗", "积分", "積分"};
+    constexpr std::string_view kRewards[] = {"金币", "金幣", "钻",   "鑽", "经验",
+                                             "經驗", "积分", "積分", "分"};
     if (ends_with_any(text_before(text, start, true), kActions)) return true;
     auto end = start + 1;
     while (is_digit_at(text, end)) ++end;

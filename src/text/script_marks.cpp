@@ -140,14 +140,20 @@ bool is_field_name(std::string_view name) {
     // A seat's number names a player (1号：, 12号：).
     const auto digits = name.find_first_not_of("0123456789");
     if (digits > 0 && name.substr(digits) == "号") return false;
+    // A worked example's number (例2：, 例12：) heads what follows, as a figure's does.
+    if (starts_with_any(name, {"例"}) && name.size() > std::string_view("例").size() &&
+        name.find_first_not_of("0123456789", std::string_view("例").size()) == std::string::npos)
+        return true;
     // A form's field or a notice's heading names a thing, and a Chinese compound's head is its last
     // morpheme: 收件地址 联系电话 错误代码 本轮得分 当前版本 营业时间 are an address, a number, a code, a
     // score, a version and a time whatever comes before. A speaker's label names a person or role
     // (主持人 记者 嘉宾 队友 小明 A), whose heads are none of these.
-    return ends_with_any(name, {"址", "号", "號", "码", "碼", "话", "話", "线", "線", "间", "間", "期",
-                                "限", "价", "價", "格", "量", "分", "名", "数", "數", "点", "點", "率",
-                                "额", "額", "本", "标", "標", "励", "勵", "榜", "法", "步", "课", "課",
-                                "轮", "輪", "报", "報", "赛", "賽", "态", "態", "型", "品"}) ||
+    return ends_with_any(name, {"址", "号", "號", "码", "碼", "话", "話", "线", "線", "间", "間", "期", "限",
+                                "价", "價", "格", "量", "分", "名", "数", "數", "点", "點", "率", "额", "額",
+                                "本", "标", "標", "励", "勵", "榜", "法", "步", "课", "課", "轮", "輪", "报",
+                                "報", "赛", "賽", "态", "態", "型", "品",
+                                // A question's kind (判断题 选择题 填空题 例题; session 34: a label).
+                                "题", "題"}) ||
            // Fields and headings whose heads also end roles (编: 小编 主编, 机: 司机, 警: 民警), or are no
            // attribute, named whole.
            ends_with_any(name, {"邮编", "郵編", "手机", "手機", "预警", "預警", "计算", "計算", "方程",
@@ -163,6 +169,20 @@ struct Label {
     std::string name;
     ScriptMark mark;
 };
+
+// A colon that introduces a formula (甲烷燃烧：CH4+2O2=CO2+2H2O, 化简：√12=2√3): the line goes on with a term
+// (a letter, a digit, a bracket, a sign before one) and holds a relation or a reaction's arrow. What is named
+// before it is the formula's heading, no speaker, whose turn is words (session 33: in a passage of such lines
+// the headings were taken for labels and left out).
+bool introduces_formula(const std::vector<CodePoint>& text, std::size_t after_colon) {
+    auto k = after_colon;
+    while (k < text.size() && is_line_space(text[k].value)) ++k;
+    const auto first = value_at(text, k);
+    if (!(is_ascii_letter(first) || is_digit_at(text, k) || is_one_of(first, U"(（√-－+"))) return false;
+    for (; k < text.size() && text[k].value != '\n'; ++k)
+        if (is_relation_sign(text[k].value) || is_one_of(text[k].value, U"＝→⇌⟶")) return true;
+    return false;
+}
 
 // The label that starts the line at text[start], if it has one.
 std::optional<Label> label_at(const std::vector<CodePoint>& text, std::size_t start) {
@@ -182,6 +202,7 @@ std::optional<Label> label_at(const std::vector<CodePoint>& text, std::size_t st
         text[k + 1].value >= '0' && text[k + 1].value <= '9') {
         return std::nullopt;
     }
+    if (introduces_formula(text, k + 1)) return std::nullopt;
     auto end = k + 1;
     while (end < text.size() && is_line_space(text[end].value)) ++end;
     return Label{name, {start, end, true}};

@@ -149,7 +149,8 @@ private:
     // flight's number keeps the announcers' 幺 (複興號G1次: the mainland's trains, as announced).
     std::string with_local_one(std::string words) const;
 
-    // The syllables of a form's reading in words (二零二六年), each character read by the tables.
+    // The syllables of a form's reading in words (二零二六年), each character read by the tables, and a
+    // Latin letter among them by its name (以三为底x的对数).
     std::vector<Syllable> read_words(const std::string& words) const;
 
     void check_table_reading(const HanCharacter& character, const std::string& pinyin) const;

@@ -11,6 +11,7 @@
 #include "common/internal_error.hpp"
 #include "text/aspect_particle.hpp"
 #include "text/code_points.hpp"
+#include "text/latin_words.hpp"
 #include "text/return_verb.hpp"
 #include "text/script_variant.hpp"
 #include "text/word_segmentation.hpp"
@@ -77,20 +78,33 @@ std::string TranscriptReader::with_local_one(std::string words) const {
 
 std::vector<Syllable> TranscriptReader::read_words(const std::string& words) const {
     const auto characters = decode_utf8(words, "<reading>");
-    std::vector<HanCharacter> run;
-    for (const auto& c : characters) {
-        if (!tables_.has_readings(c.text)) {
-            throw detail::internal_error("the reading \"" + words + "\" holds \"" + std::string(c.text) +
-                                         "\", which has no reading");
-        }
-        run.push_back({nullptr, c.text, {}});
-    }
-    const auto readings = read_han(run);
     std::vector<Syllable> syllables;
-    // The readings are the tables' (Simplified); what a syllable shows follows the transcript.
-    for (std::size_t k = 0; k < run.size(); ++k)
-        syllables.push_back(make_syllable(
-            is_traditional_ ? detail::traditional_form(run[k].text) : std::string(run[k].text), readings[k]));
+    std::vector<HanCharacter> run;
+    const auto flush = [&] {
+        if (run.empty()) return;
+        const auto readings = read_han(run);
+        // The readings are the tables' (Simplified); what a syllable shows follows the transcript.
+        for (std::size_t k = 0; k < run.size(); ++k)
+            syllables.push_back(make_syllable(
+                is_traditional_ ? detail::traditional_form(run[k].text) : std::string(run[k].text),
+                readings[k]));
+        run.clear();
+    };
+    for (std::size_t i = 0; i < characters.size(); ++i) {
+        // A letter a form names (log₃x 以三为底x的对数: the argument) is said by its name.
+        if (detail::is_ascii_letter(characters[i].value)) {
+            flush();
+            for (auto& syllable : said_syllables(detail::letter_syllables(characters[i].text)))
+                syllables.push_back(std::move(syllable));
+            continue;
+        }
+        if (!tables_.has_readings(characters[i].text)) {
+            throw detail::internal_error("the reading \"" + words + "\" holds \"" +
+                                         std::string(characters[i].text) + "\", which has no reading");
+        }
+        run.push_back({nullptr, characters[i].text, {}});
+    }
+    flush();
     return syllables;
 }
 

@@ -12,6 +12,7 @@
 
 #include "text/code_points.hpp"
 #include "text/digit_codes.hpp"
+#include "text/episode_codes.hpp"
 #include "text/formula_letters.hpp"
 #include "text/keyboard_keys.hpp"
 #include "text/latin_words.hpp"
@@ -73,6 +74,10 @@ std::size_t TranscriptReader::read_latin(const std::vector<CodePoint>& text, std
         append_text(text[start].text);
         warn_no_reading(text[start]);
         return start + 1;
+    }
+    if (auto episode = detail::read_season_episode(text, start)) {  // S3E5 第三季第五集
+        add_form(text, start, episode->end, read_words(episode->words));
+        return episode->end;
     }
     std::string word = latin_spelling(text, start, end);
     if (const auto key = detail::key_name_word(text, start, end)) {  // Ctrl control
@@ -264,7 +269,8 @@ std::vector<Syllable> TranscriptReader::address_syllables(const detail::WebAddre
         } else if (auto name_pinyin =
                        starts_as_pinyin_only(part.text) ? address_pinyin(part.text) : std::nullopt) {
             append(std::move(*name_pinyin));
-        } else if (auto found = detail::english_word_syllables(part.text)) {
+        } else if (auto found = detail::english_word_syllables(part.text);
+                   found && !detail::expands_abbreviation(part.text, *found)) {
             append(said_syllables(*found));
         } else if (constexpr std::size_t kLongestSpelled = 3;
                    part.text.size() <= kLongestSpelled || detail::spelled_syllables(part.text).empty()) {
@@ -304,6 +310,9 @@ std::vector<Syllable> TranscriptReader::read_capitals(const std::string& word) c
         if (auto found = detail::english_word_syllables(word)) return said_syllables(*found);
     }
     if (word.size() > kLongestAcronym) {
+        // A name in capitals made of words, or of letters and a word (a group's: BLACKPINK black pink,
+        // TFBOYS T F boys), is said as its fans say it (session 34: spelled, B L A C K P I N K).
+        if (auto found = detail::capitals_of_words(word)) return said_syllables(*found);
         std::size_t consonants = 0, longest = 0;
         for (const char letter : word) {
             consonants =
@@ -332,6 +341,12 @@ std::vector<Syllable> TranscriptReader::read_word_parts(const std::string& word,
                                             !is_ascii_capital(static_cast<char32_t>(word[i - 1])));
         if (starts_part) parts.emplace_back();
         parts.back() += word[i];
+    }
+    // A part the dictionary lacks whose h after a consonant starts a word it has is two words (Github,
+    // github: git hub), as pothole's h starts hole; its spelling would put the h with the consonant (session
+    // 33: gi thub).
+    if (parts.size() == 1 && !detail::english_word_syllables(word) && !read_compound(word)) {
+        if (const auto h = detail::word_after_h(word)) parts = {word.substr(0, *h), word.substr(*h)};
     }
     std::vector<Syllable> syllables;
     for (const auto& part : parts) {
@@ -375,22 +390,7 @@ std::vector<Syllable> TranscriptReader::read_word_parts(const std::string& word,
 
 std::optional<std::vector<std::string>> TranscriptReader::read_compound(const std::string& word) {
     constexpr std::size_t kShortestPart = 2;
-    std::optional<std::vector<std::string>> best;
-    std::size_t best_imbalance = word.size();
-    for (auto split = word.size() < kShortestPart ? 0 : word.size() - kShortestPart; split >= kShortestPart;
-         --split) {
-        const auto imbalance =
-            split > word.size() - split ? 2 * split - word.size() : word.size() - 2 * split;
-        if (best && imbalance >= best_imbalance) continue;
-        auto first = detail::english_word_syllables(word.substr(0, split));
-        if (!first) continue;
-        auto second = detail::english_word_syllables(word.substr(split));
-        if (!second) continue;
-        first->insert(first->end(), second->begin(), second->end());
-        best = std::move(first);
-        best_imbalance = imbalance;
-    }
-    return best;
+    return detail::two_word_syllables(word, kShortestPart);
 }
 
 bool TranscriptReader::joins_two_words(const std::vector<CodePoint>& text, std::size_t i) const {

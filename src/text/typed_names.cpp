@@ -80,9 +80,12 @@ std::optional<WebAddress> read_underscored_name(const std::vector<CodePoint>& te
         return std::nullopt;
     WebAddress name;
     name.end = name_end(text, start, true);
-    // A function's argument after it (log_3 9, log_2(8)) makes it a formula's base, no typed name.
+    // A function's argument after it (log_3 9, log_2(8), log_2 n: a number or a variable of one letter)
+    // makes it a formula's base, no typed name.
     const auto next = typed_at(text, name.end);
-    if (next == '(' || (next == ' ' && is_ascii_digit(typed_at(text, name.end + 1)))) return std::nullopt;
+    const auto argument = typed_at(text, name.end + 1);
+    const bool is_variable = is_ascii_letter(argument) && !is_alphanumeric(typed_at(text, name.end + 2));
+    if (next == '(' || (next == ' ' && (is_ascii_digit(argument) || is_variable))) return std::nullopt;
     append_address_parts(name.parts, text, start, name.end);
     return name;
 }

@@ -84,8 +84,8 @@ std::optional<SpokenForm> read_power(const std::vector<CodePoint>& text, std::si
 // A logarithm as a lesson writes it, log and its base in subscript digits or after an underscore, then its
 // number (log₂8, log_3 9), said 以 the base 为底 the number 的对数 (以二为底八的对数), as a teacher reads it;
 // lg and ln before a number are the common and the natural one (lg100 一百的常用对数, ln10 十的自然对数);
-// nullopt elsewhere, and before a letter (log₂x keeps its letters; session 33: log was the dictionary's
-// word).
+// a variable of one letter in the number's place is said by its name (log₃x 以三为底x的对数, lnx x的自然
+// 对数; session 34: log₃x kept lo ge); nullopt elsewhere, and before a number with a letter after it.
 std::optional<SpokenForm> read_logarithm(const std::vector<CodePoint>& text, std::size_t i);
 
 // A repeating decimal, a dot above (U+0307) over the first and the last digit of its repeating part or over

@@ -2529,7 +2529,7 @@ TEST_SUITE("written forms") {
         // The first four rows failed on main 3aa3425 (session 33, dev33): Ctrl spelled, ⌘ unsaid, +4 正四,
         // Esc generic speech.
         check_cases({
-            {"按Ctrl+C复制", "按 ken tou加 xi复制"},
+            {"按Ctrl+C复制", "按 ken chuo加 xi复制"},
             {"按⌘+空格搜索", "按 ke man de加空格搜索"},
             {"截屏是Shift+⌘+4", "截屏是 shi fu te加 ke man de加四"},
             {"按Esc退出", "按 yi ai si xi退出"},
@@ -2544,7 +2544,7 @@ TEST_SUITE("written forms") {
         // counted, 0x read 零乘.
         check_cases({
             {"打开C:\\Users\\Admin文件夹", "打开 xi冒号反斜杠 yu ze si反斜杠 a de min文件夹"},
-            {"编辑/etc/hosts文件", "编辑斜杠 ai te sai te e斜杠 hou si ci文件"},
+            {"编辑/etc/hosts文件", "编辑斜杠 yi ti xi斜杠 hou si ci文件"},
             {"Wi-Fi名称为Home_5G", "wai fa名称为 hou mu下划线五 ji"},
             {"关注@dance_2024", "关注艾特 dan si下划线二零二四"},
             {"错误代码0x80070005", "错误代码零 ai ke si八零零七零零零五"},
@@ -2610,6 +2610,44 @@ TEST_SUITE("written forms") {
             {"影院2厅", "影院二厅"},
             {"3男2女组合", "三男两女组合"},
             {"1/10", "十分之一"},
+        });
+    }
+
+    TEST_CASE(
+        "a letter's logarithm, a typed name's abbreviation, a brand's words and a key's name are said") {
+        // The rows before the limits failed on main 8eff8bb (session 34, session 33's leftovers): lo ge and
+        // the letter, log_2 a typed name, 正五, et cetera, Gi thub generic speech, ken tou, 二百二十一.
+        check_cases({
+            {"log₃x=2", "以三为底 ai ke si的对数等于二"},
+            {"log_2 n", "以二为底 en的对数"},
+            {"lnx", "ai ke si的自然对数"},
+            {"答对一题+5分", "答对一题加五分"},
+            {"编辑/etc/fstab", "编辑斜杠 yi ti xi斜杠 ai fu si ta bu"},
+            {"上传到Github", "上传到 ji te ha bu"},
+            {"上传到GitHub", "上传到 ji te ha bu"},
+            {"按Ctrl键", "按 ken chuo键"},
+            {"秦于公元前221年统一六国", "秦于公元前二二一年统一六国"},
+            {"唐朝建于公元618年", "唐朝建于公元六一八年"},
+            // The limits: a number's log, four digits after 公元前 count, etc. in a sentence is et cetera.
+            {"log₂8=3", "以二为底八的对数等于三"},
+            {"公元前2070年", "公元前两千零七十年"},
+            {"苹果、香蕉etc.", "苹果香蕉 ai te sai te e"},
+        });
+    }
+
+    TEST_CASE("a season and an episode, a group's name in capitals and a year in a title are said") {
+        // The rows before the limits failed on main 8eff8bb (session 34, dev35): the letters S and E, the
+        // capitals spelled, the year counted.
+        check_cases({
+            {"《老友记》S3E5", "老友记第三季第五集"},
+            {"S01E10更新了", "第一季第十集更新了"},
+            {"TFBOYS十周年", "ti ai fu bao si十周年"},
+            {"BLACKPINK新歌", "ba ke ping ke新歌"},
+            {"《歌手2024》第3期", "歌手二零二四第三期"},
+            // The limits: a console's name, capitals that spell no words, a title of digits alone.
+            {"PS5", "pi ai si五"},
+            {"NASA发布", "na sa发布"},
+            {"《1984》", "一千九百八十四"},
         });
     }
 }
