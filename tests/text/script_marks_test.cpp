@@ -119,4 +119,24 @@ TEST_SUITE("stage directions and speaker labels") {
         CHECK(said("第一段很长。\n第二段也长。\n注意：小心。\n第三段。\n提示：慢走。") ==
               "第一段很长第二段也长注意小心第三段提示慢走");
     }
+
+    TEST_CASE("a heading before a formula, a question's kind and an example's number are no speakers") {
+        // Failed on main 8eff8bb (session 34, dev31's lines as one passage): each heading was a label.
+        const auto timeline = read_transcript(
+            "化简：√12=2√3。\n"
+            "甲烷燃烧：CH4+2O2=CO2+2H2O。\n"
+            "判断题：0是最小的自然数。\n"
+            "判断题：两个锐角的和一定是钝角。\n"
+            "例2：求角的度数。\n"
+            "若a:b=3:2，求b。");
+        CHECK_FALSE(warns_of(timeline, "is a speaker's label"));
+        const auto text = said(timeline);
+        for (const std::string heading : {"化简", "甲烷燃烧", "判断题", "例二", "若"}) {
+            CAPTURE(heading);
+            CHECK(text.find(heading) != std::string::npos);
+        }
+        // The limit: a dialogue's labels, a line of words after each, are still left out.
+        const auto dialogue = read_transcript("老师：今天讲方程。\n学生：好的。\n老师：先看例题。");
+        CHECK(said(dialogue) == "今天讲方程好的先看例题");
+    }
 }
