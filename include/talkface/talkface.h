@@ -1399,7 +1399,8 @@ TF_API tf_status tf_web_page_options_create(tf_web_page_options **out);
 TF_API void tf_web_page_options_destroy(tf_web_page_options *options);
 /* Errors: TF_ERR_INVALID_ARGUMENT if options is NULL or app is not a tf_web_page_app. */
 TF_API tf_status tf_web_page_options_set_app(tf_web_page_options *options, tf_web_page_app app);
-/* The page's title, UTF-8 (NULL or "": the first sentence). Escaped in the page. */
+/* The page's title, UTF-8 (NULL or "": the first sentence, its first 30 characters and an ellipsis
+   when longer). Escaped in the page. */
 TF_API tf_status tf_web_page_options_set_title(tf_web_page_options *options, const char *title);
 /* Appends a link of the audio book: its text and URL (http:, https:, mailto: or relative; other
  * schemes fail when the page is built). Errors: TF_ERR_INVALID_ARGUMENT if an argument is NULL. */

@@ -73,7 +73,8 @@ struct WebLink {
 /// How the page is built. Sizes are CSS pixels.
 struct WebPageOptions {
     WebPageApp app = WebPageApp::plain;
-    /// The page's title (and the audio book's heading); empty: the first sentence of the timeline.
+    /// The page's title (and the audio book's heading); empty: the first sentence of the timeline,
+    /// its first 30 characters and an ellipsis when longer (a title stands in one line).
     std::string title;
     std::vector<WebLink> links;  ///< audio book: listed under the text
     SvgAnimationOptions animation;  ///< the encoding of the face's animation

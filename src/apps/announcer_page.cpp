@@ -6,6 +6,7 @@
 // The stage is one box of the stage's proportions holding nothing but the frame (the controls sit
 // under it), so that it can be recorded as a video as it is. The caption is HTML over the stage's
 // SVG, so that a long sentence wraps and the system's CJK fonts are found as in any page.
+#include <algorithm>
 #include <cstddef>
 #include <cstdlib>
 #include <string>
@@ -60,26 +61,61 @@ std::string placed(const std::string& animation_svg, const StageBox& place) {
     return tag + animation_svg.substr(tag_end);
 }
 
-// A sentence longer than the caption's two lines is shown smaller until it fits (down to 55% of
-// the caption's size; a sentence longer still is cut at the band's edge rather than cover the face).
-// Fitted again whenever the band changes size (a window resized, a phone turned: a size fitted in
-// pixels for one band overflowed a smaller one and stayed small in a larger one), and once the
-// page is laid out: a page opened at a time ("#t=") shows its sentence before this script runs.
-// The band's size follows the stage alone, never the caption's text, so fitting cannot loop.
+// Where the caption stands, and its size. On the stage its size follows the band's; where that
+// falls under the smallest size a reader reads (0.75rem, or the minimum font size the reader set in
+// the browser, which cut the caption it enlarged: 7.8 px on a 320 px phone), the band stands under
+// the stage at the reader's own size ("tf-caption-under"). That is decided by the width the stage
+// has with the band on it, which the caption never changes.
+// A sentence longer than the caption's lines is shown smaller until it fits (down to 55% of the
+// caption's size, never under the readable size; a sentence longer still is cut at the band's
+// edge rather than cover the face). Fitted again whenever the stage or the band changes size (a
+// window resized, a phone turned: a size fitted in pixels for one band overflowed a smaller one
+// and stayed small in a larger one), and once the page is laid out: a page opened at a time
+// ("#t=") shows its sentence before this script runs. Fitting ends with the band the size it
+// found, so the notices it causes change nothing and cannot loop.
+// A sentence cut even so (a transcript with no punctuation is one sentence) scrolls its lines
+// through the caption as it is spoken, the line at the share of the sentence's time spoken second
+// from the caption's top (a line of it before): its first lines alone stood there for minutes.
 constexpr const char* kCaptionScript = R"js((function () {
   "use strict";
   var caption = document.querySelector(".tf-caption");
   if (!caption) return;
-  function fit() {
+  var screen = document.querySelector(".tf-announcer");
+  var stage = document.querySelector(".tf-stage");
+  var share = parseFloat(screen.getAttribute("data-caption-share"));
+  function readable() {
+    caption.style.fontSize = "1px";
+    var enforced = parseFloat(window.getComputedStyle(caption).fontSize);
     caption.style.fontSize = "";
+    return Math.max(0.75 * parseFloat(window.getComputedStyle(document.documentElement).fontSize), enforced);
+  }
+  function fit() {
+    var smallest = readable();
+    screen.classList.remove("tf-caption-under");
+    screen.classList.toggle("tf-caption-under", share * stage.clientWidth < smallest);
     var size = parseFloat(window.getComputedStyle(caption).fontSize);
-    for (var k = 0; k < 9 && caption.scrollHeight > caption.clientHeight + 1; ++k) {
+    for (var k = 0; k < 9 && size * 0.93 >= smallest && caption.scrollHeight > caption.clientHeight + 1; ++k) {
       size *= 0.93;
       caption.style.fontSize = size + "px";
     }
+    follow();
   }
+  var audio = document.getElementById("tf-audio");
+  function follow() {
+    var spoken = caption.querySelector(".tf-current");
+    var hidden = caption.scrollHeight - caption.clientHeight;
+    if (!spoken || hidden <= 1) { caption.scrollTop = 0; return; }
+    var start = parseFloat(spoken.getAttribute("data-start"));
+    var said = (audio.currentTime - start) / Math.max(parseFloat(spoken.getAttribute("data-end")) - start, 0.001);
+    var line = parseFloat(window.getComputedStyle(caption).lineHeight);
+    var lines = Math.round(spoken.offsetHeight / line);
+    caption.scrollTop = Math.min(hidden, Math.max(0, Math.floor(said * lines) - 1) * line);
+  }
+  ["timeupdate", "seeked"].forEach(function (name) { audio.addEventListener(name, follow); });
   document.addEventListener("tf-sentence", fit);
-  new ResizeObserver(fit).observe(caption.parentElement);
+  var resized = new ResizeObserver(fit);
+  resized.observe(stage);
+  resized.observe(caption.parentElement);
 })();
 )js";
 
@@ -117,40 +153,72 @@ PageParts announcer_page(const std::string& animation_svg, const FaceModel& face
     const StageBox& band = layout.caption;
     const std::string lower_third =
         "<div class=\"tf-lower-third" + std::string(layout.is_caption_on_top ? " tf-on-top" : "") +
-        "\" style=\"left:" + percent(band.x, stage_width) + ";top:" + percent(band.y, stage_height) +
-        ";width:" + percent(band.width, stage_width) + ";height:" + percent(band.height, stage_height) + "\">\n" +
+        "\" style=\"--band-left:" + percent(band.x, stage_width) +
+        ";--band-top:" + percent(band.y, stage_height) + ";--band-width:" + percent(band.width, stage_width) +
+        ";--band-height:" + percent(band.height, stage_height) + "\">\n" +
         (title.empty() ? std::string() : "<div class=\"tf-title\">" + escape_html(title) + "</div>\n") +
         "<div class=\"tf-caption\">\n" + sentences + "</div>\n</div>\n";
 
+    // The caption's size on the stage, min(22cqh, 3.4cqw) of its band, as a share of the stage's width.
+    const double caption_share = std::min(0.22 * band.height, 0.034 * band.width) / stage_width;
+
+    // The stage and the player under it within the window's height (16 + 12 + 54 + 16 px around the
+    // stage, and the band's title and two lines when it stands under the stage): on a phone turned
+    // on its side the player lay below the screen.
+    const auto widest = [&](const std::string& around) {
+        return "max-width:min(" + std::to_string(options.stage_width_px) + "px,max(320px,calc((100vh - " +
+               around + ") * " + std::to_string(options.stage_width_px) + " / " +
+               std::to_string(options.stage_height_px) + " + 32px)))";
+    };
+
     PageParts parts;
-    parts.style = std::string("body{margin:0;background:#0f172a;color:#e2e8f0;font-family:") + kSansFonts +
-                  "}"
-                  // The stage and the player under it within the window's height (16 + 12 + 54 + 16 px around
-                  // the stage): on a phone turned on its side the player lay below the screen.
-                  ".tf-announcer{max-width:min(" +
-                  std::to_string(options.stage_width_px) + "px,max(320px,calc((100vh - 100px) * " +
-                  std::to_string(options.stage_width_px) + " / " + std::to_string(options.stage_height_px) +
-                  " + 32px)));margin:0 auto;padding:16px}"
-                  ".tf-stage{position:relative;overflow:hidden;aspect-ratio:" +
-                  std::to_string(options.stage_width_px) + "/" + std::to_string(options.stage_height_px) +
-                  "}"
-                  ".tf-stage-art{display:block;width:100%;height:100%}"
-                  // The band is a size container: its text is sized by the band's height (cqh), which the
-                  // layout kept clear of the mouth, and never by the window.
-                  ".tf-lower-third{position:absolute;container-type:size;display:flex;flex-direction:column;"
-                  "justify-content:flex-end}"
-                  ".tf-lower-third.tf-on-top{justify-content:flex-start}"
-                  ".tf-title{align-self:flex-start;flex:none;background:#b91c1c;color:#fff;font-weight:700;"
-                  "font-size:min(15cqh,2.6cqw);line-height:1.3;padding:.15em .6em}"
-                  ".tf-caption{flex:0 1 "
-                  "auto;min-height:0;max-height:70cqh;overflow:hidden;background:#0f172ae0;color:#fff;"
-                  "font-size:min(22cqh,3.4cqw);line-height:1.3;padding:.2em .6em}"
-                  ".tf-caption .tf-sentence{display:none;margin:0}"
-                  ".tf-caption .tf-sentence.tf-current{display:block}"
-                  ".tf-caption:not(:has(.tf-current)){visibility:hidden}"
-                  "audio{display:block;width:100%;margin-top:12px}"
-                  ":focus-visible{outline-color:#93c5fd}";  // light on the dark page
-    parts.body = "<main class=\"tf-announcer\">\n<div class=\"tf-stage\">\n<svg class=\"tf-stage-art\" "
+    parts.style =
+        std::string("body{margin:0;background:#0f172a;color:#e2e8f0;font-family:") + kSansFonts +
+        "}"
+        ".tf-announcer{" +
+        widest("100px") +
+        ";margin:0 auto;padding:16px}"
+        ".tf-stage{position:relative;overflow:hidden;aspect-ratio:" +
+        std::to_string(options.stage_width_px) + "/" + std::to_string(options.stage_height_px) +
+        "}"
+        ".tf-stage-art{display:block;width:100%;height:100%}"
+        // The band is a size container: its text is sized by the band's height (cqh), which the
+        // layout kept clear of the mouth, and never by the window.
+        ".tf-lower-third{position:absolute;left:var(--band-left);top:var(--band-top);width:var(--band-width);"
+        "height:var(--band-height);container-type:size;display:flex;flex-direction:column;"
+        "justify-content:flex-end}"
+        ".tf-lower-third.tf-on-top{justify-content:flex-start}"
+        // One line, as a title bar is: a long one ends in an ellipsis rather than cover the face.
+        ".tf-title{align-self:flex-start;flex:none;max-width:100%;white-space:nowrap;overflow:hidden;"
+        "text-overflow:ellipsis;background:#b91c1c;color:#fff;font-weight:700;"
+        "font-size:min(15cqh,2.6cqw);line-height:1.3;padding:.15em .6em}"
+        ".tf-caption{flex:0 1 "
+        "auto;min-height:0;max-height:70cqh;overflow:hidden;background:#0f172ae0;color:#fff;"
+        "font-size:min(22cqh,3.4cqw);line-height:1.3;padding:.2em .6em}"
+        ".tf-caption .tf-sentence{display:none;margin:0}"
+        ".tf-caption .tf-sentence.tf-current{display:block}"
+        ".tf-caption:not(:has(.tf-current)){visibility:hidden}"
+        "audio{display:block;width:100%;margin-top:12px}"
+        ":focus-visible{outline-color:#93c5fd}"  // light on the dark page
+        // Under the stage (the caption script): the band follows the face with two lines at
+        // least, so that the player does not jump with each sentence, and four at most.
+        ".tf-announcer.tf-caption-under{" +
+        widest("100px - 4.3rem") +
+        "}"
+        ".tf-caption-under .tf-stage{aspect-ratio:auto;overflow:visible}"
+        ".tf-caption-under .tf-stage-art{height:auto;aspect-ratio:" +
+        std::to_string(options.stage_width_px) + "/" + std::to_string(options.stage_height_px) +
+        "}"
+        ".tf-caption-under .tf-lower-third{position:static;width:auto;height:auto;container-type:normal}"
+        ".tf-caption-under .tf-title{font-size:.8rem}"
+        ".tf-caption-under .tf-caption{font-size:1rem;min-height:calc(2.6em + .4em);"
+        "max-height:calc(5.2em + .4em)}"
+        // Printed, a band that is a size container left the whole page blank (Chromium 156),
+        // and the caption's white text on its unprinted dark band would not show.
+        "@media print{.tf-lower-third{container-type:inline-size}"
+        ".tf-title,.tf-caption{print-color-adjust:exact}}";
+    parts.body = "<main class=\"tf-announcer\" data-caption-share=\"" + format_fixed(caption_share, 6) +
+                 "\">\n<div class=\"tf-stage\">\n<svg class=\"tf-stage-art\" "
                  "xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " +
                  number(stage_width) + " " + number(stage_height) + "\" role=\"img\" aria-label=\"" +
                  escape_html(title) + "\">\n" + background + placed(animation_svg, layout.face) + "</svg>\n" +

@@ -135,7 +135,14 @@ PageParts audiobook_page(const std::string& animation_svg, const Timeline& timel
         ".tf-teacher svg.tf-animation{max-height:calc(100vh - 130px)}"
         ".tf-reader h1{font-size:1.4rem;margin:8px 0 12px}"
         ".tf-text{font-size:1.2rem;line-height:1.95}"
-        "}";
+        "}"
+        // High contrast (Windows' contrast themes, forced colours) replaces every background with the
+        // theme's: the sentence being spoken was no longer told from the rest. The theme's own
+        // highlight colours mark it, as they mark selected text.
+        "@media (forced-colors:active){.tf-sentence.tf-current{forced-color-adjust:none;background:Highlight;"
+        "color:HighlightText;box-shadow:none}}"
+        // On paper: the text, without the keys' hint and the room left to scroll the last sentence up.
+        "@media print{.tf-keys{display:none}.tf-book{padding-bottom:0}}";
     parts.body = "<main class=\"tf-book\">\n<aside class=\"tf-teacher\">\n" + animation_svg + audio_element +
                  "<p class=\"tf-keys\"><kbd>Space</kbd> play / pause &#183; <kbd>&#8592;</kbd> <kbd>&#8594;</kbd> "
                  "sentence</p>\n</aside>\n<article class=\"tf-reader\">\n<h1>" +

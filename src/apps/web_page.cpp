@@ -7,6 +7,7 @@
 // and set from audio.currentTime on every animation frame (and on seek, pause, rate change and
 // end), so the face can never drift from the voice, whatever the user does with the controls.
 #include <cmath>
+#include <cstddef>
 #include <fstream>
 #include <string>
 
@@ -165,9 +166,14 @@ constexpr int kLowestBitrateBps = 6000;
 constexpr int kHighestBitrateBps = 128000;
 
 // A focus ring a keyboard user finds on every page (Chromium's own round the player is 1 px), and
-// the notice of a speech that cannot be played.
+// the notice of a speech that cannot be played. A word longer than its line (an address, a line of
+// Latin letters without spaces) is broken where it reaches the edge: it pushed a phone's page to
+// 1105 px, shown shrunk and cut, and ran out of the announcer's caption. On paper the player, which
+// cannot be pressed there, is left out.
 constexpr const char* kCommonStyle =
     "*{box-sizing:border-box}"
+    "body{overflow-wrap:anywhere}"
+    "@media print{audio{display:none}}"
     ":focus-visible{outline:3px solid #1d4ed8;outline-offset:3px}"
     ".tf-audio-error{margin:8px 0 0;padding:8px 12px;border-radius:6px;background:#fee2e2;color:#7f1d1d;"
     "font-size:.95rem;line-height:1.4}";
@@ -254,6 +260,23 @@ std::string named_face(const std::string& root) {
     return "<svg role=\"img\" aria-label=\"Talking face\"" + root.substr(4);
 }
 
+// A title stands in one line (the announcer's title bar, a heading over the face, a browser's tab):
+// taken from a transcript with no punctuation, the first sentence was the whole text, and its title
+// bar of 2000 characters covered the stage. Cut between characters, never inside one.
+constexpr std::size_t kDefaultTitleCharacters = 30;
+
+std::string default_title(const Timeline& timeline) {
+    if (timeline.sentences.empty()) return "talkface";
+    const std::string& sentence = timeline.sentences.front().text;
+    std::size_t characters = 0;
+    for (std::size_t k = 0; k < sentence.size(); ++k) {
+        const bool starts_character = (static_cast<unsigned char>(sentence[k]) & 0xC0) != 0x80;
+        if (starts_character && ++characters > kDefaultTitleCharacters)
+            return sentence.substr(0, k) + "\xE2\x80\xA6";  // U+2026, an ellipsis
+    }
+    return sentence;
+}
+
 std::string without_prolog(std::string svg) {
     if (svg.compare(0, 5, "<?xml") == 0) svg.erase(0, svg.find('\n') + 1);
     return svg;
@@ -298,9 +321,7 @@ std::string build_web_page(const SvgAnimator& animator, const Animation& animati
                            const ProgressCallback& progress) {
     validate(options);
     const std::string audio = audio_element(audio_path, options);
-    const std::string title =
-        !options.title.empty() ? options.title
-                               : (!timeline.sentences.empty() ? timeline.sentences.front().text : std::string("talkface"));
+    const std::string title = !options.title.empty() ? options.title : default_title(timeline);
 
     detail::PageParts parts;
     detail::PackedAnimation packed;

@@ -28,8 +28,14 @@ KEYS = {
 
 
 class Browser:
-    def __init__(self, width, height, mobile=False):
+    def __init__(self, width, height, mobile=False, preferences=None):
+        """`preferences`: the profile's settings as Chromium's settings page writes them (e.g. a
+        minimum font size: {"webkit": {"webprefs": {"minimum_font_size": 20}}})."""
         self._profile = tempfile.TemporaryDirectory()
+        if preferences:
+            os.makedirs(os.path.join(self._profile.name, "Default"))
+            with open(os.path.join(self._profile.name, "Default", "Preferences"), "w") as out:
+                json.dump(preferences, out)
         to_chrome_read, self._to_chrome = os.pipe()
         self._from_chrome, from_chrome_write = os.pipe()
         # The child must find the pipe's ends at 3 (it reads) and 4 (it writes).

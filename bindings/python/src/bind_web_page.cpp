@@ -43,7 +43,7 @@ How a page is built. Sizes are CSS pixels; colours "#rrggbb". Checked when the p
 
 Args:
     app (WebPageApp): plain, announcer or audiobook.
-    title (str): the page's title; "" takes the first sentence.
+    title (str): the page's title; "" takes the first sentence (its first 30 characters and an ellipsis when longer).
     links (list[WebLink]): audio book links.
     animation (SvgAnimationOptions): the face's encoding.
     audio (WebPageAudio): compressed (the default), original or link.
