@@ -20,6 +20,8 @@
 #include <utility>
 
 #include "audio/ffmpeg_source.hpp"
+#include "audio/joined_copy.hpp"
+#include "audio/pcm_damage.hpp"
 #include "common/input_file.hpp"
 #include "common/number_format.hpp"
 #include "common/string_ends.hpp"
@@ -157,12 +159,22 @@ struct TextInstead {
     std::string words;  // the page's title, or the first line; empty if none
 };
 
+// Whether `bytes` open as a recording's container does, in letters ("RIFF", "fLaC", "OggS", "ID3"):
+// a recording cut inside its first bytes is text by is_text's measure ("RIFF" alone), and is a
+// recording cut short, not a text file. A prefix counts (a file of 2 bytes, "Og").
+bool opens_as_container(std::string_view bytes) {
+    for (const std::string_view signature : {"RIFF", "RIFX", "RF64", "BW64", "FORM", "fLaC", "OggS", "ID3",
+                                             "#!AMR", "#!SILK_V3", ".snd", "caff", "wvpk", "MAC "})
+        if (bytes.substr(0, signature.size()) == signature.substr(0, bytes.size())) return true;
+    return false;
+}
+
 std::optional<TextInstead> text_instead_of_audio(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     std::string start(4096, '\0');
     in.read(start.data(), static_cast<std::streamsize>(start.size()));
     start.resize(static_cast<std::size_t>(in.gcount()));
-    if (!is_text(start)) return std::nullopt;
+    if (start.empty() || !is_text(start) || opens_as_container(start)) return std::nullopt;
     std::string lower = start;
     std::transform(lower.begin(), lower.end(), lower.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -462,6 +474,75 @@ std::vector<std::pair<std::uint64_t, std::uint64_t>> wav_data_chunks(const std::
     return chunks;
 }
 
+// A RIFF WAV that goes on past the end its RIFF header states, past its data too: the first byte
+// no reader reads, the bytes from there to the file's end, the bytes a second of its sound takes
+// (the format chunk's average rate; 0 if it states none), and whether those bytes open as a second
+// WAV file.
+struct BytesPastEnd {
+    std::uint64_t first_byte = 0;
+    std::uint64_t bytes = 0;
+    std::uint64_t bytes_per_second = 0;
+    bool is_second_wav = false;
+};
+
+// Two WAV files joined (a copy appended to itself, two recordings put together by `cat` or a
+// careless upload) read as the first: its RIFF header states the first's size, and every reader
+// stops there, silently (a transcript of both was refused as not the speech, one of the first
+// aligned as if the file were whole). Nothing past the end where the stated size is a placeholder
+// (0, 0xFFFFFFFF: a recorder that streams), or where what follows is one chunk that fills the rest
+// of the file (a tag a program appended after the RIFF: no sound).
+std::optional<BytesPastEnd> bytes_past_riff_end(const std::string& path) {
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    if (!in) return std::nullopt;
+    const auto file_bytes = static_cast<std::uint64_t>(in.tellg());
+    unsigned char head[8];
+    in.seekg(0);
+    if (!in.read(reinterpret_cast<char*>(head), 8)) return std::nullopt;
+    const std::uint64_t riff_size = read_le32(head + 4);
+    if (riff_size == 0 || riff_size >= 0x7FFFFFFFu) return std::nullopt;
+    BytesPastEnd past;
+    past.first_byte = 8 + riff_size + (riff_size & 1);
+    for (std::uint64_t at = 12; at + 8 <= file_bytes && at < past.first_byte;) {
+        in.seekg(static_cast<std::streamoff>(at));
+        if (!in.read(reinterpret_cast<char*>(head), 8)) return std::nullopt;
+        const std::uint64_t size = read_le32(head + 4);
+        unsigned char format[12];
+        if (std::memcmp(head, "fmt ", 4) == 0 && size >= 16 && in.read(reinterpret_cast<char*>(format), 12))
+            past.bytes_per_second = read_le32(format + 8);
+        at += 8 + size + (size & 1);
+        if (std::memcmp(head, "data", 4) == 0) past.first_byte = std::max(past.first_byte, at);
+    }
+    if (past.first_byte + 8 > file_bytes) return std::nullopt;
+    past.bytes = file_bytes - past.first_byte;
+    in.clear();
+    in.seekg(static_cast<std::streamoff>(past.first_byte));
+    if (!in.read(reinterpret_cast<char*>(head), 8)) return std::nullopt;
+    past.is_second_wav = std::memcmp(head, "RIFF", 4) == 0 || std::memcmp(head, "RF64", 4) == 0;
+    const std::uint64_t size = read_le32(head + 4);
+    bool is_id = true;
+    for (int i = 0; i < 4; ++i) is_id = is_id && (std::isalnum(head[i]) || head[i] == ' ' || head[i] == '_');
+    if (!past.is_second_wav && is_id && past.bytes - 8 - size <= 1) return std::nullopt;
+    return past;
+}
+
+// What the reader says of a WAV's bytes past its stated end.
+std::string describe_bytes_past_end(const BytesPastEnd& past) {
+    const std::string seconds =
+        past.bytes_per_second == 0
+            ? std::string()
+            : ", about " +
+                  format_fixed(static_cast<double>(past.bytes) / static_cast<double>(past.bytes_per_second),
+                               1) +
+                  " s of sound at this file's rate";
+    return "the file goes on for " + std::to_string(past.bytes) +
+           " bytes past the end its header states (byte " + std::to_string(past.first_byte) + ")" + seconds +
+           ", which no reader reads" +
+           (past.is_second_wav
+                ? ": a second WAV file begins there, as when two recordings or two copies of one "
+                  "are joined; only the first was aligned"
+                : "; only the sound before them was aligned");
+}
+
 // A RIFF WAV that libsndfile cannot open, refused for what its header says: it ends before its
 // data chunk starts (a copy or a download cut inside the header: FFmpeg called it "Invalid data",
 // as if it were no audio), or its format chunk states a channel count or a rate no reader takes
@@ -508,10 +589,32 @@ std::string describe_stale_size(const StaleDataSize& data) {
                   "lost power leaves it); read to the end of the file";
 }
 
+// Whether a file libsndfile reads holds its samples as they are, with no check a copy's damage
+// would fail: PCM or floats in WAV, AIFF and their kin (pcm_damage.hpp), not FLAC's checked frames
+// nor Ogg's pages.
+bool holds_unchecked_samples(const SF_INFO& info) {
+    const int type = info.format & SF_FORMAT_TYPEMASK;
+    if (type == SF_FORMAT_FLAC || type == SF_FORMAT_OGG) return false;
+    switch (info.format & SF_FORMAT_SUBMASK) {
+        case SF_FORMAT_PCM_S8:
+        case SF_FORMAT_PCM_U8:
+        case SF_FORMAT_PCM_16:
+        case SF_FORMAT_PCM_24:
+        case SF_FORMAT_PCM_32:
+        case SF_FORMAT_FLOAT:
+        case SF_FORMAT_DOUBLE:
+            return true;
+        default:
+            return false;
+    }
+}
+
 class FileSource final : public AudioSource {
 public:
     FileSource(std::string path, SNDFILE* file, const SF_INFO& info, std::size_t promised_frames)
-        : path_(std::move(path)), file_(file), info_(info), promised_frames_(promised_frames) {}
+        : path_(std::move(path)), file_(file), info_(info), promised_frames_(promised_frames) {
+        if (holds_unchecked_samples(info)) damage_.emplace(info.samplerate);
+    }
     ~FileSource() override { sf_close(file_); }
     FileSource(const FileSource&) = delete;
     FileSource& operator=(const FileSource&) = delete;
@@ -529,6 +632,7 @@ public:
         const auto frames = got > 0 ? static_cast<std::size_t>(got) : 0;
         if (channels > 1) mixer_.mix(interleaved_.data(), frames, channels, mono);
         frames_read_ += frames;
+        if (damage_) note_damage(mono, frames);
         if (frames == 0 && frames_read_ < promised_frames_) {
             const std::string reason = sf_error(file_) != SF_ERR_NO_ERROR ? std::string(": ") + sf_strerror(file_) : "";
             throw FileError(path_, "truncated: the header promises " + std::to_string(promised_frames_) +
@@ -550,7 +654,19 @@ private:
             sf_seek(file_, static_cast<sf_count_t>(frame), SEEK_SET) != static_cast<sf_count_t>(frame))
             return false;
         frames_read_ = frame;
+        if (damage_) damage_->restart_at(frame);
         return true;
+    }
+
+    // Follows the samples read for damage (pcm_damage.hpp), and at the end of the data notes it.
+    void note_damage(const float* mono, std::size_t frames) {
+        if (frames > 0) {
+            damage_->push(mono, frames);
+            return;
+        }
+        damage_->finish();
+        for (std::string& note : describe_pcm_damage(*damage_, info_.samplerate)) add_note(std::move(note));
+        damage_.reset();
     }
 
     std::string path_;
@@ -560,6 +676,7 @@ private:
     std::size_t frames_read_ = 0;
     std::vector<float> interleaved_;
     ChannelMixer mixer_;
+    std::optional<PcmDamageFinder> damage_;
 };
 
 class ViewSource final : public AudioSource {
@@ -792,7 +909,8 @@ bool AudioSource::skip_to(std::size_t frame) {
 namespace {
 
 // The first bytes of the file at `path`, enough to tell its container (is_sndfile_container).
-// Throws FileError where it cannot be read, InvalidArgument where it is empty. A directory is
+// Throws FileError where it cannot be read, InvalidArgument where it is empty, ParseError where it
+// is text (text_refused), before any size is judged: a few words are no recording cut short. A directory is
 // refused before (open_audio_file's non_file_at), with what it is.
 std::array<char, 12> read_container_header(const std::string& path) {
     std::array<char, 12> header{};
@@ -800,6 +918,8 @@ std::array<char, 12> read_container_header(const std::string& path) {
     if (!probe) throw FileError(path, std::strerror(errno));
     const std::streamoff bytes = probe.tellg();
     if (bytes == 0) throw InvalidArgument(path, "empty file: no audio frames");
+    // Text of any length is named as text (the transcript given as the recording), a few words too.
+    if (const auto text = text_instead_of_audio(path)) throw text_refused(path, *text);
     // Every container's header is longer (a WAV's 44 bytes, an MP4's first box, Matroska's EBML
     // header): FFmpeg guessed at so few bytes, and called them an MP4 without its index.
     if (bytes < static_cast<std::streamoff>(header.size()))
@@ -924,9 +1044,8 @@ std::unique_ptr<AudioSource> open_opened_by_sndfile(const std::string& path,
     return std::make_unique<FileSource>(path, file, info, promised);
 }
 
-}  // namespace
-
-std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
+// open_audio_file's reading, by the file's container.
+std::unique_ptr<AudioSource> open_by_container(const std::string& path) {
     // A named pipe nothing writes to blocked the open below for ever; one that is written to gave
     // "Illegal seek", as a recording is read more than once (its first sound, then its features).
     if (const NonFile kind = non_file_at(path); kind == NonFile::directory)
@@ -946,7 +1065,6 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
         throw ParseError(path, 0, 0, "",
                          "the file is damaged: its FLAC header (STREAMINFO) states " +
                              std::to_string(*length) + " bytes, where FLAC's is 34");
-    if (const auto text = text_instead_of_audio(path)) throw text_refused(path, *text);
     if (!is_sndfile_container(header)) return open_ffmpeg_file(path);
     if (std::string_view(header.data(), 4) == "RIFF") {
         if (const auto chunks = wav_data_chunks(path); chunks.size() > 1) {
@@ -974,6 +1092,25 @@ std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
     SNDFILE* file = sf_open(path.c_str(), SFM_READ, &info);
     if (file == nullptr) return open_refused_by_sndfile(path, header);
     return open_opened_by_sndfile(path, header, file, info);
+}
+
+}  // namespace
+
+std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
+    auto source = open_by_container(path);
+    // A data chunk that runs on past its stated size is read to the file's end (data_past_stated_size);
+    // otherwise libsndfile and FFmpeg alike stop at the first WAV's end.
+    if (const std::array<char, 12> header = read_container_header(path);
+        std::string_view(header.data(), 4) == "RIFF" && !data_past_stated_size(path))
+        if (const auto past = bytes_past_riff_end(path)) source->add_note(describe_bytes_past_end(*past));
+    if (const auto second = repeated_opening_byte(path))
+        source->add_note(
+            "its first " + std::to_string(kOpeningBytes) + " bytes (its header) recur at byte " +
+            std::to_string(*second) +
+            ": a second copy of the recording, or a second recording, begins there, joined to the "
+            "first (as an upload or a copy that appends to a file leaves it); cut the file there and "
+            "align each recording on its own");
+    return source;
 }
 
 std::string wav_codec_browsers_do_not_play(const std::string& path) {

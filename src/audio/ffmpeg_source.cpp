@@ -1022,7 +1022,7 @@ private:
         if (format_->duration_estimation_method == AVFMT_DURATION_FROM_BITRATE) return 0.0;
         if (stream_->duration != AV_NOPTS_VALUE && stream_->duration > 0)
             return static_cast<double>(stream_->duration) * av_q2d(stream_->time_base);
-        if (const double tagged_s = matroska_track_seconds(); tagged_s > 0.0) return tagged_s;
+        if (const double tagged_s = matroska_track_seconds(*stream_); tagged_s > 0.0) return tagged_s;
         if (format_->nb_streams == 1 && format_->duration != AV_NOPTS_VALUE && format_->duration > 0)
             return static_cast<double>(format_->duration) / AV_TIME_BASE;
         return 0.0;
@@ -1031,9 +1031,9 @@ private:
     // A Matroska track's length as its DURATION tag states it ("00:00:03.098000000"), which
     // FFmpeg's muxer and mkvmerge write for every track (Matroska has no per-track duration field);
     // 0 where there is none (a browser's MediaRecorder writes no length at all).
-    double matroska_track_seconds() const {
+    double matroska_track_seconds(const AVStream& stream) const {
         if (std::strncmp(format_->iformat->name, "matroska", 8) != 0) return 0.0;
-        const AVDictionaryEntry* tag = av_dict_get(stream_->metadata, "DURATION", nullptr, 0);
+        const AVDictionaryEntry* tag = av_dict_get(stream.metadata, "DURATION", nullptr, 0);
         if (tag == nullptr) return 0.0;
         unsigned hours = 0, minutes = 0;
         double seconds = 0.0;
@@ -1130,6 +1130,49 @@ private:
             add_note("its header states " + seconds_text(file_s) +
                      " for the file, but its sound track's own index holds " + seconds_text(decoded_s) +
                      ", all of which was read");
+        const double longest_track_s = longest_track_seconds();
+        const double stated_file_s = static_cast<double>(format_->duration) / AV_TIME_BASE;
+        if (longest_track_s > 0.0 && format_->duration != AV_NOPTS_VALUE &&
+            stated_file_s > longest_track_s + slack_s(stated_file_s))
+            add_note("its header states " + seconds_text(stated_file_s) + " for the file, but its " +
+                     std::to_string(format_->nb_streams) + " tracks' own lengths reach only " +
+                     seconds_text(longest_track_s) + " (its sound track " + seconds_text(decoded_s) +
+                     ", all of which was read): the header's length is damaged");
+        note_second_file(decoded_s);
+    }
+
+    // The longest of a file's several tracks (a video's picture and sound), each by its own index or
+    // its Matroska DURATION tag: a video's picture may outlast its sound, but no track lasts longer
+    // than this, so a file's stated length well past it was damaged (a movie header or a Segment's
+    // Duration overwritten), which a file of one track is told by above. 0 where the file holds one
+    // track, or a track states no length of its own (a cover picture, a browser's recording).
+    double longest_track_seconds() const {
+        if (format_->nb_streams < 2) return 0.0;
+        double longest_s = 0.0;
+        for (unsigned i = 0; i < format_->nb_streams; ++i) {
+            const AVStream& stream = *format_->streams[i];
+            double seconds = matroska_track_seconds(stream);
+            if (stream.duration != AV_NOPTS_VALUE && stream.duration > 0)
+                seconds = static_cast<double>(stream.duration) * av_q2d(stream.time_base);
+            if (seconds <= 0.0) return 0.0;
+            longest_s = std::max(longest_s, seconds);
+        }
+        return longest_s;
+    }
+
+    // An MP4-family file followed by a second one (second_file_byte): what was not read, said.
+    void note_second_file(double decoded_s) {
+        if (!starts_with(format_->iformat->name, "mov")) return;
+        const std::optional<std::uint64_t> second_byte = second_file_byte(path_);
+        const std::int64_t file_bytes = avio_size(format_->pb);
+        if (!second_byte || file_bytes <= static_cast<std::int64_t>(*second_byte)) return;
+        const std::uint64_t unread_bytes = static_cast<std::uint64_t>(file_bytes) - *second_byte;
+        add_note(
+            "the file goes on past its end: a second MP4 file (its own ftyp box) begins at byte " +
+            std::to_string(*second_byte) + ", as when two recordings or two copies of one are joined; its " +
+            std::to_string(unread_bytes) + " bytes (about " +
+            seconds_text(decoded_s * static_cast<double>(unread_bytes) / static_cast<double>(*second_byte)) +
+            " of sound, if it holds sound as the first does) were not read; only the first was aligned");
     }
 
     // Follows whether an MP3 packet holds fewer bytes than its frame's header states (short_mp3_frame_).

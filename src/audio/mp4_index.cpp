@@ -120,6 +120,31 @@ std::optional<Mp4Index> find_mp4_index(const std::string& path) {
     return index;
 }
 
+std::optional<std::uint64_t> second_file_byte(const std::string& path) {
+    std::ifstream file(path, std::ios::binary | std::ios::ate);
+    if (!file) return std::nullopt;
+    const auto file_size = static_cast<std::uint64_t>(file.tellg());
+    for (std::uint64_t position = 0; position + 8 <= file_size;) {
+        std::array<unsigned char, 16> header{};
+        file.seekg(static_cast<std::streamoff>(position));
+        if (!file.read(reinterpret_cast<char*>(header.data()), 8) || !is_box_type(header.data() + 4))
+            return std::nullopt;
+        const std::string type(reinterpret_cast<const char*>(header.data() + 4), 4);
+        if (position == 0 && type != "ftyp") return std::nullopt;
+        if (position > 0 && type == "ftyp") return position;
+        std::uint64_t size = big_endian(header.data(), 4);
+        std::uint64_t header_size = 8;
+        if (size == 1) {
+            if (!file.read(reinterpret_cast<char*>(header.data() + 8), 8)) return std::nullopt;
+            size = big_endian(header.data() + 8, 8);
+            header_size = 16;
+        }
+        if (size < header_size || size > file_size - position) return std::nullopt;
+        position += size;
+    }
+    return std::nullopt;
+}
+
 bool is_mp4_without_index(const std::string& path) {
     std::ifstream file(path, std::ios::binary | std::ios::ate);
     if (!file) return false;

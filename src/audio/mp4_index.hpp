@@ -36,6 +36,12 @@ struct Mp4Index {
 // entries are not checked, only the boxes around them.
 std::optional<Mp4Index> find_mp4_index(const std::string& path);
 
+// Where a second MP4-family file begins inside the file at `path`: the byte of a top-level "ftyp"
+// box after the first, as two files joined leave it (a copy appended to itself, `cat` of two
+// recordings); FFmpeg reads the first file's index and stops at its end, silently. nullopt where
+// there is none, or the top-level boxes break before one (a box cut off, bytes that are no box).
+std::optional<std::uint64_t> second_file_byte(const std::string& path);
+
 }  // namespace talkface::detail
 
 #endif

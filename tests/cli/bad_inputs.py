@@ -194,6 +194,16 @@ def audio_files():
         "damaged_header_page.ogg": with_second_page_damaged(read(os.path.join(SPEECH, "stereo_44k.ogg"))),
         "error_page.m4a": b"<!DOCTYPE html>\n<html><head><title>404 Not Found</title></head>\n"
         b"<body><h1>Not Found</h1><p>The requested URL was not found on this server.</p></body></html>\n",
+        # Session 34: the sweep's files aligned without a word on main, and a few words as a recording.
+        "nine_bytes.wav": b"not audio",
+        "joined.wav": good + good,
+        "joined.m4a": m4a + m4a,
+        "joined.flac": flac + flac,
+        "joined.mkv": read(os.path.join(AUDIO, "clip.mkv")) * 2,
+        "huge_length.mp4": mp4_with_stated_length(read(os.path.join(AUDIO, "clip.mp4")), 1000),
+        "huge_length.mkv": matroska_with_duration(read(os.path.join(AUDIO, "clip.mkv")), 1e12),
+        "zeroed_block.wav": wav_bytes(pcm16(voice[:24000] + [0] * 2048 + voice[24000 + 2048 :])),
+        "flipped_bytes.wav": wav_bytes(pcm16(with_high_bytes_flipped(voice, (3001, 12800, 20000, 36000, 40000)))),
     }
 
 
@@ -317,6 +327,23 @@ def mp4_with_stated_length(mp4, scale):
         at = data.index(box) + offset
         data[at : at + 4] = int(int.from_bytes(data[at : at + 4], "big") * scale).to_bytes(4, "big")
     return bytes(data)
+
+
+def matroska_with_duration(mkv, seconds):
+    """`mkv` with its Segment's Info stating `seconds` (Duration, 0x4489: a float of 4 or 8 bytes, in
+    milliseconds at the default TimestampScale)."""
+    at = mkv.index(b"\x44\x89")
+    size = mkv[at + 2] & 0x7F
+    return mkv[: at + 3] + struct.pack(">d" if size == 8 else ">f", seconds * 1000) + mkv[at + 3 + size :]
+
+
+def with_high_bytes_flipped(samples, indices):
+    """16-bit `samples` with bit 14 of each at `indices` turned over: a byte a copy or a disk changed,
+    high in its sample."""
+    out = list(samples)
+    for i in indices:
+        out[i] = struct.unpack("<h", struct.pack("<H", (out[i] & 0xFFFF) ^ 0x4000))[0]
+    return out
 
 
 def amr_noise(magic, speech_header, speech_bytes, frames=150):

@@ -94,6 +94,17 @@ AUDIO = {
     "cut_in_header.mkv": "truncated: the file ends after 12 bytes, inside its header",
     "damaged_header_page.ogg": "the file is damaged: its Ogg pages break at byte",
     "error_page.m4a": 'a web page (HTML, titled "404 Not Found"), not audio',
+    # Session 34's kinds: a few words called truncated, the others aligned without a word on main.
+    "nine_bytes.wav": 'a text file (its first line "not audio"), not audio',
+    "joined.wav": OK,
+    "joined.m4a": OK,
+    # Read on through the second copy, then refused as not the text: the join said in the refusal.
+    "joined.flac": "(the file: its first 32 bytes (its header) recur at byte 56194: a second copy of the recording",
+    "joined.mkv": "(the file: its first 32 bytes (its header) recur at byte 7322: a second copy of the recording",
+    "huge_length.mp4": OK,
+    "huge_length.mkv": OK,
+    "zeroed_block.wav": OK,
+    "flipped_bytes.wav": OK,
 }
 # Audio aligned with a warning that names the file: a part of the warning after the path.
 WARNED = {
@@ -106,6 +117,15 @@ WARNED = {
     "extensible_float32_nan_inf.wav": "300 of its 49448 samples are not numbers (NaN or infinite), the first at 0.773 s",
     "float64_nan_inf.wav": "300 of its 49448 samples are not numbers (NaN or infinite), the first at 0.773 s",
     "float32_nan_inf.caf": "300 of its 49448 samples are not numbers (NaN or infinite), the first at 0.773 s",
+    "joined.wav": "the file goes on for 98940 bytes past the end its header states (byte 98940), about 3.1 s of "
+    "sound at this file's rate, which no reader reads: a second WAV file begins there",
+    "joined.m4a": "the file goes on past its end: a second MP4 file (its own ftyp box) begins at byte 11982",
+    "huge_length.mp4": "its header states 3500 s for the file, but its 2 tracks' own lengths reach only 3.5 s (its "
+    "sound track 3.136 s, all of which was read)",
+    "huge_length.mkv": "its header states 1000000000000 s for the file, but its 2 tracks' own lengths reach only 3.507 s",
+    "zeroed_block.wav": "its sound is cut off mid-wave to exact digital zeros at 1.5-1.628 s",
+    # The flip at 1.25 s lies in a loud vowel, whose own ringing is nearly as far off: not told.
+    "flipped_bytes.wav": "single samples jump far off the wave around them at 0.188 s, 0.8 s, 2.25 s (and 1 more)",
 }
 # Transcripts aligned with one_sentence.wav with a warning, and the warning.
 ALIGN_WARNED = {

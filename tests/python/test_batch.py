@@ -237,7 +237,7 @@ def test_a_failed_job_says_why_and_leaves_no_file(tmp_path):
     leftover = tmp_path / "a.html.tmp-Ab12Cd"  # as a killed writer leaves it
     leftover.write_text("half a page", encoding="utf-8")
     cases = [
-        (batch.Job(str(not_audio), str(TRANSCRIPT), str(tmp_path / "a.html")), "noise.wav: truncated"),
+        (batch.Job(str(not_audio), str(TRANSCRIPT), str(tmp_path / "a.html")), "noise.wav: a text file"),
         (batch.Job(str(tmp_path / "none.wav"), str(TRANSCRIPT), str(tmp_path / "b.json")), "none.wav"),
         (batch.Job(str(AUDIO), str(tmp_path / "none.txt"), str(tmp_path / "c.srt")), "none.txt"),
         (batch.Job(str(AUDIO), str(SPEECH / "run_together.txt"), str(tmp_path / "d.json")), "sentence"),

@@ -99,7 +99,7 @@ def write_manifest(folder):
 
 GOOD = {"demo.html": DEMO_S, "demo.json": DEMO_S, "demo.TextGrid": DEMO_S, "demo.srt": DEMO_S,
         "one.webm": ONE_SENTENCE_S, "two.svg": 4.5, "two.motion3.json": 4.5}
-BROKEN = {"noise.html": "noise.wav: truncated", "wrong.json": "sentence", "missing.srt": "missing.ogg"}
+BROKEN = {"noise.html": "noise.wav: a text file", "wrong.json": "sentence", "missing.srt": "missing.ogg"}
 
 
 def duration_of(path):

@@ -1,0 +1,30 @@
+// Two recordings joined into one file (a copy appended to itself, `cat` of two recordings, an
+// upload that appends instead of replacing), told by the file's opening bytes recurring inside it
+// (issue 13, "Bad input"): a FLAC, Ogg, MP3 or Matroska file read on through the second copy as one
+// recording, whose transcript was refused as not its speech with no word of why. A WAV and an MP4
+// say more of it (bytes_past_riff_end, second_file_byte: how much their readers left unread).
+#ifndef TALKFACE_AUDIO_JOINED_COPY_HPP
+#define TALKFACE_AUDIO_JOINED_COPY_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace talkface::detail {
+
+// How many of a file's first bytes must recur: a container's signature, sizes and stream numbers
+// (a FLAC's STREAMINFO, an Ogg page's serial number and CRC, Matroska's EBML header), which no sound
+// inside a recording repeats.
+constexpr std::size_t kOpeningBytes = 32;
+
+// The first byte, kOpeningBytes or more from the start, where the first kOpeningBytes bytes of the
+// file at `path` recur, in a file that opens with a header found once in a recording: FLAC's
+// "fLaC", an Ogg stream's first page, Matroska's EBML header, an MP3's ID3 tag. nullopt where they
+// do not, or the file opens otherwise: an MPEG transport stream repeats its tables, an untagged
+// MP3 its frames of silence, byte for byte.
+std::optional<std::uint64_t> repeated_opening_byte(const std::string& path);
+
+}  // namespace talkface::detail
+
+#endif
