@@ -241,6 +241,9 @@ def classify(good, kind, returncode, message, warnings, path):
             return "reason wrong"
         if len(after) < 10 or GENERIC.search(after):
             return "message without a reason"
+        # A join read on as one recording is refused as not its text: the refusal should say why.
+        if kind == "joined" and "sound track" not in after and not re.search(r"joined|recur", after):
+            return "refused, the join unnamed"
         return "refused, named"
     # Two copies joined are read as the first (a warning must say the rest was not read).
     if kind not in ("good", "wrong_extension") and not any(path in w for w in warnings):
