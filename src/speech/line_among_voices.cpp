@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "common/order_statistics.hpp"
@@ -36,10 +37,41 @@ double frames_for(std::size_t syllables, double syllables_per_second) {
     return static_cast<double>(syllables) / syllables_per_second / kFrameStepS;
 }
 
+// Where the line of `syllables` syllables ending at `line_end` starts among other voices a gain
+// lifted toward it (a phone's gain control before the line's first loud syllable: issues 12 and
+// 13): at the foot of the rise to the first frame whose whole band comes within kNearLoudVoiceDb of
+// the loudest frame's, no earlier than the line could start if it holds that frame, said at the
+// slowest rate. The activity measured the voices before the line within 0-2 dB of the line
+// (each band over its floor, and the floors lie after the line, where the gain is lowest); the
+// whole band, which the line's voicing fills, keeps the line 7.5 dB over them (median; bench/
+// README.md, session 34). Nothing where what is left out is shorter than a pause, does not rise
+// and fall as a voice's syllables do, or is no louder than the sound after the line: the voices
+// the gain lifts before the line, it leaves at their level after it, where it fell under the line.
+std::optional<std::size_t> start_over_lifted_voices(const FeatureTrack& track, const FrameSpan& speech,
+                                                    std::size_t line_end, std::size_t syllables) {
+    const auto level = [&](std::size_t t) { return track.at(t, kEnergyDb); };
+    std::size_t loudest = speech.first_frame;
+    for (std::size_t t = speech.first_frame; t < speech.end_frame; ++t)
+        if (level(t) > level(loudest)) loudest = t;
+    const auto reach = static_cast<std::size_t>(frames_for(syllables, kSlowestSyllablesPerSecond));
+    std::size_t start = loudest > speech.first_frame + reach ? loudest - reach : speech.first_frame;
+    while (level(start) < level(loudest) - kNearLoudVoiceDb) ++start;
+    while (start > speech.first_frame && level(start - 1) < level(start)) --start;
+    if (start < speech.first_frame + kMinPauseFrames || line_end + kMinPauseFrames > track.frame_count)
+        return std::nullopt;
+    std::vector<float> left_out(start - speech.first_frame);
+    for (std::size_t t = speech.first_frame; t < start; ++t) left_out[start - 1 - t] = level(t);
+    std::vector<float> after;
+    for (std::size_t t = line_end; t < track.frame_count; ++t) after.push_back(level(t));
+    if (upper_median(left_out) < upper_median(after)) return std::nullopt;
+    if (!rises_again(left_out.begin(), left_out.end())) return std::nullopt;
+    return start;
+}
+
 }  // namespace
 
-FrameSpan line_among_quieter_voices(const LoudnessProfile& loudness, const FrameSpan& speech,
-                                    std::size_t syllables) {
+FrameSpan line_among_quieter_voices(const FeatureTrack& track, const LoudnessProfile& loudness,
+                                    const FrameSpan& speech, std::size_t syllables) {
     const std::vector<float>& activity = loudness.activity_db;
     // Sound that runs from the recording's edge (no pause between) may be other voices; a shorter
     // stretch left out is the line's own weak edge, and so is sound from an edge nearer than a pause.
@@ -87,6 +119,9 @@ FrameSpan line_among_quieter_voices(const LoudnessProfile& loudness, const Frame
     if (from_start && is_quieter_voice(speech.first_frame, start, std::make_reverse_iterator(at(start)),
                                        std::make_reverse_iterator(at(speech.first_frame))))
         line.first_frame = start;
+    else if (const auto lifted_start =
+                 from_start ? start_over_lifted_voices(track, speech, end, syllables) : std::nullopt)
+        line.first_frame = *lifted_start;
     // Where the other voices sound before the line too and its start was not found, a span cut at
     // its end alone squeezes the syllables onto the voices before it (short_kinds_bench's held-out
     // p-vfast-combo 20.5 -> 15.7% within 50 ms, p-babble 41.0 -> 37.3%: bench/README.md, session 33).
@@ -97,14 +132,14 @@ FrameSpan line_among_quieter_voices(const LoudnessProfile& loudness, const Frame
                                                                                                    : speech;
 }
 
-std::optional<SentenceCut> line_cut_among_voices(const LoudnessProfile& loudness, const Timeline& transcript,
-                                                 const SentenceCut& cut) {
+std::optional<SentenceCut> line_cut_among_voices(const FeatureTrack& track, const LoudnessProfile& loudness,
+                                                 const Timeline& transcript, const SentenceCut& cut) {
     const std::vector<std::size_t> syllables = syllables_per_sentence(transcript);
     const auto is_spoken = [](std::size_t count) { return count > 0; };
     if (std::count_if(syllables.begin(), syllables.end(), is_spoken) != 1) return std::nullopt;
     const auto k = static_cast<std::size_t>(std::find_if(syllables.begin(), syllables.end(), is_spoken) -
                                             syllables.begin());
-    const FrameSpan line = line_among_quieter_voices(loudness, cut.spans.at(k), syllables[k]);
+    const FrameSpan line = line_among_quieter_voices(track, loudness, cut.spans.at(k), syllables[k]);
     if (line.first_frame == cut.spans[k].first_frame && line.end_frame == cut.spans[k].end_frame)
         return std::nullopt;
     // Sentences without a syllable before it sit at its start (place_spoken_spans) and move with it.

@@ -4,13 +4,15 @@
 // (bench/README.md, session 28: babble's first syllable 128 ms early in tuning, p-babble's 28 ms)
 // or drawn out to its end (session 33: the last 180-630 ms late in 11 of babble's 38 tuning lines).
 // The line is its speaker's loud voice; sound before or after it that never comes near that level
-// is not the line's.
+// is not the line's. A phone's gain lifts the voices before a short line toward it (p-vfast-combo:
+// the line's first syllable 420 ms early, session 33), and the line's voicing still stands over them.
 #ifndef TALKFACE_SPEECH_LINE_AMONG_VOICES_HPP
 #define TALKFACE_SPEECH_LINE_AMONG_VOICES_HPP
 
 #include <cstddef>
 #include <optional>
 
+#include "speech/frame_features.hpp"
 #include "speech/sentence_cutter.hpp"
 #include "talkface/timeline.hpp"
 
@@ -23,9 +25,11 @@ namespace talkface::detail {
 // sound that never stopped, as other voices' does), and only where `speech` is slower than its
 // syllables could be said and the sound left out there is at least a pause long, never comes
 // within kNearLoudVoiceDb of the loud level, and rises and falls by that much as a voice's
-// syllables do (a gain's lift only climbs toward the line).
-FrameSpan line_among_quieter_voices(const LoudnessProfile& loudness, const FrameSpan& speech,
-                                    std::size_t syllables);
+// syllables do (a gain's lift only climbs toward the line). Where a phone's gain lifted the voices
+// before the line to its activity, the start is found on the whole band of `track` (kEnergyDb),
+// which the line's voicing keeps over them (bench/README.md, session 34).
+FrameSpan line_among_quieter_voices(const FeatureTrack& track, const LoudnessProfile& loudness,
+                                    const FrameSpan& speech, std::size_t syllables);
 
 // `cut` (cut_sentences') with the span of `transcript`'s only spoken sentence narrowed to its line
 // (line_among_quieter_voices), for the syllables' placement, and its search kept within a pause
@@ -36,8 +40,8 @@ FrameSpan line_among_quieter_voices(const LoudnessProfile& loudness, const Frame
 // span stays as it is. The checks judge the text on `cut`: on the line alone a wrong text of as
 // many syllables fits about as well as the right one (with the line's span for the checks too,
 // short_kinds_bench caught 51 -> 42 of 760 wrong texts in tuning: bench/README.md, session 29).
-std::optional<SentenceCut> line_cut_among_voices(const LoudnessProfile& loudness, const Timeline& transcript,
-                                                 const SentenceCut& cut);
+std::optional<SentenceCut> line_cut_among_voices(const FeatureTrack& track, const LoudnessProfile& loudness,
+                                                 const Timeline& transcript, const SentenceCut& cut);
 
 }  // namespace talkface::detail
 

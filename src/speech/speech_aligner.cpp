@@ -121,7 +121,7 @@ Timeline align_track(const FeatureTrack& track, const LoudnessProfile& loudness,
             } catch (const AlignmentError&) {
                 // Refused after the noise: the placement the checks passed stands.
             }
-        } else if (const auto line = line_cut_among_voices(loudness, transcript, cut)) {
+        } else if (const auto line = line_cut_among_voices(track, loudness, transcript, cut)) {
             try {
                 result = align_cut(track, loudness, transcript, *line, progress, is_checked, options.lenient);
             } catch (const AlignmentError&) {
