@@ -26,8 +26,9 @@ import struct
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "cli"))
-from bad_inputs import ogg_crc  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "common"))
+from container_layout import (MP4_DURATION_FIELDS, after_id3, flac_frames_start, mp3_frame_count_at,  # noqa: E402
+                              mp4_boxes, ogg_pages, set_ogg_page_crc, with_flac_total_samples, without_mdat)
 
 FF = ["ffmpeg", "-nostdin", "-loglevel", "error", "-y"]
 # After the inputs: output options (the muxers' serial numbers and UIDs fixed, the encoders' versions unsaid).
@@ -66,42 +67,9 @@ def encode_goods(source, folder):
     return made
 
 
-def u32le(data, at):
-    return struct.unpack_from("<I", data, at)[0]
-
-
-def ogg_pages(data):
-    """(start, end, granule) of each Ogg page."""
-    pages, at = [], 0
-    while data[at:at + 4] == b"OggS":
-        segments = data[at + 26]
-        body = sum(data[at + 27:at + 27 + segments])
-        end = at + 27 + segments + body
-        pages.append((at, end, struct.unpack_from("<q", data, at + 6)[0]))
-        at = end
-    return pages
-
-
-def mp4_boxes(data):
-    """(type, start, end) of the top-level boxes of an MP4/MOV."""
-    boxes, at = [], 0
-    while at + 8 <= len(data):
-        size = struct.unpack_from(">I", data, at)[0]
-        kind = data[at + 4:at + 8]
-        if size == 1:
-            size = struct.unpack_from(">Q", data, at + 8)[0]
-        if size < 8:
-            break
-        boxes.append((kind, at, at + size))
-        at += size
-    return boxes
-
-
 def mp3_first_frame_end(data):
     """The end of the first MPEG audio frame (after an ID3v2 tag)."""
-    at = 0
-    if data[:3] == b"ID3":
-        at = 10 + sum((data[6 + i] & 0x7F) << (7 * (3 - i)) for i in range(4))
+    at = after_id3(data)
     while not (data[at] == 0xFF and data[at + 1] & 0xE0 == 0xE0):
         at += 1
     version = (data[at + 1] >> 3) & 3  # 3: MPEG-1, 2: MPEG-2, 0: MPEG-2.5
@@ -118,12 +86,7 @@ def header_end(name, data):
     if name.endswith(".wav"):
         return data.index(b"data") + 8
     if name.endswith(".flac"):
-        at = 4
-        while True:
-            last, length = data[at] & 0x80, int.from_bytes(data[at + 1:at + 4], "big")
-            at += 4 + length
-            if last:
-                return at
+        return flac_frames_start(data)
     if name.endswith(".ogg"):
         return next(start for start, _, granule in ogg_pages(data) if granule > 0)
     if name.endswith(".mp3"):
@@ -135,7 +98,7 @@ def header_end(name, data):
 
 def header_only(name, data):
     if name.endswith((".m4a", ".mp4", ".mov")):  # the index with no sound: every box but mdat
-        return b"".join(data[start:end] for kind, start, end in mp4_boxes(data) if kind != b"mdat")
+        return without_mdat(data)
     return data[:header_end(name, data)]
 
 
@@ -147,15 +110,14 @@ def huge_length(name, data):
         struct.pack_into("<I", data, at, 0x7FFFFF00)
         struct.pack_into("<I", data, 4, 0x7FFFFF00 + at)
     elif name.endswith(".flac"):
-        head = int.from_bytes(data[21:26], "big")
-        data[21:26] = ((head & ~0xFFFFFFFFF) | 0xFFFFFFFF0).to_bytes(5, "big")
+        data = with_flac_total_samples(data, 0xFFFFFFFF0)
     elif name.endswith(".mp3"):
-        tag = max(data.find(b"Xing"), data.find(b"Info"))
-        if tag < 0:
+        at = mp3_frame_count_at(data)
+        if at is None:
             return None
-        struct.pack_into(">I", data, tag + 8, 0x7FFFFFF0)
+        struct.pack_into(">I", data, at, 0x7FFFFFF0)
     elif name.endswith((".m4a", ".mp4", ".mov")):
-        for box, offset in ((b"mvhd", 20), (b"tkhd", 24), (b"mdhd", 20)):
+        for box, offset in MP4_DURATION_FIELDS:
             at = 0
             while (at := data.find(box, at)) >= 0:
                 struct.pack_into(">I", data, at + offset, 0x7FFFFFF0)
@@ -163,8 +125,7 @@ def huge_length(name, data):
     elif name.endswith(".ogg"):
         start, end, _ = ogg_pages(bytes(data))[-1]
         struct.pack_into("<q", data, start + 6, 1 << 40)
-        data[start + 22:start + 26] = b"\0\0\0\0"
-        struct.pack_into("<I", data, start + 22, ogg_crc(bytes(data[start:end])))
+        set_ogg_page_crc(data, start, end)
     else:  # Matroska: the Segment's Info's Duration (0x4489), a float of 4 or 8 bytes
         at = data.find(b"\x44\x89")
         if at < 0:

@@ -9,7 +9,13 @@ import math
 import os
 import re
 import struct
+import sys
 import wave
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from container_layout import (FLAC_MAX_TOTAL, MP4_DURATION_FIELDS, after_id3, flac_frames_start,  # noqa: E402
+                              flac_total_samples, mp3_frame_count_at, ogg_pages, set_ogg_page_crc,
+                              with_flac_total_samples, without_mdat)
 
 SOURCE_DIR = os.environ.get("TALKFACE_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 SPEECH = os.path.join(SOURCE_DIR, "tests", "data", "speech")
@@ -207,39 +213,11 @@ def audio_files():
     }
 
 
-def flac_frames_start(flac):
-    """Where a FLAC's first frame starts: after "fLaC" and its metadata blocks (the last flagged)."""
-    at = 4
-    while True:
-        is_last, length = flac[at] & 0x80, int.from_bytes(flac[at + 1 : at + 4], "big")
-        at += 4 + length
-        if is_last:
-            return at
-
-
-def without_mdat(mp4):
-    """An MP4's top-level boxes but its sound's (mdat): an index with no sound."""
-    boxes, at = [], 0
-    while at + 8 <= len(mp4):
-        size = int.from_bytes(mp4[at : at + 4], "big")
-        if mp4[at + 4 : at + 8] != b"mdat":
-            boxes.append(mp4[at : at + size])
-        at += size
-    return b"".join(boxes)
-
-
-def after_id3(mp3):
-    """Where an MP3's first frame starts: after its ID3v2 tag (a size of 4 bytes of 7 bits)."""
-    if mp3[:3] != b"ID3":
-        return 0
-    return 10 + sum((mp3[6 + i] & 0x7F) << (7 * (3 - i)) for i in range(4))
-
-
 def with_second_page_damaged(ogg):
     """`ogg` with a byte of its second page (a Vorbis stream's comment and setup headers) changed: its
     check fails there."""
     data = bytearray(ogg)
-    second = data.index(b"OggS", 4)
+    second = ogg_pages(ogg)[1][0]
     data[second + 27 + data[second + 26] + 10] ^= 0xFF
     return bytes(data)
 
@@ -260,26 +238,14 @@ def fmt_after_data(wav):
     return wav[:fmt_at] + wav[data_at:] + wav[fmt_at:data_at]
 
 
-def ogg_crc(page):
-    """The CRC of an Ogg page (its CRC field zero): polynomial 0x04C11DB7, not reflected."""
-    crc = 0
-    for byte in page:
-        crc ^= byte << 24
-        for _ in range(8):
-            crc = (crc << 1) ^ 0x04C11DB7 if crc & 0x80000000 else crc << 1
-        crc &= 0xFFFFFFFF
-    return crc
-
-
 def opus_with_channels(opus, channels):
     """`opus` with its OpusHead stating `channels`, its first page's CRC made right again: a header
     that is damaged, not a page."""
     data = bytearray(opus)
     head = data.index(b"OpusHead")
     data[head + 9] = channels
-    page_end = data.index(b"OggS", 4)
-    data[22:26] = b"\x00" * 4
-    data[22:26] = struct.pack("<I", ogg_crc(bytes(data[:page_end])))
+    start, end, _ = ogg_pages(data)[0]
+    set_ogg_page_crc(data, start, end)
     return bytes(data)
 
 
@@ -315,15 +281,15 @@ def caf_bytes(pcm, *, bits=16, is_float=False, rate_hz=16000):
 
 def mp3_with_stated_frames(mp3, scale):
     """`mp3` with the frame count of its Xing/Info header (LAME's tag) scaled."""
-    at = max(mp3.find(b"Xing"), mp3.find(b"Info"))
-    frames = int.from_bytes(mp3[at + 8 : at + 12], "big")
-    return mp3[: at + 8] + int(frames * scale).to_bytes(4, "big") + mp3[at + 12 :]
+    at = mp3_frame_count_at(mp3)
+    frames = int.from_bytes(mp3[at : at + 4], "big")
+    return mp3[:at] + int(frames * scale).to_bytes(4, "big") + mp3[at + 4 :]
 
 
 def mp4_with_stated_length(mp4, scale):
     """`mp4` with the durations its mvhd, tkhd and mdhd boxes (version 0) state scaled."""
     data = bytearray(mp4)
-    for box, offset in ((b"mvhd", 20), (b"tkhd", 24), (b"mdhd", 20)):
+    for box, offset in MP4_DURATION_FIELDS:
         at = data.index(box) + offset
         data[at : at + 4] = int(int.from_bytes(data[at : at + 4], "big") * scale).to_bytes(4, "big")
     return bytes(data)
@@ -360,12 +326,8 @@ def amr_noise(magic, speech_header, speech_bytes, frames=150):
 
 
 def flac_with_total(flac, scale):
-    """`flac` with its STREAMINFO's total samples (36 bits at byte 21, low nibble on) scaled."""
-    head = int.from_bytes(flac[21:26], "big")
-    total = head & 0xFFFFFFFFF
-    new_total = min(int(total * scale), 0xFFFFFFFFF)
-    head = (head & ~0xFFFFFFFFF) | new_total
-    return flac[:21] + head.to_bytes(5, "big") + flac[26:]
+    """`flac` with its STREAMINFO's total samples scaled."""
+    return with_flac_total_samples(flac, min(int(flac_total_samples(flac) * scale), FLAC_MAX_TOTAL))
 
 
 def ten_hour_silence(folder, name="ten_hours_silent.wav", rate_hz=16000):
