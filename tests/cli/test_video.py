@@ -12,19 +12,21 @@ import re
 import shutil
 import signal
 import subprocess
+import sys
 import time
 
 import pytest
 from PIL import Image
 
+sys.path.insert(0, str(pathlib.Path(__file__).parents[1] / "common"))
+from mouth_pixels import mouth_inside_pixels  # noqa: E402
+
 CLI = os.environ["TALKFACE_CLI"]
 SPEECH_DIR = pathlib.Path(os.environ["TALKFACE_SOURCE_DIR"]) / "samples" / "speech"
 SPEECH, TRANSCRIPT = SPEECH_DIR / "demo.ogg", SPEECH_DIR / "demo.txt"
 SPEECH_S = 12.95
-# What an open mouth shows inside the lips on the built-in face: the dark (FaceColors::mouth_inside),
-# the upper and lower teeth and the tongue (src/render/face_drawing.cpp's paints).
-LIPS = (0xC8, 0x5A, 0x5A)
-MOUTH_INSIDE = ((0x6A, 0x1E, 0x22), (0xFA, 0xF7, 0xF0), (0xE9, 0xDD, 0xD7), (0xDF, 0x7D, 0x84))
+# 12 keeps the dark lip outline out of the mouth's inside after H.264.
+MOUTH_TOLERANCE = 12
 FFMPEG, FFPROBE = shutil.which("ffmpeg"), shutil.which("ffprobe")
 
 pytestmark = pytest.mark.skipif(FFPROBE is None or FFMPEG is None, reason="ffmpeg is not installed")
@@ -44,22 +46,6 @@ def frame_at(video, time_s, png):
     subprocess.run([FFMPEG, "-v", "error", "-y", "-ss", f"{time_s:.3f}", "-i", str(video), "-frames:v", "1",
                     str(png)], check=True)
     return Image.open(png).convert("RGB")
-
-
-def is_near(pixel, colour, tolerance):
-    return all(abs(p - c) <= tolerance for p, c in zip(pixel, colour))
-
-
-def mouth_inside_pixels(image, tolerance=12):
-    """Pixels of the mouth's inside colours within the lips' box (the teeth's white is the eyes' too);
-    12 keeps the dark lip outline out after H.264."""
-    width = image.width
-    lips = [i for i, pixel in enumerate(image.getdata()) if is_near(pixel, LIPS, 24)]
-    assert lips, "no lips in the frame"
-    left, right = min(i % width for i in lips), max(i % width for i in lips)
-    top, bottom = min(lips) // width, max(lips) // width
-    box = image.crop((left, top, right + 1, bottom + 1))
-    return sum(1 for pixel in box.getdata() if any(is_near(pixel, colour, tolerance) for colour in MOUTH_INSIDE))
 
 
 @pytest.fixture(scope="module")
@@ -108,8 +94,8 @@ def open_vowel_time(alignment):
 def test_mouth_is_open_in_a_vowel_and_closed_in_a_pause(mp4, alignment, tmp_path):
     vowel_s = open_vowel_time(alignment)
     pause_s = alignment["syllables"][0]["start"] / 2
-    open_pixels = mouth_inside_pixels(frame_at(mp4, vowel_s, tmp_path / "vowel.png"))
-    closed_pixels = mouth_inside_pixels(frame_at(mp4, pause_s, tmp_path / "pause.png"))
+    open_pixels = mouth_inside_pixels(frame_at(mp4, vowel_s, tmp_path / "vowel.png"), MOUTH_TOLERANCE)
+    closed_pixels = mouth_inside_pixels(frame_at(mp4, pause_s, tmp_path / "pause.png"), MOUTH_TOLERANCE)
     assert open_pixels > 60, f"mouth at {vowel_s:.3f} s shows {open_pixels} inside pixels"
     assert closed_pixels < 10, f"mouth at {pause_s:.3f} s shows {closed_pixels} inside pixels"
 
