@@ -35,20 +35,6 @@ StageBox canvas_of(const FaceModel& face) {
     return box;
 }
 
-// Frames at the render tests' poses (face_grid.hpp), with every mouth shape.
-std::vector<FaceState> pose_grid(const FaceModel& face) {
-    std::vector<FaceState> frames;
-    for (const Pose& pose : test::pose_grid()) {
-        for (MouthShape shape : all_mouth_shapes()) {
-            FaceState state;
-            state.pose = pose;
-            state.mouth = mouth_controls(face, shape);
-            frames.push_back(state);
-        }
-    }
-    return frames;
-}
-
 }  // namespace
 
 TEST_SUITE("announcer layout") {
@@ -57,7 +43,7 @@ TEST_SUITE("announcer layout") {
             CAPTURE(name);
             WebPageOptions options;
             const StageBox canvas = canvas_of(face);
-            const std::vector<FaceState> frames = pose_grid(face);
+            const std::vector<FaceState> frames = test::talking_frames(face);
             const AnnouncerLayout layout = detail::announcer_layout(face, canvas, frames, options);
             const double scale = layout.face.width / canvas.width;
             for (const FaceState& state : frames) {
@@ -86,7 +72,7 @@ TEST_SUITE("announcer layout") {
         // mouth of every frame; the extreme poses give the box its size. (The whole pose grid here
         // made this case 2.7 minutes long under the sanitizers, for 228 placements.)
         std::vector<FaceState> frames;
-        for (const FaceState& state : pose_grid(face)) {
+        for (const FaceState& state : test::talking_frames(face)) {
             const Pose& pose = state.pose;
             if (std::abs(pose.alpha_deg) + std::abs(pose.beta_deg) + std::abs(pose.gamma_deg) == 0.0 ||
                 (std::abs(pose.alpha_deg) == 15.0 && std::abs(pose.beta_deg) == 15.0 && std::abs(pose.gamma_deg) == 15.0))

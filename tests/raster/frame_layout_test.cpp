@@ -10,25 +10,10 @@
 #include "render/face_canvas.hpp"
 #include "render/face_grid.hpp"
 #include "talkface/face_pose.hpp"
-#include "talkface/mouth_shape.hpp"
 
 using namespace talkface;
 
 namespace {
-
-// A talking head: every mouth shape at every pose of the render tests' grid.
-std::vector<FaceState> talking_frames(const FaceModel& face) {
-    std::vector<FaceState> frames;
-    for (const Pose& pose : test::pose_grid()) {
-        for (MouthShape shape : all_mouth_shapes()) {
-            FaceState state;
-            state.pose = pose;
-            state.mouth = mouth_controls(face, shape);
-            frames.push_back(state);
-        }
-    }
-    return frames;
-}
 
 void check_same_box(const detail::CanvasBox& frame_box, const detail::StageBox& page_box) {
     CHECK(frame_box.x == doctest::Approx(page_box.x).epsilon(1e-9));
@@ -58,7 +43,7 @@ TEST_CASE("the announcer's frame places the face's canvas where the page's stage
                            detail::announcer_layout(face, stage_canvas, {}, page).face);
             // Talking, as render_video places it for an animation's frames: larger where the page
             // makes the face larger to keep the open mouth clear of the caption.
-            const std::vector<FaceState> frames = talking_frames(face);
+            const std::vector<FaceState> frames = test::talking_frames(face);
             const detail::AnnouncerLayout layout = detail::announcer_layout(face, stage_canvas, frames, page);
             const FrameOptions placed = detail::with_announcer_placement(face, frames, frame);
             check_same_box(detail::place_face(face, canvas, placed).canvas_in_frame, layout.face);

@@ -1,5 +1,5 @@
 // The faces and poses the render tests check their properties over: the built-in face and every
-// sample face file, at -15..15 degrees on each axis.
+// sample face file, at -15..15 degrees on each axis, and a talking head's frames at those poses.
 #ifndef TALKFACE_TESTS_RENDER_FACE_GRID_HPP
 #define TALKFACE_TESTS_RENDER_FACE_GRID_HPP
 
@@ -12,6 +12,7 @@
 #include "common/test_paths.hpp"
 #include "talkface/face_model.hpp"
 #include "talkface/face_pose.hpp"
+#include "talkface/mouth_shape.hpp"
 
 namespace talkface::test {
 
@@ -36,6 +37,20 @@ inline std::vector<Pose> pose_grid() {
         }
     }
     return poses;
+}
+
+// A talking head: every mouth shape at every pose of the grid.
+inline std::vector<FaceState> talking_frames(const FaceModel& face) {
+    std::vector<FaceState> frames;
+    for (const Pose& pose : pose_grid()) {
+        for (MouthShape shape : all_mouth_shapes()) {
+            FaceState state;
+            state.pose = pose;
+            state.mouth = mouth_controls(face, shape);
+            frames.push_back(state);
+        }
+    }
+    return frames;
 }
 
 }  // namespace talkface::test
