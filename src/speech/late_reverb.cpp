@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "common/order_statistics.hpp"
+#include "speech/level_line.hpp"
 
 namespace talkface::detail {
 
@@ -19,29 +20,6 @@ constexpr std::size_t kFollowedBands = kMelFilters + kBandColumns.size();
 // the tails by it, and as one decay is read for every band (without_late_ringing follows each band
 // at it); the tails' lines are fitted to it and the voice before a tail is weighed on it.
 constexpr int kTailLevelColumn = kEnergyDb;
-
-// The least-squares line through the levels (kTailLevelColumn) of frames [first, end): its level at
-// `first` and its change a frame.
-struct Line {
-    double start_db = 0.0;
-    double slope_db_per_frame = 0.0;
-};
-
-Line fit_line(const FeatureTrack& track, std::size_t first, std::size_t end) {
-    const double n = static_cast<double>(end - first);
-    double sum_x = 0.0, sum_y = 0.0, sum_xx = 0.0, sum_xy = 0.0;
-    for (std::size_t t = first; t < end; ++t) {
-        const double x = static_cast<double>(t - first);
-        const double y = track.at(t, kTailLevelColumn);
-        sum_x += x;
-        sum_y += y;
-        sum_xx += x * x;
-        sum_xy += x * y;
-    }
-    const double spread = n * sum_xx - sum_x * sum_x;
-    const double slope = spread > 0.0 ? (n * sum_xy - sum_x * sum_y) / spread : 0.0;
-    return {(sum_y - slope * sum_x) / n, slope};
-}
 
 // The DCT of frame_features' cepstra and its inverse over the mel bands, as far as the cepstra
 // keep it: the bands read from a frame's cepstra give those cepstra back.
@@ -79,14 +57,14 @@ std::optional<RoomRinging> measure_room_ringing(const FeatureTrack& track,
     struct Tail {
         const SentenceChain* chain;
         std::size_t first_frame;
-        Line line;
+        LevelLine line;
     };
     std::vector<Tail> tails;
     std::vector<double> decays;
     for (const SentenceChain& chain : chains) {
         if (!chain.ends_in_tail) continue;
         const std::size_t first = chain.speech.end_frame - chain.tail_frames;
-        const Line line = fit_line(track, first, chain.speech.end_frame);
+        const LevelLine line = fit_level_line(track, kTailLevelColumn, first, chain.speech.end_frame);
         if (!(line.slope_db_per_frame < 0.0)) continue;
         tails.push_back({&chain, first, line});
         decays.push_back(-line.slope_db_per_frame);

@@ -22,11 +22,12 @@ void place_in_room(const SentenceChain& plain_chain, std::size_t w, DryRoom* dry
                    ViterbiWorkspace& workspace, EntryMaxMarginals& room_marginals, Timeline& room_result,
                    std::vector<SyllableEvidence>& room_evidence) {
     EmissionScores& room_scores = dry ? dry->scores : scores;
-    if (dry) {
-        observe(dry->track, loudness, plain_chain.searched, dry->observations);
-        dry->learned.model.score(dry->observations.data(), plain_chain.searched.length(), room_scores);
-    }
     SentenceChain ringing = plain_chain;
+    if (dry) {
+        ringing.searched = plain_chain.searched_in_room;
+        observe(dry->track, loudness, ringing.searched, dry->observations);
+        dry->learned.model.score(dry->observations.data(), ringing.searched.length(), room_scores);
+    }
     let_closures_ring(ringing.states);
     const auto room_path =
         align_chain(ringing, room_scores, workspace, room_scores.frame_count, transcript, &room_marginals);

@@ -41,8 +41,9 @@ std::optional<DryRoom> dry_room(const FeatureTrack& track, const LoudnessProfile
 
 // Chain `w` placed in a room with its closures ringing (let_closures_ring), its syllables into
 // `room_result` and their evidence into `room_evidence`: on `dry`'s features and models where the
-// room's ringing was taken off (late_reverb.hpp), else on the recorded ones, whose scores of the
-// chain `scores` holds. `last_path` is the placing models' last round's path of the plain chain.
+// room's ringing was taken off (late_reverb.hpp), searched only to where the voice stopped before
+// the ringing (SentenceChain::searched_in_room), else on the recorded ones, whose scores of the
+// chain's `searched` `scores` holds. `last_path` is the placing models' last round's path of the plain chain.
 void place_in_room(const SentenceChain& plain_chain, std::size_t w, DryRoom* dry,
                    const std::vector<StateSegment>& last_path, const FeatureTrack& placed_track,
                    const LoudnessProfile& loudness, const Timeline& transcript, EmissionScores& scores,

@@ -1,7 +1,10 @@
 #include "speech/sentence_chains.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+
+#include "speech/level_line.hpp"
 
 namespace talkface::detail {
 
@@ -23,6 +26,15 @@ constexpr std::size_t kRoomTailFrames = 3;
 // after a dip is speech (bench/ human speech: a quiet third-tone syllable after a closure, 15-25 dB
 // under the one before, rises 20-40 dB out of its closure; a tail's 25 ms frames ripple by 1-3 dB).
 constexpr float kTailRiseDb = 10.0f;
+// Past kTailFallDb a room's tail is surely ringing, which falls on a line at the room's own decay; the
+// ringing starts where the level, followed back, leaves that line drawn back by more than the
+// ringing's ripple (a tail's 25 ms frames ripple by 1-3 dB). The line is fitted to at most
+// kRingingFitFrames of the tail and at least kLeastRingingFitFrames: a shorter tail is the noise
+// floor's or a fade's. (bench/README.md Session 33 (room), the short kinds' rooms, tuning: 21 of 38
+// line ends within 5 frames, the mark alone 10.)
+constexpr float kRingingRippleDb = 4.0f;
+constexpr std::size_t kRingingFitFrames = 30;
+constexpr std::size_t kLeastRingingFitFrames = 8;
 // Past the end of a voice in a room, the search reaches only this far into the tail.
 constexpr std::size_t kTailEdgeFrames = 5;
 // What the silence at each edge of a recording cut to its sound may take: a phone's coder puts
@@ -32,6 +44,16 @@ constexpr std::size_t kTailEdgeFrames = 5;
 // 92.7%; main 91.5%); the weak first sound that set the floors reaches past it (espeak-ng's h of
 // 好, 80 ms).
 constexpr std::size_t kCutEdgeFrames = 2;
+
+// The loudest frame of the last kTailReferenceFrames of [first, end) (first < end): where the end
+// of a sentence's voice is measured from.
+std::size_t loudest_before(const FeatureTrack& track, std::size_t first, std::size_t end) {
+    std::size_t loudest = end - 1;
+    for (std::size_t t = end > first + kTailReferenceFrames ? end - kTailReferenceFrames : first; t < end;
+         ++t)
+        if (track.at(t, kEnergyDb) > track.at(loudest, kEnergyDb)) loudest = t;
+    return loudest;
+}
 
 // Frames of `span` that are not in a pause: what the syllables fill, so that the vowels' duration
 // priors follow the speaking rate, not the pauses (a transcript without punctuation runs over the
@@ -101,6 +123,13 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
         chain.ends_in_tail = chain.tail_frames >= kRoomTailFrames;
         chain.searched.end_frame =
             std::min(upper, voiced_end < speech.end_frame ? voiced_end + kTailEdgeFrames : speech.end_frame + kEdgeFrames);
+        chain.searched_in_room = chain.searched;
+        if (chain.ends_in_tail) {
+            const std::size_t ringing_first =
+                end_before_ringing(track, speech.first_frame, voiced_end, speech.end_frame);
+            chain.searched_in_room.end_frame =
+                std::min(chain.searched.end_frame, ringing_first + kTailEdgeFrames);
+        }
         chain.states = build_phone_chain(chain.syllables, chain.searched.length(),
                                          speech_frames(loudness, {speech.first_frame, voiced_end}));
         // A recording cut to its sound has no silence at its edges for these states to take, but a
@@ -121,9 +150,7 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
 // noise the floor stays above that mark and nothing moves.
 std::size_t end_before_tail(const FeatureTrack& track, std::size_t first, std::size_t end) {
     if (end <= first + 1) return end;
-    std::size_t loudest = end - 1;
-    for (std::size_t t = end > first + kTailReferenceFrames ? end - kTailReferenceFrames : first; t < end; ++t)
-        if (track.at(t, kEnergyDb) > track.at(loudest, kEnergyDb)) loudest = t;
+    const std::size_t loudest = loudest_before(track, first, end);
     const float mark_db = track.at(loudest, kEnergyDb) - kTailFallDb;
     std::size_t trimmed = end;
     float later_loudest_db = -std::numeric_limits<float>::infinity();
@@ -136,6 +163,25 @@ std::size_t end_before_tail(const FeatureTrack& track, std::size_t first, std::s
         --trimmed;
     }
     return trimmed;
+}
+
+std::size_t end_before_ringing(const FeatureTrack& track, std::size_t first, std::size_t mark,
+                               std::size_t end) {
+    const std::size_t fit_end = std::min(end, mark + kRingingFitFrames);
+    if (fit_end < mark + kLeastRingingFitFrames) return mark;
+    const LevelLine ringing = fit_level_line(track, kEnergyDb, mark, fit_end);
+    if (!(ringing.slope_db_per_frame < 0.0)) return mark;
+    auto off_line = [&](std::size_t t) {
+        return track.at(t, kEnergyDb) - ringing.at(static_cast<double>(t) - static_cast<double>(mark));
+    };
+    const std::size_t loudest = loudest_before(track, first, end);
+    std::size_t ringing_first = mark;
+    while (ringing_first > loudest + 1 && std::abs(off_line(ringing_first - 1)) <= kRingingRippleDb)
+        --ringing_first;
+    // Only a voice that stops over the ringing ends where the line says; one whose fade passes under
+    // the line drawn back ends somewhere in it, as likely at the mark as anywhere.
+    return ringing_first > loudest + 1 && off_line(ringing_first - 1) > kRingingRippleDb ? ringing_first
+                                                                                         : mark;
 }
 
 }  // namespace talkface::detail

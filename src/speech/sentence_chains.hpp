@@ -26,6 +26,10 @@ struct SentenceChain {
     std::vector<PhoneState> states;
     std::size_t tail_frames = 0;  // how far end_before_tail moved its end (a room's tail, a fade)
     bool ends_in_tail = false;    // its last sound rings on in a room (end_before_tail cut a tail off)
+    // Where the syllables given out in a room are searched (room_placement.hpp): `searched`, ending
+    // a little past where the voice stopped before the ringing (end_before_ringing) where it ends in a
+    // tail. The models learn on `searched`, whose tail teaches the pause what the room leaves.
+    FrameSpan searched_in_room;
 
     bool is_block() const { return end_sentence > first_sentence + 1; }
 };
@@ -46,6 +50,13 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
 // SPEC: a sentence ends with its last sound. Where speech in [first, end) ends before a room's
 // tail: after its last frame less than a fixed fall below the loudest frame of its end.
 std::size_t end_before_tail(const FeatureTrack& track, std::size_t first, std::size_t end);
+
+// Where the voice in [first, end) stopped before a room's tail, `mark` its end_before_tail: past the
+// mark the tail surely rings, on a straight line at the room's own decay; followed back from the mark,
+// the ringing starts where the level stands over that line drawn back by more than the ringing's
+// ripple. The mark where the tail is too short to draw the line, or the level passes under it.
+std::size_t end_before_ringing(const FeatureTrack& track, std::size_t first, std::size_t mark,
+                               std::size_t end);
 
 }  // namespace talkface::detail
 

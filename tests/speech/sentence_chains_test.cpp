@@ -1,5 +1,5 @@
 // Where a sentence's voice ends before a room's tail (end_before_tail, issue 12: a quiet last
-// syllable is speech, not a tail).
+// syllable is speech, not a tail), and before the tail's ringing (end_before_ringing).
 #include <doctest/doctest.h>
 
 #include <vector>
@@ -28,6 +28,31 @@ TEST_SUITE("sentence chains") {
         const FeatureTrack track = track_of(levels);
         // The voice ends after the last frame within 18 dB of its loudest: 12 frames into the fall.
         CHECK(end_before_tail(track, 0, levels.size()) == 42);
+    }
+
+    TEST_CASE("a large room's slow ringing is followed back to where the voice stopped") {
+        std::vector<float> levels(30, -20.0f);  // the voice
+        // The ringing, 12 dB under the voice where it stops, falls 0.3 dB a frame with a 1 dB ripple:
+        // it passes 18 dB under the voice 23 frames after the voice stopped.
+        for (int k = 0; k < 40; ++k)
+            levels.push_back(-32.0f - 0.3f * static_cast<float>(k) + (k % 2 == 0 ? 1.0f : -1.0f));
+        const FeatureTrack track = track_of(levels);
+        const std::size_t mark = end_before_tail(track, 0, levels.size());
+        CHECK(mark == 53);
+        CHECK(end_before_ringing(track, 0, mark, levels.size()) == 30);
+    }
+
+    TEST_CASE("a fade that passes under the ringing's line drawn back keeps the mark") {
+        // The last vowel fades 1 dB a frame to 20 dB under the voice, while what the louder frames
+        // before it left rings on over it, falling 0.3 dB a frame: followed back, the level leaves the
+        // line under it, and where in the fade the voice stopped cannot be told.
+        std::vector<float> levels(30, -20.0f);
+        for (int k = 1; k <= 20; ++k) levels.push_back(-20.0f - 1.0f * static_cast<float>(k));
+        for (int k = 0; k < 40; ++k) levels.push_back(-34.0f - 0.3f * static_cast<float>(k));
+        const FeatureTrack track = track_of(levels);
+        const std::size_t mark = end_before_tail(track, 0, levels.size());
+        REQUIRE(mark > 50);
+        CHECK(end_before_ringing(track, 0, mark, levels.size()) == mark);
     }
 
     TEST_CASE("a quiet last syllable after a closure is kept, though far under the one before") {
