@@ -261,7 +261,8 @@ void add_page_options(CLI::App& command, AnimateOptions& options) {
                     "spoken sentence highlighted, links, the face beside them")
         ->check(CLI::IsMember({"plain", "announcer", "audiobook"}))
         ->capture_default_str();
-    command.add_option("--title", options.title, "Title of the page (default: the first sentence)");
+    command.add_option("--title", options.title,
+                       "Title of the page (default: the first sentence, cut to 30 characters)");
     command.add_option("--link", options.links, "audiobook: a link under the text, TEXT=URL or URL (repeatable)");
     command.add_option("--background", options.background,
                        "announcer: the stage's background, a colour #rrggbb or an image file (PNG, JPEG, SVG ...)");
