@@ -17,7 +17,7 @@ import subprocess
 import pytest
 
 import talkface
-from browser import CHROMIUM, Browser, silent_wav
+from browser import CHROMIUM, Browser, silent_wav, time_evenly
 
 CLI = os.environ["TALKFACE_CLI"]
 SPEECH_DIR = pathlib.Path(os.environ["TALKFACE_SPEECH_DIR"])
@@ -96,21 +96,7 @@ def long_book(tmp_path_factory):
     """120 sentences, 6 a paragraph; 0.2 s a syllable, 0.4 s between sentences; a link after them."""
     folder = tmp_path_factory.mktemp("book")
     text = "\n\n".join("".join(LINES[(p + k) % len(LINES)] for k in range(6)) for p in range(20))
-    timeline = talkface.read_transcript(text)
-    syllables = timeline.syllables
-    sentences = timeline.sentences
-    t = 0.5
-    for index, sentence in enumerate(sentences):
-        own = [s for s in syllables if s.sentence == index]
-        sentence.start_s = t
-        for syllable in own:
-            syllable.start_s, syllable.end_s = t, t + 0.2
-            t += 0.2
-        sentence.end_s = t
-        t += 0.4
-    timeline.syllables = syllables
-    timeline.sentences = sentences
-    timeline.duration_s = t + 0.5
+    timeline = time_evenly(talkface.read_transcript(text), 0.4)
     audio = folder / "book.wav"
     silent_wav(audio, timeline.duration_s)
     face = talkface.FaceModel.default()

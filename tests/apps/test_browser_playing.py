@@ -20,7 +20,7 @@ import time
 import pytest
 
 import talkface
-from browser import CHROMIUM, Browser, silent_wav
+from browser import CHROMIUM, Browser, silent_wav, time_evenly
 
 CLI = os.environ["TALKFACE_CLI"]
 FRAME_S = 1 / 25  # the pages' animation frame rate (LipSyncOptions)
@@ -100,17 +100,7 @@ def pages(tmp_path_factory):
     lines = ["春天來了。", "小鳥唱歌。", "河水很清。", "讀書用心。", "大家笑了。"]
     text = "".join(lines[k % len(lines)] for k in range(300))
     (folder / "long.txt").write_text(text, encoding="utf-8")
-    timeline = talkface.read_transcript(text)
-    syllables, sentences = timeline.syllables, timeline.sentences
-    t = 0.5
-    for index, sentence in enumerate(sentences):
-        sentence.start_s = t
-        for syllable in (s for s in syllables if s.sentence == index):
-            syllable.start_s, syllable.end_s = t, t + 0.2
-            t += 0.2
-        sentence.end_s = t
-        t += 0.6
-    timeline.syllables, timeline.sentences, timeline.duration_s = syllables, sentences, t + 0.5
+    timeline = time_evenly(talkface.read_transcript(text), 0.6)
     (folder / "long.json").write_text(talkface.timeline_to_json(timeline), encoding="utf-8")
     silent_wav(folder / "long.wav", timeline.duration_s)
     made["long"] = folder / "long.html"

@@ -19,7 +19,7 @@ import zlib
 import pytest
 
 import talkface
-from browser import CHROMIUM, Browser, silent_wav
+from browser import CHROMIUM, Browser, silent_wav, time_evenly
 
 CLI = os.environ["TALKFACE_CLI"]
 
@@ -63,17 +63,7 @@ def demo(tmp_path_factory):
 def timed_page(folder, name, text, app, title=None):
     """`talkface animate --app APP` of `text` timed at 0.2 s a syllable from 0.5 s, 0.4 s between
     sentences, over a silent recording linked beside the page."""
-    timeline = talkface.read_transcript(text)
-    syllables, sentences = timeline.syllables, timeline.sentences
-    t = 0.5
-    for index, sentence in enumerate(sentences):
-        sentence.start_s = t
-        for syllable in (s for s in syllables if s.sentence == index):
-            syllable.start_s, syllable.end_s = t, t + 0.2
-            t += 0.2
-        sentence.end_s = t
-        t += 0.4
-    timeline.syllables, timeline.sentences, timeline.duration_s = syllables, sentences, t + 0.5
+    timeline = time_evenly(talkface.read_transcript(text), 0.4)
     (folder / f"{name}.txt").write_text(text, encoding="utf-8")
     (folder / f"{name}.json").write_text(talkface.timeline_to_json(timeline), encoding="utf-8")
     silent_wav(folder / f"{name}.wav", timeline.duration_s)
