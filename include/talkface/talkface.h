@@ -1422,8 +1422,9 @@ typedef enum tf_web_page_audio {
  * Errors: TF_ERR_INVALID_ARGUMENT if options is NULL or audio is not a tf_web_page_audio. */
 TF_API tf_status tf_web_page_options_set_audio(tf_web_page_options *options, tf_web_page_audio audio,
                                                int bitrate_bps, const char *url);
-/* Announcer: the stage's size in CSS pixels, its colour, and a background image file (PNG, JPEG,
- * GIF, WebP or SVG, embedded; NULL for none). */
+/* Announcer: the stage's size in CSS pixels (its shape, and the pixels of the face's placement: the
+ * page shows it as large as the window lets it be), its colour, and a background image file (PNG,
+ * JPEG, GIF, WebP or SVG, embedded; NULL for none). */
 TF_API tf_status tf_web_page_options_set_stage(tf_web_page_options *options, int width_px, int height_px,
                                                tf_rgb colour, const char *image_path);
 /* Announcer: where the face's rotation origin O (the neck) stands on the stage, pixels (origin_xy

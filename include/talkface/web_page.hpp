@@ -88,8 +88,10 @@ struct WebPageOptions {
     /// audio file's name. Percent-encoded as needed.
     std::string audio_url;
 
-    /// Announcer: the stage's size, and what is behind the face: a colour, or an image file (PNG,
-    /// JPEG, GIF, WebP or SVG, embedded) scaled to cover the stage.
+    /// Announcer: the stage's size (its shape, and the pixels face_origin_px and face_d_px are in:
+    /// the page shows it as large as the window lets it and the player under it be, as a video),
+    /// and what is behind the face: a colour, or an image file (PNG, JPEG, GIF, WebP or SVG,
+    /// embedded) scaled to cover the stage.
     int stage_width_px = 800;
     int stage_height_px = 450;
     Rgb stage_colour{0x1d, 0x3b, 0x5c};

@@ -8,15 +8,16 @@
 // SVG, so that a long sentence wraps and the system's CJK fonts are found as in any page.
 #include <algorithm>
 #include <cstddef>
-#include <cstdlib>
 #include <string>
+#include <string_view>
+#include <vector>
 
-#include "render/announcer_layout.hpp"
 #include "apps/apps.hpp"
+#include "apps/packed_animation.hpp"
 #include "apps/page_fonts.hpp"
 #include "common/atomic_file.hpp"
-#include "common/internal_error.hpp"
 #include "common/number_format.hpp"
+#include "render/announcer_layout.hpp"
 #include "render/html_text.hpp"
 #include "talkface/errors.hpp"
 
@@ -24,24 +25,48 @@ namespace talkface::detail {
 
 namespace {
 
-// The viewBox of the animation's root element, which render_animation_svg() always writes.
-StageBox view_box_of(const std::string& svg) {
-    const std::size_t start = svg.find("viewBox=\"");
-    if (start == std::string::npos) {
-        throw detail::internal_error("the animation has no viewBox");
-    }
-    StageBox box;
-    const char* text = svg.c_str() + start + 9;
-    double* fields[] = {&box.x, &box.y, &box.width, &box.height};
-    for (double* field : fields) {
-        char* end = nullptr;
-        *field = std::strtod(text, &end);
-        text = end;
-    }
-    return box;
+std::string number(double value) {
+    return format_fixed(value, 2);
 }
 
-std::string number(double value) { return format_fixed(value, 2); }
+// The length of UTF-8 `text` in UTF-16 code units, as a script counts a string's characters.
+std::size_t utf16_length(std::string_view text) {
+    std::size_t units = 0;
+    for (const char byte : text) {
+        const auto lead = static_cast<unsigned char>(byte);
+        if ((lead & 0xC0) != 0x80) units += lead >= 0xF0 ? 2 : 1;
+    }
+    return units;
+}
+
+// Where each syllable stands in its sentence's text, and when it starts, per sentence: "OFFSET
+// TIME" pairs (OFFSET in UTF-16 code units, as the page's script reads the sentence's text), for
+// the caption to show the line being said. A written form's syllables ("2026" said in four) stand
+// at the form; a syllable whose text the sentence does not show as such is left out, and the one
+// before it stands for it.
+std::vector<std::string> syllable_marks(const Timeline& timeline) {
+    std::vector<std::string> marks(timeline.sentences.size());
+    std::vector<std::size_t> cursors(timeline.sentences.size(), 0);
+    std::size_t form = 0;
+    for (std::size_t k = 0; k < timeline.syllables.size(); ++k) {
+        const Syllable& syllable = timeline.syllables[k];
+        const std::vector<WrittenForm>& forms = timeline.written_forms;
+        while (form < forms.size() && forms[form].first_syllable + forms[form].syllable_count <= k) ++form;
+        const bool in_form = form < forms.size() && forms[form].first_syllable <= k;
+        if (syllable.sentence >= marks.size() || (in_form && forms[form].first_syllable != k)) continue;
+        const std::string& text = timeline.sentences[syllable.sentence].text;
+        const std::string& shown = in_form ? forms[form].text : syllable.text;
+        std::size_t& cursor = cursors[syllable.sentence];
+        const std::size_t at = shown.empty() ? std::string::npos : text.find(shown, cursor);
+        if (at == std::string::npos) continue;
+        std::string& sentence_marks = marks[syllable.sentence];
+        sentence_marks += (sentence_marks.empty() ? "" : " ") +
+                          std::to_string(utf16_length(std::string_view(text).substr(0, at))) + " " +
+                          format_fixed(syllable.start_s, 3);
+        cursor = at + shown.size();
+    }
+    return marks;
+}
 
 // A share of the stage as a CSS percentage.
 std::string percent(double value, double of) { return format_fixed(100.0 * value / of, 3) + "%"; }
@@ -74,8 +99,10 @@ std::string placed(const std::string& animation_svg, const StageBox& place) {
 // ("#t=") shows its sentence before this script runs. Fitting ends with the band the size it
 // found, so the notices it causes change nothing and cannot loop.
 // A sentence cut even so (a transcript with no punctuation is one sentence) scrolls its lines
-// through the caption as it is spoken, the line at the share of the sentence's time spoken second
-// from the caption's top (a line of it before): its first lines alone stood there for minutes.
+// through the caption as it is spoken, the line of the syllable being said (data-syllables) second
+// from the caption's top (a line of it before): its first lines alone stood there for minutes, and
+// the share of the sentence's time spoken, which came first, showed a line ahead or behind where
+// the speaker slowed or hurried.
 constexpr const char* kCaptionScript = R"js((function () {
   "use strict";
   var caption = document.querySelector(".tf-caption");
@@ -105,11 +132,15 @@ constexpr const char* kCaptionScript = R"js((function () {
     var spoken = caption.querySelector(".tf-current");
     var hidden = caption.scrollHeight - caption.clientHeight;
     if (!spoken || hidden <= 1) { caption.scrollTop = 0; return; }
-    var start = parseFloat(spoken.getAttribute("data-start"));
-    var said = (audio.currentTime - start) / Math.max(parseFloat(spoken.getAttribute("data-end")) - start, 0.001);
+    var marks = (spoken.getAttribute("data-syllables") || "").split(" ").map(parseFloat);
+    var at = 0;
+    for (var k = 0; k + 1 < marks.length && marks[k + 1] <= audio.currentTime; k += 2) at = marks[k];
+    var said = document.createRange();
+    said.setStart(spoken.firstChild, at);
+    said.setEnd(spoken.firstChild, Math.min(at + 1, spoken.firstChild.length));
     var line = parseFloat(window.getComputedStyle(caption).lineHeight);
-    var lines = Math.round(spoken.offsetHeight / line);
-    caption.scrollTop = Math.min(hidden, Math.max(0, Math.floor(said * lines) - 1) * line);
+    var index = Math.floor((said.getBoundingClientRect().top - spoken.getBoundingClientRect().top) / line + 0.25);
+    caption.scrollTop = Math.min(hidden, Math.max(0, index - 1) * line);
   }
   ["timeupdate", "seeked"].forEach(function (name) { audio.addEventListener(name, follow); });
   document.addEventListener("tf-sentence", fit);
@@ -125,7 +156,8 @@ PageParts announcer_page(const std::string& animation_svg, const FaceModel& face
                          const Timeline& timeline, const WebPageOptions& options, const std::string& title, const std::string& audio_element) {
     const double stage_width = options.stage_width_px;
     const double stage_height = options.stage_height_px;
-    const AnnouncerLayout layout = announcer_layout(face, view_box_of(animation_svg), animation.frames, options);
+    const AnnouncerLayout layout =
+        announcer_layout(face, root_view_box(animation_svg), animation.frames, options);
 
     std::string background = "<rect width=\"" + number(stage_width) + "\" height=\"" + number(stage_height) +
                              "\" fill=\"" + to_hex(options.stage_colour) + "\"/>\n";
@@ -144,11 +176,12 @@ PageParts announcer_page(const std::string& animation_svg, const FaceModel& face
 
     // Every sentence is in the caption, and the page's script shows the one being spoken.
     std::string sentences;
+    const std::vector<std::string> marks = syllable_marks(timeline);
     for (std::size_t k = 0; k < timeline.sentences.size(); ++k) {
         const Sentence& sentence = timeline.sentences[k];
         sentences += "<p class=\"tf-sentence\" data-index=\"" + std::to_string(k) + "\" data-start=\"" +
-                     format_fixed(sentence.start_s, 3) + "\" data-end=\"" + format_fixed(sentence.end_s, 3) + "\">" +
-                     escape_html(sentence.text) + "</p>\n";
+                     format_fixed(sentence.start_s, 3) + "\" data-end=\"" + format_fixed(sentence.end_s, 3) +
+                     "\" data-syllables=\"" + marks[k] + "\">" + escape_html(sentence.text) + "</p>\n";
     }
     const StageBox& band = layout.caption;
     const std::string lower_third =
@@ -162,18 +195,23 @@ PageParts announcer_page(const std::string& animation_svg, const FaceModel& face
     // The caption's size on the stage, min(22cqh, 3.4cqw) of its band, as a share of the stage's width.
     const double caption_share = std::min(0.22 * band.height, 0.034 * band.width) / stage_width;
 
-    // The stage and the player under it within the window's height (16 + 12 + 54 + 16 px around the
-    // stage, and the band's title and two lines when it stands under the stage): on a phone turned
-    // on its side the player lay below the screen.
+    // The stage as large as the window lets it and the player under it be (16 + 12 + 54 + 16 px around
+    // the stage, and the band's title and two lines when it stands under the stage), as a video
+    // fills a page that shows nothing else: held to its --stage size, it stood a fifth of a 4K
+    // window's width in the middle, its caption 21 px; and on a phone turned on its side the player
+    // lay below the screen. The stage's size gives its shape and the units the face is placed in.
     const auto widest = [&](const std::string& around) {
-        return "max-width:min(" + std::to_string(options.stage_width_px) + "px,max(320px,calc((100vh - " +
-               around + ") * " + std::to_string(options.stage_width_px) + " / " +
-               std::to_string(options.stage_height_px) + " + 32px)))";
+        return "max-width:max(320px,calc((100vh - " + around + ") * " +
+               std::to_string(options.stage_width_px) + " / " + std::to_string(options.stage_height_px) +
+               " + 32px))";
     };
 
     PageParts parts;
     parts.style =
-        std::string("body{margin:0;background:#0f172a;color:#e2e8f0;font-family:") + kSansFonts +
+        // Dark whatever the reader's scheme, the player's controls too (they were a white bar under
+        // the stage).
+        std::string(":root{color-scheme:dark}body{margin:0;background:#0f172a;color:#e2e8f0;font-family:") +
+        kSansFonts +
         "}"
         ".tf-announcer{" +
         widest("100px") +

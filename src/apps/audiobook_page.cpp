@@ -10,6 +10,7 @@
 #include <string>
 
 #include "apps/apps.hpp"
+#include "apps/packed_animation.hpp"
 #include "apps/page_fonts.hpp"
 #include "common/number_format.hpp"
 #include "render/html_text.hpp"
@@ -88,9 +89,17 @@ PageParts audiobook_page(const std::string& animation_svg, const Timeline& timel
         links += "</ul></nav>\n";
     }
 
+    // The face's column from 820 px: 280-360 px, or a quarter of a wider window's width where its
+    // height lets the face be that large (at 4K, 3840x2160 at DPR 1, held to 360 px, the face stood
+    // a tenth of the width); the book wider by as much, so that the text keeps its column.
+    const StageBox face = root_view_box(animation_svg);
+    const std::string face_column =
+        "max(360px,min(25vw,(100vh - 160px) * " + format_fixed(face.width / face.height, 4) + " + 24px))";
     PageParts parts;
     parts.style =
-        std::string("body{margin:0;background:#f7f3ea;color:#2b2b2b;font-family:") + kSerifFonts +
+        std::string(
+            ":root{color-scheme:light dark}body{margin:0;background:#f7f3ea;color:#2b2b2b;font-family:") +
+        kSerifFonts +
         "}"
         ".tf-book{display:grid;grid-template-columns:minmax(0,1fr);gap:0 40px;max-width:1180px;margin:0 auto;"
         "padding:0 16px 40vh}"
@@ -121,7 +130,9 @@ PageParts audiobook_page(const std::string& animation_svg, const Timeline& timel
         // From 820 px, or on a phone turned on its side (where the phone's layout left the face 58 px
         // high on 568x320), the text on the left and the face beside it.
         "@media (min-width:820px),(orientation:landscape) and (min-width:560px){"
-        ".tf-book{grid-template-columns:minmax(0,1fr) minmax(280px,360px);padding:24px 24px 30vh}"
+        ".tf-book{grid-template-columns:minmax(0,1fr) minmax(280px," +
+        face_column + ");max-width:calc(820px + " + face_column +
+        ");padding:24px 24px 30vh}"
         ".tf-reader{grid-column:1;grid-row:1}"
         ".tf-teacher{grid-column:2;grid-row:1;top:16px;align-self:start;margin:16px 0 0;border-radius:12px;"
         "padding:12px;box-shadow:0 2px 12px #0002}"
@@ -136,6 +147,13 @@ PageParts audiobook_page(const std::string& animation_svg, const Timeline& timel
         ".tf-reader h1{font-size:1.4rem;margin:8px 0 12px}"
         ".tf-text{font-size:1.2rem;line-height:1.95}"
         "}"
+        // A reader's dark scheme (the page was white at night): the paper dark, the spoken sentence
+        // marked in a dark amber under light text, the face keeping its own colours as a picture does.
+        "@media screen and (prefers-color-scheme:dark){body{background:#1c1a16;color:#e7e0cf}"
+        ".tf-reader h1{border-bottom-color:#4d4535}.tf-sentence:hover{background:#3a3428}"
+        ".tf-sentence.tf-current{background:#7a5c10;color:#fff8e6;box-shadow:0 0 0 2px #7a5c10}"
+        ".tf-teacher{background:#28251f;box-shadow:0 2px 12px #0009}.tf-links h2,.tf-keys{color:#c2b48f}"
+        ".tf-links a{color:#93c5fd}kbd{background:#2f2b24;border-color:#5e5442}}"
         // High contrast (Windows' contrast themes, forced colours) replaces every background with the
         // theme's: the sentence being spoken was no longer told from the rest. The theme's own
         // highlight colours mark it, as they mark selected text.

@@ -1,5 +1,6 @@
 #include "apps/packed_animation.hpp"
 
+#include <cstdlib>
 #include <memory>
 #include <new>
 
@@ -65,6 +66,22 @@ PackedAnimation pack_animation(const std::string& svg) {
     packed.data = std::string("<script type=\"application/gzip\" id=\"") + kDataId + "\">" +
                   base64(gzip(svg.substr(open_end + 1, close - open_end - 1))) + "</script>\n";
     return packed;
+}
+
+StageBox root_view_box(const std::string& svg) {
+    const std::size_t start = svg.find("viewBox=\"");
+    if (start == std::string::npos || start > svg.find('>')) {
+        throw internal_error("the animation has no viewBox");
+    }
+    StageBox box;
+    const char* text = svg.c_str() + start + 9;
+    double* fields[] = {&box.x, &box.y, &box.width, &box.height};
+    for (double* field : fields) {
+        char* end = nullptr;
+        *field = std::strtod(text, &end);
+        text = end;
+    }
+    return box;
 }
 
 std::string after_unpacking(const std::string& script) {

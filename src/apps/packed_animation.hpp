@@ -9,6 +9,8 @@
 
 #include <string>
 
+#include "render/announcer_layout.hpp"
+
 namespace talkface::detail {
 
 struct PackedAnimation {
@@ -20,6 +22,10 @@ struct PackedAnimation {
 // its XML declaration) into an empty root and its packed content. Deterministic: the same
 // document packs to the same bytes.
 PackedAnimation pack_animation(const std::string& svg);
+
+// The viewBox of an animation's root element (`svg` begins with it), which render_animation_svg()
+// always writes: where the face is drawn, and the shape a page gives it.
+StageBox root_view_box(const std::string& svg);
 
 // `script` (the page's own) run once the animation is unpacked into its root, as one script.
 std::string after_unpacking(const std::string& script);

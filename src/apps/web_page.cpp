@@ -47,9 +47,17 @@ constexpr const char* kScript = R"js((function () {
     for (var k = 0; k < sentences.length; ++k) {
       if (parseFloat(sentences[k].getAttribute("data-start")) <= t) index = k;
     }
+    // The sentence being spoken is marked for a screen reader too (aria-current), not by its
+    // colour alone: focused, it is read out as the current one.
     if (index !== current) {
-      if (current >= 0) sentences[current].classList.remove("tf-current");
-      if (index >= 0) sentences[index].classList.add("tf-current");
+      if (current >= 0) {
+        sentences[current].classList.remove("tf-current");
+        sentences[current].removeAttribute("aria-current");
+      }
+      if (index >= 0) {
+        sentences[index].classList.add("tf-current");
+        sentences[index].setAttribute("aria-current", "true");
+      }
       current = index;
       document.dispatchEvent(new CustomEvent("tf-sentence",
         { detail: { index: index, element: index >= 0 ? sentences[index] : null } }));
@@ -106,6 +114,7 @@ constexpr const char* kScript = R"js((function () {
       if (sentences[index].hasAttribute("tabindex")) sentences[index].focus({ preventScroll: true });
     }
   });
+  var source = audio.getAttribute("src") || "";
   var wanted = /(?:^#|&)t=([0-9]+(?:\.[0-9]+)?)/.exec(window.location.hash);
   var stays = /(?:^#|&)pause(?:&|$)/.test(window.location.hash);
   // Ready once the face shows the audio's time: the SVG's timeline starts only with the document's
@@ -118,10 +127,27 @@ constexpr const char* kScript = R"js((function () {
     }
     document.body.setAttribute("data-tf-ready", "1");
   }
+  // Served by a server that does not send byte ranges (python -m http.server), a linked speech
+  // cannot be seeked in Chromium (its seekable range stays [0, 0]): a page opened at a time opened
+  // at 0. The speech is then fetched whole and played from memory, where every time can be sought.
+  function reachable(time) {
+    for (var k = 0; k < audio.seekable.length; ++k) {
+      if (audio.seekable.start(k) <= time && time <= audio.seekable.end(k)) return true;
+    }
+    return false;
+  }
   function start() {
     if (!wanted) { ready(); return; }
+    var time = Math.min(parseFloat(wanted[1]), isFinite(audio.duration) ? audio.duration : Infinity);
+    if (!reachable(time) && /^https?:/.test(audio.currentSrc)) {
+      fetch(audio.currentSrc).then(function (response) { return response.blob(); }).then(function (whole) {
+        audio.addEventListener("loadedmetadata", start, { once: true });
+        audio.src = URL.createObjectURL(whole);
+      }).catch(failed);
+      return;
+    }
     audio.addEventListener("seeked", ready, { once: true });
-    audio.currentTime = parseFloat(wanted[1]);
+    audio.currentTime = time;
     if (!stays) play();
   }
   // A speech that cannot be played (a linked file missing, a format this browser lacks) is said
@@ -130,9 +156,9 @@ constexpr const char* kScript = R"js((function () {
     var notice = document.createElement("p");
     notice.className = "tf-audio-error";
     notice.setAttribute("role", "alert");
-    var linked = !/^data:/.test(audio.getAttribute("src") || "");
+    var linked = !/^data:/.test(source);
     notice.textContent = "The speech could not be played: " + (linked
-      ? "\u201c" + audio.getAttribute("src") + "\u201d is missing beside this page, or in a format this browser does not play."
+      ? "\u201c" + source + "\u201d is missing beside this page, or in a format this browser does not play."
       : "this browser does not play its format.");
     audio.insertAdjacentElement("afterend", notice);
     ready();
@@ -169,12 +195,13 @@ constexpr int kHighestBitrateBps = 128000;
 // the notice of a speech that cannot be played. A word longer than its line (an address, a line of
 // Latin letters without spaces) is broken where it reaches the edge: it pushed a phone's page to
 // 1105 px, shown shrunk and cut, and ran out of the announcer's caption. On paper the player, which
-// cannot be pressed there, is left out.
+// cannot be pressed there, is left out. On a dark page the ring is light.
 constexpr const char* kCommonStyle =
     "*{box-sizing:border-box}"
     "body{overflow-wrap:anywhere}"
     "@media print{audio{display:none}}"
     ":focus-visible{outline:3px solid #1d4ed8;outline-offset:3px}"
+    "@media screen and (prefers-color-scheme:dark){:focus-visible{outline-color:#93c5fd}}"
     ".tf-audio-error{margin:8px 0 0;padding:8px 12px;border-radius:6px;background:#fee2e2;color:#7f1d1d;"
     "font-size:.95rem;line-height:1.4}";
 
@@ -340,16 +367,26 @@ std::string build_web_page(const SvgAnimator& animator, const Animation& animati
         if (options.app == WebPageApp::audiobook) {
             parts = detail::audiobook_page(svg, timeline, options, title, audio);
         } else {
+            const detail::StageBox face = detail::root_view_box(packed.root);
             parts.style =
-                std::string("body{margin:0;background:#eef2f6;font-family:") + detail::kSansFonts +
+                std::string(":root{color-scheme:light dark}body{margin:0;background:#eef2f6;font-family:") +
+                detail::kSansFonts +
                 "}"
-                ".tf-plain{max-width:520px;margin:24px auto;padding:0 16px}"
+                // As wide as the face is when it fills the window's height, as a video fills a page
+                // that shows nothing else (at 4K, held to 520 px, it stood small in the middle).
+                ".tf-plain{max-width:max(520px,calc((100vh - 170px) * " +
+                detail::format_fixed(face.width / face.height, 4) +
+                " + 32px));margin:24px auto;padding:0 16px}"
                 ".tf-plain h1{font-size:1.2rem;color:#334155}"
                 // No taller than the window leaves beside the title and the player: on a phone turned
                 // on its side (568x320) the face took 580 px and the player lay below the screen.
                 "svg.tf-animation{display:block;width:100%;height:auto;max-height:calc(100vh - 170px);"
                 "border-radius:8px;background:#fff}"
-                "audio{display:block;width:100%;margin-top:12px}";
+                "audio{display:block;width:100%;margin-top:12px}"
+                // A reader's dark scheme: the page around the face dark (it was white at night); the
+                // face keeps its own colours, as a picture does.
+                "@media screen and (prefers-color-scheme:dark){body{background:#0f172a;color:#e2e8f0}"
+                ".tf-plain h1{color:#cbd5e1}}";
             parts.body = "<main class=\"tf-plain\">\n<h1>" + escape_html(title) + "</h1>\n" + svg + audio + "</main>\n";
         }
     }

@@ -269,7 +269,8 @@ void add_page_options(CLI::App& command, AnimateOptions& options) {
     add_decimals_option(command, options.decimals);
     add_face_placement_options(command, options, "announcer: on the stage");
     add_tolerance_option(command, options);
-    command.add_option("--stage", options.stage, "announcer: the stage's size, WIDTHxHEIGHT in pixels")
+    command.add_option("--stage", options.stage, "announcer: the stage's size, WIDTHxHEIGHT in pixels (its shape; the page shows it as large as the "
+                       "window lets it be)")
         ->check(pair_validator('x', "WIDTHxHEIGHT", "800x450"))
         ->capture_default_str();
     command.add_option("-o,--output", options.output_path, "OUT.html for a web page, OUT.svg for the bare animation (demo: OUT.mp4, .webm, .webp, .gif, .png for a video)")

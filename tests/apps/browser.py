@@ -70,8 +70,17 @@ class Browser:
         self.call("Page.enable")
         self.call("Runtime.enable")
         self.call("Log.enable")
+        self.emulate(width, height, mobile)
+
+    def emulate(self, width, height, mobile=False, media=None):
+        """Sizes the window (at a device pixel ratio of 1) and sets the media features a reader's
+        system sets (`media`: {"prefers-color-scheme": "dark"}, ...), replacing the earlier ones: one
+        browser serves cases of different screens and settings (each Chromium started costs 10-30 s
+        on a loaded machine)."""
         self.call("Emulation.setDeviceMetricsOverride", width=width, height=height, deviceScaleFactor=1,
                   mobile=mobile)
+        self.call("Emulation.setEmulatedMedia", media="",
+                  features=[{"name": name, "value": value} for name, value in (media or {}).items()])
 
     def close(self):
         try:
