@@ -28,7 +28,8 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "common"))
 from container_layout import (MP4_DURATION_FIELDS, after_id3, flac_frames_start, mp3_frame_count_at,  # noqa: E402
-                              mp4_boxes, ogg_pages, set_ogg_page_crc, with_flac_total_samples, without_mdat)
+                              mp4_boxes, ogg_pages, set_ogg_page_crc, with_flac_total_samples,
+                              with_matroska_duration, without_mdat)
 
 FF = ["ffmpeg", "-nostdin", "-loglevel", "error", "-y"]
 # After the inputs: output options (the muxers' serial numbers and UIDs fixed, the encoders' versions unsaid).
@@ -126,12 +127,8 @@ def huge_length(name, data):
         start, end, _ = ogg_pages(bytes(data))[-1]
         struct.pack_into("<q", data, start + 6, 1 << 40)
         set_ogg_page_crc(data, start, end)
-    else:  # Matroska: the Segment's Info's Duration (0x4489), a float of 4 or 8 bytes
-        at = data.find(b"\x44\x89")
-        if at < 0:
-            return None
-        size = data[at + 2] & 0x7F
-        data[at + 3:at + 3 + size] = struct.pack(">d" if size == 8 else ">f", 1e12)
+    else:
+        return with_matroska_duration(bytes(data), 1e12)
     return bytes(data)
 
 

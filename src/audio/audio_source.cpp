@@ -20,7 +20,6 @@
 #include <utility>
 
 #include "audio/ffmpeg_source.hpp"
-#include "audio/joined_copy.hpp"
 #include "audio/pcm_damage.hpp"
 #include "common/input_file.hpp"
 #include "common/number_format.hpp"
@@ -1044,8 +1043,21 @@ std::unique_ptr<AudioSource> open_opened_by_sndfile(const std::string& path,
     return std::make_unique<FileSource>(path, file, info, promised);
 }
 
-// open_audio_file's reading, by the file's container.
-std::unique_ptr<AudioSource> open_by_container(const std::string& path) {
+// A file in a container libsndfile reads (`header` its first bytes, past open_audio_file's checks of a
+// WAV's chunks), read by libsndfile, or by FFmpeg where libsndfile refuses or misreads it.
+std::unique_ptr<AudioSource> open_sndfile_container(const std::string& path,
+                                                    const std::array<char, 12>& header) {
+    if (std::string_view(header.data(), 4) == "OggS" && vorbis_headers_refused(path))
+        return open_ogg_refused_by_sndfile(path);
+    SF_INFO info{};
+    SNDFILE* file = sf_open(path.c_str(), SFM_READ, &info);
+    if (file == nullptr) return open_refused_by_sndfile(path, header);
+    return open_opened_by_sndfile(path, header, file, info);
+}
+
+}  // namespace
+
+std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
     // A named pipe nothing writes to blocked the open below for ever; one that is written to gave
     // "Illegal seek", as a recording is read more than once (its first sound, then its features).
     if (const NonFile kind = non_file_at(path); kind == NonFile::directory)
@@ -1086,30 +1098,11 @@ std::unique_ptr<AudioSource> open_by_container(const std::string& path) {
             return source;
         }
     }
-    if (std::string_view(header.data(), 4) == "OggS" && vorbis_headers_refused(path))
-        return open_ogg_refused_by_sndfile(path);
-    SF_INFO info{};
-    SNDFILE* file = sf_open(path.c_str(), SFM_READ, &info);
-    if (file == nullptr) return open_refused_by_sndfile(path, header);
-    return open_opened_by_sndfile(path, header, file, info);
-}
-
-}  // namespace
-
-std::unique_ptr<AudioSource> open_audio_file(const std::string& path) {
-    auto source = open_by_container(path);
-    // A data chunk that runs on past its stated size is read to the file's end (data_past_stated_size);
-    // otherwise libsndfile and FFmpeg alike stop at the first WAV's end.
-    if (const std::array<char, 12> header = read_container_header(path);
-        std::string_view(header.data(), 4) == "RIFF" && !data_past_stated_size(path))
+    auto source = open_sndfile_container(path, header);
+    // libsndfile and FFmpeg alike stop at the first WAV's end (a data chunk that runs on past its
+    // stated size is read to the file's end, above).
+    if (std::string_view(header.data(), 4) == "RIFF")
         if (const auto past = bytes_past_riff_end(path)) source->add_note(describe_bytes_past_end(*past));
-    if (const auto second = repeated_opening_byte(path))
-        source->add_note(
-            "its first " + std::to_string(kOpeningBytes) + " bytes (its header) recur at byte " +
-            std::to_string(*second) +
-            ": a second copy of the recording, or a second recording, begins there, joined to the "
-            "first (as an upload or a copy that appends to a file leaves it); cut the file there and "
-            "align each recording on its own");
     return source;
 }
 

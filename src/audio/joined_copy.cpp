@@ -1,11 +1,127 @@
 #include "audio/joined_copy.hpp"
 
 #include <algorithm>
+#include <array>
 #include <fstream>
+#include <functional>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "audio/mp3_toc.hpp"
+
 namespace talkface::detail {
+
+namespace {
+
+// The first byte from `start` on of the file `in` reads where `find` finds what it looks for: the
+// file read a block at a time, each block after the last `overlap` bytes of the one before, so
+// that what spans two blocks is found; `find` gets a block and gives the offset in it, or nullopt.
+std::optional<std::uint64_t> find_in_blocks(
+    std::ifstream& in, std::uint64_t start, std::size_t overlap,
+    const std::function<std::optional<std::size_t>(std::string_view)>& find) {
+    constexpr std::size_t kBlockBytes = 1 << 20;
+    std::vector<char> block(kBlockBytes + overlap);
+    in.clear();
+    in.seekg(static_cast<std::streamoff>(start));
+    std::uint64_t block_start = start;  // the file's byte at block[0]
+    std::size_t carried = 0;
+    while (in) {
+        in.read(block.data() + carried, static_cast<std::streamsize>(kBlockBytes));
+        const std::size_t held = carried + static_cast<std::size_t>(in.gcount());
+        if (const auto found = find(std::string_view(block.data(), held))) return block_start + *found;
+        if (held <= overlap) return std::nullopt;
+        carried = overlap;
+        std::copy(block.begin() + static_cast<std::ptrdiff_t>(held - carried),
+                  block.begin() + static_cast<std::ptrdiff_t>(held), block.begin());
+        block_start += held - carried;
+    }
+    return std::nullopt;
+}
+
+// The size of a Layer III frame's side information, which its Xing or Info tag follows.
+std::size_t side_info_bytes(const Mp3FrameHeader& header) {
+    return header.version == 3 ? (header.is_mono ? 17 : 32) : (header.is_mono ? 9 : 17);
+}
+
+// The most bytes from a frame's start to its Xing or Info tag's end.
+constexpr std::size_t kMostTagEnd = 4 + 32 + 4;
+
+// Where a Layer III frame holding a Xing or Info tag starts in `bytes`: the tag after the frame's
+// header and its side information, all zero (an encoder's header frame holds no sound).
+std::optional<std::size_t> tag_frame_in(std::string_view bytes) {
+    for (const std::string_view tag : {"Xing", "Info"}) {
+        for (std::size_t at = bytes.find(tag); at != std::string_view::npos; at = bytes.find(tag, at + 1)) {
+            for (const std::size_t side_info : {9, 17, 32}) {
+                if (at < 4 + side_info) continue;
+                const std::size_t frame = at - 4 - side_info;
+                const auto header = read_mp3_frame_header(bytes.substr(frame, 4));
+                const std::string_view side = bytes.substr(frame + 4, side_info);
+                if (header && side_info_bytes(*header) == side_info &&
+                    std::all_of(side.begin(), side.end(), [](char byte) { return byte == 0; }))
+                    return frame;
+            }
+        }
+    }
+    return std::nullopt;
+}
+
+// Where an MP3's first frame starts (past its ID3 tag) and its header, in a file that opens as an
+// MP3 (an ID3 tag, or a Layer III frame).
+std::optional<std::pair<std::uint64_t, Mp3FrameHeader>> first_mp3_frame(std::ifstream& in) {
+    std::string head(10, '\0');
+    in.clear();
+    in.seekg(0);
+    if (!in.read(head.data(), static_cast<std::streamsize>(head.size()))) return std::nullopt;
+    const std::size_t first_frame = after_id3(head);
+    std::array<char, 4> frame{};
+    in.seekg(static_cast<std::streamoff>(first_frame));
+    if (!in.read(frame.data(), frame.size())) return std::nullopt;
+    const auto header = read_mp3_frame_header(std::string_view(frame.data(), frame.size()));
+    if (!header) return std::nullopt;
+    return std::pair{static_cast<std::uint64_t>(first_frame), *header};
+}
+
+// The first byte past an MP3's first frame where a frame holding a Xing or Info tag starts: LAME and
+// FFmpeg write the tag once, in a recording's first frame (its length and table of contents), so a
+// second one starts a second recording, tagged with ID3 or not, the same recording or another.
+std::optional<std::uint64_t> second_mp3_tag_frame_byte(std::ifstream& in) {
+    const auto first = first_mp3_frame(in);
+    if (!first) return std::nullopt;
+    return find_in_blocks(in, first->first + 1, kMostTagEnd - 1, tag_frame_in);
+}
+
+// The byte where the frames an MP3's first frame's Xing or Info tag counts end, where a second
+// stream starts there (a frame, or an ID3 tag) rather than the file ending (or a tag that closes it,
+// ID3v1's or APE's): a second recording, even one with no tag of its own. Reads the header only.
+std::optional<std::uint64_t> past_stated_mp3_bytes(std::ifstream& in) {
+    const auto first = first_mp3_frame(in);
+    if (!first) return std::nullopt;
+    const auto& [first_frame, header] = *first;
+    std::array<char, 16> tag{};  // "Xing", its flags, its frame count, its byte count
+    in.seekg(static_cast<std::streamoff>(first_frame + 4 + side_info_bytes(header)));
+    if (!in.read(tag.data(), tag.size())) return std::nullopt;
+    const std::string_view fields(tag.data(), tag.size());
+    if (fields.substr(0, 4) != "Xing" && fields.substr(0, 4) != "Info") return std::nullopt;
+    const auto big_endian = [&](std::size_t at) {
+        std::uint32_t value = 0;
+        for (std::size_t k = at; k < at + 4; ++k) value = value << 8 | static_cast<unsigned char>(fields[k]);
+        return value;
+    };
+    constexpr std::uint32_t kFrames = 1;
+    constexpr std::uint32_t kBytes = 2;
+    const std::uint32_t flags = big_endian(4);
+    if ((flags & kBytes) == 0) return std::nullopt;
+    const std::uint64_t end = first_frame + big_endian((flags & kFrames) != 0 ? 12 : 8);
+    std::array<char, 4> next{};
+    in.seekg(static_cast<std::streamoff>(end));
+    if (!in.read(next.data(), next.size())) return std::nullopt;
+    const std::string_view after(next.data(), next.size());
+    if (after.substr(0, 3) != "ID3" && !read_mp3_frame_header(after)) return std::nullopt;
+    return end;
+}
+
+}  // namespace
 
 std::optional<std::uint64_t> repeated_opening_byte(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -15,23 +131,30 @@ std::optional<std::uint64_t> repeated_opening_byte(const std::string& path) {
     if (start.substr(0, 4) != "fLaC" && start.substr(0, 4) != "OggS" &&
         start.substr(0, 4) != "\x1a\x45\xdf\xa3" && start.substr(0, 3) != "ID3")
         return std::nullopt;
-    // Read a block at a time, each after the last kOpeningBytes - 1 bytes of the one before, so that
-    // an opening across two blocks is found.
-    constexpr std::size_t kBlockBytes = 1 << 20;
-    std::vector<char> block(kBlockBytes + kOpeningBytes - 1);
-    std::uint64_t block_start = kOpeningBytes;  // the file's byte at block[0]
-    std::size_t carried = 0;
-    while (in) {
-        in.read(block.data() + carried, static_cast<std::streamsize>(kBlockBytes));
-        const std::size_t held = carried + static_cast<std::size_t>(in.gcount());
-        const auto end = block.begin() + static_cast<std::ptrdiff_t>(held);
-        const auto found = std::search(block.begin(), end, opening.begin(), opening.end());
-        if (found != end) return block_start + static_cast<std::uint64_t>(found - block.begin());
-        if (held < kOpeningBytes) return std::nullopt;
-        carried = kOpeningBytes - 1;
-        std::copy(end - static_cast<std::ptrdiff_t>(carried), end, block.begin());
-        block_start += held - carried;
-    }
+    return find_in_blocks(in, kOpeningBytes, kOpeningBytes - 1,
+                          [&](std::string_view block) -> std::optional<std::size_t> {
+                              const std::size_t found = block.find(start);
+                              if (found == std::string_view::npos) return std::nullopt;
+                              return found;
+                          });
+}
+
+std::optional<std::string> describe_joined_copy(const std::string& path) {
+    const std::string joined =
+        ": a second copy of the recording, or a second recording, begins there, joined to the first (as "
+        "an upload or a copy that appends to a file leaves it); cut the file there and align each "
+        "recording on its own";
+    if (const auto second = repeated_opening_byte(path))
+        return "its first " + std::to_string(kOpeningBytes) + " bytes (its header) recur at byte " +
+               std::to_string(*second) + joined;
+    std::ifstream in(path, std::ios::binary);
+    if (const auto second = second_mp3_tag_frame_byte(in))
+        return "a second MP3 header frame (a Xing or Info tag, which an encoder writes once, in a "
+               "recording's first frame) starts at byte " +
+               std::to_string(*second) + joined;
+    if (const auto end = past_stated_mp3_bytes(in))
+        return "its first frame's Xing or Info tag counts its MP3 frames to byte " + std::to_string(*end) +
+               ", and a second stream of frames starts there" + joined;
     return std::nullopt;
 }
 

@@ -1,8 +1,9 @@
 // Two recordings joined into one file (a copy appended to itself, `cat` of two recordings, an
-// upload that appends instead of replacing), told by the file's opening bytes recurring inside it
-// (issue 13, "Bad input"): a FLAC, Ogg, MP3 or Matroska file read on through the second copy as one
-// recording, whose transcript was refused as not its speech with no word of why. A WAV and an MP4
-// say more of it (bytes_past_riff_end, second_file_byte: how much their readers left unread).
+// upload that appends instead of replacing), told by the file's opening bytes recurring inside it,
+// or by an MP3's second tag frame (issue 13, "Bad input"): a FLAC, Ogg, MP3 or Matroska file read on
+// through the second copy as one recording, whose transcript was refused as not its speech with no
+// word of why. A WAV and an MP4 say more of it (bytes_past_riff_end, second_file_byte: how much
+// their readers left unread).
 #ifndef TALKFACE_AUDIO_JOINED_COPY_HPP
 #define TALKFACE_AUDIO_JOINED_COPY_HPP
 
@@ -24,6 +25,15 @@ constexpr std::size_t kOpeningBytes = 32;
 // do not, or the file opens otherwise: an MPEG transport stream repeats its tables, an untagged
 // MP3 its frames of silence, byte for byte.
 std::optional<std::uint64_t> repeated_opening_byte(const std::string& path);
+
+// "its first 32 bytes (its header) recur at byte 38334: a second copy of the recording ...": what a
+// refusal of the text of the file at `path` says of a second recording joined to it, or nullopt: its
+// opening bytes recurring (repeated_opening_byte), or, in an MP3, a second frame holding the Xing or
+// Info tag an encoder writes once, in a recording's first frame (an MP3 with no ID3 tag, or two
+// recordings whose tags differ). An MP3 with neither tag shows no join (sox writes none). Asked only
+// where the text's fit is not vouched for (speech_aligner.cpp): the search reads the whole file (a
+// 10 h FLAC is 1 GB), and a join read on as one recording shows as a text that does not fit it.
+std::optional<std::string> describe_joined_copy(const std::string& path);
 
 }  // namespace talkface::detail
 

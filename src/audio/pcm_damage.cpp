@@ -135,9 +135,10 @@ std::vector<std::string> describe_pcm_damage(const PcmDamageFinder& finder, int 
     if (!finder.cut_zeros().empty())
         notes.push_back("its sound is cut off mid-wave to exact digital zeros at " +
                         describe_times(finder.cut_zeros(), sample_rate_hz, true) +
-                        ", as a block of the file's bytes zeroed by a copy or a disk leaves it (or a "
-                        "stream's lost packets): the sound there is lost, and the syllables there were "
-                        "aligned to what is left");
+                        ", as an editor's silence put over the sound leaves it, or a block of the "
+                        "file's bytes zeroed by a copy or a disk, or a stream's lost packets: no sound "
+                        "is left there (silenced on purpose, the file is as it should be), and the "
+                        "syllables there were aligned to what is left");
     if (!finder.clicks().empty())
         notes.push_back("single samples jump far off the wave around them at " +
                         describe_times(finder.clicks(), sample_rate_hz, false) +

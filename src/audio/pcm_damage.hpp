@@ -2,7 +2,8 @@
 // input"): a WAV has no checksum, so a copy or a disk that changes its bytes leaves a file every
 // reader opens and plays. Two damages leave marks no voice or microphone makes, and are told here:
 // a changed high byte moves one sample far off the wave around it (a click one sample wide), and a
-// block of bytes zeroed cuts the sound to exact digital zeros mid-wave, inside the sound. Lossy and
+// block of bytes zeroed cuts the sound to exact digital zeros mid-wave, inside the sound (as an
+// editor's silence over a word does, on purpose: the samples cannot tell them apart). Lossy and
 // lossless codecs (FLAC, Ogg, MP3, AAC) check their frames or packets, and their readers say so.
 #ifndef TALKFACE_AUDIO_PCM_DAMAGE_HPP
 #define TALKFACE_AUDIO_PCM_DAMAGE_HPP

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "audio/audio_source.hpp"
+#include "audio/joined_copy.hpp"
 #include "common/number_format.hpp"
 #include "speech/alignment_progress.hpp"
 #include "speech/chain_measures.hpp"
@@ -211,6 +212,11 @@ constexpr std::size_t kOtherPhaseSkips[] = {kHopSamples / 4, 3 * kHopSamples / 4
 // reading only there (the pitch costs 9% more instructions on every recording, bench/README.md
 // Session 19). The second reading is work done again on the bar (ProgressReporter).
 //
+// A file's bytes are searched for a second recording joined to it (describe_joined_copy, which reads
+// the whole file) only where the text's fit is not vouched for: where it is refused, and in a mode
+// that aligns a text that does not fit (warn, off, lenient). A text aligned in refuse mode fits the
+// speech, joined or not, and a good file is read once.
+//
 // A refusal is a majority of three phases. Where the samples fall against the 10 ms frames moves
 // a check's figures by up to 0.2 per frame and a path by a syllable, so a text near a check's
 // limit was refused at one phase and aligned at the next, right and wrong alike (bench/README.md
@@ -223,9 +229,9 @@ constexpr std::size_t kOtherPhaseSkips[] = {kHopSamples / 4, 3 * kHopSamples / 4
 // moved onto the recording's (its warnings' words keep that reading's); the other readings are work
 // done again on the bar (ProgressReporter). Refusing only where two phases refuse, never where one
 // aligns, would pick the kinder of two draws and let wrong texts through (Session 20).
-Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open, const Timeline& transcript,
-                      const AlignOptions& options, const std::vector<GivenSpan>& given_spans,
-                      const ProgressCallback& callback) {
+Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open, const std::string& file_path,
+                      const Timeline& transcript, const AlignOptions& options,
+                      const std::vector<GivenSpan>& given_spans, const ProgressCallback& callback) {
     validate_transcript(transcript);
     const std::optional<std::string> unconfirmable = describe_latin_only_text(transcript);
     ProgressReporter progress(callback);
@@ -248,9 +254,12 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
     const std::string lost = describe_lost_audio(source->lost_audio());
     std::string notes;
     for (const std::string& note : source->notes()) notes += " (the file: " + note + ")";
+    const bool is_voted = options.check == CheckMode::refuse && !options.lenient;
+    const auto joined_copy = [&] {
+        return file_path.empty() ? std::nullopt : describe_joined_copy(file_path);
+    };
     Timeline result;
     try {
-        const bool is_voted = options.check == CheckMode::refuse && !options.lenient;
         std::optional<AlignmentError> first_refusal;
         try {
             result = align_witnessed(open, track, loudness, silence_skipped, transcript,
@@ -294,6 +303,7 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
             if (first_refusal) result = std::move(*other_alignment);
         }
     } catch (const AlignmentError& error) {
+        if (const auto joined = joined_copy()) notes.insert(0, " (the file: " + *joined + ")");
         if (silence_skipped > 0)
             notes += " (its times count from " + format_fixed(silence_skipped_s, 3) +
                      " s: the digital silence before the recording's first sound was left out)";
@@ -303,6 +313,8 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
     if (!lost.empty())
         result.warnings.push_back(source->name() + ": the file is damaged: " + lost +
                                   "; read as silence there, the syllables after it keep their times");
+    if (!is_voted)
+        if (const auto joined = joined_copy()) result.warnings.push_back(source->name() + ": " + *joined);
     for (const std::string& note : source->notes()) result.warnings.push_back(source->name() + ": " + note);
     if (unconfirmable && options.check != CheckMode::off)
         result.warnings.push_back("the transcript cannot be checked against the audio: " + *unconfirmable);
@@ -342,7 +354,7 @@ SpeechAligner& SpeechAligner::operator=(SpeechAligner&&) noexcept = default;
 const AlignOptions& SpeechAligner::options() const { return impl_->options; }
 
 Timeline SpeechAligner::align(const AudioView& audio, const Timeline& transcript, const ProgressCallback& progress) const {
-    return align_source([&] { return open_audio_view(audio); }, transcript, impl_->options, {}, progress);
+    return align_source([&] { return open_audio_view(audio); }, "", transcript, impl_->options, {}, progress);
 }
 
 Timeline SpeechAligner::align_file(const std::string& audio_path, const Timeline& transcript,
@@ -351,7 +363,7 @@ Timeline SpeechAligner::align_file(const std::string& audio_path, const Timeline
     std::unique_ptr<AudioSource> first = open_audio_file(audio_path);
     try {
         return align_source([&] { return first ? std::move(first) : open_audio_file(audio_path); },
-                            transcript, impl_->options, {}, progress);
+                            audio_path, transcript, impl_->options, {}, progress);
     } catch (const AlignmentError& error) {
         // Name the audio: the times in the message are in this file.
         throw AlignmentError(audio_path + ": " + error.what());
@@ -371,7 +383,7 @@ Timeline align_in_given_spans(const std::string& audio_path, const Timeline& tra
     const std::string name = first->name();
     try {
         return align_source([&] { return first ? std::move(first) : open_audio_file(audio_path); },
-                            transcript, options, sentence_spans_s, progress);
+                            audio_path, transcript, options, sentence_spans_s, progress);
     } catch (const AlignmentError& error) {
         throw AlignmentError(name + ": " + error.what());
     }

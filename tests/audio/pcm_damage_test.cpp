@@ -2,8 +2,10 @@
 // block of zeros cut into the sound; not a voice's own loud noise, nor a pause it fades into.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "audio/pcm_damage.hpp"
@@ -86,4 +88,19 @@ TEST_CASE("zeros cut into a sound far below the voice, as a gate shuts on a nois
     for (std::size_t i = 8000; i < samples.size(); ++i) samples[i] *= 0.05f;
     for (std::size_t i = 10000; i < 12048; ++i) samples[i] = 0.0f;
     CHECK(found_in(samples, 1000).cut_zeros().empty());
+}
+
+TEST_CASE("zeros cut into the sound are named as an editor's silence as well as damage") {
+    // An editor's "silence" over a word (a name bleeped) cuts the wave to exact zeros mid-wave on
+    // both sides, as a zeroed block of bytes does: the samples cannot tell the two apart, so the note
+    // names both, and does not call a file silenced on purpose damaged.
+    std::vector<float> samples = vowel(kRateHz);
+    std::fill(samples.begin() + 6000, samples.begin() + 8048, 0.0f);
+    const std::vector<std::string> notes = describe_pcm_damage(found_in(samples, 4096), kRateHz);
+    REQUIRE_FALSE(notes.empty());
+    CHECK(notes[0].find(
+              "exact digital zeros at 0.375-0.503 s, as an editor's silence put over the sound leaves "
+              "it, or a block of the file's bytes zeroed by a copy or a disk, or a stream's lost "
+              "packets") != std::string::npos);
+    CHECK(notes[0].find("silenced on purpose, the file is as it should be") != std::string::npos);
 }

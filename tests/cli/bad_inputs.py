@@ -15,7 +15,7 @@ import wave
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 from container_layout import (FLAC_MAX_TOTAL, MP4_DURATION_FIELDS, after_id3, flac_frames_start,  # noqa: E402
                               flac_total_samples, mp3_frame_count_at, ogg_pages, set_ogg_page_crc,
-                              with_flac_total_samples, without_mdat)
+                              with_flac_total_samples, with_matroska_duration, without_mdat)
 
 SOURCE_DIR = os.environ.get("TALKFACE_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 SPEECH = os.path.join(SOURCE_DIR, "tests", "data", "speech")
@@ -207,7 +207,7 @@ def audio_files():
         "joined.flac": flac + flac,
         "joined.mkv": read(os.path.join(AUDIO, "clip.mkv")) * 2,
         "huge_length.mp4": mp4_with_stated_length(read(os.path.join(AUDIO, "clip.mp4")), 1000),
-        "huge_length.mkv": matroska_with_duration(read(os.path.join(AUDIO, "clip.mkv")), 1e12),
+        "huge_length.mkv": with_matroska_duration(read(os.path.join(AUDIO, "clip.mkv")), 1e15),
         "zeroed_block.wav": wav_bytes(pcm16(voice[:24000] + [0] * 2048 + voice[24000 + 2048 :])),
         "flipped_bytes.wav": wav_bytes(pcm16(with_high_bytes_flipped(voice, (3001, 12800, 20000, 36000, 40000)))),
     }
@@ -293,14 +293,6 @@ def mp4_with_stated_length(mp4, scale):
         at = data.index(box) + offset
         data[at : at + 4] = int(int.from_bytes(data[at : at + 4], "big") * scale).to_bytes(4, "big")
     return bytes(data)
-
-
-def matroska_with_duration(mkv, seconds):
-    """`mkv` with its Segment's Info stating `seconds` (Duration, 0x4489: a float of 4 or 8 bytes, in
-    milliseconds at the default TimestampScale)."""
-    at = mkv.index(b"\x44\x89")
-    size = mkv[at + 2] & 0x7F
-    return mkv[: at + 3] + struct.pack(">d" if size == 8 else ">f", seconds * 1000) + mkv[at + 3 + size :]
 
 
 def with_high_bytes_flipped(samples, indices):

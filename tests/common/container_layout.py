@@ -1,6 +1,6 @@
 """Where the parts of an audio or video file stand: Ogg pages and their checksum, FLAC's metadata
 blocks and stated length, MP4's top-level boxes and stated durations, an MP3's ID3v2 tag and LAME's
-frame count. One reading for the two that damage files on purpose, tests/cli/bad_inputs.py and
+frame count, Matroska's stated duration. One reading for the two that damage files on purpose, tests/cli/bad_inputs.py and
 bench/broken_files_sweep.py, so that a damage lands where both mean it to."""
 
 import struct
@@ -92,3 +92,14 @@ def mp3_frame_count_at(mp3):
     """Where LAME's Xing/Info tag states an MP3's frame count (4 bytes, big-endian), or None."""
     tag = max(mp3.find(b"Xing"), mp3.find(b"Info"))
     return None if tag < 0 else tag + 8
+
+
+def with_matroska_duration(mkv, milliseconds):
+    """`mkv` with its Segment's Info stating `milliseconds` (Duration, 0x4489: a float of 4 or 8 bytes,
+    in milliseconds at the default TimestampScale), or None where it states no duration (a browser's
+    WebM recorder writes none)."""
+    at = mkv.find(b"\x44\x89")
+    if at < 0:
+        return None
+    size = mkv[at + 2] & 0x7F
+    return mkv[: at + 3] + struct.pack(">d" if size == 8 else ">f", milliseconds) + mkv[at + 3 + size :]

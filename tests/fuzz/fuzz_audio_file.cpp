@@ -1,6 +1,7 @@
 // Any bytes as an audio file, read and analysed as the aligner reads one (libsndfile: WAV with PCM or
 // GSM 06.10, FLAC, Ogg; else FFmpeg: MP3, M4A, Opus, a video's sound track): either talkface::Error,
-// or a positive rate and finite samples and features to the end.
+// or a positive rate and finite samples and features to the end; and searched for a second recording
+// joined to it, as a refusal of its text searches it.
 #include <unistd.h>
 
 #include <cmath>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "audio/audio_source.hpp"
+#include "audio/joined_copy.hpp"
 #include "speech/frame_features.hpp"
 #include "talkface/errors.hpp"
 
@@ -26,6 +28,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         std::ofstream out(path, std::ios::binary | std::ios::trunc);
         out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
     }
+    // The search a refusal asks for (speech_aligner.cpp): any bytes, to their end.
+    if (const auto joined = talkface::detail::describe_joined_copy(path); joined && joined->empty())
+        std::abort();
     try {
         const auto source = talkface::detail::open_audio_file(path);
         if (source->sample_rate_hz() <= 0 || source->frame_count() == 0) std::abort();

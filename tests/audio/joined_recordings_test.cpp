@@ -1,0 +1,117 @@
+// Two recordings joined into one file (joined_copy.hpp, issue 13 "Bad input"), made here by ffmpeg
+// and cat from tests/data/speech/one_sentence.wav: named where the text is refused, searched for
+// only where the text's fit is not vouched for; and a RIFF file's own extension that is no second
+// WAV.
+#include <doctest/doctest.h>
+
+#include <fstream>
+#include <string>
+
+#include "audio/audio_source.hpp"
+#include "common/made_by_command.hpp"
+#include "common/test_paths.hpp"
+#include "talkface/errors.hpp"
+#include "talkface/speech_aligner.hpp"
+#include "talkface/transcript.hpp"
+
+using namespace talkface;
+
+namespace {
+
+std::string speech_clip(const std::string& file) {
+    return test::source_path("tests/data/speech/" + file);
+}
+
+// one_sentence.wav encoded by ffmpeg with `options` into test output NAME.
+std::string ffmpeg_made(const std::string& name, const std::string& options) {
+    return test::made_by_command(
+        name, "ffmpeg -nostdin -loglevel error -y -i '" + speech_clip("one_sentence.wav") + "' " + options);
+}
+
+// The files at `first` and `second`, one after the other, in test output NAME.
+std::string joined(const std::string& name, const std::string& first, const std::string& second) {
+    return test::made_by_command(name, "cat '" + first + "' '" + second + "' >");
+}
+
+std::size_t file_bytes(const std::string& path) {
+    return static_cast<std::size_t>(std::ifstream(path, std::ios::binary | std::ios::ate).tellg());
+}
+
+// The refusal of one_sentence.txt for the recording at `path` (empty if it aligned).
+std::string refusal_of_one_sentence(const std::string& path) {
+    try {
+        SpeechAligner().align_file(path, load_transcript(speech_clip("one_sentence.txt")));
+    } catch (const AlignmentError& error) {
+        return error.what();
+    }
+    return {};
+}
+
+bool has_warning_with(const Timeline& timeline, const std::string& part) {
+    for (const std::string& warning : timeline.warnings)
+        if (warning.find(part) != std::string::npos) return true;
+    return false;
+}
+
+}  // namespace
+
+TEST_SUITE("joined recordings") {
+    TEST_CASE(
+        "two MP3s without an ID3 tag joined are named by their Xing or Info tags where the text is refused") {
+        // FFmpeg's MP3 with no ID3 tag: its first frame holds LAME's Info tag (a constant rate).
+        const std::string one = ffmpeg_made(
+            "untagged_32k.mp3", "-c:a libmp3lame -b:a 32k -id3v2_version 0 -fflags +bitexact -f mp3");
+        const std::string other = ffmpeg_made(
+            "untagged_64k.mp3", "-c:a libmp3lame -b:a 64k -id3v2_version 0 -fflags +bitexact -f mp3");
+        for (const auto& [name, second] : {std::pair{"copy", one}, std::pair{"another", other}}) {
+            CAPTURE(name);
+            const std::string path = joined(std::string("untagged_joined_") + name + ".mp3", one, second);
+            const std::string refusal = refusal_of_one_sentence(path);
+            CHECK(refusal.find(
+                      "a second MP3 header frame (a Xing or Info tag, which an encoder writes once, in a "
+                      "recording's first frame) starts at byte " +
+                      std::to_string(file_bytes(one)) + ": a second copy of the recording") !=
+                  std::string::npos);
+        }
+        // A second recording with no tag of its own starts where the first's tag says its frames end.
+        const std::string bare =
+            ffmpeg_made("bare_32k.mp3",
+                        "-c:a libmp3lame -b:a 32k -write_xing 0 -id3v2_version 0 -fflags +bitexact -f mp3");
+        const std::string refusal = refusal_of_one_sentence(joined("tagged_then_bare.mp3", one, bare));
+        CHECK(refusal.find("its first frame's Xing or Info tag counts its MP3 frames to byte " +
+                           std::to_string(file_bytes(one)) +
+                           ", and a second stream of frames starts there") != std::string::npos);
+        // The file alone aligns, with no word of a join.
+        const Timeline alone =
+            SpeechAligner().align_file(one, load_transcript(speech_clip("one_sentence.txt")));
+        CHECK_FALSE(has_warning_with(alone, "MP3 header frame"));
+    }
+
+    TEST_CASE(
+        "a joined file whose text fits both recordings is not searched in refuse mode, and is in check mode "
+        "off") {
+        const std::string flac = ffmpeg_made("one_sentence.flac", "-fflags +bitexact -f flac");
+        const std::string path = joined("joined_twice.flac", flac, flac);
+        std::string text;
+        std::getline(std::ifstream(speech_clip("one_sentence.txt")), text);
+        const Timeline both = read_transcript(text + "\n" + text + "\n");
+        const Timeline aligned = SpeechAligner().align_file(path, both);
+        CHECK_FALSE(has_warning_with(aligned, "recur at byte"));
+        AlignOptions unchecked;
+        unchecked.check = CheckMode::off;
+        const Timeline unchecked_aligned = SpeechAligner(unchecked).align_file(path, both);
+        CHECK(has_warning_with(unchecked_aligned, "its first 32 bytes (its header) recur at byte " +
+                                                      std::to_string(file_bytes(flac))));
+    }
+
+    TEST_CASE("an AVI's OpenDML extension (a RIFF AVIX after the first RIFF) is no second WAV") {
+        const std::string avi = ffmpeg_made("voice.avi", "-c:a pcm_s16le -fflags +bitexact -f avi");
+        // An OpenDML AVI past 1 GB goes on in RIFF AVIX chunks, which FFmpeg reads: one, holding an
+        // empty movi list.
+        const std::string extended = test::made_by_command(
+            "voice_avix.avi",
+            "{ cat '" + avi + "'; printf 'RIFF\\020\\000\\000\\000AVIXLIST\\004\\000\\000\\000movi'; } >");
+        const auto source = detail::open_audio_file(extended);
+        CHECK(source->notes().empty());
+    }
+}
