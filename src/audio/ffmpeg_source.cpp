@@ -112,6 +112,10 @@ constexpr double kLengthSlackShare = 0.05;
 // taken for lost packets: Matroska stores milliseconds, and a lost packet shorter than this moves
 // no syllable out of the aligner's 50 ms.
 constexpr double kTimestampSlackS = 0.025;
+// A damaged file's lost end (fill_lost_end) is at most this many times the sound read before it:
+// damage loses the sound of the bytes it hits, and a lost end longer than this says the length
+// stated is damaged.
+constexpr double kMostLostEndShare = 10.0;
 
 // Packets after the first that show an MP3 stream's rate constant (each the size its bit rate
 // gives a frame, give or take the padding byte) before its bytes are counted as time.
@@ -1198,6 +1202,16 @@ private:
         if (end_s <= 0.0) return false;
         const double missing_frames = end_s * sample_rate_hz_ - static_cast<double>(frames_decoded_);
         if (missing_frames <= kTimestampSlackS * sample_rate_hz_) return false;
+        // The lost pages are bytes of the file, as the pages read are: a header stating far more than
+        // they could hold is damaged too (an Ogg stream's last granule scratched with a page before
+        // it stated 2^40 samples, whose silence was one allocation of 4 TB).
+        if (missing_frames > kMostLostEndShare * static_cast<double>(frames_decoded_))
+            throw ParseError(path_, 0, 0, "",
+                             "the file is damaged: its header states " + seconds_text(end_s) +
+                                 " of sound, but the pages that can be read hold " +
+                                 seconds_text(seconds_read()) + ", and no damage loses " +
+                                 std::to_string(static_cast<int>(kMostLostEndShare)) +
+                                 " times the sound it leaves: the stated length is damaged too");
         pending_.clear();
         pending_position_ = 0;
         skipped_frames_ += static_cast<std::size_t>(std::llround(missing_frames));

@@ -711,6 +711,22 @@ TEST_SUITE("audio") {
         CHECK(std::stod(named->substr(at + std::string("could not be decoded, at ").size())) < 60.0);
     }
 
+    TEST_CASE("a damaged Ogg page and a last page stating 2^40 samples: the stated length named as damaged") {
+        // fuzz_audio_file's find (session 35): the sweep's Ogg Vorbis with a byte put into its second
+        // sound page and its last page's granule 2^40; its lost end was filled with 4 TB of silence
+        // at once (std::bad_alloc, an internal error from the command).
+        const std::string path =
+            test::source_path("tests/fuzz/corpus/audio_file/scratched-page-huge-granule-vorbis.ogg");
+        const Outcome outcome = read_and_analyse(path);
+        CHECK(outcome.threw);
+        CHECK_MESSAGE(
+            outcome.message.find(path + ": the file is damaged: its header states 68719476.736 s of "
+                                        "sound, but the pages that can be read hold") == 0,
+            outcome.message);
+        CHECK_MESSAGE(outcome.message.find("the stated length is damaged too") != std::string::npos,
+                      outcome.message);
+    }
+
     TEST_CASE("an Opus header stating 0 channels is named as the reason, with the file") {
         // Its OpusHead's channel byte 0, its page's CRC made right: the header is damaged, not the page.
         const std::string path = test::source_path("tests/fuzz/corpus/audio_file/zero-channels-header.opus");
