@@ -24,7 +24,8 @@ inline namespace v0 {
 /// search again with the sounds weighed less, once with the spectral landmarks and once without: a
 /// syllable the sounds hold stays put); less where the search is unsure of its start (it finds
 /// starts a frame or more away nearly as good as its own), and less again where it finds starts
-/// 100 ms or more away nearly as good (a syllable placed a syllable off); with the fit's free-sound
+/// 100 ms or more away nearly as good (a syllable placed a syllable off), these three averaged in
+/// part with its neighbours' (a misplaced run's syllables disagree together); with the fit's free-sound
 /// gap scaled to a clean recording's spread where noise scatters it wider; and weighed half as it
 /// is and half against the recording's median, most of the rest against it too where that median
 /// is under a clean recording's, so that the threshold holds in noise and in a room as in clean speech.
@@ -32,10 +33,10 @@ inline namespace v0 {
 /// calibrated apart. It is not a probability. The threshold is set so that no recording condition
 /// of the benchmark's development speech (bench/README.md, issue 12: a person and two voices made
 /// of the same speaker's, in noise, rooms, music, hum, phone, fast speech) has more than 10% of its
-/// syllables within 100 ms under it: the person's 3.0-7.8% per condition, 5.2% pooled, catching 79%
-/// of those more than 100 ms off (217 of 276); on the held-out passages, measured after it was set,
-/// 2.0-8.9% and 82% (32 of 39); the other voices 5.3-7.5% and 73%, held out 2.2-7.6%. On synthetic
-/// speech (espeak-ng) it flags 0.4-2.9% of right syllables per condition (1.1% pooled).
+/// syllables within 100 ms under it: the person's 2.3-8.4% per condition, 4.7% pooled, catching 84%
+/// of those more than 100 ms off (194 of 230); on the held-out passages, measured after it was set,
+/// 1.7-6.7% and 88% (36 of 41); the other voices 4.5-6.2% and 81-89%, held out 1.7-4.8%. On synthetic
+/// speech (espeak-ng) it flags 0.3-1.7% of right syllables per condition (0.7% pooled).
 constexpr double kLowAlignmentConfidence = 0.5;
 
 /// Audio samples the caller owns: `frame_count` frames of `channel_count` interleaved float samples

@@ -703,13 +703,13 @@ TF_API tf_status tf_timeline_syllable_times(const tf_timeline *timeline, size_t 
  * near their priors at the local pace, its neighbours' evidence, and whether the aligner's other
  * searches (its previous pass, the sounds weighed less with and without the spectral landmarks)
  * start it at the same frame, lenient alignment included, and how sure the search is of its start
- * (strict alignment); it is calibrated on the recording (the
+ * (strict alignment: these in part averaged with its neighbours'); it is calibrated on the recording (the
  * fit's scatter in noise scaled to a clean recording's, then against the recording's median, more
  * so in a room or in noise), so the threshold holds per condition: on the benchmark's development
  * speech (a person and two voices made of the same speaker's) no condition (noise, rooms, music,
  * phone, fast speech) has more than 10% of its syllables within 100 ms under it (the person's
- * 3.0-7.8%, 5.2% pooled), and it catches 79% of those more than 100 ms off (held out: 2.0-8.9%,
- * 4.1% pooled, and 82%; the other voices 5.3-7.5% and 73%) (bench/README.md). `talkface align
+ * 2.3-8.4%, 4.7% pooled), and it catches 84% of those more than 100 ms off (held out: 1.7-6.7%,
+ * 3.3% pooled, and 88%; the other voices 4.5-6.2% and 81-89%) (bench/README.md). `talkface align
  * --plot` draws such syllables in red. */
 #define TF_LOW_ALIGNMENT_CONFIDENCE 0.5
 

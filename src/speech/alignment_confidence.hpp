@@ -125,7 +125,9 @@ struct SyllableEvidence {
 // (issue 12: the threshold must hold in every condition). Then a syllable's fit (posterior less
 // gap, plus its timing) is averaged with its neighbours' in its chain (drift comes in runs: a
 // syllable placed a syllable off pulls its neighbours with it), its steadiness added and its
-// unsureness (1 - sureness, weighed by kUnsureWeight) and far start share taken off, and the sum
+// unsureness (1 - sureness, weighed by kUnsureWeight) and far start share taken off, these three
+// its own in part and its neighbours' averaged for the rest (a misplaced run disagrees together;
+// lenient alignment: its own alone), and the sum
 // weighed half as it is and half against the recording's median: in a room or in noise every
 // syllable's evidence is lower, and a threshold on the evidence alone flagged half of the right
 // syllables there and almost none in clean speech; the absolute half keeps a recording aligned
