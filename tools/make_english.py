@@ -10,8 +10,10 @@ the nearest pinyin initial and final; an s before another consonant (street, spi
 consonant after a vowel but n and ng, which Mandarin ends syllables with (and an n after ai, ei or
 oi, which no final holds: 莱恩 line), become syllables of their own with a short vowel, as Mandarin
 speakers say them and its loans write them (迈克 mai ke, 麦克斯 ma ke si, 艾克赛尔 yi ke sai er, 汤姆
-mu, 比尔 er, 粉丝 fans); liquids and glides after a consonant (play,
-quick, cute) are dropped. Every result is a syllable of the library's own table
+mu, 比尔 er, 粉丝 fans); a liquid after a consonant opens a syllable of its own, l, the consonants
+before it each a syllable (tree te li, play pu lei, Brown bu lang, street si te li te: 特里, 布朗, 斯特里特),
+and a glide after one is the final's medial where Mandarin has the syllable (quick kui ke, Twitter tui te,
+cute qiu te: 奎克, 推特, 丘特). Every result is a syllable of the library's own table
 (the one make_readings.py writes, which the aligner and the lips accept); when the plain mapping
 is not (fi, gi), the nearest one in it is taken (fa, ji). Stressed syllables get tone 1, the rest tone 5: tones do not move the
 lips, and espeak-ng speaks them either way.
@@ -110,6 +112,24 @@ def legal_syllable(initial, final):
     return "a"
 
 
+# A final with a glide's medial before it: a w's u (kui, tui, kua, shuo) and a y's i (qiu, miu, xia).
+W_MEDIAL = {"i": "ui", "ei": "ui", "ai": "uai", "a": "ua", "e": "uo", "o": "uo", "ou": "uo", "an": "uan",
+            "en": "un", "in": "un", "ang": "uang", "eng": "ong", "ing": "ong", "er": "uo"}
+Y_MEDIAL = {"u": "iu", "ou": "iu", "a": "ia", "ai": "ie", "e": "ie", "ao": "iao", "an": "ian", "ang": "iang",
+            "un": "iong", "ong": "iong"}
+
+
+def with_medial(initial, final, glide):
+    """The syllable initial + final says, with the glide's medial where Mandarin has that syllable (the
+    initial or its palatal: k + iu is qiu); without the glide, the nearest legal syllable."""
+    medial = {"w": W_MEDIAL, "y": Y_MEDIAL}.get(glide, {}).get(final)
+    if medial:
+        for candidate in [initial] + ([PALATAL[initial]] if initial in PALATAL else []):
+            if is_legal_toneless(candidate + medial):
+                return candidate + medial
+    return legal_syllable(initial, final)
+
+
 def coda_syllables(vowel, coda, next_phone, glide_kept, s_spelled):
     """The nasal a syllable's final takes from its coda (or None), and the syllables its other consonants
     become; next_phone opens the word's next syllable (None at its end); glide_kept tells whether the
@@ -156,11 +176,19 @@ def map_word(syllables, spelling=""):
         tone = "1" if stress > 0 else "5"
         if len(onset) >= 2 and onset[0] in ("s", "sh"):
             result.append(CONSONANT_SYLLABLES[onset[0]] + "5")
-            onset = onset[1:]
-        # A liquid or glide after a consonant is dropped (play, quick, cute); otherwise the first
-        # consonant of a cluster opens the syllable.
-        while len(onset) >= 2 and onset[-1] in ("l", "r", "w", "y"):
+            onset = onset[1:] if onset[1:] != ["r"] else ["l"]
+        # A liquid after a consonant opens the syllable as l, as the loans write it (特里 tree, 布朗 Brown,
+        # 克里斯 Chris, 普莱 play, 格林 green, 斯特里特 street), and each consonant before it is a syllable of
+        # its own. Session 35: the liquid was dropped (tree ti, Brown bang, play pei), which no loan writes.
+        # A glide after a consonant is the final's medial where Mandarin has that syllable (奎克 quick, 推特
+        # Twitter, 丘特 cute, 缪斯 muse), else dropped (the first consonant of the cluster opens the syllable).
+        glide = None
+        if len(onset) >= 2 and onset[-1] in ("w", "y"):
+            glide = onset[-1]
             onset = onset[:-1]
+        if len(onset) >= 2 and onset[-1] in ("l", "r"):
+            result.extend(CONSONANT_SYLLABLES.get(phone, "e") + "5" for phone in onset[:-1])
+            onset = ["l"]
         initial = INITIALS[onset[0]] if onset else ""
         final = VOWELS[vowel]
         # A final unstressed schwa written a (NASA, pizza, data, Toyota) is said a, as Mandarin says
@@ -181,7 +209,7 @@ def map_word(syllables, spelling=""):
             final = NASAL.get((final, nasal), final)
         elif vowel == "eh" and initial in IE_AFTER:
             final = "ie"
-        result.append(legal_syllable(initial, final) + tone)
+        result.append(with_medial(initial, final, glide) + tone)
         result.extend(syllable + "5" for syllable in consonants)
     return result
 

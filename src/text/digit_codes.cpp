@@ -724,9 +724,18 @@ bool is_train_number(const std::vector<CodePoint>& text, std::size_t start, std:
     return is_one_of(value_at(text, end), U"次") || contains_any(before, {"车次", "車次"});
 }
 
+// An airline's code of a digit and a capital (3U 四川航空, 9C 春秋航空, 8L), standing as a word before
+// text[start]: model_name_before reads capitals only (session 34: 3U8633 counted, 八千六百三十三).
+bool follows_digit_airline_code(const std::vector<CodePoint>& text, std::size_t start) {
+    return start >= 2 && is_ascii_capital(value_at(text, start - 1)) && is_digit_at(text, start - 2) &&
+           (start == 2 || !(is_ascii_letter(value_at(text, start - 3)) || is_digit_at(text, start - 3)));
+}
+
 bool is_flight_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
     const auto digit_count = end - start;
-    if (model_name_before(text, start).size() != 2 || digit_count < 3 || digit_count > 4) return false;
+    if ((model_name_before(text, start).size() != 2 && !follows_digit_airline_code(text, start)) ||
+        digit_count < 3 || digit_count > 4)
+        return false;
     const std::string after = text_between(text, end, end + 3);
     const std::string before = text_before(text, start, true);
     for (const std::string_view word : {"航班", "班机", "班機"}) {

@@ -61,6 +61,12 @@ char32_t value_at(const std::vector<CodePoint>& text, std::size_t i) {
     return i < text.size() ? text[i].value : 0;
 }
 
+bool is_lone_letter(const std::vector<CodePoint>& text, std::size_t i) {
+    const auto is_ascii_letter = [](char32_t c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); };
+    return is_ascii_letter(value_at(text, i)) && !(i > 0 && is_letter_or_digit(text[i - 1].value)) &&
+           !is_letter_or_digit(value_at(text, i + 1));
+}
+
 // The end of a face whose bracket opens at text[open], or open where none does.
 std::size_t face_bracket_end(const std::vector<CodePoint>& text, std::size_t open) {
     // A face is a few signs; a longer bracket is an aside.
@@ -155,9 +161,18 @@ std::vector<std::size_t> find_drawing_ends(const std::vector<CodePoint>& text) {
         }
         // The signs touching the face before it, back to the end of an earlier drawing (an emoji).
         auto begin = i;
-        while (begin > last_end && is_touching_sign(text[begin - 1].value)) --begin;
+        // An = between two such signs is drawn too: the dust a running face kicks up (ε=ε=┏(゜ロ゜;)┛;
+        // session 34: each ε and = warned of as a symbol).
+        while (begin > last_end && (is_touching_sign(text[begin - 1].value) ||
+                                    (text[begin - 1].value == '=' && begin >= 2 + last_end &&
+                                     is_touching_sign(text[begin - 2].value))))
+            --begin;
+        // A Latin letter alone touching the face is a hand or an arm drawn with it (o(╥﹏╥)o, ヾ(≧▽≦*)o,
+        // b(￣▽￣)d; session 34: said, ou), where no letter or digit beside it makes it a word's.
+        if (begin > last_end && is_lone_letter(text, begin - 1)) --begin;
         auto end = bracket_end;
         while (is_touching_sign(value_at(text, end))) ++end;
+        if (is_lone_letter(text, end)) ++end;
         if (value_at(text, end) == ' ' && is_touching_sign(value_at(text, end + 1))) {
             auto thrown = end + 1;
             while (is_touching_sign(value_at(text, thrown))) ++thrown;

@@ -1,5 +1,9 @@
 #include "text/home_layouts.hpp"
 
+#include <algorithm>
+#include <iterator>
+#include <string_view>
+
 namespace talkface::detail {
 
 namespace {
@@ -17,11 +21,26 @@ bool is_part_at(const std::vector<CodePoint>& text, std::size_t i) {
     return i < text.size() && is_one_of(text[i].value, kLayoutParts);
 }
 
+// Words for a home that a count of its rooms names (2房單位 兩房單位, 3室户型, 1房公寓): a part alone before
+// one counts as a layout does (session 34: 二房, a part alone read as a name, 二房 a family's second branch).
+constexpr std::u32string_view kHomeWords[] = {U"单位", U"單位", U"户型", U"戶型",
+                                              U"公寓", U"住宅", U"房源", U"套房"};
+
+bool names_home_at(const std::vector<CodePoint>& text, std::size_t i) {
+    return std::any_of(std::begin(kHomeWords), std::end(kHomeWords), [&](std::u32string_view word) {
+        if (i + word.size() > text.size()) return false;
+        for (std::size_t k = 0; k < word.size(); ++k)
+            if (text[i + k].value != word[k]) return false;
+        return true;
+    });
+}
+
 }  // namespace
 
 bool counts_in_layout(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
     if (!is_part_count(number) || !is_part_at(text, number.end)) return false;
     const auto after = number.end + 1;
+    if (names_home_at(text, after)) return true;
     if (is_digit_at(text, after)) {
         const auto next = parse_number(text, after);
         if (is_part_count(next) && is_part_at(text, next.end)) return true;

@@ -242,6 +242,24 @@ std::vector<std::string> spelled_syllables(std::string_view word) {
     return syllables;
 }
 
+// Names a number follows, which the dictionary lacks, said as their fields say them: the Cas proteins of gene
+// editing (Cas9, Cas12a) 卡斯. Apart from kSaidOtherwise, whose words are words in capitals too: CAS (T/CAS
+// 115, an association's standard) stays spelled.
+constexpr std::pair<std::string_view, std::string_view> kNamesBeforeNumbers[] = {
+    {"cas", "ka3 si1"},
+};
+
+std::optional<std::vector<std::string>> name_before_number_syllables(std::string_view word) {
+    const std::string key = ascii_lower_case(word);
+    for (const auto& [spelled, said] : kNamesBeforeNumbers) {
+        if (key != spelled) continue;
+        std::vector<std::string> syllables;
+        append_words(syllables, said);
+        return syllables;
+    }
+    return std::nullopt;
+}
+
 std::optional<std::vector<std::string>> english_word_syllables(std::string_view word) {
     const std::string key = ascii_lower_case(word);
     for (const auto& [spelled, said] : kSaidOtherwise) {

@@ -18,6 +18,9 @@ namespace talkface::detail {
 // Letters other than A-Z and a-z are not letters here and throw an internal error.
 std::vector<std::string> letter_syllables(std::string_view letters);
 
+// The syllables of a name a number follows (Cas of Cas9) that the dictionary lacks, or nullopt.
+std::optional<std::vector<std::string>> name_before_number_syllables(std::string_view word);
+
 // The syllables of an English word (ASCII letters, any case; "iPhone", "wifi"), or nullopt if
 // the dictionary does not have it.
 std::optional<std::vector<std::string>> english_word_syllables(std::string_view word);

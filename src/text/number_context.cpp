@@ -92,8 +92,11 @@ SaidNumber say_decimal(const WrittenNumber& number, const NumberContext& context
 // % follows it.
 bool is_chat_number(const std::string& whole, const NumberContext& context, bool counts) {
     // A chat's goodbye, 88 or 886 (拜拜, 拜拜了) as a clause of its own (88，下次再聊), is said digit by
-    // digit, 八八 (session 14); a bare 88 after a colon or in a clause counts (得分：88, 考了88分).
-    if ((whole == "88" || whole == "886") && context.is_whole_clause) return true;
+    // digit, 八八 (session 14); a bare 88 after a colon or in a clause counts (得分：88, 考了88分). So is one
+    // closing its clause after a final particle (明天见啦88～; session 34: 八十八): a count of what the
+    // clause said would come before the particle (他今年88了吧).
+    if ((whole == "88" || whole == "886") && (context.is_whole_clause || context.after_final_particle))
+        return true;
     const bool names_nothing = !counts && !context.has_currency && !context.is_ordinal;
     // A chat's vow, 1314 (一生一世) and 5201314, counting nothing, is said digit by digit (我爱你1314
     // 一三一四; session 14), as 520 is where it names its day.
@@ -165,8 +168,12 @@ std::optional<SaidNumber> say_as_name(const std::string& whole, const NumberCont
     }
     // A train's or a flight's number is said digit by digit with 幺 for 1, as station and
     // airport announcers say it (G101次 G幺零幺次, CA1831 C A 幺八三幺).
+    // A flight's 1 is the local one, as a phone's is (Taiwan's 長榮BR189 一八九; session 34: 幺): a flight
+    // is announced where the reader is. A train's keeps 幺: a lettered train runs on the mainland's lines
+    // (複興號G1次 G幺次) whatever script writes of it.
     if (context.is_train) {
         said.words = digit_words(whole, true);
+        said.is_dialled = context.is_flight;
         return said;
     }
     if (is_chat_number(whole, context, counts) || is_named_by_context(whole, context, counts)) {
@@ -285,9 +292,11 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
           (is_dash(value_at(text, start)) ||
            (number.whole.size() >= 3 && start > 0 &&
             is_one_of(text[start - 1].value, U"铀鈾钚鈽铯銫锶鍶钴鈷碘镭鐳氡钍釷镅鋂钋釙")))));
+    context.is_flight = sign_words.empty() && currency == nullptr && !number.has_point &&
+                        !number.has_separators && is_flight_number(text, start, number.end);
     context.is_train =
-        context.is_model && !number.has_point && !number.has_separators &&
-        (is_train_number(text, start, number.end) || is_flight_number(text, start, number.end));
+        context.is_flight || (context.is_model && !number.has_point && !number.has_separators &&
+                              is_train_number(text, start, number.end));
     context.has_currency = currency != nullptr;
     context.names_place = names_room_or_building(text, number.end) ||
                           (sign_words.empty() && currency == nullptr && !context.is_ordinal &&
@@ -328,16 +337,17 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
                          (follows_software_name(text, i) || ends_range_of_versions(text, i));
     // A version before 后 is no generation (升级到Android 15后 十五后; session 17: 一五后).
     if (context.is_version) context.is_generation = false;
-    // Or after a chat's final particle, closing its line (太离谱了吧233, 好好笑啊233; session 16:
-    // 二百三十三).
     const auto after_number = value_at(text, number.end);
     const bool closes_clause = number.end >= text.size() || is_one_of(after_number, U"，,。.！!？?～~…\n ");
-    // Or closing a clause that laughs (笑死我了233; session 21: 二百三十三).
+    context.after_final_particle = sign_words.empty() && start > 0 && closes_clause &&
+                                   is_one_of(value_at(text, start - 1), U"吧啊呀呢嘛哦啦");
+    // A laugh's number after a laugh's character; or after a chat's final particle, closing its line
+    // (太离谱了吧233, 好好笑啊233; session 16: 二百三十三); or closing a clause that laughs (笑死我了233;
+    // session 21: 二百三十三).
     context.after_laugh =
         sign_words.empty() && start > 0 &&
-        (is_one_of(value_at(text, start - 1), U"哈呵嘿嘻笑死") ||
-         (closes_clause && (is_one_of(value_at(text, start - 1), U"吧啊呀呢嘛哦啦") ||
-                            text_before(text, start, true).find("笑") != std::string::npos)));
+        (is_one_of(value_at(text, start - 1), U"哈呵嘿嘻笑死") || context.after_final_particle ||
+         (closes_clause && text_before(text, start, true).find("笑") != std::string::npos));
     context.is_whole_clause =
         sign_words.empty() && currency == nullptr && stands_alone(text, start, number.end);
     context.names_year =

@@ -29,6 +29,7 @@ struct NumberContext {
     bool is_service_call = false;  // dialled or named (打110, 110报警)
     bool is_model = false;  // right after the capitals of a model's name (C919, A380) or a maker (波音737)
     bool is_train = false;  // a train's or a flight's number (G1234次, CA1831航班)
+    bool is_flight = false;     // a flight's number (CA1831航班, 3U8633航班)
     bool has_currency = false;  // a currency sign before it (¥666)
     bool names_place = false;  // a room's or building's name after it (302会议室), a city's before (台北101)
     bool names_day = false;      // a day named by its date's digits (618大促, 今天是520)
@@ -44,6 +45,7 @@ struct NumberContext {
     bool is_version = false;        // after a software's name or a v (Python 3.12, v2.15): a version
     bool names_year = false;        // a year before a word it names (2025财年, 2026款)
     bool after_laugh = false;       // right after a laugh's character (哈哈233)
+    bool after_final_particle = false;  // closing its clause right after a final particle (见啦88～)
     bool is_whole_clause = false;   // the number alone between clause marks (88，下次再聊)
     bool measures_degrees = false;  // before a 度 of a temperature or an angle (2度左右 两度)
     bool is_frequency = false;      // a station's frequency after FM, AM or 调频 (FM103.9 一零三点九)
@@ -59,7 +61,7 @@ struct NumberContext {
 struct SaidNumber {
     std::string words;
     bool is_year = false;
-    bool is_dialled = false;  // a phone's or a service's number, 1 said 幺
+    bool is_dialled = false;  // a phone's, a service's or a flight's number, 1 said 幺 (一 in Taiwan)
     std::string warning;
 };
 

@@ -272,6 +272,24 @@ std::optional<SpokenForm> read_dimensions(const std::vector<CodePoint>& text, st
 
 namespace {
 
+bool is_power_of_ten(const WrittenNumber& number) {
+    return !number.has_point && !number.has_separators && number.whole.front() == '1' &&
+           number.whole.find_first_not_of('0', 1) == std::string::npos;
+}
+
+// A power of ten from 100 before 分之 drops its 一, as a rate or a fraction of it is said (千分之五,
+// 百万分之一, 万分之三; 1/1000 千分之一, 1/100 百分之一: session 34 read the fraction 一千分之一, which
+// a reader says only to stress the count). 十 has no 一 to drop.
+SaidNumber said_denominator_of(const WrittenNumber& denominator) {
+    auto said = say_number(denominator, {});
+    constexpr std::string_view kOne = "一";
+    constexpr std::size_t kFewestDigits = 3;
+    if (is_power_of_ten(denominator) && denominator.whole.size() >= kFewestDigits &&
+        said.words.rfind(kOne, 0) == 0)
+        said.words.erase(0, kOne.size());
+    return said;
+}
+
 // A rate per a power of ten, as health and population news write it (发病率为3.2/10万 十万分之三点二,
 // 1/100万 百万分之一, 死亡率5.6/1000 千分之五点六): the denominator first, its 万 or 亿 with it, then 分之
 // and the rate, which may have a point where the power is 100 or more, or has its 万 or 亿 (session 34:
@@ -280,13 +298,11 @@ namespace {
 std::optional<SpokenForm> read_rate_per_power_of_ten(const WrittenNumber& number,
                                                      const std::string& sign_words,
                                                      const WrittenNumber& denominator, char32_t after) {
-    const bool is_power_of_ten = !denominator.has_point && !denominator.has_separators &&
-                                 denominator.whole.front() == '1' &&
-                                 denominator.whole.find_first_not_of('0', 1) == std::string::npos;
     const bool has_magnitude = is_one_of(after, U"万萬亿億");
-    if (!is_power_of_ten || !(has_magnitude || (number.has_point && denominator.whole.size() > 2)))
+    if (!is_power_of_ten(denominator) ||
+        !(has_magnitude || (number.has_point && denominator.whole.size() > 2)))
         return std::nullopt;
-    // A power of ten before 分之 drops its 一, as the rate is said (千分之五, 百万分之一, 万分之三).
+    // 10 before 万 or 亿 drops its 一 too (十万分之三点二).
     auto said_denominator = say_number(denominator, {});
     constexpr std::string_view kOne = "一";
     if (said_denominator.words.rfind(kOne, 0) == 0) said_denominator.words.erase(0, kOne.size());
@@ -334,7 +350,7 @@ std::optional<SpokenForm> read_slashed_pair(const std::vector<CodePoint>& text, 
     }
     if (auto place = read_place_in_whole(text, start, number, denominator)) return place;
     SpokenForm form;
-    const auto said_denominator = say_number(denominator, {});
+    const auto said_denominator = said_denominator_of(denominator);
     const auto said_numerator = say_number(number, {});
     form.words = sign_words + said_denominator.words + "分之" + said_numerator.words;
     append_warning(form, said_denominator.warning);
@@ -346,7 +362,7 @@ std::optional<SpokenForm> read_slashed_pair(const std::vector<CodePoint>& text, 
         if (!upper.has_point && value_at(text, upper.end) == '/' && is_digit_at(text, upper.end + 1)) {
             const auto upper_denominator = parse_number(text, upper.end + 1);
             const auto said_upper = say_number(upper, {});
-            const auto said_upper_denominator = say_number(upper_denominator, {});
+            const auto said_upper_denominator = said_denominator_of(upper_denominator);
             form.words += "到" + said_upper_denominator.words + "分之" + said_upper.words;
             append_warning(form, said_upper_denominator.warning);
             append_warning(form, said_upper.warning);

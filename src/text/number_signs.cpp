@@ -169,8 +169,10 @@ bool agrees_after_person(const std::vector<CodePoint>& text, std::size_t start, 
     if (start == 0 || !(end >= text.size() || is_one_of(value_at(text, end), U"，,。.！!？?～~…\n ")))
         return false;
     if (is_one_of(text[start - 1].value, U"我你他她俺咱们們")) return true;
-    const auto before = text_between(text, start >= 2 ? start - 2 : 0, start);
-    return before == "楼上" || before == "樓上" || before == "楼主" || before == "樓主";
+    // The person may open the clause and say what is agreed with before the +1 (楼上说得对+1; session 34:
+    // 正一): the sign ends a reply to a post, no value's.
+    constexpr std::string_view kPostPeople[] = {"楼上", "樓上", "楼主", "樓主"};
+    return contains_any(text_before(text, start, true), kPostPeople);
 }
 
 std::optional<LeadingSign> read_leading_sign(const std::vector<CodePoint>& text, std::size_t start) {

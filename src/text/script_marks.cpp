@@ -170,6 +170,34 @@ struct Label {
     ScriptMark mark;
 };
 
+// Whether a label's name names a person: a speaker whose turn need not come back (a guest's one line). A
+// name with a Latin letter or a digit (A, Tom, 1号); a role, whose head is a person's (主持人 记者 老师 队友
+// 主播 嘉宾 旁白: the suffixes and nouns Chinese ends a person's word with); a name of two or three
+// characters opening with a common surname or with 小 老 阿 (小明 老王 阿强 张伟). A heading that names a
+// task or a part of a lesson (化简 总结 解析 答案 注意事项) is none, and names no speaker.
+bool names_person(std::string_view name) {
+    if (std::any_of(name.begin(), name.end(), [](char c) {
+            return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
+        }))
+        return true;
+    if (ends_with_any(name,
+                      {"人", "者", "员", "員", "师", "師", "生", "手", "家", "长", "長", "官", "主", "友",
+                       "客", "宾", "賓", "众", "眾", "妈", "媽", "爸", "哥", "姐", "弟", "妹", "叔", "姨",
+                       "婆", "爷", "爺", "奶", "子", "儿", "兒", "王", "总", "總", "娘", "公", "宝", "寶",
+                       "播", "导", "導", "警", "医", "醫", "兵", "将", "將", "帅", "帥", "父", "母", "嫂",
+                       "夫", "妻", "女", "男", "孩", "娃", "仔", "匠", "白", "音"}))
+        return true;
+    const auto characters = decode_utf8(name, "<label>");
+    constexpr std::size_t kShortestName = 2;
+    constexpr std::size_t kLongestName = 3;
+    constexpr std::u32string_view kNameOpenings =
+        U"小老阿王李张張刘劉陈陳杨楊黄黃赵趙吴吳周徐孙孫马馬朱胡郭何高林罗羅郑鄭梁谢謝宋唐许許韩韓冯馮邓鄧曹"
+        U"彭曾肖萧蕭田董袁潘于蒋蔣蔡余杜叶葉程苏蘇魏吕呂丁任沈姚卢盧姜崔钟鍾谭譚陆陸汪范範金石廖贾賈夏韦韋"
+        U"付方邹鄒孟熊秦邱江尹薛闫閻段雷侯龙龍史陶黎贺賀顾顧毛郝龚龔邵钱錢严嚴覃武戴莫孔向汤湯";
+    return characters.size() >= kShortestName && characters.size() <= kLongestName &&
+           kNameOpenings.find(characters.front().value) != std::u32string_view::npos;
+}
+
 // A colon that introduces a formula (甲烷燃烧：CH4+2O2=CO2+2H2O, 化简：√12=2√3): the line goes on with a term
 // (a letter, a digit, a bracket, a sign before one) and holds a relation or a reaction's arrow. What is named
 // before it is the formula's heading, no speaker, whose turn is words (session 33: in a passage of such lines
@@ -235,7 +263,11 @@ void add_labels(const std::vector<CodePoint>& text, std::vector<ScriptMark>& mar
     // Without a speaker's turn coming back, lines of fields make a form, whose 收件人 and 寄件人 are
     // fields too.
     if (!repeats && (has_fields || labels.size() * 2 < lines)) return;
-    for (const Label& label : labels) marks.push_back(label.mark);
+    // Where turns come back, a name that labels one line only is a speaker's where it names a person; else
+    // it heads what follows and is said (化简：, 总结：, 注意事项： among 老师： and 学生：; session 34: left
+    // out).
+    for (const Label& label : labels)
+        if (!repeats || counts[label.name] >= 2 || names_person(label.name)) marks.push_back(label.mark);
 }
 
 }  // namespace

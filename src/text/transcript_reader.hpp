@@ -75,7 +75,9 @@ private:
     // whole (Wi-Fi) is one form.
     std::size_t read_latin(const std::vector<CodePoint>& text, std::size_t start);
 
-    std::vector<Syllable> latin_word_syllables(const std::string& word, const CodePoint& at);
+    // names_with_number: a digit is written right after the word (Cas9), which makes it a name.
+    std::vector<Syllable> latin_word_syllables(const std::string& word, const CodePoint& at,
+                                               bool names_with_number = false);
 
     // An ampersand between two words (letters, digits or Chinese characters), a space on either side
     // allowed, is said as English says it, and (R&D a er an de di, AT&T, 早午餐＆咖啡; session 32: skipped

@@ -159,11 +159,12 @@ std::size_t TranscriptReader::read_latin(const std::vector<CodePoint>& text, std
         add_form(text, start, end, said_syllables(syllables));
         return end;
     }
-    add_form(text, start, end, latin_word_syllables(word, text[start]));
+    add_form(text, start, end, latin_word_syllables(word, text[start], is_digit_at(text, end)));
     return end;
 }
 
-std::vector<Syllable> TranscriptReader::latin_word_syllables(const std::string& word, const CodePoint& at) {
+std::vector<Syllable> TranscriptReader::latin_word_syllables(const std::string& word, const CodePoint& at,
+                                                             bool names_with_number) {
     // A letter alone is a letter (选a, x=5), not the dictionary's word a or x (ai si).
     if (word.size() == 1 || (detail::is_all_capitals(word) && !detail::is_said_as_word(word)))
         return read_capitals(word);
@@ -212,8 +213,14 @@ std::vector<Syllable> TranscriptReader::latin_word_syllables(const std::string& 
     // kneeling figure; abc, ufo) are their letters, as three capitals are: too short to be said as a word
     // (session 21: generic speech). Pinyin read as Latin (ni with read_pinyin off) stays generic speech.
     // So with a capital first, as a key's name is written (Esc yi ai si xi; session 33: generic speech).
+    // A number written right after it makes it a name said as a word, as a protein's or a gene's is
+    // (Cas9 ka si 九, Cas12a; session 34: C A S): a key's name never takes one (Esc, Alt+4, F12's letter).
     constexpr std::size_t kLongestSpelledSmall = 3;
-    if (word.size() <= kLongestSpelledSmall &&
+    const bool is_name = names_with_number && word.size() > 1 &&
+                         is_ascii_capital(static_cast<unsigned char>(word[0])) && word[1] >= 'a';
+    if (auto found = is_name ? detail::name_before_number_syllables(word) : std::nullopt)
+        return said_syllables(*found);
+    if (word.size() <= kLongestSpelledSmall && !is_name &&
         std::all_of(word.begin() + 1, word.end(), [](char l) { return l >= 'a' && l <= 'z'; }) &&
         is_ascii_letter(static_cast<unsigned char>(word.front())) &&
         !split_pinyin(decode_utf8(detail::ascii_lower_case(word), "<word>")))

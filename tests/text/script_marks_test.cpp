@@ -120,6 +120,26 @@ TEST_SUITE("stage directions and speaker labels") {
               "第一段很长第二段也长注意小心第三段提示慢走");
     }
 
+    TEST_CASE("a heading that names no person is said among speakers whose turns come back") {
+        // Failed on main 029c10d (session 35, session 34's leftover): 化简 and 注意事项 were labels.
+        const auto timeline = read_transcript(
+            "老师：今天学分数。\n"
+            "学生：好的。\n"
+            "化简：约到最简。\n"
+            "注意事项：别约错。\n"
+            "老师：明白了吗？\n"
+            "学生：明白了。\n"
+            "嘉宾：我也明白了。\n"
+            "小明：我也是。");
+        const auto text = said(timeline);
+        CHECK(text.find("化简") != std::string::npos);
+        CHECK(text.find("注意事项") != std::string::npos);
+        // A person's one line is still a label: a role's head, a name.
+        CHECK(text.find("嘉宾") == std::string::npos);
+        CHECK(text.find("小明") == std::string::npos);
+        CHECK(text.find("老师") == std::string::npos);
+    }
+
     TEST_CASE("a heading before a formula, a question's kind and an example's number are no speakers") {
         // Failed on main 8eff8bb (session 34, dev31's lines as one passage): each heading was a label.
         const auto timeline = read_transcript(
