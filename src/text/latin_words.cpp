@@ -242,6 +242,8 @@ std::vector<std::string> spelled_syllables(std::string_view word) {
     return syllables;
 }
 
+namespace {
+
 // Names a number follows, which the dictionary lacks, said as their fields say them: the Cas proteins of gene
 // editing (Cas9, Cas12a) 卡斯. Apart from kSaidOtherwise, whose words are words in capitals too: CAS (T/CAS
 // 115, an association's standard) stays spelled.
@@ -249,9 +251,12 @@ constexpr std::pair<std::string_view, std::string_view> kNamesBeforeNumbers[] = 
     {"cas", "ka3 si1"},
 };
 
-std::optional<std::vector<std::string>> name_before_number_syllables(std::string_view word) {
+// The syllables `table` gives the word (any case), or nullopt.
+template <std::size_t N>
+std::optional<std::vector<std::string>> syllables_in(
+    const std::pair<std::string_view, std::string_view> (&table)[N], std::string_view word) {
     const std::string key = ascii_lower_case(word);
-    for (const auto& [spelled, said] : kNamesBeforeNumbers) {
+    for (const auto& [spelled, said] : table) {
         if (key != spelled) continue;
         std::vector<std::string> syllables;
         append_words(syllables, said);
@@ -260,14 +265,15 @@ std::optional<std::vector<std::string>> name_before_number_syllables(std::string
     return std::nullopt;
 }
 
+}  // namespace
+
+std::optional<std::vector<std::string>> name_before_number_syllables(std::string_view word) {
+    return syllables_in(kNamesBeforeNumbers, word);
+}
+
 std::optional<std::vector<std::string>> english_word_syllables(std::string_view word) {
+    if (auto said = syllables_in(kSaidOtherwise, word)) return said;
     const std::string key = ascii_lower_case(word);
-    for (const auto& [spelled, said] : kSaidOtherwise) {
-        if (key != spelled) continue;
-        std::vector<std::string> syllables;
-        append_words(syllables, said);
-        return syllables;
-    }
     const auto found = english_lines().find(key);
     if (!found) return std::nullopt;
     std::vector<std::string> syllables;
