@@ -87,6 +87,29 @@ std::string_view chat_magnitude(const std::vector<CodePoint>& text, std::size_t 
     return speaks_of_picture(text, end) ? std::string_view{} : "千";
 }
 
+// A currency's amount with K, M or B right after it, as English finance copy writes thousands, millions and
+// billions ($90K 九万美元, $1.2M 一百二十万美元, $94.9B 九百四十九亿美元): the amount times the magnitude,
+// said in 万 and 亿 as Chinese counts it (session 34: the letter after the amount, 九十美元 K). `number` is
+// scaled and its end moved past the letter; false where no such letter stands (not before another letter:
+// $5MB).
+bool scale_by_magnitude_letter(const std::vector<CodePoint>& text, WrittenNumber& number) {
+    const auto letter = value_at(text, number.end);
+    const std::size_t shift = is_one_of(letter, U"Kk") ? 3 : letter == 'M' ? 6 : letter == 'B' ? 9 : 0;
+    if (shift == 0 || is_ascii_letter(value_at(text, number.end + 1)) || is_digit_at(text, number.end + 1))
+        return false;
+    std::string fraction = number.fraction;
+    fraction.resize(std::max(fraction.size(), shift), '0');
+    std::string whole = number.whole + fraction.substr(0, shift);
+    whole.erase(0, std::min(whole.find_first_not_of('0'), whole.size() - 1));
+    number.whole = whole;
+    number.fraction = fraction.substr(shift);
+    number.fraction.erase(number.fraction.find_last_not_of('0') + 1);
+    number.has_point = !number.fraction.empty();
+    number.has_separators = false;
+    ++number.end;
+    return true;
+}
+
 // A charger's or a port's rating, its volts, a slash and the current or the power it gives at them (5V/2A
 // 五伏两安, 20V/3.25A, 9V/2A两档), said as the pair it is, the slash unsaid: no quantity is per a current.
 // `divisor` is the number after the slash at text[end]: its words and its unit's, `end` moved past them;
@@ -303,6 +326,7 @@ SpokenForm read_quantity(const std::vector<CodePoint>& text, std::size_t start, 
     NumberRange range = read_range(text, start, number, sign_words);
     std::vector<WrittenNumber>& numbers = range.numbers;
     std::vector<std::string>& signs = range.signs;
+    if (currency != nullptr && numbers.size() == 1) scale_by_magnitude_letter(text, numbers.front());
     auto end = numbers.back().end;
     if (context.is_code && numbers.size() == 1) end = past_exchange_suffix(text, end);
     // A power after one number (10⁵ 十的五次方, 2^10) is said before the unit after it (10⁵Pa).

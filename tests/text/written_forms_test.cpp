@@ -2652,10 +2652,11 @@ TEST_SUITE("written forms") {
     }
 
     TEST_CASE(
-        "a goodbye after a particle, a face's hands, a post's +1, a flight's code, a gene's name and a "
-        "thousandth are said as chat, notices and science read them") {
+        "a goodbye after a particle, a face's hands, a post's +1, a flight's code, a gene's name, a "
+        "thousandth and an amount in K, M or B are said as chat, notices and science read them") {
         // The rows before the limits failed on main 029c10d (session 35, dev37 and session 34's leftovers):
-        // 八十八, ou, 正一, 八千六百三十三, 幺 in Taiwan's, C A S, 一千分之一, 二房.
+        // 八十八, ou, 正一, 八千六百三十三, 幺 in Taiwan's, C A S, 一千分之一, 二房, the letter after the
+        // amount.
         check_cases({
             {"那明天见啦88～", "那明天见啦八八"},
             {"今天也要加油ヾ(≧▽≦*)o", "今天也要加油"},
@@ -2669,8 +2670,12 @@ TEST_SUITE("written forms") {
             {"1/100", "百分之一"},
             {"1/10000", "万分之一"},
             {"2房單位", "兩房單位"},
+            {"比特币跌破$90K", "比特币跌破九万美元"},
+            {"营收$94.9B", "营收九百四十九亿美元"},
+            {"融资$1.2M", "融资一百二十万美元"},
             // The limits: a count before a particle, a key's name, a password's letters, a letter in a word,
-            // a temperature's sign, a tenth, a hall's name, a mainland train in Traditional text.
+            // a temperature's sign, a tenth, a hall's name, a mainland train in Traditional text, a letter
+            // that begins a unit.
             {"他今年88了吧", "他今年八十八了吧"},
             {"按Esc键", "按 yi ai si xi键"},
             {"密码是abc123", "密码是 ei bi xi一二三"},
@@ -2678,6 +2683,7 @@ TEST_SUITE("written forms") {
             {"1/10", "十分之一"},
             {"影院2厅", "影院二厅"},
             {"複興號G1次列車", "複興號 ji幺次列車"},
+            {"$5MB", "五美元 ai mu bi"},
         });
     }
 
