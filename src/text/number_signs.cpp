@@ -27,8 +27,10 @@ bool follows_game_attribute(const std::vector<CodePoint>& text, std::size_t star
           "经验", "經驗", "金币", "金幣",
           // A ranked game's points won (今天上分+50 加五十; session 21: 正五十).
           "上分", "积分", "積分",
-          // An item's upgrade level (装备强化+12 加十二; session 20: 正十二).
-          "强化", "強化", "精炼", "精煉"})
+          // An item's upgrade level (装备强化+12 加十二; session 20: 正十二), and the item's own (装备+15).
+          "强化", "強化", "精炼", "精煉", "装备", "裝備",
+          // A skill's cooldown, which a buff cuts (冷却-20% 减百分之二十; session 34: 跌, a market's fall).
+          "冷却", "冷卻"})
         if (ends_with(before, stat)) return true;
     return false;
 }

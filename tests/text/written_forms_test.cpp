@@ -2656,7 +2656,7 @@ TEST_SUITE("written forms") {
         "thousandth and an amount in K, M or B are said as chat, notices and science read them") {
         // The rows before the limits failed on main 029c10d (session 35, dev37 and session 34's leftovers):
         // 八十八, ou, 正一, 八千六百三十三, 幺 in Taiwan's, C A S, 一千分之一, 二房, the letter after the
-        // amount.
+        // amount, 跌 and 正 of a game's stats.
         check_cases({
             {"那明天见啦88～", "那明天见啦八八"},
             {"今天也要加油ヾ(≧▽≦*)o", "今天也要加油"},
@@ -2673,6 +2673,8 @@ TEST_SUITE("written forms") {
             {"比特币跌破$90K", "比特币跌破九万美元"},
             {"营收$94.9B", "营收九百四十九亿美元"},
             {"融资$1.2M", "融资一百二十万美元"},
+            {"冷却-20%", "冷却减百分之二十"},
+            {"装备+15", "装备加十五"},
             // The limits: a count before a particle, a key's name, a password's letters, a letter in a word,
             // a temperature's sign, a tenth, a hall's name, a mainland train in Traditional text, a letter
             // that begins a unit.
