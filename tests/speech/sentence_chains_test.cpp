@@ -42,6 +42,20 @@ TEST_SUITE("sentence chains") {
         CHECK(end_before_ringing(track, 0, mark, levels.size()) == 30);
     }
 
+    TEST_CASE("a ringing longer than the reference window is measured from the last vowel's peak") {
+        std::vector<float> levels(30, -20.0f);  // the last vowel
+        // The ringing of a large room, 6 dB under the vowel where the voice stops, falls 0.35 dB a
+        // frame with a 1 dB ripple for 0.7 s: the last 0.6 s hold none of the vowel, and their
+        // loudest frame, their first, is already ringing.
+        for (int k = 0; k < 70; ++k)
+            levels.push_back(-26.0f - 0.35f * static_cast<float>(k) + (k % 2 == 0 ? 1.0f : -1.0f));
+        const FeatureTrack track = track_of(levels);
+        const std::size_t mark = end_before_tail(track, 0, levels.size());
+        // 18 dB under the vowel, not under the ringing's first frame in the window (91).
+        CHECK(mark == 67);
+        CHECK(end_before_ringing(track, 0, mark, levels.size()) == 30);
+    }
+
     TEST_CASE("a fade that passes under the ringing's line drawn back keeps the mark") {
         // The last vowel fades 1 dB a frame to 20 dB under the voice, while what the louder frames
         // before it left rings on over it, falling 0.3 dB a frame: followed back, the level leaves the
