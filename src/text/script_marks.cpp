@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "text/code_points.hpp"
 #include "text/written_number_scan.hpp"
 
 namespace talkface::detail {
@@ -176,9 +177,8 @@ struct Label {
 // characters opening with a common surname or with 小 老 阿 (小明 老王 阿强 张伟). A heading that names a
 // task or a part of a lesson (化简 总结 解析 答案 注意事项) is none, and names no speaker.
 bool names_person(std::string_view name) {
-    if (std::any_of(name.begin(), name.end(), [](char c) {
-            return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
-        }))
+    if (std::any_of(name.begin(), name.end(),
+                    [](unsigned char c) { return is_ascii_letter(c) || is_ascii_digit(c); }))
         return true;
     if (ends_with_any(name,
                       {"人", "者", "员", "員", "师", "師", "生", "手", "家", "长", "長", "官", "主", "友",
