@@ -103,6 +103,11 @@ std::string placed(const std::string& animation_svg, const StageBox& place) {
 // from the caption's top (a line of it before): its first lines alone stood there for minutes, and
 // the share of the sentence's time spoken, which came first, showed a line ahead or behind where
 // the speaker slowed or hurried.
+// The caption is a live region only when the reader asks (the first button, shown when focused):
+// the speech says the same words aloud, and a screen reader announcing each sentence would talk
+// over it; a reader who does not hear it (a braille display's) turns it on. Video players do the
+// same with captions (Video.js's caption display is aria-live="off"; only spoken descriptions are
+// live). On, it is polite and atomic: one sentence, read out whole when the next one shows.
 constexpr const char* kCaptionScript = R"js((function () {
   "use strict";
   var caption = document.querySelector(".tf-caption");
@@ -143,6 +148,12 @@ constexpr const char* kCaptionScript = R"js((function () {
     caption.scrollTop = Math.min(hidden, Math.max(0, index - 1) * line);
   }
   ["timeupdate", "seeked"].forEach(function (name) { audio.addEventListener(name, follow); });
+  var reading = document.querySelector(".tf-caption-reading");
+  reading.addEventListener("click", function () {
+    var on = reading.getAttribute("aria-pressed") !== "true";
+    reading.setAttribute("aria-pressed", String(on));
+    caption.setAttribute("aria-live", on ? "polite" : "off");
+  });
   document.addEventListener("tf-sentence", fit);
   var resized = new ResizeObserver(fit);
   resized.observe(stage);
@@ -190,7 +201,8 @@ PageParts announcer_page(const std::string& animation_svg, const FaceModel& face
         ";--band-top:" + percent(band.y, stage_height) + ";--band-width:" + percent(band.width, stage_width) +
         ";--band-height:" + percent(band.height, stage_height) + "\">\n" +
         (title.empty() ? std::string() : "<div class=\"tf-title\">" + escape_html(title) + "</div>\n") +
-        "<div class=\"tf-caption\">\n" + sentences + "</div>\n</div>\n";
+        "<div class=\"tf-caption\" aria-live=\"off\" aria-atomic=\"true\">\n" + sentences +
+        "</div>\n</div>\n";
 
     // The caption's size on the stage, min(22cqh, 3.4cqw) of its band, as a share of the stage's width.
     const double caption_share = std::min(0.22 * band.height, 0.034 * band.width) / stage_width;
@@ -215,7 +227,12 @@ PageParts announcer_page(const std::string& animation_svg, const FaceModel& face
         "}"
         ".tf-announcer{" +
         widest("100px") +
-        ";margin:0 auto;padding:16px}"
+        ";position:relative;margin:0 auto;padding:16px}"
+        // Out of sight but for a keyboard's focus, as a "skip to content" link is.
+        ".tf-caption-reading{position:absolute;left:24px;top:24px;z-index:1;padding:.4em .8em;border:0;"
+        "border-radius:6px;background:#1e293b;color:#fff;font:inherit}"
+        ".tf-caption-reading:not(:focus){width:1px;height:1px;padding:0;overflow:hidden;clip-path:inset(50%);"
+        "white-space:nowrap}"
         ".tf-stage{position:relative;overflow:hidden;aspect-ratio:" +
         std::to_string(options.stage_width_px) + "/" + std::to_string(options.stage_height_px) +
         "}"
@@ -256,7 +273,9 @@ PageParts announcer_page(const std::string& animation_svg, const FaceModel& face
         "@media print{.tf-lower-third{container-type:inline-size}"
         ".tf-title,.tf-caption{print-color-adjust:exact}}";
     parts.body = "<main class=\"tf-announcer\" data-caption-share=\"" + format_fixed(caption_share, 6) +
-                 "\">\n<div class=\"tf-stage\">\n<svg class=\"tf-stage-art\" "
+                 "\">\n<button type=\"button\" class=\"tf-caption-reading\" aria-pressed=\"false\">"
+                 "Captions to screen reader and braille</button>\n"
+                 "<div class=\"tf-stage\">\n<svg class=\"tf-stage-art\" "
                  "xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " +
                  number(stage_width) + " " + number(stage_height) + "\" role=\"img\" aria-label=\"" +
                  escape_html(title) + "\">\n" + background + placed(animation_svg, layout.face) + "</svg>\n" +

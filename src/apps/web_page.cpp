@@ -150,25 +150,57 @@ constexpr const char* kScript = R"js((function () {
     audio.currentTime = time;
     if (!stays) play();
   }
-  // A speech that cannot be played (a linked file missing, a format this browser lacks) is said
-  // on the page, under the player, rather than leaving a face that never moves unexplained.
+  // What goes wrong with the speech is said on the page, under the player.
+  function notice(text) {
+    var said = document.createElement("p");
+    said.className = "tf-audio-error";
+    said.setAttribute("role", "alert");
+    said.textContent = text;
+    audio.insertAdjacentElement("afterend", said);
+    return said;
+  }
+  // A speech that cannot be played (a linked file missing, a format this browser lacks), rather
+  // than a face that never moves unexplained.
+  var linked = !/^data:/.test(source);
   function failed() {
-    var notice = document.createElement("p");
-    notice.className = "tf-audio-error";
-    notice.setAttribute("role", "alert");
-    var linked = !/^data:/.test(source);
-    notice.textContent = "The speech could not be played: " + (linked
+    notice("The speech could not be played: " + (linked
       ? "\u201c" + source + "\u201d is missing beside this page, or in a format this browser does not play."
-      : "this browser does not play its format.");
-    audio.insertAdjacentElement("afterend", notice);
+      : "this browser does not play its format."));
     ready();
   }
-  if (audio.error) failed();
-  else if (audio.readyState >= 1) start();
-  else {
-    audio.addEventListener("loadedmetadata", start, { once: true });
-    audio.addEventListener("error", failed, { once: true });
+  // A speech that stops coming in while it plays (a server closing the connection part-way through
+  // a linked speech) left the player waiting with nothing said: Chromium asks again and again and
+  // raises only "waiting" and "stalled", which a slow connection raises too, until it gives up 25 s
+  // later. A slow connection still brings data ("progress" events); waiting with none for 5 s, the
+  // page says the speech stopped coming in, and takes it back once the speech plays on.
+  var quiet = null, stopped = null;
+  function cut_off() {
+    if (stopped) return;
+    var at = Math.floor(audio.currentTime);
+    stopped = notice("The speech stopped coming in at " + Math.floor(at / 60) + ":" +
+      String(at % 60).padStart(2, "0") + ": the connection to \u201c" + source + "\u201d was lost. " +
+      "It plays on if the rest arrives; reloading the page asks for it again.");
   }
+  function expect_data() {
+    window.clearTimeout(quiet);
+    if (linked && !audio.paused && !audio.ended && audio.readyState < 3) quiet = window.setTimeout(cut_off, 5000);
+  }
+  ["waiting", "progress"].forEach(function (name) { audio.addEventListener(name, expect_data); });
+  audio.addEventListener("pause", function () { window.clearTimeout(quiet); });
+  audio.addEventListener("playing", function () {
+    window.clearTimeout(quiet);
+    if (stopped) { stopped.remove(); stopped = null; }
+  });
+  // Chromium's network error once it gives up on such a speech is that, not a speech missing (which
+  // is what the page said of it).
+  function went_wrong() {
+    if (audio.readyState >= 1 && audio.error.code === audio.error.MEDIA_ERR_NETWORK) cut_off();
+    else if (!document.querySelector(".tf-audio-error")) failed();
+  }
+  audio.addEventListener("error", went_wrong);
+  if (audio.error) went_wrong();
+  else if (audio.readyState >= 1) start();
+  else audio.addEventListener("loadedmetadata", start, { once: true });
   show();
   // The animation is unpacked before this script runs: the speech may be playing already.
   if (!audio.paused) follow();

@@ -27,8 +27,13 @@ KEYS = {
 }
 
 
-class Browser:
-    def __init__(self, width, height, mobile=False, preferences=None):
+class Chromium:
+    """One headless Chromium, started once for a test module (each started costs 10-30 s on a loaded
+    machine; a suite of 25 cases spent most of its time starting them). A case opens its own Page,
+    in a browser context of its own: no cookies, storage, cache, scripts or emulated settings carried
+    from the case before."""
+
+    def __init__(self, preferences=None):
         """`preferences`: the profile's settings as Chromium's settings page writes them (e.g. a
         minimum font size: {"webkit": {"webprefs": {"minimum_font_size": 20}}})."""
         self._profile = tempfile.TemporaryDirectory()
@@ -52,8 +57,7 @@ class Browser:
             [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
              "--disable-component-update", "--disable-sync", "--no-first-run", "--mute-audio",
              "--autoplay-policy=no-user-gesture-required", "--hide-scrollbars",
-             f"--user-data-dir={self._profile.name}", "--remote-debugging-pipe", f"--window-size={width},{height}",
-             "about:blank"],
+             f"--user-data-dir={self._profile.name}", "--remote-debugging-pipe", "about:blank"],
             # close_fds=False: the descriptors that child_fds() puts at 3 and 4 must reach chromium
             # (Python's own descriptors are not inherited: they are opened close-on-exec).
             close_fds=False, preexec_fn=child_fds,
@@ -62,29 +66,17 @@ class Browser:
         os.close(high_write)
         self._buffer = b""
         self._next_id = 0
-        # What the page reported while the test waited for answers: DevTools events, in order.
-        self.events = []
-        self._session = None
-        target = self.call("Target.createTarget", url="about:blank")["targetId"]
-        self._session = self.call("Target.attachToTarget", targetId=target, flatten=True)["sessionId"]
-        self.call("Page.enable")
-        self.call("Runtime.enable")
-        self.call("Log.enable")
-        self.emulate(width, height, mobile)
+        # The open pages by their DevTools session: each gets the events of its own.
+        self._pages = {}
 
-    def emulate(self, width, height, mobile=False, media=None):
-        """Sizes the window (at a device pixel ratio of 1) and sets the media features a reader's
-        system sets (`media`: {"prefers-color-scheme": "dark"}, ...), replacing the earlier ones: one
-        browser serves cases of different screens and settings (each Chromium started costs 10-30 s
-        on a loaded machine)."""
-        self.call("Emulation.setDeviceMetricsOverride", width=width, height=height, deviceScaleFactor=1,
-                  mobile=mobile)
-        self.call("Emulation.setEmulatedMedia", media="",
-                  features=[{"name": name, "value": value} for name, value in (media or {}).items()])
+    def page(self, width, height, mobile=False, media=None):
+        """A new page, a window of `width` x `height` (see Page.emulate); close it (or use it in a
+        with statement) when the case ends."""
+        return Page(self, width, height, mobile, media)
 
     def close(self):
         try:
-            self.call("Browser.close", session=False)
+            self.call("Browser.close")
         except (OSError, RuntimeError):
             pass
         try:
@@ -102,11 +94,11 @@ class Browser:
     def __exit__(self, *exc):
         self.close()
 
-    def call(self, method, session=True, **params):
+    def call(self, method, session=None, **params):
         self._next_id += 1
         message = {"id": self._next_id, "method": method, "params": params}
-        if session and self._session is not None:
-            message["sessionId"] = self._session
+        if session is not None:
+            message["sessionId"] = session
         os.write(self._to_chrome, json.dumps(message).encode() + b"\0")
         deadline = time.monotonic() + 120
         while time.monotonic() < deadline:
@@ -118,12 +110,51 @@ class Browser:
             raw, self._buffer = self._buffer.split(b"\0", 1)
             reply = json.loads(raw)
             if "method" in reply:
-                self.events.append(reply)
+                if reply.get("sessionId") in self._pages:
+                    self._pages[reply["sessionId"]].events.append(reply)
             elif reply.get("id") == self._next_id:
                 if "error" in reply:
                     raise RuntimeError(f"{method}: {reply['error']}")
                 return reply.get("result", {})
         raise RuntimeError(f"{method}: no answer in 120 s")
+
+
+class Page:
+    """A tab of a Chromium in a browser context of its own, attached to over DevTools."""
+
+    def __init__(self, chromium, width, height, mobile=False, media=None):
+        self._chromium = chromium
+        self._context = chromium.call("Target.createBrowserContext")["browserContextId"]
+        target = chromium.call("Target.createTarget", url="about:blank", browserContextId=self._context)["targetId"]
+        self._session = chromium.call("Target.attachToTarget", targetId=target, flatten=True)["sessionId"]
+        # What the page reported while the test waited for answers: DevTools events, in order.
+        self.events = []
+        chromium._pages[self._session] = self
+        self.call("Page.enable")
+        self.call("Runtime.enable")
+        self.call("Log.enable")
+        self.emulate(width, height, mobile, media)
+
+    def emulate(self, width, height, mobile=False, media=None):
+        """Sizes the window (at a device pixel ratio of 1) and sets the media features a reader's
+        system sets (`media`: {"prefers-color-scheme": "dark"}, ...), replacing the earlier ones."""
+        self.call("Emulation.setDeviceMetricsOverride", width=width, height=height, deviceScaleFactor=1,
+                  mobile=mobile)
+        self.call("Emulation.setEmulatedMedia", media="",
+                  features=[{"name": name, "value": value} for name, value in (media or {}).items()])
+
+    def close(self):
+        del self._chromium._pages[self._session]
+        self._chromium.call("Target.disposeBrowserContext", browserContextId=self._context)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def call(self, method, **params):
+        return self._chromium.call(method, session=self._session, **params)
 
     def evaluate(self, expression):
         result = self.call("Runtime.evaluate", expression=expression, awaitPromise=True, returnByValue=True)

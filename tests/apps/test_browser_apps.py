@@ -17,7 +17,7 @@ import subprocess
 import pytest
 
 import talkface
-from browser import CHROMIUM, Browser, silent_wav, time_evenly
+from browser import CHROMIUM, silent_wav, time_evenly
 
 CLI = os.environ["TALKFACE_CLI"]
 SPEECH_DIR = pathlib.Path(os.environ["TALKFACE_SPEECH_DIR"])
@@ -118,8 +118,8 @@ def test_the_book_keeps_its_paragraphs(long_book):
     assert sum(s.starts_paragraph for s in timeline.sentences) == 19  # the first needs no blank line
 
 
-def test_the_announcer_caption_shows_the_sentence_being_spoken(announcer, alignment):
-    with Browser(832, 520) as browser:
+def test_the_announcer_caption_shows_the_sentence_being_spoken(chromium, announcer, alignment):
+    with chromium.page(832, 520) as browser:
         shown = []
         for sentence in alignment["sentences"]:
             middle = (sentence["start"] + sentence["end"]) / 2
@@ -138,14 +138,14 @@ def test_the_announcer_caption_shows_the_sentence_being_spoken(announcer, alignm
         assert len(set(shown)) == len(shown)
 
 
-def test_a_long_caption_fits_its_band_opened_at_a_time_and_after_the_window_changes(long_caption):
+def test_a_long_caption_fits_its_band_opened_at_a_time_and_after_the_window_changes(chromium, long_caption):
     # A link to a time shows the sentence before the caption's script runs; a phone turned or a
     # window resized changes the band the caption was fitted to.
     def caption(browser):
         return browser.evaluate("(function () { var c = document.querySelector('.tf-caption');"
                                 " return [parseFloat(getComputedStyle(c).fontSize), c.scrollHeight, c.clientHeight,"
                                 " c.querySelector('.tf-current') !== null]; })()")
-    with Browser(1280, 800) as browser:
+    with chromium.page(1280, 800) as browser:
         browser.open(f"file://{long_caption}#t=3&pause")
         desktop = caption(browser)
         assert desktop[3] and desktop[1] <= desktop[2] + 1, f"opened at 3 s: {desktop}"
@@ -159,7 +159,7 @@ def test_a_long_caption_fits_its_band_opened_at_a_time_and_after_the_window_chan
         assert browser.problems() == []
 
 
-def test_the_announcer_caption_never_covers_the_mouth(announcer, alignment):
+def test_the_announcer_caption_never_covers_the_mouth(chromium, announcer, alignment):
     # The middle of each sentence and of every open vowel (finals a, ai, ao, an, ang).
     times = [(s["start"] + s["end"]) / 2 for s in alignment["sentences"]]
     for syllable in alignment["syllables"]:
@@ -167,7 +167,7 @@ def test_the_announcer_caption_never_covers_the_mouth(announcer, alignment):
             vowel = syllable.get("final_start", syllable["start"])
             times.append(vowel + 0.6 * (syllable["end"] - vowel))
     open_frames = 0
-    with Browser(832, 520) as browser:
+    with chromium.page(832, 520) as browser:
         for time_s in times:
             browser.open(f"file://{announcer}#t={time_s:.3f}&pause")
             box = rect(browser, ".tf-lower-third")
@@ -179,11 +179,11 @@ def test_the_announcer_caption_never_covers_the_mouth(announcer, alignment):
 
 
 @pytest.mark.parametrize("size", [(390, 844), (1280, 800)], ids=["phone", "desktop"])
-def test_the_highlight_is_in_view_deep_into_a_long_book(long_book, size):
+def test_the_highlight_is_in_view_deep_into_a_long_book(chromium, long_book, size):
     page, timeline = long_book
     index = 100
     sentence = timeline.sentences[index]
-    with Browser(*size, mobile=size[0] < 600) as browser:
+    with chromium.page(*size, mobile=size[0] < 600) as browser:
         browser.open(f"file://{page}#t={(sentence.start_s + sentence.end_s) / 2:.3f}&pause")
         assert browser.evaluate("document.body.getAttribute('data-tf-sentence')") == str(index)
         current = rect(browser, ".tf-sentence.tf-current")
@@ -202,9 +202,9 @@ def test_the_highlight_is_in_view_deep_into_a_long_book(long_book, size):
         assert len(skin) > 2000
 
 
-def test_a_phone_shows_the_face_and_the_player_first_and_the_text_below(long_book):
+def test_a_phone_shows_the_face_and_the_player_first_and_the_text_below(chromium, long_book):
     page, _ = long_book
-    with Browser(390, 844, mobile=True) as browser:
+    with chromium.page(390, 844, mobile=True) as browser:
         browser.open(f"file://{page}#t=0.1&pause")
         face = rect(browser, "svg.tf-animation")
         player = rect(browser, "#tf-audio")
@@ -219,9 +219,9 @@ def test_a_phone_shows_the_face_and_the_player_first_and_the_text_below(long_boo
         assert len(skin) > 5000
 
 
-def test_keys_play_pause_and_move_a_sentence_with_a_visible_focus(long_book):
+def test_keys_play_pause_and_move_a_sentence_with_a_visible_focus(chromium, long_book):
     page, timeline = long_book
-    with Browser(1280, 800) as browser:
+    with chromium.page(1280, 800) as browser:
         browser.open(f"file://{page}#t=0.1&pause")
         assert browser.evaluate("document.body.getAttribute('data-tf-sentence')") == "-1"
         moves = []
@@ -247,13 +247,13 @@ def test_keys_play_pause_and_move_a_sentence_with_a_visible_focus(long_book):
         assert browser.evaluate("document.getElementById('tf-audio').currentTime") > timeline.sentences[1].start_s
 
 
-def test_the_text_is_one_tab_stop_the_sentence_being_spoken(long_book):
+def test_the_text_is_one_tab_stop_the_sentence_being_spoken(chromium, long_book):
     # Tab from the player: the sentence being spoken, then the link after the text, not every
     # sentence of the book on the way.
     page, timeline = long_book
     index = 50
     sentence = timeline.sentences[index]
-    with Browser(1280, 800) as browser:
+    with chromium.page(1280, 800) as browser:
         browser.open(f"file://{page}#t={(sentence.start_s + sentence.end_s) / 2:.3f}&pause")
         browser.evaluate("document.getElementById('tf-audio').focus()")
         focused = "document.activeElement.getAttribute('data-index') || document.activeElement.tagName"
@@ -276,12 +276,12 @@ def compressed_page(tmp_path_factory):
     return page
 
 
-def test_the_compressed_speech_plays_as_long_as_the_recording_with_the_face_on_its_clock(compressed_page,
+def test_the_compressed_speech_plays_as_long_as_the_recording_with_the_face_on_its_clock(chromium, compressed_page,
                                                                                         alignment):
     html = compressed_page.read_text()
     assert 'src="data:audio/webm;base64,' in html
     fps = 25.0  # the demo's frame rate (LipSyncOptions)
-    with Browser(640, 760) as browser:
+    with chromium.page(640, 760) as browser:
         browser.open(f"file://{compressed_page}#t=0&pause")
         state = browser.evaluate("""(function () {
             var audio = document.getElementById('tf-audio');

@@ -14,7 +14,7 @@ import numpy
 import pytest
 
 import talkface
-from browser import CHROMIUM, Browser
+from browser import CHROMIUM
 
 LOTTIE_WEB = os.environ.get("TALKFACE_LOTTIE_WEB", "")
 
@@ -50,7 +50,7 @@ def mean_difference(a, b, box=None):
     return float(numpy.abs(a[top:bottom, left:right].astype(int) - b[top:bottom, left:right].astype(int)).mean())
 
 
-def test_lottie_web_plays_the_face_as_the_raster_renderer_draws_it(tmp_path):
+def test_lottie_web_plays_the_face_as_the_raster_renderer_draws_it(chromium, tmp_path):
     assert LOTTIE_WEB and pathlib.Path(LOTTIE_WEB).is_file(), \
         "lottie-web is not installed: run cmake/install-deps.sh test (npm install lottie-web)"
     face = talkface.FaceModel.default()
@@ -75,7 +75,7 @@ def test_lottie_web_plays_the_face_as_the_raster_renderer_draws_it(tmp_path):
         width_px=width, height_px=height, layout=talkface.FrameLayout.face,
         background=talkface.SvgOptions().background))
     shots = {}
-    with Browser(width, height) as browser:
+    with chromium.page(width, height) as browser:
         browser.open((tmp_path / "index.html").as_uri())
         for name, seconds in (("pause", 0.0), ("vowel", vowel_frame / animation.fps)):
             # As a page's audio clock drives it: the time in milliseconds, not a frame number.

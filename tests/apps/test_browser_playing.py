@@ -1,26 +1,23 @@
 """The pages played as a person plays them, in headless Chromium (browser.py): play, pause, seeks
 back and forward, playing at 1.5 times, to the end and again, on a desktop window and a phone's,
 each page opened from file://. The face's clock must be the audio's at every animation frame, the
-page must throw nothing, and the player must work by keyboard. A speech that cannot be played is
-said on the page; a speech started before the page has unpacked its animation is followed.
+page must throw nothing, and the player must work by keyboard. A speech that cannot be played, or
+that stops coming in while it plays, is said on the page; a speech started before the page has
+unpacked its animation is followed.
 
 Pages: `talkface demo` (plain, audio book, announcer; the speech compressed into the page, or
 linked beside it) and `talkface animate` of a long speech (8 minutes, 300 sentences, timed by a
 timeline JSON over a silent recording).
 """
-import functools
-import http.server
-import json
 import os
-import pathlib
 import subprocess
-import threading
 import time
 
 import pytest
 
 import talkface
-from browser import CHROMIUM, Browser, silent_wav, time_evenly
+from browser import CHROMIUM, silent_wav, time_evenly
+from served_folder import QuietHandler, served
 
 CLI = os.environ["TALKFACE_CLI"]
 FRAME_S = 1 / 25  # the pages' animation frame rate (LipSyncOptions)
@@ -116,9 +113,9 @@ def pages(tmp_path_factory):
     ("linked", (640, 760)),
     ("long", (640, 760)),
 ], ids=lambda value: "x".join(map(str, value)) if isinstance(value, tuple) else value)
-def test_the_face_keeps_to_the_audio_clock_whatever_the_player_does(pages, page, size):
+def test_the_face_keeps_to_the_audio_clock_whatever_the_player_does(chromium, pages, page, size):
     phone = size[0] < 600
-    with Browser(*size, mobile=phone) as browser:
+    with chromium.page(*size, mobile=phone) as browser:
         browser.open(pages[page].as_uri())
         assert browser.evaluate("location.protocol") == "file:"
         duration = assert_face_shows_audio_time(browser, "opened")["duration"]
@@ -153,8 +150,8 @@ def test_the_face_keeps_to_the_audio_clock_whatever_the_player_does(pages, page,
 
 
 @pytest.mark.parametrize("page", ["plain", "audiobook", "announcer"])
-def test_the_player_is_reached_seen_and_worked_by_keyboard(pages, page):
-    with Browser(1280, 800) as browser:
+def test_the_player_is_reached_seen_and_worked_by_keyboard(chromium, pages, page):
+    with chromium.page(1280, 800) as browser:
         browser.open(pages[page].as_uri())
         for _ in range(10):  # the audio book's links and sentences come after the player
             browser.press("Tab")
@@ -180,11 +177,11 @@ def test_the_player_is_reached_seen_and_worked_by_keyboard(pages, page):
 
 @pytest.mark.parametrize("size", [(568, 320), (844, 390)], ids=["568x320", "844x390"])
 @pytest.mark.parametrize("page", ["plain", "audiobook", "announcer"])
-def test_a_phone_on_its_side_shows_the_face_and_the_player_on_one_screen(pages, page, size):
+def test_a_phone_on_its_side_shows_the_face_and_the_player_on_one_screen(chromium, pages, page, size):
     # Turned on its side, a phone's screen is 320-430 px high: the face must not shrink to a thumbnail
     # nor push the player below the screen, where it cannot be reached while the face is watched.
     framed = "svg.tf-stage-art" if page == "announcer" else "svg.tf-animation"
-    with Browser(*size, mobile=True) as browser:
+    with chromium.page(*size, mobile=True) as browser:
         browser.open(pages[page].as_uri())
         face, player = (browser.evaluate("(function () { var r = document.querySelector('%s').getBoundingClientRect();"
                                          " return [r.top, r.bottom]; })()" % selector)
@@ -196,10 +193,10 @@ def test_a_phone_on_its_side_shows_the_face_and_the_player_on_one_screen(pages, 
 
 
 @pytest.mark.parametrize("page", ["plain", "audiobook", "announcer"])
-def test_a_screen_reader_finds_the_face_and_the_player_named(pages, page):
+def test_a_screen_reader_finds_the_face_and_the_player_named(chromium, pages, page):
     # Chromium's accessibility tree, as a screen reader reads it: an image or a player with no name
     # is announced as a bare "image" or "audio".
-    with Browser(1280, 800) as browser:
+    with chromium.page(1280, 800) as browser:
         browser.open(pages[page].as_uri())
         browser.call("Accessibility.enable")
         nodes = [node for node in browser.call("Accessibility.getFullAXTree")["nodes"] if not node.get("ignored")]
@@ -212,10 +209,10 @@ def test_a_screen_reader_finds_the_face_and_the_player_named(pages, page):
         assert all(name.strip() for names in named.values() for name in names), named
 
 
-def test_ready_means_the_face_shows_the_time_of_the_fragment(pages):
+def test_ready_means_the_face_shows_the_time_of_the_fragment(chromium, pages):
     # The SVG's timeline starts with the document's load event, after the audio's metadata: a page
     # that says it is ready must already show the face at the fragment's time.
-    with Browser(640, 760) as browser:
+    with chromium.page(640, 760) as browser:
         browser.call("Page.navigate", url=pages["plain"].as_uri() + "#t=2.5&pause")
         browser.evaluate("""new Promise(function (done) {
             (function poll() {
@@ -228,10 +225,10 @@ def test_ready_means_the_face_shows_the_time_of_the_fragment(pages):
 
 
 @pytest.mark.parametrize("fragment", ["", "#t=3&pause"])
-def test_a_speech_that_cannot_be_played_is_said_on_the_page(pages, tmp_path, fragment):
+def test_a_speech_that_cannot_be_played_is_said_on_the_page(chromium, pages, tmp_path, fragment):
     page = tmp_path / "moved.html"
     page.write_text(pages["linked"].read_text(encoding="utf-8"), encoding="utf-8")  # its speech left behind
-    with Browser(640, 760) as browser:
+    with chromium.page(640, 760) as browser:
         browser.open(page.as_uri() + fragment)
         notice = browser.evaluate("(function () { var n = document.querySelector('.tf-audio-error');"
                                   " return n && [n.getAttribute('role'), n.textContent, n.getBoundingClientRect().height]; })()")
@@ -242,12 +239,9 @@ def test_a_speech_that_cannot_be_played_is_said_on_the_page(pages, tmp_path, fra
         assert all(problem.startswith("network: ") for problem in browser.problems()), browser.problems()
 
 
-class SlowSpeechServer(http.server.SimpleHTTPRequestHandler):
+class SlowSpeechServer(QuietHandler):
     """Serves a folder; a speech's first 20 kB at once, the rest at 2 kB/s, under the 5 kB a second
     it plays at: the player runs out of data and waits, as on a slow connection."""
-
-    def log_message(self, *args):
-        pass
 
     def copyfile(self, source, destination):
         if not self.path.endswith(".ogg"):
@@ -259,16 +253,12 @@ class SlowSpeechServer(http.server.SimpleHTTPRequestHandler):
             time.sleep(0.25)
 
 
-def test_a_page_served_over_http_asks_for_its_speech_alone_and_the_face_waits_for_it(pages):
+def test_a_page_served_over_http_asks_for_its_speech_alone_and_the_face_waits_for_it(chromium, pages):
     # Served by a web server rather than opened from a file: the browser asks for the page and its
     # speech, nothing else (no icon: a 404 in the console), and when the speech comes slower than it
     # plays the face stops with the voice.
-    server = http.server.ThreadingHTTPServer(
-        ("127.0.0.1", 0), functools.partial(SlowSpeechServer, directory=str(pages["linked"].parent)))
-    threading.Thread(target=server.serve_forever, daemon=True).start()
-    origin = f"http://127.0.0.1:{server.server_address[1]}/"
-    try:
-        with Browser(640, 760) as browser:
+    with served(pages["linked"].parent, SlowSpeechServer) as origin:
+        with chromium.page(640, 760) as browser:
             browser.call("Network.enable")
             browser.open(origin + "linked.html")
             browser.evaluate("window.tfWaits = 0; document.getElementById('tf-audio').addEventListener('waiting',"
@@ -283,12 +273,47 @@ def test_a_page_served_over_http_asks_for_its_speech_alone_and_the_face_waits_fo
                             and not event["params"]["request"]["url"].startswith("data:")})
             assert asked == [origin + "linked.html", origin + "linked.ogg"]
             assert browser.problems() == []
-    finally:
-        server.shutdown()
-        server.server_close()
+            # Waiting for a slow connection is not a speech cut off: nothing is said.
+            assert browser.evaluate("document.querySelector('.tf-audio-error')") is None
 
 
-def test_a_speech_started_before_the_animation_is_unpacked_is_followed(pages):
+class DroppingServer(QuietHandler):
+    """Serves a folder; of a speech, its first 40 kB (5 of its 13 s), then it closes the connection,
+    as a server that goes down, every time it is asked."""
+
+    def copyfile(self, source, destination):
+        if not self.path.endswith(".ogg"):
+            return super().copyfile(source, destination)
+        destination.write(source.read(40000))
+        self.close_connection = True
+
+
+def test_a_speech_cut_off_while_it_plays_is_said_on_the_page(chromium, pages):
+    # The player stopped at 5 s and waited, Chromium asking again, for 25 s with nothing said, and
+    # then the page said the speech was missing or in a format the browser does not play, a speech
+    # that had played for 5 s. The page says, 5 s into the wait, that the speech stopped coming in.
+    with served(pages["linked"].parent, DroppingServer) as origin:
+        with chromium.page(640, 760) as browser:
+            browser.open(origin + "linked.html")
+            browser.evaluate("document.getElementById('tf-audio').play()")
+            said = browser.evaluate("""new Promise(function (done) {
+                var waited = 0;
+                (function poll() {
+                  var notice = document.querySelector('.tf-audio-error');
+                  var audio = document.getElementById('tf-audio');
+                  if (notice) return done([notice.getAttribute('role'), notice.textContent, audio.error === null]);
+                  if ((waited += 100) > 40000) return done(null);
+                  setTimeout(poll, 100);
+                })();
+              })""")
+            assert said is not None, "40 s after the speech was cut off, nothing said on the page"
+            assert said[0] == "alert" and "stopped coming in" in said[1] and "linked.ogg" in said[1], said
+            assert said[2], "said only once the browser gave up on the speech"
+            clocks = assert_face_shows_audio_time(browser, "cut off")
+            assert 2 < clocks["audio"] < 8 and not clocks["ended"], clocks
+
+
+def test_a_speech_started_before_the_animation_is_unpacked_is_followed(chromium, pages):
     # The page's script runs once the animation is unpacked; the player works before that. Hold the
     # unpacking (the page's Response.text()) until the speech plays.
     hold = """(function () {
@@ -300,7 +325,7 @@ def test_a_speech_started_before_the_animation_is_unpacked_is_followed(pages):
         return new Promise(function (resolve) { held.push(function () { resolve(text.call(response)); }); });
       };
     })();"""
-    with Browser(640, 760) as browser:
+    with chromium.page(640, 760) as browser:
         browser.call("Page.addScriptToEvaluateOnNewDocument", source=hold)
         browser.call("Page.navigate", url=pages["plain"].as_uri())
         browser.evaluate("""new Promise(function (done) {
