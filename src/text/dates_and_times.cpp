@@ -561,7 +561,9 @@ std::string minutes_and_seconds_words(const WrittenNumber& minutes, const Writte
 
 std::optional<SpokenForm> read_race_time(const WrittenNumber& minutes, const WrittenNumber& seconds) {
     constexpr std::size_t kLongestMinutes = 2;
-    constexpr std::size_t kLongestFraction = 2;
+    // A lap timed to the thousandth, as motor racing and speed skating print it (1:27.123 一分二十七秒一二三;
+    // session 35: a clock time and a count); a subtitle's thousandths follow minutes with a leading zero.
+    constexpr std::size_t kLongestFraction = 3;
     if (minutes.has_point || minutes.has_separators || minutes.whole.size() > kLongestMinutes ||
         (minutes.whole.size() > 1 && minutes.whole.front() == '0') || !seconds.has_point || seconds.whole.size() != 2 ||
         seconds.whole > "59" || seconds.fraction.size() > kLongestFraction) {

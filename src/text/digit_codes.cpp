@@ -690,8 +690,14 @@ bool follows_software_name(const std::vector<CodePoint>& text, std::size_t start
     for (const std::string_view word : {"版本", "版本号", "版本號"})
         if (ends_with(text_between(text, word_end >= 3 ? word_end - 3 : 0, word_end), word)) return true;
     if (is_one_of(value_at(text, start - 1), U"vV")) return start == 1 || !is_ascii_letter(value_at(text, start - 2));
+    // A small letter and a capital alone (pH 7.35) are a quantity's letters, spelled, whose value follows
+    // (session 35: 七点三十五, a version's).
+    const bool after_quantity_letters = start >= 3 && is_ascii_capital(value_at(text, start - 2)) &&
+                                        is_ascii_letter(value_at(text, start - 3)) &&
+                                        !is_ascii_capital(value_at(text, start - 3)) &&
+                                        (start == 3 || !is_ascii_letter(value_at(text, start - 4)));
     return value_at(text, start - 1) == ' ' && start >= 2 && is_ascii_letter(value_at(text, start - 2)) &&
-           follows_glued_name(text, start - 1);
+           follows_glued_name(text, start - 1) && !after_quantity_letters;
 }
 
 bool follows_designation(const std::vector<CodePoint>& text, std::size_t dash) {
@@ -722,6 +728,28 @@ bool is_train_number(const std::vector<CodePoint>& text, std::size_t start, std:
     }
     const std::string before = text_before(text, start, true);
     return is_one_of(value_at(text, end), U"次") || contains_any(before, {"车次", "車次"});
+}
+
+bool is_unlettered_train_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    constexpr std::size_t kLongestTrainNumber = 4;
+    if (end - start > kLongestTrainNumber ||
+        (start > 0 && (is_ascii_letter(value_at(text, start - 1)) || is_digit_at(text, start - 1))))
+        return false;
+    // A train's kind as Taiwan's railway and the mainland's timetables name it, or a train: 自強號123次,
+    // 123次自強號, 區間車2101次, 普快1461次, 1461次列车. Not 火车, which follows a count of rides too
+    // (坐了100次火车).
+    constexpr std::string_view kKinds[] = {"自強號", "自强号", "莒光號", "莒光号", "復興號", "复兴号",
+                                           "區間車", "区间车", "區間快", "区间快", "普悠瑪", "普悠玛",
+                                           "太魯閣", "太鲁阁", "普快",   "列車",   "列车"};
+    auto before = start;
+    while (before > 0 && is_one_of(value_at(text, before - 1), U" ：:")) --before;
+    const auto word_before = text_between(text, before >= 3 ? before - 3 : 0, before);
+    if (ends_with_any(word_before, {"車次", "车次"})) return true;
+    const auto after = text_between(text, end, end + 2);
+    if (after == "車次" || after == "车次") return true;
+    if (value_at(text, end) != U'次') return false;
+    return ends_with_any(word_before, kKinds) ||
+           starts_with_any(text_between(text, end + 1, end + 4), kKinds);
 }
 
 // An airline's code of a digit and a capital (3U 四川航空, 9C 春秋航空, 8L), standing as a word before

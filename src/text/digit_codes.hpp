@@ -180,6 +180,12 @@ bool follows_element(const std::vector<CodePoint>& text, std::size_t start);
 // clause (车次：G101).
 bool is_train_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t end);
 
+// A train's number without a class's capital, one to four digits, as Taiwan's railway numbers its trains
+// and the mainland its oldest: 次 after it and a train's kind right before it or after 次 (自強號123次,
+// 2101次區間車, 普快1461次), or 車次 right before or after it (車次：123, 4235車次). A count of times
+// (坐了100次火车) has neither beside it.
+bool is_unlettered_train_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t end);
+
 // A flight's number: an airline's two capitals and three or four digits (CA1831, MU 5101), with
 // 航班 or 班机 right after it or earlier in the clause (航班号CA1831).
 bool is_flight_number(const std::vector<CodePoint>& text, std::size_t start, std::size_t end);

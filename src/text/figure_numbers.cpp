@@ -1,6 +1,7 @@
 #include "text/figure_numbers.hpp"
 
 #include "text/number_words.hpp"
+#include "text/written_number_scan.hpp"
 
 namespace talkface::detail {
 
@@ -14,6 +15,17 @@ bool names_stage_at(const std::vector<CodePoint>& text, std::size_t i) {
 }
 
 }  // namespace
+
+bool numbers_labelled_item(const std::vector<CodePoint>& text, std::size_t start) {
+    const auto label = text_between(text, start >= 2 ? start - 2 : 0, start);
+    if (is_any_of(label, {"附件", "附表", "附图", "附圖"})) return true;
+    if (start == 0 || !is_one_of(text[start - 1].value, U"图圖表")) return false;
+    // 图 and 表 end words that count (手表2块, 代表2人, 发表2篇, 地图2张): the label stands where a clause
+    // opens or after a word that points to it (见表2, 如图2所示, 由表2可知).
+    const auto before = value_at(text, start - 2);
+    return start == 1 || is_one_of(before, U"，,。.；;：:、（(「“\n 见見如由据據按在和与與及") ||
+           text_between(text, start >= 3 ? start - 3 : 0, start - 1) == "参见";
+}
 
 std::optional<SpokenForm> read_figure_number(const std::vector<CodePoint>& text, std::size_t start,
                                              const WrittenNumber& first) {

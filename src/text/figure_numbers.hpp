@@ -20,6 +20,11 @@ namespace talkface::detail {
 // 29: 三到两, a range, and 二比一, a score; session 30: 例3-2 三到二). A range after such a word counts
 // something and says what (发表3-5篇, 代表3-5人 stay ranges). So is a game's stage before 关 without 第
 // (卡在1-3关 一杠三关, its world and its place; 第1-3关 stays a range of stages).
+// Whether the number at text[start] names a figure, a table or an annex (表2 表二, 如图2所示, 附件2): its
+// place among them, said as an ordinal is, 二 before a measure word too (表2列出 表二列出; session 35: 两,
+// 列 counted).
+bool numbers_labelled_item(const std::vector<CodePoint>& text, std::size_t start);
+
 std::optional<SpokenForm> read_figure_number(const std::vector<CodePoint>& text, std::size_t start,
                                              const WrittenNumber& first);
 

@@ -373,9 +373,11 @@ std::optional<SpokenForm> read_number_character(const std::vector<CodePoint>& te
         {0x215A, "六分之五"}, {0x2150, "七分之一"}, {0x215B, "八分之一"}, {0x215C, "八分之三"}, {0x215D, "八分之五"},
         {0x215E, "八分之七"}, {0x2151, "九分之一"}, {0x2152, "十分之一"},
     };
+    // After a whole number it is a mixed number's part, joined by 又 as a recipe's 1½杯 is read
+    // (一又二分之一杯; session 35: 一二分之一).
     for (const auto& [written, said] : kFractions) {
         if (c != written) continue;
-        form.words = said;
+        form.words = std::string(i > 0 && is_digit_at(text, i - 1) ? "又" : "") + said;
         return form;
     }
     return std::nullopt;

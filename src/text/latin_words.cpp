@@ -115,6 +115,14 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     // (generic speech), is 吉特, as Mandarin tutorials say it (GitHub ji te ha bu).
     {"control", "ken3 chuo1"},
     {"git", "ji2 te4"},
+    // Session 36: names that Mandarin speakers say by their Chinese names though the Latin is written, as
+    // they say Google 谷歌: Android 安卓, as tech news and its readers say the system (安卓15; the mapping
+    // gave an de lao de), and McLaren 迈凯伦, as F1 commentary says the team and the maker (me ke lai ren).
+    // Which Latin names are said so is usage, not spelling: no packaged source records it (CC-CEDICT, not
+    // packaged here, gives Chinese names as glosses for words read in English too, Facebook 脸书, Microsoft
+    // 微软), so they are listed, each fixable in place (Android{an1 de5 luo2 yi1 de5}).
+    {"android", "an1 zhuo2"},
+    {"mclaren", "mai4 kai3 lun2"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

@@ -4,6 +4,7 @@
 
 #include "text/dates_and_times.hpp"
 #include "text/digit_codes.hpp"
+#include "text/figure_numbers.hpp"
 #include "text/home_layouts.hpp"
 #include "text/number_words.hpp"
 #include "text/written_numbers.hpp"
@@ -45,6 +46,20 @@ bool adds_to_ordinal(const std::vector<CodePoint>& text, std::size_t start) {
     auto k = start - 1;
     while (k > 0 && is_digit_at(text, k - 1)) --k;
     return k + 1 < start && k > 0 && text[k - 1].value == U'第';
+}
+
+// A number listed after an ordinal, 、 between them, is an ordinal too (第1、2项 第一、二项, 第3、4、5条;
+// session 35: 两项, a count before the measure word): 第 is written once for the list.
+bool lists_after_ordinal(const std::vector<CodePoint>& text, std::size_t start) {
+    auto k = start;
+    while (k > 0 && value_at(text, k - 1) == 0x3001 /*、*/) {
+        auto digits = k - 1;
+        while (digits > 0 && is_digit_at(text, digits - 1)) --digits;
+        if (digits + 1 == k) return false;
+        if (digits > 0 && text[digits - 1].value == U'第') return true;
+        k = digits;
+    }
+    return false;
 }
 
 // A generation, two digits right before 后 (90后 九零后), or the first of a list of them joined by 、 that
@@ -170,10 +185,12 @@ std::optional<SaidNumber> say_as_name(const std::string& whole, const NumberCont
     // airport announcers say it (G101次 G幺零幺次, CA1831 C A 幺八三幺).
     // A flight's 1 is the local one, as a phone's is (Taiwan's 長榮BR189 一八九; session 34: 幺): a flight
     // is announced where the reader is. A train's keeps 幺: a lettered train runs on the mainland's lines
-    // (複興號G1次 G幺次) whatever script writes of it.
+    // (複興號G1次 G幺次) whatever script writes of it; a train without a class's capital (區間車2101次) is
+    // Taiwan's railway's in a Traditional transcript, 一 as its announcements say it (session 35: counted,
+    // 兩千一百零一次), and the mainland's oldest in a Simplified one (普快1461次 幺四六幺次).
     if (context.is_train) {
         said.words = digit_words(whole, true);
-        said.is_dialled = context.is_flight;
+        said.is_dialled = context.is_flight || context.is_unlettered_train;
         return said;
     }
     if (is_chat_number(whole, context, counts) || is_named_by_context(whole, context, counts)) {
@@ -190,9 +207,11 @@ std::optional<SaidNumber> say_as_name(const std::string& whole, const NumberCont
         said.is_dialled = true;
         return said;
     }
-    if (whole.size() >= 3 &&
-        ((names_by_digits(context.next) && !context.is_house_number && !context.is_stake_metres) ||
-         context.is_named || (context.names_place && !counts))) {
+    // After 第 a number before 号 counts its place (国务院令第752号 第七百五十二号; session 35: 七五二, a
+    // room's).
+    if (whole.size() >= 3 && ((names_by_digits(context.next) && !context.is_house_number &&
+                               !context.is_stake_metres && !context.is_ordinal) ||
+                              context.is_named || (context.names_place && !counts))) {
         said.words = digit_words(whole);
         return said;
     }
@@ -254,7 +273,9 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
     NumberContext context;
     std::size_t previous = start;
     while (previous > 0 && text[previous - 1].value == ' ') --previous;
-    context.is_ordinal = (previous > 0 && text[previous - 1].value == U'第') || adds_to_ordinal(text, start);
+    context.is_ordinal = (previous > 0 && text[previous - 1].value == U'第') ||
+                         adds_to_ordinal(text, start) || lists_after_ordinal(text, start) ||
+                         numbers_labelled_item(text, start);
     context.is_phone = follows_phone_word(text, start) || precedes_hotline_word(text, number.end);
 
     context.is_named = follows_name_word(text, start);
@@ -294,9 +315,13 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
             is_one_of(text[start - 1].value, U"铀鈾钚鈽铯銫锶鍶钴鈷碘镭鐳氡钍釷镅鋂钋釙")))));
     context.is_flight = sign_words.empty() && currency == nullptr && !number.has_point &&
                         !number.has_separators && is_flight_number(text, start, number.end);
-    context.is_train =
-        context.is_flight || (context.is_model && !number.has_point && !number.has_separators &&
-                              is_train_number(text, start, number.end));
+    // After 第 such a number counts, as dev8 says Taiwan's high-speed 第803車次 (第八百零三車次).
+    context.is_unlettered_train = sign_words.empty() && currency == nullptr && !number.has_point &&
+                                  !number.has_separators && !context.is_ordinal &&
+                                  is_unlettered_train_number(text, start, number.end);
+    context.is_train = context.is_flight || context.is_unlettered_train ||
+                       (context.is_model && !number.has_point && !number.has_separators &&
+                        is_train_number(text, start, number.end));
     context.has_currency = currency != nullptr;
     context.names_place = names_room_or_building(text, number.end) ||
                           (sign_words.empty() && currency == nullptr && !context.is_ordinal &&

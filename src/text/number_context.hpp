@@ -30,6 +30,7 @@ struct NumberContext {
     bool is_model = false;  // right after the capitals of a model's name (C919, A380) or a maker (波音737)
     bool is_train = false;  // a train's or a flight's number (G1234次, CA1831航班)
     bool is_flight = false;     // a flight's number (CA1831航班, 3U8633航班)
+    bool is_unlettered_train = false;  // a train's number without a class's capital (自強號123次)
     bool has_currency = false;  // a currency sign before it (¥666)
     bool names_place = false;  // a room's or building's name after it (302会议室), a city's before (台北101)
     bool names_day = false;      // a day named by its date's digits (618大促, 今天是520)

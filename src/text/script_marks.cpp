@@ -187,6 +187,13 @@ bool names_person(std::string_view name) {
                        "播", "导", "導", "警", "医", "醫", "兵", "将", "將", "帅", "帥", "父", "母", "嫂",
                        "夫", "妻", "女", "男", "孩", "娃", "仔", "匠", "白", "音"}))
         return true;
+    // A word whose head names a part of a lesson or a text (小结 总结, 金句, 任务, 小测, 小知识, 小练习,
+    // 方案, 小贴士) is a heading, though it opens as a name does (小 of 小明; 金 任 方 are surnames; session
+    // 35: 小结： among 老师： and 学生： was a speaker's and left out). No common given name ends so; a verb
+    // of answering or commenting (小明答：) is left to the turn it opens.
+    if (ends_with_any(
+            name, {"结", "結", "句", "务", "務", "测", "測", "识", "識", "习", "習", "案", "贴士", "貼士"}))
+        return false;
     const auto characters = decode_utf8(name, "<label>");
     constexpr std::size_t kShortestName = 2;
     constexpr std::size_t kLongestName = 3;

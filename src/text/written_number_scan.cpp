@@ -143,7 +143,9 @@ bool takes_liang(char32_t c) {
         U"兆"
         // A toll's dead and injured, counted as a record's wins are (2死5伤 两死五伤, 1死2傷 一死兩傷;
         // session 29: 二死, 二伤).
-        U"死伤傷");
+        U"死伤傷"
+        // A tablet as Taiwan's drug labels count it (每次2錠 兩錠, as 2片 两片; session 35: 二錠).
+        U"锭錠");
 }
 
 std::string text_before(const std::vector<CodePoint>& text, std::size_t start, bool clause_only) {

@@ -140,6 +140,30 @@ TEST_SUITE("stage directions and speaker labels") {
         CHECK(text.find("老师") == std::string::npos);
     }
 
+    TEST_CASE("a heading that opens as a name does is said where its head names a part of a lesson") {
+        // Failed on main f33f325 (session 36, session 35's leftover): 小结, 金句, 任务 and 小贴士 open with
+        // 小 or a surname and were taken for names.
+        const auto timeline = read_transcript(
+            "老师：今天学分数。\n"
+            "学生：好的。\n"
+            "小结：分母不能为零。\n"
+            "金句：熟能生巧。\n"
+            "任务：做五道题。\n"
+            "小贴士：先约分。\n"
+            "老师：明白了吗？\n"
+            "学生：明白了。\n"
+            "小红：我也明白了。\n"
+            "老王：我也是。");
+        const auto text = said(timeline);
+        for (const std::string heading : {"小结", "金句", "任务", "小贴士"}) {
+            CAPTURE(heading);
+            CHECK(text.find(heading) != std::string::npos);
+        }
+        // A name's one line is still a label.
+        CHECK(text.find("小红") == std::string::npos);
+        CHECK(text.find("老王") == std::string::npos);
+    }
+
     TEST_CASE("a heading before a formula, a question's kind and an example's number are no speakers") {
         // Failed on main 8eff8bb (session 34, dev31's lines as one passage): each heading was a label.
         const auto timeline = read_transcript(
