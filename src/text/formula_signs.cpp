@@ -283,11 +283,14 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
         case 0x2212:
             if (right == 0x221E) return "负";
             return between_terms && clause_has_relation(text, i) ? "减" : "";
-        // A * before ST marks a share at risk of delisting (*ST康美), said 星 as market news says it.
+        // A * before ST marks a share at risk of delisting (*ST康美), said 星 as market news says it. Between
+        // a term and a number it is a times sign typed as a keyboard has it, as a drug's pack writes its
+        // strength times its count (规格：10mg*30片 十毫克乘三十片; session 35: skipped with a warning).
         case '*': {
             const bool before_st = value_at(text, after) == 'S' && value_at(text, after + 1) == 'T' &&
                                    !is_ascii_letter(value_at(text, after + 2));
-            return before_st ? "星" : "";
+            if (before_st) return "星";
+            return between_terms && right >= '0' && right <= '9' ? "乘" : "";
         }
         // × after a character too, before a number (经验值×2 经验值乘二, a game's bonus; session 14).
         case 0xD7:  // ×
