@@ -113,20 +113,30 @@ std::optional<SpokenForm> read_game_record(const std::vector<CodePoint>& text, s
     return form;
 }
 
+namespace {
+
+// Two whole numbers that fall or stay level, which no range is: a range is written from its low end up.
+bool fall_or_stay_level(const WrittenNumber& first, const WrittenNumber& second) {
+    if (first.has_point || first.has_separators || second.has_point || second.has_separators ||
+        first.whole.size() > kMostCardinalDigits || second.whole.size() > kMostCardinalDigits)
+        return false;
+    return std::stoull(first.whole) >= std::stoull(second.whole);
+}
+
+}  // namespace
+
 bool is_result_between_names(const std::vector<CodePoint>& text, std::size_t start,
                              const WrittenNumber& first, const WrittenNumber& second) {
-    if (first.has_point || first.has_separators || second.has_point || second.has_separators || start == 0)
-        return false;
+    if (start == 0 || !fall_or_stay_level(first, second)) return false;
     const auto before = text[start - 1].value;
     const auto after = value_at(text, second.end);
-    if (!is_han(before) || before == U'第' || !is_han(after) || takes_liang(after) ||
-        is_one_of(after, U"年月日号號时時点點分秒度楼樓层層室栋棟届屆期")) {
-        return false;
-    }
-    const auto first_value = first.whole.size() <= kMostCardinalDigits ? std::stoull(first.whole) : 0;
-    const auto second_value = second.whole.size() <= kMostCardinalDigits ? std::stoull(second.whole) : 1;
-    return first.whole.size() <= kMostCardinalDigits && second.whole.size() <= kMostCardinalDigits &&
-           first_value >= second_value;
+    return is_han(before) && before != U'第' && is_han(after) && !takes_liang(after) &&
+           !is_one_of(after, U"年月日号號时時点點分秒度楼樓层層室栋棟届屆期");
+}
+
+bool is_result_standing_alone(const std::vector<CodePoint>& text, std::size_t start,
+                              const WrittenNumber& first, const WrittenNumber& second) {
+    return fall_or_stay_level(first, second) && stands_alone(text, start, second.end);
 }
 
 SpokenForm join_two(const WrittenNumber& first, const std::string& sign_words, const WrittenNumber& second,

@@ -33,6 +33,12 @@ std::optional<SpokenForm> read_game_record(const std::vector<CodePoint>& text, s
 bool is_result_between_names(const std::vector<CodePoint>& text, std::size_t start,
                              const WrittenNumber& first, const WrittenNumber& second);
 
+// A score standing as a clause of its own, as a match report writes it after a goal (武磊推射破门，1-0。,
+// 终场 前扳平，1-1。): two whole numbers that fall or stay level, between clause marks (session 35: a range,
+// 一到零).
+bool is_result_standing_alone(const std::vector<CodePoint>& text, std::size_t start,
+                              const WrittenNumber& first, const WrittenNumber& second);
+
 // Two numbers said each alone with a word between, the first after its sign: a score (3:1, and 2-1
 // where the clause speaks of a match: 2-1领先), a product (7×24 七乘二十四).
 SpokenForm join_two(const WrittenNumber& first, const std::string& sign_words, const WrittenNumber& second,

@@ -80,7 +80,8 @@ std::optional<SpokenForm> read_unsigned_form(const std::vector<CodePoint>& text,
         // A measure word after the pair makes it a range (3-5天后获胜), whatever the clause says.
         const bool may_be_listed_score = !takes_liang(value_at(text, second.end));
         if (is_score(text, start, second.end, may_be_listed_score) ||
-            is_result_between_names(text, start, number, second))
+            is_result_between_names(text, start, number, second) ||
+            is_result_standing_alone(text, start, number, second))
             return join_two(number, "", second, "比", {});
         if (relation_follows(text, second.end)) return join_two(number, "", second, "减", {});  // 5-3=2
     }

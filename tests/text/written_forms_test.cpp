@@ -2696,8 +2696,8 @@ TEST_SUITE("written forms") {
         "and timetables read them") {
         // The rows before the limits failed on main f33f325 (session 36, dev38 and session 35's leftovers): a
         // clock time and 一百二十三, 一二分之一, 七点三十五, 二錠, 两项, 七五二, 两 before 列 and 所,
-        // 兩千一百零一次, 四千二百三十五, 一千四百六十一, an de lao de, * skipped (自強號123次 was read
-        // after 號 digit by digit already).
+        // 兩千一百零一次, 四千二百三十五, 一千四百六十一, an de lao de, * skipped, 一到零 and 一到一
+        // (自強號123次 was read after 號 digit by digit already).
         check_cases({
             {"以1:27.123的圈速拿下杆位", "以一分二十七秒一二三的圈速拿下杆位"},
             {"面粉1½杯", "面粉一又二分之一杯"},
@@ -2715,8 +2715,10 @@ TEST_SUITE("written forms") {
             {"普快1461次", "普快幺四六幺次"},
             {"Android 15", "an zhuo十五"},
             {"规格：10mg*30片", "规格十毫克乘三十片"},
+            {"武磊推射破门，1-0。", "武磊推射破门一比零"},
+            {"终场前扳平，1-1。", "终场前扳平一比一"},
             // The limits: a fraction alone, a software's version, a count of times, a room's number, a watch
-            // counted, a count of rides, a share at risk's star.
+            // counted, a count of rides, a share at risk's star, a rising pair alone.
             {"牛奶½杯", "牛奶二分之一杯"},
             {"Python 3.12", "pai san三点十二"},
             {"第2次", "第二次"},
@@ -2724,6 +2726,7 @@ TEST_SUITE("written forms") {
             {"手表2块", "手表两块"},
             {"坐了100次火车", "坐了一百次火车"},
             {"*ST康美", "星 ai si ti康美"},
+            {"休息，3-5。", "休息三到五"},
         });
     }
 
