@@ -21,11 +21,13 @@ namespace talkface::detail {
 // Where the line of `syllables` syllables lies inside `speech` (the recording's speech as
 // measure_loudness finds it in `loudness`): from the foot of the rise to the foot of the fall of
 // the run of frames whose activity stands most above kUnspokenSpeechBelowDb under the speech's
-// loud level in sum. An edge of `speech` stays unless it is the recording's (no pause beyond it:
-// sound that never stopped, as other voices' does), and only where `speech` is slower than its
-// syllables could be said and the sound left out there is at least a pause long, never comes
-// within kNearLoudVoiceDb of the loud level, and rises and falls by that much as a voice's
-// syllables do (a gain's lift only climbs toward the line). Where a phone's gain lifted the voices
+// loud level in sum, and of every frame within kNearLoudVoiceDb of that level (the line's own
+// syllables a dip parts from the run; the other voices never come so near). An edge of `speech`
+// stays unless it is the recording's (no pause beyond it: sound that never stopped, as other
+// voices' does), and only where `speech` is slower than its syllables could be said, the sound
+// left out there is at least a pause long and rises and falls by kNearLoudVoiceDb as a voice's
+// syllables do (a gain's lift only climbs toward the line), and the line keeps at least as many
+// voiced peaks (count_nuclei) as it has syllables. Where a phone's gain lifted the voices
 // before the line to its activity, the start is found on the whole band of `track` (kEnergyDb),
 // which the line's voicing keeps over them (bench/README.md, session 34).
 FrameSpan line_among_quieter_voices(const FeatureTrack& track, const LoudnessProfile& loudness,

@@ -2,7 +2,8 @@
 // in the room): the other voice fills the recording from its start with no pause before the line,
 // so the line's syllable was placed at the recording's start; another voice after it, to the
 // recording's end, drew its last syllable out to the end. The line is the loud voice; the quieter
-// one before or after it, which never comes near its level, is no syllable's.
+// one before or after it, which never comes near its level, is no syllable's, and a syllable of the
+// line's own that comes near it is the line's, wherever a dip parts it from the rest.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -110,6 +111,33 @@ TEST_SUITE("speech") {
         test::add_headset_hiss(samples);
         const Timeline aligned = SpeechAligner().align(AudioView{samples.data(), samples.size(), 1, kRateHz},
                                                        load_transcript(test::clip_path("short_line.txt")));
+        REQUIRE(aligned.syllables.size() == 2);
+        CHECK(std::abs(aligned.syllables[1].end_s - line_end_s) < 0.05);
+    }
+
+    TEST_CASE("a short line whose quieter syllable a dip parts ends where the line does") {
+        std::vector<float> line = read_clip("bare_line.flac");
+        line.assign(line.begin() + static_cast<std::ptrdiff_t>(first_sound(line)),
+                    line.begin() + static_cast<std::ptrdiff_t>(end_of_sound(line)));
+        const std::vector<float> other = read_clip("comma_pause.flac");
+        constexpr int kRateHz = 16000;
+        // 0.3 s of hiss; 好, 0.06 s of hiss, 好 4 dB quieter (the line's own syllable, within 6 dB of
+        // its loud level, which the dip parts from the loud run); 0.08 s of hiss; the other voice's
+        // first 0.5 s of speech, 14 dB under the line's peak, to the recording's last sample.
+        std::vector<float> samples(static_cast<std::size_t>(0.3 * kRateHz), 0.0f);
+        samples.insert(samples.end(), line.begin(), line.end());
+        samples.resize(samples.size() + static_cast<std::size_t>(0.06 * kRateHz), 0.0f);
+        const float quieter = std::pow(10.0f, -4.0f / 20.0f);
+        for (const float v : line) samples.push_back(quieter * v);
+        const double line_end_s = static_cast<double>(samples.size()) / kRateHz;
+        samples.resize(samples.size() + static_cast<std::size_t>(0.08 * kRateHz), 0.0f);
+        const float gain = std::pow(10.0f, -14.0f / 20.0f) * peak_of(line) / peak_of(other);
+        const std::size_t sounding = first_sound(other);
+        for (std::size_t i = sounding; i < std::min(other.size(), sounding + kRateHz / 2); ++i)
+            samples.push_back(gain * other[i]);
+        test::add_headset_hiss(samples);
+        const Timeline aligned = SpeechAligner().align(AudioView{samples.data(), samples.size(), 1, kRateHz},
+                                                       read_transcript("好好。"));
         REQUIRE(aligned.syllables.size() == 2);
         CHECK(std::abs(aligned.syllables[1].end_s - line_end_s) < 0.05);
     }
