@@ -79,9 +79,7 @@ FrameSpan line_among_quieter_voices(const FeatureTrack& track, const LoudnessPro
     // stretch left out is the line's own weak edge, and so is sound from an edge nearer than a pause.
     const bool from_start = speech.first_frame < kMinPauseFrames;
     const bool to_end = speech.end_frame + kMinPauseFrames > activity.size();
-    if (!(from_start || to_end) ||
-        static_cast<double>(speech.length()) <= frames_for(syllables, kSlowestSyllablesPerSecond))
-        return speech;
+    if (!(from_start || to_end)) return speech;
     const auto at = [&](std::size_t frame) { return activity.begin() + static_cast<std::ptrdiff_t>(frame); };
     const float loud_db =
         percentile_of(std::vector<float>(at(speech.first_frame), at(speech.end_frame)), kSpeechPercentile);
@@ -143,7 +141,15 @@ FrameSpan line_among_quieter_voices(const FeatureTrack& track, const LoudnessPro
     const bool holds_its_syllables =
         static_cast<double>(line.length()) >= frames_for(syllables, kFastestSyllablesPerSecond) &&
         count_nuclei(track, loudness, line) >= syllables;
-    return holds_its_syllables ? line : speech;
+    // Speech no slower than its syllables could be said leaves the other voices little of it: the
+    // line is cut from it only where both its edges are found, as one edge moved alone squeezes the
+    // syllables onto the voices left at the other (short_kinds_bench's held-out babble 大家準備好了嗎,
+    // its end alone found: its syllables 100-300 ms early; bench/README.md, session 36).
+    const bool is_slower_than_text =
+        static_cast<double>(speech.length()) > frames_for(syllables, kSlowestSyllablesPerSecond);
+    const bool is_found_at_both_edges =
+        line.first_frame != speech.first_frame && line.end_frame != speech.end_frame;
+    return holds_its_syllables && (is_slower_than_text || is_found_at_both_edges) ? line : speech;
 }
 
 std::optional<SentenceCut> line_cut_among_voices(const FeatureTrack& track, const LoudnessProfile& loudness,

@@ -24,10 +24,10 @@ namespace talkface::detail {
 // loud level in sum, and of every frame within kNearLoudVoiceDb of that level (the line's own
 // syllables a dip parts from the run; the other voices never come so near). An edge of `speech`
 // stays unless it is the recording's (no pause beyond it: sound that never stopped, as other
-// voices' does), and only where `speech` is slower than its syllables could be said, the sound
-// left out there is at least a pause long and rises and falls by kNearLoudVoiceDb as a voice's
-// syllables do (a gain's lift only climbs toward the line), and the line keeps at least as many
-// voiced peaks (count_nuclei) as it has syllables. Where a phone's gain lifted the voices
+// voices' does), and only where the sound left out there is at least a pause long and rises and
+// falls by kNearLoudVoiceDb as a voice's syllables do (a gain's lift only climbs toward the line),
+// the line keeps at least as many voiced peaks (count_nuclei) as it has syllables, and `speech` is
+// slower than its syllables could be said or both its edges move. Where a phone's gain lifted the voices
 // before the line to its activity, the start is found on the whole band of `track` (kEnergyDb),
 // which the line's voicing keeps over them (bench/README.md, session 34).
 FrameSpan line_among_quieter_voices(const FeatureTrack& track, const LoudnessProfile& loudness,
