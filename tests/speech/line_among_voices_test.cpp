@@ -46,6 +46,13 @@ std::size_t end_of_sound(const std::vector<float>& samples) {
         samples.begin());
 }
 
+// The clip `name` from where it first rises above 5% of its peak to where it last does.
+std::vector<float> read_sound_of(const char* name) {
+    const std::vector<float> clip = read_clip(name);
+    return {clip.begin() + static_cast<std::ptrdiff_t>(first_sound(clip)),
+            clip.begin() + static_cast<std::ptrdiff_t>(end_of_sound(clip))};
+}
+
 // A phone's gain control over `samples` (16 kHz): the level followed with a 5 ms attack and a 0.8 s
 // release, and the gain lifting what is quieter than the loudest level by 0.55 dB a dB, at most
 // `most_db` (sox compand's shape, as make_phone_kinds.py's agc): other voices before a line stand
@@ -116,9 +123,7 @@ TEST_SUITE("speech") {
     }
 
     TEST_CASE("a short line whose quieter syllable a dip parts ends where the line does") {
-        std::vector<float> line = read_clip("bare_line.flac");
-        line.assign(line.begin() + static_cast<std::ptrdiff_t>(first_sound(line)),
-                    line.begin() + static_cast<std::ptrdiff_t>(end_of_sound(line)));
+        const std::vector<float> line = read_sound_of("bare_line.flac");
         const std::vector<float> other = read_clip("comma_pause.flac");
         constexpr int kRateHz = 16000;
         // 0.3 s of hiss; 好, 0.06 s of hiss, 好 4 dB quieter (the line's own syllable, within 6 dB of
@@ -143,9 +148,7 @@ TEST_SUITE("speech") {
     }
 
     TEST_CASE("a short line after other voices a phone's gain lifted starts and ends where the line does") {
-        std::vector<float> line = read_clip("bare_line.flac");
-        line.assign(line.begin() + static_cast<std::ptrdiff_t>(first_sound(line)),
-                    line.begin() + static_cast<std::ptrdiff_t>(end_of_sound(line)));
+        const std::vector<float> line = read_sound_of("bare_line.flac");
         const std::vector<float> other = read_clip("comma_pause.flac");
         constexpr int kRateHz = 16000;
         // The other voice 18 dB under the line's peak from the recording's first sample to its
