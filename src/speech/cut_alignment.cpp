@@ -51,11 +51,12 @@ std::vector<std::size_t> poorly_fitting(const std::vector<SentenceMetrics>& metr
 
 }  // namespace
 
-AlignedTimelines align_cut(const FeatureTrack& track, const LoudnessProfile& loudness,
-                           const Timeline& transcript, const SentenceCut& cut, ProgressReporter& progress,
-                           bool is_checked, bool is_lenient) {
+AlignedTimelines align_cut(const FeatureTrack& track, const FeatureTrack& heard,
+                           const LoudnessProfile& loudness, const Timeline& transcript,
+                           const SentenceCut& cut, ProgressReporter& progress, bool is_checked,
+                           bool is_lenient) {
     const bool has_blocks = std::find(cut.runs_on.begin(), cut.runs_on.end(), true) != cut.runs_on.end();
-    if (!has_blocks && is_checked) check_sentence_lengths(cut.spans, track, loudness, transcript);
+    if (!has_blocks && is_checked) check_sentence_lengths(cut.spans, heard, loudness, transcript);
     CutAlignment aligned =
         align_chains(track, loudness, transcript, cut, progress, is_checked, is_lenient, false, false);
     bool is_kept_to_marks = false;
@@ -85,7 +86,7 @@ AlignedTimelines align_cut(const FeatureTrack& track, const LoudnessProfile& lou
     const std::vector<SentenceMetrics>& metrics = aligned.metrics;
     Timeline& result = aligned.result;
     if (is_checked) {
-        if (has_blocks) check_sentence_lengths(spans, track, loudness, transcript);
+        if (has_blocks) check_sentence_lengths(spans, heard, loudness, transcript);
         try {
             check_text_fit(metrics, spans, transcript);
         } catch (const AlignmentError&) {
@@ -101,7 +102,7 @@ AlignedTimelines align_cut(const FeatureTrack& track, const LoudnessProfile& lou
         check_own_fit(metrics, spans, transcript);
         check_syllable_lengths(metrics, spans, transcript);
         check_fit(metrics, spans, transcript);
-        check_missing_text(result, track, loudness, result.warnings);
+        check_missing_text(result, heard, loudness, result.warnings);
     }
     set_sentence_times(spans, result);
     AlignedTimelines timelines{std::move(result), std::nullopt};
@@ -121,11 +122,12 @@ AlignedTimelines align_cut(const FeatureTrack& track, const LoudnessProfile& lou
     return timelines;
 }
 
-AlignedTimelines align_confirmed(const FeatureTrack& track, const LoudnessProfile& loudness,
-                                 const Timeline& transcript, const SentenceCut& cut,
-                                 const std::vector<bool>& is_spoken, ProgressReporter& progress,
-                                 bool is_checked, bool is_lenient) {
-    AlignedTimelines aligned = align_cut(track, loudness, transcript, cut, progress, is_checked, is_lenient);
+AlignedTimelines align_confirmed(const FeatureTrack& track, const FeatureTrack& heard,
+                                 const LoudnessProfile& loudness, const Timeline& transcript,
+                                 const SentenceCut& cut, const std::vector<bool>& is_spoken,
+                                 ProgressReporter& progress, bool is_checked, bool is_lenient) {
+    AlignedTimelines aligned =
+        align_cut(track, heard, loudness, transcript, cut, progress, is_checked, is_lenient);
     SentenceCut confirmed = cut;
     for (const auto& [k, next] : spoken_neighbours(is_spoken)) {
         // Too few pauses: the cutter chose none for this end, and the chain is all there is.
@@ -136,7 +138,7 @@ AlignedTimelines align_confirmed(const FeatureTrack& track, const LoudnessProfil
             confirmed.runs_on[k] = false;
     }
     if (confirmed.runs_on == cut.runs_on) return aligned;
-    return align_cut(track, loudness, transcript, confirmed, progress, is_checked, is_lenient);
+    return align_cut(track, heard, loudness, transcript, confirmed, progress, is_checked, is_lenient);
 }
 
 }  // namespace talkface::detail

@@ -45,19 +45,26 @@ struct AlignedTimelines {
 // alignment_checks.hpp). Skippable everywhere and always, such closures lost held-out passages
 // that are one slip from another place (sessions 11-13); here only an alignment the check would
 // refuse is made again, and no other passage of any corpus moves.
-AlignedTimelines align_cut(const FeatureTrack& track, const LoudnessProfile& loudness,
-                           const Timeline& transcript, const SentenceCut& cut, ProgressReporter& progress,
-                           bool is_checked, bool is_lenient);
+//
+// `heard` is the recording as heard, where `track` is what the syllables are placed and judged on:
+// under a music bed (bed_removal.hpp) the two differ, and the voiced peaks the length checks count
+// (count_nuclei) are read on `heard`, as they are on every other recording: the bed taken out by
+// the least each band holds nearby leaves the low band peakier than any voice's (bench/README.md,
+// sessions 33 and 34).
+AlignedTimelines align_cut(const FeatureTrack& track, const FeatureTrack& heard,
+                           const LoudnessProfile& loudness, const Timeline& transcript,
+                           const SentenceCut& cut, ProgressReporter& progress, bool is_checked,
+                           bool is_lenient);
 
 // align_cut, where a sentence end that ran on keeps its chain only if the chain's syllables move
 // it out of the pause the cutter chose and put that pause where the text has one (a comma's): a
 // sentence end they leave in its pause confirms the cut, and one they move off a pause the text
 // does not account for is a wrong text's doing. Then the sentences are aligned apart again, as
 // the checks know them best.
-AlignedTimelines align_confirmed(const FeatureTrack& track, const LoudnessProfile& loudness,
-                                 const Timeline& transcript, const SentenceCut& cut,
-                                 const std::vector<bool>& is_spoken, ProgressReporter& progress,
-                                 bool is_checked, bool is_lenient);
+AlignedTimelines align_confirmed(const FeatureTrack& track, const FeatureTrack& heard,
+                                 const LoudnessProfile& loudness, const Timeline& transcript,
+                                 const SentenceCut& cut, const std::vector<bool>& is_spoken,
+                                 ProgressReporter& progress, bool is_checked, bool is_lenient);
 
 }  // namespace talkface::detail
 

@@ -77,7 +77,7 @@ constexpr double kMelHighHz = 7600.0;
 double mel_edge_hz(std::size_t i);
 
 // The DCT's basis over the mel bands: cepstrum c is the sum over bands m of this times the band's log
-// level (frame_features' cepstra; late_reverb.cpp goes back to the bands with it).
+// level (frame_features' cepstra; mel_cepstrum.hpp goes back to the bands with it).
 double mel_cepstrum_cosine(std::size_t c, std::size_t m);
 
 // Columns of a feature frame.

@@ -6,6 +6,7 @@
 
 #include "common/order_statistics.hpp"
 #include "speech/level_line.hpp"
+#include "speech/mel_cepstrum.hpp"
 
 namespace talkface::detail {
 
@@ -20,35 +21,6 @@ constexpr std::size_t kFollowedBands = kMelFilters + kBandColumns.size();
 // the tails by it, and as one decay is read for every band (without_late_ringing follows each band
 // at it); the tails' lines are fitted to it and the voice before a tail is weighed on it.
 constexpr int kTailLevelColumn = kEnergyDb;
-
-// The DCT of frame_features' cepstra and its inverse over the mel bands, as far as the cepstra
-// keep it: the bands read from a frame's cepstra give those cepstra back.
-class MelCepstrum {
-public:
-    MelCepstrum() {
-        for (std::size_t c = 0; c < kCepstrumCount; ++c)
-            for (std::size_t m = 0; m < kMelFilters; ++m) cosine_[c][m] = mel_cepstrum_cosine(c, m);
-    }
-
-    void to_bands(const float* cepstrum, std::array<double, kMelFilters>& log_mel) const {
-        for (std::size_t m = 0; m < kMelFilters; ++m) {
-            double sum = cepstrum[0] / 2.0;
-            for (std::size_t c = 1; c < kCepstrumCount; ++c) sum += cepstrum[c] * cosine_[c][m];
-            log_mel[m] = 2.0 * sum / kMelFilters;
-        }
-    }
-
-    void to_cepstrum(const std::array<double, kMelFilters>& log_mel, float* cepstrum) const {
-        for (std::size_t c = 0; c < kCepstrumCount; ++c) {
-            double sum = 0.0;
-            for (std::size_t m = 0; m < kMelFilters; ++m) sum += cosine_[c][m] * log_mel[m];
-            cepstrum[c] = static_cast<float>(sum);
-        }
-    }
-
-private:
-    std::array<std::array<double, kMelFilters>, kCepstrumCount> cosine_{};
-};
 
 }  // namespace
 

@@ -40,6 +40,7 @@ std::optional<VoiceUnderMusic> voice_after_music(const FeatureTrack& track, cons
     };
     VoiceUnderMusic bed;
     bed.entry = entry;
+    bed.stretch = stretch;
     for (std::size_t t = entry; t < end;) {
         if (!is_music(t)) {
             ++t;

@@ -20,6 +20,7 @@ struct VoiceUnderMusic {
     std::size_t entry = 0;          // the frame where the voice comes in
     std::size_t leading = 0;        // the pauses before it, which the music takes in
     std::vector<FrameSpan> pauses;  // the pauses after it that the music fills (before pause `leading`)
+    FrameSpan stretch;  // the stretch between pauses that holds the music, then the voice under it
 };
 
 // What follows the voice's entry is a voice where it lasts kVoiceUnderMusicMinFrames or more (a

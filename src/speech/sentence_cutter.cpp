@@ -378,6 +378,8 @@ void find_speech(const FeatureTrack& track, const std::vector<float>& share, con
                  std::vector<float> raw, LoudnessProfile& profile) {
     const std::size_t frames = track.frame_count;
     profile.unvoiced_edges.clear();
+    profile.music_before_voice = {};
+    profile.voice_under_music = {};
     take_down_tones_and_music(track, share, tone, raw, profile);
     std::size_t first_speech = 0;
     while (first_speech < frames && !is_speech_frame(profile, first_speech)) ++first_speech;
@@ -412,6 +414,8 @@ void find_speech(const FeatureTrack& track, const std::vector<float>& share, con
                                    sound, edge_music, kMinPauseFrames)) {
         first_speech = bed->entry;
         leading = bed->leading;
+        profile.music_before_voice = {bed->stretch.first_frame, bed->entry};
+        profile.voice_under_music = {bed->entry, bed->stretch.end_frame};
         pauses.insert(pauses.begin() + static_cast<std::ptrdiff_t>(leading), bed->pauses.begin(),
                       bed->pauses.end());
         trailing += bed->pauses.size();

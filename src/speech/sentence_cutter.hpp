@@ -63,6 +63,11 @@ struct LoudnessProfile {
     // the quiet after it, and the noise a gain lifted before the first words, in
     // loudness_after_lifted_lead_in's profile. In order.
     std::vector<FrameSpan> unvoiced_edges;
+    // Music that plays on under the first words (music_bed.hpp): alone over `music_before_voice`,
+    // then under the voice, fading or not, up to the end of `voice_under_music`. Both empty where
+    // there is none.
+    FrameSpan music_before_voice;
+    FrameSpan voice_under_music;
     std::size_t speech_first_frame = 0;     // first and one past the last speech frame
     std::size_t speech_end_frame = 0;
     // No pause anywhere, not even at its edges (a line cut to its sound): its speech runs from its

@@ -15,6 +15,7 @@
 #include "audio/joined_copy.hpp"
 #include "common/number_format.hpp"
 #include "speech/alignment_progress.hpp"
+#include "speech/bed_removal.hpp"
 #include "speech/chain_measures.hpp"
 #include "speech/cut_alignment.hpp"
 #include "speech/dropout_concealment.hpp"
@@ -71,12 +72,20 @@ Timeline align_track(const FeatureTrack& track, const LoudnessProfile& loudness,
     const SentenceCut cut = is_given ? given_sentence_cut(track, loudness, transcript, given_spans)
                                      : cut_sentences(track, loudness, transcript, options);
     progress.report(kReadingShare + kCuttingShare, "sentences");
+    // Music played on under the first words is no sound of the voice's: the syllables are placed and
+    // judged with it taken out (bed_removal.hpp), the cut having been found on the recording as heard
+    // and the voiced peaks counted there (align_cut).
+    const std::optional<FeatureTrack> without_bed =
+        has_music_bed(loudness) ? std::optional<FeatureTrack>(without_music_bed(track, loudness))
+                                : std::nullopt;
+    const FeatureTrack& voice = without_bed ? *without_bed : track;
     const std::vector<bool> is_spoken = spoken_sentences_of(transcript);
     const auto spoken_sentences = static_cast<std::size_t>(std::count(is_spoken.begin(), is_spoken.end(), true));
     const std::size_t stretches = loudness.pauses.size() + 1;
     AlignedTimelines result;
     try {
-        result = align_confirmed(track, loudness, transcript, cut, is_spoken, progress, is_checked, options.lenient);
+        result = align_confirmed(voice, track, loudness, transcript, cut, is_spoken, progress, is_checked,
+                                 options.lenient);
     } catch (const AlignmentError& error) {
         // Fewer stretches of speech than sentences: either sentences run together or the
         // transcript has one the audio lacks; the first is tried, and the message tells of both.
@@ -95,7 +104,8 @@ Timeline align_track(const FeatureTrack& track, const LoudnessProfile& loudness,
         SentenceCut block = cut;
         std::fill(block.runs_on.begin(), block.runs_on.end(), true);
         try {
-            result = align_cut(track, loudness, transcript, block, progress, is_checked, options.lenient);
+            result =
+                align_cut(voice, track, loudness, transcript, block, progress, is_checked, options.lenient);
         } catch (const AlignmentError&) {
             throw error;
         }
@@ -116,7 +126,7 @@ Timeline align_track(const FeatureTrack& track, const LoudnessProfile& loudness,
     if (!is_given && !options.lenient && options.sentence_cut == SentenceCutMode::automatic) {
         if (const auto lifted = loudness_after_lifted_lead_in(track, loudness)) {
             try {
-                result = align_confirmed(track, *lifted, transcript,
+                result = align_confirmed(track, track, *lifted, transcript,
                                          cut_sentences(track, *lifted, transcript, options), is_spoken,
                                          progress, is_checked, options.lenient);
             } catch (const AlignmentError&) {
@@ -124,7 +134,8 @@ Timeline align_track(const FeatureTrack& track, const LoudnessProfile& loudness,
             }
         } else if (const auto line = line_cut_among_voices(track, loudness, transcript, cut)) {
             try {
-                result = align_cut(track, loudness, transcript, *line, progress, is_checked, options.lenient);
+                result = align_cut(track, track, loudness, transcript, *line, progress, is_checked,
+                                   options.lenient);
             } catch (const AlignmentError&) {
                 // Refused on the line alone: the placement the checks passed stands.
             }
