@@ -15,8 +15,9 @@ constexpr std::size_t kBootstrapFrames = 12000;
 
 }  // namespace
 
-int alignment_passes(bool is_reestimated_dry) {
-    return 1 + kReestimationRounds * (is_reestimated_dry ? 2 : 1);
+int alignment_passes(bool is_reestimated_dry, bool is_reestimated_clear_of_bed) {
+    return 1 +
+           kReestimationRounds * (1 + (is_reestimated_dry ? 1 : 0) + (is_reestimated_clear_of_bed ? 1 : 0));
 }
 
 std::vector<StateSegment> align_chain(const SentenceChain& chain, const EmissionScores& scores,
@@ -36,7 +37,8 @@ std::vector<StateSegment> align_chain(const SentenceChain& chain, const Emission
 
 Reestimation reestimate(const FeatureTrack& track, const LoudnessProfile& loudness,
                         const Timeline& transcript, const std::vector<SentenceChain>& chains,
-                        ProgressReporter& progress, int first_pass, int passes) {
+                        ProgressReporter& progress, int first_pass, int passes,
+                        const std::vector<bool>& is_learned_from) {
     Reestimation learned;
     std::vector<float> observations;
     EmissionScores scores;
@@ -59,11 +61,12 @@ Reestimation reestimate(const FeatureTrack& track, const LoudnessProfile& loudne
             // first minutes teach the models every sound many times over.
             const auto path = align_chain(chain, scores, workspace,
                                           pass == 0 ? kBootstrapFrames : scores.frame_count, transcript);
-            estimator.add(observations, chain.states, path);
+            const bool is_learned = is_learned_from.empty() || is_learned_from[w];
+            if (is_learned) estimator.add(observations, chain.states, path);
             if (is_last_estimate) {
                 const auto halves = split_in_halves(chain, path);
                 learned.halves[w].assign(halves.size(), ModelEstimator());
-                for (std::size_t h = 0; h < halves.size(); ++h)
+                for (std::size_t h = 0; h < halves.size() && is_learned; ++h)
                     learned.halves[w][h].add(observations, chain.states, halves[h]);
                 learned.last_paths.push_back(path);
                 add_closure_run_on(chain, path, scores, closure_run_on);

@@ -21,9 +21,10 @@ namespace talkface::detail {
 inline constexpr int kReestimationRounds = 3;
 
 // The passes over the chains that share the bar's alignment part: kReestimationRounds of
-// estimation, as many again in a room on its features without the ringing (late_reverb.hpp), which
-// take as long, and the final one.
-int alignment_passes(bool is_reestimated_dry);
+// estimation, as many again in a room on its features without the ringing (late_reverb.hpp) and
+// as many again for the sentences clear of a music bed (bed_free_models.hpp), which take as long,
+// and the final one.
+int alignment_passes(bool is_reestimated_dry, bool is_reestimated_clear_of_bed);
 
 // A chain's best path on `scores`; with `marginals`, over all frames, with its EntryMaxMarginals.
 // \throws talkface::AlignmentError if its syllables do not fit in its stretch of speech.
@@ -46,9 +47,12 @@ struct Reestimation {
 
 // SPEC "Alignment": a first pass on the hand-set models, then kReestimationRounds rounds of
 // models re-estimated on the paths of every chain, reported as passes `first_pass` on of `passes`.
+// Where `is_learned_from` is given, every chain is aligned but the models learn from those it
+// marks alone (and the leave-one-out halves of the others are empty).
 Reestimation reestimate(const FeatureTrack& track, const LoudnessProfile& loudness,
                         const Timeline& transcript, const std::vector<SentenceChain>& chains,
-                        ProgressReporter& progress, int first_pass, int passes);
+                        ProgressReporter& progress, int first_pass, int passes,
+                        const std::vector<bool>& is_learned_from = {});
 
 }  // namespace talkface::detail
 

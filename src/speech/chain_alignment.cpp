@@ -5,6 +5,7 @@
 
 #include "speech/alignment_confidence.hpp"
 #include "speech/alignment_passes.hpp"
+#include "speech/bed_free_models.hpp"
 #include "speech/chain_measures.hpp"
 #include "speech/hsmm.hpp"
 #include "speech/lenient_placement.hpp"
@@ -138,13 +139,20 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
     const bool in_room = !is_lenient && is_room(chains);
     const std::optional<RoomRinging> room_ringing =
         in_room ? measure_room_ringing(track, chains) : std::nullopt;
-    const int passes = alignment_passes(room_ringing.has_value());
+    const std::vector<bool> clear_of_bed =
+        is_lenient ? std::vector<bool>{} : chains_clear_of_bed(chains, loudness);
+    const int passes = alignment_passes(room_ringing.has_value(), !clear_of_bed.empty());
     const Reestimation learned = reestimate(track, loudness, transcript, chains, progress, 0, passes);
     aligned.result = transcript;
     aligned.result.duration_s = track.duration_s;
     if (in_room) aligned.room_result = aligned.result;
     std::optional<DryRoom> dry =
         dry_room(track, loudness, transcript, chains, room_ringing, progress, passes);
+    const std::optional<Reestimation> learned_clear_of_bed =
+        clear_of_bed.empty()
+            ? std::nullopt
+            : std::optional<Reestimation>(reestimate(track, loudness, transcript, chains, progress,
+                                                     passes - 1 - kReestimationRounds, passes, clear_of_bed));
     aligned.metrics.assign(aligned.spans.size(), SentenceMetrics());
     FinalPass pass(transcript.syllables.size(), aligned.room_result.has_value());
     // The checks' paths of a room's chains, for the tones' witness.
@@ -160,8 +168,9 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
             place_lenient_chain(chains[w], w, lenient_evidence[w], learned.last_paths[w], pass.workspace,
                                 transcript, track, loudness, aligned.result, pass.evidence);
         else
-            align_final_chain(chains[w], w, track, loudness, transcript, learned, dry ? &*dry : nullptr,
-                              spoken_sentences, is_checked, pass, aligned,
+            align_final_chain(chains[w], w, track, loudness, transcript,
+                              learned_clear_of_bed && clear_of_bed[w] ? *learned_clear_of_bed : learned,
+                              dry ? &*dry : nullptr, spoken_sentences, is_checked, pass, aligned,
                               is_tone_witnessed ? &checked_paths[w] : nullptr);
         report_pass(progress, passes - 1, passes, w, chains.size());
     }
