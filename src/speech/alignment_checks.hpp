@@ -73,7 +73,9 @@ struct SentenceMetrics {
     std::size_t unspoken_tail_frames = 0;
     // How much better its text fits its speech than the same text fits the speech with its halves
     // swapped (order_margin, text_fit.hpp), per frame, on the models re-estimated on the recording:
-    // files of one or two sentences, outside a room's tail (check_held_out_fit).
+    // files of one or two sentences, outside a room's tail, and the sentences a music bed's
+    // recording judges on models learned from its sentences clear of the bed (check_held_out_fit,
+    // is_judged_by_order_margin).
     double order_margin = std::numeric_limits<double>::quiet_NaN();
     // fit_gap where the models were learned from this sentence itself: files of one or two
     // sentences (check_own_fit).

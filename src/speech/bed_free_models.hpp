@@ -7,7 +7,9 @@
 // clear of the bed are placed and judged on models learned from them alone, as they would be in
 // the same speech without a bed; those under it keep the models learned from every sentence,
 // which their own frames shaped (on the clean sentences' models alone a right text under the bed
-// fits 0.1-0.2 per frame worse, and is refused).
+// fits 0.1-0.2 per frame worse, and is refused). Learned from three or four sentences, those
+// models fit a wrong text among them as a file of one or two's do: its sentences are judged by
+// their order margin and held-out halves too (chain_measures.hpp, is_judged_by_order_margin).
 #ifndef TALKFACE_SPEECH_BED_FREE_MODELS_HPP
 #define TALKFACE_SPEECH_BED_FREE_MODELS_HPP
 

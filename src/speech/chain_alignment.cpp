@@ -73,7 +73,7 @@ struct FinalPass {
 void align_final_chain(const SentenceChain& chain, std::size_t w, const FeatureTrack& track,
                        const LoudnessProfile& loudness, const Timeline& transcript,
                        const Reestimation& learned, DryRoom* dry, std::size_t spoken_sentences,
-                       bool is_checked, FinalPass& pass, CutAlignment& aligned,
+                       bool is_checked, bool is_on_bed_free_models, FinalPass& pass, CutAlignment& aligned,
                        std::vector<StateSegment>* checked_path) {
     observe(track, loudness, chain.searched, pass.observations);
     learned.model.score(pass.observations.data(), chain.searched.length(), pass.scores);
@@ -111,7 +111,8 @@ void align_final_chain(const SentenceChain& chain, std::size_t w, const FeatureT
         track,
         loudness,
         transcript,
-        is_checked};
+        is_checked,
+        is_on_bed_free_models};
     measure_chain(measured, pass.scores, pass.workspace, aligned.result, pass.evidence, aligned.spans,
                   aligned.metrics);
     if (is_given_out) set_start_evidence(chain, path, pass.marginals, pass.evidence);
@@ -167,11 +168,13 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
         if (is_lenient)
             place_lenient_chain(chains[w], w, lenient_evidence[w], learned.last_paths[w], pass.workspace,
                                 transcript, track, loudness, aligned.result, pass.evidence);
-        else
+        else {
+            const bool is_on_bed_free_models = learned_clear_of_bed && clear_of_bed[w];
             align_final_chain(chains[w], w, track, loudness, transcript,
-                              learned_clear_of_bed && clear_of_bed[w] ? *learned_clear_of_bed : learned,
-                              dry ? &*dry : nullptr, spoken_sentences, is_checked, pass, aligned,
+                              is_on_bed_free_models ? *learned_clear_of_bed : learned, dry ? &*dry : nullptr,
+                              spoken_sentences, is_checked, is_on_bed_free_models && !in_room, pass, aligned,
                               is_tone_witnessed ? &checked_paths[w] : nullptr);
+        }
         report_pass(progress, passes - 1, passes, w, chains.size());
     }
     if (is_tone_witnessed) set_tone_gaps(chains, checked_paths, track, aligned.metrics);

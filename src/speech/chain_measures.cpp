@@ -16,6 +16,11 @@ double forgiven_closure_run_on(const Reestimation& learned, std::size_t spoken_s
     return std::numeric_limits<double>::infinity();
 }
 
+bool is_judged_by_order_margin(const SentenceChain& chain, std::size_t spoken_sentences,
+                               bool is_on_bed_free_models) {
+    return is_on_bed_free_models || (!chain.ends_in_tail && spoken_sentences <= kMaxHeldOutCheckSentences);
+}
+
 void measure_chain(const ChainMeasureInputs& in, EmissionScores& scores, ViterbiWorkspace& workspace,
                    Timeline& result, std::vector<SyllableEvidence>& evidence, std::vector<FrameSpan>& spans,
                    std::vector<SentenceMetrics>& metrics) {
@@ -32,8 +37,10 @@ void measure_chain(const ChainMeasureInputs& in, EmissionScores& scores, Viterbi
     // check_syllable_lengths would refuse right texts. check_path judges on `scores` of the whole
     // recording's models, before held_out_fit_gaps overwrites them.
     const bool is_own_model = !chain.ends_in_tail && in.spoken_sentences <= kMaxHeldOutCheckSentences;
-    const double margin = is_own_model ? order_margin(chain, path, scores, workspace)
-                                       : std::numeric_limits<double>::quiet_NaN();
+    const bool is_judged_by_margin =
+        is_judged_by_order_margin(chain, in.spoken_sentences, in.is_on_bed_free_models);
+    const double margin = is_judged_by_margin ? order_margin(chain, path, scores, workspace)
+                                              : std::numeric_limits<double>::quiet_NaN();
     // Alone in its file, a sentence's speech after its last syllable is judged against generic
     // speech: beside another sentence it would take that one's start.
     if (is_own_model && in.spoken_sentences == 1)
@@ -55,7 +62,7 @@ void measure_chain(const ChainMeasureInputs& in, EmissionScores& scores, Viterbi
     // more, check_text_fit and check_fit compare each with the others, which holds better than this
     // absolute limit. In a chain, models re-estimated on it fit its sentences' texts as they would
     // in a file of one or two: the halves of each are checked the same way.
-    if (!chain.ends_in_tail && (in.spoken_sentences <= kMaxHeldOutCheckSentences || chain.is_block())) {
+    if (is_judged_by_margin || (!chain.ends_in_tail && chain.is_block())) {
         const auto halves = split_in_halves(chain, path);
         const auto gaps = held_out_fit_gaps(chain, halves, in.observations, in.learned.whole,
                                             in.learned.halves[in.chain_index], scores, in.forgiven_run_on);

@@ -43,11 +43,27 @@ inline constexpr std::size_t kMaxHeldOutCheckSentences = 2;
 // silent.
 double forgiven_closure_run_on(const Reestimation& learned, std::size_t spoken_sentences, bool in_room);
 
+// Whether a chain's sentences are judged by their order margin and held-out halves
+// (check_held_out_fit) as well as by their text fit: in a file of one or two sentences, where the
+// models re-estimated on the recording fit any text, but not where the chain ends in a room's tail
+// (there a right text's halves gap as a wrong one's do, bench/ reverb); and on the models a music
+// bed's recording learns from its sentences clear of the bed alone (`is_on_bed_free_models`,
+// bed_free_models.hpp, outside a room). Those are three or four sentences of a passage, and a
+// wrong text among them shapes them as it shapes a file of one or two's: a replaced sentence fits
+// them -0.13-0.26 per frame worse than free sounds (median 0.08, 12 of 49 over kMaxTextFitGap),
+// where its typical syllable on held-out models gaps more than its order margin in 39 of the 49
+// and a right sentence's in 1 of 206 (bench/README.md, session 36 (bed3): a person's, a voice's
+// and espeak-ng's passages under a bed).
+bool is_judged_by_order_margin(const SentenceChain& chain, std::size_t spoken_sentences,
+                               bool is_on_bed_free_models);
+
 // What the final pass measures a chain on: the chain (the `chain_index`th), its path on the
 // re-estimated models and its observations, where other searches of it place its syllables (they
 // weigh in on their confidences), the re-estimation, the recording's count of spoken sentences and
 // how far a closure spoken through is forgiven (forgiven_closure_run_on), the recording's features,
-// its loudness and the transcript, and whether its path is checked (check_path).
+// its loudness and the transcript, whether its path is checked (check_path), and whether it is
+// judged on the models learned from the sentences clear of a music bed (bed_free_models.hpp),
+// outside a room.
 struct ChainMeasureInputs {
     const SentenceChain& chain;
     std::size_t chain_index;
@@ -61,6 +77,7 @@ struct ChainMeasureInputs {
     const LoudnessProfile& loudness;
     const Timeline& transcript;
     bool is_checked;
+    bool is_on_bed_free_models;
 };
 
 // The final pass over one chain, on the re-estimated models, whose scores of it `scores` holds: its

@@ -12,6 +12,7 @@
 
 #include "common/chain_state.hpp"
 #include "speech/alignment_checks.hpp"
+#include "speech/chain_measures.hpp"
 #include "speech/text_fit.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/transcript.hpp"
@@ -184,5 +185,25 @@ TEST_SUITE("speech") {
         CHECK_FALSE(fits_as_well_as_free_sounds(metrics, {0}));
         metrics[0].held_out_gap = kMaxHeldOutFitGap;
         CHECK(fits_as_well_as_free_sounds(metrics, {0}));
+    }
+
+    TEST_CASE(
+        "a passage's sentences judged on a bed recording's clear-sentence models are judged by their order "
+        "margin") {
+        SentenceChain chain;
+        chain.first_sentence = 2;
+        chain.end_sentence = 3;
+        // A passage of five, on the models learned from every sentence: the text fit compares it
+        // with the others.
+        CHECK_FALSE(is_judged_by_order_margin(chain, 5, false));
+        // On the models learned from the three or four sentences clear of a music bed, which a wrong
+        // text shapes as it shapes a file of one or two's: judged as there, its tail or not.
+        CHECK(is_judged_by_order_margin(chain, 5, true));
+        chain.ends_in_tail = true;
+        CHECK(is_judged_by_order_margin(chain, 5, true));
+        // A file of two, as before: not where it ends in a room's tail.
+        CHECK_FALSE(is_judged_by_order_margin(chain, 2, false));
+        chain.ends_in_tail = false;
+        CHECK(is_judged_by_order_margin(chain, 2, false));
     }
 }
