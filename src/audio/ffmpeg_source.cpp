@@ -565,6 +565,14 @@ public:
     std::size_t read_frames(float* mono, std::size_t max_frames) override {
         std::size_t written = 0;
         while (written < max_frames) {
+            if (silence_ahead_ > 0) {
+                const std::size_t take = std::min(max_frames - written, silence_ahead_);
+                std::fill_n(mono + written, take, 0.0f);
+                silence_ahead_ -= take;
+                written += take;
+                frames_given_ += take;
+                continue;
+            }
             if (pending_position_ == pending_.size()) {
                 if (!decode_next_frame()) {
                     if (fill_lost_end()) continue;
@@ -659,12 +667,15 @@ private:
     // first or the sound track ended.
     bool pass_over_to(std::size_t frame, bool to_frame) {
         while (true) {
+            const std::size_t silence = std::min(silence_ahead_, frame - frames_given_);
+            silence_ahead_ -= silence;
+            frames_given_ += silence;
             const std::size_t step = std::min(pending_.size() - pending_position_, frame - frames_given_);
             pending_position_ += step;
             frames_given_ += step;
             if (frames_given_ == frame) return true;
             if (!to_frame && timed_frames_ >= 2) return false;
-            if (!decode_next_frame()) return false;
+            if (silence_ahead_ == 0 && !decode_next_frame()) return false;
         }
     }
 
@@ -1233,8 +1244,8 @@ private:
                 // AMR-WB's decoder writes an empty pause frame's silence itself (a frame a packet;
                 // the pause frames it refuses, and AMR-NB's, are refuse_packet's): a pause too.
                 if (last_packet_is_pause_ && frame_samples > 0)
-                    note_codec_pause(frames_given_ + pending_.size() - frame_samples, frame_samples);
-                if (!pending_.empty()) return true;
+                    note_codec_pause(frames_given_ + silence_ahead_, frame_samples);
+                if (!pending_.empty() || silence_ahead_ > 0) return true;
                 continue;
             }
             if (received == AVERROR_EOF) {
@@ -1244,7 +1255,7 @@ private:
                 pending_.clear();
                 pending_position_ = 0;
                 fill_skipped_time();
-                return !pending_.empty();
+                return silence_ahead_ > 0;
             }
             if (received == AVERROR(ENOMEM)) throw std::bad_alloc();
             // Some decoders refuse a damaged packet here rather than when it is sent.
@@ -1527,8 +1538,8 @@ private:
             av_rescale_q(stream_->start_time, stream_->time_base, AVRational{1, sample_rate_hz_}) -
             picture_start;
         if (static_cast<double>(lead) <= kTimestampSlackS * sample_rate_hz_) return;
-        // Nothing is given out yet: the first frame (and any silence before it) is all of pending_.
-        pending_.insert(pending_.begin(), static_cast<std::size_t>(lead), 0.0f);
+        // Nothing is given out yet: the lead goes before the first frame (and any silence before it).
+        silence_ahead_ += static_cast<std::size_t>(lead);
         frames_decoded_ += static_cast<std::size_t>(lead);
         picture_lead_frames_ = static_cast<std::size_t>(lead);
         time_zero_frames_ -= lead;
@@ -1551,14 +1562,14 @@ private:
         }
     }
 
-    // Puts the time of the packets skipped since the last frame, as silence, before pending_.
+    // Puts the time of the packets skipped since the last frame, as silence, before pending_'s samples.
     void fill_skipped_time() {
         if (skipped_frames_ == 0) return;
         // The silence goes where read_frames() stands: after every frame given out so far.
         if (skipped_is_damage_) note_lost_audio(frames_given_, skipped_frames_);
         else if (skipped_is_pause_)
             note_codec_pause(frames_given_, skipped_frames_);
-        pending_.insert(pending_.begin() + static_cast<std::ptrdiff_t>(pending_position_), skipped_frames_, 0.0f);
+        silence_ahead_ += skipped_frames_;
         frames_decoded_ += skipped_frames_;
         skipped_frames_ = 0;
         skipped_is_damage_ = false;
@@ -1616,7 +1627,7 @@ private:
     double stated_seconds_ = 0.0;
     std::size_t frames_decoded_ = 0;
     std::size_t frames_to_skip_ = 0;
-    std::size_t skipped_frames_ = 0;  // the time of refused packets not yet put in pending_
+    std::size_t skipped_frames_ = 0;  // the time of refused packets not yet put in silence_ahead_
     bool skipped_is_damage_ = false;  // some of skipped_frames_ is lost to damage, not a codec's gap
     bool last_packet_is_pause_ = false;  // the last packet sent is an AMR pause frame
     bool skipped_is_pause_ = true;       // every packet refused since the last frame is an AMR pause frame
@@ -1647,6 +1658,10 @@ private:
     std::int64_t packets_read_ = 0;
     std::vector<float> pending_;
     std::size_t pending_position_ = 0;
+    // Silence read_frames() gives out before pending_'s samples: a lost end or a gap can be hours
+    // (a damaged length up to kMostLostEndShare times the sound read), given out as it is read, as
+    // the samples are, rather than held at once.
+    std::size_t silence_ahead_ = 0;
 };
 
 }  // namespace

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "audio/mp3_toc.hpp"
+#include "audio/repeated_sound.hpp"
+#include "common/number_format.hpp"
 
 namespace talkface::detail {
 
@@ -140,10 +142,11 @@ std::optional<std::uint64_t> repeated_opening_byte(const std::string& path) {
 }
 
 std::optional<std::string> describe_joined_copy(const std::string& path) {
+    const std::string to_first =
+        ", joined to the first (as an upload or a copy that appends to a file leaves it); cut the file "
+        "there and align each recording on its own";
     const std::string joined =
-        ": a second copy of the recording, or a second recording, begins there, joined to the first (as "
-        "an upload or a copy that appends to a file leaves it); cut the file there and align each "
-        "recording on its own";
+        ": a second copy of the recording, or a second recording, begins there" + to_first;
     if (const auto second = repeated_opening_byte(path))
         return "its first " + std::to_string(kOpeningBytes) + " bytes (its header) recur at byte " +
                std::to_string(*second) + joined;
@@ -155,6 +158,16 @@ std::optional<std::string> describe_joined_copy(const std::string& path) {
     if (const auto end = past_stated_mp3_bytes(in))
         return "its first frame's Xing or Info tag counts its MP3 frames to byte " + std::to_string(*end) +
                ", and a second stream of frames starts there" + joined;
+    if (const auto repeat = repeated_sound(path)) {
+        const auto seconds = [&](std::size_t frame) {
+            return format_fixed(static_cast<double>(frame) / repeat->sample_rate_hz, 3) + " s";
+        };
+        return "its sound from " + seconds(repeat->repeat_frame) + " to its end is its sound from " +
+               seconds(repeat->original_frame) +
+               " on again, sample for sample, as no voice repeats itself: a second copy of the recording "
+               "begins at " +
+               seconds(repeat->repeat_frame - repeat->original_frame) + to_first;
+    }
     return std::nullopt;
 }
 

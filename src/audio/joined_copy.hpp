@@ -30,7 +30,8 @@ std::optional<std::uint64_t> repeated_opening_byte(const std::string& path);
 // refusal of the text of the file at `path` says of a second recording joined to it, or nullopt: its
 // opening bytes recurring (repeated_opening_byte), or, in an MP3, a second frame holding the Xing or
 // Info tag an encoder writes once, in a recording's first frame (an MP3 with no ID3 tag, or two
-// recordings whose tags differ). An MP3 with neither tag shows no join (sox writes none). Asked only
+// recordings whose tags differ), or, where no bytes tell it, its decoded sound repeating itself to
+// its end (repeated_sound: an MP3 with neither tag, as sox writes it, joined to itself). Asked only
 // where the text's fit is not vouched for (speech_aligner.cpp): the search reads the whole file (a
 // 10 h FLAC is 1 GB), and a join read on as one recording shows as a text that does not fit it.
 std::optional<std::string> describe_joined_copy(const std::string& path);

@@ -6,8 +6,10 @@
 
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "audio/audio_source.hpp"
+#include "audio/repeated_sound.hpp"
 #include "common/made_by_command.hpp"
 #include "common/test_paths.hpp"
 #include "talkface/errors.hpp"
@@ -102,6 +104,38 @@ TEST_SUITE("joined recordings") {
         const Timeline unchecked_aligned = SpeechAligner(unchecked).align_file(path, both);
         CHECK(has_warning_with(unchecked_aligned, "its first 32 bytes (its header) recur at byte " +
                                                       std::to_string(file_bytes(flac))));
+    }
+
+    TEST_CASE(
+        "an MP3 of frames alone joined to itself is named by its sound repeating where the text is refused") {
+        // No ID3 tag, no Xing tag (as sox writes an MP3): no header recurs in its bytes, and the
+        // join was refused as a text that does not fit with no word of why.
+        const std::string bare =
+            ffmpeg_made("bare_32k.mp3",
+                        "-c:a libmp3lame -b:a 32k -write_xing 0 -id3v2_version 0 -fflags +bitexact -f mp3");
+        const std::string path = joined("bare_joined.mp3", bare, bare);
+        const std::string refusal = refusal_of_one_sentence(path);
+        CHECK_MESSAGE(
+            refusal.find(" on again, sample for sample, as no voice repeats itself: a second copy of "
+                         "the recording begins at ") != std::string::npos,
+            refusal);
+        const auto repeat = detail::repeated_sound(path);
+        REQUIRE(repeat);
+        const auto alone = detail::open_audio_file(bare);
+        std::vector<float> block(1 << 16);
+        std::size_t frames = 0;
+        while (const std::size_t got = alone->read(block.data(), block.size())) frames += got;
+        // The second copy starts where the first's frames end: its decoded length, the encoder's
+        // delay cut from the first copy alone.
+        const std::size_t copy_start = repeat->repeat_frame - repeat->original_frame;
+        CHECK(copy_start >= frames);
+        CHECK(copy_start <= frames + 1152);
+        // Neither the file alone nor a tone that repeats at its period is a copy.
+        CHECK_FALSE(detail::repeated_sound(bare));
+        const std::string tone = test::made_by_command("tone_1khz.wav",
+                                                       "ffmpeg -nostdin -loglevel error -y -f lavfi -i "
+                                                       "sine=frequency=1000:sample_rate=16000:duration=3");
+        CHECK_FALSE(detail::repeated_sound(tone));
     }
 
     TEST_CASE("an AVI's OpenDML extension (a RIFF AVIX after the first RIFF) is no second WAV") {
