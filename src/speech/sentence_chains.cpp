@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "speech/level_line.hpp"
+#include "speech/room_closures.hpp"
 
 namespace talkface::detail {
 
@@ -168,6 +169,11 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
         if (loudness.is_cut_to_sound && speech.end_frame == track.frame_count)
             chain.states.back().max_frames = kCutEdgeFrames;
     }
+    // A fall past kTailFallDb is a room's tail only where the recording's sentences ring on in the
+    // median (is_room); elsewhere it is a voice's own quiet end (a nasal coda whose murmur a
+    // telephone band takes away, bench/README.md Session 36 (bound)), and the last syllable keeps it.
+    const bool rings = is_room(chains);
+    for (SentenceChain& chain : chains) chain.ends_before_tail = rings;
 }
 
 // In a reverberant room the last sound rings on for a few hundred ms after the voice stops, and the

@@ -365,7 +365,7 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
     for (std::size_t local = 0; local < chain.syllables.size(); ++local) {
         Syllable& syllable = result.syllables[chain.syllable_indices[local]];
         auto [first, end, start, final_first, runs_on] = syllable_path(in, local);
-        if (local + 1 == chain.syllables.size()) {
+        if (local + 1 == chain.syllables.size() && chain.ends_before_tail) {
             const std::size_t offset = chain.searched.first_frame;
             const std::size_t trimmed = end_before_tail(track, offset + first, offset + end) - offset;
             end = std::max(trimmed, final_first.value_or(first) + 1);

@@ -144,7 +144,14 @@ def test_subtitle_cues_pin_the_aligner(tmp_path):
     cues.write_text("1\n00:00:00,290 --> 00:00:01,690\n今天下午有雨。\n\n"
                     "2\n00:00:02,800 --> 00:00:04,000\n我们明天再去吧。\n", encoding="utf-8")
     pinned = export(tmp_path, "pinned.srt", "--timing", cues).read_text(encoding="utf-8").split("\n\n")
-    assert pinned[0] == export(tmp_path, "aligned.srt").read_text(encoding="utf-8").split("\n\n")[0]
+    aligned = export(tmp_path, "aligned.srt").read_text(encoding="utf-8").split("\n\n")[0].splitlines()
+    # Pinned to the right cue the sentence is the aligner's; its end within a frame (10 ms), since the
+    # search stops at the cue's end where the aligner's last syllable keeps its fade's last frame.
+    first = pinned[0].splitlines()
+    assert first[0::2] == aligned[0::2] and first[1][:12] == aligned[1][:12]
+    seconds = [sum(float(part) * scale for part, scale in zip(cue[-12:].replace(",", ":").split(":"), (3600, 60, 1, 0.001)))
+               for cue in (first[1], aligned[1])]
+    assert abs(seconds[0] - seconds[1]) <= 0.0105
     times = pinned[1].splitlines()[1]
     assert "00:00:02,800" <= times[:12] and times[-12:] <= "00:00:04,000"
     # Searched only inside its cue, the sentence keeps the syllables the cue does not cut where

@@ -1,11 +1,18 @@
 // Where a sentence's voice ends before a room's tail (end_before_tail, issue 12: a quiet last
-// syllable is speech, not a tail), and before the tail's ringing (end_before_ringing).
+// syllable is speech, not a tail), and before the tail's ringing (end_before_ringing); where the
+// last syllable ends (place_syllables: a quiet end is a tail only where the recording rings).
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <vector>
 
+#include "speech/hsmm.hpp"
 #include "speech/sentence_chains.hpp"
+#include "speech/sentence_cutter.hpp"
+#include "speech/syllable_placement.hpp"
+#include "talkface/timeline.hpp"
 
+using namespace talkface;
 using namespace talkface::detail;
 
 namespace {
@@ -14,9 +21,74 @@ namespace {
 FeatureTrack track_of(const std::vector<float>& levels_db) {
     FeatureTrack track;
     track.frame_count = levels_db.size();
+    track.duration_s = static_cast<double>(levels_db.size()) * kFrameStepS;
     track.values.assign(levels_db.size() * kFeatureCount, 0.0f);
     for (std::size_t t = 0; t < levels_db.size(); ++t) track.values[t * kFeatureCount + kEnergyDb] = levels_db[t];
     return track;
+}
+
+// A transcript of `sentences` sentences of three syllables each.
+Timeline transcript_of(std::size_t sentences) {
+    Timeline transcript;
+    for (std::size_t k = 0; k < sentences; ++k) {
+        transcript.sentences.emplace_back();
+        for (const char* pinyin : {"ta1", "men5", "shan1"}) {
+            Syllable syllable;
+            syllable.pinyin = pinyin;
+            syllable.sentence = k;
+            transcript.syllables.push_back(syllable);
+        }
+    }
+    return transcript;
+}
+
+struct Recording {
+    FeatureTrack track;
+    SentenceCut cut;
+};
+
+// Sentences of 40 frames of voice, 20 of them a loud vowel, between pauses of 50 frames at the
+// floor; each sentence's end after the vowel is `ends[k]`'s levels, the cutter's span holding it.
+Recording recording_of(const std::vector<std::vector<float>>& ends) {
+    std::vector<float> levels(50, -70.0f);
+    SentenceCut cut;
+    for (const std::vector<float>& end : ends) {
+        const std::size_t first = levels.size();
+        levels.insert(levels.end(), 20, -30.0f);
+        levels.insert(levels.end(), 20, -20.0f);
+        levels.insert(levels.end(), end.begin(), end.end());
+        cut.spans.push_back({first, levels.size()});
+        cut.runs_on.push_back(false);
+        levels.insert(levels.end(), 50, -70.0f);
+    }
+    return {track_of(levels), cut};
+}
+
+// Where place_syllables ends the last syllable of `chain` (frames of the track) on a path that holds
+// its first state until the sentence's speech starts, its last one for a frame at the search's
+// end, and every state between but the optional ones (pauses) in turn, the last to the end.
+std::size_t last_end_frame(const SentenceChain& chain, const FeatureTrack& track,
+                           const Timeline& transcript) {
+    const std::size_t length = chain.searched.length();
+    const std::size_t speech_first = chain.speech.first_frame - chain.searched.first_frame;
+    std::vector<std::size_t> middle;
+    for (std::size_t s = 1; s + 1 < chain.states.size(); ++s)
+        if (!chain.states[s].is_optional) middle.push_back(s);
+    std::vector<StateSegment> path = {{0, 0, speech_first}};
+    const std::size_t each = (length - 1 - speech_first) / middle.size();
+    for (std::size_t m = 0; m < middle.size(); ++m) {
+        const std::size_t first = speech_first + m * each;
+        path.push_back({middle[m], first, m + 1 == middle.size() ? length - 1 : first + each});
+    }
+    path.push_back({chain.states.size() - 1, length - 1, length});
+    EmissionScores scores;
+    scores.frame_count = length;
+    scores.values.assign(length * kPhoneClassCount, -1.0f);
+    Timeline result = transcript;
+    std::vector<SyllableEvidence> evidence(transcript.syllables.size());
+    place_syllables(chain, 0, path, {}, scores, track, result, evidence);
+    return static_cast<std::size_t>(
+        std::lround(result.syllables[chain.syllable_indices.back()].end_s / kFrameStepS));
 }
 
 }  // namespace
@@ -75,5 +147,27 @@ TEST_SUITE("sentence chains") {
         levels.insert(levels.end(), 20, -42.0f);                     // a quiet third tone, 22 dB under
         const FeatureTrack track = track_of(levels);
         CHECK(end_before_tail(track, 0, levels.size()) == levels.size());
+    }
+
+    TEST_CASE("a quiet end is the last syllable's where the recording's other sentences stop dry") {
+        // A nasal coda whose murmur a telephone band takes away: 24 dB under the vowel for 15 frames.
+        const std::vector<float> murmur(15, -44.0f);
+        const Recording dry = recording_of({murmur, {}, {}});
+        const Timeline transcript = transcript_of(3);
+        std::vector<SentenceChain> chains = group_chains(transcript, dry.cut, dry.cut.spans);
+        set_search_spans(dry.track, LoudnessProfile(), chains);
+        REQUIRE(chains[0].tail_frames == 15);
+        // The path gives the last syllable every frame searched after the vowel.
+        CHECK(last_end_frame(chains[0], dry.track, transcript) == chains[0].searched.end_frame - 1);
+
+        // Where every sentence rings on, the tail is the room's: the voice ends before it.
+        std::vector<float> tail;
+        for (int k = 1; k <= 30; ++k) tail.push_back(-20.0f - 1.0f * static_cast<float>(k));
+        const Recording room = recording_of({tail, tail, tail});
+        chains = group_chains(transcript, room.cut, room.cut.spans);
+        set_search_spans(room.track, LoudnessProfile(), chains);
+        REQUIRE(chains[0].tail_frames >= 9);
+        CHECK(last_end_frame(chains[0], room.track, transcript) ==
+              chains[0].speech.end_frame - chains[0].tail_frames);
     }
 }
