@@ -37,7 +37,7 @@ bool is_formula_term(char32_t c) {
     // A degree or a percentage ends a term too (sin30°=1/2, 25%=1/4; session 14: the = was skipped), and so
     // does any power's last digit ((-1)¹⁰⁰=1; session 33: the = was skipped), the empty set (A∩B=∅) and
     // infinity.
-    return (c >= '0' && c <= '9') || is_ascii_letter(c) || !greek_letter_name(c).empty() || c == ')' ||
+    return is_ascii_digit(c) || is_ascii_letter(c) || !greek_letter_name(c).empty() || c == ')' ||
            c == 0xB2 || c == 0xB3 || c == 0xB9 || (c >= 0x2070 && c <= 0x2079) || c == 0xB0 || c == '%' ||
            c == 0x2103 /*℃*/ || c == 0x2205 /*∅*/ || c == 0x221E /*∞*/;
 }
@@ -133,7 +133,7 @@ bool counts_a_lobby(const std::vector<CodePoint>& text, std::size_t i) {
 // between two digits (1+1), two letters (A+B), two words or in a formula (x+1=3).
 std::string_view said_plus(const std::vector<CodePoint>& text, std::size_t i, char32_t left, char32_t right) {
     // A letter and a digit too: a sum of capacities (12GB+256GB 十二GB加二百五十六GB), 5G+AI.
-    const auto is_alphanumeric = [](char32_t c) { return is_ascii_letter(c) || (c >= '0' && c <= '9'); };
+    const auto is_alphanumeric = [](char32_t c) { return is_ascii_letter(c) || is_ascii_digit(c); };
     const bool alphanumeric = is_alphanumeric(left) && is_alphanumeric(right);
     // After a square or a cube, a sum of terms (a²+b²; session 14: said only beside a relation sign).
     const bool after_power = is_one_of(left, U"\u00B2\u00B3");
@@ -156,8 +156,8 @@ std::string_view said_plus(const std::vector<CodePoint>& text, std::size_t i, ch
 std::string_view said_small_x(const std::vector<CodePoint>& text, std::size_t i, bool is_unspaced,
                               char32_t left, char32_t right) {
     const bool introduces_term = is_one_of(left, U"设設令为為是和与與及或且根点點若则則当當求把将將");
-    const bool counts_items = is_unspaced && is_han_character(left) && !introduces_term && right >= '0' &&
-                              right <= '9' && !clause_has_relation(text, i);
+    const bool counts_items = is_unspaced && is_han_character(left) && !introduces_term &&
+                              is_ascii_digit(right) && !clause_has_relation(text, i);
     return counts_items ? "乘" : "";
 }
 
@@ -180,7 +180,7 @@ int ascii_roman_value(const std::vector<CodePoint>& text, std::size_t start, std
 std::size_t ascii_roman_numeral_end(const std::vector<CodePoint>& text, std::size_t i) {
     auto end = i;
     while (is_one_of(value_at(text, end), U"IVX")) ++end;
-    const auto stands_apart = [&](char32_t c) { return !is_ascii_letter(c) && !(c >= '0' && c <= '9'); };
+    const auto stands_apart = [&](char32_t c) { return !is_ascii_letter(c) && !is_ascii_digit(c); };
     if (end - i < 2 || (i > 0 && !stands_apart(text[i - 1].value)) || !stands_apart(value_at(text, end)))
         return i;
     const bool ordered = (i > 0 && text[i - 1].value == U'第') ||
@@ -290,12 +290,12 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
             const bool before_st = value_at(text, after) == 'S' && value_at(text, after + 1) == 'T' &&
                                    !is_ascii_letter(value_at(text, after + 2));
             if (before_st) return "星";
-            return between_terms && right >= '0' && right <= '9' ? "乘" : "";
+            return between_terms && is_ascii_digit(right) ? "乘" : "";
         }
         // × after a character too, before a number (经验值×2 经验值乘二, a game's bonus; session 14).
         case 0xD7:  // ×
             if (marks_judgement) return "错";
-            return between_terms || (is_han_left && right >= '0' && right <= '9') ? "乘" : "";
+            return between_terms || (is_han_left && is_ascii_digit(right)) ? "乘" : "";
         case 'x': return said_small_x(text, i, before == i && after == i + 1, left, right);
         // ÷ is never a bracket or a dash: between two words too, as a rule of thumb is written
         // (总价÷数量=单价, 体重(kg)÷身高; session 30: skipped with a warning).
@@ -322,7 +322,7 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
         case 0xB2: case 0xB3: {
             const bool after_word = is_han_left && !is_one_of(left, U"米尺寸里");
             if (!(is_formula_term(left) || after_word) || before != i) return {};
-            const bool after_digit = (left >= '0' && left <= '9') || left == ')';
+            const bool after_digit = is_ascii_digit(left) || left == ')';
             if (sign == 0xB2) return after_digit || after_word ? "的平方" : "平方";
             return after_digit || after_word ? "的立方" : "立方";
         }
