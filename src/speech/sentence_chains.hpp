@@ -56,7 +56,8 @@ std::size_t end_before_tail(const FeatureTrack& track, std::size_t first, std::s
 // Where the voice in [first, end) stopped before a room's tail, `mark` its end_before_tail: past the
 // mark the tail surely rings, on a straight line at the room's own decay; followed back from the mark,
 // the ringing starts where the level stands over that line drawn back by more than the ringing's
-// ripple. The mark where the tail is too short to draw the line, or the level passes under it.
+// ripple. The mark where the tail is too short to draw the line, or the level passes under it for
+// longer than the ringing's own dips between its reflections.
 std::size_t end_before_ringing(const FeatureTrack& track, std::size_t first, std::size_t mark,
                                std::size_t end);
 

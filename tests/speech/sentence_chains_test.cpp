@@ -128,6 +128,18 @@ TEST_SUITE("sentence chains") {
         CHECK(end_before_ringing(track, 0, mark, levels.size()) == 30);
     }
 
+    TEST_CASE("a large room's ringing is followed back past the dips between its reflections") {
+        std::vector<float> levels(30, -20.0f);  // the voice
+        // The ringing of the slow room above, where every seventh frame one reflection has died and
+        // the next not come: the level dips 6 dB under the line for a frame.
+        for (int k = 0; k < 40; ++k)
+            levels.push_back(-32.0f - 0.3f * static_cast<float>(k) + (k % 7 == 3 ? -6.0f : 0.0f));
+        const FeatureTrack track = track_of(levels);
+        const std::size_t mark = end_before_tail(track, 0, levels.size());
+        REQUIRE(mark > 45);
+        CHECK(end_before_ringing(track, 0, mark, levels.size()) == 30);
+    }
+
     TEST_CASE("a fade that passes under the ringing's line drawn back keeps the mark") {
         // The last vowel fades 1 dB a frame to 20 dB under the voice, while what the louder frames
         // before it left rings on over it, falling 0.3 dB a frame: followed back, the level leaves the
