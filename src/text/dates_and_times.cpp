@@ -547,6 +547,27 @@ std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text,
     return form;
 }
 
+std::optional<SpokenForm> read_padded_month_and_day(const std::vector<CodePoint>& text, std::size_t start,
+                                                    const WrittenNumber& month) {
+    constexpr std::size_t kDigits = 2;
+    if (month.has_point || month.has_separators || month.whole.size() != kDigits ||
+        value_at(text, month.end) != '-' ||
+        (start > 0 && (is_ascii_letter(text[start - 1].value) || is_digit_at(text, start - 1) ||
+                       is_dash(text[start - 1].value))))
+        return std::nullopt;
+    auto i = month.end + 1;
+    const auto day = digits_from(text, i);
+    const auto next = value_at(text, i);
+    if (day.size() != kDigits || !is_month_and_day(month.whole, day) ||
+        !(month.whole.front() == '0' || day.front() == '0') || is_dash(next) || is_ascii_letter(next) ||
+        next == '.')
+        return std::nullopt;
+    SpokenForm form;
+    form.words = cardinal_words(month.whole, false) + "月" + cardinal_words(day, false) + "日";
+    form.end = i;
+    return form;
+}
+
 namespace {
 
 // Whole minutes and seconds of two digits as a race's clock is read: 两分, 零五秒 for 05.

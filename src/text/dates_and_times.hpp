@@ -130,6 +130,13 @@ std::optional<SpokenForm> read_dotted_day(const std::vector<CodePoint>& text, co
 std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text, std::size_t start,
                                              const WrittenNumber& month);
 
+// A month and a day of two digits each joined by a dash, one of them padded with a zero, as a caption or a
+// feed stamps a post (更新于12-06 20:15 十二月六日, 发布于03-15): a date, 月 and 日 said as other dates are
+// (session 36: 一二杠零六, a code's digits). A score, a range or a count never writes its zero; a part of a
+// longer code (A12-06, 010-12-06) is none.
+std::optional<SpokenForm> read_padded_month_and_day(const std::vector<CodePoint>& text, std::size_t start,
+                                                    const WrittenNumber& month);
+
 // A race's time, minutes and seconds with their tenths or hundredths (1:28.65 一分二十八秒六五,
 // 3:27.46): the seconds' decimal point is what a clock's minutes never have. A subtitle's timestamp
 // (00:01.500: minutes with a leading zero, thousandths) is no race's.

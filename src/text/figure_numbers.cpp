@@ -35,7 +35,11 @@ std::optional<SpokenForm> read_figure_number(const std::vector<CodePoint>& text,
     // count.
     const bool names_example = start > 0 && text[start - 1].value == U'例' &&
                                (start == 1 || !is_one_of(text[start - 2].value, U"病案"));
-    const bool after_label = start > 0 && (is_one_of(text[start - 1].value, U"图圖表式") || names_example);
+    // An annex is numbered so too (附件2-3 附件二杠三, the third of annex 2's parts; session 36: 二到三, a
+    // range): 件 alone ends counts (3-5件), so only the word 附件.
+    const bool names_annex = text_between(text, start >= 2 ? start - 2 : 0, start) == "附件";
+    const bool after_label =
+        start > 0 && (is_one_of(text[start - 1].value, U"图圖表式") || names_example || names_annex);
     // A game's stage is numbered so too, its world and its place in it (卡在1-3关 一杠三关, as players say
     // it; session 33: 一到三关); a range of stages takes 第 (第1-3关 第一到三关).
     const bool may_name_stage = start == 0 || text[start - 1].value != U'第';

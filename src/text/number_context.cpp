@@ -348,9 +348,13 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
     // (3男2女组合).
     const auto sex = value_at(text, number.end);
     const auto after_sex = value_at(text, number.end + 1);
-    context.next_heads_word = is_one_of(sex, U"男女") && is_han(after_sex) &&
-                              !is_one_of(after_sex, U"一二两兩三四五六七八九十男女") &&
-                              !(start > 0 && is_one_of(text[start - 1].value, U"男女"));
+    // A measure word that opens a word of rank (排在 排名 排第 名列 位列 位居) is the verb there, counting
+    // nothing: 1分29秒876排在第2位 is a lap's thousandths, 八七六 (session 36: 八百七十六, 排 a row's count).
+    const bool opens_rank = is_any_of(text_between(text, number.end, number.end + 2),
+                                      {"排在", "排名", "排第", "排行", "名列", "位列", "位居"});
+    context.next_heads_word = opens_rank || (is_one_of(sex, U"男女") && is_han(after_sex) &&
+                                             !is_one_of(after_sex, U"一二两兩三四五六七八九十男女") &&
+                                             !(start > 0 && is_one_of(text[start - 1].value, U"男女")));
     context.counts_in_layout =
         sign_words.empty() && currency == nullptr && counts_in_layout(text, start, number);
     context.is_grade = context.is_model && is_filter_grade(text, start, number.whole);

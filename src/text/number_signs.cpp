@@ -196,10 +196,12 @@ std::optional<LeadingSign> read_leading_sign(const std::vector<CodePoint>& text,
         (follows_designation(text, start) || follows_element(text, start) || opens_turn(text, start) ||
          ends_chinese_dash)) {
         ++i;
-    } else if (currency == nullptr && is_one_of(first, U"\u00B1\u2191\u2193") && is_digit_at(text, i + 1)) {
+    } else if (currency == nullptr && is_one_of(first, U"\u00B1\u2191\u2193\u25B2\u25BC") &&
+               is_digit_at(text, i + 1)) {
         // ± is 正负, as a tolerance is read (误差±0.5mm); an arrow before a change is the rise or the fall
-        // it draws, 涨 and 跌, as market reports read ↑3.2% and ↓1.5% (session 20: skipped with a warning).
-        sign_words = first == 0xB1 ? "正负" : first == 0x2191 ? "涨" : "跌";
+        // it draws, 涨 and 跌, as market reports read ↑3.2% and ↓1.5% (session 20: skipped with a warning),
+        // and so are a ticker's triangles (沪指 3088.53 ▲0.82%, ▼1.20%; session 36: skipped with a warning).
+        sign_words = first == 0xB1 ? "正负" : is_one_of(first, U"\u2191\u25B2") ? "涨" : "跌";
         ++i;
     } else if (currency == nullptr && (is_dash(first) || first == '+') && is_digit_at(text, i + 1) &&
                !after_word) {

@@ -20,8 +20,8 @@ namespace talkface::detail {
 bool agrees_after_person(const std::vector<CodePoint>& text, std::size_t start, std::size_t end);
 
 // A number's sign or currency before its digits at text[start] and where its digits start: the sign
-// said (正, 负, 加, 减; ± 正负, ↑ 涨, ↓ 跌) or "" where none is said or a dash is no sign; nullopt where no
-// digit follows.
+// said (正, 负, 加, 减; ± 正负, ↑ ▲ 涨, ↓ ▼ 跌) or "" where none is said or a dash is no sign; nullopt where
+// no digit follows.
 struct LeadingSign {
     const Currency* currency = nullptr;
     std::string words;

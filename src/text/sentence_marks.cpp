@@ -132,6 +132,19 @@ bool marks_screen_mode(const std::vector<CodePoint>& text, std::size_t i) {
     return detail::is_one_of(ascii_form(text[i - 1].value), U"KkPp") && detail::is_digit_at(text, i - 2);
 }
 
+bool marks_bullet(const std::vector<CodePoint>& text, std::size_t i) {
+    constexpr char32_t kFirstShape = 0x25A0;
+    constexpr char32_t kLastShape = 0x25FF;
+    constexpr char32_t kTriangle = 0x25B3;
+    const auto c = text[i].value;
+    if (c < kFirstShape || c > kLastShape || c == kTriangle) return false;
+    for (auto k = i; k-- > 0;) {
+        if (text[k].value == '\n') return true;
+        if (!is_space(text[k].value)) return false;
+    }
+    return true;
+}
+
 bool opens_set(const std::vector<CodePoint>& text, std::size_t i) {
     if (i >= text.size() || text[i].value != '{') return false;
     constexpr std::size_t kLongest = 40;

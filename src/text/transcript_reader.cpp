@@ -190,6 +190,11 @@ std::optional<std::size_t> TranscriptReader::read_written_form(const std::vector
         add_form(text, i, i + 1, read_words(detail::slash_reads_per(text, i) ? "每" : "和"));
         return i + 1;
     }
+    if (detail::slash_pairs_currencies(text, i)) {
+        form_warnings_ = timeline_.warnings.size();
+        add_form(text, i, i + 1, read_words("兑"));
+        return i + 1;
+    }
     if (auto number = detail::read_number_character(text, i)) {  // ① Ⅱ ½
         form_warnings_ = timeline_.warnings.size();
         add_form(text, i, number->end, read_words(number->words));
@@ -248,7 +253,7 @@ std::size_t TranscriptReader::read_item(const std::vector<CodePoint>& text, std:
     if (sentence_ended_ && !(ends_sentence(c.value) || closes_quote(c.value))) close_sentence();
     if (const auto form_end = read_written_form(text, i)) return *form_end;
     if (marks_choice(text, i) || marks_list_item(text, i) || marks_lineage_dot(text, i) ||
-        marks_initialism_dot(text, i) || marks_reaction_arrow(text, i)) {
+        marks_initialism_dot(text, i) || marks_reaction_arrow(text, i) || marks_bullet(text, i)) {
         append_text(c.text);
         return i + 1;
     }

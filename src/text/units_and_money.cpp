@@ -58,6 +58,11 @@ constexpr Unit kUnits[] = {
     // 四十七微法; μF was μ unsaid and the letter F), and bits per second written small without a prefix
     // (20bps 二十比特每秒, as kbps is 千比特每秒) where they are no rate's basis points (is_basis_points_at).
     {"μF", "微法"}, {"µF", "微法"}, {"nF", "纳法"}, {"pF", "皮法"}, {"bps", "比特每秒"},
+    // Session 37: a square or a cube typed with a plain digit where the keyboard has no superscript, as
+    // listings and air-quality posts write them (120m2 一百二十平方米, 115μg/m3 每立方米; the letter was
+    // read as the interjection m2, 呣). Only small letters: M2 is money supply's name (M2余额 M 二).
+    {"m2", "平方米"}, {"km2", "平方公里"}, {"cm2", "平方厘米"}, {"mm2", "平方毫米"}, {"m3", "立方米"},
+    {"cm3", "立方厘米"},
 };
 
 // The kilogram in a physics unit per another, by the name textbooks give the SI units (GB 3102): per a
@@ -167,8 +172,10 @@ const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size
         }
         if (written != unit.written) continue;
         // A Latin unit must end the letters: 5kgs or 3mind are words, not units; nor is a letter
-        // between two numbers one (5V5 五 V 五, a match of five against five).
-        if (is_ascii_letter(static_cast<char32_t>(unit.written.back())) &&
+        // between two numbers one (5V5 五 V 五, a match of five against five). A unit ending in its power's
+        // digit ends the digits too (120m23 is no square metre).
+        const auto last = static_cast<char32_t>(unit.written.back());
+        if ((is_ascii_letter(last) || is_ascii_digit(last)) &&
             (is_ascii_letter(value_at(text, k)) || is_digit_at(text, k))) {
             continue;
         }
@@ -264,6 +271,33 @@ std::optional<SpokenForm> read_per_unit(const std::vector<CodePoint>& text, std:
 bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i) {
     return value_at(text, i) == '/' && is_han_at(text, i + 1) && follows_number_and_han_unit(text, i) &&
            !names_top_schools(text, i + 1);
+}
+
+bool slash_pairs_currencies(const std::vector<CodePoint>& text, std::size_t i) {
+    constexpr std::string_view kCurrencyNames[] = {
+        "美元",   "欧元",   "歐元", "日元", "日圆", "日圓", "英镑",     "英鎊",   "人民币", "人民幣", "港元",
+        "港币",   "港幣",   "澳元", "加元", "纽元", "紐元", "瑞郎",     "卢布",   "盧布",   "韩元",   "韓元",
+        "新台币", "新台幣", "台币", "台幣", "卢比", "盧比", "新加坡元", "比特币", "比特幣", "USD",    "CNY",
+        "CNH",    "EUR",    "JPY",  "GBP",  "HKD",  "AUD",  "CAD",      "CHF",    "NZD",    "TWD",    "KRW"};
+    constexpr std::size_t kShortestName = 2;
+    constexpr std::size_t kLongestName = 4;  // characters: 新加坡元
+    // A currency's name of `length` characters from text[first]: a code whole, no letter beside it (USDT).
+    const auto names_currency = [&](std::size_t first, std::size_t length) {
+        return first + length <= text.size() &&
+               is_any_of(text_between(text, first, first + length), kCurrencyNames) &&
+               !(first > 0 && is_ascii_letter(text[first - 1].value)) &&
+               !is_ascii_letter(value_at(text, first + length));
+    };
+    if (value_at(text, i) != '/') return false;
+    bool before = false;
+    bool after = false;
+    for (auto length = kShortestName; length <= kLongestName; ++length) {
+        // After a number the name is a price's unit (25元/公斤 is slash_reads_per's), no pair.
+        before = before || (length <= i && names_currency(i - length, length) &&
+                            !(i > length && is_digit_at(text, i - length - 1)));
+        after = after || names_currency(i + 1, length);
+    }
+    return before && after;
 }
 
 bool slash_joins_sizes(const std::vector<CodePoint>& text, std::size_t i) {

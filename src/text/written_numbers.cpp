@@ -71,6 +71,7 @@ std::optional<SpokenForm> read_unsigned_form(const std::vector<CodePoint>& text,
     if (auto variant =
             context.is_model && !context.is_train ? read_model_variant(text, i, number) : std::nullopt)
         return variant;
+    if (auto date = read_padded_month_and_day(text, start, number)) return date;
     if (auto digits = read_dashed_digits(text, number, context.is_phone, context.is_named,
                                          follows_book_number(text, start)))
         return digits;

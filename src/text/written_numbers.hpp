@@ -54,6 +54,12 @@ std::optional<SpokenForm> read_per_unit(const std::vector<CodePoint>& text, std:
 // character, but 双一流 (a list of top schools, 985/211/双一流). Elsewhere a slash is not said (男/女).
 bool slash_reads_per(const std::vector<CodePoint>& text, std::size_t i);
 
+// True where the slash at text[i] joins two currencies as a rate quotes one in the other (美元/人民币
+// 美元兑人民币, 欧元/美元, 美元/日元), said 兑 as market news says the pair (session 36: unsaid): a
+// currency's name on each side, by the names news gives them (美元 欧元 日元 英镑 人民币 港元 ...) or their
+// ISO codes (USD/CNY).
+bool slash_pairs_currencies(const std::vector<CodePoint>& text, std::size_t i);
+
 // True where the slash at text[i] joins two sizes of a model in billions of parameters (7B/70B 七B和七十B,
 // 1.5B/7B), said 和 as the two versions are listed (session 28: unsaid). A byte unit's B (8GB/256GB) is no
 // size of this kind: a spec pair, not joined so. In a list of three or more only the last slash is 和

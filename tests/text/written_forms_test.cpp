@@ -2730,6 +2730,46 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE(
+        "a lap's thousandths before a rank, an annex's part, a typed square or cube, a currency pair, a "
+        "ticker's triangle and a padded month and day are said as news and listings read them") {
+        // The rows before the limits failed on main 4872926 (session 37, dev39 and session 36's leftovers):
+        // 八百七十六, 二到三, the interjection m2 and m3, the slash unsaid, the triangles skipped,
+        // 一二杠零六.
+        check_cases({
+            {"他以1分29秒876排在第2位", "他以一分二十九秒八七六排在第二位"},
+            {"9秒83排名第一", "九秒八三排名第一"},
+            {"详见附件2-3", "详见附件二杠三"},
+            {"房屋面积120m2", "房屋面积一百二十平方米"},
+            {"PM2.5浓度为115μg/m3", "pi ai mu二点五浓度为一百一十五微克每立方米"},
+            {"美元/人民币报7.1234", "美元兑人民币报七点一二三四"},
+            {"欧元/美元跌破1.05", "欧元兑美元跌破一点零五"},
+            {"USD/CNY报7.12", "you ai si di兑 xi en wai报七点一二"},
+            {"沪指 3088.53 ▲0.82%", "沪指三千零八十八点五三涨百分之零点八二"},
+            {"恒指 19876.40 ▼1.20%", "恒指一万九千八百七十六点四零跌百分之一点二零"},
+            {"更新于12-06 20:15", "更新于十二月六日二十点十五分"},
+            {"发布于03-15", "发布于三月十五日"},
+            // The limits: a row's count, money supply's M2, a price per a unit, a score, a code's dashed
+            // digits, a figure's place.
+            {"他排在第2排", "他排在第二排"},
+            {"M2余额同比增长7%", "ai mu二余额同比增长百分之七"},
+            {"3.5美元/公斤", "三点五美元每公斤"},
+            {"比分12-10", "比分十二比十"},
+            {"取件码A12-06", "取件码 ei一二杠零六"},
+            {"如图3-2所示", "如图三杠二所示"},
+        });
+    }
+
+    TEST_CASE("a caption's bullet opening its line is not said and not warned of") {
+        // Main 4872926 read the same syllables but warned of each mark (session 37, dev39).
+        for (const auto* line : {"▲图为救援人员在现场搜救。", "● 国内油价将调整。", "■要点"}) {
+            const auto timeline = read_transcript(line);
+            CHECK(timeline.warnings.empty());
+        }
+        // Inside a line a shape is still a mark without a reading.
+        CHECK_FALSE(read_transcript("说明：▲表示上涨。").warnings.empty());
+    }
+
     TEST_CASE("an English consonant before a liquid is a syllable of its own and a glide is a medial") {
         // Each row failed on main 029c10d: ti, pei, jin, si ti te, pou, qi ke, ku te.
         check_cases({
