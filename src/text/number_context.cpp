@@ -207,6 +207,15 @@ std::optional<SaidNumber> say_as_name(const std::string& whole, const NumberCont
         said.is_dialled = true;
         return said;
     }
+    // A draw numbered by its year and its place in the year (双色球第2026140期 第二零二六一四零期, as a
+    // lottery's announcer reads it; session 36: 二百零二万六千一百四十): seven digits from 19 or 20 before
+    // 期. A count of issues has no year in it (第10000期 counts).
+    constexpr std::size_t kYearAndPlaceDigits = 7;
+    if (whole.size() == kYearAndPlaceDigits && context.next == U'期' &&
+        (starts_with(whole, "19") || starts_with(whole, "20"))) {
+        said.words = digit_words(whole);
+        return said;
+    }
     // After 第 a number before 号 counts its place (国务院令第752号 第七百五十二号; session 35: 七五二, a
     // room's).
     if (whole.size() >= 3 && ((names_by_digits(context.next) && !context.is_house_number &&

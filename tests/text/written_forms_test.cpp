@@ -2735,7 +2735,7 @@ TEST_SUITE("written forms") {
         "ticker's triangle and a padded month and day are said as news and listings read them") {
         // The rows before the limits failed on main 4872926 (session 37, dev39 and session 36's leftovers):
         // 八百七十六, 二到三, the interjection m2 and m3, the slash unsaid, the triangles skipped,
-        // 一二杠零六.
+        // 一二杠零六, 二百零二万六千一百四十.
         check_cases({
             {"他以1分29秒876排在第2位", "他以一分二十九秒八七六排在第二位"},
             {"9秒83排名第一", "九秒八三排名第一"},
@@ -2749,14 +2749,16 @@ TEST_SUITE("written forms") {
             {"恒指 19876.40 ▼1.20%", "恒指一万九千八百七十六点四零跌百分之一点二零"},
             {"更新于12-06 20:15", "更新于十二月六日二十点十五分"},
             {"发布于03-15", "发布于三月十五日"},
+            {"双色球第2026140期开奖", "双色球第二零二六一四零期开奖"},
             // The limits: a row's count, money supply's M2, a price per a unit, a score, a code's dashed
-            // digits, a figure's place.
+            // digits, a figure's place, a count of issues.
             {"他排在第2排", "他排在第二排"},
             {"M2余额同比增长7%", "ai mu二余额同比增长百分之七"},
             {"3.5美元/公斤", "三点五美元每公斤"},
             {"比分12-10", "比分十二比十"},
             {"取件码A12-06", "取件码 ei一二杠零六"},
             {"如图3-2所示", "如图三杠二所示"},
+            {"本刊第10000期", "本刊第一万期"},
         });
     }
 
