@@ -15,6 +15,9 @@
 // script pauses the SVG's own timeline and sets its time from audio.currentTime on every animation
 // frame, so play, pause, seek, playback rate and the end keep face and voice together. A URL
 // fragment "#t=SECONDS" seeks there once the audio is ready; "#t=SECONDS&pause" also stays paused.
+// A reader whose system asks for reduced motion (prefers-reduced-motion, WCAG 2.3.3) sees the head
+// held still, the lips, blinks and brows moving on: the page carries the animation a second time
+// with every pose at rest (about a seventh more page a minute) when the head moves at all.
 //
 // Every text that comes from the caller (title, transcript, links) is escaped: no input can add
 // markup or script to the page. Functions here are pure and may be called from several threads.

@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <memory>
 #include <new>
+#include <utility>
 
 #include <libdeflate.h>
 
@@ -15,8 +16,13 @@ namespace {
 
 constexpr const char* kDataId = "tf-animation-data";
 
+// Between the animation's content and the still head's in the packed text.
+constexpr char kStillSeparator = '\f';
+
 // The unpacking: base64 to bytes, gunzip, the text parsed as the root's children (an HTML parser
-// puts markup set on an <svg> element into the SVG namespace).
+// puts markup set on an <svg> element into the SVG namespace); the still head's content instead
+// while the reader asks for reduced motion. The page's script holds the root, never its content,
+// so the content can be swapped under it; the root's clock keeps the time.
 constexpr const char* kUnpackHead = R"js((function () {
   "use strict";
   function run() {
@@ -26,8 +32,13 @@ constexpr const char* kUnpackTailBeforeId = R"js(  }
   var data = document.getElementById(")js";
 constexpr const char* kUnpackTail = R"js(");
   var bytes = Uint8Array.from(atob(data.textContent.trim()), function (c) { return c.charCodeAt(0); });
-  new Response(new Blob([bytes]).stream().pipeThrough(new DecompressionStream("gzip"))).text().then(function (content) {
-    document.querySelector("svg.tf-animation").innerHTML = content;
+  new Response(new Blob([bytes]).stream().pipeThrough(new DecompressionStream("gzip"))).text().then(function (text) {
+    var contents = text.split("\f");
+    var root = document.querySelector("svg.tf-animation");
+    var reduced = window.matchMedia("(prefers-reduced-motion: reduce)");
+    function fill() { root.innerHTML = contents[reduced.matches ? contents.length - 1 : 0]; }
+    fill();
+    if (contents.length > 1) reduced.addEventListener("change", fill);
     data.remove();
     run();
   });
@@ -52,19 +63,37 @@ std::string gzip(const std::string& text) {
     return packed;
 }
 
-}  // namespace
+// An animation document's root element, empty, and its content.
+struct SvgParts {
+    std::string root;
+    std::string content;
+};
 
-PackedAnimation pack_animation(const std::string& svg) {
+SvgParts split_root(const std::string& svg) {
     const std::size_t open_end = svg.find('>');
     const std::size_t close = svg.rfind("</svg>");
     if (svg.compare(0, 4, "<svg") != 0 || open_end == std::string::npos || close == std::string::npos ||
         close < open_end) {
         throw internal_error("the animation is not one <svg> element");
     }
+    return {svg.substr(0, open_end + 1) + svg.substr(close), svg.substr(open_end + 1, close - open_end - 1)};
+}
+
+}  // namespace
+
+PackedAnimation pack_animation(const std::string& svg, const std::string& still_svg) {
+    SvgParts parts = split_root(svg);
+    std::string text = std::move(parts.content);
+    if (!still_svg.empty()) {
+        SvgParts still = split_root(still_svg);
+        if (still.root != parts.root)
+            throw internal_error("the still head's animation has another root element");
+        text += kStillSeparator + still.content;
+    }
     PackedAnimation packed;
-    packed.root = svg.substr(0, open_end + 1) + svg.substr(close);
+    packed.root = std::move(parts.root);
     packed.data = std::string("<script type=\"application/gzip\" id=\"") + kDataId + "\">" +
-                  base64(gzip(svg.substr(open_end + 1, close - open_end - 1))) + "</script>\n";
+                  base64(gzip(text)) + "</script>\n";
     return packed;
 }
 

@@ -4,6 +4,13 @@
 // tolerance. The browser inflates it with DecompressionStream (Chromium 80, Firefox 113, Safari
 // 16.4: older than any Safari that plays Opus in WebM) into the animation's root element, then
 // runs the page's script.
+//
+// A page may carry the face twice: as animated, and with its head held still, which the browser
+// shows instead when the reader's system asks for reduced motion (prefers-reduced-motion: reduce,
+// WCAG 2.3.3), also when the setting changes while the page is open. The head's turn and nod are in
+// every outline's key frames (a 3D lift, rotated and projected: no transform a page could undo), so
+// the still face is a document of its own; packed in the same stream, after a form feed, which XML
+// forbids in a document and so never occurs in either.
 #ifndef TALKFACE_APPS_PACKED_ANIMATION_HPP
 #define TALKFACE_APPS_PACKED_ANIMATION_HPP
 
@@ -19,9 +26,10 @@ struct PackedAnimation {
 };
 
 // Splits an animation document (root element first, as render_animation_svg() writes it without
-// its XML declaration) into an empty root and its packed content. Deterministic: the same
-// document packs to the same bytes.
-PackedAnimation pack_animation(const std::string& svg);
+// its XML declaration) into an empty root and its packed content; `still_svg`, when not empty, is
+// the same animation with the head held still (its root element the same), packed after it.
+// Deterministic: the same documents pack to the same bytes.
+PackedAnimation pack_animation(const std::string& svg, const std::string& still_svg);
 
 // The viewBox of an animation's root element (`svg` begins with it), which render_animation_svg()
 // always writes: where the face is drawn, and the shape a page gives it.

@@ -341,6 +341,32 @@ std::string without_prolog(std::string svg) {
     return svg;
 }
 
+// The page's face and, when its head moves, the face with the head held still (every pose at rest:
+// the lips, blinks and brows as they were), which the page shows a reader whose system asks for
+// reduced motion (WCAG 2.3.3) without the page's writer having to ask for it.
+detail::PackedAnimation packed_face(const SvgAnimator& animator, const Animation& animation,
+                                    const SvgAnimationOptions& options, const ProgressCallback& progress) {
+    Animation still = animation;
+    bool moves = false;
+    for (FaceState& frame : still.frames) {
+        moves = moves || frame.pose != Pose{};
+        frame.pose = Pose{};
+    }
+    if (!moves)
+        return detail::pack_animation(
+            without_prolog(animator.render_animation_svg(animation, options, progress)), "");
+    // Two renderings of about the same work: each reports half of the whole.
+    const auto half = [&progress](double start) -> ProgressCallback {
+        if (!progress) return {};
+        return [&progress, start](double fraction, const std::string& stage) {
+            return progress(start + 0.5 * fraction, stage);
+        };
+    };
+    return detail::pack_animation(
+        without_prolog(animator.render_animation_svg(animation, options, half(0.0))),
+        without_prolog(animator.render_animation_svg(still, options, half(0.5))));
+}
+
 }  // namespace
 
 const char* web_page_app_name(WebPageApp app) {
@@ -389,12 +415,10 @@ std::string build_web_page(const SvgAnimator& animator, const Animation& animati
         SvgOptions svg_options = animator.options();
         svg_options.background.reset();
         const SvgAnimator stage_animator(animator.face(), svg_options);
-        packed = detail::pack_animation(
-            without_prolog(stage_animator.render_animation_svg(animation, options.animation, progress)));
+        packed = packed_face(stage_animator, animation, options.animation, progress);
         parts = detail::announcer_page(packed.root, animator.face(), animation, timeline, options, title, audio);
     } else {
-        packed = detail::pack_animation(
-            without_prolog(animator.render_animation_svg(animation, options.animation, progress)));
+        packed = packed_face(animator, animation, options.animation, progress);
         const std::string svg = named_face(packed.root);
         if (options.app == WebPageApp::audiobook) {
             parts = detail::audiobook_page(svg, timeline, options, title, audio);

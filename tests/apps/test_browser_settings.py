@@ -370,3 +370,52 @@ def test_a_page_served_without_byte_ranges_opens_at_its_time(chromium, demo):
         browser.evaluate("new Promise(function (done) { setTimeout(function () { done(true); }, 300); })")
         assert browser.evaluate("document.getElementById('tf-audio').currentTime") > 5
         assert browser.problems() == []
+
+
+# Where the head's outlines and the lips stand: boxes in CSS pixels.
+HEAD_AND_LIPS = """(function () {
+    function box(part) {
+        var r = document.querySelector('svg.tf-animation .' + part).getBoundingClientRect();
+        return [r.left, r.top, r.right, r.bottom];
+    }
+    return {head: ['face-contour', 'nose', 'ear-left', 'ear-right', 'hair'].map(box), lips: box('lips')};
+  })()"""
+
+
+def head_and_lips_over(browser, times):
+    """The head's and the lips' boxes at each of `times` (seconds), the speech sought there."""
+    seen = []
+    for t in times:
+        browser.evaluate("""new Promise(function (done) {
+            var audio = document.getElementById('tf-audio');
+            audio.addEventListener('seeked', function () { requestAnimationFrame(function () { done(true); }); },
+                                   { once: true });
+            audio.currentTime = %f;
+          })""" % t)
+        browser.settle()
+        seen.append(browser.evaluate(HEAD_AND_LIPS))
+    return seen
+
+
+def spread(boxes):
+    """How far the boxes' edges move, at most, in pixels."""
+    return max(max(edge) - min(edge) for edge in zip(*boxes))
+
+
+@pytest.mark.parametrize("page", ["plain", "announcer"])
+def test_a_reader_who_asks_for_reduced_motion_sees_the_head_still_and_the_lips_speak(chromium, demo, page):
+    # Under prefers-reduced-motion the head still turned, nodded and tilted (the turns and nods are in
+    # every outline's key frames): WCAG 2.3.3 asks that motion a reader did not start can be turned
+    # off. The lips keep speaking; the same page moves its head again when the setting is off.
+    times = [0.25 * k for k in range(1, 48)]
+    with chromium.page(1280, 800, media={"prefers-reduced-motion": "reduce"}) as browser:
+        browser.open(demo[page].as_uri() + "#t=0&pause")
+        still = head_and_lips_over(browser, times)
+        for part in range(5):
+            assert spread([s["head"][part] for s in still]) < 0.5, f"outline {part} of the head moves"
+        lips = [s["lips"][3] - s["lips"][1] for s in still]
+        assert max(lips) - min(lips) > 5, f"the lips' height keeps within {min(lips):.1f}-{max(lips):.1f} px"
+        browser.emulate(1280, 800)
+        moving = head_and_lips_over(browser, times)
+        assert spread([s["head"][0] for s in moving]) > 3, "the head stands still without reduced motion"
+        assert browser.problems() == []
