@@ -12,6 +12,7 @@ import tempfile
 import time
 import wave
 
+import pytest
 from PIL import Image
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
@@ -119,6 +120,15 @@ class Chromium:
         raise RuntimeError(f"{method}: no answer in 120 s")
 
 
+@pytest.fixture(scope="module")
+def chromium():
+    """The module's Chromium (a suite's conftest.py imports this fixture for its modules)."""
+    if CHROMIUM is None:
+        pytest.skip("chromium is not installed")
+    with Chromium() as shared:
+        yield shared
+
+
 class Page:
     """A tab of a Chromium in a browser context of its own, attached to over DevTools."""
 
@@ -178,6 +188,21 @@ class Page:
           })""")
         if not ready:
             raise RuntimeError(f"{url}: the page never said it was ready")
+        self.settle()
+
+    def load(self, url):
+        """Loads `url`, any document (an SVG, a page of a test's own), and waits for its load event."""
+        self.call("Page.navigate", url=url)
+        loaded = self.evaluate("""new Promise(function (done) {
+            var waited = 0;
+            (function poll() {
+              if (location.href === %s && document.readyState === "complete") return done(true);
+              if ((waited += 50) > 30000) return done(false);
+              setTimeout(poll, 50);
+            })();
+          })""" % json.dumps(url))
+        if not loaded:
+            raise RuntimeError(f"{url}: never loaded")
         self.settle()
 
     def settle(self):

@@ -1,47 +1,36 @@
-"""What a browser shows of `talkface render`: headless Chromium screenshots, checked pixel by pixel.
+"""What a browser shows of `talkface render`: headless Chromium screenshots (the module's Chromium,
+tests/apps/browser.py), checked pixel by pixel.
 
 The SVG's user space is the face's image space offset by the viewBox origin, and the window is the
 SVG's own size, so a point of the document lands on pixel (x - viewBox.x, y - viewBox.y).
 """
 import os
-import pathlib
 import re
-import shutil
 import subprocess
-import tempfile
 import xml.etree.ElementTree as ET
 
 import pytest
-from PIL import Image
+
+from browser import CHROMIUM
 
 CLI = os.environ["TALKFACE_CLI"]
 SVG_NS = "{http://www.w3.org/2000/svg}"
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 
 pytestmark = pytest.mark.skipif(CHROMIUM is None, reason="chromium is not installed")
-
-
-def screenshot(svg_path, png_path, width, height):
-    with tempfile.TemporaryDirectory() as profile:
-        subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu",
-                        "--disable-background-networking", "--disable-component-update",
-                        "--disable-sync", "--no-first-run", f"--user-data-dir={profile}",
-                        f"--screenshot={png_path}", f"--window-size={width},{height}",
-                        f"file://{svg_path}"],
-                       capture_output=True, timeout=120, check=True)
-    return Image.open(png_path).convert("RGB")
 
 
 class Rendered:
     """A rendered face: its SVG tree and its screenshot."""
 
-    def __init__(self, tmp_path, name, *args):
+    def __init__(self, chromium, tmp_path, name, *args):
         svg_path = tmp_path / f"{name}.svg"
         subprocess.run([CLI, "render", *args, "-o", str(svg_path)], check=True, timeout=60)
         self.root = ET.parse(svg_path).getroot()
         self.origin = [float(v) for v in self.root.get("viewBox").split()[:2]]
         width, height = int(self.root.get("width")), int(self.root.get("height"))
-        self.image = screenshot(svg_path, tmp_path / f"{name}.png", width, height)
+        with chromium.page(width, height) as browser:
+            browser.load(svg_path.as_uri())
+            self.image = browser.screenshot()
         assert self.image.size == (width, height)
 
     def element(self, class_name):
@@ -72,13 +61,13 @@ class Rendered:
 
 
 @pytest.fixture(scope="module")
-def open_mouth(tmp_path_factory):
-    return Rendered(tmp_path_factory.mktemp("a"), "mouth_a", "--mouth", "a")
+def open_mouth(chromium, tmp_path_factory):
+    return Rendered(chromium, tmp_path_factory.mktemp("a"), "mouth_a", "--mouth", "a")
 
 
 @pytest.fixture(scope="module")
-def closed_mouth(tmp_path_factory):
-    return Rendered(tmp_path_factory.mktemp("m"), "mouth_m", "--mouth", "m")
+def closed_mouth(chromium, tmp_path_factory):
+    return Rendered(chromium, tmp_path_factory.mktemp("m"), "mouth_m", "--mouth", "m")
 
 
 def test_skin_dominates_the_face_centre(open_mouth):

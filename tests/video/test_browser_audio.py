@@ -1,20 +1,17 @@
 """The pages' compressed audio plays in Chromium: each container that video_test's audio encoder
 test wrote (Opus in Ogg and WebM, AAC in MP4, the MP4 from memory with its index at the end) is
-loaded as a data: URI by an <audio> element and decoded by Web Audio; --dump-dom reads back what
-the page found.
+loaded as a data: URI by an <audio> element and decoded by Web Audio, on a page of its own in the
+module's Chromium (tests/apps/browser.py), which reads back what the page found.
 """
 import base64
 import os
 import pathlib
-import re
-import shutil
-import subprocess
-import tempfile
 
 import pytest
 
+from browser import CHROMIUM
+
 OUTPUT_DIR = pathlib.Path(os.environ["TALKFACE_TEST_OUTPUT_DIR"])
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 FILES = [("audio_encoder_16000.ogg", "audio/ogg; codecs=opus"),
          ("audio_encoder_44100.webm", "audio/webm; codecs=opus"),
          ("audio_encoder_48000.m4a", "audio/mp4; codecs=mp4a.40.2")]
@@ -39,15 +36,20 @@ fetch(audio.src).then(r => r.arrayBuffer())
 
 
 @pytest.mark.parametrize("name,mime", FILES)
-def test_chromium_plays_and_decodes(name, mime, tmp_path):
+def test_chromium_plays_and_decodes(chromium, name, mime, tmp_path):
     page = tmp_path / "audio.html"
     page.write_text(page_for(name, mime))
-    with tempfile.TemporaryDirectory() as profile:
-        dom = subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--mute-audio",
-                              "--no-first-run", f"--user-data-dir={profile}", "--virtual-time-budget=5000",
-                              "--dump-dom", f"file://{page}"],
-                             capture_output=True, text=True, timeout=120, check=True).stdout
-    found = dict(re.findall(r'data-([a-z]+)="([^"]*)"', re.search(r'<div id="out"[^>]*>', dom).group(0)))
+    with chromium.page(320, 240) as browser:
+        browser.load(page.as_uri())
+        found = browser.evaluate("""new Promise(function (done) {
+            var out = document.getElementById("out"), waited = 0;
+            (function poll() {
+              if ((out.hasAttribute("data-play") && out.hasAttribute("data-decoded")) || (waited += 50) > 30000)
+                return done({play: out.getAttribute("data-play"), decoded: out.getAttribute("data-decoded")});
+              setTimeout(poll, 50);
+            })();
+          })""")
+    assert found["play"] is not None and found["decoded"] is not None, found
     can_play, duration = found["play"].split(" ")
     assert can_play == "probably"
     assert abs(float(duration) - 1.5) < 0.03
