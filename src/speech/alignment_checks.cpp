@@ -89,12 +89,6 @@ constexpr double kMaxTextFitGapAboveTypical = 0.15;
 // swapped: -1.38). At -2 the pitch fits each syllable's own tone e^2 times better than any other,
 // on average.
 constexpr double kMaxRoomToneGap = -2.0;
-// The held-out halves' gap (kMaxHeldOutFitGap, alignment_checks.hpp) refuses a sentence alone only
-// from this many syllables. A line of a few syllables is no such evidence: its halves hold one to three syllables, the rest
-// of the recording has next to nothing to learn their sounds from, and a right text's halves gap by
-// up to 3.8 (bench/short_lines_bench.py, tuning lines of 1-5 syllables, espeak-ng and a person:
-// 45 of 144 right lines refused). The bench's sentences, on which the limit holds, have 6 or more.
-constexpr std::size_t kMinHeldOutSyllables = 6;
 // order_margin: in a file of one or two sentences a right text of 6 or more syllables fits its
 // speech 0.13-1.15 per frame better than the same text fits the speech with its halves swapped
 // (median 0.52, 1% under 0.22; bench/ a person's 18 conditions, tuning clips, a room's tail left

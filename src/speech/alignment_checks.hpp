@@ -122,6 +122,15 @@ constexpr double kMaxTextFitGap = 0.15;
 // are refused and 26% of wrong ones found; with two sentences 0.1% and 74% (check_held_out_fit).
 constexpr double kMaxHeldOutFitGap = 0.35;
 
+// The held-out halves' gap (kMaxHeldOutFitGap) refuses a sentence alone only from this many
+// syllables. A line of a few syllables is no such evidence: its halves hold one to three syllables,
+// the rest of the recording has next to nothing to learn their sounds from, and a right text's
+// halves gap by up to 3.8 (bench/short_lines_bench.py, tuning lines of 1-5 syllables, espeak-ng and
+// a person: 45 of 144 right lines refused). The bench's sentences, on which the limit holds, have 6
+// or more. Under it a line's own fit and rhythm are also read without the noise before its voice
+// (own_voice_share, lead_noise.hpp).
+constexpr std::size_t kMinHeldOutSyllables = 6;
+
 // Whether every sentence `poor` names fits its text as well as a free sequence of sounds does (a
 // text fit gap of at most 0) and, where it was measured, within kMaxHeldOutFitGap on models learned
 // from the rest of the recording: the rule that keeps align_cut's third alignment (a stop after a

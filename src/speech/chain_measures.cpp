@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "common/order_statistics.hpp"
+#include "speech/lead_noise.hpp"
 #include "speech/syllable_placement.hpp"
 #include "speech/text_fit.hpp"
 
@@ -46,12 +47,27 @@ void measure_chain(const ChainMeasureInputs& in, EmissionScores& scores, Viterbi
     if (is_own_model && in.spoken_sentences == 1)
         metrics[chain.syllables.back()->sentence].unspoken_tail_frames =
             unspoken_tail_frames(chain, scores, workspace);
+    const std::vector<std::size_t> syllables = syllables_per_sentence(in.transcript);
     for (const auto& [k, share] : split_by_sentence(chain, path)) {
         metrics[k].order_margin = margin;
         const auto stretches = stretches_of(chain, share);
         if (is_own_model) {
             metrics[k].own_fit_gap = metrics[k].fit_gap;
             metrics[k].length_spread = syllable_length_spread(stretches);
+            // A line of a few syllables is judged on its own fit and rhythm with the noise before
+            // its voice left out as well, and refused only where both readings refuse it: the
+            // noise is no evidence of its text (lead_noise.hpp). A longer line's first syllable
+            // weighs little in either.
+            if (syllables[k] < kMinHeldOutSyllables) {
+                const OwnVoiceShare own =
+                    own_voice_share(share, stretches, in.loudness, chain.searched.first_frame);
+                if (own.has_lead_noise) {
+                    metrics[k].own_fit_gap = std::min(
+                        metrics[k].own_fit_gap, text_fit_gap(chain, own.path, scores, in.forgiven_run_on));
+                    metrics[k].length_spread =
+                        std::min(metrics[k].length_spread, syllable_length_spread(own.stretches));
+                }
+            }
         }
         if (in.is_checked)
             check_path(stretches, in.loudness, scores, chain.searched.first_frame, k, spans[k],
