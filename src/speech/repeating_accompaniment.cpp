@@ -71,14 +71,17 @@ std::vector<bool> repeated_hits_between_pauses(const std::vector<float>& activit
         if (activity_db[t] >= speech_median_db) return false;
         for (const double multiple : kRepeatMultiples) {
             float predicted = std::numeric_limits<float>::infinity();
+            std::size_t predictions = 0;
             for (std::size_t k = 1; k <= kRepeatsEachSide; ++k) {
                 const auto offset = static_cast<std::ptrdiff_t>(std::lround(static_cast<double>(k) * multiple * period_frames));
                 for (const std::ptrdiff_t at : {static_cast<std::ptrdiff_t>(t) - offset, static_cast<std::ptrdiff_t>(t) + offset}) {
                     if (at < 1 || at + 1 >= count) continue;
                     const auto i = static_cast<std::size_t>(at);
                     predicted = std::min(predicted, std::max({activity_db[i - 1], activity_db[i], activity_db[i + 1]}));
+                    ++predictions;
                 }
             }
+            if (predictions == 1 && predicted >= speech_median_db) continue;
             if (activity_db[t] <= predicted + kRepeatMarginDb) return true;
         }
         return false;

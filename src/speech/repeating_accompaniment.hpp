@@ -30,6 +30,11 @@ constexpr double kBeatCorrelation = 0.18;
 constexpr std::size_t kRepeatsEachSide = 2;
 constexpr double kRepeatMultiples[] = {1.0, 2.0, 4.0};
 // A frame no more than this louder than the quietest of its predictions is the accompaniment's.
+// Where a multiple has only one prediction inside the recording (a long period's fourth multiple
+// runs past its ends), the quietest is that frame; where it is as loud as the median speech frame it
+// is a syllable's, no hit, and the multiple predicts nothing: else every quieter frame a whole
+// number of bars from a syllable reads as a hit (bench/ human r-music tuning-008's 故事, taken for
+// the beat by one frame of sentence 5 four bars on: bench/README.md, session 37 (music)).
 constexpr float kRepeatMarginDb = 1.5f;
 
 // The repeat of the recording's accompaniment in frames (fractional), or 0 where its high band's
@@ -39,9 +44,10 @@ double accompaniment_period_frames(const FeatureTrack& track, float high_floor_d
 // Per frame: whether it belongs to a run of frames at or above `threshold_db` of the loudness
 // profile's smoothed activity, between two frames below it (or the recording's ends), that the
 // accompaniment repeating every `period_frames` explains in whole: each frame is no more than
-// kRepeatMarginDb louder than the quietest of its predictions, and quieter than the median speech
-// frame. A hit of the beat inside a pause, not a syllable's frame that the beat happens to match
-// (a stretch of speech is never all explained). All false when the period is 0.
+// kRepeatMarginDb louder than the quietest of its predictions (a multiple's lone prediction as loud
+// as the median speech frame predicting nothing), and quieter than the median speech frame. A hit
+// of the beat inside a pause, not a syllable's frame that the beat happens to match (a stretch of
+// speech is never all explained). All false when the period is 0.
 std::vector<bool> repeated_hits_between_pauses(const std::vector<float>& activity_db, float threshold_db,
                                                double period_frames);
 

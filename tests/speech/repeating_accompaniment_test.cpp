@@ -2,7 +2,7 @@
 // change as a voice does, but they repeat with the beat. The repeat is found in a kit's onsets and
 // not in noise or in speech alone, and the pauses between sentences under the kit at SNR 15 dB are
 // found whole. A kit alone before the voice and after it, as loud as the voice, is no speech
-// (unvoiced_beat.hpp).
+// (unvoiced_beat.hpp). One syllable a whole number of bars away is no repeat of the beat.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -90,6 +90,28 @@ TEST_SUITE("speech") {
         CHECK(std::abs(eighths - std::round(eighths)) * kEighthS * detail::kFramesPerSecond < 0.5);
         CHECK(detail::accompaniment_period_frames(features_of(noise, rate), -100.0f) == 0.0);
         CHECK(detail::accompaniment_period_frames(features_of(speech, rate), -100.0f) == 0.0);
+    }
+
+    TEST_CASE("one syllable a whole number of bars away is no beat's repeat") {
+        // A period of 100 frames: the run at frames 300-309, quieter than the speech, has pauses
+        // one and two periods away, and four periods on (the fourth multiple's only prediction
+        // inside 900 frames) frame 700, a syllable of the speech at 650-749. On main that one
+        // frame explained the run as a hit of the beat.
+        constexpr float kThresholdDb = 10.0f;
+        std::vector<float> activity(900, 5.0f);
+        std::fill(activity.begin() + 300, activity.begin() + 310, 15.0f);
+        std::fill(activity.begin() + 650, activity.begin() + 750, 25.0f);
+        const std::vector<bool> repeated =
+            detail::repeated_hits_between_pauses(activity, kThresholdDb, 100.0);
+        CHECK(std::none_of(repeated.begin() + 300, repeated.begin() + 310, [](bool hit) { return hit; }));
+
+        // The same run four periods from a hit as quiet as itself (699-711), the speech elsewhere:
+        // the one prediction is the beat's, and explains it.
+        std::fill(activity.begin() + 650, activity.begin() + 750, 5.0f);
+        std::fill(activity.begin() + 699, activity.begin() + 712, 15.0f);
+        std::fill(activity.begin() + 800, activity.begin() + 900, 25.0f);
+        const std::vector<bool> hit = detail::repeated_hits_between_pauses(activity, kThresholdDb, 100.0);
+        CHECK(std::all_of(hit.begin() + 300, hit.begin() + 310, [](bool is_hit) { return is_hit; }));
     }
 
     TEST_CASE("the pauses between sentences under a drum kit are found whole") {
