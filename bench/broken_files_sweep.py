@@ -11,7 +11,8 @@ SOURCE is a short good recording (a few seconds, its TRANSCRIPT the words said):
 encode it as WAV, FLAC, Ogg Vorbis, Ogg Opus, MP3 at 22.05 and 44.1 kHz, M4A (AAC), MP4, MOV, MKV
 and WebM videos with its sound, and a video without sound; each is then damaged the ways files are
 (cut at ten points, from inside the header to mid-file; empty; its header alone; bytes flipped at
-random; a block of zeros mid-file; a wrong extension; two copies joined; a huge stated length),
+random; a block of zeros mid-file; a wrong extension; two copies joined; a huge stated length), or
+joined to another recording (the source played backwards, encoded alike),
 beside a WAV stating 0 channels or rate 0, a text file named .mp3 and an HTML error page named .m4a.
 Deterministic: the damage is seeded by the file's name; the encoders run with -bitexact.
 Writes OUT_DIR/files/ (the inputs), OUT_DIR/sweep.tsv (one row a run) and prints the tally.
@@ -168,6 +169,23 @@ def damaged(name, data):
     return files
 
 
+def joined_to_another(source, folder, goods):
+    """name -> (file name, bytes): each good file followed by the same encoding of another recording (the
+    source played backwards: another sound of the same voice, rate and length)."""
+    other_folder = os.path.join(folder, "..", "another")
+    os.makedirs(other_folder, exist_ok=True)
+    backwards = os.path.join(other_folder, "backwards.wav")
+    subprocess.run(["sox", source, backwards, "reverse"], check=True)
+    others = encode_goods(backwards, other_folder)
+    out = {}
+    for name, path in goods.items():
+        if name == "silent_video.mp4":
+            continue
+        stem, ext = os.path.splitext(name)
+        out[name] = ("%s.joined_another%s" % (stem, ext), open(path, "rb").read() + open(others[name], "rb").read())
+    return out
+
+
 def standalone():
     html = (b"<!DOCTYPE html>\n<html><head><title>404 Not Found</title></head>\n<body><h1>Not Found</h1>\n"
             b"<p>The requested URL /recordings/lesson3.m4a was not found on this server.</p>\n</body></html>\n")
@@ -200,7 +218,7 @@ def classify(good, kind, returncode, message, warnings, path):
         if len(after) < 10 or GENERIC.search(after):
             return "message without a reason"
         # A join read on as one recording is refused as not its text: the refusal should say why.
-        if kind == "joined" and "sound track" not in after and not re.search(r"joined|recur", after):
+        if kind.startswith("joined") and "sound track" not in after and not re.search(r"joined|recur", after):
             return "refused, the join unnamed"
         return "refused, named"
     # Two copies joined are read as the first (a warning must say the rest was not read).
@@ -250,13 +268,18 @@ def main():
     folder = os.path.join(args.out, "files")
     os.makedirs(folder, exist_ok=True)
     cases = []  # (good, kind, path)
-    for good, path in encode_goods(os.path.abspath(args.source), folder).items():
+    goods = encode_goods(os.path.abspath(args.source), folder)
+    for good, path in goods.items():
         data = open(path, "rb").read()
         cases.append((good, "good", path))
         for kind, (name, payload) in sorted(damaged(good, data).items()):
             with open(os.path.join(folder, name), "wb") as out:
                 out.write(payload)
             cases.append((good, kind, os.path.join(folder, name)))
+    for good, (name, payload) in joined_to_another(os.path.abspath(args.source), folder, goods).items():
+        with open(os.path.join(folder, name), "wb") as out:
+            out.write(payload)
+        cases.append((good, "joined_another", os.path.join(folder, name)))
     for kind, (name, payload) in standalone().items():
         with open(os.path.join(folder, name), "wb") as out:
             out.write(payload)

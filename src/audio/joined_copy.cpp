@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "audio/mp3_restart.hpp"
 #include "audio/mp3_toc.hpp"
 #include "audio/repeated_sound.hpp"
 #include "common/number_format.hpp"
@@ -41,11 +42,6 @@ std::optional<std::uint64_t> find_in_blocks(
     return std::nullopt;
 }
 
-// The size of a Layer III frame's side information, which its Xing or Info tag follows.
-std::size_t side_info_bytes(const Mp3FrameHeader& header) {
-    return header.version == 3 ? (header.is_mono ? 17 : 32) : (header.is_mono ? 9 : 17);
-}
-
 // The most bytes from a frame's start to its Xing or Info tag's end.
 constexpr std::size_t kMostTagEnd = 4 + 32 + 4;
 
@@ -59,7 +55,7 @@ std::optional<std::size_t> tag_frame_in(std::string_view bytes) {
                 const std::size_t frame = at - 4 - side_info;
                 const auto header = read_mp3_frame_header(bytes.substr(frame, 4));
                 const std::string_view side = bytes.substr(frame + 4, side_info);
-                if (header && side_info_bytes(*header) == side_info &&
+                if (header && mp3_side_info_bytes(*header) == side_info &&
                     std::all_of(side.begin(), side.end(), [](char byte) { return byte == 0; }))
                     return frame;
             }
@@ -101,7 +97,7 @@ std::optional<std::uint64_t> past_stated_mp3_bytes(std::ifstream& in) {
     if (!first) return std::nullopt;
     const auto& [first_frame, header] = *first;
     std::array<char, 16> tag{};  // "Xing", its flags, its frame count, its byte count
-    in.seekg(static_cast<std::streamoff>(first_frame + 4 + side_info_bytes(header)));
+    in.seekg(static_cast<std::streamoff>(first_frame + 4 + mp3_side_info_bytes(header)));
     if (!in.read(tag.data(), tag.size())) return std::nullopt;
     const std::string_view fields(tag.data(), tag.size());
     if (fields.substr(0, 4) != "Xing" && fields.substr(0, 4) != "Info") return std::nullopt;
@@ -121,6 +117,29 @@ std::optional<std::uint64_t> past_stated_mp3_bytes(std::ifstream& in) {
     const std::string_view after(next.data(), next.size());
     if (after.substr(0, 3) != "ID3" && !read_mp3_frame_header(after)) return std::nullopt;
     return end;
+}
+
+// The first byte past a FLAC's start where a second FLAC stream starts: its "fLaC" and the header of
+// the STREAMINFO block every stream opens with (its type 0 and length 34, whether or not it is the
+// last metadata block), 8 bytes no frame's sound holds by chance. A second recording's STREAMINFO
+// states its own length, frame sizes and checksum, so its first 32 bytes are not the first's.
+std::optional<std::uint64_t> second_flac_stream_byte(std::ifstream& in) {
+    std::array<char, 4> signature{};
+    in.clear();
+    in.seekg(0);
+    if (!in.read(signature.data(), signature.size()) || std::string_view(signature.data(), 4) != "fLaC")
+        return std::nullopt;
+    constexpr std::size_t kStreamHeader = 8;
+    return find_in_blocks(in, 4, kStreamHeader - 1, [](std::string_view block) -> std::optional<std::size_t> {
+        for (std::size_t at = block.find("fLaC"); at != std::string_view::npos;
+             at = block.find("fLaC", at + 1)) {
+            const std::string_view header = block.substr(at + 4, 4);
+            if (header.size() == 4 && (static_cast<unsigned char>(header[0]) & 0x7F) == 0 &&
+                header.substr(1) == std::string_view("\0\0\x22", 3))
+                return at;
+        }
+        return std::nullopt;
+    });
 }
 
 }  // namespace
@@ -151,6 +170,11 @@ std::optional<std::string> describe_joined_copy(const std::string& path) {
         return "its first " + std::to_string(kOpeningBytes) + " bytes (its header) recur at byte " +
                std::to_string(*second) + joined;
     std::ifstream in(path, std::ios::binary);
+    if (const auto second = second_flac_stream_byte(in))
+        return "a second FLAC stream header (\"fLaC\" and its STREAMINFO block, which open a recording) "
+               "starts "
+               "at byte " +
+               std::to_string(*second) + joined;
     if (const auto second = second_mp3_tag_frame_byte(in))
         return "a second MP3 header frame (a Xing or Info tag, which an encoder writes once, in a "
                "recording's first frame) starts at byte " +
@@ -168,6 +192,12 @@ std::optional<std::string> describe_joined_copy(const std::string& path) {
                "begins at " +
                seconds(repeat->repeat_frame - repeat->original_frame) + to_first;
     }
+    if (const auto restart = restarted_mp3_stream(path))
+        return "its MP3 frame at byte " + std::to_string(restart->byte) + " (" +
+               format_fixed(restart->seconds, 3) + " s) begins its data afresh, throwing away the " +
+               std::to_string(restart->unused_bytes) +
+               " bytes the frames before it left free for it, as only a recording's first frame does" +
+               joined;
     return std::nullopt;
 }
 

@@ -28,12 +28,13 @@ std::optional<std::uint64_t> repeated_opening_byte(const std::string& path);
 
 // "its first 32 bytes (its header) recur at byte 38334: a second copy of the recording ...": what a
 // refusal of the text of the file at `path` says of a second recording joined to it, or nullopt: its
-// opening bytes recurring (repeated_opening_byte), or, in an MP3, a second frame holding the Xing or
-// Info tag an encoder writes once, in a recording's first frame (an MP3 with no ID3 tag, or two
-// recordings whose tags differ), or, where no bytes tell it, its decoded sound repeating itself to
-// its end (repeated_sound: an MP3 with neither tag, as sox writes it, joined to itself). Asked only
-// where the text's fit is not vouched for (speech_aligner.cpp): the search reads the whole file (a
-// 10 h FLAC is 1 GB), and a join read on as one recording shows as a text that does not fit it.
+// opening bytes recurring (repeated_opening_byte), or a second FLAC stream's header, or, in an MP3, a second
+// frame holding the Xing or Info tag an encoder writes once, in a recording's first frame (an MP3 with no ID3
+// tag, or two recordings whose tags differ), or, where no bytes tell it, its decoded sound repeating itself
+// to its end (repeated_sound: an MP3 with neither tag, as sox writes it, joined to itself), or an MP3 frame
+// starting a second stream's bit reservoir afresh (restarted_mp3_stream: sox's MP3s of two recordings
+// joined). Asked only where the text's fit is not vouched for (speech_aligner.cpp): the search reads the
+// whole file (a 10 h FLAC is 1 GB), and a join read on as one recording shows as a text that does not fit it.
 std::optional<std::string> describe_joined_copy(const std::string& path);
 
 }  // namespace talkface::detail

@@ -103,21 +103,27 @@ std::optional<Mp3FrameHeader> read_mp3_frame_header(std::string_view bytes) {
     const int rate_index = (third >> 2) & 3;
     if (header.version == 1 || layer != 1 || bitrate_index == 15 || rate_index == 3) return std::nullopt;
     header.is_mono = ((static_cast<unsigned char>(bytes[3]) >> 6) & 3) == 3;
+    header.has_crc = (second & 1) == 0;
     const bool is_mpeg1 = header.version == 3;
     header.samples = is_mpeg1 ? 1152 : 576;
     constexpr std::array<int, 15> kMpeg1Kbps{0,   32,  40,  48,  56,  64,  80, 96,
                                              112, 128, 160, 192, 224, 256, 320};
     constexpr std::array<int, 15> kMpeg2Kbps{0, 8, 16, 24, 32, 40, 48, 56, 64, 80, 96, 112, 128, 144, 160};
     constexpr std::array<int, 3> kMpeg1Hz{44100, 48000, 32000};
-    const int rate_hz = kMpeg1Hz[static_cast<std::size_t>(rate_index)] >> (is_mpeg1              ? 0
-                                                                           : header.version == 2 ? 1
-                                                                                                 : 2);
+    header.rate_hz = kMpeg1Hz[static_cast<std::size_t>(rate_index)] >> (is_mpeg1              ? 0
+                                                                        : header.version == 2 ? 1
+                                                                                              : 2);
     const int kbps = (is_mpeg1 ? kMpeg1Kbps : kMpeg2Kbps)[static_cast<std::size_t>(bitrate_index)];
     // A slot is a byte in Layer III: 144 of them a kb/s per kHz in MPEG-1, 72 in MPEG-2 and 2.5.
     const int padding = (third >> 1) & 1;
     if (kbps > 0)
-        header.bytes = static_cast<std::size_t>((is_mpeg1 ? 144 : 72) * kbps * 1000 / rate_hz + padding);
+        header.bytes =
+            static_cast<std::size_t>((is_mpeg1 ? 144 : 72) * kbps * 1000 / header.rate_hz + padding);
     return header;
+}
+
+std::size_t mp3_side_info_bytes(const Mp3FrameHeader& header) {
+    return header.version == 3 ? (header.is_mono ? 17 : 32) : (header.is_mono ? 9 : 17);
 }
 
 double Mp3Toc::sample_at(std::int64_t file_byte) const {
@@ -153,10 +159,9 @@ std::optional<Mp3Toc> read_mp3_toc(std::string_view file, std::int64_t file_size
     if (start + 4 > search_end) return std::nullopt;
     const std::optional<Mp3FrameHeader> header = read_mp3_frame_header(file.substr(start, 4));
     if (!header) return std::nullopt;
-    // The Xing header follows the frame's header and its side information, whose size these decide.
-    const std::size_t side_info =
-        header->version == 3 ? (header->is_mono ? 17 : 32) : (header->is_mono ? 9 : 17);
-    if (auto xing = read_xing_toc(file, file_size, start, *header, start + 4 + side_info)) return xing;
+    // The Xing header follows the frame's header and its side information.
+    if (auto xing = read_xing_toc(file, file_size, start, *header, start + 4 + mp3_side_info_bytes(*header)))
+        return xing;
     return read_vbri_toc(file, start, *header);
 }
 

@@ -22,12 +22,18 @@ namespace talkface::detail {
 struct Mp3FrameHeader {
     int version = 0;  // 3 MPEG-1, 2 MPEG-2, 0 MPEG-2.5
     bool is_mono = false;
+    bool has_crc = false;  // a 16-bit check follows the header, before the side information
+    int rate_hz = 0;
     std::size_t samples = 0;  // a frame's samples: 1152 (MPEG-1), 576
     std::size_t bytes = 0;    // the frame's own size, padding byte included; 0 in free format
 };
 
 // The header at the start of `bytes` (at least 4), if it is an MPEG Layer III frame's.
 std::optional<Mp3FrameHeader> read_mp3_frame_header(std::string_view bytes);
+
+// The size of a Layer III frame's side information, after its header (and its check, if it has one):
+// where its main data's first byte lies, what Xing, Info and LAME tags follow.
+std::size_t mp3_side_info_bytes(const Mp3FrameHeader& header);
 
 struct Mp3Toc {
     // A byte of the file and the sample the table places there.

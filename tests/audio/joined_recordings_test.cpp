@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "audio/audio_source.hpp"
+#include "audio/mp3_restart.hpp"
 #include "audio/repeated_sound.hpp"
 #include "common/made_by_command.hpp"
 #include "common/test_paths.hpp"
@@ -136,6 +137,54 @@ TEST_SUITE("joined recordings") {
                                                        "ffmpeg -nostdin -loglevel error -y -f lavfi -i "
                                                        "sine=frequency=1000:sample_rate=16000:duration=3");
         CHECK_FALSE(detail::repeated_sound(tone));
+    }
+
+    TEST_CASE(
+        "two different MP3s of frames alone joined are named by the second's bit reservoir starting afresh "
+        "where the text is refused") {
+        // Of one rate and bit rate, with no ID3 or Xing tag (as sox writes them): the decoder reads the
+        // second recording's frames on as the first's, and no bytes or sound recur.
+        const std::string options =
+            "-c:a libmp3lame -b:a 32k -write_xing 0 -id3v2_version 0 -fflags +bitexact -f mp3";
+        const std::string one = ffmpeg_made("bare_32k.mp3", options);
+        const std::string other = test::made_by_command(
+            "joined_second_two_sentences_32k.mp3",
+            "ffmpeg -nostdin -loglevel error -y -i '" + speech_clip("two_sentences.wav") + "' " + options);
+        const std::string path = joined("bare_joined_another.mp3", one, other);
+        const std::string refusal = refusal_of_one_sentence(path);
+        CHECK_MESSAGE(refusal.find("(the file: its MP3 frame at byte " + std::to_string(file_bytes(one)) +
+                                   " (") != std::string::npos,
+                      refusal);
+        CHECK_MESSAGE(refusal.find(" s) begins its data afresh, throwing away the ") != std::string::npos,
+                      refusal);
+        CHECK_MESSAGE(
+            refusal.find("as only a recording's first frame does: a second copy of the recording, or a "
+                         "second recording, begins there") != std::string::npos,
+            refusal);
+        const auto restart = detail::restarted_mp3_stream(path);
+        REQUIRE(restart);
+        CHECK(restart->byte == file_bytes(one));
+        // Neither recording alone starts afresh after its first frame.
+        CHECK_FALSE(detail::restarted_mp3_stream(one));
+        CHECK_FALSE(detail::restarted_mp3_stream(other));
+    }
+
+    TEST_CASE(
+        "two different FLAC recordings joined are named by the second's stream header where the text is "
+        "refused") {
+        const std::string one = ffmpeg_made("one_sentence.flac", "-fflags +bitexact -f flac");
+        const std::string other =
+            test::made_by_command("joined_second_two_sentences.flac",
+                                  "ffmpeg -nostdin -loglevel error -y -i '" +
+                                      speech_clip("two_sentences.wav") + "' -fflags +bitexact -f flac");
+        const std::string refusal = refusal_of_one_sentence(joined("flac_joined_another.flac", one, other));
+        CHECK_MESSAGE(
+            refusal.find("(the file: a second FLAC stream header (\"fLaC\" and its STREAMINFO block, which "
+                         "open a recording) starts at byte " +
+                         std::to_string(file_bytes(one)) +
+                         ": a second copy of the recording, or a second "
+                         "recording, begins there") != std::string::npos,
+            refusal);
     }
 
     TEST_CASE("an AVI's OpenDML extension (a RIFF AVIX after the first RIFF) is no second WAV") {

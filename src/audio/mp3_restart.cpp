@@ -1,0 +1,146 @@
+#include "audio/mp3_restart.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <string_view>
+
+#include "audio/mp3_toc.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+// The most bytes read of a frame: its header, check and side information, and the name of a tag that
+// may follow them (Xing or Info), or follow the header 32 bytes on (VBRI).
+constexpr std::size_t kMostFrameHead = 4 + 2 + 32 + 4;
+
+// A frame that starts afresh carries sound, or none: a frame holding its scale factors alone (20-22
+// bits in FFmpeg's LAME frames of near silence, which begin at their own byte) is no restart. A frame
+// of none (digital silence) points where its data would begin: LAME as sox runs it points at the
+// whole reservoir, so a stream's first empty frame points at its own area, and the next frame's data
+// begins there; LAME as FFmpeg runs it writes 0 in every empty frame, and the frame after one points
+// back past it, at the whole reservoir, as far as its 8 or 9 bits reach.
+constexpr std::size_t kLeastSoundBits = 128;
+
+// The fewest reservoir bytes left unused that a restart throws away: a frame's main data ends
+// within a byte (its bits are not padded), and an encoder that starts afresh leaves many more (LAME's
+// last frames of a stream: 100-255 in sox's and FFmpeg's files).
+constexpr std::size_t kLeastUnusedBytes = 8;
+
+// What a Layer III frame's side information says of its main data: where it begins (bytes back
+// from the frame's own main data) and how many bits it takes, every granule and channel summed.
+struct MainData {
+    std::size_t begin_back = 0;
+    std::size_t bits = 0;
+};
+
+// `side` (mp3_side_info_bytes(header) bytes) read field by field, most significant bit first:
+// main_data_begin (9 bits in MPEG-1, 8 in MPEG-2 and 2.5), the private bits and (MPEG-1) the scale
+// factor selection, then for each granule (2 in MPEG-1, 1) and channel, part2_3_length (12 bits)
+// and the rest of that channel's fields (47 bits in MPEG-1, 51).
+MainData read_main_data(std::string_view side, const Mp3FrameHeader& header) {
+    std::size_t bit = 0;
+    const auto take = [&](std::size_t count) {
+        std::size_t value = 0;
+        for (std::size_t k = 0; k < count; ++k, ++bit)
+            value = value << 1 | ((static_cast<unsigned char>(side[bit / 8]) >> (7 - bit % 8)) & 1);
+        return value;
+    };
+    const bool is_mpeg1 = header.version == 3;
+    const std::size_t channels = header.is_mono ? 1 : 2;
+    MainData data;
+    data.begin_back = take(is_mpeg1 ? 9 : 8);
+    bit += is_mpeg1 ? (header.is_mono ? 5 : 3) + 4 * channels : channels;
+    for (std::size_t granule = 0; granule < (is_mpeg1 ? 2U : 1U); ++granule)
+        for (std::size_t channel = 0; channel < channels; ++channel) {
+            data.bits += take(12);
+            bit += is_mpeg1 ? 47 : 51;
+        }
+    return data;
+}
+
+// A file's bytes read a block at a time, so a walk from frame to frame reads each byte once.
+class BlockReader {
+public:
+    explicit BlockReader(const std::string& path) : in_(path, std::ios::binary) {}
+
+    // Up to `count` of the file's bytes from `at` on (fewer at its end), valid until the next call.
+    std::string_view at(std::uint64_t at, std::size_t count) {
+        constexpr std::size_t kBlockBytes = 1 << 16;
+        if (at < start_ || at + count > start_ + block_.size()) {
+            block_.resize(std::max(kBlockBytes, count));
+            in_.clear();
+            in_.seekg(static_cast<std::streamoff>(at));
+            in_.read(block_.data(), static_cast<std::streamsize>(block_.size()));
+            block_.resize(static_cast<std::size_t>(in_.gcount()));
+            start_ = at;
+        }
+        return std::string_view(block_).substr(static_cast<std::size_t>(at - start_), count);
+    }
+
+private:
+    std::ifstream in_;
+    std::string block_;
+    std::uint64_t start_ = 0;
+};
+
+bool same_stream(const Mp3FrameHeader& first, const Mp3FrameHeader& frame) {
+    return frame.version == first.version && frame.rate_hz == first.rate_hz && frame.is_mono == first.is_mono;
+}
+
+}  // namespace
+
+std::optional<Mp3Restart> restarted_mp3_stream(const std::string& path) {
+    BlockReader file(path);
+    std::uint64_t at = after_id3(file.at(0, 10));
+    const auto first = read_mp3_frame_header(file.at(at, 4));
+    if (!first || first->bytes == 0) return std::nullopt;
+
+    // In the bytes of the frames' main data areas (each frame's bytes past its side information)
+    // laid end to end: where the current frame's area starts, and where the main data before it ends.
+    std::uint64_t area_start = 0;
+    std::optional<std::uint64_t> data_end;
+    std::size_t frames_before = 0;
+    // A restart, kept once a frame follows it: an empty frame's, once the next frame's data begins
+    // where the empty frame's area began.
+    std::optional<Mp3Restart> candidate;
+    std::optional<std::size_t> next_begin_back;
+    while (true) {
+        std::string_view bytes = file.at(at, kMostFrameHead);
+        if (bytes.substr(0, 3) == "ID3") {
+            at += after_id3(file.at(at, 10));
+            bytes = file.at(at, kMostFrameHead);
+        }
+        const auto header = read_mp3_frame_header(bytes);
+        if (!header || header->bytes == 0 || !same_stream(*first, *header)) return std::nullopt;
+        const std::size_t side_start = 4 + (header->has_crc ? 2 : 0);
+        const std::size_t side_bytes = mp3_side_info_bytes(*header);
+        if (bytes.size() < side_start + side_bytes + 4 || header->bytes < side_start + side_bytes)
+            return std::nullopt;
+        const std::string_view after_side = bytes.substr(side_start + side_bytes, 4);
+        // An encoder's header frame (a Xing, Info or VBRI tag) holds no sound, nor a reservoir.
+        const bool is_tag_frame =
+            after_side == "Xing" || after_side == "Info" || bytes.substr(36, 4) == "VBRI";
+        if (!is_tag_frame) {
+            const MainData data = read_main_data(bytes.substr(side_start, side_bytes), *header);
+            if (candidate && (!next_begin_back || data.begin_back == *next_begin_back)) return candidate;
+            candidate.reset();
+            if (data.begin_back > area_start) return std::nullopt;  // data before the stream's start
+            const std::uint64_t begin = area_start - data.begin_back;
+            const std::size_t area = header->bytes - side_start - side_bytes;
+            if (data_end && data.begin_back == 0 && begin >= *data_end + kLeastUnusedBytes &&
+                (data.bits >= kLeastSoundBits || data.bits == 0)) {
+                candidate =
+                    Mp3Restart{at, static_cast<double>(frames_before * first->samples) / first->rate_hz,
+                               static_cast<std::size_t>(begin - *data_end)};
+                next_begin_back = data.bits == 0 ? std::optional<std::size_t>(area) : std::nullopt;
+            }
+            data_end = begin + (data.bits + 7) / 8;
+            area_start += area;
+        }
+        ++frames_before;
+        at += header->bytes;
+    }
+}
+
+}  // namespace talkface::detail
