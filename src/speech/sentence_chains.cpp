@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "speech/level_line.hpp"
+#include "speech/noise_reach.hpp"
 #include "speech/room_closures.hpp"
 
 namespace talkface::detail {
@@ -54,6 +55,13 @@ constexpr std::size_t kRingingFitFrames = 30;
 constexpr std::size_t kLeastRingingFitFrames = 8;
 // Past the end of a voice in a room, the search reaches only this far into the tail.
 constexpr std::size_t kTailEdgeFrames = 5;
+// Outside a room a fall past kTailFallDb is the voice's own quiet end (a nasal coda's murmur, the
+// coder's tail through a telephone band), which falls on to the noise between the sentences: the
+// voice has stopped where the level stays at or under the noise's reach (steady_noise_reach of the
+// recording's pauses, which the noise alone passes one frame in ten) this many frames running.
+// (bench/README.md Session 37 (phoneend), the phone kinds, tuning boundaries p-speex8, p-g726,
+// p-mp3: 1 frame 173, 173, 171; 3 and 5 frames 173, 174, 172; main 168, 169, 164.)
+constexpr std::size_t kQuietFrames = 3;
 // What the silence at each edge of a recording cut to its sound may take: a phone's coder puts
 // the sound a few ms after the file's start and ramps into it over its first 20 ms frame (AMR-NB),
 // and its band limit smears the onset. One frame held the phone's first syllables to the ramp
@@ -102,6 +110,27 @@ std::size_t speech_frames(const LoudnessProfile& loudness, const FrameSpan& span
     return frames;
 }
 
+// The level the recording's noise stays under in its pauses, whole band (steady_noise_reach).
+float pauses_noise_reach(const FeatureTrack& track, const LoudnessProfile& loudness) {
+    std::vector<float> levels;
+    for (const FrameSpan& pause : loudness.pauses)
+        for (std::size_t t = pause.first_frame; t < std::min(pause.end_frame, track.frame_count); ++t)
+            levels.push_back(track.at(t, kEnergyDb));
+    return steady_noise_reach(std::move(levels));
+}
+
+// Where a voice's quiet end from `mark` on has fallen into the noise: the first of kQuietFrames
+// frames running at or under `noise_reach_db`; `mark` where there are none before `end` (music or
+// another voice on after it: nothing tells where the voice stopped).
+std::size_t end_in_noise(const FeatureTrack& track, std::size_t mark, std::size_t end, float noise_reach_db) {
+    std::size_t run = 0;
+    for (std::size_t t = mark; t < end; ++t) {
+        run = track.at(t, kEnergyDb) <= noise_reach_db ? run + 1 : 0;
+        if (run == kQuietFrames) return t + 1 - kQuietFrames;
+    }
+    return mark;
+}
+
 }  // namespace
 
 std::vector<SentenceChain> group_chains(const Timeline& transcript, const SentenceCut& cut,
@@ -134,6 +163,19 @@ std::vector<SentenceChain> group_chains(const Timeline& transcript, const Senten
 }
 
 void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness, std::vector<SentenceChain>& chains) {
+    // A fall past kTailFallDb is a room's tail only where the recording's sentences ring on in the
+    // median (is_room); elsewhere it is a voice's own quiet end (a nasal coda whose murmur a
+    // telephone band takes away, bench/README.md Session 36 (bound)): the last syllable keeps it
+    // to where it falls into the noise.
+    for (SentenceChain& chain : chains) {
+        chain.tail_frames =
+            chain.speech.end_frame - end_before_tail(track, chain.speech.first_frame, chain.speech.end_frame);
+        chain.ends_in_tail = chain.tail_frames >= kRoomTailFrames;
+    }
+    const bool rings = is_room(chains);
+    for (SentenceChain& chain : chains) chain.ends_before_tail = rings;
+    const float noise_reach_db =
+        rings ? std::numeric_limits<float>::infinity() : pauses_noise_reach(track, loudness);
     // Edges reach into the pauses around the sentence, at most halfway to its neighbours.
     for (std::size_t w = 0; w < chains.size(); ++w) {
         SentenceChain& chain = chains[w];
@@ -153,13 +195,17 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
             if (breath.first_frame >= speech.end_frame) upper = std::min(upper, breath.first_frame);
         }
         chain.searched.first_frame = std::max(lower, speech.first_frame > kEdgeFrames ? speech.first_frame - kEdgeFrames : 0);
-        // A sentence that ends in a room's tail is searched only a little past the voice's end, and
-        // its vowels are scaled to the voiced part: the tail is not speech to spread them over.
-        const std::size_t voiced_end = end_before_tail(track, speech.first_frame, speech.end_frame);
-        chain.tail_frames = speech.end_frame - voiced_end;
-        chain.ends_in_tail = chain.tail_frames >= kRoomTailFrames;
+        // A sentence that ends in a room's tail, or quietly, is searched only a little past the voice's
+        // end, and its vowels are scaled to the voiced part: the tail is not speech to spread them
+        // over, and a path given the quiet end to place slides the sentence's syllables into it
+        // (bench/README.md Session 37 (phoneend): right sentences refused).
+        const std::size_t voiced_end = speech.end_frame - chain.tail_frames;
         chain.searched.end_frame =
             std::min(upper, voiced_end < speech.end_frame ? voiced_end + kTailEdgeFrames : speech.end_frame + kEdgeFrames);
+        chain.quiet_end = voiced_end < speech.end_frame && std::isfinite(noise_reach_db)
+                              ? end_in_noise(track, voiced_end,
+                                             std::min(upper, speech.end_frame + kEdgeFrames), noise_reach_db)
+                              : 0;
         chain.searched_in_room = chain.searched;
         if (chain.ends_in_tail) {
             const std::size_t ringing_first =
@@ -176,11 +222,6 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
         if (loudness.is_cut_to_sound && speech.end_frame == track.frame_count)
             chain.states.back().max_frames = kCutEdgeFrames;
     }
-    // A fall past kTailFallDb is a room's tail only where the recording's sentences ring on in the
-    // median (is_room); elsewhere it is a voice's own quiet end (a nasal coda whose murmur a
-    // telephone band takes away, bench/README.md Session 36 (bound)), and the last syllable keeps it.
-    const bool rings = is_room(chains);
-    for (SentenceChain& chain : chains) chain.ends_before_tail = rings;
 }
 
 // In a reverberant room the last sound rings on for a few hundred ms after the voice stops, and the

@@ -28,6 +28,10 @@ struct SentenceChain {
     bool ends_in_tail = false;    // its last sound rings on in a room (end_before_tail cut a tail off)
     // The recording is a room (is_room): the last syllable ends before the tail (end_before_tail).
     bool ends_before_tail = true;
+    // Where its voice has stopped, outside a room: where its quiet end past end_before_tail's mark
+    // falls into the recording's noise, which the search may not reach; 0 in a room, where the noise
+    // is not steady enough to tell, or where the sentence has no quiet end.
+    std::size_t quiet_end = 0;
     // Where the syllables given out in a room are searched (room_placement.hpp): `searched`, ending
     // a little past where the voice stopped before the ringing (end_before_ringing) where it ends in a
     // tail. The models learn on `searched`, whose tail teaches the pause what the room leaves.
@@ -44,8 +48,9 @@ std::vector<SentenceChain> group_chains(const Timeline& transcript, const Senten
                                         const std::vector<FrameSpan>& spans);
 
 // Each chain's searched span (its speech with the pauses around it, at most halfway to its
-// neighbours, only a little of a room's tail, never past its limit) and its phone states, vowels scaled to
-// the speech they fill; whether their last syllables end before the tail (the recording is a room, is_room).
+// neighbours, only a little of a room's tail or a quiet end, never past its limit) and its phone states,
+// vowels scaled to the speech they fill; whether their last syllables end before the tail (the recording is
+// a room, is_room), and where a quiet end falls into the noise outside a room.
 // \throws talkface::InvalidArgument naming a syllable whose pinyin is not Mandarin.
 void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness, std::vector<SentenceChain>& chains);
 

@@ -5,9 +5,11 @@
 #include <limits>
 #include <optional>
 #include <string_view>
+#include <utility>
 
 #include "common/order_statistics.hpp"
 #include "speech/alignment_confidence.hpp"
+#include "speech/noise_reach.hpp"
 
 namespace talkface::detail {
 
@@ -61,15 +63,6 @@ bool opens_with_burst(const PhoneState& initial, const Syllable& syllable) {
             std::string_view("zcjqZCJQ").find(syllable.pinyin[0]) != std::string_view::npos);
 }
 
-// The noise's own level in a band (pause_noise_reach): the level the band stays under on nine
-// frames in ten of the path's pauses, where they hold at least 10 frames. A frame above it is one
-// the noise alone reaches one time in ten. A steady noise (hiss, a fan, hum, a phone line's) holds
-// its high band within 6 dB from its tenth to its ninetieth percentile (white and pink noise: 1-2
-// dB); music and drums swing by 8-100 dB, and a frame under their reach says nothing of whether a
-// sibilant sounds there.
-constexpr double kNoiseReachShare = 0.9;
-constexpr std::size_t kMinNoiseFrames = 10;
-constexpr float kSteadyNoiseSpreadDb = 6.0f;
 // A sound is heard above the noise where the high band stays over the noise's reach this many
 // frames running. The noise alone passes its reach one frame in ten: over the 5-20 frames before a
 // sibilant's frication is heard, a single frame over it comes by chance most of the time (the
@@ -188,11 +181,7 @@ float pause_noise_reach(const FeatureTrack& track, const SentenceChain& chain,
             for (std::size_t t = segment.first_frame; t < segment.end_frame && offset + t < track.frame_count;
                  ++t)
                 levels.push_back(track.at(offset + t, column));
-    if (levels.size() < kMinNoiseFrames) return std::numeric_limits<float>::infinity();
-    const float reach = percentile_of(levels, kNoiseReachShare);
-    if (reach - percentile_of(std::move(levels), 1.0 - kNoiseReachShare) > kSteadyNoiseSpreadDb)
-        return std::numeric_limits<float>::infinity();
-    return reach;
+    return steady_noise_reach(std::move(levels));
 }
 
 std::size_t sibilant_onset(const FeatureTrack& track, std::size_t offset, std::size_t first, std::size_t end,
@@ -365,13 +354,19 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
     for (std::size_t local = 0; local < chain.syllables.size(); ++local) {
         Syllable& syllable = result.syllables[chain.syllable_indices[local]];
         auto [first, end, start, final_first, runs_on] = syllable_path(in, local);
-        if (local + 1 == chain.syllables.size() && chain.ends_before_tail) {
-            const std::size_t offset = chain.searched.first_frame;
+        const std::size_t offset = chain.searched.first_frame;
+        const bool is_last = local + 1 == chain.syllables.size();
+        if (is_last && chain.ends_before_tail) {
             const std::size_t trimmed = end_before_tail(track, offset + first, offset + end) - offset;
             end = std::max(trimmed, final_first.value_or(first) + 1);
         }
         syllable.start_s = time_s(start);
-        syllable.end_s = time_s(std::max(end, first + 1));
+        // A last syllable the path holds to the voice's quiet end keeps it past the search, to where
+        // it falls into the noise (one the path ends before it ended in a pause: a breath may follow);
+        // its evidence stays on the frames searched.
+        const bool runs_to_quiet_end = is_last && chain.quiet_end > offset + end &&
+                                       offset + end >= chain.speech.end_frame - chain.tail_frames;
+        syllable.end_s = time_s(runs_to_quiet_end ? chain.quiet_end - offset : std::max(end, first + 1));
         // A syllable ends where the next starts.
         if (start != first && runs_on) {
             Syllable& previous = result.syllables[chain.syllable_indices[local - 1]];

@@ -66,10 +66,8 @@ std::size_t apical_vowel_turn(const EmissionScores& scores, std::size_t vowel_fi
 std::size_t syllable_valley_start(const FeatureTrack& track, std::size_t offset, std::size_t lowest, std::size_t start);
 
 // The level the noise's own `column` reaches (the high band, 2.5-8 kHz, frication's; the whole
-// band): its kNoiseReachShare percentile over the frames of `path`'s pauses (edge silences and
-// pauses between syllables of `chain`); +infinity where they hold fewer than kMinNoiseFrames frames,
-// or where the noise is not steady (its level there spreads over more than kSteadyNoiseSpreadDb
-// between that percentile and the one as far from the bottom: music, drums).
+// band): steady_noise_reach (noise_reach.hpp) of its levels over the frames of `path`'s pauses (edge
+// silences and pauses between syllables of `chain`).
 float pause_noise_reach(const FeatureTrack& track, const SentenceChain& chain,
                         const std::vector<StateSegment>& path, FeatureColumn column);
 

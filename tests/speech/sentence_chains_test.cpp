@@ -91,6 +91,19 @@ std::size_t last_end_frame(const SentenceChain& chain, const FeatureTrack& track
         std::lround(result.syllables[chain.syllable_indices.back()].end_s / kFrameStepS));
 }
 
+// The loudness profile of a recording whose pauses are its runs of frames at or under `noise_db`
+// (the noise alone), at least 12 frames long.
+LoudnessProfile pauses_at(const FeatureTrack& track, float noise_db) {
+    LoudnessProfile loudness;
+    std::size_t first = 0;
+    for (std::size_t t = 0; t <= track.frame_count; ++t) {
+        if (t < track.frame_count && track.at(t, kEnergyDb) <= noise_db) continue;
+        if (t >= first + 12) loudness.pauses.push_back({first, t});
+        first = t + 1;
+    }
+    return loudness;
+}
+
 }  // namespace
 
 TEST_SUITE("sentence chains") {
@@ -181,5 +194,31 @@ TEST_SUITE("sentence chains") {
         REQUIRE(chains[0].tail_frames >= 9);
         CHECK(last_end_frame(chains[0], room.track, transcript) ==
               chains[0].speech.end_frame - chains[0].tail_frames);
+    }
+
+    TEST_CASE("a quiet end outside a room runs on to where it falls into the noise") {
+        // A nasal coda's murmur through a telephone band: 15 frames 24 dB under the vowel, then 10
+        // fading 36 dB under it, over a steady noise at -70 dB; the cutter's span ends before the fade.
+        std::vector<float> murmur(15, -44.0f);
+        murmur.insert(murmur.end(), 10, -56.0f);
+        Recording phone = recording_of({murmur, {}, {}});
+        phone.cut.spans[0].end_frame -= 10;
+        const Timeline transcript = transcript_of(3);
+        std::vector<SentenceChain> chains = group_chains(transcript, phone.cut, phone.cut.spans);
+        set_search_spans(phone.track, pauses_at(phone.track, -60.0f), chains);
+        const std::size_t voice_end = chains[0].speech.first_frame + 40;
+        REQUIRE(chains[0].speech.end_frame - chains[0].tail_frames == voice_end);
+        // The search still ends 5 frames past the vowel; the last syllable keeps the whole murmur.
+        CHECK(chains[0].searched.end_frame == voice_end + 5);
+        CHECK(last_end_frame(chains[0], phone.track, transcript) == voice_end + 25);
+
+        // In a noise that swings by 16 dB between frames, what lies under its reach says nothing of
+        // the voice: the last syllable ends where the path ends it.
+        FeatureTrack swinging = phone.track;
+        for (std::size_t t = 0; t < swinging.frame_count; t += 2)
+            if (swinging.at(t, kEnergyDb) == -70.0f) swinging.values[t * kFeatureCount + kEnergyDb] = -54.0f;
+        chains = group_chains(transcript, phone.cut, phone.cut.spans);
+        set_search_spans(swinging, pauses_at(swinging, -54.0f), chains);
+        CHECK(last_end_frame(chains[0], swinging, transcript) == voice_end + 4);
     }
 }
