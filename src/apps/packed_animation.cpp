@@ -20,9 +20,10 @@ constexpr const char* kDataId = "tf-animation-data";
 constexpr char kStillSeparator = '\f';
 
 // The unpacking: base64 to bytes, gunzip, the text parsed as the root's children (an HTML parser
-// puts markup set on an <svg> element into the SVG namespace); the still head's content instead
-// while the reader asks for reduced motion. The page's script holds the root, never its content,
-// so the content can be swapped under it; the root's clock keeps the time.
+// puts markup set on an <svg> element into the SVG namespace); while the reader asks for reduced
+// motion, without the pose's animations (class tf-pose), or the still head's content instead. The
+// page's script holds the root, never its content, so the content can be swapped under it; the
+// root's clock keeps the time.
 constexpr const char* kUnpackHead = R"js((function () {
   "use strict";
   function run() {
@@ -36,9 +37,12 @@ constexpr const char* kUnpackTail = R"js(");
     var contents = text.split("\f");
     var root = document.querySelector("svg.tf-animation");
     var reduced = window.matchMedia("(prefers-reduced-motion: reduce)");
-    function fill() { root.innerHTML = contents[reduced.matches ? contents.length - 1 : 0]; }
+    function fill() {
+      root.innerHTML = contents[reduced.matches ? contents.length - 1 : 0];
+      if (reduced.matches) root.querySelectorAll(".tf-pose").forEach(function (pose) { pose.remove(); });
+    }
     fill();
-    if (contents.length > 1) reduced.addEventListener("change", fill);
+    if (contents.length > 1 || root.querySelector(".tf-pose")) reduced.addEventListener("change", fill);
     data.remove();
     run();
   });

@@ -5,12 +5,12 @@
 // 16.4: older than any Safari that plays Opus in WebM) into the animation's root element, then
 // runs the page's script.
 //
-// A page may carry the face twice: as animated, and with its head held still, which the browser
-// shows instead when the reader's system asks for reduced motion (prefers-reduced-motion: reduce,
-// WCAG 2.3.3), also when the setting changes while the page is open. The head's turn and nod are in
-// every outline's key frames (a 3D lift, rotated and projected: no transform a page could undo), so
-// the still face is a document of its own; packed in the same stream, after a form feed, which XML
-// forbids in a document and so never occurs in either.
+// The browser shows the head still when the reader's system asks for reduced motion
+// (prefers-reduced-motion: reduce, WCAG 2.3.3), also when the setting changes while the page is
+// open. In the keyframes encoding the face is drawn at rest and the pose's animations are marked
+// (class tf-pose, render_animation_with_pose_apart()): the script takes them out. In the frames
+// encoding the still face is a document of its own, packed in the same stream after a form feed,
+// which XML forbids in a document and so never occurs in either.
 #ifndef TALKFACE_APPS_PACKED_ANIMATION_HPP
 #define TALKFACE_APPS_PACKED_ANIMATION_HPP
 

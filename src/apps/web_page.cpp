@@ -18,6 +18,8 @@
 #include "common/atomic_file.hpp"
 #include "common/number_format.hpp"
 #include "render/html_text.hpp"
+#include "render/svg_animation.hpp"
+#include "render/svg_document.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/web_page.hpp"
 #include "video/audio_encoder.hpp"
@@ -343,7 +345,10 @@ std::string without_prolog(std::string svg) {
 
 // The page's face and, when its head moves, the face with the head held still (every pose at rest:
 // the lips, blinks and brows as they were), which the page shows a reader whose system asks for
-// reduced motion (WCAG 2.3.3) without the page's writer having to ask for it.
+// reduced motion (WCAG 2.3.3) without the page's writer having to ask for it. In the keyframes
+// encoding the face is drawn at rest and the pose carried apart, in animations the page takes out
+// (a still head then costs its lips' and brows' key frames, not a second face); in the frames
+// encoding each frame is a drawing of its own, and the still face a second document.
 detail::PackedAnimation packed_face(const SvgAnimator& animator, const Animation& animation,
                                     const SvgAnimationOptions& options, const ProgressCallback& progress) {
     Animation still = animation;
@@ -355,6 +360,15 @@ detail::PackedAnimation packed_face(const SvgAnimator& animator, const Animation
     if (!moves)
         return detail::pack_animation(
             without_prolog(animator.render_animation_svg(animation, options, progress)), "");
+    if (options.encoding == AnimationEncoding::keyframes) {
+        const SvgOptions& svg_options = animator.options();
+        return detail::pack_animation(
+            without_prolog(detail::render_animation_with_pose_apart(
+                animator.face(), svg_options,
+                detail::face_svg_canvas(animator.face(), svg_options.width_px, svg_options.height_px),
+                animation, options, progress)),
+            "");
+    }
     // Two renderings of about the same work: each reports half of the whole.
     const auto half = [&progress](double start) -> ProgressCallback {
         if (!progress) return {};

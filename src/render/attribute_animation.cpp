@@ -20,14 +20,19 @@ std::string key_values(const TrackForm& form, const PathLayout& layout, const Ke
     return values;
 }
 
-std::string animate_element(const TrackForm& form, const Track& track, std::size_t frame_count, double duration_s,
-                            double tolerance) {
+KeyFrames attribute_key_frames(const Track& track, const PathLayout& layout, std::size_t frame_count,
+                               double tolerance) {
+    return choose_key_frames(track, frame_count,
+                             std::vector<double>(track.width, tolerance - chain_rounding(layout)));
+}
+
+std::string animate_element(const TrackForm& form, const Track& track, std::size_t frame_count,
+                            double duration_s, double tolerance, Track* shown) {
     const PathLayout layout = layout_of(form, track, frame_count);
-    const KeyFrames keys = choose_key_frames(
-        track, frame_count, std::vector<double>(track.width, tolerance - chain_rounding(layout)));
+    const KeyFrames keys = attribute_key_frames(track, layout, frame_count, tolerance);
+    if (shown != nullptr) *shown = interpolated(keys, frame_count);
     return "<animate attributeName=\"" + std::string(form.name) + "\"" +
-           attribute("dur", clock_value(duration_s)) +
-           attribute("values", key_values(form, layout, keys)) +
+           attribute("dur", clock_value(duration_s)) + attribute("values", key_values(form, layout, keys)) +
            attribute("keyTimes", key_times_of(keys, frame_count)) + " fill=\"freeze\"/>";
 }
 

@@ -27,10 +27,16 @@ PathLayout layout_of(const TrackForm& form, const Track& track, std::size_t fram
 // `layout`, which says which control points are left implicit), other numbers as they are.
 std::string key_values(const TrackForm& form, const PathLayout& layout, const KeyFrames& keys);
 
+// Key frames of `track` (drawn with `layout`) within `tolerance` (drawing units) of every one of
+// `frame_count` frames, the layout's chain rounding taken from it.
+KeyFrames attribute_key_frames(const Track& track, const PathLayout& layout, std::size_t frame_count,
+                               double tolerance);
+
 // The <animate> of `track` over `frame_count` frames lasting `duration_s`, its key frames within
-// `tolerance` (drawing units) of every frame.
-std::string animate_element(const TrackForm& form, const Track& track, std::size_t frame_count, double duration_s,
-                            double tolerance);
+// `tolerance` (drawing units) of every frame. `shown`, when not null, receives what it shows at each
+// frame (before the values' rounding).
+std::string animate_element(const TrackForm& form, const Track& track, std::size_t frame_count,
+                            double duration_s, double tolerance, Track* shown = nullptr);
 
 }  // namespace talkface::detail
 

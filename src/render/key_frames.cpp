@@ -141,6 +141,29 @@ void TrackRecorder::repeat() {
     for (std::size_t k = 0; k < track_.width; ++k) track_.numbers.push_back(track_.numbers[last + k]);
 }
 
+Track interpolated(const KeyFrames& keys, std::size_t frame_count) {
+    const std::size_t width = keys.values.width;
+    Track shown;
+    shown.width = width;
+    shown.varies = keys.positions.size() > 1;
+    shown.numbers.reserve(frame_count * width);
+    std::size_t segment = 0;
+    for (std::size_t frame = 0; frame < frame_count; ++frame) {
+        const double position = static_cast<double>(frame);
+        while (segment + 2 < keys.positions.size() && keys.positions[segment + 1] <= position) ++segment;
+        const std::size_t next = std::min(segment + 1, keys.positions.size() - 1);
+        const double from = keys.positions[segment];
+        const double to = keys.positions[next];
+        const double u = to > from ? std::clamp((position - from) / (to - from), 0.0, 1.0) : 0.0;
+        for (std::size_t k = 0; k < width; ++k) {
+            const double a = keys.values.numbers[segment * width + k];
+            const double b = keys.values.numbers[next * width + k];
+            shown.numbers.push_back(static_cast<float>(a + u * (b - a)));
+        }
+    }
+    return shown;
+}
+
 std::string key_times_of(const KeyFrames& keys, std::size_t frame_count) {
     const double last = static_cast<double>(frame_count - 1);
     std::string key_times;

@@ -49,6 +49,10 @@ struct KeyFrames {
 KeyFrames choose_key_frames(const Track& track, std::size_t frame_count,
                             const std::vector<double>& tolerances);
 
+// What linear interpolation between `keys` shows at each of `frame_count` frames (a track of every
+// frame, as wide as the keys).
+Track interpolated(const KeyFrames& keys, std::size_t frame_count);
+
 // The keyTimes of `keys` over `frame_count` frames.
 std::string key_times_of(const KeyFrames& keys, std::size_t frame_count);
 

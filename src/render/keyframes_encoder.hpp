@@ -13,6 +13,8 @@
 
 #include "render/drawing.hpp"
 #include "render/key_frames.hpp"
+#include "render/path_compaction.hpp"
+#include "render/svg_writer.hpp"
 #include "talkface/svg_animator.hpp"
 
 namespace talkface::detail {
@@ -35,11 +37,34 @@ public:
     // The layer's content; progress goes from `from` to `to` as the attributes are written.
     std::string finish(const ProgressCallback& progress, double from, double to) const;
 
+    // The layer's content as finish() writes it, this encoder having had the layers with the head
+    // at rest, and in each element that `posed` (the same frames with the head's pose) draws
+    // otherwise, an additive animation (class "tf-pose") of what the pose adds to what the element
+    // shows: with those animations the element is within the tolerance of `posed`'s frames, without
+    // them it is what finish() shows. (Chromium, Firefox and WebKit add path data whose commands
+    // match, as these do.)
+    // \throws talkface::Error (internal) if `posed` had other frames, elements or path verbs.
+    std::string finish_with_pose(const KeyframesEncoder& posed, const ProgressCallback& progress, double from,
+                                 double to) const;
+
 private:
     struct Slot {
         std::vector<PathVerb> verbs;  // path data: the first frame's
         TrackRecorder numbers;        // as written
     };
+
+    // An attribute as written, and what it shows at each frame.
+    struct WrittenAttribute {
+        AttributeOverride text;
+        Track shown;               // every frame, once `want_shown`
+        bool is_relative = false;  // path data written relative, with `layout`; else as the model writes it
+        PathLayout layout;
+        double rounding = 0.0;  // how far the values as written may stray from `shown`
+    };
+    WrittenAttribute write_attribute(std::size_t slot, double duration_s, bool want_shown) const;
+    // The additive animation of `added` (every frame) to attribute `slot` written as `written`.
+    std::string pose_animation(std::size_t slot, const WrittenAttribute& written, const Track& added,
+                               double duration_s) const;
 
     double fps_;
     double tolerance_;

@@ -13,6 +13,7 @@
 #define TALKFACE_RENDER_OUTLINE_MOTION_HPP
 
 #include <cstddef>
+#include <functional>
 #include <string>
 
 #include "render/attribute_animation.hpp"
@@ -37,8 +38,19 @@ struct MovedText {
     std::string animations;  // inside the element
 };
 
+// `shown`, when not null, receives the points the element shows at each frame (the translate's
+// numbers as written, the outline's before their rounding).
 MovedText moved_outline_text(const MovedOutline& moved, const TrackForm& form, std::size_t frame_count,
-                             double duration_s, double tolerance);
+                             double duration_s, double tolerance, Track* shown = nullptr);
+
+// What a pose adds to an outline (`moved`: split_motion() of the addition) as two additive
+// animations with `extra` attributes (` class="tf-pose" additive="sum"`): the addition about its
+// mean, its values written by `values_of` (the commands of the value it is added to), and a
+// translate carrying the mean. Within `tolerance` of every frame, the values' rounding left over.
+std::string added_outline_text(const MovedOutline& moved, const TrackForm& form, const PathLayout& layout,
+                               std::size_t frame_count, double duration_s, double tolerance,
+                               const std::string& extra,
+                               const std::function<std::string(const KeyFrames&)>& values_of);
 
 }  // namespace talkface::detail
 

@@ -16,6 +16,16 @@ std::string render_animation(const FaceModel& face, const SvgOptions& svg_option
                              const Animation& animation, const SvgAnimationOptions& options,
                              const ProgressCallback& progress);
 
+// The animation (keyframes encoding) drawn with its head at rest (every pose at 0), and what the
+// pose adds carried apart: the head groups' tilt and, in each element the turn and nod move, an
+// additive animation, all of class "tf-pose". Without them the document is render_animation() of
+// the frames with the head at rest, byte for byte; with them every frame is within the tolerance of
+// the animation as drawn. A page shows the head still (reduced motion) by taking them out.
+std::string render_animation_with_pose_apart(const FaceModel& face, const SvgOptions& svg_options,
+                                             const SvgCanvas& canvas, const Animation& animation,
+                                             const SvgAnimationOptions& options,
+                                             const ProgressCallback& progress);
+
 }  // namespace talkface::detail
 
 #endif

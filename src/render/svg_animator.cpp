@@ -9,7 +9,6 @@
 
 #include "common/atomic_file.hpp"
 #include "common/number_format.hpp"
-#include "render/face_canvas.hpp"
 #include "render/layers.hpp"
 #include "render/lottie_animation.hpp"
 #include "render/svg_animation.hpp"
@@ -66,19 +65,7 @@ struct SvgAnimator::Impl {
 SvgAnimator::SvgAnimator(FaceModel face, SvgOptions options) {
     validate(options);
     impl_ = std::make_unique<Impl>();
-    const detail::CanvasBox box = detail::fit_face_canvas(face);
-    const double aspect = box.width / box.height;
-    int width_px = options.width_px;
-    int height_px = options.height_px;
-    if (width_px == 0 && height_px == 0) {
-        width_px = static_cast<int>(box.width);
-        height_px = static_cast<int>(box.height);
-    } else if (height_px == 0) {
-        height_px = static_cast<int>(std::lround(width_px / aspect));
-    } else if (width_px == 0) {
-        width_px = static_cast<int>(std::lround(height_px * aspect));
-    }
-    impl_->canvas = {box, width_px, height_px};
+    impl_->canvas = detail::face_svg_canvas(face, options.width_px, options.height_px);
     impl_->face = std::move(face);
     impl_->options = options;
 }

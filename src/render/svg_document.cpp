@@ -1,10 +1,27 @@
 #include "render/svg_document.hpp"
 
+#include <cmath>
+
 #include "common/number_format.hpp"
+#include "render/face_canvas.hpp"
 #include "render/svg_text.hpp"
 #include "render/svg_writer.hpp"
 
 namespace talkface::detail {
+
+SvgCanvas face_svg_canvas(const FaceModel& face, int width_px, int height_px) {
+    const CanvasBox box = fit_face_canvas(face);
+    const double aspect = box.width / box.height;
+    if (width_px == 0 && height_px == 0) {
+        width_px = static_cast<int>(box.width);
+        height_px = static_cast<int>(box.height);
+    } else if (height_px == 0) {
+        height_px = static_cast<int>(std::lround(width_px / aspect));
+    } else if (width_px == 0) {
+        width_px = static_cast<int>(std::lround(height_px * aspect));
+    }
+    return {box, width_px, height_px};
+}
 
 std::string open_svg_root(const SvgCanvas& canvas, int decimals, const std::string& class_name) {
     auto number = [&](double value) { return format_fixed(value, decimals); };

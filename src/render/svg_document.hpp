@@ -7,6 +7,7 @@
 #include <string>
 
 #include "render/layers.hpp"
+#include "talkface/face_model.hpp"
 
 namespace talkface::detail {
 
@@ -16,6 +17,10 @@ struct SvgCanvas {
     int width_px = 0;
     int height_px = 0;
 };
+
+// The canvas that fits `face` at every pose (face_canvas.hpp), shown at `width_px` x `height_px`:
+// 0 for both is the canvas's own size, 0 for one keeps the canvas's shape (SvgOptions).
+SvgCanvas face_svg_canvas(const FaceModel& face, int width_px, int height_px);
 
 // The XML declaration every document starts with.
 inline constexpr const char* kXmlDeclaration = "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
