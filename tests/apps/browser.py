@@ -147,9 +147,12 @@ class Page:
 
     def emulate(self, width, height, mobile=False, media=None):
         """Sizes the window (at a device pixel ratio of 1) and sets the media features a reader's
-        system sets (`media`: {"prefers-color-scheme": "dark"}, ...), replacing the earlier ones."""
+        system sets (`media`: {"prefers-color-scheme": "dark"}, ...), replacing the earlier ones. A
+        phone (`mobile`) has a touch screen for its only pointer, as playwright's phones have
+        (pointer: coarse, hover: none)."""
         self.call("Emulation.setDeviceMetricsOverride", width=width, height=height, deviceScaleFactor=1,
                   mobile=mobile)
+        self.call("Emulation.setTouchEmulationEnabled", enabled=mobile, **({"maxTouchPoints": 5} if mobile else {}))
         self.call("Emulation.setEmulatedMedia", media="",
                   features=[{"name": name, "value": value} for name, value in (media or {}).items()])
 

@@ -219,6 +219,51 @@ def test_a_phone_shows_the_face_and_the_player_first_and_the_text_below(chromium
         assert len(skin) > 5000
 
 
+@pytest.fixture(scope="module")
+def demo_book(tmp_path_factory):
+    page = tmp_path_factory.mktemp("demo_book") / "book.html"
+    subprocess.run([CLI, "demo", "-q", "--app", "audiobook", "-o", str(page)], check=True, timeout=120)
+    return page
+
+
+SCROLL_ROOM = """(function () {
+    var sentences = document.querySelectorAll('.tf-sentence');
+    var last = sentences[sentences.length - 1].getBoundingClientRect();
+    return {scroll: document.documentElement.scrollHeight - window.innerHeight,
+            below_last: document.documentElement.scrollHeight - (window.scrollY + last.bottom)};
+  })()"""
+
+
+@pytest.mark.parametrize("size", [(390, 844), (844, 390), (1280, 800)], ids=["phone", "phone-sideways", "desktop"])
+def test_a_book_that_fits_the_window_does_not_scroll_and_a_long_one_keeps_room_below(chromium, demo_book, long_book,
+                                                                                     size):
+    # The demo's three sentences fit a phone's screen: main's room below the text scrolled them 49 px
+    # to show nothing more. A long book keeps the room, for its last sentence to come up the screen.
+    mobile = size != (1280, 800)
+    with chromium.page(*size, mobile=mobile) as browser:
+        browser.open(f"file://{demo_book}#t=1&pause")
+        assert browser.evaluate(SCROLL_ROOM)["scroll"] <= 0
+        page, _ = long_book
+        browser.open(f"file://{page}#t=1&pause")
+        assert browser.evaluate(SCROLL_ROOM)["below_last"] > size[1] / 4
+        # Back to the short book on a window too small for it: the room comes back with the need.
+        browser.open(f"file://{demo_book}#t=1&pause")
+        browser.emulate(size[0], 200, mobile)
+        browser.settle()
+        assert browser.evaluate(SCROLL_ROOM)["below_last"] > 200 / 4
+
+
+@pytest.mark.parametrize("size", [(390, 844), (1280, 800)], ids=["phone", "desktop"])
+def test_the_keys_hint_shows_where_there_are_keys(chromium, demo_book, size):
+    # A phone's only pointer is a finger, and it has no Space or arrow keys to press.
+    phone = size == (390, 844)
+    with chromium.page(*size, mobile=phone) as browser:
+        browser.open(f"file://{demo_book}#t=1&pause")
+        shown = browser.evaluate("document.querySelector('.tf-keys').getClientRects().length > 0")
+        assert shown != phone
+        assert browser.problems() == []
+
+
 def test_keys_play_pause_and_move_a_sentence_with_a_visible_focus(chromium, long_book):
     page, timeline = long_book
     with chromium.page(1280, 800) as browser:
@@ -325,4 +370,8 @@ def test_the_compressed_speech_plays_as_long_as_the_recording_with_the_face_on_i
         assert all(abs(from_shown) < 0.001 for _, _, from_shown in samples)
         lags = sorted(lag for lag, _, _ in samples)
         assert lags[0] >= -0.002
-        assert lags[len(lags) // 2] < 1 / fps, lags
+        # The face was set at the frame before, so it lags by as much as that frame lasted, which on a
+        # loaded machine is longer than a frame of the face (52 ms once); past that, it must not lag
+        # by a frame of its own (a page reading the audio at its `timeupdate`, 4 times a second, does).
+        late = sorted(lag - frame_s for lag, frame_s, _ in samples)
+        assert late[len(late) // 2] < 1 / fps, samples
