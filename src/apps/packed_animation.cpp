@@ -42,7 +42,7 @@ constexpr const char* kUnpackTail = R"js(");
       if (reduced.matches) root.querySelectorAll(".tf-pose").forEach(function (pose) { pose.remove(); });
     }
     fill();
-    if (contents.length > 1 || root.querySelector(".tf-pose")) reduced.addEventListener("change", fill);
+    if (contents.length > 1 || contents[0].indexOf("tf-pose") >= 0) reduced.addEventListener("change", fill);
     data.remove();
     run();
   });
