@@ -1,6 +1,7 @@
 #include "speech/line_among_voices.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <limits>
 #include <optional>
@@ -21,6 +22,16 @@ constexpr float kNearLoudVoiceDb = 6.0f;
 // its speech; faster, what is left cannot hold it.
 constexpr double kSlowestSyllablesPerSecond = 3.0;
 constexpr double kFastestSyllablesPerSecond = 8.0;
+// A voice stands clear of the others where its pitch's correlation (pitch_track.hpp) reaches
+// kClearVoicing, and is the line's where its pitch lies within kSameVoiceOctaves of the line's
+// (4 semitones: a syllable's tone, high or low, around the voice's loud syllables'); kOwnVoiceFrames
+// such frames in a row are a syllable of the line's own. Among several voices one seldom stands
+// clear that long: on short_kinds_bench's babble and p-babble, such a run before the line in 10 of
+// 51 and 6 of 49 recordings, in the line's first syllable in 17 and 16 (room's: 26 of 53, the
+// voices none; bench/README.md, sessions 37 and 38).
+constexpr float kClearVoicing = 0.8f;
+constexpr double kSameVoiceOctaves = 1.0 / 3.0;
+constexpr std::size_t kOwnVoiceFrames = 5;
 
 // Whether the levels from `first` to `last` (read from the line back) rise kNearLoudVoiceDb over a
 // lower one nearer the line: a voice's syllables come and go, where a gain's lift climbs toward
@@ -70,6 +81,35 @@ std::optional<std::size_t> start_over_lifted_voices(const FeatureTrack& track, c
     return start;
 }
 
+bool is_clear(const PitchFrame& frame) {
+    return frame.voicing >= kClearVoicing && frame.hz > 0.0f;
+}
+
+// The line's pitch: the median of the clear frames in [first, end) within kNearLoudVoiceDb of
+// `loud_db`; 0 where there are none.
+double pitch_of_line(const FeatureTrack& track, const std::vector<float>& activity, std::size_t first,
+                     std::size_t end, float loud_db) {
+    std::vector<double> hz;
+    for (std::size_t t = first; t < end && t < track.pitch.size(); ++t)
+        if (activity[t] >= loud_db - kNearLoudVoiceDb && is_clear(track.pitch[t]))
+            hz.push_back(track.pitch[t].hz);
+    return hz.empty() ? 0.0 : upper_median(hz);
+}
+
+// Whether [first, end) holds kOwnVoiceFrames clear frames in a row within kSameVoiceOctaves of
+// `line_hz`, or at any pitch where the line's is not known (0): a syllable of the line's own.
+bool holds_line_voice(const FeatureTrack& track, std::size_t first, std::size_t end, double line_hz) {
+    std::size_t run = 0;
+    for (std::size_t t = first; t < end && t < track.pitch.size(); ++t) {
+        const PitchFrame& frame = track.pitch[t];
+        const bool is_line_pitch =
+            line_hz <= 0.0 || std::abs(std::log2(frame.hz / line_hz)) <= kSameVoiceOctaves;
+        run = is_clear(frame) && is_line_pitch ? run + 1 : 0;
+        if (run >= kOwnVoiceFrames) return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 FrameSpan line_among_quieter_voices(const FeatureTrack& track, const LoudnessProfile& loudness,
@@ -77,9 +117,10 @@ FrameSpan line_among_quieter_voices(const FeatureTrack& track, const LoudnessPro
     const std::vector<float>& activity = loudness.activity_db;
     // Sound that runs from the recording's edge (no pause between) may be other voices; a shorter
     // stretch left out is the line's own weak edge, and so is sound from an edge nearer than a pause.
+    // After a pause, the pitch tells (below).
     const bool from_start = speech.first_frame < kMinPauseFrames;
     const bool to_end = speech.end_frame + kMinPauseFrames > activity.size();
-    if (!(from_start || to_end)) return speech;
+    if (!(from_start || to_end || !track.pitch.empty())) return speech;
     const auto at = [&](std::size_t frame) { return activity.begin() + static_cast<std::ptrdiff_t>(frame); };
     const float loud_db =
         percentile_of(std::vector<float>(at(speech.first_frame), at(speech.end_frame)), kSpeechPercentile);
@@ -122,9 +163,19 @@ FrameSpan line_among_quieter_voices(const FeatureTrack& track, const LoudnessPro
     const auto is_quieter_voice = [&](std::size_t from, std::size_t to, auto first_read, auto last_read) {
         return to >= from + kMinPauseFrames && rises_again(first_read, last_read);
     };
+    // The start moves after a pause too, where the pitch says the sound left out is other voices':
+    // their own quiet stretches are pauses to the profile, and the voices between such a stretch and
+    // the line kept the first syllable 180-450 ms early (short_kinds_bench's babble 小心後面, p-babble
+    // 撤). Where what is left out holds a run of the line's own voice, it is the line's quieter first
+    // syllable after a silence (room's 先別急著開團: 先 284 ms late without this; bench/README.md,
+    // sessions 37 and 38).
+    const bool is_others_before =
+        from_start ||
+        (!track.pitch.empty() && !holds_line_voice(track, speech.first_frame, start,
+                                                   pitch_of_line(track, activity, start, end, loud_db)));
     FrameSpan line = speech;
-    if (from_start && is_quieter_voice(speech.first_frame, start, std::make_reverse_iterator(at(start)),
-                                       std::make_reverse_iterator(at(speech.first_frame))))
+    if (is_others_before && is_quieter_voice(speech.first_frame, start, std::make_reverse_iterator(at(start)),
+                                             std::make_reverse_iterator(at(speech.first_frame))))
         line.first_frame = start;
     else if (const auto lifted_start =
                  from_start ? start_over_lifted_voices(track, speech, end, syllables) : std::nullopt)
@@ -152,11 +203,17 @@ FrameSpan line_among_quieter_voices(const FeatureTrack& track, const LoudnessPro
     return holds_its_syllables && (is_slower_than_text || is_found_at_both_edges) ? line : speech;
 }
 
-std::optional<SentenceCut> line_cut_among_voices(const FeatureTrack& track, const LoudnessProfile& loudness,
-                                                 const Timeline& transcript, const SentenceCut& cut) {
+bool is_one_spoken_line(const Timeline& transcript) {
     const std::vector<std::size_t> syllables = syllables_per_sentence(transcript);
     const auto is_spoken = [](std::size_t count) { return count > 0; };
-    if (std::count_if(syllables.begin(), syllables.end(), is_spoken) != 1) return std::nullopt;
+    return std::count_if(syllables.begin(), syllables.end(), is_spoken) == 1;
+}
+
+std::optional<SentenceCut> line_cut_among_voices(const FeatureTrack& track, const LoudnessProfile& loudness,
+                                                 const Timeline& transcript, const SentenceCut& cut) {
+    if (!is_one_spoken_line(transcript)) return std::nullopt;
+    const std::vector<std::size_t> syllables = syllables_per_sentence(transcript);
+    const auto is_spoken = [](std::size_t count) { return count > 0; };
     const auto k = static_cast<std::size_t>(std::find_if(syllables.begin(), syllables.end(), is_spoken) -
                                             syllables.begin());
     const FrameSpan line = line_among_quieter_voices(track, loudness, cut.spans.at(k), syllables[k]);

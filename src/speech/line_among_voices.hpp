@@ -24,14 +24,21 @@ namespace talkface::detail {
 // loud level in sum, and of every frame within kNearLoudVoiceDb of that level (the line's own
 // syllables a dip parts from the run; the other voices never come so near). An edge of `speech`
 // stays unless it is the recording's (no pause beyond it: sound that never stopped, as other
-// voices' does), and only where the sound left out there is at least a pause long and rises and
-// falls by kNearLoudVoiceDb as a voice's syllables do (a gain's lift only climbs toward the line),
-// the line keeps at least as many voiced peaks (count_nuclei) as it has syllables, and `speech` is
-// slower than its syllables could be said or both its edges move. Where a phone's gain lifted the voices
-// before the line to its activity, the start is found on the whole band of `track` (kEnergyDb),
+// voices' does), or, for the start, where `track`'s pitch was read (FeatureTrack::pitch) and the
+// sound left out holds no run of one clear voice at the line's pitch (the line's own syllable after
+// a silence; the other voices' own quiet stretches are pauses too). It moves only where the sound
+// left out there is at least a pause long and rises and falls by kNearLoudVoiceDb as a voice's
+// syllables do (a gain's lift only climbs toward the line), the line keeps at least as many voiced
+// peaks (count_nuclei) as it has syllables, and `speech` is slower than its syllables could be
+// said or both its edges move. Where a phone's gain lifted the voices before the line to its
+// activity, the start is found on the whole band of `track` (kEnergyDb),
 // which the line's voicing keeps over them (bench/README.md, session 34).
 FrameSpan line_among_quieter_voices(const FeatureTrack& track, const LoudnessProfile& loudness,
                                     const FrameSpan& speech, std::size_t syllables);
+
+// Whether `transcript` has one spoken sentence: a line that line_cut_among_voices may narrow, and
+// whose recording is read with its pitch (FeatureTrack::pitch) for line_among_quieter_voices.
+bool is_one_spoken_line(const Timeline& transcript);
 
 // `cut` (cut_sentences') with the span of `transcript`'s only spoken sentence narrowed to its line
 // (line_among_quieter_voices), for the syllables' placement, and its search kept within a pause

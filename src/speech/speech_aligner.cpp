@@ -217,8 +217,9 @@ constexpr std::size_t kOtherPhaseSkips[] = {kHopSamples / 4, 3 * kHopSamples / 4
 // evidence against a text is no reason to refuse it, and a game's "OK!" is such a text); a silent
 // recording is refused after its samples alone are read (read_first_sound), with no features.
 //
-// The voice's pitch is measured as the audio is read only for lenient alignment; where a room's
-// sentence is to be refused and its pitch may witness for its text (ToneWitnessWanted), the
+// The voice's pitch is measured as the audio is read only for lenient alignment and for a line of
+// one spoken sentence (line_among_voices.hpp: where its start lies among other voices); where a
+// room's sentence is to be refused and its pitch may witness for its text (ToneWitnessWanted), the
 // recording is read again, from `open`, with the pitch, and aligned again: that costs a second
 // reading only there (the pitch costs 9% more instructions on every recording, bench/README.md
 // Session 19). The second reading is work done again on the bar (ProgressReporter).
@@ -264,7 +265,9 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
         source = open();
         source->take_first_reading(std::move(found));
     }
-    FeatureTrack track = read_features(*source, progress, options.lenient, silence_skipped, first.held);
+    FeatureTrack track = read_features(
+        *source, progress, options.lenient || (given_spans.empty() && is_one_spoken_line(transcript)),
+        silence_skipped, first.held);
     const LoudnessProfile loudness = conceal_dropouts(track);
     const std::string lost = describe_lost_audio(source->lost_audio());
     std::string notes;

@@ -101,6 +101,28 @@ TEST_SUITE("speech") {
         CHECK(std::abs(aligned.syllables[0].start_s - line_start_s) < 0.05);
     }
 
+    TEST_CASE("a short line after a quieter voice a pause opens starts where the line does") {
+        const std::vector<float> line = read_clip("short_line.flac");
+        const std::vector<float> other = read_clip("comma_pause.flac");
+        constexpr int kRateHz = 16000;
+        // 0.3 s of hiss (a pause to the profile, as the other voices' own dips are); the other voice's
+        // first 0.5 s of speech, 14 dB under the line's peak; 0.08 s of hiss; the line (你好); 0.3 s of hiss.
+        const float gain = std::pow(10.0f, -14.0f / 20.0f) * peak_of(line) / peak_of(other);
+        std::vector<float> samples(static_cast<std::size_t>(0.3 * kRateHz), 0.0f);
+        const std::size_t sounding = first_sound(other);
+        for (std::size_t i = sounding; i < std::min(other.size(), sounding + kRateHz / 2); ++i)
+            samples.push_back(gain * other[i]);
+        samples.resize(samples.size() + static_cast<std::size_t>(0.08 * kRateHz), 0.0f);
+        const double line_start_s = static_cast<double>(samples.size() + first_sound(line)) / kRateHz;
+        samples.insert(samples.end(), line.begin(), line.end());
+        samples.resize(samples.size() + static_cast<std::size_t>(0.3 * kRateHz), 0.0f);
+        test::add_headset_hiss(samples);
+        const Timeline aligned = SpeechAligner().align(AudioView{samples.data(), samples.size(), 1, kRateHz},
+                                                       load_transcript(test::clip_path("short_line.txt")));
+        REQUIRE(aligned.syllables.size() == 2);
+        CHECK(std::abs(aligned.syllables[0].start_s - line_start_s) < 0.05);
+    }
+
     TEST_CASE("a short line before a quieter voice ends where the line does") {
         const std::vector<float> line = read_clip("short_line.flac");
         const std::vector<float> other = read_clip("comma_pause.flac");
