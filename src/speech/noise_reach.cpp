@@ -21,11 +21,15 @@ constexpr float kSteadyNoiseSpreadDb = 6.0f;
 }  // namespace
 
 float steady_noise_reach(std::vector<float> levels) {
-    if (levels.size() < kMinNoiseFrames) return std::numeric_limits<float>::infinity();
-    const float reach = percentile_of(levels, kNoiseReachShare);
-    if (reach - percentile_of(std::move(levels), 1.0 - kNoiseReachShare) > kSteadyNoiseSpreadDb)
+    if (levels.size() < kMinNoiseFrames || noise_spread(levels) > kSteadyNoiseSpreadDb)
         return std::numeric_limits<float>::infinity();
-    return reach;
+    return percentile_of(std::move(levels), kNoiseReachShare);
+}
+
+float noise_spread(std::vector<float> levels) {
+    if (levels.size() < kMinNoiseFrames) return 0.0f;
+    const float reach = percentile_of(levels, kNoiseReachShare);
+    return reach - percentile_of(std::move(levels), 1.0 - kNoiseReachShare);
 }
 
 }  // namespace talkface::detail

@@ -15,6 +15,11 @@ namespace talkface::detail {
 // drums, a codec's gated comfort noise).
 float steady_noise_reach(std::vector<float> levels);
 
+// How far `levels` (as steady_noise_reach's) spread between the kNoiseReachShare percentile and
+// the one as far from the bottom: the noise's own swing. 0 where they are fewer than
+// kMinNoiseFrames.
+float noise_spread(std::vector<float> levels);
+
 }  // namespace talkface::detail
 
 #endif

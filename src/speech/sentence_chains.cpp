@@ -62,6 +62,12 @@ constexpr std::size_t kTailEdgeFrames = 5;
 // (bench/README.md Session 37 (phoneend), the phone kinds, tuning boundaries p-speex8, p-g726,
 // p-mp3: 1 frame 173, 173, 171; 3 and 5 frames 173, 174, 172; main 168, 169, 164.)
 constexpr std::size_t kQuietFrames = 3;
+// A voice that comes back after its quiet end fell into the noise (a neutral-tone vowel after a
+// fricative the band took away) holds over the level the noise passes one frame in a hundred this
+// many frames running, as a short vowel lasts; a steady noise's swells last less. (bench/README.md
+// Session 38 (phoneend2): 休息's i 7-10 frames through every codec; a pink noise's swell 3 frames,
+// which 3 frames took for a voice, espeak-ng pink20 tuning-018's 了 then ending 235 ms late.)
+constexpr std::size_t kVoiceBackFrames = 6;
 // What the silence at each edge of a recording cut to its sound may take: a phone's coder puts
 // the sound a few ms after the file's start and ramps into it over its first 20 ms frame (AMR-NB),
 // and its band limit smears the onset. One frame held the phone's first syllables to the ramp
@@ -110,25 +116,47 @@ std::size_t speech_frames(const LoudnessProfile& loudness, const FrameSpan& span
     return frames;
 }
 
-// The level the recording's noise stays under in its pauses, whole band (steady_noise_reach).
-float pauses_noise_reach(const FeatureTrack& track, const LoudnessProfile& loudness) {
+// The recording's noise in its pauses, whole band: the level it stays under (steady_noise_reach),
+// and the level it passes one frame in a hundred, which a voice coming back stands over. That one
+// is read from the noise's steady middle, not its loudest frames (a pause's edges hold the voice's
+// and breaths): where a noise's levels in dB lie as a normal spread does, their 99th percentile
+// stands over their 90th by kRareOverReach of the spread between their 10th and 90th.
+constexpr float kRareOverReach = 0.41f;
+
+struct PauseNoise {
+    float reach_db;
+    float rare_db;
+};
+
+PauseNoise pauses_noise(const FeatureTrack& track, const LoudnessProfile& loudness) {
     std::vector<float> levels;
     for (const FrameSpan& pause : loudness.pauses)
         for (std::size_t t = pause.first_frame; t < std::min(pause.end_frame, track.frame_count); ++t)
             levels.push_back(track.at(t, kEnergyDb));
-    return steady_noise_reach(std::move(levels));
+    const float reach_db = steady_noise_reach(levels);
+    return {reach_db, reach_db + kRareOverReach * noise_spread(std::move(levels))};
 }
 
 // Where a voice's quiet end from `mark` on has fallen into the noise: the first of kQuietFrames
-// frames running at or under `noise_reach_db`; `mark` where there are none before `end` (music or
-// another voice on after it: nothing tells where the voice stopped).
-std::size_t end_in_noise(const FeatureTrack& track, std::size_t mark, std::size_t end, float noise_reach_db) {
-    std::size_t run = 0;
+// frames running at or under its reach, unless the voice comes back for kVoiceBackFrames over the
+// level the noise passes one frame in a hundred and falls into it again before `end` (a neutral-tone vowel
+// after a fricative the band took away: 休息's i after its x, bench/README.md Session 38
+// (phoneend2)): it is followed on to there. `mark` where it never falls before `end` (music or
+// another voice on after it: nothing tells where the voice stopped). A sound that comes back and
+// runs on to `end` is the next one's, not this voice's.
+std::size_t end_in_noise(const FeatureTrack& track, std::size_t mark, std::size_t end, const PauseNoise& noise) {
+    std::size_t fallen = mark;
+    bool is_voice = true;
+    std::size_t run = 0;  // frames running that say the level has changed from voice to noise or back
     for (std::size_t t = mark; t < end; ++t) {
-        run = track.at(t, kEnergyDb) <= noise_reach_db ? run + 1 : 0;
-        if (run == kQuietFrames) return t + 1 - kQuietFrames;
+        const float level_db = track.at(t, kEnergyDb);
+        run = (is_voice ? level_db <= noise.reach_db : level_db > noise.rare_db) ? run + 1 : 0;
+        if (run < (is_voice ? kQuietFrames : kVoiceBackFrames)) continue;
+        is_voice = !is_voice;
+        run = 0;
+        if (!is_voice) fallen = t + 1 - kQuietFrames;
     }
-    return mark;
+    return fallen;
 }
 
 }  // namespace
@@ -174,8 +202,8 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
     }
     const bool rings = is_room(chains);
     for (SentenceChain& chain : chains) chain.ends_before_tail = rings;
-    const float noise_reach_db =
-        rings ? std::numeric_limits<float>::infinity() : pauses_noise_reach(track, loudness);
+    const PauseNoise noise =
+        rings ? PauseNoise{std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity()} : pauses_noise(track, loudness);
     // Edges reach into the pauses around the sentence, at most halfway to its neighbours.
     for (std::size_t w = 0; w < chains.size(); ++w) {
         SentenceChain& chain = chains[w];
@@ -202,9 +230,8 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
         const std::size_t voiced_end = speech.end_frame - chain.tail_frames;
         chain.searched.end_frame =
             std::min(upper, voiced_end < speech.end_frame ? voiced_end + kTailEdgeFrames : speech.end_frame + kEdgeFrames);
-        chain.quiet_end = voiced_end < speech.end_frame && std::isfinite(noise_reach_db)
-                              ? end_in_noise(track, voiced_end,
-                                             std::min(upper, speech.end_frame + kEdgeFrames), noise_reach_db)
+        chain.quiet_end = voiced_end < speech.end_frame && std::isfinite(noise.reach_db)
+                              ? end_in_noise(track, voiced_end, std::min(upper, speech.end_frame + kEdgeFrames), noise)
                               : 0;
         chain.searched_in_room = chain.searched;
         if (chain.ends_in_tail) {

@@ -221,4 +221,38 @@ TEST_SUITE("sentence chains") {
         set_search_spans(swinging, pauses_at(swinging, -54.0f), chains);
         CHECK(last_end_frame(chains[0], swinging, transcript) == voice_end + 4);
     }
+
+    TEST_CASE("a quiet end that dips into the noise and comes back ends where it falls again") {
+        // 休息 through a telephone band: the murmur 24 dB under the vowel, then the x the band took
+        // away (12 frames at the noise, -70 dB), then the neutral-tone i 8 dB over the noise for 8
+        // frames; the cutter's span ends in the dip.
+        std::vector<float> end(5, -44.0f);
+        end.insert(end.end(), 12, -70.0f);
+        end.insert(end.end(), 8, -62.0f);
+        Recording phone = recording_of({end, {}, {}});
+        phone.cut.spans[0].end_frame -= 15;
+        const Timeline transcript = transcript_of(3);
+        std::vector<SentenceChain> chains = group_chains(transcript, phone.cut, phone.cut.spans);
+        set_search_spans(phone.track, pauses_at(phone.track, -65.0f), chains);
+        const std::size_t voice_end = chains[0].speech.first_frame + 40;
+        REQUIRE(chains[0].speech.end_frame - chains[0].tail_frames == voice_end);
+        CHECK(chains[0].quiet_end == voice_end + 25);
+        CHECK(last_end_frame(chains[0], phone.track, transcript) == voice_end + 25);
+
+        // A swell of 3 frames is the noise's, not a vowel's; a sound that comes back and runs on
+        // past where the voice's end is looked for is not the voice's: the end stays where it
+        // first fell into the noise.
+        Recording swelling = phone;
+        for (std::size_t t = voice_end + 20; t < voice_end + 25; ++t)
+            swelling.track.values[t * kFeatureCount + kEnergyDb] = -70.0f;
+        chains = group_chains(transcript, swelling.cut, swelling.cut.spans);
+        set_search_spans(swelling.track, pauses_at(swelling.track, -65.0f), chains);
+        CHECK(chains[0].quiet_end == voice_end + 5);
+        Recording running_on = phone;
+        for (std::size_t t = voice_end + 17; t < voice_end + 45; ++t)
+            running_on.track.values[t * kFeatureCount + kEnergyDb] = -62.0f;
+        chains = group_chains(transcript, running_on.cut, running_on.cut.spans);
+        set_search_spans(running_on.track, pauses_at(running_on.track, -65.0f), chains);
+        CHECK(chains[0].quiet_end == voice_end + 5);
+    }
 }
