@@ -139,12 +139,13 @@ PauseNoise pauses_noise(const FeatureTrack& track, const LoudnessProfile& loudne
 
 // Where a voice's quiet end from `mark` on has fallen into the noise: the first of kQuietFrames
 // frames running at or under its reach, unless the voice comes back for kVoiceBackFrames over the
-// level the noise passes one frame in a hundred and falls into it again before `end` (a neutral-tone vowel
-// after a fricative the band took away: 休息's i after its x, bench/README.md Session 38
-// (phoneend2)): it is followed on to there. `mark` where it never falls before `end` (music or
-// another voice on after it: nothing tells where the voice stopped). A sound that comes back and
-// runs on to `end` is the next one's, not this voice's.
-std::size_t end_in_noise(const FeatureTrack& track, std::size_t mark, std::size_t end, const PauseNoise& noise) {
+// level the noise passes one frame in a hundred and falls into it again before `end` (a
+// neutral-tone vowel after a fricative the band took away: 休息's i after its x, bench/README.md
+// Session 38 (phoneend2)): it is followed on to there. `mark` where it never falls before `end`
+// (music or another voice on after it: nothing tells where the voice stopped). A sound that comes
+// back and runs on to `end` is the next one's, not this voice's.
+std::size_t end_in_noise(const FeatureTrack& track, std::size_t mark, std::size_t end,
+                         const PauseNoise& noise) {
     std::size_t fallen = mark;
     bool is_voice = true;
     std::size_t run = 0;  // frames running that say the level has changed from voice to noise or back
@@ -203,7 +204,8 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
     const bool rings = is_room(chains);
     for (SentenceChain& chain : chains) chain.ends_before_tail = rings;
     const PauseNoise noise =
-        rings ? PauseNoise{std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity()} : pauses_noise(track, loudness);
+        rings ? PauseNoise{std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity()}
+              : pauses_noise(track, loudness);
     // Edges reach into the pauses around the sentence, at most halfway to its neighbours.
     for (std::size_t w = 0; w < chains.size(); ++w) {
         SentenceChain& chain = chains[w];
@@ -230,9 +232,10 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
         const std::size_t voiced_end = speech.end_frame - chain.tail_frames;
         chain.searched.end_frame =
             std::min(upper, voiced_end < speech.end_frame ? voiced_end + kTailEdgeFrames : speech.end_frame + kEdgeFrames);
-        chain.quiet_end = voiced_end < speech.end_frame && std::isfinite(noise.reach_db)
-                              ? end_in_noise(track, voiced_end, std::min(upper, speech.end_frame + kEdgeFrames), noise)
-                              : 0;
+        chain.quiet_end =
+            voiced_end < speech.end_frame && std::isfinite(noise.reach_db)
+                ? end_in_noise(track, voiced_end, std::min(upper, speech.end_frame + kEdgeFrames), noise)
+                : 0;
         chain.searched_in_room = chain.searched;
         if (chain.ends_in_tail) {
             const std::size_t ringing_first =
