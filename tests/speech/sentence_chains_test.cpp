@@ -153,6 +153,20 @@ TEST_SUITE("sentence chains") {
         CHECK(end_before_ringing(track, 0, mark, levels.size()) == 30);
     }
 
+    TEST_CASE("a voice that stops at its loudest frame is found by its fall into the ringing") {
+        // The last vowel rises to its loudest frame and stops there (a rising tone cut by the
+        // sentence's end): the walk back along the line reaches that frame without leaving the line,
+        // and the voice's fall of 12 dB onto the slow ringing of the room above tells where it stopped.
+        std::vector<float> levels;
+        for (int k = 0; k < 30; ++k) levels.push_back(-26.0f + 0.2f * static_cast<float>(k));
+        for (int k = 0; k < 40; ++k)
+            levels.push_back(-32.0f - 0.3f * static_cast<float>(k) + (k % 2 == 0 ? 1.0f : -1.0f));
+        const FeatureTrack track = track_of(levels);
+        const std::size_t mark = end_before_tail(track, 0, levels.size());
+        REQUIRE(mark > 45);
+        CHECK(end_before_ringing(track, 0, mark, levels.size()) == 30);
+    }
+
     TEST_CASE("a fade that passes under the ringing's line drawn back keeps the mark") {
         // The last vowel fades 1 dB a frame to 20 dB under the voice, while what the louder frames
         // before it left rings on over it, falling 0.3 dB a frame: followed back, the level leaves the
