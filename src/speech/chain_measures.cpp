@@ -57,13 +57,15 @@ void measure_chain(const ChainMeasureInputs& in, EmissionScores& scores, Viterbi
             // A line of a few syllables is judged on its own fit and rhythm with the noise before
             // its voice left out as well, and refused only where both readings refuse it: the
             // noise is no evidence of its text (lead_noise.hpp). A longer line's first syllable
-            // weighs little in either.
+            // weighs little in either. Its text fit (check_text_fit) is the same lesser reading: on
+            // models learned from the line alone it is the own fit.
             if (syllables[k] < kMinHeldOutSyllables) {
                 const OwnVoiceShare own =
                     own_voice_share(share, stretches, in.loudness, chain.searched.first_frame);
-                if (own.has_lead_noise) {
+                if (own.has_noise) {
                     metrics[k].own_fit_gap = std::min(
                         metrics[k].own_fit_gap, text_fit_gap(chain, own.path, scores, in.forgiven_run_on));
+                    metrics[k].fit_gap = std::min(metrics[k].fit_gap, metrics[k].own_fit_gap);
                     metrics[k].length_spread =
                         std::min(metrics[k].length_spread, syllable_length_spread(own.stretches));
                 }

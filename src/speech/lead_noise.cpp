@@ -21,6 +21,20 @@ constexpr std::size_t kMinKeptVoiceFrames = 3;
 
 }  // namespace
 
+FrameSpan own_voice_extent(const LoudnessProfile& loudness, const FrameSpan& span) {
+    if (span.end_frame <= span.first_frame) return {span.first_frame, span.first_frame};
+    if (loudness.activity_db.size() < span.end_frame) return span;
+    const auto first = loudness.activity_db.begin() + static_cast<std::ptrdiff_t>(span.first_frame);
+    const auto end = loudness.activity_db.begin() + static_cast<std::ptrdiff_t>(span.end_frame);
+    const float level = *std::max_element(first, end) - kOwnVoiceBelowLoudestDb;
+    const auto is_voice = [&](float db) { return db >= level; };
+    const auto onset = std::find_if(first, end, is_voice);
+    const auto last =
+        std::find_if(std::make_reverse_iterator(end), std::make_reverse_iterator(first), is_voice);
+    return {static_cast<std::size_t>(onset - loudness.activity_db.begin()),
+            static_cast<std::size_t>(last.base() - loudness.activity_db.begin())};
+}
+
 OwnVoiceShare own_voice_share(const std::vector<StateSegment>& path,
                               const std::vector<AlignedStretch>& stretches, const LoudnessProfile& loudness,
                               std::size_t first_scored_frame) {
@@ -29,21 +43,31 @@ OwnVoiceShare own_voice_share(const std::vector<StateSegment>& path,
                                     [](const AlignedStretch& stretch) { return !stretch.is_pause; });
     if (first == stretches.end()) return share;
     float loudest = loudness.activity_db[first->first_frame];
+    bool is_lone = true;
     for (const auto& stretch : stretches) {
         if (stretch.is_pause) continue;
+        is_lone = is_lone && stretch.syllable == first->syllable;
         for (std::size_t t = stretch.first_frame; t < stretch.end_frame; ++t)
             loudest = std::max(loudest, loudness.activity_db[t]);
     }
     if (first->end_frame - first->first_frame < kMinLeadNoiseFrames + kMinKeptVoiceFrames) return share;
+    const auto is_noise = [&](std::size_t t) {
+        return loudness.activity_db[t] < loudest - kOwnVoiceBelowLoudestDb;
+    };
     std::size_t onset = first->first_frame;
-    while (onset < first->end_frame - kMinKeptVoiceFrames &&
-           loudness.activity_db[onset] < loudest - kOwnVoiceBelowLoudestDb)
-        ++onset;
-    if (onset - first->first_frame < kMinLeadNoiseFrames) return share;
-    share.has_lead_noise = true;
+    while (onset < first->end_frame - kMinKeptVoiceFrames && is_noise(onset)) ++onset;
+    if (onset - first->first_frame < kMinLeadNoiseFrames) onset = first->first_frame;
+    std::size_t end = first->end_frame;
+    if (is_lone) {
+        while (end > onset + kMinKeptVoiceFrames && is_noise(end - 1)) --end;
+        if (first->end_frame - end < kMinLeadNoiseFrames) end = first->end_frame;
+    }
+    if (onset == first->first_frame && end == first->end_frame) return share;
+    share.has_noise = true;
     share.path.clear();
     for (StateSegment segment : path) {
         segment.first_frame = std::max(segment.first_frame, onset - first_scored_frame);
+        if (end < first->end_frame) segment.end_frame = std::min(segment.end_frame, end - first_scored_frame);
         if (segment.end_frame > segment.first_frame) share.path.push_back(segment);
     }
     share.stretches.clear();
