@@ -39,8 +39,12 @@ struct TranscriptOptions {
 /// Reads a transcript: UTF-8 text in Traditional or Simplified characters, or numbered pinyin.
 ///
 /// - Sentences end at 。！？；… and . ! ? ; (closing quotes and brackets right after the mark
-///   stay with the sentence); text after the last mark is a sentence too. Line breaks, blank
-///   lines and spaces do not end a sentence.
+///   stay with the sentence); text after the last mark is a sentence too. A blank line ends one
+///   and starts a paragraph. A line ending without a mark ends its sentence where the lines are
+///   written one a sentence (a script, a subtitle's lines): not where it ends in a pause mark or
+///   a dash, nor in a paragraph of running text, wrapped at a width (a full stop inside one of its
+///   lines, or the line as wide as the paragraph's widest and 20 Chinese characters or more).
+///   Spaces end nothing. docs/transcripts.md "Lines" has the rule.
 /// - ，、：and , : mark a pause after the syllable before them (Syllable::pause_after).
 /// - Each character with a reading is one syllable. A polyphonic character is read by the word
 ///   it stands in (首都 shou3 du1, 都是 dou1 shi4): a run of characters is cut into its likeliest

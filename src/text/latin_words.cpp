@@ -123,6 +123,13 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     // 微软), so they are listed, each fixable in place (Android{an1 de5 luo2 yi1 de5}).
     {"android", "an1 zhuo2"},
     {"mclaren", "mai4 kai3 lun2"},
+    // Session 38: a well-known foreign company is said by the Chinese name Mandarin news gives it, where it
+    // has one: broadcasters were told in 2010 (SARFT's notice to CCTV and the provinces' stations, reported
+    // by Sohu Sports on 7 April 2010 and Caixin on 19 April 2010) not to say foreign words and abbreviations
+    // on air but the Chinese names. Airbus is 空客, as its Chinese arm names itself and news says it (the
+    // mapping gave ai ba si); Boeing 波音 (the mapping's bo ying, a final off).
+    {"airbus", "kong1 ke4"},
+    {"boeing", "bo1 yin1"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

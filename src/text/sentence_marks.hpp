@@ -69,7 +69,8 @@ bool marks_screen_mode(const std::vector<CodePoint>& text, std::size_t i);
 
 // A caption's or a list's bullet (▲图为救援现场, ● 国内油价, ■ 要点): a geometric shape (U+25A0 to U+25FF; △
 // is a triangle's, △ABC) that opens its line. It is not said and not warned of, as a list item's dot is
-// (session 36: skipped with a warning); a ticker's ▲ before a number is its rise (number_signs.hpp).
+// (session 36: skipped with a warning); a ticker's ▲ before a number is its rise (number_signs.hpp), and a
+// shape a legend explains is named (legend_shapes.hpp).
 bool marks_bullet(const std::vector<CodePoint>& text, std::size_t i);
 
 // The brace at text[i] opens a set a lesson writes (A={1,2,3}, 集合{x|x>0}), no reading fix: a closing brace

@@ -17,6 +17,8 @@
 #include "text/kana_words.hpp"
 #include "text/keyboard_keys.hpp"
 #include "text/latin_words.hpp"
+#include "text/legend_shapes.hpp"
+#include "text/line_sentences.hpp"
 #include "text/phonetic_spelling.hpp"
 #include "text/pinyin_tokens.hpp"
 #include "text/reading_tables.hpp"
@@ -65,6 +67,10 @@ Timeline TranscriptReader::read(const std::vector<CodePoint>& written,
         options_.keep_directions ? std::vector<detail::ScriptMark>() : detail::find_script_marks(text);
     warn_script_marks(text, marks);
     drawing_ends_ = detail::find_drawing_ends(text);
+    // A plain transcript's lines written one a sentence end theirs (docs/transcripts.md "Lines"); a
+    // subtitle's cues bring their own.
+    const auto ending_lines =
+        lines_ending_sentences ? *lines_ending_sentences : detail::lines_ending_sentences(text);
     auto mark = marks.begin();
     int last_line = 0;  // of the last code point that is not a space
     for (std::size_t i = 0; i < text.size();) {
@@ -74,14 +80,13 @@ Timeline TranscriptReader::read(const std::vector<CodePoint>& written,
             continue;
         }
         const bool starts_line = !is_space(text[i].value) && text[i].line != last_line;
-        if (starts_line && lines_ending_sentences &&
-            std::binary_search(lines_ending_sentences->begin(), lines_ending_sentences->end(), last_line)) {
+        if (starts_line && std::binary_search(ending_lines.begin(), ending_lines.end(), last_line)) {
             break_sentence();
         }
         if (!is_space(text[i].value)) last_line = text[i].line;
         while (mark != marks.end() && mark->begin < i) ++mark;
         if (mark != marks.end() && mark->begin == i) {
-            // A new speaker starts a new sentence, as a line break alone does not.
+            // A new speaker starts a new sentence.
             if (mark->is_label) break_sentence();
             i = mark->end;
             continue;
@@ -169,6 +174,11 @@ std::optional<std::size_t> TranscriptReader::read_written_form(const std::vector
         form_warnings_ = timeline_.warnings.size();
         add_form(text, i, unit->end, read_words(unit->words));
         return unit->end;
+    }
+    if (auto shape = detail::read_legend_shape(text, i)) {  // ▲表示上涨 三角
+        form_warnings_ = timeline_.warnings.size();
+        add_form(text, i, shape->end, read_words(shape->words));
+        return shape->end;
     }
     if (auto logarithm = detail::read_logarithm(text, i)) {
         form_warnings_ = timeline_.warnings.size();

@@ -145,7 +145,10 @@ bool takes_liang(char32_t c) {
         // session 29: 二死, 二伤).
         U"死伤傷"
         // A tablet as Taiwan's drug labels count it (每次2錠 兩錠, as 2片 两片; session 35: 二錠).
-        U"锭錠");
+        U"锭錠"
+        // A case as health news counts patients (新增2例 两例) and Hong Kong's news counts cases of any kind
+        // (2宗嚴重流感個案 兩宗; session 38: 二例, 二宗).
+        U"例宗");
 }
 
 std::string text_before(const std::vector<CodePoint>& text, std::size_t start, bool clause_only) {

@@ -323,12 +323,41 @@ TEST_SUITE("transcript") {
         CHECK(timeline.syllables.back().sentence == 5);
     }
 
-    TEST_CASE("line breaks and spaces do not end a sentence") {
-        const auto timeline = read_transcript("\n  今天天氣\n很好。 \n");
+    TEST_CASE("spaces and the break of a line wrapped at its paragraph's width do not end a sentence") {
+        // A line of 20 characters or more as wide as its paragraph's widest fills it: wrapped there.
+        const auto timeline = read_transcript("\n  今天天氣很好我們一起去公園散步然後再去吃一頓\n午飯。 \n");
         REQUIRE(timeline.sentences.size() == 1);
-        CHECK(timeline.sentences[0].text == "今天天氣很好。");
+        CHECK(timeline.sentences[0].text == "今天天氣很好我們一起去公園散步然後再去吃一頓午飯。");
         CHECK_FALSE(timeline.sentences[0].starts_paragraph);
-        CHECK(timeline.syllables.size() == 6);
+        CHECK(timeline.syllables.size() == 24);
+        // Running text, a sentence ending inside a line: its lines were wrapped, the short one too.
+        const auto running = read_transcript("今天天氣很好。我們一起去\n公園散步。");
+        REQUIRE(running.sentences.size() == 2);
+        CHECK(running.sentences[1].text == "我們一起去公園散步。");
+    }
+
+    TEST_CASE("a line written as a sentence of its own ends it, as a script or a subtitle's lines are") {
+        // Each fails on main 18103f3 (session 38): the lines were joined into one sentence.
+        const auto script = read_transcript("大家好\n我是小明\n今天聊聊天氣\n");
+        REQUIRE(script.sentences.size() == 3);
+        CHECK(script.sentences[0].text == "大家好");
+        CHECK(script.sentences[1].text == "我是小明");
+        CHECK(script.sentences[2].text == "今天聊聊天氣");
+        CHECK(script.syllables[2].sentence == 0);
+        CHECK(script.syllables[3].sentence == 1);
+        const auto quoted = read_transcript("他說「好」\n我們走吧");
+        CHECK(quoted.sentences.size() == 2);
+        const auto lyric = read_transcript("[00:12.50]我們一起走\n[00:15.00]走過春夏秋冬");
+        CHECK(lyric.sentences.size() == 2);
+        // The limits: a line ending in a pause mark or a dash runs on; a blank line still starts a
+        // paragraph; a line with its end mark ends as it did.
+        CHECK(read_transcript("今天天氣很好，\n我們去公園").sentences.size() == 1);
+        CHECK(read_transcript("他說——\n我們去公園").sentences.size() == 1);
+        const auto paragraphs = read_transcript("第一章\n\n天亮了\n他醒了");
+        REQUIRE(paragraphs.sentences.size() == 3);
+        CHECK(paragraphs.sentences[1].starts_paragraph);
+        CHECK_FALSE(paragraphs.sentences[2].starts_paragraph);
+        CHECK(read_transcript("你好。\n我是小明。").sentences.size() == 2);
     }
 
     TEST_CASE("a blank line starts a paragraph, and ends a sentence left open") {
@@ -419,14 +448,15 @@ TEST_SUITE("transcript") {
     }
 
     TEST_CASE("characters without a reading are reported with line and column, not dropped silently") {
-        const auto timeline = read_transcript("@# 你好\n★你", {}, "t.txt");
+        const auto timeline = read_transcript("@# 你好，\n★你", {}, "t.txt");
         CHECK(toneless(timeline) == "ni hao ni");
         REQUIRE(timeline.warnings.size() == 3);
         CHECK(timeline.warnings[0] == "t.txt:1:1: \"@\" (U+0040) has no Mandarin reading; skipped");
         CHECK(timeline.warnings[1].find("t.txt:1:2: \"#\"") == 0);
         CHECK(timeline.warnings[2].find("t.txt:2:1: \"\u2605\"") == 0);  // columns count characters
         CHECK(timeline.sentences.size() == 1);
-        CHECK(timeline.sentences[0].text == "@# 你好★你");  // a line break between wide characters is layout
+        // A line break between wide characters is layout; the line runs on past its comma.
+        CHECK(timeline.sentences[0].text == "@# 你好，★你");
     }
 
     TEST_CASE("a sentence with nothing to say is left out, its characters still reported") {
