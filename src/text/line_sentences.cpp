@@ -49,7 +49,11 @@ bool ends_sentence_inside(const std::vector<CodePoint>& text, const Line& line) 
     for (auto k = line.begin; k + 1 < line.end; ++k) {
         const auto c = text[k].value;
         const bool full_stop = c == 0x3002 /*。*/ || c == 0xFF61 /*｡*/;
-        if (!full_stop && !(c == '.' && is_space(text[k + 1].value))) continue;
+        // A dot ends an English sentence after a word's small letter; after a list item's number (1. 苹果) or
+        // a choice's letter (A. 正确) it ends none.
+        const bool english_stop =
+            c == '.' && k > line.begin && text[k - 1].value >= 'a' && text[k - 1].value <= 'z' && is_space(text[k + 1].value);
+        if (!full_stop && !english_stop) continue;
         auto next = k + 1;
         while (next < line.end && (closes_quote(text[next].value) || is_space(text[next].value))) ++next;
         if (next < line.end) return true;

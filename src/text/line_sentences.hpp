@@ -14,7 +14,7 @@ namespace talkface::detail {
 // of a paragraph but its last that ends with no mark, or with a closing quote or bracket, where
 // the paragraph is written line by line. A line ending in a pause mark or a dash (，、：, —) runs on
 // into the next. A paragraph is running text, wrapped at a width, where a line of it ends a
-// sentence inside it (a 。, or a . before a space, with text after it on the line): its breaks
+// sentence inside it (a 。, or a word's . before a space, with text after it on the line): its breaks
 // end nothing. So is a line that fills the paragraph's width (as wide as its widest line, and
 // at least 40 columns, a Chinese character two).
 std::vector<int> lines_ending_sentences(const std::vector<CodePoint>& text);

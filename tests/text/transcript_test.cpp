@@ -349,6 +349,8 @@ TEST_SUITE("transcript") {
         CHECK(quoted.sentences.size() == 2);
         const auto lyric = read_transcript("[00:12.50]我們一起走\n[00:15.00]走過春夏秋冬");
         CHECK(lyric.sentences.size() == 2);
+        CHECK(read_transcript("1.買菜\n2.做飯").sentences.size() == 2);  // a list, an item a line
+        CHECK(read_transcript("Hello everyone\nMy name is Tom").sentences.size() == 2);
         // The limits: a line ending in a pause mark or a dash runs on; a blank line still starts a
         // paragraph; a line with its end mark ends as it did.
         CHECK(read_transcript("今天天氣很好，\n我們去公園").sentences.size() == 1);
