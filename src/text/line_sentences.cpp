@@ -51,8 +51,8 @@ bool ends_sentence_inside(const std::vector<CodePoint>& text, const Line& line) 
         const bool full_stop = c == 0x3002 /*。*/ || c == 0xFF61 /*｡*/;
         // A dot ends an English sentence after a word's small letter; after a list item's number (1. 苹果) or
         // a choice's letter (A. 正确) it ends none.
-        const bool english_stop =
-            c == '.' && k > line.begin && text[k - 1].value >= 'a' && text[k - 1].value <= 'z' && is_space(text[k + 1].value);
+        const bool english_stop = c == '.' && k > line.begin && text[k - 1].value >= 'a' &&
+                                  text[k - 1].value <= 'z' && is_space(text[k + 1].value);
         if (!full_stop && !english_stop) continue;
         auto next = k + 1;
         while (next < line.end && (closes_quote(text[next].value) || is_space(text[next].value))) ++next;
