@@ -463,14 +463,9 @@ std::string syllable_text(const Timeline& transcript, std::size_t index) {
 // one edge's noise, and the length of one drawn over its neighbour's voice and the noise after it
 // is a wrong text's evidence (快跑 read over 3號！ among voices): there every frame counts.
 FrameSpan voice_on_path(const std::vector<AlignedStretch>& stretches, const LoudnessProfile& loudness) {
+    if (!is_lone_syllable(stretches)) return {0, std::numeric_limits<std::size_t>::max()};
     const auto first = std::find_if(stretches.begin(), stretches.end(),
                                     [](const AlignedStretch& stretch) { return !stretch.is_pause; });
-    const bool is_one_syllable =
-        first != stretches.end() &&
-        std::all_of(stretches.begin(), stretches.end(), [&](const AlignedStretch& stretch) {
-            return stretch.is_pause || stretch.syllable == first->syllable;
-        });
-    if (!is_one_syllable) return {0, std::numeric_limits<std::size_t>::max()};
     FrameSpan line{first->first_frame, first->end_frame};
     for (const auto& stretch : stretches)
         if (!stretch.is_pause) line.end_frame = std::max(line.end_frame, stretch.end_frame);

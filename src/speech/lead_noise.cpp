@@ -21,6 +21,15 @@ constexpr std::size_t kMinKeptVoiceFrames = 3;
 
 }  // namespace
 
+bool is_lone_syllable(const std::vector<AlignedStretch>& stretches) {
+    const auto first = std::find_if(stretches.begin(), stretches.end(),
+                                    [](const AlignedStretch& stretch) { return !stretch.is_pause; });
+    return first != stretches.end() &&
+           std::all_of(stretches.begin(), stretches.end(), [&](const AlignedStretch& stretch) {
+               return stretch.is_pause || stretch.syllable == first->syllable;
+           });
+}
+
 FrameSpan own_voice_extent(const LoudnessProfile& loudness, const FrameSpan& span) {
     if (span.end_frame <= span.first_frame) return {span.first_frame, span.first_frame};
     if (loudness.activity_db.size() < span.end_frame) return span;
@@ -43,10 +52,8 @@ OwnVoiceShare own_voice_share(const std::vector<StateSegment>& path,
                                     [](const AlignedStretch& stretch) { return !stretch.is_pause; });
     if (first == stretches.end()) return share;
     float loudest = loudness.activity_db[first->first_frame];
-    bool is_lone = true;
     for (const auto& stretch : stretches) {
         if (stretch.is_pause) continue;
-        is_lone = is_lone && stretch.syllable == first->syllable;
         for (std::size_t t = stretch.first_frame; t < stretch.end_frame; ++t)
             loudest = std::max(loudest, loudness.activity_db[t]);
     }
@@ -58,7 +65,7 @@ OwnVoiceShare own_voice_share(const std::vector<StateSegment>& path,
     while (onset < first->end_frame - kMinKeptVoiceFrames && is_noise(onset)) ++onset;
     if (onset - first->first_frame < kMinLeadNoiseFrames) onset = first->first_frame;
     std::size_t end = first->end_frame;
-    if (is_lone) {
+    if (is_lone_syllable(stretches)) {
         while (end > onset + kMinKeptVoiceFrames && is_noise(end - 1)) --end;
         if (first->end_frame - end < kMinLeadNoiseFrames) end = first->end_frame;
     }

@@ -41,6 +41,10 @@ OwnVoiceShare own_voice_share(const std::vector<StateSegment>& path,
                               const std::vector<AlignedStretch>& stretches, const LoudnessProfile& loudness,
                               std::size_t first_scored_frame);
 
+// Whether the sentence's `stretches` (stretches_of) hold one syllable alone, its pauses aside: a line
+// of one syllable, whose noise after its voice is left out as well as before it.
+bool is_lone_syllable(const std::vector<AlignedStretch>& stretches);
+
 // The frames of `span` from its first to its last within kOwnVoiceBelowLoudestDb of its loudest
 // frame in `loudness`: the voice's own extent, without the hiss or other voices the span holds
 // around it where the cutter found no pause there. Empty for an empty span; the whole span where
