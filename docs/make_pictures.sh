@@ -54,15 +54,18 @@ seek=$("$build_dir/bin/talkface" align "$speech_dir/demo.ogg" "$speech_dir/demo.
     python3 -c 'import json, sys; s = json.load(sys.stdin)["sentences"][1]; print("%.3f" % (s["start"] + 0.45 * (s["end"] - s["start"])))')
 "$build_dir/bin/talkface" demo -q --app announcer --title "晚間新聞" -o "$work_dir/announcer.html"
 "$build_dir/bin/talkface" demo -q --app audiobook --title "會說話的卡通臉" -o "$work_dir/audiobook.html"
-# page_screenshot HTML PNG WIDTH HEIGHT
+# page_screenshot HTML PNG WIDTH HEIGHT [CHROMIUM_FLAG]
 page_screenshot() {
     profile=$(mktemp -d "$work_dir/profile.XXXXXX")
     chromium --headless --no-sandbox --disable-gpu --disable-background-networking \
         --disable-component-update --disable-sync --no-first-run --mute-audio --hide-scrollbars \
         --user-data-dir="$profile" --virtual-time-budget=4000 --screenshot="$2" --window-size="$3,$4" \
-        "file://$1#t=$seek&pause" >/dev/null 2>&1
+        ${5:+"$5"} "file://$1#t=$seek&pause" >/dev/null 2>&1
     echo "wrote $2 ($3x$4)"
 }
+# A phone's only pointer is a finger (Blink's pointer type 2 is coarse, hover type 1 none): the page
+# shows it as on a phone, without the keys hint a desktop gets.
+phone_pointer="--blink-settings=primaryPointerType=2,availablePointerTypes=2,primaryHoverType=1,availableHoverTypes=1"
 page_screenshot "$work_dir/announcer.html" "$docs_dir/announcer.png" 832 482
-page_screenshot "$work_dir/audiobook.html" "$docs_dir/audiobook-phone.png" 390 844
+page_screenshot "$work_dir/audiobook.html" "$docs_dir/audiobook-phone.png" 390 844 "$phone_pointer"
 page_screenshot "$work_dir/audiobook.html" "$docs_dir/audiobook-desktop.png" 1280 800
