@@ -648,4 +648,62 @@ std::optional<SpokenForm> read_feet_and_inches(const std::vector<CodePoint>& tex
     return form;
 }
 
+std::optional<SpokenForm> read_twelve_hour_time(const std::vector<CodePoint>& text,
+                                                const WrittenNumber& hour) {
+    constexpr int kLastHour = 12;
+    if (hour.has_point || hour.has_separators || hour.whole.size() > 2 || hour.whole.front() == '0' ||
+        std::stoi(hour.whole) > kLastHour) {
+        return std::nullopt;
+    }
+    auto i = hour.end;
+    std::string minutes;
+    if (value_at(text, i) == ':' && is_digit_at(text, i + 1)) {
+        auto k = i + 1;
+        minutes = digits_from(text, k);
+        if (minutes.size() != 2 || minutes > "59") return std::nullopt;
+        i = k;
+    }
+    if (value_at(text, i) == ' ') ++i;
+    const auto letter = value_at(text, i) | 0x20;  // small
+    if (letter != 'a' && letter != 'p') return std::nullopt;
+    auto end = i + 1;
+    if (value_at(text, end) == '.') ++end;
+    if ((value_at(text, end) | 0x20) != 'm') return std::nullopt;
+    ++end;
+    if (value_at(text, end) == '.' && value_at(text, i + 1) == '.') ++end;
+    if (is_ascii_letter(value_at(text, end)) || is_digit_at(text, end)) return std::nullopt;
+    const int number = std::stoi(hour.whole);
+    constexpr int kNoon = 12;
+    constexpr int kEvening = 6;
+    const char* part = "上午";
+    if (letter == 'a' && number == kNoon) part = "凌晨";
+    if (letter == 'p') part = number == kNoon ? "中午" : number < kEvening ? "下午" : "晚上";
+    SpokenForm form;
+    form.words = std::string(part) + count_words(hour.whole) + "点";
+    if (!minutes.empty() && minutes != "00")
+        form.words += (minutes.front() == '0' ? "零" + digit_words(minutes.substr(1))
+                                              : cardinal_words(minutes, false)) +
+                      "分";
+    form.end = end;
+    // Opening hours' range (10AM-8PM, 9am~6pm): the mark is 到, as between two clock times.
+    if (is_range_mark(value_at(text, end)) && is_digit_at(text, end + 1)) {
+        if (auto last = read_twelve_hour_time(text, parse_number(text, end + 1))) {
+            form.words += "到" + last->words;
+            form.end = last->end;
+        }
+    }
+    return form;
+}
+
+std::optional<SpokenForm> read_weekday_bracket(const std::vector<CodePoint>& text, std::size_t start) {
+    if (start == 0 || value_at(text, start) != '(' || value_at(text, start + 2) != ')') return std::nullopt;
+    const auto before = value_at(text, start - 1);
+    if (!is_digit_at(text, start - 1) && !is_one_of(before, U"日号號")) return std::nullopt;
+    if (!is_one_of(value_at(text, start + 1), U"一二三四五六日天")) return std::nullopt;
+    SpokenForm form;
+    form.words = "星期" + std::string(text[start + 1].text);
+    form.end = start + 3;
+    return form;
+}
+
 }  // namespace talkface::detail

@@ -137,6 +137,18 @@ std::optional<SpokenForm> read_month_and_day(const std::vector<CodePoint>& text,
 std::optional<SpokenForm> read_padded_month_and_day(const std::vector<CodePoint>& text, std::size_t start,
                                                     const WrittenNumber& month);
 
+// A clock time on the 12-hour clock, as English-speaking and Hong Kong shops write their hours (10AM
+// 上午十点, 8PM 晚上八点, 7:30pm 晚上七点三十分, 10AM-8PM ... 到 ...): the part of the day said before the
+// hour, as Mandarin says it (AM 上午, 12AM 凌晨; PM 12 中午, 1-5 下午, 6-11 晚上), the hour 1 to 12.
+std::optional<SpokenForm> read_twelve_hour_time(const std::vector<CodePoint>& text,
+                                                const WrittenNumber& hour);
+
+// A day of the week in brackets right after a date, one character (12/24(三) 十二月二十四日星期三,
+// 12月25日（四）, 1/1(日)), as Taiwan's and Hong Kong's notices date a day: 星期 and the character
+// (session 39: the character alone, 三). nullopt elsewhere: the bracket at text[start] follows a digit,
+// 日, 号 or 號.
+std::optional<SpokenForm> read_weekday_bracket(const std::vector<CodePoint>& text, std::size_t start);
+
 // A race's time, minutes and seconds with their tenths or hundredths (1:28.65 一分二十八秒六五,
 // 3:27.46): the seconds' decimal point is what a clock's minutes never have. A subtitle's timestamp
 // (00:01.500: minutes with a leading zero, thousandths) is no race's.

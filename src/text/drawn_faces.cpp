@@ -118,6 +118,16 @@ std::size_t ascii_face_end(const std::vector<CodePoint>& text, std::size_t i) {
     } else if ((is_sign_eye || is_letter_eye) && value_at(text, i + 2) == mirrored && mouth != eye &&
                kMouths.find(mouth) != std::u32string_view::npos && (is_sign_eye || mouth == '_')) {
         end = i + 3;
+    } else if ((eye == 'X' || eye == 'x') && mouth == 'D') {
+        // A laugh on its side, its eyes squeezed shut (XD, XDDD, xD; session 39: spelled, ai ke si di), as
+        // chats in Taiwan and Hong Kong close a joke; not before a Chinese character unless its mouth is
+        // drawn wide (xD卡 is a memory card), nor before a model's number or a word (XD 2000).
+        auto wide = i + 2;
+        while (value_at(text, wide) == 'D') ++wide;
+        auto next = wide;
+        while (is_space(value_at(text, next))) ++next;
+        if ((wide > i + 2 || !is_han(value_at(text, wide))) && !is_letter_or_digit(value_at(text, next)))
+            end = wide;
     } else if ((eye == ':' || eye == ';') && (i == 0 || is_space(text[i - 1].value))) {
         const auto side_mouth = value_at(text, i + 1) == '-' ? i + 2 : i + 1;
         if (kLetterMouths.find(value_at(text, side_mouth)) != std::u32string_view::npos) end = side_mouth + 1;

@@ -292,10 +292,15 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
             if (before_st) return "星";
             return between_terms && is_ascii_digit(right) ? "乘" : "";
         }
-        // × after a character too, before a number (经验值×2 经验值乘二, a game's bonus; session 14).
+        // × after a character too, before a number (经验值×2 经验值乘二, a game's bonus; session 14), and
+        // between two words in a formula, as ÷ is (長方形面積=長×寬 长乘宽, 底×高÷2; session 39: skipped
+        // with a warning); elsewhere two names about it are a collaboration's (品牌×故宫), left unsaid.
         case 0xD7:  // ×
             if (marks_judgement) return "错";
-            return between_terms || (is_han_left && is_ascii_digit(right)) ? "乘" : "";
+            return between_terms || (is_han_left && is_ascii_digit(right)) ||
+                           (is_han_left && is_han_right && clause_has_relation(text, i))
+                       ? "乘"
+                       : "";
         case 'x': return said_small_x(text, i, before == i && after == i + 1, left, right);
         // ÷ is never a bracket or a dash: between two words too, as a rule of thumb is written
         // (总价÷数量=单价, 体重(kg)÷身高; session 30: skipped with a warning).

@@ -164,8 +164,9 @@ std::optional<SaidNumber> say_as_name(const std::string& whole, const NumberCont
     const bool is_mobile = whole.size() == 11 && whole.front() == '1';
     // A phone word earlier in the sentence does not make an amount a phone number (这款手机售价5999元).
     const bool counts =
-        !context.is_train && (context.has_unit || (takes_liang(context.next) && !context.next_heads_word) ||
-                              context.next == '%' || context.after_times);
+        !context.is_train &&
+        (context.has_unit || (takes_liang(context.next) && !context.next_heads_word && !context.is_dialled) ||
+         context.next == '%' || context.after_times);
     if ((context.is_phone && whole.size() >= 3 && !counts) || is_mobile) {
         said.words = digit_words(whole, true);
         said.is_dialled = true;
@@ -286,6 +287,11 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
                          adds_to_ordinal(text, start) || lists_after_ordinal(text, start) ||
                          numbers_labelled_item(text, start);
     context.is_phone = follows_phone_word(text, start) || precedes_hotline_word(text, number.end);
+    // Right after the verb the number is what is dialled, though a word that opens as a measure word follows
+    // it (撥打1999臺北市民當家熱線 一九九九, the city's name after the hotline's; session 38: counted, 臺 a
+    // machine's); a unit or a currency still counts it.
+    const auto verb = text_between(text, previous >= 2 ? previous - 2 : 0, previous);
+    context.is_dialled = verb == "拨打" || verb == "撥打" || verb == "致电" || verb == "致電";
 
     context.is_named = follows_name_word(text, start);
     // A house's number right after its street (文化路一段100號, 中山路128号) counts, as addresses are read

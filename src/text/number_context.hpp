@@ -25,6 +25,7 @@ struct NumberContext {
     bool has_unit = false;         // a unit follows (5km): a measure, so 2 is 两
     bool is_ordinal = false;       // 第 before it
     bool is_phone = false;         // a phone word earlier in the sentence, or a hotline's right after it
+    bool is_dialled = false;  // right after a verb of dialling (拨打 撥打 致电): dialled before any word
     bool is_named = false;         // a naming word right before it (房间号是1208)
     bool is_service_call = false;  // dialled or named (打110, 110报警)
     bool is_model = false;  // right after the capitals of a model's name (C919, A380) or a maker (波音737)

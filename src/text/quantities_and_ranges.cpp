@@ -27,6 +27,17 @@ bool is_temperature_reading(const std::vector<CodePoint>& text, std::size_t star
     return next == U'度' && speaks_of_temperature(text, start);
 }
 
+// A unit in characters whose prefix is no measure word (2毫米 两毫米, 2厘米, 2微克, 2纳米, Taiwan's 2奈米
+// 兩奈米, as 2米 and 2公里 are 两; session 38: 二): a unit, as the symbol it spells is (2mm 两毫米).
+bool is_small_unit_word_at(const std::vector<CodePoint>& text, std::size_t end) {
+    const auto word = text_between(text, end, end + 2);
+    for (const std::string_view unit :
+         {"毫米", "毫升", "毫克", "毫安", "毫秒", "厘米", "釐米", "微米", "微克", "微秒", "纳米", "納米",
+          "奈米", "纳秒", "納秒", "奈秒", "皮米"})
+        if (word == unit) return true;
+    return false;
+}
+
 // A 度 after a number measures degrees (两度) where the sentence speaks of a temperature (气温只有2度),
 // the clause of an angle (夹角是2度, 旋转2度), or an amount closes it (2度左右, 2度以上, 2度。); before a
 // burn's or a frostbite's word it grades the injury (2度烫伤 二度烫伤), and elsewhere it may count
@@ -364,8 +375,9 @@ SpokenForm read_quantity(const std::vector<CodePoint>& text, std::size_t start, 
         magnitude_words = chat_letter;
         ++end;
     }
-    context.has_unit = power_words.empty() && ((unit != nullptr && unit->written != "%") ||
-                                               is_byte_unit_at(text, end) || is_basis_points_at(text, end));
+    context.has_unit =
+        power_words.empty() && ((unit != nullptr && unit->written != "%") || is_byte_unit_at(text, end) ||
+                                is_basis_points_at(text, end) || is_small_unit_word_at(text, end));
     context.measures_degrees = unit == nullptr && power_words.empty() && measures_degrees(text, start, end);
     context.counts_kuai = unit == nullptr && currency == nullptr && power_words.empty() &&
                           (is_one_of(value_at(text, end), U"块塊") ||

@@ -17,21 +17,22 @@ namespace {
 // Simplified and Traditional characters, and English's; and how a game's or a script's line is said, its
 // voice (（小声）其实我早就知道了: session 33, read as words).
 constexpr std::string_view kDirectionWords[] = {
-    "小声",     "小聲",       "大声",      "大聲",      "轻声",     "輕聲",     "低声",     "低聲",
-    "低语",     "低語",       "耳语",      "耳語",      "喃喃",     "自言自语", "自言自語", "大喊",
-    "怒吼",     "whispering", "whispers",  "shouting",  "笑",       "大笑",     "微笑",     "苦笑",
-    "冷笑",     "偷笑",       "笑声",      "笑聲",      "哄笑",     "掌声",     "掌聲",     "鼓掌",
-    "拍手",     "欢呼",       "歡呼",      "欢呼声",    "歡呼聲",   "尖叫",     "口哨",     "音乐",
-    "音樂",     "背景音乐",   "背景音樂",  "配乐",      "配樂",     "音效",     "歌声",     "歌聲",
-    "唱",       "哼唱",       "叹气",      "嘆氣",      "歎氣",     "叹息",     "嘆息",     "咳嗽",
-    "清嗓子",   "哭",         "哭泣",      "哭声",      "哭聲",     "抽泣",     "哽咽",     "停顿",
-    "停頓",     "沉默",       "静默",      "靜默",      "喘气",     "喘氣",     "喘息",     "吸气",
-    "吸氣",     "呼吸",       "杂音",      "雜音",      "噪音",     "听不清",   "聽不清",   "画外音",
-    "畫外音",   "旁白",       "独白",      "獨白",      "内心独白", "內心獨白", "铃声",     "鈴聲",
-    "敲门声",   "敲門聲",     "片头",      "片頭",      "片尾",     "转场",     "轉場",     "点头",
-    "點頭",     "摇头",       "搖頭",      "鞠躬",      "laughter", "laughs",   "laughing", "laugh",
-    "applause", "clapping",   "cheering",  "cheers",    "music",    "singing",  "sighs",    "sigh",
-    "coughs",   "cough",      "inaudible", "crosstalk", "silence",  "pause",    "noise"};
+    "小声",     "小聲",       "大声",     "大聲",     "轻声",      "輕聲",      "低声",     "低聲",
+    "低语",     "低語",       "耳语",     "耳語",     "喃喃",      "自言自语",  "自言自語", "大喊",
+    "怒吼",     "whispering", "whispers", "shouting", "笑",        "大笑",      "微笑",     "苦笑",
+    "冷笑",     "偷笑",       "笑声",     "笑聲",     "哄笑",      "掌声",      "掌聲",     "鼓掌",
+    "拍手",     "欢呼",       "歡呼",     "欢呼声",   "歡呼聲",    "尖叫",      "口哨",     "音乐",
+    "音樂",     "背景音乐",   "背景音樂", "配乐",     "配樂",      "音效",      "歌声",     "歌聲",
+    "唱",       "哼唱",       "叹气",     "嘆氣",     "歎氣",      "叹息",      "嘆息",     "咳嗽",
+    "清嗓子",   "哭",         "哭泣",     "哭声",     "哭聲",      "抽泣",      "哽咽",     "停顿",
+    "停頓",     "沉默",       "静默",     "靜默",     "喘气",      "喘氣",      "喘息",     "吸气",
+    "吸氣",     "呼吸",       "杂音",     "雜音",     "噪音",      "听不清",    "聽不清",   "画外音",
+    "畫外音",   "旁白",       "独白",     "獨白",     "内心独白",  "內心獨白",  "内心os",   "內心os",
+    "铃声",     "鈴聲",       "敲门声",   "敲門聲",   "片头",      "片頭",      "片尾",     "转场",
+    "轉場",     "点头",       "點頭",     "摇头",     "搖頭",      "鞠躬",      "laughter", "laughs",
+    "laughing", "laugh",      "applause", "clapping", "cheering",  "cheers",    "music",    "singing",
+    "sighs",    "sigh",       "coughs",   "cough",    "inaudible", "crosstalk", "silence",  "pause",
+    "noise"};
 
 // Who makes the sound, before it; how it goes on, after it: 众人笑 全场鼓掌 掌声响起.
 constexpr std::string_view kDirectionModifiers[] = {
@@ -105,6 +106,26 @@ bool is_direction(const std::vector<CodePoint>& text, std::size_t open, std::siz
     return has_piece;
 }
 
+// A space that may stand between a line's start and its label, or between a label and its words.
+bool is_line_space(char32_t c) {
+    return c == ' ' || c == 0x3000 || c == '\t';
+}
+
+// Whether the bracket text[open, close] is a voice heard over the picture or off it, OS or VO alone, as a
+// script or a show's subtitles mark a line (（OS）我到底在干嘛, 内心OS too): only where the bracket opens its
+// line or follows a colon, since inside a sentence OS glosses a term (操作系统（OS）).
+bool is_voice_over(const std::vector<CodePoint>& text, std::size_t open, std::size_t close) {
+    if (close != open + 3) return false;
+    std::string letters;
+    for (auto k = open + 1; k < close; ++k)
+        letters += static_cast<char>(text[k].value >= 'a' && text[k].value <= 'z' ? text[k].value - 'a' + 'A'
+                                                                                  : text[k].value);
+    if (letters != "OS" && letters != "VO") return false;
+    auto before = open;
+    while (before > 0 && is_line_space(text[before - 1].value)) --before;
+    return before == 0 || is_one_of(text[before - 1].value, U"\n:");
+}
+
 void add_directions(const std::vector<CodePoint>& text, std::vector<ScriptMark>& marks) {
     for (std::size_t open = 0; open < text.size(); ++open) {
         const char32_t closing = closing_bracket(text[open].value);
@@ -112,18 +133,13 @@ void add_directions(const std::vector<CodePoint>& text, std::vector<ScriptMark>&
         for (std::size_t k = open + 1; k < text.size() && k <= open + kLongestDirection + 1; ++k) {
             if (text[k].value == '\n' || closing_bracket(text[k].value) != 0) break;
             if (text[k].value != closing) continue;
-            if (is_direction(text, open, k)) {
-                marks.push_back({open, k + 1, false});
+            if (is_direction(text, open, k) || is_voice_over(text, open, k)) {
+                marks.push_back({open, k + 1, false, open, k + 1});
                 open = k;
             }
             break;
         }
     }
-}
-
-// A space that may stand between a line's start and its label, or between a label and its words.
-bool is_line_space(char32_t c) {
-    return c == ' ' || c == 0x3000 || c == '\t';
 }
 
 bool is_label_character(char32_t c) {
@@ -135,6 +151,19 @@ bool is_label_character(char32_t c) {
 bool ends_with_saying(std::string_view name) {
     return ends_with_any(name, {"说", "說", "道", "讲", "講", "称", "稱", "曰", "表示", "指出", "认为",
                                 "認為", "强调", "強調"});
+}
+
+// Whether a name is a body's: a ministry, a bureau, a commission, an agency, a court, a news desk or a
+// company (外交部 国家统计局 国家卫健委 中央氣象署 国家网信办 新华社 港交所 最高法院 联合国), as a news
+// digest heads each item with who reports it. A body speaks through its people (外交部发言人：, a person's
+// head), never with a label of its own, in a script whose turns come back too.
+bool names_body(std::string_view name) {
+    if (name == "干部" || name == "幹部") return false;
+    return ends_with_any(
+        name,
+        {"部",   "局",   "委",   "署",   "办",   "辦",     "社",     "院",     "厅",     "廳",     "处",
+         "處",   "网",   "網",   "盟",   "府",   "馆",     "館",     "公司",   "集团",   "集團",   "银行",
+         "銀行", "央行", "交所", "协会", "協會", "电视台", "電視台", "气象台", "氣象台", "联合国", "聯合國"});
 }
 
 bool is_field_name(std::string_view name) {
@@ -163,7 +192,7 @@ bool is_field_name(std::string_view name) {
            // 本场最佳 本书定价 当前状态), a thing the text shows, never a speaker; 本人 is one.
            (starts_with_any(name, {"本", "当前", "當前"}) && name != "本人") ||
            // A code's Latin name, whose last letter is no head to look at (ISBN：978-7-..., 玩家ID：).
-           ends_with_any(name, {"ISBN", "ISSN", "IMEI", "ID", "IP", "URL", "SKU"});
+           ends_with_any(name, {"ISBN", "ISSN", "IMEI", "ID", "IP", "URL", "SKU"}) || names_body(name);
 }
 
 struct Label {
@@ -177,8 +206,24 @@ struct Label {
 // characters opening with a common surname or with 小 老 阿 (小明 老王 阿强 张伟). A heading that names a
 // task or a part of a lesson (化简 总结 解析 答案 注意事项) is none, and names no speaker.
 bool names_person(std::string_view name) {
-    if (std::any_of(name.begin(), name.end(),
-                    [](unsigned char c) { return is_ascii_letter(c) || is_ascii_digit(c); }))
+    // A name in Latin letters or digits (A, Tom, Speaker 2), but not capitals alone that spell an
+    // organisation's or a league's initials (NBA, WHO); among characters, one that ends in them (玩家A,
+    // 选手1), not one that only opens with them (F1阿布扎比站, a race's desk).
+    const auto is_latin_or_digit = [](unsigned char c) { return is_ascii_letter(c) || is_ascii_digit(c); };
+    if (std::any_of(name.begin(), name.end(), is_latin_or_digit)) {
+        const bool has_han = std::any_of(name.begin(), name.end(), [](unsigned char c) { return c >= 0x80; });
+        const bool initials = name.size() >= 2 && std::all_of(name.begin(), name.end(), [](unsigned char c) {
+                                  return c >= 'A' && c <= 'Z';
+                              });
+        if (!has_han) return !initials;
+        if (is_latin_or_digit(static_cast<unsigned char>(name.back()))) return true;
+    }
+    // A seat's number (1号, 12號), a crosstalk's or an interview's one-character roles (甲 乙, 问 答).
+    const auto digits = name.find_first_not_of("0123456789");
+    if (digits > 0 && digits != std::string_view::npos &&
+        (name.substr(digits) == "号" || name.substr(digits) == "號"))
+        return true;
+    if (name == "甲" || name == "乙" || name == "丙" || name == "问" || name == "問" || name == "答")
         return true;
     if (ends_with_any(name,
                       {"人", "者", "员", "員", "师", "師", "生", "手", "家", "长", "長", "官", "主", "友",
@@ -219,8 +264,50 @@ bool introduces_formula(const std::vector<CodePoint>& text, std::size_t after_co
     return false;
 }
 
+// Where the time a chat log or a meeting's transcript stamps a line with ends, with the spaces after it,
+// if one opens the line at text[start]: a clock time (10:30, 10:30:15), a date before it (2026-12-07,
+// 2026/12/07, 12-07) allowed, in brackets or not. Else start.
+std::size_t after_time_stamp(const std::vector<CodePoint>& text, std::size_t start) {
+    auto k = start;
+    const auto bracket = value_at(text, k);
+    if (is_one_of(bracket, U"[(")) ++k;
+    const auto digits = [&](std::size_t fewest, std::size_t most) {
+        std::size_t count = 0;
+        while (count < most && is_ascii_digit(value_at(text, k))) {
+            ++k;
+            ++count;
+        }
+        return count >= fewest && !is_ascii_digit(value_at(text, k));
+    };
+    const auto date_start = k;
+    if (digits(2, 4) && is_one_of(value_at(text, k), U"-/")) {
+        ++k;
+        const bool date = digits(1, 2) && (!is_one_of(value_at(text, k), U"-/") || (++k, digits(1, 2))) &&
+                          value_at(text, k) == ' ';
+        k = date ? k + 1 : date_start;
+    } else {
+        k = date_start;
+    }
+    if (!digits(1, 2) || value_at(text, k) != ':') return start;
+    ++k;
+    if (!digits(2, 2)) return start;
+    if (value_at(text, k) == ':') {
+        ++k;
+        if (!digits(2, 2)) return start;
+    }
+    if (bracket == '[' || bracket == '(') {
+        if (value_at(text, k) != (bracket == '[' ? U']' : U')')) return start;
+        ++k;
+    } else if (!is_line_space(value_at(text, k)) && k < text.size() && !is_one_of(text[k].value, U"\r\n")) {
+        return start;
+    }
+    while (k < text.size() && is_line_space(text[k].value)) ++k;
+    return k;
+}
+
 // The label that starts the line at text[start], if it has one.
-std::optional<Label> label_at(const std::vector<CodePoint>& text, std::size_t start) {
+std::optional<Label> label_at(const std::vector<CodePoint>& text, std::size_t line_start) {
+    const auto start = after_time_stamp(text, line_start);
     std::size_t k = start;
     std::string name;
     bool has_letter = false;
@@ -240,23 +327,66 @@ std::optional<Label> label_at(const std::vector<CodePoint>& text, std::size_t st
     if (introduces_formula(text, k + 1)) return std::nullopt;
     auto end = k + 1;
     while (end < text.size() && is_line_space(text[end].value)) ++end;
-    return Label{name, {start, end, true}};
+    return Label{name, {line_start, end, true, start, k + 1}};
+}
+
+// A chat log's line that holds a speaker's name and the message's time alone, as an app exports the
+// header of each message above its text (小明 10:30, 2026-12-07 10:30:15 小明), text[start, end) the line.
+std::optional<Label> header_label_at(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    while (end > start && is_one_of(text[end - 1].value, U" \t\r\u3000")) --end;
+    const auto name_from = [&](std::size_t from, std::size_t to) -> std::optional<std::string> {
+        std::string name;
+        bool has_letter = false;
+        for (auto k = from; k < to; ++k) {
+            if (!is_label_character(text[k].value) || text[k].value == ' ') return std::nullopt;
+            has_letter = has_letter || !is_ascii_digit(text[k].value);
+            name += text[k].text;
+        }
+        if (to == from || to - from > kLongestLabel || !has_letter) return std::nullopt;
+        return name;
+    };
+    if (const auto after = after_time_stamp(text, start); after > start) {
+        if (const auto name = name_from(after, end)) return Label{*name, {start, end, true, after, end}};
+        return std::nullopt;
+    }
+    auto space = start;
+    while (space < end && !is_line_space(text[space].value)) ++space;
+    auto stamp = space;
+    while (stamp < end && is_line_space(text[stamp].value)) ++stamp;
+    if (stamp == space || stamp == end) return std::nullopt;
+    const auto name = name_from(start, space);
+    if (!name || after_time_stamp(text, stamp) < end) return std::nullopt;
+    return Label{*name, {start, end, true, start, space}};
 }
 
 void add_labels(const std::vector<CodePoint>& text, std::vector<ScriptMark>& marks) {
     std::vector<Label> labels;
+    // A header is followed by its message: lines of a name and a time one after another are a
+    // schedule's (张老师 9:00), and none of them is kept.
+    std::vector<Label> headers;
+    std::optional<Label> pending;
+    bool in_schedule = false;
     std::size_t lines = 0;
     for (std::size_t k = 0; k < text.size();) {
         auto start = k;
         while (start < text.size() && is_line_space(text[start].value)) ++start;
         auto end = start;
         while (end < text.size() && text[end].value != '\n') ++end;
-        if (end > start && text[start].value != '\r') {
-            ++lines;
-            if (auto label = label_at(text, start)) labels.push_back(std::move(*label));
-        }
         k = end + 1;
+        if (end == start || text[start].value == '\r') continue;
+        ++lines;
+        if (auto header = header_label_at(text, start, end)) {
+            in_schedule = in_schedule || pending.has_value();
+            pending = std::move(header);
+            continue;
+        }
+        if (pending && !in_schedule) headers.push_back(std::move(*pending));
+        pending.reset();
+        in_schedule = false;
+        if (auto label = label_at(text, start)) labels.push_back(std::move(*label));
     }
+    // A chat log's headers, two lines or more, are its speakers' labels as a colon's are.
+    if (headers.size() >= 2) labels.insert(labels.end(), headers.begin(), headers.end());
     const auto named = labels.size();
     labels.erase(std::remove_if(labels.begin(), labels.end(),
                                 [](const Label& label) { return is_field_name(label.name); }),
@@ -270,6 +400,16 @@ void add_labels(const std::vector<CodePoint>& text, std::vector<ScriptMark>& mar
     // Without a speaker's turn coming back, lines of fields make a form, whose 收件人 and 寄件人 are
     // fields too.
     if (!repeats && (has_fields || labels.size() * 2 < lines)) return;
+    // Where no turn comes back, a label is a speaker's only where it names a person: a news digest opens
+    // each item with its desk's, its body's or its league's name (国家卫健委： 外交部： 英超：
+    // F1阿布扎比站：), said as its heading, and two persons at least make a dialogue (session 38: every such
+    // line's name was a speaker's, left out with a warning).
+    if (!repeats) {
+        labels.erase(std::remove_if(labels.begin(), labels.end(),
+                                    [](const Label& label) { return !names_person(label.name); }),
+                     labels.end());
+        if (labels.size() < 2) return;
+    }
     // Where turns come back, a name that labels one line only is a speaker's where it names a person; else
     // it heads what follows and is said (化简：, 总结：, 注意事项： among 老师： and 学生：; session 34: left
     // out).

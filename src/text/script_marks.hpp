@@ -12,11 +12,15 @@
 namespace talkface::detail {
 
 // text[begin, end): a stage direction with its brackets, or a speaker label with its colon and
-// the spaces after it.
+// the spaces after it, and the time a chat log stamps the line with before it ([10:30] 小明：), or a
+// chat log's line of a name and a time alone (小明 10:30); the label as its warning names it is
+// text[name_begin, name_end).
 struct ScriptMark {
     std::size_t begin = 0;
     std::size_t end = 0;
     bool is_label = false;
+    std::size_t name_begin = 0;
+    std::size_t name_end = 0;
 };
 
 // The marks of `text` (code points as the reader folds them: full-width forms as ASCII), in order.
@@ -28,7 +32,11 @@ struct ScriptMark {
 //   letters, digits, spaces between; not digits alone, not a verb of saying such as 他说) and a
 //   colon; only where two lines or more start so, and the text is a dialogue: a label names two
 //   lines or more, or half the lines that are not blank start with one. One line alone
-//   (客服热线：400-800-1234) is text.
+//   (客服热线：400-800-1234) is text. Where no name comes back, each must name a person (a news
+//   digest's 外交部： 英超： are its items' headings); a body's name (部 局 委 署 社 ...) never does. A
+//   chat log's time before the name (10:30 小明：, [2026-12-07 10:30:15] 小明：) goes with the label,
+//   and so does a line of a name and a time alone, as a chat app exports each message's header
+//   (小明 10:30, 2026-12-07 10:30:15 小明), where two lines or more are so written.
 std::vector<ScriptMark> find_script_marks(const std::vector<CodePoint>& text);
 
 // Whether the dash at text[start] opens a speaker's turn in a subtitle of two (-明天几号？-12号，周五。):

@@ -102,7 +102,7 @@ void TranscriptReader::warn_script_marks(const std::vector<CodePoint>& text,
     constexpr const char* kKeep =
         "; left out (TranscriptOptions::keep_directions, --keep-directions, keeps it)";
     const auto written = [&](const detail::ScriptMark& mark) {
-        auto out = written_text(text, mark.begin, mark.end);
+        auto out = written_text(text, mark.name_begin, mark.name_end);
         while (!out.empty() && out.back() == ' ') out.pop_back();
         return out;
     };
@@ -118,8 +118,8 @@ void TranscriptReader::warn_script_marks(const std::vector<CodePoint>& text,
         }
         auto& lines = label_lines[name];
         if (lines == 0) continue;  // warned at its first line
-        warn(text[mark.begin], "\"" + name + "\" is a speaker's label (" + std::to_string(lines) +
-                                   (lines == 1 ? " line" : " lines") + "), not said" + kKeep);
+        warn(text[mark.name_begin], "\"" + name + "\" is a speaker's label (" + std::to_string(lines) +
+                                        (lines == 1 ? " line" : " lines") + "), not said" + kKeep);
         lines = 0;
     }
 }
@@ -169,6 +169,11 @@ std::optional<std::size_t> TranscriptReader::read_written_form(const std::vector
         add_form(text, i, form->end,
                  read_words(form->is_dialled ? with_local_one(form->words) : form->words));
         return form->end;
+    }
+    if (auto weekday = detail::read_weekday_bracket(text, i)) {  // 12/24(三) 星期三
+        form_warnings_ = timeline_.warnings.size();
+        add_form(text, i, weekday->end, read_words(weekday->words));
+        return weekday->end;
     }
     if (auto unit = detail::read_named_unit(text, i)) {
         form_warnings_ = timeline_.warnings.size();

@@ -77,7 +77,29 @@ bool is_si_kilogram_at(const std::vector<CodePoint>& text, std::size_t start, st
                               (start < 3 || !is_ascii_letter(value_at(text, start - 3)));
     const auto after = text_between(text, end, end + 4);
     const bool per_volume = starts_with_any(after, {"/m³", "/cm³", "/dm³", "/m3", "/L"});
-    return per_kilogram || per_volume;
+    // A body's mass as a physics problem gives it (质量为0.5kg的水 零点五千克; session 39: 公斤), in
+    // Simplified text: Taiwan's lessons say 公斤 (質量為 stays so).
+    auto number = start;
+    while (number > 0 && (is_digit_at(text, number - 1) || is_one_of(value_at(text, number - 1), U". ")))
+        --number;
+    const bool mass = contains_any(text_before(text, number, true), {"质量"});
+    return per_kilogram || per_volume || mass;
+}
+
+// Hours written with a capital H after a count of two or three digits, as shops and services write how
+// long they open or ship (24H营业 二十四小时营业, 48H发货, 7×24H客服; session 39: letters, ai qi): one digit
+// before H is a pencil's grade (2H铅笔), and H before a digit a half year's (2024H1).
+constexpr Unit kCapitalHours = {"H", "小时"};
+
+bool is_capital_hours_at(const std::vector<CodePoint>& text, std::size_t i) {
+    if (value_at(text, i) != 'H' || is_ascii_letter(value_at(text, i + 1)) || is_digit_at(text, i + 1))
+        return false;
+    std::size_t digits = 0;
+    while (digits < i && is_digit_at(text, i - digits - 1)) ++digits;
+    constexpr std::size_t kFewestDigits = 2;
+    constexpr std::size_t kMostDigits = 3;
+    const auto before = digits < i ? value_at(text, i - digits - 1) : U' ';
+    return digits >= kFewestDigits && digits <= kMostDigits && before != '.' && !is_ascii_letter(before);
 }
 
 // A kelvin's K after a number where its clause names a temperature, 温度 (日冕的温度可达100万K): elsewhere a
@@ -193,6 +215,10 @@ const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size
     if (best != nullptr && best->written == "bps" && is_basis_points_at(text, start)) best = nullptr;
     if (best == nullptr && start == i && i > 0 && is_small_watt_at(text, i)) {
         best = &kSmallWatt;
+        end = i + 1;
+    }
+    if (best == nullptr && start == i && is_capital_hours_at(text, i)) {
+        best = &kCapitalHours;
         end = i + 1;
     }
     if (best == nullptr && is_kelvin_at(text, start)) {

@@ -150,6 +150,8 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     if (is_bare)
         if (auto standard = read_standard_code(text, start, number)) return standard;
     if (is_bare)
+        if (auto time = read_twelve_hour_time(text, number)) return time;
+    if (is_bare)
         if (auto pair = read_colon_pair(text, start, number, context)) return pair;
     if (currency == nullptr)
         if (auto product = read_product(text, number)) return product;

@@ -183,4 +183,60 @@ TEST_SUITE("stage directions and speaker labels") {
         const auto dialogue = read_transcript("老师：今天讲方程。\n学生：好的。\n老师：先看例题。");
         CHECK(said(dialogue) == "今天讲方程好的先看例题");
     }
+
+    TEST_CASE("a news digest's desks and leagues head their items and are said") {
+        // Failed on main 21994c7 (session 38's leftover): each name was a speaker's label, left out.
+        const auto digest = read_transcript(
+            "国家统计局：全国投资同比增长。\n"
+            "工信部：基站总数超过四百万个。\n"
+            "英超：曼城签下一名前锋。\n"
+            "F1阿布扎比站：诺里斯夺冠。\n"
+            "NBA：勇士力克湖人。");
+        CHECK_FALSE(warns_of(digest, "is a speaker's label"));
+        const auto text = said(digest);
+        for (const std::string heading : {"国家统计局", "工信部", "英超", "阿布扎比站"}) {
+            CAPTURE(heading);
+            CHECK(text.find(heading) != std::string::npos);
+        }
+        // A body's name is said where it comes back too.
+        CHECK(said("外交部：中方欢迎。\n外交部：会谈顺利。") == "外交部中方欢迎外交部会谈顺利");
+        // The limits: persons' labels are left out where no turn comes back, and so are a crosstalk's roles.
+        CHECK(said("主持人：大家好\n嘉宾：你好") == "大家好你好");
+        CHECK(said("甲：你好\n乙：你好") == "你好你好");
+        CHECK(said("问：几岁？\n答：十岁。") == "几岁十岁");
+        CHECK(said("A：你好\nB：再见") == "你好再见");
+    }
+
+    TEST_CASE("a chat log's times go with its speakers' labels, and its headers are labels") {
+        // Failed on main 21994c7 (session 38's leftover): the times were said and the names with them.
+        for (const std::string log : {"10:30 小明：在吗\n10:31 小红：在的\n10:32 小明：吃饭吧",
+                                      "[10:30] 小明：在吗\n[10:31] 小红：在的\n[10:32] 小明：吃饭吧",
+                                      "[2026-12-07 10:30:15] 小明：在吗\n[2026-12-07 10:31:02] "
+                                      "小红：在的\n[2026-12-07 10:32:40] 小明：吃饭吧",
+                                      "小明 10:30\n在吗\n小红 10:31\n在的\n小明 10:32\n吃饭吧",
+                                      "2026-12-07 10:30:15 小明\n在吗\n\n2026-12-07 10:31:02 "
+                                      "小红\n在的\n\n2026-12-07 10:32:40 小明\n吃饭吧"}) {
+            CAPTURE(log);
+            const auto timeline = read_transcript(log);
+            CHECK(said(timeline) == "在吗在的吃饭吧");
+            REQUIRE(timeline.sentences.size() == 3);
+            CHECK(timeline.sentences[1].text == "在的");
+            CHECK(warns_of(timeline, "\"小明"));
+            CHECK(timeline.warnings.size() == 2);
+        }
+        // The limit: a schedule's lines of names and times, none with a message after it, are read.
+        CHECK(said("张老师 9:00\n李老师 10:00\n王老师 11:00") == "张老师九点李老师十点王老师十一点");
+    }
+
+    TEST_CASE("a voice over the picture or off it opening a line is a direction") {
+        // Failed on main 21994c7 (session 39, dev41): OS was spelled, ou ai si.
+        for (const std::string line : {"（OS）我到底在干嘛", "(VO)那一年我十岁", "小明：（OS）完了"}) {
+            CAPTURE(line);
+            const auto timeline = read_transcript(line);
+            CHECK(said(timeline).find("ou") == std::string::npos);
+            CHECK(warns_of(timeline, "is a stage direction, not said"));
+        }
+        // The limit: inside a sentence it glosses a term and is read.
+        CHECK(said("操作系统（OS）很重要") != "操作系统很重要");
+    }
 }
