@@ -139,6 +139,17 @@ bool names_place_in_recording(const std::vector<CodePoint>& text, std::size_t st
 
 namespace {
 
+// A range mark right after `form` and a second form of its kind (`read_last` of the number after the mark):
+// 到 and the second said after the first, as a range is (113/09/01~113/09/30, 10AM-8PM).
+template <typename ReadLast>
+void join_range_end(const std::vector<CodePoint>& text, SpokenForm& form, ReadLast read_last) {
+    if (!is_range_mark(value_at(text, form.end)) || !is_digit_at(text, form.end + 1)) return;
+    if (auto last = read_last(parse_number(text, form.end + 1))) {
+        form.words += "到" + last->words;
+        form.end = last->end;
+    }
+}
+
 // A count of hours, minutes, feet or inches before its word (两点, 两分, 两英寸), with 两 for 2 as
 // before a measure word (两本书).
 std::string count_words(const std::string& digits) {
@@ -390,12 +401,7 @@ std::optional<SpokenForm> read_numeric_date(const std::vector<CodePoint>& text, 
     form.end = i;
     // A range of two such dates (113/09/01~113/09/30, 2026-12-01~2026-12-05): the mark is 到, as after
     // any date (session 16; the mark was left to the second date, which it made a sign or skipped).
-    if (is_range_mark(value_at(text, i)) && is_digit_at(text, i + 1)) {
-        if (auto last = read_numeric_date(text, parse_number(text, i + 1))) {
-            form.words += "到" + last->words;
-            form.end = last->end;
-        }
-    }
+    join_range_end(text, form, [&](const WrittenNumber& last) { return read_numeric_date(text, last); });
     return form;
 }
 
@@ -686,12 +692,7 @@ std::optional<SpokenForm> read_twelve_hour_time(const std::vector<CodePoint>& te
                       "分";
     form.end = end;
     // Opening hours' range (10AM-8PM, 9am~6pm): the mark is 到, as between two clock times.
-    if (is_range_mark(value_at(text, end)) && is_digit_at(text, end + 1)) {
-        if (auto last = read_twelve_hour_time(text, parse_number(text, end + 1))) {
-            form.words += "到" + last->words;
-            form.end = last->end;
-        }
-    }
+    join_range_end(text, form, [&](const WrittenNumber& last) { return read_twelve_hour_time(text, last); });
     return form;
 }
 

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <string>
+#include <vector>
 
 #include "talkface/transcript.hpp"
 
@@ -18,6 +19,14 @@ std::string said(const Timeline& timeline) {
 
 std::string said(const std::string& transcript) {
     return said(read_transcript(transcript));
+}
+
+// Each of `words` is said somewhere in `text`.
+void check_says_each(const std::string& text, const std::vector<std::string>& words) {
+    for (const auto& word : words) {
+        CAPTURE(word);
+        CHECK(text.find(word) != std::string::npos);
+    }
 }
 
 bool warns_of(const Timeline& timeline, const std::string& part) {
@@ -155,10 +164,7 @@ TEST_SUITE("stage directions and speaker labels") {
             "小红：我也明白了。\n"
             "老王：我也是。");
         const auto text = said(timeline);
-        for (const std::string heading : {"小结", "金句", "任务", "小贴士"}) {
-            CAPTURE(heading);
-            CHECK(text.find(heading) != std::string::npos);
-        }
+        check_says_each(text, {"小结", "金句", "任务", "小贴士"});
         // A name's one line is still a label.
         CHECK(text.find("小红") == std::string::npos);
         CHECK(text.find("老王") == std::string::npos);
@@ -174,11 +180,7 @@ TEST_SUITE("stage directions and speaker labels") {
             "例2：求角的度数。\n"
             "若a:b=3:2，求b。");
         CHECK_FALSE(warns_of(timeline, "is a speaker's label"));
-        const auto text = said(timeline);
-        for (const std::string heading : {"化简", "甲烷燃烧", "判断题", "例二", "若"}) {
-            CAPTURE(heading);
-            CHECK(text.find(heading) != std::string::npos);
-        }
+        check_says_each(said(timeline), {"化简", "甲烷燃烧", "判断题", "例二", "若"});
         // The limit: a dialogue's labels, a line of words after each, are still left out.
         const auto dialogue = read_transcript("老师：今天讲方程。\n学生：好的。\n老师：先看例题。");
         CHECK(said(dialogue) == "今天讲方程好的先看例题");
@@ -193,11 +195,7 @@ TEST_SUITE("stage directions and speaker labels") {
             "F1阿布扎比站：诺里斯夺冠。\n"
             "NBA：勇士力克湖人。");
         CHECK_FALSE(warns_of(digest, "is a speaker's label"));
-        const auto text = said(digest);
-        for (const std::string heading : {"国家统计局", "工信部", "英超", "阿布扎比站"}) {
-            CAPTURE(heading);
-            CHECK(text.find(heading) != std::string::npos);
-        }
+        check_says_each(said(digest), {"国家统计局", "工信部", "英超", "阿布扎比站"});
         // A body's name is said where it comes back too.
         CHECK(said("外交部：中方欢迎。\n外交部：会谈顺利。") == "外交部中方欢迎外交部会谈顺利");
         // The limits: persons' labels are left out where no turn comes back, and so are a crosstalk's roles.
