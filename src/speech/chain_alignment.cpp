@@ -11,6 +11,7 @@
 #include "speech/lenient_placement.hpp"
 #include "speech/phone_chain.hpp"
 #include "speech/room_closures.hpp"
+#include "speech/room_fall.hpp"
 #include "speech/room_placement.hpp"
 #include "speech/run_together.hpp"
 #include "speech/sentence_chains.hpp"
@@ -136,8 +137,10 @@ CutAlignment align_chains(const FeatureTrack& track, const LoudnessProfile& loud
         static_cast<std::size_t>(std::count(is_spoken.begin(), is_spoken.end(), true));
 
     // Lenient alignment places its syllables on chains of its own (lenient_chain.hpp). The room is
-    // read before the first re-estimation, so that the bar gives the second its own share.
-    const bool in_room = !is_lenient && is_room(chains);
+    // read before the first re-estimation, so that the bar gives the second its own share: at the
+    // sentence ends (is_room), or where the noise covers their tails, from how fast the level
+    // falls anywhere (falls_as_room); the sentence ends stay is_room's.
+    const bool in_room = !is_lenient && (is_room(chains) || falls_as_room(track, loudness, spoken_sentences));
     const std::optional<RoomRinging> room_ringing =
         in_room ? measure_room_ringing(track, chains) : std::nullopt;
     const std::vector<bool> clear_of_bed =
