@@ -17,8 +17,8 @@ namespace talkface::detail {
 
 // A line of one sentence may hold no stop where its voice ends at once, and end in a quiet voice's
 // slow fade: its fastest fall says nothing of a room. (bench/README.md Session 39 (pspeaker2): the
-// first sentence alone of the dry noisy and coded passages, 13 of 168 fall as a room's, the first
-// two 1 of 168; a short kinds' dry line of 1-8 syllables 92 of 232.)
+// first sentence alone of the dry noisy and coded passages, 13 of 144 fall as a room's, the first
+// two 1 of 144; a short kinds' dry line of 1-8 syllables 92 of 232.)
 inline constexpr std::size_t kMinRoomFallSentences = 2;
 
 // Whether the recording of `track`, which holds `spoken_sentences` sentences of the transcript,
