@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <vector>
 
+#include "common/level_track.hpp"
 #include "speech/room_fall.hpp"
 
 using namespace talkface::detail;
+using talkface::test::track_of;
 
 namespace {
 
@@ -30,12 +32,7 @@ FeatureTrack recording_of(float closure_fall_db, float end_fall_db) {
         levels.insert(levels.end(), 20, kVowelDb);
         fall(end_fall_db, 40);
     }
-    FeatureTrack track;
-    track.frame_count = levels.size();
-    track.duration_s = static_cast<double>(levels.size()) * kFrameStepS;
-    track.values.assign(levels.size() * kFeatureCount, 0.0f);
-    for (std::size_t t = 0; t < levels.size(); ++t) track.values[t * kFeatureCount + kEnergyDb] = levels[t];
-    return track;
+    return track_of(levels);
 }
 
 LoudnessProfile noise_floor() {

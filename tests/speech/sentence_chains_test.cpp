@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "common/level_track.hpp"
 #include "speech/hsmm.hpp"
 #include "speech/sentence_chains.hpp"
 #include "speech/sentence_cutter.hpp"
@@ -14,18 +15,9 @@
 
 using namespace talkface;
 using namespace talkface::detail;
+using talkface::test::track_of;
 
 namespace {
-
-// A feature track whose whole-band level per frame is `levels_db` (the other columns 0).
-FeatureTrack track_of(const std::vector<float>& levels_db) {
-    FeatureTrack track;
-    track.frame_count = levels_db.size();
-    track.duration_s = static_cast<double>(levels_db.size()) * kFrameStepS;
-    track.values.assign(levels_db.size() * kFeatureCount, 0.0f);
-    for (std::size_t t = 0; t < levels_db.size(); ++t) track.values[t * kFeatureCount + kEnergyDb] = levels_db[t];
-    return track;
-}
 
 // A transcript of `sentences` sentences of three syllables each.
 Timeline transcript_of(std::size_t sentences) {
