@@ -601,10 +601,12 @@ void check_held_out_fit(const std::vector<SentenceMetrics>& metrics, const std::
             const std::string held_out = describe_sentence(k, spans[k], transcript) +
                                          ": the audio does not sound like its text (with models learned from the rest of the recording, ";
             if (typical > margin) {
-                throw AlignmentError(held_out + "other sounds fit its typical syllable " + format_fixed(typical, 2) +
-                                     " per frame better than its text, at most " + format_fixed(margin, 2) +
-                                     " for the right text: the margin by which its text fits its speech better than the same text "
-                                     "fits the speech with its halves swapped); is it another sentence, or are two sentences swapped?");
+                throw PathShapeRefusal(held_out + "other sounds fit its typical syllable " +
+                                       format_fixed(typical, 2) +
+                                       " per frame better than its text, at most " + format_fixed(margin, 2) +
+                                       " for the right text: the margin by which its text fits its speech "
+                                       "better than the same text fits the speech with its halves swapped); "
+                                       "is it another sentence, or are two sentences swapped?");
             }
             const double end_typical = metrics[k].held_out_end_median;
             const bool has_end_evidence = syllables[k] >= kMinEndClauseSyllables;
@@ -685,15 +687,27 @@ double syllable_length_spread(const std::vector<AlignedStretch>& stretches) {
     return std::min(log_spread(alone), log_spread(joined));
 }
 
+bool is_vouched_by_order(const std::vector<SentenceMetrics>& metrics) {
+    bool is_measured = false;
+    for (const auto& sentence : metrics) {
+        if (std::isnan(sentence.order_margin)) continue;
+        if (sentence.order_margin < kMinVouchingOrderMargin) return false;
+        is_measured = true;
+    }
+    return is_measured;
+}
+
 void check_syllable_lengths(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                             const Timeline& transcript) {
     for (std::size_t k = 0; k < metrics.size(); ++k) {
         const double spread = metrics[k].length_spread;
         if (!(spread > kMaxSyllableLengthSpread)) continue;
-        throw AlignmentError(describe_sentence(k, spans[k], transcript) + ": its syllables would be squeezed and drawn out " +
-                             "far beyond one voice's rhythm (their lengths spread by a factor of " +
-                             format_fixed(std::exp(spread), 2) + ", at most " + format_fixed(std::exp(kMaxSyllableLengthSpread), 2) +
-                             " for the right text); is it another sentence, or are two sentences swapped?");
+        throw PathShapeRefusal(describe_sentence(k, spans[k], transcript) +
+                               ": its syllables would be squeezed and drawn out " +
+                               "far beyond one voice's rhythm (their lengths spread by a factor of " +
+                               format_fixed(std::exp(spread), 2) + ", at most " +
+                               format_fixed(std::exp(kMaxSyllableLengthSpread), 2) +
+                               " for the right text); is it another sentence, or are two sentences swapped?");
     }
 }
 

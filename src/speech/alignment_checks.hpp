@@ -11,6 +11,7 @@
 #include "speech/frame_features.hpp"
 #include "speech/hsmm.hpp"
 #include "speech/sentence_cutter.hpp"
+#include "talkface/errors.hpp"
 #include "talkface/timeline.hpp"
 
 namespace talkface::detail {
@@ -130,6 +131,31 @@ constexpr double kMaxHeldOutFitGap = 0.35;
 // or more. Under it a line's own fit and rhythm are also read without the noise before its voice
 // (own_voice_share, lead_noise.hpp).
 constexpr std::size_t kMinHeldOutSyllables = 6;
+
+// A refusal read off the shape of a path (check_syllable_lengths, and check_held_out_fit's typical
+// syllable against the order margin): where a line's span holds noise around its voice, the path
+// on it draws an edge syllable over the noise and squeezes its neighbours, and the refusal is that
+// path's, the text's or not (bench/README.md, session 39 (short7)). align_track lets the line's own
+// reading answer it (is_vouched_by_order).
+class PathShapeRefusal : public AlignmentError {
+public:
+    using AlignmentError::AlignmentError;
+};
+
+// A line's own reading (the line among quieter voices, or the speech after a gain's lifted lead-in)
+// answers a PathShapeRefusal of its cut where every check passes it there and every sentence's
+// order_margin there is at least this: another sentence of about its length reaches 0.28-0.30 at
+// the median and stays under 0.52 in 95% of a person's clips (bench/ tuning; kMinOrderMargin's),
+// where a right text's reaches 0.52 at its median. On the line alone a wrong text of as many
+// syllables passes the other checks about as often as the right one (line_among_voices.hpp), but
+// its order margin stays a wrong text's: of short_kinds_bench's wrong texts whose cut was refused
+// by a path's shape, none reached 0.52 on its line (0.27-0.49), where the right lines freed did
+// (0.54-1.01; bench/README.md, session 39 (short7)).
+constexpr double kMinVouchingOrderMargin = 0.52;
+
+// Whether every sentence of `metrics` whose order margin was measured has one of at least
+// kMinVouchingOrderMargin, and at least one was measured.
+bool is_vouched_by_order(const std::vector<SentenceMetrics>& metrics);
 
 // Whether every sentence `poor` names fits its text as well as a free sequence of sounds does (a
 // text fit gap of at most 0) and, where it was measured, within kMaxHeldOutFitGap on models learned

@@ -105,7 +105,7 @@ AlignedTimelines align_cut(const FeatureTrack& track, const FeatureTrack& heard,
         check_missing_text(result, heard, loudness, result.warnings);
     }
     set_sentence_times(spans, result);
-    AlignedTimelines timelines{std::move(result), std::nullopt};
+    AlignedTimelines timelines{std::move(result), std::nullopt, is_checked && is_vouched_by_order(metrics)};
     if (aligned.room_result) {
         Timeline in_room = timelines.checked;
         for (std::size_t i = 0; i < in_room.syllables.size(); ++i) {

@@ -17,9 +17,12 @@ namespace talkface::detail {
 // in a room, as they are given out, placed with the closures ringing (`in_room`, room_closures.hpp):
 // the room's paths fit a wrong text as well as the right one, so that the confirmation of a cut
 // (align_confirmed) and the block retry (align_track) read only the silent closures' placement.
+// `is_vouched_by_order`: checked, and the sentences' order margins vouch for the text
+// (is_vouched_by_order, alignment_checks.hpp).
 struct AlignedTimelines {
     Timeline checked;
     std::optional<Timeline> in_room;
+    bool is_vouched_by_order = false;
 };
 
 // The syllables of every sentence of `cut` (align_chains), and, when `is_checked`, the checks

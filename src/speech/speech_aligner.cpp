@@ -14,6 +14,7 @@
 #include "audio/audio_source.hpp"
 #include "audio/joined_copy.hpp"
 #include "common/number_format.hpp"
+#include "speech/alignment_checks.hpp"
 #include "speech/alignment_progress.hpp"
 #include "speech/bed_removal.hpp"
 #include "speech/chain_measures.hpp"
@@ -60,6 +61,28 @@ void validate_transcript(const Timeline& transcript) {
     }
 }
 
+// A line's own reading: after the noise a gain lifted before the first words
+// (loudness_after_lifted_lead_in), or the line among quieter voices (line_cut_among_voices) of
+// `cut`. Nothing where it has none, or where the checks (when `is_checked`) refuse it there.
+std::optional<AlignedTimelines> align_own_reading(const FeatureTrack& track, const LoudnessProfile& loudness,
+                                                  const Timeline& transcript, const SentenceCut& cut,
+                                                  const std::vector<bool>& is_spoken,
+                                                  const AlignOptions& options, ProgressReporter& progress,
+                                                  bool is_checked) {
+    try {
+        if (const auto lifted = loudness_after_lifted_lead_in(track, loudness))
+            return align_confirmed(track, track, *lifted, transcript,
+                                   cut_sentences(track, *lifted, transcript, options), is_spoken, progress,
+                                   is_checked, options.lenient);
+        if (const auto line = line_cut_among_voices(track, loudness, transcript, cut))
+            return align_cut(track, track, loudness, transcript, *line, progress, is_checked,
+                             options.lenient);
+    } catch (const AlignmentError&) {
+        // Refused there: the cut's reading stands.
+    }
+    return std::nullopt;
+}
+
 // `given_spans` empty: the sentences cut as options.sentence_cut says; else where they say.
 // `loudness` is the track's (conceal_dropouts).
 Timeline align_track(const FeatureTrack& track, const LoudnessProfile& loudness, const Timeline& transcript,
@@ -82,11 +105,24 @@ Timeline align_track(const FeatureTrack& track, const LoudnessProfile& loudness,
     const std::vector<bool> is_spoken = spoken_sentences_of(transcript);
     const auto spoken_sentences = static_cast<std::size_t>(std::count(is_spoken.begin(), is_spoken.end(), true));
     const std::size_t stretches = loudness.pauses.size() + 1;
+    const bool is_own_reading_sought =
+        !is_given && !options.lenient && options.sentence_cut == SentenceCutMode::automatic;
     AlignedTimelines result;
     try {
         result = align_confirmed(voice, track, loudness, transcript, cut, is_spoken, progress, is_checked,
                                  options.lenient);
     } catch (const AlignmentError& error) {
+        // A line refused for its path's shape on its cut, whose span holds the noise around its
+        // voice, is judged on its own reading too: the path there keeps its syllables on the voice,
+        // and the text is aligned there where every check passes it and its order margin vouches
+        // for it (PathShapeRefusal, kMinVouchingOrderMargin).
+        if (is_checked && is_own_reading_sought && is_one_spoken_line(transcript) &&
+            dynamic_cast<const PathShapeRefusal*>(&error) != nullptr) {
+            auto own =
+                align_own_reading(track, loudness, transcript, cut, is_spoken, options, progress, true);
+            if (own && own->is_vouched_by_order)
+                return own->in_room ? std::move(*own->in_room) : std::move(own->checked);
+        }
         // Fewer stretches of speech than sentences: either sentences run together or the
         // transcript has one the audio lacks; the first is tried, and the message tells of both.
         if (!is_given && options.sentence_cut == SentenceCutMode::automatic && stretches < spoken_sentences)
@@ -122,25 +158,11 @@ Timeline align_track(const FeatureTrack& track, const LoudnessProfile& loudness,
     }
     // Noise a gain lifted before the first words, or a line among quieter voices, its text passed
     // on the speech the profile finds: its syllables placed after the noise or on the line alone,
-    // where the checks pass it there too.
-    if (!is_given && !options.lenient && options.sentence_cut == SentenceCutMode::automatic) {
-        if (const auto lifted = loudness_after_lifted_lead_in(track, loudness)) {
-            try {
-                result = align_confirmed(track, track, *lifted, transcript,
-                                         cut_sentences(track, *lifted, transcript, options), is_spoken,
-                                         progress, is_checked, options.lenient);
-            } catch (const AlignmentError&) {
-                // Refused after the noise: the placement the checks passed stands.
-            }
-        } else if (const auto line = line_cut_among_voices(track, loudness, transcript, cut)) {
-            try {
-                result = align_cut(track, track, loudness, transcript, *line, progress, is_checked,
-                                   options.lenient);
-            } catch (const AlignmentError&) {
-                // Refused on the line alone: the placement the checks passed stands.
-            }
-        }
-    }
+    // where the checks pass it there too (else the placement the checks passed stands).
+    if (is_own_reading_sought)
+        if (auto own =
+                align_own_reading(track, loudness, transcript, cut, is_spoken, options, progress, is_checked))
+            result = std::move(*own);
     return result.in_room ? std::move(*result.in_room) : std::move(result.checked);
 }
 
