@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <utility>
 
 #include "common/order_statistics.hpp"
 
@@ -61,6 +62,13 @@ std::size_t cut_pause(const std::vector<FrameSpan>& spans, std::size_t k) {
 
 bool is_outside_ratio(double ratio, double limit) { return ratio > limit || ratio < 1.0 / limit; }
 
+// The frames [first, end) of the pause `cut` put between spoken sentence `k` and the next (empty
+// where their spans meet).
+std::pair<double, double> cut_pause_frames(const SentenceCut& cut, std::size_t k, std::size_t next) {
+    return {static_cast<double>(cut.spans[k].end_frame),
+            static_cast<double>(std::max(cut.spans[k].end_frame, cut.spans[next].first_frame))};
+}
+
 }  // namespace
 
 std::vector<bool> find_run_together(const std::vector<FrameSpan>& spans, const std::vector<std::size_t>& syllables,
@@ -118,8 +126,7 @@ bool moves_sentence_end(const SentenceCut& cut, const Timeline& aligned, std::si
 }
 
 bool is_cut_pause_in_text(const SentenceCut& cut, const Timeline& aligned, std::size_t k, std::size_t next) {
-    const double pause_first = static_cast<double>(cut.spans[k].end_frame);
-    const double pause_end = static_cast<double>(std::max(cut.spans[k].end_frame, cut.spans[next].first_frame));
+    const auto [pause_first, pause_end] = cut_pause_frames(cut, k, next);
     const double tolerance = static_cast<double>(kMovedEndFrames);
     const auto& syllables = aligned.syllables;
     for (std::size_t i = 0; i + 1 < syllables.size(); ++i) {
@@ -129,6 +136,19 @@ bool is_cut_pause_in_text(const SentenceCut& cut, const Timeline& aligned, std::
             return true;
     }
     return false;
+}
+
+bool is_cut_pause_passed_over(const SentenceCut& cut, const Timeline& aligned, std::size_t k,
+                              std::size_t next) {
+    const auto [pause_first, pause_end] = cut_pause_frames(cut, k, next);
+    const auto& syllables = aligned.syllables;
+    for (std::size_t i = 0; i + 1 < syllables.size(); ++i) {
+        const double gap_first = std::max(pause_first, syllables[i].end_s / kFrameStepS);
+        const double gap_end = std::min(pause_end, syllables[i + 1].start_s / kFrameStepS);
+        if (gap_first < gap_end) return false;
+    }
+    const double own_pause = (aligned.sentences[next].start_s - aligned.sentences[k].end_s) / kFrameStepS;
+    return own_pause > pause_end - pause_first;
 }
 
 std::vector<std::pair<std::size_t, std::size_t>> spoken_neighbours(const std::vector<bool>& is_spoken) {

@@ -91,6 +91,22 @@ TEST_SUITE("sentences run together") {
         CHECK_FALSE(is_cut_pause_in_text(cut, no_comma, 0, 1));
     }
 
+    TEST_CASE("a cut pause the syllables run on through for a longer pause of their own is passed over") {
+        SentenceCut cut;
+        cut.spans = {{0, 50}, {55, 360}};  // a dip of 0.05 s inside the second syllable, 0.4-0.8 s
+        cut.runs_on = {true, false};
+        const Timeline aligned = aligned_two(2.0, 2.1);  // the sentences 0.1 s apart
+        CHECK_FALSE(is_cut_pause_in_text(cut, aligned, 0, 1));
+        CHECK(is_cut_pause_passed_over(cut, aligned, 0, 1));
+        // A wrong text bent over a real pause ends its sentence at a shorter one, or none.
+        cut.spans = {{0, 40}, {70, 360}};
+        CHECK_FALSE(is_cut_pause_passed_over(cut, aligned, 0, 1));
+        CHECK_FALSE(is_cut_pause_passed_over(cut, aligned_two(2.0, 2.0), 0, 1));
+        // Some of it between two syllables (the comma's pause, 0.8-1.0 s): heard, not passed over.
+        cut.spans = {{0, 78}, {84, 360}};
+        CHECK_FALSE(is_cut_pause_passed_over(cut, aligned, 0, 1));
+    }
+
     TEST_CASE("blocks and neighbours skip sentences without syllables") {
         Timeline transcript;
         transcript.sentences.resize(3);
