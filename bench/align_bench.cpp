@@ -2,10 +2,13 @@
 // condition and per sentence set, how close the syllable starts and sentence boundaries come to
 // the truth and how fast it ran, beside the naive baseline and the targets of issue #4.
 //
-//   align_bench CORPUS [--conditions clean,white10,...] [--dump SYLLABLES.tsv]   (every syllable's error, confidence)
+//   align_bench CORPUS [--conditions clean,white10,...] [--dump SYLLABLES.tsv] [--warnings WARNINGS.tsv]
+//                                                         (every syllable's error, confidence; every
+//                                                         passage's warnings)
 //   align_bench --file AUDIO TRANSCRIPT [--truth LIST]   (one file, for memory_bench.sh)
 //   align_bench --mismatch CORPUS [--conditions ...]      (wrong transcripts: detected, and false alarms;
-//                                                          texts that lack a sentence or a sentence's end too)
+//                                                          texts that lack a sentence or a sentence's end
+//                                                          too)
 //   align_bench --lenient CORPUS [--conditions ...] [--dump SYLLABLES.tsv]   (--lenient: changed words found,
 //                                                          right syllables marked)
 //
@@ -288,8 +291,14 @@ fs::path audio_beside(const fs::path& truth_path) {
     throw std::runtime_error(truth_path.string() + ": no audio beside it");
 }
 
-int run_corpus(const fs::path& corpus, const std::string& only, const std::string& dump_path) {
+int run_corpus(const fs::path& corpus, const std::string& only, const std::string& dump_path,
+               const std::string& warnings_path) {
     std::ofstream dump;
+    std::ofstream warnings;
+    if (!warnings_path.empty()) {
+        warnings.open(warnings_path);
+        if (!warnings) throw std::runtime_error(warnings_path + ": cannot write");
+    }
     if (!dump_path.empty()) {
         dump.open(dump_path);
         if (!dump) throw std::runtime_error(dump_path + ": cannot write");
@@ -313,6 +322,10 @@ int run_corpus(const fs::path& corpus, const std::string& only, const std::strin
                 const auto aligned = aligner.align_file(audio_path.string(), transcript);
                 mine.cpu_s += static_cast<double>(std::clock() - begin) / CLOCKS_PER_SEC;
                 score_timeline(aligned, truth.timeline, audio_path.string(), mine);
+                for (const std::string& warning : aligned.warnings)
+                    if (warnings)
+                        warnings << condition << "\t" << truth_path.stem().string() << "\t" << warning
+                                 << "\n";
                 for (std::size_t i = 0; dump && i < aligned.syllables.size(); ++i) {
                     const auto& syllable = aligned.syllables[i];
                     const double truth_s = truth.timeline.syllables[i].start_s;
@@ -938,7 +951,8 @@ int run_lenient(const fs::path& corpus, const std::string& only, const std::stri
 
 [[noreturn]] void usage(const std::string& problem) {
     std::cerr << "align_bench: " << problem << "\n"
-              << "usage: align_bench CORPUS [--conditions A,B,...] [--dump SYLLABLES.tsv]\n"
+              << "usage: align_bench CORPUS [--conditions A,B,...] [--dump SYLLABLES.tsv] [--warnings "
+                 "WARNINGS.tsv]\n"
               << "       align_bench --file AUDIO TRANSCRIPT [--truth LIST]\n"
               << "       align_bench --mismatch CORPUS [--conditions A,B,...] [--clips]\n"
               << "       align_bench --lenient CORPUS [--conditions A,B,...] [--dump SYLLABLES.tsv]\n";
@@ -953,6 +967,7 @@ int main(int argc, char** argv) {
         std::string only;
         std::string truth_list;
         std::string dump_path;
+        std::string warnings_path;
         bool file_mode = false;
         bool mismatch_mode = false;
         bool lenient_mode = false;
@@ -970,6 +985,8 @@ int main(int argc, char** argv) {
                 truth_list = value();
             } else if (arg == "--dump") {
                 dump_path = value();
+            } else if (arg == "--warnings") {
+                warnings_path = value();
             } else if (arg == "--mismatch") {
                 mismatch_mode = true;
             } else if (arg == "--clips") {
@@ -995,7 +1012,7 @@ int main(int argc, char** argv) {
         if (positional.size() != 1) usage("give the corpus directory that make_corpus wrote");
         if (lenient_mode) return run_lenient(positional[0], only, dump_path);
         return mismatch_mode ? run_mismatch(positional[0], only, clips_only)
-                             : run_corpus(positional[0], only, dump_path);
+                             : run_corpus(positional[0], only, dump_path, warnings_path);
     } catch (const std::exception& error) {
         std::cerr << "align_bench: " << error.what() << "\n";
         return 1;

@@ -26,6 +26,7 @@
 #include "speech/line_among_voices.hpp"
 #include "speech/run_together.hpp"
 #include "speech/sentence_cutter.hpp"
+#include "speech/silenced_words.hpp"
 #include "speech/skipped_time.hpp"
 #include "speech/tone_witness.hpp"
 #include "talkface/errors.hpp"
@@ -359,6 +360,8 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
     if (!is_voted)
         if (const auto joined = joined_copy()) result.warnings.push_back(source->name() + ": " + *joined);
     for (const std::string& note : source->notes()) result.warnings.push_back(source->name() + ": " + note);
+    for (const std::string& silenced : describe_silenced_words(track, silence_skipped_s, result))
+        result.warnings.push_back(source->name() + ": " + silenced);
     if (unconfirmable && options.check != CheckMode::off)
         result.warnings.push_back("the transcript cannot be checked against the audio: " + *unconfirmable);
     if (silence_skipped > 0) round_to_microseconds(result);

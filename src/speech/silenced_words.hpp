@@ -1,0 +1,42 @@
+// Words an editor silenced while the transcript keeps them (issue 13, "Recordings as people have
+// them"): a user puts digital silence over a word (a slip, a name, a swear word) and aligns the
+// recording to the text as written. The aligner has no sound for the word's syllables, leaps the
+// zeros as a pause and squeezes them against its edges: 漁 of the person's 漁夫 silenced takes 30 ms
+// and 個 before it 50 ms, where the recording's syllables take 100-200 ms (bench/README.md session 39).
+// The samples cannot tell such a silence from a pause recorded as exact zeros (h-clean's syllables
+// are joined over them, the intro set's beds gap to them), and the syllables' confidence beside a
+// good file's joins is as low as beside an edit (session 37); the syllables' lengths against the
+// recording's own can: beside a pause they keep their length.
+#ifndef TALKFACE_SPEECH_SILENCED_WORDS_HPP
+#define TALKFACE_SPEECH_SILENCED_WORDS_HPP
+
+#include <string>
+#include <vector>
+
+#include "speech/frame_features.hpp"
+#include "talkface/timeline.hpp"
+
+namespace talkface::detail {
+
+// The shortest run of digital silence (frames at or under kDigitalSilenceDb) judged: a syllable's
+// length at a quick reader's pace; a word silenced takes two or more.
+constexpr double kShortestSilencedS = 0.1;
+// The syllables judged beside the run, on each side.
+constexpr std::size_t kSyllablesBeside = 2;
+// A syllable beside the run is squeezed when it takes under this share of the recording's median
+// syllable length; at least kLeastSqueezed of the kSyllablesBeside either side must be, or one
+// syllable must lie on the silence for kLeastOnSilenceShare of its length, where no sound is.
+constexpr double kSqueezedShare = 0.5;
+constexpr std::size_t kLeastSqueezed = 2;
+constexpr double kLeastOnSilenceShare = 0.5;
+
+// The warnings for `aligned` (times on the recording) where a run of digital silence inside a
+// sentence, after a syllable the text marks no pause after, has squeezed syllables or a syllable
+// aligned over it: the span, the sentence and the syllables beside it. `track` is the recording's
+// reading whose frame 0 starts at `track_start_s` of the recording.
+std::vector<std::string> describe_silenced_words(const FeatureTrack& track, double track_start_s,
+                                                 const Timeline& aligned);
+
+}  // namespace talkface::detail
+
+#endif
