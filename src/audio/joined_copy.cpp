@@ -17,6 +17,15 @@ namespace talkface::detail {
 
 namespace {
 
+// How a note of a join ends: what it is, and what to do.
+constexpr const char* kJoinedToFirst =
+    ", joined to the first (as an upload or a copy that appends to a file leaves it); cut the file "
+    "there and align each recording on its own";
+std::string second_begins_there() {
+    return std::string(": a second copy of the recording, or a second recording, begins there") +
+           kJoinedToFirst;
+}
+
 // The first byte from `start` on of the file `in` reads where `find` finds what it looks for: the
 // file read a block at a time, each block after the last `overlap` bytes of the one before, so
 // that what spans two blocks is found; `find` gets a block and gives the offset in it, or nullopt.
@@ -160,12 +169,18 @@ std::optional<std::uint64_t> repeated_opening_byte(const std::string& path) {
                           });
 }
 
+std::optional<std::string> describe_restarted_mp3(const std::string& path) {
+    const auto restart = restarted_mp3_stream(path);
+    if (!restart) return std::nullopt;
+    return "its MP3 frame at byte " + std::to_string(restart->byte) + " (" +
+           format_fixed(restart->seconds, 3) + " s) begins its data afresh, throwing away the " +
+           std::to_string(restart->unused_bytes) +
+           " bytes the frames before it left free for it, as only a recording's first frame does" +
+           second_begins_there();
+}
+
 std::optional<std::string> describe_joined_copy(const std::string& path) {
-    const std::string to_first =
-        ", joined to the first (as an upload or a copy that appends to a file leaves it); cut the file "
-        "there and align each recording on its own";
-    const std::string joined =
-        ": a second copy of the recording, or a second recording, begins there" + to_first;
+    const std::string joined = second_begins_there();
     if (const auto second = repeated_opening_byte(path))
         return "its first " + std::to_string(kOpeningBytes) + " bytes (its header) recur at byte " +
                std::to_string(*second) + joined;
@@ -190,15 +205,9 @@ std::optional<std::string> describe_joined_copy(const std::string& path) {
                seconds(repeat->original_frame) +
                " on again, sample for sample, as no voice repeats itself: a second copy of the recording "
                "begins at " +
-               seconds(repeat->repeat_frame - repeat->original_frame) + to_first;
+               seconds(repeat->repeat_frame - repeat->original_frame) + kJoinedToFirst;
     }
-    if (const auto restart = restarted_mp3_stream(path))
-        return "its MP3 frame at byte " + std::to_string(restart->byte) + " (" +
-               format_fixed(restart->seconds, 3) + " s) begins its data afresh, throwing away the " +
-               std::to_string(restart->unused_bytes) +
-               " bytes the frames before it left free for it, as only a recording's first frame does" +
-               joined;
-    return std::nullopt;
+    return describe_restarted_mp3(path);
 }
 
 }  // namespace talkface::detail

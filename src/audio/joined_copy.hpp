@@ -37,6 +37,13 @@ std::optional<std::uint64_t> repeated_opening_byte(const std::string& path);
 // whole file (a 10 h FLAC is 1 GB), and a join read on as one recording shows as a text that does not fit it.
 std::optional<std::string> describe_joined_copy(const std::string& path);
 
+// What describe_joined_copy says of an MP3 whose frames start a second bit reservoir
+// (restarted_mp3_stream), or nullopt: the one join it tells by walking the frames' headers alone,
+// without decoding (a 1 h MP3's 57 MB read in well under a second), so asked of every MP3 that aligns
+// as well: a text that fits the first recording is stretched over the second one too, or aligned over
+// speech the transcript lacks (bench/README.md session 39).
+std::optional<std::string> describe_restarted_mp3(const std::string& path);
+
 }  // namespace talkface::detail
 
 #endif

@@ -357,8 +357,11 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
     if (!lost.empty())
         result.warnings.push_back(source->name() + ": the file is damaged: " + lost +
                                   "; read as silence there, the syllables after it keep their times");
-    if (!is_voted)
-        if (const auto joined = joined_copy()) result.warnings.push_back(source->name() + ": " + *joined);
+    // A text vouched for by the checks may still have been stretched over a second recording joined
+    // to its own: the join told from the frames' headers alone is asked of every file.
+    const auto joined =
+        is_voted ? (file_path.empty() ? std::nullopt : describe_restarted_mp3(file_path)) : joined_copy();
+    if (joined) result.warnings.push_back(source->name() + ": " + *joined);
     for (const std::string& note : source->notes()) result.warnings.push_back(source->name() + ": " + note);
     for (const std::string& silenced : describe_silenced_words(track, silence_skipped_s, result))
         result.warnings.push_back(source->name() + ": " + silenced);

@@ -1,6 +1,7 @@
 // Two recordings joined into one file (joined_copy.hpp, issue 13 "Bad input"), made here by ffmpeg
 // and cat from tests/data/speech/one_sentence.wav: named where the text is refused, searched for
-// only where the text's fit is not vouched for; and a RIFF file's own extension that is no second
+// only where the text's fit is not vouched for (an MP3's restarted frames, told from their headers
+// alone, wherever it aligns); and a RIFF file's own extension that is no second
 // WAV.
 #include <doctest/doctest.h>
 
@@ -167,6 +168,24 @@ TEST_SUITE("joined recordings") {
         // Neither recording alone starts afresh after its first frame.
         CHECK_FALSE(detail::restarted_mp3_stream(one));
         CHECK_FALSE(detail::restarted_mp3_stream(other));
+    }
+
+    TEST_CASE("an MP3 of frames alone joined to another recording is named where its text fits the first") {
+        // The text fits one_sentence.wav and was stretched over the recording joined after it (the
+        // same sentence played backwards, as the sweep's joined_another kind), aligned with no word.
+        const std::string options =
+            "-c:a libmp3lame -b:a 32k -write_xing 0 -id3v2_version 0 -fflags +bitexact -f mp3";
+        const std::string one = ffmpeg_made("bare_32k.mp3", options);
+        const std::string backwards = ffmpeg_made("bare_backwards_32k.mp3", "-af areverse " + options);
+        const std::string path = joined("bare_joined_backwards.mp3", one, backwards);
+        const Timeline aligned =
+            SpeechAligner().align_file(path, load_transcript(speech_clip("one_sentence.txt")));
+        CHECK(has_warning_with(aligned, "its MP3 frame at byte " + std::to_string(file_bytes(one)) + " ("));
+        CHECK(
+            has_warning_with(aligned, "a second copy of the recording, or a second recording, begins there"));
+        CHECK_FALSE(has_warning_with(
+            SpeechAligner().align_file(one, load_transcript(speech_clip("one_sentence.txt"))),
+            "begins its data afresh"));
     }
 
     TEST_CASE(
