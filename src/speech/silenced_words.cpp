@@ -61,13 +61,18 @@ double overlap_s(const Syllable& syllable, const SilenceRun& run) {
 }  // namespace
 
 std::vector<std::string> describe_silenced_words(const FeatureTrack& track, double track_start_s,
-                                                 const Timeline& aligned) {
+                                                 const Timeline& aligned,
+                                                 const std::vector<LostAudio>& lost) {
     std::vector<std::string> warnings;
     const std::vector<Syllable>& syllables = aligned.syllables;
     if (syllables.size() < 2 * kSyllablesBeside) return warnings;
     const double typical_s = median_length(syllables);
     if (!(typical_s > 0.0)) return warnings;
     for (const SilenceRun& run : silence_runs(track, track_start_s)) {
+        if (std::any_of(lost.begin(), lost.end(), [&](const LostAudio& stretch) {
+                return stretch.start_s < run.end_s && stretch.end_s > run.start_s;
+            }))
+            continue;
         const std::size_t after = first_starting_after(syllables, run.start_s + kStartsWithRunS);
         if (after == 0 || after == syllables.size()) continue;
         const Syllable& before = syllables[after - 1];

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "audio/audio_source.hpp"
 #include "speech/frame_features.hpp"
 #include "talkface/timeline.hpp"
 
@@ -33,9 +34,10 @@ constexpr double kLeastOnSilenceShare = 0.5;
 // The warnings for `aligned` (times on the recording) where a run of digital silence inside a
 // sentence, after a syllable the text marks no pause after, has squeezed syllables or a syllable
 // aligned over it: the span, the sentence and the syllables beside it. `track` is the recording's
-// reading whose frame 0 starts at `track_start_s` of the recording.
+// reading whose frame 0 starts at `track_start_s` of the recording. A run that meets sound its
+// reader could not decode (`lost`, read as silence) is left to the warning that names the damage.
 std::vector<std::string> describe_silenced_words(const FeatureTrack& track, double track_start_s,
-                                                 const Timeline& aligned);
+                                                 const Timeline& aligned, const std::vector<LostAudio>& lost);
 
 }  // namespace talkface::detail
 
