@@ -4,9 +4,11 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/number_format.hpp"
+#include "common/order_statistics.hpp"
 
 namespace talkface::detail {
 
@@ -42,9 +44,7 @@ double median_length(const std::vector<Syllable>& syllables) {
     std::vector<double> lengths;
     lengths.reserve(syllables.size());
     for (const Syllable& syllable : syllables) lengths.push_back(syllable.end_s - syllable.start_s);
-    std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2),
-                     lengths.end());
-    return lengths[lengths.size() / 2];
+    return upper_median(std::move(lengths));
 }
 
 // The index of the first syllable starting at `time_s` or later; syllables.size() where none does.
