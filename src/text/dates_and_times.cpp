@@ -133,8 +133,23 @@ bool names_place_in_recording(const std::vector<CodePoint>& text, std::size_t st
         contains_any(before, {"视频", "視頻", "影片", "录像", "錄像", "音频", "音頻", "录音", "錄音", "回放",
                               "这集", "這集", "这期", "這期"}))
         return true;
-    return contains_any(before, {"进度条", "進度條", "时间轴", "時間軸", "时间线", "時間線", "拖到", "拉到",
-                                 "跳到", "快进到", "快轉到"});
+    if (contains_any(before, {"进度条", "進度條", "时间轴", "時間軸", "时间线", "時間線", "拖到", "拉到",
+                              "跳到", "快进到", "快轉到"}))
+        return true;
+    // A podcast's or a video's notes list its chapters, each a time opening its line, a space and the title
+    // (03:15 为什么要做播客 三分十五秒; session 40: 三点十五分): where the transcript names a show or an
+    // episode, such a time is a place in it. A schedule's line (09:00 开幕) in other text stays a time of
+    // day.
+    auto line_start = start;
+    while (line_start > 0 && text[line_start - 1].value == ' ') --line_start;
+    if (line_start > 0 && text[line_start - 1].value != '\n') return false;
+    auto title = end;
+    if (value_at(text, title) != ' ') return false;
+    while (value_at(text, title) == ' ') ++title;
+    if (!is_han(value_at(text, title))) return false;
+    return contains_any(text_between(text, 0, text.size()),
+                        {"播客", "节目", "節目", "本期", "本集", "单集", "單集", "章节", "章節", "Podcast",
+                         "podcast", "Shownotes", "shownotes", "show notes"});
 }
 
 namespace {

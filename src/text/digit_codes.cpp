@@ -103,6 +103,19 @@ bool names_landmark_after_city(const std::vector<CodePoint>& text, std::size_t s
                  "东京", "東京", "首尔", "首爾", "纽约", "紐約", "伦敦", "倫敦", "巴黎"});
 }
 
+bool names_meeting_place(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
+    constexpr std::size_t kFewestDigits = 3;
+    constexpr std::size_t kMostDigits = 4;
+    const auto& whole = number.whole;
+    if (number.has_point || number.has_separators || whole.size() < kFewestDigits ||
+        whole.size() > kMostDigits || ends_with(whole, "00") ||
+        (whole.size() == kMostDigits && starts_with_any(whole, {"19", "20"})) || start == 0 ||
+        !is_one_of(text[start - 1].value, U"在"))
+        return false;
+    return starts_with_any(text_between(text, number.end, number.end + 2),
+                           {"见", "見", "碰面", "碰頭", "碰头", "会合", "會合", "等你", "等妳", "等我"});
+}
+
 bool is_service_number(const std::string& digits) {
     for (const std::string_view number : {"110", "112", "114", "119", "120", "122", "999", "12110", "12117", "12121",
                                           "12123", "12306", "12308", "12309", "12315", "12318", "12320", "12328", "12333",
@@ -136,6 +149,8 @@ bool is_service_call(const std::vector<CodePoint>& text, std::size_t start, std:
     }
     for (const std::string_view word : {"打", "拨", "撥", "叫", "call", "Call"})
         if (ends_with(before, word)) return true;
+    // The service answering names itself (您好，这里是110; session 40: 一百一十), as its operator does.
+    if (ends_with_any(before, {"这里是", "這裡是", "這裏是", "这边是", "這邊是"})) return true;
     const std::string after = text_between(text, end, end + 2);
     for (const std::string_view word : kServiceWords)
         if (starts_with(after, word)) return true;

@@ -30,6 +30,11 @@ bool names_room_or_building(const std::vector<CodePoint>& text, std::size_t end)
 bool names_landmark_after_city(const std::vector<CodePoint>& text, std::size_t start,
                                const WrittenNumber& number);
 
+// A place to meet named by its number alone, three or four digits after 在 and right before a verb of
+// meeting (在101見 在一零一見, 在305碰面, 在1203等你): a landmark's or a room's name, said digit by digit,
+// not a year (19xx, 20xx) nor a round hundred.
+bool names_meeting_place(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
+
 // Service and emergency numbers (110 police, 119 fire, 120 ambulance, 12345 the city's hotline,
 // 10086 a carrier, 95xxx a bank's line; the government's 12xxx lines, 12123 traffic, 12366 tax,
 // 12393 medical insurance, 12395 sea rescue): said digit by digit with 幺 where they are dialled or
@@ -42,7 +47,7 @@ bool is_named_anywhere(const std::string& digits);
 
 // A service number is dialled or named: a dialling word before it, with nothing between but
 // the service's name or 给 (打110, 拨打客服热线10086, 打给120), or a service's name right after
-// it (110报警, 120急救车).
+// it (110报警, 120急救车), or the service naming itself as it answers (这里是110).
 bool is_service_call(const std::vector<CodePoint>& text, std::size_t start, std::size_t end);
 
 // A naming word right before the number (房间号是1208, 编号：305, and a code's: 密码是86753090,

@@ -54,6 +54,39 @@ bool clause_has_relation(const std::vector<CodePoint>& text, std::size_t i) {
     return false;
 }
 
+// Whether a bracketed term opens at text[i] ((-5), (4+5), (√2)): an opening bracket and, spaces skipped, a
+// term, a sign before one, a root or another bracket (3×(4+5), (−4)×(−5); session 40: the sign before the
+// bracket was unsaid).
+bool opens_bracketed_term(const std::vector<CodePoint>& text, std::size_t i) {
+    if (value_at(text, i) != '(') return false;
+    auto k = i + 1;
+    while (value_at(text, k) == ' ') ++k;
+    const auto c = value_at(text, k);
+    return is_formula_term(c) || is_dash(c) || is_one_of(c, U"+(\u221A");
+}
+
+// Whether the answer's place stands at text[i], as an exercise sheet leaves it after its = (36×25=______,
+// (−4)×(−5)=？, 3+5=（  ）): a blank of underscores, a question mark, or brackets holding spaces alone
+// (session 40: the = was unsaid).
+bool leaves_answer_place(const std::vector<CodePoint>& text, std::size_t i) {
+    const auto c = value_at(text, i);
+    if (c == '_' || c == '?') return true;
+    if (c != '(') return false;
+    auto k = i + 1;
+    while (value_at(text, k) == ' ' || value_at(text, k) == 0x3000) ++k;
+    return value_at(text, k) == ')';
+}
+
+// Whether a dimension's word opens at text[i] before its number (寬30公分, 高：12cm): × after a quantity and
+// before it multiplies the two, as a listing gives its size (長45公分×寬30公分 長四十五公分乘寬三十公分;
+// session 40: unsaid with a warning).
+bool opens_dimension(const std::vector<CodePoint>& text, std::size_t i) {
+    if (!is_one_of(value_at(text, i), U"长長宽寬高厚深")) return false;
+    auto k = i + 1;
+    if (value_at(text, k) == ':') ++k;
+    return is_digit_at(text, k);
+}
+
 // Whether c is a Han character (CJK Unified Ideographs and Extension A).
 bool is_han_character(char32_t c) {
     return c >= 0x3400 && c <= 0x9FFF;
@@ -207,11 +240,12 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
     // session 28: the = before ± was unsaid): the sign is the number's, read with it.
     const bool signed_right =
         (is_dash(right) || is_one_of(right, U"+\u00B1")) && is_formula_term(value_at(text, after + 1));
+    const bool right_term = is_formula_term(right) || opens_bracketed_term(text, after);
     // A set's brace too (A={1,2,3}).
-    const bool relation_right = is_formula_term(right) || signed_right || right == '|' || right == '{';
+    const bool relation_right = right_term || signed_right || right == '|' || right == '{';
     // An absolute value's closing bar ends a term (|x|=3 x的绝对值等于三).
     const bool left_term = is_formula_term(left) || (before > 0 && closes_absolute_value(text, before - 1));
-    const bool between_terms = left_term && is_formula_term(right);
+    const bool between_terms = left_term && right_term;
     // A judgement question's answer, a tick or a cross alone in brackets (（√） 对, （×） 错), as a teacher
     // reads the key (session 33: 根号, and the cross unsaid).
     const bool marks_judgement = left == '(' && right == ')';
@@ -222,7 +256,8 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
     switch (sign) {
         case '=': case 0x2248: case 0x2260: {  // = ≈ ≠, between a character and a term too (答案是x=5, 等于号)
             if (sign == '=' && counts_a_lobby(text, i)) return "等";
-            if (!(left_term || is_han_left) || !(relation_right || is_han_right)) return {};
+            const bool answer_right = left_term && leaves_answer_place(text, after);
+            if (!(left_term || is_han_left) || !(relation_right || is_han_right || answer_right)) return {};
             return sign == '=' ? "等于" : sign == 0x2248 ? "约等于" : "不等于";
         }
         // ASCII < > around words are brackets: <标题>. After a word or at a clause's start and before a
@@ -298,7 +333,8 @@ std::string_view said_math_sign(const std::vector<CodePoint>& text, std::size_t 
         case 0xD7:  // ×
             if (marks_judgement) return "错";
             return between_terms || (is_han_left && is_ascii_digit(right)) ||
-                           (is_han_left && is_han_right && clause_has_relation(text, i))
+                           (is_han_left && is_han_right && clause_has_relation(text, i)) ||
+                           ((left_term || is_han_left) && opens_dimension(text, after))
                        ? "乘"
                        : "";
         case 'x': return said_small_x(text, i, before == i && after == i + 1, left, right);

@@ -130,6 +130,9 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     // mapping gave ai ba si); Boeing 波音 (the mapping's bo ying, a final off).
     {"airbus", "kong1 ke4"},
     {"boeing", "bo1 yin1"},
+    // Session 40: boss is 波士 bo si as Mandarin speakers and players say it (BOSS战, 打Boss), the lips'
+    // rounded o; the dictionary's American vowel gave ba si, which no speaker writes or says for it.
+    {"boss", "bo1 si5"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

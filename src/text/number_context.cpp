@@ -2,10 +2,10 @@
 
 #include <optional>
 
+#include "text/counted_parts.hpp"
 #include "text/dates_and_times.hpp"
 #include "text/digit_codes.hpp"
 #include "text/figure_numbers.hpp"
-#include "text/home_layouts.hpp"
 #include "text/number_words.hpp"
 #include "text/written_numbers.hpp"
 
@@ -338,9 +338,10 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
                        (context.is_model && !number.has_point && !number.has_separators &&
                         is_train_number(text, start, number.end));
     context.has_currency = currency != nullptr;
-    context.names_place = names_room_or_building(text, number.end) ||
-                          (sign_words.empty() && currency == nullptr && !context.is_ordinal &&
-                           names_landmark_after_city(text, start, number));
+    context.names_place =
+        names_room_or_building(text, number.end) ||
+        (sign_words.empty() && currency == nullptr && !context.is_ordinal &&
+         (names_landmark_after_city(text, start, number) || names_meeting_place(text, start, number)));
     context.names_day = sign_words.empty() && currency == nullptr && names_a_day(text, start, number);
     context.names_type = is_one_of(value_at(text, number.end), U"型式");
     context.is_generation = names_generation(text, number);

@@ -167,14 +167,20 @@ bool adds_to_quantity(const std::vector<CodePoint>& text, std::size_t start) {
 
 }  // namespace
 
-bool agrees_after_person(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+bool agrees_in_chat(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
     if (start == 0 || !(end >= text.size() || is_one_of(value_at(text, end), U"，,。.！!？?～~…\n ")))
         return false;
     if (is_one_of(text[start - 1].value, U"我你他她俺咱们們")) return true;
     // The person may open the clause and say what is agreed with before the +1 (楼上说得对+1; session 34:
     // 正一): the sign ends a reply to a post, no value's.
     constexpr std::string_view kPostPeople[] = {"楼上", "樓上", "楼主", "樓主"};
-    return contains_any(text_before(text, start, true), kPostPeople);
+    // So after a word that acknowledges or seconds what was said (收到+1, 同意+1, 附议+1, 顶+1), as a chat
+    // group answers a call (session 40: 正一).
+    constexpr std::string_view kAgreements[] = {"收到", "同意", "赞同", "贊同",   "附议",
+                                                "附議", "支持", "赞成", "贊成",   "顶",
+                                                "頂",   "好的", "可以", "没问题", "沒問題"};
+    const std::string before = text_before(text, start, true);
+    return contains_any(before, kPostPeople) || ends_with_any(before, kAgreements);
 }
 
 std::optional<LeadingSign> read_leading_sign(const std::vector<CodePoint>& text, std::size_t start) {

@@ -379,8 +379,12 @@ SpokenForm read_quantity(const std::vector<CodePoint>& text, std::size_t start, 
         power_words.empty() && ((unit != nullptr && unit->written != "%") || is_byte_unit_at(text, end) ||
                                 is_basis_points_at(text, end) || is_small_unit_word_at(text, end));
     context.measures_degrees = unit == nullptr && power_words.empty() && measures_degrees(text, start, end);
+    // A shop's threshold after 满, its money unnamed (满200减30 满两百减三十; session 40: 二百), is counted
+    // as a shop assistant counts it, as 200块 is; with 元 after it, a notice's, it keeps 二百.
+    const bool shop_threshold =
+        start > 0 && is_one_of(text[start - 1].value, U"满滿") && !is_one_of(value_at(text, end), U"元圆圓");
     context.counts_kuai = unit == nullptr && currency == nullptr && power_words.empty() &&
-                          (is_one_of(value_at(text, end), U"块塊") ||
+                          (is_one_of(value_at(text, end), U"块塊") || shop_threshold ||
                            (value_at(text, end) == U'多' && is_one_of(value_at(text, end + 1), U"块塊")));
     std::string unit_words = unit == nullptr ? "" : unit->words;
     const bool is_percent = unit != nullptr && unit->written == "%";

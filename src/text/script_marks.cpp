@@ -200,6 +200,33 @@ struct Label {
     ScriptMark mark;
 };
 
+// The words Chinese ends a person's word with: a role's suffix or noun (主持人 记者 老师 队友 主播 嘉宾
+// 旁白), a kinship's (妈 哥), a title's (王总).
+bool ends_with_role(std::string_view name) {
+    return ends_with_any(
+        name,
+        {"人", "者", "员", "員", "师", "師", "生", "手", "家", "长", "長", "官", "主", "友", "客", "宾", "賓",
+         "众", "眾", "妈", "媽", "爸", "哥", "姐", "弟", "妹", "叔", "姨", "婆", "爷", "爺", "奶", "子", "儿",
+         "兒", "王", "总", "總", "娘", "公", "宝", "寶", "播", "导", "導", "警", "医", "醫", "兵", "将", "將",
+         "帅", "帥", "父", "母", "嫂", "夫", "妻", "女", "男", "孩", "娃", "仔", "匠", "白", "音"});
+}
+
+// What a familiar name opens with (小明 老王 阿强), and the commonest surnames.
+constexpr std::u32string_view kFamiliarOpenings = U"小老阿";
+constexpr std::u32string_view kSurnames =
+    U"王李张張刘劉陈陳杨楊黄黃赵趙吴吳周徐孙孫马馬朱胡郭何高林罗羅郑鄭梁谢謝宋唐许許韩韓冯馮邓鄧曹"
+    U"彭曾肖萧蕭田董袁潘于蒋蔣蔡余杜叶葉程苏蘇魏吕呂丁任沈姚卢盧姜崔钟鍾谭譚陆陸汪范範金石廖贾賈夏韦韋"
+    U"付方邹鄒孟熊秦邱江尹薛闫閻段雷侯龙龍史陶黎贺賀顾顧毛郝龚龔邵钱錢严嚴覃武戴莫孔向汤湯";
+
+// Whether a name of two or three characters opens with one of `openings`.
+bool opens_as_name(std::string_view name, std::u32string_view openings) {
+    const auto characters = decode_utf8(name, "<label>");
+    constexpr std::size_t kShortestName = 2;
+    constexpr std::size_t kLongestName = 3;
+    return characters.size() >= kShortestName && characters.size() <= kLongestName &&
+           openings.find(characters.front().value) != std::u32string_view::npos;
+}
+
 // Whether a label's name names a person: a speaker whose turn need not come back (a guest's one line). A
 // name with a Latin letter or a digit (A, Tom, 1号); a role, whose head is a person's (主持人 记者 老师 队友
 // 主播 嘉宾 旁白: the suffixes and nouns Chinese ends a person's word with); a name of two or three
@@ -225,13 +252,7 @@ bool names_person(std::string_view name) {
         return true;
     if (name == "甲" || name == "乙" || name == "丙" || name == "问" || name == "問" || name == "答")
         return true;
-    if (ends_with_any(name,
-                      {"人", "者", "员", "員", "师", "師", "生", "手", "家", "长", "長", "官", "主", "友",
-                       "客", "宾", "賓", "众", "眾", "妈", "媽", "爸", "哥", "姐", "弟", "妹", "叔", "姨",
-                       "婆", "爷", "爺", "奶", "子", "儿", "兒", "王", "总", "總", "娘", "公", "宝", "寶",
-                       "播", "导", "導", "警", "医", "醫", "兵", "将", "將", "帅", "帥", "父", "母", "嫂",
-                       "夫", "妻", "女", "男", "孩", "娃", "仔", "匠", "白", "音"}))
-        return true;
+    if (ends_with_role(name)) return true;
     // A word whose head names a part of a lesson or a text (小结 总结, 金句, 任务, 小测, 小知识, 小练习,
     // 方案, 小贴士) is a heading, though it opens as a name does (小 of 小明; 金 任 方 are surnames; session
     // 35: 小结： among 老师： and 学生： was a speaker's and left out). No common given name ends so; a verb
@@ -239,15 +260,22 @@ bool names_person(std::string_view name) {
     if (ends_with_any(
             name, {"结", "結", "句", "务", "務", "测", "測", "识", "識", "习", "習", "案", "贴士", "貼士"}))
         return false;
-    const auto characters = decode_utf8(name, "<label>");
-    constexpr std::size_t kShortestName = 2;
-    constexpr std::size_t kLongestName = 3;
-    constexpr std::u32string_view kNameOpenings =
-        U"小老阿王李张張刘劉陈陳杨楊黄黃赵趙吴吳周徐孙孫马馬朱胡郭何高林罗羅郑鄭梁谢謝宋唐许許韩韓冯馮邓鄧曹"
-        U"彭曾肖萧蕭田董袁潘于蒋蔣蔡余杜叶葉程苏蘇魏吕呂丁任沈姚卢盧姜崔钟鍾谭譚陆陸汪范範金石廖贾賈夏韦韋"
-        U"付方邹鄒孟熊秦邱江尹薛闫閻段雷侯龙龍史陶黎贺賀顾顧毛郝龚龔邵钱錢严嚴覃武戴莫孔向汤湯";
-    return characters.size() >= kShortestName && characters.size() <= kLongestName &&
-           kNameOpenings.find(characters.front().value) != std::u32string_view::npos;
+    return opens_as_name(name, kFamiliarOpenings) || opens_as_name(name, kSurnames);
+}
+
+// Whether the name's lines are a digest's items, who said what, rather than a dialogue's turns: every name
+// is a body's or a person's full name, a surname and a given name (王毅 李强 刘德华; not 小明 老王 阿强,
+// whom a dialogue calls by, nor 王总, a role), and no line speaks to another (你 您 吗 ？: a turn answers or
+// asks). A dialogue whose turns never come back and whose speakers are named in full, saying nothing to each
+// other, reads so too.
+bool is_digest(const std::vector<CodePoint>& text, const std::vector<Label>& labels) {
+    return std::all_of(labels.begin(), labels.end(), [&](const Label& label) {
+        if (!names_body(label.name) && !(opens_as_name(label.name, kSurnames) && !ends_with_role(label.name)))
+            return false;
+        auto end = label.mark.end;
+        while (end < text.size() && text[end].value != '\n') ++end;
+        return !contains_any(text_between(text, label.mark.end, end), {"你", "您", "妳", "吗", "嗎", "?"});
+    });
 }
 
 // A colon that introduces a formula (甲烷燃烧：CH4+2O2=CO2+2H2O, 化简：√12=2√3): the line goes on with a term
@@ -405,6 +433,7 @@ void add_labels(const std::vector<CodePoint>& text, std::vector<ScriptMark>& mar
     // F1阿布扎比站：), said as its heading, and two persons at least make a dialogue (session 38: every such
     // line's name was a speaker's, left out with a warning).
     if (!repeats) {
+        if (is_digest(text, labels)) return;
         labels.erase(std::remove_if(labels.begin(), labels.end(),
                                     [](const Label& label) { return !names_person(label.name); }),
                      labels.end());

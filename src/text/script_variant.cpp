@@ -1,5 +1,6 @@
 #include "text/script_variant.hpp"
 
+#include <algorithm>
 #include <utility>
 
 namespace talkface::detail {
@@ -41,6 +42,13 @@ bool is_traditional_text(const std::vector<CodePoint>& text) {
         if (kTraditionalOnly.find(c.value) != std::u32string_view::npos) ++traditional;
     }
     return traditional > simplified;
+}
+
+bool writes_cantonese(const std::vector<CodePoint>& text) {
+    constexpr std::u32string_view kCantoneseOnly = U"嘅咗喺哋嘢佢冇啲嚟睇噉";
+    return std::any_of(text.begin(), text.end(), [&](const CodePoint& c) {
+        return kCantoneseOnly.find(c.value) != std::u32string_view::npos;
+    });
 }
 
 std::string traditional_form(std::string_view character) {

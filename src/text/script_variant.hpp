@@ -15,6 +15,12 @@ namespace talkface::detail {
 // found only in Simplified (们 这 说 ...), among some of the commonest of each.
 bool is_traditional_text(const std::vector<CodePoint>& text);
 
+// Whether `text` writes Cantonese, as Hong Kong's chats, posts and subtitles do: one of the characters only
+// written Cantonese uses (嘅 咗 喺 哋 嘢 佢 冇 啲 嚟 睇 噉). Hong Kong's Traditional text is told from
+// Taiwan's so where it says something of its own (its units: 厘米, not 公分); its formal Chinese, which
+// writes none of them, reads as Taiwan's.
+bool writes_cantonese(const std::vector<CodePoint>& text);
+
 // A character of a written form's reading (the Simplified words of written_numbers.hpp) in its
 // Traditional form: 两 -> 兩, 万 -> 萬, 点 -> 點; other characters as they are.
 std::string traditional_form(std::string_view character);

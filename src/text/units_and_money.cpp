@@ -86,6 +86,23 @@ bool is_si_kilogram_at(const std::vector<CodePoint>& text, std::size_t start, st
     return per_kilogram || per_volume || mass;
 }
 
+// Taiwan's names of the metre and the centimetre, which its schools, news and shops say for m and cm
+// (身高152cm 一百五十二公分, 100m 一百公尺), and of their squares and cubes, in Traditional text (session 40:
+// 厘米 and 米, the mainland's). Hong Kong says 厘米 and 米 as the mainland does; the script cannot tell the
+// two, so Traditional text reads as Taiwan's, the larger of them, unless it writes Cantonese
+// (writes_cantonese); Hong Kong's formal text is fixed in place (152cm{一百五十二厘米}).
+constexpr Unit kTaiwanUnits[] = {
+    {"cm", "公分"},     {"m", "公尺"},       {"cm²", "平方公分"}, {"m²", "平方公尺"},
+    {"㎡", "平方公尺"}, {"cm³", "立方公分"}, {"m³", "立方公尺"},  {"cm2", "平方公分"},
+    {"m2", "平方公尺"}, {"cm3", "立方公分"}, {"m3", "立方公尺"},  {"m/s", "公尺每秒"},
+};
+
+const Unit* taiwan_unit(const Unit& unit) {
+    for (const auto& taiwan : kTaiwanUnits)
+        if (taiwan.written == unit.written) return &taiwan;
+    return nullptr;
+}
+
 // Hours written with a capital H after a count of two or three digits, as shops and services write how
 // long they open or ship (24H营业 二十四小时营业, 48H发货, 7×24H客服; session 39: letters, ai qi): one digit
 // before H is a pencil's grade (2H铅笔), and H before a digit a half year's (2024H1).
@@ -212,6 +229,9 @@ const Unit* unit_at(const std::vector<CodePoint>& text, std::size_t i, std::size
         }
     }
     if (best != nullptr && best->written == "kg" && is_si_kilogram_at(text, start, end)) best = &kSiKilogram;
+    if (best != nullptr && taiwan_unit(*best) != nullptr && is_traditional_text(text) &&
+        !writes_cantonese(text))
+        best = taiwan_unit(*best);
     if (best != nullptr && best->written == "bps" && is_basis_points_at(text, start)) best = nullptr;
     if (best == nullptr && start == i && i > 0 && is_small_watt_at(text, i)) {
         best = &kSmallWatt;

@@ -130,7 +130,7 @@ std::optional<SpokenForm> read_number_form(const std::vector<CodePoint>& text, s
     const auto number = parse_number(text, i);
     // A chat's +1 as a clause of its own (+1，我也觉得), "me too", is 加一 (session 14; it was 正一).
     if (sign_words == "正" && number.whole == "1" && !number.has_point &&
-        (stands_alone(text, start, number.end) || agrees_after_person(text, start, number.end)))
+        (stands_alone(text, start, number.end) || agrees_in_chat(text, start, number.end)))
         sign_words = "加";
     const NumberContext context = context_of_number(text, start, i, number, sign_words, currency);
     if (sign_words.empty() && currency == nullptr && !context.is_ordinal) {

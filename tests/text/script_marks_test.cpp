@@ -237,4 +237,19 @@ TEST_SUITE("stage directions and speaker labels") {
         // The limit: inside a sentence it glosses a term and is read.
         CHECK(said("操作系统（OS）很重要") != "操作系统很重要");
     }
+
+    TEST_CASE("a digest of who said what heads its items with the persons' names, which are said") {
+        // Failed on main f5434ff (session 39's leftover): each name was a speaker's label, left out.
+        const auto digest = read_transcript(
+            "王毅：中方愿同各方一道维护地区和平。\n"
+            "李强：今年经济增长目标为百分之五左右。\n"
+            "刘德华：新片将于明年上映。");
+        CHECK_FALSE(warns_of(digest, "is a speaker's label"));
+        check_says_each(said(digest), {"王毅", "李强", "刘德华"});
+        // The limits: a dialogue whose speakers talk to each other, or whom it calls by a familiar name or a
+        // role, keeps its labels out.
+        CHECK(said("张伟：你好。\n李娜：好久不见，最近怎么样？") == "你好好久不见最近怎么样");
+        CHECK(said("小明：今天下雨。\n老王：带伞了。") == "今天下雨带伞了");
+        CHECK(said("王总：开会了。\n李娜：马上到。") == "开会了马上到");
+    }
 }
