@@ -42,6 +42,16 @@ constexpr double kMaxNucleiPerSyllable = 1.6;
 // person, r-clean and r-pink15; passages with a sentence added to their text). At this share or
 // more such a sentence is judged on its whole span.
 constexpr double kMinPeakShareOfQuietSpeech = 0.6;
+// A sentence said quieter than the others keeps its voiced peaks quieter too, and under a noise that
+// fills the low band (street noise, brown and pink, at SNR 10-20 dB) they stop short of
+// kNucleusAboveFloorDb: bench/ p-street tuning-018's fourth sentence, its loud frames 4.7 dB under
+// the others' (the kSpeechPercentile of their speech frames' activity), holds 5 peaks for 15
+// syllables where the others hold 0.67-0.79 a syllable; counted from 6 dB above the floor it holds
+// 11, 0.73 a syllable (0.44 passes). So its peaks are counted from as far lower as its
+// loud frames lie under the other sentences' median, but never under kQuietestNucleusAboveFloorDb:
+// steady noise stays within 6 dB of its floor (sentence_cutter.cpp), and a ripple in it is no
+// syllable.
+constexpr float kQuietestNucleusAboveFloorDb = 6.0f;
 // A sentence missing from the transcript adds its voiced peaks to a neighbour's syllables: by a
 // third or more where the sentences are of 6-20 syllables (bench/ person's passages, one sentence
 // left out of the text: 1.3-2.0 times the recording's median per syllable), where right sentences
@@ -209,7 +219,11 @@ float power_sum_db(float a_db, float b_db) {
 
 }  // namespace
 
-std::size_t count_nuclei(const FeatureTrack& track, const LoudnessProfile& loudness, const FrameSpan& span) {
+namespace {
+
+// count_nuclei, a peak counted where it stands `above_floor_db` above the floor.
+std::size_t count_nuclei_above(const FeatureTrack& track, const LoudnessProfile& loudness,
+                               const FrameSpan& span, float above_floor_db) {
     const bool lacks_fundamental = track.fundamental_share < kNarrowbandFundamentalShare;
     const auto voicing_db = [&](std::size_t t) {
         return lacks_fundamental ? power_sum_db(track.at(t, kLowBandDb), track.at(t, kMidBandDb))
@@ -230,7 +244,7 @@ std::size_t count_nuclei(const FeatureTrack& track, const LoudnessProfile& loudn
         if (is_rising) {
             extreme = std::max(extreme, level);
             if (level < extreme - kNucleusProminenceDb) {
-                if (extreme >= floor_db + kNucleusAboveFloorDb) ++nuclei;
+                if (extreme >= floor_db + above_floor_db) ++nuclei;
                 is_rising = false;
                 extreme = level;
             }
@@ -242,8 +256,23 @@ std::size_t count_nuclei(const FeatureTrack& track, const LoudnessProfile& loudn
             }
         }
     }
-    if (is_rising && extreme >= floor_db + kNucleusAboveFloorDb) ++nuclei;
+    if (is_rising && extreme >= floor_db + above_floor_db) ++nuclei;
     return nuclei;
+}
+
+// The activity of span's loud speech frames (kSpeechPercentile of those at the threshold or above);
+// 0 where it has none.
+float loud_level_db(const LoudnessProfile& loudness, const FrameSpan& span) {
+    std::vector<float> speech_db;
+    for (std::size_t t = span.first_frame; t < span.end_frame; ++t)
+        if (is_speech_frame(loudness, t)) speech_db.push_back(loudness.activity_db[t]);
+    return speech_db.empty() ? 0.0f : percentile_of(std::move(speech_db), kSpeechPercentile);
+}
+
+}  // namespace
+
+std::size_t count_nuclei(const FeatureTrack& track, const LoudnessProfile& loudness, const FrameSpan& span) {
+    return count_nuclei_above(track, loudness, span, kNucleusAboveFloorDb);
 }
 
 std::string quote_start(const std::string& text) {
@@ -292,12 +321,24 @@ void check_sentence_lengths(const std::vector<FrameSpan>& spans, const FeatureTr
         return static_cast<double>(count_nuclei(track, loudness, spans[k])) / static_cast<double>(syllables[k]);
     };
     // Whether sentence k, fast on its speech frames, holds the voiced peaks of its syllables
-    // (kMinPeakShareOfQuietSpeech of the others' median).
+    // (kMinPeakShareOfQuietSpeech of the others' median), counted from as far lower as it is said
+    // quieter than the others (kQuietestNucleusAboveFloorDb).
     const auto keeps_peaks = [&](std::size_t k) {
-        std::vector<double> others;
-        for (std::size_t j = 0; j < spans.size(); ++j)
-            if (j != k && syllables[j] > 0) others.push_back(peaks_per_syllable(j));
-        return others.size() >= 2 && peaks_per_syllable(k) >= kMinPeakShareOfQuietSpeech * mean_median(others);
+        std::vector<double> others, other_levels;
+        for (std::size_t j = 0; j < spans.size(); ++j) {
+            if (j == k || syllables[j] == 0) continue;
+            others.push_back(peaks_per_syllable(j));
+            other_levels.push_back(loud_level_db(loudness, spans[j]));
+        }
+        if (others.size() < 2) return false;
+        const double quieter_db =
+            std::max(0.0, mean_median(other_levels) - loud_level_db(loudness, spans[k]));
+        const auto above_floor_db = static_cast<float>(
+            std::max(static_cast<double>(kQuietestNucleusAboveFloorDb), kNucleusAboveFloorDb - quieter_db));
+        const double peaks =
+            static_cast<double>(count_nuclei_above(track, loudness, spans[k], above_floor_db)) /
+            static_cast<double>(syllables[k]);
+        return peaks >= kMinPeakShareOfQuietSpeech * mean_median(others);
     };
     for (std::size_t k = 0; k < spans.size(); ++k) {
         if (syllables[k] == 0) continue;

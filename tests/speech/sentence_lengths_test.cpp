@@ -4,6 +4,7 @@
 // as aligned.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -29,6 +30,12 @@ struct BumpyTrack {
         track.frame_count = frames;
         track.values.assign(frames * kFeatureCount, 0.0f);
         loudness.low_floor_db = 0.0f;
+        loudness.activity_db.assign(frames, 0.0f);
+    }
+    // The activity over `span`: `db`, at or above the speech threshold (0 dB) or under it.
+    void activity(const FrameSpan& span, float db) {
+        std::fill(loudness.activity_db.begin() + static_cast<std::ptrdiff_t>(span.first_frame),
+                  loudness.activity_db.begin() + static_cast<std::ptrdiff_t>(span.end_frame), db);
     }
     void bumps(const FrameSpan& span, std::size_t peaks, float peak_db, float dip_db,
                int column = kLowBandDb) {
@@ -158,6 +165,39 @@ TEST_SUITE("speech") {
         }
         SUBCASE("a peak for two syllables: the audio lacks some of its text") {
             bumpy.bumps(spans[2], 2, 30.0f, 15.0f);
+            CHECK_THROWS_WITH_AS(check_sentence_lengths(spans, bumpy.track, bumpy.loudness, transcript),
+                                 doctest::Contains("sentence 3 (3.2-4.2 s"), AlignmentError);
+        }
+    }
+
+    TEST_CASE("a sentence said quieter than the others keeps its voiced peaks quieter too") {
+        // As above, 0.7 s of the third sentence measured as a pause; its loud frames 6 dB under the
+        // others' (bench/ p-street tuning-018: 4.7 dB), its syllables' peaks 7 dB above the floor.
+        const Timeline transcript = read_transcript("今天很好。我们走吧。他们来了。");
+        const std::vector<FrameSpan> spans = {{20, 120}, {170, 270}, {320, 420}};
+        BumpyTrack bumpy(500);
+        bumpy.loudness.activity_threshold_db = 6.0f;
+        bumpy.loudness.pauses = {{120, 170}, {270, 320}, {330, 400}};
+        for (std::size_t k = 0; k < 2; ++k) {
+            bumpy.bumps(spans[k], 4, 30.0f, 15.0f);
+            bumpy.activity(spans[k], 20.0f);
+        }
+        bumpy.activity({320, 330}, 14.0f);
+        bumpy.activity({400, 420}, 14.0f);
+        SUBCASE(
+            "a peak per syllable 7 dB above the floor, said 6 dB quieter: its quiet syllables are there") {
+            bumpy.bumps(spans[2], 4, 7.0f, 2.0f);
+            CHECK_NOTHROW(check_sentence_lengths(spans, bumpy.track, bumpy.loudness, transcript));
+        }
+        SUBCASE("the same peaks in a sentence as loud as the others: too faint for its syllables") {
+            bumpy.bumps(spans[2], 4, 7.0f, 2.0f);
+            bumpy.activity({320, 330}, 20.0f);
+            bumpy.activity({400, 420}, 20.0f);
+            CHECK_THROWS_WITH_AS(check_sentence_lengths(spans, bumpy.track, bumpy.loudness, transcript),
+                                 doctest::Contains("sentence 3 (3.2-4.2 s"), AlignmentError);
+        }
+        SUBCASE("ripples 5 dB above the floor, however quiet the sentence: the noise's, no syllables") {
+            bumpy.bumps(spans[2], 4, 5.0f, 1.0f);
             CHECK_THROWS_WITH_AS(check_sentence_lengths(spans, bumpy.track, bumpy.loudness, transcript),
                                  doctest::Contains("sentence 3 (3.2-4.2 s"), AlignmentError);
         }
