@@ -278,6 +278,7 @@ private:
             for (const int column : {kEnergyDb, kLowBandDb, kMidBandDb, kHighBandDb}) row[column] += gain_db;
         }
         set_line(whole_band_power, row);
+        row[kZeroCrossings] = zero_crossing_share(samples);
         track_.values.insert(track_.values.end(), row.begin(), row.end());
         ++track_.frame_count;
         changing_.push(power_.data());
@@ -286,6 +287,16 @@ private:
             const bool is_first = track_.pitch.empty();
             track_.pitch.push_back(pitch_.push(is_first ? samples : samples + kWindowSamples - kHopSamples, is_first ? kWindowSamples : kHopSamples));
         }
+    }
+
+    // A voice's voiced sound puts its power in the low harmonics and crosses zero a few times a
+    // period; a noise spread over the band crosses it far more often (the voicing a quiet end
+    // is told from a coder's comfort noise by, sentence_chains.cpp).
+    static float zero_crossing_share(const float* samples) {
+        std::size_t crossings = 0;
+        for (std::size_t i = 1; i < kWindowSamples; ++i)
+            crossings += (samples[i] < 0.0f) != (samples[i - 1] < 0.0f);
+        return static_cast<float>(crossings) / static_cast<float>(kWindowSamples - 1);
     }
 
     // kLineShare and kLineBin of the frame's power (not dithered), over the whole band, as kEnergyDb;

@@ -93,6 +93,7 @@ enum FeatureColumn : int {
     kChangingDb,                 // the power in it that changes
     kLineShare,                  // the whole band's power share within kLineHalfBins of its strongest bin
     kLineBin,                    // that bin (31.25 Hz apart): where a steady tone lies (steady_tone.hpp)
+    kZeroCrossings,              // the share of the window's neighbouring samples whose signs differ
     kFeatureCount,
 };
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "common/order_statistics.hpp"
 #include "speech/level_line.hpp"
 #include "speech/noise_reach.hpp"
 #include "speech/room_closures.hpp"
@@ -122,42 +123,140 @@ std::size_t speech_frames(const LoudnessProfile& loudness, const FrameSpan& span
 // and breaths): where a noise's levels in dB lie as a normal spread does, their 99th percentile
 // stands over their 90th by kRareOverReach of the spread between their 10th and 90th.
 constexpr float kRareOverReach = 0.41f;
+// Where the noise's level swings too far for a reach (a coder's gated comfort noise: Opus at 6 kbit/s
+// swings -61 to -72 dB from frame to frame, and a vowel's voiced tail lies in it at -56 to -58 dB), its
+// voicing can still tell the voice from it: a voiced frame crosses zero a few times a period of its low
+// harmonics, a noise spread over the band far more often. A frame reads voiced where it crosses zero
+// less often than kVoicedCrossingShare of the pauses' frames do and stands over the level
+// kVoicedOverLevelShare of them stay under: the comfort noise's quiet phases cross less often than its
+// loud ones, and an AGC's pumping (p-agc) lifts a low rumble that hardly crosses at all.
+// (bench/README.md Session 40 (opusend), p-opus6: the pauses' 25th percentile 0.15-0.17 of the samples
+// at 16 kHz, the vowels' tails 0.06-0.14, the noise's quiet phases 0.13-0.16, which without the level
+// held 6 frames "voiced" running and ran ends 116-174 ms late; over the pauses' median level p-agc's
+// ends ran up to 100 ms late, its pumped rumble crossing on 0.01-0.035 of the samples.)
+constexpr double kVoicedCrossingShare = 0.25;
+constexpr double kVoicedOverLevelShare = 0.75;
+// The voicing tells only where that share of the pauses' crossings is more than this many times the
+// voice's vowels' (their median over the sentences' frames louder than the sentences' median): p-opus6
+// 1.65-2.05 in every passage; espeak-ng's music15 and music20 0.36-0.48, song15 0.48-1.19, human
+// r-music mostly under 1.5 (its drums' passages 1.6-2.1), p-babble 0.42-0.88; p-agc's pink noise
+// 0.96-2.27 ...
+constexpr float kNoiseOverVowelCrossings = 1.5f;
+// ... and where the noise alone reads voiced kQuietFrames running (as long as a voice's end takes to
+// fall into it) on at most this share of the pauses' frames: music's held notes do (r-music's drums
+// and piano, where the crossings pass the bar above: 0.13-0.15 at the pauses' median level; p-opus6
+// 0-0.07).
+constexpr double kNoiseVoicedRunShare = 0.1;
 
 struct PauseNoise {
     float reach_db;
     float rare_db;
+    // Where reach_db cannot tell (infinite) and the voicing can: the zero-crossing share a voiced frame
+    // stays under (kVoicedCrossingShare) and the level it stands over (kVoicedOverLevelShare); 0 and
+    // +infinity where neither tells.
+    float voiced_crossings = 0.0f;
+    float voice_over_db = std::numeric_limits<float>::infinity();
 };
 
-PauseNoise pauses_noise(const FeatureTrack& track, const LoudnessProfile& loudness) {
+bool reads_voiced(const FeatureTrack& track, std::size_t t, const PauseNoise& noise) {
+    return track.at(t, kEnergyDb) > noise.voice_over_db &&
+           track.at(t, kZeroCrossings) < noise.voiced_crossings;
+}
+
+// The zero-crossing share of a voice's vowels: the median over its sentences' frames louder than
+// their median (0 where they have none).
+float vowels_crossings(const FeatureTrack& track, const std::vector<SentenceChain>& chains) {
+    std::vector<std::size_t> frames;
+    for (const SentenceChain& chain : chains)
+        for (std::size_t t = chain.speech.first_frame;
+             t < std::min(chain.speech.end_frame, track.frame_count); ++t)
+            frames.push_back(t);
+    if (frames.empty()) return 0.0f;
     std::vector<float> levels;
+    for (const std::size_t t : frames) levels.push_back(track.at(t, kEnergyDb));
+    const float middle_db = upper_median(std::move(levels));
+    std::vector<float> crossings;
+    for (const std::size_t t : frames)
+        if (track.at(t, kEnergyDb) > middle_db) crossings.push_back(track.at(t, kZeroCrossings));
+    return crossings.empty() ? 0.0f : upper_median(std::move(crossings));
+}
+
+// The share of the pauses' frames that read voiced (reads_voiced) kQuietFrames or more running.
+double voiced_run_share(const FeatureTrack& track, const LoudnessProfile& loudness, const PauseNoise& noise) {
+    std::size_t frames = 0;
+    std::size_t in_runs = 0;
+    for (const FrameSpan& pause : loudness.pauses) {
+        std::size_t run = 0;
+        const std::size_t end = std::min(pause.end_frame, track.frame_count);
+        for (std::size_t t = pause.first_frame; t <= end; ++t) {
+            if (t < end && reads_voiced(track, t, noise)) {
+                ++run;
+                continue;
+            }
+            if (run >= kQuietFrames) in_runs += run;
+            run = 0;
+        }
+        frames += end - std::min(end, pause.first_frame);
+    }
+    return frames == 0 ? 0.0 : static_cast<double>(in_runs) / static_cast<double>(frames);
+}
+
+PauseNoise pauses_noise(const FeatureTrack& track, const LoudnessProfile& loudness,
+                        const std::vector<SentenceChain>& chains) {
+    std::vector<float> levels;
+    std::vector<float> crossings;
     for (const FrameSpan& pause : loudness.pauses)
-        for (std::size_t t = pause.first_frame; t < std::min(pause.end_frame, track.frame_count); ++t)
+        for (std::size_t t = pause.first_frame; t < std::min(pause.end_frame, track.frame_count); ++t) {
             levels.push_back(track.at(t, kEnergyDb));
+            crossings.push_back(track.at(t, kZeroCrossings));
+        }
     const float reach_db = steady_noise_reach(levels);
-    return {reach_db, reach_db + kRareOverReach * noise_spread(std::move(levels))};
+    const PauseNoise by_level{reach_db, reach_db + kRareOverReach * noise_spread(levels)};
+    if (std::isfinite(reach_db) || crossings.empty()) return by_level;
+    PauseNoise by_voicing = by_level;
+    by_voicing.voiced_crossings = percentile_of(std::move(crossings), kVoicedCrossingShare);
+    by_voicing.voice_over_db = percentile_of(std::move(levels), kVoicedOverLevelShare);
+    const bool tells =
+        by_voicing.voiced_crossings > kNoiseOverVowelCrossings * vowels_crossings(track, chains) &&
+        voiced_run_share(track, loudness, by_voicing) <= kNoiseVoicedRunShare;
+    return tells ? by_voicing : by_level;
 }
 
 // Where a voice's quiet end from `mark` on has fallen into the noise: the first of kQuietFrames
-// frames running at or under its reach, unless the voice comes back for kVoiceBackFrames over the
-// level the noise passes one frame in a hundred and falls into it again before `end` (a
-// neutral-tone vowel after a fricative the band took away: 休息's i after its x, bench/README.md
-// Session 38 (phoneend2)): it is followed on to there. `mark` where it never falls before `end`
-// (music or another voice on after it: nothing tells where the voice stopped). A sound that comes
-// back and runs on to `end` is the next one's, not this voice's.
-std::size_t end_in_noise(const FeatureTrack& track, std::size_t mark, std::size_t end,
-                         const PauseNoise& noise) {
+// frames running that read as the noise (`is_noise`), unless the voice comes back for
+// kVoiceBackFrames (`is_back`) and falls into the noise again before `end` (a neutral-tone vowel after
+// a fricative the band took away: 休息's i after its x, bench/README.md Session 38 (phoneend2)): it is
+// followed on to there. `mark` where it never falls before `end` (music or another voice on after
+// it: nothing tells where the voice stopped). A sound that comes back and runs on to `end` is the
+// next one's, not this voice's.
+template <typename IsNoise, typename IsBack>
+std::size_t end_in_noise(std::size_t mark, std::size_t end, IsNoise is_noise, IsBack is_back) {
     std::size_t fallen = mark;
     bool is_voice = true;
-    std::size_t run = 0;  // frames running that say the level has changed from voice to noise or back
+    std::size_t run = 0;  // frames running that say the sound has changed from voice to noise or back
     for (std::size_t t = mark; t < end; ++t) {
-        const float level_db = track.at(t, kEnergyDb);
-        run = (is_voice ? level_db <= noise.reach_db : level_db > noise.rare_db) ? run + 1 : 0;
+        run = (is_voice ? is_noise(t) : is_back(t)) ? run + 1 : 0;
         if (run < (is_voice ? kQuietFrames : kVoiceBackFrames)) continue;
         is_voice = !is_voice;
         run = 0;
         if (!is_voice) fallen = t + 1 - kQuietFrames;
     }
     return fallen;
+}
+
+// Where the voice's quiet end from `mark` falls into the noise before `end` (end_in_noise): by the
+// level where the noise is steady (a frame at or under its reach is the noise's; one over the level
+// it passes one frame in a hundred is the voice's), else by the voicing where that tells (a frame
+// that reads voiced is the voice's, any other the noise's); 0 where neither tells.
+std::size_t quiet_end(const FeatureTrack& track, std::size_t mark, std::size_t end, const PauseNoise& noise) {
+    if (std::isfinite(noise.reach_db))
+        return end_in_noise(
+            mark, end, [&](std::size_t t) { return track.at(t, kEnergyDb) <= noise.reach_db; },
+            [&](std::size_t t) { return track.at(t, kEnergyDb) > noise.rare_db; });
+    if (noise.voiced_crossings <= 0.0f) return 0;
+    auto is_voiced = [&](std::size_t t) { return reads_voiced(track, t, noise); };
+    return end_in_noise(
+        mark, end, [&](std::size_t t) { return !is_voiced(t); }, is_voiced);
 }
 
 // Where the walk back along the ringing's line drawn from `mark` cannot tell where the voice
@@ -234,7 +333,7 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
     for (SentenceChain& chain : chains) chain.ends_before_tail = rings;
     const PauseNoise noise =
         rings ? PauseNoise{std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity()}
-              : pauses_noise(track, loudness);
+              : pauses_noise(track, loudness, chains);
     // Edges reach into the pauses around the sentence, at most halfway to its neighbours.
     for (std::size_t w = 0; w < chains.size(); ++w) {
         SentenceChain& chain = chains[w];
@@ -262,8 +361,8 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
         chain.searched.end_frame =
             std::min(upper, voiced_end < speech.end_frame ? voiced_end + kTailEdgeFrames : speech.end_frame + kEdgeFrames);
         chain.quiet_end =
-            voiced_end < speech.end_frame && std::isfinite(noise.reach_db)
-                ? end_in_noise(track, voiced_end, std::min(upper, speech.end_frame + kEdgeFrames), noise)
+            voiced_end < speech.end_frame
+                ? quiet_end(track, voiced_end, std::min(upper, speech.end_frame + kEdgeFrames), noise)
                 : 0;
         chain.searched_in_room = chain.searched;
         if (chain.ends_in_tail) {

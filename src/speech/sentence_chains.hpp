@@ -30,7 +30,8 @@ struct SentenceChain {
     bool ends_before_tail = true;
     // Where its voice has stopped, outside a room: where its quiet end past end_before_tail's mark
     // falls into the recording's noise, which the search may not reach; 0 in a room, where the noise
-    // is not steady enough to tell, or where the sentence has no quiet end.
+    // is too unsteady for its level to tell and its voicing does not tell either, or where the
+    // sentence has no quiet end.
     std::size_t quiet_end = 0;
     // Where the syllables given out in a room are searched (room_placement.hpp): `searched`, ending
     // a little past where the voice stopped before the ringing (end_before_ringing) where it ends in a

@@ -83,6 +83,20 @@ std::size_t last_end_frame(const SentenceChain& chain, const FeatureTrack& track
         std::lround(result.syllables[chain.syllable_indices.back()].end_s / kFrameStepS));
 }
 
+// `recording` with a coder's comfort noise (Opus at 6 kbit/s) in place of its frames at -70 dB: swinging
+// between -61 and -72 dB from frame to frame, crossing zero on `noise_crossings` of its samples; the
+// voice's frames cross on 0.08 of theirs, as its vowels do.
+FeatureTrack with_comfort_noise(const FeatureTrack& recording, float noise_crossings) {
+    FeatureTrack track = recording;
+    for (std::size_t t = 0; t < track.frame_count; ++t) {
+        float* row = &track.values[t * kFeatureCount];
+        const bool is_noise = row[kEnergyDb] == -70.0f;
+        if (is_noise) row[kEnergyDb] = t % 2 == 0 ? -61.0f : -72.0f;
+        row[kZeroCrossings] = is_noise ? noise_crossings : 0.08f;
+    }
+    return track;
+}
+
 // The loudness profile of a recording whose pauses are its runs of frames at or under `noise_db`
 // (the noise alone), at least 12 frames long.
 LoudnessProfile pauses_at(const FeatureTrack& track, float noise_db) {
@@ -260,5 +274,30 @@ TEST_SUITE("sentence chains") {
         chains = group_chains(transcript, running_on.cut, running_on.cut.spans);
         set_search_spans(running_on.track, pauses_at(running_on.track, -65.0f), chains);
         CHECK(chains[0].quiet_end == voice_end + 5);
+    }
+
+    TEST_CASE("a quiet end in a noise too unsteady for a reach ends where its voicing stops") {
+        // A vowel's voiced tail through Opus at 6 kbit/s: 5 frames of murmur 24 dB under the vowel, then
+        // 15 at -57 dB, inside the comfort noise's swing, which crosses zero on 0.2 of its samples; the
+        // cutter's span ends 10 frames into the tail.
+        std::vector<float> end(5, -44.0f);
+        end.insert(end.end(), 15, -57.0f);
+        Recording phone = recording_of({end, {}, {}});
+        phone.cut.spans[0].end_frame -= 10;
+        const FeatureTrack opus = with_comfort_noise(phone.track, 0.2f);
+        const Timeline transcript = transcript_of(3);
+        std::vector<SentenceChain> chains = group_chains(transcript, phone.cut, phone.cut.spans);
+        set_search_spans(opus, pauses_at(opus, -60.0f), chains);
+        const std::size_t voice_end = chains[0].speech.first_frame + 40;
+        REQUIRE(chains[0].speech.end_frame - chains[0].tail_frames == voice_end);
+        CHECK(chains[0].quiet_end == voice_end + 20);
+        CHECK(last_end_frame(chains[0], opus, transcript) == voice_end + 20);
+
+        // A noise that crosses zero as seldom as the vowels (music's notes) says nothing by its
+        // voicing: the last syllable ends where the path ends it.
+        const FeatureTrack music = with_comfort_noise(phone.track, 0.08f);
+        chains = group_chains(transcript, phone.cut, phone.cut.spans);
+        set_search_spans(music, pauses_at(music, -60.0f), chains);
+        CHECK(last_end_frame(chains[0], music, transcript) == voice_end + 4);
     }
 }
