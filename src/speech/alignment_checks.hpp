@@ -69,6 +69,9 @@ struct SentenceMetrics {
     double held_out_end_median = std::numeric_limits<double>::quiet_NaN();
     // Whether its last syllable gaps most of all its syllables on those models.
     bool held_out_last_is_worst = false;
+    // Whether those gaps were measured in a room (the recording placed as a room's, room_closures.hpp
+    // and room_fall.hpp): every sound rings into the next, and a ringing stretch rules a half's gap.
+    bool is_held_out_in_room = false;
     // Frames of speech after its last syllable that generic speech takes on the re-estimated
     // models (unspoken_tail_frames, text_fit.hpp): files of one sentence, outside a room's tail.
     std::size_t unspoken_tail_frames = 0;
@@ -188,7 +191,9 @@ void check_text_fit(const std::vector<SentenceMetrics>& metrics, const std::vect
 // or two sentences, where the models re-estimated on the recording fit any text. Where the
 // sentence's order_margin was measured, the held-out gap refuses only if the margin confirms it or
 // it lies in the sentence's second half, and a margin as small as a wrong text's refuses alone; a
-// held-out gap neither confirms goes to `weak_findings`. A sentence of a few syllables is too short for either: what is
+// held-out gap neither confirms goes to `weak_findings`. Without a margin (a chain of sentences run
+// together in a longer file) the half's gap refuses alone, but in a room only where the typical
+// syllable gaps over the same limit too. A sentence of a few syllables is too short for either: what is
 // found there goes to `weak_findings`, with its evidence.
 // \throws talkface::AlignmentError naming the first sentence whose text does not fit its speech.
 void check_held_out_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,

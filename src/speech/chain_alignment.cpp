@@ -113,7 +113,8 @@ void align_final_chain(const SentenceChain& chain, std::size_t w, const FeatureT
         loudness,
         transcript,
         is_checked,
-        is_on_bed_free_models};
+        is_on_bed_free_models,
+        aligned.room_result.has_value()};
     measure_chain(measured, pass.scores, pass.workspace, aligned.result, pass.evidence, aligned.spans,
                   aligned.metrics);
     if (is_given_out) set_start_evidence(chain, path, pass.marginals, pass.evidence);

@@ -107,6 +107,7 @@ void measure_chain(const ChainMeasureInputs& in, EmissionScores& scores, Viterbi
         for (std::size_t k = 0; k < metrics.size(); ++k) {
             if (whole_gaps[k].empty()) continue;
             metrics[k].held_out_median = mean_median(whole_gaps[k]);
+            metrics[k].is_held_out_in_room = in.is_in_room;
             metrics[k].held_out_last_is_worst =
                 whole_gaps[k].back() >= *std::max_element(whole_gaps[k].begin(), whole_gaps[k].end());
             if (!end_gaps[k].empty()) metrics[k].held_out_end_median = mean_median(end_gaps[k]);

@@ -61,9 +61,9 @@ bool is_judged_by_order_margin(const SentenceChain& chain, std::size_t spoken_se
 // re-estimated models and its observations, where other searches of it place its syllables (they
 // weigh in on their confidences), the re-estimation, the recording's count of spoken sentences and
 // how far a closure spoken through is forgiven (forgiven_closure_run_on), the recording's features,
-// its loudness and the transcript, whether its path is checked (check_path), and whether it is
+// its loudness and the transcript, whether its path is checked (check_path), whether it is
 // judged on the models learned from the sentences clear of a music bed (bed_free_models.hpp),
-// outside a room.
+// outside a room, and whether the recording is placed as a room's.
 struct ChainMeasureInputs {
     const SentenceChain& chain;
     std::size_t chain_index;
@@ -78,6 +78,7 @@ struct ChainMeasureInputs {
     const Timeline& transcript;
     bool is_checked;
     bool is_on_bed_free_models;
+    bool is_in_room;
 };
 
 // The final pass over one chain, on the re-estimated models, whose scores of it `scores` holds: its
