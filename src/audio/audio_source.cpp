@@ -665,6 +665,8 @@ private:
         }
         damage_->finish();
         for (std::string& note : describe_pcm_damage(*damage_, info_.samplerate)) add_note(std::move(note));
+        for (const DamagedSamples& cut : damage_->cut_zeros())
+            note_cut_to_zeros(cut.first_frame, cut.end_frame - cut.first_frame);
         damage_.reset();
     }
 
@@ -815,6 +817,10 @@ void AudioSource::note_lost_audio(std::size_t at_frame, std::size_t frames) {
 
 void AudioSource::note_codec_pause(std::size_t at_frame, std::size_t frames) {
     add_stretch(codec_pauses_, sample_rate_hz(), at_frame, frames);
+}
+
+void AudioSource::note_cut_to_zeros(std::size_t at_frame, std::size_t frames) {
+    add_stretch(cuts_to_zeros_, sample_rate_hz(), at_frame, frames);
 }
 
 double lost_seconds(const std::vector<LostAudio>& lost) {

@@ -58,6 +58,14 @@ struct CodecPause {
     double end_s = 0.0;
 };
 
+// A stretch of a PCM recording whose sound is cut off mid-wave to exact zeros, in seconds from the
+// start: an editor's silence over a word, or a block of the file's bytes zeroed (pcm_damage.hpp).
+// A note (notes()) names them all; the aligner names no silenced word there again.
+struct CutToZeros {
+    double start_s = 0.0;
+    double end_s = 0.0;
+};
+
 // The seconds of sound the stretches hold together.
 double lost_seconds(const std::vector<LostAudio>& lost);
 
@@ -119,6 +127,8 @@ public:
     const std::vector<LostAudio>& lost_audio() const { return lost_audio_; }
     // The stretches read as silence where the codec marks a pause, in order, as far as read.
     const std::vector<CodecPause>& codec_pauses() const { return codec_pauses_; }
+    // The stretches cut off mid-wave to exact zeros, in order, once the reading has ended.
+    const std::vector<CutToZeros>& cuts_to_zeros() const { return cuts_to_zeros_; }
     // What the user should know of how the file was read, though no sound was lost ("its header
     // states 9.7 s of sound, the file holds 19.5 s ...; read to the end of the file"), without the
     // file's name: the aligner gives each to the Timeline's warnings, naming the file.
@@ -134,10 +144,13 @@ protected:
     bool has_lost_audio_read() const { return has_lost_audio_read_; }
     // The same for `frames` frames of silence read in place of a codec's pause frames.
     void note_codec_pause(std::size_t at_frame, std::size_t frames);
+    // The same for `frames` frames from `at_frame` cut off mid-wave to exact zeros.
+    void note_cut_to_zeros(std::size_t at_frame, std::size_t frames);
 
 private:
     std::vector<LostAudio> lost_audio_;
     std::vector<CodecPause> codec_pauses_;
+    std::vector<CutToZeros> cuts_to_zeros_;
     std::vector<std::string> notes_;
     std::size_t frames_read_ = 0;
     std::size_t non_finite_frames_ = 0;

@@ -54,59 +54,111 @@ std::size_t first_starting_after(const std::vector<Syllable>& syllables, double 
     return i;
 }
 
+template <class Stretch>
+bool meets(const std::vector<Stretch>& stretches, const SilenceRun& run) {
+    return std::any_of(stretches.begin(), stretches.end(), [&](const Stretch& stretch) {
+        return stretch.start_s < run.end_s && stretch.end_s > run.start_s;
+    });
+}
+
 double overlap_s(const Syllable& syllable, const SilenceRun& run) {
     return std::max(0.0, std::min(syllable.end_s, run.end_s) - std::max(syllable.start_s, run.start_s));
+}
+
+// The syllables [first, end) judged on one side of a run: up to kSyllablesBeside next to it, in the
+// sentence of the one nearest it.
+struct Side {
+    std::size_t first = 0;
+    std::size_t end = 0;
+};
+
+Side side_before(const std::vector<Syllable>& syllables, std::size_t after) {
+    Side side{after, after};
+    while (side.first > 0 && after - side.first < kSyllablesBeside &&
+           syllables[side.first - 1].sentence == syllables[after - 1].sentence)
+        --side.first;
+    return side;
+}
+
+Side side_after(const std::vector<Syllable>& syllables, std::size_t after) {
+    Side side{after, after};
+    while (side.end < syllables.size() && side.end - after < kSyllablesBeside &&
+           syllables[side.end].sentence == syllables[after].sentence)
+        ++side.end;
+    return side;
+}
+
+struct Judged {
+    std::size_t squeezed = 0;
+    bool is_on_silence = false;
+    std::string text;
+    std::string lengths;
+};
+
+// `after` is the first syllable after the run: the one before it is read up to the run, as the
+// aligner may let it ring on into it.
+Judged judge(const std::vector<Syllable>& syllables, Side side, std::size_t after, const SilenceRun& run,
+             double squeezed_s) {
+    Judged judged;
+    for (std::size_t i = side.first; i < side.end; ++i) {
+        const Syllable& syllable = syllables[i];
+        const double length_s =
+            (i + 1 == after ? std::min(syllable.end_s, run.start_s) : syllable.end_s) - syllable.start_s;
+        judged.squeezed += length_s < squeezed_s;
+        const double syllable_s = syllable.end_s - syllable.start_s;
+        judged.is_on_silence |=
+            syllable_s > 0.0 && overlap_s(syllable, run) >= kLeastOnSilenceShare * syllable_s;
+        judged.text += syllable.text;
+        judged.lengths += (judged.lengths.empty() ? "" : ", ") + std::string("\"") + syllable.text + "\" " +
+                          format_fixed(1000.0 * std::max(0.0, length_s), 0) + " ms";
+    }
+    return judged;
+}
+
+std::string describe(const SilenceRun& run, std::size_t sentence, const Judged& judged, double typical_s) {
+    return "sentence " + std::to_string(sentence + 1) + ": " + format_fixed(run.start_s, 2) + "-" +
+           format_fixed(run.end_s, 2) +
+           " s is digital silence (exact zeros), and the syllables beside it are squeezed against it (" +
+           judged.lengths + "; the recording's syllables take " + format_fixed(1000.0 * typical_s, 0) +
+           " ms): is a word of \"" + judged.text +
+           "\" silenced there by an editor, its text kept? Its syllables' times are guesses; take the word "
+           "out of the transcript, or the silence out of the recording";
 }
 
 }  // namespace
 
 std::vector<std::string> describe_silenced_words(const FeatureTrack& track, double track_start_s,
-                                                 const Timeline& aligned,
-                                                 const std::vector<LostAudio>& lost) {
+                                                 const Timeline& aligned, const std::vector<LostAudio>& lost,
+                                                 const std::vector<CutToZeros>& cuts) {
     std::vector<std::string> warnings;
     const std::vector<Syllable>& syllables = aligned.syllables;
     if (syllables.size() < 2 * kSyllablesBeside) return warnings;
     const double typical_s = median_length(syllables);
     if (!(typical_s > 0.0)) return warnings;
     for (const SilenceRun& run : silence_runs(track, track_start_s)) {
-        if (std::any_of(lost.begin(), lost.end(), [&](const LostAudio& stretch) {
-                return stretch.start_s < run.end_s && stretch.end_s > run.start_s;
-            }))
-            continue;
+        if (meets(lost, run) || meets(cuts, run)) continue;
         const std::size_t after = first_starting_after(syllables, run.start_s + kStartsWithRunS);
-        if (after == 0 || after == syllables.size()) continue;
-        const Syllable& before = syllables[after - 1];
-        // A pause the text marks, or one between sentences, may be recorded as exact zeros.
-        if (before.pause_after || before.sentence != syllables[after].sentence) continue;
-        const std::size_t first = after - std::min(after, kSyllablesBeside);
-        const std::size_t end = std::min(syllables.size(), after + kSyllablesBeside);
-        std::size_t squeezed = 0;
-        bool is_on_silence = false;
-        std::string beside;
-        std::string lengths;
-        for (std::size_t i = first; i < end; ++i) {
-            const Syllable& syllable = syllables[i];
-            if (syllable.sentence != before.sentence) continue;
-            // The syllable before the run is read up to the run: the aligner may let it ring on into it.
-            const double length_s =
-                (i + 1 == after ? std::min(syllable.end_s, run.start_s) : syllable.end_s) - syllable.start_s;
-            squeezed += length_s < kSqueezedShare * typical_s;
-            const double syllable_s = syllable.end_s - syllable.start_s;
-            is_on_silence |=
-                syllable_s > 0.0 && overlap_s(syllable, run) >= kLeastOnSilenceShare * syllable_s;
-            beside += syllable.text;
-            lengths += (lengths.empty() ? "" : ", ") + std::string("\"") + syllable.text + "\" " +
-                       format_fixed(1000.0 * std::max(0.0, length_s), 0) + " ms";
+        const Side before_side = after == 0 ? Side{} : side_before(syllables, after);
+        const Side after_side = after == syllables.size() ? Side{after, after} : side_after(syllables, after);
+        const bool is_inside = after > 0 && after < syllables.size() && !syllables[after - 1].pause_after &&
+                               syllables[after - 1].sentence == syllables[after].sentence;
+        if (is_inside) {
+            const Judged judged =
+                judge(syllables, {before_side.first, after_side.end}, after, run, kSqueezedShare * typical_s);
+            if (judged.squeezed >= kLeastSqueezed || judged.is_on_silence)
+                warnings.push_back(describe(run, syllables[after].sentence, judged, typical_s));
+            continue;
         }
-        if (squeezed < kLeastSqueezed && !is_on_silence) continue;
-        warnings.push_back(
-            "sentence " + std::to_string(before.sentence + 1) + ": " + format_fixed(run.start_s, 2) + "-" +
-            format_fixed(run.end_s, 2) +
-            " s is digital silence (exact zeros), and the syllables beside it are squeezed against it (" +
-            lengths + "; the recording's syllables take " + format_fixed(1000.0 * typical_s, 0) +
-            " ms): is a word of \"" + beside +
-            "\" silenced there by an editor, its text kept? Its syllables' times are guesses; take the "
-            "word out of the transcript, or the silence out of the recording");
+        // A pause the text marks, a sentence's edge or the recording's may be recorded as exact zeros,
+        // with short syllables beside it: each side is judged alone, all of it squeezed further.
+        for (const Side side : {before_side, after_side}) {
+            const Judged judged = judge(syllables, side, after, run, kEdgeSqueezedShare * typical_s);
+            if ((side.end - side.first == kSyllablesBeside && judged.squeezed == kSyllablesBeside) ||
+                judged.is_on_silence) {
+                warnings.push_back(describe(run, syllables[side.first].sentence, judged, typical_s));
+                break;
+            }
+        }
     }
     return warnings;
 }

@@ -30,14 +30,24 @@ constexpr std::size_t kSyllablesBeside = 2;
 constexpr double kSqueezedShare = 0.5;
 constexpr std::size_t kLeastSqueezed = 2;
 constexpr double kLeastOnSilenceShare = 0.5;
+// Where the text marks a pause, or a sentence (or the recording) begins or ends there, a pause may
+// be recorded as exact zeros and the syllables next to it are often short ones (来 of 進來, 今年 at a
+// sentence's start: 0.43-0.48 of the median in h-clean and r-clean): one side alone tells, and
+// both of its kSyllablesBeside must take under this share (an editor's silence leaves them
+// 0.14-0.44 in session 40's tuning edits), or one lie on the silence.
+constexpr double kEdgeSqueezedShare = 0.4;
 
-// The warnings for `aligned` (times on the recording) where a run of digital silence inside a
-// sentence, after a syllable the text marks no pause after, has squeezed syllables or a syllable
-// aligned over it: the span, the sentence and the syllables beside it. `track` is the recording's
-// reading whose frame 0 starts at `track_start_s` of the recording. A run that meets sound its
-// reader could not decode (`lost`, read as silence) is left to the warning that names the damage.
+// The warnings for `aligned` (times on the recording) where a run of digital silence has squeezed
+// syllables or a syllable aligned over it: inside a sentence, after a syllable the text marks no
+// pause after, two of the syllables either side; at a pause the text marks or a sentence's edge,
+// all of one side's. Each names the span, the sentence and the syllables beside it. `track` is the
+// recording's reading whose frame 0 starts at `track_start_s` of the recording. A run that meets
+// sound its reader could not decode (`lost`, read as silence) is left to the warning that names the
+// damage, and one its reader found cut off mid-wave (`cuts`) to the note that names the cut, which
+// says an editor's silence leaves it too (one warning for one run).
 std::vector<std::string> describe_silenced_words(const FeatureTrack& track, double track_start_s,
-                                                 const Timeline& aligned, const std::vector<LostAudio>& lost);
+                                                 const Timeline& aligned, const std::vector<LostAudio>& lost,
+                                                 const std::vector<CutToZeros>& cuts);
 
 }  // namespace talkface::detail
 

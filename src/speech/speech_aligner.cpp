@@ -363,8 +363,8 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
         is_voted ? (file_path.empty() ? std::nullopt : describe_restarted_mp3(file_path)) : joined_copy();
     if (joined) result.warnings.push_back(source->name() + ": " + *joined);
     for (const std::string& note : source->notes()) result.warnings.push_back(source->name() + ": " + note);
-    for (const std::string& silenced :
-         describe_silenced_words(track, silence_skipped_s, result, source->lost_audio()))
+    for (const std::string& silenced : describe_silenced_words(track, silence_skipped_s, result,
+                                                               source->lost_audio(), source->cuts_to_zeros()))
         result.warnings.push_back(source->name() + ": " + silenced);
     if (unconfirmable && options.check != CheckMode::off)
         result.warnings.push_back("the transcript cannot be checked against the audio: " + *unconfirmable);

@@ -6,6 +6,7 @@ import os
 import pathlib
 import subprocess
 import sys
+import wave
 import xml.etree.ElementTree as ET
 
 import pytest
@@ -330,6 +331,30 @@ def test_a_damaged_file_refused_names_the_damage_before_the_text(tmp_path):
     assert result.returncode == 1
     assert result.stderr.startswith(f"talkface: error: {opus}: the file is damaged: 1 s of its sound could not be "
                                     "decoded, at 1.014-2.014 s"), result.stderr
+
+
+def test_a_word_silenced_at_a_sentences_end_is_named(tmp_path):
+    # 吧, the last syllable of two_sentences.wav, put to exact zeros over its true span (the text
+    # kept): no syllable of its sentence follows the zeros, and the rule for zeros inside a sentence
+    # passed it by; the aligner lays 吧 on the zeros.
+    audio, transcript = clip("two_sentences")
+    last = truth("two_sentences")["syllables"][-1]
+    with wave.open(str(audio), "rb") as source:
+        params = source.getparams()
+        frames = bytearray(source.readframes(params.nframes))
+    width = params.sampwidth * params.nchannels
+    first, end = (int(last[key] * params.framerate) for key in ("start", "end"))
+    frames[first * width : end * width] = bytes((end - first) * width)
+    edited = tmp_path / "silenced.wav"
+    with wave.open(str(edited), "wb") as out:
+        out.setparams(params)
+        out.writeframes(bytes(frames))
+    result = run("align", edited, transcript, "--json", "--quiet")
+    assert result.returncode == 0, result.stderr
+    silenced = [w for w in json.loads(result.stdout)["warnings"] if "is digital silence (exact zeros)" in w]
+    assert len(silenced) == 1, result.stdout
+    assert silenced[0].startswith(f"{edited}: sentence 2: 4") and '"吧" 0 ms' in silenced[0], silenced
+    assert 'is a word of "去吧" silenced there by an editor, its text kept?' in silenced[0], silenced
 
 
 def test_a_stale_wav_header_is_read_whole_and_said(tmp_path):

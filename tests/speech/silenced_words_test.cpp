@@ -2,11 +2,14 @@
 // them"): the aligner squeezes its syllables against the zeros, and said nothing of it before.
 #include <doctest/doctest.h>
 
+#include <sndfile.h>
+
 #include <algorithm>
 #include <cstddef>
 #include <string>
 
 #include "common/clip_audio.hpp"
+#include "common/test_paths.hpp"
 #include "talkface/speech_aligner.hpp"
 #include "talkface/transcript.hpp"
 
@@ -21,6 +24,16 @@ std::string silenced_warnings(const test::ClipSamples& audio) {
     std::string found;
     for (const std::string& warning : timeline.warnings)
         if (warning.find("digital silence") != std::string::npos) found += warning + "\n";
+    return found;
+}
+
+// What the warnings of `path` aligned with one_sentence.txt say of exact zeros.
+std::vector<std::string> zeros_warnings(const std::string& path) {
+    std::vector<std::string> found;
+    for (const std::string& warning :
+         SpeechAligner().align_file(path, load_transcript(test::clip_path("one_sentence.txt"))).warnings)
+        if (warning.find("exact") != std::string::npos && warning.find("zeros") != std::string::npos)
+            found.push_back(warning);
     return found;
 }
 
@@ -41,5 +54,25 @@ TEST_SUITE("speech") {
         CHECK(warning.find("squeezed against it (\"們\"") != std::string::npos);
         CHECK(warning.find("is a word of \"們在公園\" silenced there by an editor, its text kept?") !=
               std::string::npos);
+    }
+
+    TEST_CASE("a block of zeros cut mid-wave into a WAV is named once, by the note on the cut") {
+        // 1.1-1.3 s of one_sentence.wav put to zeros, in a file: the reader's note on the cut says an
+        // editor's silence leaves it, as a disk's zeroed bytes do; the silenced word said it again.
+        test::ClipSamples clip = test::clip_samples("one_sentence.wav");
+        std::fill(clip.values.begin() + static_cast<std::ptrdiff_t>(1.1 * clip.rate_hz),
+                  clip.values.begin() + static_cast<std::ptrdiff_t>(1.3 * clip.rate_hz), 0.0f);
+        const std::string path = test::output_path("silenced_words_cut.wav");
+        SF_INFO info{};
+        info.samplerate = clip.rate_hz;
+        info.channels = 1;
+        info.format = SF_FORMAT_WAV | SF_FORMAT_PCM_16;
+        SNDFILE* file = sf_open(path.c_str(), SFM_WRITE, &info);
+        REQUIRE(file != nullptr);
+        sf_writef_float(file, clip.values.data(), static_cast<sf_count_t>(clip.values.size()));
+        sf_close(file);
+        const std::vector<std::string> warnings = zeros_warnings(path);
+        REQUIRE(warnings.size() == 1);
+        CHECK(warnings[0].find("cut off mid-wave to exact digital zeros at 1.1-1.3 s") != std::string::npos);
     }
 }
