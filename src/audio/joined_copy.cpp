@@ -172,6 +172,12 @@ std::optional<std::uint64_t> repeated_opening_byte(const std::string& path) {
 std::optional<std::string> describe_restarted_mp3(const std::string& path) {
     const auto restart = restarted_mp3_stream(path);
     if (!restart) return std::nullopt;
+    if (restart->is_header_frame)
+        return "its MP3 frame at byte " + std::to_string(restart->byte) + " (" +
+               format_fixed(restart->seconds, 3) +
+               " s) holds an encoder's header (a Xing, Info or VBRI tag), which an encoder writes once, in a "
+               "recording's first frame" +
+               second_begins_there();
     return "its MP3 frame at byte " + std::to_string(restart->byte) + " (" +
            format_fixed(restart->seconds, 3) + " s) begins its data afresh, throwing away the " +
            std::to_string(restart->unused_bytes) +

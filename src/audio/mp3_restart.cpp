@@ -121,6 +121,9 @@ std::optional<Mp3Restart> restarted_mp3_stream(const std::string& path) {
         // An encoder's header frame (a Xing, Info or VBRI tag) holds no sound, nor a reservoir.
         const bool is_tag_frame =
             after_side == "Xing" || after_side == "Info" || bytes.substr(36, 4) == "VBRI";
+        if (is_tag_frame && frames_before > 0)
+            return Mp3Restart{at, static_cast<double>(frames_before * first->samples) / first->rate_hz, 0,
+                              true};
         if (!is_tag_frame) {
             const MainData data = read_main_data(bytes.substr(side_start, side_bytes), *header);
             if (candidate && (!next_begin_back || data.begin_back == *next_begin_back)) return candidate;

@@ -5,7 +5,10 @@
 // Layer III frame's main data may start in the bytes the frames before it left unused (its
 // main_data_begin counts them back), and an encoder fills them, as a stream's bytes are its budget;
 // only a stream's first frame starts its data afresh, with none. A frame that carries sound and
-// starts afresh where the frames before left bytes unused is a second encoder's first frame.
+// starts afresh where the frames before left bytes unused is a second encoder's first frame. So is
+// a frame holding an encoder's header (a Xing, Info or VBRI tag: LAME and FFmpeg write one, in a
+// stream's first frame) anywhere after the first frame: where the second recording opens in digital
+// silence its first frames are empty, and point nowhere in the reservoir (LAME as FFmpeg runs it).
 #ifndef TALKFACE_AUDIO_MP3_RESTART_HPP
 #define TALKFACE_AUDIO_MP3_RESTART_HPP
 
@@ -17,11 +20,13 @@
 namespace talkface::detail {
 
 // Where a second stream starts: the frame's first byte, its time (the frames before it, at the first
-// frame's rate), and how many reservoir bytes the frames before it left that it did not use.
+// frame's rate), and how many reservoir bytes the frames before it left that it did not use; or
+// that the frame holds an encoder's header (then no byte was left unused that tells).
 struct Mp3Restart {
     std::uint64_t byte = 0;
     double seconds = 0.0;
     std::size_t unused_bytes = 0;
+    bool is_header_frame = false;
 };
 
 // The first restart in the file at `path`, if it opens as an MP3 (an ID3 tag, or a Layer III frame):

@@ -189,6 +189,32 @@ TEST_SUITE("joined recordings") {
     }
 
     TEST_CASE(
+        "an MP3 joined to a second recording that opens in digital silence is named by its header frame") {
+        // LAME as FFmpeg runs it writes 0 in an empty frame's main_data_begin: the second recording's
+        // first frames (0.5 s of digital silence) point nowhere in the reservoir, and the text, which
+        // fits the first, aligned with no word of the join; the second's Info tag frame tells it.
+        const std::string options = "-c:a libmp3lame -b:a 64k -fflags +bitexact -flags:a +bitexact -f mp3";
+        const std::string one = ffmpeg_made("tagged_64k.mp3", options);
+        const std::string other =
+            ffmpeg_made("tagged_silence_backwards_64k.mp3", "-af areverse,adelay=500:all=1 " + options);
+        const std::string path = joined("tagged_joined_silence_backwards.mp3", one, other);
+        const Timeline aligned =
+            SpeechAligner().align_file(path, load_transcript(speech_clip("one_sentence.txt")));
+        CHECK(has_warning_with(aligned,
+                               "holds an encoder's header (a Xing, Info or VBRI tag), which an encoder "
+                               "writes once, in a recording's first frame: a second copy of the "
+                               "recording, or a second recording, begins there"));
+        const auto restart = detail::restarted_mp3_stream(path);
+        REQUIRE(restart);
+        CHECK(restart->is_header_frame);
+        // Past the second file's ID3 tag.
+        CHECK(restart->byte > file_bytes(one));
+        CHECK(restart->byte < file_bytes(one) + 100);
+        CHECK_FALSE(detail::restarted_mp3_stream(one));
+        CHECK_FALSE(detail::restarted_mp3_stream(other));
+    }
+
+    TEST_CASE(
         "two different FLAC recordings joined are named by the second's stream header where the text is "
         "refused") {
         const std::string one = ffmpeg_made("one_sentence.flac", "-fflags +bitexact -f flac");
