@@ -172,17 +172,15 @@ std::optional<std::uint64_t> repeated_opening_byte(const std::string& path) {
 std::optional<std::string> describe_restarted_mp3(const std::string& path) {
     const auto restart = restarted_mp3_stream(path);
     if (!restart) return std::nullopt;
-    if (restart->is_header_frame)
-        return "its MP3 frame at byte " + std::to_string(restart->byte) + " (" +
-               format_fixed(restart->seconds, 3) +
-               " s) holds an encoder's header (a Xing, Info or VBRI tag), which an encoder writes once, in a "
-               "recording's first frame" +
-               second_begins_there();
-    return "its MP3 frame at byte " + std::to_string(restart->byte) + " (" +
-           format_fixed(restart->seconds, 3) + " s) begins its data afresh, throwing away the " +
-           std::to_string(restart->unused_bytes) +
-           " bytes the frames before it left free for it, as only a recording's first frame does" +
-           second_begins_there();
+    const std::string frame = "its MP3 frame at byte " + std::to_string(restart->byte) + " (" +
+                              format_fixed(restart->seconds, 3) + " s) ";
+    const std::string why =
+        restart->is_header_frame
+            ? "holds an encoder's header (a Xing, Info or VBRI tag), which an encoder writes once, in a "
+              "recording's first frame"
+            : "begins its data afresh, throwing away the " + std::to_string(restart->unused_bytes) +
+                  " bytes the frames before it left free for it, as only a recording's first frame does";
+    return frame + why + second_begins_there();
 }
 
 std::optional<std::string> describe_joined_copy(const std::string& path) {

@@ -21,16 +21,15 @@ bool is_part_count(const WrittenNumber& number) {
     return !number.has_point && !number.has_separators && number.whole.size() <= kMostPartDigits;
 }
 
-// The parts of the whole text[i] names a part of, or an empty view.
-std::u32string_view whole_of_part_at(const std::vector<CodePoint>& text, std::size_t i) {
-    if (i >= text.size()) return {};
-    for (const auto parts : kWholes)
-        if (is_one_of(text[i].value, parts)) return parts;
-    return {};
-}
-
 bool is_part_at(const std::vector<CodePoint>& text, std::size_t i, std::u32string_view parts) {
     return i < text.size() && is_one_of(text[i].value, parts);
+}
+
+// The parts of the whole text[i] names a part of, or an empty view.
+std::u32string_view whole_of_part_at(const std::vector<CodePoint>& text, std::size_t i) {
+    for (const auto parts : kWholes)
+        if (is_part_at(text, i, parts)) return parts;
+    return {};
 }
 
 // Words for a home that a count of its rooms names (2房單位 兩房單位, 3室户型, 1房公寓): a part alone before
