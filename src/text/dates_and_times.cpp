@@ -273,10 +273,19 @@ bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNum
     if (after.size() >= 2 && is_one_of(value_at(text, number.end), U"QH") && is_digit_at(text, number.end + 1) &&
         !is_digit_at(text, number.end + 2))
         return true;
-    return starts_with_any(after, {"财年", "財年", "赛季", "賽季", "款", "届", "屆", "级", "級", "版", "春晚",
-                                   "世界杯", "奥运", "奧運", "冬奥", "冬奧", "亚运", "亞運", "全运", "全運",
-                                   // An exam's year (#2024高考#, 2025考研, 2026国考; session 17).
-                                   "高考", "中考", "考研", "国考", "國考", "学测", "學測"});
+    const auto names_year_from = [&](std::size_t at) {
+        return starts_with_any(text_between(text, at, at + 3),
+                               {"财年", "財年", "赛季", "賽季", "款", "届", "屆", "级", "級", "版", "春晚",
+                                "世界杯", "奥运", "奧運", "冬奥", "冬奧", "亚运", "亞運", "全运", "全運",
+                                // An exam's year (#2024高考#, 2025考研, 2026国考; session 17).
+                                "高考", "中考", "考研", "国考", "國考", "学测", "學測"});
+    };
+    if (names_year_from(number.end)) return true;
+    // A listing's or a league's new or season's one between the year and its word (2024新款, 2024秋冬新款,
+    // 2025新赛季, 2024新版; session 41: counted, 两千零二十四新款), as a shop titles this year's model.
+    auto word = number.end;
+    while (word < number.end + 3 && is_one_of(value_at(text, word), U"新春夏秋冬季")) ++word;
+    return word > number.end && names_year_from(word);
 }
 
 bool names_era_year(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {

@@ -54,7 +54,8 @@ bool names_a_day(const std::vector<CodePoint>& text, std::size_t start, const Wr
 bool counts_years(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
 
 // A year that names what follows it without 年 (2025财年, 2025赛季, 2026款, 2025届, 2024版, 2023级, 2026春晚,
-// 2030世界杯): digit by digit, as a year is (二零二五财年); a count elsewhere (2000人, 2000多). So are a
+// 2030世界杯), new or a season's between them allowed (2024新款, 2024秋冬款): digit by digit, as a year is
+// (二零二五财年); a count elsewhere (2000人, 2000多). So are a
 // release's or a quarter's two digits before its half or quarter (24H2 二四 H 二, 25Q1 二五 Q 一).
 bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNumber& number);
 

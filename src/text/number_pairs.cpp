@@ -128,8 +128,11 @@ bool fall_or_stay_level(const WrittenNumber& first, const WrittenNumber& second)
 bool is_result_between_names(const std::vector<CodePoint>& text, std::size_t start,
                              const WrittenNumber& first, const WrittenNumber& second) {
     if (start == 0 || !fall_or_stay_level(first, second)) return false;
-    const auto before = text[start - 1].value;
-    const auto after = value_at(text, second.end);
+    // A results list sets the score off from both names with a space (曼城 2-2 利物浦, as sports pages and
+    // feeds print it; it was 二到二): one on each side, or none.
+    const bool spaced = start >= 2 && text[start - 1].value == ' ' && value_at(text, second.end) == ' ';
+    const auto before = text[start - 1 - (spaced ? 1 : 0)].value;
+    const auto after = value_at(text, second.end + (spaced ? 1 : 0));
     return is_han(before) && before != U'第' && is_han(after) && !takes_liang(after) &&
            !is_one_of(after, U"年月日号號时時点點分秒度楼樓层層室栋棟届屆期");
 }

@@ -29,7 +29,8 @@ std::optional<SpokenForm> read_game_record(const std::vector<CodePoint>& text, s
 // A result between two teams' names (曼城2-1阿森纳, 上海海港3-3北京国安, 皇马3-0巴萨): a range is written
 // from its low end up, so two whole numbers that fall or stay level between two names are a score
 // (session 16; they were a range, 二到一). Not after 第, nor before a measure word or a word of a
-// date, a time, a floor or a degree (3-1日, 5-3楼).
+// date, a time, a floor or a degree (3-1日, 5-3楼). A space on each side of the score is the results
+// table's (曼城 2-2 利物浦; session 41).
 bool is_result_between_names(const std::vector<CodePoint>& text, std::size_t start,
                              const WrittenNumber& first, const WrittenNumber& second);
 

@@ -168,6 +168,15 @@ bool adds_to_quantity(const std::vector<CodePoint>& text, std::size_t start) {
 }  // namespace
 
 bool agrees_in_chat(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
+    // Those who answer +1, a +1 opening its clause before 的 (+1的請留言, +1的私我), as a group's organiser
+    // counts them (session 41: 正一). A value's +1 follows its word (电荷为+1的离子), and a lesson asks what
+    // a signed number's opposite or size is (+1的相反数, +1的绝对值).
+    constexpr std::string_view kOfSignedNumber[] = {"相反数", "相反數", "绝对值", "絕對值", "倒数",
+                                                    "倒數",   "平方",   "立方",   "值"};
+    if (value_at(text, end) == U'的' &&
+        (start == 0 || is_one_of(text[start - 1].value, U"，,。.！!？?～~…\n ")) &&
+        !starts_with_any(text_after(text, end + 1), kOfSignedNumber))
+        return true;
     if (start == 0 || !(end >= text.size() || is_one_of(value_at(text, end), U"，,。.！!？?～~…\n ")))
         return false;
     if (is_one_of(text[start - 1].value, U"我你他她俺咱们們")) return true;

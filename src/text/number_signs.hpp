@@ -17,7 +17,8 @@ namespace talkface::detail {
 
 // A chat's +1 that closes its clause after a person, in a clause a post's person opens (我+1, 楼上+1,
 // 楼上说得对+1) or after a word of agreement (收到+1, 同意+1): "me too", 加一, as a +1 standing alone is
-// (session 20: 正一). 温差+1 keeps its sign.
+// (session 20: 正一); and those who answer so, a +1 opening its clause before 的 (+1的請留言). 温差+1 and
+// 电荷为+1的离子 keep their sign.
 bool agrees_in_chat(const std::vector<CodePoint>& text, std::size_t start, std::size_t end);
 
 // A number's sign or currency before its digits at text[start] and where its digits start: the sign

@@ -2905,4 +2905,26 @@ TEST_SUITE("written forms") {
             {"身高152cm", "身高一百五十二厘米"},
         });
     }
+
+    TEST_CASE(
+        "a score set off by spaces between names, a listing's year before its new model and a +1 "
+        "before 的 are said") {
+        // Each row but the limits fails on main 5b4d5b7 (session 40's leftovers, dev42's held out): 二到二,
+        // 两千零二十四新款, 正一.
+        check_cases({
+            {"英超第15轮：曼城 2-2 利物浦", "英超第十五轮曼城二比二利物浦"},
+            {"阿森纳 1-0 切尔西。", "阿森纳一比零切尔西"},
+            {"【官方正品】2024新款羽绒服", "官方正品二零二四新款羽绒服"},
+            {"2024秋冬新款", "二零二四秋冬新款"},
+            {"2025新赛季", "二零二五新赛季"},
+            {"有人要團購嗎？+1的請留言", "有人要團購嗎加一的請留言"},
+            {"+1的私我", "加一的私我"},
+            // The limits: a rising pair is a range, spaced or not, a number before 多 counts, and a value's
+            // or a lesson's +1 keeps its sign.
+            {"气温 12-18 度", "气温十二到十八度"},
+            {"2000多款", "两千多款"},
+            {"电荷为+1的离子", "电荷为正一的离子"},
+            {"+1的相反数是-1", "正一的相反数是负一"},
+        });
+    }
 }
