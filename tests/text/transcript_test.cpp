@@ -203,6 +203,19 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("知识分子") == "zhi1 shi5 fen4 zi3");
     }
 
+    TEST_CASE("news' words for adding up, adjusting and recording a figure take the tone they mean") {
+        CHECK(pinyin("今年累计上涨") == "jin1 nian2 lei3 ji4 shang4 zhang3");
+        CHECK(pinyin("累積雨量") == "lei3 ji1 yu3 liang4");
+        CHECK(pinyin("经验的积累") == "jing1 yan4 de5 ji1 lei3");
+        CHECK(pinyin("央行调降利率") == "yang1 hang2 tiao2 jiang4 li4 lv4");
+        CHECK(pinyin("月薪調升至") == "yue4 xin1 tiao2 sheng1 zhi4");
+        CHECK(pinyin("天文台錄得") == "tian1 wen2 tai2 lu4 de2");
+        // The character alone keeps its common reading: tired, a tune, the light 得.
+        CHECK(pinyin("我很累") == "wo3 hen3 lei4");
+        CHECK(pinyin("升调") == "sheng1 diao4");
+        CHECK(pinyin("记得") == "ji4 de5");
+    }
+
     TEST_CASE(
         "particles are light, and a suffix is light after a word's first character, full at its start") {
         CHECK(pinyin("我们的") == "wo3 men5 de5");
