@@ -117,6 +117,8 @@ void align_final_chain(const SentenceChain& chain, std::size_t w, const FeatureT
         aligned.room_result.has_value()};
     measure_chain(measured, pass.scores, pass.workspace, aligned.result, pass.evidence, aligned.spans,
                   aligned.metrics);
+    if (const auto voiced_end = voiced_end_past_path(chain, track, aligned.result))
+        aligned.voiced_ends.push_back(*voiced_end);
     if (is_given_out) set_start_evidence(chain, path, pass.marginals, pass.evidence);
 }
 

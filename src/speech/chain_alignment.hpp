@@ -10,6 +10,7 @@
 #include "speech/alignment_progress.hpp"
 #include "speech/frame_features.hpp"
 #include "speech/sentence_cutter.hpp"
+#include "speech/syllable_placement.hpp"
 #include "talkface/timeline.hpp"
 
 namespace talkface::detail {
@@ -26,6 +27,11 @@ struct CutAlignment {
     // A final path gave a pause the text does not mark more than kMaxUnmarkedPauseFrames, in a
     // chain whose text marks pauses (keep_pauses_to_marks).
     bool has_long_unmarked_pause = false;
+    // Last syllables the voicing reads on past their path's end (voiced_end_past_path): the checks
+    // read `result`'s ends on the path, and align_cut gives these ends out after them. A typical
+    // sentence's rate and voiced peaks read with such an end 0.3 s on let a sentence stretched over
+    // a missing one pass (bench/README.md Session 41 (phoneend4)).
+    std::vector<VoicedEnd> voiced_ends;
 };
 
 // The syllables of every sentence of `cut`, aligned sentence by sentence (neighbours that run on,

@@ -104,6 +104,8 @@ AlignedTimelines align_cut(const FeatureTrack& track, const FeatureTrack& heard,
         check_fit(metrics, spans, transcript);
         check_missing_text(result, heard, loudness, result.warnings);
     }
+    for (const VoicedEnd& voiced : aligned.voiced_ends)
+        result.syllables[voiced.syllable].end_s = voiced.end_s;
     set_sentence_times(spans, result);
     AlignedTimelines timelines{std::move(result), std::nullopt, is_checked && is_vouched_by_order(metrics)};
     if (aligned.room_result) {

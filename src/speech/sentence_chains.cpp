@@ -69,6 +69,14 @@ constexpr std::size_t kQuietFrames = 3;
 // Session 38 (phoneend2): 休息's i 7-10 frames through every codec; a pink noise's swell 3 frames,
 // which 3 frames took for a voice, espeak-ng pink20 tuning-018's 了 then ending 235 ms late.)
 constexpr std::size_t kVoiceBackFrames = 6;
+// Where only the voicing tells (below), a voice also comes back in this many frames running that
+// cross zero less often than the pauses' frames do but one in ten: a short vowel surely voiced.
+// (bench/README.md Session 41 (phoneend4): p-opus6's 休息, its i after the x 4 frames voiced, under
+// the pauses' 10th percentile, 0.08-0.14 of the samples; p-fast-combo held-out-003's street noise
+// after 孩子 5 frames voiced, 2 under the 10th percentile: 4 voiced frames, or 4 under the 15th,
+// ran 孩子's end 180 ms late; 6 voiced frames bring p-loss's 休息 back.)
+constexpr std::size_t kVoicedBackFrames = 4;
+constexpr double kVoicedBackCrossingShare = 0.1;
 // What the silence at each edge of a recording cut to its sound may take: a phone's coder puts
 // the sound a few ms after the file's start and ramps into it over its first 20 ms frame (AMR-NB),
 // and its band limit smears the onset. One frame held the phone's first syllables to the ramp
@@ -152,15 +160,17 @@ struct PauseNoise {
     float reach_db;
     float rare_db;
     // Where reach_db cannot tell (infinite) and the voicing can: the zero-crossing share a voiced frame
-    // stays under (kVoicedCrossingShare) and the level it stands over (kVoicedOverLevelShare); 0 and
-    // +infinity where neither tells.
+    // stays under (kVoicedCrossingShare), one read back under (kVoicedBackCrossingShare), and the
+    // level both stand over (kVoicedOverLevelShare); 0 and +infinity where neither tells.
     float voiced_crossings = 0.0f;
+    float voiced_back_crossings = 0.0f;
     float voice_over_db = std::numeric_limits<float>::infinity();
 };
 
-bool reads_voiced(const FeatureTrack& track, std::size_t t, const PauseNoise& noise) {
-    return track.at(t, kEnergyDb) > noise.voice_over_db &&
-           track.at(t, kZeroCrossings) < noise.voiced_crossings;
+// Whether frame t stands over the noise's level for a voiced frame and crosses zero less often than
+// `crossings` of its samples.
+bool reads_voiced(const FeatureTrack& track, std::size_t t, const PauseNoise& noise, float crossings) {
+    return track.at(t, kEnergyDb) > noise.voice_over_db && track.at(t, kZeroCrossings) < crossings;
 }
 
 // The zero-crossing share of a voice's vowels: the median over its sentences' frames louder than
@@ -189,7 +199,7 @@ double voiced_run_share(const FeatureTrack& track, const LoudnessProfile& loudne
         std::size_t run = 0;
         const std::size_t end = std::min(pause.end_frame, track.frame_count);
         for (std::size_t t = pause.first_frame; t <= end; ++t) {
-            if (t < end && reads_voiced(track, t, noise)) {
+            if (t < end && reads_voiced(track, t, noise, noise.voiced_crossings)) {
                 ++run;
                 continue;
             }
@@ -214,7 +224,8 @@ PauseNoise pauses_noise(const FeatureTrack& track, const LoudnessProfile& loudne
     const PauseNoise by_level{reach_db, reach_db + kRareOverReach * noise_spread(levels)};
     if (std::isfinite(reach_db) || crossings.empty()) return by_level;
     PauseNoise by_voicing = by_level;
-    by_voicing.voiced_crossings = percentile_of(std::move(crossings), kVoicedCrossingShare);
+    by_voicing.voiced_crossings = percentile_of(crossings, kVoicedCrossingShare);
+    by_voicing.voiced_back_crossings = percentile_of(std::move(crossings), kVoicedBackCrossingShare);
     by_voicing.voice_over_db = percentile_of(std::move(levels), kVoicedOverLevelShare);
     const bool tells =
         by_voicing.voiced_crossings > kNoiseOverVowelCrossings * vowels_crossings(track, chains) &&
@@ -223,22 +234,33 @@ PauseNoise pauses_noise(const FeatureTrack& track, const LoudnessProfile& loudne
 }
 
 // Where a voice's quiet end from `mark` on has fallen into the noise: the first of kQuietFrames
-// frames running that read as the noise (`is_noise`), unless the voice comes back for
-// kVoiceBackFrames (`is_back`) and falls into the noise again before `end` (a neutral-tone vowel after
-// a fricative the band took away: 休息's i after its x, bench/README.md Session 38 (phoneend2)): it is
-// followed on to there. `mark` where it never falls before `end` (music or another voice on after
-// it: nothing tells where the voice stopped). A sound that comes back and runs on to `end` is the
-// next one's, not this voice's.
-template <typename IsNoise, typename IsBack>
-std::size_t end_in_noise(std::size_t mark, std::size_t end, IsNoise is_noise, IsBack is_back) {
+// frames running that read as the noise (`is_noise`), unless the voice comes back, kVoiceBackFrames
+// running `is_back` or kVoicedBackFrames running `is_surely_back`, and falls into the noise again
+// before `end` (a neutral-tone vowel after a fricative the band took away: 休息's i after its x,
+// bench/README.md Session 38 (phoneend2)): it is followed on to there. `mark` where it never falls
+// before `end` (music or another voice on after it: nothing tells where the voice stopped). A sound
+// that comes back and runs on to `end` is the next one's, not this voice's.
+template <typename IsNoise, typename IsBack, typename IsSurelyBack>
+std::size_t end_in_noise(std::size_t mark, std::size_t end, IsNoise is_noise, IsBack is_back,
+                         IsSurelyBack is_surely_back) {
     std::size_t fallen = mark;
     bool is_voice = true;
-    std::size_t run = 0;  // frames running that say the sound has changed from voice to noise or back
+    // Frames running that say the sound has changed from voice to noise or back (`run`), and surely
+    // back (`sure_run`).
+    std::size_t run = 0;
+    std::size_t sure_run = 0;
     for (std::size_t t = mark; t < end; ++t) {
-        run = (is_voice ? is_noise(t) : is_back(t)) ? run + 1 : 0;
-        if (run < (is_voice ? kQuietFrames : kVoiceBackFrames)) continue;
+        if (is_voice) {
+            run = is_noise(t) ? run + 1 : 0;
+            if (run < kQuietFrames) continue;
+        } else {
+            run = is_back(t) ? run + 1 : 0;
+            sure_run = is_surely_back(t) ? sure_run + 1 : 0;
+            if (run < kVoiceBackFrames && sure_run < kVoicedBackFrames) continue;
+        }
         is_voice = !is_voice;
         run = 0;
+        sure_run = 0;
         if (!is_voice) fallen = t + 1 - kQuietFrames;
     }
     return fallen;
@@ -247,16 +269,30 @@ std::size_t end_in_noise(std::size_t mark, std::size_t end, IsNoise is_noise, Is
 // Where the voice's quiet end from `mark` falls into the noise before `end` (end_in_noise): by the
 // level where the noise is steady (a frame at or under its reach is the noise's; one over the level
 // it passes one frame in a hundred is the voice's), else by the voicing where that tells (a frame
-// that reads voiced is the voice's, any other the noise's); 0 where neither tells.
+// that reads voiced is the voice's, any other the noise's; one under the stricter crossing bar
+// surely the voice's); 0 where neither tells.
 std::size_t quiet_end(const FeatureTrack& track, std::size_t mark, std::size_t end, const PauseNoise& noise) {
     if (std::isfinite(noise.reach_db))
         return end_in_noise(
             mark, end, [&](std::size_t t) { return track.at(t, kEnergyDb) <= noise.reach_db; },
-            [&](std::size_t t) { return track.at(t, kEnergyDb) > noise.rare_db; });
+            [&](std::size_t t) { return track.at(t, kEnergyDb) > noise.rare_db; },
+            [](std::size_t) { return false; });
     if (noise.voiced_crossings <= 0.0f) return 0;
-    auto is_voiced = [&](std::size_t t) { return reads_voiced(track, t, noise); };
+    auto is_voiced = [&](std::size_t t) { return reads_voiced(track, t, noise, noise.voiced_crossings); };
     return end_in_noise(
-        mark, end, [&](std::size_t t) { return !is_voiced(t); }, is_voiced);
+        mark, end, [&](std::size_t t) { return !is_voiced(t); }, is_voiced,
+        [&](std::size_t t) { return reads_voiced(track, t, noise, noise.voiced_back_crossings); });
+}
+
+// Whether the voicing reads a voice on up to `mark` (where only that tells): one of the kQuietFrames
+// frames before it (at or after `first`) reads voiced, so that the voice has not fallen into the
+// noise there. A span the cutter ran on into the noise holds none: there the voicing reads only
+// noise on past the mark (bench/README.md Session 41 (phoneend4), the short kinds' p-fast-combo).
+bool is_voiced_before(const FeatureTrack& track, std::size_t first, std::size_t mark,
+                      const PauseNoise& noise) {
+    for (std::size_t t = mark; t > first && t + kQuietFrames > mark; --t)
+        if (reads_voiced(track, t - 1, noise, noise.voiced_crossings)) return true;
+    return false;
 }
 
 // Where the walk back along the ringing's line drawn from `mark` cannot tell where the voice
@@ -360,10 +396,13 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
         const std::size_t voiced_end = speech.end_frame - chain.tail_frames;
         chain.searched.end_frame =
             std::min(upper, voiced_end < speech.end_frame ? voiced_end + kTailEdgeFrames : speech.end_frame + kEdgeFrames);
+        const bool by_voicing = !std::isfinite(noise.reach_db) && noise.voiced_crossings > 0.0f;
         chain.quiet_end =
-            voiced_end < speech.end_frame
+            voiced_end < speech.end_frame || by_voicing
                 ? quiet_end(track, voiced_end, std::min(upper, speech.end_frame + kEdgeFrames), noise)
                 : 0;
+        chain.voiced_past_end = by_voicing && chain.quiet_end > voiced_end &&
+                                is_voiced_before(track, speech.first_frame, voiced_end, noise);
         chain.searched_in_room = chain.searched;
         if (chain.ends_in_tail) {
             const std::size_t ringing_first =

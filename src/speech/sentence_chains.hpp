@@ -31,8 +31,13 @@ struct SentenceChain {
     // Where its voice has stopped, outside a room: where its quiet end past end_before_tail's mark
     // falls into the recording's noise, which the search may not reach; 0 in a room, where the noise
     // is too unsteady for its level to tell and its voicing does not tell either, or where the
-    // sentence has no quiet end.
+    // sentence has no quiet end. Where only the voicing tells (a coder's comfort noise), read from the
+    // voice's end whether end_before_tail moved it or not: where the cutter's span ends in a voiced tail.
     std::size_t quiet_end = 0;
+    // Only the voicing tells, and it reads the voice across end_before_tail's mark on to quiet_end:
+    // the last syllable runs on to it even where the path ends it before the mark (a tail in the
+    // comfort noise the path gave to the pause; voiced_end_past_path).
+    bool voiced_past_end = false;
     // Where the syllables given out in a room are searched (room_placement.hpp): `searched`, ending
     // a little past where the voice stopped before the ringing (end_before_ringing) where it ends in a
     // tail. The models learn on `searched`, whose tail teaches the pause what the room leaves.

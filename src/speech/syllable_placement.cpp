@@ -384,6 +384,15 @@ void place_syllables(const SentenceChain& chain, std::size_t chain_index, const 
         evidence[chain.syllable_indices[local]] = {true, chain_index, fits[local], timing[local], steadiness[local]};
 }
 
+std::optional<VoicedEnd> voiced_end_past_path(const SentenceChain& chain, const FeatureTrack& track,
+                                              const Timeline& result) {
+    if (!chain.voiced_past_end || chain.syllable_indices.empty()) return std::nullopt;
+    const std::size_t last = chain.syllable_indices.back();
+    const auto placed_end = static_cast<std::size_t>(std::lround(result.syllables[last].end_s / kFrameStepS));
+    if (placed_end >= chain.quiet_end) return std::nullopt;
+    return VoicedEnd{last, std::min(track.duration_s, frame_time_s(chain.quiet_end))};
+}
+
 std::vector<AlignedStretch> stretches_of(const SentenceChain& chain, const std::vector<StateSegment>& path) {
     std::vector<AlignedStretch> stretches;
     for (std::size_t p = 0; p < path.size(); ++p) {

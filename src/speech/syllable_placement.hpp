@@ -4,6 +4,7 @@
 #ifndef TALKFACE_SPEECH_SYLLABLE_PLACEMENT_HPP
 #define TALKFACE_SPEECH_SYLLABLE_PLACEMENT_HPP
 
+#include <optional>
 #include <vector>
 
 #include "speech/alignment_checks.hpp"
@@ -23,6 +24,18 @@ namespace talkface::detail {
 void place_syllables(const SentenceChain& chain, std::size_t chain_index, const std::vector<StateSegment>& path,
                      const std::vector<std::vector<SyllableFrames>>& other_frames, const EmissionScores& scores,
                      const FeatureTrack& track, Timeline& result, std::vector<SyllableEvidence>& evidence);
+
+// A chain's last syllable whose voice the voicing reads across end_before_tail's mark on to its
+// quiet end (chain.voiced_past_end), where the path ends it before the quiet end, so that
+// place_syllables ends it on the path: where the cutter's span ends inside the voiced tail of a
+// vowel in a coder's comfort noise, the path gives the tail to the pause (p-opus6's 著急, 爬山,
+// bench/README.md Session 40 (opusend)). Its transcript index and the quiet end's time.
+struct VoicedEnd {
+    std::size_t syllable = 0;
+    double end_s = 0.0;
+};
+std::optional<VoicedEnd> voiced_end_past_path(const SentenceChain& chain, const FeatureTrack& track,
+                                              const Timeline& result);
 
 // Where a voiced join starts (a syllable whose initial is m n l r or none, its first state
 // `first` right after the vowel or nasal `before` of the syllable before, no pause between). The

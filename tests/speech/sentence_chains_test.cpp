@@ -57,11 +57,12 @@ Recording recording_of(const std::vector<std::vector<float>>& ends) {
 }
 
 // Where place_syllables ends the last syllable of `chain` (frames of the track) on a path that holds
-// its first state until the sentence's speech starts, its last one for a frame at the search's
-// end, and every state between but the optional ones (pauses) in turn, the last to the end.
-std::size_t last_end_frame(const SentenceChain& chain, const FeatureTrack& track,
-                           const Timeline& transcript) {
-    const std::size_t length = chain.searched.length();
+// its first state until the sentence's speech starts, its last one (the pause after) for
+// `pause_frames` at the search's end, and every state between but the optional ones (pauses) in
+// turn, the last to the pause; `result` (the transcript's syllables) holds the placement.
+std::size_t last_end_frame(const SentenceChain& chain, const FeatureTrack& track, Timeline& result,
+                           std::size_t pause_frames = 1) {
+    const std::size_t length = chain.searched.length() + 1 - pause_frames;
     const std::size_t speech_first = chain.speech.first_frame - chain.searched.first_frame;
     std::vector<std::size_t> middle;
     for (std::size_t s = 1; s + 1 < chain.states.size(); ++s)
@@ -72,15 +73,20 @@ std::size_t last_end_frame(const SentenceChain& chain, const FeatureTrack& track
         const std::size_t first = speech_first + m * each;
         path.push_back({middle[m], first, m + 1 == middle.size() ? length - 1 : first + each});
     }
-    path.push_back({chain.states.size() - 1, length - 1, length});
+    path.push_back({chain.states.size() - 1, length - 1, chain.searched.length()});
     EmissionScores scores;
-    scores.frame_count = length;
-    scores.values.assign(length * kPhoneClassCount, -1.0f);
-    Timeline result = transcript;
-    std::vector<SyllableEvidence> evidence(transcript.syllables.size());
+    scores.frame_count = chain.searched.length();
+    scores.values.assign(scores.frame_count * kPhoneClassCount, -1.0f);
+    std::vector<SyllableEvidence> evidence(result.syllables.size());
     place_syllables(chain, 0, path, {}, scores, track, result, evidence);
     return static_cast<std::size_t>(
         std::lround(result.syllables[chain.syllable_indices.back()].end_s / kFrameStepS));
+}
+
+std::size_t last_end_frame(const SentenceChain& chain, const FeatureTrack& track,
+                           const Timeline& transcript) {
+    Timeline result = transcript;
+    return last_end_frame(chain, track, result);
 }
 
 // `recording` with a coder's comfort noise (Opus at 6 kbit/s) in place of its frames at -70 dB: swinging
@@ -108,6 +114,24 @@ LoudnessProfile pauses_at(const FeatureTrack& track, float noise_db) {
         first = t + 1;
     }
     return loudness;
+}
+
+// 休息's end through a telephone band: 5 frames of murmur 24 dB under the vowel, the x the band took
+// away (`dip_frames` at the noise, -70 dB), then the neutral-tone i, `back_frames` at `back_db`.
+std::vector<float> dipped_end(std::size_t dip_frames, std::size_t back_frames, float back_db) {
+    std::vector<float> end(5, -44.0f);
+    end.insert(end.end(), dip_frames, -70.0f);
+    end.insert(end.end(), back_frames, back_db);
+    return end;
+}
+
+// The chains of `transcript` on `cut`, their search spans set on `track` whose pauses are its frames
+// at or under `noise_db` (pauses_at).
+std::vector<SentenceChain> searched_chains(const Timeline& transcript, const SentenceCut& cut,
+                                           const FeatureTrack& track, float noise_db) {
+    std::vector<SentenceChain> chains = group_chains(transcript, cut, cut.spans);
+    set_search_spans(track, pauses_at(track, noise_db), chains);
+    return chains;
 }
 
 }  // namespace
@@ -246,10 +270,7 @@ TEST_SUITE("sentence chains") {
         // 休息 through a telephone band: the murmur 24 dB under the vowel, then the x the band took
         // away (12 frames at the noise, -70 dB), then the neutral-tone i 8 dB over the noise for 8
         // frames; the cutter's span ends in the dip.
-        std::vector<float> end(5, -44.0f);
-        end.insert(end.end(), 12, -70.0f);
-        end.insert(end.end(), 8, -62.0f);
-        Recording phone = recording_of({end, {}, {}});
+        Recording phone = recording_of({dipped_end(12, 8, -62.0f), {}, {}});
         phone.cut.spans[0].end_frame -= 15;
         const Timeline transcript = transcript_of(3);
         std::vector<SentenceChain> chains = group_chains(transcript, phone.cut, phone.cut.spans);
@@ -276,7 +297,9 @@ TEST_SUITE("sentence chains") {
         CHECK(chains[0].quiet_end == voice_end + 5);
     }
 
-    TEST_CASE("a quiet end in a noise too unsteady for a reach ends where its voicing stops") {
+    TEST_CASE(
+        "a quiet end in a noise too unsteady for a reach ends where its voicing stops, after the checks "
+        "where the path ends before it") {
         // A vowel's voiced tail through Opus at 6 kbit/s: 5 frames of murmur 24 dB under the vowel, then
         // 15 at -57 dB, inside the comfort noise's swing, which crosses zero on 0.2 of its samples; the
         // cutter's span ends 10 frames into the tail.
@@ -291,7 +314,18 @@ TEST_SUITE("sentence chains") {
         const std::size_t voice_end = chains[0].speech.first_frame + 40;
         REQUIRE(chains[0].speech.end_frame - chains[0].tail_frames == voice_end);
         CHECK(chains[0].quiet_end == voice_end + 20);
-        CHECK(last_end_frame(chains[0], opus, transcript) == voice_end + 20);
+        Timeline result = transcript;
+        CHECK(last_end_frame(chains[0], opus, result) == voice_end + 20);
+        CHECK_FALSE(voiced_end_past_path(chains[0], opus, result).has_value());
+
+        // Where the path ends the last syllable before end_before_tail's mark (it gave the tail to
+        // the pause), the checks read its end on the path, and the voice's is given out after them.
+        result = transcript;
+        CHECK(last_end_frame(chains[0], opus, result, 8) == voice_end - 3);
+        const auto voiced = voiced_end_past_path(chains[0], opus, result);
+        REQUIRE(voiced.has_value());
+        CHECK(voiced->syllable == chains[0].syllable_indices.back());
+        CHECK(std::lround(voiced->end_s / kFrameStepS) == static_cast<long>(voice_end + 20));
 
         // A noise that crosses zero as seldom as the vowels (music's notes) says nothing by its
         // voicing: the last syllable ends where the path ends it.
@@ -299,5 +333,54 @@ TEST_SUITE("sentence chains") {
         chains = group_chains(transcript, phone.cut, phone.cut.spans);
         set_search_spans(music, pauses_at(music, -60.0f), chains);
         CHECK(last_end_frame(chains[0], music, transcript) == voice_end + 4);
+        result = transcript;
+        CHECK(last_end_frame(chains[0], music, result, 8) == voice_end - 3);
+        CHECK_FALSE(voiced_end_past_path(chains[0], music, result).has_value());
+    }
+
+    TEST_CASE("a voice read back by its voicing in a comfort noise holds 4 frames") {
+        // 休息 through Opus at 6 kbit/s: the murmur 24 dB under the vowel, the x the band took away
+        // (10 frames that cross zero as the comfort noise does), then the i's voiced 4 frames at
+        // -57 dB; the cutter's span ends 2 frames into the x.
+        Recording phone = recording_of({dipped_end(10, 4, -57.0f), {}, {}});
+        phone.cut.spans[0].end_frame -= 12;
+        const FeatureTrack opus = with_comfort_noise(phone.track, 0.2f);
+        const Timeline transcript = transcript_of(3);
+        std::vector<SentenceChain> chains = searched_chains(transcript, phone.cut, opus, -60.0f);
+        const std::size_t voice_end = chains[0].speech.first_frame + 40;
+        REQUIRE(chains[0].speech.end_frame - chains[0].tail_frames == voice_end + 7);
+        CHECK(chains[0].quiet_end == voice_end + 19);
+
+        // 3 frames are as long as the noise's own voiced runs: the end stays where it fell, at the
+        // span's end.
+        FeatureTrack shorter = opus;
+        shorter.values[(voice_end + 15) * kFeatureCount + kEnergyDb] = -72.0f;
+        shorter.values[(voice_end + 15) * kFeatureCount + kZeroCrossings] = 0.2f;
+        chains = searched_chains(transcript, phone.cut, shorter, -60.0f);
+        CHECK(chains[0].quiet_end == voice_end + 7);
+    }
+
+    TEST_CASE("a span run on into a noise is no voiced tail, though the noise past it reads voiced") {
+        // A street's noise through an AGC and Opus: 10 frames at -30 dB after the vowel that cross
+        // zero on 0.2 of their samples, in the cutter's span, then 8 frames as loud that cross as
+        // seldom as a vowel, then the comfort noise.
+        Recording phone = recording_of({std::vector<float>(10, -30.0f), {}, {}});
+        FeatureTrack street = with_comfort_noise(phone.track, 0.2f);
+        const std::size_t voice_end = phone.cut.spans[0].first_frame + 40;
+        for (std::size_t t = voice_end; t < voice_end + 18; ++t) {
+            street.values[t * kFeatureCount + kEnergyDb] = -30.0f;
+            street.values[t * kFeatureCount + kZeroCrossings] = t < voice_end + 10 ? 0.2f : 0.08f;
+        }
+        const Timeline transcript = transcript_of(3);
+        const std::vector<SentenceChain> chains = searched_chains(transcript, phone.cut, street, -60.0f);
+        REQUIRE(chains[0].speech.end_frame - chains[0].tail_frames == voice_end + 10);
+        REQUIRE(chains[0].quiet_end == voice_end + 18);
+        // The voice fell into the noise before the mark: what the voicing reads past it is not the
+        // voice's, and a last syllable the path ends at the vowel keeps its end.
+        CHECK_FALSE(chains[0].voiced_past_end);
+        Timeline result = transcript;
+        const std::size_t pause_frames = chains[0].searched.end_frame - (voice_end + 5);
+        CHECK(last_end_frame(chains[0], street, result, pause_frames) == voice_end + 5);
+        CHECK_FALSE(voiced_end_past_path(chains[0], street, result).has_value());
     }
 }
