@@ -19,6 +19,7 @@
 #include <string_view>
 #include <utility>
 
+#include "audio/chained_stream.hpp"
 #include "audio/ffmpeg_source.hpp"
 #include "audio/pcm_damage.hpp"
 #include "common/input_file.hpp"
@@ -273,7 +274,10 @@ std::optional<OggDamage> find_damaged_ogg_page(const std::string& path) {
             const long serial = ogg_page_serialno(&page);
             const long number = ogg_page_pageno(&page);
             const auto next = next_page_of_stream.find(serial);
-            if (next != next_page_of_stream.end() && next->second != number) damaged = true;
+            // A stream's first page starts its count afresh: a second recording chained after the
+            // first (chained_stream.hpp) may have its serial number (FFmpeg's, with -bitexact: 0).
+            if (next != next_page_of_stream.end() && next->second != number && ogg_page_bos(&page) == 0)
+                damaged = true;
             next_page_of_stream[serial] = number + 1;
         }
     }
@@ -1011,6 +1015,12 @@ std::unique_ptr<AudioSource> open_opened_by_sndfile(const std::string& path,
             reading.overlong_ogg_page_byte = damage->overlong_page_byte;
             reading.damaged_ogg_page_byte = damage->first_damaged_byte;
             return open_ffmpeg_file(path, reading);
+        }
+        // libsndfile reads a chained file's first stream alone, and its length: the second recording
+        // was lost without a word. FFmpeg reads on through every stream.
+        if (ffmpeg_is_loadable() && chained_stream(path)) {
+            sf_close(file);
+            return open_ffmpeg_file(path);
         }
     }
     if (info.frames == SF_COUNT_MAX) {

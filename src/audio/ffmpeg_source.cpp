@@ -18,6 +18,7 @@ extern "C" {
 #include <string_view>
 #include <vector>
 
+#include "audio/chained_stream.hpp"
 #include "audio/ffmpeg_messages.hpp"
 #include "audio/mp3_toc.hpp"
 #include "audio/mp4_index.hpp"
@@ -829,6 +830,7 @@ private:
         next_packet_byte_ = landing.next_packet_byte;
         last_packet_frames_ = packet_frames(landing.last_packet_duration);
         last_packet_is_pause_ = false;
+        last_packet_is_mp3_tag_ = false;
         short_mp3_frame_.reset();
         // A variable-rate MP3's samples up to the last packet, as its table of contents counts them.
         mp3_frames_before_ += static_cast<double>(decoded - decoded_before);
@@ -1131,9 +1133,11 @@ private:
         const auto slack_s = [](double stated_s) {
             return std::max(kLengthSlackS, kLengthSlackShare * stated_s);
         };
-        // A WAV read past its stated size is said so by its opener (describe_stale_size).
+        // A WAV read past its stated size is said so by its opener (describe_stale_size); an Ogg or
+        // Matroska file's second recording, whose first's length was stated, by the join's warning
+        // (describe_second_stream).
         if (stated_seconds_ > 0.0 && !reading_.reads_past_stated_size &&
-            decoded_s > stated_seconds_ + slack_s(stated_seconds_))
+            decoded_s > stated_seconds_ + slack_s(stated_seconds_) && !chained_stream(path_))
             add_note("its header states " + seconds_text(stated_seconds_) + " of sound, the file holds " +
                      seconds_text(decoded_s) + "; read to the end of the file");
         const double file_s = format_->nb_streams == 1 && format_->duration != AV_NOPTS_VALUE &&
@@ -1285,6 +1289,7 @@ private:
             if (!first_packet_sent_) cut_unstated_delay(*packet_);
             first_packet_sent_ = true;
             follow_mp3_frame_size(*packet_);
+            last_packet_is_mp3_tag_ = is_mp3_tag_packet(*packet_);
             const std::size_t lost_frames = mp3_bytes_lost(*packet_);
             const int sent = avcodec_send_packet(codec_.get(), packet_.get());
             last_packet_frames_ = packet_frames(packet_->duration);
@@ -1351,9 +1356,11 @@ private:
     void refuse_packet(int error, std::size_t frames) {
         skipped_frames_ += frames;
         last_refusal_ = error;
-        // What this FFmpeg does not decode (AMR's comfort noise, "not yet implemented") and AMR's
-        // empty pause frames (which it calls invalid) are no damage: the file is whole.
-        if (error != AVERROR_PATCHWELCOME && !last_packet_is_pause_ && frames > 0) skipped_is_damage_ = true;
+        // What this FFmpeg does not decode (AMR's comfort noise, "not yet implemented"), AMR's
+        // empty pause frames (which it calls invalid) and a second MP3 recording's header frame are
+        // no damage: the file is whole.
+        if (error != AVERROR_PATCHWELCOME && !last_packet_is_pause_ && !last_packet_is_mp3_tag_ && frames > 0)
+            skipped_is_damage_ = true;
         if (frames > 0) skipped_is_pause_ = skipped_is_pause_ && last_packet_is_pause_;
     }
 
@@ -1366,6 +1373,21 @@ private:
         if (stream_->codecpar->codec_id == AV_CODEC_ID_AMR_NB) return type == 8 || type == 15;
         if (stream_->codecpar->codec_id == AV_CODEC_ID_AMR_WB) return type == 9 || type == 15;
         return false;
+    }
+
+    // An MP3 packet that is a recording's header frame (is_mp3_tag_frame), its ID3 tag before it
+    // (FFmpeg's parser joins the tag to the frame): the first recording's own is read as its header,
+    // and one later is a second recording's (`cat` of two files FFmpeg's LAME wrote), which the
+    // decoder refuses, having no sound in it. The join is named apart (describe_restarted_mp3); the
+    // frame was called damaged, "0.036 s of its sound could not be decoded", beside it.
+    bool is_mp3_tag_packet(const AVPacket& packet) const {
+        if (stream_->codecpar->codec_id != AV_CODEC_ID_MP3 || packet.data == nullptr || packet.size < 4)
+            return false;
+        std::string_view bytes(reinterpret_cast<const char*>(packet.data),
+                               static_cast<std::size_t>(packet.size));
+        bytes.remove_prefix(std::min(after_id3(bytes), bytes.size()));
+        const auto header = read_mp3_frame_header(bytes);
+        return header && is_mp3_tag_frame(bytes, *header);
     }
 
     // The time, in samples, of the bytes of an MP3 stream that no frame holds, up to and with
@@ -1397,6 +1419,13 @@ private:
         const auto packet_length = static_cast<double>(packet_frames(packet.duration));
         const double frame_bytes = packet_length / frames_per_byte;
         const double bytes_between = static_cast<double>(packet.pos - next_byte);
+        // A second recording's header frame (is_mp3_tag_packet) is bytes of no sound, at a bit rate of
+        // its own, its ID3 tag with it (FFmpeg's LAME: 45 bytes of tag and a frame of 180 where the
+        // sound's take 108, read as 39 ms lost).
+        if (last_packet_is_mp3_tag_) {
+            mp3_frames_before_ += packet_length;
+            return 0;
+        }
         if (mp3_packets_judged_ < kMp3PacketsToJudgeRate) {
             ++mp3_packets_judged_;
             mp3_rate_is_constant_ &= packet.pos == next_byte && std::fabs(packet.size - frame_bytes) <= 1.0;
@@ -1630,6 +1659,7 @@ private:
     std::size_t skipped_frames_ = 0;  // the time of refused packets not yet put in silence_ahead_
     bool skipped_is_damage_ = false;  // some of skipped_frames_ is lost to damage, not a codec's gap
     bool last_packet_is_pause_ = false;  // the last packet sent is an AMR pause frame
+    bool last_packet_is_mp3_tag_ = false;  // the last packet sent is an MP3 header frame (is_mp3_tag_packet)
     bool skipped_is_pause_ = true;       // every packet refused since the last frame is an AMR pause frame
     std::size_t frames_given_ = 0;    // frames read_frames() has returned
     std::size_t picture_lead_frames_ = 0;  // keep_picture_lead's silence before the sound

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "audio/chained_stream.hpp"
 #include "audio/mp3_restart.hpp"
 #include "audio/mp3_toc.hpp"
 #include "audio/repeated_sound.hpp"
@@ -169,7 +170,19 @@ std::optional<std::uint64_t> repeated_opening_byte(const std::string& path) {
                           });
 }
 
-std::optional<std::string> describe_restarted_mp3(const std::string& path) {
+std::optional<std::string> describe_second_stream(const std::string& path) {
+    if (const auto chained = chained_stream(path)) {
+        const std::string where = " starts at byte " + std::to_string(chained->byte);
+        if (chained->container == ChainedStream::Container::matroska)
+            return "a second Matroska file (its own EBML header and Segment, which open a recording)" +
+                   where + ", where the first's Segment ends" + second_begins_there();
+        const std::string first_end =
+            chained->first_seconds > 0.0
+                ? ", where the first ends (" + format_fixed(chained->first_seconds, 3) + " s)"
+                : std::string();
+        return "a second Ogg stream (its own header pages, which open a recording)" + where + first_end +
+               second_begins_there();
+    }
     const auto restart = restarted_mp3_stream(path);
     if (!restart) return std::nullopt;
     const std::string frame = "its MP3 frame at byte " + std::to_string(restart->byte) + " (" +
@@ -211,7 +224,7 @@ std::optional<std::string> describe_joined_copy(const std::string& path) {
                "begins at " +
                seconds(repeat->repeat_frame - repeat->original_frame) + kJoinedToFirst;
     }
-    return describe_restarted_mp3(path);
+    return describe_second_stream(path);
 }
 
 }  // namespace talkface::detail

@@ -33,16 +33,18 @@ std::optional<std::uint64_t> repeated_opening_byte(const std::string& path);
 // tag, or two recordings whose tags differ), or, where no bytes tell it, its decoded sound repeating itself
 // to its end (repeated_sound: an MP3 with neither tag, as sox writes it, joined to itself), or an MP3 frame
 // starting a second stream's bit reservoir afresh (restarted_mp3_stream: sox's MP3s of two recordings
-// joined). Asked only where the text's fit is not vouched for (speech_aligner.cpp): the search reads the
-// whole file (a 10 h FLAC is 1 GB), and a join read on as one recording shows as a text that does not fit it.
+// joined), or a second Ogg stream or Matroska Segment (chained_stream). Asked only where the text's fit
+// is not vouched for (speech_aligner.cpp): the search reads the whole file (a 10 h FLAC is 1 GB), and a
+// join read on as one recording shows as a text that does not fit it.
 std::optional<std::string> describe_joined_copy(const std::string& path);
 
 // What describe_joined_copy says of an MP3 whose frames start a second bit reservoir
-// (restarted_mp3_stream), or nullopt: the one join it tells by walking the frames' headers alone,
-// without decoding (a 1 h MP3's 57 MB read in well under a second), so asked of every MP3 that aligns
-// as well: a text that fits the first recording is stretched over the second one too, or aligned over
-// speech the transcript lacks (bench/README.md session 39).
-std::optional<std::string> describe_restarted_mp3(const std::string& path);
+// (restarted_mp3_stream), or of an Ogg or Matroska file whose second stream follows its first
+// (chained_stream), or nullopt: the joins it tells by walking the frames', pages' or Segment's headers
+// alone, without decoding (a 1 h MP3's 57 MB read in well under a second), so asked of every file that
+// aligns as well: a text that fits the first recording is stretched over the second one too, or
+// aligned over speech the transcript lacks (bench/README.md sessions 39 and 41).
+std::optional<std::string> describe_second_stream(const std::string& path);
 
 }  // namespace talkface::detail
 

@@ -117,10 +117,8 @@ std::optional<Mp3Restart> restarted_mp3_stream(const std::string& path) {
         const std::size_t side_bytes = mp3_side_info_bytes(*header);
         if (bytes.size() < side_start + side_bytes + 4 || header->bytes < side_start + side_bytes)
             return std::nullopt;
-        const std::string_view after_side = bytes.substr(side_start + side_bytes, 4);
         // An encoder's header frame (a Xing, Info or VBRI tag) holds no sound, nor a reservoir.
-        const bool is_tag_frame =
-            after_side == "Xing" || after_side == "Info" || bytes.substr(36, 4) == "VBRI";
+        const bool is_tag_frame = is_mp3_tag_frame(bytes, *header);
         if (is_tag_frame && frames_before > 0)
             return Mp3Restart{at, static_cast<double>(frames_before * first->samples) / first->rate_hz, 0,
                               true};

@@ -140,6 +140,13 @@ double Mp3Toc::sample_at(std::int64_t file_byte) const {
     return low.sample + within * (high.sample - low.sample);
 }
 
+bool is_mp3_tag_frame(std::string_view frame, const Mp3FrameHeader& header) {
+    constexpr std::size_t kVbriAt = 4 + 32;  // a VBRI tag follows the header 32 bytes on
+    const std::size_t tag_at = 4 + (header.has_crc ? 2 : 0) + mp3_side_info_bytes(header);
+    const std::string_view tag = frame.substr(std::min(tag_at, frame.size()), 4);
+    return tag == "Xing" || tag == "Info" || frame.substr(std::min(kVbriAt, frame.size()), 4) == "VBRI";
+}
+
 std::size_t after_id3(std::string_view file) {
     if (file.size() < 10 || file.substr(0, 3) != "ID3") return 0;
     std::size_t size = 0;

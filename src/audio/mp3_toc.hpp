@@ -35,6 +35,11 @@ std::optional<Mp3FrameHeader> read_mp3_frame_header(std::string_view bytes);
 // where its main data's first byte lies, what Xing, Info and LAME tags follow.
 std::size_t mp3_side_info_bytes(const Mp3FrameHeader& header);
 
+// Whether `frame` (a Layer III frame read from its header on, `header` its header) holds an encoder's
+// header, a Xing, Info or VBRI tag: LAME, FFmpeg and Fraunhofer's encoder write one in a recording's
+// first frame, in place of sound.
+bool is_mp3_tag_frame(std::string_view frame, const Mp3FrameHeader& header);
+
 struct Mp3Toc {
     // A byte of the file and the sample the table places there.
     struct Point {

@@ -1,10 +1,12 @@
 #include "speech/alignment_checks.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <limits>
 #include <numeric>
 #include <string>
+#include <string_view>
 
 #include "common/number_format.hpp"
 #include "common/order_statistics.hpp"
@@ -292,6 +294,30 @@ std::string describe_sentence(std::size_t sentence, const FrameSpan& span, const
     return "sentence " + std::to_string(sentence + 1) + " (" + format_fixed(static_cast<double>(span.first_frame) * kFrameStepS, 2) +
            "-" + format_fixed(static_cast<double>(span.end_frame) * kFrameStepS, 2) + " s, " +
            quote_start(transcript.sentences[sentence].text) + ")";
+}
+
+std::optional<NamedSentence> sentence_named_in(const std::string& message) {
+    const char* at = message.data();
+    const char* const end = message.data() + message.size();
+    const auto take_text = [&](std::string_view text) {
+        if (static_cast<std::size_t>(end - at) < text.size() || std::string_view(at, text.size()) != text)
+            return false;
+        at += text.size();
+        return true;
+    };
+    const auto take_number = [&](auto& value) {
+        const auto read = std::from_chars(at, end, value);
+        at = read.ptr;
+        return read.ec == std::errc();
+    };
+    std::size_t number = 0;
+    NamedSentence named;
+    if (!take_text("sentence ") || !take_number(number) || !take_text(" (") || !take_number(named.start_s) ||
+        !take_text("-") || !take_number(named.end_s) || !take_text(" s, ") || number == 0 ||
+        !(named.end_s > named.start_s))
+        return std::nullopt;
+    named.sentence = number - 1;
+    return named;
 }
 
 void check_sentence_lengths(const std::vector<FrameSpan>& spans, const FeatureTrack& track, const LoudnessProfile& loudness,

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,15 @@ std::string quote_start(const std::string& text);
 // How messages name a sentence: its number, its time span and quote_start of its text, e.g.
 // `sentence 3 (12.40-15.20 s, "今天天氣很好，我們去公園散步吧。我們…")`.
 std::string describe_sentence(std::size_t sentence, const FrameSpan& span, const Timeline& transcript);
+
+// The sentence a refusal's `message` opens with, as describe_sentence names it: its index and its span
+// in seconds (of the reading the checks judged); nullopt for a message that opens otherwise.
+struct NamedSentence {
+    std::size_t sentence = 0;
+    double start_s = 0.0;
+    double end_s = 0.0;
+};
+std::optional<NamedSentence> sentence_named_in(const std::string& message);
 
 // "1 syllable", "3 syllables": how messages count a sentence's syllables (a line of dialogue may have one).
 std::string syllable_count(std::size_t count);

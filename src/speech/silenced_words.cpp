@@ -9,6 +9,7 @@
 
 #include "common/number_format.hpp"
 #include "common/order_statistics.hpp"
+#include "speech/alignment_checks.hpp"
 
 namespace talkface::detail {
 
@@ -125,7 +126,52 @@ std::string describe(const SilenceRun& run, std::size_t sentence, const Judged& 
            "out of the transcript, or the silence out of the recording";
 }
 
+// Whether `run` (times of the track) may hold a word of the sentence `named` silenced: it lasts
+// kLeastSyllablesSilenced syllables or more, and lies kSyllablesFromPauseMark or more from every
+// pause the text marks, the sentence's span shared evenly among its syllables.
+bool may_hold_silenced_word(const Timeline& transcript, const NamedSentence& named, const SilenceRun& run) {
+    std::vector<double> marks;  // in syllables from the sentence's start
+    std::size_t count = 0;
+    for (const Syllable& syllable : transcript.syllables) {
+        if (syllable.sentence != named.sentence) continue;
+        ++count;
+        if (syllable.pause_after) marks.push_back(static_cast<double>(count));
+    }
+    if (count == 0) return false;
+    const double per_syllable_s = (named.end_s - named.start_s) / static_cast<double>(count);
+    const double first = (run.start_s - named.start_s) / per_syllable_s;
+    const double last = (run.end_s - named.start_s) / per_syllable_s;
+    return last - first >= kLeastSyllablesSilenced &&
+           std::none_of(marks.begin(), marks.end(), [&](double mark) {
+               return mark >= first - kSyllablesFromPauseMark && mark <= last + kSyllablesFromPauseMark;
+           });
+}
+
 }  // namespace
+
+std::optional<std::string> describe_zeros_in_refused_sentence(const FeatureTrack& track, double track_start_s,
+                                                              const Timeline& transcript,
+                                                              const std::string& refusal,
+                                                              const std::vector<LostAudio>& lost,
+                                                              const std::vector<CutToZeros>& cuts) {
+    const std::optional<NamedSentence> named = sentence_named_in(refusal);
+    if (!named || named->sentence >= transcript.sentences.size()) return std::nullopt;
+    for (const SilenceRun& run : silence_runs(track, track_start_s)) {
+        if (meets(lost, run) || meets(cuts, run)) continue;
+        const SilenceRun on_track{run.start_s - track_start_s, run.end_s - track_start_s};
+        if (on_track.start_s < named->start_s + kStartsWithRunS ||
+            on_track.end_s > named->end_s - kStartsWithRunS ||
+            !may_hold_silenced_word(transcript, *named, on_track))
+            continue;
+        return "the recording: " + format_fixed(on_track.start_s, 2) + "-" + format_fixed(on_track.end_s, 2) +
+               " s, inside sentence " + std::to_string(named->sentence + 1) +
+               ", is digital silence (exact zeros) where its text marks no pause, as an editor leaves a word "
+               "it "
+               "silenced: is a word of the text silenced there, its text kept? Take the word out of the "
+               "transcript, or the silence out of the recording";
+    }
+    return std::nullopt;
+}
 
 std::vector<std::string> describe_silenced_words(const FeatureTrack& track, double track_start_s,
                                                  const Timeline& aligned, const std::vector<LostAudio>& lost,

@@ -10,6 +10,7 @@
 #ifndef TALKFACE_SPEECH_SILENCED_WORDS_HPP
 #define TALKFACE_SPEECH_SILENCED_WORDS_HPP
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,28 @@ constexpr double kEdgeSqueezedShare = 0.4;
 std::vector<std::string> describe_silenced_words(const FeatureTrack& track, double track_start_s,
                                                  const Timeline& aligned, const std::vector<LostAudio>& lost,
                                                  const std::vector<CutToZeros>& cuts);
+
+// A run of digital silence inside a refused sentence, in syllables (its span shared evenly among
+// them): this near a pause its text marks, it may be that pause recorded as exact zeros (h-clean's
+// commas); one an editor put over a word lasts this many or more. The runs inside the sentences of
+// h-clean and r-clean refused for a wrong text (another passage's sentence in place of the 2nd or
+// the 4th) last 0.6-1.5 of them in the tuning passages, once 4.3 (a wrong text's span over a
+// sentence's gap), and four syllables silenced 2.8-5.1 (bench/README.md session 41).
+constexpr double kSyllablesFromPauseMark = 1.5;
+constexpr double kLeastSyllablesSilenced = 2.5;
+
+// What the refusal of a sentence (`refusal`, opening as describe_sentence names it, its times those
+// of `track`) adds where a run of digital silence of kShortestSilencedS or more lies inside the span
+// it names, kLeastSyllablesSilenced long, away from the pauses its text marks: a word an editor silenced
+// while the text keeps it leaves syllables with no sound, and a sentence with four such was mostly refused
+// ("does not sound like its text", 10 of 15 in bench/README.md session 40) with no word of the zeros. nullopt
+// where no such run lies there. Runs meeting `lost` or `cuts` (times of the recording, whose `track_start_s`
+// is the track's frame 0) are named by their own messages.
+std::optional<std::string> describe_zeros_in_refused_sentence(const FeatureTrack& track, double track_start_s,
+                                                              const Timeline& transcript,
+                                                              const std::string& refusal,
+                                                              const std::vector<LostAudio>& lost,
+                                                              const std::vector<CutToZeros>& cuts);
 
 }  // namespace talkface::detail
 

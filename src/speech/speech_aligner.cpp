@@ -348,6 +348,10 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
         }
     } catch (const AlignmentError& error) {
         if (const auto joined = joined_copy()) notes.insert(0, " (the file: " + *joined + ")");
+        if (const auto zeros =
+                describe_zeros_in_refused_sentence(track, silence_skipped_s, transcript, error.what(),
+                                                   source->lost_audio(), source->cuts_to_zeros()))
+            notes += " (" + *zeros + ")";
         if (silence_skipped > 0)
             notes += " (its times count from " + format_fixed(silence_skipped_s, 3) +
                      " s: the digital silence before the recording's first sound was left out)";
@@ -358,9 +362,10 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
         result.warnings.push_back(source->name() + ": the file is damaged: " + lost +
                                   "; read as silence there, the syllables after it keep their times");
     // A text vouched for by the checks may still have been stretched over a second recording joined
-    // to its own: the join told from the frames' headers alone is asked of every file.
+    // to its own: the join told from the headers alone (an MP3's frames', an Ogg file's pages', a Matroska
+    // file's Segment's) is asked of every file.
     const auto joined =
-        is_voted ? (file_path.empty() ? std::nullopt : describe_restarted_mp3(file_path)) : joined_copy();
+        is_voted ? (file_path.empty() ? std::nullopt : describe_second_stream(file_path)) : joined_copy();
     if (joined) result.warnings.push_back(source->name() + ": " + *joined);
     for (const std::string& note : source->notes()) result.warnings.push_back(source->name() + ": " + note);
     for (const std::string& silenced : describe_silenced_words(track, silence_skipped_s, result,

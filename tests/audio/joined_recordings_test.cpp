@@ -7,9 +7,11 @@
 
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "audio/audio_source.hpp"
+#include "audio/chained_stream.hpp"
 #include "audio/mp3_restart.hpp"
 #include "audio/repeated_sound.hpp"
 #include "common/made_by_command.hpp"
@@ -49,6 +51,25 @@ std::string refusal_of_one_sentence(const std::string& path) {
         return error.what();
     }
     return {};
+}
+
+// one_sentence.wav and it played backwards, each encoded as Opus by ffmpeg in `format` (ogg, webm),
+// joined: the first's path, and the joined file's warnings aligned with one_sentence.txt.
+std::pair<std::string, std::vector<std::string>> opus_joined_to_backwards(const std::string& format) {
+    const std::string options = "-c:a libopus -b:a 24k -fflags +bitexact -flags:a +bitexact -f " + format;
+    const std::string one = ffmpeg_made("one_sentence_opus." + format, options);
+    const std::string backwards = ffmpeg_made("backwards_opus." + format, "-af areverse " + options);
+    const std::string path = joined("opus_joined_backwards." + format, one, backwards);
+    return {one, SpeechAligner().align_file(path, load_transcript(speech_clip("one_sentence.txt"))).warnings};
+}
+
+// The frames the file at `path` reads as, to its end.
+std::size_t frames_in(const std::string& path) {
+    const auto source = detail::open_audio_file(path);
+    std::vector<float> block(4096);
+    std::size_t frames = 0;
+    while (const std::size_t got = source->read(block.data(), block.size())) frames += got;
+    return frames;
 }
 
 bool has_warning_with(const Timeline& timeline, const std::string& part) {
@@ -204,6 +225,10 @@ TEST_SUITE("joined recordings") {
                                "holds an encoder's header (a Xing, Info or VBRI tag), which an encoder "
                                "writes once, in a recording's first frame: a second copy of the "
                                "recording, or a second recording, begins there"));
+        // FFmpeg's decoder refuses the second recording's Info tag frame (its ID3 tag joined to it by
+        // the parser), which holds no sound: "the file is damaged: 0.036 s of its sound could not be
+        // decoded" stood beside the join's warning, at the same place.
+        CHECK_MESSAGE(aligned.warnings.size() == 1, aligned.warnings.front());
         const auto restart = detail::restarted_mp3_stream(path);
         REQUIRE(restart);
         CHECK(restart->is_header_frame);
@@ -214,22 +239,48 @@ TEST_SUITE("joined recordings") {
         CHECK_FALSE(detail::restarted_mp3_stream(other));
     }
 
-    TEST_CASE(
-        "two different FLAC recordings joined are named by the second's stream header where the text is "
-        "refused") {
-        const std::string one = ffmpeg_made("one_sentence.flac", "-fflags +bitexact -f flac");
-        const std::string other =
-            test::made_by_command("joined_second_two_sentences.flac",
-                                  "ffmpeg -nostdin -loglevel error -y -i '" +
-                                      speech_clip("two_sentences.wav") + "' -fflags +bitexact -f flac");
-        const std::string refusal = refusal_of_one_sentence(joined("flac_joined_another.flac", one, other));
+    TEST_CASE("a chained Ogg file's second stream is read, and the join named") {
+        // libsndfile read a chained Vorbis file's first stream alone: the second recording was lost
+        // without a word. The second's serial number differs, as any two encodings' do.
+        const std::string options = "-c:a libvorbis -q:a 2 -fflags +bitexact -flags:a +bitexact -f ogg";
+        const std::string one = ffmpeg_made("one_sentence_vorbis.ogg", options);
+        const std::string backwards =
+            ffmpeg_made("backwards_vorbis.ogg", "-af areverse " + options + " -serial_offset 7");
+        const std::string path = joined("vorbis_chained_backwards.ogg", one, backwards);
+        CHECK(frames_in(path) > frames_in(one) * 19 / 10);
+        // Read on through the second recording, the text is refused: the join is said.
+        const std::string refusal = refusal_of_one_sentence(path);
         CHECK_MESSAGE(
-            refusal.find("(the file: a second FLAC stream header (\"fLaC\" and its STREAMINFO block, which "
-                         "open a recording) starts at byte " +
-                         std::to_string(file_bytes(one)) +
-                         ": a second copy of the recording, or a second "
-                         "recording, begins there") != std::string::npos,
+            refusal.find("(the file: a second Ogg stream (its own header pages, which open a recording) "
+                         "starts at byte " +
+                         std::to_string(file_bytes(one)) + ", where the first ends (3.") != std::string::npos,
             refusal);
+        CHECK_FALSE(detail::chained_stream(one));
+    }
+
+    TEST_CASE(
+        "an Opus file chained to another of its serial number is no damage, and its join is said once") {
+        // FFmpeg's -bitexact writes serial number 0 in both: the second stream's pages, numbered from 0
+        // again, were taken for a damaged file's, and "its header states 3.1 s of sound, the file holds
+        // 6.2 s" was all the join's word.
+        const auto [one, warnings] = opus_joined_to_backwards("ogg");
+        REQUIRE(warnings.size() == 1);
+        CHECK_MESSAGE(warnings[0].find("a second Ogg stream (its own header pages, which open a recording) "
+                                       "starts at byte " +
+                                       std::to_string(file_bytes(one))) != std::string::npos,
+                      warnings[0]);
+    }
+
+    TEST_CASE("a WebM file joined to another is named by its second Segment where the text fits the first") {
+        const auto [one, warnings] = opus_joined_to_backwards("webm");
+        REQUIRE(warnings.size() == 1);
+        CHECK_MESSAGE(
+            warnings[0].find("a second Matroska file (its own EBML header and Segment, which open a "
+                             "recording) starts at byte " +
+                             std::to_string(file_bytes(one)) + ", where the first's Segment ends") !=
+                std::string::npos,
+            warnings[0]);
+        CHECK_FALSE(detail::chained_stream(one));
     }
 
     TEST_CASE("an AVI's OpenDML extension (a RIFF AVIX after the first RIFF) is no second WAV") {

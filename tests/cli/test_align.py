@@ -357,6 +357,26 @@ def test_a_word_silenced_at_a_sentences_end_is_named(tmp_path):
     assert 'is a word of "去吧" silenced there by an editor, its text kept?' in silenced[0], silenced
 
 
+def test_a_refusal_names_a_words_digital_silence_inside_its_sentence(tmp_path):
+    # 們在公園裡 of one_sentence.wav put to exact zeros over their true spans (the text kept): the
+    # text is refused as not the speech, and the refusal said nothing of the silence.
+    audio, transcript = clip("one_sentence")
+    syllables = truth("one_sentence")["syllables"]
+    with wave.open(str(audio), "rb") as source:
+        params = source.getparams()
+        frames = bytearray(source.readframes(params.nframes))
+    width = params.sampwidth * params.nchannels
+    first, end = int(syllables[3]["start"] * params.framerate), int(syllables[7]["end"] * params.framerate)
+    frames[first * width : end * width] = bytes((end - first) * width)
+    edited = tmp_path / "silenced.wav"
+    with wave.open(str(edited), "wb") as out:
+        out.setparams(params)
+        out.writeframes(bytes(frames))
+    result = run("align", edited, transcript, "--quiet")
+    assert result.returncode == 1, result.stderr
+    assert "(the recording: 0.96-1.94 s, inside sentence 1, is digital silence (exact zeros) where its text marks no pause" in result.stderr
+
+
 def test_a_stale_wav_header_is_read_whole_and_said(tmp_path):
     # A recorder that stopped without bringing its header up to date: the data size states half.
     audio = damaged_copies.stale_wav_copy(CLIPS_DIR / "one_sentence.wav", tmp_path / "stale.wav")

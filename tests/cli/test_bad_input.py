@@ -4,6 +4,7 @@ error naming the file and the reason, or a result; never a crash, an internal er
 import json
 import os
 import pathlib
+import shutil
 import subprocess
 import sys
 
@@ -245,6 +246,41 @@ def test_long_silence_refused_early_in_bounded_memory(tmp_path):
     assert returncode == 1, stderr
     assert "talkface: error: " + path + ": silent: the loudest sample of its 36000 s is all zero" in stderr
     assert peak_kb < 200 * 1024, peak_kb
+
+
+def test_a_second_mp3s_tag_and_header_frame_are_the_join_not_damage(tmp_path):
+    """An MP3 of FFmpeg's LAME joined to itself: the second copy's ID3 tag and Info tag frame were also
+    called "the file is damaged: 0.075 s of its sound could not be decoded", beside the join's warning."""
+    mp3 = (pathlib.Path(bad_inputs.AUDIO) / "ffmpeg_16000.mp3").read_bytes()
+    path = tmp_path / "joined_tagged.mp3"
+    path.write_bytes(mp3 + mp3)
+    result = command("align", "-q", "--json", "--check", "warn", str(path), TRANSCRIPT)
+    assert result.returncode == 0, result.stderr
+    warnings = json.loads(result.stdout)["warnings"]
+    assert any("recur at byte %d: a second copy of the recording" % len(mp3) in w for w in warnings), warnings
+    assert not any("could not be decoded" in w for w in warnings), warnings
+
+
+@pytest.mark.skipif(shutil.which("ffmpeg") is None, reason="ffmpeg is not installed")
+def test_a_chained_ogg_files_second_stream_is_read_and_named(tmp_path):
+    """`cat a.ogg b.ogg` of two Vorbis recordings: libsndfile read the first stream alone, and the
+    second recording (here one_sentence.wav played backwards) was lost without a word."""
+    streams = []
+    for name, effect, serial in (("one.ogg", "anull", "0"), ("backwards.ogg", "areverse", "7")):
+        streams.append(tmp_path / name)
+        subprocess.run(["ffmpeg", "-nostdin", "-loglevel", "error", "-i", VOICE, "-af", effect, "-c:a", "libvorbis",
+                        "-fflags", "+bitexact", "-flags:a", "+bitexact", "-serial_offset", serial, streams[-1]],
+                       check=True)
+    path = tmp_path / "chained.ogg"
+    path.write_bytes(streams[0].read_bytes() + streams[1].read_bytes())
+    result = command("align", "-q", "--json", "--check", "warn", str(path), TRANSCRIPT)
+    assert result.returncode == 0, result.stderr
+    timeline = json.loads(result.stdout)
+    assert timeline["duration"] > 6.0, timeline["duration"]
+    joins = [w for w in timeline["warnings"] if w.startswith(str(path) + ": ")]
+    assert len(joins) == 1, timeline["warnings"]
+    assert "a second Ogg stream (its own header pages, which open a recording) starts at byte %d" % (
+        streams[0].stat().st_size) in joins[0]
 
 
 # Main's peak on the three hours: 340 MB; the last minute's and the speech's: 20 MB, 104 MB under

@@ -10,6 +10,7 @@
 
 #include "common/clip_audio.hpp"
 #include "common/test_paths.hpp"
+#include "talkface/errors.hpp"
 #include "talkface/speech_aligner.hpp"
 #include "talkface/transcript.hpp"
 
@@ -54,6 +55,25 @@ TEST_SUITE("speech") {
         CHECK(warning.find("squeezed against it (\"們\"") != std::string::npos);
         CHECK(warning.find("is a word of \"們在公園\" silenced there by an editor, its text kept?") !=
               std::string::npos);
+    }
+
+    TEST_CASE("a sentence refused with a word of five syllables silenced inside it names the zeros") {
+        // 們在公園裡 of 小朋友們在公園裡放風箏, 0.952-1.953 s by the generator's truth, put to exact
+        // zeros: the text is refused as not the speech, and said nothing of the silence.
+        test::ClipSamples edited = test::clip_samples("one_sentence.wav");
+        std::fill(edited.values.begin() + static_cast<std::ptrdiff_t>(0.952 * edited.rate_hz),
+                  edited.values.begin() + static_cast<std::ptrdiff_t>(1.953 * edited.rate_hz), 0.0f);
+        std::string refusal;
+        try {
+            SpeechAligner().align(AudioView{edited.values.data(), edited.values.size(), 1, edited.rate_hz},
+                                  load_transcript(test::clip_path("one_sentence.txt")));
+        } catch (const AlignmentError& error) {
+            refusal = error.what();
+        }
+        CHECK_MESSAGE(
+            refusal.find("(the recording: 0.96-1.94 s, inside sentence 1, is digital silence (exact "
+                         "zeros) where its text marks no pause") != std::string::npos,
+            refusal);
     }
 
     TEST_CASE("a block of zeros cut mid-wave into a WAV is named once, by the note on the cut") {
