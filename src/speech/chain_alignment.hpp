@@ -20,7 +20,8 @@ struct CutAlignment {
     Timeline result;
     // In a room (room_closures.hpp), the syllables placed again with the closures ringing, on the
     // features without the room's ringing (late_reverb.hpp): given out in the end, while every
-    // check reads `result`, the silent closures' placement on the recorded features.
+    // check reads `result`, the silent closures' placement on the recorded features (and
+    // check_missing_text this one as well, placed_missing_text.hpp).
     std::optional<Timeline> room_result;
     std::vector<FrameSpan> spans;
     std::vector<SentenceMetrics> metrics;

@@ -6,6 +6,8 @@
 
 #include "speech/alignment_checks.hpp"
 #include "speech/chain_alignment.hpp"
+#include "speech/placed_missing_text.hpp"
+#include "speech/room_placement.hpp"
 #include "speech/run_together.hpp"
 #include "speech/tone_witness.hpp"
 #include "talkface/errors.hpp"
@@ -60,11 +62,13 @@ AlignedTimelines align_cut(const FeatureTrack& track, const FeatureTrack& heard,
     CutAlignment aligned =
         align_chains(track, loudness, transcript, cut, progress, is_checked, is_lenient, false, false);
     bool is_kept_to_marks = false;
+    std::optional<CutAlignment> unkept;
     if (aligned.has_long_unmarked_pause) {
         try {
             CutAlignment kept =
                 align_chains(track, loudness, transcript, cut, progress, is_checked, is_lenient, true, false);
             if (total_fit_gap(kept) < total_fit_gap(aligned)) {
+                unkept = std::move(aligned);
                 aligned = std::move(kept);
                 is_kept_to_marks = true;
             }
@@ -102,22 +106,14 @@ AlignedTimelines align_cut(const FeatureTrack& track, const FeatureTrack& heard,
         check_own_fit(metrics, spans, transcript);
         check_syllable_lengths(metrics, spans, transcript);
         check_fit(metrics, spans, transcript);
-        check_missing_text(result, heard, loudness, result.warnings);
+        check_missing_text_as_placed(aligned, unkept ? &*unkept : nullptr, heard, loudness, result.warnings);
     }
     for (const VoicedEnd& voiced : aligned.voiced_ends)
         result.syllables[voiced.syllable].end_s = voiced.end_s;
     set_sentence_times(spans, result);
     AlignedTimelines timelines{std::move(result), std::nullopt, is_checked && is_vouched_by_order(metrics)};
     if (aligned.room_result) {
-        Timeline in_room = timelines.checked;
-        for (std::size_t i = 0; i < in_room.syllables.size(); ++i) {
-            const Syllable& placed = aligned.room_result->syllables[i];
-            Syllable& syllable = in_room.syllables[i];
-            syllable.start_s = placed.start_s;
-            syllable.final_start_s = placed.final_start_s;
-            syllable.end_s = placed.end_s;
-            syllable.confidence = placed.confidence;
-        }
+        Timeline in_room = with_room_placement(timelines.checked, *aligned.room_result);
         set_sentence_times(spans, in_room);
         timelines.in_room = std::move(in_room);
     }

@@ -34,7 +34,9 @@ struct AlignedTimelines {
 // passage, each placement scoring nearly alike, and re-estimation keeping the first pass's). Where
 // an alignment gives a pause the text does not mark more than kMaxUnmarkedPauseFrames, it is made
 // again with such pauses kept short, and whichever fits the audio better is kept (their sentences'
-// text fit gaps): a speaker who did stop where the text marks nothing keeps that pause.
+// text fit gaps): a speaker who did stop where the text marks nothing keeps that pause. Where the
+// kept one wins in a room, check_missing_text reads the first one's placements too
+// (placed_missing_text.hpp).
 //
 // A third pass lets a stop after a nasal release from the nasal's closure: a sentence whose text
 // fits so poorly that check_text_fit would refuse it may be a right one whose path slipped a

@@ -1,5 +1,7 @@
 #include "speech/room_placement.hpp"
 
+#include <cstddef>
+
 #include "speech/room_closures.hpp"
 #include "speech/syllable_placement.hpp"
 
@@ -38,6 +40,18 @@ void place_in_room(const SentenceChain& plain_chain, std::size_t w, DryRoom* dry
     place_syllables(ringing, w, room_path, room_other_frames, room_scores, placed_track, room_result,
                     room_evidence);
     set_start_evidence(ringing, room_path, room_marginals, room_evidence);
+}
+
+Timeline with_room_placement(Timeline checked, const Timeline& room) {
+    for (std::size_t i = 0; i < checked.syllables.size(); ++i) {
+        const Syllable& placed = room.syllables[i];
+        Syllable& syllable = checked.syllables[i];
+        syllable.start_s = placed.start_s;
+        syllable.final_start_s = placed.final_start_s;
+        syllable.end_s = placed.end_s;
+        syllable.confidence = placed.confidence;
+    }
+    return checked;
 }
 
 }  // namespace talkface::detail

@@ -50,6 +50,9 @@ void place_in_room(const SentenceChain& plain_chain, std::size_t w, DryRoom* dry
                    ViterbiWorkspace& workspace, EntryMaxMarginals& room_marginals, Timeline& room_result,
                    std::vector<SyllableEvidence>& room_evidence);
 
+// `checked`'s syllables with the times and confidences `room` gives them: as a room's are given out.
+Timeline with_room_placement(Timeline checked, const Timeline& room);
+
 }  // namespace talkface::detail
 
 #endif

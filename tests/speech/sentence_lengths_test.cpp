@@ -1,7 +1,7 @@
 // check_sentence_lengths and the voiced peaks it counts (issue 12): a person may say a sentence
 // more than twice as slowly as the others, a sentence missing from the transcript leaves one as
 // slow but with two sentences' syllables in it; check_missing_text finds such a sentence on the syllables
-// as aligned.
+// as aligned, on every placement the alignment made of them (check_missing_text_as_placed).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "speech/alignment_checks.hpp"
+#include "speech/placed_missing_text.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/transcript.hpp"
 
@@ -260,5 +261,53 @@ TEST_SUITE("speech") {
         std::vector<std::string> findings;
         CHECK_NOTHROW(check_missing_text(aligned, bumpy.track, bumpy.loudness, findings));
         CHECK(findings.empty());
+    }
+
+    TEST_CASE("a missing sentence's pause looked for on the room's and the first alignment's placements") {
+        // Sentence 3's speech from 3 s on holds two sentences' peaks with a sentence's pause inside
+        // (3.8-4.4 s). The checked placement keeps its syllables to the first half, passing over the
+        // rest as the pause before sentence 4 (an alignment kept to the text's marks has no pause
+        // the text does not mark over 0.25 s); the other placement spreads them over both halves.
+        Timeline checked = read_transcript("今天很好。我们走吧。他们来了。明天见吧。");
+        BumpyTrack bumpy(700);
+        said_evenly(checked, bumpy, 0, 0.2);
+        said_evenly(checked, bumpy, 4, 1.6);
+        said_evenly(checked, bumpy, 12, 5.8);
+        bumpy.bumps({300, 380}, 4, 30.0f, 15.0f);
+        bumpy.bumps({440, 520}, 4, 30.0f, 15.0f);
+        Timeline spread = checked;
+        place(checked, 8, {{3.0, 3.2}, {3.2, 3.4}, {3.4, 3.6}, {3.6, 3.8}});
+        place(spread, 8, {{3.0, 3.4}, {3.4, 3.8}, {4.4, 4.8}, {4.8, 5.2}});
+        std::vector<std::string> findings;
+        REQUIRE_NOTHROW(check_missing_text(checked, bumpy.track, bumpy.loudness, findings));
+        CutAlignment aligned;
+        aligned.result = checked;
+        SUBCASE("spread so in a room's placement: refused") {
+            aligned.room_result = spread;
+            CHECK_THROWS_WITH_AS(
+                check_missing_text_as_placed(aligned, nullptr, bumpy.track, bumpy.loudness, findings),
+                doctest::Contains("a pause of 0.6 s (3.8-4.4 s)"), AlignmentError);
+        }
+        SUBCASE("spread so in a room by the first alignment, the kept one having won: refused") {
+            aligned.room_result = checked;
+            CutAlignment unkept = aligned;
+            unkept.result = spread;
+            CHECK_THROWS_WITH_AS(
+                check_missing_text_as_placed(aligned, &unkept, bumpy.track, bumpy.loudness, findings),
+                doctest::Contains("a pause of 0.6 s (3.8-4.4 s)"), AlignmentError);
+        }
+        SUBCASE("the first alignment outside a room, where it slid a syllable: not read") {
+            CutAlignment unkept;
+            unkept.result = spread;
+            CHECK_NOTHROW(
+                check_missing_text_as_placed(aligned, &unkept, bumpy.track, bumpy.loudness, findings));
+        }
+        SUBCASE("placed so everywhere: passed, with nothing found") {
+            aligned.room_result = checked;
+            CutAlignment unkept = aligned;
+            CHECK_NOTHROW(
+                check_missing_text_as_placed(aligned, &unkept, bumpy.track, bumpy.loudness, findings));
+            CHECK(findings.empty());
+        }
     }
 }
