@@ -29,13 +29,6 @@ namespace {
 // text (count_nuclei).
 constexpr double kSlowestFramesPerSyllable = 70.0;
 constexpr double kMaxRateRatio = 2.0;
-// A person says a sentence more than twice as slowly as the others of a recording (bench/ human
-// speech: up to 2.2 times, a comma's pause unheard in noise counted as speech); a sentence missing
-// from the transcript leaves its neighbour as slow, but with two sentences' syllables in its
-// speech. Voiced peaks per syllable of a right sentence: 0.54-1.27 for a person (syllables run
-// together share a peak), 1.0-1.5 for espeak-ng (contour tones dip); with a sentence missing
-// 1.87-2.83 (bench/ espeak-ng clean and reverb, a sentence of each passage taken out of its text).
-constexpr double kMaxNucleiPerSyllable = 1.6;
 // A sentence too fast on its speech frames but not on its whole span may have had quiet syllables
 // taken for pauses (a person's weak syllables under pink noise at SNR 15 dB: bench/ r-pink15
 // tuning-016, 0.78 s of its 2.15 s, 13 syllables in 1.37 s of "speech"). It keeps its voiced peaks:
@@ -123,14 +116,6 @@ constexpr double kMinOrderMargin = 0.12;
 // syllable the worst of all (espeak-ng's last syllable over two or three: 1.0-2.0). Replayed on the
 // clips' dumped metrics (bench/README.md, session 14).
 constexpr double kMaxTypicalEndGap = 0.5;
-// The second half's clauses judge its syllables on models learned from the first half alone: in a
-// file of one sentence of 6-7 syllables that is three syllables of speech, too few to hold the
-// second half's sounds, and right texts' second halves gap past both clauses (espeak-ng reading
-// chat lines, the text helper's dev4 set, clean and fast: 88，下次再聊！ hhh你太逗了。 OK，我马上到。
-// GG，这把输了。 哈哈哈233。 2³=8。: 19 of the 33 right clips the clauses refused, tuning and held out;
-// the limit was set with the held-out ones in view). From 8 syllables on the clauses stand: a
-// person's corpus loses one tail- sentence of 7 (bench/README.md, session 15).
-constexpr std::size_t kMinEndClauseSyllables = 8;
 // With generic speech free to follow a sentence's last syllable (lenient alignment's price), a
 // person's right sentence alone in a file leaves it 0.15 s or more in 6 of 1620 tuning clips, 0.4 s
 // or more in 1 (r-music tuning-007: 1.23 s, music after the voice); a text that lacks its last 1-3
@@ -723,6 +708,24 @@ void check_held_out_fit(const std::vector<SentenceMetrics>& metrics, const std::
         }
         refuse_text_fit(k, spans[k], transcript, "with models learned from the rest of the recording, on half of it, ",
                         metrics[k].held_out_gap, kMaxHeldOutFitGap);
+    }
+}
+
+void check_typical_syllable_off_noise(const std::vector<SentenceMetrics>& metrics,
+                                      const std::vector<FrameSpan>& spans, const Timeline& transcript) {
+    const std::vector<std::size_t> syllables = syllables_per_sentence(transcript);
+    for (std::size_t k = 0; k < metrics.size(); ++k) {
+        const double margin = metrics[k].order_margin;
+        const double typical = metrics[k].held_out_median;
+        if (syllables[k] >= kMinHeldOutSyllables || !(typical > margin)) continue;
+        throw AlignmentError(
+            describe_sentence(k, spans[k], transcript) +
+            ": the audio does not sound like its text (with models learned from the rest of the "
+            "recording, other sounds fit its typical syllable " +
+            format_fixed(typical, 2) + " per frame better than its text, at most " + format_fixed(margin, 2) +
+            " for the right text: the margin by which its text fits its speech better than the "
+            "same text fits the speech with its halves swapped, its syllables kept off the noise "
+            "around its voice); is it another sentence?");
     }
 }
 

@@ -102,6 +102,7 @@ AlignedTimelines align_cut(const FeatureTrack& track, const FeatureTrack& heard,
             throw;
         }
         check_held_out_fit(metrics, spans, transcript, result.warnings);
+        if (!cut.syllable_bounds.empty()) check_typical_syllable_off_noise(metrics, spans, transcript);
         check_unspoken_tail(metrics, spans, transcript);
         check_own_fit(metrics, spans, transcript);
         check_syllable_lengths(metrics, spans, transcript);

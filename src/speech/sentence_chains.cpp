@@ -324,6 +324,23 @@ std::size_t ringing_after_fall(const FeatureTrack& track, std::size_t loudest, s
     return mark;
 }
 
+// The edge pauses of `chain` hold every searched frame outside its syllable_bound: the path may not
+// lay an edge syllable there, nor stretch the vowels over it (set_search_spans scales them to the
+// speech inside the bound). Set after the edges' own bounds (kCutEdgeFrames), which it overrides.
+void keep_syllables_in_bound(SentenceChain& chain) {
+    const FrameSpan& bound = chain.syllable_bound;
+    const auto hold = [](PhoneState& edge, std::size_t frames) {
+        if (frames == 0) return;
+        edge.is_optional = false;
+        edge.min_frames = frames;
+        edge.max_frames = std::max(edge.max_frames, frames);
+    };
+    if (bound.first_frame > chain.searched.first_frame && bound.first_frame < chain.searched.end_frame)
+        hold(chain.states.front(), bound.first_frame - chain.searched.first_frame);
+    if (bound.end_frame < chain.searched.end_frame && bound.end_frame > chain.searched.first_frame)
+        hold(chain.states.back(), chain.searched.end_frame - bound.end_frame);
+}
+
 }  // namespace
 
 std::vector<SentenceChain> group_chains(const Timeline& transcript, const SentenceCut& cut,
@@ -340,6 +357,9 @@ std::vector<SentenceChain> group_chains(const Timeline& transcript, const Senten
                 chains.back().first_sentence = k;
                 chains.back().speech = spans[k];
                 chains.back().limit = cut.limits.empty() ? FrameSpan{0, std::numeric_limits<std::size_t>::max()} : cut.limits[k];
+                chains.back().syllable_bound = cut.syllable_bounds.empty()
+                                                   ? FrameSpan{0, std::numeric_limits<std::size_t>::max()}
+                                                   : cut.syllable_bounds[k];
             }
             SentenceChain& block = chains.back();
             block.end_sentence = k + 1;
@@ -347,6 +367,10 @@ std::vector<SentenceChain> group_chains(const Timeline& transcript, const Senten
             if (!cut.limits.empty())
                 block.limit = {std::min(block.limit.first_frame, cut.limits[k].first_frame),
                                std::max(block.limit.end_frame, cut.limits[k].end_frame)};
+            if (!cut.syllable_bounds.empty())
+                block.syllable_bound = {
+                    std::min(block.syllable_bound.first_frame, cut.syllable_bounds[k].first_frame),
+                    std::max(block.syllable_bound.end_frame, cut.syllable_bounds[k].end_frame)};
             continues_block = cut.runs_on[k];
         }
         chains.back().syllables.push_back(&transcript.syllables[i]);
@@ -410,14 +434,18 @@ void set_search_spans(const FeatureTrack& track, const LoudnessProfile& loudness
             chain.searched_in_room.end_frame =
                 std::min(chain.searched.end_frame, ringing_first + kTailEdgeFrames);
         }
+        const std::size_t vowels_first = std::max(speech.first_frame, chain.syllable_bound.first_frame);
+        const std::size_t vowels_end =
+            std::max(vowels_first, std::min(voiced_end, chain.syllable_bound.end_frame));
         chain.states = build_phone_chain(chain.syllables, chain.searched.length(),
-                                         speech_frames(loudness, {speech.first_frame, voiced_end}));
+                                         speech_frames(loudness, {vowels_first, vowels_end}));
         // A recording cut to its sound has no silence at its edges for these states to take, but a
         // coder's ramp (measure_loudness): what reads as silence there is its weakest sound.
         if (loudness.is_cut_to_sound && speech.first_frame == 0)
             chain.states.front().max_frames = kCutEdgeFrames;
         if (loudness.is_cut_to_sound && speech.end_frame == track.frame_count)
             chain.states.back().max_frames = kCutEdgeFrames;
+        keep_syllables_in_bound(chain);
     }
 }
 

@@ -5,6 +5,7 @@
 #define TALKFACE_SPEECH_SENTENCE_CHAINS_HPP
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "speech/frame_features.hpp"
@@ -21,6 +22,9 @@ struct SentenceChain {
     FrameSpan speech;   // from the cutter
     FrameSpan searched; // with the edges
     FrameSpan limit;    // what the search may not leave: its sentences' SentenceCut::limits, or the audio
+    // What its syllables may not leave (SentenceCut::syllable_bounds), or the audio: the edge pauses
+    // hold the rest of `searched`.
+    FrameSpan syllable_bound{0, std::numeric_limits<std::size_t>::max()};
     std::vector<const Syllable*> syllables;
     std::vector<std::size_t> syllable_indices;
     std::vector<PhoneState> states;

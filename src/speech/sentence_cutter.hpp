@@ -102,6 +102,10 @@ struct SentenceCut {
     bool is_in_doubt = false;
     // Per sentence: the frames its search may not leave (given spans); empty: no bound.
     std::vector<FrameSpan> limits;
+    // Per sentence: the frames its syllables may not leave, while its search and the pauses at its
+    // edges do (a line's own voice on a cut that holds noise around it, own_reading_bound.hpp);
+    // empty: no bound.
+    std::vector<FrameSpan> syllable_bounds;
 };
 
 // How many syllables each sentence of `transcript` holds, in the sentences' order (0 for a

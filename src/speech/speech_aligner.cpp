@@ -24,6 +24,7 @@
 #include "speech/given_spans_alignment.hpp"
 #include "speech/latin_only_text.hpp"
 #include "speech/line_among_voices.hpp"
+#include "speech/own_reading_bound.hpp"
 #include "speech/run_together.hpp"
 #include "speech/sentence_cutter.hpp"
 #include "speech/silenced_words.hpp"
@@ -116,13 +117,24 @@ Timeline align_track(const FeatureTrack& track, const LoudnessProfile& loudness,
         // A line refused for its path's shape on its cut, whose span holds the noise around its
         // voice, is judged on its own reading too: the path there keeps its syllables on the voice,
         // and the text is aligned there where every check passes it and its order margin vouches
-        // for it (PathShapeRefusal, kMinVouchingOrderMargin).
+        // for it (PathShapeRefusal, kMinVouchingOrderMargin). Else it is judged again on its cut
+        // with its syllables kept to the voice its own reading finds, the noise left to the edge
+        // pauses (cut_bounded_by_own_reading), and aligned there where every check passes it.
         if (is_checked && is_own_reading_sought && is_one_spoken_line(transcript) &&
             dynamic_cast<const PathShapeRefusal*>(&error) != nullptr) {
             auto own =
                 align_own_reading(track, loudness, transcript, cut, is_spoken, options, progress, true);
             if (own && own->is_vouched_by_order)
                 return own->in_room ? std::move(*own->in_room) : std::move(own->checked);
+            if (const auto bounded = cut_bounded_by_own_reading(track, loudness, transcript, cut, options)) {
+                try {
+                    AlignedTimelines kept = align_confirmed(voice, track, loudness, transcript, *bounded,
+                                                            is_spoken, progress, true, options.lenient);
+                    return kept.in_room ? std::move(*kept.in_room) : std::move(kept.checked);
+                } catch (const AlignmentError&) {
+                    // Refused with its syllables on the voice as well: the cut's refusal stands.
+                }
+            }
         }
         // Fewer stretches of speech than sentences: either sentences run together or the
         // transcript has one the audio lacks; the first is tried, and the message tells of both.

@@ -126,14 +126,20 @@ double order_margin(const SentenceChain& chain, const std::vector<StateSegment>&
                     ViterbiWorkspace& workspace) {
     const std::size_t frames = scores.frame_count;
     if (frames == 0 || path.empty()) return std::numeric_limits<double>::quiet_NaN();
-    // The speech from frame frames - frames / 2 on, then the speech before it.
-    const auto first = scores.values.begin();
-    const auto middle = first + static_cast<std::ptrdiff_t>((frames - frames / 2) * kPhoneClassCount);
-    const auto end = first + static_cast<std::ptrdiff_t>(frames * kPhoneClassCount);
+    // The frames an edge pause must hold (SentenceChain::syllable_bound) stay where they are: swapped
+    // into the middle of the speech, they would hold the rival's pause on the voice.
+    const auto held = [](const PhoneState& edge) { return edge.is_optional ? 0 : edge.min_frames; };
+    const std::size_t lead = std::min(held(chain.states.front()), frames);
+    const std::size_t inner = frames - lead - std::min(held(chain.states.back()), frames - lead);
+    // The speech from its frame inner - inner / 2 on, then the speech before it.
     EmissionScores swapped;
     swapped.frame_count = frames;
-    swapped.values.resize(frames * kPhoneClassCount);
-    std::rotate_copy(first, middle, end, swapped.values.begin());
+    swapped.values.assign(scores.values.begin(),
+                          scores.values.begin() + static_cast<std::ptrdiff_t>(frames * kPhoneClassCount));
+    const auto at = [&](std::size_t t) {
+        return swapped.values.begin() + static_cast<std::ptrdiff_t>(t * kPhoneClassCount);
+    };
+    std::rotate(at(lead), at(lead + inner - inner / 2), at(lead + inner));
     const std::vector<StateSegment> rival = viterbi_align(chain.states, swapped, workspace, frames);
     if (rival.empty()) return std::numeric_limits<double>::quiet_NaN();
     return (path_score(chain, path, scores) - path_score(chain, rival, swapped)) / static_cast<double>(frames);
