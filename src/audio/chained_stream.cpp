@@ -5,12 +5,15 @@
 #include <fstream>
 #include <string_view>
 
+#include "audio/file_blocks.hpp"
+
 namespace talkface::detail {
 
 namespace {
 
 constexpr std::string_view kEbmlHeaderId("\x1a\x45\xdf\xa3", 4);
 constexpr std::string_view kSegmentId("\x18\x53\x80\x67", 4);
+constexpr std::uint64_t kEbmlHeaderElement = 0x1A45DFA3;
 
 std::uint64_t little_endian(const unsigned char* bytes, std::size_t count) {
     std::uint64_t value = 0;
@@ -75,45 +78,93 @@ std::optional<ChainedStream> chained_ogg_stream(std::ifstream& in) {
     return std::nullopt;
 }
 
-// An EBML element's size at `at` in `in`, `at` moved past it: a variable-length integer of 1-8 bytes,
-// its length told by its first byte's leading zeros; nullopt where the bytes are none, and for a size
-// of all ones (unknown: a live recording's Segment, written before its end was known).
-std::optional<std::uint64_t> read_size(std::ifstream& in, std::uint64_t& at) {
-    unsigned char first = 0;
-    in.seekg(static_cast<std::streamoff>(at));
-    if (!in.read(reinterpret_cast<char*>(&first), 1) || first == 0) return std::nullopt;
-    std::size_t length = 1;
-    while ((first & (0x80U >> (length - 1))) == 0) ++length;
-    std::uint64_t value = first & (0xFFU >> length);
-    bool is_all_ones = value == (0xFFU >> length);
-    for (std::size_t k = 1; k < length; ++k) {
-        unsigned char next = 0;
-        if (!in.read(reinterpret_cast<char*>(&next), 1)) return std::nullopt;
-        value = value << 8 | next;
-        is_all_ones = is_all_ones && next == 0xFF;
+// An EBML element's ID or size at `at`: a variable-length integer of 1-8 bytes (an ID of 1-4), its
+// length told by its first byte's leading zeros; an ID keeps its length's marker bit, a size does
+// not. A size of all ones is unknown: a live recording's Segment or Cluster, written before its end
+// was known (a browser's MediaRecorder writes both so).
+struct Vint {
+    std::uint64_t value = 0;
+    std::size_t length = 0;
+    bool is_unknown = false;
+};
+
+std::optional<Vint> read_vint(FileBlocks& file, std::uint64_t at, bool keeps_marker) {
+    const std::string_view bytes = file.at(at, 8);
+    if (bytes.empty() || bytes[0] == 0) return std::nullopt;
+    const auto first = static_cast<unsigned char>(bytes[0]);
+    Vint vint;
+    vint.length = 1;
+    while ((first & (0x80U >> (vint.length - 1))) == 0) ++vint.length;
+    if (bytes.size() < vint.length) return std::nullopt;
+    const unsigned value_bits = 0xFFU >> vint.length;
+    vint.value = keeps_marker ? first : first & value_bits;
+    vint.is_unknown = (first & value_bits) == value_bits;
+    for (std::size_t k = 1; k < vint.length; ++k) {
+        const auto next = static_cast<unsigned char>(bytes[k]);
+        vint.value = vint.value << 8 | next;
+        vint.is_unknown = vint.is_unknown && next == 0xFF;
     }
-    at += length;
-    if (is_all_ones) return std::nullopt;
-    return value;
+    return vint;
 }
 
-// A Matroska file's first Segment, its size stated, ending where a second EBML header begins.
-std::optional<ChainedStream> second_matroska_segment(std::ifstream& in) {
-    std::uint64_t at = kEbmlHeaderId.size();
-    const auto header_size = read_size(in, at);
-    if (!header_size) return std::nullopt;
-    at += *header_size;
-    std::array<char, 4> id{};
-    in.seekg(static_cast<std::streamoff>(at));
-    if (!in.read(id.data(), id.size()) || std::string_view(id.data(), id.size()) != kSegmentId)
-        return std::nullopt;
-    at += id.size();
-    const auto segment_size = read_size(in, at);
+// The Segment's children (Matroska's level 1: SeekHead, Info, Tracks, Cluster, Cues, Attachments,
+// Chapters, Tags, and Void and CRC-32 anywhere), and a Cluster's (Timestamp, SilentTracks, Position,
+// PrevSize, SimpleBlock, BlockGroup, EncryptedBlock): an element of unknown size ends at the first
+// element that is none of its children.
+constexpr std::uint64_t kClusterId = 0x1F43B675;
+bool is_segment_child(std::uint64_t id) {
+    for (const std::uint64_t child : {0x114D9B74U, 0x1549A966U, 0x1654AE6BU, 0x1F43B675U, 0x1C53BB6BU,
+                                      0x1941A469U, 0x1043A770U, 0x1254C367U, 0xECU, 0xBFU})
+        if (id == child) return true;
+    return false;
+}
+bool is_cluster_child(std::uint64_t id) {
+    for (const std::uint64_t child : {0xE7U, 0x5854U, 0xA7U, 0xABU, 0xA3U, 0xA0U, 0xAFU, 0xECU, 0xBFU})
+        if (id == child) return true;
+    return false;
+}
+
+// Where a Segment of unknown size, its children from `at` on, is followed by a second EBML header:
+// its children walked by their IDs and sizes, a Cluster of unknown size by its own children. Reads
+// their headers only; nullopt at the file's end, or at bytes that are no element the Segment holds.
+std::optional<std::uint64_t> after_unknown_segment(FileBlocks& file, std::uint64_t at) {
+    bool is_in_cluster = false;
+    while (true) {
+        const auto id = read_vint(file, at, true);
+        if (!id || id->length > 4) return std::nullopt;
+        if (id->value == kEbmlHeaderElement) return at;
+        is_in_cluster = is_in_cluster && is_cluster_child(id->value);
+        if (!is_in_cluster && !is_segment_child(id->value)) return std::nullopt;
+        const auto size = read_vint(file, at + id->length, false);
+        if (!size) return std::nullopt;
+        at += id->length + size->length;
+        if (size->is_unknown) {
+            if (id->value != kClusterId) return std::nullopt;
+            is_in_cluster = true;
+        } else {
+            at += size->value;
+        }
+    }
+}
+
+// A Matroska file's first Segment ending where a second EBML header begins: at its stated size, or,
+// a live recording's Segment of unknown size, after its last child.
+std::optional<ChainedStream> second_matroska_segment(FileBlocks& file) {
+    const auto header_size = read_vint(file, kEbmlHeaderId.size(), false);
+    if (!header_size || header_size->is_unknown) return std::nullopt;
+    std::uint64_t at = kEbmlHeaderId.size() + header_size->length + header_size->value;
+    if (file.at(at, kSegmentId.size()) != kSegmentId) return std::nullopt;
+    at += kSegmentId.size();
+    const auto segment_size = read_vint(file, at, false);
     if (!segment_size) return std::nullopt;
-    const std::uint64_t end = at + *segment_size;
-    in.seekg(static_cast<std::streamoff>(end));
-    if (!in.read(id.data(), id.size()) || std::string_view(id.data(), id.size()) != kEbmlHeaderId)
-        return std::nullopt;
+    at += segment_size->length;
+    if (segment_size->is_unknown) {
+        const auto end = after_unknown_segment(file, at);
+        if (!end) return std::nullopt;
+        return ChainedStream{ChainedStream::Container::matroska, *end, 0.0, true};
+    }
+    const std::uint64_t end = at + segment_size->value;
+    if (file.at(end, kEbmlHeaderId.size()) != kEbmlHeaderId) return std::nullopt;
     return ChainedStream{ChainedStream::Container::matroska, end, 0.0};
 }
 
@@ -125,7 +176,10 @@ std::optional<ChainedStream> chained_stream(const std::string& path) {
     if (!in.read(start.data(), start.size())) return std::nullopt;
     const std::string_view opening(start.data(), start.size());
     if (opening == "OggS") return chained_ogg_stream(in);
-    if (opening == kEbmlHeaderId) return second_matroska_segment(in);
+    if (opening == kEbmlHeaderId) {
+        FileBlocks file(path);
+        return second_matroska_segment(file);
+    }
     return std::nullopt;
 }
 

@@ -17,18 +17,20 @@ namespace talkface::detail {
 
 // Where a second recording's stream starts: in which container, at which byte, and, in an Ogg file
 // of Vorbis or Opus, after how long a first stream (its last page's granule position; 0 where not
-// known).
+// known); in a Matroska file, whether the first Segment's size is unknown (a live recording's).
 struct ChainedStream {
     enum class Container { ogg, matroska };
     Container container = Container::ogg;
     std::uint64_t byte = 0;
     double first_seconds = 0.0;
+    bool is_live_segment = false;
 };
 
 // The second stream of the file at `path`, if it opens as an Ogg file (a page beginning a logical
 // stream after a page of sound: the streams of one recording, a video's picture and sound, all begin
 // on its first pages) or a Matroska or WebM file (its first Segment's stated size ending at a second
-// EBML header). Reads the pages' headers only, or the first Segment's; nullopt for anything else.
+// EBML header, or, a Segment of unknown size, its children followed by one). Reads the pages' headers
+// only, or the first Segment's and its children's; nullopt for anything else.
 std::optional<ChainedStream> chained_stream(const std::string& path);
 
 }  // namespace talkface::detail

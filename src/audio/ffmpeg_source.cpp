@@ -31,12 +31,6 @@ namespace talkface::detail {
 
 namespace {
 
-// An MP3 without a LAME/Xing tag (sox writes none) does not say how many samples of encoder delay
-// lead its first frame, and FFmpeg then keeps them: sox's 22.05 kHz MP3s came out 50 ms late. LAME,
-// the encoder behind sox, ffmpeg and Audacity alike, delays by 576 samples, and the decoder adds
-// 529: the numbers a LAME tag would carry.
-constexpr std::size_t kUntaggedMp3DelayFrames = 576 + 529;
-
 // An AAC-LC encoder's delay, at the least: the first frame it writes overlaps 1024 samples before
 // the sound (the codec's frame overlap; FFmpeg's encoder delays by exactly this, Apple's by 1088
 // more). An MP4's edit list states the delay and FFmpeg drops it (or, where the sound starts

@@ -173,9 +173,14 @@ std::optional<std::uint64_t> repeated_opening_byte(const std::string& path) {
 std::optional<std::string> describe_second_stream(const std::string& path) {
     if (const auto chained = chained_stream(path)) {
         const std::string where = " starts at byte " + std::to_string(chained->byte);
-        if (chained->container == ChainedStream::Container::matroska)
+        if (chained->container == ChainedStream::Container::matroska) {
+            const char* segment_end = chained->is_live_segment
+                                          ? ", where the first's Segment, of unknown size (a live "
+                                            "recording's, as a browser writes it), ends"
+                                          : ", where the first's Segment ends";
             return "a second Matroska file (its own EBML header and Segment, which open a recording)" +
-                   where + ", where the first's Segment ends" + second_begins_there();
+                   where + segment_end + second_begins_there();
+        }
         const std::string first_end =
             chained->first_seconds > 0.0
                 ? ", where the first ends (" + format_fixed(chained->first_seconds, 3) + " s)"

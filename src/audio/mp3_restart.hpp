@@ -19,9 +19,10 @@
 
 namespace talkface::detail {
 
-// Where a second stream starts: the frame's first byte, its time (the frames before it, at the first
-// frame's rate), and how many reservoir bytes the frames before it left that it did not use; or
-// that the frame holds an encoder's header (then no byte was left unused that tells).
+// Where a second stream starts: the frame's first byte, its time as the file decodes (the frames of
+// sound before it, at the first frame's rate, less the delay the reader drops from the start), and how many
+// reservoir bytes the frames before it left that it did not use; or that the frame holds an encoder's header
+// (then no byte was left unused that tells).
 struct Mp3Restart {
     std::uint64_t byte = 0;
     double seconds = 0.0;

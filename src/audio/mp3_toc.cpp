@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <fstream>
+#include <utility>
 
 namespace talkface::detail {
 
@@ -145,6 +146,26 @@ bool is_mp3_tag_frame(std::string_view frame, const Mp3FrameHeader& header) {
     const std::size_t tag_at = 4 + (header.has_crc ? 2 : 0) + mp3_side_info_bytes(header);
     const std::string_view tag = frame.substr(std::min(tag_at, frame.size()), 4);
     return tag == "Xing" || tag == "Info" || frame.substr(std::min(kVbriAt, frame.size()), 4) == "VBRI";
+}
+
+std::size_t mp3_start_skip_frames(std::string_view frame, const Mp3FrameHeader& header) {
+    constexpr std::size_t kDecoderDelayFrames = 529;
+    std::size_t at = 4 + (header.has_crc ? 2 : 0) + mp3_side_info_bytes(header);
+    const std::string_view tag = frame.substr(std::min(at, frame.size()), 4);
+    if ((tag != "Xing" && tag != "Info") || frame.size() < at + 8) return kUntaggedMp3DelayFrames;
+    // The Xing fields that follow its flags (frames, bytes, table, quality), each there if its flag is.
+    const std::uint32_t flags = big_endian(frame, at + 4);
+    at += 8;
+    for (const auto& [flag, bytes] :
+         {std::pair{1U, 4U}, std::pair{2U, 4U}, std::pair{4U, 100U}, std::pair{8U, 4U}})
+        if ((flags & flag) != 0) at += bytes;
+    // LAME's extension: the encoder's name (9 bytes), then 12 bytes of settings and gains, then the
+    // delay and the end's padding in 12 bits each.
+    constexpr std::size_t kDelayAt = 9 + 12;
+    if (frame.size() < at + kDelayAt + 3) return kUntaggedMp3DelayFrames;
+    const std::string_view name = frame.substr(at, 4);
+    if (name != "LAME" && name != "Lavf" && name != "Lavc") return kUntaggedMp3DelayFrames;
+    return (big_endian(frame, at + kDelayAt, 3) >> 12) + kDecoderDelayFrames;
 }
 
 std::size_t after_id3(std::string_view file) {

@@ -40,6 +40,18 @@ std::size_t mp3_side_info_bytes(const Mp3FrameHeader& header);
 // first frame, in place of sound.
 bool is_mp3_tag_frame(std::string_view frame, const Mp3FrameHeader& header);
 
+// An MP3 without a LAME tag (sox writes none) does not say how many samples of encoder delay lead
+// its first frame, and FFmpeg then keeps them: sox's 22.05 kHz MP3s came out 50 ms late. LAME, the
+// encoder behind sox, ffmpeg and Audacity alike, delays by 576 samples, and the decoder adds 529: the
+// numbers a LAME tag would carry.
+constexpr std::size_t kUntaggedMp3DelayFrames = 576 + 529;
+
+// The samples the reader drops from the start of the stream whose first frame is `frame` (read from
+// its header on, `header` its header): the encoder's delay a LAME tag after a Xing or Info tag states
+// (written by LAME, or by FFmpeg as "Lavf" or "Lavc"), and the decoder's 529, as FFmpeg's MP3 reader
+// drops them; kUntaggedMp3DelayFrames without one (ffmpeg_source.cpp drops those).
+std::size_t mp3_start_skip_frames(std::string_view frame, const Mp3FrameHeader& header);
+
 struct Mp3Toc {
     // A byte of the file and the sample the table places there.
     struct Point {

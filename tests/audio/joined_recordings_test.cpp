@@ -5,8 +5,11 @@
 // WAV.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -61,6 +64,41 @@ std::pair<std::string, std::vector<std::string>> opus_joined_to_backwards(const 
     const std::string backwards = ffmpeg_made("backwards_opus." + format, "-af areverse " + options);
     const std::string path = joined("opus_joined_backwards." + format, one, backwards);
     return {one, SpeechAligner().align_file(path, load_transcript(speech_clip("one_sentence.txt"))).warnings};
+}
+
+// A copy of the WebM file at `path`, in test output NAME, with each Cluster's size written as unknown
+// (all ones, in the bytes it took), as Chrome's MediaRecorder writes them: the Segment's children
+// walked by their EBML IDs and sizes (ffmpeg's live WebM: its Segment's size already unknown).
+std::string with_unknown_cluster_sizes(const std::string& path, const std::string& name) {
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto length_at = [&](std::size_t at) {
+        std::size_t length = 1;
+        while ((static_cast<unsigned char>(bytes[at]) & (0x80U >> (length - 1))) == 0) ++length;
+        return length;
+    };
+    const auto size_at = [&](std::size_t at) {
+        std::size_t value = static_cast<unsigned char>(bytes[at]) & (0xFFU >> length_at(at));
+        for (std::size_t k = 1; k < length_at(at); ++k)
+            value = value << 8 | static_cast<unsigned char>(bytes[at + k]);
+        return value;
+    };
+    std::size_t at = 4 + length_at(4) + size_at(4);  // past the EBML header
+    at += 4 + length_at(at + 4);                     // into the Segment
+    while (at < bytes.size()) {
+        const bool is_cluster = bytes.compare(at, 4, "\x1f\x43\xb6\x75") == 0;
+        at += length_at(at);
+        const std::size_t size_length = length_at(at);
+        const std::size_t size = size_at(at);
+        if (is_cluster) {
+            bytes[at] = static_cast<char>(0xFFU >> (size_length - 1));
+            std::fill_n(bytes.begin() + static_cast<std::ptrdiff_t>(at + 1), size_length - 1, '\xff');
+        }
+        at += size_length + size;
+    }
+    const std::string out = test::output_path(name);
+    std::ofstream(out, std::ios::binary) << bytes;
+    return out;
 }
 
 // The frames the file at `path` reads as, to its end.
@@ -239,6 +277,44 @@ TEST_SUITE("joined recordings") {
         CHECK_FALSE(detail::restarted_mp3_stream(other));
     }
 
+    TEST_CASE("a joined MP3's join is named at the time the first recording's decoded sound ends") {
+        // The frames before the join counted the first's header frame and the encoder's and decoder's
+        // delay, which the reader drops: 3.204 s where one_sentence.wav's copy ends at 3.099 s
+        // (3.090 s of sound and its last frame's padding). A user cuts the file at the time named.
+        // As the tests above join them: LAME's tagged MP3 to one opening in digital silence (named by its
+        // header frame), and MP3s of frames alone (named by the second's reservoir starting afresh).
+        struct Kind {
+            const char* name;
+            std::string options;
+            const char* second_filter;
+        };
+        const Kind kinds[] = {
+            {"tagged", "-c:a libmp3lame -b:a 64k -fflags +bitexact -flags:a +bitexact -f mp3",
+             "areverse,adelay=500:all=1"},
+            {"bare", "-c:a libmp3lame -b:a 32k -write_xing 0 -id3v2_version 0 -fflags +bitexact -f mp3",
+             "areverse"}};
+        for (const auto& [name, options, second_filter] : kinds) {
+            CAPTURE(name);
+            const std::string one = ffmpeg_made(std::string("join_time_") + name + ".mp3", options);
+            const std::string backwards = ffmpeg_made(std::string("join_time_backwards_") + name + ".mp3",
+                                                      std::string("-af ") + second_filter + " " + options);
+            const std::string path = joined(std::string("join_time_joined_") + name + ".mp3", one, backwards);
+            const Timeline aligned =
+                SpeechAligner().align_file(path, load_transcript(speech_clip("one_sentence.txt")));
+            const std::string frame = "its MP3 frame at byte ";
+            std::string warning;
+            for (const std::string& each : aligned.warnings)
+                if (each.find(frame) != std::string::npos) warning = each;
+            REQUIRE_FALSE(warning.empty());
+            const std::size_t open = warning.find(" (", warning.find(frame));
+            const double named_s = std::stod(warning.substr(open + 2));
+            const double first_s = static_cast<double>(frames_in(one)) / 16000.0;
+            CHECK(named_s >= first_s);
+            // Within the first's last frame's padding, which the reader keeps where a second stream follows.
+            CHECK(named_s <= first_s + 0.015);
+        }
+    }
+
     TEST_CASE("a chained Ogg file's second stream is read, and the join named") {
         // libsndfile read a chained Vorbis file's first stream alone: the second recording was lost
         // without a word. The second's serial number differs, as any two encodings' do.
@@ -281,6 +357,40 @@ TEST_SUITE("joined recordings") {
                 std::string::npos,
             warnings[0]);
         CHECK_FALSE(detail::chained_stream(one));
+    }
+
+    TEST_CASE(
+        "a live WebM (a Segment of unknown size) joined to another is named by its second EBML header") {
+        // A browser's MediaRecorder writes its Segment's size as unknown (all ones), as ffmpeg's live
+        // WebM does, and Chrome its Clusters' too: no stated size led to the second file, and the join
+        // was told only by the opening bytes recurring where the text was refused.
+        const std::string options =
+            "-c:a libopus -b:a 24k -fflags +bitexact -flags:a +bitexact -f webm "
+            "-live 1 -cluster_time_limit 500";
+        const std::string one = ffmpeg_made("one_sentence_live.webm", options);
+        const std::string backwards = ffmpeg_made("backwards_live.webm", "-af areverse " + options);
+        const std::string chrome_one = with_unknown_cluster_sizes(one, "one_sentence_live_clusters.webm");
+        const std::string chrome_backwards =
+            with_unknown_cluster_sizes(backwards, "backwards_live_clusters.webm");
+        for (const auto& [name, first, second] :
+             {std::tuple{"clusters of stated size", one, backwards},
+              std::tuple{"clusters of unknown size", chrome_one, chrome_backwards}}) {
+            CAPTURE(name);
+            const std::string path =
+                joined(std::string("live_joined_") + (first == one ? "a" : "b") + ".webm", first, second);
+            const auto chained = detail::chained_stream(path);
+            REQUIRE(chained);
+            CHECK(chained->byte == file_bytes(first));
+            CHECK(chained->is_live_segment);
+            CHECK_FALSE(detail::chained_stream(first));
+            const Timeline aligned =
+                SpeechAligner().align_file(path, load_transcript(speech_clip("one_sentence.txt")));
+            CHECK(has_warning_with(aligned,
+                                   "a second Matroska file (its own EBML header and Segment, which open a "
+                                   "recording) starts at byte " +
+                                       std::to_string(file_bytes(first)) +
+                                       ", where the first's Segment, of unknown size"));
+        }
     }
 
     TEST_CASE("an AVI's OpenDML extension (a RIFF AVIX after the first RIFF) is no second WAV") {
