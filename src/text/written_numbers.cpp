@@ -24,7 +24,9 @@ bool relation_follows(const std::vector<CodePoint>& text, std::size_t end) {
 
 // A number in E notation (学习率1e-3, 2.5E+8), as code and papers write it, is the number it means:
 // 一乘十的负三次方, as 10^6 is 十的六次方 (session 28: its e a letter, 一 yi 三). A letter before the
-// digits (0x1e5, a hex code's) or after the power (3e5x) leaves a name.
+// digits (0x1e5, a hex code's) or after the power (3e5x) leaves a name. A power of more digits than a
+// cardinal is said in is no E notation: its digits are read one by one, with the warning a long number
+// gets (2e followed by 17 digits threw an internal error, found by fuzz_transcript).
 std::optional<SpokenForm> read_e_notation(const std::vector<CodePoint>& text, std::size_t start,
                                           const WrittenNumber& number, const std::string& sign_words) {
     SpokenForm form;
@@ -34,7 +36,8 @@ std::optional<SpokenForm> read_e_notation(const std::vector<CodePoint>& text, st
         const bool negative = is_dash(value_at(text, k));
         if (negative || value_at(text, k) == '+') ++k;
         const auto power = digits_from(text, k);
-        if (!power.empty() && !is_ascii_letter(value_at(text, k)) && value_at(text, k) != '.') {
+        if (!power.empty() && power.size() <= kMostCardinalDigits && !is_ascii_letter(value_at(text, k)) &&
+            value_at(text, k) != '.') {
             const auto mantissa = say_number(number, {});
             form.words = sign_words + mantissa.words + "乘十的" + (negative ? "负" : "") +
                          cardinal_words(power, false) + "次方";

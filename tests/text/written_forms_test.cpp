@@ -1446,10 +1446,12 @@ TEST_SUITE("written forms") {
         // Every form a long run of digits can stand in is read digit by digit with a warning,
         // never thrown on (a date's day was parsed as a number and overflowed).
         const std::string long_run(24, '7');
-        for (const auto& form : {"2026-12-" + long_run, "2026/12/" + long_run, long_run + ":30", "3:" + long_run,
-                                 long_run + "×2", "1.2." + long_run, "2026.03." + long_run, long_run + "-3=1",
-                                 "比分" + long_run + "-1", "+86 " + long_run, "010-" + long_run, long_run + "万km",
-                                 "今天是" + long_run, long_run + "会议室", "CA" + long_run + "航班"}) {
+        for (const auto& form :
+             {"2026-12-" + long_run, "2026/12/" + long_run, long_run + ":30", "3:" + long_run,
+              long_run + "×2", "1.2." + long_run, "2026.03." + long_run, long_run + "-3=1",
+              "比分" + long_run + "-1", "+86 " + long_run, "010-" + long_run, long_run + "万km",
+              "今天是" + long_run, long_run + "会议室", "CA" + long_run + "航班", "2e" + long_run,
+              "学习率1e-" + long_run}) {
             CAPTURE(form);
             const auto read = read_transcript(form);
             CHECK(read.warnings.size() == 1);
