@@ -51,6 +51,22 @@ bool rewards_action(const std::vector<CodePoint>& text, std::size_t start) {
     return starts_with_any(text_after(text, end), kRewards);
 }
 
+// An item's upgrade level told apart from its word (装备全是+15的 加十五, 强化到+12了, 一把+12的武器; session
+// 42: 正), where follows_game_attribute sees the level right after the item or the upgrade: a whole count
+// after the sign, the item or the upgrade named earlier in the clause, or 的 and the item right after the
+// count. A level is no value with a sign, which a lesson (电荷为+1的离子) or a report (价格+15%) writes.
+bool names_item_level(const std::vector<CodePoint>& text, std::size_t start) {
+    constexpr std::string_view kItemsAndUpgrades[] = {"装备", "裝備", "武器", "防具", "强化", "強化",
+                                                      "精炼", "精煉", "神器", "法宝", "法寶"};
+    if (start == 0 || value_at(text, start) != '+' || !is_han(text[start - 1].value)) return false;
+    auto end = start + 1;
+    while (is_digit_at(text, end)) ++end;
+    const auto after = value_at(text, end);
+    if (after == '.' || after == '%' || is_digit_at(text, end) || is_ascii_letter(after)) return false;
+    if (contains_any(text_before(text, start, true), kItemsAndUpgrades)) return true;
+    return after == U'的' && starts_with_any(text_after(text, end + 1), kItemsAndUpgrades);
+}
+
 // A game's gauges written in capitals (HP+500, MP-20, EXP+100), a whole word: the sign after them adds or
 // takes away as after 血量 or 法力 (session 33: MP-20 was read as a model's number, ai mu pi 二十).
 bool follows_stat_letters(const std::vector<CodePoint>& text, std::size_t start) {
@@ -228,7 +244,7 @@ std::optional<LeadingSign> read_leading_sign(const std::vector<CodePoint>& text,
         if ((follows_game_attribute(text, start) || follows_gauge(text, start) || after_stat) &&
             (first == '+' || takes_away))
             sign_words = first == '+' ? "加" : "减";
-        else if (first == '+' && rewards_action(text, start))
+        else if (first == '+' && (rewards_action(text, start) || names_item_level(text, start)))
             sign_words = "加";
         ++i;
     }

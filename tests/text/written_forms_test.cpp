@@ -2929,4 +2929,20 @@ TEST_SUITE("written forms") {
             {"+1的相反数是-1", "正一的相反数是负一"},
         });
     }
+
+    TEST_CASE(
+        "an item's upgrade level is said as a bonus where the item or the upgrade is named apart from it") {
+        // Each row but the limits fails on main b8e0682 (dev44's one tuning miss): 正十五, 正十二.
+        check_cases({
+            {"我号已经60级了，装备全是+15的。", "我号已经六十级了装备全是加十五的"},
+            {"强化到+12了", "强化到加十二了"},
+            {"一把+12的武器", "一把加十二的武器"},
+            {"這把武器已經精煉到+10", "這把武器已經精煉到加十"},
+            // The limits: a value's and a lesson's signs, and a change in percent, keep their readings.
+            {"电荷为+1的离子", "电荷为正一的离子"},
+            {"温差+12", "温差正十二"},
+            {"装备价格+15%", "装备价格涨百分之十五"},
+            {"一把+12的椅子", "一把正十二的椅子"},
+        });
+    }
 }
