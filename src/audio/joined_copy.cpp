@@ -27,6 +27,11 @@ std::string second_begins_there() {
            kJoinedToFirst;
 }
 
+// A join whose time the file does not tell.
+JoinedRecording untimed(std::string description) {
+    return {std::move(description), std::nullopt};
+}
+
 // The first byte from `start` on of the file `in` reads where `find` finds what it looks for: the
 // file read a block at a time, each block after the last `overlap` bytes of the one before, so
 // that what spans two blocks is found; `find` gets a block and gives the offset in it, or nullopt.
@@ -170,7 +175,7 @@ std::optional<std::uint64_t> repeated_opening_byte(const std::string& path) {
                           });
 }
 
-std::optional<std::string> describe_second_stream(const std::string& path) {
+std::optional<JoinedRecording> describe_second_stream(const std::string& path) {
     if (const auto chained = chained_stream(path)) {
         const std::string where = " starts at byte " + std::to_string(chained->byte);
         if (chained->container == ChainedStream::Container::matroska) {
@@ -178,15 +183,17 @@ std::optional<std::string> describe_second_stream(const std::string& path) {
                                           ? ", where the first's Segment, of unknown size (a live "
                                             "recording's, as a browser writes it), ends"
                                           : ", where the first's Segment ends";
-            return "a second Matroska file (its own EBML header and Segment, which open a recording)" +
-                   where + segment_end + second_begins_there();
+            return untimed(
+                "a second Matroska file (its own EBML header and Segment, which open a recording)" + where +
+                segment_end + second_begins_there());
         }
+        const bool is_first_timed = chained->first_seconds > 0.0;
         const std::string first_end =
-            chained->first_seconds > 0.0
-                ? ", where the first ends (" + format_fixed(chained->first_seconds, 3) + " s)"
-                : std::string();
-        return "a second Ogg stream (its own header pages, which open a recording)" + where + first_end +
-               second_begins_there();
+            is_first_timed ? ", where the first ends (" + format_fixed(chained->first_seconds, 3) + " s)"
+                           : std::string();
+        return JoinedRecording{"a second Ogg stream (its own header pages, which open a recording)" + where +
+                                   first_end + second_begins_there(),
+                               is_first_timed ? std::optional<double>(chained->first_seconds) : std::nullopt};
     }
     const auto restart = restarted_mp3_stream(path);
     if (!restart) return std::nullopt;
@@ -198,36 +205,40 @@ std::optional<std::string> describe_second_stream(const std::string& path) {
               "recording's first frame"
             : "begins its data afresh, throwing away the " + std::to_string(restart->unused_bytes) +
                   " bytes the frames before it left free for it, as only a recording's first frame does";
-    return frame + why + second_begins_there();
+    return JoinedRecording{frame + why + second_begins_there(), restart->seconds};
 }
 
-std::optional<std::string> describe_joined_copy(const std::string& path) {
+std::optional<JoinedRecording> describe_joined_copy(const std::string& path) {
     const std::string joined = second_begins_there();
     if (const auto second = repeated_opening_byte(path))
-        return "its first " + std::to_string(kOpeningBytes) + " bytes (its header) recur at byte " +
-               std::to_string(*second) + joined;
+        return untimed("its first " + std::to_string(kOpeningBytes) + " bytes (its header) recur at byte " +
+                       std::to_string(*second) + joined);
     std::ifstream in(path, std::ios::binary);
     if (const auto second = second_flac_stream_byte(in))
-        return "a second FLAC stream header (\"fLaC\" and its STREAMINFO block, which open a recording) "
-               "starts "
-               "at byte " +
-               std::to_string(*second) + joined;
+        return untimed(
+            "a second FLAC stream header (\"fLaC\" and its STREAMINFO block, which open a recording) "
+            "starts at byte " +
+            std::to_string(*second) + joined);
     if (const auto second = second_mp3_tag_frame_byte(in))
-        return "a second MP3 header frame (a Xing or Info tag, which an encoder writes once, in a "
-               "recording's first frame) starts at byte " +
-               std::to_string(*second) + joined;
+        return untimed(
+            "a second MP3 header frame (a Xing or Info tag, which an encoder writes once, in a "
+            "recording's first frame) starts at byte " +
+            std::to_string(*second) + joined);
     if (const auto end = past_stated_mp3_bytes(in))
-        return "its first frame's Xing or Info tag counts its MP3 frames to byte " + std::to_string(*end) +
-               ", and a second stream of frames starts there" + joined;
+        return untimed("its first frame's Xing or Info tag counts its MP3 frames to byte " +
+                       std::to_string(*end) + ", and a second stream of frames starts there" + joined);
     if (const auto repeat = repeated_sound(path)) {
         const auto seconds = [&](std::size_t frame) {
             return format_fixed(static_cast<double>(frame) / repeat->sample_rate_hz, 3) + " s";
         };
-        return "its sound from " + seconds(repeat->repeat_frame) + " to its end is its sound from " +
-               seconds(repeat->original_frame) +
-               " on again, sample for sample, as no voice repeats itself: a second copy of the recording "
-               "begins at " +
-               seconds(repeat->repeat_frame - repeat->original_frame) + kJoinedToFirst;
+        const std::size_t second_starts = repeat->repeat_frame - repeat->original_frame;
+        return JoinedRecording{
+            "its sound from " + seconds(repeat->repeat_frame) + " to its end is its sound from " +
+                seconds(repeat->original_frame) +
+                " on again, sample for sample, as no voice repeats itself: a second copy of the recording "
+                "begins at " +
+                seconds(second_starts) + kJoinedToFirst,
+            static_cast<double>(second_starts) / repeat->sample_rate_hz};
     }
     return describe_second_stream(path);
 }

@@ -26,6 +26,15 @@ constexpr std::size_t kOpeningBytes = 32;
 // MP3 its frames of silence, byte for byte.
 std::optional<std::uint64_t> repeated_opening_byte(const std::string& path);
 
+// A second recording joined to a file: what the messages say of it, and, where the file tells it, the
+// time of the decoded sound where the second begins (an Ogg file's first stream's end, an MP3's restart,
+// a repeat of the sound; not a join told only by bytes recurring, nor a Matroska file's Segment), so
+// that digital silence opening the second recording is left to the join's message (silenced_words.hpp).
+struct JoinedRecording {
+    std::string description;
+    std::optional<double> second_starts_s;
+};
+
 // "its first 32 bytes (its header) recur at byte 38334: a second copy of the recording ...": what a
 // refusal of the text of the file at `path` says of a second recording joined to it, or nullopt: its
 // opening bytes recurring (repeated_opening_byte), or a second FLAC stream's header, or, in an MP3, a second
@@ -36,7 +45,7 @@ std::optional<std::uint64_t> repeated_opening_byte(const std::string& path);
 // joined), or a second Ogg stream or Matroska Segment (chained_stream). Asked only where the text's fit
 // is not vouched for (speech_aligner.cpp): the search reads the whole file (a 10 h FLAC is 1 GB), and a
 // join read on as one recording shows as a text that does not fit it.
-std::optional<std::string> describe_joined_copy(const std::string& path);
+std::optional<JoinedRecording> describe_joined_copy(const std::string& path);
 
 // What describe_joined_copy says of an MP3 whose frames start a second bit reservoir
 // (restarted_mp3_stream), or of an Ogg or Matroska file whose second stream follows its first
@@ -44,7 +53,7 @@ std::optional<std::string> describe_joined_copy(const std::string& path);
 // alone, without decoding (a 1 h MP3's 57 MB read in well under a second), so asked of every file that
 // aligns as well: a text that fits the first recording is stretched over the second one too, or
 // aligned over speech the transcript lacks (bench/README.md sessions 39 and 41).
-std::optional<std::string> describe_second_stream(const std::string& path);
+std::optional<JoinedRecording> describe_second_stream(const std::string& path);
 
 }  // namespace talkface::detail
 

@@ -62,6 +62,14 @@ bool meets(const std::vector<Stretch>& stretches, const SilenceRun& run) {
     });
 }
 
+// Whether `run` opens where a second recording joined to the file begins, or holds that time: a
+// recording that opens in digital silence, its first frames' windows reading the zeros up to
+// kStartsWithRunS late.
+bool meets_join(std::optional<double> second_starts_s, const SilenceRun& run) {
+    return second_starts_s && *second_starts_s >= run.start_s - kStartsWithRunS &&
+           *second_starts_s <= run.end_s;
+}
+
 double overlap_s(const Syllable& syllable, const SilenceRun& run) {
     return std::max(0.0, std::min(syllable.end_s, run.end_s) - std::max(syllable.start_s, run.start_s));
 }
@@ -153,11 +161,12 @@ std::optional<std::string> describe_zeros_in_refused_sentence(const FeatureTrack
                                                               const Timeline& transcript,
                                                               const std::string& refusal,
                                                               const std::vector<LostAudio>& lost,
-                                                              const std::vector<CutToZeros>& cuts) {
+                                                              const std::vector<CutToZeros>& cuts,
+                                                              std::optional<double> second_starts_s) {
     const std::optional<NamedSentence> named = sentence_named_in(refusal);
     if (!named || named->sentence >= transcript.sentences.size()) return std::nullopt;
     for (const SilenceRun& run : silence_runs(track, track_start_s)) {
-        if (meets(lost, run) || meets(cuts, run)) continue;
+        if (meets(lost, run) || meets(cuts, run) || meets_join(second_starts_s, run)) continue;
         const SilenceRun on_track{run.start_s - track_start_s, run.end_s - track_start_s};
         if (on_track.start_s < named->start_s + kStartsWithRunS ||
             on_track.end_s > named->end_s - kStartsWithRunS ||
@@ -175,14 +184,15 @@ std::optional<std::string> describe_zeros_in_refused_sentence(const FeatureTrack
 
 std::vector<std::string> describe_silenced_words(const FeatureTrack& track, double track_start_s,
                                                  const Timeline& aligned, const std::vector<LostAudio>& lost,
-                                                 const std::vector<CutToZeros>& cuts) {
+                                                 const std::vector<CutToZeros>& cuts,
+                                                 std::optional<double> second_starts_s) {
     std::vector<std::string> warnings;
     const std::vector<Syllable>& syllables = aligned.syllables;
     if (syllables.size() < 2 * kSyllablesBeside) return warnings;
     const double typical_s = median_length(syllables);
     if (!(typical_s > 0.0)) return warnings;
     for (const SilenceRun& run : silence_runs(track, track_start_s)) {
-        if (meets(lost, run) || meets(cuts, run)) continue;
+        if (meets(lost, run) || meets(cuts, run) || meets_join(second_starts_s, run)) continue;
         const std::size_t after = first_starting_after(syllables, run.start_s + kStartsWithRunS);
         const Side before_side = after == 0 ? Side{} : side_before(syllables, after);
         const Side after_side = after == syllables.size() ? Side{after, after} : side_after(syllables, after);

@@ -45,10 +45,13 @@ constexpr double kEdgeSqueezedShare = 0.4;
 // recording's reading whose frame 0 starts at `track_start_s` of the recording. A run that meets
 // sound its reader could not decode (`lost`, read as silence) is left to the warning that names the
 // damage, and one its reader found cut off mid-wave (`cuts`) to the note that names the cut, which
-// says an editor's silence leaves it too (one warning for one run).
+// says an editor's silence leaves it too (one warning for one run), and one that meets the time a
+// second recording joined to the file begins (`second_starts_s`, describe_second_stream's: a chained
+// Ogg file's second recording opening in zeros) to the join's.
 std::vector<std::string> describe_silenced_words(const FeatureTrack& track, double track_start_s,
                                                  const Timeline& aligned, const std::vector<LostAudio>& lost,
-                                                 const std::vector<CutToZeros>& cuts);
+                                                 const std::vector<CutToZeros>& cuts,
+                                                 std::optional<double> second_starts_s);
 
 // A run of digital silence inside a refused sentence, in syllables (its span shared evenly among
 // them): this near a pause its text marks, it may be that pause recorded as exact zeros (h-clean's
@@ -64,13 +67,14 @@ constexpr double kLeastSyllablesSilenced = 2.5;
 // it names, kLeastSyllablesSilenced long, away from the pauses its text marks: a word an editor silenced
 // while the text keeps it leaves syllables with no sound, and a sentence with four such was mostly refused
 // ("does not sound like its text", 10 of 15 in bench/README.md session 40) with no word of the zeros. nullopt
-// where no such run lies there. Runs meeting `lost` or `cuts` (times of the recording, whose `track_start_s`
-// is the track's frame 0) are named by their own messages.
+// where no such run lies there. Runs meeting `lost`, `cuts` or `second_starts_s` (times of the recording,
+// whose `track_start_s` is the track's frame 0) are named by their own messages.
 std::optional<std::string> describe_zeros_in_refused_sentence(const FeatureTrack& track, double track_start_s,
                                                               const Timeline& transcript,
                                                               const std::string& refusal,
                                                               const std::vector<LostAudio>& lost,
-                                                              const std::vector<CutToZeros>& cuts);
+                                                              const std::vector<CutToZeros>& cuts,
+                                                              std::optional<double> second_starts_s);
 
 }  // namespace talkface::detail
 

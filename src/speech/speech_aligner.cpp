@@ -359,10 +359,11 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
             if (first_refusal) result = std::move(*other_alignment);
         }
     } catch (const AlignmentError& error) {
-        if (const auto joined = joined_copy()) notes.insert(0, " (the file: " + *joined + ")");
-        if (const auto zeros =
-                describe_zeros_in_refused_sentence(track, silence_skipped_s, transcript, error.what(),
-                                                   source->lost_audio(), source->cuts_to_zeros()))
+        const auto joined = joined_copy();
+        if (joined) notes.insert(0, " (the file: " + joined->description + ")");
+        if (const auto zeros = describe_zeros_in_refused_sentence(
+                track, silence_skipped_s, transcript, error.what(), source->lost_audio(),
+                source->cuts_to_zeros(), joined ? joined->second_starts_s : std::nullopt))
             notes += " (" + *zeros + ")";
         if (silence_skipped > 0)
             notes += " (its times count from " + format_fixed(silence_skipped_s, 3) +
@@ -378,10 +379,11 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
     // file's Segment's) is asked of every file.
     const auto joined =
         is_voted ? (file_path.empty() ? std::nullopt : describe_second_stream(file_path)) : joined_copy();
-    if (joined) result.warnings.push_back(source->name() + ": " + *joined);
+    if (joined) result.warnings.push_back(source->name() + ": " + joined->description);
     for (const std::string& note : source->notes()) result.warnings.push_back(source->name() + ": " + note);
-    for (const std::string& silenced : describe_silenced_words(track, silence_skipped_s, result,
-                                                               source->lost_audio(), source->cuts_to_zeros()))
+    for (const std::string& silenced :
+         describe_silenced_words(track, silence_skipped_s, result, source->lost_audio(),
+                                 source->cuts_to_zeros(), joined ? joined->second_starts_s : std::nullopt))
         result.warnings.push_back(source->name() + ": " + silenced);
     if (unconfirmable && options.check != CheckMode::off)
         result.warnings.push_back("the transcript cannot be checked against the audio: " + *unconfirmable);

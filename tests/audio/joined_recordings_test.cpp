@@ -347,6 +347,25 @@ TEST_SUITE("joined recordings") {
                       warnings[0]);
     }
 
+    TEST_CASE(
+        "the digital silence a chained Ogg file's second recording opens with is the join's, not a "
+        "silenced word's") {
+        // Read on through the join, the text is refused over both recordings, and the second's opening
+        // 2 s of zeros lay inside its sentence: they were named as a word an editor silenced as well.
+        const std::string options = "-c:a libopus -b:a 24k -fflags +bitexact -flags:a +bitexact -f ogg";
+        const std::string one = ffmpeg_made("one_sentence_opus.ogg", options);
+        const std::string silence_first = ffmpeg_made(
+            "silence_then_one_sentence_opus.ogg", "-af adelay=2000:all=1 " + options + " -serial_offset 7");
+        const std::string refusal =
+            refusal_of_one_sentence(joined("opus_joined_silence_first.ogg", one, silence_first));
+        CHECK_MESSAGE(
+            refusal.find("(the file: a second Ogg stream (its own header pages, which open a recording) "
+                         "starts at byte " +
+                         std::to_string(file_bytes(one)) + ", where the first ends (3.") != std::string::npos,
+            refusal);
+        CHECK_MESSAGE(refusal.find("is digital silence") == std::string::npos, refusal);
+    }
+
     TEST_CASE("a WebM file joined to another is named by its second Segment where the text fits the first") {
         const auto [one, warnings] = opus_joined_to_backwards("webm");
         REQUIRE(warnings.size() == 1);

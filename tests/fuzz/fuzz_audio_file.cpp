@@ -29,7 +29,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
     }
     // The search a refusal asks for (speech_aligner.cpp): any bytes, to their end.
-    if (const auto joined = talkface::detail::describe_joined_copy(path); joined && joined->empty())
+    if (const auto joined = talkface::detail::describe_joined_copy(path);
+        joined && joined->description.empty())
         std::abort();
     try {
         const auto source = talkface::detail::open_audio_file(path);
