@@ -216,6 +216,18 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("记得") == "ji4 de5");
     }
 
+    TEST_CASE("a diamond, a drill and a backpack take the tone of the noun, not of the verb's") {
+        CHECK(pinyin("这颗钻石很贵") == "zhe4 ke1 zuan4 shi2 hen3 gui4");
+        CHECK(pinyin("鑽戒") == "zuan4 jie4");
+        CHECK(pinyin("换个钻头") == "huan4 ge4 zuan4 tou2");
+        CHECK(pinyin("一把電鑽") == "yi1 ba3 dian4 zuan4");
+        CHECK(pinyin("我的背包呢") == "wo3 de5 bei1 bao1 ne5");
+        // The verbs keep theirs: to drill, to memorise, the back.
+        CHECK(pinyin("钻研") == "zuan1 yan2");
+        CHECK(pinyin("背书") == "bei4 shu1");
+        CHECK(pinyin("后背") == "hou4 bei4");
+    }
+
     TEST_CASE(
         "particles are light, and a suffix is light after a word's first character, full at its start") {
         CHECK(pinyin("我们的") == "wo3 men5 de5");
