@@ -284,7 +284,13 @@ void append_closing_words(const std::vector<CodePoint>& text, const Unit* unit, 
             form.words += text[end].text;
             ++end;
         }
-        form.words += currency->after;
+        // A writer may name the money after the sign's amount as well (¥23.5元, NT$150元, $5美元, ¥100块):
+        // it is said once, the word the text has (session 42: 二十三点五元元).
+        constexpr std::string_view kMoneyWords[] = {"元",     "块",     "塊",     "圆",   "圓",   "美元",
+                                                    "美金",   "港元",   "港币",   "港幣", "欧元", "歐元",
+                                                    "英镑",   "英鎊",   "日元",   "日圆", "日圓", "人民币",
+                                                    "人民幣", "新台币", "新台幣", "台币", "台幣", "新加坡元"};
+        if (!starts_with_any(text_after(text, end), kMoneyWords)) form.words += currency->after;
     }
     if (currency == nullptr && unit == nullptr) form.words += count_over_words(text, end);
 }

@@ -2945,4 +2945,20 @@ TEST_SUITE("written forms") {
             {"一把+12的椅子", "一把正十二的椅子"},
         });
     }
+
+    TEST_CASE("a money word written after a currency sign's amount is said once") {
+        // Each row but the limits fails on main 2d7215e (text18's probe of dev44's kinds): 二十三点五元元.
+        check_cases({
+            {"只要¥23.5元", "只要二十三点五元"},
+            {"NT$150元", "新台币一百五十元"},
+            {"HK$20港元", "二十港元"},
+            {"$5美元", "五美元"},
+            {"花了¥100块钱", "花了一百块钱"},
+            {"¥100万元", "一百万元"},
+            // The limits: the sign alone says its money's word, after a magnitude too.
+            {"¥30", "三十元"},
+            {"$5万", "五万美元"},
+            {"¥2", "两元"},
+        });
+    }
 }
