@@ -341,6 +341,17 @@ void keep_syllables_in_bound(SentenceChain& chain) {
         hold(chain.states.back(), chain.searched.end_frame - bound.end_frame);
 }
 
+// The frames from the first of `a` and `b` to the end of the later.
+FrameSpan spanning(const FrameSpan& a, const FrameSpan& b) {
+    return {std::min(a.first_frame, b.first_frame), std::max(a.end_frame, b.end_frame)};
+}
+
+// Sentence k's span of a cut's optional per-sentence spans (SentenceCut::limits, syllable_bounds):
+// every frame where the cut sets none.
+FrameSpan sentence_span_or_all(const std::vector<FrameSpan>& spans, std::size_t k) {
+    return spans.empty() ? FrameSpan{0, std::numeric_limits<std::size_t>::max()} : spans[k];
+}
+
 }  // namespace
 
 std::vector<SentenceChain> group_chains(const Timeline& transcript, const SentenceCut& cut,
@@ -356,21 +367,15 @@ std::vector<SentenceChain> group_chains(const Timeline& transcript, const Senten
                 chains.emplace_back();
                 chains.back().first_sentence = k;
                 chains.back().speech = spans[k];
-                chains.back().limit = cut.limits.empty() ? FrameSpan{0, std::numeric_limits<std::size_t>::max()} : cut.limits[k];
-                chains.back().syllable_bound = cut.syllable_bounds.empty()
-                                                   ? FrameSpan{0, std::numeric_limits<std::size_t>::max()}
-                                                   : cut.syllable_bounds[k];
+                chains.back().limit = sentence_span_or_all(cut.limits, k);
+                chains.back().syllable_bound = sentence_span_or_all(cut.syllable_bounds, k);
             }
             SentenceChain& block = chains.back();
             block.end_sentence = k + 1;
-            block.speech = {std::min(block.speech.first_frame, spans[k].first_frame), std::max(block.speech.end_frame, spans[k].end_frame)};
-            if (!cut.limits.empty())
-                block.limit = {std::min(block.limit.first_frame, cut.limits[k].first_frame),
-                               std::max(block.limit.end_frame, cut.limits[k].end_frame)};
-            if (!cut.syllable_bounds.empty())
-                block.syllable_bound = {
-                    std::min(block.syllable_bound.first_frame, cut.syllable_bounds[k].first_frame),
-                    std::max(block.syllable_bound.end_frame, cut.syllable_bounds[k].end_frame)};
+            block.speech = spanning(block.speech, spans[k]);
+            block.limit = spanning(block.limit, sentence_span_or_all(cut.limits, k));
+            block.syllable_bound =
+                spanning(block.syllable_bound, sentence_span_or_all(cut.syllable_bounds, k));
             continues_block = cut.runs_on[k];
         }
         chains.back().syllables.push_back(&transcript.syllables[i]);
