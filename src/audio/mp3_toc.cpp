@@ -141,18 +141,30 @@ double Mp3Toc::sample_at(std::int64_t file_byte) const {
     return low.sample + within * (high.sample - low.sample);
 }
 
+namespace {
+
+// Where a Xing or Info tag stands in a frame: after its header, its CRC and its side information.
+std::size_t xing_tag_at(const Mp3FrameHeader& header) {
+    return 4 + (header.has_crc ? 2 : 0) + mp3_side_info_bytes(header);
+}
+
+bool is_xing_tag_at(std::string_view frame, std::size_t at) {
+    const std::string_view tag = frame.substr(std::min(at, frame.size()), 4);
+    return tag == "Xing" || tag == "Info";
+}
+
+}  // namespace
+
 bool is_mp3_tag_frame(std::string_view frame, const Mp3FrameHeader& header) {
     constexpr std::size_t kVbriAt = 4 + 32;  // a VBRI tag follows the header 32 bytes on
-    const std::size_t tag_at = 4 + (header.has_crc ? 2 : 0) + mp3_side_info_bytes(header);
-    const std::string_view tag = frame.substr(std::min(tag_at, frame.size()), 4);
-    return tag == "Xing" || tag == "Info" || frame.substr(std::min(kVbriAt, frame.size()), 4) == "VBRI";
+    return is_xing_tag_at(frame, xing_tag_at(header)) ||
+           frame.substr(std::min(kVbriAt, frame.size()), 4) == "VBRI";
 }
 
 std::size_t mp3_start_skip_frames(std::string_view frame, const Mp3FrameHeader& header) {
     constexpr std::size_t kDecoderDelayFrames = 529;
-    std::size_t at = 4 + (header.has_crc ? 2 : 0) + mp3_side_info_bytes(header);
-    const std::string_view tag = frame.substr(std::min(at, frame.size()), 4);
-    if ((tag != "Xing" && tag != "Info") || frame.size() < at + 8) return kUntaggedMp3DelayFrames;
+    std::size_t at = xing_tag_at(header);
+    if (!is_xing_tag_at(frame, at) || frame.size() < at + 8) return kUntaggedMp3DelayFrames;
     // The Xing fields that follow its flags (frames, bytes, table, quality), each there if its flag is.
     const std::uint32_t flags = big_endian(frame, at + 4);
     at += 8;
