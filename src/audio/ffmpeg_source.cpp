@@ -1372,7 +1372,7 @@ private:
     // An MP3 packet that is a recording's header frame (is_mp3_tag_frame), its ID3 tag before it
     // (FFmpeg's parser joins the tag to the frame): the first recording's own is read as its header,
     // and one later is a second recording's (`cat` of two files FFmpeg's LAME wrote), which the
-    // decoder refuses, having no sound in it. The join is named apart (describe_restarted_mp3); the
+    // decoder refuses, having no sound in it. The join is named apart (describe_second_stream); the
     // frame was called damaged, "0.036 s of its sound could not be decoded", beside it.
     bool is_mp3_tag_packet(const AVPacket& packet) const {
         if (stream_->codecpar->codec_id != AV_CODEC_ID_MP3 || packet.data == nullptr || packet.size < 4)
