@@ -62,7 +62,7 @@ bool names_item_level(const std::vector<CodePoint>& text, std::size_t start) {
     auto end = start + 1;
     while (is_digit_at(text, end)) ++end;
     const auto after = value_at(text, end);
-    if (after == '.' || after == '%' || is_digit_at(text, end) || is_ascii_letter(after)) return false;
+    if (after == '.' || after == '%' || is_ascii_letter(after)) return false;
     if (contains_any(text_before(text, start, true), kItemsAndUpgrades)) return true;
     return after == U'的' && starts_with_any(text_after(text, end + 1), kItemsAndUpgrades);
 }
