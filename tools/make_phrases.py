@@ -132,7 +132,7 @@ def add_words(simplified, costs, additions):
         simplified[word] = [reading[:-1] for reading in readings]
 
 
-def to_traditional(phrases, config):
+def opencc_convert(phrases, config):
     """OpenCC over the whole list at once, one phrase per line (phrase-level conversion)."""
     result = subprocess.run(["opencc", "-c", config], input="\n".join(phrases) + "\n",
                             capture_output=True, text=True, check=True)
@@ -142,16 +142,15 @@ def to_traditional(phrases, config):
     return converted
 
 
-def numbered_reading(character, toneless, unihan, fallback_character, after_first):
+def numbered_reading(character, toneless, orders, fallback_character, after_first):
     """The character's most frequent full reading with this toneless spelling; its light one if
     it has no full one, if it is a particle (make_readings.LIGHT_PARTICLES: 好吧, 是吗, 除了; 酒吧
     and 干吗 are in phrase_additions.tsv), or if it is a suffix (make_readings.LIGHT_SUFFIXES)
     after the word's first character (桌子, 我们, 觉得; 子女 and 得到 keep the full tone). A
     Traditional form without readings borrows its Simplified form's."""
     for source in (character, fallback_character):
-        if source in unihan:
-            spelled = [reading for reading in make_readings.ordered_readings(source, unihan[source])
-                       if reading[:-1] == toneless]
+        if source in orders:
+            spelled = [reading for reading in orders[source] if reading[:-1] == toneless]
             full = [reading for reading in spelled if not reading.endswith("5")]
             light = [reading for reading in spelled if reading.endswith("5")]
             if light and (not full or source in make_readings.LIGHT_PARTICLES or
@@ -179,6 +178,7 @@ def with_known_words(word, readings, additions):
 
 def main():
     unihan = make_readings.load_unihan()
+    orders = make_readings.reading_orders(unihan)
     rows = read_android_db()
     decode, initials, finals = decode_ids(rows, unihan)
     print(f"make_phrases: decoded {len(initials)} initial ids, {len(finals)} final ids")
@@ -202,10 +202,22 @@ def main():
     words = sorted(simplified, key=lambda phrase: (costs[phrase], phrase))
     forms = [(word, word) for word in words]
     for config in ("s2t.json", "s2tw.json"):
-        forms.extend(zip(to_traditional(words, config), words))
+        forms.extend(zip(opencc_convert(words, config), words))
 
     def first_reading(character):
-        return make_readings.ordered_readings(character, unihan[character])[0] if character in unihan else None
+        return orders[character][0] if character in orders else None
+
+    # A Traditional character the Simplified list also holds, as a rare entry of its own (於 1147, 長
+    # 1332), is written as often as its Simplified form (于 731, 长 876): it takes that form's cost,
+    # or Traditional text is cut as if its commonest characters were rare (請家長於 read 家 長於). A form
+    # Simplified text writes too (著, 瞭) keeps its own.
+    converted = sorted({form for form, source in forms if form != source and len(form) == len(source)})
+    traditional_only = {form for form, back in zip(converted, opencc_convert(converted, "t2s.json"))
+                        if back != form}
+    simplified_form_cost = {}
+    for form, source in forms:
+        if form in traditional_only and form != source:
+            simplified_form_cost[form] = min(costs[source], simplified_form_cost.get(form, costs[source]))
 
     table = {}
     unreadable = 0
@@ -222,7 +234,7 @@ def main():
         if source in additions:
             readings = additions[source]
         else:
-            readings = [numbered_reading(c, s, unihan, f, k > 0)
+            readings = [numbered_reading(c, s, orders, f, k > 0)
                         for k, (c, s, f) in enumerate(zip(form, syllables, source))]
             if None in readings and polyphonic:
                 unreadable += 1  # pyzy reads a character in a way no Unihan field knows: not trusted
@@ -232,7 +244,7 @@ def main():
         as_characters = not polyphonic and readings == [first_reading(c) for c in form]
         if len(form) == 1 or None in readings or as_characters:
             readings = []
-        table[form] = (costs[source], readings)
+        table[form] = (min(costs[source], simplified_form_cost.get(form, costs[source])), readings)
     lines = [f"{form}\t{cost}" + (f"\t{' '.join(readings)}" if readings else "")
              for form, (cost, readings) in sorted(table.items())]
     embed_text.write_cpp(

@@ -9,13 +9,15 @@ Reading order per character: kHanyuPinlu by its corpus frequency (the only field
 then kMandarin (first value: zh-Hans; second: zh-Hant), then the dictionaries kTGHZ2013,
 kXHC1983, kHanyuPinyin in the order they list readings; a light tone (5) after the full ones,
 except for the particles and suffixes below. The first reading is what a character gets when no
-phrase covers it.
+phrase covers it. A Traditional character whose Simplified form (OpenCC t2s, Debian opencc, Apache
+2.0) is another character leads with a reading it shares with that form (see reading_orders).
 """
 
 import bz2
 import collections
 import os
 import re
+import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -58,7 +60,10 @@ LIGHT_FIRST = LIGHT_PARTICLES | LIGHT_SUFFIXES
 # the phrase list reads themselves, as it reads the verb's common forms (长了 长得 长出 长满 长高 长着);
 # what is left uncovered is mostly the adjective (友谊长存, 这条路长约, 长袖), and the 2013 standard
 # dictionary (kTGHZ2013) lists cháng first. The list's words keep their readings either way.
-FIRST_BY_USAGE = {"长": "chang2", "長": "chang2"}
+# 仆: pú (仆人 公仆 女仆 奴仆 风尘仆仆) leads pū, which is 前仆后继 (phrase_additions.tsv) and 仆倒. 瞭: liǎo (瞭解
+# 明瞭 一目瞭然, Traditional text's) leads the liào that kTGHZ2013 gives alone, Simplified text keeping 瞭 only
+# for 瞭望 (phrase_additions.tsv) and writing the others 了.
+FIRST_BY_USAGE = {"长": "chang2", "長": "chang2", "仆": "pu2", "瞭": "liao3"}
 
 
 def _field_readings(field, value):
@@ -127,6 +132,37 @@ def ordered_readings(character, fields):
     return full + light if full else readings
 
 
+def reading_orders(table):
+    """{character: ordered_readings} for every character of the table. A Traditional character that
+    Simplified text writes as another character (乾 干, 徵 征, 鉻 铬) and whose first reading that
+    character never has leads with the first of its readings that it has: the first one is its own,
+    rarer sense, which the Simplified fields (kMandarin's zh-Hans value, kTGHZ2013) list alone (乾 qián
+    of 乾隆 before gān "dry", 徵 zhǐ the note before zhēng, 鉻 luò before the element's gè), while
+    Traditional text writes it mostly in the sense the Simplified form took over. Not where the 2013
+    standard dictionary gives that first reading and kMandarin none apart for Traditional text: the
+    character is a Simplified one of its own in it, read so in both scripts (吒 zhā of 哪吒, 苧 níng)."""
+    orders = {character: ordered_readings(character, fields) for character, fields in table.items()}
+    several = sorted(character for character, readings in orders.items() if len(readings) > 1)
+    result = subprocess.run(["opencc", "-c", "t2s.json"], input="\n".join(several) + "\n",
+                            capture_output=True, text=True, check=True)
+    simplified = result.stdout.split("\n")[:len(several)]
+    if len(simplified) != len(several):
+        sys.exit(f"make_readings: opencc t2s returned {len(simplified)} lines for {len(several)}")
+    for character, form in zip(several, simplified):
+        if form == character or form not in orders or character in LIGHT_FIRST:
+            continue
+        readings, shared = orders[character], orders[form]
+        fields = table[character]
+        standard = readings[0] in fields.get("kTGHZ2013", []) and len(fields.get("kMandarin", [])) < 2
+        if readings[0] in shared or standard:
+            continue
+        lead = next((reading for reading in readings if reading in shared and not reading.endswith("5")), None)
+        if lead is not None:
+            readings.remove(lead)
+            readings.insert(0, lead)
+    return orders
+
+
 def modern_toneless(fields):
     """The distinct toneless readings modern sources give; all sources if none does."""
     names = [field for field in MODERN_FIELDS if field in fields] or ["kHanyuPinyin"]
@@ -142,8 +178,9 @@ def main():
     table = load_unihan()
     syllables = set()
     lines = []
+    orders = reading_orders(table)
     for character in sorted(table):
-        readings = ordered_readings(character, table[character])
+        readings = orders[character]
         syllables.update(reading[:-1] for reading in readings)
         lines.append(f"{character}\t{' '.join(readings)}")
     illegal = sorted(s for s in syllables if not pinyin_rules.is_legal_toneless(s))

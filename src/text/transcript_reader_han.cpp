@@ -1,6 +1,6 @@
 // The transcript reader's runs of Chinese characters: each run cut into its likeliest words and read by
-// the tables, a particle or a return verb deciding a reading in context, and a written form's words read
-// so.
+// the tables, a particle, a return verb or a title's head deciding a reading in context, and a written
+// form's words read so.
 #include "text/transcript_reader.hpp"
 
 #include <string>
@@ -14,6 +14,7 @@
 #include "text/latin_words.hpp"
 #include "text/return_verb.hpp"
 #include "text/script_variant.hpp"
+#include "text/title_head.hpp"
 #include "text/word_segmentation.hpp"
 
 namespace talkface::detail {
@@ -39,6 +40,7 @@ std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharact
             w + 1 < lengths.size() && lengths[w + 1] == 1 ? characters[first + length] : std::string_view();
         auto in_context = detail::reading_before_particle(word, next_word);
         if (in_context.empty()) in_context = detail::return_verb_reading(words, w, ends_clause);
+        if (in_context.empty()) in_context = detail::title_head_reading(words, w);
         for (std::size_t k = 0; k < length; ++k) {
             const auto& character = run[first + k];
             std::string pinyin = character.fix;

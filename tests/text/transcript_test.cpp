@@ -279,6 +279,39 @@ TEST_SUITE("transcript") {
         CHECK(toneless("她是家里的长女") == "ta shi jia li de zhang nv");
     }
 
+    TEST_CASE("长 right after a place or a body it heads is zhang3, where the cut leaves it alone") {
+        // Failed on main 6db43b6: the list's 台北市 and 广东省 cut the title 市长 省长 in two.
+        CHECK(pinyin("台北市长") == "tai2 bei3 shi4 zhang3");
+        CHECK(pinyin("臺北市長今日宣布") == "tai2 bei3 shi4 zhang3 jin1 ri4 xuan1 bu4");
+        CHECK(pinyin("广东省长视察") == "guang3 dong1 sheng3 zhang3 shi4 cha2");
+        CHECK(toneless("派出所长来了") == "pai chu suo zhang lai le");
+        // A word 长 starts keeps its own reading, and a length keeps chang2.
+        CHECK(toneless("北京市长安街") == "bei jing shi chang an jie");
+        CHECK(toneless("这座城市长年下雨") == "zhe zuo cheng shi chang nian xia yu");
+        CHECK(toneless("我在城市长大") == "wo zai cheng shi zhang da");
+        CHECK(toneless("这条路长约三公里") == "zhe tiao lu chang yue san gong li");
+    }
+
+    TEST_CASE("a Traditional character reads in the sense its Simplified form took over") {
+        // Failed on main 6db43b6: Unihan's Simplified fields list 徵 乾 鉻 in their rarer sense alone (the
+        // note zhi3, the qian2 of 乾隆, luo4), and the Traditional forms of common single characters
+        // cost as much as their rare entries in the Simplified list (於 1147 where 于 is 731).
+        CHECK(pinyin("加徵關稅") == "jia1 zheng1 guan1 shui4");
+        CHECK(pinyin("加入乾酵母") == "jia1 ru4 gan1 jiao4 mu3");
+        CHECK(pinyin("鍍鉻") == "du4 ge4");
+        CHECK(pinyin("隔閡") == "ge2 he2");
+        CHECK(pinyin("我很瞭解他") == "wo3 hen3 liao3 jie3 ta1");
+        CHECK(toneless("請家長於週五前繳費") == toneless("请家长于周五前缴费"));
+        CHECK(toneless("請家長於週五前繳費") == "qing jia zhang yu zhou wu qian jiao fei");
+        // The rarer sense stays where a word spells it, and where the character is Simplified's own.
+        CHECK(pinyin("乾隆") == "qian2 long2");
+        CHECK(pinyin("瞭望") == "liao4 wang4");
+        CHECK(pinyin("哪吒") == "ne2 zha1");
+        // 仆 is pu2 (仆人, 公仆) but in 前仆后继.
+        CHECK(pinyin("他是我的仆人") == "ta1 shi4 wo3 de5 pu2 ren2");
+        CHECK(pinyin("前仆后继") == "qian2 pu1 hou4 ji4");
+    }
+
     TEST_CASE("长 of a length's noun and after 这么 or 那么 is chang2 before 的") {
         // Every row but the limits failed on main 7a33214 (session 32, dev29): the phrase list's 长的
         // zhang3 de5 ("grown") took the 长, its noun or adverb left out of the list.
