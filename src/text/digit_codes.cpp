@@ -599,15 +599,16 @@ bool follows_maker_name(const std::vector<CodePoint>& text, std::size_t start) {
 
 namespace {
 
-// Three or more digits after a port's or an error's word (端口改成8080 八零八零, 错误502 五零二, 报错1001),
-// with 是 为 ： or a verb that sets it (改成 改为 设为) between, or an HTTP status (400 to 599) that a page
-// or a server shows (页面显示404 四零四): a code read out, as a tutorial's presenter reads it.
+// Three or more digits after a port's or an error's word (端口改成8080 八零八零, 错误502 五零二, 报错1001,
+// HTTP 404), with 是 为 ： an opening bracket (报错(404); session 43: 四百零四) or a verb that sets it (改成
+// 改为 设为) between, or an HTTP status (400 to 599) that a page or a server shows (页面显示404 四零四): a
+// code read out, as a tutorial's presenter reads it.
 bool names_port_or_error(const std::vector<CodePoint>& text, std::size_t start, const std::string& digits) {
     constexpr std::size_t kFewestDigits = 3;
     if (digits.size() < kFewestDigits) return false;
     auto word_end = start;
-    for (int skipped = 0; skipped < 2 && word_end > 0 && is_one_of(text[word_end - 1].value, U" 是为為：:");
-         ++skipped)
+    for (int skipped = 0;
+         skipped < 2 && word_end > 0 && is_one_of(text[word_end - 1].value, U" 是为為：:(\uFF08"); ++skipped)
         --word_end;
     for (const std::string_view verb : {"改成", "改为", "改為", "设为", "設為", "设置为", "設置為"}) {
         const auto characters = verb.size() / std::string_view("为").size();
@@ -617,8 +618,8 @@ bool names_port_or_error(const std::vector<CodePoint>& text, std::size_t start, 
         }
     }
     const auto word = text_between(text, word_end >= 4 ? word_end - 4 : 0, word_end);
-    if (ends_with_any(
-            word, {"端口", "埠", "错误", "錯誤", "代码", "代碼", "报错", "報錯", "故障", "error", "Error"}))
+    if (ends_with_any(word, {"端口", "埠", "错误", "錯誤", "代码", "代碼", "报错", "報錯", "故障", "error",
+                             "Error", "HTTP"}))
         return true;
     const bool is_status = digits.size() == kFewestDigits && (digits.front() == '4' || digits.front() == '5');
     if (!is_status || !ends_with_any(word, {"显示", "顯示", "提示", "返回", "报", "報", "出现", "出現"}))

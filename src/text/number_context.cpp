@@ -376,7 +376,10 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
     context.is_grade = context.is_model && is_filter_grade(text, start, number.whole);
     context.is_span_of_years = counts_years(text, start, number);
     context.is_service_call = is_service_call(text, start, number.end);
-    context.is_code = sign_words.empty() && currency == nullptr && names_by_its_digits(text, i, number);
+    // A code keeps its minus, as after a code's word (错误代码：-1009 负一零零九): a status an app shows in
+    // brackets (网络不可用(-1009); session 43: 负一千零九) is looked at from its sign.
+    context.is_code = (sign_words.empty() || sign_words == "负") && currency == nullptr &&
+                      names_by_its_digits(text, start, number);
     context.is_frequency = sign_words.empty() && currency == nullptr && follows_station_band(text, start);
     context.is_version = sign_words.empty() && currency == nullptr &&
                          (follows_software_name(text, i) || ends_range_of_versions(text, i));

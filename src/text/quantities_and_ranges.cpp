@@ -1,6 +1,7 @@
 #include "text/quantities_and_ranges.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <optional>
 #include <string_view>
 #include <utility>
@@ -268,6 +269,25 @@ void say_range(const NumberRange& range, const NumberContext& context, const Cur
     }
 }
 
+// The money words a writer may put after a currency sign's amount as well: the plain ones (¥23.5元, ¥100块)
+// first, then a currency's own name (NT$150新台币, $5 美元).
+constexpr std::string_view kMoneyWords[] = {"元",     "块",     "塊",     "圆",   "圓",   "美元",
+                                            "美金",   "港元",   "港币",   "港幣", "欧元", "歐元",
+                                            "英镑",   "英鎊",   "日元",   "日圆", "日圓", "人民币",
+                                            "人民幣", "新台币", "新台幣", "台币", "台幣", "新加坡元"};
+constexpr std::size_t kPlainMoneyWords = 5;
+
+// Which of kMoneyWords the text writes right after an amount at text[end], past a magnitude (NT$3万新台币)
+// and one space ($5 美元); nullptr where none.
+const std::string_view* money_word_after(const std::vector<CodePoint>& text, std::size_t end) {
+    if (is_one_of(value_at(text, end), U"万萬亿億千")) ++end;
+    if (value_at(text, end) == ' ') ++end;
+    const auto after = text_after(text, end);
+    for (const auto& word : kMoneyWords)
+        if (starts_with(after, word)) return &word;
+    return nullptr;
+}
+
 // What closes a quantity, `end` moved past it: a strength's ratio after its unit, a currency's magnitude
 // and name after the number, or the + of a count "or more" where neither a unit nor a currency follows.
 void append_closing_words(const std::vector<CodePoint>& text, const Unit* unit, const Currency* currency,
@@ -286,11 +306,7 @@ void append_closing_words(const std::vector<CodePoint>& text, const Unit* unit, 
         }
         // A writer may name the money after the sign's amount as well (¥23.5元, NT$150元, $5美元, ¥100块):
         // it is said once, the word the text has (session 42: 二十三点五元元).
-        constexpr std::string_view kMoneyWords[] = {"元",     "块",     "塊",     "圆",   "圓",   "美元",
-                                                    "美金",   "港元",   "港币",   "港幣", "欧元", "歐元",
-                                                    "英镑",   "英鎊",   "日元",   "日圆", "日圓", "人民币",
-                                                    "人民幣", "新台币", "新台幣", "台币", "台幣", "新加坡元"};
-        if (!starts_with_any(text_after(text, end), kMoneyWords)) form.words += currency->after;
+        if (money_word_after(text, end) == nullptr) form.words += currency->after;
     }
     if (currency == nullptr && unit == nullptr) form.words += count_over_words(text, end);
 }
@@ -409,6 +425,15 @@ SpokenForm read_quantity(const std::vector<CodePoint>& text, std::size_t start, 
         price.has_point = !price.fraction.empty();
     }
 
+    // A currency's name written after the amount is said there alone (NT$150新台币 一百五十新台币; session
+    // 42: 新台币一百五十新台币), where the sign's word before the amount would say it twice.
+    Currency named_after{};
+    if (const auto* word = currency == nullptr ? nullptr : money_word_after(text, end);
+        word != nullptr && word >= std::begin(kMoneyWords) + kPlainMoneyWords) {
+        named_after = *currency;
+        named_after.before = "";
+        currency = &named_after;
+    }
     say_range(range, context, currency, is_percent, is_per_mille, form, end);
     if (unit != nullptr) end = unit_end;
     // A unit per another (7.0mmol/L 七点零毫摩尔每升, 35μg/m³ 三十五微克每立方米, 80mg/100ml 八十毫克每

@@ -2961,4 +2961,34 @@ TEST_SUITE("written forms") {
             {"¥2", "两元"},
         });
     }
+
+    TEST_CASE(
+        "a currency's name written after the sign's amount is said there alone, a space between or none") {
+        // Each row but the limits fails on main 6db43b6: 新台币一百五十新台币, 五美元美元.
+        check_cases({
+            {"售价NT$150新台币", "售价一百五十新台币"},
+            {"NT$3万新台币", "三万新台币"},
+            {"只要$5 美元", "只要五美元"},
+            {"US$20 美金", "二十美金"},
+            {"价格¥100 元", "价格一百元"},
+            // The limits: a plain money word keeps the sign's name before the amount, and no word after
+            // the amount leaves the sign's.
+            {"NT$150元", "新台币一百五十元"},
+            {"NT$150", "新台币一百五十元"},
+        });
+    }
+
+    TEST_CASE("an error code in brackets is said digit by digit, its minus kept") {
+        // Each row but the limits fails on main 6db43b6: 负一千零九, 四百零四, 五百零二.
+        check_cases({
+            {"网络不可用(-1009)", "网络不可用负一零零九"},
+            {"页面报错(404)", "页面报错四零四"},
+            {"提示错误（502）", "提示错误五零二"},
+            {"HTTP 404", "ai qi ti ti pi四零四"},
+            // The limits: a bracketed amount with its unit or magnitude counts, a short signed number too.
+            {"海拔(-1200米)", "海拔负一千二百米"},
+            {"净利润(-1500万)", "净利润负一千五百万"},
+            {"出现错误（-2）", "出现错误负二"},
+        });
+    }
 }
