@@ -274,11 +274,12 @@ bool names_year_before_word(const std::vector<CodePoint>& text, const WrittenNum
         !is_digit_at(text, number.end + 2))
         return true;
     const auto names_year_from = [&](std::size_t at) {
-        return starts_with_any(text_between(text, at, at + 3),
-                               {"财年", "財年", "赛季", "賽季", "款", "届", "屆", "级", "級", "版", "春晚",
-                                "世界杯", "奥运", "奧運", "冬奥", "冬奧", "亚运", "亞運", "全运", "全運",
-                                // An exam's year (#2024高考#, 2025考研, 2026国考; session 17).
-                                "高考", "中考", "考研", "国考", "國考", "学测", "學測"});
+        return starts_with_any(
+            text_between(text, at, at + 3),
+            {"财年", "財年", "赛季", "賽季", "款", "届", "屆", "级", "級", "版", "春晚", "世界杯", "世界盃",
+             "奥运", "奧運", "冬奥", "冬奧", "亚运", "亞運", "全运", "全運",
+             // An exam's year (#2024高考#, 2025考研, 2026国考; session 17).
+             "高考", "中考", "考研", "国考", "國考", "学测", "學測"});
     };
     if (names_year_from(number.end)) return true;
     // A listing's or a league's new or season's one between the year and its word (2024新款, 2024秋冬新款,

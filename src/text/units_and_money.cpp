@@ -50,10 +50,11 @@ constexpr Unit kUnits[] = {
     // 一百万开尔文, is_kelvin_at).
     {"N·m", "牛米"}, {"N⋅m", "牛米"}, {"Nm", "牛米"}, {"nits", "尼特"}, {"nit", "尼特"},
     // A length's unit in characters squared or cubed by its sign (3.5厘米² 三点五平方厘米, as cm² is said; the
-    // sign after the word was skipped with a warning): the power is said before the unit it raises.
+    // sign after the word was skipped with a warning): the power is said before the unit it raises. 釐米 is
+    // Hong Kong's Traditional spelling of 厘米 (3.5釐米²; session 43: the sign skipped).
     {"米²", "平方米"}, {"厘米²", "平方厘米"}, {"毫米²", "平方毫米"}, {"分米²", "平方分米"},
     {"千米²", "平方千米"}, {"公里²", "平方公里"}, {"米³", "立方米"}, {"厘米³", "立方厘米"},
-    {"毫米³", "立方毫米"}, {"分米³", "立方分米"},
+    {"毫米³", "立方毫米"}, {"分米³", "立方分米"}, {"釐米²", "平方釐米"}, {"釐米³", "立方釐米"},
     // Session 33: a capacitor's microfarads, nanofarads and picofarads as a physics lesson names them (47μF
     // 四十七微法; μF was μ unsaid and the letter F), and bits per second written small without a prefix
     // (20bps 二十比特每秒, as kbps is 千比特每秒) where they are no rate's basis points (is_basis_points_at).

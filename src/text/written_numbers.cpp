@@ -60,10 +60,12 @@ std::optional<SpokenForm> read_unsigned_form(const std::vector<CodePoint>& text,
     if (auto dotted = read_dotted_groups(text, i)) return dotted;
     if (auto month = read_year_and_month(text, start, number)) return month;
     if (auto floor = read_floor(text, i, number)) return floor;
+    // A game's record before a date: Taiwan's dates are written with a year of the Republic of two digits
+    // too (KDA 12/3/5 十二杠三杠五; session 43: 十二年三月五日 in a Traditional transcript).
+    if (auto record = read_game_record(text, start, number)) return record;
     if (auto date = read_numeric_date(text, number)) return date;
     if (auto season = read_season(text, number)) return season;
     if (auto figure = read_figure_number(text, start, number)) return figure;
-    if (auto record = read_game_record(text, start, number)) return record;
     if (auto height = read_feet_and_inches(text, start, number)) return height;
     if (auto time = read_primed_time(text, number)) {
         time->words += per_unit_words(text, time->end);

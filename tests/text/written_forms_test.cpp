@@ -2991,4 +2991,19 @@ TEST_SUITE("written forms") {
             {"出现错误（-2）", "出现错误负二"},
         });
     }
+
+    TEST_CASE(
+        "a Traditional transcript reads a game's record, a World Cup's year and 釐米² as a Simplified one "
+        "does") {
+        // Each row but the limits fails on main c1e3848: 十二年三月五日 (a date of the Republic), 兩千零三十,
+        // 三點五釐米 (the sign skipped).
+        check_cases({
+            {"我KDA 12/3/5，這都能輸？", "我 kei di ei十二槓三槓五這都能輸"},
+            {"2030世界盃將在六國舉辦", "二零三零世界盃將在六國舉辦"},
+            {"傷口面積約為3.5釐米²", "傷口面積約為三點五平方釐米"},
+            {"體積為20釐米³", "體積為二十立方釐米"},
+            // The limits: Taiwan's date keeps its year of the Republic.
+            {"繳費期限：99/12/31前", "繳費期限九十九年十二月三十一日前"},
+        });
+    }
 }
