@@ -124,48 +124,221 @@ bool is_cluster_child(std::uint64_t id) {
     return false;
 }
 
-// Where a Segment of unknown size, its children from `at` on, is followed by a second EBML header:
-// its children walked by their IDs and sizes, a Cluster of unknown size by its own children. Reads
-// their headers only; nullopt at the file's end, or at bytes that are no element the Segment holds.
-std::optional<std::uint64_t> after_unknown_segment(FileBlocks& file, std::uint64_t at) {
-    bool is_in_cluster = false;
-    while (true) {
-        const auto id = read_vint(file, at, true);
-        if (!id || id->length > 4) return std::nullopt;
-        if (id->value == kEbmlHeaderElement) return at;
-        is_in_cluster = is_in_cluster && is_cluster_child(id->value);
-        if (!is_in_cluster && !is_segment_child(id->value)) return std::nullopt;
-        const auto size = read_vint(file, at + id->length, false);
-        if (!size) return std::nullopt;
-        at += id->length + size->length;
-        if (size->is_unknown) {
-            if (id->value != kClusterId) return std::nullopt;
-            is_in_cluster = true;
-        } else {
-            at += size->value;
-        }
+// An element's ID, the size of its data (nullopt: unknown) and where its data starts.
+struct Element {
+    std::uint64_t id = 0;
+    std::optional<std::uint64_t> size;
+    std::uint64_t data = 0;
+};
+
+std::optional<Element> read_element(FileBlocks& file, std::uint64_t at) {
+    const auto id = read_vint(file, at, true);
+    if (!id || id->length > 4) return std::nullopt;
+    const auto size = read_vint(file, at + id->length, false);
+    if (!size) return std::nullopt;
+    return Element{id->value, size->is_unknown ? std::nullopt : std::optional<std::uint64_t>(size->value),
+                   at + id->length + size->length};
+}
+
+// An element's data as an unsigned or signed integer (0-8 bytes, most significant first).
+std::uint64_t unsigned_data(FileBlocks& file, const Element& element) {
+    const std::string_view bytes =
+        file.at(element.data, static_cast<std::size_t>(std::min<std::uint64_t>(*element.size, 8)));
+    std::uint64_t value = 0;
+    for (const char byte : bytes) value = value << 8 | static_cast<unsigned char>(byte);
+    return value;
+}
+std::int64_t signed_data(FileBlocks& file, const Element& element) {
+    const std::uint64_t value = unsigned_data(file, element);
+    const unsigned bits = static_cast<unsigned>(std::min<std::uint64_t>(*element.size, 8)) * 8;
+    if (bits == 0 || bits == 64 || (value >> (bits - 1)) == 0) return static_cast<std::int64_t>(value);
+    return static_cast<std::int64_t>(value) - (std::int64_t{1} << bits);
+}
+
+// The children of the element of known size `parent`, each given to `each`.
+template <typename Each>
+void for_each_child(FileBlocks& file, const Element& parent, Each each) {
+    const std::uint64_t end = parent.data + *parent.size;
+    for (std::uint64_t at = parent.data; at < end;) {
+        const auto child = read_element(file, at);
+        if (!child || !child->size) return;
+        each(*child);
+        at = child->data + *child->size;
     }
 }
 
+// The Matroska elements SegmentSound reads: the Segment's Info (its TimestampScale) and Tracks (each
+// TrackEntry's number, type, CodecDelay and CodecPrivate), and a Cluster's Timestamp and blocks (a
+// SimpleBlock, or a BlockGroup's Block, BlockDuration and DiscardPadding).
+constexpr std::uint64_t kInfoId = 0x1549A966;
+constexpr std::uint64_t kTimestampScaleId = 0x2AD7B1;
+constexpr std::uint64_t kTracksId = 0x1654AE6B;
+constexpr std::uint64_t kClusterTimestampId = 0xE7;
+constexpr std::uint64_t kSimpleBlockId = 0xA3;
+constexpr std::uint64_t kBlockGroupId = 0xA0;
+constexpr std::uint64_t kTrackEntryId = 0xAE;
+constexpr std::uint64_t kTrackNumberId = 0xD7;
+constexpr std::uint64_t kTrackTypeId = 0x83;
+constexpr std::uint64_t kCodecDelayId = 0x56AA;
+constexpr std::uint64_t kCodecPrivateId = 0x63A2;
+constexpr std::uint64_t kBlockId = 0xA1;
+constexpr std::uint64_t kBlockDurationId = 0x9B;
+constexpr std::uint64_t kDiscardPaddingId = 0x75A2;
+
+// Where the first Segment's sound ends as the file decodes: its sound track's last block's time and
+// length (a BlockGroup's BlockDuration, or the step from the block before: a codec's frames are of one
+// length), less the end the encoder pads out (DiscardPadding) and the start the decoder drops (Opus's
+// pre-skip, or the track's CodecDelay), on the Segment's clock (TimestampScale, ns a tick).
+class SegmentSound {
+public:
+    // Reads what the clock and the sound track's blocks say from a child of the Segment, or of a Cluster.
+    void read(FileBlocks& file, const Element& element) {
+        if (!element.size) return;
+        if (element.id == kInfoId) {
+            for_each_child(file, element, [&](const Element& child) {
+                if (child.id == kTimestampScaleId) tick_ns_ = unsigned_data(file, child);
+            });
+        } else if (element.id == kTracksId) {
+            read_tracks(file, element);
+        } else if (element.id == kClusterTimestampId) {
+            cluster_ticks_ = signed_data(file, element);
+        } else if (element.id == kSimpleBlockId) {
+            read_block(file, element, std::nullopt, 0);
+        } else if (element.id == kBlockGroupId) {
+            read_block_group(file, element);
+        }
+    }
+
+    // The end in seconds of the decoded sound; 0 where no block of the sound track was read.
+    double end_seconds() const {
+        if (!last_ticks_) return 0.0;
+        std::optional<std::int64_t> length = last_length_ticks_;
+        if (!length && before_last_ticks_) length = *last_ticks_ - *before_last_ticks_;
+        if (!length) return 0.0;
+        const double end_ns = static_cast<double>(*last_ticks_ + *length) * static_cast<double>(tick_ns_) -
+                              static_cast<double>(last_discard_ns_) - codec_delay_ns_;
+        return std::max(0.0, end_ns / 1e9);
+    }
+
+private:
+    // The first sound track's number and the start its decoder drops (TrackEntry: TrackNumber, TrackType
+    // 2, CodecDelay, CodecPrivate). An Opus track's is its OpusHead's pre-skip, which the decoder drops:
+    // FFmpeg's muxer states the CodecDelay of Opus encoded from 16 kHz as 104 samples of 48 kHz (2.2 ms),
+    // the encoder's lookahead counted at its input's rate, where the pre-skip is 312 (6.5 ms).
+    void read_tracks(FileBlocks& file, const Element& tracks) {
+        constexpr std::uint64_t kSoundTrackType = 2;
+        constexpr std::size_t kOpusHeadBytes = 19;
+        for_each_child(file, tracks, [&](const Element& entry) {
+            if (entry.id != kTrackEntryId || sound_track_) return;
+            std::uint64_t number = 0;
+            std::uint64_t type = 0;
+            std::uint64_t delay_ns = 0;
+            std::optional<double> pre_skip_ns;
+            for_each_child(file, entry, [&](const Element& field) {
+                if (field.id == kTrackNumberId) number = unsigned_data(file, field);
+                if (field.id == kTrackTypeId) type = unsigned_data(file, field);
+                if (field.id == kCodecDelayId) delay_ns = unsigned_data(file, field);
+                if (field.id == kCodecPrivateId) {
+                    const StreamClock clock = clock_of(file.at(
+                        field.data,
+                        static_cast<std::size_t>(std::min<std::uint64_t>(*field.size, kOpusHeadBytes))));
+                    if (clock.pre_skip > 0)
+                        pre_skip_ns = static_cast<double>(clock.pre_skip) / clock.rate_hz * 1e9;
+                }
+            });
+            if (type != kSoundTrackType) return;
+            sound_track_ = number;
+            codec_delay_ns_ = pre_skip_ns.value_or(static_cast<double>(delay_ns));
+        });
+    }
+
+    // A BlockGroup: its Block, and the BlockDuration and DiscardPadding beside it.
+    void read_block_group(FileBlocks& file, const Element& group) {
+        std::optional<Element> block;
+        std::optional<std::int64_t> length;
+        std::int64_t discard_ns = 0;
+        for_each_child(file, group, [&](const Element& child) {
+            if (child.id == kBlockId) block = child;
+            if (child.id == kBlockDurationId) length = static_cast<std::int64_t>(unsigned_data(file, child));
+            if (child.id == kDiscardPaddingId) discard_ns = signed_data(file, child);
+        });
+        if (block) read_block(file, *block, length, discard_ns);
+    }
+
+    // A block's track number (a size-like integer) and its time, 2 bytes signed, from its Cluster's.
+    void read_block(FileBlocks& file, const Element& block, std::optional<std::int64_t> length,
+                    std::int64_t discard_ns) {
+        const auto track = read_vint(file, block.data, false);
+        if (!track || !sound_track_ || track->value != *sound_track_) return;
+        const std::string_view time = file.at(block.data + track->length, 2);
+        if (time.size() < 2) return;
+        const auto relative = static_cast<std::int16_t>(static_cast<unsigned char>(time[0]) << 8 |
+                                                        static_cast<unsigned char>(time[1]));
+        before_last_ticks_ = last_ticks_;
+        last_ticks_ = cluster_ticks_ + relative;
+        last_length_ticks_ = length;
+        last_discard_ns_ = discard_ns;
+    }
+
+    std::uint64_t tick_ns_ = 1000000;  // Matroska's default: a millisecond
+    std::optional<std::uint64_t> sound_track_;
+    double codec_delay_ns_ = 0.0;
+    std::int64_t cluster_ticks_ = 0;
+    std::optional<std::int64_t> last_ticks_;
+    std::optional<std::int64_t> before_last_ticks_;
+    std::optional<std::int64_t> last_length_ticks_;
+    std::int64_t last_discard_ns_ = 0;
+};
+
+// The first Segment's children from `at` on, walked by their IDs and sizes, a Cluster's by its own
+// children, each read into `sound`: to `end` (a Segment of known size), or, a Segment of unknown size,
+// to a second EBML header. Reads their headers, and the few fields SegmentSound reads; where the walk
+// ends, or nullopt at the file's end, or at bytes that are no element the Segment holds.
+std::optional<std::uint64_t> walk_segment(FileBlocks& file, std::uint64_t at,
+                                          std::optional<std::uint64_t> end, SegmentSound& sound) {
+    bool is_in_cluster = false;
+    while (!end || at < *end) {
+        const auto id = read_vint(file, at, true);
+        if (!id || id->length > 4) return std::nullopt;
+        if (!end && id->value == kEbmlHeaderElement) return at;
+        const auto element = read_element(file, at);
+        if (!element) return std::nullopt;
+        is_in_cluster = is_in_cluster && is_cluster_child(element->id);
+        if (!is_in_cluster && !is_segment_child(element->id)) return std::nullopt;
+        sound.read(file, *element);
+        at = element->data;
+        if (element->id == kClusterId) {
+            is_in_cluster = true;
+        } else if (element->size) {
+            at += *element->size;
+        } else {
+            return std::nullopt;
+        }
+    }
+    return at;
+}
+
 // A Matroska file's first Segment ending where a second EBML header begins: at its stated size, or,
-// a live recording's Segment of unknown size, after its last child.
+// a live recording's Segment of unknown size, after its last child; with the time its sound ends.
 std::optional<ChainedStream> second_matroska_segment(FileBlocks& file) {
     const auto header_size = read_vint(file, kEbmlHeaderId.size(), false);
     if (!header_size || header_size->is_unknown) return std::nullopt;
     std::uint64_t at = kEbmlHeaderId.size() + header_size->length + header_size->value;
     if (file.at(at, kSegmentId.size()) != kSegmentId) return std::nullopt;
-    at += kSegmentId.size();
-    const auto segment_size = read_vint(file, at, false);
-    if (!segment_size) return std::nullopt;
-    at += segment_size->length;
-    if (segment_size->is_unknown) {
-        const auto end = after_unknown_segment(file, at);
-        if (!end) return std::nullopt;
-        return ChainedStream{ChainedStream::Container::matroska, *end, 0.0, true};
+    const auto segment = read_element(file, at);
+    if (!segment) return std::nullopt;
+    SegmentSound sound;
+    if (segment->size) {
+        const std::uint64_t end = segment->data + *segment->size;
+        if (file.at(end, kEbmlHeaderId.size()) != kEbmlHeaderId) return std::nullopt;
+        // Walked only once a second file is found past it: a single file's walk would read every
+        // block's header of a long recording for nothing.
+        const bool is_walked = walk_segment(file, segment->data, end, sound).has_value();
+        return ChainedStream{ChainedStream::Container::matroska, end, is_walked ? sound.end_seconds() : 0.0};
     }
-    const std::uint64_t end = at + segment_size->value;
-    if (file.at(end, kEbmlHeaderId.size()) != kEbmlHeaderId) return std::nullopt;
-    return ChainedStream{ChainedStream::Container::matroska, end, 0.0};
+    const auto end = walk_segment(file, segment->data, std::nullopt, sound);
+    if (!end) return std::nullopt;
+    return ChainedStream{ChainedStream::Container::matroska, *end, sound.end_seconds(), true};
 }
 
 }  // namespace

@@ -15,9 +15,10 @@
 
 namespace talkface::detail {
 
-// Where a second recording's stream starts: in which container, at which byte, and, in an Ogg file
-// of Vorbis or Opus, after how long a first stream (its last page's granule position; 0 where not
-// known); in a Matroska file, whether the first Segment's size is unknown (a live recording's).
+// Where a second recording's stream starts: in which container, at which byte, and after how long a
+// first stream as the file decodes (0 where not known): in an Ogg file of Vorbis or Opus, its last
+// page's granule position; in a Matroska file, its sound track's last block's end; in a Matroska file,
+// whether the first Segment's size is unknown (a live recording's).
 struct ChainedStream {
     enum class Container { ogg, matroska };
     Container container = Container::ogg;

@@ -178,22 +178,26 @@ std::optional<std::uint64_t> repeated_opening_byte(const std::string& path) {
 std::optional<JoinedRecording> describe_second_stream(const std::string& path) {
     if (const auto chained = chained_stream(path)) {
         const std::string where = " starts at byte " + std::to_string(chained->byte);
-        if (chained->container == ChainedStream::Container::matroska) {
-            const char* segment_end = chained->is_live_segment
-                                          ? ", where the first's Segment, of unknown size (a live "
-                                            "recording's, as a browser writes it), ends"
-                                          : ", where the first's Segment ends";
-            return untimed(
-                "a second Matroska file (its own EBML header and Segment, which open a recording)" + where +
-                segment_end + second_begins_there());
-        }
         const bool is_first_timed = chained->first_seconds > 0.0;
-        const std::string first_end =
-            is_first_timed ? ", where the first ends (" + format_fixed(chained->first_seconds, 3) + " s)"
-                           : std::string();
+        const std::string first_time =
+            is_first_timed ? " (" + format_fixed(chained->first_seconds, 3) + " s)" : std::string();
+        const std::optional<double> second_starts_s =
+            is_first_timed ? std::optional<double>(chained->first_seconds) : std::nullopt;
+        if (chained->container == ChainedStream::Container::matroska) {
+            const std::string segment_end = chained->is_live_segment
+                                                ? ", where the first's Segment, of unknown size (a live "
+                                                  "recording's, as a browser writes it), ends" +
+                                                      first_time
+                                                : ", where the first's Segment ends" + first_time;
+            return JoinedRecording{
+                "a second Matroska file (its own EBML header and Segment, which open a recording)" + where +
+                    segment_end + second_begins_there(),
+                second_starts_s};
+        }
+        const std::string first_end = is_first_timed ? ", where the first ends" + first_time : std::string();
         return JoinedRecording{"a second Ogg stream (its own header pages, which open a recording)" + where +
                                    first_end + second_begins_there(),
-                               is_first_timed ? std::optional<double>(chained->first_seconds) : std::nullopt};
+                               second_starts_s};
     }
     const auto restart = restarted_mp3_stream(path);
     if (!restart) return std::nullopt;
@@ -210,9 +214,15 @@ std::optional<JoinedRecording> describe_second_stream(const std::string& path) {
 
 std::optional<JoinedRecording> describe_joined_copy(const std::string& path) {
     const std::string joined = second_begins_there();
-    if (const auto second = repeated_opening_byte(path))
-        return untimed("its first " + std::to_string(kOpeningBytes) + " bytes (its header) recur at byte " +
-                       std::to_string(*second) + joined);
+    if (const auto second = repeated_opening_byte(path)) {
+        // A chained Ogg or Matroska file's second stream opens with the first's header bytes (a copy, or
+        // two files of one encoder's settings): its walk tells where the first's sound ends.
+        const auto chained = chained_stream(path);
+        const bool is_timed = chained && chained->byte == *second && chained->first_seconds > 0.0;
+        return JoinedRecording{"its first " + std::to_string(kOpeningBytes) +
+                                   " bytes (its header) recur at byte " + std::to_string(*second) + joined,
+                               is_timed ? std::optional<double>(chained->first_seconds) : std::nullopt};
+    }
     std::ifstream in(path, std::ios::binary);
     if (const auto second = second_flac_stream_byte(in))
         return untimed(

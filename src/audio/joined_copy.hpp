@@ -27,9 +27,10 @@ constexpr std::size_t kOpeningBytes = 32;
 std::optional<std::uint64_t> repeated_opening_byte(const std::string& path);
 
 // A second recording joined to a file: what the messages say of it, and, where the file tells it, the
-// time of the decoded sound where the second begins (an Ogg file's first stream's end, an MP3's restart,
-// a repeat of the sound; not a join told only by bytes recurring, nor a Matroska file's Segment), so
-// that digital silence opening the second recording is left to the join's message (silenced_words.hpp).
+// time of the decoded sound where the second begins (an Ogg file's first stream's end, a Matroska file's
+// first Segment's sound's end, an MP3's restart, a repeat of the sound; not a join told only by bytes
+// recurring where no stream's walk times it), so that digital silence opening the second recording is
+// left to the join's message (silenced_words.hpp).
 struct JoinedRecording {
     std::string description;
     std::optional<double> second_starts_s;

@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -410,6 +411,51 @@ TEST_SUITE("joined recordings") {
                                        std::to_string(file_bytes(first)) +
                                        ", where the first's Segment, of unknown size"));
         }
+    }
+
+    TEST_CASE(
+        "a WebM joined to another is named at the time the first's sound ends, and the digital silence the "
+        "second opens with is the join's") {
+        // The time was not read from the file: the join's warning named no time, and where the text was
+        // refused the second recording's opening zeros were named as a word an editor silenced as well.
+        const std::string options = "-c:a libopus -b:a 24k -fflags +bitexact -flags:a +bitexact -f webm";
+        const std::string live = options + " -live 1 -cluster_time_limit 500";
+        const std::string one = ffmpeg_made("one_sentence_opus.webm", options);
+        const std::string backwards =
+            ffmpeg_made("silence_backwards_opus.webm", "-af areverse,adelay=500:all=1 " + options);
+        const std::string live_one = ffmpeg_made("one_sentence_live.webm", live);
+        const std::string live_backwards =
+            ffmpeg_made("silence_backwards_live.webm", "-af areverse,adelay=500:all=1 " + live);
+        const std::string chrome_one =
+            with_unknown_cluster_sizes(live_one, "one_sentence_live_clusters.webm");
+        const std::string chrome_backwards =
+            with_unknown_cluster_sizes(live_backwards, "silence_backwards_live_clusters.webm");
+        const auto source = detail::open_audio_file(one);
+        const double first_s =
+            static_cast<double>(frames_in(one)) / static_cast<double>(source->sample_rate_hz());
+        for (const auto& [name, first, second] :
+             {std::tuple{"stated", one, backwards}, std::tuple{"live", live_one, live_backwards},
+              std::tuple{"live_clusters", chrome_one, chrome_backwards}}) {
+            CAPTURE(name);
+            const std::string path = joined(std::string("joined_silence_") + name + ".webm", first, second);
+            const Timeline aligned =
+                SpeechAligner().align_file(path, load_transcript(speech_clip("one_sentence.txt")));
+            REQUIRE(aligned.warnings.size() == 1);
+            const std::string& warning = aligned.warnings.front();
+            const std::size_t ends = warning.find("ends (");
+            REQUIRE_MESSAGE(ends != std::string::npos, warning);
+            const double named_s = std::stod(warning.substr(ends + 6));
+            // Opus's frames are 20 ms; the blocks' times are counted in ms.
+            CHECK(std::abs(named_s - first_s) <= 0.002);
+        }
+        const std::string silence_first =
+            ffmpeg_made("silence_then_one_sentence_opus.webm", "-af adelay=2000:all=1 " + options);
+        const std::string refusal =
+            refusal_of_one_sentence(joined("opus_joined_silence_first.webm", one, silence_first));
+        CHECK_MESSAGE(refusal.find("(the file: its first 32 bytes (its header) recur at byte " +
+                                   std::to_string(file_bytes(one))) != std::string::npos,
+                      refusal);
+        CHECK_MESSAGE(refusal.find("is digital silence") == std::string::npos, refusal);
     }
 
     TEST_CASE("an AVI's OpenDML extension (a RIFF AVIX after the first RIFF) is no second WAV") {
