@@ -60,8 +60,9 @@ std::optional<std::uint64_t> find_in_blocks(
 // The most bytes from a frame's start to its Xing or Info tag's end.
 constexpr std::size_t kMostTagEnd = 4 + 32 + 4;
 
-// Where a Layer III frame holding a Xing or Info tag starts in `bytes`: the tag after the frame's
-// header and its side information, all zero (an encoder's header frame holds no sound).
+// Where a Layer III frame holding a Xing or Info tag starts in `bytes`: the tag where mp3_xing_tag_at
+// places it, the side information before it all zero (an encoder's header frame holds no sound) but for
+// a check's 2 bytes after the header, where the frame has one.
 std::optional<std::size_t> tag_frame_in(std::string_view bytes) {
     for (const std::string_view tag : {"Xing", "Info"}) {
         for (std::size_t at = bytes.find(tag); at != std::string_view::npos; at = bytes.find(tag, at + 1)) {
@@ -69,10 +70,10 @@ std::optional<std::size_t> tag_frame_in(std::string_view bytes) {
                 if (at < 4 + side_info) continue;
                 const std::size_t frame = at - 4 - side_info;
                 const auto header = read_mp3_frame_header(bytes.substr(frame, 4));
-                const std::string_view side = bytes.substr(frame + 4, side_info);
-                if (header && mp3_side_info_bytes(*header) == side_info &&
-                    std::all_of(side.begin(), side.end(), [](char byte) { return byte == 0; }))
-                    return frame;
+                if (!header || mp3_side_info_bytes(*header) != side_info) continue;
+                const std::size_t check = header->has_crc ? 2 : 0;
+                const std::string_view side = bytes.substr(frame + 4 + check, side_info - check);
+                if (std::all_of(side.begin(), side.end(), [](char byte) { return byte == 0; })) return frame;
             }
         }
     }
@@ -112,7 +113,7 @@ std::optional<std::uint64_t> past_stated_mp3_bytes(std::ifstream& in) {
     if (!first) return std::nullopt;
     const auto& [first_frame, header] = *first;
     std::array<char, 16> tag{};  // "Xing", its flags, its frame count, its byte count
-    in.seekg(static_cast<std::streamoff>(first_frame + 4 + mp3_side_info_bytes(header)));
+    in.seekg(static_cast<std::streamoff>(first_frame + mp3_xing_tag_at(header)));
     if (!in.read(tag.data(), tag.size())) return std::nullopt;
     const std::string_view fields(tag.data(), tag.size());
     if (fields.substr(0, 4) != "Xing" && fields.substr(0, 4) != "Info") return std::nullopt;

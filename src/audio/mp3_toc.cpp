@@ -141,12 +141,11 @@ double Mp3Toc::sample_at(std::int64_t file_byte) const {
     return low.sample + within * (high.sample - low.sample);
 }
 
-namespace {
-
-// Where a Xing or Info tag stands in a frame: after its header, its CRC and its side information.
-std::size_t xing_tag_at(const Mp3FrameHeader& header) {
-    return 4 + (header.has_crc ? 2 : 0) + mp3_side_info_bytes(header);
+std::size_t mp3_xing_tag_at(const Mp3FrameHeader& header) {
+    return 4 + mp3_side_info_bytes(header);
 }
+
+namespace {
 
 bool is_xing_tag_at(std::string_view frame, std::size_t at) {
     const std::string_view tag = frame.substr(std::min(at, frame.size()), 4);
@@ -157,13 +156,13 @@ bool is_xing_tag_at(std::string_view frame, std::size_t at) {
 
 bool is_mp3_tag_frame(std::string_view frame, const Mp3FrameHeader& header) {
     constexpr std::size_t kVbriAt = 4 + 32;  // a VBRI tag follows the header 32 bytes on
-    return is_xing_tag_at(frame, xing_tag_at(header)) ||
+    return is_xing_tag_at(frame, mp3_xing_tag_at(header)) ||
            frame.substr(std::min(kVbriAt, frame.size()), 4) == "VBRI";
 }
 
 std::size_t mp3_start_skip_frames(std::string_view frame, const Mp3FrameHeader& header) {
     constexpr std::size_t kDecoderDelayFrames = 529;
-    std::size_t at = xing_tag_at(header);
+    std::size_t at = mp3_xing_tag_at(header);
     if (!is_xing_tag_at(frame, at) || frame.size() < at + 8) return kUntaggedMp3DelayFrames;
     // The Xing fields that follow its flags (frames, bytes, table, quality), each there if its flag is.
     const std::uint32_t flags = big_endian(frame, at + 4);
@@ -199,8 +198,7 @@ std::optional<Mp3Toc> read_mp3_toc(std::string_view file, std::int64_t file_size
     if (start + 4 > search_end) return std::nullopt;
     const std::optional<Mp3FrameHeader> header = read_mp3_frame_header(file.substr(start, 4));
     if (!header) return std::nullopt;
-    // The Xing header follows the frame's header and its side information.
-    if (auto xing = read_xing_toc(file, file_size, start, *header, start + 4 + mp3_side_info_bytes(*header)))
+    if (auto xing = read_xing_toc(file, file_size, start, *header, start + mp3_xing_tag_at(*header)))
         return xing;
     return read_vbri_toc(file, start, *header);
 }

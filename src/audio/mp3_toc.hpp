@@ -32,8 +32,14 @@ struct Mp3FrameHeader {
 std::optional<Mp3FrameHeader> read_mp3_frame_header(std::string_view bytes);
 
 // The size of a Layer III frame's side information, after its header (and its check, if it has one):
-// where its main data's first byte lies, what Xing, Info and LAME tags follow.
+// where its main data's first byte lies.
 std::size_t mp3_side_info_bytes(const Mp3FrameHeader& header);
+
+// Where a Xing or Info tag stands in a frame: after its header and where its side information would stand
+// without a check. LAME writes a header frame with a check (-p) so, the check's 2 bytes in the place of
+// the side information's first 2 ("the Xing data still starts at the same offset", its VbrTag.c), and
+// FFmpeg reads the tag there, as it reads its own, which has no check.
+std::size_t mp3_xing_tag_at(const Mp3FrameHeader& header);
 
 // Whether `frame` (a Layer III frame read from its header on, `header` its header) holds an encoder's
 // header, a Xing, Info or VBRI tag: LAME, FFmpeg and Fraunhofer's encoder write one in a recording's

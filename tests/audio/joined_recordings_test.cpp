@@ -17,6 +17,7 @@
 #include "audio/audio_source.hpp"
 #include "audio/chained_stream.hpp"
 #include "audio/mp3_restart.hpp"
+#include "audio/mp3_toc.hpp"
 #include "audio/repeated_sound.hpp"
 #include "common/made_by_command.hpp"
 #include "common/test_paths.hpp"
@@ -97,6 +98,22 @@ std::string with_unknown_cluster_sizes(const std::string& path, const std::strin
         }
         at += size_length + size;
     }
+    const std::string out = test::output_path(name);
+    std::ofstream(out, std::ios::binary) << bytes;
+    return out;
+}
+
+// A copy of the MP3 at `path` (FFmpeg's LAME: an Info tag frame first), in test output NAME, whose header
+// frame carries a check as LAME's -p writes it: the protection bit of its header cleared and the check's 2
+// bytes after the header, in the place of the side information's first 2 (zero in a header frame), the tag
+// where it stood.
+std::string with_checked_header_frame(const std::string& path, const std::string& name) {
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t frame = detail::after_id3(bytes);
+    bytes[frame + 1] = static_cast<char>(static_cast<unsigned char>(bytes[frame + 1]) & 0xFEU);
+    bytes[frame + 4] = '\xd2';
+    bytes[frame + 5] = '\xdc';
     const std::string out = test::output_path(name);
     std::ofstream(out, std::ios::binary) << bytes;
     return out;
@@ -314,6 +331,50 @@ TEST_SUITE("joined recordings") {
             // Within the first's last frame's padding, which the reader keeps where a second stream follows.
             CHECK(named_s <= first_s + 0.015);
         }
+    }
+
+    TEST_CASE(
+        "an MP3 header frame with a check (LAME's -p) is read as a header frame, its tag where LAME puts "
+        "it") {
+        // LAME writes the Xing or Info tag of a frame with a check where it stands without one, and FFmpeg
+        // reads it there; the tag was looked for 2 bytes on, so the frame was taken for sound: the join's
+        // time counted it (36 ms late), a second recording's header frame was not seen, and where the text
+        // was refused only the first's stated bytes named the join.
+        const std::string options = "-c:a libmp3lame -b:a 64k -fflags +bitexact -flags:a +bitexact -f mp3";
+        const std::string one =
+            with_checked_header_frame(ffmpeg_made("tagged_64k.mp3", options), "checked_64k.mp3");
+        const std::string other = with_checked_header_frame(
+            ffmpeg_made("tagged_silence_backwards_64k.mp3", "-af areverse,adelay=500:all=1 " + options),
+            "checked_silence_backwards_64k.mp3");
+        std::ifstream in(one, std::ios::binary);
+        std::string head(4096, '\0');
+        in.read(head.data(), static_cast<std::streamsize>(head.size()));
+        const std::size_t frame = detail::after_id3(head);
+        const auto header = detail::read_mp3_frame_header(head.substr(frame, 4));
+        REQUIRE(header);
+        REQUIRE(header->has_crc);
+        CHECK(detail::is_mp3_tag_frame(head.substr(frame), *header));
+        CHECK(detail::read_mp3_toc(head, static_cast<std::int64_t>(file_bytes(one))));
+
+        const std::string path = joined("checked_joined_silence_backwards.mp3", one, other);
+        const auto restart = detail::restarted_mp3_stream(path);
+        REQUIRE(restart);
+        CHECK(restart->is_header_frame);
+        const double first_s = static_cast<double>(frames_in(one)) / 16000.0;
+        CHECK(restart->seconds >= first_s);
+        CHECK(restart->seconds <= first_s + 0.015);
+
+        const std::string untagged_options =
+            "-c:a libmp3lame -b:a 32k -id3v2_version 0 -fflags +bitexact -f mp3";
+        const std::string untagged = with_checked_header_frame(
+            ffmpeg_made("untagged_32k.mp3", untagged_options), "checked_untagged_32k.mp3");
+        const std::string refusal =
+            refusal_of_one_sentence(joined("checked_untagged_joined.mp3", untagged, untagged));
+        CHECK_MESSAGE(
+            refusal.find("a second MP3 header frame (a Xing or Info tag, which an encoder writes once, "
+                         "in a recording's first frame) starts at byte " +
+                         std::to_string(file_bytes(untagged))) != std::string::npos,
+            refusal);
     }
 
     TEST_CASE("a chained Ogg file's second stream is read, and the join named") {
