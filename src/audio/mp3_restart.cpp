@@ -18,7 +18,12 @@ constexpr std::size_t kMostFrameHead = 4 + 2 + 32 + 4;
 // of none (digital silence) points where its data would begin: LAME as sox runs it points at the
 // whole reservoir, so a stream's first empty frame points at its own area, and the next frame's data
 // begins there; LAME as FFmpeg runs it writes 0 in every empty frame, and the frame after one points
-// back past it, at the whole reservoir, as far as its 8 or 9 bits reach.
+// back past it, at the whole reservoir, as far as its 8 or 9 bits reach. Where a frame's area is more
+// than the reservoir LAME keeps (FFmpeg's and sox's at 16 kHz 32 kb/s: 131 bytes, 124 kept), its empty
+// frames point at the reservoir they hold, 124 bytes back, and a stream's first empty frame at none: the
+// next empty frame points inside its area, short of its start. A continuing stream's empty frame points
+// nowhere only where its empty frames all do (the next one then points nowhere too), so an empty frame
+// after it that points into its area keeps the restart.
 constexpr std::size_t kLeastSoundBits = 128;
 
 // The fewest reservoir bytes left unused that a restart throws away: a frame's main data ends
@@ -86,7 +91,7 @@ std::optional<Mp3Restart> restarted_mp3_stream(const std::string& path) {
     std::optional<std::uint64_t> data_end;
     std::size_t frames_before = 0;
     // A restart, kept once a frame follows it: an empty frame's, once the next frame's data begins
-    // where the empty frame's area began.
+    // where the empty frame's area began, or, the next frame empty too, inside that area (kLeastSoundBits).
     std::optional<Mp3Restart> candidate;
     std::optional<std::size_t> next_begin_back;
     while (true) {
@@ -106,7 +111,9 @@ std::optional<Mp3Restart> restarted_mp3_stream(const std::string& path) {
         if (is_tag_frame && frames_before > 0) return Mp3Restart{at, join_seconds(frames_before), 0, true};
         if (!is_tag_frame) {
             const MainData data = read_main_data(bytes.substr(side_start, side_bytes), *header);
-            if (candidate && (!next_begin_back || data.begin_back == *next_begin_back)) return candidate;
+            if (candidate && (!next_begin_back || data.begin_back == *next_begin_back ||
+                              (data.bits == 0 && data.begin_back > 0 && data.begin_back <= *next_begin_back)))
+                return candidate;
             candidate.reset();
             if (data.begin_back > area_start) return std::nullopt;  // data before the stream's start
             const std::uint64_t begin = area_start - data.begin_back;

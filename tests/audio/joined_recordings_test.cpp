@@ -266,6 +266,32 @@ TEST_SUITE("joined recordings") {
     }
 
     TEST_CASE(
+        "MP3s of frames alone at 16 kHz 32 kb/s, the second opening in digital silence, are named by its "
+        "reservoir starting afresh") {
+        // LAME keeps 124 bytes of reservoir in a frame's 131 here: the second's first empty frame points
+        // nowhere, and the next empty one 124 bytes back, inside its area, not at its start; the text,
+        // which fits the first, aligned over both with no word of the join.
+        const std::string options =
+            "-c:a libmp3lame -b:a 32k -write_xing 0 -id3v2_version 0 -fflags +bitexact -f mp3";
+        const std::string one = ffmpeg_made("bare_32k.mp3", options);
+        const std::string other =
+            ffmpeg_made("bare_silence_backwards_32k.mp3", "-af areverse,adelay=500:all=1 " + options);
+        const std::string path = joined("bare_joined_silence_backwards.mp3", one, other);
+        const auto restart = detail::restarted_mp3_stream(path);
+        REQUIRE(restart);
+        CHECK(restart->byte == file_bytes(one));
+        const double first_s = static_cast<double>(frames_in(one)) / 16000.0;
+        CHECK(restart->seconds >= first_s);
+        CHECK(restart->seconds <= first_s + 0.015);
+        const Timeline aligned =
+            SpeechAligner().align_file(path, load_transcript(speech_clip("one_sentence.txt")));
+        CHECK(has_warning_with(aligned, "its MP3 frame at byte " + std::to_string(file_bytes(one)) + " ("));
+        // Nor recording alone, whose empty frames point at the reservoir they hold.
+        CHECK_FALSE(detail::restarted_mp3_stream(one));
+        CHECK_FALSE(detail::restarted_mp3_stream(other));
+    }
+
+    TEST_CASE(
         "an MP3 joined to a second recording that opens in digital silence is named by its header frame") {
         // LAME as FFmpeg runs it writes 0 in an empty frame's main_data_begin: the second recording's
         // first frames (0.5 s of digital silence) point nowhere in the reservoir, and the text, which
