@@ -1,5 +1,6 @@
 #include "audio/mp3_restart.hpp"
 
+#include <algorithm>
 #include <string_view>
 
 #include "audio/file_blocks.hpp"
@@ -25,6 +26,19 @@ constexpr std::size_t kMostFrameHead = 4 + 2 + 32 + 4;
 // nowhere only where its empty frames all do (the next one then points nowhere too), so an empty frame
 // after it that points into its area keeps the restart.
 constexpr std::size_t kLeastSoundBits = 128;
+
+// LAME keeps no more reservoir than its most (at most the 255 or 511 bytes main_data_begin reaches):
+// where a frame's own data leaves that much of its area unused, what the reservoir would hold past its
+// most is written out as ancillary bytes, the oldest first, and the frame points back past none of them
+// (its reservoir.c, "drain as many bits as possible into previous frame ancillary data"). So a frame of a
+// continuing stream starts afresh where its area is large for its sound: a person's speech ending in
+// digital silence at 16 kHz 128 kb/s (253 bytes of sound in a 563-byte area), a steady tone's every
+// frame. The most is not written in the stream, but it is at least the most reservoir the frames before
+// were seen to point back into: a frame leaving no fewer bytes unused than that could be such a drain,
+// and is no restart.
+bool may_drain_reservoir(std::size_t area, std::size_t bits, std::size_t most_begin_back) {
+    return area - std::min(area, (bits + 7) / 8) >= most_begin_back;
+}
 
 // The fewest reservoir bytes left unused that a restart throws away: a frame's main data ends
 // within a byte (its bits are not padded), and an encoder that starts afresh leaves many more (LAME's
@@ -94,6 +108,7 @@ std::optional<Mp3Restart> restarted_mp3_stream(const std::string& path) {
     // where the empty frame's area began, or, the next frame empty too, inside that area (kLeastSoundBits).
     std::optional<Mp3Restart> candidate;
     std::optional<std::size_t> next_begin_back;
+    std::size_t most_begin_back = 0;
     while (true) {
         std::string_view bytes = file.at(at, kMostFrameHead);
         if (bytes.substr(0, 3) == "ID3") {
@@ -119,13 +134,15 @@ std::optional<Mp3Restart> restarted_mp3_stream(const std::string& path) {
             const std::uint64_t begin = area_start - data.begin_back;
             const std::size_t area = header->bytes - side_start - side_bytes;
             if (data_end && data.begin_back == 0 && begin >= *data_end + kLeastUnusedBytes &&
-                (data.bits >= kLeastSoundBits || data.bits == 0)) {
+                (data.bits >= kLeastSoundBits || data.bits == 0) &&
+                !may_drain_reservoir(area, data.bits, most_begin_back)) {
                 candidate =
                     Mp3Restart{at, join_seconds(frames_before), static_cast<std::size_t>(begin - *data_end)};
                 next_begin_back = data.bits == 0 ? std::optional<std::size_t>(area) : std::nullopt;
             }
             data_end = begin + (data.bits + 7) / 8;
             area_start += area;
+            most_begin_back = std::max(most_begin_back, data.begin_back);
         }
         ++frames_before;
         at += header->bytes;

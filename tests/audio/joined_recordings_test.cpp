@@ -291,6 +291,36 @@ TEST_SUITE("joined recordings") {
         CHECK_FALSE(detail::restarted_mp3_stream(other));
     }
 
+    TEST_CASE("an MP3 encoded once is named as no join where LAME empties its reservoir as its sound ends") {
+        // Where a frame's own data leaves more of its area unused than the reservoir LAME keeps, LAME
+        // writes the reservoir out as ancillary bytes and the frame points back nowhere: a steady tone's
+        // frames at 16 kHz 128 kb/s (140-170 bytes of sound in a 563-byte area, 255 kept), as a speech's
+        // last frame before digital silence in a person's recording, were named as a second recording's
+        // start (the tone's third frame, 0.003 s).
+        struct Kind {
+            int rate_hz;
+            int kbps;
+        };
+        for (const Kind kind : {Kind{8000, 64}, Kind{11025, 64}, Kind{16000, 128}, Kind{22050, 128}}) {
+            const std::string name = std::to_string(kind.rate_hz) + "_" + std::to_string(kind.kbps) + "k";
+            const std::string tone = test::made_by_command(
+                "tone_" + name + ".mp3",
+                "ffmpeg -nostdin -loglevel error -y -f lavfi -i sine=frequency=440:sample_rate=" +
+                    std::to_string(kind.rate_hz) + ":duration=1,apad=pad_dur=0.5 -c:a libmp3lame -b:a " +
+                    std::to_string(kind.kbps) + "k -write_xing 0 -id3v2_version 0 -fflags +bitexact -f mp3");
+            CAPTURE(name);
+            CHECK_FALSE(detail::restarted_mp3_stream(tone));
+            // Two of them joined are named where the second starts, its first frame of sound pointing
+            // back nowhere.
+            if (kind.rate_hz == 16000) {
+                const auto join =
+                    detail::restarted_mp3_stream(joined("tone_joined_" + name + ".mp3", tone, tone));
+                REQUIRE(join);
+                CHECK(join->byte == file_bytes(tone));
+            }
+        }
+    }
+
     TEST_CASE(
         "an MP3 joined to a second recording that opens in digital silence is named by its header frame") {
         // LAME as FFmpeg runs it writes 0 in an empty frame's main_data_begin: the second recording's
