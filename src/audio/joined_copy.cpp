@@ -220,8 +220,12 @@ std::optional<JoinedRecording> describe_joined_copy(const std::string& path) {
         // two files of one encoder's settings): its walk tells where the first's sound ends.
         const auto chained = chained_stream(path);
         const bool is_timed = chained && chained->byte == *second && chained->first_seconds > 0.0;
+        const std::string first_end =
+            is_timed ? ", where the first recording ends (" + format_fixed(chained->first_seconds, 3) + " s)"
+                     : std::string();
         return JoinedRecording{"its first " + std::to_string(kOpeningBytes) +
-                                   " bytes (its header) recur at byte " + std::to_string(*second) + joined,
+                                   " bytes (its header) recur at byte " + std::to_string(*second) +
+                                   first_end + joined,
                                is_timed ? std::optional<double>(chained->first_seconds) : std::nullopt};
     }
     std::ifstream in(path, std::ios::binary);

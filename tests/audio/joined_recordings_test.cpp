@@ -575,6 +575,29 @@ TEST_SUITE("joined recordings") {
         CHECK_MESSAGE(refusal.find("is digital silence") == std::string::npos, refusal);
     }
 
+    TEST_CASE("a refused WebM or Ogg join whose opening recurs names the time the first recording ends") {
+        // Two files of one encoder's settings open with the same 32 bytes, which is what the refusal
+        // said of the join: its time, read from the first's blocks or pages, was left out of it.
+        for (const std::string format : {"webm", "ogg"}) {
+            CAPTURE(format);
+            const std::string options =
+                "-c:a libopus -b:a 24k -fflags +bitexact -flags:a +bitexact -f " + format;
+            const std::string one = ffmpeg_made("one_sentence_opus." + format, options);
+            const std::string silence_first =
+                ffmpeg_made("silence_then_one_sentence_opus." + format, "-af adelay=2000:all=1 " + options);
+            const std::string refusal =
+                refusal_of_one_sentence(joined("opus_recurring_silence_first." + format, one, silence_first));
+            const std::string said =
+                "recur at byte " + std::to_string(file_bytes(one)) + ", where the first recording ends (";
+            const std::size_t at = refusal.find(said);
+            REQUIRE_MESSAGE(at != std::string::npos, refusal);
+            const double named_s = std::stod(refusal.substr(at + said.size()));
+            const double first_s = static_cast<double>(frames_in(one)) /
+                                   static_cast<double>(detail::open_audio_file(one)->sample_rate_hz());
+            CHECK(std::abs(named_s - first_s) <= 0.002);
+        }
+    }
+
     TEST_CASE("an AVI's OpenDML extension (a RIFF AVIX after the first RIFF) is no second WAV") {
         const std::string avi = ffmpeg_made("voice.avi", "-c:a pcm_s16le -fflags +bitexact -f avi");
         // An OpenDML AVI past 1 GB goes on in RIFF AVIX chunks, which FFmpeg reads: one, holding an

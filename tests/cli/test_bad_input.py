@@ -101,7 +101,8 @@ AUDIO = {
     "joined.m4a": OK,
     # Read on through the second copy, then refused as not the text: the join said in the refusal.
     "joined.flac": "(the file: its first 32 bytes (its header) recur at byte 56194: a second copy of the recording",
-    "joined.mkv": "(the file: its first 32 bytes (its header) recur at byte 7322: a second copy of the recording",
+    "joined.mkv": "(the file: its first 32 bytes (its header) recur at byte 7322, where the first recording ends "
+    "(3.091 s): a second copy of the recording",
     "huge_length.mp4": OK,
     "huge_length.mkv": OK,
     "zeroed_block.wav": OK,
