@@ -124,6 +124,30 @@ bool speaks_of_duration(const std::vector<CodePoint>& text, std::size_t start) {
     return contains_any(before, {"等待", "等候", "排队", "排隊"});
 }
 
+namespace {
+
+// Whether a line of `text` opens with the recording's start, 0:00 or 00:00, a space and a title in
+// Chinese (00:00 开场): the first of a video's or a podcast's chapters.
+bool opens_chapter_list(const std::vector<CodePoint>& text) {
+    for (std::size_t line = 0; line < text.size();) {
+        auto k = line;
+        while (value_at(text, k) == ' ') ++k;
+        const auto after_zero = value_at(text, k) == '0' && value_at(text, k + 1) == '0' ? k + 1 : k;
+        if (value_at(text, after_zero) == '0' && value_at(text, after_zero + 1) == ':' &&
+            value_at(text, after_zero + 2) == '0' && value_at(text, after_zero + 3) == '0' &&
+            value_at(text, after_zero + 4) == ' ') {
+            auto title = after_zero + 4;
+            while (value_at(text, title) == ' ') ++title;
+            if (is_han(value_at(text, title))) return true;
+        }
+        while (line < text.size() && text[line].value != '\n') ++line;
+        ++line;
+    }
+    return false;
+}
+
+}  // namespace
+
 bool names_place_in_recording(const std::vector<CodePoint>& text, std::size_t start, std::size_t end) {
     if (is_one_of(value_at(text, end), U"处處")) return true;
     const std::string before = text_before(text, start, true);
@@ -138,8 +162,9 @@ bool names_place_in_recording(const std::vector<CodePoint>& text, std::size_t st
         return true;
     // A podcast's or a video's notes list its chapters, each a time opening its line, a space and the title
     // (03:15 为什么要做播客 三分十五秒; session 40: 三点十五分): where the transcript names a show or an
-    // episode, such a time is a place in it. A schedule's line (09:00 开幕) in other text stays a time of
-    // day.
+    // episode, or its list opens at the recording's start (00:00 开场, as a video's chapters must; session
+    // 43: 45:10 总结 read 四十五比十, a score), such a time is a place in it. A schedule's line (09:00 开幕)
+    // in other text stays a time of day.
     auto line_start = start;
     while (line_start > 0 && text[line_start - 1].value == ' ') --line_start;
     if (line_start > 0 && text[line_start - 1].value != '\n') return false;
@@ -147,7 +172,8 @@ bool names_place_in_recording(const std::vector<CodePoint>& text, std::size_t st
     if (value_at(text, title) != ' ') return false;
     while (value_at(text, title) == ' ') ++title;
     if (!is_han(value_at(text, title))) return false;
-    return contains_any(text_between(text, 0, text.size()),
+    return opens_chapter_list(text) ||
+           contains_any(text_between(text, 0, text.size()),
                         {"播客", "节目", "節目", "本期", "本集", "单集", "單集", "章节", "章節", "Podcast",
                          "podcast", "Shownotes", "shownotes", "show notes"});
 }

@@ -32,7 +32,7 @@ bool speaks_of_duration(const std::vector<CodePoint>& text, std::size_t start);
 // day, where 处 follows the time, 那里 or 那段 a time in a clause naming a video (视频0:45那里), or the
 // clause speaks of a player's progress bar (进度条 时间轴 拉到 跳到); or where a show's notes list its
 // chapters, a time opening its line before a space and the chapter's title in a transcript that names a
-// podcast or an episode (03:15 为什么要做播客).
+// podcast or an episode (03:15 为什么要做播客) or whose list opens at 0:00 or 00:00 (00:00 开场).
 bool names_place_in_recording(const std::vector<CodePoint>& text, std::size_t start, std::size_t end);
 
 // A year of the Republic of China written with three digits (113 for 2024), as Taiwan dates its

@@ -3006,4 +3006,16 @@ TEST_SUITE("written forms") {
             {"繳費期限：99/12/31前", "繳費期限九十九年十二月三十一日前"},
         });
     }
+
+    TEST_CASE("a list of chapters that opens at 00:00 reads its times as places in the recording") {
+        // Each row but the limits fails on main 53fa8cc: 十二点四十分, 四十五比十 (a score).
+        check_cases({
+            {"00:00 开场\n12:40 聊聊AI\n45:10 总结", "零分开场十二分四十秒聊聊 ei ai四十五分十秒总结"},
+            {"0:00 片头\n3:15 正片", "零分片头三分十五秒正片"},
+            // The limits: a schedule that opens at another hour keeps its times of day, and 00:00 inside a
+            // line opens no list.
+            {"09:00 开幕式\n12:40 午餐", "九点开幕式十二点四十分午餐"},
+            {"倒计时到00:00结束\n12:40 午餐", "倒计时到零分结束十二点四十分午餐"},
+        });
+    }
 }
