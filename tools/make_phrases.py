@@ -7,7 +7,7 @@ its likeliest words by these costs (src/text/word_segmentation.cpp), then reads 
 Sources (licences in docs/data-licences.md):
   /usr/share/pyzy/db/android.db  Debian libpyzy-1.0-0v5; the Android Open Source Project's
                                   Pinyin IME phrase list, Apache 2.0. Simplified, toneless.
-  opencc (command, s2t and s2tw)  Debian opencc, Apache 2.0: Traditional forms of those phrases.
+  opencc (command, s2t, s2tw, t2s) Debian opencc, Apache 2.0: Traditional forms of those phrases.
   Unihan readings                 via make_readings.py: decoding the ids and choosing tones.
   tools/phrase_additions.tsv      words the list lacks or reads wrong, with their readings: among
                                   them the words with a light tone (喜欢 xi3 huan5), which a
@@ -19,7 +19,6 @@ import collections
 import math
 import os
 import sqlite3
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -132,16 +131,6 @@ def add_words(simplified, costs, additions):
         simplified[word] = [reading[:-1] for reading in readings]
 
 
-def opencc_convert(phrases, config):
-    """OpenCC over the whole list at once, one phrase per line (phrase-level conversion)."""
-    result = subprocess.run(["opencc", "-c", config], input="\n".join(phrases) + "\n",
-                            capture_output=True, text=True, check=True)
-    converted = result.stdout.split("\n")[:len(phrases)]
-    if len(converted) != len(phrases):
-        sys.exit(f"make_phrases: opencc {config} returned {len(converted)} lines for {len(phrases)}")
-    return converted
-
-
 def numbered_reading(character, toneless, orders, fallback_character, after_first):
     """The character's most frequent full reading with this toneless spelling; its light one if
     it has no full one, if it is a particle (make_readings.LIGHT_PARTICLES: 好吧, 是吗, 除了; 酒吧
@@ -202,7 +191,7 @@ def main():
     words = sorted(simplified, key=lambda phrase: (costs[phrase], phrase))
     forms = [(word, word) for word in words]
     for config in ("s2t.json", "s2tw.json"):
-        forms.extend(zip(opencc_convert(words, config), words))
+        forms.extend(zip(make_readings.opencc_convert(words, config), words))
 
     def first_reading(character):
         return orders[character][0] if character in orders else None
@@ -212,8 +201,8 @@ def main():
     # or Traditional text is cut as if its commonest characters were rare (請家長於 read 家 長於). A form
     # Simplified text writes too (著, 瞭) keeps its own.
     converted = sorted({form for form, source in forms if form != source and len(form) == len(source)})
-    traditional_only = {form for form, back in zip(converted, opencc_convert(converted, "t2s.json"))
-                        if back != form}
+    simplified_forms = make_readings.opencc_convert(converted, "t2s.json")
+    traditional_only = {form for form, back in zip(converted, simplified_forms) if back != form}
     simplified_form_cost = {}
     for form, source in forms:
         if form in traditional_only and form != source:

@@ -132,6 +132,17 @@ def ordered_readings(character, fields):
     return full + light if full else readings
 
 
+def opencc_convert(phrases, config):
+    """OpenCC (config: s2t.json, s2tw.json, t2s.json) over the whole list at once, one phrase per line
+    (phrase-level conversion)."""
+    result = subprocess.run(["opencc", "-c", config], input="\n".join(phrases) + "\n",
+                            capture_output=True, text=True, check=True)
+    converted = result.stdout.split("\n")[:len(phrases)]
+    if len(converted) != len(phrases):
+        sys.exit(f"opencc {config} returned {len(converted)} lines for {len(phrases)}")
+    return converted
+
+
 def reading_orders(table):
     """{character: ordered_readings} for every character of the table. A Traditional character that
     Simplified text writes as another character (乾 干, 徵 征, 鉻 铬) and whose first reading that
@@ -143,12 +154,7 @@ def reading_orders(table):
     character is a Simplified one of its own in it, read so in both scripts (吒 zhā of 哪吒, 苧 níng)."""
     orders = {character: ordered_readings(character, fields) for character, fields in table.items()}
     several = sorted(character for character, readings in orders.items() if len(readings) > 1)
-    result = subprocess.run(["opencc", "-c", "t2s.json"], input="\n".join(several) + "\n",
-                            capture_output=True, text=True, check=True)
-    simplified = result.stdout.split("\n")[:len(several)]
-    if len(simplified) != len(several):
-        sys.exit(f"make_readings: opencc t2s returned {len(simplified)} lines for {len(several)}")
-    for character, form in zip(several, simplified):
+    for character, form in zip(several, opencc_convert(several, "t2s.json")):
         if form == character or form not in orders or character in LIGHT_FIRST:
             continue
         readings, shared = orders[character], orders[form]
