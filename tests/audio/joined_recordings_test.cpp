@@ -29,6 +29,10 @@ using namespace talkface;
 
 namespace {
 
+// ffmpeg's options for an MP3 of frames alone at 32 kb/s, as sox writes one: no ID3 tag, no Xing tag.
+constexpr const char* kBareMp3Options =
+    "-c:a libmp3lame -b:a 32k -write_xing 0 -id3v2_version 0 -fflags +bitexact -f mp3";
+
 std::string speech_clip(const std::string& file) {
     return test::source_path("tests/data/speech/" + file);
 }
@@ -155,9 +159,7 @@ TEST_SUITE("joined recordings") {
                   std::string::npos);
         }
         // A second recording with no tag of its own starts where the first's tag says its frames end.
-        const std::string bare =
-            ffmpeg_made("bare_32k.mp3",
-                        "-c:a libmp3lame -b:a 32k -write_xing 0 -id3v2_version 0 -fflags +bitexact -f mp3");
+        const std::string bare = ffmpeg_made("bare_32k.mp3", kBareMp3Options);
         const std::string refusal = refusal_of_one_sentence(joined("tagged_then_bare.mp3", one, bare));
         CHECK(refusal.find("its first frame's Xing or Info tag counts its MP3 frames to byte " +
                            std::to_string(file_bytes(one)) +
@@ -189,9 +191,7 @@ TEST_SUITE("joined recordings") {
         "an MP3 of frames alone joined to itself is named by its sound repeating where the text is refused") {
         // No ID3 tag, no Xing tag (as sox writes an MP3): no header recurs in its bytes, and the
         // join was refused as a text that does not fit with no word of why.
-        const std::string bare =
-            ffmpeg_made("bare_32k.mp3",
-                        "-c:a libmp3lame -b:a 32k -write_xing 0 -id3v2_version 0 -fflags +bitexact -f mp3");
+        const std::string bare = ffmpeg_made("bare_32k.mp3", kBareMp3Options);
         const std::string path = joined("bare_joined.mp3", bare, bare);
         const std::string refusal = refusal_of_one_sentence(path);
         CHECK_MESSAGE(
@@ -222,8 +222,7 @@ TEST_SUITE("joined recordings") {
         "where the text is refused") {
         // Of one rate and bit rate, with no ID3 or Xing tag (as sox writes them): the decoder reads the
         // second recording's frames on as the first's, and no bytes or sound recur.
-        const std::string options =
-            "-c:a libmp3lame -b:a 32k -write_xing 0 -id3v2_version 0 -fflags +bitexact -f mp3";
+        const std::string options = kBareMp3Options;
         const std::string one = ffmpeg_made("bare_32k.mp3", options);
         const std::string other = test::made_by_command(
             "joined_second_two_sentences_32k.mp3",
@@ -250,8 +249,7 @@ TEST_SUITE("joined recordings") {
     TEST_CASE("an MP3 of frames alone joined to another recording is named where its text fits the first") {
         // The text fits one_sentence.wav and was stretched over the recording joined after it (the
         // same sentence played backwards, as the sweep's joined_another kind), aligned with no word.
-        const std::string options =
-            "-c:a libmp3lame -b:a 32k -write_xing 0 -id3v2_version 0 -fflags +bitexact -f mp3";
+        const std::string options = kBareMp3Options;
         const std::string one = ffmpeg_made("bare_32k.mp3", options);
         const std::string backwards = ffmpeg_made("bare_backwards_32k.mp3", "-af areverse " + options);
         const std::string path = joined("bare_joined_backwards.mp3", one, backwards);
@@ -271,8 +269,7 @@ TEST_SUITE("joined recordings") {
         // LAME keeps 124 bytes of reservoir in a frame's 131 here: the second's first empty frame points
         // nowhere, and the next empty one 124 bytes back, inside its area, not at its start; the text,
         // which fits the first, aligned over both with no word of the join.
-        const std::string options =
-            "-c:a libmp3lame -b:a 32k -write_xing 0 -id3v2_version 0 -fflags +bitexact -f mp3";
+        const std::string options = kBareMp3Options;
         const std::string one = ffmpeg_made("bare_32k.mp3", options);
         const std::string other =
             ffmpeg_made("bare_silence_backwards_32k.mp3", "-af areverse,adelay=500:all=1 " + options);
@@ -365,8 +362,7 @@ TEST_SUITE("joined recordings") {
         const Kind kinds[] = {
             {"tagged", "-c:a libmp3lame -b:a 64k -fflags +bitexact -flags:a +bitexact -f mp3",
              "areverse,adelay=500:all=1"},
-            {"bare", "-c:a libmp3lame -b:a 32k -write_xing 0 -id3v2_version 0 -fflags +bitexact -f mp3",
-             "areverse"}};
+            {"bare", kBareMp3Options, "areverse"}};
         for (const auto& [name, options, second_filter] : kinds) {
             CAPTURE(name);
             const std::string one = ffmpeg_made(std::string("join_time_") + name + ".mp3", options);
