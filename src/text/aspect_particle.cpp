@@ -4,6 +4,8 @@
 #include <iterator>
 #include <string>
 
+#include "text/person_words.hpp"
+
 namespace talkface::detail {
 
 namespace {
@@ -84,6 +86,8 @@ bool may_start_word_here(const std::vector<std::string_view>& characters, std::s
     // 得 "must" (dei3) never takes 了, so an adverb with 得 is no word before it: 他又得了第一名, 他也得了奖,
     // 我们都得了感冒 are 得了 de2 le5 (got), as 他还得了第一名 is.
     if (is_adverb_with_must(word) && end < characters.size() && characters[end] == "了") return false;
+    // The list's 你得 and 我得 (ni3 de5) are a person and 得, which must_verb.hpp reads by what follows it.
+    if (length == 2 && characters[end - 1] == "得" && is_person_word(characters[start])) return false;
     if (end - start < 2 || characters[start] != "了" || start == 0 || end >= characters.size()) return true;
     if (!is_verb_taking_particle(characters[start - 1])) return true;
     const std::string next_word = std::string(characters[end - 1]) + std::string(characters[end]);
@@ -110,6 +114,8 @@ bool is_potential_complement(const std::vector<std::string_view>& characters, co
 std::string_view reading_before_particle(std::string_view word, std::string_view next) {
     if ((word == "还" || word == "還") && next == "了") return "huan2";
     if (word == "得" && next == "了") return "de2";
+    // 数 alone takes a particle only as the verb shǔ, "count" (数了三遍, 数过); the noun shù is in words.
+    if ((word == "数" || word == "數") && (next == "了" || next == "过" || next == "過")) return "shu3";
     return {};
 }
 

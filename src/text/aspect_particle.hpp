@@ -26,7 +26,8 @@ bool is_final_particle(std::string_view character);
 // (`ends_clause`: the run is followed by a pause or end mark or ends the text; a final particle
 // such as 吗 啊 may follow the idiom inside the run): 他还了得到的钱 is 还 了 得到, 他还得了第一名
 // 还 得了. And false for 还得 (hai2 dei3, "still must") right before 了: 得 "must" never takes 了,
-// so there 得 is the verb de2, "get" (还得了奖).
+// so there 得 is the verb de2, "get" (还得了奖). And false for the list's 你得 and 我得: a person and 得,
+// děi or dé by what follows (must_verb.hpp).
 bool may_start_word_here(const std::vector<std::string_view>& characters, std::size_t start, std::size_t end,
                          const ReadingTables& tables, bool ends_clause);
 

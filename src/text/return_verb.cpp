@@ -4,6 +4,7 @@
 #include <iterator>
 
 #include "text/aspect_particle.hpp"
+#include "text/person_words.hpp"
 #include "text/written_number_scan.hpp"
 
 namespace talkface::detail {
@@ -12,13 +13,6 @@ namespace {
 
 bool is_huan(std::string_view word) {
     return word == "还" || word == "還";
-}
-
-// Whom something is given back to: 还我, 还他们. (还你 is in the phrase list already.)
-bool is_person(std::string_view word) {
-    constexpr std::string_view kPersons[] = {"我", "你", "他", "她", "它", "您", "我们", "你们", "他们", "她们",
-                                             "我們", "你們", "他們", "她們", "咱们", "咱們", "人家", "大家"};
-    return std::find(std::begin(kPersons), std::end(kPersons), word) != std::end(kPersons);
 }
 
 // A debt, what 还 takes as the verb: 房贷 车贷 外债 欠债 (还贷 还债 are in the phrase list), money
@@ -46,7 +40,8 @@ std::string_view return_verb_reading(const std::vector<std::string>& words, std:
     if (!is_huan(words[w])) return {};
     if (w + 1 == words.size()) return ends_clause ? "huan2" : "";
     const auto& next = words[w + 1];
-    if (is_person(next) || is_debt(next)) return "huan2";
+    // Whom something is given back to: 还我, 还他们. (还你 is in the phrase list already.)
+    if (is_person_word(next) || is_debt(next)) return "huan2";
     // 把钱还上, 早点还完吧: a complement ending the clause (a final particle after it), or before 了. (还上学, 还完成 are other words.)
     const bool closes = w + 2 == words.size()
                             ? ends_clause

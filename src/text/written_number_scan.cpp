@@ -148,7 +148,9 @@ bool takes_liang(char32_t c) {
         U"锭錠"
         // A case as health news counts patients (新增2例 两例) and Hong Kong's news counts cases of any kind
         // (2宗嚴重流感個案 兩宗; session 38: 二例, 二宗).
-        U"例宗");
+        U"例宗"
+        // A play, as 一出戏 counts it, and a baseball inning's outs (2出局 兩出局; session 44: 二出局).
+        U"出");
 }
 
 std::string text_before(const std::vector<CodePoint>& text, std::size_t start, bool clause_only) {

@@ -2946,6 +2946,17 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("2 before 出, a play's or an inning's outs, is 两") {
+        // Each row but the limits fails on main f5421d4 (dev45, session 44): 二出局, 二出戏.
+        check_cases({
+            {"第9局下半2出局滿壘", "第九局下半两出局滿壘"},
+            {"演了2出戏", "演了两出戏"},
+            // The limits: an ordinal, and a 2 inside a number.
+            {"第2出", "第二出"},
+            {"12出局", "十二出局"},
+        });
+    }
+
     TEST_CASE("a money word written after a currency sign's amount is said once") {
         // Each row but the limits fails on main 2d7215e (text18's probe of dev44's kinds): 二十三点五元元.
         check_cases({
