@@ -35,8 +35,11 @@ it, then (the kinds):
   click-after  a click (the click kind's) 0.05-0.3 s after the line, the hiss after it lengthened to
                hold it (session 32)
 The wrong text is the next line of the same set with as many syllables (short_lines_bench's).
-A refused line counts each syllable as missed, as align_bench counts a refused passage. The last
-row of each set sums the lines with digits or English over every kind.
+A refused line counts each syllable as missed, as align_bench counts a refused passage. A right
+line aligned with the finding "the transcript may not match the audio" as a warning (a short line
+on weak evidence, session 44) is a false alarm, counted as warned; a wrong text is caught refused
+or warned of, and of those caught, refused counts the refusals. The last row of each set sums the
+lines with digits or English over every kind.
 
 usage: PYTHONPATH=build/python /usr/bin/python3 bench/short_kinds_bench.py OUT_DIR [--bin build/bin] [--kinds ...]
            [--lines short_lines_28.txt] [--tsv FILE] [--reuse]
@@ -68,6 +71,8 @@ EDGE_KINDS = ("plain", "clipped", "click", "breath", "room", "babble", "tight", 
 BREATH_CODECS = ("p-speex8", "p-opus6", "p-opus12", "p-g723", "p-g726")
 KINDS = EDGE_KINDS[:1] + tuple(phone.kinds) + EDGE_KINDS[1:]
 HISS_DB = 45.0
+# How a warning of the check's finding begins (CheckMode::warn's, and a short line's on weak evidence).
+FINDING = "the transcript may not match the audio"
 
 
 def change_voice_script():
@@ -198,13 +203,15 @@ def record(kind, x, times, rng, others):
 class Score(onsets_bench.Score):
     def __init__(self):
         super().__init__()
-        self.wrong = self.caught = 0
+        self.warned = self.wrong = self.caught = self.wrong_refused = 0
         self.last = []
 
     def add(self, other):
         super().add(other)
+        self.warned += other.warned
         self.wrong += other.wrong
         self.caught += other.caught
+        self.wrong_refused += other.wrong_refused
         self.last += other.last
 
 
@@ -236,7 +243,7 @@ def main():
             print(f"short_kinds_bench: {args.out} has no {kind} recordings; left out", file=sys.stderr)
         kinds = made
     aligner = talkface.SpeechAligner(talkface.AlignOptions())
-    scores, rows, refusals = {}, [], []
+    scores, rows, refusals, alarms = {}, [], [], []
     for k, (subset, text, transcript) in enumerate(lines):
         wrong = lines_bench.wrong_text(lines, k)
         for kind in kinds:
@@ -248,7 +255,12 @@ def main():
             score = Score()
             score.lines = 1
             try:
-                aligned = aligner.align_file(audio, transcript).syllables
+                timeline = aligner.align_file(audio, transcript)
+                aligned = timeline.syllables
+                for warning in timeline.warnings:
+                    if warning.startswith(FINDING):
+                        score.warned = 1
+                        alarms.append(f"{subset} {kind} {made['speaker']}: {text}: {warning}")
                 signed = [a.start_s - t[0] for a, t in zip(aligned, times)]
                 score.errors = [abs(e) for e in signed]
                 score.first, score.last = [abs(signed[0])], [abs(signed[-1])]
@@ -263,10 +275,12 @@ def main():
                 score.first = score.last = score.ends = [math.inf]
             if wrong is not None:
                 score.wrong = 1
-                score.caught = int(lines_bench.outcome(aligner, audio, wrong)[0])
+                found, why = lines_bench.outcome(aligner, audio, wrong)
+                score.caught = int(found)
+                score.wrong_refused = int(found and not why.startswith(FINDING))
             for key in keys:
                 scores.setdefault(key, Score()).add(score)
-    report(scores, kinds, refusals)
+    report(scores, kinds, refusals, alarms)
     if args.tsv:
         with open(args.tsv, "w", encoding="utf-8") as out:
             out.write("set\tkind\tspeaker\tline\tindex\tpinyin\ttrue_start_s\terror_ms\n")
@@ -300,12 +314,13 @@ def make(args, lines, kinds):
                 json.dump({"speaker": speaker, "times": moved}, f)
 
 
-def report(scores, kinds, refusals):
+def report(scores, kinds, refusals, alarms):
     ms, within = onsets_bench.median_ms, onsets_bench.within
-    print("short lines as users record them: right lines refused, wrong texts caught; |aligned - true start|")
+    print("short lines as users record them: right lines refused and warned of (false alarms), wrong texts")
+    print("caught (refused or warned of) and, of those, refused; |aligned - true start|")
     print("per syllable (median ms, % within 50 / 100 ms; refused lines count as missed), the first and the")
     print("last syllable's (median ms, % within 50 ms), |aligned - true end| of the last syllable (median ms)")
-    print(f"{'set':9} {'kind':16} {'lines':>5} {'refused':>7} {'caught':>9} {'syll':>5} {'median':>7} {'in50%':>6} "
+    print(f"{'set':9} {'kind':16} {'lines':>5} {'refused':>7} {'warned':>6} {'caught':>9} {'w-ref':>5} {'syll':>5} {'median':>7} {'in50%':>6} "
           f"{'in100%':>7} {'first':>6} {'f50%':>6} {'last':>6} {'l50%':>6} {'end':>6}")
     for subset in ("tuning", "held-out"):
         total = Score()
@@ -313,12 +328,15 @@ def report(scores, kinds, refusals):
             score = total if kind == "all" else scores.get((subset, kind), Score())
             if kind in kinds:
                 total.add(score)
-            print(f"{subset:9} {kind:16} {score.lines:>5} {score.refused:>7} {score.caught:>4} of {score.wrong:<2} "
+            print(f"{subset:9} {kind:16} {score.lines:>5} {score.refused:>7} {score.warned:>6} "
+                  f"{score.caught:>4} of {score.wrong:<2} {score.wrong_refused:>5} "
                   f"{len(score.errors):>5} {ms(score.errors):>7} {within(score.errors, 0.05):>6} "
                   f"{within(score.errors, 0.1):>7} {ms(score.first):>6} {within(score.first, 0.05):>6} "
                   f"{ms(score.last):>6} {within(score.last, 0.05):>6} {ms(score.ends):>6}")
     for line in refusals:
         print("refused:", line)
+    for line in alarms:
+        print("warned:", line)
 
 
 if __name__ == "__main__":

@@ -65,14 +65,18 @@ enum class SentenceCutMode : int {
 /// sentence, the wrong text, a sentence alone in its file whose text lacks its last words: speech
 /// runs on 0.4 s or more past its last syllable that generic speech fits better). A finding names the
 /// sentence, its time span and the evidence (how far the measure lies past what a right text gives). A line
-/// of a few syllables gives weak evidence: what is found there is a warning in every mode, never a refusal. A
+/// of a few syllables gives weak evidence: what is found there is a warning in every mode, never a refusal;
+/// and a line of one sentence under 6 syllables whose text fits its own models, its syllables' rhythm or its
+/// typical syllable only a little past the limit is aligned, in refuse mode too, with the finding as a
+/// warning that says how far past and how far past refuses. A
 /// transcript none of whose words has a Mandarin reading (every one English, read by a guess, or one no table
 /// reads) cannot be checked at all: refuse, warn and lenient alignment align it and say so in
 /// Timeline::warnings (no evidence is no refusal: a game's "OK!" spoken as written is such a line), off
 /// says nothing.
 enum class CheckMode : int {
-    /// The default: strong evidence refuses the alignment (talkface::AlignmentError). Where the
-    /// samples fall against the analysis frames moves the evidence a little, so a refusal must
+    /// The default: strong evidence refuses the alignment (talkface::AlignmentError); weak evidence on
+    /// a short line (see above) is a warning beginning as warn's, the line aligned as warn aligns it.
+    /// Where the samples fall against the analysis frames moves the evidence a little, so a refusal must
     /// hold at two of three readings a quarter of a frame apart: a file of one or two sentences
     /// is always read twice (three times where the two differ), a longer one again only where
     /// its first reading refuses. The result is the same on every run.
@@ -91,7 +95,9 @@ struct AlignOptions {
     double first_pause_end_s = 0.0;    ///< first_pause mode: the selected pause's end (seconds)
     double c1 = 0.95;                  ///< Algorithm 3.1 step 3, in 0.5..1
     double c2 = 1.45;                  ///< Algorithm 3.1 step 4, in 1..1.5
-    CheckMode check = CheckMode::refuse;  ///< what a transcript that does not match the audio does
+    /// What a transcript that does not match the audio does: refused on strong evidence (the default),
+    /// a short line aligned on weak evidence with the finding in Timeline::warnings (CheckMode).
+    CheckMode check = CheckMode::refuse;
     /// A transcript that differs from the speech by a word or two is aligned rather than refused:
     /// a stretch of speech that does not say its text is fitted as generic speech, reported in
     /// Timeline::mismatches (time span, expected text) and in Timeline::warnings, and the rest is

@@ -889,9 +889,12 @@ TF_API tf_status tf_align_options_set_c2(tf_align_options *options, double c2);
  * sentence, the wrong text, a sentence alone in its file whose text lacks its last words: speech
  * runs on 0.4 s or more past its last syllable that generic speech fits better); values equal
  * talkface::CheckMode. A finding names the sentence, its times and the evidence; a line of a few
- * syllables gives weak evidence, reported as a warning of the timeline in every mode. */
+ * syllables gives weak evidence, reported as a warning of the timeline in every mode (a line of one
+ * sentence under 6 syllables a check finds only a little past its limit is aligned with the finding
+ * as a warning, TF_CHECK_REFUSE too). */
 typedef enum tf_check_mode {
-    /* The default: strong evidence refuses the alignment (TF_ERR_ALIGNMENT). */
+    /* The default: strong evidence refuses the alignment (TF_ERR_ALIGNMENT), weak evidence on a
+     * short line is a warning. */
     TF_CHECK_REFUSE = 0,
     /* Strong evidence becomes a warning of the timeline (tf_timeline_warning), aligned as with the
      * checks off. */

@@ -131,11 +131,24 @@ constexpr double kMaxOwnFitGap = 0.0;
 // A line of fewer than kMinHeldOutSyllables gives its models little to learn: a right one gaps up to
 // 0.02 (bench/short_lines_bench.py, tuning lines), so it is refused only past this.
 constexpr double kMaxShortLineOwnFitGap = 0.05;
+// On a short line (weak_evidence.hpp) the own fit gap is strong evidence from this far past its
+// limit: right lines of 1-7 syllables on a phone's codecs and gain lay up to 0.09 past it (我先走。
+// p-fast-combo, 0.14 at 0.05; bench/short_kinds_bench.py, tuning), wrong texts up to 0.03.
+constexpr double kStrongOwnFitPastLimit = 0.1;
 // The logarithms of a right text's syllable lengths spread by a standard deviation of 0.2-0.35
 // (0.63 at most, bench/ tuning clips of one and two sentences a right text passes with): one voice
 // keeps its syllables within a factor of about two of each other. A wrong text's path squeezes
 // some into a few frames and draws others out (median 0.55).
 constexpr double kMaxSyllableLengthSpread = 0.7;
+// On a short line the spread is strong evidence from a factor this far past the limit's (2.01):
+// right lines of 4-5 syllables under a gain's lifted babble reached 2.42 (快來幫我啊！ p-vfast-combo;
+// bench/short_kinds_bench.py, tuning), wrong texts 2.02-2.40.
+constexpr double kStrongSpreadFactorPastLimit = 0.5;
+// On a short line the typical syllable's gap is strong evidence from this far past its order
+// margin (per frame): right lines under a gain's lifted babble lay up to 0.21 past it (明天早上見吧。
+// p-vfast-combo, 0.37 at 0.16, 6 syllables, the shortest the held-out check reads; bench/
+// short_kinds_bench.py, tuning), wrong texts 0.02-1.03, 9 of 31 of them past 0.25.
+constexpr double kStrongTypicalPastMargin = 0.25;
 // Two lengths are one ratio, not a rhythm: a light particle after its syllable (誰啊, 對啊:
 // 4-6 times shorter as people say them), a quick first syllable before a drawn-out last (加油, 4.2)
 // spread as far as a wrong text's, and nothing else in the line says which is which. Three
@@ -163,13 +176,19 @@ constexpr std::size_t kMaxShortSyllablesInRow = 3;
 // Messages quote this many characters of a sentence, enough to find it in the transcript.
 constexpr std::size_t kQuotedCharacters = 20;
 
-// The refusal of a sentence whose speech other sounds fit `gap` per frame better than its text, on
+// What refuses a sentence whose speech other sounds fit `gap` per frame better than its text, on
 // models described by `models` ("" for the recording's own, re-estimated on every sentence).
+std::string text_fit_refusal(std::size_t k, const FrameSpan& span, const Timeline& transcript,
+                             const std::string& models, double gap, double limit) {
+    return describe_sentence(k, span, transcript) + ": the audio does not sound like its text (" + models +
+           "other sounds fit its speech " + format_fixed(gap, 2) +
+           " per frame better than the text's, at most " + format_fixed(limit, 2) +
+           " for the right text); is it another sentence, or are two sentences swapped?";
+}
+
 [[noreturn]] void refuse_text_fit(std::size_t k, const FrameSpan& span, const Timeline& transcript,
                                   const std::string& models, double gap, double limit) {
-    throw AlignmentError(describe_sentence(k, span, transcript) + ": the audio does not sound like its text (" + models +
-                         "other sounds fit its speech " + format_fixed(gap, 2) + " per frame better than the text's, at most " +
-                         format_fixed(limit, 2) + " for the right text); is it another sentence, or are two sentences swapped?");
+    throw AlignmentError(text_fit_refusal(k, span, transcript, models, gap, limit));
 }
 
 // The standard deviation of the logarithms of `lengths`.
@@ -661,12 +680,13 @@ void check_held_out_fit(const std::vector<SentenceMetrics>& metrics, const std::
             const std::string held_out = describe_sentence(k, spans[k], transcript) +
                                          ": the audio does not sound like its text (with models learned from the rest of the recording, ";
             if (typical > margin) {
-                throw PathShapeRefusal(held_out + "other sounds fit its typical syllable " +
-                                       format_fixed(typical, 2) +
-                                       " per frame better than its text, at most " + format_fixed(margin, 2) +
-                                       " for the right text: the margin by which its text fits its speech "
-                                       "better than the same text fits the speech with its halves swapped); "
-                                       "is it another sentence, or are two sentences swapped?");
+                throw PathShapeRefusal(
+                    held_out + "other sounds fit its typical syllable " + format_fixed(typical, 2) +
+                        " per frame better than its text, at most " + format_fixed(margin, 2) +
+                        " for the right text: the margin by which its text fits its speech "
+                        "better than the same text fits the speech with its halves swapped); "
+                        "is it another sentence, or are two sentences swapped?",
+                    typical - margin, kStrongTypicalPastMargin);
             }
             const double end_typical = metrics[k].held_out_end_median;
             const bool has_end_evidence = syllables[k] >= kMinEndClauseSyllables;
@@ -718,14 +738,16 @@ void check_typical_syllable_off_noise(const std::vector<SentenceMetrics>& metric
         const double margin = metrics[k].order_margin;
         const double typical = metrics[k].held_out_median;
         if (syllables[k] >= kMinHeldOutSyllables || !(typical > margin)) continue;
-        throw AlignmentError(
+        throw WeighedRefusal(
             describe_sentence(k, spans[k], transcript) +
-            ": the audio does not sound like its text (with models learned from the rest of the "
-            "recording, other sounds fit its typical syllable " +
-            format_fixed(typical, 2) + " per frame better than its text, at most " + format_fixed(margin, 2) +
-            " for the right text: the margin by which its text fits its speech better than the "
-            "same text fits the speech with its halves swapped, its syllables kept off the noise "
-            "around its voice); is it another sentence?");
+                ": the audio does not sound like its text (with models learned from the rest of the "
+                "recording, other sounds fit its typical syllable " +
+                format_fixed(typical, 2) + " per frame better than its text, at most " +
+                format_fixed(margin, 2) +
+                " for the right text: the margin by which its text fits its speech better than the "
+                "same text fits the speech with its halves swapped, its syllables kept off the noise "
+                "around its voice); is it another sentence?",
+            typical - margin, kStrongTypicalPastMargin);
     }
 }
 
@@ -750,9 +772,12 @@ void check_own_fit(const std::vector<SentenceMetrics>& metrics, const std::vecto
     const std::vector<std::size_t> syllables = syllables_per_sentence(transcript);
     for (std::size_t k = 0; k < metrics.size(); ++k) {
         const double limit = syllables[k] < kMinHeldOutSyllables ? kMaxShortLineOwnFitGap : kMaxOwnFitGap;
-        if (metrics[k].own_fit_gap > limit)
-            refuse_text_fit(k, spans[k], transcript, "even with models learned from this speech and its text, ",
-                            metrics[k].own_fit_gap, limit);
+        const double gap = metrics[k].own_fit_gap;
+        if (gap > limit)
+            throw WeighedRefusal(
+                text_fit_refusal(k, spans[k], transcript,
+                                 "even with models learned from this speech and its text, ", gap, limit),
+                gap - limit, kStrongOwnFitPastLimit);
     }
 }
 
@@ -786,12 +811,13 @@ void check_syllable_lengths(const std::vector<SentenceMetrics>& metrics, const s
     for (std::size_t k = 0; k < metrics.size(); ++k) {
         const double spread = metrics[k].length_spread;
         if (!(spread > kMaxSyllableLengthSpread)) continue;
-        throw PathShapeRefusal(describe_sentence(k, spans[k], transcript) +
-                               ": its syllables would be squeezed and drawn out " +
-                               "far beyond one voice's rhythm (their lengths spread by a factor of " +
-                               format_fixed(std::exp(spread), 2) + ", at most " +
-                               format_fixed(std::exp(kMaxSyllableLengthSpread), 2) +
-                               " for the right text); is it another sentence, or are two sentences swapped?");
+        throw PathShapeRefusal(
+            describe_sentence(k, spans[k], transcript) + ": its syllables would be squeezed and drawn out " +
+                "far beyond one voice's rhythm (their lengths spread by a factor of " +
+                format_fixed(std::exp(spread), 2) + ", at most " +
+                format_fixed(std::exp(kMaxSyllableLengthSpread), 2) +
+                " for the right text); is it another sentence, or are two sentences swapped?",
+            std::exp(spread) - std::exp(kMaxSyllableLengthSpread), kStrongSpreadFactorPastLimit);
     }
 }
 

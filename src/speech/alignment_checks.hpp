@@ -12,6 +12,7 @@
 #include "speech/frame_features.hpp"
 #include "speech/hsmm.hpp"
 #include "speech/sentence_cutter.hpp"
+#include "speech/weak_evidence.hpp"
 #include "talkface/errors.hpp"
 #include "talkface/timeline.hpp"
 
@@ -166,10 +167,10 @@ constexpr double kMaxNucleiPerSyllable = 1.6;
 // syllable against the order margin): where a line's span holds noise around its voice, the path
 // on it draws an edge syllable over the noise and squeezes its neighbours, and the refusal is that
 // path's, the text's or not (bench/README.md, session 39 (short7)). align_track lets the line's own
-// reading answer it (is_vouched_by_order).
-class PathShapeRefusal : public AlignmentError {
+// reading answer it (is_vouched_by_order). Its measure is weighed (weak_evidence.hpp).
+class PathShapeRefusal : public WeighedRefusal {
 public:
-    using AlignmentError::AlignmentError;
+    using WeighedRefusal::WeighedRefusal;
 };
 
 // A line's own reading (the line among quieter voices, or the speech after a gain's lifted lead-in)

@@ -30,6 +30,7 @@
 #include "speech/silenced_words.hpp"
 #include "speech/skipped_time.hpp"
 #include "speech/tone_witness.hpp"
+#include "speech/weak_evidence.hpp"
 #include "talkface/errors.hpp"
 #include "text/unread_transcript.hpp"
 
@@ -264,8 +265,9 @@ constexpr std::size_t kOtherPhaseSkips[] = {kHopSamples / 4, 3 * kHopSamples / 4
 //
 // A file's bytes are searched for a second recording joined to it (describe_joined_copy, which reads
 // the whole file) only where the text's fit is not vouched for: where it is refused, and in a mode
-// that aligns a text that does not fit (warn, off, lenient). A text aligned in refuse mode fits the
-// speech, joined or not, and a good file is read once.
+// that aligns a text that does not fit (warn, off, lenient, and a short line refuse mode aligns on
+// weak evidence). A text aligned in refuse mode otherwise fits the speech, joined or not, and a good
+// file is read once.
 //
 // A refusal is a majority of three phases. Where the samples fall against the 10 ms frames moves
 // a check's figures by up to 0.2 per frame and a path by a syllable, so a text near a check's
@@ -278,7 +280,9 @@ constexpr std::size_t kOtherPhaseSkips[] = {kHopSamples / 4, 3 * kHopSamples / 4
 // first reading's timeline, or, where that refused, the first other one that aligned, its times
 // moved onto the recording's (its warnings' words keep that reading's); the other readings are work
 // done again on the bar (ProgressReporter). Refusing only where two phases refuse, never where one
-// aligns, would pick the kinder of two draws and let wrong texts through (Session 20).
+// aligns, would pick the kinder of two draws and let wrong texts through (Session 20). A short line
+// the vote refuses on weak evidence (weak_evidence.hpp) is aligned instead, as CheckMode::warn
+// aligns it, and the finding kept as a warning.
 Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open, const std::string& file_path,
                       const Timeline& transcript, const AlignOptions& given,
                       const std::vector<GivenSpan>& given_spans, const ProgressCallback& callback) {
@@ -315,8 +319,10 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
         return file_path.empty() ? std::nullopt : describe_joined_copy(file_path);
     };
     Timeline result;
+    std::optional<std::string> weak_finding;
     try {
         std::optional<AlignmentError> first_refusal;
+        std::optional<std::string> first_weak_finding;
         try {
             result = align_witnessed(open, track, loudness, silence_skipped, transcript,
                                      options_after_skip(options, silence_skipped_s),
@@ -325,6 +331,7 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
         } catch (const AlignmentError& refusal) {
             if (!is_voted) throw;
             first_refusal = refusal;
+            first_weak_finding = describe_weak_evidence(refusal, transcript);
         }
         const std::vector<bool> is_spoken = spoken_sentences_of(transcript);
         const bool is_short = static_cast<std::size_t>(std::count(is_spoken.begin(), is_spoken.end(),
@@ -333,6 +340,7 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
             std::size_t refusals = first_refusal ? 1 : 0;
             std::size_t alignments = first_refusal ? 0 : 1;
             std::optional<AlignmentError> other_refusal;
+            std::optional<std::string> other_weak_finding;
             std::optional<Timeline> other_alignment;
             for (const std::size_t phase_skipped : kOtherPhaseSkips) {
                 if (refusals >= 2 || alignments >= 2) break;
@@ -352,11 +360,29 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
                     }
                 } catch (const AlignmentError& refusal) {
                     ++refusals;
-                    if (!other_refusal) other_refusal = refusal;
+                    if (!other_refusal) {
+                        other_refusal = refusal;
+                        other_weak_finding = describe_weak_evidence(refusal, transcript);
+                    }
                 }
             }
-            if (refusals >= 2) throw first_refusal ? *first_refusal : *other_refusal;
-            if (first_refusal) result = std::move(*other_alignment);
+            if (refusals >= 2) {
+                // A short line refused on weak evidence is aligned as CheckMode::warn aligns it:
+                // the first reading's alignment, made without the checks where they refused it.
+                weak_finding = first_refusal ? first_weak_finding : other_weak_finding;
+                if (!weak_finding) throw first_refusal ? *first_refusal : *other_refusal;
+                if (first_refusal) {
+                    AlignOptions unchecked = options;
+                    unchecked.check = CheckMode::off;
+                    result = align_witnessed(open, track, loudness, silence_skipped, transcript,
+                                             options_after_skip(unchecked, silence_skipped_s),
+                                             spans_after_skip(given_spans, silence_skipped_s), progress);
+                    move_onto_recording(result, silence_skipped_s);
+                }
+                result.warnings.push_back(*weak_finding);
+            } else if (first_refusal) {
+                result = std::move(*other_alignment);
+            }
         }
     } catch (const AlignmentError& error) {
         const auto joined = joined_copy();
@@ -377,8 +403,9 @@ Timeline align_source(const std::function<std::unique_ptr<AudioSource>()>& open,
     // A text vouched for by the checks may still have been stretched over a second recording joined
     // to its own: the join told from the headers alone (an MP3's frames', an Ogg file's pages', a Matroska
     // file's Segment's) is asked of every file.
-    const auto joined =
-        is_voted ? (file_path.empty() ? std::nullopt : describe_second_stream(file_path)) : joined_copy();
+    const auto joined = is_voted && !weak_finding
+                            ? (file_path.empty() ? std::nullopt : describe_second_stream(file_path))
+                            : joined_copy();
     if (joined) result.warnings.push_back(source->name() + ": " + joined->description);
     for (const std::string& note : source->notes()) result.warnings.push_back(source->name() + ": " + note);
     for (const std::string& silenced :
