@@ -1,6 +1,6 @@
 // The transcript reader's runs of Chinese characters: each run cut into its likeliest words and read by
-// the tables, a particle, a return verb, a title's head or 得 "must" deciding a reading in context, and a
-// written form's words read so.
+// the tables, a particle, a return verb, a title's head, 得 "must" or a measure word or a verb alone (种
+// 只 教) deciding a reading in context, and a written form's words read so.
 #include "text/transcript_reader.hpp"
 
 #include <string>
@@ -12,6 +12,7 @@
 #include "text/aspect_particle.hpp"
 #include "text/code_points.hpp"
 #include "text/latin_words.hpp"
+#include "text/measure_or_verb.hpp"
 #include "text/must_verb.hpp"
 #include "text/return_verb.hpp"
 #include "text/script_variant.hpp"
@@ -43,6 +44,7 @@ std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharact
         if (in_context.empty()) in_context = detail::return_verb_reading(words, w, ends_clause);
         if (in_context.empty()) in_context = detail::title_head_reading(words, w);
         if (in_context.empty()) in_context = detail::must_verb_reading(words, w);
+        if (in_context.empty()) in_context = detail::measure_or_verb_reading(words, w);
         for (std::size_t k = 0; k < length; ++k) {
             const auto& character = run[first + k];
             std::string pinyin = character.fix;

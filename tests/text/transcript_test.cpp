@@ -372,6 +372,45 @@ TEST_SUITE("transcript") {
         CHECK(toneless("飞行员") == "fei xing yuan");
     }
 
+    TEST_CASE(
+        "a word whose character differs from its commonest reading in the tone alone takes the word's tone") {
+        // Each row but the limits failed on main 2167fb4 (readings_dev2, session 44): shao3, wei4, jia3,
+        // zhao2, geng4, kong1, guan1, dao4, cheng1.
+        CHECK(pinyin("青少年的爱好") == "qing1 shao4 nian2 de5 ai4 hao4");
+        CHECK(pinyin("他认为这是化学反应") == "ta1 ren4 wei2 zhe4 shi4 hua4 xue2 fan3 ying4");
+        CHECK(pinyin("暑假期间") == "shu3 jia4 qi1 jian1");
+        CHECK(pinyin("飞机着陆") == "fei1 ji1 zhuo2 lu4");
+        CHECK(pinyin("系统变更") == "xi4 tong3 bian4 geng1");
+        CHECK(pinyin("周末有空吗") == "zhou1 mo4 you3 kong4 ma5");
+        CHECK(pinyin("世界冠軍") == "shi4 jie4 guan4 jun1");
+        CHECK(pinyin("他摔倒了") == "ta1 shuai1 dao3 le5");
+        CHECK(pinyin("难不倒他") == "nan2 bu4 dao3 ta1");
+        CHECK(pinyin("称心如意") == "chen4 xin1 ru2 yi4");
+        // The limits: the words of the commonest reading.
+        CHECK(pinyin("因为") == "yin1 wei4");
+        CHECK(pinyin("应该") == "ying1 gai1");
+        CHECK(pinyin("真假") == "zhen1 jia3");
+        CHECK(pinyin("更加") == "geng4 jia1");
+        CHECK(pinyin("空气") == "kong1 qi4");
+        CHECK(pinyin("倒水") == "dao4 shui3");
+        CHECK(pinyin("只有") == "zhi3 you3");
+    }
+
+    TEST_CASE("种 and 只 after a count are measure words, 种 elsewhere and 教 alone are verbs") {
+        // Each row but the limits failed on main 2167fb4 (readings_dev2, session 44): zhong3, zhi3, jiao4.
+        CHECK(pinyin("老师教我们唱歌") == "lao3 shi1 jiao1 wo3 men5 chang4 ge1");
+        CHECK(pinyin("妈妈教孩子画画") == "ma1 ma5 jiao1 hai2 zi5 hua4 hua4");
+        CHECK(pinyin("他去年种了几棵树") == "ta1 qu4 nian2 zhong4 le5 ji3 ke1 shu4");
+        CHECK(pinyin("八只羊") == "ba1 zhi1 yang2");
+        CHECK(pinyin("三只鸡") == "san1 zhi1 ji1");
+        // The limits: the words of 教 and 种, a measure word, and 只 the adverb.
+        CHECK(pinyin("教育") == "jiao4 yu4");
+        CHECK(pinyin("请教") == "qing3 jiao4");
+        CHECK(pinyin("种子") == "zhong3 zi5");
+        CHECK(pinyin("有三种颜色") == "you3 san1 zhong3 yan2 se4");
+        CHECK(pinyin("这只是开始") == "zhe4 zhi3 shi4 kai1 shi3");
+    }
+
     TEST_CASE("syllables carry the character, numbered pinyin and their sentence") {
         const auto timeline = read_transcript("銀行。女兒");
         REQUIRE(timeline.syllables.size() == 4);

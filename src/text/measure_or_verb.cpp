@@ -1,0 +1,29 @@
+#include "text/measure_or_verb.hpp"
+
+#include "text/written_number_scan.hpp"
+
+namespace talkface::detail {
+
+namespace {
+
+// What a measure word follows: a count (一 两 三 ... 几 多 每 各) or a demonstrative (这 那 哪 某 此 该).
+bool ends_in_count(std::string_view word) {
+    constexpr std::string_view kCounts[] = {"一", "二", "两", "兩", "三", "四", "五", "六", "七", "八",
+                                            "九", "十", "百", "千", "万", "萬", "几", "幾", "多", "每",
+                                            "各", "这", "這", "那", "哪", "某", "此", "该", "該", "半"};
+    return ends_with_any(word, kCounts);
+}
+
+}  // namespace
+
+std::string_view measure_or_verb_reading(const std::vector<std::string>& words, std::size_t w) {
+    if (w >= words.size()) return {};
+    const auto& word = words[w];
+    if (word == "教") return "jiao1";
+    const bool after_count = w > 0 && ends_in_count(words[w - 1]);
+    if (word == "种" || word == "種") return after_count ? "zhong3" : "zhong4";
+    if (word == "只" && after_count) return "zhi1";
+    return {};
+}
+
+}  // namespace talkface::detail

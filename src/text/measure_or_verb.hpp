@@ -1,0 +1,23 @@
+// A polyphonic character the cut leaves alone, whose words carry one reading and the character alone
+// another: 种 and 只 are measure words after a count or a demonstrative (三种 这种 两只 那只: zhǒng,
+// zhī), and 种 is the verb zhòng elsewhere (爷爷种了几棵树); 教 alone is the verb jiāo (老师教我们
+// 语文), jiào being the reading of its words (教育 教师 请教). The table reads each character alone by
+// its commonest reading in running text, the words' (zhong3, zhi3, jiao4). docs/written-forms.md
+// ("Words and polyphonic characters") lists the rules.
+#ifndef TALKFACE_TEXT_MEASURE_OR_VERB_HPP
+#define TALKFACE_TEXT_MEASURE_OR_VERB_HPP
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace talkface::detail {
+
+// The reading of words[w] where it is 教 (教) or 种 (種) alone, or 只 alone after a count or a
+// demonstrative; empty elsewhere. `words` is a run of Chinese characters cut into words.
+std::string_view measure_or_verb_reading(const std::vector<std::string>& words, std::size_t w);
+
+}  // namespace talkface::detail
+
+#endif
