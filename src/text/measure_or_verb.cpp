@@ -6,11 +6,13 @@ namespace talkface::detail {
 
 namespace {
 
-// What a measure word follows: a count (一 两 三 ... 几 多 每 各) or a demonstrative (这 那 哪 某 此 该).
+// What a measure word follows: a count (一 两 三 ... 几 多 多少 每 各 数 若干) or a demonstrative (这 那 哪
+// 何 某 此 该).
 bool ends_in_count(std::string_view word) {
-    constexpr std::string_view kCounts[] = {"一", "二", "两", "兩", "三", "四", "五", "六", "七", "八",
-                                            "九", "十", "百", "千", "万", "萬", "几", "幾", "多", "每",
-                                            "各", "这", "這", "那", "哪", "某", "此", "该", "該", "半"};
+    constexpr std::string_view kCounts[] = {"一", "二", "两", "兩",   "三", "四", "五",   "六", "七",
+                                            "八", "九", "十", "百",   "千", "万", "萬",   "几", "幾",
+                                            "多", "每", "各", "这",   "這", "那", "哪",   "某", "此",
+                                            "该", "該", "半", "多少", "数", "數", "若干", "何"};
     return ends_with_any(word, kCounts);
 }
 
@@ -21,7 +23,9 @@ std::string_view measure_or_verb_reading(const std::vector<std::string>& words, 
     const auto& word = words[w];
     if (word == "教") return "jiao1";
     const bool after_count = w > 0 && ends_in_count(words[w - 1]);
-    if (word == "种" || word == "種") return after_count ? "zhong3" : "zhong4";
+    // A run of characters starts after what is not one: a written number may count 种 there (3种, 第3种,
+    // 10多种), so there it keeps the table's measure word.
+    if (word == "种" || word == "種") return after_count ? "zhong3" : w == 0 ? "" : "zhong4";
     if (word == "只" && after_count) return "zhi1";
     return {};
 }

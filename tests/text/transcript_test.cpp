@@ -409,6 +409,10 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("种子") == "zhong3 zi5");
         CHECK(pinyin("有三种颜色") == "you3 san1 zhong3 yan2 se4");
         CHECK(pinyin("这只是开始") == "zhe4 zhi3 shi4 kai1 shi3");
+        // 种 counted by a written number, or by 多少, stays the measure word.
+        CHECK(pinyin("第3种情况") == "di4 san1 zhong3 qing2 kuang4");
+        CHECK(pinyin("有10多种") == "you3 shi2 duo1 zhong3");
+        CHECK(pinyin("有多少种") == "you3 duo1 shao3 zhong3");
     }
 
     TEST_CASE("syllables carry the character, numbered pinyin and their sentence") {
