@@ -1,19 +1,18 @@
 #include "text/measure_or_verb.hpp"
 
+#include "text/count_words.hpp"
 #include "text/written_number_scan.hpp"
 
 namespace talkface::detail {
 
 namespace {
 
-// What a measure word follows: a count (一 两 三 ... 几 多 多少 每 各 数 若干) or a demonstrative (这 那 哪
-// 何 某 此 该).
+// What a measure word follows: a count (count_words.hpp, and 多 多少 每 各 数 若干) or a demonstrative (这 那
+// 哪 何 某 此 该).
 bool ends_in_count(std::string_view word) {
-    constexpr std::string_view kCounts[] = {"一", "二", "两", "兩",   "三", "四", "五",   "六", "七",
-                                            "八", "九", "十", "百",   "千", "万", "萬",   "几", "幾",
-                                            "多", "每", "各", "这",   "這", "那", "哪",   "某", "此",
-                                            "该", "該", "半", "多少", "数", "數", "若干", "何"};
-    return ends_with_any(word, kCounts);
+    constexpr std::string_view kOtherCounts[] = {"多", "多少", "每", "各", "数", "數", "若干", "这",
+                                                 "這", "那",   "哪", "何", "某", "此", "该",   "該"};
+    return ends_with_count(word) || ends_with_any(word, kOtherCounts);
 }
 
 }  // namespace
