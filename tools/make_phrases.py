@@ -150,6 +150,13 @@ def numbered_reading(character, toneless, orders, fallback_character, after_firs
     return None
 
 
+def begins_noun(word, k, simplified):
+    """儿 or 子 at word[k] begins a noun of the list with the character after it (少年儿童: 儿童 ér;
+    中华儿女, 炎黄子孙: 儿女 子孙), so it is no suffix there. 得 and 裡 are left to the suffix rule: the
+    words they begin (得到 得过 裡去) follow a verb as its complement, light (看得到 过得去 哪裡去)."""
+    return word[k] in ("儿", "兒", "子") and k + 1 < len(word) and word[k:k + 2] in simplified
+
+
 def with_known_words(word, readings, additions):
     """The readings of a word with those of the additions inside it laid over them, the longest
     first: a compound says a word the way the word is said alone (好朋友 and 朋友们 as 朋友 peng2
@@ -223,7 +230,7 @@ def main():
         if source in additions:
             readings = additions[source]
         else:
-            readings = [numbered_reading(c, s, orders, f, k > 0)
+            readings = [numbered_reading(c, s, orders, f, k > 0 and not begins_noun(source, k, simplified))
                         for k, (c, s, f) in enumerate(zip(form, syllables, source))]
             if None in readings and polyphonic:
                 unreadable += 1  # pyzy reads a character in a way no Unihan field knows: not trusted

@@ -17,15 +17,20 @@ bool ends_in_count(std::string_view word) {
 
 }  // namespace
 
-std::string_view measure_or_verb_reading(const std::vector<std::string>& words, std::size_t w) {
+std::string_view measure_or_verb_reading(const std::vector<std::string>& words, std::size_t w,
+                                         bool follows_number) {
     if (w >= words.size()) return {};
     const auto& word = words[w];
     if (word == "教") return "jiao1";
-    const bool after_count = w > 0 && ends_in_count(words[w - 1]);
+    // The run's first word counts what a written number right before the run says (2只猫).
+    const bool after_count = w > 0 ? ends_in_count(words[w - 1]) : follows_number;
     // A run of characters starts after what is not one: a written number may count 种 there (3种, 第3种,
     // 10多种), so there it keeps the table's measure word.
     if (word == "种" || word == "種") return after_count ? "zhong3" : w == 0 ? "" : "zhong4";
-    if (word == "只" && after_count) return "zhi1";
+    // The list joins 只 to a noun it counts (只猫 只狗, from 一只猫), and to what the adverb zhǐ starts.
+    constexpr std::string_view kOnly[] = {"只是", "只有", "只要", "只能",   "只好", "只得", "只需",
+                                          "只怕", "只管", "只顾", "只不过", "只见", "只因"};
+    if (after_count && starts_with_any(word, {"只"}) && !starts_with_any(word, kOnly)) return "zhi1";
     return {};
 }
 

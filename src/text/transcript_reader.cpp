@@ -260,6 +260,7 @@ std::size_t TranscriptReader::read_item(const std::vector<CodePoint>& text, std:
     }
     if (tables_.has_readings(c.text)) {
         if (sentence_ended_) close_sentence();
+        if (run_.empty()) run_follows_number_ = follows_written_number(i);
         append_text(c.text);
         run_.push_back({&c, c.text, {}});
         return i + 1;

@@ -141,7 +141,13 @@ private:
     // word read by the phrase table, or each of its characters by its most frequent reading;
     // fixes win over both.
     // `ends_clause`: a pause or end mark follows the run, or the text ends (return_verb.hpp).
-    std::vector<std::string> read_han(const std::vector<HanCharacter>& run, bool ends_clause = false) const;
+    // `follows_number`: a written number ends right where the run starts (measure_or_verb.hpp).
+    std::vector<std::string> read_han(const std::vector<HanCharacter>& run, bool ends_clause = false,
+                                      bool follows_number = false) const;
+
+    // The last written form is a number whose last digit stands right before text[i], no space
+    // between (2只: a measure word the number counts).
+    bool follows_written_number(std::size_t i) const;
 
     void flush_run(bool ends_clause = false);
 
@@ -188,6 +194,7 @@ private:
     const detail::ReadingTables& tables_;
     Timeline timeline_;
     std::vector<HanCharacter> run_;             // Chinese characters not yet read, in order
+    bool run_follows_number_ = false;           // a written number ends where run_ starts
     std::vector<std::size_t> drawing_ends_;     // where an emoji or a face drawn in signs starting there ends
     std::optional<std::size_t> last_form_end_;  // where the last written form ends in the text
     std::size_t form_warnings_ = 0;             // warnings before the last written form's own

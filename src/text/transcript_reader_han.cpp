@@ -1,6 +1,7 @@
 // The transcript reader's runs of Chinese characters: each run cut into its likeliest words and read by
-// the tables, a particle, a return verb, a title's head, 得 "must" or a measure word or a verb alone (种
-// 只 教) deciding a reading in context, and a written form's words read so.
+// the tables, a particle, a return verb, a title's head, 得 "must", a measure word or a verb alone (种
+// 只 教), a noun after what counts or points to it (该地 三天假) or the copula after a quantity (率为)
+// deciding a reading in context, and a written form's words read so.
 #include "text/transcript_reader.hpp"
 
 #include <string>
@@ -11,18 +12,22 @@
 #include "common/internal_error.hpp"
 #include "text/aspect_particle.hpp"
 #include "text/code_points.hpp"
+#include "text/count_words.hpp"
+#include "text/counted_noun.hpp"
 #include "text/latin_words.hpp"
 #include "text/measure_or_verb.hpp"
 #include "text/must_verb.hpp"
+#include "text/quantity_copula.hpp"
 #include "text/return_verb.hpp"
 #include "text/script_variant.hpp"
 #include "text/title_head.hpp"
 #include "text/word_segmentation.hpp"
+#include "text/written_number_scan.hpp"
 
 namespace talkface::detail {
 
-std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharacter>& run,
-                                                    bool ends_clause) const {
+std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharacter>& run, bool ends_clause,
+                                                    bool follows_number) const {
     std::vector<std::string_view> characters;
     for (const auto& character : run) characters.push_back(character.text);
     std::vector<std::string> readings_of_run;
@@ -44,7 +49,9 @@ std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharact
         if (in_context.empty()) in_context = detail::return_verb_reading(words, w, ends_clause);
         if (in_context.empty()) in_context = detail::title_head_reading(words, w);
         if (in_context.empty()) in_context = detail::must_verb_reading(words, w);
-        if (in_context.empty()) in_context = detail::measure_or_verb_reading(words, w);
+        if (in_context.empty()) in_context = detail::measure_or_verb_reading(words, w, follows_number);
+        if (in_context.empty()) in_context = detail::counted_noun_reading(words, w);
+        if (in_context.empty()) in_context = detail::quantity_copula_reading(words, w, ends_clause);
         for (std::size_t k = 0; k < length; ++k) {
             const auto& character = run[first + k];
             std::string pinyin = character.fix;
@@ -69,9 +76,21 @@ std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharact
 }
 
 void TranscriptReader::flush_run(bool ends_clause) {
-    const auto readings = read_han(run_, ends_clause);
+    const auto readings = read_han(run_, ends_clause, run_follows_number_);
     for (std::size_t k = 0; k < run_.size(); ++k) add_syllable(std::string(run_[k].text), readings[k]);
     run_.clear();
+}
+
+bool TranscriptReader::follows_written_number(std::size_t i) const {
+    if (last_form_end_ != i || !pending_space_.empty() || timeline_.written_forms.empty()) return false;
+    const auto& form = timeline_.written_forms.back().text;
+    // An ASCII digit, a full-width one (０-９: EF BC 90-99), or the 万 or 亿 of 3万 (count_words.hpp).
+    const auto last = static_cast<unsigned char>(form.back());
+    const bool wide_digit =
+        form.size() >= 3 && form.compare(form.size() - 3, 2, "\xEF\xBC") == 0 && last >= 0x90 && last <= 0x99;
+    constexpr std::string_view kHundredMillions[] = {"亿", "億"};
+    return (last >= '0' && last <= '9') || wide_digit || detail::ends_with_count(form) ||
+           detail::ends_with_any(form, kHundredMillions);
 }
 
 std::string TranscriptReader::with_local_one(std::string words) const {
