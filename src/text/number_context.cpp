@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "text/counted_buildings.hpp"
 #include "text/counted_parts.hpp"
 #include "text/dates_and_times.hpp"
 #include "text/digit_codes.hpp"
@@ -262,7 +263,7 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
     // 2美元 and 2元 are said (session 32: 二, read as a bare number).
     if (whole == "2" && !context.is_ordinal && !context.is_model &&
         (context.has_unit || context.has_currency || takes_liang(context.next) || context.measures_degrees ||
-         context.counts_in_layout)) {
+         context.counts_in_layout || context.counts_buildings)) {
         said.words = "两";
         return said;
     }
@@ -373,6 +374,7 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
                                              !(start > 0 && is_one_of(text[start - 1].value, U"男女")));
     context.counts_in_layout =
         sign_words.empty() && currency == nullptr && counts_in_layout(text, start, number);
+    context.counts_buildings = sign_words.empty() && currency == nullptr && counts_buildings(text, number);
     context.is_grade = context.is_model && is_filter_grade(text, start, number.whole);
     context.is_span_of_years = counts_years(text, start, number);
     context.is_service_call = is_service_call(text, start, number.end);
