@@ -520,6 +520,18 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("看得到") == "kan4 de5 dao4");
     }
 
+    TEST_CASE("the list's words of 供 gòng and 量 liáng") {
+        // Each row but the limits failed on main 1e20c3d: liang4 four times, gong1.
+        CHECK(pinyin("用仪器测量") == "yong4 yi2 qi4 ce4 liang2");
+        CHECK(pinyin("如何衡量") == "ru2 he2 heng2 liang2");
+        CHECK(pinyin("他上下打量着我") == "ta1 shang4 xia4 da3 liang5 zhe5 wo3");
+        CHECK(pinyin("供奉祖先") == "gong4 feng4 zu3 xian1");
+        CHECK(pinyin("量身定做") == "liang2 shen1 ding4 zuo4");
+        // The limits: 量 liàng, an amount, and 供 gōng, supply.
+        CHECK(pinyin("质量很好") == "zhi4 liang4 hen3 hao3");
+        CHECK(pinyin("提供服务") == "ti2 gong1 fu2 wu4");
+    }
+
     TEST_CASE("syllables carry the character, numbered pinyin and their sentence") {
         const auto timeline = read_transcript("銀行。女兒");
         REQUIRE(timeline.syllables.size() == 4);

@@ -7979,7 +7979,7 @@ static const char* const kPhrasesText[] = {
     "來自北京\t1268\n"
     "來華\t1258\n"
     "來著\t1092\tlai2 zhe5\n"
-    "來衡量\t1238\n"
+    "來衡量\t1238\tlai2 heng2 liang2\n"
     "來表示\t1273\n"
     "來襲\t1283\n"
     "來訪\t1191\n"
@@ -8038,7 +8038,7 @@ static const char* const kPhrasesText[] = {
     "供养\t1232\n"
     "供大于求\t1311\tgong1 da4 yu2 qiu2\n"
     "供大於求\t1311\tgong1 da4 yu2 qiu2\n"
-    "供奉\t1258\n"
+    "供奉\t1258\tgong4 feng4\n"
     "供应\t1019\tgong1 ying4\n"
     "供应商\t1063\tgong1 ying4 shang1\n"
     "供应量\t1242\tgong1 ying4 liang4\n"
@@ -8066,8 +8066,8 @@ static const char* const kPhrasesText[] = {
     "供稿\t1304\n"
     "供給\t1120\tgong1 ji3\n"
     "供给\t1120\tgong1 ji3\n"
-    "供职\t1304\n"
-    "供職\t1304\n"
+    "供职\t1304\tgong4 zhi2\n"
+    "供職\t1304\tgong4 zhi2\n"
     "供貨\t1186\n"
     "供貨商\t1229\n"
     "供货\t1186\n"
@@ -10787,12 +10787,12 @@ static const char* const kPhrasesText[] = {
     "八点半\t1308\n"
     "八百\t1241\n"
     "八种\t1317\tba1 zhong3\n"
+    ,
     "八種\t1317\n"
     "八級\t1308\n"
     "八级\t1308\n"
     "八萬\t1303\n"
     "八號\t1331\n"
-    ,
     "八角\t1299\tba1 jiao3\n"
     "八路\t1331\n"
     "八路军\t1256\n"
@@ -14611,10 +14611,10 @@ static const char* const kPhrasesText[] = {
     "勞動模範\t1324\tlao2 dong4 mo2 fan4\n"
     "勞動法\t1230\n"
     "勞動爭議\t1292\n"
+    ,
     "勞動節\t1300\n"
     "勞動者\t1117\n"
     "勞動部門\t1293\n"
-    ,
     "勞動關係\t1237\n"
     "勞務\t1184\n"
     "勞務派遣\t1321\tlao2 wu4 pai4 qian3\n"
@@ -17267,7 +17267,7 @@ static const char* const kPhrasesText[] = {
     "口乾\t1329\tkou3 gan1\n"
     "口交\t1229\n"
     "口令\t1204\n"
-    "口供\t1318\n"
+    "口供\t1318\tkou3 gong4\n"
     "口口\t1302\n"
     "口口声声\t1266\n"
     "口口聲聲\t1266\n"
@@ -18126,10 +18126,10 @@ static const char* const kPhrasesText[] = {
     "各个\t991\n"
     "各个国家\t1317\tge4 ge4 guo2 jia1\n"
     "各个方面\t1210\n"
+    ,
     "各个环节\t1259\n"
     "各人\t1196\n"
     "各位\t965\n"
-    ,
     "各位朋友\t1252\tge4 wei4 peng2 you5\n"
     "各位領導\t1315\n"
     "各位领导\t1315\n"
@@ -21830,9 +21830,9 @@ static const char* const kPhrasesText[] = {
     "在所難免\t1278\n"
     "在手\t1284\n"
     "在新\t1251\n"
+    ,
     "在新的\t1234\tzai4 xin1 de5\n"
     "在新窗口\t1330\n"
-    ,
     "在於\t988\tzai4 yu2\n"
     "在旁\t1324\n"
     "在某\t1214\n"
@@ -25121,10 +25121,10 @@ static const char* const kPhrasesText[] = {
     "失散\t1318\n"
     "失明\t1258\n"
     "失望\t1040\n"
+    ,
     "失業\t1136\n"
     "失業人員\t1284\n"
     "失業保險\t1281\n"
-    ,
     "失業率\t1269\tshi1 ye4 lv4\n"
     "失火\t1291\n"
     "失灵\t1253\n"
@@ -28903,10 +28903,10 @@ static const char* const kPhrasesText[] = {
     "對白\t1216\n"
     "對着\t1072\tdui4 zhe5\n"
     "對稱\t1169\tdui4 chen4\n"
+    ,
     "對立\t1178\n"
     "對立面\t1312\n"
     "對策\t1103\n"
-    ,
     "對策研究\t1311\n"
     "對罵\t1310\n"
     "對美\t1297\n"
@@ -32528,10 +32528,10 @@ static const char* const kPhrasesText[] = {
     "店鋪\t1113\n"
     "店铺\t1113\n"
     "店長\t1249\tdian4 zhang3\n"
+    ,
     "店长\t1249\tdian4 zhang3\n"
     "店面\t1164\n"
     "庙\t1160\n"
-    ,
     "庙会\t1279\tmiao4 hui4\n"
     "庙宇\t1304\n"
     "庙里\t1303\n"
@@ -35195,7 +35195,7 @@ static const char* const kPhrasesText[] = {
     "思远\t1329\tsi1 yuan3\n"
     "思遠\t1329\tsi1 yuan3\n"
     "思鄉\t1321\tsi1 xiang1\n"
-    "思量\t1276\tsi1 liang4\n"
+    "思量\t1276\tsi1 liang5\n"
     "怞\t1348\n"
     "怠\t1332\n"
     "怠慢\t1292\n"
@@ -36286,9 +36286,9 @@ static const char* const kPhrasesText[] = {
     "愛玩\t1294\n"
     "愛琴海\t1329\n"
     "愛生活\t1325\n"
+    ,
     "愛的\t1120\tai4 de5\n"
     "愛的人\t1165\tai4 de5 ren2\n"
-    ,
     "愛看\t1242\n"
     "愛着\t1196\tai4 zhe5\n"
     "愛着你\t1301\tai4 zhe5 ni3\n"
@@ -38133,7 +38133,7 @@ static const char* const kPhrasesText[] = {
     "打進\t1201\n"
     "打遊戲\t1219\tda3 you2 xi4\n"
     "打過\t1138\n"
-    "打量\t1208\n"
+    "打量\t1208\tda3 liang5\n"
     "打針\t1217\n"
     "打錢\t1243\n"
     "打錯\t1173\n"
@@ -40104,10 +40104,10 @@ static const char* const kPhrasesText[] = {
     "掂\t1240\n"
     "掂量\t1302\n"
     "掃\t1108\n"
+    ,
     "掃地\t1252\tsao3 di4\n"
     "掃墓\t1295\n"
     "掃射\t1312\n"
-    ,
     "掃帚\t1308\tsao4 zhou5\n"
     "掃把\t1318\n"
     "掃描\t1075\n"
@@ -43764,8 +43764,8 @@ static const char* const kPhrasesText[] = {
     "无法使用\t1198\twu2 fa3 shi3 yong4\n"
     "无法启动\t1321\twu2 fa3 qi3 dong4\n"
     "无法完成\t1325\twu2 fa3 wan2 cheng2\n"
-    "无法忘记\t1328\twu2 fa3 wang4 ji4\n"
     ,
+    "无法忘记\t1328\twu2 fa3 wang4 ji4\n"
     "无法打开\t1314\twu2 fa3 da3 kai1\n"
     "无法找到\t1314\twu2 fa3 zhao3 dao4\n"
     "无法抗拒\t1330\twu2 fa3 kang4 ju4\n"
@@ -47050,7 +47050,7 @@ static const char* const kPhrasesText[] = {
     "来自\t933\n"
     "来自中国\t1254\n"
     "来自北京\t1268\n"
-    "来衡量\t1238\n"
+    "来衡量\t1238\tlai2 heng2 liang2\n"
     "来表示\t1273\n"
     "来袭\t1283\n"
     "来讲\t1073\n"
@@ -47377,11 +47377,11 @@ static const char* const kPhrasesText[] = {
     "果蔬\t1286\n"
     "果農\t1319\n"
     "果酱\t1320\n"
+    ,
     "果醬\t1320\n"
     "枝\t1143\n"
     "枝叶\t1279\tzhi1 ye4\n"
     "枝头\t1268\n"
-    ,
     "枝条\t1292\n"
     "枝條\t1292\n"
     "枝葉\t1279\n"
@@ -51427,12 +51427,12 @@ static const char* const kPhrasesText[] = {
     "沙滩\t1166\n"
     "沙漏\t1331\n"
     "沙漠\t1139\n"
+    ,
     "沙灘\t1166\n"
     "沙特\t1224\n"
     "沙發\t1041\n"
     "沙皇\t1330\n"
     "沙盘\t1324\n"
-    ,
     "沙盤\t1324\n"
     "沙龍\t1181\n"
     "沙龙\t1181\n"
@@ -52486,7 +52486,7 @@ static const char* const kPhrasesText[] = {
     "测试用例\t1330\n"
     "测试结果\t1282\n"
     "测速\t1294\n"
-    "测量\t1082\n"
+    "测量\t1082\tce4 liang2\n"
     "测验\t1236\n"
     "浍\t1336\n"
     "济\t1168\n"
@@ -53570,7 +53570,7 @@ static const char* const kPhrasesText[] = {
     "測試用例\t1330\n"
     "測試結果\t1282\n"
     "測速\t1294\n"
-    "測量\t1082\n"
+    "測量\t1082\tce4 liang2\n"
     "測驗\t1236\n"
     "渭\t1304\n"
     "渮\t1348\n"
@@ -55481,10 +55481,10 @@ static const char* const kPhrasesText[] = {
     "無垠\t1327\twu2 yin2\n"
     "無塵\t1305\twu2 chen2\n"
     "無奈\t1020\twu2 nai4\n"
+    ,
     "無妨\t1269\twu2 fang2\n"
     "無害\t1271\twu2 hai4\n"
     "無害化\t1326\twu2 hai4 hua4\n"
-    ,
     "無家可歸\t1306\twu2 jia1 ke3 gui1\n"
     "無常\t1232\twu2 chang2\n"
     "無序\t1247\twu2 xu4\n"
@@ -59396,12 +59396,12 @@ static const char* const kPhrasesText[] = {
     "當屬\t1275\tdang1 shu3\n"
     "當年\t971\n"
     "當庭\t1304\n"
+    ,
     "當心\t1167\n"
     "當您\t1251\n"
     "當成\t1097\tdang4 cheng2\n"
     "當我\t1071\n"
     "當日\t1128\n"
-    ,
     "當時\t841\n"
     "當晚\t1176\n"
     "當月\t1207\n"
@@ -63215,9 +63215,9 @@ static const char* const kPhrasesText[] = {
     "种族歧视\t1317\tzhong3 zu2 qi2 shi4\n"
     "种树\t1314\tzhong4 shu4\n"
     "种植\t1106\tzhong4 zhi2\n"
+    ,
     "种植业\t1299\tzhong4 zhi2 ye4\n"
     "种植面积\t1266\tzhong4 zhi2 mian4 ji1\n"
-    ,
     "种田\t1258\tzhong4 tian2\n"
     "种种\t1063\tzhong3 zhong3\n"
     "种类\t1091\tzhong3 lei4\n"
@@ -67159,6 +67159,7 @@ static const char* const kPhrasesText[] = {
     "繊\t1344\n"
     "繋\t1344\n"
     "繌\t1345\n"
+    ,
     "繍\t1342\n"
     "繐\t1342\n"
     "繑\t1341\n"
@@ -67166,7 +67167,6 @@ static const char* const kPhrasesText[] = {
     "繓\t1351\n"
     "織\t1208\n"
     "織女\t1306\n"
-    ,
     "織物\t1246\n"
     "織造\t1328\n"
     "繕\t1333\n"
@@ -69329,7 +69329,7 @@ static const char* const kPhrasesText[] = {
     "考试试题\t1324\n"
     "考过\t1255\n"
     "考過\t1255\n"
-    "考量\t1232\n"
+    "考量\t1232\tkao3 liang2\n"
     "考錄\t1317\n"
     "考題\t1245\n"
     "考题\t1245\n"
@@ -71082,12 +71082,12 @@ static const char* const kPhrasesText[] = {
     "自個兒\t1286\tzi4 ge4 er5\n"
     "自備\t1272\n"
     "自傲\t1331\n"
+    ,
     "自傳\t1249\tzi4 zhuan4\n"
     "自创\t1259\n"
     "自制\t1179\n"
     "自制力\t1325\n"
     "自創\t1259\n"
-    ,
     "自力更生\t1296\n"
     "自动\t934\n"
     "自动关机\t1313\n"
@@ -74950,7 +74950,7 @@ static const char* const kPhrasesText[] = {
     "衡\t1208\n"
     "衡山\t1318\n"
     "衡水\t1311\n"
-    "衡量\t1133\n"
+    "衡量\t1133\theng2 liang2\n"
     "衡阳\t1240\n"
     "衡陽\t1240\n"
     "衢\t1332\n"
@@ -75126,6 +75126,7 @@ static const char* const kPhrasesText[] = {
     "袄\t1258\n"
     "袅\t1332\n"
     "袅袅\t1291\n"
+    ,
     "袈\t1340\n"
     "袉\t1352\n"
     "袋\t1125\n"
@@ -75134,7 +75135,6 @@ static const char* const kPhrasesText[] = {
     "袋裝\t1308\n"
     "袋鼠\t1281\n"
     "袌\t1347\n"
-    ,
     "袍\t1253\n"
     "袍子\t1324\n"
     "袎\t1352\n"
@@ -78918,13 +78918,13 @@ static const char* const kPhrasesText[] = {
     "谈不上\t1178\n"
     "谈判\t1076\n"
     "谈到\t1098\n"
+    ,
     "谈及\t1229\n"
     "谈吐\t1291\n"
     "谈好\t1282\n"
     "谈得\t1312\ttan2 de5\n"
     "谈心\t1245\n"
     "谈恋爱\t1163\n"
-    ,
     "谈情说爱\t1317\ttan2 qing2 shuo1 ai4\n"
     "谈笑\t1295\n"
     "谈论\t1135\n"
@@ -82884,11 +82884,11 @@ static const char* const kPhrasesText[] = {
     "还得\t1025\thai2 dei3\n"
     "还得了\t1278\thai2 de2 liao3\n"
     "还得起\t1278\thuan2 de5 qi3\n"
+    ,
     "还快\t1298\thai2 kuai4\n"
     "还怕\t1255\thai2 pa4\n"
     "还想\t1082\thai2 xiang3\n"
     "还愿\t1254\thuan2 yuan4\n"
-    ,
     "还手\t1291\thuan2 shou3\n"
     "还找\t1326\thai2 zhao3\n"
     "还把\t1215\thai2 ba3\n"
@@ -86196,11 +86196,11 @@ static const char* const kPhrasesText[] = {
     "重磅\t1296\tzhong4 bang4\n"
     "重組\t1076\tchong2 zu3\n"
     "重组\t1076\tchong2 zu3\n"
+    ,
     "重罚\t1322\tchong2 fa2\n"
     "重置\t1201\tchong2 zhi4\n"
     "重罰\t1322\tchong2 fa2\n"
     "重装\t1111\tchong2 zhuang1\n"
-    ,
     "重装系统\t1253\tchong2 zhuang1 xi4 tong3\n"
     "重裝\t1111\tchong2 zhuang1\n"
     "重裝系統\t1253\tchong2 zhuang1 xi4 tong3\n"
@@ -86314,8 +86314,8 @@ static const char* const kPhrasesText[] = {
     "量能\t1274\n"
     "量表\t1316\n"
     "量變\t1324\n"
-    "量身\t1256\n"
-    "量身定做\t1291\n"
+    "量身\t1256\tliang2 shen1\n"
+    "量身定做\t1291\tliang2 shen1 ding4 zuo4\n"
     "釐\t1266\n"
     "釐米\t1140\tli2 mi3\n"
     "金\t916\n"
@@ -90175,6 +90175,7 @@ static const char* const kPhrasesText[] = {
     "零售額\t1318\n"
     "零售额\t1318\n"
     "零头\t1292\n"
+    ,
     "零度\t1307\tling2 du4\n"
     "零散\t1269\tling2 san3\n"
     "零时\t1298\n"
@@ -90184,7 +90185,6 @@ static const char* const kPhrasesText[] = {
     "零用錢\t1326\n"
     "零用钱\t1326\n"
     "零碎\t1294\n"
-    ,
     "零花錢\t1272\n"
     "零花钱\t1272\n"
     "零距离\t1275\n"
@@ -94547,6 +94547,7 @@ static const char* const kPhrasesText[] = {
     "鸡毛\t1272\n"
     "鸡毛蒜皮\t1318\n"
     "鸡汤\t1264\tji1 tang1\n"
+    ,
     "鸡皮疙瘩\t1303\tji1 pi2 ge1 da5\n"
     "鸡精\t1321\n"
     "鸡翅\t1217\n"
@@ -94557,7 +94558,6 @@ static const char* const kPhrasesText[] = {
     "鸡鸡\t1231\n"
     "鸡鸭\t1308\n"
     "鸢\t1331\n"
-    ,
     "鸣\t1141\n"
     "鸣人\t1302\n"
     "鸣叫\t1321\n"
