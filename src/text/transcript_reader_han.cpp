@@ -12,7 +12,6 @@
 #include "common/internal_error.hpp"
 #include "text/aspect_particle.hpp"
 #include "text/code_points.hpp"
-#include "text/count_words.hpp"
 #include "text/counted_noun.hpp"
 #include "text/latin_words.hpp"
 #include "text/measure_or_verb.hpp"
@@ -83,14 +82,15 @@ void TranscriptReader::flush_run(bool ends_clause) {
 
 bool TranscriptReader::follows_written_number(std::size_t i) const {
     if (last_form_end_ != i || !pending_space_.empty() || timeline_.written_forms.empty()) return false;
-    const auto& form = timeline_.written_forms.back().text;
-    // An ASCII digit, a full-width one (０-９: EF BC 90-99), or the 万 or 亿 of 3万 (count_words.hpp).
-    const auto last = static_cast<unsigned char>(form.back());
-    const bool wide_digit =
-        form.size() >= 3 && form.compare(form.size() - 3, 2, "\xEF\xBC") == 0 && last >= 0x90 && last <= 0x99;
-    constexpr std::string_view kHundredMillions[] = {"亿", "億"};
-    return (last >= '0' && last <= '9') || wide_digit || detail::ends_with_count(form) ||
-           detail::ends_with_any(form, kHundredMillions);
+    // A count written in digits (ASCII or full-width, thousands' commas), a 万 or 亿 after them allowed
+    // (3万); not a time, a date, a percentage or a decimal (10:00只剩, 30%只是).
+    const auto characters = decode_utf8(timeline_.written_forms.back().text, "<form>");
+    for (std::size_t k = 0; k < characters.size(); ++k) {
+        const auto c = ascii_form(characters[k].value);
+        const bool magnitude = k + 1 == characters.size() && k > 0 && is_one_of(c, U"万萬亿億");
+        if (!is_ascii_digit(c) && c != ',' && !magnitude) return false;
+    }
+    return true;
 }
 
 std::string TranscriptReader::with_local_one(std::string words) const {

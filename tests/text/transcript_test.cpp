@@ -470,8 +470,10 @@ TEST_SUITE("transcript") {
               "pi1 ai2 mu5 er4 dian3 wu3 nong2 du4 wei2 mei3 li4 fang1 mi3 san1 shi2 wu3 wei1 ke4");
         CHECK(pinyin("今年7月平均气温为23.3℃") ==
               "jin1 nian2 qi1 yue4 ping2 jun1 qi4 wen1 wei2 er4 shi2 san1 dian3 san1 she4 shi4 du4");
-        // The limits: 只 the adverb after a percentage, 为 "for" after a title or a noun no value follows.
+        // The limits: 只 the adverb after a percentage or a time, 为 "for" after a title or a noun no value
+        // follows.
         CHECK(pinyin("涨幅30%只是开始") == "zhang3 fu2 bai3 fen1 zhi1 san1 shi2 zhi3 shi4 kai1 shi3");
+        CHECK(pinyin("下午3:00只剩两人") == "xia4 wu3 san1 dian3 zhi3 sheng4 liang3 ren2");
         CHECK(pinyin("部长为此道歉") == "bu4 zhang3 wei4 ci3 dao4 qian4");
         CHECK(pinyin("制度为经济发展服务") == "zhi4 du4 wei4 jing1 ji4 fa1 zhan3 fu2 wu4");
     }
