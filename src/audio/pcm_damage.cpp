@@ -37,7 +37,8 @@ PcmDamageFinder::PcmDamageFinder(int sample_rate_hz)
     : local_(frames_of(kLocalSeconds, sample_rate_hz)),
       shortest_zeros_(frames_of(kShortestZerosSeconds, sample_rate_hz)),
       cut_(frames_of(kCutSeconds, sample_rate_hz)),
-      side_(frames_of(kSideSeconds, sample_rate_hz)) {}
+      side_(frames_of(kSideSeconds, sample_rate_hz)),
+      ramp_(frames_of(kRampSeconds, sample_rate_hz)) {}
 
 void PcmDamageFinder::push(const float* mono, std::size_t count) {
     for (std::size_t i = 0; i < count; ++i) peak_ = std::max(peak_, std::fabs(mono[i]));
@@ -76,6 +77,8 @@ void PcmDamageFinder::judge_up_to(std::size_t end_frame) {
             if (++zeros_length_ == shortest_zeros_) {
                 zeros_before_side_ = loudest(zeros_first_ > side_ ? zeros_first_ - side_ : 0, zeros_first_);
                 zeros_before_cut_ = loudest(zeros_first_ > cut_ ? zeros_first_ - cut_ : 0, zeros_first_);
+                zeros_before_ramps_ =
+                    zeros_first_ > base_frame_ + ramp_ && ramps_down_to(zeros_first_, zeros_before_side_);
             }
             continue;
         }
@@ -119,6 +122,18 @@ float PcmDamageFinder::loudest(std::size_t from_frame, std::size_t to_frame) con
     return peak;
 }
 
+bool PcmDamageFinder::ramps_down_to(std::size_t first_zero, float side_loudest) const {
+    const auto out = [&](std::size_t steps) { return sample(first_zero - 1 - steps); };
+    const float next_to_zeros = std::fabs(out(0));
+    if (next_to_zeros >= kCutShare * side_loudest) return false;
+    // espeak-ng's ramps are straight lines to zero: its two last samples stand 1.97-2 times apart.
+    if (std::fabs(out(1)) < kRampSteepness * next_to_zeros) return false;
+    // Rising steadily away from the zeros on one side of zero (a wave crossing zero there is no ramp).
+    for (std::size_t i = 0; i < ramp_; ++i)
+        if (std::fabs(out(i + 1)) < std::fabs(out(i)) || (out(i + 1) < 0.0f) != (out(0) < 0.0f)) return false;
+    return true;
+}
+
 void PcmDamageFinder::judge_zeros(std::size_t first_frame, std::size_t end_frame) {
     if (end_frame - first_frame < shortest_zeros_) return;
     const float before_side = zeros_before_side_;
@@ -127,6 +142,7 @@ void PcmDamageFinder::judge_zeros(std::size_t first_frame, std::size_t end_frame
     const float after_cut = loudest(end_frame, end_frame + cut_);
     if (before_cut < kCutShare * before_side || after_cut < kCutShare * after_side) return;
     if (before_cut < kCleanCutShare * before_side && after_cut < kCleanCutShare * after_side) return;
+    if (zeros_before_ramps_) return;
     cut_runs_.push_back({{first_frame, end_frame}, std::min(before_side, after_side)});
 }
 

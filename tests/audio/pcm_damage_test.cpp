@@ -104,3 +104,23 @@ TEST_CASE("zeros cut into the sound are named as an editor's silence as well as 
               "packets") != std::string::npos);
     CHECK(notes[0].find("silenced on purpose, the file is as it should be") != std::string::npos);
 }
+
+TEST_CASE("a sound ramped into a pause in half a millisecond, as espeak-ng ends its sounds, is no cut") {
+    std::vector<float> samples = vowel(kRateHz);
+    // The zeros start after the loudest sample near 0.375 s, the 8 samples before them falling from
+    // there to 1/81 of it, more slowly near zero, and the next sound starts mid-wave, as espeak-ng's
+    // do around its pauses.
+    const auto loudest = std::max_element(samples.begin() + 6000, samples.begin() + 6100,
+                                          [](float a, float b) { return std::fabs(a) < std::fabs(b); });
+    const std::size_t first_zero = static_cast<std::size_t>(loudest - samples.begin()) + 9;
+    const float from = *loudest;
+    for (std::size_t k = 1; k <= 8; ++k) samples[first_zero - k] = from * static_cast<float>(k * k) / 81.0f;
+    std::vector<float> cut = samples;
+    std::fill(samples.begin() + static_cast<std::ptrdiff_t>(first_zero),
+              samples.begin() + static_cast<std::ptrdiff_t>(first_zero + 2048), 0.0f);
+    for (const std::size_t block : {1, 333, 4096}) CHECK(found_in(samples, block).cut_zeros().empty());
+    // The same zeros six samples earlier cut the ramp at 0.6 of its height: cut on both sides.
+    std::fill(cut.begin() + static_cast<std::ptrdiff_t>(first_zero - 6),
+              cut.begin() + static_cast<std::ptrdiff_t>(first_zero + 2048), 0.0f);
+    CHECK(found_in(cut, 4096).cut_zeros().size() == 1);
+}
