@@ -888,10 +888,13 @@ std::optional<SpokenForm> read_floor(const std::vector<CodePoint>& text, std::si
         is_digit_at(text, letter + 1)) {
         return std::nullopt;
     }
-    // A seat's row and letter (您的座位是7车12F号 十二 F 号): 号 after it, or a carriage right before it.
+    // A seat's row and letter (您的座位是7车12F号 十二 F 号, 3号车厢12F座): 号 or 座 after it, or a
+    // carriage right before it (7车, 3号车厢).
     const bool after_carriage =
-        start >= 2 && is_one_of(text[start - 1].value, U"车車") && is_digit_at(text, start - 2);
-    if (is_one_of(value_at(text, letter + 1), U"号號") || after_carriage) return std::nullopt;
+        start >= 2 &&
+        ((is_one_of(text[start - 1].value, U"车車") && is_digit_at(text, start - 2)) ||
+         (is_one_of(text[start - 2].value, U"车車") && is_one_of(text[start - 1].value, U"厢廂")));
+    if (is_one_of(value_at(text, letter + 1), U"号號座") || after_carriage) return std::nullopt;
     SpokenForm form;
     form.words = cardinal_words(number.whole, false) + "楼";
     form.end = letter + 1;

@@ -216,7 +216,7 @@ std::size_t past_exchange_suffix(const std::vector<CodePoint>& text, std::size_t
 // 二楼, 89F 八十九楼, 1F 一楼), or a slash and the F, as Hong Kong's addresses do (3/F 三楼; session 32:
 // 三 ai fu): the number as an ordinal is said, and 楼 for the F (session 15: it was 二 F). Up to three digits
 // after no letter (B1F is a basement's), a capital F that ends the letters (°F and 100℉ are Fahrenheit's, a
-// unit), and no seat's (12F号, 7车12F; session 18: 十二楼). nullopt elsewhere.
+// unit), and no seat's (12F号, 12F座, 7车12F, 3号车厢12F; session 18 and 45: 十二楼). nullopt elsewhere.
 std::optional<SpokenForm> read_floor(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
 
 // A number masked from its start (尾号****5678, 卡号：****1234), as a bank's or a shop's message shows a

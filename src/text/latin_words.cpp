@@ -133,6 +133,10 @@ constexpr std::pair<std::string_view, std::string_view> kSaidOtherwise[] = {
     // Session 40: boss is 波士 bo si as Mandarin speakers and players say it (BOSS战, 打Boss), the lips'
     // rounded o; the dictionary's American vowel gave ba si, which no speaker writes or says for it.
     {"boss", "bo1 si5"},
+    // Session 45: sportswear makers by the Chinese names their shops and Mandarin speakers give them, as
+    // Airbus is 空客: Nike 耐克 (the mapping gave nai qi) and Adidas 阿迪达斯 (it gave e di de si).
+    {"nike", "nai4 ke4"},
+    {"adidas", "a1 di2 da2 si1"},
 };
 
 // English words that product names, games and rankings write in capitals and Mandarin speakers

@@ -1163,6 +1163,20 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("a seat's letter before 座 or after a numbered carriage is no floor, and Nike is 耐克") {
+        // The first four rows fail on main c056d46 (session 45, dev46's tuning misses and Nike's maker's
+        // neighbour): 十二楼, 三樓, nai qi, e di de si.
+        check_cases({
+            {"您的座位在3号车厢12F座", "您的座位在三号车厢十二 ai fu座"},
+            {"我在5車廂3F", "我在五車廂三 ai fu"},
+            {"这双Nike的鞋子", "这双 nai ke的鞋子"},
+            {"Adidas的鞋子", "a di da si的鞋子"},
+            // The limits: a floor stays one before a place and after a building's block.
+            {"会议室在12F", "会议室在十二楼"},
+            {"A座12F有餐厅", "ei座十二楼有餐厅"},
+        });
+    }
+
     TEST_CASE(
         "a pack's unit, a unit per a measure word, a building's 号, a card's groups, a range's 零下, x and "
         "w") {
