@@ -878,6 +878,11 @@ std::size_t past_exchange_suffix(const std::vector<CodePoint>& text, std::size_t
     return is_exchange_suffix(letters) && !is_ascii_letter(value_at(text, k)) && !is_digit_at(text, k) ? k : end;
 }
 
+bool names_seat_before(const std::vector<CodePoint>& text, std::size_t start) {
+    return contains_any(text_before(text, start, true),
+                        {"座位", "座号", "座號", "座席", "选座", "選座", "登机牌", "登機牌", "值机", "值機"});
+}
+
 std::optional<SpokenForm> read_floor(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {
     constexpr std::size_t kMostFloorDigits = 3;
     // Hong Kong writes the floor with a slash, 3/F, 12/F, G/F.
@@ -894,7 +899,8 @@ std::optional<SpokenForm> read_floor(const std::vector<CodePoint>& text, std::si
         start >= 2 &&
         ((is_one_of(text[start - 1].value, U"车車") && is_digit_at(text, start - 2)) ||
          (is_one_of(text[start - 2].value, U"车車") && is_one_of(text[start - 1].value, U"厢廂")));
-    if (is_one_of(value_at(text, letter + 1), U"号號座") || after_carriage) return std::nullopt;
+    if (is_one_of(value_at(text, letter + 1), U"号號座") || after_carriage || names_seat_before(text, start))
+        return std::nullopt;
     SpokenForm form;
     form.words = cardinal_words(number.whole, false) + "楼";
     form.end = letter + 1;

@@ -216,8 +216,14 @@ std::size_t past_exchange_suffix(const std::vector<CodePoint>& text, std::size_t
 // 二楼, 89F 八十九楼, 1F 一楼), or a slash and the F, as Hong Kong's addresses do (3/F 三楼; session 32:
 // 三 ai fu): the number as an ordinal is said, and 楼 for the F (session 15: it was 二 F). Up to three digits
 // after no letter (B1F is a basement's), a capital F that ends the letters (°F and 100℉ are Fahrenheit's, a
-// unit), and no seat's (12F号, 12F座, 7车12F, 3号车厢12F; session 18 and 45: 十二楼). nullopt elsewhere.
+// unit), and no seat's (12F号, 12F座, 7车12F, 3号车厢12F, 座位是12F; session 18 and 45: 十二楼). nullopt
+// elsewhere.
 std::optional<SpokenForm> read_floor(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
+
+// Whether the clause before text[start) names a seat (座位 座号 座席 选座 登机牌 值机, Simplified or
+// Traditional), so that a number and a letter after it are a seat's row and letter, said as they are
+// written (座位是12F 十二 F, 登机牌上写着32A 三十二 A; session 45: 十二楼, 三十二安), not a floor or amperes.
+bool names_seat_before(const std::vector<CodePoint>& text, std::size_t start);
 
 // A number masked from its start (尾号****5678, 卡号：****1234), as a bank's or a shop's message shows a
 // card's or a phone's tail: no digits before the stars hold a place, so they are unsaid, and the digits after

@@ -133,14 +133,15 @@ bool is_kelvin_at(const std::vector<CodePoint>& text, std::size_t i) {
 }
 
 // A unit of one capital (J N A) that a grade or a name also writes after a number: a unit only
-// before 的 or anything but a Chinese character (0.5A。, 20N的力; not 5A景区); U, below, only before a slash.
+// before 的 or anything but a Chinese character (0.5A。, 20N的力; not 5A景区), and where no seat is named
+// before it (座位是32A); U, below, only before a slash.
 bool is_lone_capital_unit_at(const std::vector<CodePoint>& text, const Unit& unit, std::size_t end) {
     // An enzyme's U only before the slash of a unit per another (68U/L, 5U/mL): a capital U after a number
     // elsewhere is a chip's suffix or a rack's height (7840U, 2U服务器).
     if (unit.written == "U") return value_at(text, end) == '/' && is_ascii_letter(value_at(text, end + 1));
     if (unit.written != "J" && unit.written != "N" && unit.written != "A") return true;
     const auto next = value_at(text, end);
-    return next == U'的' || next < 0x3400 || next > 0x9FFF;
+    return (next == U'的' || next < 0x3400 || next > 0x9FFF) && !names_seat_before(text, end);
 }
 
 // A lamp's or a charger's watts written small (功率5w, 65w快充), as posts write them: the watt where the

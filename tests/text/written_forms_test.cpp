@@ -1177,6 +1177,19 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("a seat named before a row and its letter makes them no floor and no amperes") {
+        // The first four rows fail on main 4076fe4 (session 45, text23's leftovers): 十二楼, 三十二安.
+        check_cases({
+            {"我的座位是12F", "我的座位是十二 ai fu"},
+            {"登机牌上写着32A", "登机牌上写着三十二 ei"},
+            {"您的座位是32A，请从前门登机", "您的座位是三十二 ei请从前门登机"},
+            {"選座時我選了12A，靠窗", "選座時我選了十二 ei靠窗"},
+            // The limits: amperes and a floor where no seat is named in the clause.
+            {"这个充电器输出2A", "这个充电器输出两安"},
+            {"座位很舒服，餐厅在12F", "座位很舒服餐厅在十二楼"},
+        });
+    }
+
     TEST_CASE(
         "a pack's unit, a unit per a measure word, a building's 号, a card's groups, a range's 零下, x and "
         "w") {
