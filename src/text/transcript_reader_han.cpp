@@ -1,7 +1,7 @@
 // The transcript reader's runs of Chinese characters: each run cut into its likeliest words and read by
 // the tables, a particle, a return verb, a title's head, 得 "must", a measure word or a verb alone (种
-// 只 教), a noun after what counts or points to it (该地 三天假) or the copula after a quantity (率为)
-// deciding a reading in context, and a written form's words read so.
+// 只 教), a noun after what counts or points to it (该地 三天假), the copula after a quantity (率为) or
+// 为 "as" after 以 (以安全为重) deciding a reading in context, and a written form's words read so.
 #include "text/transcript_reader.hpp"
 
 #include <string>
@@ -19,6 +19,7 @@
 #include "text/quantity_copula.hpp"
 #include "text/return_verb.hpp"
 #include "text/script_variant.hpp"
+#include "text/take_as.hpp"
 #include "text/title_head.hpp"
 #include "text/word_segmentation.hpp"
 #include "text/written_number_scan.hpp"
@@ -51,6 +52,7 @@ std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharact
         if (in_context.empty()) in_context = detail::measure_or_verb_reading(words, w, follows_number);
         if (in_context.empty()) in_context = detail::counted_noun_reading(words, w);
         if (in_context.empty()) in_context = detail::quantity_copula_reading(words, w, ends_clause);
+        if (in_context.empty()) in_context = detail::take_as_reading(words, w);
         for (std::size_t k = 0; k < length; ++k) {
             const auto& character = run[first + k];
             std::string pinyin = character.fix;

@@ -478,6 +478,16 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("制度为经济发展服务") == "zhi4 du4 wei4 jing1 ji4 fa1 zhan3 fu2 wu4");
     }
 
+    TEST_CASE("为 after 以 and what it takes is wéi, \"as\"") {
+        // Each row but the limits failed on main 7e809fa (session 45): wei4.
+        CHECK(pinyin("一切以安全为重") == "yi1 qie4 yi3 an1 quan2 wei2 zhong4");
+        CHECK(pinyin("我们以他为榜样") == "wo3 men5 yi3 ta1 wei2 bang3 yang4");
+        CHECK(pinyin("以经济建设为中心") == "yi3 jing1 ji4 jian4 she4 wei2 zhong1 xin1");
+        // The limits: 以 inside a word (可以 以前), and 为了 "for".
+        CHECK(pinyin("可以为你做饭") == "ke3 yi3 wei4 ni3 zuo4 fan4");
+        CHECK(pinyin("以前为了省钱") == "yi3 qian2 wei4 le5 sheng3 qian2");
+    }
+
     TEST_CASE("地 after a demonstrative or a measure word of land is the noun, 假 after a span the leave") {
         // Each row but the limits failed on main 1e20c3d: de5 twice, jia3.
         CHECK(pinyin("该地发生地震") == "gai1 di4 fa1 sheng1 di4 zhen4");
