@@ -1,6 +1,7 @@
-// 为 (為) alone after 以 and what it takes is wéi, "as": 以X为Y, "take X as Y" (一切以安全为重,
-// 我们以他为榜样, 以经济建设为中心). The table reads 为 alone as wèi, "for", which its commonest words take
-// (为了 因为), and the phrase list holds only the set phrases (以人为本 以此为例). 以 must stand as a word of
+// 为 (為) after 以 and what it takes is wéi, "as": 以X为Y, "take X as Y" (一切以安全为重,
+// 我们以他为榜样, 以经济建设为中心), whether 为 stands alone or the list joins it to what follows (为重
+// 为主). The table reads 为 alone as wèi, "for", which its commonest words take (为了 因为), and the
+// phrase list holds only the set phrases (以人为本 以此为例). 以 must stand as a word of
 // its own earlier in the run: 可以 所以 以为 以便 are words the list cuts whole, and 可以为你做饭 keeps wèi.
 // docs/written-forms.md ("Words and polyphonic characters") lists the rules.
 #ifndef TALKFACE_TEXT_TAKE_AS_HPP
