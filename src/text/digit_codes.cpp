@@ -879,8 +879,14 @@ std::size_t past_exchange_suffix(const std::vector<CodePoint>& text, std::size_t
 }
 
 bool names_seat_before(const std::vector<CodePoint>& text, std::size_t start) {
+    // A unit's reader asks after the row and its letter, the floor's reader before them.
+    auto row = start;
+    while (row > 0 && (is_ascii_digit(text[row - 1].value) || is_ascii_letter(text[row - 1].value))) --row;
+    if (row > 0 && text[row - 1].value == U'在') --row;
+    if (row > 0 && text[row - 1].value == U'坐') return true;
     return contains_any(text_before(text, start, true),
-                        {"座位", "座号", "座號", "座席", "选座", "選座", "登机牌", "登機牌", "值机", "值機"});
+                        {"座位", "座号", "座號", "座席", "位子", "选座", "選座", "登机牌", "登機牌", "值机",
+                         "值機", "靠窗", "靠过道", "靠過道", "靠走道"});
 }
 
 std::optional<SpokenForm> read_floor(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number) {

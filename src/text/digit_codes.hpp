@@ -220,9 +220,11 @@ std::size_t past_exchange_suffix(const std::vector<CodePoint>& text, std::size_t
 // elsewhere.
 std::optional<SpokenForm> read_floor(const std::vector<CodePoint>& text, std::size_t start, const WrittenNumber& number);
 
-// Whether the clause before text[start) names a seat (座位 座号 座席 选座 登机牌 值机, Simplified or
-// Traditional), so that a number and a letter after it are a seat's row and letter, said as they are
-// written (座位是12F 十二 F, 登机牌上写着32A 三十二 A; session 45: 十二楼, 三十二安), not a floor or amperes.
+// Whether the clause before text[start) names a seat (座位 座号 座席 位子 选座 登机牌 值机, a window or an
+// aisle seat, 靠窗 靠过道, Simplified or Traditional), or the number is sat in (坐32A, 坐在12F), so that a
+// number and a letter after it are a seat's row and letter, said as they are written (座位是12F 十二 F,
+// 登机牌上写着32A 三十二 A; session 45: 十二楼, 三十二安; 我坐32A, 靠窗的12A; session 46: 三十二安), not a
+// floor or amperes.
 bool names_seat_before(const std::vector<CodePoint>& text, std::size_t start);
 
 // A number masked from its start (尾号****5678, 卡号：****1234), as a bank's or a shop's message shows a

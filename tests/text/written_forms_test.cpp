@@ -1190,6 +1190,20 @@ TEST_SUITE("written forms") {
         });
     }
 
+    TEST_CASE("a row and its letter sat in, a window's or an aisle's, or a 位子 is a seat") {
+        // The first five rows fail on main bea23b7 (session 46): 三十二安, 十二楼, 十二安, 三十一安, 十五安.
+        check_cases({
+            {"我坐32A，你坐32B", "我坐三十二 ei你坐三十二 bi"},
+            {"他坐在12F", "他坐在十二 ai fu"},
+            {"我要靠窗的12A", "我要靠窗的十二 ei"},
+            {"我換到靠走道的31A", "我換到靠走道的三十一 ei"},
+            {"我们的位子是15A", "我们的位子是十五 ei"},
+            // The limits: sitting elsewhere names no seat, nor does a window far from the number's clause.
+            {"我坐电梯到12F", "我坐电梯到十二楼"},
+            {"坐下来，充电器输出2A", "坐下来充电器输出两安"},
+        });
+    }
+
     TEST_CASE(
         "a pack's unit, a unit per a measure word, a building's 号, a card's groups, a range's 零下, x and "
         "w") {
