@@ -261,7 +261,7 @@ SaidNumber say_number(const WrittenNumber& number, const NumberContext& context)
     }
     // A currency sign before it is the money's unit said after it ($2 两美元, HK$2 两港元, ¥2 两元), as
     // 2美元 and 2元 are said (session 32: 二, read as a bare number).
-    if (whole == "2" && !context.is_ordinal && !context.is_model &&
+    if (whole == "2" && !context.is_ordinal && !context.is_model && !context.follows_ratio &&
         (context.has_unit || context.has_currency || takes_liang(context.next) || context.measures_degrees ||
          context.counts_in_layout || context.counts_buildings)) {
         said.words = "两";
@@ -375,6 +375,10 @@ NumberContext context_of_number(const std::vector<CodePoint>& text, std::size_t 
     context.counts_in_layout =
         sign_words.empty() && currency == nullptr && counts_in_layout(text, start, number);
     context.counts_buildings = sign_words.empty() && currency == nullptr && counts_buildings(text, number);
+    // A number and 比 before it make it a score's or a ratio's second term, said bare whatever follows it
+    // (2比2平 二比二平), though 平 after a number alone is square metres (100平), which 两 counts.
+    context.follows_ratio =
+        sign_words.empty() && start >= 2 && text[start - 1].value == U'比' && is_digit_at(text, start - 2);
     context.is_grade = context.is_model && is_filter_grade(text, start, number.whole);
     context.is_span_of_years = counts_years(text, start, number);
     context.is_service_call = is_service_call(text, start, number.end);

@@ -58,6 +58,7 @@ struct NumberContext {
     bool counts_kuai = false;  // money counted in 块, casual speech's (200块, 300多块, a shop's 满200)
     bool counts_in_layout = false;  // a part of a home's layout or a team's lineup (3室2厅, 1坦2補): 2 is 两
     bool counts_buildings = false;  // 栋 or 幢 before a building's noun (2栋民房): 2 is 两
+    bool follows_ratio = false;     // right after a number and 比 (2比2平): a score's or a ratio's term
     bool next_heads_word = false;  // 男 or 女 after it heads a word (9秒58男子), no count of people, or a
                                    // measure word opens a word of rank (876排在)
 };

@@ -3083,4 +3083,16 @@ TEST_SUITE("written forms") {
             {"第2栋民房", "第二栋民房"},
         });
     }
+
+    TEST_CASE("a number after a score's 比 is said bare, 二 before 平 too") {
+        // Each row but the limits fails on main bea23b7 (session 45's readings_dev3): 两.
+        check_cases({
+            {"比分2比2平", "比分二比二平"},
+            {"最终2比2平", "最终二比二平"},
+            {"比賽以2比2平手收場", "比賽以二比二平手收場"},
+            // The limits: 平 of square metres after a number alone, and a score's number before 比.
+            {"这套房子2平", "这套房子两平"},
+            {"他们以2比1获胜", "他们以二比一获胜"},
+        });
+    }
 }
