@@ -1,7 +1,8 @@
 // The transcript reader's runs of Chinese characters: each run cut into its likeliest words and read by
 // the tables, a particle, a return verb, a title's head, 得 "must", a measure word or a verb alone (种
 // 只 教), a noun after what counts or points to it (该地 三天假), the copula after a quantity (率为) or
-// 为 "as" after 以 (以安全为重) deciding a reading in context, and a written form's words read so.
+// 为 "as" after 以 or a verb of choosing (以安全为重 当选为) deciding a reading in context, and a written
+// form's words read so.
 #include "text/transcript_reader.hpp"
 
 #include <string>

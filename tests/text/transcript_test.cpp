@@ -544,6 +544,17 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("提供服务") == "ti2 gong1 fu2 wu4");
     }
 
+    TEST_CASE("为 after a verb of choosing or naming is wéi, \"as\"") {
+        // Each row but the limits fails on main bea23b7 (session 45's readings_dev3): wei4.
+        CHECK(pinyin("他当选为主席") == "ta1 dang1 xuan3 wei2 zhu3 xi2");
+        CHECK(pinyin("她被评选为优秀教师") == "ta1 bei4 ping2 xuan3 wei2 you1 xiu4 jiao4 shi1");
+        CHECK(pinyin("他被任命为校长") == "ta1 bei4 ren4 ming4 wei2 xiao4 zhang3");
+        CHECK(pinyin("他當選為立法委員") == "ta1 dang1 xuan3 wei2 li4 fa3 wei3 yuan2");
+        // The limits: 为 "for" after a word whose last character makes a wéi word of the list with it.
+        CHECK(pinyin("银行为客户提供贷款") == "yin2 hang2 wei4 ke4 hu4 ti2 gong1 dai4 kuan3");
+        CHECK(pinyin("本人为此负责") == "ben3 ren2 wei4 ci3 fu4 ze2");
+    }
+
     TEST_CASE("syllables carry the character, numbered pinyin and their sentence") {
         const auto timeline = read_transcript("銀行。女兒");
         REQUIRE(timeline.syllables.size() == 4);
