@@ -555,6 +555,16 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("本人为此负责") == "ben3 ren2 wei4 ci3 fu4 ze2");
     }
 
+    TEST_CASE("兴 xīng in words the list lacked") {
+        // Each row but the limit fails on main bea23b7 (session 45): xing4.
+        CHECK(pinyin("国家兴亡") == "guo2 jia1 xing1 wang2");
+        CHECK(pinyin("百废待兴") == "bai3 fei4 dai4 xing1");
+        CHECK(pinyin("兴修水利") == "xing1 xiu1 shui3 li4");
+        CHECK(pinyin("興師動眾") == "xing1 shi1 dong4 zhong4");
+        // The limit: 兴 xìng, mood.
+        CHECK(pinyin("他很高兴") == "ta1 hen3 gao1 xing4");
+    }
+
     TEST_CASE("syllables carry the character, numbered pinyin and their sentence") {
         const auto timeline = read_transcript("銀行。女兒");
         REQUIRE(timeline.syllables.size() == 4);

@@ -11248,13 +11248,18 @@ static const char* const kPhrasesText[] = {
     "兴\t1064\n"
     "兴业\t1194\txing1 ye4\n"
     "兴业银行\t1274\txing1 ye4 yin2 hang2\n"
+    "兴亡\t1254\txing1 wang2\n"
+    "兴修\t1254\txing1 xiu1\n"
     "兴冲冲\t1301\n"
+    "兴利除弊\t1293\txing1 li4 chu2 bi4\n"
     "兴办\t1281\txing1 ban4\n"
     "兴华\t1278\txing1 hua2\n"
     "兴国\t1310\txing1 guo2\n"
     "兴奋\t1036\txing1 fen4\n"
     "兴奋不已\t1312\txing1 fen4 bu4 yi3\n"
     "兴奋剂\t1262\txing1 fen4 ji4\n"
+    "兴师动众\t1293\txing1 shi1 dong4 zhong4\n"
+    "兴废\t1254\txing1 fei4\n"
     "兴建\t1189\txing1 jian4\n"
     "兴旺\t1243\txing1 wang4\n"
     "兴盛\t1281\txing1 sheng4\n"
@@ -11265,7 +11270,9 @@ static const char* const kPhrasesText[] = {
     "兴起\t1153\txing1 qi3\n"
     "兴趣\t959\txing4 qu4\n"
     "兴趣爱好\t1292\txing4 qu4 ai4 hao4\n"
+    "兴邦\t1254\txing1 bang1\n"
     "兴隆\t1268\txing1 long2\n"
+    "兴风作浪\t1293\txing1 feng1 zuo4 lang4\n"
     "兴高采烈\t1272\n"
     "兵\t1036\n"
     "兵力\t1201\n"
@@ -14601,6 +14608,7 @@ static const char* const kPhrasesText[] = {
     "勞倫斯\t1311\n"
     "勞力\t1263\n"
     "勞動\t1032\n"
+    ,
     "勞動人民\t1277\n"
     "勞動保障\t1187\n"
     "勞動力\t1120\n"
@@ -14611,7 +14619,6 @@ static const char* const kPhrasesText[] = {
     "勞動模範\t1324\tlao2 dong4 mo2 fan4\n"
     "勞動法\t1230\n"
     "勞動爭議\t1292\n"
-    ,
     "勞動節\t1300\n"
     "勞動者\t1117\n"
     "勞動部門\t1293\n"
@@ -18113,6 +18120,7 @@ static const char* const kPhrasesText[] = {
     "吃飽\t1173\n"
     "吃飽了\t1231\tchi1 bao3 le5\n"
     "吃饭\t833\n"
+    ,
     "吃饱\t1173\n"
     "吃饱了\t1231\tchi1 bao3 le5\n"
     "吃香\t1249\n"
@@ -18126,7 +18134,6 @@ static const char* const kPhrasesText[] = {
     "各个\t991\n"
     "各个国家\t1317\tge4 ge4 guo2 jia1\n"
     "各个方面\t1210\n"
-    ,
     "各个环节\t1259\n"
     "各人\t1196\n"
     "各位\t965\n"
@@ -21818,6 +21825,7 @@ static const char* const kPhrasesText[] = {
     "在床\t1317\n"
     "在床上\t1169\n"
     "在座\t1232\n"
+    ,
     "在建\t1255\n"
     "在心\t1315\n"
     "在思想上\t1325\tzai4 si1 xiang3 shang4\n"
@@ -21830,7 +21838,6 @@ static const char* const kPhrasesText[] = {
     "在所難免\t1278\n"
     "在手\t1284\n"
     "在新\t1251\n"
-    ,
     "在新的\t1234\tzai4 xin1 de5\n"
     "在新窗口\t1330\n"
     "在於\t988\tzai4 yu2\n"
@@ -25107,6 +25114,7 @@ static const char* const kPhrasesText[] = {
     "失态\t1297\n"
     "失恋\t1164\n"
     "失恋了\t1330\tshi1 lian4 le5\n"
+    ,
     "失意\t1232\n"
     "失態\t1297\n"
     "失憶\t1268\n"
@@ -25121,7 +25129,6 @@ static const char* const kPhrasesText[] = {
     "失散\t1318\n"
     "失明\t1258\n"
     "失望\t1040\n"
-    ,
     "失業\t1136\n"
     "失業人員\t1284\n"
     "失業保險\t1281\n"
@@ -28891,6 +28898,7 @@ static const char* const kPhrasesText[] = {
     "對比\t1043\n"
     "對比度\t1235\tdui4 bi3 du4\n"
     "對決\t1221\n"
+    ,
     "對沖\t1267\n"
     "對沖基金\t1288\n"
     "對流\t1305\n"
@@ -28903,7 +28911,6 @@ static const char* const kPhrasesText[] = {
     "對白\t1216\n"
     "對着\t1072\tdui4 zhe5\n"
     "對稱\t1169\tdui4 chen4\n"
-    ,
     "對立\t1178\n"
     "對立面\t1312\n"
     "對策\t1103\n"
@@ -32517,6 +32524,7 @@ static const char* const kPhrasesText[] = {
     "店\t945\n"
     "店主\t1170\n"
     "店內\t1235\n"
+    ,
     "店内\t1235\n"
     "店名\t1287\n"
     "店员\t1224\tdian4 yuan2\n"
@@ -32528,7 +32536,6 @@ static const char* const kPhrasesText[] = {
     "店鋪\t1113\n"
     "店铺\t1113\n"
     "店長\t1249\tdian4 zhang3\n"
-    ,
     "店长\t1249\tdian4 zhang3\n"
     "店面\t1164\n"
     "庙\t1160\n"
@@ -36273,6 +36280,7 @@ static const char* const kPhrasesText[] = {
     "愛慕\t1244\n"
     "愛憐\t1324\n"
     "愛戀\t1237\n"
+    ,
     "愛我\t1148\n"
     "愛戴\t1265\n"
     "愛撫\t1268\n"
@@ -36286,7 +36294,6 @@ static const char* const kPhrasesText[] = {
     "愛玩\t1294\n"
     "愛琴海\t1329\n"
     "愛生活\t1325\n"
-    ,
     "愛的\t1120\tai4 de5\n"
     "愛的人\t1165\tai4 de5 ren2\n"
     "愛看\t1242\n"
@@ -40087,6 +40094,7 @@ static const char* const kPhrasesText[] = {
     "捷\t1176\n"
     "捷克\t1211\n"
     "捷径\t1230\n"
+    ,
     "捷徑\t1230\n"
     "捷达\t1243\n"
     "捷達\t1243\n"
@@ -40104,7 +40112,6 @@ static const char* const kPhrasesText[] = {
     "掂\t1240\n"
     "掂量\t1302\n"
     "掃\t1108\n"
-    ,
     "掃地\t1252\tsao3 di4\n"
     "掃墓\t1295\n"
     "掃射\t1312\n"
@@ -43759,12 +43766,12 @@ static const char* const kPhrasesText[] = {
     "无毒\t1272\twu2 du2\n"
     "无比\t1081\twu2 bi3\n"
     "无水\t1318\twu2 shui3\n"
+    ,
     "无污染\t1313\twu2 wu1 ran3\n"
     "无法\t852\twu2 fa3\n"
     "无法使用\t1198\twu2 fa3 shi3 yong4\n"
     "无法启动\t1321\twu2 fa3 qi3 dong4\n"
     "无法完成\t1325\twu2 fa3 wan2 cheng2\n"
-    ,
     "无法忘记\t1328\twu2 fa3 wang4 ji4\n"
     "无法打开\t1314\twu2 fa3 da3 kai1\n"
     "无法找到\t1314\twu2 fa3 zhao3 dao4\n"
@@ -47364,6 +47371,7 @@ static const char* const kPhrasesText[] = {
     "果實\t1173\n"
     "果敢\t1323\n"
     "果断\t1185\n"
+    ,
     "果斷\t1185\n"
     "果果\t1223\n"
     "果树\t1247\n"
@@ -47377,7 +47385,6 @@ static const char* const kPhrasesText[] = {
     "果蔬\t1286\n"
     "果農\t1319\n"
     "果酱\t1320\n"
-    ,
     "果醬\t1320\n"
     "枝\t1143\n"
     "枝叶\t1279\tzhi1 ye4\n"
@@ -51417,6 +51424,7 @@ static const char* const kPhrasesText[] = {
     "沙城\t1321\n"
     "沙場\t1301\n"
     "沙塵\t1295\n"
+    ,
     "沙塵暴\t1265\tsha1 chen2 bao4\n"
     "沙子\t1192\n"
     "沙尘\t1295\n"
@@ -51427,7 +51435,6 @@ static const char* const kPhrasesText[] = {
     "沙滩\t1166\n"
     "沙漏\t1331\n"
     "沙漠\t1139\n"
-    ,
     "沙灘\t1166\n"
     "沙特\t1224\n"
     "沙發\t1041\n"
@@ -55474,6 +55481,7 @@ static const char* const kPhrasesText[] = {
     "無可奈何\t1221\twu2 ke3 nai4 he2\n"
     "無可挑剔\t1313\twu2 ke3 tiao1 ti1\n"
     "無可救藥\t1319\twu2 ke3 jiu4 yao4\n"
+    ,
     "無名\t1181\twu2 ming2\n"
     "無名指\t1281\twu2 ming2 zhi3\n"
     "無味\t1276\twu2 wei4\n"
@@ -55481,7 +55489,6 @@ static const char* const kPhrasesText[] = {
     "無垠\t1327\twu2 yin2\n"
     "無塵\t1305\twu2 chen2\n"
     "無奈\t1020\twu2 nai4\n"
-    ,
     "無妨\t1269\twu2 fang2\n"
     "無害\t1271\twu2 hai4\n"
     "無害化\t1326\twu2 hai4 hua4\n"
@@ -59385,6 +59392,7 @@ static const char* const kPhrasesText[] = {
     "當地政府\t1209\tdang1 di4 zheng4 fu3\n"
     "當地時間\t1257\tdang1 di4 shi2 jian1\n"
     "當場\t1122\n"
+    ,
     "當天\t1039\n"
     "當她\t1191\n"
     "當好\t1296\n"
@@ -59396,7 +59404,6 @@ static const char* const kPhrasesText[] = {
     "當屬\t1275\tdang1 shu3\n"
     "當年\t971\n"
     "當庭\t1304\n"
-    ,
     "當心\t1167\n"
     "當您\t1251\n"
     "當成\t1097\tdang4 cheng2\n"
@@ -60270,11 +60277,13 @@ static const char* const kPhrasesText[] = {
     "百年\t1109\n"
     "百年來\t1328\n"
     "百年来\t1328\n"
+    "百废待兴\t1293\tbai3 fei4 dai4 xing1\n"
     "百度\t1000\tbai3 du4\n"
     "百度搜索\t1312\tbai3 du4 sou1 suo3\n"
     "百度知道\t1211\tbai3 du4 zhi1 dao4\n"
     "百度貼吧\t1318\tbai3 du4 tie1 ba1\n"
     "百度贴吧\t1318\tbai3 du4 tie1 ba1\n"
+    "百廢待興\t1293\tbai3 fei4 dai4 xing1\n"
     "百強\t1280\tbai3 qiang2\n"
     "百强\t1280\tbai3 qiang2\n"
     "百忙\t1283\n"
@@ -63204,6 +63213,7 @@ static const char* const kPhrasesText[] = {
     "秋葉\t1305\n"
     "秋雨\t1249\n"
     "秋風\t1188\n"
+    ,
     "秋风\t1188\n"
     "种\t939\n"
     "种下\t1294\tzhong4 xia4\n"
@@ -63215,7 +63225,6 @@ static const char* const kPhrasesText[] = {
     "种族歧视\t1317\tzhong3 zu2 qi2 shi4\n"
     "种树\t1314\tzhong4 shu4\n"
     "种植\t1106\tzhong4 zhi2\n"
-    ,
     "种植业\t1299\tzhong4 zhi2 ye4\n"
     "种植面积\t1266\tzhong4 zhi2 mian4 ji1\n"
     "种田\t1258\tzhong4 tian2\n"
@@ -67140,6 +67149,7 @@ static const char* const kPhrasesText[] = {
     "繁育\t1274\tfan2 yu4\n"
     "繁荣\t1111\tfan2 rong2\n"
     "繁華\t1141\tfan2 hua2\n"
+    ,
     "繁衍\t1251\tfan2 yan3\n"
     "繁複\t1298\tfan2 fu4\n"
     "繁重\t1242\tfan2 zhong4\n"
@@ -67159,7 +67169,6 @@ static const char* const kPhrasesText[] = {
     "繊\t1344\n"
     "繋\t1344\n"
     "繌\t1345\n"
-    ,
     "繍\t1342\n"
     "繐\t1342\n"
     "繑\t1341\n"
@@ -71066,6 +71075,7 @@ static const char* const kPhrasesText[] = {
     "自以为是\t1211\tzi4 yi3 wei2 shi4\n"
     "自以為\t1209\tzi4 yi3 wei2\n"
     "自以為是\t1211\tzi4 yi3 wei2 shi4\n"
+    ,
     "自以爲\t1209\tzi4 yi3 wei2\n"
     "自以爲是\t1211\tzi4 yi3 wei2 shi4\n"
     "自传\t1249\tzi4 zhuan4\n"
@@ -71082,7 +71092,6 @@ static const char* const kPhrasesText[] = {
     "自個兒\t1286\tzi4 ge4 er5\n"
     "自備\t1272\n"
     "自傲\t1331\n"
-    ,
     "自傳\t1249\tzi4 zhuan4\n"
     "自创\t1259\n"
     "自制\t1179\n"
@@ -71488,10 +71497,16 @@ static const char* const kPhrasesText[] = {
     "與該\t1325\n"
     "與非\t1270\n"
     "興\t1064\n"
+    "興亡\t1254\txing1 wang2\n"
+    "興修\t1254\txing1 xiu1\n"
+    "興利除弊\t1293\txing1 li4 chu2 bi4\n"
     "興國\t1310\txing1 guo2\n"
     "興奮\t1036\txing1 fen4\n"
     "興奮不已\t1312\txing1 fen4 bu4 yi3\n"
     "興奮劑\t1262\txing1 fen4 ji4\n"
+    "興師動眾\t1293\txing1 shi1 dong4 zhong4\n"
+    "興師動衆\t1293\txing1 shi1 dong4 zhong4\n"
+    "興廢\t1254\txing1 fei4\n"
     "興建\t1189\txing1 jian4\n"
     "興旺\t1243\txing1 wang4\n"
     "興業\t1194\txing1 ye4\n"
@@ -71507,7 +71522,9 @@ static const char* const kPhrasesText[] = {
     "興趣\t959\txing4 qu4\n"
     "興趣愛好\t1292\txing4 qu4 ai4 hao4\n"
     "興辦\t1281\txing1 ban4\n"
+    "興邦\t1254\txing1 bang1\n"
     "興隆\t1268\txing1 long2\n"
+    "興風作浪\t1293\txing1 feng1 zuo4 lang4\n"
     "興高采烈\t1272\n"
     "舉\t1103\n"
     "舉一反三\t1323\n"
@@ -75088,6 +75105,7 @@ static const char* const kPhrasesText[] = {
     "衬衫\t1167\n"
     "衭\t1345\n"
     "衮\t1335\n"
+    ,
     "衯\t1347\n"
     "衰\t1138\n"
     "衰减\t1267\tshuai1 jian3\n"
@@ -75126,7 +75144,6 @@ static const char* const kPhrasesText[] = {
     "袄\t1258\n"
     "袅\t1332\n"
     "袅袅\t1291\n"
-    ,
     "袈\t1340\n"
     "袉\t1352\n"
     "袋\t1125\n"
@@ -78891,6 +78908,7 @@ static const char* const kPhrasesText[] = {
     "调温\t1328\ttiao2 wen1\n"
     "调理\t1196\ttiao2 li3\n"
     "调用\t1053\tdiao4 yong4\n"
+    ,
     "调皮\t1194\ttiao2 pi2\n"
     "调研\t1063\tdiao4 yan2\n"
     "调研报告\t1306\tdiao4 yan2 bao4 gao4\n"
@@ -78918,7 +78936,6 @@ static const char* const kPhrasesText[] = {
     "谈不上\t1178\n"
     "谈判\t1076\n"
     "谈到\t1098\n"
-    ,
     "谈及\t1229\n"
     "谈吐\t1291\n"
     "谈好\t1282\n"
@@ -82861,6 +82878,7 @@ static const char* const kPhrasesText[] = {
     "还像\t1318\thai2 xiang4\n"
     "还击\t1302\thuan2 ji1\n"
     "还剩\t1215\thai2 sheng4\n"
+    ,
     "还原\t1123\thuan2 yuan2\n"
     "还去\t1223\thai2 qu4\n"
     "还叫\t1257\thai2 jiao4\n"
@@ -82884,7 +82902,6 @@ static const char* const kPhrasesText[] = {
     "还得\t1025\thai2 dei3\n"
     "还得了\t1278\thai2 de2 liao3\n"
     "还得起\t1278\thuan2 de5 qi3\n"
-    ,
     "还快\t1298\thai2 kuai4\n"
     "还怕\t1255\thai2 pa4\n"
     "还想\t1082\thai2 xiang3\n"
@@ -86177,6 +86194,7 @@ static const char* const kPhrasesText[] = {
     "重点中学\t1307\tzhong4 dian3 zhong1 xue2\n"
     "重点企业\t1295\tzhong4 dian3 qi3 ye4\n"
     "重点大学\t1306\tzhong4 dian3 da4 xue2\n"
+    ,
     "重点工作\t1282\tzhong4 dian3 gong1 zuo4\n"
     "重点工程\t1271\tzhong4 dian3 gong1 cheng2\n"
     "重点建设\t1317\tzhong4 dian3 jian4 she4\n"
@@ -86196,7 +86214,6 @@ static const char* const kPhrasesText[] = {
     "重磅\t1296\tzhong4 bang4\n"
     "重組\t1076\tchong2 zu3\n"
     "重组\t1076\tchong2 zu3\n"
-    ,
     "重罚\t1322\tchong2 fa2\n"
     "重置\t1201\tchong2 zhi4\n"
     "重罰\t1322\tchong2 fa2\n"
@@ -90144,6 +90161,7 @@ static const char* const kPhrasesText[] = {
     "雲煙\t1301\n"
     "雲端\t1294\n"
     "雲臺\t1310\n"
+    ,
     "雲裏\t1329\n"
     "雲裡\t1329\n"
     "雲集\t1216\n"
@@ -90175,7 +90193,6 @@ static const char* const kPhrasesText[] = {
     "零售額\t1318\n"
     "零售额\t1318\n"
     "零头\t1292\n"
-    ,
     "零度\t1307\tling2 du4\n"
     "零散\t1269\tling2 san3\n"
     "零时\t1298\n"
@@ -94500,6 +94517,7 @@ static const char* const kPhrasesText[] = {
     "鷵\t1353\n"
     "鷶\t1352\n"
     "鷷\t1353\n"
+    ,
     "鷸\t1336\n"
     "鷹\t1154\n"
     "鷺\t1293\n"
@@ -94547,7 +94565,6 @@ static const char* const kPhrasesText[] = {
     "鸡毛\t1272\n"
     "鸡毛蒜皮\t1318\n"
     "鸡汤\t1264\tji1 tang1\n"
-    ,
     "鸡皮疙瘩\t1303\tji1 pi2 ge1 da5\n"
     "鸡精\t1321\n"
     "鸡翅\t1217\n"
