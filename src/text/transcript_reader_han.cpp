@@ -1,8 +1,8 @@
 // The transcript reader's runs of Chinese characters: each run cut into its likeliest words and read by
 // the tables, a particle, a return verb, a title's head, 得 "must", a measure word or a verb alone (种
 // 只 教), a noun after what counts or points to it (该地 三天假), the copula after a quantity (率为) or
-// 为 "as" after 以 or a verb of choosing (以安全为重 当选为) deciding a reading in context, and a written
-// form's words read so.
+// 为 "as" after 以 or a verb of choosing (以安全为重 当选为) or 倒数 the reciprocal (2的倒数) deciding a
+// reading in context, and a written form's words read so.
 #include "text/transcript_reader.hpp"
 
 #include <string>
@@ -13,6 +13,7 @@
 #include "common/internal_error.hpp"
 #include "text/aspect_particle.hpp"
 #include "text/code_points.hpp"
+#include "text/count_down.hpp"
 #include "text/counted_noun.hpp"
 #include "text/latin_words.hpp"
 #include "text/measure_or_verb.hpp"
@@ -64,6 +65,7 @@ std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharact
                                       : std::string(tables_.readings(character.text).front());
                 check_table_reading(character, pinyin);
             }
+            if (k == 1 && character.fix.empty() && detail::names_reciprocal(words, w)) pinyin = "shu4";
             readings_of_run.push_back(std::move(pinyin));
         }
         first += length;
