@@ -30,6 +30,7 @@
 #include "text/typed_names.hpp"
 #include "text/units_and_money.hpp"
 #include "text/web_addresses.hpp"
+#include "text/written_number_scan.hpp"
 #include "text/written_numbers.hpp"
 
 namespace talkface::detail {
@@ -265,7 +266,13 @@ std::size_t TranscriptReader::read_item(const std::vector<CodePoint>& text, std:
         run_.push_back({&c, c.text, {}});
         return i + 1;
     }
-    flush_run(ends_sentence(c.value) || marks_pause(c.value) || closes_quote(c.value));
+    const bool ends_clause = ends_sentence(c.value) || marks_pause(c.value) || closes_quote(c.value);
+    // What follows a run that ends before a written form: enough for a number, its decimals and its
+    // unit (45.1%, 100分).
+    constexpr std::size_t kWrittenAfter = 12;
+    flush_run(ends_clause, ends_clause || run_.empty()
+                               ? std::string()
+                               : detail::text_between(text, i, std::min(text.size(), i + kWrittenAfter)));
     if (sentence_ended_ && !(ends_sentence(c.value) || closes_quote(c.value))) close_sentence();
     if (const auto form_end = read_written_form(text, i)) return *form_end;
     if (marks_choice(text, i) || marks_list_item(text, i) || marks_lineage_dot(text, i) ||

@@ -29,7 +29,8 @@
 namespace talkface::detail {
 
 std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharacter>& run, bool ends_clause,
-                                                    bool follows_number) const {
+                                                    bool follows_number,
+                                                    std::string_view written_after) const {
     std::vector<std::string_view> characters;
     for (const auto& character : run) characters.push_back(character.text);
     std::vector<std::string> readings_of_run;
@@ -53,7 +54,8 @@ std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharact
         if (in_context.empty()) in_context = detail::must_verb_reading(words, w);
         if (in_context.empty()) in_context = detail::measure_or_verb_reading(words, w, follows_number);
         if (in_context.empty()) in_context = detail::counted_noun_reading(words, w);
-        if (in_context.empty()) in_context = detail::quantity_copula_reading(words, w, ends_clause);
+        if (in_context.empty())
+            in_context = detail::quantity_copula_reading(words, w, ends_clause, written_after);
         if (in_context.empty()) in_context = detail::take_as_reading(words, w);
         for (std::size_t k = 0; k < length; ++k) {
             const auto& character = run[first + k];
@@ -79,8 +81,8 @@ std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharact
     return readings_of_run;
 }
 
-void TranscriptReader::flush_run(bool ends_clause) {
-    const auto readings = read_han(run_, ends_clause, run_follows_number_);
+void TranscriptReader::flush_run(bool ends_clause, std::string_view written_after) {
+    const auto readings = read_han(run_, ends_clause, run_follows_number_, written_after);
     for (std::size_t k = 0; k < run_.size(); ++k) add_syllable(std::string(run_[k].text), readings[k]);
     run_.clear();
 }

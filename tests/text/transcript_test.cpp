@@ -576,6 +576,18 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("这两个数互为倒数") == "zhe4 liang3 ge4 shu4 hu4 wei2 dao4 shu4");
     }
 
+    TEST_CASE("为 before a share that closes its clause, or after a count's noun, is wéi") {
+        // Each row but the limits fails on main bea23b7 (session 45's readings_dev3): wei4.
+        CHECK(pinyin("对手为45.1%") == "dui4 shou3 wei2 bai3 fen1 zhi1 si4 shi2 wu3 dian3 yi1");
+        CHECK(pinyin("男性为52%，女性为48%") ==
+              "nan2 xing4 wei2 bai3 fen1 zhi1 wu3 shi2 er4 nv3 xing4 wei2 bai3 fen1 zhi1 si4 shi2 ba1");
+        CHECK(pinyin("得票数为1200票") == "de2 piao4 shu4 wei2 yi1 qian1 er4 bai3 piao4");
+        // The limits: a share that counts whom 为 is for, and 为 before no value.
+        CHECK(pinyin("为50%的家庭提供补贴") ==
+              "wei4 bai3 fen1 zhi1 wu3 shi2 de5 jia1 ting2 ti2 gong1 bu3 tie1");
+        CHECK(pinyin("无数为国牺牲的英雄") == "wu2 shu4 wei4 guo2 xi1 sheng1 de5 ying1 xiong2");
+    }
+
     TEST_CASE("syllables carry the character, numbered pinyin and their sentence") {
         const auto timeline = read_transcript("銀行。女兒");
         REQUIRE(timeline.syllables.size() == 4);

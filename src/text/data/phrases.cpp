@@ -34358,6 +34358,9 @@ static const char* const kPhrasesText[] = {
     "得益\t1220\tde2 yi4\n"
     "得知\t1075\tde2 zhi1\n"
     "得票\t1320\tde2 piao4\n"
+    "得票数\t1278\tde2 piao4 shu4\n"
+    "得票數\t1278\tde2 piao4 shu4\n"
+    "得票率\t1278\tde2 piao4 lv4\n"
     "得罪\t1150\tde2 zui4\n"
     "得見\t1331\tde2 jian4\n"
     "得见\t1331\tde2 jian4\n"
@@ -36273,6 +36276,7 @@ static const char* const kPhrasesText[] = {
     "愛情故事\t1212\tai4 qing2 gu4 shi5\n"
     "愛情是\t1235\n"
     "愛情片\t1327\n"
+    ,
     "愛情觀\t1330\n"
     "愛惜\t1248\n"
     "愛意\t1236\n"
@@ -36280,7 +36284,6 @@ static const char* const kPhrasesText[] = {
     "愛慕\t1244\n"
     "愛憐\t1324\n"
     "愛戀\t1237\n"
-    ,
     "愛我\t1148\n"
     "愛戴\t1265\n"
     "愛撫\t1268\n"
@@ -40086,6 +40089,7 @@ static const char* const kPhrasesText[] = {
     "捲土重來\t1300\tjuan3 tu3 chong2 lai2\n"
     "捲曲\t1322\n"
     "捲菸\t1241\n"
+    ,
     "捲菸廠\t1313\n"
     "捲起\t1287\n"
     "捲髮\t1263\n"
@@ -40094,7 +40098,6 @@ static const char* const kPhrasesText[] = {
     "捷\t1176\n"
     "捷克\t1211\n"
     "捷径\t1230\n"
-    ,
     "捷徑\t1230\n"
     "捷达\t1243\n"
     "捷達\t1243\n"
@@ -42576,7 +42579,7 @@ static const char* const kPhrasesText[] = {
     "数不清\t1272\tshu3 bu4 qing1\n"
     "数不胜数\t1304\tshu3 bu4 sheng4 shu3\n"
     "数个\t1260\tshu4 ge4\n"
-    "数为\t1304\tshu4 wei4\n"
+    "数为\t1304\tshu4 wei2\n"
     "数人\t1296\tshu4 ren2\n"
     "数亿\t1316\tshu4 yi4\n"
     "数以万计\t1319\tshu4 yi3 wan4 ji4\n"
@@ -42807,8 +42810,8 @@ static const char* const kPhrasesText[] = {
     "數日\t1277\tshu4 ri4\n"
     "數月\t1242\tshu4 yue4\n"
     "數次\t1212\tshu4 ci4\n"
-    "數為\t1304\tshu4 wei4\n"
-    "數爲\t1304\tshu4 wei4\n"
+    "數為\t1304\tshu4 wei2\n"
+    "數爲\t1304\tshu4 wei2\n"
     "數理\t1285\tshu4 li3\n"
     "數百\t1157\tshu4 bai3\n"
     "數百萬\t1265\tshu4 bai3 wan4\n"
@@ -43761,12 +43764,12 @@ static const char* const kPhrasesText[] = {
     "无极限\t1323\twu2 ji2 xian4\n"
     "无果\t1303\twu2 guo3\n"
     "无欲\t1325\twu2 yu4\n"
+    ,
     "无止境\t1291\twu2 zhi3 jing4\n"
     "无此\t1326\twu2 ci3\n"
     "无毒\t1272\twu2 du2\n"
     "无比\t1081\twu2 bi3\n"
     "无水\t1318\twu2 shui3\n"
-    ,
     "无污染\t1313\twu2 wu1 ran3\n"
     "无法\t852\twu2 fa3\n"
     "无法使用\t1198\twu2 fa3 shi3 yong4\n"
@@ -47362,6 +47365,7 @@ static const char* const kPhrasesText[] = {
     "果\t1038\n"
     "果农\t1319\n"
     "果冻\t1242\n"
+    ,
     "果凍\t1242\n"
     "果品\t1277\n"
     "果园\t1247\n"
@@ -47371,7 +47375,6 @@ static const char* const kPhrasesText[] = {
     "果實\t1173\n"
     "果敢\t1323\n"
     "果断\t1185\n"
-    ,
     "果斷\t1185\n"
     "果果\t1223\n"
     "果树\t1247\n"
@@ -51417,6 +51420,7 @@ static const char* const kPhrasesText[] = {
     "沙发\t1041\n"
     "沙哑\t1275\n"
     "沙啞\t1275\n"
+    ,
     "沙地\t1321\tsha1 di4\n"
     "沙场\t1301\n"
     "沙坪坝\t1320\n"
@@ -51424,7 +51428,6 @@ static const char* const kPhrasesText[] = {
     "沙城\t1321\n"
     "沙場\t1301\n"
     "沙塵\t1295\n"
-    ,
     "沙塵暴\t1265\tsha1 chen2 bao4\n"
     "沙子\t1192\n"
     "沙尘\t1295\n"
@@ -55478,10 +55481,10 @@ static const char* const kPhrasesText[] = {
     "無厘頭\t1264\twu2 li2 tou2\n"
     "無可\t1231\twu2 ke3\n"
     "無可厚非\t1251\twu2 ke3 hou4 fei1\n"
+    ,
     "無可奈何\t1221\twu2 ke3 nai4 he2\n"
     "無可挑剔\t1313\twu2 ke3 tiao1 ti1\n"
     "無可救藥\t1319\twu2 ke3 jiu4 yao4\n"
-    ,
     "無名\t1181\twu2 ming2\n"
     "無名指\t1281\twu2 ming2 zhi3\n"
     "無味\t1276\twu2 wei4\n"
@@ -59388,11 +59391,11 @@ static const char* const kPhrasesText[] = {
     "當務之急\t1242\n"
     "當即\t1196\n"
     "當地\t968\tdang1 di4\n"
+    ,
     "當地人\t1210\tdang1 di4 ren2\n"
     "當地政府\t1209\tdang1 di4 zheng4 fu3\n"
     "當地時間\t1257\tdang1 di4 shi2 jian1\n"
     "當場\t1122\n"
-    ,
     "當天\t1039\n"
     "當她\t1191\n"
     "當好\t1296\n"
@@ -63204,6 +63207,7 @@ static const char* const kPhrasesText[] = {
     "秋叶\t1305\tqiu1 ye4\n"
     "秋天\t1114\n"
     "秋季\t1167\n"
+    ,
     "秋日\t1276\n"
     "秋月\t1282\n"
     "秋水\t1225\n"
@@ -63213,7 +63217,6 @@ static const char* const kPhrasesText[] = {
     "秋葉\t1305\n"
     "秋雨\t1249\n"
     "秋風\t1188\n"
-    ,
     "秋风\t1188\n"
     "种\t939\n"
     "种下\t1294\tzhong4 xia4\n"
@@ -67143,13 +67146,13 @@ static const char* const kPhrasesText[] = {
     "繁杂\t1261\tfan2 za2\n"
     "繁榮\t1111\tfan2 rong2\n"
     "繁殖\t1163\tfan2 zhi2\n"
+    ,
     "繁琐\t1207\tfan2 suo3\n"
     "繁瑣\t1207\tfan2 suo3\n"
     "繁盛\t1327\tfan2 sheng4\n"
     "繁育\t1274\tfan2 yu4\n"
     "繁荣\t1111\tfan2 rong2\n"
     "繁華\t1141\tfan2 hua2\n"
-    ,
     "繁衍\t1251\tfan2 yan3\n"
     "繁複\t1298\tfan2 fu4\n"
     "繁重\t1242\tfan2 zhong4\n"
@@ -71071,11 +71074,11 @@ static const char* const kPhrasesText[] = {
     "自习室\t1316\n"
     "自产\t1307\n"
     "自从\t1069\n"
+    ,
     "自以为\t1209\tzi4 yi3 wei2\n"
     "自以为是\t1211\tzi4 yi3 wei2 shi4\n"
     "自以為\t1209\tzi4 yi3 wei2\n"
     "自以為是\t1211\tzi4 yi3 wei2 shi4\n"
-    ,
     "自以爲\t1209\tzi4 yi3 wei2\n"
     "自以爲是\t1211\tzi4 yi3 wei2 shi4\n"
     "自传\t1249\tzi4 zhuan4\n"
@@ -75093,6 +75096,7 @@ static const char* const kPhrasesText[] = {
     "表達能力\t1294\n"
     "表達自己\t1233\n"
     "表里\t1308\n"
+    ,
     "表露\t1259\tbiao3 lu4\n"
     "表面\t1013\n"
     "表頭\t1316\n"
@@ -75105,7 +75109,6 @@ static const char* const kPhrasesText[] = {
     "衬衫\t1167\n"
     "衭\t1345\n"
     "衮\t1335\n"
-    ,
     "衯\t1347\n"
     "衰\t1138\n"
     "衰减\t1267\tshuai1 jian3\n"
@@ -78903,12 +78906,12 @@ static const char* const kPhrasesText[] = {
     "调查结果\t1231\tdiao4 cha2 jie2 guo3\n"
     "调查表\t1285\tdiao4 cha2 biao3\n"
     "调查问卷\t1305\tdiao4 cha2 wen4 juan3\n"
+    ,
     "调水\t1320\tdiao4 shui3\n"
     "调涨\t1254\ttiao2 zhang3\n"
     "调温\t1328\ttiao2 wen1\n"
     "调理\t1196\ttiao2 li3\n"
     "调用\t1053\tdiao4 yong4\n"
-    ,
     "调皮\t1194\ttiao2 pi2\n"
     "调研\t1063\tdiao4 yan2\n"
     "调研报告\t1306\tdiao4 yan2 bao4 gao4\n"
@@ -82873,12 +82876,12 @@ static const char* const kPhrasesText[] = {
     "还价\t1268\thuan2 jia4\n"
     "还会\t1004\thai2 hui4\n"
     "还会有\t1185\thai2 hui4 you3\n"
+    ,
     "还你\t1328\thuan2 ni3\n"
     "还债\t1269\thuan2 zhai4\n"
     "还像\t1318\thai2 xiang4\n"
     "还击\t1302\thuan2 ji1\n"
     "还剩\t1215\thai2 sheng4\n"
-    ,
     "还原\t1123\thuan2 yuan2\n"
     "还去\t1223\thai2 qu4\n"
     "还叫\t1257\thai2 jiao4\n"
@@ -86192,9 +86195,9 @@ static const char* const kPhrasesText[] = {
     "重灾区\t1291\tzhong4 zai1 qu1\n"
     "重点\t929\tzhong4 dian3\n"
     "重点中学\t1307\tzhong4 dian3 zhong1 xue2\n"
+    ,
     "重点企业\t1295\tzhong4 dian3 qi3 ye4\n"
     "重点大学\t1306\tzhong4 dian3 da4 xue2\n"
-    ,
     "重点工作\t1282\tzhong4 dian3 gong1 zuo4\n"
     "重点工程\t1271\tzhong4 dian3 gong1 cheng2\n"
     "重点建设\t1317\tzhong4 dian3 jian4 she4\n"
@@ -90155,13 +90158,13 @@ static const char* const kPhrasesText[] = {
     "雲山\t1307\n"
     "雲峯\t1290\n"
     "雲峰\t1290\n"
+    ,
     "雲彩\t1258\tyun2 cai5\n"
     "雲朵\t1301\n"
     "雲海\t1286\n"
     "雲煙\t1301\n"
     "雲端\t1294\n"
     "雲臺\t1310\n"
-    ,
     "雲裏\t1329\n"
     "雲裡\t1329\n"
     "雲集\t1216\n"
@@ -94508,6 +94511,7 @@ static const char* const kPhrasesText[] = {
     "鷫\t1353\n"
     "鷬\t1353\n"
     "鷭\t1354\n"
+    ,
     "鷮\t1351\n"
     "鷯\t1340\n"
     "鷰\t1349\n"
@@ -94517,7 +94521,6 @@ static const char* const kPhrasesText[] = {
     "鷵\t1353\n"
     "鷶\t1352\n"
     "鷷\t1353\n"
-    ,
     "鷸\t1336\n"
     "鷹\t1154\n"
     "鷺\t1293\n"
