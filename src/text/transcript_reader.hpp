@@ -143,7 +143,7 @@ private:
     // `ends_clause`: a pause or end mark follows the run, or the text ends (return_verb.hpp).
     // `follows_number`: a written number ends right where the run starts (measure_or_verb.hpp).
     // `written_after`: the first characters after the run where it ends before a written form, not a
-    // pause (对手为45.1%: quantity_copula.hpp).
+    // pause (他得100分, 对手为45.1%: must_verb.hpp, quantity_copula.hpp).
     std::vector<std::string> read_han(const std::vector<HanCharacter>& run, bool ends_clause = false,
                                       bool follows_number = false, std::string_view written_after = {}) const;
 

@@ -51,7 +51,7 @@ std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharact
         auto in_context = detail::reading_before_particle(word, next_word);
         if (in_context.empty()) in_context = detail::return_verb_reading(words, w, ends_clause);
         if (in_context.empty()) in_context = detail::title_head_reading(words, w);
-        if (in_context.empty()) in_context = detail::must_verb_reading(words, w);
+        if (in_context.empty()) in_context = detail::must_verb_reading(words, w, written_after);
         if (in_context.empty()) in_context = detail::measure_or_verb_reading(words, w, follows_number);
         if (in_context.empty()) in_context = detail::counted_noun_reading(words, w);
         if (in_context.empty())

@@ -588,6 +588,20 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("无数为国牺牲的英雄") == "wu2 shu4 wei4 guo2 xi1 sheng1 de5 ying1 xiong2");
     }
 
+    TEST_CASE("得 before a written count is dé, before a time or a little more of a verb děi") {
+        // Each row but the limits fails on main bea23b7 (session 45's readings_dev3): de5.
+        CHECK(pinyin("他得100分") == "ta1 de2 yi1 bai3 fen1");
+        CHECK(pinyin("我得5点起床") == "wo3 dei3 wu3 dian3 qi3 chuang2");
+        CHECK(pinyin("这道菜得多放点盐") == "zhe4 dao4 cai4 dei3 duo1 fang4 dian3 yan2");
+        CHECK(pinyin("天冷了，得少出点门") == "tian1 leng3 le5 dei3 shao3 chu1 dian3 men2");
+        CHECK(pinyin("這道菜得多放點鹽") == "zhe4 dao4 cai4 dei3 duo1 fang4 dian3 yan2");
+        // The limits: 得 the particle before 多 of degree and an adjective, the comparison's 得多, and a
+        // verb's complement, 多 and 了 before 些.
+        CHECK(pinyin("她长得多漂亮") == "ta1 zhang3 de5 duo1 piao4 liang5");
+        CHECK(pinyin("这个比那个好得多") == "zhe4 ge4 bi3 na4 ge4 hao3 de5 duo1");
+        CHECK(pinyin("盐放得多了些") == "yan2 fang4 de5 duo1 le5 xie1");
+    }
+
     TEST_CASE("syllables carry the character, numbered pinyin and their sentence") {
         const auto timeline = read_transcript("銀行。女兒");
         REQUIRE(timeline.syllables.size() == 4);
