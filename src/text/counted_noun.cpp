@@ -1,5 +1,8 @@
 #include "text/counted_noun.hpp"
 
+#include <algorithm>
+#include <cstddef>
+
 #include "text/count_words.hpp"
 #include "text/written_number_scan.hpp"
 
@@ -26,6 +29,12 @@ std::string_view counted_noun_reading(const std::vector<std::string>& words, std
     if (words[w] == "假") {
         constexpr std::string_view kSpans[] = {"天", "日", "周", "週", "月", "星期"};
         return starts_with_count(before) && ends_with_any(before, kSpans) ? "jia4" : "";
+    }
+    if (words[w] == "觉" || words[w] == "覺") {
+        // A sleep's noun takes what is said of the sleep between it and its verb (睡不着觉 睡了个觉 睡大觉).
+        const auto sleeps = [](const std::string& word) { return word.find("睡") != std::string::npos; };
+        const auto first = w < 3 ? words.begin() : words.begin() + static_cast<std::ptrdiff_t>(w - 3);
+        return std::any_of(first, words.begin() + static_cast<std::ptrdiff_t>(w), sleeps) ? "jiao4" : "";
     }
     return {};
 }

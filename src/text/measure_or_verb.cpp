@@ -31,6 +31,11 @@ std::string_view measure_or_verb_reading(const std::vector<std::string>& words, 
     constexpr std::string_view kOnly[] = {"只是", "只有", "只要", "只能",   "只好", "只得", "只需",
                                           "只怕", "只管", "只顾", "只不过", "只见", "只因"};
     if (after_count && starts_with_any(word, {"只"}) && !starts_with_any(word, kOnly)) return "zhi1";
+    // 量 is measured, liáng, where it takes a count of times, an aspect particle or what a body is
+    // measured for (量一下 量了体温 各量一次血压); the amount, liàng, is 量 ending a word (数量 大量).
+    constexpr std::string_view kMeasured[] = {"一",   "了",   "过",   "過",   "着",   "著",   "体温", "體溫",
+                                              "血压", "血壓", "身高", "体重", "體重", "尺寸", "腰围", "腰圍"};
+    if (word == "量" && w + 1 < words.size() && starts_with_any(words[w + 1], kMeasured)) return "liang2";
     return {};
 }
 

@@ -34,8 +34,9 @@ std::string_view quantity_copula_reading(const std::vector<std::string>& words, 
     if (words[w].size() == kCopulas[0].size() && w + 1 == words.size() &&
         is_share_closing_clause(written_after))
         return "wei2";
-    constexpr std::string_view kQuantities[] = {"率", "度", "值", "价", "價", "量", "额",
-                                                "額", "温", "溫", "速", "重", "数", "數"};
+    constexpr std::string_view kQuantities[] = {"率", "度", "值", "价", "價", "量", "额", "額",
+                                                "温", "溫", "速", "重", "润", "潤", "入", "数",
+                                                "數", "积", "積", "差", "压", "壓", "高"};
     if (!ends_with_any(words[w - 1], kQuantities)) return {};
     constexpr std::string_view kValueStarts[] = {"每", "约", "約", "负", "負", "零"};
     const auto starts_value = [&](std::string_view word) {

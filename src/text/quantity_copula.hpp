@@ -2,10 +2,11 @@
 // 浓度为每立方米35微克, 气温为零下5度. The table reads 为 alone as wèi, "for", which its commonest words
 // take (为了 因为), and the phrase list joins 为 to a quantity's last character only in a few words
 // (率为 值为 价为), so a cut that keeps the noun whole (失业率 为) left it wèi. A quantity's noun ends in
-// 率 度 值 价 量 额 温 速 重 数 (得票数为); its value is a number: a written one right after 为 (the run ends
-// there), or a word a count, 每, 约, 负 or 零 starts (the list's 为每 joins them). A share closing its
-// clause right after 为 is a value after any noun (对手为45.1%, 男性为52%). docs/written-forms.md ("Words
-// and polyphonic characters") lists the rules.
+// 率 度 值 价 量 额 温 速 重, or in 润 入 数 积 差 压 高, a report's sums, counts and measures
+// (净利润为15.8亿元, 收入为 人数为 得票数为 面积为 温差为 血压为 身高为); its value is a number: a written
+// one right after 为 (the run ends there), or a word a count, 每, 约, 负 or 零 starts (the list's 为每 joins
+// them). A share closing its clause right after 为 is a value after any noun (对手为45.1%, 男性为52%).
+// docs/written-forms.md ("Words and polyphonic characters") lists the rules.
 #ifndef TALKFACE_TEXT_QUANTITY_COPULA_HPP
 #define TALKFACE_TEXT_QUANTITY_COPULA_HPP
 

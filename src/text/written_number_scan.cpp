@@ -150,7 +150,10 @@ bool takes_liang(char32_t c) {
         // (2宗嚴重流感個案 兩宗; session 38: 二例, 二宗).
         U"例宗"
         // A play, as 一出戏 counts it, and a baseball inning's outs (2出局 兩出局; session 44: 二出局).
-        U"出");
+        U"出"
+        // A round or a shot, as a game's lines and war news count them (就剩2发子弹了 两发, 2發炮彈;
+        // session 46: 二发).
+        U"发發");
 }
 
 std::string text_before(const std::vector<CodePoint>& text, std::size_t start, bool clause_only) {

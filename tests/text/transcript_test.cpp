@@ -499,6 +499,17 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("这是假的") == "zhe4 shi4 jia3 de5");
     }
 
+    TEST_CASE("觉 alone after 睡 and what is said of the sleep is the sleep, jiào") {
+        // Each row but the limits failed on main bea23b7 (readings_dev4, session 46): jue2.
+        CHECK(pinyin("一直睡不着觉") == "yi1 zhi2 shui4 bu4 zhao2 jiao4");
+        CHECK(pinyin("中午睡了个觉") == "zhong1 wu3 shui4 le5 ge4 jiao4");
+        CHECK(pinyin("周末睡大觉") == "zhou1 mo4 shui4 da4 jiao4");
+        // The limits: the feeling's 觉, alone or in its words.
+        CHECK(pinyin("不知不觉") == "bu4 zhi1 bu4 jue2");
+        CHECK(pinyin("我觉不出") == "wo3 jue2 bu4 chu1");
+        CHECK(pinyin("睡醒后只觉得累") == "shui4 xing3 hou4 zhi3 jue2 de5 lei4");
+    }
+
     TEST_CASE("得 after a person before a prize or a count is dé, before a verb děi") {
         // Each row but the limit failed on main 1e20c3d: dei3 twice, de5.
         CHECK(pinyin("她得冠军了") == "ta1 de2 guan4 jun1 le5");
@@ -600,6 +611,40 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("她长得多漂亮") == "ta1 zhang3 de5 duo1 piao4 liang5");
         CHECK(pinyin("这个比那个好得多") == "zhe4 ge4 bi3 na4 ge4 hao3 de5 duo1");
         CHECK(pinyin("盐放得多了些") == "yan2 fang4 de5 duo1 le5 xie1");
+    }
+
+    TEST_CASE("sports, markets, weather, health and recipes: the list's words of 将 jiàng, 切 qiē, 间 jiàn") {
+        // Each row but the limits failed on main bea23b7 (readings_dev4, session 46): jiang1 twice, qie4
+        // twice, jian1 twice, men4, e4 xin1, hai4.
+        CHECK(pinyin("老将梅西主罚角球") == "lao3 jiang4 mei2 xi1 zhu3 fa2 jiao3 qiu2");
+        CHECK(pinyin("门将扑救") == "men2 jiang4 pu1 jiu4");
+        CHECK(pinyin("土豆切成薄片") == "tu3 dou4 qie1 cheng2 bao2 pian4");
+        CHECK(pinyin("先切菜") == "xian1 qie1 cai4");
+        CHECK(pinyin("间隔二十一天") == "jian4 ge2 er4 shi2 yi1 tian1");
+        CHECK(pinyin("间接影响") == "jian4 jie1 ying3 xiang3");
+        CHECK(pinyin("天气闷热") == "tian1 qi4 men1 re4");
+        CHECK(pinyin("头晕恶心") == "tou2 yun1 e3 xin5");
+        CHECK(pinyin("咳嗽得厉害") == "ke2 sou5 de5 li4 hai5");
+        // The limits: 将 jiāng, 切 qiè, 间 jiān and 闷 mèn in their own words.
+        CHECK(pinyin("比赛即将开始") == "bi3 sai4 ji2 jiang1 kai1 shi3");
+        CHECK(pinyin("一切顺利") == "yi1 qie4 shun4 li4");
+        CHECK(pinyin("密切合作") == "mi4 qie4 he2 zuo4");
+        CHECK(pinyin("时间不多") == "shi2 jian1 bu4 duo1");
+        CHECK(pinyin("心情郁闷") == "xin1 qing2 yu4 men4");
+    }
+
+    TEST_CASE("为 after a report's sum, count or measure and before its value is wéi; 量 measured is liáng") {
+        // Each row but the limits failed on main bea23b7 (readings_dev4, session 46): wei4 three times,
+        // liang4 twice.
+        CHECK(pinyin("净利润为15.8亿元") == "jing4 li4 run4 wei2 shi2 wu3 dian3 ba1 yi4 yuan2");
+        CHECK(pinyin("参会人数为300人") == "can1 hui4 ren2 shu4 wei2 san1 bai3 ren2");
+        CHECK(pinyin("昼夜温差为15度") == "zhou4 ye4 wen1 cha1 wei2 shi2 wu3 du4");
+        CHECK(pinyin("每天早晚各量一次血压") == "mei3 tian1 zao3 wan3 ge4 liang2 yi1 ci4 xue4 ya1");
+        CHECK(pinyin("医生给他量了体温") == "yi1 sheng1 gei3 ta1 liang2 le5 ti3 wen1");
+        // The limits: 为 "for" where no value follows, and the amount's 量.
+        CHECK(pinyin("收入为他赢得尊重") == "shou1 ru4 wei4 ta1 ying2 de2 zun1 zhong4");
+        CHECK(pinyin("数量很大") == "shu4 liang4 hen3 da4");
+        CHECK(pinyin("销量一直很好") == "xiao1 liang4 yi1 zhi2 hen3 hao3");
     }
 
     TEST_CASE("syllables carry the character, numbered pinyin and their sentence") {

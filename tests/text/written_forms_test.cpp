@@ -3095,4 +3095,15 @@ TEST_SUITE("written forms") {
             {"他们以2比1获胜", "他们以二比一获胜"},
         });
     }
+
+    TEST_CASE("rounds and shots counted by 发 are 两, as a game's lines count them") {
+        // Each row but the limits fails on main bea23b7 (readings_dev4, session 46): 二发, 二發.
+        check_cases({
+            {"就剩2发子弹了", "就剩两发子弹了"},
+            {"連開2發", "連開兩發"},
+            // The limits: an ordinal, and a number inside a larger one.
+            {"第2发子弹", "第二发子弹"},
+            {"打了12发", "打了十二发"},
+        });
+    }
 }
