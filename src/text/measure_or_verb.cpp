@@ -36,6 +36,17 @@ std::string_view measure_or_verb_reading(const std::vector<std::string>& words, 
     constexpr std::string_view kMeasured[] = {"一",   "了",   "过",   "過",   "着",   "著",   "体温", "體溫",
                                               "血压", "血壓", "身高", "体重", "體重", "尺寸", "腰围", "腰圍"};
     if (word == "量" && w + 1 < words.size() && starts_with_any(words[w + 1], kMeasured)) return "liang2";
+    const std::string_view next = w + 1 < words.size() ? std::string_view(words[w + 1]) : std::string_view();
+    // 切 is cut, qiē, where no word covers it (切薄片 切肉); qiè is its words' (一切 亲切 密切), the adverb's
+    // before a warning (切不可 切莫 切勿 切忌 切记), and names' before 尔 (切尔西 撒切尔 切尔诺贝利).
+    constexpr std::string_view kKeepsQie[] = {"不", "莫", "勿", "忌", "记", "記", "尔", "爾"};
+    if (word == "切") return starts_with_any(next, kKeepsQie) ? "" : "qie1";
+    // 撒 is strewn, sǎ, before how much or what a cook strews or where it lands (撒葱花 撒点盐 撒上 撒在);
+    // sā, the table's, is cast or let go, in its words and names (撒网 撒手 撒谎 撒哈拉).
+    constexpr std::string_view kStrewn[] = {"上",   "入",   "在",   "点",   "點",   "些", "少许", "少許",
+                                            "适量", "適量", "一",   "盐",   "鹽",   "糖", "葱",   "蔥",
+                                            "芝麻", "胡椒", "孜然", "面粉", "麵粉", "粉", "香菜"};
+    if ((word == "撒" && starts_with_any(next, kStrewn)) || word == "撒在") return "sa3";
     return {};
 }
 

@@ -25,6 +25,7 @@
 #include "text/script_marks.hpp"
 #include "text/script_variant.hpp"
 #include "text/sentence_marks.hpp"
+#include "text/shots_made.hpp"
 #include "text/transcript_cut.hpp"
 #include "text/transcript_reader.hpp"
 #include "text/typed_names.hpp"
@@ -261,7 +262,12 @@ std::size_t TranscriptReader::read_item(const std::vector<CodePoint>& text, std:
     }
     if (tables_.has_readings(c.text)) {
         if (sentence_ended_) close_sentence();
-        if (run_.empty()) run_follows_number_ = follows_written_number(i);
+        if (run_.empty()) {
+            run_follows_number_ = follows_written_number(i);
+            run_follows_attempts_ =
+                run_follows_number_ &&
+                detail::follows_attempts(sentence_text_, timeline_.written_forms.back().text);
+        }
         append_text(c.text);
         run_.push_back({&c, c.text, {}});
         return i + 1;

@@ -141,11 +141,13 @@ private:
     // word read by the phrase table, or each of its characters by its most frequent reading;
     // fixes win over both.
     // `ends_clause`: a pause or end mark follows the run, or the text ends (return_verb.hpp).
-    // `follows_number`: a written number ends right where the run starts (measure_or_verb.hpp).
+    // `follows_number`: a written number ends right where the run starts (measure_or_verb.hpp);
+    // `follows_attempts`: that number counts the shots made of a count of attempts (shots_made.hpp).
     // `written_after`: the first characters after the run where it ends before a written form, not a
     // pause (他得100分, 对手为45.1%: must_verb.hpp, quantity_copula.hpp).
     std::vector<std::string> read_han(const std::vector<HanCharacter>& run, bool ends_clause = false,
-                                      bool follows_number = false, std::string_view written_after = {}) const;
+                                      bool follows_number = false, bool follows_attempts = false,
+                                      std::string_view written_after = {}) const;
 
     // The last written form is a number whose last digit stands right before text[i], no space
     // between (2只: a measure word the number counts).
@@ -197,6 +199,7 @@ private:
     Timeline timeline_;
     std::vector<HanCharacter> run_;             // Chinese characters not yet read, in order
     bool run_follows_number_ = false;           // a written number ends where run_ starts
+    bool run_follows_attempts_ = false;         // and counts shots made after their attempts (12投7)
     std::vector<std::size_t> drawing_ends_;     // where an emoji or a face drawn in signs starting there ends
     std::optional<std::size_t> last_form_end_;  // where the last written form ends in the text
     std::size_t form_warnings_ = 0;             // warnings before the last written form's own

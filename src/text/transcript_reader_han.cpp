@@ -21,6 +21,7 @@
 #include "text/quantity_copula.hpp"
 #include "text/return_verb.hpp"
 #include "text/script_variant.hpp"
+#include "text/shots_made.hpp"
 #include "text/take_as.hpp"
 #include "text/title_head.hpp"
 #include "text/word_segmentation.hpp"
@@ -29,7 +30,7 @@
 namespace talkface::detail {
 
 std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharacter>& run, bool ends_clause,
-                                                    bool follows_number,
+                                                    bool follows_number, bool follows_attempts,
                                                     std::string_view written_after) const {
     std::vector<std::string_view> characters;
     for (const auto& character : run) characters.push_back(character.text);
@@ -57,6 +58,7 @@ std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharact
         if (in_context.empty())
             in_context = detail::quantity_copula_reading(words, w, ends_clause, written_after);
         if (in_context.empty()) in_context = detail::take_as_reading(words, w);
+        if (in_context.empty()) in_context = detail::shots_made_reading(words, w, follows_attempts);
         for (std::size_t k = 0; k < length; ++k) {
             const auto& character = run[first + k];
             std::string pinyin = character.fix;
@@ -82,7 +84,8 @@ std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharact
 }
 
 void TranscriptReader::flush_run(bool ends_clause, std::string_view written_after) {
-    const auto readings = read_han(run_, ends_clause, run_follows_number_, written_after);
+    const auto readings =
+        read_han(run_, ends_clause, run_follows_number_, run_follows_attempts_, written_after);
     for (std::size_t k = 0; k < run_.size(); ++k) add_syllable(std::string(run_[k].text), readings[k]);
     run_.clear();
 }

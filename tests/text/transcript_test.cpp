@@ -499,6 +499,34 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("这是假的") == "zhe4 shi4 jia3 de5");
     }
 
+    TEST_CASE("中 after a count of shots taken and a count made is zhòng, as a box score writes it") {
+        // Each row but the limits failed on main bea23b7 (readings_dev4, session 46): zhong1.
+        CHECK(pinyin("他三分球12投7中") == "ta1 san1 fen1 qiu2 shi2 er4 tou2 qi1 zhong4");
+        CHECK(pinyin("全场6罚5中") == "quan2 chang3 liu4 fa2 wu3 zhong4");
+        CHECK(pinyin("三分球５投０中") == "san1 fen1 qiu2 wu3 tou2 ling2 zhong4");
+        // The limits: a school's number, and a number before 中 with no attempts before it.
+        CHECK(pinyin("他在7中读书") == "ta1 zai4 qi1 zhong1 du2 shu1");
+        CHECK(pinyin("投3中的学生") == "tou2 san1 zhong1 de5 xue2 sheng1");
+    }
+
+    TEST_CASE("切 alone is cut, qiē, and 撒 before what a cook strews is sǎ") {
+        // Each row but the limits failed on main bea23b7 (readings_dev4, session 46): qie4 twice, sa1 three
+        // times.
+        CHECK(pinyin("土豆去皮切薄片") == "tu3 dou4 qu4 pi2 qie1 bao2 pian4");
+        CHECK(pinyin("把肉切好") == "ba3 rou4 qie1 hao3");
+        CHECK(pinyin("出锅前撒葱花") == "chu1 guo1 qian2 sa3 cong1 hua1");
+        CHECK(pinyin("撒点盐") == "sa3 dian3 yan2");
+        CHECK(pinyin("盐撒在地上") == "yan2 sa3 zai4 di4 shang4");
+        // The limits: 切 qiè in its words, the adverb and names, 撒 sā cast or let go and in names.
+        CHECK(pinyin("一切都好") == "yi1 qie4 dou1 hao3");
+        CHECK(pinyin("切不可大意") == "qie4 bu4 ke3 da4 yi4");
+        CHECK(pinyin("切尔西队") == "qie4 er3 xi1 dui4");
+        CHECK(pinyin("撒切尔夫人") == "sa1 qie4 er3 fu1 ren2");
+        CHECK(pinyin("撒网捕鱼") == "sa1 wang3 bu3 yu2");
+        CHECK(pinyin("撒手不管") == "sa1 shou3 bu4 guan3");
+        CHECK(pinyin("撒哈拉沙漠") == "sa1 ha1 la1 sha1 mo4");
+    }
+
     TEST_CASE("觉 alone after 睡 and what is said of the sleep is the sleep, jiào") {
         // Each row but the limits failed on main bea23b7 (readings_dev4, session 46): jue2.
         CHECK(pinyin("一直睡不着觉") == "yi1 zhi2 shui4 bu4 zhao2 jiao4");
