@@ -32,10 +32,14 @@ std::string_view measure_or_verb_reading(const std::vector<std::string>& words, 
                                           "只怕", "只管", "只顾", "只不过", "只见", "只因"};
     if (after_count && starts_with_any(word, {"只"}) && !starts_with_any(word, kOnly)) return "zhi1";
     // 量 is measured, liáng, where it takes a count of times, an aspect particle or what a body is
-    // measured for (量一下 量了体温 各量一次血压); the amount, liàng, is 量 ending a word (数量 大量).
+    // measured for (量一下 量了体温 各量一次血压); the amount, liàng, is 量 ending a word (数量 大量) or
+    // after 的 (这批货的量一共多少).
     constexpr std::string_view kMeasured[] = {"一",   "了",   "过",   "過",   "着",   "著",   "体温", "體溫",
                                               "血压", "血壓", "身高", "体重", "體重", "尺寸", "腰围", "腰圍"};
-    if (word == "量" && w + 1 < words.size() && starts_with_any(words[w + 1], kMeasured)) return "liang2";
+    const bool modified = w > 0 && ends_with_any(words[w - 1], {"的"});
+    if (word == "量" && !modified && w + 1 < words.size() && starts_with_any(words[w + 1], kMeasured)) {
+        return "liang2";
+    }
     const std::string_view next = w + 1 < words.size() ? std::string_view(words[w + 1]) : std::string_view();
     // 切 is cut, qiē, where no word covers it (切薄片 切肉); qiè is its words' (一切 亲切 密切), the adverb's
     // before a warning (切不可 切莫 切勿 切忌 切记), and names' before 尔 (切尔西 撒切尔 切尔诺贝利).

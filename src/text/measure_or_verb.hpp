@@ -8,9 +8,9 @@
 // before how much or what a cook strews or where it lands (点 些 少许 一 上 入 在, 盐 糖 葱 芝麻 胡椒 粉) is
 // sǎ (撒葱花 撒点盐 撒在), sā being the table's, of its words (撒网 撒手 撒谎) and names (撒哈拉). 量 alone
 // before a count of times, an aspect particle or a body's measure (一 了 过 着 体温 血压 身高 体重 尺寸 腰围)
-// is the verb liáng (每天各量一次血压, 量了体温), liàng being the amount's. The table reads each character
-// alone by its commonest reading in running text, the words' (zhong3, zhi3, jiao4, qie4, sa1, liang4).
-// docs/written-forms.md ("Words and polyphonic characters") lists the rules.
+// is the verb liáng (每天各量一次血压, 量了体温), liàng being the amount's, and 量 after 的 (这批货的量). The
+// table reads each character alone by its commonest reading in running text, the words' (zhong3, zhi3, jiao4,
+// qie4, sa1, liang4). docs/written-forms.md ("Words and polyphonic characters") lists the rules.
 #ifndef TALKFACE_TEXT_MEASURE_OR_VERB_HPP
 #define TALKFACE_TEXT_MEASURE_OR_VERB_HPP
 

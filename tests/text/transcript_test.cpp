@@ -511,12 +511,13 @@ TEST_SUITE("transcript") {
 
     TEST_CASE("切 alone is cut, qiē, and 撒 before what a cook strews is sǎ") {
         // Each row but the limits failed on main bea23b7 (readings_dev4, session 46): qie4 twice, sa1 three
-        // times.
+        // times, zhong1.
         CHECK(pinyin("土豆去皮切薄片") == "tu3 dou4 qu4 pi2 qie1 bao2 pian4");
         CHECK(pinyin("把肉切好") == "ba3 rou4 qie1 hao3");
         CHECK(pinyin("出锅前撒葱花") == "chu1 guo1 qian2 sa3 cong1 hua1");
         CHECK(pinyin("撒点盐") == "sa3 dian3 yan2");
         CHECK(pinyin("盐撒在地上") == "yan2 sa3 zai4 di4 shang4");
+        CHECK(pinyin("切中要害") == "qie4 zhong4 yao4 hai4");
         // The limits: 切 qiè in its words, the adverb and names, 撒 sā cast or let go and in names.
         CHECK(pinyin("一切都好") == "yi1 qie4 dou1 hao3");
         CHECK(pinyin("切不可大意") == "qie4 bu4 ke3 da4 yi4");
@@ -661,7 +662,7 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("心情郁闷") == "xin1 qing2 yu4 men4");
     }
 
-    TEST_CASE("为 after a report's sum, count or measure and before its value is wéi; 量 measured is liáng") {
+    TEST_CASE("为 between a report's sum or count and its value is wéi, and 量 measured is liáng") {
         // Each row but the limits failed on main bea23b7 (readings_dev4, session 46): wei4 three times,
         // liang4 twice.
         CHECK(pinyin("净利润为15.8亿元") == "jing4 li4 run4 wei2 shi2 wu3 dian3 ba1 yi4 yuan2");
@@ -673,6 +674,7 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("收入为他赢得尊重") == "shou1 ru4 wei4 ta1 ying2 de2 zun1 zhong4");
         CHECK(pinyin("数量很大") == "shu4 liang4 hen3 da4");
         CHECK(pinyin("销量一直很好") == "xiao1 liang4 yi1 zhi2 hen3 hao3");
+        CHECK(pinyin("这批货的量一共多少") == "zhe4 pi1 huo4 de5 liang4 yi1 gong4 duo1 shao3");
     }
 
     TEST_CASE("syllables carry the character, numbered pinyin and their sentence") {

@@ -12857,6 +12857,7 @@ static const char* const kPhrasesText[] = {
     "分项\t1309\n"
     "切\t964\n"
     "切丝\t1254\tqie1 si1\n"
+    "切中\t1254\tqie4 zhong4\n"
     "切入\t1238\tqie1 ru4\n"
     "切入点\t1250\tqie1 ru4 dian3\n"
     "切入點\t1250\tqie1 ru4 dian3\n"
@@ -14584,8 +14585,8 @@ static const char* const kPhrasesText[] = {
     "勘察\t1243\n"
     "勘察設計\t1331\n"
     "勘察设计\t1331\n"
-    "勘探\t1238\n"
     ,
+    "勘探\t1238\n"
     "勘查\t1267\tkan1 cha2\n"
     "勘测\t1293\n"
     "勘測\t1293\n"
@@ -18097,8 +18098,8 @@ static const char* const kPhrasesText[] = {
     "吃火锅\t1287\n"
     "吃点\t1147\n"
     "吃着\t1218\tchi1 zhe5\n"
-    "吃糖\t1325\n"
     ,
+    "吃糖\t1325\n"
     "吃素\t1272\n"
     "吃紧\t1304\n"
     "吃緊\t1304\n"
@@ -21804,8 +21805,8 @@ static const char* const kPhrasesText[] = {
     "在内\t1087\n"
     "在写\t1279\n"
     "在前\t1257\n"
-    "在华\t1207\n"
     ,
+    "在华\t1207\n"
     "在即\t1243\n"
     "在历史上\t1275\n"
     "在各\t1247\n"
@@ -25096,8 +25097,8 @@ static const char* const kPhrasesText[] = {
     "夯实\t1271\thang1 shi2\n"
     "夯實\t1271\thang1 shi2\n"
     "失\t1117\n"
-    "失业\t1136\n"
     ,
+    "失业\t1136\n"
     "失业人员\t1284\tshi1 ye4 ren2 yuan2\n"
     "失业保险\t1281\n"
     "失业率\t1269\tshi1 ye4 lv4\n"
@@ -28876,8 +28877,8 @@ static const char* const kPhrasesText[] = {
     "對子\t1312\n"
     "對它\t1200\n"
     "對家\t1290\tdui4 jia1\n"
-    "對對\t1256\n"
     ,
+    "對對\t1256\n"
     "對岸\t1259\n"
     "對峙\t1246\tdui4 zhi4\n"
     "對已\t1326\tdui4 yi3\n"
@@ -32507,8 +32508,8 @@ static const char* const kPhrasesText[] = {
     "底价\t1253\tdi3 jia4\n"
     "底價\t1253\tdi3 jia4\n"
     "底子\t1260\tdi3 zi5\n"
-    "底层\t1151\tdi3 ceng2\n"
     ,
+    "底层\t1151\tdi3 ceng2\n"
     "底層\t1151\tdi3 ceng2\n"
     "底座\t1217\tdi3 zuo4\n"
     "底板\t1274\tdi3 ban3\n"
@@ -36249,8 +36250,8 @@ static const char* const kPhrasesText[] = {
     "愚人节\t1280\n"
     "愚弄\t1276\tyu2 nong4\n"
     "愚昧\t1237\n"
-    "愚民\t1319\n"
     ,
+    "愚民\t1319\n"
     "愚蠢\t1164\n"
     "愛\t830\n"
     "愛一個人\t1198\n"
