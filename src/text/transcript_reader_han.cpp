@@ -1,8 +1,8 @@
 // The transcript reader's runs of Chinese characters: each run cut into its likeliest words and read by
 // the tables, a particle, a return verb, a title's head, 得 "must", a measure word or a verb alone (种
-// 只 教), a noun after what counts or points to it (该地 三天假), the copula after a quantity (率为) or
-// 为 "as" after 以 or a verb of choosing (以安全为重 当选为) or 倒数 the reciprocal (2的倒数) deciding a
-// reading in context, and a written form's words read so.
+// 只 教), a noun after what counts or points to it (该地 三天假), 冲 graded by a degree adverb (太冲了), the
+// copula after a quantity (率为) or 为 "as" after 以 or a verb of choosing (以安全为重 当选为) or 倒数 the
+// reciprocal (2的倒数) deciding a reading in context, and a written form's words read so.
 #include "text/transcript_reader.hpp"
 
 #include <string>
@@ -15,6 +15,7 @@
 #include "text/code_points.hpp"
 #include "text/count_down.hpp"
 #include "text/counted_noun.hpp"
+#include "text/degree_adjective.hpp"
 #include "text/latin_words.hpp"
 #include "text/measure_or_verb.hpp"
 #include "text/must_verb.hpp"
@@ -55,6 +56,7 @@ std::vector<std::string> TranscriptReader::read_han(const std::vector<HanCharact
         if (in_context.empty()) in_context = detail::must_verb_reading(words, w, written_after);
         if (in_context.empty()) in_context = detail::measure_or_verb_reading(words, w, follows_number);
         if (in_context.empty()) in_context = detail::counted_noun_reading(words, w);
+        if (in_context.empty()) in_context = detail::degree_adjective_reading(words, w);
         if (in_context.empty())
             in_context = detail::quantity_copula_reading(words, w, ends_clause, written_after);
         if (in_context.empty()) in_context = detail::take_as_reading(words, w);

@@ -1022,4 +1022,16 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("他晕倒了") == "ta1 yun1 dao3 le5");
         CHECK(pinyin("目的") == "mu4 di4");
     }
+
+    TEST_CASE("冲 graded by a degree adverb is chòng, strong or blunt") {
+        // Each row but the limits fails on main a33e7ae (session 46's readings_dev5): chong1.
+        CHECK(pinyin("这酒很冲") == "zhe4 jiu3 hen3 chong4");
+        CHECK(pinyin("他太冲了吧") == "ta1 tai4 chong4 le5 ba5");
+        CHECK(pinyin("味道有点冲") == "wei4 dao4 you3 dian3 chong4");
+        CHECK(pinyin("他說話那麼衝") == "ta1 shuo1 hua4 na4 me5 chong4");
+        // The limits: the verb, going somewhere after it, and 冲动.
+        CHECK(pinyin("他就那么冲过去了") == "ta1 jiu4 na4 me5 chong1 guo4 qu4 le5");
+        CHECK(pinyin("他很冲动") == "ta1 hen3 chong1 dong4");
+        CHECK(pinyin("冲了个澡") == "chong1 le5 ge4 zao3");
+    }
 }
