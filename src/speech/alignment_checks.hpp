@@ -69,6 +69,11 @@ struct SentenceMetrics {
     // How much better a free sequence of sounds fits its speech than its text, per frame
     // (check_text_fit), on the models re-estimated on the whole recording.
     double fit_gap = 0.0;
+    // That gap over the frames where its speech stands clear of the noise (clear_text_fit_gap),
+    // which check_text_fit judges where the noise covers much more of it than of the typical sentence.
+    double clear_fit_gap = 0.0;
+    // The share of its speech's frames that do not stand clear of the noise (noise_covered_share).
+    double noise_covered_share = 0.0;
     // The largest such gap of its halves on models learned from the rest of the recording
     // (check_held_out_fit).
     double held_out_gap = 0.0;
@@ -209,7 +214,9 @@ bool fits_as_well_as_free_sounds(const std::vector<SentenceMetrics>& metrics, co
 
 // How much better each sentence's speech fits a free sequence of sounds than its text's (per frame,
 // from the aligner), against what a right text gives. A room's sentence whose pitch says its text's
-// tones (SentenceMetrics::tone_gap under kMaxRoomToneGap) is not refused on the gap alone.
+// tones (SentenceMetrics::tone_gap under kMaxRoomToneGap) is not refused on the gap alone. A sentence
+// said so much quieter than the others that the noise covers most of its speech, where it covers
+// little of theirs, is judged by its gap where its speech stands clear (clear_fit_gap).
 // \throws talkface::AlignmentError naming the first sentence whose text does not fit its speech.
 void check_text_fit(const std::vector<SentenceMetrics>& metrics, const std::vector<FrameSpan>& spans,
                     const Timeline& transcript);

@@ -34,6 +34,21 @@ bool is_closure_after_speech(const SentenceChain& chain, const std::vector<State
            !is_pause(chain.states[path[i - 1].state].role);
 }
 
+// The frames [first, end) from the first frame of `path`'s speech to its last, pauses outside it
+// left out; first == end where it has none.
+std::pair<std::size_t, std::size_t> speech_extent(const SentenceChain& chain,
+                                                  const std::vector<StateSegment>& path) {
+    std::size_t first = 0, end = 0;
+    bool has_speech = false;
+    for (const auto& segment : path) {
+        if (is_pause(chain.states[segment.state].role)) continue;
+        if (!has_speech) first = segment.first_frame;
+        has_speech = true;
+        end = segment.end_frame;
+    }
+    return has_speech ? std::make_pair(first, end) : std::make_pair(std::size_t{0}, std::size_t{0});
+}
+
 }  // namespace
 
 double speech_fit(const SentenceChain& chain, const std::vector<StateSegment>& path, const EmissionScores& scores) {
@@ -66,15 +81,8 @@ std::vector<std::pair<std::size_t, std::vector<StateSegment>>> split_by_sentence
 // the text said nothing else there; forgiven only as far as this speaker's closures are.
 double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>& path,
                     const EmissionScores& scores, double forgiven_run_on) {
-    std::size_t first = 0, end = 0;
-    bool has_speech = false;
-    for (const auto& segment : path) {
-        if (is_pause(chain.states[segment.state].role)) continue;
-        if (!has_speech) first = segment.first_frame;
-        has_speech = true;
-        end = segment.end_frame;
-    }
-    if (!has_speech || end <= first) return 0.0;
+    const auto [first, end] = speech_extent(chain, path);
+    if (end <= first) return 0.0;
     double forced = 0.0;
     for (std::size_t i = 0; i < path.size(); ++i) {
         const StateSegment& segment = path[i];
@@ -89,6 +97,50 @@ double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>&
         }
     }
     return (free_sounds_score(scores, first, end) - forced) / static_cast<double>(end - first);
+}
+
+// Speech under the noise fits no sound's model well, and there the free loop gains on any text by
+// hopping to whichever class the noise of each frame fits best: a right text's gap rises with the
+// share of its frames the noise covers, as a wrong one's does, and tells the two apart only where
+// the speech stands clear of the noise.
+double clear_text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                          const EmissionScores& scores, const std::vector<bool>& is_clear,
+                          double forgiven_run_on) {
+    const auto [first, end] = speech_extent(chain, path);
+    if (end <= first) return 0.0;
+    // Only the speech's own frames are copied, a frame under the noise scoring 0 for every sound.
+    EmissionScores masked;
+    masked.frame_count = end - first;
+    masked.values.assign(scores.values.begin() + static_cast<std::ptrdiff_t>(first * kPhoneClassCount),
+                         scores.values.begin() + static_cast<std::ptrdiff_t>(end * kPhoneClassCount));
+    std::size_t kept = 0;
+    for (std::size_t t = first; t < end; ++t) {
+        if (is_clear[t]) {
+            ++kept;
+            continue;
+        }
+        std::fill_n(masked.values.begin() + static_cast<std::ptrdiff_t>((t - first) * kPhoneClassCount),
+                    kPhoneClassCount, 0.0f);
+    }
+    if (kept == 0) return text_fit_gap(chain, path, scores, forgiven_run_on);
+    std::vector<StateSegment> shifted;
+    for (StateSegment segment : path) {
+        if (segment.end_frame <= first || segment.first_frame >= end) continue;
+        segment.first_frame = std::max(segment.first_frame, first) - first;
+        segment.end_frame = std::min(segment.end_frame, end) - first;
+        shifted.push_back(segment);
+    }
+    return text_fit_gap(chain, shifted, masked, forgiven_run_on) * static_cast<double>(end - first) /
+           static_cast<double>(kept);
+}
+
+double noise_covered_share(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                           const std::vector<bool>& is_clear) {
+    const auto [first, end] = speech_extent(chain, path);
+    if (end <= first) return 0.0;
+    const auto covered = std::count(is_clear.begin() + static_cast<std::ptrdiff_t>(first),
+                                    is_clear.begin() + static_cast<std::ptrdiff_t>(end), false);
+    return static_cast<double>(covered) / static_cast<double>(end - first);
 }
 
 void add_closure_run_on(const SentenceChain& chain, const std::vector<StateSegment>& path,

@@ -26,6 +26,17 @@ double speech_fit(const SentenceChain& chain, const std::vector<StateSegment>& p
 double text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>& path,
                     const EmissionScores& scores, double forgiven_run_on);
 
+// text_fit_gap over the frames of `path`'s speech that `is_clear` (one per frame of `scores`) marks,
+// per such frame: the frames left out count neither for the text nor for the free sounds. Where
+// none is, text_fit_gap itself.
+double clear_text_fit_gap(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                          const EmissionScores& scores, const std::vector<bool>& is_clear,
+                          double forgiven_run_on);
+
+// The share of the frames of `path`'s speech that `is_clear` does not mark; 0 where it has none.
+double noise_covered_share(const SentenceChain& chain, const std::vector<StateSegment>& path,
+                           const std::vector<bool>& is_clear);
+
 // How much better, per frame, the sound before a stop's closure after speech fits the closure's
 // frames on `path` than silence does (0 where silence fits better), one value per frame, appended
 // to `losses`: how far this speaker speaks through closures.
