@@ -63,7 +63,11 @@ LIGHT_FIRST = LIGHT_PARTICLES | LIGHT_SUFFIXES
 # 仆: pú (仆人 公仆 女仆 奴仆 风尘仆仆) leads pū, which is 前仆后继 (phrase_additions.tsv) and 仆倒. 瞭: liǎo (瞭解
 # 明瞭 一目瞭然, Traditional text's) leads the liào that kTGHZ2013 gives alone, Simplified text keeping 瞭 only
 # for 瞭望 (phrase_additions.tsv) and writing the others 了.
-FIRST_BY_USAGE = {"长": "chang2", "長": "chang2", "仆": "pu2", "瞭": "liao3"}
+# 挣: zhèng, earn (挣了不少钱, 一个月挣五千) where it stands alone; zhēng is 挣扎 挣揣, words the list reads
+# (session 46, readings_dev5: 挣了钱 zheng1). 泊: bó, moor or stay (船泊在岸边, 停泊 漂泊 淡泊); pō is 湖泊 血泊
+# 梁山泊, words the list reads (session 46: 船泊在 po1).
+FIRST_BY_USAGE = {"长": "chang2", "長": "chang2", "仆": "pu2", "瞭": "liao3", "挣": "zheng4", "掙": "zheng4",
+                  "泊": "bo2"}
 
 
 def _field_readings(field, value):

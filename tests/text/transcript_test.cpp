@@ -1034,4 +1034,17 @@ TEST_SUITE("transcript") {
         CHECK(pinyin("他很冲动") == "ta1 hen3 chong1 dong4");
         CHECK(pinyin("冲了个澡") == "chong1 le5 ge4 zao3");
     }
+
+    TEST_CASE("挣 alone earns, zhèng, and 泊 alone moors, bó") {
+        // Each row but the limits fails on main 3d33409 (session 46's readings_dev5): zheng1, po1.
+        CHECK(pinyin("他挣了不少钱") == "ta1 zheng4 le5 bu4 shao3 qian2");
+        CHECK(pinyin("一个月挣五千") == "yi1 ge4 yue4 zheng4 wu3 qian1");
+        CHECK(pinyin("掙了錢") == "zheng4 le5 qian2");
+        CHECK(pinyin("船泊在岸边") == "chuan2 bo2 zai4 an4 bian1");
+        // The limits: the words of zhēng and pō.
+        CHECK(pinyin("他在挣扎") == "ta1 zai4 zheng1 zha2");
+        CHECK(pinyin("湖泊很美") == "hu2 po1 hen3 mei3");
+        CHECK(pinyin("躺在血泊中") == "tang3 zai4 xue4 po1 zhong1");
+        CHECK(pinyin("梁山泊") == "liang2 shan1 po1");
+    }
 }
