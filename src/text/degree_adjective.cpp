@@ -14,11 +14,7 @@ std::string_view degree_adjective_reading(const std::vector<std::string>& words,
                                              "特別", "非常", "更",   "最",   "越来越", "越來越"};
     if (!ends_with_any(words[w - 1], kDegrees)) return {};
     constexpr std::string_view kClosing[] = {"了", "的", "啊", "吧", "啦", "呀"};
-    if (!with_particle && w + 1 < words.size()) {
-        bool closes = false;
-        for (const auto closing : kClosing) closes = closes || words[w + 1] == closing;
-        if (!closes) return {};
-    }
+    if (!with_particle && w + 1 < words.size() && !is_any_of(words[w + 1], kClosing)) return {};
     return "chong4";
 }
 
